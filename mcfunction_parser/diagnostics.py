@@ -1,0 +1,64 @@
+"""Source locations and diagnostics shared by the parser, the pack loader, the linter and the emulator."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+ERROR = "error"
+WARNING = "warning"
+INFO = "info"
+
+
+@dataclass(frozen=True, slots=True)
+class Loc:
+    """A position in a source file. ``line`` and ``col`` are 1-based; ``col`` counts characters."""
+
+    path: str
+    line: int
+    col: int
+
+    def __str__(self) -> str:
+        return f"{self.path}:{self.line}:{self.col}"
+
+
+@dataclass(frozen=True, slots=True)
+class Diagnostic:
+    """One problem found in a pack. ``loc`` is None for problems without a position (a missing file)."""
+
+    severity: str
+    message: str
+    path: str
+    line: int | None = None
+    col: int | None = None
+    source_line: str | None = None
+
+    @classmethod
+    def at(cls, severity: str, message: str, loc: Loc, source_line: str | None = None) -> "Diagnostic":
+        return cls(severity, message, loc.path, loc.line, loc.col, source_line)
+
+    def format(self) -> str:
+        """``path:line:col: error: message`` then the source line with a caret under the column."""
+        where = self.path
+        if self.line is not None:
+            where += f":{self.line}"
+            if self.col is not None:
+                where += f":{self.col}"
+        text = f"{where}: {self.severity}: {self.message}"
+        if self.source_line is not None and self.col is not None:
+            shown, caret_col = _clip(self.source_line, self.col)
+            text += f"\n    {shown}\n    {' ' * (caret_col - 1)}^"
+        return text
+
+    def to_json(self) -> dict:
+        return {"path": self.path, "line": self.line, "col": self.col, "message": self.message}
+
+
+def _clip(line: str, col: int, width: int = 120) -> tuple[str, int]:
+    """Shorten very long lines around the column so a 1 MB line still prints a readable caret."""
+    line = line.rstrip("\n").replace("\t", " ")
+    if len(line) <= width:
+        return line, col
+    start = max(0, col - 1 - width // 2)
+    end = min(len(line), start + width)
+    prefix = "..." if start > 0 else ""
+    suffix = "..." if end < len(line) else ""
+    return prefix + line[start:end] + suffix, col - start + len(prefix)

@@ -1,0 +1,114 @@
+"""NBT value types, as SNBT literals in commands produce them and as the emulator's world stores them.
+
+Each numeric tag is a subclass of ``int`` or ``float`` so arithmetic and comparisons work directly,
+while the class keeps the tag type that the game distinguishes (``1b`` is not ``1``).
+Compounds are ``dict`` subclasses (key order kept), lists are ``list`` subclasses.
+"""
+from __future__ import annotations
+
+
+class Byte(int):
+    tag_id = 1
+    suffix = "b"
+
+
+class Short(int):
+    tag_id = 2
+    suffix = "s"
+
+
+class Int(int):
+    tag_id = 3
+    suffix = ""
+
+
+class Long(int):
+    tag_id = 4
+    suffix = "L"
+
+
+class Float(float):
+    tag_id = 5
+    suffix = "f"
+
+
+class Double(float):
+    tag_id = 6
+    suffix = "d"
+
+
+class String(str):
+    tag_id = 8
+
+
+class List(list):
+    tag_id = 9
+
+
+class Compound(dict):
+    tag_id = 10
+
+
+class ByteArray(list):
+    tag_id = 7
+    prefix = "B"
+
+
+class IntArray(list):
+    tag_id = 11
+    prefix = "I"
+
+
+class LongArray(list):
+    tag_id = 12
+    prefix = "L"
+
+
+NUMERIC_TYPES = (Byte, Short, Int, Long, Float, Double)
+ARRAY_TYPES = (ByteArray, IntArray, LongArray)
+INT_RANGES = {Byte: 8, Short: 16, Int: 32, Long: 64}
+
+
+def to_snbt(value) -> str:
+    """Serialise a value to SNBT as the game prints it (``data get`` output)."""
+    if isinstance(value, bool):
+        return "1b" if value else "0b"
+    if isinstance(value, (Byte, Short, Int, Long)):
+        return f"{int(value)}{value.suffix}"
+    if isinstance(value, (Float, Double)):
+        return f"{_float_text(float(value))}{value.suffix}"
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        return f"{_float_text(value)}d"
+    if isinstance(value, str):
+        return _quote(value)
+    if isinstance(value, ARRAY_TYPES):
+        return f"[{value.prefix};" + ",".join(to_snbt(type_of_array_item(value)(v)) for v in value) + "]"
+    if isinstance(value, dict):
+        return "{" + ",".join(f"{_key(k)}:{to_snbt(v)}" for k, v in value.items()) + "}"
+    if isinstance(value, list):
+        return "[" + ",".join(to_snbt(v) for v in value) + "]"
+    raise TypeError(f"not an NBT value: {value!r}")
+
+
+def type_of_array_item(array) -> type:
+    return {ByteArray: Byte, IntArray: Int, LongArray: Long}[type(array)]
+
+
+def _float_text(x: float) -> str:
+    text = repr(x)
+    return text[:-2] if text.endswith(".0") and "e" not in text else text
+
+
+_BARE = set("0123456789abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_-.+")
+
+
+def _key(key: str) -> str:
+    return key if key and all(c in _BARE for c in key) else _quote(key)
+
+
+def _quote(text: str) -> str:
+    quote = "'" if '"' in text and "'" not in text else '"'
+    escaped = text.replace("\\", "\\\\").replace(quote, "\\" + quote)
+    return f"{quote}{escaped}{quote}"
