@@ -1,0 +1,13 @@
+"""The ``dpemu`` command line. Each subcommand lives in its own ``cli_<name>.py`` module."""
+from __future__ import annotations
+
+import click
+
+
+@click.group(context_settings={"help_option_names": ["-h", "--help"]})
+@click.version_option(package_name="dpemu")
+def main() -> None:
+    """Emulate, test, profile and check Minecraft Java Edition datapacks."""
+
+
+# Subcommands register themselves here, one line each:
