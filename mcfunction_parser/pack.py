@@ -1,0 +1,269 @@
+"""Loading data packs: pack.mcmeta, overlays, function files, function tags, advancement rewards.
+
+Several packs load together in order; a later pack overrides an earlier pack's function of the
+same id and its tag files merge on top (``replace`` honoured). All packs are read for one game
+version: ``mc_version`` when given, else the newest release any pack is written for (its
+``pack_format``, or its ``max_format`` when it has no ``pack_format``). That version's format
+decides the folder names (``function`` from 1.21, ``functions`` before; the other name is
+ignored by the game, and warned about here) and which overlays apply.
+
+Nothing here raises on bad input: every problem is a :class:`Diagnostic`, and a problem in one
+file never stops the others.
+"""
+from __future__ import annotations
+
+import dataclasses
+import re
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .ast import Function, FunctionTag
+from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
+from .pack_meta import FormatRange, PackMeta, read_pack_meta
+from .pack_text import load_json, read_text, split_lines
+from .tags import merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
+from .versions import (
+    LATEST_RELEASE, Format, Version, format_label, pack_format_for_version, parse_mc_version,
+    uses_singular_folders, version_for_pack_format, version_label,
+)
+
+_NAMESPACE = re.compile(r"[a-z0-9_.-]+")
+_PATH = re.compile(r"[a-z0-9_./-]+")
+
+
+@dataclass
+class PackInfo:
+    """One loaded pack. ``supported`` is None when pack.mcmeta is missing or invalid."""
+
+    root: Path
+    pack_format: int | None
+    supported: FormatRange | None
+    description: str
+    overlays: list[str]  # overlay directories applied, in order
+    folder_style: str  # "function" (1.21+) or "functions"
+
+
+@dataclass
+class LoadedPacks:
+    packs: list[PackInfo]
+    version: Version  # the game version the functions were parsed for
+    functions: dict[str, Function]  # "ns:path" -> parsed function (macro lines kept as MacroLine)
+    tags: dict[str, FunctionTag]  # "ns:path" -> merged tag, nested tags not flattened
+    sources: dict[str, list[str]]  # file path -> lines (functions and tag files)
+    diagnostics: list[Diagnostic]
+    failed_tags: dict[str, str] = field(default_factory=dict)  # tag id -> why the game refuses it
+    advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
+    files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
+
+    @property
+    def format(self) -> Format:
+        return pack_format_for_version(self.version)
+
+    def resolve_tag(self, tag_id: str) -> list[str]:
+        """Function ids run by ``#tag_id``: flattened, ordered, deduplicated."""
+        return resolve_tag(self.tags, self.functions, tag_id)
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == ERROR]
+
+    @property
+    def warnings(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == WARNING]
+
+    @property
+    def infos(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == INFO]
+
+
+@dataclass
+class _PackFiles:
+    """One pack's files after overlays: relative path -> the file that provides it."""
+
+    info: PackInfo
+    shown_root: str
+    files: dict[str, Path]
+    target_label: str  # "1.21.4 (format 61)"
+
+    def shown(self, rel: str) -> str:
+        return rel if self.shown_root in ("", ".") else f"{self.shown_root.rstrip('/')}/{rel}"
+
+
+def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> LoadedPacks:
+    """Load packs in order (later ones override). ``mc_version`` ("1.21.4") overrides the
+    packs' own version; an unknown or malformed version raises ValueError."""
+    diagnostics: list[Diagnostic] = []
+    metas = [(Path(p), str(p), _read_meta(Path(p), str(p), diagnostics)) for p in paths]
+    version = _target_version(mc_version, [m for _, _, m in metas if m is not None])
+    target = pack_format_for_version(version)
+    result = LoadedPacks([], version, {}, {}, {}, diagnostics, files=sum(m is not None for *_, m in metas))
+    packs = [_collect(root, shown, meta, target, version, diagnostics)
+             for root, shown, meta in metas if root.is_dir()]
+    result.packs = [p.info for p in packs]
+    _load_functions(packs, result)
+    _load_tags(packs, result)
+    _load_advancements(packs, result)
+    return result
+
+
+def _read_meta(root: Path, shown: str, diagnostics: list[Diagnostic]) -> PackMeta | None:
+    if not root.is_dir():
+        what = "is not a folder" if root.exists() else "does not exist"
+        diagnostics.append(Diagnostic(ERROR, f"pack {what}", shown))
+        return None
+    return read_pack_meta(root, shown, diagnostics)
+
+
+def _target_version(mc_version: str | None, metas: list[PackMeta]) -> Version:
+    if mc_version is not None:
+        version = parse_mc_version(mc_version)
+        pack_format_for_version(version)  # raises ValueError for an unknown release
+        return version
+    wanted = [version_for_pack_format(_written_for(m)) for m in metas if m.supported is not None]
+    return max(wanted, default=LATEST_RELEASE)
+
+
+def _written_for(meta: PackMeta) -> Format:
+    return (meta.pack_format, 0) if meta.pack_format is not None else meta.supported.max
+
+
+def _collect(root: Path, shown: str, meta: PackMeta | None, target: Format, version: Version,
+             diagnostics: list[Diagnostic]) -> _PackFiles:
+    """The pack's data files with the matching overlays laid over the base."""
+    label = f"{version_label(version)} (format {format_label(target)})"
+    if meta is not None and meta.supported is not None and target not in meta.supported:
+        diagnostics.append(Diagnostic(
+            WARNING, f"pack supports formats {_range_label(meta.supported)}, not {label}: the game "
+            "lists it as incompatible", f"{shown.rstrip('/')}/pack.mcmeta"))
+    files = _data_files(root)
+    applied = []
+    for overlay in meta.overlays if meta is not None else []:
+        if target in overlay.formats:
+            files.update(_data_files(root / overlay.directory))
+            applied.append(overlay.directory)
+    style = "function" if uses_singular_folders(target) else "functions"
+    info = PackInfo(root, meta.pack_format if meta else None, meta.supported if meta else None,
+                    meta.description if meta else "", applied, style)
+    return _PackFiles(info, shown, files, label)
+
+
+def _range_label(formats: FormatRange) -> str:
+    lo, hi = format_label(formats.min), format_label(formats.max).split(".")[0]
+    return lo if lo == hi and formats.max[1] > 2**30 else f"{lo}-{hi}"
+
+
+def _data_files(base: Path) -> dict[str, Path]:
+    """``data/**`` files under ``base``, keyed by path relative to it (posix)."""
+    data = base / "data"
+    if not data.is_dir():
+        return {}
+    return {p.relative_to(base).as_posix(): p for p in sorted(data.rglob("*")) if p.is_file()}
+
+
+# ----------------------------------------------------------------------------- resources
+
+
+def _resources(pack: _PackFiles, folders: tuple[str, str], suffix: str,
+               diagnostics: list[Diagnostic]) -> dict[str, str]:
+    """``{resource id: relative file}`` for files in ``data/<ns>/<folder>/`` ending in ``suffix``.
+
+    ``folders`` is (1.21+ name, older name); files in the name the game ignores are warned about
+    once per folder and skipped; invalid names are warned about and skipped, as the game does.
+    """
+    read, ignored = folders if pack.info.folder_style == "function" else folders[::-1]
+    found: dict[str, str] = {}
+    ignored_dirs: dict[str, int] = {}
+    for rel in pack.files:
+        parts = rel.split("/")
+        folder_len = len(read.split("/"))
+        if len(parts) < 3 + folder_len or not rel.endswith(suffix):
+            continue
+        folder = "/".join(parts[2:2 + folder_len])
+        prefix = "/".join(parts[:2 + folder_len])
+        if folder == ignored:
+            ignored_dirs[prefix] = ignored_dirs.get(prefix, 0) + 1
+        elif folder == read:
+            resource_id = _resource_id(parts[1], "/".join(parts[2 + folder_len:])[: -len(suffix)],
+                                       pack.shown(rel), diagnostics)
+            if resource_id is not None:
+                found[resource_id] = rel
+    for prefix, count in ignored_dirs.items():
+        diagnostics.append(Diagnostic(
+            WARNING, f"{count} file(s) in '{prefix}/' ignored: {pack.target_label} reads "
+            f"'{prefix.split('/')[0]}/{prefix.split('/')[1]}/{read}/' instead",
+            pack.shown(prefix)))
+    return found
+
+
+def _resource_id(namespace: str, path: str, shown: str, diagnostics: list[Diagnostic]) -> str | None:
+    if _NAMESPACE.fullmatch(namespace) and _PATH.fullmatch(path):
+        return f"{namespace}:{path}"
+    diagnostics.append(Diagnostic(
+        WARNING, f"ignored by the game: invalid resource location '{namespace}:{path}' "
+        "(allowed: a-z 0-9 _ . - and / in paths)", shown))
+    return None
+
+
+def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    chosen: dict[str, tuple[_PackFiles, str]] = {}
+    for pack in packs:
+        for fid, rel in _resources(pack, ("function", "functions"), ".mcfunction",
+                                   result.diagnostics).items():
+            if fid in chosen:
+                earlier = chosen[fid][0].shown(chosen[fid][1])
+                result.diagnostics.append(Diagnostic(
+                    INFO, f"function {fid} overrides {earlier} from an earlier pack", pack.shown(rel)))
+            chosen[fid] = (pack, rel)
+    for fid, (pack, rel) in chosen.items():
+        function = _load_function(pack, rel, fid, result)
+        if function is not None:
+            result.functions[fid] = function
+
+
+def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> Function | None:
+    from .parse import parse_function  # the command parser imports this package's modules
+
+    shown = pack.shown(rel)
+    text = read_text(pack.files[rel], shown, result.diagnostics, json_file=False)
+    result.files += 1
+    if text is None:
+        return None
+    result.sources[shown] = split_lines(text)
+    try:
+        function, diagnostics = parse_function(text, shown, fid, result.version)
+    except Exception as exc:  # a parser bug must not stop the other functions
+        result.diagnostics.append(Diagnostic(
+            ERROR, f"internal error while parsing this file: {type(exc).__name__}: {exc}", shown))
+        return None
+    result.diagnostics.extend(diagnostics)
+    return dataclasses.replace(function, pack=str(pack.info.root))
+
+
+def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    for pack in packs:
+        for tag_id, rel in _resources(pack, ("tags/function", "tags/functions"), ".json",
+                                      result.diagnostics).items():
+            shown = pack.shown(rel)
+            result.files += 1
+            parsed = read_tag_file(pack.files[rel], shown, result.diagnostics)
+            if parsed is None:
+                continue
+            doc, replace, entries = parsed
+            result.sources[shown] = split_lines(doc.text)
+            merge_tag(result.tags, tag_id, replace, entries)
+    result.failed_tags = validate_tags(result.tags, result.functions, result.sources,
+                                       result.diagnostics)
+
+
+def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """Record ``rewards.function`` of every advancement: those functions are reachable."""
+    for pack in packs:
+        for rel in _resources(pack, ("advancement", "advancements"), ".json", result.diagnostics).values():
+            result.files += 1
+            doc = load_json(pack.files[rel], pack.shown(rel), result.diagnostics)
+            rewards = doc.value.get("rewards") if doc is not None and isinstance(doc.value, dict) else None
+            reward = rewards.get("function") if isinstance(rewards, dict) else None
+            if isinstance(reward, str):
+                loc = doc.loc_at(max(doc.find_string(reward, doc.find_string("rewards")), 0))
+                result.advancement_rewards.setdefault(normalise_id(reward), []).append(loc)

@@ -1,0 +1,102 @@
+"""Game releases and the data pack formats they read.
+
+A data pack format is ``(major, minor)``; before 1.21.9 every format was a plain integer, kept here
+as ``(n, 0)``. Numbers from minecraft.wiki "Pack format" (data pack table) and "Pack.mcmeta";
+1.21.9 introduced ``min_format``/``max_format`` and the minor part (1.21.9 reads 88.0, 1.21.11
+reads 94.1).
+"""
+from __future__ import annotations
+
+import re
+
+Version = tuple[int, int, int]
+Format = tuple[int, int]
+
+# Data pack format -> the releases that read it, oldest first.
+_FORMAT_RELEASES: tuple[tuple[Format, str], ...] = (
+    ((4, 0), "1.13 1.13.1 1.13.2 1.14 1.14.1 1.14.2 1.14.3 1.14.4"),
+    ((5, 0), "1.15 1.15.1 1.15.2 1.16 1.16.1"),
+    ((6, 0), "1.16.2 1.16.3 1.16.4 1.16.5"),
+    ((7, 0), "1.17 1.17.1"),
+    ((8, 0), "1.18 1.18.1"),
+    ((9, 0), "1.18.2"),
+    ((10, 0), "1.19 1.19.1 1.19.2 1.19.3"),
+    ((12, 0), "1.19.4"),
+    ((15, 0), "1.20 1.20.1"),
+    ((18, 0), "1.20.2"),
+    ((26, 0), "1.20.3 1.20.4"),
+    ((41, 0), "1.20.5 1.20.6"),
+    ((48, 0), "1.21 1.21.1"),
+    ((57, 0), "1.21.2 1.21.3"),
+    ((61, 0), "1.21.4"),
+    ((71, 0), "1.21.5"),
+    ((80, 0), "1.21.6"),
+    ((81, 0), "1.21.7 1.21.8"),
+    ((88, 0), "1.21.9 1.21.10"),
+    ((94, 1), "1.21.11"),
+)
+
+# First format whose packs keep functions in data/<ns>/function and tags/function (1.21).
+SINGULAR_FOLDERS_FORMAT: Format = (48, 0)
+# Oldest release the tools target.
+OLDEST_SUPPORTED: Version = (1, 16, 0)
+
+_VERSION_RE = re.compile(r"(\d+)\.(\d+)(?:\.(\d+))?")
+
+
+def parse_mc_version(text: str) -> Version:
+    """``"1.21.4"`` -> ``(1, 21, 4)``; ``"1.21"`` -> ``(1, 21, 0)``. Raises ValueError if malformed."""
+    match = _VERSION_RE.fullmatch(text.strip())
+    if match is None:
+        raise ValueError(f"'{text}' is not a game version (expected e.g. 1.21.4)")
+    major, minor, patch = match.groups()
+    return int(major), int(minor), int(patch or 0)
+
+
+def version_label(version: Version) -> str:
+    """``(1, 21, 0)`` -> ``"1.21"``; ``(1, 21, 4)`` -> ``"1.21.4"``."""
+    major, minor, patch = version
+    return f"{major}.{minor}" + (f".{patch}" if patch else "")
+
+
+def format_label(fmt: Format) -> str:
+    """``(61, 0)`` -> ``"61"``; ``(94, 1)`` -> ``"94.1"``."""
+    return f"{fmt[0]}.{fmt[1]}" if fmt[1] else str(fmt[0])
+
+
+def _build_release_table() -> dict[Version, Format]:
+    table = {}
+    for fmt, names in _FORMAT_RELEASES:
+        for name in names.split():
+            table[parse_mc_version(name)] = fmt
+    return table
+
+
+RELEASE_FORMATS: dict[Version, Format] = _build_release_table()
+LATEST_RELEASE: Version = max(RELEASE_FORMATS)
+
+
+def is_known_release(version: Version) -> bool:
+    return version in RELEASE_FORMATS
+
+
+def pack_format_for_version(version: Version) -> Format:
+    """The data pack format a release reads. Raises ValueError for an unknown release."""
+    try:
+        return RELEASE_FORMATS[version]
+    except KeyError:
+        known = f"{version_label(min(RELEASE_FORMATS))} ... {version_label(LATEST_RELEASE)}"
+        raise ValueError(f"unknown release {version_label(version)} (known: {known})") from None
+
+
+def version_for_pack_format(fmt: int | Format) -> Version:
+    """The newest release whose format is ``fmt`` or, for a snapshot-only format, the newest
+    release with an older format; formats newer than every release map to the latest release."""
+    wanted = (fmt, 0) if isinstance(fmt, int) else tuple(fmt)
+    older = [v for v, f in RELEASE_FORMATS.items() if f <= wanted]
+    return max(older) if older else min(RELEASE_FORMATS)
+
+
+def uses_singular_folders(fmt: Format) -> bool:
+    """True when the game reading ``fmt`` looks for ``function``/``tags/function`` (not ``functions``)."""
+    return fmt >= SINGULAR_FOLDERS_FORMAT
