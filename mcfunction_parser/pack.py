@@ -87,7 +87,12 @@ class _PackFiles:
     target_label: str  # "1.21.4 (format 61)"
 
     def shown(self, rel: str) -> str:
+        """How a path relative to the pack root appears in diagnostics."""
         return rel if self.shown_root in ("", ".") else f"{self.shown_root.rstrip('/')}/{rel}"
+
+    def shown_file(self, rel: str) -> str:
+        """The shown path of the file providing ``rel`` (inside its overlay, if any)."""
+        return self.shown(self.files[rel].relative_to(self.info.root).as_posix())
 
 
 def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> LoadedPacks:
@@ -185,7 +190,7 @@ def _resources(pack: _PackFiles, folders: tuple[str, str], suffix: str,
             ignored_dirs[prefix] = ignored_dirs.get(prefix, 0) + 1
         elif folder == read:
             resource_id = _resource_id(parts[1], "/".join(parts[2 + folder_len:])[: -len(suffix)],
-                                       pack.shown(rel), diagnostics)
+                                       pack.shown_file(rel), diagnostics)
             if resource_id is not None:
                 found[resource_id] = rel
     for prefix, count in ignored_dirs.items():
@@ -211,9 +216,10 @@ def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
         for fid, rel in _resources(pack, ("function", "functions"), ".mcfunction",
                                    result.diagnostics).items():
             if fid in chosen:
-                earlier = chosen[fid][0].shown(chosen[fid][1])
+                earlier = chosen[fid][0].shown_file(chosen[fid][1])
                 result.diagnostics.append(Diagnostic(
-                    INFO, f"function {fid} overrides {earlier} from an earlier pack", pack.shown(rel)))
+                    INFO, f"function {fid} overrides {earlier} from an earlier pack",
+                    pack.shown_file(rel)))
             chosen[fid] = (pack, rel)
     for fid, (pack, rel) in chosen.items():
         function = _load_function(pack, rel, fid, result)
@@ -224,7 +230,7 @@ def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
 def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> Function | None:
     from .parse import parse_function  # the command parser imports this package's modules
 
-    shown = pack.shown(rel)
+    shown = pack.shown_file(rel)
     text = read_text(pack.files[rel], shown, result.diagnostics, json_file=False)
     result.files += 1
     if text is None:
@@ -244,7 +250,7 @@ def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
     for pack in packs:
         for tag_id, rel in _resources(pack, ("tags/function", "tags/functions"), ".json",
                                       result.diagnostics).items():
-            shown = pack.shown(rel)
+            shown = pack.shown_file(rel)
             result.files += 1
             parsed = read_tag_file(pack.files[rel], shown, result.diagnostics)
             if parsed is None:
@@ -261,7 +267,7 @@ def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
     for pack in packs:
         for rel in _resources(pack, ("advancement", "advancements"), ".json", result.diagnostics).values():
             result.files += 1
-            doc = load_json(pack.files[rel], pack.shown(rel), result.diagnostics)
+            doc = load_json(pack.files[rel], pack.shown_file(rel), result.diagnostics)
             rewards = doc.value.get("rewards") if doc is not None and isinstance(doc.value, dict) else None
             reward = rewards.get("function") if isinstance(rewards, dict) else None
             if isinstance(reward, str):
