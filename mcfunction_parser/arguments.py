@@ -1,0 +1,260 @@
+"""Argument types shared by commands: coordinates, ranges, resource locations, score holders,
+objectives, durations and JSON text spans."""
+from __future__ import annotations
+
+import re
+
+from .ast import Coord, FloatRange, IntRange, NameTarget, Vec2, Vec3, Wildcard
+from .reader import INT_MAX, INT_MIN, WORD, Reader, show
+
+# ----------------------------------------------------------------------------- resource locations
+
+# Characters Minecraft's ResourceLocation.read consumes; validity of each part is checked after.
+_RESLOC = re.compile(r"[0-9a-z_:/.\-]*")
+_NAMESPACE = re.compile(r"[0-9a-z_.\-]+\Z")
+_RESLOC_STOP = frozenset(" ,]}=[{")
+
+
+def resource_location(r: Reader, what: str = "resource location") -> str:
+    """``ns:path`` or ``path`` (namespace ``minecraft``), normalised with its namespace."""
+    start = r.pos
+    text = r.text
+    m = _RESLOC.match(text, start)
+    end = m.end()
+    if end < r.end and text[end] not in _RESLOC_STOP:
+        r.fail(f"invalid character '{text[end]}' in {what} (allowed: a-z 0-9 _ - . / and one ':')", end)
+    token = m.group()
+    if not token:
+        r.fail(f"expected {what}, got {show(r.rest_word())}")
+    r.pos = end
+    colon = token.find(":")
+    if colon < 0:
+        return "minecraft:" + token
+    namespace, path = token[:colon], token[colon + 1:]
+    if ":" in path:
+        r.fail(f"invalid {what} '{token}': more than one ':'", start + colon + 1 + path.index(":"))
+    if "/" in namespace:
+        r.fail(f"invalid {what} '{token}': '/' is not allowed in the namespace", start)
+    if not path:
+        r.fail(f"invalid {what} '{token}': empty path", start + colon + 1)
+    return token if namespace else "minecraft:" + path
+
+
+def resource_or_tag(r: Reader, what: str) -> tuple[str, bool]:
+    """``#ns:tag`` or ``ns:id``: (normalised id, is_tag)."""
+    if r.peek() == "#":
+        r.pos += 1
+        return resource_location(r, what + " tag"), True
+    return resource_location(r, what), False
+
+
+# ----------------------------------------------------------------------------- coordinates
+
+_COORD = re.compile(r"([~^]?)([0-9.\-]*)")
+_DOUBLE = re.compile(r"-?(?:[0-9]+\.?[0-9]*|\.[0-9]+)\Z")
+_INT = re.compile(r"-?[0-9]+\Z")
+
+
+def _coord(r: Reader, block: bool, allow_local: bool) -> Coord:
+    start = r.pos
+    m = _COORD.match(r.text, start)
+    prefix, number = m.group(1), m.group(2)
+    if not prefix and not number:
+        r.fail(f"expected a coordinate, got {show(r.rest_word())}")
+    if prefix == "^" and not allow_local:
+        r.fail("local coordinates (^) are not allowed here", start)
+    if number:
+        if not (_INT if block and not prefix else _DOUBLE).match(number):
+            r.fail(f"invalid {'integer ' if block and not prefix else ''}coordinate '{number}'", start + len(prefix))
+        value = float(number)
+    else:
+        value = 0.0
+    r.pos = m.end()
+    kind = "abs" if not prefix else ("rel" if prefix == "~" else "local")
+    return Coord(kind, value, not prefix and "." not in number)
+
+
+def vec3(r: Reader, block: bool = False) -> Vec3:
+    """A position; ``block`` for block positions (absolute coordinates must be integers)."""
+    loc = r.loc()
+    start = r.pos
+    x = _coord(r, block, True)
+    r.space("y coordinate")
+    y = _coord(r, block, True)
+    r.space("z coordinate")
+    z = _coord(r, block, True)
+    local = (x.kind == "local") + (y.kind == "local") + (z.kind == "local")
+    if local not in (0, 3):
+        r.fail("cannot mix world and local coordinates (use ^ for all three or for none)", start)
+    return Vec3(x, y, z, loc)
+
+
+def vec2(r: Reader, integers: bool = False) -> Vec2:
+    """A rotation (yaw pitch) or, with ``integers``, a column position (x z)."""
+    loc = r.loc()
+    x = _coord(r, integers, False)
+    r.space("second coordinate")
+    y = _coord(r, integers, False)
+    return Vec2(x, y, loc)
+
+
+# ----------------------------------------------------------------------------- ranges
+
+# MinMaxBounds reads digits, '-' and '.' unless the '.' starts '..'.
+_BOUND = re.compile(r"(?:[0-9\-]|\.(?!\.))*")
+
+
+def _bound(r: Reader, is_int: bool):
+    start = r.pos
+    token = _BOUND.match(r.text, start).group()
+    if not token:
+        return None
+    if not (_INT if is_int else _DOUBLE).match(token):
+        r.fail(f"invalid {'integer' if is_int else 'number'} '{token}' in range", start)
+    r.pos = start + len(token)
+    if is_int:
+        value = int(token)
+        if not INT_MIN <= value <= INT_MAX:
+            r.fail(f"integer {token} is out of range for a 32-bit int", start)
+        return value
+    return float(token)
+
+
+def _range(r: Reader, is_int: bool):
+    start = r.pos
+    lo = _bound(r, is_int)
+    if r.text.startswith("..", r.pos):
+        r.pos += 2
+        hi = _bound(r, is_int)
+        if lo is None and hi is None:
+            r.fail("expected a value or range of values, got '..'", start)
+    else:
+        if lo is None:
+            r.fail(f"expected a value or range of values, got {show(r.rest_word())}", start)
+        hi = lo
+    if lo is not None and hi is not None and lo > hi:
+        r.fail(f"range minimum {lo} is bigger than its maximum {hi}", start)
+    return lo, hi
+
+
+def int_range(r: Reader) -> IntRange:
+    lo, hi = _range(r, True)
+    return IntRange(lo, hi)
+
+
+def float_range(r: Reader) -> FloatRange:
+    lo, hi = _range(r, False)
+    return FloatRange(lo, hi)
+
+
+# ----------------------------------------------------------------------------- names
+
+_OBJECTIVE_OLD_MAX = 16  # objective names were capped at 16 characters before 1.18 (21w37a)
+
+
+def objective(r: Reader) -> str:
+    start = r.pos
+    name = r.unquoted()
+    if not name:
+        r.fail(f"expected an objective name, got {show(r.rest_word())}", start)
+    if r.version < (1, 18, 0) and len(name) > _OBJECTIVE_OLD_MAX:
+        r.fail(f"objective name '{name}' is longer than {_OBJECTIVE_OLD_MAX} characters "
+               "(allowed from Minecraft 1.18)", start)
+    return name
+
+
+def score_holder(r: Reader, allow_wildcard: bool = True):
+    """A selector, ``*``, or any non-space word (player names, ``#fake``, ``$y``, UUIDs)."""
+    c = r.peek()
+    if c == "@":
+        from .selectors import selector
+
+        return selector(r)
+    loc = r.loc()
+    start = r.pos
+    word = WORD.match(r.text, start).group()
+    if not word:
+        r.fail(f"expected a score holder, got {show(r.rest_word())}")
+    if word == "*":
+        if not allow_wildcard:
+            r.fail("'*' is not allowed here", start)
+        r.pos += 1
+        return Wildcard(loc)
+    r.pos = start + len(word)
+    return NameTarget(word, loc, is_uuid=_UUID.match(word) is not None)
+
+
+# java.util.UUID.fromString: five hyphen-separated hex groups
+_UUID = re.compile(r"[0-9a-fA-F]{1,8}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,12}\Z")
+
+
+def is_uuid(text: str) -> bool:
+    return _UUID.match(text) is not None
+
+
+# ----------------------------------------------------------------------------- durations
+
+_TIME = re.compile(r"([0-9.\-]*)([tsd]?)")
+_TIME_UNITS = {"": 1, "t": 1, "s": 20, "d": 24000}
+
+
+def duration(r: Reader, minimum: int = 0) -> int:
+    """A time argument (``10``, ``10t``, ``2.5s``, ``1d``) converted to ticks (rounded as the game does)."""
+    start = r.pos
+    m = _TIME.match(r.text, start)
+    number, unit = m.group(1), m.group(2)
+    if not number:
+        r.fail(f"expected a time, got {show(r.rest_word())}")
+    if not _DOUBLE.match(number):
+        r.fail(f"invalid time '{number}'", start)
+    ticks = round(float(number) * _TIME_UNITS[unit])  # TimeArgument uses Math.round
+    if ticks < minimum:
+        r.fail(f"time must be at least {minimum} tick{'s' if minimum != 1 else ''}, got {m.group()}", start)
+    r.pos = m.end()
+    return ticks
+
+
+# ----------------------------------------------------------------------------- JSON text
+
+_JSON_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|\'(?:[^\'\\]|\\.)*\'|[\[\]{}]|["\']')
+_JSON_PRIMITIVE = re.compile(r"[^ \[\]{},]+")
+_CLOSERS = {"[": "]", "{": "}"}
+
+
+def json_span(r: Reader, what: str = "JSON text") -> str:
+    """One JSON (or SNBT) value, checked for balanced brackets and quotes, returned as written."""
+    start = r.pos
+    text = r.text
+    c = r.peek()
+    if not c:
+        r.fail(f"expected {what}, got end of command")
+    if c in "[{":
+        stack = []
+        pos = start
+        while True:
+            m = _JSON_TOKEN.search(text, pos)
+            if m is None:
+                r.fail(f"unclosed '{stack[-1]}' in {what}", start)
+            tok = m.group()
+            if tok in ("[", "{"):
+                stack.append(tok)
+            elif tok in ("]", "}"):
+                if not stack or _CLOSERS[stack.pop()] != tok:
+                    r.fail(f"unbalanced '{tok}' in {what}", m.start())
+                if not stack:
+                    r.pos = m.end()
+                    return text[start:r.pos]
+            elif len(tok) == 1:
+                r.fail(f"unclosed quoted string in {what}", m.start())
+            pos = m.end()
+    if c == '"' or c == "'":
+        m = _JSON_TOKEN.match(text, start)
+        if m is None or len(m.group()) == 1:
+            r.fail(f"unclosed quoted string in {what}", start)
+        r.pos = m.end()
+        return m.group()
+    m = _JSON_PRIMITIVE.match(text, start)
+    if m is None:
+        r.fail(f"expected {what}, got {show(r.rest_word())}")
+    r.pos = m.end()
+    return m.group()

@@ -1,0 +1,39 @@
+"""``say`` and ``tellraw``."""
+from __future__ import annotations
+
+import re
+
+from .. import ast
+from ..arguments import json_span
+from ..reader import Reader
+from ..selectors import selector, target
+
+# MessageArgument parses a selector wherever '@' is followed by a selector letter.
+_MESSAGE_SELECTOR = re.compile(r"@[spaern]")
+_MESSAGE_SELECTOR_OLD = re.compile(r"@[spaer]")  # before @n (1.21)
+
+
+def say(r: Reader, loc) -> ast.Command:
+    r.space("message")
+    start = r.pos
+    text = r.text
+    pattern = _MESSAGE_SELECTOR if r.version >= (1, 21, 0) else _MESSAGE_SELECTOR_OLD
+    for m in pattern.finditer(text, start):
+        if m.start() < r.pos:
+            continue
+        r.pos = m.start()
+        selector(r)
+    r.pos = r.end
+    return ast.Say(loc, text[start:])
+
+
+def tellraw(r: Reader, loc) -> ast.Command:
+    r.space("players")
+    who = target(r, players=True)
+    r.space("JSON text")
+    component = json_span(r)
+    r.finish()
+    return ast.Tellraw(loc, who, component)
+
+
+PARSERS = {"say": say, "tellraw": tellraw}

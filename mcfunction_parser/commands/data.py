@@ -1,0 +1,90 @@
+"""``data get|merge|modify|remove``."""
+from __future__ import annotations
+
+from .. import ast
+from ..features import feature_problem
+from ..nbt_path import nbt_path
+from ..reader import Reader
+from ..snbt import compound, value
+from .data_targets import data_target
+
+_MODES = ("set", "append", "prepend", "insert", "merge")
+
+
+def _get(r: Reader, loc):
+    target = data_target(r)
+    path = scale = None
+    if r.optional_space():
+        path = nbt_path(r)
+        if r.optional_space():
+            scale = r.double(what="scale")
+    r.finish()
+    return ast.DataGet(loc, target, path, scale)
+
+
+def _merge(r: Reader, loc):
+    target = data_target(r)
+    r.space("NBT compound")
+    nbt = compound(r)
+    r.finish()
+    return ast.DataMerge(loc, target, nbt)
+
+
+def _remove(r: Reader, loc):
+    target = data_target(r)
+    r.space("NBT path")
+    path = nbt_path(r)
+    r.finish()
+    return ast.DataRemove(loc, target, path)
+
+
+def _modify(r: Reader, loc):
+    target = data_target(r)
+    r.space("NBT path")
+    path = nbt_path(r)
+    r.space("modification mode")
+    mode = r.literal(_MODES, "modification mode")
+    index = None
+    if mode == "insert":
+        r.space("index")
+        index = r.integer(what="index")
+    r.space("from, value or string")
+    source = _source(r)
+    r.finish()
+    return ast.DataModify(loc, target, path, mode, index, source)
+
+
+def _source(r: Reader) -> ast.DataSource:
+    loc = r.loc()
+    start = r.pos
+    kind = r.literal(("from", "value", "string"), "data source")
+    r.space("value" if kind == "value" else "entity, storage or block")
+    if kind == "value":
+        return ast.SourceValue(value(r), loc)
+    if kind == "string":
+        problem = feature_problem("data modify string", r.version)
+        if problem:
+            r.fail(problem, start)
+    source = data_target(r)
+    path = nbt_path(r) if r.optional_space() else None
+    if kind == "from":
+        return ast.SourceFrom(source, path, loc)
+    begin = end = None
+    if path is not None and r.optional_space():
+        begin = r.integer(what="start index")
+        if r.optional_space():
+            end = r.integer(what="end index")
+    return ast.SourceString(source, path, begin, end, loc)
+
+
+_ACTIONS = {"get": _get, "merge": _merge, "modify": _modify, "remove": _remove}
+
+
+def data(r: Reader, loc) -> ast.Command:
+    r.space("get, merge, modify or remove")
+    action = r.literal(_ACTIONS, "data action")
+    r.space("entity, storage or block")
+    return _ACTIONS[action](r, loc)
+
+
+PARSERS = {"data": data}

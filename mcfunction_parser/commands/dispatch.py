@@ -1,0 +1,36 @@
+"""Dispatch on a command's first word; every command family registers its parsers here."""
+from __future__ import annotations
+
+from functools import lru_cache
+
+from ..ast import Command, GenericCommand
+from ..features import COMMANDS, command_problem, permission_warning
+from ..reader import WORD, Reader, show
+
+# name -> parser(reader positioned after the name, loc of the name) -> Command
+REGISTRY: dict = {}
+
+
+@lru_cache(maxsize=64)
+def _available(version: tuple[int, int, int]) -> frozenset:
+    return frozenset(name for name in COMMANDS if command_problem(name, version) is None)
+
+
+def command(r: Reader) -> Command:
+    """Parse the command starting at the cursor (the rest of the text)."""
+    start = r.pos
+    name = WORD.match(r.text, start).group()
+    if name not in _available(r.version):
+        if not name:
+            r.fail(f"expected a command, got {show(r.rest_word())}")
+        r.fail(command_problem(name, r.version), start)
+    loc = r.loc(start)
+    r.pos = start + len(name)
+    warning = permission_warning(name)
+    if warning:
+        r.warnings.append((warning, start))
+    parser = REGISTRY.get(name)
+    if parser is not None:
+        return parser(r, loc)
+    r.pos = r.end
+    return GenericCommand(loc, name, r.text[start:])

@@ -1,0 +1,95 @@
+"""``tag``, ``summon``, ``kill`` and ``tp``/``teleport``."""
+from __future__ import annotations
+
+from .. import ast
+from ..arguments import resource_location, vec2, vec3
+from ..reader import ParseError, Reader
+from ..selectors import target
+from ..snbt import compound
+
+
+def tag(r: Reader, loc) -> ast.Command:
+    r.space("entities")
+    who = target(r)
+    r.space("add, remove or list")
+    action = r.literal(("add", "remove", "list"), "tag action")
+    name = None
+    if action != "list":
+        r.space("tag name")
+        start = r.pos
+        name = r.unquoted()
+        if not name:
+            r.fail("expected a tag name (letters, digits, _ - . +)", start)
+    r.finish()
+    return ast.TagCommand(loc, who, action, name)
+
+
+def summon(r: Reader, loc) -> ast.Command:
+    r.space("entity type")
+    kind = resource_location(r, "entity type")
+    pos = nbt = None
+    if r.optional_space():
+        pos = vec3(r)
+        if r.optional_space():
+            nbt = compound(r)
+    r.finish()
+    return ast.Summon(loc, kind, pos, nbt)
+
+
+def kill(r: Reader, loc) -> ast.Command:
+    who = target(r) if r.optional_space() else None
+    r.finish()
+    return ast.Kill(loc, who)
+
+
+def _try_position(r: Reader):
+    """A position if the cursor holds one, else None with the cursor unchanged (``tp`` is ambiguous:
+    ``tp 1 2 3`` is a position, ``tp Steve`` a player; the game tries both branches)."""
+    if r.peek() == "@":
+        return None
+    start = r.pos
+    try:
+        return vec3(r)
+    except ParseError:
+        r.pos = start
+        return None
+
+
+def teleport(r: Reader, loc) -> ast.Command:
+    r.space("entity or position")
+    pos = _try_position(r)
+    if pos is not None:
+        r.finish()
+        return ast.Teleport(loc, None, pos)
+    first_start = r.pos
+    who = target(r)
+    if not r.optional_space():
+        r.pos = first_start
+        destination = target(r, single=True)
+        return ast.Teleport(loc, None, destination)
+    pos = _try_position(r)
+    if pos is None:
+        destination = target(r, single=True)
+        r.finish()
+        return ast.Teleport(loc, who, destination)
+    if not r.optional_space():
+        return ast.Teleport(loc, who, pos)
+    if r.rest_word() != "facing":
+        rotation = vec2(r)
+        r.finish()
+        return ast.Teleport(loc, who, pos, rotation=rotation)
+    r.pos += 6
+    r.space("position or 'entity'")
+    if r.rest_word() != "entity":
+        facing = vec3(r)
+        r.finish()
+        return ast.Teleport(loc, who, pos, facing=facing)
+    r.pos += 6
+    r.space("entity")
+    facing_entity = target(r, single=True)
+    anchor = r.literal(("eyes", "feet"), "anchor") if r.optional_space() else None
+    r.finish()
+    return ast.Teleport(loc, who, pos, facing_entity=facing_entity, facing_anchor=anchor)
+
+
+PARSERS = {"tag": tag, "summon": summon, "kill": kill, "tp": teleport, "teleport": teleport}

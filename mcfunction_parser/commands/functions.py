@@ -1,0 +1,74 @@
+"""``function``, ``return`` and ``schedule``."""
+from __future__ import annotations
+
+from .. import ast
+from ..arguments import duration, resource_or_tag
+from ..features import feature_problem
+from ..nbt_path import nbt_path
+from ..reader import Reader
+from ..snbt import compound
+from .data_targets import data_target
+from .dispatch import command
+
+
+def _require(r: Reader, feature: str, pos: int) -> None:
+    problem = feature_problem(feature, r.version)
+    if problem:
+        r.fail(problem, pos)
+
+
+def function(r: Reader, loc) -> ast.Command:
+    r.space("function")
+    name, is_tag = resource_or_tag(r, "function")
+    if not r.optional_space():
+        return ast.FunctionCall(loc, name, is_tag)
+    _require(r, "function arguments", r.pos)
+    if r.peek() == "{":
+        args = compound(r)
+        r.finish()
+        return ast.FunctionCall(loc, name, is_tag, arguments=args)
+    r.literal(("with",), "arguments '{...}' or 'with'")
+    r.space("entity, storage or block")
+    source = data_target(r)
+    path = nbt_path(r) if r.optional_space() else None
+    r.finish()
+    return ast.FunctionCall(loc, name, is_tag, with_source=source, with_path=path)
+
+
+def return_(r: Reader, loc) -> ast.Command:
+    r.space("return value, 'run' or 'fail'")
+    start = r.pos
+    word = r.rest_word()
+    if word == "run":
+        _require(r, "return run", start)
+        r.pos += 3
+        r.space("command")
+        return ast.Return(loc, "run", command=command(r))
+    if word == "fail":
+        _require(r, "return fail", start)
+        r.pos += 4
+        r.finish()
+        return ast.Return(loc, "fail")
+    value = r.integer(what="return value")
+    r.finish()
+    return ast.Return(loc, "value", value=value)
+
+
+def schedule(r: Reader, loc) -> ast.Command:
+    r.space("function or clear")
+    action = r.literal(("function", "clear"), "schedule action")
+    r.space("function")
+    if action == "clear":
+        # a greedy string compared textually with the scheduled ids ("ns:path" or "#ns:path"),
+        # so it is kept as written: `schedule clear foo` does not clear minecraft:foo's event
+        text = r.rest()
+        return ast.ScheduleClear(loc, text[1:] if text.startswith("#") else text, text.startswith("#"))
+    name, is_tag = resource_or_tag(r, "function")
+    r.space("time")
+    ticks = duration(r, minimum=1)
+    mode = r.literal(("append", "replace"), "schedule mode") if r.optional_space() else "replace"
+    r.finish()
+    return ast.Schedule(loc, name, is_tag, ticks, mode)
+
+
+PARSERS = {"function": function, "return": return_, "schedule": schedule}

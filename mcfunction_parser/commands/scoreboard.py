@@ -1,0 +1,208 @@
+"""``scoreboard objectives ...`` and ``scoreboard players ...``."""
+from __future__ import annotations
+
+import re
+
+from .. import ast
+from ..arguments import json_span, objective, score_holder
+from ..features import feature_problem
+from ..reader import INT_MAX, Reader, show
+from ..selectors import is_single
+
+_SIMPLE_CRITERIA = frozenset((
+    "dummy", "trigger", "deathCount", "playerKillCount", "totalKillCount", "health", "xp", "level",
+    "food", "air", "armor"))
+_COLORS = frozenset((
+    "black", "dark_blue", "dark_green", "dark_aqua", "dark_red", "dark_purple", "gold", "gray", "dark_gray",
+    "blue", "green", "aqua", "red", "light_purple", "yellow", "white"))
+# statistic criteria: <stat type>:<id>, each part a resource location written with '.' for ':'
+_STAT_CRITERION = re.compile(r"[a-z0-9_.\-]+:[a-z0-9_.\-/]+\Z")
+OPERATIONS = frozenset(("=", "+=", "-=", "*=", "/=", "%=", "<", ">", "><"))
+
+
+def _criterion(r: Reader) -> str:
+    start = r.pos
+    word = r.word()
+    if word in _SIMPLE_CRITERIA or _STAT_CRITERION.match(word):
+        return word
+    prefix, _, color = word.partition(".")
+    if prefix in ("teamkill", "killedByTeam") and color in _COLORS:
+        return word
+    r.fail(f"unknown criterion {show(word)}", start)
+
+
+def _display_slot(r: Reader) -> str:
+    start = r.pos
+    word = r.word()
+    if word in ("list", "sidebar", "belowName", "below_name"):
+        return word
+    prefix, _, color = word.partition(".team.")
+    if prefix == "sidebar" and color in _COLORS:
+        return word
+    r.fail(f"unknown display slot {show(word)}", start)
+
+
+def _require(r: Reader, feature: str, pos: int) -> None:
+    problem = feature_problem(feature, r.version)
+    if problem:
+        r.fail(problem, pos)
+
+
+def _objectives(r: Reader, loc) -> ast.Command:
+    r.space("objectives action")
+    action = r.literal(_OBJECTIVE_ACTIONS, "objectives action")
+    return _OBJECTIVE_ACTIONS[action](r, loc)
+
+
+def _obj_add(r, loc):
+    r.space("objective name")
+    name = objective(r)
+    r.space("criterion")
+    criterion = _criterion(r)
+    display = json_span(r) if r.optional_space() else None
+    r.finish()
+    return ast.ObjectivesAdd(loc, name, criterion, display)
+
+
+def _obj_remove(r, loc):
+    r.space("objective name")
+    name = objective(r)
+    r.finish()
+    return ast.ObjectivesRemove(loc, name)
+
+
+def _obj_modify(r, loc):
+    r.space("objective name")
+    name = objective(r)
+    r.space("property to modify")
+    start = r.pos
+    field = r.literal(("displayname", "rendertype", "displayautoupdate", "numberformat"), "objective property")
+    if field in ("displayautoupdate", "numberformat"):
+        _require(r, "objectives modify " + field, start)
+    if field == "numberformat":
+        value = r.text[r.pos + 1:] if r.optional_space() else ""
+        r.pos = r.end
+        return ast.ObjectivesModify(loc, name, field, value)
+    r.space("value")
+    if field == "displayname":
+        value = json_span(r)
+    elif field == "rendertype":
+        value = r.literal(("hearts", "integer"), "render type")
+    else:
+        value = "true" if r.boolean() else "false"
+    r.finish()
+    return ast.ObjectivesModify(loc, name, field, value)
+
+
+def _obj_setdisplay(r, loc):
+    r.space("display slot")
+    slot = _display_slot(r)
+    name = objective(r) if r.optional_space() else None
+    r.finish()
+    return ast.ObjectivesSetdisplay(loc, slot, name)
+
+
+def _obj_list(r, loc):
+    r.finish()
+    return ast.ObjectivesList(loc)
+
+
+_OBJECTIVE_ACTIONS = {
+    "add": _obj_add, "remove": _obj_remove, "modify": _obj_modify, "setdisplay": _obj_setdisplay, "list": _obj_list,
+}
+
+
+def _players(r: Reader, loc) -> ast.Command:
+    r.space("players action")
+    action = r.literal(_PLAYER_ACTIONS, "players action")
+    return _PLAYER_ACTIONS[action](r, loc, action)
+
+
+def _single_holder(r: Reader):
+    start = r.pos
+    holder = score_holder(r, allow_wildcard=False)
+    if isinstance(holder, ast.Selector) and not is_single(holder):
+        r.fail("only one score holder is allowed, but the selector allows more than one", start)
+    return holder
+
+
+def _pl_set(r, loc, action):
+    r.space("score holder")
+    holder = score_holder(r)
+    r.space("objective")
+    name = objective(r)
+    r.space("score")
+    value = r.integer(what="score") if action == "set" else r.integer(0, INT_MAX, what="score")
+    r.finish()
+    return ast.ScoreSet(loc, action, holder, name, value)
+
+
+def _pl_reset(r, loc, action):
+    r.space("score holder")
+    holder = score_holder(r)
+    name = objective(r) if r.optional_space() else None
+    r.finish()
+    return ast.ScoreReset(loc, holder, name)
+
+
+def _pl_get(r, loc, action):
+    r.space("score holder")
+    holder = _single_holder(r)
+    r.space("objective")
+    name = objective(r)
+    r.finish()
+    return ast.ScoreGet(loc, holder, name)
+
+
+def _pl_enable(r, loc, action):
+    r.space("score holder")
+    holder = score_holder(r)
+    r.space("objective")
+    name = objective(r)
+    r.finish()
+    return ast.ScoreEnable(loc, holder, name)
+
+
+def _pl_operation(r, loc, action):
+    r.space("score holder")
+    targets = score_holder(r)
+    r.space("objective")
+    name = objective(r)
+    r.space("operation")
+    op = r.literal(OPERATIONS, "operation")
+    r.space("score holder")
+    sources = score_holder(r)
+    r.space("objective")
+    source_name = objective(r)
+    r.finish()
+    return ast.ScoreOperation(loc, targets, name, op, sources, source_name)
+
+
+def _pl_list(r, loc, action):
+    holder = _single_holder(r) if r.optional_space() else None
+    r.finish()
+    return ast.ScoreList(loc, holder)
+
+
+def _pl_display(r, loc, action):
+    _require(r, "scoreboard players display", r.pos - len(action))
+    r.space("display property")
+    text = r.rest()
+    if not text.startswith(("name ", "numberformat ")):
+        r.fail(f"expected name or numberformat, got {show(text.split(' ')[0])}", r.end - len(text))
+    return ast.ScoreDisplay(loc, text)
+
+
+_PLAYER_ACTIONS = {
+    "set": _pl_set, "add": _pl_set, "remove": _pl_set, "reset": _pl_reset, "get": _pl_get,
+    "enable": _pl_enable, "operation": _pl_operation, "list": _pl_list, "display": _pl_display,
+}
+
+
+def scoreboard(r: Reader, loc) -> ast.Command:
+    r.space("objectives or players")
+    branch = r.literal(("objectives", "players"), "scoreboard branch")
+    return (_objectives if branch == "objectives" else _players)(r, loc)
+
+
+PARSERS = {"scoreboard": scoreboard}

@@ -1,0 +1,98 @@
+"""``gamerule``, ``random``, ``time`` and ``trigger``."""
+from __future__ import annotations
+
+import re
+
+from .. import ast
+from ..arguments import duration, int_range, objective, resource_location
+from ..features import feature_problem
+from ..reader import Reader, show
+
+_RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")
+_INT_VALUE = re.compile(r"-?[0-9]+\Z")
+TIME_NAMES = {"day": 1000, "noon": 6000, "night": 13000, "midnight": 18000}
+
+
+def gamerule(r: Reader, loc) -> ast.Command:
+    r.space("game rule")
+    start = r.pos
+    rule = r.word()
+    if not _RULE.match(rule):
+        r.fail(f"expected a game rule name, got {show(rule)}", start)
+    value = None
+    if r.optional_space():
+        start = r.pos
+        value = r.word()
+        if value not in ("true", "false") and not _INT_VALUE.match(value):
+            r.fail(f"expected true, false or an integer for the game rule, got {show(value)}", start)
+        if _INT_VALUE.match(value) and not -(2**31) <= int(value) < 2**31:
+            r.fail(f"integer {value} is out of range for a 32-bit int", start)
+    r.finish()
+    return ast.Gamerule(loc, rule, value)
+
+
+def _sequence(r: Reader) -> str | None:
+    return resource_location(r, "random sequence") if r.optional_space() else None
+
+
+def random(r: Reader, loc) -> ast.Command:
+    r.space("value, roll or reset")
+    start = r.pos
+    action = r.literal(("value", "roll", "reset"), "random action")
+    r.space("range" if action != "reset" else "sequence or '*'")
+    if action != "reset":
+        rng = int_range(r)
+        seq = _sequence(r)
+        r.finish()
+        return ast.RandomCommand(loc, action, rng, seq)
+    problem = feature_problem("random reset", r.version)
+    if problem:
+        r.fail(problem, start)
+    if r.peek() == "*" and r.rest_word() == "*":
+        r.pos += 1
+        seq = "*"
+    else:
+        seq = resource_location(r, "random sequence")
+    seed = None
+    include_world = include_seq = True
+    if r.optional_space():
+        seed = r.integer(what="seed")
+        if r.optional_space():
+            include_world = r.boolean()
+            r.space("includeSequenceId")
+            include_seq = r.boolean()
+    r.finish()
+    return ast.RandomCommand(loc, "reset", None, seq, seed, include_world, include_seq)
+
+
+def time(r: Reader, loc) -> ast.Command:
+    r.space("add, set or query")
+    action = r.literal(("add", "set", "query"), "time action")
+    r.space("time" if action != "query" else "daytime, gametime or day")
+    if action == "query":
+        query = r.literal(("daytime", "gametime", "day"), "time query")
+        r.finish()
+        return ast.Time(loc, action, None, query)
+    word = r.rest_word()
+    if action == "set" and word in TIME_NAMES:
+        r.pos += len(word)
+        value = TIME_NAMES[word]
+    else:
+        value = duration(r)
+    r.finish()
+    return ast.Time(loc, action, value, None)
+
+
+def trigger(r: Reader, loc) -> ast.Command:
+    r.space("objective")
+    name = objective(r)
+    action = value = None
+    if r.optional_space():
+        action = r.literal(("add", "set"), "trigger action")
+        r.space("value")
+        value = r.integer(what="value")
+    r.finish()
+    return ast.Trigger(loc, name, action, value)
+
+
+PARSERS = {"gamerule": gamerule, "random": random, "time": time, "trigger": trigger}

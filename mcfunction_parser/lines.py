@@ -1,0 +1,88 @@
+"""Split a function file into logical command lines, as the game's function loader does.
+
+Each physical line is trimmed (Java ``String.trim``: every character up to U+0020); an empty
+line or one starting with ``#`` is skipped. From 1.20.2 a trimmed line ending in ``\\`` is
+joined with the next trimmed line (the ``\\`` removed; this also applies to comment lines), and
+a line starting with ``$`` is a macro line whose ``$(key)`` placeholders are filled in when
+the function is called with arguments.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from .features import FEATURES
+
+_TRIM = "".join(chr(c) for c in range(0x21))
+_MACRO_VAR = re.compile(r"\$\(([^)]*)\)?")
+_MACRO_KEY = re.compile(r"[A-Za-z0-9_]+\Z")
+
+
+@dataclass(frozen=True, slots=True)
+class LogicalLine:
+    """One command's text; ``segments`` maps offsets of a joined line back to (line, col)."""
+
+    text: str
+    line: int
+    col: int
+    segments: tuple[tuple[int, int, int], ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
+class LineError:
+    message: str
+    line: int
+    col: int
+
+
+def logical_lines(physical: list[str], version: tuple[int, int, int]):
+    """Yield :class:`LogicalLine` (commands and ``$`` lines) and :class:`LineError` in order."""
+    continuation = version >= FEATURES["line continuation"][0]
+    count = len(physical)
+    i = 0
+    while i < count:
+        raw = physical[i]
+        text = raw.strip(_TRIM)
+        line_no = i + 1
+        col = len(raw) - len(raw.lstrip(_TRIM)) + 1
+        i += 1
+        segments = ()
+        if continuation and text.endswith("\\"):
+            pieces = [text[:-1]]
+            segments = [(0, line_no, col)]
+            offset = len(text) - 1
+            while True:
+                if i == count:
+                    yield LineError("line continuation '\\' at the end of the file", line_no, col + len(text) - 1)
+                    return
+                nxt = physical[i]
+                piece = nxt.strip(_TRIM)
+                segments.append((offset, i + 1, len(nxt) - len(nxt.lstrip(_TRIM)) + 1))
+                i += 1
+                if piece.endswith("\\"):
+                    pieces.append(piece[:-1])
+                    offset += len(piece) - 1
+                    continue
+                pieces.append(piece)
+                break
+            text = "".join(pieces)
+            segments = tuple(segments)
+        if not text or text[0] == "#":
+            continue
+        yield LogicalLine(text, line_no, col, segments)
+
+
+def macro_keys(template: str) -> tuple[tuple[str, ...], str | None, int]:
+    """The ``$(key)`` names of a macro line's template, and an error message with its offset if invalid."""
+    keys: list[str] = []
+    for m in _MACRO_VAR.finditer(template):
+        if not m.group(0).endswith(")"):
+            return (), "unterminated macro variable '$(' (expected ')')", m.start()
+        key = m.group(1)
+        if not _MACRO_KEY.match(key):
+            return (), f"invalid macro variable name '{key}' (allowed: A-Z a-z 0-9 _)", m.start() + 2
+        if key not in keys:
+            keys.append(key)
+    if not keys:
+        return (), "macro line without any $(variable)", 0
+    return tuple(keys), None, 0

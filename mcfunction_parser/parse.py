@@ -1,0 +1,107 @@
+"""Public entry points: parse one function file, or one command (a macro line after substitution)."""
+from __future__ import annotations
+
+from .ast import Command, Function, MacroLine
+from .commands import command
+from .diagnostics import ERROR, WARNING, Diagnostic, Loc
+from .features import feature_problem
+from .lines import LineError, LogicalLine, logical_lines, macro_keys
+from .reader import ParseError, Reader
+
+DEFAULT_VERSION = (1, 21, 0)
+
+
+def parse_function(source: str, path: str, function_id: str,
+                   version: tuple[int, int, int] = DEFAULT_VERSION) -> tuple[Function, list[Diagnostic]]:
+    """Parse a whole .mcfunction file. A bad line is reported and left out; the rest still parses."""
+    physical = source.split("\n")
+    if physical and physical[-1] == "":
+        physical.pop()
+    commands: list[Command] = []
+    diagnostics: list[Diagnostic] = []
+    is_macro = False
+    macros_ok = feature_problem("macro lines", version) is None
+    for item in logical_lines(physical, version):
+        if type(item) is LineError:
+            diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col, physical[item.line - 1]))
+            continue
+        text = item.text
+        first = text[0]
+        if first == "$":
+            if not macros_ok:
+                diagnostics.append(Diagnostic(ERROR, feature_problem("macro lines", version), path, item.line,
+                                              item.col, physical[item.line - 1]))
+                continue
+            macro = _macro_line(item, path, physical, diagnostics)
+            if macro is not None:
+                commands.append(macro)
+                is_macro = True
+            continue
+        if first == "/":
+            _leading_slash(item, path, physical, diagnostics)
+            continue
+        reader = Reader(text, Loc(path, item.line, item.col), version, item.segments)
+        cmd = _parse(reader, diagnostics, physical)
+        if cmd is not None:
+            commands.append(cmd)
+    function = Function(function_id, path, tuple(commands), len(physical), is_macro)
+    return function, diagnostics
+
+
+def parse_command(text: str, loc: Loc,
+                  version: tuple[int, int, int] = DEFAULT_VERSION) -> tuple[Command | None, list[Diagnostic]]:
+    """Parse one command (no leading ``/``), e.g. a macro line with its ``$(key)`` filled in.
+
+    ``loc`` is where the command text starts; diagnostics point into ``text`` from there.
+    """
+    diagnostics: list[Diagnostic] = []
+    source_line = " " * (loc.col - 1) + text
+    reader = Reader(text, loc, version)
+    cmd = _parse(reader, diagnostics, None, source_line)
+    return cmd, diagnostics
+
+
+def _parse(reader: Reader, diagnostics: list[Diagnostic], physical: list[str] | None,
+           source_line: str | None = None) -> Command | None:
+    try:
+        cmd = command(reader)
+        if reader.pos < reader.end:
+            reader.finish()
+    except ParseError as error:
+        _report(reader, ERROR, error.message, error.pos, diagnostics, physical, source_line)
+        cmd = None
+    except RecursionError:
+        _report(reader, ERROR, "command is nested too deeply", 0, diagnostics, physical, source_line)
+        cmd = None
+    for message, pos in reader.warnings:
+        _report(reader, WARNING, message, pos, diagnostics, physical, source_line)
+    return cmd
+
+
+def _report(reader: Reader, severity: str, message: str, pos: int, diagnostics: list[Diagnostic],
+            physical: list[str] | None, source_line: str | None) -> None:
+    loc = reader.loc(min(pos, reader.end))
+    if physical is not None:
+        source_line = physical[loc.line - 1]
+    diagnostics.append(Diagnostic.at(severity, message, loc, source_line))
+
+
+def _macro_line(item: LogicalLine, path: str, physical: list[str], diagnostics: list[Diagnostic]) -> MacroLine | None:
+    template = item.text[1:]
+    keys, error, offset = macro_keys(template)
+    loc = Loc(path, item.line, item.col)
+    if error:
+        reader = Reader(item.text, loc, (0, 0, 0), item.segments)
+        _report(reader, ERROR, error, offset + 1, diagnostics, physical, None)
+        return None
+    return MacroLine(loc, template, keys)
+
+
+def _leading_slash(item: LogicalLine, path: str, physical: list[str], diagnostics: list[Diagnostic]) -> None:
+    text = item.text
+    if text.startswith("//"):
+        message = "unknown command '//...': comments start with '#', not '//'"
+    else:
+        name = text[1:].split(" ", 1)[0]
+        message = f"unknown command '{text.split(' ', 1)[0]}': remove the leading '/' (did you mean '{name}'?)"
+    diagnostics.append(Diagnostic(ERROR, message, path, item.line, item.col, physical[item.line - 1]))

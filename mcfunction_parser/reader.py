@@ -1,0 +1,249 @@
+"""A cursor over one command's text with Brigadier's token rules.
+
+Arguments are separated by exactly one space (Brigadier's ``ARGUMENT_SEPARATOR``). Tokens are
+read with precompiled regexes matched at the cursor; a syntax error raises :class:`ParseError`
+carrying the offset, which the command entry point turns into one diagnostic. Exceptions are
+only raised for bad input, never on the happy path.
+"""
+from __future__ import annotations
+
+import re
+
+from .diagnostics import Loc
+
+INT_MIN = -(2**31)
+INT_MAX = 2**31 - 1
+
+WORD = re.compile(r"[^ ]*")
+# Brigadier StringReader.isAllowedInUnquotedString
+UNQUOTED = re.compile(r"[0-9A-Za-z_\-.+]*")
+# Brigadier StringReader.isAllowedNumber: digits, '-' and '.'
+NUMBER = re.compile(r"[0-9.\-]*")
+# Brigadier quoted strings escape only the quote and the backslash.
+QUOTED = {
+    '"': re.compile(r'"((?:[^"\\]|\\["\\])*)"'),
+    "'": re.compile(r"'((?:[^'\\]|\\['\\])*)'"),
+}
+_UNESCAPE = re.compile(r"\\(.)")
+_INT_TEXT = re.compile(r"-?[0-9]+\Z")
+_FLOAT_TEXT = re.compile(r"-?(?:[0-9]+\.?[0-9]*|\.[0-9]+)\Z")
+
+
+class ParseError(Exception):
+    """A syntax error at offset ``pos`` of the command text."""
+
+    def __init__(self, message: str, pos: int):
+        super().__init__(message)
+        self.message = message
+        self.pos = pos
+
+
+def show(text: str) -> str:
+    """How an offending token appears in a message."""
+    return f"'{text}'" if text else "end of command"
+
+
+class Reader:
+    """The command text, the cursor, and how offsets map back to file positions.
+
+    ``segments`` is empty for a one-line command; for a command joined from continuation lines
+    it lists ``(offset, line, col)`` where each physical line's piece starts.
+    """
+
+    __slots__ = ("text", "pos", "end", "path", "line", "col", "segments", "version", "warnings")
+
+    def __init__(self, text: str, loc: Loc, version: tuple[int, int, int], segments: tuple = ()):
+        self.text = text
+        self.pos = 0
+        self.end = len(text)
+        self.path = loc.path
+        self.line = loc.line
+        self.col = loc.col
+        self.segments = segments
+        self.version = version
+        self.warnings: list[tuple[str, int]] = []  # (message, offset): problems that keep the command
+
+    # ------------------------------------------------------------------ positions
+
+    def loc(self, pos: int | None = None) -> Loc:
+        if pos is None:
+            pos = self.pos
+        if self.segments:
+            return self._segment_loc(pos)
+        return Loc(self.path, self.line, self.col + pos)
+
+    def _segment_loc(self, pos: int) -> Loc:
+        start, line, col = self.segments[0]
+        for seg in self.segments:
+            if seg[0] > pos:
+                break
+            start, line, col = seg
+        return Loc(self.path, line, col + pos - start)
+
+    def fail(self, message: str, pos: int | None = None):
+        raise ParseError(message, self.pos if pos is None else pos)
+
+    # ------------------------------------------------------------------ structure
+
+    def more(self) -> bool:
+        return self.pos < self.end
+
+    def peek(self) -> str:
+        return self.text[self.pos] if self.pos < self.end else ""
+
+    def skip_ws(self) -> None:
+        """Skip Java whitespace (inside SNBT, JSON and selector brackets)."""
+        text, pos, end = self.text, self.pos, self.end
+        while pos < end and text[pos] in " \t\r\n":
+            pos += 1
+        self.pos = pos
+
+    def expect(self, char: str) -> None:
+        if self.pos < self.end and self.text[self.pos] == char:
+            self.pos += 1
+            return
+        self.fail(f"expected '{char}', got {show(self.rest_word())}")
+
+    def space(self, what: str = "an argument") -> None:
+        """Consume the one space before a required argument."""
+        pos = self.pos
+        if pos < self.end and self.text[pos] == " ":
+            if pos + 1 < self.end:
+                self.pos = pos + 1
+                return
+            self.fail(f"expected {what} after the space, got end of command", pos + 1)
+        if pos >= self.end:
+            self.fail(f"incomplete command: expected {what}")
+        self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+
+    def optional_space(self) -> bool:
+        """True (and the space consumed) when another argument follows."""
+        pos = self.pos
+        if pos >= self.end:
+            return False
+        if self.text[pos] == " " and pos + 1 < self.end:
+            self.pos = pos + 1
+            return True
+        if self.text[pos] == " ":
+            self.fail("trailing space after the last argument", pos)
+        self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+
+    def finish(self) -> None:
+        """The command must end here."""
+        if self.pos < self.end:
+            if self.text[self.pos] == " ":
+                self.fail(f"expected end of command, got {show(self.rest_word(self.pos + 1))}", self.pos + 1)
+            self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+
+    def rest_word(self, pos: int | None = None) -> str:
+        return WORD.match(self.text, self.pos if pos is None else pos).group()
+
+    def rest(self) -> str:
+        text = self.text[self.pos:]
+        self.pos = self.end
+        return text
+
+    # ------------------------------------------------------------------ tokens
+
+    def word(self) -> str:
+        m = WORD.match(self.text, self.pos)
+        self.pos = m.end()
+        return m.group()
+
+    def literal(self, choices, what: str) -> str:
+        """One of ``choices`` (a set or dict of words)."""
+        start = self.pos
+        word = WORD.match(self.text, start).group()
+        if word in choices:
+            self.pos = start + len(word)
+            return word
+        options = "|".join(sorted(choices))
+        self.fail(f"expected {what} ({options}), got {show(word)}", start)
+
+    def unquoted(self) -> str:
+        m = UNQUOTED.match(self.text, self.pos)
+        self.pos = m.end()
+        return m.group()
+
+    def quoted(self) -> str:
+        start = self.pos
+        quote = self.text[start]
+        m = QUOTED[quote].match(self.text, start)
+        if m is None:
+            self._quoted_error(start, quote)
+        self.pos = m.end()
+        body = m.group(1)
+        return _UNESCAPE.sub(r"\1", body) if "\\" in body else body
+
+    def _quoted_error(self, start: int, quote: str):
+        text, pos = self.text, start + 1
+        while pos < self.end:
+            c = text[pos]
+            if c == "\\":
+                if pos + 1 < self.end and text[pos + 1] in (quote, "\\"):
+                    pos += 2
+                    continue
+                self.fail(f"invalid escape sequence '\\{text[pos + 1:pos + 2]}' in quoted string", pos)
+            if c == quote:
+                break
+            pos += 1
+        self.fail("unclosed quoted string", start)
+
+    def string(self) -> str:
+        """Brigadier ``readString``: a quoted string, or an unquoted word."""
+        c = self.peek()
+        if c == '"' or c == "'":
+            return self.quoted()
+        return self.unquoted()
+
+    def integer(self, lo: int = INT_MIN, hi: int = INT_MAX, what: str = "integer") -> int:
+        start = self.pos
+        token = NUMBER.match(self.text, start).group()
+        if not token:
+            self.fail(f"expected {what}, got {show(self.rest_word())}")
+        if not _INT_TEXT.match(token):
+            self.fail(f"invalid integer '{token}'", start)
+        value = int(token)
+        if value < INT_MIN or value > INT_MAX:
+            self.fail(f"integer {token} is out of range for a 32-bit int", start)
+        if value < lo:
+            self.fail(f"{what} must be at least {lo}, got {value}", start)
+        if value > hi:
+            self.fail(f"{what} must be at most {hi}, got {value}", start)
+        self.pos = start + len(token)
+        return value
+
+    def long(self, what: str = "long") -> int:
+        start = self.pos
+        token = NUMBER.match(self.text, start).group()
+        if not token or not _INT_TEXT.match(token):
+            self.fail(f"expected {what}, got {show(self.rest_word())}")
+        value = int(token)
+        if not -(2**63) <= value < 2**63:
+            self.fail(f"{what} {token} is out of range for a 64-bit long", start)
+        self.pos = start + len(token)
+        return value
+
+    def double(self, lo: float | None = None, hi: float | None = None, what: str = "number") -> float:
+        start = self.pos
+        token = NUMBER.match(self.text, start).group()
+        if not token:
+            self.fail(f"expected {what}, got {show(self.rest_word())}")
+        if not _FLOAT_TEXT.match(token):
+            self.fail(f"invalid number '{token}'", start)
+        value = float(token)
+        if lo is not None and value < lo:
+            self.fail(f"{what} must be at least {lo:g}, got {token}", start)
+        if hi is not None and value > hi:
+            self.fail(f"{what} must be at most {hi:g}, got {token}", start)
+        self.pos = start + len(token)
+        return value
+
+    def boolean(self) -> bool:
+        start = self.pos
+        word = self.string()
+        if word == "true":
+            return True
+        if word == "false":
+            return False
+        self.fail(f"expected true or false, got {show(word)}", start)

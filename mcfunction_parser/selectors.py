@@ -1,0 +1,225 @@
+"""Target selectors (``@e[type=zombie,limit=1]``) and entity arguments (selector, name or UUID).
+
+Option rules follow the game's EntitySelectorOptions: which options accept ``!``, which may
+repeat, and which are not applicable to a selector (``limit``/``sort`` on ``@s``, ``type`` on
+players-only selectors).
+"""
+from __future__ import annotations
+
+from .arguments import float_range, int_range, is_uuid, json_span, resource_location
+from .ast import FloatRange, NameTarget, Selector, SelectorArg
+from .reader import Reader, show
+from .snbt import compound
+
+VARIABLES = frozenset("spaern")
+_SORTS = frozenset(("nearest", "furthest", "random", "arbitrary"))
+_GAMEMODES = frozenset(("survival", "creative", "adventure", "spectator"))
+_NEGATABLE = frozenset(("name", "gamemode", "team", "type", "tag", "nbt", "predicate"))
+_REPEATABLE = frozenset(("tag", "nbt", "predicate"))
+# Options that may repeat only when negated: a non-negated one must be the only one.
+_EXCLUSIVE_EQUALS = frozenset(("name", "gamemode", "team"))
+_DOUBLES = frozenset(("x", "y", "z", "dx", "dy", "dz"))
+_PLAYER_TYPES = frozenset(("minecraft:player",))
+NAME_MAX = 16
+
+
+def selector(r: Reader) -> Selector:
+    loc = r.loc()
+    start = r.pos
+    variable = r.text[start + 1:start + 2]
+    if variable not in VARIABLES or not variable:
+        r.fail(f"unknown selector type {show(r.text[start:start + 2])} (expected @s @e @a @p @r @n)", start)
+    if variable == "n" and r.version < (1, 21, 0):
+        from .features import feature_problem
+
+        r.fail(feature_problem("selector @n", r.version), start)
+    r.pos = start + 2
+    if r.peek() != "[":
+        return Selector(variable, (), loc)
+    return Selector(variable, _options(r, variable), loc)
+
+
+def _options(r: Reader, variable: str) -> tuple[SelectorArg, ...]:
+    r.pos += 1  # '['
+    args: list[SelectorArg] = []
+    seen: dict[str, list[bool]] = {}
+    r.skip_ws()
+    while r.more() and r.peek() != "]":
+        key_pos = r.pos
+        key_loc = r.loc()
+        key = r.string()
+        if key not in _PARSERS:
+            r.fail(f"unknown selector option {show(key)}", key_pos)
+        r.skip_ws()
+        r.expect("=")
+        r.skip_ws()
+        negated = False
+        if key in _NEGATABLE and r.peek() == "!":
+            negated = True
+            r.pos += 1
+            r.skip_ws()
+        _check_applicable(r, variable, key, negated, seen.get(key), key_pos)
+        seen.setdefault(key, []).append(negated)
+        args.append(SelectorArg(key, _PARSERS[key](r), negated, key_loc))
+        r.skip_ws()
+        if r.peek() == ",":
+            r.pos += 1
+            r.skip_ws()
+            continue
+        if r.peek() != "]":
+            r.fail(f"expected ',' or ']' after selector option, got {show(r.rest_word())}")
+    if not r.more():
+        r.fail("unclosed selector: expected ']'")
+    r.pos += 1
+    return tuple(args)
+
+
+def _check_applicable(r: Reader, variable: str, key: str, negated: bool, before: list[bool] | None, pos: int):
+    not_here = f"option '{key}' isn't applicable here"
+    if key in ("limit", "sort") and variable == "s":
+        r.fail(f"{not_here}: @s selects only the executor", pos)
+    if key == "type" and variable in "apr":
+        r.fail(f"{not_here}: @{variable} selects only players", pos)
+    if before is None:
+        return
+    if key in _REPEATABLE:
+        return
+    if key in _EXCLUSIVE_EQUALS or key == "type":
+        if negated and not any(not n for n in before):
+            return
+        r.fail(f"{not_here}: '{key}' is already given", pos)
+    r.fail(f"{not_here}: '{key}' may be given only once", pos)
+
+
+def _distance(r: Reader) -> FloatRange:
+    start = r.pos
+    rng = float_range(r)
+    if rng.lo is not None and rng.lo < 0 or rng.hi is not None and rng.hi < 0:
+        r.fail("distance cannot be negative", start)
+    return rng
+
+
+def _level(r: Reader):
+    start = r.pos
+    rng = int_range(r)
+    if rng.lo is not None and rng.lo < 0 or rng.hi is not None and rng.hi < 0:
+        r.fail("level cannot be negative", start)
+    return rng
+
+
+def _limit(r: Reader) -> int:
+    return r.integer(lo=1, what="limit")
+
+
+def _sort(r: Reader) -> str:
+    start = r.pos
+    word = r.unquoted()
+    if word not in _SORTS:
+        r.fail(f"invalid or unknown sort type {show(word)} (expected nearest|furthest|random|arbitrary)", start)
+    return word
+
+
+def _gamemode(r: Reader) -> str:
+    start = r.pos
+    word = r.unquoted()
+    if word not in _GAMEMODES:
+        r.fail(f"invalid or unknown game mode {show(word)} (expected survival|creative|adventure|spectator)", start)
+    return word
+
+
+def _type(r: Reader) -> str:
+    if r.peek() == "#":
+        r.pos += 1
+        return "#" + resource_location(r, "entity type tag")
+    return resource_location(r, "entity type")
+
+
+def _scores(r: Reader):
+    r.expect("{")
+    r.skip_ws()
+    scores = []
+    while r.more() and r.peek() != "}":
+        start = r.pos
+        name = r.unquoted()
+        if not name:
+            r.fail(f"expected an objective name, got {show(r.rest_word())}", start)
+        r.skip_ws()
+        r.expect("=")
+        r.skip_ws()
+        scores.append((name, int_range(r)))
+        r.skip_ws()
+        if r.peek() == ",":
+            r.pos += 1
+            r.skip_ws()
+    r.expect("}")
+    return tuple(scores)
+
+
+def _advancements(r: Reader) -> str:
+    if r.peek() != "{":
+        r.fail(f"expected '{{' for advancements, got {show(r.rest_word())}")
+    return json_span(r, "advancements")
+
+
+def _double(r: Reader) -> float:
+    return r.double()
+
+
+_PARSERS = {
+    "name": Reader.string,
+    "distance": _distance,
+    "level": _level,
+    "x_rotation": float_range,
+    "y_rotation": float_range,
+    "limit": _limit,
+    "sort": _sort,
+    "gamemode": _gamemode,
+    "team": Reader.unquoted,
+    "type": _type,
+    "tag": Reader.unquoted,
+    "nbt": compound,
+    "scores": _scores,
+    "advancements": _advancements,
+    "predicate": lambda r: resource_location(r, "predicate"),
+}
+for _key in _DOUBLES:
+    _PARSERS[_key] = _double
+
+
+# ----------------------------------------------------------------------------- entity arguments
+
+
+def is_single(target) -> bool:
+    if isinstance(target, NameTarget):
+        return True
+    if target.variable in "sprn":
+        return True
+    return any(a.key == "limit" and a.value == 1 for a in target.args)
+
+
+def is_players_only(target) -> bool:
+    if isinstance(target, NameTarget):
+        return not target.is_uuid
+    if target.variable in "aprs":
+        return True
+    return any(not a.negated and (a.key == "type" and a.value in _PLAYER_TYPES or a.key in ("level", "gamemode"))
+               for a in target.args)
+
+
+def target(r: Reader, single: bool = False, players: bool = False):
+    """An entity argument: a selector, a player name (max 16 characters) or a UUID."""
+    start = r.pos
+    if r.peek() == "@":
+        result = selector(r)
+    else:
+        loc = r.loc()
+        name = r.string()
+        uuid = is_uuid(name)
+        if not uuid and (not name or len(name) > NAME_MAX):
+            r.fail(f"expected a selector, player name or UUID, got {show(name or r.rest_word())}", start)
+        result = NameTarget(name, loc, is_uuid=uuid)
+    if single and not is_single(result):
+        r.fail("only one entity is allowed, but the selector allows more than one (add limit=1)", start)
+    if players and not is_players_only(result):
+        r.fail("only players may be targeted here, but the selector includes entities (add type=player)", start)
+    return result

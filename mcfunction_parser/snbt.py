@@ -1,0 +1,176 @@
+"""SNBT (stringified NBT) literals, with the game's TagParser rules (1.13 – 1.21.4).
+
+Unquoted values are typed by the game's patterns: ``1b 2s 3 4L 1.5f 2.0d 1.5`` (a bare decimal is
+a double), ``true``/``false`` are bytes, a number out of its type's range stays a string.
+From 1.21.5 the game's new SNBT grammar also accepts lists of mixed types; that is the only
+1.21.5 extension modelled here.
+"""
+from __future__ import annotations
+
+import re
+import struct
+
+from .nbt import (Byte, ByteArray, Compound, Double, Float, Int, IntArray, List, Long, LongArray, Short,
+                  String)
+from .reader import UNQUOTED, Reader, show
+
+_UNQUOTED_VALUE = UNQUOTED
+_INTEGER = re.compile(r"[-+]?(?:0|[1-9][0-9]*)([bBsSlL]?)\Z")
+_DECIMAL = re.compile(r"[-+]?(?:[0-9]+\.|[0-9]*\.[0-9]+)(?:[eE][-+]?[0-9]+)?\Z")
+_SUFFIXED = re.compile(r"[-+]?(?:[0-9]+\.?|[0-9]*\.[0-9]+)(?:[eE][-+]?[0-9]+)?([dDfF])\Z")
+_INT_TYPES = {"": (Int, 32), "b": (Byte, 8), "s": (Short, 16), "l": (Long, 64)}
+_WS = " \t\r\n"
+_ARRAY_TYPES = {"B": (ByteArray, Byte), "I": (IntArray, Int), "L": (LongArray, Long)}
+_TYPE_NAMES = {Byte: "TAG_Byte", Short: "TAG_Short", Int: "TAG_Int", Long: "TAG_Long", Float: "TAG_Float",
+               Double: "TAG_Double", String: "TAG_String", List: "TAG_List", Compound: "TAG_Compound",
+               ByteArray: "TAG_Byte_Array", IntArray: "TAG_Int_Array", LongArray: "TAG_Long_Array"}
+MIXED_LISTS = (1, 21, 5)
+
+
+def to_float32(value: float) -> float:
+    try:
+        return struct.unpack("f", struct.pack("f", value))[0]
+    except OverflowError:
+        return float("inf") if value > 0 else float("-inf")
+
+
+def typed_primitive(token: str):
+    """The NBT value of an unquoted SNBT token (TagParser.type)."""
+    m = _INTEGER.match(token)
+    if m:
+        kind, bits = _INT_TYPES[m.group(1).lower()]
+        value = int(token[:-1] if m.group(1) else token)
+        if -(1 << (bits - 1)) <= value < (1 << (bits - 1)):
+            return kind(value)
+        return String(token)
+    m = _SUFFIXED.match(token)
+    if m:
+        value = float(token[:-1])
+        return Float(to_float32(value)) if m.group(1) in "fF" else Double(value)
+    if _DECIMAL.match(token):
+        return Double(float(token))
+    if token == "true":
+        return Byte(1)
+    if token == "false":
+        return Byte(0)
+    return String(token)
+
+
+def _skip_ws(r: Reader) -> None:
+    text, pos, end = r.text, r.pos, r.end
+    while pos < end and text[pos] in _WS:
+        pos += 1
+    r.pos = pos
+
+
+def compound(r: Reader) -> Compound:
+    """A ``{...}`` compound starting at the cursor."""
+    if r.peek() != "{":
+        r.fail(f"expected an NBT compound '{{...}}', got {show(r.rest_word())}")
+    return _compound(r)
+
+
+def value(r: Reader):
+    """Any SNBT value starting at the cursor."""
+    _skip_ws(r)
+    c = r.peek()
+    if c == "{":
+        return _compound(r)
+    if c == "[":
+        return _list_or_array(r)
+    if c == '"' or c == "'":
+        return String(r.quoted())
+    start = r.pos
+    m = _UNQUOTED_VALUE.match(r.text, start)
+    token = m.group()
+    if not token:
+        r.fail(f"expected an NBT value, got {show(r.text[start:start + 1])}")
+    r.pos = m.end()
+    return typed_primitive(token)
+
+
+def _compound(r: Reader) -> Compound:
+    r.pos += 1  # '{'
+    result = Compound()
+    _skip_ws(r)
+    text = r.text
+    while r.pos < r.end and text[r.pos] != "}":
+        key_start = r.pos
+        key = r.string()
+        if not key:
+            r.fail(f"expected a key, got {show(text[key_start:key_start + 1])}", key_start)
+        _skip_ws(r)
+        r.expect(":")
+        result[key] = value(r)
+        if not _separator(r):
+            break
+        if r.pos >= r.end:
+            r.fail("expected a key, got end of command")
+    _skip_ws(r)
+    if r.pos >= r.end or text[r.pos] != "}":
+        r.fail(f"expected ',' or '}}' in NBT compound, got {show(text[r.pos:r.pos + 1])}")
+    r.pos += 1
+    return result
+
+
+def _separator(r: Reader) -> bool:
+    _skip_ws(r)
+    if r.pos < r.end and r.text[r.pos] == ",":
+        r.pos += 1
+        _skip_ws(r)
+        return True
+    return False
+
+
+def _list_or_array(r: Reader):
+    text, pos = r.text, r.pos
+    if pos + 2 < r.end and text[pos + 1] not in "\"'" and text[pos + 2] == ";":
+        return _array(r)
+    r.pos += 1  # '['
+    _skip_ws(r)
+    items = List()
+    first_type = None
+    mixed_ok = r.version >= MIXED_LISTS
+    while r.pos < r.end and text[r.pos] != "]":
+        item_start = r.pos
+        item = value(r)
+        if first_type is None:
+            first_type = type(item)
+        elif type(item) is not first_type and not mixed_ok:
+            r.fail(f"can't insert {_TYPE_NAMES[type(item)]} into a list of {_TYPE_NAMES[first_type]}", item_start)
+        items.append(item)
+        if not _separator(r):
+            break
+        if r.pos >= r.end:
+            r.fail("expected a value, got end of command")
+    _skip_ws(r)
+    if r.pos >= r.end or text[r.pos] != "]":
+        r.fail(f"expected ',' or ']' in NBT list, got {show(text[r.pos:r.pos + 1])}")
+    r.pos += 1
+    return items
+
+
+def _array(r: Reader):
+    text = r.text
+    letter = text[r.pos + 1]
+    if letter not in _ARRAY_TYPES:
+        r.fail(f"invalid array type '{letter}' (expected B, I or L)", r.pos + 1)
+    array_type, item_type = _ARRAY_TYPES[letter]
+    r.pos += 3
+    _skip_ws(r)
+    items = array_type()
+    while r.pos < r.end and text[r.pos] != "]":
+        item_start = r.pos
+        item = value(r)
+        if type(item) is not item_type:
+            r.fail(f"can't insert {_TYPE_NAMES[type(item)]} into {_TYPE_NAMES[array_type]}", item_start)
+        items.append(int(item))
+        if not _separator(r):
+            break
+        if r.pos >= r.end:
+            r.fail("expected a value, got end of command")
+    _skip_ws(r)
+    if r.pos >= r.end or text[r.pos] != "]":
+        r.fail(f"expected ',' or ']' in NBT array, got {show(text[r.pos:r.pos + 1])}")
+    r.pos += 1
+    return items
