@@ -1,0 +1,34 @@
+"""The reference backend: a plain-Python interpreter of the AST, the oracle the numba VM is
+checked against. Clarity over speed; it follows the game's execution model task by task
+(:mod:`.engine`) and shares only value helpers (:mod:`emulator.semantics`) and the world state
+with the VM.
+"""
+from __future__ import annotations
+
+from emulator.backend import RootResult
+from emulator.state import Context, WorldState
+
+from .engine import Interpreter
+
+
+class ReferenceBackend:
+    """Implements :class:`emulator.backend.Backend`."""
+
+    name = "python"
+
+    def __init__(self) -> None:
+        self._interpreter: Interpreter | None = None
+
+    def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
+        self._interpreter = Interpreter(packs, state, sanitize)
+
+    def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
+        if self._interpreter is None:
+            raise RuntimeError("ReferenceBackend.run_root called before load()")
+        return self._interpreter.run_root(function_id, context, arguments)
+
+    def line_counts(self) -> dict[tuple[str, int], int]:
+        return dict(self._interpreter.line_counts) if self._interpreter else {}
+
+
+__all__ = ["ReferenceBackend"]

@@ -1,0 +1,95 @@
+"""Final commands other than ``function`` and ``return`` (those queue work: see :mod:`.engine`).
+
+:func:`run_command` runs one command for one source and returns its int result or raises
+:class:`CommandFailure`. Commands the emulator does not model (``particle``, ``playsound`` ...)
+succeed with result 1 and no effect; each such command is reported once as a warning.
+"""
+from __future__ import annotations
+
+from emulator.semantics import INT_MAX
+from mcfunction_parser import ast
+
+from . import conditions, scoreboard
+from .failure import CommandFailure, unsupported
+from .source import Source
+
+
+def say(env, cmd: ast.Say, source: Source, where) -> int:
+    env.state.emit("say", f"[{sender_name(source)}] {cmd.message}", where)
+    return 1
+
+
+def tellraw(env, cmd: ast.Tellraw, source: Source, where) -> int:
+    """The JSON text is logged as written (no players are online to receive it)."""
+    env.state.emit("tellraw", cmd.text, where)
+    return 1
+
+
+def sender_name(source: Source) -> str:
+    return "Server" if source.context.executor < 0 else str(source.context.executor)
+
+
+def gamerule(env, cmd: ast.Gamerule, source: Source, where) -> int:
+    """GameRuleCommand: set or query; the result is the value (booleans as 1/0)."""
+    rules = env.state.gamerules
+    if cmd.value is not None:
+        rules.set(cmd.rule, cmd.value)
+        return _rule_result(cmd.value)
+    value = rules.get(cmd.rule)
+    if value is None:
+        raise CommandFailure(f"Unknown game rule '{cmd.rule}'", report=True)
+    return _rule_result(value)
+
+
+def _rule_result(value: str) -> int:
+    if value in ("true", "false"):
+        return int(value == "true")
+    return int(value)
+
+
+def schedule(env, cmd: ast.Schedule, source: Source, where) -> int:
+    """ScheduleCommand.schedule: the result is floorMod(due time, Integer.MAX_VALUE)."""
+    env.require_function(cmd.function, cmd.is_tag)
+    due = env.state.schedule.schedule(cmd.function, cmd.is_tag, cmd.ticks, cmd.mode, env.state.gametime)
+    return due % INT_MAX
+
+
+def schedule_clear(env, cmd: ast.ScheduleClear, source: Source, where) -> int:
+    removed = env.state.schedule.clear(cmd.function, cmd.is_tag)
+    if removed == 0:
+        name = ("#" if cmd.is_tag else "") + cmd.function
+        raise CommandFailure(f"No schedules with id {name}")
+    return removed
+
+
+def time(env, cmd: ast.Time, source: Source, where) -> int:
+    if cmd.action == "query" and cmd.query == "gametime":
+        return env.state.gametime % INT_MAX
+    raise unsupported(f"'time {cmd.action}'")
+
+
+def not_modelled(env, cmd: ast.Command, source: Source, where) -> int:
+    env.warn_once(cmd, source, where)
+    return 1
+
+
+def condition(env, cond: ast.Condition, source: Source, where) -> int:
+    return conditions.run_as_command(env, cond, source, where)
+
+
+HANDLERS = {
+    **scoreboard.HANDLERS,
+    ast.Say: say,
+    ast.Tellraw: tellraw,
+    ast.Gamerule: gamerule,
+    ast.Schedule: schedule,
+    ast.ScheduleClear: schedule_clear,
+    ast.Time: time,
+}
+
+
+def run_command(env, cmd, source: Source, where) -> int:
+    if isinstance(cmd, ast.Condition):
+        return condition(env, cmd, source, where)
+    handler = HANDLERS.get(type(cmd), not_modelled)
+    return handler(env, cmd, source, where)

@@ -1,0 +1,377 @@
+"""The interpreter: function calls, execute chains and custom commands on the command queue.
+
+The structure follows the game's execution package (1.20.3+) task by task, so that results,
+returns and command costs agree with it by construction:
+
+- ``_call_function``      CallFunction      (costs 1, opens a frame one deeper)
+- ``_build_contexts``     BuildContexts     (each redirect/fork stage costs 1 once)
+- ``_execute_command``    ExecuteCommand    (the final command, 1 per source)
+- ``_fallthrough``        FallthroughTask   (a ``return run``/``if function`` that got no return)
+- ``_isolated_call``      IsolatedCall      (``execute if function``: a frame of its own)
+- ``_run_function_command`` / ``_return``   the custom executors of ``function`` and ``return``
+
+See :mod:`emulator.backend` for the cost rule both backends share.
+"""
+from __future__ import annotations
+
+from collections import Counter
+
+from emulator.backend import RootResult, report_quota_cut
+from emulator.semantics import wrap32, wraps32
+from emulator.state import Context, Overflow, WorldState
+from mcfunction_parser import ast
+from mcfunction_parser.diagnostics import Loc
+
+from . import modifiers
+from .commands import run_command
+from .failure import CommandFailure
+from .macros import MacroExpander
+from .queue import CallFrame, ExecutionQueue, chain, schedule_each
+from .source import Activation, Source
+
+_CUSTOM_FINAL = (ast.FunctionCall, ast.Return)
+
+
+class Interpreter:
+    def __init__(self, packs, state: WorldState, sanitize: bool = False) -> None:
+        self.packs = packs
+        self.state = state
+        self.sanitize = sanitize
+        self.macros = MacroExpander(packs.version)
+        self.line_counts: Counter[tuple[str, int]] = Counter()
+        self._stages: dict[int, tuple[ast.Command, tuple]] = {}
+        self._warned: set[tuple[str, int, int]] = set()
+
+    # ------------------------------------------------------------------ roots
+    def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
+        """``ExecutionContext.queueInitialFunctionCall`` then ``runCommandQueue``."""
+        function = self.packs.functions.get(function_id)
+        if function is None:
+            self.state.error(f"Unknown function {function_id}")
+            return RootResult(0, None)
+        try:
+            commands = self.macros.instantiate(function, arguments)
+        except CommandFailure as failure:
+            self.state.error(failure.message)
+            return RootResult(0, None)
+        result: list[int | None] = [None]
+
+        def on_result(success: bool, value: int) -> None:
+            result[0] = value if success else 0
+
+        limit = self.state.gamerules.max_command_chain_length
+        queue = ExecutionQueue(limit)
+        source = Source(context or Context(), None, None)
+        top = CallFrame(0, None, 0)
+        queue.queue_next(top, self._call_function(function, commands, source, on_result, False, None))
+        stopped = queue.run()
+        if queue.overflowed:
+            self.state.error("Command execution stopped due to command queue overflow (max 10000000)")
+        if queue.cut:
+            report_quota_cut(self.state, limit, _where(stopped))
+        return RootResult(queue.cost, result[0], queue.cut)
+
+    # ------------------------------------------------------------------ tasks
+    def _call_function(self, function: ast.Function, commands, source: Source, result_callback,
+                       return_parent: bool, call_loc) -> callable:
+        def call(queue: ExecutionQueue, frame: CallFrame) -> None:
+            queue.charge()
+            self._count(call_loc or ast_loc_of(function))
+            depth = frame.depth + 1
+            new_frame = CallFrame(depth, result_callback, frame.discard_depth if return_parent else depth)
+            bound = source.in_function(Activation(function.id, source.activation, call_loc))
+            schedule_each(queue, new_frame, list(commands), lambda command: self._unbound(command, bound))
+
+        call.entry = (function.id, source.activation, call_loc)
+        return call
+
+    def _unbound(self, command: ast.Command, source: Source):
+        def build(queue: ExecutionQueue, frame: CallFrame) -> None:
+            self._build_contexts(queue, frame, command, 0, [source], False, False)
+
+        build.entry = (source.activation.function, source.activation, command.loc)
+        return build
+
+    def _build_contexts(self, queue, frame, line: ast.Command, index: int, sources: list[Source],
+                        forked: bool, is_return: bool) -> None:
+        stages = self._stages_of(line)
+        while index < len(stages) - 1:
+            stage = stages[index]
+            forked = forked or isinstance(stage, modifiers.FORKS)
+            if isinstance(stage, ast.IfFunction):
+                self._if_function(queue, frame, line, index, sources, forked, is_return)
+                return
+            if isinstance(stage, ast.Return):
+                self._return_run(queue, frame, line, index, sources, forked)
+                return
+            queue.charge()
+            self._count(line.loc)
+            produced: list[Source] = []
+            for source in sources:
+                try:
+                    out = modifiers.apply(self, stage, source)
+                    modifiers.check_fork_limit(len(produced) + len(out), self.state.gamerules.max_command_fork_count)
+                except CommandFailure as failure:
+                    self._fail(failure, source, line)
+                    if not forked or failure.message.startswith("Maximum number of contexts"):
+                        return
+                    continue
+                produced.extend(out)
+            sources = produced
+            index += 1
+        final = stages[-1]
+        if not sources:
+            if is_return:
+                queue.queue_next(frame, _fallthrough)
+            return
+        if isinstance(final, _CUSTOM_FINAL):
+            for source in sources:
+                self._custom(queue, frame, line, final, source, is_return)
+            return
+        if is_return:
+            first = sources[0]
+            sources = [first.with_callback(chain(first.callback, frame.on_return))]
+        schedule_each(queue, frame, sources, lambda source: self._execute_command(line, final, source))
+
+    def _execute_command(self, line: ast.Command, command, source: Source):
+        def execute(queue: ExecutionQueue, frame: CallFrame) -> None:
+            queue.charge()
+            self._count(line.loc)
+            try:
+                value = run_command(self, command, source, line.loc)
+            except CommandFailure as failure:
+                self._fail(failure, source, line)
+                if source.callback is not None:
+                    source.callback(False, 0)
+                return
+            if source.callback is not None:
+                source.callback(True, value)
+
+        execute.entry = (source.activation.function, source.activation, line.loc)
+        return execute
+
+    # ------------------------------------------------------------------ custom stages
+    def _return_run(self, queue, frame, line, index, sources, forked) -> None:
+        """ReturnFromCommandCustomModifier: discard the rest of the function, run the rest of the
+        chain as a new entry whose result is the function's return."""
+        if not sources:
+            return
+        queue.discard(frame)
+
+        def rest(q: ExecutionQueue, f: CallFrame) -> None:
+            self._build_contexts(q, f, line, index + 1, sources, forked, True)
+
+        rest.entry = (sources[0].activation.function, sources[0].activation, line.loc)
+        queue.queue_next(frame, rest)
+
+    def _if_function(self, queue, frame, line, index, sources, forked, is_return) -> None:
+        """ExecuteCommand.scheduleFunctionConditionsAndTest: each source calls the functions in a
+        frame of its own; the sources whose result passes the check go on to the rest of the chain.
+        A function that never returns reaches FallthroughTask: result 0, so ``if`` fails and
+        ``unless`` passes."""
+        stage: ast.IfFunction = self._stages_of(line)[index]
+        origin = sources[0] if sources else None
+        try:
+            functions = self._functions(stage.function, stage.is_tag)
+        except CommandFailure as failure:
+            self._fail(failure, origin, line)
+            return
+        if not functions:
+            return
+        instances = []
+        for function in functions:
+            try:
+                instances.append((function, self.macros.instantiate(function, None)))
+            except CommandFailure as failure:
+                self._fail(failure, origin, line)
+        passed: list[Source] = []
+        for source in sources:
+            queue.queue_next(frame, self._isolated_call(instances, source, stage.negated, passed, line.loc))
+
+        def rest(q: ExecutionQueue, f: CallFrame) -> None:
+            self._build_contexts(q, f, line, index + 1, passed, forked, is_return)
+
+        rest.entry = (origin.activation.function, origin.activation, line.loc) if origin else None
+        queue.queue_next(frame, rest)
+
+    def _isolated_call(self, instances, source: Source, negated: bool, passed: list, call_loc):
+        def output(success: bool, value: int) -> None:
+            if (value == 0) if negated else (value != 0):
+                passed.append(source)
+
+        sender = source.with_callback(None)
+
+        def isolated(queue: ExecutionQueue, frame: CallFrame) -> None:
+            depth = frame.depth + 1
+            inner = CallFrame(depth, output, depth)
+            for function, commands in instances:
+                queue.queue_next(inner, self._call_function(function, commands, sender, inner.on_return, True, call_loc))
+            queue.queue_next(inner, _fallthrough)
+
+        return isolated
+
+    # ------------------------------------------------------------------ custom final commands
+    def _custom(self, queue, frame, line, command, source: Source, is_return: bool) -> None:
+        if isinstance(command, ast.Return):
+            self._return(queue, frame, command, source)
+            return
+        try:
+            self._run_function_command(queue, frame, line, command, source, is_return)
+        except CommandFailure as failure:
+            self._fail(failure, source, line)
+            if source.callback is not None:
+                source.callback(False, 0)
+
+    def _return(self, queue, frame, command: ast.Return, source: Source) -> None:
+        """ReturnValueCustomExecutor / ReturnFailCustomExecutor."""
+        if command.kind == "fail":
+            if source.callback is not None:
+                source.callback(False, 0)
+            frame.return_failure()
+        else:
+            if source.callback is not None:
+                source.callback(True, command.value)
+            frame.return_success(command.value)
+        queue.discard(frame)
+
+    def _run_function_command(self, queue, frame, line, command: ast.FunctionCall, source, is_return) -> None:
+        """FunctionCommand: queue a CallFunction per function (instantiated with the arguments)."""
+        functions = self._functions(command.function, command.is_tag)
+        if not functions:
+            raise CommandFailure(f"Can't find any functions for tag #{command.function}")
+        arguments = self._call_arguments(command)
+        sender = source.with_callback(None)
+        if is_return:
+            callback = chain(source.callback, frame.on_return)
+            for function in functions:
+                commands = self.macros.instantiate(function, arguments)
+                queue.queue_next(frame, self._call_function(function, commands, sender, callback, True, line.loc))
+            queue.queue_next(frame, _fallthrough)
+            return
+        callback = source.callback
+        if len(functions) > 1 and callback is not None:
+            callback, report = _accumulator(callback)
+        else:
+            report = None
+        for function in functions:
+            commands = self.macros.instantiate(function, arguments)
+            queue.queue_next(frame, self._call_function(function, commands, sender, callback, False, line.loc))
+        if report is not None:
+            queue.queue_next(frame, report)
+
+    def _call_arguments(self, command: ast.FunctionCall):
+        if command.with_source is None:
+            return command.arguments
+        if isinstance(command.with_source, ast.StorageData) and command.with_path is None:
+            return self.state.storage.get(command.with_source.id, {})
+        raise CommandFailure("'function ... with' other than a whole storage is not supported by the reference backend",
+                             report=True)
+
+    def _functions(self, name: str, is_tag: bool) -> list[ast.Function]:
+        if not is_tag:
+            function = self.packs.functions.get(name)
+            if function is None:
+                raise CommandFailure(f"Unknown function {name}", report=True)
+            return [function]
+        if name not in self.packs.tags:
+            raise CommandFailure(f"Unknown function tag #{name}", report=True)
+        return [self.packs.functions[f] for f in self.packs.resolve_tag(name) if f in self.packs.functions]
+
+    def require_function(self, name: str, is_tag: bool) -> None:
+        """For ``schedule``: the function or tag must exist."""
+        self._functions(name, is_tag)
+
+    # ------------------------------------------------------------------ helpers
+    def arith(self, op: str, a: int, b: int, exact: int, source: Source, where) -> int:
+        """Wrap an exact result to int32; under the sanitizer, report a result that wrapped."""
+        stored = wrap32(exact)
+        if self.sanitize and wraps32(exact):
+            function = source.activation.function if source.activation else "<root>"
+            self.state.overflows.append(Overflow(self.state.tick, function, where, op, a, b, exact, stored))
+        return stored
+
+    def warn_once(self, command: ast.Command, source: Source, where) -> None:
+        key = (where.path, where.line, where.col)
+        if key in self._warned:
+            return
+        self._warned.add(key)
+        name = getattr(command, "name", type(command).__name__)
+        frames = source.activation.frames(where) if source.activation else ()
+        self.state.error(f"'{name}' is not emulated: it succeeds without effect", frames, severity="warning")
+
+    def _fail(self, failure: CommandFailure, source: Source | None, line: ast.Command) -> None:
+        if failure.report:
+            frames = source.activation.frames(line.loc) if source and source.activation else ()
+            self.state.error(failure.message, frames)
+
+    def _count(self, loc) -> None:
+        self.line_counts[(loc.path, loc.line)] += 1
+
+    def _stages_of(self, command: ast.Command) -> tuple:
+        cached = self._stages.get(id(command))
+        if cached is None or cached[0] is not command:
+            cached = (command, stages(command))
+            self._stages[id(command)] = cached
+        return cached[1]
+
+
+def stages(command: ast.Command) -> tuple:
+    """A command as the game's ContextChain: execute subcommands (``run`` dropped: it has no
+    modifier), ``return run`` as a stage, then the final command. An execute that ends with a
+    condition has that condition as its final command."""
+    out: list = []
+    while True:
+        if isinstance(command, ast.Execute):
+            if command.run is None:
+                out.extend(command.subcommands[:-1])
+                out.append(command.subcommands[-1])
+                return tuple(out)
+            out.extend(command.subcommands)
+            command = command.run
+        elif isinstance(command, ast.Return) and command.kind == "run":
+            out.append(command)
+            command = command.command
+        else:
+            out.append(command)
+            return tuple(out)
+
+
+def _fallthrough(queue: ExecutionQueue, frame: CallFrame) -> None:
+    """FallthroughTask: the called functions did not return: the frame returns failure."""
+    frame.return_failure()
+    queue.discard(frame)
+
+
+def _accumulator(callback):
+    """FunctionCommand's Accumulator for a tag called with a callback: the sum of the members'
+    returns (Java int), reported once after them if any returned."""
+    state = {"any": False, "sum": 0}
+
+    def add(success: bool, value: int) -> None:
+        state["any"] = True
+        state["sum"] = wrap32(state["sum"] + value)
+
+    def report(queue: ExecutionQueue, frame: CallFrame) -> None:
+        if state["any"]:
+            callback(True, state["sum"])
+
+    return add, report
+
+
+def ast_loc_of(function: ast.Function) -> Loc:
+    """Where a root call is counted: line 0 of the function's file."""
+    return Loc(function.path, 0, 0)
+
+
+def _where(stopped):
+    """Frames for the entry the quota stopped (from the ``entry`` tag the tasks carry)."""
+    if stopped is None:
+        return ()
+    action = stopped[1]
+    entry = getattr(action, "entry", None)
+    if entry is None:
+        return ()
+    function, activation, loc = entry
+    if activation is None:
+        return ()
+    return activation.frames(loc)

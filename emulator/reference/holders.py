@@ -1,0 +1,51 @@
+"""Score holders and entity targets, as the game resolves them (ScoreHolderArgument, EntityArgument).
+
+Entities are not modelled in the world state yet, so every selector finds no entity: ``@s`` run
+by the server, ``@e``, ``@a`` ... select nothing, and a player name as an *entity* target finds no
+online player. Score holders named by text (players, ``#fake``, ``$fake``, UUIDs) need no entity.
+"""
+from __future__ import annotations
+
+from emulator.state import Scoreboard
+from mcfunction_parser.ast import NameTarget, Selector, Wildcard
+
+from .failure import CommandFailure
+from .source import Source
+
+
+def select_entities(target, source: Source) -> list:
+    """EntityArgument.getOptionalEntities: the entities a selector or name finds (none yet)."""
+    return []
+
+
+def holder_names(holder, source: Source, scoreboard: Scoreboard) -> list[str]:
+    """ScoreHolderArgument.getNamesWithDefaultWildcard: the holders named, in the game's order.
+
+    ``*`` is every tracked holder (a score in any objective: Scoreboard.getTrackedPlayers), taken
+    in first-seen order here; an empty result fails the command.
+    """
+    if isinstance(holder, NameTarget):
+        return [holder.name]
+    if isinstance(holder, Wildcard):
+        names = tracked_holders(scoreboard)
+        if not names:
+            raise CommandFailure("No relevant score holders could be found")
+        return names
+    if isinstance(holder, Selector):
+        entities = select_entities(holder, source)
+        if not entities:
+            raise CommandFailure("No entity was found")
+        return [str(e) for e in entities]
+    raise TypeError(f"not a score holder: {holder!r}")
+
+
+def single_holder(holder, source: Source, scoreboard: Scoreboard) -> str:
+    """ScoreHolderArgument.getName: the first of the names."""
+    return holder_names(holder, source, scoreboard)[0]
+
+
+def tracked_holders(scoreboard: Scoreboard) -> list[str]:
+    n = len(scoreboard.holders)
+    alive = scoreboard.alive[: len(scoreboard.objectives)].astype(bool)
+    rows = scoreboard.present[:n, : len(scoreboard.objectives)][:, alive].any(axis=1)
+    return [scoreboard.holders[h] for h in range(n) if rows[h]]

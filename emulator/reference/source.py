@@ -1,0 +1,54 @@
+"""Command sources (the game's ``CommandSourceStack``) and call traces.
+
+A :class:`Source` is who runs a command and where (:class:`emulator.state.Context`), the callback
+its result goes to (``execute store`` chains callbacks), and the :class:`Activation` it runs in,
+which only serves diagnostics: the function traceback of a runtime error.
+"""
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+
+from emulator.state import Context, Frame
+from mcfunction_parser.diagnostics import Loc
+
+from .queue import Callback
+
+
+@dataclass(frozen=True, slots=True)
+class Activation:
+    """A function being run: its id, and where it was called from (None for a root).
+
+    A linked list so that a 100,000-deep chain costs O(1) per call; frames are built only when
+    a diagnostic needs them.
+    """
+
+    function: str
+    parent: "Activation | None" = None
+    call_loc: Loc | None = None
+
+    def frames(self, loc: Loc | None) -> tuple[Frame, ...]:
+        """Root first; the innermost frame is this function at ``loc`` (the failing command)."""
+        out: list[Frame] = []
+        here, at = self, loc
+        while here is not None:
+            if at is not None:
+                out.append(Frame(here.function, at))
+            here, at = here.parent, here.call_loc
+        return tuple(reversed(out))
+
+
+@dataclass(frozen=True, slots=True)
+class Source:
+    context: Context
+    callback: Callback
+    activation: Activation
+
+    def with_callback(self, callback: Callback) -> "Source":
+        return dataclasses.replace(self, callback=callback)
+
+    def with_context(self, **changes) -> "Source":
+        return dataclasses.replace(self, context=dataclasses.replace(self.context, **changes))
+
+    def in_function(self, activation: Activation) -> "Source":
+        return dataclasses.replace(self, activation=activation)
