@@ -1,0 +1,14 @@
+"""The world library: what datapack commands act on, with the game's exact semantics.
+
+Pure Python over plain values, callable from both backends (the numba VM's host side and the
+reference interpreter). Modules:
+- ``errors``: ``CommandFailure`` and the game's messages.
+- ``nbt_ops``: NBT paths, ``data get/merge/modify/remove``, partial NBT matching.
+- ``stores``: ``execute store ... TYPE SCALE`` casts and ``data get [SCALE]`` results.
+- ``mth``: the game's float math (sine table, atan2, wrapDegrees) in float32.
+- ``rotation``: directions, local coordinates ``^``, ``facing``, rotation wrapping.
+- ``entities``: entity types, the entity store, entity NBT view and loading.
+- ``selectors``: ``@s @e @a @p @r @n`` with their arguments.
+- ``teleport``: ``tp`` destinations for every form.
+- ``blocks``: a block map for ``setblock``/``fill``/``execute if block(s)``.
+"""

@@ -1,0 +1,39 @@
+"""The failure every world operation raises, carrying the game's own message.
+
+A command that fails in the game throws a ``CommandSyntaxException`` whose text the player sees; the
+world library raises ``CommandFailure(message)`` at the same points, and the backends turn it into
+a failed command (result 0, ``store success`` 0) and a log line.
+
+``MESSAGES`` holds the game's en_us texts for the translation keys used here (one source of truth).
+"""
+from __future__ import annotations
+
+MESSAGES = {
+    "arguments.nbtpath.node.invalid": "Invalid NBT path element",
+    "arguments.nbtpath.nothing_found": "Found no elements matching {0}",
+    "arguments.nbtpath.too_deep": "Resulting NBT too deeply nested",
+    "commands.data.merge.failed": "Nothing changed. The specified properties already have these values",
+    "commands.data.get.invalid": "Can't get {0}; only numeric tags are allowed",
+    "commands.data.get.unknown": "Can't get {0}; tag doesn't exist",
+    "commands.data.get.multiple": "This argument accepts a single NBT value",
+    "commands.data.modify.expected_list": "Expected list, got: {0}",
+    "commands.data.modify.expected_object": "Expected object, got: {0}",
+    "commands.data.modify.expected_value": "Expected value, got: {0}",
+    "commands.data.modify.invalid_index": "Invalid list index: {0}",
+    "commands.data.modify.invalid_substring": "Invalid substring indices: {0} to {1}",
+    "commands.data.entity.invalid": "Unable to modify player data",
+    "commands.teleport.invalidPosition": "Invalid position for teleport",
+    "argument.entity.notfound.entity": "No entity was found",
+    "argument.entity.toomany": "Only one entity is allowed, but the provided selector allows more than one",
+    "argument.pos.outofworld": "That position is out of this world!",
+}
+
+
+class CommandFailure(Exception):
+    """A command failed the way the game's command would; ``key`` is the translation key."""
+
+    def __init__(self, key: str, *args) -> None:
+        self.key = key
+        self.args_ = args
+        self.message = MESSAGES[key].format(*args)
+        super().__init__(self.message)

@@ -1,0 +1,116 @@
+"""Rotations, directions, local coordinates and ``facing``, with the game's float/double mix.
+
+Conventions: a rotation is ``(yaw, pitch)`` as float32 (``numpy.float32``); yaw is the entity's
+``yRot`` (0 = south/+z, 90 = west/-x), pitch is ``xRot`` (positive looks down). Positions and
+directions are tuples of three Python floats (doubles).
+
+Public functions
+- ``direction_from_rotation(yaw, pitch)``: ``Vec3.directionFromRotation`` (unit vector).
+- ``view_vector(yaw, pitch)``: ``Entity.calculateViewVector`` (what ``getLookAngle`` returns).
+- ``local_to_world(origin, yaw, pitch, left, up, forwards)``: ``^left ^up ^forwards`` from an
+  origin (the execution position with its anchor applied), ``LocalCoordinates.getPosition``.
+- ``facing_rotation(origin, target)``: the ``(yaw, pitch)`` that looks from ``origin`` at
+  ``target``; ``execute facing``, ``tp ... facing`` and ``Entity.lookAt`` all use this formula.
+- ``relative_rotation(base_yaw, base_pitch, yaw_coord, pitch_coord)``: a rotation argument
+  (``~10 ~``) resolved against the execution rotation: ``(float)(value + (double)base)``.
+- ``load_rotation(current, loaded)``: what loading ``Rotation`` NBT leaves (finite values, ``% 360``).
+- ``teleport_rotation(yaw, pitch)``: what ``tp`` stores: both wrapped, then pitch clamped to ±90.
+
+Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): ``world/phys/Vec3.java``,
+``commands/arguments/coordinates/LocalCoordinates.java``, ``WorldCoordinates.java``,
+``commands/CommandSourceStack.java`` (``facing``), ``world/entity/Entity.java`` (``lookAt``,
+``calculateViewVector``, ``setRot``, ``load``, ``teleportTo``), ``server/commands/TeleportCommand.java``.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from emulator.world import mth
+
+F32 = np.float32
+_RIGHT_ANGLE = F32(90.0)
+_PI_F_AS_DOUBLE = float(mth.PI_F)
+
+
+def direction_from_rotation(yaw, pitch) -> tuple[float, float, float]:
+    """``Vec3.directionFromRotation(pitch, yaw)``: float products widened to double."""
+    yaw_rad = -F32(yaw) * mth.DEG_TO_RAD - mth.PI_F
+    pitch_rad = -F32(pitch) * mth.DEG_TO_RAD
+    cos_yaw, sin_yaw = mth.cos(yaw_rad), mth.sin(yaw_rad)
+    cos_pitch, sin_pitch = -mth.cos(pitch_rad), mth.sin(pitch_rad)
+    return float(sin_yaw * cos_pitch), float(sin_pitch), float(cos_yaw * cos_pitch)
+
+
+def view_vector(yaw, pitch) -> tuple[float, float, float]:
+    """``Entity.calculateViewVector(xRot, yRot)``."""
+    pitch_rad = F32(pitch) * mth.DEG_TO_RAD
+    yaw_rad = -F32(yaw) * mth.DEG_TO_RAD
+    cos_yaw, sin_yaw = mth.cos(yaw_rad), mth.sin(yaw_rad)
+    cos_pitch, sin_pitch = mth.cos(pitch_rad), mth.sin(pitch_rad)
+    return float(sin_yaw * cos_pitch), float(-sin_pitch), float(cos_yaw * cos_pitch)
+
+
+def _cross(a, b):
+    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+
+def local_to_world(origin, yaw, pitch, left: float, up: float, forwards: float) -> tuple[float, float, float]:
+    """``^left ^up ^forwards`` relative to ``origin`` facing ``(yaw, pitch)``.
+
+    The basis vectors are float products widened to double; the rest is double arithmetic,
+    summed in the game's order (forwards, then up, then left).
+    """
+    yaw, pitch = F32(yaw), F32(pitch)
+    yaw_rad = (yaw + _RIGHT_ANGLE) * mth.DEG_TO_RAD
+    cos_yaw, sin_yaw = mth.cos(yaw_rad), mth.sin(yaw_rad)
+    cos_pitch, sin_pitch = mth.cos(-pitch * mth.DEG_TO_RAD), mth.sin(-pitch * mth.DEG_TO_RAD)
+    up_rad = (-pitch + _RIGHT_ANGLE) * mth.DEG_TO_RAD
+    cos_up, sin_up = mth.cos(up_rad), mth.sin(up_rad)
+    forward_axis = (float(cos_yaw * cos_pitch), float(sin_pitch), float(sin_yaw * cos_pitch))
+    up_axis = (float(cos_yaw * cos_up), float(sin_up), float(sin_yaw * cos_up))
+    left_axis = tuple(c * -1.0 for c in _cross(forward_axis, up_axis))
+    return tuple(
+        o + (f * forwards + u * up + l * left)
+        for o, f, u, l in zip(origin, forward_axis, up_axis, left_axis)
+    )
+
+
+def facing_rotation(origin, target) -> tuple[np.float32, np.float32]:
+    """The rotation looking from ``origin`` to ``target`` (``CommandSourceStack.facing``).
+
+    ``pitch = wrapDegrees((float) -(atan2(dy, horizontal) * 180.0 / (double)(float)PI))`` and
+    ``yaw = wrapDegrees((float)(atan2(dz, dx) * 180.0 / (double)(float)PI) - 90.0F)``.
+    """
+    dx, dy, dz = (t - o for t, o in zip(target, origin))
+    horizontal = math.sqrt(dx * dx + dz * dz)
+    pitch = mth.wrap_degrees_f(mth.f32(-(mth.atan2(dy, horizontal) * 180.0 / _PI_F_AS_DOUBLE)))
+    yaw = mth.wrap_degrees_f(mth.f32(mth.atan2(dz, dx) * 180.0 / _PI_F_AS_DOUBLE) - _RIGHT_ANGLE)
+    return yaw, pitch
+
+
+def resolve_angle(base, value: float, relative: bool) -> np.float32:
+    """One rotation coordinate: ``(float) WorldCoordinate.get((double) base)``."""
+    return mth.f32(value + float(F32(base)) if relative else value)
+
+
+def relative_rotation(base_yaw, base_pitch, yaw_coord, pitch_coord) -> tuple[np.float32, np.float32]:
+    """A rotation argument (``Vec2`` of ``Coord``: ``abs`` or ``rel``) against the execution rotation."""
+    return (
+        resolve_angle(base_yaw, yaw_coord.value, yaw_coord.kind == "rel"),
+        resolve_angle(base_pitch, pitch_coord.value, pitch_coord.kind == "rel"),
+    )
+
+
+def load_rotation(current, loaded) -> tuple[np.float32, np.float32]:
+    """Rotation after loading NBT (``Entity.load``): each loaded component replaces the current one
+    unless it is infinite or NaN (``setYRot`` discards those), then ``setRot`` keeps ``% 360``.
+    """
+    kept = [F32(new) if math.isfinite(float(new)) else F32(old) for old, new in zip(current, loaded)]
+    return mth.java_float_rem(kept[0], 360.0), mth.java_float_rem(kept[1], 360.0)
+
+
+def teleport_rotation(yaw, pitch) -> tuple[np.float32, np.float32]:
+    """Rotation stored by ``tp``: ``wrapDegrees`` on both, then pitch clamped to [-90, 90]."""
+    return mth.wrap_degrees_f(yaw), mth.clamp_f(mth.wrap_degrees_f(pitch), -90.0, 90.0)
