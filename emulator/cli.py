@@ -11,3 +11,4 @@ def main() -> None:
 
 
 # Subcommands register themselves here, one line each:
+from emulator.cli_check import check; main.add_command(check)  # noqa: E402,E702

@@ -22,7 +22,8 @@ from .ast import Function, FunctionTag
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from .pack_meta import FormatRange, PackMeta, read_pack_meta
 from .pack_text import load_json, read_text, split_lines
-from .tags import merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
+from .parse import parse_function
+from .tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from .versions import (
     LATEST_RELEASE, Format, Version, format_label, pack_format_for_version, parse_mc_version,
     uses_singular_folders, version_for_pack_format, version_label,
@@ -52,7 +53,7 @@ class LoadedPacks:
     tags: dict[str, FunctionTag]  # "ns:path" -> merged tag, nested tags not flattened
     sources: dict[str, list[str]]  # file path -> lines (functions and tag files)
     diagnostics: list[Diagnostic]
-    failed_tags: dict[str, str] = field(default_factory=dict)  # tag id -> why the game refuses it
+    failed_tags: dict[str, FailedTag] = field(default_factory=dict)  # tags the game refuses to load
     advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
     files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
 
@@ -228,8 +229,6 @@ def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
 
 
 def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> Function | None:
-    from .parse import parse_function  # the command parser imports this package's modules
-
     shown = pack.shown_file(rel)
     text = read_text(pack.files[rel], shown, result.diagnostics, json_file=False)
     result.files += 1

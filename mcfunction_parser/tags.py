@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Collection
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -22,6 +23,14 @@ from .pack_text import JsonDocument, load_json
 
 _NAMESPACE = r"[a-z0-9_.-]+"
 _RESOURCE_LOCATION = re.compile(rf"(?:{_NAMESPACE}:)?[a-z0-9_./-]+")
+
+
+@dataclass
+class FailedTag:
+    """A tag the game refuses to load: its merged entries and the first reason."""
+
+    tag: FunctionTag
+    reason: str
 
 
 def normalise_id(text: str) -> str:
@@ -90,8 +99,8 @@ def merge_tag(tags: dict[str, FunctionTag], tag_id: str, replace: bool, entries:
 
 
 def validate_tags(tags: dict[str, FunctionTag], functions: Collection[str],
-                  sources: dict[str, list[str]], diagnostics: list[Diagnostic]) -> dict[str, str]:
-    """Remove the tags the game would refuse to load; return ``{tag id: reason}`` for them."""
+                  sources: dict[str, list[str]], diagnostics: list[Diagnostic]) -> dict[str, FailedTag]:
+    """Remove the tags the game would refuse to load and return them with the reason."""
     failed: dict[str, str] = {}
     for tag in tags.values():
         for entry in tag.entries:
@@ -106,9 +115,7 @@ def validate_tags(tags: dict[str, FunctionTag], functions: Collection[str],
         for tag_id in cycle:
             failed.setdefault(tag_id, reason)
     _propagate(tags, failed, sources, diagnostics)
-    for tag_id in failed:
-        del tags[tag_id]
-    return failed
+    return {tag_id: FailedTag(tags.pop(tag_id), reason) for tag_id, reason in failed.items()}
 
 
 def _fail(failed: dict[str, str], tag_id: str, reason: str, entry: TagEntry,

@@ -1,0 +1,208 @@
+"""The linter behind ``dpemu check``: loader and parser diagnostics plus whole-pack rules.
+
+Rules added here (the parser already reports syntax, unknown commands, literal ranges and
+version problems per command):
+- a ``function``, ``schedule function`` or ``execute if function`` naming a function or function
+  tag that is not loaded (error; a tag the game refused to load is named as such);
+- calling a macro function without arguments (error: the game fails the call);
+- an objective used but never created by ``scoreboard objectives add`` in the loaded packs
+  (warning, once per objective);
+- a function nothing refers to: not in a tag, not called or scheduled by another function, not
+  an advancement reward (info).
+"""
+from __future__ import annotations
+
+import dataclasses
+import re
+import time
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from . import ast
+from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
+from .pack import LoadedPacks, load_packs
+
+# Function references and objective definitions inside macro templates (unparsed until called).
+_MACRO_FUNCTION = re.compile(r"(?:^|\s)function\s+(#?[a-z0-9_.-]+:[a-z0-9_./-]+)(?=\s|$)")
+_MACRO_OBJECTIVE_ADD = re.compile(r"(?:^|\s)scoreboard\s+objectives\s+add\s+(\S+)")
+
+
+@dataclass
+class CheckResult:
+    loaded: LoadedPacks
+    diagnostics: list[Diagnostic]  # loader, parser and linter findings, by file and position
+    seconds: float
+
+    @property
+    def files(self) -> int:
+        return self.loaded.files
+
+    @property
+    def functions(self) -> int:
+        return len(self.loaded.functions)
+
+    @property
+    def commands(self) -> int:
+        return sum(len(f.commands) for f in self.loaded.functions.values())
+
+    @property
+    def lines(self) -> int:
+        return sum(f.lines for f in self.loaded.functions.values())
+
+    def of(self, severity: str) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == severity]
+
+    def summary(self) -> str:
+        errors, warnings = len(self.of(ERROR)), len(self.of(WARNING))
+        return (f"{_count(self.files, 'file')}, {_count(self.functions, 'function')}, "
+                f"{_count(self.commands, 'command')}: {_count(errors, 'error')}, "
+                f"{_count(warnings, 'warning')}")
+
+    def to_json(self) -> dict:
+        return {"files": self.files, "functions": self.functions, "commands": self.commands,
+                "lines": self.lines,
+                "errors": [d.to_json() for d in self.of(ERROR)],
+                "warnings": [d.to_json() for d in self.of(WARNING)],
+                "infos": [d.to_json() for d in self.of(INFO)],
+                "seconds": round(self.seconds, 3)}
+
+
+def _count(n: int, noun: str) -> str:
+    return f"{n} {noun}{'' if n == 1 else 's'}"
+
+
+def check_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> CheckResult:
+    """Load the packs (in order) and lint them. ``mc_version`` as for :func:`load_packs`."""
+    start = time.perf_counter()
+    loaded = load_packs(paths, mc_version)
+    found = lint(loaded)
+    diagnostics = sorted(loaded.diagnostics + found, key=_position)
+    return CheckResult(loaded, diagnostics, time.perf_counter() - start)
+
+
+def _position(d: Diagnostic) -> tuple:
+    return (d.path, d.line or 0, d.col or 0)
+
+
+def lint(loaded: LoadedPacks) -> list[Diagnostic]:
+    """The whole-pack rules above, as new diagnostics."""
+    found: list[Diagnostic] = []
+    _check_calls(loaded, found)
+    _check_objectives(loaded, found)
+    _check_unreferenced(loaded, found)
+    return found
+
+
+# ----------------------------------------------------------------------------- walking the AST
+
+
+def walk(node: object) -> Iterator[object]:
+    """Every AST node inside ``node`` (itself included), depth first in source order."""
+    yield node
+    for f in dataclasses.fields(node):
+        value = getattr(node, f.name)
+        if isinstance(value, tuple):
+            for item in value:
+                if dataclasses.is_dataclass(item):
+                    yield from walk(item)
+        elif dataclasses.is_dataclass(value) and not isinstance(value, Loc):
+            yield from walk(value)
+
+
+def _nodes(loaded: LoadedPacks) -> Iterator[tuple[ast.Function, object]]:
+    for function in loaded.functions.values():
+        for command in function.commands:
+            for node in walk(command):
+                yield function, node
+
+
+def _at(loaded: LoadedPacks, severity: str, message: str, loc: Loc) -> Diagnostic:
+    lines = loaded.sources.get(loc.path, [])
+    source = lines[loc.line - 1] if 0 < loc.line <= len(lines) else None
+    return Diagnostic.at(severity, message, loc, source)
+
+
+# ----------------------------------------------------------------------------- rules
+
+
+def _references(node: object) -> Iterator[tuple[str, bool, str]]:
+    """(id, is_tag, how) for each function reference a node makes."""
+    if isinstance(node, ast.FunctionCall):
+        yield node.function, node.is_tag, "function"
+    elif isinstance(node, ast.Schedule):
+        yield node.function, node.is_tag, "schedule function"
+    elif isinstance(node, ast.IfFunction):
+        yield node.function, node.is_tag, "execute if function"
+    elif isinstance(node, ast.MacroLine) and "$(" not in node.template:
+        for match in _MACRO_FUNCTION.finditer(node.template):
+            name = match.group(1)
+            yield name.removeprefix("#"), name.startswith("#"), "macro"
+
+
+def _check_calls(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
+    for _, node in _nodes(loaded):
+        for name, is_tag, how in _references(node):
+            if how != "macro":
+                problem = _missing(loaded, name, is_tag)
+                if problem:
+                    found.append(_at(loaded, ERROR, f"{how}: {problem}", node.loc))
+        if isinstance(node, ast.FunctionCall) and not node.is_tag and node.arguments is None \
+                and node.with_source is None:
+            callee = loaded.functions.get(node.function)
+            if callee is not None and callee.is_macro:
+                found.append(_at(loaded, ERROR, f"function {node.function} is a macro function: "
+                                 "calling it without arguments fails", node.loc))
+
+
+def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:
+    if not is_tag:
+        return None if name in loaded.functions else f"unknown function {name}"
+    if name in loaded.tags:
+        return None
+    if name in loaded.failed_tags:
+        return f"function tag #{name} fails to load ({loaded.failed_tags[name].reason})"
+    return f"unknown function tag #{name}"
+
+
+def _check_objectives(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
+    created: set[str] = set()
+    uses: dict[str, list[Loc]] = {}
+    for _, node in _nodes(loaded):
+        if isinstance(node, ast.ObjectivesAdd):
+            created.add(node.objective)
+        elif isinstance(node, ast.MacroLine):
+            created.update(m.group(1) for m in _MACRO_OBJECTIVE_ADD.finditer(node.template))
+        else:
+            for objective in _objectives_used(node):
+                uses.setdefault(objective, []).append(node.loc)
+    for objective, locs in uses.items():
+        if objective not in created:
+            more = f" ({len(locs)} uses)" if len(locs) > 1 else ""
+            found.append(_at(loaded, WARNING, f"objective '{objective}' is used but never created by "
+                             f"'scoreboard objectives add' in the loaded packs{more}", locs[0]))
+
+
+def _objectives_used(node: object) -> Iterator[str]:
+    for name in ("objective", "source_objective"):
+        value = getattr(node, name, None)
+        if isinstance(value, str):
+            yield value
+    if isinstance(node, ast.SelectorArg) and node.key == "scores":
+        for objective, _ in node.value:
+            yield objective
+
+
+def _check_unreferenced(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
+    referenced = set(loaded.advancement_rewards)
+    tags = [*loaded.tags.values(), *(failed.tag for failed in loaded.failed_tags.values())]
+    for tag in tags:
+        referenced.update(e.id for e in tag.entries if not e.is_tag)
+    for function, node in _nodes(loaded):
+        for name, is_tag, _ in _references(node):
+            if not is_tag and name != function.id:
+                referenced.add(name)
+    for fid, function in loaded.functions.items():
+        if fid not in referenced:
+            found.append(Diagnostic(INFO, f"function {fid} is never referenced (no tag, function, "
+                                    "schedule or advancement reward names it)", function.path))

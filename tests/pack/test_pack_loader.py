@@ -1,0 +1,145 @@
+"""Loading functions: folder names by game version, overlays, several packs, file decoding."""
+import time
+
+from mcfunction_parser.pack import load_packs
+from packbuild import meta, write_pack
+
+
+def test_new_format_reads_function_and_ignores_functions(make_pack):
+    root = make_pack(fmt=61, files={"data/a/function/x.mcfunction": "say x\n",
+                                    "data/a/function/sub/dir/y.mcfunction": "say y\n",
+                                    "data/a/functions/old.mcfunction": "say old\n",
+                                    "data/a/functions/old2.mcfunction": "say old\n"})
+    loaded = load_packs([root])
+    assert sorted(loaded.functions) == ["a:sub/dir/y", "a:x"]
+    assert loaded.packs[0].folder_style == "function"
+    [warning] = loaded.warnings
+    assert warning.message == ("2 file(s) in 'data/a/functions/' ignored: 1.21.4 (format 61) "
+                               "reads 'data/a/function/' instead")
+    assert warning.path == f"{root}/data/a/functions"
+
+
+def test_old_format_reads_functions(make_pack):
+    root = make_pack(fmt=26, files={"data/a/functions/x.mcfunction": "say x\n",
+                                    "data/a/function/new.mcfunction": "say new\n"})
+    loaded = load_packs([root])
+    assert list(loaded.functions) == ["a:x"] and loaded.version == (1, 20, 4)
+    assert "reads 'data/a/functions/'" in loaded.warnings[0].message
+
+
+def test_mc_version_overrides_the_pack(make_pack):
+    root = make_pack(fmt=26, files={"data/a/functions/x.mcfunction": "say x\n"})
+    loaded = load_packs([root], mc_version="1.21.4")
+    assert loaded.version == (1, 21, 4) and loaded.functions == {}
+    assert loaded.packs[0].folder_style == "function"
+
+
+def test_function_fields_and_sources(make_pack):
+    root = make_pack(files={"data/a/function/x.mcfunction": "say one\r\nsay two\rsay three\n"})
+    loaded = load_packs([root])
+    function = loaded.functions["a:x"]
+    shown = f"{root}/data/a/function/x.mcfunction"
+    assert (function.id, function.path, function.pack) == ("a:x", shown, str(root))
+    assert loaded.sources[shown] == ["say one", "say two", "say three"]
+
+
+def test_non_files_and_other_suffixes_are_not_functions(make_pack):
+    root = make_pack(files={"data/a/function/notes.txt": "hello", "data/a/function/x.mcfunction": "",
+                            "data/a/function/Bad Name.mcfunction": "say x\n"})
+    loaded = load_packs([root])
+    assert list(loaded.functions) == ["a:x"]
+    [warning] = loaded.warnings
+    assert "invalid resource location 'a:Bad Name'" in warning.message
+
+
+def test_overlays_replace_files_of_the_matching_format(tmp_path):
+    overlays = {"entries": [{"directory": "ov_old", "formats": [10, 47]},
+                            {"directory": "ov_a", "formats": {"min_inclusive": 48, "max_inclusive": 61}},
+                            {"directory": "ov_b", "formats": 61}]}
+    root = write_pack(tmp_path / "p", {
+        "data/a/function/x.mcfunction": "say base\n",
+        "data/a/function/keep.mcfunction": "say keep\n",
+        "ov_old/data/a/function/x.mcfunction": "say old\n",
+        "ov_a/data/a/function/x.mcfunction": "say a\n",
+        "ov_a/data/a/function/added.mcfunction": "say added\n",
+        "ov_b/data/a/function/x.mcfunction": "say b\n",
+    }, {**meta(61), "overlays": overlays})
+    loaded = load_packs([root])
+    assert loaded.packs[0].overlays == ["ov_a", "ov_b"]
+    assert sorted(loaded.functions) == ["a:added", "a:keep", "a:x"]
+    assert loaded.functions["a:x"].path == f"{root}/ov_b/data/a/function/x.mcfunction"  # later wins
+    older = load_packs([root], mc_version="1.20.4")
+    assert older.packs[0].overlays == ["ov_old"]
+
+
+def test_overlay_min_max_format_and_bad_directory(tmp_path):
+    good = {"entries": [{"directory": "new", "min_format": [94, 1], "max_format": 94}]}
+    root = write_pack(tmp_path / "p", {"new/data/a/function/x.mcfunction": "say x\n"},
+                      {"pack": {"description": "", "min_format": 88, "max_format": 94}, "overlays": good})
+    assert load_packs([root]).packs[0].overlays == ["new"]
+    assert load_packs([root], mc_version="1.21.10").packs[0].overlays == []
+    bad = write_pack(tmp_path / "q", {}, {**meta(61), "overlays": {"entries": [{"directory": "Up", "formats": 61}]}})
+    assert "overlay needs a \"directory\"" in load_packs([bad]).errors[0].message
+
+
+def test_later_pack_overrides_functions(make_pack):
+    lib = make_pack("lib", files={"data/lib/function/f.mcfunction": "say lib\n",
+                                  "data/lib/function/g.mcfunction": "say g\n"})
+    game = make_pack("game", files={"data/lib/function/f.mcfunction": "say game\n"})
+    loaded = load_packs([lib, game])
+    assert loaded.functions["lib:f"].path.startswith(str(game))
+    assert loaded.functions["lib:g"].path.startswith(str(lib))
+    [info] = loaded.infos
+    assert "function lib:f overrides" in info.message and info.path.startswith(str(game))
+    assert [p.root for p in loaded.packs] == [lib, game]
+
+
+def test_version_is_the_newest_any_pack_targets(make_pack):
+    assert load_packs([make_pack("a", fmt=48), make_pack("b", fmt=61)]).version == (1, 21, 4)
+
+
+def test_invalid_utf8_is_a_diagnostic_with_position_and_the_rest_loads(make_pack):
+    root = make_pack(files={"data/a/function/bad.mcfunction": b"say ok\nsay caf\xe9 au lait\n",
+                            "data/a/function/good.mcfunction": "say fine\n"})
+    loaded = load_packs([root])
+    [warning] = loaded.warnings
+    assert "invalid UTF-8 byte 0xe9 at byte offset 14" in warning.message
+    assert (warning.line, warning.col) == (2, 8)
+    assert sorted(loaded.functions) == ["a:bad", "a:good"]
+    assert loaded.sources[warning.path][1] == "say caf\ufffd au lait"  # the game's replacement
+
+
+def test_bom_in_function_is_an_error_but_json_tolerates_it(make_pack):
+    root = make_pack(files={"data/a/function/x.mcfunction": b"\xef\xbb\xbfsay x\n",
+                            "data/a/tags/function/t.json": b'\xef\xbb\xbf{"values": ["a:x"]}'})
+    loaded = load_packs([root])
+    [error] = loaded.errors
+    assert "byte order mark" in error.message and error.path.endswith("x.mcfunction")
+    assert loaded.resolve_tag("a:t") == ["a:x"]
+
+
+def test_one_megabyte_line(make_pack):
+    line = "say " + "x" * 1_000_000
+    root = make_pack(files={"data/a/function/big.mcfunction": line + "\n"})
+    start = time.perf_counter()
+    loaded = load_packs([root])
+    assert time.perf_counter() - start < 5
+    assert loaded.sources[loaded.functions["a:big"].path] == [line]
+
+
+def test_advancement_rewards_are_recorded(make_pack):
+    root = make_pack(files={"data/a/advancement/got.json": '{"criteria": {},\n "rewards": {"function": "a:reward"}}',
+                            "data/a/advancements/old.json": '{"rewards": {"function": "a:old"}}'})
+    loaded = load_packs([root])
+    [loc] = loaded.advancement_rewards["a:reward"]
+    assert (loc.line, loc.col) == (2, 26)
+    assert "a:old" not in loaded.advancement_rewards
+
+
+def test_empty_and_partial_packs(tmp_path, make_pack):
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    loaded = load_packs([empty])
+    assert [d.message for d in loaded.errors] == [
+        "missing pack.mcmeta: the game does not recognise this folder as a data pack"]
+    assert load_packs([make_pack()]).diagnostics == []
