@@ -9,6 +9,7 @@ from __future__ import annotations
 from decimal import ROUND_HALF_EVEN, Decimal
 
 from mcfunction_parser import ast, nbt
+from mcfunction_parser.parse import parse_command
 
 from .failure import CommandFailure
 
@@ -66,8 +67,6 @@ class MacroExpander:
     def _expand(self, function: ast.Function, command: ast.Command, substitutions: dict[str, str]) -> ast.Command:
         if not isinstance(command, ast.MacroLine):
             return command
-        from mcfunction_parser.parse import parse_command
-
         text = command.template
         for key, value in substitutions.items():
             text = text.replace(f"$({key})", value)

@@ -1,0 +1,193 @@
+"""Datapack writing helpers and hypothesis strategies for random scoreboard programs.
+
+``write_pack`` turns ``{function id: text}`` into a 1.21 pack folder. ``programs()`` draws a
+:class:`Program`: several functions in namespace ``t`` that set, add, operate on, compare, store,
+return and call each other (``function``, ``execute if|unless function``, ``return run``), with
+calls only to later functions plus one counted self-recursive loop, so every program ends.
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from hypothesis import strategies as st
+
+INT_MIN, INT_MAX = -(2**31), 2**31 - 1
+
+HOLDERS = ("#a", "#b", "#c", "$d", "e")
+OBJECTIVES = ("o", "p")
+OPERATIONS = ("=", "+=", "-=", "*=", "/=", "%=", "<", ">", "><")
+COMPARISONS = ("<", "<=", "=", ">=", ">")
+INTERESTING = (INT_MIN, INT_MIN + 1, -65536, -7, -2, -1, 0, 1, 2, 3, 7, 46341, 65536, INT_MAX - 1, INT_MAX)
+
+
+def write_pack(root: Path, functions: dict[str, str], tags: dict[str, list[str]] | None = None,
+               pack_format: int = 48) -> Path:
+    """Write a pack: ``functions`` maps ``ns:path`` to the file text; ``tags`` maps a function
+    tag id to its values."""
+    root.mkdir(parents=True, exist_ok=True)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": pack_format, "description": "test"}}))
+    for fid, text in functions.items():
+        ns, path = fid.split(":", 1)
+        file = root / "data" / ns / "function" / f"{path}.mcfunction"
+        file.parent.mkdir(parents=True, exist_ok=True)
+        file.write_text(text if text.endswith("\n") else text + "\n")
+    for tid, values in (tags or {}).items():
+        ns, path = tid.split(":", 1)
+        file = root / "data" / ns / "tags" / "function" / f"{path}.json"
+        file.parent.mkdir(parents=True, exist_ok=True)
+        file.write_text(json.dumps({"values": values}))
+    return root
+
+
+@dataclass(frozen=True)
+class Program:
+    functions: dict[str, str]
+    entry: str = "t:f0"
+
+    def text(self) -> str:
+        return "\n".join(f"# {fid}\n{body}" for fid, body in self.functions.items())
+
+
+holders = st.sampled_from(HOLDERS)
+objectives = st.sampled_from(OBJECTIVES)
+ints = st.one_of(st.sampled_from(INTERESTING), st.integers(INT_MIN, INT_MAX), st.integers(-20, 20))
+non_negative = st.one_of(st.sampled_from((0, 1, 2, 7, 65536, INT_MAX)), st.integers(0, INT_MAX))
+
+
+@st.composite
+def ranges(draw) -> str:
+    lo = draw(st.one_of(st.none(), st.integers(-10, 10), st.sampled_from((INT_MIN, INT_MAX))))
+    hi = draw(st.one_of(st.none(), st.integers(-10, 10), st.sampled_from((INT_MIN, INT_MAX))))
+    if lo is None and hi is None:
+        return str(draw(st.integers(-5, 5)))
+    if lo is not None and hi is not None and lo > hi:
+        lo, hi = hi, lo
+    return f"{'' if lo is None else lo}..{'' if hi is None else hi}"
+
+
+@st.composite
+def score_commands(draw) -> str:
+    """A scoreboard command that can run anywhere (no calls)."""
+    kind = draw(st.sampled_from(("set", "add", "remove", "operation", "operation", "operation", "reset", "get")))
+    h, o = draw(holders), draw(objectives)
+    if kind == "set":
+        return f"scoreboard players set {h} {o} {draw(ints)}"
+    if kind in ("add", "remove"):
+        return f"scoreboard players {kind} {h} {o} {draw(non_negative)}"
+    if kind == "reset":
+        return f"scoreboard players reset {h} {o}"
+    if kind == "get":
+        return f"scoreboard players get {h} {o}"
+    return f"scoreboard players operation {h} {o} {draw(st.sampled_from(OPERATIONS))} {draw(holders)} {draw(objectives)}"
+
+
+@st.composite
+def conditions(draw, callees: list[str]) -> str:
+    word = draw(st.sampled_from(("if", "unless")))
+    kinds = ["matches", "compare"] + (["function"] if callees else [])
+    kind = draw(st.sampled_from(kinds))
+    if kind == "matches":
+        return f"{word} score {draw(holders)} {draw(objectives)} matches {draw(ranges())}"
+    if kind == "compare":
+        return (f"{word} score {draw(holders)} {draw(objectives)} {draw(st.sampled_from(COMPARISONS))} "
+                f"{draw(holders)} {draw(objectives)}")
+    return f"{word} function {draw(st.sampled_from(callees))}"
+
+
+@st.composite
+def commands(draw, callees: list[str]) -> str:
+    """One line of a function that may call ``callees``."""
+    simple = score_commands()
+    call = st.sampled_from(callees).map(lambda f: f"function {f}") if callees else simple
+    inner = st.one_of(simple, simple, call)
+    kind = draw(st.sampled_from(("score", "score", "score", "call", "if", "store", "condition", "return")))
+    if kind == "score":
+        return draw(simple)
+    if kind == "call":
+        return draw(call)
+    if kind == "if":
+        return f"execute {draw(conditions(callees))} run {draw(inner)}"
+    if kind == "store":
+        what = draw(st.sampled_from(("result", "success")))
+        return f"execute store {what} score {draw(holders)} {draw(objectives)} run {draw(inner)}"
+    if kind == "condition":
+        return f"execute {draw(conditions(callees))}"
+    ret = draw(st.sampled_from(("value", "fail", "run")))
+    guard = f"execute {draw(conditions(callees))} run " if draw(st.booleans()) else ""
+    if ret == "value":
+        return f"{guard}return {draw(ints)}"
+    if ret == "fail":
+        return f"{guard}return fail"
+    return f"{guard}return run {draw(inner)}"
+
+
+@st.composite
+def programs(draw, max_functions: int = 4, max_lines: int = 8) -> Program:
+    count = draw(st.integers(1, max_functions))
+    names = [f"t:f{i}" for i in range(count)]
+    functions: dict[str, str] = {}
+    for i, name in enumerate(names):
+        callees = names[i + 1:] + ["t:loop"]
+        lines = draw(st.lists(commands(callees), min_size=1, max_size=max_lines))
+        if i == 0:
+            lines = ["scoreboard objectives add o dummy", "scoreboard objectives add p dummy",
+                     f"scoreboard players set #n p {draw(st.integers(0, 6))}"] + lines
+        functions[name] = "\n".join(lines)
+    loop_body = draw(st.lists(score_commands(), min_size=0, max_size=3))
+    functions["t:loop"] = "\n".join(
+        ["scoreboard players remove #n p 1"] + loop_body + ["execute if score #n p matches 1.. run function t:loop"]
+    )
+    return Program(functions)
+
+
+# ----------------------------------------------------------------------------- running
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What one root run left behind, in a form two backends can be compared on."""
+
+    scores: dict
+    result: int | None
+    cost: int
+    cut: bool
+    overflows: tuple
+    log: tuple
+    diagnostics: tuple
+
+
+def make_backend(name: str):
+    """The backend class by name: ``python`` (reference) or ``numba`` (the VM's, via emulator.api)."""
+    if name == "python":
+        from emulator.reference import ReferenceBackend
+
+        return ReferenceBackend()
+    from emulator.api import NumbaBackend
+
+    return NumbaBackend()
+
+
+def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, scores: dict | None = None) -> Outcome:
+    """Load ``pack`` and run ``entry`` as one root on a fresh world; ``scores`` seeds
+    ``{(holder, objective): value}`` first."""
+    from emulator.state import WorldState
+    from mcfunction_parser.pack import load_packs
+
+    packs = load_packs([pack])
+    state = WorldState()
+    for (holder, objective), value in (scores or {}).items():
+        state.scoreboard.set(holder, objective, value)
+    backend = make_backend(backend_name)
+    backend.load(packs, state, sanitize=sanitize)
+    root = backend.run_root(entry)
+    return Outcome(
+        scores=state.scoreboard.scores(),
+        result=root.result,
+        cost=root.cost,
+        cut=root.cut,
+        overflows=tuple((o.function, o.loc.line, o.op, o.a, o.b, o.exact, o.stored) for o in state.overflows),
+        log=tuple((e.kind, e.text) for e in state.log),
+        diagnostics=tuple((d.message, tuple((f.function, f.loc.line) for f in d.frames)) for d in state.diagnostics),
+    )

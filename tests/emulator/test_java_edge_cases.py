@@ -1,0 +1,178 @@
+"""Java Edition integer and command edge cases, run on both backends.
+
+Each case is a ``t:main`` body plus the scores it must leave (None: unset) and, optionally, the
+function's result. Sources: JLS = Java Language Specification; Math = java.lang.Math javadoc;
+the class names are the decompiled 1.21 sources (net.minecraft.server.commands.*,
+net.minecraft.commands.execution.*).
+"""
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from emulator.semantics import INT_MAX, INT_MIN, double_to_int, double_to_long, mth_floor
+from programs import run_root, write_pack
+
+SETUP = "scoreboard objectives add o dummy\n"
+
+
+def _numba_available() -> bool:
+    try:
+        from emulator.api import NumbaBackend  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+BACKENDS = [
+    "python",
+    pytest.param("numba", marks=pytest.mark.skipif(not _numba_available(), reason="emulator.api.NumbaBackend not available yet")),
+]
+
+# (id, body, expected scores {(holder, objective): value | None}, expected result or ...)
+CASES = [
+    # JLS 15.17.2 / Math.floorDiv: MIN / -1 overflows back to MIN
+    ("min_div_minus_one", f"scoreboard players set #a o {INT_MIN}\nscoreboard players set #b o -1\n"
+     "scoreboard players operation #a o /= #b o", {("#a", "o"): INT_MIN}, ...),
+    # Math.floorMod(MIN, -1) == 0
+    ("min_mod_minus_one", f"scoreboard players set #a o {INT_MIN}\nscoreboard players set #b o -1\n"
+     "scoreboard players operation #a o %= #b o", {("#a", "o"): 0}, ...),
+    # OperationArgument '/=' is Mth.floorDiv: rounds toward negative infinity
+    ("neg_div_floors", "scoreboard players set #a o -7\nscoreboard players set #b o 2\n"
+     "scoreboard players operation #a o /= #b o", {("#a", "o"): -4}, ...),
+    # OperationArgument '%=' is Mth.positiveModulo/floorMod: sign of the divisor
+    ("neg_mod_sign_of_divisor", "scoreboard players set #a o -5\nscoreboard players set #b o 4\n"
+     "scoreboard players operation #a o %= #b o", {("#a", "o"): 3}, ...),
+    ("mod_negative_divisor", "scoreboard players set #a o 7\nscoreboard players set #b o -2\n"
+     "scoreboard players operation #a o %= #b o", {("#a", "o"): -1}, ...),
+    # JLS 15.17.1: int multiplication keeps the low 32 bits; (2^31-1)^2 mod 2^32 == 1
+    ("max_times_max", f"scoreboard players set #a o {INT_MAX}\n"
+     "scoreboard players operation #a o *= #a o", {("#a", "o"): 1}, ...),
+    # ScoreboardCommand.addScore: score.set(score.get() + n) wraps (JLS 15.18.2)
+    ("add_near_max_wraps", f"scoreboard players set #a o {INT_MAX - 1}\nscoreboard players add #a o 5",
+     {("#a", "o"): INT_MIN + 3}, ...),
+    ("remove_near_min_wraps", f"scoreboard players set #a o {INT_MIN + 1}\nscoreboard players remove #a o 3",
+     {("#a", "o"): INT_MAX - 1}, ...),
+    # OperationArgument: division by zero throws "Cannot divide by zero" after both scores were
+    # fetched with getOrCreatePlayerScore: the target is unchanged, the unset source now 0, and
+    # the command failed (store success 0, store result 0)
+    ("div_by_zero", "scoreboard players set #a o 5\n"
+     "execute store success score #s o run scoreboard players operation #a o /= #z o\n"
+     "execute store result score #r o run scoreboard players operation #a o %= #z o",
+     {("#a", "o"): 5, ("#z", "o"): 0, ("#s", "o"): 0, ("#r", "o"): 0}, ...),
+    ("div_by_zero_creates_target", "execute store success score #s o run scoreboard players operation #t o /= #z o",
+     {("#t", "o"): 0, ("#z", "o"): 0, ("#s", "o"): 0}, ...),
+    # OperationArgument '><' swaps the two scores
+    ("swap", "scoreboard players set #a o 1\nscoreboard players set #b o 2\n"
+     "scoreboard players operation #a o >< #b o", {("#a", "o"): 2, ("#b", "o"): 1}, ...),
+    # '<' keeps the minimum, '>' the maximum
+    ("min_max", "scoreboard players set #a o 5\nscoreboard players set #b o -3\nscoreboard players set #c o 5\n"
+     "scoreboard players operation #a o < #b o\nscoreboard players operation #c o > #b o",
+     {("#a", "o"): -3, ("#c", "o"): 5}, ...),
+    # ScoreboardCommand.performOperation: getOrCreatePlayerScore for target and source
+    ("operation_unset_source", "scoreboard players set #a o 5\nscoreboard players operation #a o += #u o",
+     {("#a", "o"): 5, ("#u", "o"): 0}, ...),
+    ("operation_unset_target", "scoreboard players set #a o 5\nscoreboard players operation #t o += #a o",
+     {("#t", "o"): 5}, ...),
+    # performOperation returns the (int) sum of the targets' new values
+    ("operation_result", f"scoreboard players set #a o {INT_MAX}\nscoreboard players set #b o 1\n"
+     "execute store result score #r o run scoreboard players operation #a o += #b o",
+     {("#a", "o"): INT_MIN, ("#r", "o"): INT_MIN}, ...),
+    # ExecuteCommand.checkScore: an unset score is false for if, so unless passes
+    ("if_unset_matches", "execute if score #u o matches ..0 run scoreboard players add #if o 1\n"
+     "execute unless score #u o matches ..0 run scoreboard players add #unless o 1",
+     {("#if", "o"): None, ("#unless", "o"): 1, ("#u", "o"): None}, ...),
+    ("if_unset_compare", "scoreboard players set #a o 1\n"
+     "execute if score #a o = #u o run scoreboard players add #if o 1\n"
+     "execute unless score #a o = #u o run scoreboard players add #unless o 1",
+     {("#if", "o"): None, ("#unless", "o"): 1}, ...),
+    # IntRange bounds are inclusive
+    ("range_inclusive", "scoreboard players set #a o 5\n"
+     "execute if score #a o matches 5..5 run scoreboard players add #hit o 1\n"
+     "execute if score #a o matches ..5 run scoreboard players add #hit o 1\n"
+     "execute if score #a o matches 5.. run scoreboard players add #hit o 1", {("#hit", "o"): 3}, ...),
+    # ScoreboardCommand.getScore throws on an unset score; store result then stores 0 (brigadier
+    # ContextChain.runExecutable reports (false, 0) to the callback)
+    ("store_failed_get", "execute store result score #r o run scoreboard players get #u o\n"
+     "execute store success score #s o run scoreboard players get #u o",
+     {("#r", "o"): 0, ("#s", "o"): 0}, ...),
+    # a condition as the final command returns 1 when it passes
+    ("store_condition", "scoreboard players set #a o 3\n"
+     "execute store result score #r o if score #a o matches 3\n"
+     "execute store result score #f o if score #a o matches 4", {("#r", "o"): 1, ("#f", "o"): 0}, ...),
+    # ReturnCommand: return N is the function's result and stops it
+    ("return_value", "return 5\nscoreboard players set #after o 1", {("#after", "o"): None}, 5),
+    # return fail: the function's result is a failure (0 here)
+    ("return_fail", "return fail", {}, 0),
+    # return run: the command's result is returned
+    ("return_run", "scoreboard players set #a o 41\nreturn run scoreboard players add #a o 1", {("#a", "o"): 42}, 42),
+    # a function that never returns has no result
+    ("no_return", "scoreboard players set #a o 1", {("#a", "o"): 1}, None),
+    # FunctionCommand: the store callback fires only when the called function returns
+    ("store_function_without_return", "execute store result score #r o run function t:plain",
+     {("#r", "o"): None, ("#plain", "o"): 1}, ...),
+    ("store_function_return", "execute store result score #r o run function t:five", {("#r", "o"): 5}, ...),
+    ("store_success_return_fail", "scoreboard players set #s o 7\n"
+     "execute store success score #s o run function t:fails", {("#s", "o"): 0}, ...),
+    # ExecuteCommand.scheduleFunctionConditionsAndTest: a function that never returns reaches
+    # FallthroughTask, which reports (false, 0); the checks are value != 0 (if) and value == 0
+    # (unless), so `if` fails and `unless` passes (decompiled 1.21 ExecuteCommand, FallthroughTask)
+    ("if_function_no_return", "execute if function t:plain run scoreboard players add #if o 1\n"
+     "execute unless function t:plain run scoreboard players add #unless o 1",
+     {("#if", "o"): None, ("#unless", "o"): 1, ("#plain", "o"): 2}, ...),
+    ("if_function_return", "execute if function t:five run scoreboard players add #if o 1\n"
+     "execute unless function t:five run scoreboard players add #unless o 1",
+     {("#if", "o"): 1, ("#unless", "o"): None}, ...),
+    # IsolatedCall: a return inside the condition function does not return the caller
+    ("if_function_isolated", "execute if function t:five run scoreboard players add #if o 1\nreturn 9", {}, 9),
+    # return run function: the callee's return becomes the caller's (queueFunctionsAsReturn)
+    ("return_run_function", "return run function t:five", {}, 5),
+    # ... and a callee that never returns makes the caller fail (FallthroughTask)
+    ("return_run_function_no_return", "return run function t:plain\nscoreboard players set #after o 1",
+     {("#after", "o"): None, ("#plain", "o"): 1}, 0),
+]
+
+HELPERS = {
+    "t:plain": "scoreboard players add #plain o 1",
+    "t:five": "return 5",
+    "t:fails": "return fail",
+}
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("case_id, body, expected, result", CASES, ids=[c[0] for c in CASES])
+def test_edge_case(tmp_path, backend, case_id, body, expected, result):
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
+    outcome = run_root(backend, pack, "t:main")
+    scores = outcome.scores.get("o", {})
+    for (holder, objective), value in expected.items():
+        assert objective == "o"
+        assert scores.get(holder) == value, f"{holder} {objective}"
+    if result is not ...:
+        assert outcome.result == result
+
+
+def test_div_by_zero_is_reported(tmp_path):
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + "scoreboard players operation #a o /= #z o"})
+    outcome = run_root("python", pack, "t:main")
+    assert [message for message, _ in outcome.diagnostics] == ["Cannot divide by zero"]
+    assert outcome.diagnostics[0][1] == (("t:main", 2),)
+
+
+# Casts of stored doubles: JLS 5.1.3 (narrowing: NaN -> 0, saturation) and Mth.floor
+@pytest.mark.parametrize("value, expected", [
+    (1e12, INT_MAX), (-1e12, INT_MIN), (math.nan, 0), (2.9, 2), (-2.9, -2), (math.inf, INT_MAX),
+])
+def test_double_to_int(value, expected):
+    assert double_to_int(value) == expected
+
+
+def test_double_to_long_saturates():
+    assert double_to_long(1e30) == 2**63 - 1
+    assert double_to_long(math.nan) == 0
+
+
+@pytest.mark.parametrize("value, expected", [(2.5, 2), (-2.5, -3), (-0.0, 0), (math.nan, 0), (1e12, INT_MAX)])
+def test_mth_floor(value, expected):
+    assert mth_floor(value) == expected
