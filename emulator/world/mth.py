@@ -9,7 +9,8 @@ Public functions (plain scalars in, plain scalars out):
 - ``sin(x)`` / ``cos(x)``: the 65536-entry float sine table, indexed by
   ``(int)(x * 10430.378F) & 0xFFFF`` (cos adds ``16384.0F`` before the cast).
 - ``atan2(y, x)``: the game's table-based ``Mth.atan2`` (double in, double out); it differs from
-  ``math.atan2`` in the last bits and is what ``facing`` and ``lookAt`` use.
+  ``math.atan2`` by about 1e-6 and is what ``facing`` and ``lookAt`` use (its two tables are the
+  JVM's own values, see ``atan_tables``).
 - ``wrap_degrees_f(x)`` (float) / ``wrap_degrees_d(x)`` (double): ``Mth.wrapDegrees`` into [-180, 180).
 - ``floor_f(x)``: ``Mth.floor(float)``; ``clamp_f(x, lo, hi)``: ``Mth.clamp(float, ...)``.
 - ``java_float_rem(a, b)``: Java's float ``%`` (sign of the dividend).
@@ -25,6 +26,7 @@ import struct
 import numpy as np
 
 from emulator.semantics import double_to_int
+from emulator.world.atan_tables import ASIN_TAB, COS_TAB
 
 F32 = np.float32
 SIN_SCALE = F32(10430.378)
@@ -127,8 +129,6 @@ def fast_inv_sqrt(x: float) -> float:
 
 
 _FRAC_BIAS = _from_bits(4805340802404319232)
-_ASIN_TAB = [math.asin(i / 256.0) for i in range(257)]
-_COS_TAB = [math.cos(a) for a in _ASIN_TAB]
 _ONE_SIXTH = 0.16666666666666666
 
 
@@ -153,8 +153,8 @@ def atan2(y: float, x: float) -> float:
     index = ((_bits(biased) & 0xFFFFFFFF) + 2**31) % 2**32 - 2**31  # (int) of the raw long bits
     if not 0 <= index <= 256:
         return math.nan  # only reachable with infinite input, where the game itself throws
-    correction = y * _COS_TAB[index] - x * (biased - _FRAC_BIAS)
-    angle = _ASIN_TAB[index] + (6.0 + correction * correction) * correction * _ONE_SIXTH
+    correction = y * COS_TAB[index] - x * (biased - _FRAC_BIAS)
+    angle = ASIN_TAB[index] + (6.0 + correction * correction) * correction * _ONE_SIXTH
     if steep:
         angle = math.pi / 2 - angle
     if negative_x:

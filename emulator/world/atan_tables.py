@@ -1,0 +1,153 @@
+"""The two 257-entry tables behind ``Mth.atan2``, exactly as the JVM computes them.
+
+``ASIN_TAB[i] = Math.asin(i / 256.0)`` and ``COS_TAB[i] = Math.cos(ASIN_TAB[i])``. Java's
+``Math.asin`` is fdlibm's and HotSpot's ``Math.cos`` is an intrinsic; both round differently from
+the C library's ``asin``/``cos`` at a handful of entries (e.g. entry 86, 229), which changes the
+last bit of ``atan2``. So the tables are the JVM's values (OpenJDK 17, x86_64), as raw IEEE bits.
+Regenerate with ``printf 'tables\n' | java MthRef`` (tests/world/java/MthRef.java); the JVM
+cross-check in tests/world/test_world_mth.py compares them with the running JVM.
+"""
+from __future__ import annotations
+
+import struct
+
+
+def _doubles(text: str) -> tuple[float, ...]:
+    return tuple(struct.unpack("<d", bytes.fromhex(word)[::-1])[0] for word in text.split())
+
+
+ASIN_TAB = _doubles("""
+    0000000000000000 3f700002aaabdddf 3f80000aaabdde0c 3f8800240091cfda
+    3f90002aabdde94c 3f94005358ff0bd8 3f980090091d9024 3f9c00e4be5f0304
+    3fa000aabde0b9c8 3fa200f3229fdf2c 3fa4014d8ffaf8af 3fa601bc0922e634
+    3fa8024091fdb0a9 3faa02dd2f38ebf6 3fac0393e65c2c93 3fae0466bddb929c
+    3fb002abde953619 3fb103347666f892 3fb203ce2b380cd3 3fb3047a02794911
+    3fb405390240e6fd 3fb5060c31541da5 3fb606f49730ccc5 3fb707f33c173a99
+    3fb809092913e52e 3fb90a3768096840 3fba0b7f03ba78ac 3fbb0ce107d3f690
+    3fbc0e5e80f7172d 3fbd0ff87cc3a7a5 3fbe11b009e269b5 3fbf1386380f8b9a
+    3fc00abe0c129e1e 3fc08bc95e132e6f 3fc10ce59ba4a8c4 3fc18e134f0178af
+    3fc20f530308cc20 3fc290a543442d6a 3fc3120a9bed2f46 3fc3938399f32b5c
+    3fc41510cb011423 3fc496b2bd835ab9 3fc5186a00ade974 3fc59a37248233ea
+    3fc61c1ab9d55d30 3fc69e1552567517 3fc720278094cd3c 3fc7a251d80666ab
+    3fc82494ed0e78fc 3fc8a6f1550413c4 3fc92967a638db38 3fc9abf877ffe0e8
+    3fca2ea462b4998e 3fcab16bffc1f0dd 3fcb344fe9a97c4d 3fcbb750bc0acdef
+    3fcc3a6f13aae84b 3fccbdab8e7bd466 3fcd4106cba45b08 3fcdc4816b87e25e
+    3fce481c0fce7134 3fcecbd75b6cd8f0 3fcf4fb3f2ad079b 3fcfd3b27b368330
+    3fd02be9ce0b87cd 3fd06e0bfee5c057 3fd0b04025245ccc 3fd0f28696826d95
+    3fd134dfa9805147 3fd1774bb5687cf9 3fd1b9cb12545e62 3fd1fc5e19315893
+    3fd23f0523c5dc2b 3fd281c08cb69be8 3fd2c490af8bde81 3fd30775e8b6eeb9
+    3fd34a709597aab1 3fd38d8114823369 3fd3d0a7c4c4bd9c 3fd413e506ad84ee
+    3fd457393b90e2aa 3fd49aa4c5cf8926 3fd4de2808dce513 3fd521c36945a5f2
+    3fd565774cb66f02 3fd5a9441a02b1fd 3fd5ed2a392bb50f 3fd6312a1367c57c
+    3fd675441329986e 3fd6b978a427db95 3fd6fdc83364f719 3fd742332f3702b4
+    3fd786ba074fef93 3fd7cb5d2cc5e8ed 3fd8101d121bed2d 3fd854fa2b4aa1a3
+    3fd899f4edc962d3 3fd8df0dd0979384 3fd924454c462cc4 3fd9699bdb019139
+    3fd9af11f89ba61c 3fd9f4a82296347b 3fda3a5ed82d9537 3fda80369a63aaa8
+    3fdac62fec0b2a92 3fdb0c4b51d33b86 3fdb5289525368ab 3fdb98ea7617ef3a
+    3fdbdf6f47ae6904 3fdc261853b2d785 3fdc6ce628dd132c 3fdcb3d9580ea2b8
+    3fdcfaf27460fe9f 3fdd4232133444ad 3fdd8998cc3e6049 3fddd127399aabe7
+    3fde18ddf7da106b 3fde60bda613a78f 3fdea8c6e5f5e67f 3fdef0fa5bd85625
+    3fdf3958aecddef4 3fdf81e288b7ae20 3fdfca989658baaf 3fe009bdc3b4f877
+    3fe02e46075785a1 3fe052e571060fd4 3fe0779c5d4df4b8 3fe09c6b2a636bb7
+    3fe0c152382d7366 3fe0e651e85229ce 3fe10b6a9e43942f 3fe1309cbf4cdb24
+    3fe155e8b2a00052 3fe17b4ee1641318 3fe1a0cfb6c3e9eb 3fe1c66b9ffd666d
+    3fe1ec230c714a96 3fe211f66db3a5a1 3fe237e6379cdfc6 3fe25df2e05b6c41
+    3fe2841ce0862974 3fe2aa64b32f7783 3fe2d0cad5f90e20 3fe2f74fc9289adc
+    3fe31df40fbd31cd 3fe344b82f859adf 3fe36b9cb13786e1 3fe392a22087b7e9
+    3fe3b9c90c43296d 3fe3e11206694523 3fe4087da4473296 3fe4300c7e945024
+    3fe457bf318fe517 3fe47f965d201d78 3fe4a792a4f26152 3fe4cfb4b09d1a3e
+    3fe4f7fd2bc2fb34 3fe5206cc637e012 3fe5490434275b92 3fe571c42e3d0be7
+    3fe59aad71ced00f 3fe5c3c0c108f95c 3fe5ecfee31c96e7 3fe61668a46ffa82
+    3fe63ffed6d198f6 3fe669c251ad69e7 3fe693b3f244ee17 3fe6bdd49bea05ce
+    3fe6e825383cc40b 3fe712a6b76c6e92 3fe73d5a107bde74 3fe76840418978a7
+    3fe7935a501afa78 3fe7bea9496d5a54 3fe7ea2e42c9027a 3fe815ea59dab0a2
+    3fe841deb5114bb4 3fe86e0c84010764 3fe89a74ffcc34a4 3fe8c7196b9225de
+    3fe8f3fb14e496b4 3fe9211b54441083 3fe94e7b8da3cf7a 3fe97c1d30f5b7d2
+    3fe9aa01babef75e 3fe9d82ab4b5fdfd 3fea0699b66a8718 3fea355065f87fa4
+    3fea645078c6a78c 3fea939bb451e2a0 3feac333ef06451a 3feaf31b1127022e
+    3feb235315c680dc 3feb53de0bcffc24 3feb84be172438ef 3febb5f571cb0571
+    3febe7866d3b6480 3fec197373bc7bf1 3fec4bbf09e19830 3fec7e6bd023da76
+    3fecb17c849c7288 3fece4f404e29b3a 3fed18d55010f295 3fed4d2388f6360b
+    3fed81e1f875ea8d 3fedb714101e0a0e 3fedecbd6cf77786 3fee22e1da97bb17
+    3fee5985567b665d 3fee90ac13b18234 3feec85a7ee191da 3fef009542b712f2
+    3fef39614cbef7d4 3fef72c3d2c5752a 3fefacc258c4aaf9 3fefe762b77744d5
+    3ff0115591d29d12 3ff02f511b223c0f 3ff04da77ac5c9e5 3ff06c5c6f8ce9cc
+    3ff08b73f9af1058 3ff0aaf2613700b3 3ff0cadc3d4378b1 3ff0eb367c3fd618
+    3ff10c066d3e6932 3ff12d51caa6b58b 3ff14f1ec67484ed 3ff1717418520341
+    3ff194590de7e7f6 3ff1b7d59dd40ba2 3ff1dbf27dd2221a 3ff200b93cc5a540
+    3ff2263461820ad8 3ff24c6f8f6affb2 3ff27377b2570a1e 3ff29b5b338b7c8d
+    3ff2c42a3a3c7a87 3ff2edf6fac7f5b8 3ff318d619008ed9 3ff344df237486d7
+    3ff3722d2feb24c8 3ff3a0dfa4bb4aff 3ff3d11b3fc3b697 3ff4030b73c55372
+    3ff436e4418e69c0 3ff46ce4c738c4ea 3ff4a55ae332c7a5 3ff4e0a887c40a9c
+    3ff51f4bd13f8591 3ff561ebd9c18cd3 3ff5a96e34bc532b 3ff5f71d7ff42c8a
+    3ff64cf55148366e 3ff6ae4c63222736 3ff721a5d8718655 3ff7b7d33b928c5b
+    3ff921fb54442d18
+""")
+
+COS_TAB = _doubles("""
+    3ff0000000000000 3fefffeffffbfffe 3fefffbfffbfff80 3fefff6ffebbfa4e
+    3feffefffbffdfff 3feffe6ff63b85e7 3feffdbfebbe9360 3feffcefda786870
+    3feffbffbff7fec0 3feffaef996bc4e8 3feff9bf63a1740b 3feff86f1b05dfb0
+    3feff6febba4bfea 3feff56e412875ab 3feff3bda6d9c950 3feff1ece79fa355
+    3fefeffbfdfebf1f 3fefedeae41957e6 3fefebb993aecf99 3fefe968061b4fc8
+    3fefe6f634576477 3fefe46416f790d1 3fefe1b1a62bddad 3fefdeded9bf61d3
+    3fefdbeba917c3f5 3fefd8d80b34b63e 3fefd5a3f6af6b74 3fefd24f61ba0590
+    3fefceda421efdb5 3fefcb448d40857c 3fefc78e3817e16e 3fefc3b73734bca2
+    3fefbfbf7ebc755f 3fefbba7026962a7 3fefb76db58a1299 3fefb3138b008181
+    3fefae987541497f 3fefa9fc6652caa7 3fefa53f4fcc4b79 3fefa06122d5118c
+    3fef9b61d0237250 3fef964147fbdbbf 3fef90ff7a2fd4d2 3fef8b9c561cf5a1
+    3fef8617caabd6f6 3fef8071c64ef938 3fef7aaa3701a270 3fef74c10a46b354
+    3fef6eb62d27730d 3fef68898c325199 3fef623b1379a09b 3fef5bcaae92424e
+    3fef553848924e81 3fef4e83cc0fad49 3fef47ad231ea746 3fef40b437506b2f
+    3fef3998f1b1886c 3fef325b3ac85e81 3fef2afafa9380f9 3fef237818880fa4
+    3fef1bd27b9002c4 3fef140a0a086af1 3fef0c1ea9bfa45f 3fef04103ff37d41
+    3feefbdeb14f4eda 3feef389e1ea090d 3feeeb11b5442ff1 3feee2760e45cb23
+    3feed9b6cf3c4663 3feed0d3d9d8432f 3feec7cd0f2b5adf 3feebea24fa5d0ec
+    3feeb5537b1434da 3feeabe0709cf371 3feea2490ebdd6b8 3fee988d33497437
+    3fee8eacbb648910 3fee84a78383435d 3fee7a7d6766784b 3fee702e4218c668
+    3fee65b9edeba38e 3fee5b20447455cb 3fee50611e88d6b5 3fee457c543ca073
+    3fee3a71bcdd63de 3fee2f412eefa6f9 3fee23ea802b4b1a 3fee186d8577f9ec
+    3fee0cca12e97895 3fee00fffbbbe023 3fedf50f124fba75 3fede8f7282602ae
+    3feddcb80ddc085b 3fedd05193273445 3fedc3c386d0ae09 3fedb70db6b0e156
+    3fedaa2fefaae1d8 3fed9d29fda7ac9c 3fed8ffbab9145d5 3fed82a4c34db1c6
+    3fed75250db9c792 3fed677c52a3dc9b 3fed59aa58c6471c 3fed4baee5c1b694
+    3fed3d89be176072 3fed2f3aa522ff95 3fed20c15d14a4e5 3fed121da6ea5769
+    3fed034f42698214 3fecf455ee182d6d 3fece5316736032e 3fecd5e169b519d7
+    3fecc665b0328622 3fecb6bdf3eeb01f 3feca6e9ecc569b9 3fec96e95125c43e
+    3fec86bbd609a260 3fec76612eed0424 3fec65d90dc509f4 3fec552322f6abf5
+    3fec443f1d4d22af 3fec332ca9effdd0 3fec21eb7458e5cc 3fec107b264904d9
+    3febfedb67be13b3 3febed0bdee7064d 3febdb0c30185485 3febc8dbfdbfda88
+    3febb67ae8584caa 3feba3e88e5c39ec 3feb91248c38986b 3feb7e2e7c3ed68e
+    3feb6b05f6966b9b 3feb57aa912de205 3feb441bdfab5580 3feb3059735c5e90
+    3feb1c62db2564ff 3feb0837a370523a 3feaf3d7561a9c44 3feadf417a62a16d
+    3feaca7594d44cbd 3feab5732734fa47 3feaa039b06e926d 3fea8ac8ac79d249
+    3fea751f9447b724 3fea5f3dddaa0225 3fea4922fb3ac8c2 3fea32ce5c4305ef
+    3fea1c3f6ca01f29 3fea057594a84fc8 3fe9ee70390dec3c 3fe9d72ebac16dd6
+    3fe9bfb076d236eb 3fe9a7f4c64dfe15 3fe98ffafe1ece30 3fe977c26ee7878a
+    3fe95f4a64decda8 3fe9469227a84b4c 3fe92d98fa2c355d 3fe9145e1a6cf381
+    3fe8fae0c15ad38a 3fe8e12022a5ab3a 3fe8c71b6c8c49b4 3fe8acd1c7a997f1
+    3fe8924256bf4545 3fe8776c367dda86 3fe85c4e7d4a0bb1 3fe840e83aff1d1d
+    3fe8253878ae2e09 3fe8093e385a3700 3fe7ecf874b086df 3fe7d06620bd8524
+    3fe7b386279d7bf3 3fe796576c292765 3fe778d8c89dc27c 3fe75b090e40447a
+    3fe73ce704fb7b23 3fe71e716af8a794 3fe6ffa6f4323c0d 3fe6e0864a0050d6
+    3fe6c10e0a9e5d66 3fe6a13cc8a9b946 3fe681110a985d4d 3fe660894a2751cc
+    3fe63fa3f3c02962 3fe61e5f65d4d978 3fe5fcb9f031317b 3fe5dab1d341202a
+    3fe5b8453f4ae294 3fe59572539c229b 3fe572371da8f26e 3fe54e91981b7778
+    3fe52a7fa9d2f8ea 3fe505ff24d0e46b 3fe4e10dc51235a7 3fe4bba92f53830a
+    3fe495ceefbdc28b 3fe46f7c7879a3bc 3fe448af2027201c 3fe4216420369e50
+    3fe3f9989320b7f7 3fe3d14972795a11 3fe3a87394da947a 3fe37f13aba2fbb6
+    3fe355264082fea0 3fe32aa7b2d3fd8f 3fe2ff9434b34639 3fe2d3e7c7da540a
+    3fe2a79e3a2cd2e6 3fe27ab321f3dcf1 3fe24d21d9bcbd2d 3fe21ee57bd01fd8
+    3fe1eff8dd34fde3 3fe1c0568830ae9d 3fe18ff8b63353dc 3fe15ed9491d3888
+    3fe12cf1c3c6a214 3fe0fa3b41afe8ac 3fe0c6ae6dbb479d 3fe0924377cc95c0
+    3fe05cf20924c255 3fe026b137474aca 3fdfdeeeea5d2083 3fdf6e75051127be
+    3fdefbdeb14f4ed9 3fde87142982b1b2 3fde0ffbbe00c34f 3fdd96799ba6f66c
+    3fdd1a6f89821640 3fdc9bbc9bb903fc 3fdc1a3cd9862dfc 3fdb95c8d37c8daa
+    3fdb0e35269b38f4 3fda8351e7be222b 3fd9f4e9f1b5859e 3fd962c20e982fea
+    3fd8cc97f2912db7 3fd83220fb33564e 3fd79308a1dd964b 3fd6eeee8953be07
+    3fd645640568c1c3 3fd595e8ede2700c 3fd4dfe7790ba697 3fd422aeba618155
+    3fd35d6b2ed1914a 3fd28f1c6c540fb9 3fd1b6867c415165 3fd0d21c6aeb714f
+    3fcfbfbf7ebc755d 3fcdba59d10bfe0a 3fcb8cc9d3952a43 3fc92ca4f010700e
+    3fc689f26c6b01d5 3fc389d6226c1299 3fbfeffbfdfebf21 3fb69af589b35960
+    3c91a62633145c07
+""")

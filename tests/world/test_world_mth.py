@@ -1,0 +1,192 @@
+"""The game's float math, rotations and store casts.
+
+Expected values come from the game's formulas (decompiled 1.21 util/Mth.java, world/phys/Vec3.java,
+commands/arguments/coordinates/LocalCoordinates.java, commands/CommandSourceStack.java,
+server/commands/ExecuteCommand.java) evaluated on a real JVM by tests/world/java/MthRef.java when
+``javac`` is available, so float32 rounding and Java's Math.sin/asin/cos are the JVM's own.
+"""
+from __future__ import annotations
+
+import math
+import shutil
+import struct
+import subprocess
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from mcfunction_parser import ast
+from mcfunction_parser.nbt import Byte, Double, Float, Int, Long, Short
+from emulator.world import mth, rotation, stores
+
+F32 = np.float32
+JAVA_SOURCE = Path(__file__).parent / "java" / "MthRef.java"
+
+
+# ----------------------------------------------------------------------------- pinned values
+
+
+def test_sine_table_is_indexed_by_truncated_float_product():
+    # Mth.sin(x) = SIN[(int)(x * 10430.378F) & 65535]: sin(pi/2 as float) lands on index 16384.
+    assert mth.sin(F32(math.pi / 2)) == F32(1.0)
+    assert mth.cos(F32(0.0)) == F32(1.0)
+    # The table is float32 and stepped: sin(1e-5) is entry 0 (the product 0.104 truncates to 0).
+    assert mth.sin(F32(1e-5)) == F32(0.0)
+    # cos(pi) is SIN[(int)(32768.0F + 16384.0F) & 0xFFFF] = SIN[49152], exactly -1.
+    assert mth.cos(F32(math.pi)) == F32(-1.0)
+    assert mth.SIN_TABLE.dtype == np.float32 and len(mth.SIN_TABLE) == 65536
+
+
+def test_wrap_degrees_float():
+    # Mth.wrapDegrees(float): f % 360 (sign of dividend), then >= 180 -> -360, < -180 -> +360.
+    assert mth.wrap_degrees_f(180.0) == F32(-180.0)
+    assert mth.wrap_degrees_f(-180.0) == F32(-180.0)
+    assert mth.wrap_degrees_f(540.5) == F32(-179.5)
+    assert mth.wrap_degrees_f(-190.0) == F32(170.0)
+    assert mth.wrap_degrees_d(359.0) == -1.0
+
+
+def test_atan2_is_close_to_but_not_math_atan2():
+    # Mth.atan2 is a table with a cubic correction: about 1e-6 off the true angle (fastInvSqrt does
+    # one Newton step), never equal to it.
+    samples = [(1.0, 2.0), (-3.0, 0.5), (0.3, -0.7), (-1e-3, -5.0), (7.0, 7.0)]
+    assert all(abs(mth.atan2(y, x) - math.atan2(y, x)) < 2e-6 for y, x in samples)
+    assert any(mth.atan2(y, x) != math.atan2(y, x) for y, x in samples)
+    assert mth.atan2(0.0, 0.0) == 0.0
+    assert math.isnan(mth.atan2(math.nan, 1.0))
+
+
+def test_facing_due_axes():
+    # CommandSourceStack.facing: looking +x is yaw -90, +z is 0, -x is 90, straight down pitch 90.
+    origin = (0.0, 0.0, 0.0)
+    assert rotation.facing_rotation(origin, (1.0, 0.0, 0.0)) == (F32(-90.0), F32(0.0))
+    assert rotation.facing_rotation(origin, (0.0, 0.0, 1.0)) == (F32(0.0), F32(0.0))
+    assert rotation.facing_rotation(origin, (-1.0, 0.0, 0.0)) == (F32(90.0), F32(0.0))
+    yaw, pitch = rotation.facing_rotation(origin, (0.0, -1.0, 0.0))
+    assert pitch == F32(90.0) and yaw == F32(-90.0)  # atan2(0, 0) = 0, minus 90
+
+
+def test_local_coordinates_forward_is_the_view_direction():
+    # ^ ^ ^1 facing yaw 0 pitch 0 moves +z by cos(0)*... = 1 exactly (table entries are exact there).
+    assert rotation.local_to_world((0.0, 0.0, 0.0), 0.0, 0.0, 0.0, 0.0, 1.0) == (
+        float(mth.cos(F32(90.0) * mth.DEG_TO_RAD)), 0.0, 1.0)
+    x, y, z = rotation.local_to_world((10.0, 64.0, 10.0), -90.0, 0.0, 0.0, 0.0, 2.0)
+    assert abs(x - 12.0) < 1e-6 and abs(z - 10.0) < 1e-6 and y == 64.0
+    # ^1 (left) facing south (+z) points east (+x).
+    x, _, z = rotation.local_to_world((0.0, 0.0, 0.0), 0.0, 0.0, 1.0, 0.0, 0.0)
+    assert abs(x - 1.0) < 1e-6 and abs(z) < 1e-6
+
+
+def test_rotation_argument_and_teleport_wrapping():
+    # RotationArgument: (float)(value + (double) base) for "~"; tp wraps then clamps pitch to ±90.
+    rel, absolute = ast.Coord("rel", 10.0), ast.Coord("abs", 200.0)
+    assert rotation.relative_rotation(F32(175.0), F32(0.0), rel, absolute) == (F32(185.0), F32(200.0))
+    assert rotation.teleport_rotation(F32(185.0), F32(200.0)) == (F32(-175.0), F32(-90.0))
+    assert rotation.teleport_rotation(F32(0.0), F32(100.0)) == (F32(0.0), F32(90.0))
+    # Loading Rotation NBT keeps % 360 and discards non-finite values.
+    assert rotation.load_rotation((F32(5.0), F32(6.0)), (F32(-725.0), F32(math.inf))) == (F32(-5.0), F32(6.0))
+
+
+def test_store_casts_follow_java_narrowing():
+    # ExecuteCommand.wrapStores: (int)((double)v*scale), (short)(int)..., (byte)(int)..., (long), (float).
+    assert stores.stored_tag("int", 7, 0.5) == 3 and type(stores.stored_tag("int", 7, 0.5)) is Int
+    assert stores.stored_tag("int", -7, 0.5) == -3  # truncation toward zero
+    assert stores.stored_tag("int", 2**31 - 1, 10.0) == 2**31 - 1  # saturates
+    assert stores.stored_tag("short", 40000, 1.0) == 40000 - 65536
+    assert stores.stored_tag("byte", 2**31 - 1, 4.0) == -1  # saturate to int MAX, low 8 bits
+    assert stores.stored_tag("long", 3, 1e30) == 2**63 - 1
+    assert type(stores.stored_tag("short", 1, 1)) is Short and type(stores.stored_tag("byte", 1, 1)) is Byte
+    assert stores.stored_tag("float", 1, 0.1) == float(F32(0.1)) and type(stores.stored_tag("float", 1, 0.1)) is Float
+    assert stores.stored_tag("double", 1, 0.1) == 0.1 and type(stores.stored_tag("double", 1, 0.1)) is Double
+    assert type(stores.stored_tag("long", 1, 1.0)) is Long
+
+
+# ----------------------------------------------------------------------------- JVM cross-check
+
+
+def _hf(x) -> str:
+    return format(struct.unpack("<I", struct.pack("<f", float(x)))[0], "x")
+
+
+def _hd(x: float) -> str:
+    return format(struct.unpack("<Q", struct.pack("<d", x))[0], "x")
+
+
+def _pf(h: str) -> np.float32:
+    return F32(struct.unpack("<f", struct.pack("<I", int(h, 16)))[0])
+
+
+def _pd(h: str) -> float:
+    return struct.unpack("<d", struct.pack("<Q", int(h, 16)))[0]
+
+
+@pytest.fixture(scope="module")
+def java(tmp_path_factory):
+    if shutil.which("javac") is None or shutil.which("java") is None:
+        pytest.skip("no JDK: the JVM cross-check needs javac and java")
+    out = tmp_path_factory.mktemp("mthref")
+    subprocess.run(["javac", "-d", str(out), str(JAVA_SOURCE)], check=True, capture_output=True)
+
+    def ask(lines: list[str]) -> list[str]:
+        done = subprocess.run(["java", "-cp", str(out), "MthRef"], input="\n".join(lines) + "\n",
+                              check=True, capture_output=True, text=True)
+        return done.stdout.splitlines()
+
+    return ask
+
+
+def _random_floats(rng, n, scale):
+    return [F32(v) for v in rng.uniform(-scale, scale, n)]
+
+
+def test_trig_and_wrap_match_the_jvm(java):
+    rng = np.random.default_rng(1)
+    values = _random_floats(rng, 1500, 1000.0) + _random_floats(rng, 500, 4.0) + [F32(0.0), F32(-0.0), F32(1e9)]
+    queries = [f"{op} {_hf(v)}" for v in values for op in ("sin", "cos", "wrap")]
+    answers = java(queries)
+    ours = [_hf(f(v)) for v in values for f in (mth.sin, mth.cos, mth.wrap_degrees_f)]
+    assert ours == answers
+
+
+def test_atan2_tables_match_the_jvm(java):
+    ours = [f"{_hd(a)} {_hd(c)}" for a, c in zip(mth.ASIN_TAB, mth.COS_TAB)]
+    assert ours == java(["tables"])
+
+
+def test_atan2_matches_the_jvm(java):
+    rng = np.random.default_rng(2)
+    pairs = [(float(y), float(x)) for y, x in rng.uniform(-50, 50, (2000, 2))]
+    pairs += [(0.0, 1.0), (1.0, 0.0), (-1.0, -1.0), (1e-300, 1.0), (3.0, -1e-12)]
+    answers = java([f"atan2 {_hd(y)} {_hd(x)}" for y, x in pairs])
+    assert [_hd(mth.atan2(y, x)) for y, x in pairs] == answers
+
+
+def test_facing_and_local_coordinates_match_the_jvm(java):
+    rng = np.random.default_rng(3)
+    queries, ours = [], []
+    for _ in range(800):
+        o = tuple(float(v) for v in rng.uniform(-100, 100, 3))
+        t = tuple(float(v) for v in rng.uniform(-100, 100, 3))
+        queries.append("facing " + " ".join(_hd(v) for v in o + t))
+        yaw, pitch = rotation.facing_rotation(o, t)
+        ours.append(f"{_hf(yaw)} {_hf(pitch)}")
+        yaw, pitch = F32(rng.uniform(-400, 400)), F32(rng.uniform(-90, 90))
+        offsets = tuple(float(v) for v in rng.uniform(-10, 10, 3))
+        queries.append("local " + " ".join([_hd(v) for v in o] + [_hf(yaw), _hf(pitch)] + [_hd(v) for v in offsets]))
+        ours.append(" ".join(_hd(v) for v in rotation.local_to_world(o, yaw, pitch, *offsets)))
+        queries.append(f"dir {_hf(yaw)} {_hf(pitch)}")
+        ours.append(" ".join(_hd(v) for v in rotation.direction_from_rotation(yaw, pitch)))
+    assert ours == java(queries)
+
+
+def test_store_casts_match_the_jvm(java):
+    rng = np.random.default_rng(4)
+    cases = [(int(v), float(s)) for v, s in zip(rng.integers(-2**31, 2**31, 400), rng.uniform(-1e4, 1e4, 400))]
+    cases += [(5, math.nan), (1, math.inf), (-1, math.inf), (2**31 - 1, 1.5), (-(2**31), 1.0), (300, 1.0)]
+    answers = java([f"store {v} {_hd(s)}" for v, s in cases])
+    ours = []
+    for v, s in cases:
+        tags = [stores.stored_tag(t, v, s) for t in ("int", "long", "short", "byte")]
+        ours.append(" ".join(str(int(t)) for t in tags) + " " + _hf(stores.stored_tag("float", v, s)))
+    assert ours == answers
