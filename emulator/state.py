@@ -144,8 +144,15 @@ class Scoreboard:
         elif objective in self.objective_ids:
             self.present[hid, self.objective_ids[objective]] = 0
 
+    def tracked_holders(self) -> list[str]:
+        """Holders with a score in any existing objective, in interning order: what ``*`` names
+        (Scoreboard.getTrackedPlayers)."""
+        n, m = len(self.holders), len(self.objectives)
+        rows = (self.present[:n, :m] & self.alive[:m]).any(axis=1)
+        return [self.holders[h] for h in np.flatnonzero(rows)]
+
     def holders_in(self, objective: str) -> list[str]:
-        """Holders with a score in ``objective``, in interning order (what ``*`` iterates)."""
+        """Holders with a score in ``objective``, in interning order."""
         if not self.exists(objective):
             return []
         oid = self.objective_ids[objective]

@@ -1,0 +1,288 @@
+"""AST -> bytecode for the numba VM.
+
+What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
+``$y``, player names), ``execute`` chains made of ``if|unless score`` on named holders,
+``store result|success score`` on named holders and ``if|unless function``, function calls and
+tags, every ``return`` form, and macro calls (instantiated by Python on first use). Every other
+command is a host op: as the last command of a compiled chain the VM charges it and Python runs
+it (``say``, ``schedule``, selectors ...); an ``execute`` chain with any other stage goes to the
+host whole.
+
+Shapes (the cost rule is in :mod:`emulator.backend`; the opcodes in :mod:`emulator.vm`)::
+
+    scoreboard players add #a o 1      ADD h o 1                       (charges 1 itself)
+    function f                         CALL f                          (charges 1 itself)
+    execute if score #a o matches 1.. store result score #b o run function f
+                                       CMD 2 ->end; IFMATCH; CHKOBJ; CALL f; STORE; end: ENDCMD
+    return run CMD                     CMD k ->none; ...CMD...; RETRES; none: RETNONE
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+from emulator import vm
+from emulator.program import HostOp, MacroCall, Program
+from emulator.state import Scoreboard
+from mcfunction_parser.ast import (
+    Command, Execute, Function, FunctionCall, IfFunction, IfScore, IfScoreMatches, NameTarget, Return,
+    ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreScore, Subcommand,
+)
+from emulator.semantics import INT_MAX, INT_MIN
+
+_SET_OPS = {"set": vm.OP_SET, "add": vm.OP_ADD, "remove": vm.OP_REMOVE}
+
+
+class Compiler:
+    """Compiles functions into a :class:`Program`, interning names in ``scoreboard``.
+
+    ``functions``: id -> parsed function; ``resolve_tag``: tag id -> member function ids;
+    ``tags``: the ids of known tags (an unknown tag is a runtime failure, like the game).
+    """
+
+    def __init__(self, program: Program, scoreboard: Scoreboard, functions: dict[str, Function],
+                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict) -> None:
+        self.program = program
+        self.sb = scoreboard
+        self.functions = functions
+        self.resolve_tag = resolve_tag
+        self.tags = tags
+        self.fn_id = ""  # the function being compiled
+        self.fn_index = -1
+        self.loc = None
+
+    # ------------------------------------------------------------------ functions
+    def compile_all(self) -> None:
+        for fid in self.functions:
+            self.program.intern_function(fid)
+        for fid, fn in self.functions.items():
+            if not fn.is_macro:
+                self.compile_function(fid, fn.commands)
+
+    def compile_function(self, fid: str, commands: tuple[Command, ...] | list[Command]) -> int:
+        """Compile a body under id ``fid`` (a macro instance gets its own id); returns its index."""
+        idx = self.program.intern_function(fid)
+        self.fn_id, self.fn_index = fid, idx
+        start = self.program.next_pc
+        for cmd in commands:
+            self.loc = cmd.loc
+            self.command(cmd)
+        self.emit(vm.OP_FEND)
+        self.program.starts[idx] = start
+        self.program._arrays = None
+        return idx
+
+    def emit(self, op: int, *args: int) -> int:
+        return self.program.emit(op, *args, loc=self.loc, owner=self.fn_index)
+
+    # ------------------------------------------------------------------ commands
+    def command(self, cmd: Command) -> None:
+        if isinstance(cmd, Execute):
+            stages, final = flatten_execute(cmd)
+            if all(self._vm_stage(s) for s in stages):
+                self.chain(stages, final, returning=False)
+            else:
+                self.host(cmd, whole=True)
+        elif isinstance(cmd, Return):
+            self.return_(cmd, [], in_chain=False)
+        elif isinstance(cmd, FunctionCall):
+            self.call(cmd, returning=False)
+        else:
+            self.final(cmd)
+
+    def final(self, cmd: Command) -> None:
+        """A command run once per context, charging 1 (rule 3)."""
+        if isinstance(cmd, ScoreSet) and _named(cmd.targets):
+            self.emit(_SET_OPS[cmd.action], self.holder(cmd.targets), self.objective(cmd.objective), cmd.value)
+        elif isinstance(cmd, ScoreReset) and _named(cmd.targets):
+            if cmd.objective is None:
+                self.emit(vm.OP_RESETALL, self.holder(cmd.targets))
+            else:
+                self.emit(vm.OP_RESET, self.holder(cmd.targets), self.objective(cmd.objective))
+        elif isinstance(cmd, ScoreGet) and _named(cmd.target):
+            self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
+        elif isinstance(cmd, ScoreOperation) and _named(cmd.targets) and _named(cmd.sources):
+            self.emit(vm.OP_OPER, vm.OPK_BY_SYMBOL[cmd.op], self.holder(cmd.targets), self.objective(cmd.objective),
+                      self.holder(cmd.sources), self.objective(cmd.source_objective))
+        else:
+            self.host(cmd, whole=False)
+
+    def host(self, cmd: Command, whole: bool) -> None:
+        self.program.host_ops.append(HostOp(cmd, self.fn_id, whole))
+        self.emit(vm.OP_HOST, len(self.program.host_ops) - 1, int(whole))
+
+    # ------------------------------------------------------------------ execute chains
+    def _vm_stage(self, st: Subcommand) -> bool:
+        if isinstance(st, IfScoreMatches):
+            return _named(st.target)
+        if isinstance(st, IfScore):
+            return _named(st.target) and _named(st.source)
+        if isinstance(st, StoreScore):
+            return _named(st.targets)
+        return isinstance(st, IfFunction)
+
+    def chain(self, stages: list[Subcommand], final: Command | None, returning: bool,
+              outer_stores: tuple[StoreScore, ...] = ()) -> None:
+        """``CMD``, the stages, the final command, the stores, then the chain's end: ``ENDCMD``,
+        or for ``return run`` (``returning``) ``RETRES`` with the abort target ``RETNONE``."""
+        groups = _cost_groups(stages, final)
+        cmd_pc = self.emit(vm.OP_CMD, groups[0], 0)
+        stores = list(outer_stores)
+        group = 0
+        aborts = [cmd_pc]
+        for i, st in enumerate(stages):
+            last = final is None and i == len(stages) - 1
+            if isinstance(st, IfScoreMatches):
+                lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
+                hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
+                self.emit(vm.OP_IFMATCH, self.holder(st.target), self.objective(st.objective), lo, hi, 0,
+                          int(st.negated), int(last))
+            elif isinstance(st, IfScore):
+                self.emit(vm.OP_IFSCORE, vm.CMP_BY_SYMBOL[st.op], self.holder(st.target), self.objective(st.objective),
+                          self.holder(st.source), self.objective(st.source_objective), int(st.negated), int(last))
+            elif isinstance(st, StoreScore):
+                self.emit(vm.OP_CHKOBJ, self.objective(st.objective))
+                stores.append(st)
+            else:  # IfFunction: the calls, then a continuation entry charging the next group
+                group += 1
+                self.if_function(st)
+                aborts.append(self.emit(vm.OP_CONT, groups[group]))
+        if isinstance(final, Return):
+            self.return_(final, stores, in_chain=True)
+            stores = []
+        elif isinstance(final, FunctionCall):
+            self.call(final, returning)
+        elif final is not None:
+            self.final(final)
+        for st in stores:
+            self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets), self.objective(st.objective))
+        if returning:
+            self.emit(vm.OP_RETRES)
+            end = self.emit(vm.OP_RETNONE)
+        else:
+            end = self.emit(vm.OP_ENDCMD)
+        self.program.patch(cmd_pc, 2, end)
+
+    def if_function(self, st: IfFunction) -> None:
+        members = self.members(st.function, st.is_tag, abort=True)
+        if members is None:
+            return
+        if not members:  # an empty tag: the rest of the chain never runs
+            self.emit(vm.OP_STOP)
+            return
+        if any(self.functions[m].is_macro for m in members):
+            self.emit(vm.OP_FAIL, vm.ERR_MACRO_ARGS, self.name(st.function), 0, 1)
+            return
+        self.emit(vm.OP_IFFN_BEGIN)
+        steps = []
+        for m in members:
+            self.emit(vm.OP_CALL, self.program.intern_function(m))
+            steps.append(self.emit(vm.OP_IFFN_STEP, 0))
+        end = self.emit(vm.OP_IFFN_END, int(st.negated))
+        for pc in steps:
+            self.program.patch(pc, 1, end)
+
+    # ------------------------------------------------------------------ return
+    def return_(self, cmd: Return, stores: list[StoreScore], in_chain: bool) -> None:
+        if cmd.kind in ("value", "fail"):
+            ok, value = (1, cmd.value) if cmd.kind == "value" else (0, 0)
+            if stores:  # the return's callback feeds the chain's stores first
+                self.emit(vm.OP_RESULT, ok, value)
+                for st in stores:
+                    self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
+                              self.objective(st.objective))
+            if cmd.kind == "value":
+                self.emit(vm.OP_RETV, value)
+            else:
+                self.emit(vm.OP_RETFAIL)
+            return
+        # return run CMD: a continuation entry in return mode; skipped if no context is left
+        gate = self.emit(vm.OP_JMPDEAD, 0) if in_chain else None
+        inner = cmd.command
+        stages, final = flatten_execute(inner) if isinstance(inner, Execute) else ([], inner)
+        if all(self._vm_stage(s) for s in stages):
+            self.chain(stages, final, returning=True, outer_stores=tuple(stores))
+        else:
+            self.host(inner, whole=True)
+            self.emit(vm.OP_RETRES)
+        if gate is not None:
+            self.program.patch(gate, 1, self.program.next_pc)
+
+    # ------------------------------------------------------------------ calls
+    def call(self, cmd: FunctionCall, returning: bool) -> None:
+        members = self.members(cmd.function, cmd.is_tag, abort=False)
+        if members is None:
+            return
+        if not members:
+            self.emit(vm.OP_FAIL, vm.ERR_EMPTY_TAG, self.name("#" + cmd.function), 0, 0)
+            return
+        macro = cmd.arguments is not None or cmd.with_source is not None or any(self.functions[m].is_macro for m in members)
+        if macro:
+            if cmd.is_tag:
+                self.host(cmd, whole=False)
+                return
+            self.program.macro_calls.append(MacroCall(cmd, cmd.function, self.fn_id))
+            self.emit(vm.OP_MACRO, len(self.program.macro_calls) - 1)
+            self.emit(vm.OP_CALLREG)
+            return
+        ids = [self.program.intern_function(m) for m in members]
+        if returning:
+            for i, fn in enumerate(ids):
+                self.emit(vm.OP_CALL, fn)
+                if i < len(ids) - 1:
+                    self.emit(vm.OP_RETIFHAS)
+        elif len(ids) == 1:
+            self.emit(vm.OP_CALL, ids[0])
+        else:
+            self.emit(vm.OP_TAGBEGIN)
+            for fn in ids:
+                self.emit(vm.OP_CALL, fn)
+                self.emit(vm.OP_TAGACC)
+            self.emit(vm.OP_TAGEND)
+
+    def members(self, function: str, is_tag: bool, abort: bool) -> list[str] | None:
+        """The functions a reference runs, or None after emitting the unknown-function failure."""
+        if is_tag:
+            if function in self.tags:
+                return self.resolve_tag(function)
+            self.emit(vm.OP_FAIL, vm.ERR_UNKNOWN_FUNCTION, self.name("#" + function), 0, int(abort))
+            return None
+        if function in self.functions:
+            return [function]
+        self.emit(vm.OP_FAIL, vm.ERR_UNKNOWN_FUNCTION, self.name(function), 0, int(abort))
+        return None
+
+    # ------------------------------------------------------------------ names
+    def holder(self, target: NameTarget) -> int:
+        return self.sb.holder_id(target.name)
+
+    def objective(self, name: str) -> int:
+        return self.sb.objective_id(name)
+
+    def name(self, text: str) -> int:
+        return self.program.intern_name(text)
+
+
+def _named(holder) -> bool:
+    return isinstance(holder, NameTarget)
+
+
+def flatten_execute(cmd: Execute) -> tuple[list[Subcommand], Command | None]:
+    """``execute A run execute B run C`` -> stages A+B, final C (``run`` costs nothing)."""
+    stages: list[Subcommand] = []
+    final: Command | None = cmd
+    while isinstance(final, Execute):
+        stages.extend(final.subcommands)
+        final = final.run
+    return stages, final
+
+
+def _cost_groups(stages: list[Subcommand], final: Command | None) -> list[int]:
+    """Stage charges per entry: the first entry, then one after each ``if function`` (rule 2, 4).
+    A condition that ends the chain is the final command, not a stage."""
+    groups = [0]
+    for i, st in enumerate(stages):
+        if isinstance(st, IfFunction):
+            groups.append(0)
+        elif not (final is None and i == len(stages) - 1):
+            groups[-1] += 1
+    return groups

@@ -1,0 +1,331 @@
+"""Host-side (Python) execution of the commands the VM does not run itself.
+
+The VM stops at an ``OP_HOST``; :meth:`Host.run` executes the command on the world state and
+writes the result back into the VM registers. Two kinds (see :class:`emulator.program.HostOp`):
+
+- a *final* command (``say``, ``schedule``, a score command on ``*`` or a selector ...): the VM has
+  already charged it; the host runs it once for the current context.
+- a *whole* ``execute`` chain with stages the VM does not compile (``as``, ``at``, ``positioned``,
+  ``if entity`` ...): the host charges the stages and per-context runs itself (the rule in
+  :mod:`emulator.backend`). Entities are not modelled yet, so selectors find nothing: ``as @e``
+  leaves no context and ``@s`` run by the server names no holder.
+
+Failures are the game's: the command fails (result 0) and the run goes on. Failures that point at
+a bug or at a limit of the emulator become diagnostics; routine ones (``get`` of an unset score,
+``objectives add`` of an existing one) are silent, as in the game.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable
+
+from emulator.compiler import flatten_execute
+from emulator.semantics import INT_MAX, floor_div, floor_mod, wrap32
+from emulator.state import SERVER, Context, WorldState
+from mcfunction_parser import ast
+
+
+class HostFailure(Exception):
+    """A failing command; ``report``: also record a diagnostic."""
+
+    def __init__(self, message: str, report: bool = False) -> None:
+        super().__init__(message)
+        self.message = message
+        self.report = report
+
+
+class QuotaCut(Exception):
+    """The quota ran out inside a whole command run by the host."""
+
+
+@dataclass
+class HostResult:
+    has: bool  # the command ran (its callbacks fired)
+    ok: bool
+    value: int
+
+
+class Host:
+    """Runs host ops against ``state``; ``quota`` is read and charged through callbacks so the
+    VM's register stays the single count."""
+
+    def __init__(self, state: WorldState, functions: dict, tags, report: Callable[[str, str], None]) -> None:
+        self.state = state
+        self.functions = functions
+        self.tags = tags
+        self.report = report  # (message, severity) -> diagnostic at the current command
+        self._warned: set = set()
+
+    # ------------------------------------------------------------------ entry points
+    def run_final(self, cmd: ast.Command, ctx: Context) -> HostResult:
+        try:
+            return HostResult(True, True, wrap32(self.command(cmd, ctx)))
+        except HostFailure as failure:
+            if failure.report:
+                self.report(failure.message, "error")
+            return HostResult(True, False, 0)
+
+    def run_whole(self, cmd: ast.Execute, ctx: Context, charge: Callable[[int, bool], None]) -> HostResult:
+        """Run an execute chain: ``charge(n, check)`` takes ``n`` from the quota, first raising
+        :class:`QuotaCut` if ``check`` and the quota is exhausted (an entry boundary)."""
+        contexts = [ctx]
+        stages, final = flatten_execute(cmd)
+        charge(0, True)
+        try:
+            for i, st in enumerate(stages):
+                if final is None and i == len(stages) - 1:
+                    break
+                charge(1, False)
+                contexts = [new for c in contexts for new in self.stage(st, c)]
+        except HostFailure as failure:
+            if failure.report:
+                self.report(failure.message, "error")
+            return HostResult(False, False, 0)
+        result = HostResult(False, False, 0)
+        for c in contexts:
+            charge(1, True)
+            if final is None:
+                passed = self.condition(stages[-1], c)
+                result = HostResult(True, passed, int(passed))
+            elif isinstance(final, (ast.FunctionCall, ast.Return)):
+                self.report(f"'{type(final).__name__}' after an execute stage the VM does not compile is not supported yet", "error")
+                result = HostResult(True, False, 0)
+            else:
+                result = self.run_final(final, c)
+        return result
+
+    # ------------------------------------------------------------------ execute stages
+    def stage(self, st: ast.Subcommand, ctx: Context) -> list[Context]:
+        """The contexts one stage makes from one context."""
+        if isinstance(st, ast.Condition):
+            return [ctx] if self.condition(st, ctx) else []
+        if isinstance(st, (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity, ast.ExOn)):
+            return []  # no entities: nothing selected
+        if isinstance(st, ast.ExIn):
+            return [Context(ctx.executor, ctx.pos, ctx.rot, ctx.anchor, st.dimension)]
+        if isinstance(st, ast.ExAnchored):
+            return [Context(ctx.executor, ctx.pos, ctx.rot, st.anchor, ctx.dimension)]
+        if isinstance(st, (ast.StoreScore, ast.StoreData, ast.StoreBossbar)):
+            self.warn(st, "'store' in an execute chain the VM does not compile is ignored")
+            return [ctx]
+        self.warn(st, f"'{type(st).__name__}' is not emulated: the context is kept unchanged")
+        return [ctx]
+
+    def condition(self, st: ast.Subcommand, ctx: Context) -> bool:
+        if isinstance(st, ast.IfScoreMatches):
+            value = self.score_of(st.target, st.objective, ctx)
+            passed = value is not None and st.range.contains(value)
+        elif isinstance(st, ast.IfScore):
+            a = self.score_of(st.target, st.objective, ctx)
+            b = self.score_of(st.source, st.source_objective, ctx)
+            passed = a is not None and b is not None and _COMPARE[st.op](a, b)
+        elif isinstance(st, ast.IfEntity):
+            passed = False
+        else:
+            raise HostFailure(f"'{type(st).__name__}' is not supported yet", report=True)
+        return passed != st.negated
+
+    def score_of(self, holder, objective: str, ctx: Context) -> int | None:
+        self.objective(objective)
+        return self.state.scoreboard.get(self.holders(holder, ctx)[0], objective)
+
+    # ------------------------------------------------------------------ final commands
+    def command(self, cmd: ast.Command, ctx: Context) -> int:
+        handler = _HANDLERS.get(type(cmd))
+        if handler is None:
+            self.warn(cmd, f"'{getattr(cmd, 'name', type(cmd).__name__)}' is not emulated: it succeeds without effect")
+            return 1
+        return handler(self, cmd, ctx)
+
+    def warn(self, node, message: str) -> None:
+        key = (node.loc.path, node.loc.line, node.loc.col)
+        if key not in self._warned:
+            self._warned.add(key)
+            self.report(message, "warning")
+
+    def holders(self, holder, ctx: Context) -> list[str]:
+        """ScoreHolderArgument.getNamesWithDefaultWildcard (no entities yet)."""
+        if isinstance(holder, ast.NameTarget):
+            return [holder.name]
+        if isinstance(holder, ast.Wildcard):
+            names = self.state.scoreboard.tracked_holders()
+            if not names:
+                raise HostFailure("No relevant score holders could be found")
+            return names
+        raise HostFailure("No entity was found")
+
+    def objective(self, name: str, writable: bool = False) -> int:
+        sb = self.state.scoreboard
+        if not sb.exists(name):
+            raise HostFailure(f"Unknown scoreboard objective '{name}'", report=True)
+        if writable and not sb.is_writable(name):
+            raise HostFailure(f"Objective '{name}' is read-only", report=True)
+        return sb.objective_ids[name]
+
+    def function_exists(self, function: str, is_tag: bool) -> None:
+        if function not in (self.tags if is_tag else self.functions):
+            raise HostFailure(f"Unknown function {'#' if is_tag else ''}{function}", report=True)
+
+
+# ---------------------------------------------------------------------- handlers
+def _say(host: Host, cmd: ast.Say, ctx: Context) -> int:
+    sender = "Server" if ctx.executor == SERVER else str(ctx.executor)
+    host.state.emit("say", f"[{sender}] {cmd.message}", cmd.loc)
+    return 1
+
+
+def _tellraw(host: Host, cmd: ast.Tellraw, ctx: Context) -> int:
+    """Logged as written: no players are online to receive it."""
+    host.state.emit("tellraw", cmd.text, cmd.loc)
+    return 1
+
+
+def _gamerule(host: Host, cmd: ast.Gamerule, ctx: Context) -> int:
+    rules = host.state.gamerules
+    if cmd.value is not None:
+        rules.set(cmd.rule, cmd.value)
+        value = cmd.value
+    else:
+        value = rules.get(cmd.rule)
+        if value is None:
+            raise HostFailure(f"Unknown game rule '{cmd.rule}'", report=True)
+    return int(value == "true") if value in ("true", "false") else int(value)
+
+
+def _schedule(host: Host, cmd: ast.Schedule, ctx: Context) -> int:
+    """ScheduleCommand: the result is floorMod(due time, Integer.MAX_VALUE)."""
+    host.function_exists(cmd.function, cmd.is_tag)
+    if cmd.ticks <= 0:
+        raise HostFailure("Can't schedule for current tick", report=True)
+    due = host.state.schedule.schedule(cmd.function, cmd.is_tag, cmd.ticks, cmd.mode, host.state.gametime)
+    return due % INT_MAX
+
+
+def _schedule_clear(host: Host, cmd: ast.ScheduleClear, ctx: Context) -> int:
+    removed = host.state.schedule.clear(cmd.function, cmd.is_tag)
+    if removed == 0:
+        raise HostFailure(f"No schedules with id {'#' if cmd.is_tag else ''}{cmd.function}")
+    return removed
+
+
+def _time(host: Host, cmd: ast.Time, ctx: Context) -> int:
+    if cmd.action == "query" and cmd.query == "gametime":
+        return host.state.gametime % INT_MAX
+    raise HostFailure(f"'time {cmd.action} {cmd.query or cmd.value}' is not supported yet", report=True)
+
+
+def _objectives_add(host: Host, cmd: ast.ObjectivesAdd, ctx: Context) -> int:
+    sb = host.state.scoreboard
+    if not sb.add_objective(cmd.objective, cmd.criterion, cmd.display_name):
+        raise HostFailure("An objective already exists by that name")
+    return int(sb.alive.sum())
+
+
+def _objectives_remove(host: Host, cmd: ast.ObjectivesRemove, ctx: Context) -> int:
+    host.objective(cmd.objective)
+    sb = host.state.scoreboard
+    sb.remove_objective(cmd.objective)
+    return int(sb.alive.sum())
+
+
+def _objectives_other(host: Host, cmd, ctx: Context) -> int:
+    if getattr(cmd, "objective", None) is not None:
+        host.objective(cmd.objective)
+    return 0
+
+
+def _players_set(host: Host, cmd: ast.ScoreSet, ctx: Context) -> int:
+    host.objective(cmd.objective, writable=True)
+    sb = host.state.scoreboard
+    total = 0
+    names = host.holders(cmd.targets, ctx)
+    for name in names:
+        if cmd.action == "set":
+            value = cmd.value
+        else:
+            old = sb.get(name, cmd.objective) or 0
+            value = wrap32(old + cmd.value if cmd.action == "add" else old - cmd.value)
+        sb.set(name, cmd.objective, value)
+        total += value
+    return wrap32(cmd.value * len(names)) if cmd.action == "set" else wrap32(total)
+
+
+def _players_reset(host: Host, cmd: ast.ScoreReset, ctx: Context) -> int:
+    if cmd.objective is not None:
+        host.objective(cmd.objective)
+    names = host.holders(cmd.targets, ctx)
+    for name in names:
+        host.state.scoreboard.reset(name, cmd.objective)
+    return len(names)
+
+
+def _players_get(host: Host, cmd: ast.ScoreGet, ctx: Context) -> int:
+    host.objective(cmd.objective)
+    name = host.holders(cmd.target, ctx)[0]
+    value = host.state.scoreboard.get(name, cmd.objective)
+    if value is None:
+        raise HostFailure(f"Can't get value of {cmd.objective} for {name}; none is set")
+    return value
+
+
+def _players_operation(host: Host, cmd: ast.ScoreOperation, ctx: Context) -> int:
+    host.objective(cmd.objective, writable=True)
+    host.objective(cmd.source_objective)
+    sb = host.state.scoreboard
+    targets = host.holders(cmd.targets, ctx)
+    sources = host.holders(cmd.sources, ctx)
+    total = 0
+    for t in targets:
+        for s in sources:
+            a = _get_or_create(sb, t, cmd.objective)
+            b = _get_or_create(sb, s, cmd.source_objective)
+            if cmd.op == "><":
+                sb.set(s, cmd.source_objective, a)
+                sb.set(t, cmd.objective, b)
+                continue
+            if cmd.op in ("/=", "%=") and b == 0:
+                raise HostFailure("Cannot divide by zero", report=True)
+            sb.set(t, cmd.objective, _OPERATIONS[cmd.op](a, b))
+        total += sb.get(t, cmd.objective)
+    return wrap32(total)
+
+
+def _get_or_create(sb, holder: str, objective: str) -> int:
+    value = sb.get(holder, objective)
+    if value is None:
+        sb.set(holder, objective, 0)
+        return 0
+    return value
+
+
+_OPERATIONS = {
+    "=": lambda a, b: b,
+    "+=": lambda a, b: wrap32(a + b),
+    "-=": lambda a, b: wrap32(a - b),
+    "*=": lambda a, b: wrap32(a * b),
+    "/=": floor_div,
+    "%=": floor_mod,
+    "<": min,
+    ">": max,
+}
+_COMPARE = {
+    "<": lambda a, b: a < b, "<=": lambda a, b: a <= b, "=": lambda a, b: a == b,
+    ">=": lambda a, b: a >= b, ">": lambda a, b: a > b,
+}
+_HANDLERS = {
+    ast.Say: _say,
+    ast.Tellraw: _tellraw,
+    ast.Gamerule: _gamerule,
+    ast.Schedule: _schedule,
+    ast.ScheduleClear: _schedule_clear,
+    ast.Time: _time,
+    ast.ObjectivesAdd: _objectives_add,
+    ast.ObjectivesRemove: _objectives_remove,
+    ast.ObjectivesModify: _objectives_other,
+    ast.ObjectivesSetdisplay: _objectives_other,
+    ast.ObjectivesList: _objectives_other,
+    ast.ScoreSet: _players_set,
+    ast.ScoreReset: _players_reset,
+    ast.ScoreGet: _players_get,
+    ast.ScoreOperation: _players_operation,
+}

@@ -1,0 +1,238 @@
+"""The numba backend: compiles the packs, drives the VM loop and serves its requests.
+
+:meth:`NumbaBackend.run_root` starts the VM at the root stub and resumes it after each request
+(host command, macro instantiation, frame stack growth, runtime error, full overflow buffer).
+Implements :class:`emulator.backend.Backend`.
+"""
+from __future__ import annotations
+
+from collections import Counter
+
+import numpy as np
+
+from emulator import vm
+from emulator.backend import RootResult, report_quota_cut
+from emulator.compiler import Compiler
+from emulator.host import Host, QuotaCut
+from emulator.program import Program
+from emulator.reference.failure import CommandFailure
+from emulator.reference.macros import MacroExpander
+from emulator.semantics import wrap32
+from emulator.state import Context, Frame, Overflow, WorldState
+from emulator.world import nbt_ops
+from mcfunction_parser import ast
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Compound
+
+# The game's ExecutionContext stops a root when its queue would exceed 10,000,000 entries; each
+# frame here holds at least one pending entry, so deeper stacks than this cannot happen.
+MAX_DEPTH = 10_000_000
+
+_ERROR_TEXT = {
+    vm.ERR_DIV_ZERO: "Cannot divide by zero",
+    vm.ERR_UNKNOWN_OBJECTIVE: "Unknown scoreboard objective '{}'",
+    vm.ERR_UNKNOWN_FUNCTION: "Unknown function {}",
+    vm.ERR_EMPTY_TAG: "No functions in tag {}",
+    vm.ERR_MACRO_ARGS: "Function {} needs macro arguments",
+}
+_SANITIZER_OPS = {**{v: k for k, v in vm.OPK_BY_SYMBOL.items()}, vm.SAN_ADD_CMD: "add", vm.SAN_REMOVE_CMD: "remove"}
+
+
+class NumbaBackend:
+    name = "numba"
+
+    def __init__(self) -> None:
+        self.program: Program | None = None
+
+    # ------------------------------------------------------------------ loading
+    def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
+        self.packs = packs
+        self.state = state
+        self.sanitize = sanitize
+        self.program = Program()
+        self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags)
+        self.compiler.compile_all()
+        self.macros = MacroExpander(packs.version)
+        self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
+        self.host = Host(state, packs.functions, packs.tags, self._report_here)
+        self.regs = vm.new_registers()
+        self.frames = vm.new_frames(256)
+        self.ovf = vm.new_overflow_buffer()
+        self.counts = np.zeros(0, dtype=np.int64)
+        self.context = Context()
+
+    # ------------------------------------------------------------------ running
+    def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
+        state = self.state
+        self.context = context or Context()
+        function = self.packs.functions.get(function_id)
+        if function is None:
+            state.error(f"Unknown function {function_id}")
+            return RootResult(0, None)
+        try:
+            fn = self._instance(function, arguments)
+        except CommandFailure as failure:
+            state.error(failure.message, (Frame(function_id, Loc(function.path, 1, 1)),))
+            return RootResult(0, None)
+        limit = state.gamerules.max_command_chain_length
+        r = self.regs
+        r[:] = 0
+        r[vm.R_PC] = Program.ROOT_PC
+        r[vm.R_QUOTA] = limit
+        r[vm.R_ALIVE] = 1
+        r[vm.R_CALLFN] = fn
+        r[vm.R_SANITIZE] = int(self.sanitize)
+        cut = self._drive(limit)
+        self._flush_overflows()
+        result = None
+        if not cut and r[vm.R_HAS]:
+            result = int(r[vm.R_VAL]) if r[vm.R_OK] else 0
+        return RootResult(int(limit - r[vm.R_QUOTA]), result, cut)
+
+    def _drive(self, limit: int) -> bool:
+        """Run the VM until the root is done; True when the quota (or the depth cap) cut it."""
+        sb = self.state.scoreboard
+        r = self.regs
+        while True:
+            code, starts = self.program.arrays()
+            if self.counts.shape[0] < code.shape[0]:
+                self.counts = np.concatenate([self.counts, np.zeros(code.shape[0] - self.counts.shape[0], np.int64)])
+            status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts, self.ovf)
+            if status == vm.ST_DONE:
+                return False
+            if status == vm.ST_CUT:
+                report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
+                return True
+            if status == vm.ST_HOST:
+                if not self._host(int(r[vm.R_PC])):
+                    report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
+                    return True
+            elif status == vm.ST_MACRO:
+                self._macro(int(r[vm.R_PC]))
+            elif status == vm.ST_ERROR:
+                self._runtime_error()
+            elif status == vm.ST_FLUSH:
+                self._flush_overflows()
+            elif status == vm.ST_GROW:
+                if not self._grow():
+                    return True
+
+    # ------------------------------------------------------------------ requests
+    def _host(self, pc: int) -> bool:
+        """Run host op at ``pc``; False when the quota ran out inside it."""
+        op = self.program.host_ops[self.program.rows[pc][1]]
+        r = self.regs
+        self._current_pc = pc
+        if op.whole:
+            try:
+                result = self.host.run_whole(op.command, self.context, self._charge)
+            except QuotaCut:
+                return False
+            r[vm.R_ALIVE] = 1
+        else:
+            result = self.host.run_final(op.command, self.context)
+        r[vm.R_HAS] = int(result.has)
+        r[vm.R_OK] = int(result.ok)
+        r[vm.R_VAL] = wrap32(result.value)
+        r[vm.R_PC] = pc + 1
+        return True
+
+    def _charge(self, n: int, check: bool) -> None:
+        r = self.regs
+        if check and r[vm.R_QUOTA] <= 0:
+            raise QuotaCut()
+        r[vm.R_QUOTA] -= n
+        self.counts[self._current_pc] += n
+
+    def _macro(self, pc: int) -> None:
+        call = self.program.macro_calls[self.program.rows[pc][1]]
+        r = self.regs
+        r[vm.R_PC] = pc + 1
+        function = self.packs.functions[call.function]
+        try:
+            fn = self._instance(function, self._arguments(call.command))
+        except CommandFailure as failure:
+            self.state.error(failure.message, self.traceback(pc))
+            fn = -1
+            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = 1, 0, 0
+        r[vm.R_CALLFN] = fn
+
+    def _instance(self, function: ast.Function, arguments) -> int:
+        """The function index to call: the function itself, or its compiled macro instance."""
+        if not function.is_macro:
+            return self.program.function_index[function.id]
+        commands = self.macros.instantiate(function, arguments)
+        # the expander caches one tuple per argument set and keeps it alive, so its id is a key
+        key = (function.id, id(commands))
+        fn = self.instances.get(key)
+        if fn is None:
+            instance_id = f"{function.id}#{len(self.instances)}"
+            fn = self.compiler.compile_function(instance_id, commands)
+            self.instances[key] = fn
+        return fn
+
+    def _arguments(self, cmd: ast.FunctionCall):
+        if cmd.with_source is None:
+            return cmd.arguments
+        if not isinstance(cmd.with_source, ast.StorageData):
+            raise CommandFailure("'function ... with entity|block' is not supported yet", report=True)
+        root = self.state.storage.get(cmd.with_source.id, Compound())
+        if cmd.with_path is None:
+            return root
+        found = nbt_ops.get(root, cmd.with_path)
+        if len(found) != 1 or not isinstance(found[0], dict):
+            raise CommandFailure(f"Expected a single compound at {cmd.with_path.text}", report=True)
+        return found[0]
+
+    def _runtime_error(self) -> None:
+        r = self.regs
+        code, arg, pc = int(r[vm.R_ERR]), int(r[vm.R_ERRARG]), int(r[vm.R_ERRPC])
+        if code == vm.ERR_UNKNOWN_OBJECTIVE:
+            operand = self.state.scoreboard.objectives[arg]
+        elif code in (vm.ERR_UNKNOWN_FUNCTION, vm.ERR_EMPTY_TAG, vm.ERR_MACRO_ARGS):
+            operand = self.program.names[arg]
+        else:
+            operand = ""
+        self.state.error(_ERROR_TEXT[code].format(operand), self.traceback(pc))
+
+    def _grow(self) -> bool:
+        depth = self.frames.shape[0]
+        if depth >= MAX_DEPTH:
+            self.state.error(f"Command execution stopped due to command queue overflow (max {MAX_DEPTH})",
+                             self.traceback(int(self.regs[vm.R_PC])))
+            return False
+        frames = vm.new_frames(min(MAX_DEPTH, depth * 4))
+        frames[:depth] = self.frames
+        self.frames = frames
+        return True
+
+    def _flush_overflows(self) -> None:
+        n = int(self.regs[vm.R_NOVF])
+        for pc, kind, a, b, exact in self.ovf[:n].tolist():
+            self.state.overflows.append(Overflow(
+                self.state.tick, self.program.function_of(pc), self.program.locs[pc], _SANITIZER_OPS[kind],
+                a, b, exact, wrap32(exact)))
+        self.regs[vm.R_NOVF] = 0
+
+    # ------------------------------------------------------------------ reporting
+    def traceback(self, pc: int) -> tuple[Frame, ...]:
+        """Frames from the root to ``pc``: each function with the command it is running."""
+        depth = int(self.regs[vm.R_DEPTH])
+        frames = []
+        for i in range(depth):
+            fn = int(self.frames[i, vm.F_FN])
+            here = int(self.frames[i + 1, vm.F_CALLPC]) if i + 1 < depth else pc
+            loc = self.program.locs[here] if 0 <= here < len(self.program.locs) else None
+            frames.append(Frame(self.program.functions[fn], loc))
+        return tuple(f for f in frames if f.loc is not None)
+
+    def _report_here(self, message: str, severity: str) -> None:
+        self.state.error(message, self.traceback(self._current_pc), severity)
+
+    def line_counts(self) -> dict[tuple[str, int], int]:
+        out: Counter = Counter()
+        for pc in np.flatnonzero(self.counts):
+            loc = self.program.locs[pc]
+            if loc is not None:
+                out[(loc.path, loc.line)] += int(self.counts[pc])
+        return dict(out)

@@ -1,0 +1,509 @@
+"""The numba VM: opcodes and the single @njit dispatch loop, alone in this module.
+
+The opcodes live here because numba's on-disk cache does not notice a changed constant imported
+from another module. The compiler (:mod:`emulator.compiler`) imports them from here.
+
+Code layout: ``code`` is ``int32[n, WIDTH]``, one instruction per row: ``[op, a, b, c, d, e, f, g]``.
+A command line compiles to a short sequence (see the compiler); the cost rule implemented here is
+the one documented in :mod:`emulator.backend`.
+
+Machine state lives in arrays owned by Python so the loop can return (for a host command, a macro
+instantiation, a full frame stack, a runtime error, a full overflow buffer) and resume:
+``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
+scoreboard ``values``/``present``/``alive``, the per-instruction ``counts`` and the sanitizer's
+``ovf`` buffer. Registers that matter across a call (``alive``, the tag accumulator, the command's
+abort target) are saved in the frame and restored on return.
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+WIDTH = 8
+
+# ---------------------------------------------------------------- opcodes
+OP_HALT = 0  # root finished: return ST_DONE
+OP_CMD = 1  # a: stage cost, b: abort pc. Entry check, charge stages, alive = 1, has = 0
+OP_ENDCMD = 2  # alive = 1 (after a chain with conditions)
+OP_CONT = 3  # a: stage cost. A continuation entry (after `if function`): check, charge
+OP_SET = 10  # a: holder, b: objective, c: value
+OP_ADD = 11  # a h, b o, c value
+OP_REMOVE = 12  # a h, b o, c value
+OP_RESET = 13  # a h, b o
+OP_RESETALL = 14  # a h
+OP_GET = 15  # a h, b o
+OP_OPER = 16  # a: operation (OPK_*), b h1, c o1, d h2, e o2
+OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
+OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
+OP_CHKOBJ = 22  # a o: a stage naming objective o fails the command if o does not exist
+OP_STORE = 23  # a: 0 result / 1 success, b h, c o
+OP_CALL = 30  # a: function id
+OP_CALLREG = 31  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
+OP_FEND = 32  # end of a function body: return without a result
+OP_RETV = 33  # a: value. `return N`
+OP_RETFAIL = 34  # `return fail`
+OP_RETRES = 35  # end of `return run CMD`: return CMD's result (fail if it had none)
+OP_RETNONE = 36  # abort target of `return run`: end the function without a result
+OP_RETIFHAS = 37  # `return run function #tag`: the first member that returned ends the caller
+OP_TAGBEGIN = 40  # acc_any = 0, acc_sum = 0
+OP_TAGACC = 41  # add the last call's result to the accumulator
+OP_TAGEND = 42  # the tag's result: the sum, if any member returned
+OP_IFFN_BEGIN = 43  # has = 0
+OP_IFFN_STEP = 44  # a: pc after the calls. A returned member ends the isolated call
+OP_IFFN_END = 45  # a: negated. alive &= returned and (value != 0) != negated
+OP_FAIL = 46  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
+OP_RESULT = 47  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
+OP_JMPDEAD = 48  # a: target. `run return run ...` with no context left: skip it
+OP_STOP = 49  # abort the chain without an error (`if function` on an empty tag)
+OP_HOST = 50  # a: host command index, b: 1 = whole command (host charges), 0 = final op
+OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
+
+OP_NAMES = {v: k[3:] for k, v in dict(globals()).items() if k.startswith("OP_") and isinstance(v, int)}
+
+# operations of OP_OPER
+OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
+OPK_BY_SYMBOL = {"=": 0, "+=": 1, "-=": 2, "*=": 3, "/=": 4, "%=": 5, "<": 6, ">": 7, "><": 8}
+# comparisons of OP_IFSCORE
+CMP_LT, CMP_LE, CMP_EQ, CMP_GE, CMP_GT = range(5)
+CMP_BY_SYMBOL = {"<": 0, "<=": 1, "=": 2, ">=": 3, ">": 4}
+# sanitizer op kinds (for the report): OPK_* for operations, then these
+SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
+
+# ---------------------------------------------------------------- registers, frames, status
+R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
+R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_ARG, R_CTX = range(7, 16)
+R_SANITIZE, R_ERRPC = 16, 17
+N_REGS = 18
+
+F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC = range(8)
+F_WIDTH = 8
+
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO = range(7)
+
+ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS = range(1, 6)
+
+INT_MIN = -2147483648
+INT_MAX = 2147483647
+OVF_WIDTH = 5  # pc, op kind, a, b, exact
+
+
+@njit(cache=True, inline="always")
+def _wrap(x):
+    return ((x + 2147483648) & 0xFFFFFFFF) - 2147483648
+
+
+@njit(cache=True, inline="always")
+def _overflowed(x):
+    return x < -2147483648 or x > 2147483647
+
+
+@njit(cache=True)
+def run(code, func_start, regs, frames, values, present, alive_obj, counts, ovf):
+    """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
+
+    On return ``regs[R_PC]`` is where to resume (for ST_HOST/ST_MACRO: the instruction after the
+    one that asked, once Python has set ``R_HAS/R_OK/R_VAL`` or ``R_CALLFN``).
+    """
+    pc = regs[R_PC]
+    quota = regs[R_QUOTA]
+    depth = regs[R_DEPTH]
+    alive = regs[R_ALIVE]
+    has = regs[R_HAS]
+    ok = regs[R_OK]
+    val = regs[R_VAL]
+    acc_any = regs[R_ACC_ANY]
+    acc_sum = regs[R_ACC_SUM]
+    abort = regs[R_ABORT]
+    sanitize = regs[R_SANITIZE] != 0
+    novf = regs[R_NOVF]
+    status = ST_DONE
+    err = 0
+    errarg = 0
+    ipc = pc
+    while True:
+        ipc = pc
+        op = code[pc, 0]
+        if op == OP_CMD:
+            if quota <= 0:
+                status = ST_CUT
+                break
+            cost = code[pc, 1]
+            quota -= cost
+            counts[pc] += cost
+            alive = 1
+            has = 0
+            abort = code[pc, 2]
+            pc += 1
+        elif op == OP_SET or op == OP_ADD or op == OP_REMOVE or op == OP_GET or op == OP_OPER or op == OP_RESET or op == OP_RESETALL:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            counts[pc] += 1
+            has = 1
+            ok = 1
+            if op == OP_RESETALL:
+                h = code[pc, 1]
+                present[h, :] = 0
+                val = 1
+                pc += 1
+                continue
+            h = code[pc, 1]
+            o = code[pc, 2]
+            if op == OP_OPER:
+                h = code[pc, 2]
+                o = code[pc, 3]
+            if alive_obj[o] == 0:
+                ok = 0
+                val = 0
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                pc += 1
+                status = ST_ERROR
+                break
+            if op == OP_SET:
+                v = code[pc, 3]
+                values[h, o] = v
+                present[h, o] = 1
+                val = v
+            elif op == OP_ADD or op == OP_REMOVE:
+                old = np.int64(values[h, o]) if present[h, o] else np.int64(0)
+                d = np.int64(code[pc, 3])
+                exact = old + d if op == OP_ADD else old - d
+                if sanitize and _overflowed(exact):
+                    ovf[novf, 0] = pc
+                    ovf[novf, 1] = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
+                    ovf[novf, 2] = old
+                    ovf[novf, 3] = d
+                    ovf[novf, 4] = exact
+                    novf += 1
+                nv = _wrap(exact)
+                values[h, o] = nv
+                present[h, o] = 1
+                val = nv
+            elif op == OP_RESET:
+                present[h, o] = 0
+                val = 1
+            elif op == OP_GET:
+                if present[h, o]:
+                    val = values[h, o]
+                else:
+                    ok = 0
+                    val = 0
+            else:  # OP_OPER
+                k = code[pc, 1]
+                h2 = code[pc, 4]
+                o2 = code[pc, 5]
+                if alive_obj[o2] == 0:
+                    ok = 0
+                    val = 0
+                    err = ERR_UNKNOWN_OBJECTIVE
+                    errarg = o2
+                    pc += 1
+                    status = ST_ERROR
+                    break
+                # get-or-create: target first, then source (ScoreboardCommand.performOperation)
+                if present[h, o] == 0:
+                    values[h, o] = 0
+                    present[h, o] = 1
+                if present[h2, o2] == 0:
+                    values[h2, o2] = 0
+                    present[h2, o2] = 1
+                a = np.int64(values[h, o])
+                b = np.int64(values[h2, o2])
+                if k == OPK_ASSIGN:
+                    r = b
+                elif k == OPK_ADD:
+                    r = a + b
+                elif k == OPK_SUB:
+                    r = a - b
+                elif k == OPK_MUL:
+                    r = a * b
+                elif k == OPK_DIV or k == OPK_MOD:
+                    if b == 0:
+                        ok = 0
+                        val = 0
+                        err = ERR_DIV_ZERO
+                        errarg = 0
+                        pc += 1
+                        status = ST_ERROR
+                        break
+                    r = a // b if k == OPK_DIV else a % b
+                elif k == OPK_MIN:
+                    r = a if a < b else b
+                elif k == OPK_MAX:
+                    r = a if a > b else b
+                else:  # swap
+                    values[h2, o2] = a
+                    r = b
+                if sanitize and _overflowed(r):
+                    ovf[novf, 0] = pc
+                    ovf[novf, 1] = k
+                    ovf[novf, 2] = a
+                    ovf[novf, 3] = b
+                    ovf[novf, 4] = r
+                    novf += 1
+                nv = _wrap(r)
+                values[h, o] = nv
+                val = nv
+            pc += 1
+            if novf >= ovf.shape[0]:
+                status = ST_FLUSH
+                break
+        elif op == OP_IFSCORE or op == OP_IFMATCH:
+            if alive == 0:
+                pc += 1
+                continue
+            final = code[pc, 7]
+            if final:
+                if quota <= 0:
+                    status = ST_CUT
+                    break
+                quota -= 1
+                counts[pc] += 1
+            h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
+            o = code[pc, 2] if op == OP_IFMATCH else code[pc, 3]
+            bad = alive_obj[o] == 0
+            if op == OP_IFSCORE and alive_obj[code[pc, 5]] == 0:
+                bad = True
+                o = code[pc, 5]
+            if bad:
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                has = 1
+                ok = 0
+                val = 0
+                pc = abort if not final else pc + 1
+                alive = 0 if not final else alive
+                status = ST_ERROR
+                break
+            passed = False
+            if present[h, o]:
+                a = values[h, o]
+                if op == OP_IFMATCH:
+                    passed = code[pc, 3] <= a <= code[pc, 4]
+                else:
+                    h2 = code[pc, 4]
+                    o2 = code[pc, 5]
+                    if present[h2, o2]:
+                        b = values[h2, o2]
+                        c = code[pc, 1]
+                        if c == CMP_LT:
+                            passed = a < b
+                        elif c == CMP_LE:
+                            passed = a <= b
+                        elif c == CMP_EQ:
+                            passed = a == b
+                        elif c == CMP_GE:
+                            passed = a >= b
+                        else:
+                            passed = a > b
+            if code[pc, 6]:
+                passed = not passed
+            if final:
+                has = 1
+                ok = 1 if passed else 0
+                val = 1 if passed else 0
+            elif not passed:
+                alive = 0
+            pc += 1
+        elif op == OP_STORE:
+            if alive and has:
+                h = code[pc, 2]
+                o = code[pc, 3]
+                v = (val if ok else 0) if code[pc, 1] == 0 else ok
+                values[h, o] = v
+                present[h, o] = 1
+            pc += 1
+        elif op == OP_CHKOBJ:
+            if alive_obj[code[pc, 1]] == 0:
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = code[pc, 1]
+                alive = 0
+                pc = abort
+                status = ST_ERROR
+                break
+            pc += 1
+        elif op == OP_ENDCMD:
+            alive = 1
+            pc += 1
+        elif op == OP_CALL or op == OP_CALLREG:
+            fn = code[pc, 1] if op == OP_CALL else regs[R_CALLFN]
+            if alive == 0 or fn < 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            if depth >= frames.shape[0]:
+                status = ST_GROW
+                break
+            quota -= 1
+            counts[pc] += 1
+            frames[depth, F_RETPC] = pc + 1
+            frames[depth, F_FN] = fn
+            frames[depth, F_ALIVE] = alive
+            frames[depth, F_ACC_ANY] = acc_any
+            frames[depth, F_ACC_SUM] = acc_sum
+            frames[depth, F_ABORT] = abort
+            frames[depth, F_CALLPC] = pc
+            depth += 1
+            has = 0
+            pc = func_start[fn]
+        elif op >= OP_FEND and op <= OP_RETIFHAS:
+            if op == OP_FEND or op == OP_RETNONE:
+                has = 0
+            elif op == OP_RETV:
+                if alive == 0:
+                    pc += 1
+                    continue
+                has = 1
+                ok = 1
+                val = code[pc, 1]
+            elif op == OP_RETFAIL:
+                if alive == 0:
+                    pc += 1
+                    continue
+                has = 1
+                ok = 0
+                val = 0
+            elif op == OP_RETRES:
+                if not (alive and has and ok):
+                    ok = 0
+                    val = 0
+                has = 1
+            else:  # OP_RETIFHAS
+                if not has:
+                    pc += 1
+                    continue
+            depth -= 1
+            pc = frames[depth, F_RETPC]
+            alive = frames[depth, F_ALIVE]
+            acc_any = frames[depth, F_ACC_ANY]
+            acc_sum = frames[depth, F_ACC_SUM]
+            abort = frames[depth, F_ABORT]
+        elif op == OP_TAGBEGIN:
+            acc_any = 0
+            acc_sum = 0
+            pc += 1
+        elif op == OP_TAGACC:
+            if alive and has:
+                acc_any = 1
+                acc_sum = _wrap(acc_sum + (val if ok else 0))
+            pc += 1
+        elif op == OP_TAGEND:
+            if alive:
+                has = acc_any
+                ok = 1
+                val = acc_sum
+            pc += 1
+        elif op == OP_IFFN_BEGIN:
+            has = 0
+            pc += 1
+        elif op == OP_IFFN_STEP:
+            pc = code[pc, 1] if has else pc + 1
+        elif op == OP_IFFN_END:
+            if alive:
+                passed = has and ((val if ok else 0) != 0)
+                if code[pc, 1]:
+                    passed = has and ((val if ok else 0) == 0)
+                alive = 1 if passed else 0
+            has = 0
+            pc += 1
+        elif op == OP_CONT:
+            if quota <= 0:
+                status = ST_CUT
+                break
+            cost = code[pc, 1]
+            quota -= cost
+            counts[pc] += cost
+            pc += 1
+        elif op == OP_FAIL:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            if code[pc, 3]:
+                quota -= 1
+                counts[pc] += 1
+            has = 1
+            ok = 0
+            val = 0
+            err = code[pc, 1]
+            errarg = code[pc, 2]
+            if code[pc, 4]:
+                alive = 0
+                pc = abort
+            else:
+                pc += 1
+            status = ST_ERROR
+            break
+        elif op == OP_RESULT:
+            if alive:
+                has = 1
+                ok = code[pc, 1]
+                val = code[pc, 2]
+            pc += 1
+        elif op == OP_JMPDEAD:
+            pc = pc + 1 if alive else code[pc, 1]
+        elif op == OP_STOP:
+            if alive:
+                alive = 0
+                pc = abort
+            else:
+                pc += 1
+        elif op == OP_HOST:
+            if alive == 0:
+                pc += 1
+                continue
+            if code[pc, 2] == 0:
+                if quota <= 0:
+                    status = ST_CUT
+                    break
+                quota -= 1
+                counts[pc] += 1
+            status = ST_HOST
+            break
+        elif op == OP_MACRO:
+            if alive == 0:
+                regs[R_CALLFN] = -1
+                pc += 1
+                continue
+            status = ST_MACRO
+            break
+        else:  # OP_HALT
+            status = ST_DONE
+            break
+    regs[R_PC] = pc
+    regs[R_QUOTA] = quota
+    regs[R_DEPTH] = depth
+    regs[R_ALIVE] = alive
+    regs[R_HAS] = has
+    regs[R_OK] = ok
+    regs[R_VAL] = val
+    regs[R_ACC_ANY] = acc_any
+    regs[R_ACC_SUM] = acc_sum
+    regs[R_ABORT] = abort
+    regs[R_NOVF] = novf
+    if status == ST_ERROR:
+        regs[R_ERR] = err
+        regs[R_ERRARG] = errarg
+        regs[R_ERRPC] = ipc
+    return status
+
+
+def new_registers() -> np.ndarray:
+    return np.zeros(N_REGS, dtype=np.int64)
+
+
+def new_frames(depth: int) -> np.ndarray:
+    return np.zeros((depth, F_WIDTH), dtype=np.int64)
+
+
+def new_overflow_buffer(size: int = 1024) -> np.ndarray:
+    return np.zeros((size, OVF_WIDTH), dtype=np.int64)
