@@ -117,12 +117,17 @@ def schedule_each(queue: ExecutionQueue, frame: CallFrame, items: list, make: Ca
             queue.queue_next(frame, make(item))
         return
     index = 0
+    upcoming = make(items[0])
 
     def step(q: ExecutionQueue, f: CallFrame) -> None:
-        nonlocal index
-        q.queue_next(f, make(items[index]))
+        nonlocal index, upcoming
+        q.queue_next(f, upcoming)
         index += 1
         if index < len(items):
+            upcoming = make(items[index])
+            step.entry = getattr(upcoming, "entry", None)
             q.queue_next(f, step)
 
+    # where this entry would go next, for the quota-cut diagnostic
+    step.entry = getattr(upcoming, "entry", None)
     queue.queue_next(frame, step)
