@@ -159,12 +159,12 @@ class Outcome:
 
 
 def make_backend(name: str):
-    """The backend class by name: ``python`` (reference) or ``numba`` (the VM's, via emulator.api)."""
+    """A fresh backend by name: ``python`` (the reference) or ``numba`` (the VM)."""
     if name == "python":
         from emulator.reference import ReferenceBackend
 
         return ReferenceBackend()
-    from emulator.api import NumbaBackend
+    from emulator.numba_backend import NumbaBackend
 
     return NumbaBackend()
 

@@ -17,18 +17,7 @@ from programs import run_root, write_pack
 SETUP = "scoreboard objectives add o dummy\n"
 
 
-def _numba_available() -> bool:
-    try:
-        from emulator.api import NumbaBackend  # noqa: F401
-    except ImportError:
-        return False
-    return True
-
-
-BACKENDS = [
-    "python",
-    pytest.param("numba", marks=pytest.mark.skipif(not _numba_available(), reason="emulator.api.NumbaBackend not available yet")),
-]
+BACKENDS = ["python", "numba"]
 
 # (id, body, expected scores {(holder, objective): value | None}, expected result or ...)
 CASES = [
@@ -140,8 +129,22 @@ HELPERS = {
 }
 
 
-@pytest.mark.parametrize("backend", BACKENDS)
-@pytest.mark.parametrize("case_id, body, expected, result", CASES, ids=[c[0] for c in CASES])
+# Known disagreement: the VM makes `unless function` fail when the function never returns (its
+# brief says "fails for both"); the decompiled sources cited above make it pass. Strict, so the
+# mark must go when the VM changes.
+KNOWN_VM_DIFFERENCES = {"if_function_no_return"}
+
+
+def _params():
+    for case in CASES:
+        for backend in BACKENDS:
+            marks = ()
+            if backend == "numba" and case[0] in KNOWN_VM_DIFFERENCES:
+                marks = pytest.mark.xfail(strict=True, reason="VM: unless function fails without a return")
+            yield pytest.param(backend, *case, marks=marks, id=f"{case[0]}-{backend}")
+
+
+@pytest.mark.parametrize("backend, case_id, body, expected, result", list(_params()))
 def test_edge_case(tmp_path, backend, case_id, body, expected, result):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
     outcome = run_root(backend, pack, "t:main")
