@@ -165,11 +165,8 @@ def objective(r: Reader) -> str:
 
 def score_holder(r: Reader, allow_wildcard: bool = True):
     """A selector, ``*``, or any non-space word (player names, ``#fake``, ``$y``, UUIDs)."""
-    c = r.peek()
-    if c == "@":
-        from .selectors import selector
-
-        return selector(r)
+    if r.text.startswith("@", r.pos):
+        return selectors.selector(r)
     loc = r.loc()
     start = r.pos
     word = WORD.match(r.text, start).group()
@@ -258,3 +255,6 @@ def json_span(r: Reader, what: str = "JSON text") -> str:
         r.fail(f"expected {what}, got {show(r.rest_word())}")
     r.pos = m.end()
     return m.group()
+
+
+from . import selectors  # noqa: E402  (selectors imports this module's helpers)

@@ -6,7 +6,7 @@ from .commands import command
 from .diagnostics import ERROR, WARNING, Diagnostic, Loc
 from .features import feature_problem
 from .lines import LineError, LogicalLine, logical_lines, macro_keys
-from .reader import ParseError, Reader
+from .reader import JoinedReader, ParseError, Reader
 
 DEFAULT_VERSION = (1, 21, 0)
 
@@ -40,7 +40,8 @@ def parse_function(source: str, path: str, function_id: str,
         if first == "/":
             _leading_slash(item, path, physical, diagnostics)
             continue
-        reader = Reader(text, Loc(path, item.line, item.col), version, item.segments)
+        loc = Loc(path, item.line, item.col)
+        reader = JoinedReader(text, loc, version, item.segments) if item.segments else Reader(text, loc, version)
         cmd = _parse(reader, diagnostics, physical)
         if cmd is not None:
             commands.append(cmd)
@@ -80,7 +81,7 @@ def _parse(reader: Reader, diagnostics: list[Diagnostic], physical: list[str] | 
 
 def _report(reader: Reader, severity: str, message: str, pos: int, diagnostics: list[Diagnostic],
             physical: list[str] | None, source_line: str | None) -> None:
-    loc = reader.loc(min(pos, reader.end))
+    loc = reader.loc_at(min(pos, reader.end))
     if physical is not None:
         source_line = physical[loc.line - 1]
     diagnostics.append(Diagnostic.at(severity, message, loc, source_line))
@@ -91,7 +92,7 @@ def _macro_line(item: LogicalLine, path: str, physical: list[str], diagnostics: 
     keys, error, offset = macro_keys(template)
     loc = Loc(path, item.line, item.col)
     if error:
-        reader = Reader(item.text, loc, (0, 0, 0), item.segments)
+        reader = JoinedReader(item.text, loc, (0, 0, 0), item.segments) if item.segments else Reader(item.text, loc, (0, 0, 0))
         _report(reader, ERROR, error, offset + 1, diagnostics, physical, None)
         return None
     return MacroLine(loc, template, keys)

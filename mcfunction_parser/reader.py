@@ -44,41 +44,28 @@ def show(text: str) -> str:
 
 
 class Reader:
-    """The command text, the cursor, and how offsets map back to file positions.
+    """The command text, the cursor, and how offsets map back to file positions."""
 
-    ``segments`` is empty for a one-line command; for a command joined from continuation lines
-    it lists ``(offset, line, col)`` where each physical line's piece starts.
-    """
+    __slots__ = ("text", "pos", "end", "path", "line", "col", "version", "warnings")
 
-    __slots__ = ("text", "pos", "end", "path", "line", "col", "segments", "version", "warnings")
-
-    def __init__(self, text: str, loc: Loc, version: tuple[int, int, int], segments: tuple = ()):
+    def __init__(self, text: str, loc: Loc, version: tuple[int, int, int]):
         self.text = text
         self.pos = 0
         self.end = len(text)
         self.path = loc.path
         self.line = loc.line
         self.col = loc.col
-        self.segments = segments
         self.version = version
         self.warnings: list[tuple[str, int]] = []  # (message, offset): problems that keep the command
 
     # ------------------------------------------------------------------ positions
 
-    def loc(self, pos: int | None = None) -> Loc:
-        if pos is None:
-            pos = self.pos
-        if self.segments:
-            return self._segment_loc(pos)
-        return Loc(self.path, self.line, self.col + pos)
+    def loc(self) -> Loc:
+        """The file position of the cursor."""
+        return Loc(self.path, self.line, self.col + self.pos)
 
-    def _segment_loc(self, pos: int) -> Loc:
-        start, line, col = self.segments[0]
-        for seg in self.segments:
-            if seg[0] > pos:
-                break
-            start, line, col = seg
-        return Loc(self.path, line, col + pos - start)
+    def loc_at(self, pos: int) -> Loc:
+        return Loc(self.path, self.line, self.col + pos)
 
     def fail(self, message: str, pos: int | None = None):
         raise ParseError(message, self.pos if pos is None else pos)
@@ -247,3 +234,25 @@ class Reader:
         if word == "false":
             return False
         self.fail(f"expected true or false, got {show(word)}", start)
+
+
+class JoinedReader(Reader):
+    """A command joined from continuation lines: ``segments`` lists ``(offset, line, col)`` where
+    each physical line's piece starts, so positions map back to the right line."""
+
+    __slots__ = ("segments",)
+
+    def __init__(self, text: str, loc: Loc, version: tuple[int, int, int], segments: tuple):
+        super().__init__(text, loc, version)
+        self.segments = segments
+
+    def loc(self) -> Loc:
+        return self.loc_at(self.pos)
+
+    def loc_at(self, pos: int) -> Loc:
+        start, line, col = self.segments[0]
+        for seg in self.segments:
+            if seg[0] > pos:
+                break
+            start, line, col = seg
+        return Loc(self.path, line, col + pos - start)

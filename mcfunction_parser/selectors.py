@@ -42,7 +42,6 @@ def selector(r: Reader) -> Selector:
 def _options(r: Reader, variable: str) -> tuple[SelectorArg, ...]:
     r.pos += 1  # '['
     args: list[SelectorArg] = []
-    seen: dict[str, list[bool]] = {}
     r.skip_ws()
     while r.more() and r.peek() != "]":
         key_pos = r.pos
@@ -58,8 +57,7 @@ def _options(r: Reader, variable: str) -> tuple[SelectorArg, ...]:
             negated = True
             r.pos += 1
             r.skip_ws()
-        _check_applicable(r, variable, key, negated, seen.get(key), key_pos)
-        seen.setdefault(key, []).append(negated)
+        _check_applicable(r, variable, key, negated, args, key_pos)
         args.append(SelectorArg(key, _PARSERS[key](r), negated, key_loc))
         r.skip_ws()
         if r.peek() == ",":
@@ -74,20 +72,30 @@ def _options(r: Reader, variable: str) -> tuple[SelectorArg, ...]:
     return tuple(args)
 
 
-def _check_applicable(r: Reader, variable: str, key: str, negated: bool, before: list[bool] | None, pos: int):
+def _check_applicable(r: Reader, variable: str, key: str, negated: bool, args: list[SelectorArg], pos: int):
+    """EntitySelectorOptions' ``canUse`` predicates and the checks inside name/gamemode/type."""
     not_here = f"option '{key}' isn't applicable here"
-    if key in ("limit", "sort") and variable == "s":
-        r.fail(f"{not_here}: @s selects only the executor", pos)
-    if key == "type" and variable in "apr":
-        r.fail(f"{not_here}: @{variable} selects only players", pos)
-    if before is None:
-        return
     if key in _REPEATABLE:
         return
-    if key in _EXCLUSIVE_EQUALS or key == "type":
-        if negated and not any(not n for n in before):
-            return
-        r.fail(f"{not_here}: '{key}' is already given", pos)
+    if key in ("limit", "sort") and variable == "s":
+        r.fail(f"{not_here}: @s selects only the executor", pos)
+    before = [a for a in args if a.key == key]
+    if key == "type":
+        if variable in "apr":
+            r.fail(f"{not_here}: @{variable} selects only players", pos)
+        if any(not a.negated and not a.value.startswith("#") for a in before):
+            r.fail(f"{not_here}: the entity type is already given", pos)
+        if not negated and any(a.negated for a in before):
+            r.fail(f"{not_here}: 'type=' can't follow 'type=!'", pos)
+        return
+    if not before:
+        return
+    if key in _EXCLUSIVE_EQUALS:
+        if any(not a.negated for a in before):
+            r.fail(f"{not_here}: '{key}=' is already given", pos)
+        if not negated and key != "team":
+            r.fail(f"{not_here}: '{key}=' can't follow '{key}=!'", pos)
+        return
     r.fail(f"{not_here}: '{key}' may be given only once", pos)
 
 

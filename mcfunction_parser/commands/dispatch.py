@@ -24,7 +24,7 @@ def command(r: Reader) -> Command:
         if not name:
             r.fail(f"expected a command, got {show(r.rest_word())}")
         r.fail(command_problem(name, r.version), start)
-    loc = r.loc(start)
+    loc = r.loc_at(start)
     r.pos = start + len(name)
     warning = permission_warning(name)
     if warning:
