@@ -58,7 +58,9 @@ class NumbaBackend:
         self.regs = vm.new_registers()
         self.frames = vm.new_frames(256)
         self.ovf = vm.new_overflow_buffer()
-        self.counts = np.zeros(0, dtype=np.int64)
+        self.counts = np.zeros(0, dtype=np.int64)  # cost charged per instruction
+        self.totals = np.zeros(0, dtype=np.int64)  # inclusive cost per function
+        self.active = np.zeros(0, dtype=np.int64)
         self.context = Context()
 
     # ------------------------------------------------------------------ running
@@ -95,16 +97,18 @@ class NumbaBackend:
         r = self.regs
         while True:
             code, starts = self.program.arrays()
-            if self.counts.shape[0] < code.shape[0]:
-                self.counts = np.concatenate([self.counts, np.zeros(code.shape[0] - self.counts.shape[0], np.int64)])
-            status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts, self.ovf)
+            self._fit_counters(code.shape[0], starts.shape[0])
+            status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts,
+                            self.totals, self.active, self.ovf)
             if status == vm.ST_DONE:
                 return False
             if status == vm.ST_CUT:
+                self._close_frames()
                 report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
                 return True
             if status == vm.ST_HOST:
                 if not self._host(int(r[vm.R_PC])):
+                    self._close_frames()
                     report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
                     return True
             elif status == vm.ST_MACRO:
@@ -115,7 +119,26 @@ class NumbaBackend:
                 self._flush_overflows()
             elif status == vm.ST_GROW:
                 if not self._grow():
+                    self._close_frames()
                     return True
+
+    def _fit_counters(self, n_code: int, n_functions: int) -> None:
+        """Grow the per-instruction and per-function counters with the program (macro instances)."""
+        if self.counts.shape[0] < n_code:
+            self.counts = _extend(self.counts, n_code)
+        if self.totals.shape[0] < n_functions:
+            self.totals = _extend(self.totals, n_functions)
+            self.active = _extend(self.active, n_functions)
+
+    def _close_frames(self) -> None:
+        """A cut root never returns: credit its open frames' inclusive cost, as a return would."""
+        r = self.regs
+        quota = int(r[vm.R_QUOTA])
+        for i in range(int(r[vm.R_DEPTH]) - 1, -1, -1):
+            fn = int(self.frames[i, vm.F_FN])
+            self.active[fn] -= 1
+            if self.active[fn] == 0:
+                self.totals[fn] += int(self.frames[i, vm.F_QUOTA]) - quota
 
     # ------------------------------------------------------------------ requests
     def _host(self, pc: int) -> bool:
@@ -229,6 +252,10 @@ class NumbaBackend:
     def _report_here(self, message: str, severity: str) -> None:
         self.state.error(message, self.traceback(self._current_pc), severity)
 
+    def function_totals(self) -> dict[str, int]:
+        """Inclusive cost per function (callees included, outermost activations only)."""
+        return {self.program.functions[i]: int(c) for i, c in enumerate(self.totals) if c}
+
     def line_counts(self) -> dict[tuple[str, int], int]:
         out: Counter = Counter()
         for pc in np.flatnonzero(self.counts):
@@ -236,3 +263,7 @@ class NumbaBackend:
             if loc is not None:
                 out[(loc.path, loc.line)] += int(self.counts[pc])
         return dict(out)
+
+
+def _extend(array: np.ndarray, size: int) -> np.ndarray:
+    return np.concatenate([array, np.zeros(size - array.shape[0], dtype=array.dtype)])

@@ -50,7 +50,7 @@ OP_TAGACC = 41  # add the last call's result to the accumulator
 OP_TAGEND = 42  # the tag's result: the sum, if any member returned
 OP_IFFN_BEGIN = 43  # has = 0
 OP_IFFN_STEP = 44  # a: pc after the calls. A returned member ends the isolated call
-OP_IFFN_END = 45  # a: negated. alive &= returned and (value != 0) != negated
+OP_IFFN_END = 45  # a: negated. alive &= (value != 0) != negated; no return counts as value 0
 OP_FAIL = 46  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
 OP_RESULT = 47  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
 OP_JMPDEAD = 48  # a: target. `run return run ...` with no context left: skip it
@@ -75,8 +75,8 @@ R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_ARG, R_CTX =
 R_SANITIZE, R_ERRPC = 16, 17
 N_REGS = 18
 
-F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC = range(8)
-F_WIDTH = 8
+F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA = range(9)
+F_WIDTH = 9
 
 ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO = range(7)
 
@@ -98,9 +98,11 @@ def _overflowed(x):
 
 
 @njit(cache=True)
-def run(code, func_start, regs, frames, values, present, alive_obj, counts, ovf):
+def run(code, func_start, regs, frames, values, present, alive_obj, counts, totals, active, ovf):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
+    ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
+    outermost activation only (``active[f]`` counts f's frames on the stack).
     On return ``regs[R_PC]`` is where to resume (for ST_HOST/ST_MACRO: the instruction after the
     one that asked, once Python has set ``R_HAS/R_OK/R_VAL`` or ``R_CALLFN``).
     """
@@ -350,6 +352,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, ovf)
             frames[depth, F_ACC_SUM] = acc_sum
             frames[depth, F_ABORT] = abort
             frames[depth, F_CALLPC] = pc
+            frames[depth, F_QUOTA] = quota
+            active[fn] += 1
             depth += 1
             has = 0
             pc = func_start[fn]
@@ -380,6 +384,10 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, ovf)
                     pc += 1
                     continue
             depth -= 1
+            fn = frames[depth, F_FN]
+            active[fn] -= 1
+            if active[fn] == 0:
+                totals[fn] += frames[depth, F_QUOTA] - quota
             pc = frames[depth, F_RETPC]
             alive = frames[depth, F_ALIVE]
             acc_any = frames[depth, F_ACC_ANY]
@@ -407,9 +415,9 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, ovf)
             pc = code[pc, 1] if has else pc + 1
         elif op == OP_IFFN_END:
             if alive:
-                passed = has and ((val if ok else 0) != 0)
-                if code[pc, 1]:
-                    passed = has and ((val if ok else 0) == 0)
+                # no member returned: the isolated call's FallthroughTask reports (false, 0)
+                v = val if (has and ok) else 0
+                passed = (v == 0) if code[pc, 1] else (v != 0)
                 alive = 1 if passed else 0
             has = 0
             pc += 1

@@ -129,10 +129,9 @@ HELPERS = {
 }
 
 
-# Known disagreement: the VM makes `unless function` fail when the function never returns (its
-# brief says "fails for both"); the decompiled sources cited above make it pass. Strict, so the
-# mark must go when the VM changes.
-KNOWN_VM_DIFFERENCES = {"if_function_no_return"}
+# Known disagreements between the VM and the reference (none now: the VM follows the
+# FallthroughTask of the isolated call). Strict, so a mark must go when the VM changes.
+KNOWN_VM_DIFFERENCES: set[str] = set()
 
 
 def _params():

@@ -1,0 +1,152 @@
+"""The Python API: ``Emulator`` loads packs, calls functions, runs ticks and reports.
+
+    emu = Emulator()                    # or Emulator(backend="python"), Emulator(sanitize=True)
+    emu.load("path/to/pack")
+    emu.set_score("#n", "input", 10)
+    emu.call("pool:setup")
+    emu.tick(20)
+    emu.score("#ball", "x")             # None when unset
+"""
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from pathlib import Path
+
+from emulator.backend import Backend, RootResult
+from emulator.profile_data import Profile, fold
+from emulator.runtime import Runtime
+from emulator.semantics import INT_MAX, INT_MIN
+from emulator.state import Context, WorldState
+from mcfunction_parser.diagnostics import Diagnostic
+
+
+def make_backend(name: str) -> Backend:
+    if name == "numba":
+        from emulator.numba_backend import NumbaBackend
+
+        return NumbaBackend()
+    if name == "python":
+        from emulator.reference import ReferenceBackend
+
+        return ReferenceBackend()
+    raise ValueError(f"unknown backend {name!r}: expected 'numba' or 'python'")
+
+
+class Emulator:
+    def __init__(self, backend: str = "numba", sanitize: bool = False) -> None:
+        self.backend_name = backend
+        self.sanitize = sanitize
+        self.backend = make_backend(backend)
+        self.state = WorldState()
+        self.packs = None
+        self.runtime: Runtime | None = None
+
+    # ------------------------------------------------------------------ loading
+    def load(self, paths: str | Path | Sequence[str | Path], mc_version: str | None = None):
+        """Load one pack or several (later ones override); returns the loaded packs. Pack problems
+        are in :attr:`load_diagnostics`; the world starts empty."""
+        from mcfunction_parser.pack import load_packs
+
+        if isinstance(paths, (str, Path)):
+            paths = [paths]
+        self.packs = load_packs([Path(p) for p in paths], mc_version)
+        self.state = WorldState()
+        self.backend.load(self.packs, self.state, self.sanitize)
+        self.runtime = Runtime(self.backend, self.packs, self.state)
+        return self.packs
+
+    @property
+    def load_diagnostics(self) -> list[Diagnostic]:
+        return list(self.packs.diagnostics) if self.packs else []
+
+    def _runtime(self) -> Runtime:
+        if self.runtime is None:
+            raise RuntimeError("no pack loaded: call Emulator.load(path) first")
+        return self.runtime
+
+    # ------------------------------------------------------------------ running
+    def call(self, function: str, as_=None, at: tuple[float, float, float] | None = None, arguments=None) -> int | None:
+        """Run ``function`` (``ns:path``, ``path`` for ``minecraft:``, or ``#tag``: each member)
+        as one root sequence, as the server (entities are not modelled yet, so ``as_`` must be
+        None) at ``at`` (default: world spawn). Returns the function's return value (None when it
+        did not return; for a tag, the last member's)."""
+        if as_ is not None:
+            raise ValueError("call(as_=...): entities are not modelled yet; functions run as the server")
+        runtime = self._runtime()
+        context = Context(pos=tuple(float(c) for c in at)) if at is not None else None
+        name = _normalise(function)
+        if name.startswith("#"):
+            results = [runtime.call(f, context, arguments) for f in runtime.members(name[1:])]
+            return results[-1].result if results else None
+        return runtime.call(name, context, arguments).result
+
+    def tick(self, n: int = 1) -> int:
+        """Run ``n`` ticks; returns the commands executed."""
+        runtime = self._runtime()
+        return sum(runtime.tick() for _ in range(n))
+
+    def run_until(self, predicate: Callable[["Emulator"], bool], max_ticks: int) -> int:
+        """Tick until ``predicate(self)`` holds (checked after each tick) or ``max_ticks`` ran;
+        returns the ticks run."""
+        runtime = self._runtime()
+        for n in range(1, max_ticks + 1):
+            runtime.tick()
+            if predicate(self):
+                return n
+        return max_ticks
+
+    # ------------------------------------------------------------------ scores
+    def score(self, holder: str, objective: str) -> int | None:
+        return self.state.scoreboard.get(holder, objective)
+
+    def set_score(self, holder: str, objective: str, value: int) -> None:
+        """Set a score (creating the objective as ``dummy`` if needed); value must be an int32."""
+        if not INT_MIN <= value <= INT_MAX:
+            raise ValueError(f"score {value} is outside the 32-bit range")
+        self.state.scoreboard.set(holder, objective, int(value))
+
+    def scores(self) -> dict[str, dict[str, int]]:
+        return self.state.scoreboard.scores()
+
+    # ------------------------------------------------------------------ reports
+    @property
+    def log(self):
+        return self.state.log
+
+    @property
+    def diagnostics(self):
+        """Runtime diagnostics (each with a function traceback)."""
+        return self.state.diagnostics
+
+    @property
+    def overflows(self):
+        return self.state.overflows
+
+    @property
+    def ticks(self) -> int:
+        return self.state.tick
+
+    @property
+    def commands_per_tick(self) -> list[int]:
+        return list(self.runtime.commands_per_tick) if self.runtime else []
+
+    @property
+    def max_root_cost(self) -> int:
+        return self.runtime.max_root_cost if self.runtime else 0
+
+    @property
+    def profile(self) -> Profile:
+        paths = {f.path: fid for fid, f in self.packs.functions.items()} if self.packs else {}
+        totals = self.backend.function_totals() if hasattr(self.backend, "function_totals") else None
+        return fold(self.backend.line_counts() if self.packs else {}, paths, totals, self.commands_per_tick)
+
+
+def _normalise(function: str) -> str:
+    tag = function.startswith("#")
+    name = function[1:] if tag else function
+    if ":" not in name:
+        name = "minecraft:" + name
+    return ("#" if tag else "") + name
+
+
+__all__ = ["Emulator", "RootResult"]
