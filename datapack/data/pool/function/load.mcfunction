@@ -1,0 +1,82 @@
+# pool:load — create every objective and constant. Runs from #minecraft:load.
+# Reads: nothing. Writes: all objectives below, constants on pool.const.
+#
+# Fixed-point units (20 ticks per second):
+#   length          micrometres (um); table frame: origin at a corner of the playing
+#                   area, x along the long side (0..2540000), z along the short side (0..1270000)
+#   velocity        um/tick (10 m/s = 500000)
+#   spin            w = R (omega x up): velocity of the ball surface at the cloth in um/tick,
+#                   so the slip is u = v - w and the ball rolls when w = v;
+#                   side spin wy = R omega_y in um/tick (positive = counter-clockwise from above)
+#   unit vectors    x 10000
+#   rolling speed   0.01 um/tick; rolling distance 0.01 um
+#   time in a tick  1/10000 tick
+#   angles          1/100 degree (centidegrees)
+
+# Per-ball state (on @e[tag=pool.ball])
+scoreboard objectives add pool.id dummy
+scoreboard objectives add pool.state dummy
+scoreboard objectives add pool.x dummy
+scoreboard objectives add pool.z dummy
+scoreboard objectives add pool.vx dummy
+scoreboard objectives add pool.vz dummy
+scoreboard objectives add pool.wx dummy
+scoreboard objectives add pool.wz dummy
+scoreboard objectives add pool.wy dummy
+# sliding phase: acceleration (um/tick^2), remaining slide time (1/10000 tick), rolling velocity at its end
+scoreboard objectives add pool.ax dummy
+scoreboard objectives add pool.az dummy
+scoreboard objectives add pool.tau dummy
+scoreboard objectives add pool.rx dummy
+scoreboard objectives add pool.rz dummy
+# rolling phase: start position (um), direction (x 10000), speed (0.01 um/tick), distance (0.01 um)
+scoreboard objectives add pool.x0 dummy
+scoreboard objectives add pool.z0 dummy
+scoreboard objectives add pool.dx dummy
+scoreboard objectives add pool.dz dummy
+scoreboard objectives add pool.spd dummy
+scoreboard objectives add pool.s dummy
+# end-of-tick position of the current sweep (um)
+scoreboard objectives add pool.ex dummy
+scoreboard objectives add pool.ez dummy
+
+# Temporaries, math library I/O, constants, game state
+scoreboard objectives add pool.tmp dummy
+scoreboard objectives add pool.math dummy
+scoreboard objectives add pool.const dummy
+scoreboard objectives add pool.game dummy
+scoreboard objectives add pool.power trigger
+
+# Constants named by value
+scoreboard players set #-1 pool.const -1
+scoreboard players set #2 pool.const 2
+scoreboard players set #5 pool.const 5
+scoreboard players set #7 pool.const 7
+scoreboard players set #10 pool.const 10
+scoreboard players set #100 pool.const 100
+scoreboard players set #1000 pool.const 1000
+scoreboard players set #10000 pool.const 10000
+scoreboard players set #20000 pool.const 20000
+scoreboard players set #32767 pool.const 32767
+scoreboard players set #32768 pool.const 32768
+scoreboard players set #1000000 pool.const 1000000
+
+# Physical constants (see emulator/physics/constants.py for the same values in SI)
+# ball radius R = 28.575 mm; 2R = 57150 um
+scoreboard players set $R pool.const 28575
+scoreboard players set $2R pool.const 57150
+# playing area 2.54 m x 1.27 m
+scoreboard players set $L pool.const 2540000
+scoreboard players set $W pool.const 1270000
+# sliding friction mu_s g = 0.2 * 9.81 m/s^2 = 4905 um/tick^2
+scoreboard players set $mu_s_g pool.const 4905
+# rolling resistance mu_r g = 0.01 * 9.81 m/s^2 = 24525 (0.01 um/tick^2)
+scoreboard players set $mu_r_g pool.const 24525
+# side-spin decay (5/2) mu_sp g = 2.5 * 0.0127 * 9.81 m/s^2 = 779 um/tick^2
+scoreboard players set $spin_decay pool.const 779
+# cushion restitution e = 0.85 and friction mu_c = 0.2, both x 10000
+scoreboard players set $e_cushion pool.const 8500
+scoreboard players set $mu_cushion pool.const 2000
+
+# Game state: $resting pool.game is 1 when no ball moves
+execute unless score $resting pool.game matches 0..1 run scoreboard players set $resting pool.game 1

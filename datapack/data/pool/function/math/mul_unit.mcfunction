@@ -1,0 +1,23 @@
+# pool:math/mul_unit — $out = round($a * $b / 10000) without overflow, rounding half away from 0.
+# Reads: $a $b pool.math with |$b| <= 214748 and |$a * $b| < 2.1e13 (e.g. um times a unit vector
+# component x 10000). Writes: $out pool.math; temporaries #a #b #q #r #neg pool.math.
+# Works on magnitudes so that mirrored inputs give exactly mirrored outputs.
+# a*b/c = (a div c)*b + ((a mod c)*b)/c keeps every intermediate inside int32.
+scoreboard players operation #a pool.math = $a pool.math
+scoreboard players operation #b pool.math = $b pool.math
+scoreboard players set #neg pool.math 0
+execute if score #a pool.math matches ..-1 run scoreboard players add #neg pool.math 1
+execute if score #a pool.math matches ..-1 run scoreboard players operation #a pool.math *= #-1 pool.const
+execute if score #b pool.math matches ..-1 run scoreboard players add #neg pool.math 1
+execute if score #b pool.math matches ..-1 run scoreboard players operation #b pool.math *= #-1 pool.const
+scoreboard players operation #q pool.math = #a pool.math
+scoreboard players operation #q pool.math /= #10000 pool.const
+scoreboard players operation #q pool.math *= #b pool.math
+scoreboard players operation #r pool.math = #a pool.math
+scoreboard players operation #r pool.math %= #10000 pool.const
+scoreboard players operation #r pool.math *= #b pool.math
+scoreboard players add #r pool.math 5000
+scoreboard players operation #r pool.math /= #10000 pool.const
+scoreboard players operation #q pool.math += #r pool.math
+execute if score #neg pool.math matches 1 run scoreboard players operation #q pool.math *= #-1 pool.const
+scoreboard players operation $out pool.math = #q pool.math
