@@ -1,0 +1,342 @@
+"""Entities: types and hitboxes, the entity store, UUIDs, the entity NBT view and loading NBT back.
+
+Public API
+- ``EntityType(id, width, height, eye_height)`` and ``entity_type(id)``: sizes from the game's
+  ``EntityType`` table for the types datapacks commonly use (unknown ids get the game's builder
+  default 0.6 x 1.8, eyes at 0.85 x height). ``ENTITY_TYPE_TAGS``: a few vanilla entity type tags.
+- ``Entity``: ``uuid`` (4 signed ints), ``type``, ``pos`` (3 doubles), ``yaw``/``pitch`` (float32),
+  ``motion``, ``tags`` (set), ``custom_name`` (text as stored), ``data`` (every other NBT field),
+  ``order`` (creation index), ``alive``; players also have ``player_name``, ``gamemode``, ``level``.
+  Properties: ``uuid_string`` (Java ``UUID.toString``), ``score_holder`` (player name or UUID
+  string, what the scoreboard uses), ``is_player``, ``eye_height``, ``bounding_box`` (min/max
+  corners), ``display_name`` (what ``name=`` compares), ``anchor(anchor)`` (feet or eyes position).
+- ``EntityStore(seed)``: entities in creation order; ``summon(type, pos, nbt=None, yaw=0, pitch=0)``,
+  ``add_player(name, pos, ...)``, ``kill(entity)``, ``by_uuid(uuid)``, ``by_holder(name)``,
+  ``living()``, ``players()``, ``rng`` (a seeded ``random.Random`` for UUIDs and ``sort=random``).
+- ``entity_nbt(entity)``: the compound ``data get entity`` shows and ``nbt=`` matches against.
+- ``load_nbt(entity, compound)``: ``Entity.load`` (Pos clamped, Motion over 10 dropped, Rotation % 360,
+  Tags, CustomName, the rest kept as is). ``modify_entity(entity, change)``: the ``data`` entity
+  accessor: ``change`` edits a fresh NBT view, which is loaded back with the UUID kept; players fail
+  "Unable to modify player data".
+
+Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/entity/EntityType.java (sizes),
+world/entity/Entity.java (saveWithoutId/load, getEyeHeight, makeBoundingBox, addTag limit 1024),
+world/entity/decoration/ArmorStand.java (marker/small sizes), util/Mth.java (createInsecureUUID),
+server/commands/data/EntityDataAccessor.java.
+"""
+from __future__ import annotations
+
+import json
+import random
+from dataclasses import dataclass, field
+from typing import Callable
+
+import numpy as np
+
+from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
+from emulator.world import rotation
+from emulator.world.errors import CommandFailure
+from emulator.world.nbt_ops import copy_tag
+
+F32 = np.float32
+MAX_TAGS = 1024
+POS_LIMIT_XZ = 3.0000512e7
+POS_LIMIT_Y = 2.0e7
+MAX_LOADED_MOTION = 10.0
+
+
+@dataclass(frozen=True)
+class EntityType:
+    id: str
+    width: np.float32
+    height: np.float32
+    eye_height: np.float32
+
+
+def _type(name: str, width: float, height: float, eye: float | None = None) -> EntityType:
+    w, h = F32(width), F32(height)
+    # EntityDimensions.scalable: eye height defaults to height * 0.85F (float math).
+    return EntityType("minecraft:" + name, w, h, F32(eye) if eye is not None else h * F32(0.85))
+
+
+ENTITY_TYPES = {
+    t.id: t
+    for t in (
+        _type("player", 0.6, 1.8, 1.62),
+        _type("marker", 0.0, 0.0),
+        _type("armor_stand", 0.5, 1.975, 1.7775),
+        _type("item_display", 0.0, 0.0),
+        _type("block_display", 0.0, 0.0),
+        _type("text_display", 0.0, 0.0),
+        _type("interaction", 0.0, 0.0),
+        _type("area_effect_cloud", 6.0, 0.5),
+        _type("item", 0.25, 0.25, 0.2125),
+        _type("item_frame", 0.5, 0.5, 0.0),
+        _type("falling_block", 0.98, 0.98),
+        _type("tnt", 0.98, 0.98, 0.15),
+        _type("arrow", 0.5, 0.5, 0.13),
+        _type("snowball", 0.25, 0.25),
+        _type("slime", 0.52, 0.52, 0.325),
+        _type("pig", 0.9, 0.9),
+        _type("cow", 0.9, 1.4, 1.3),
+        _type("chicken", 0.4, 0.7, 0.644),
+        _type("sheep", 0.9, 1.3, 1.235),
+        _type("villager", 0.6, 1.95, 1.62),
+        _type("zombie", 0.6, 1.95, 1.74),
+        _type("husk", 0.6, 1.95, 1.74),
+        _type("drowned", 0.6, 1.95, 1.74),
+        _type("skeleton", 0.6, 1.99, 1.74),
+        _type("stray", 0.6, 1.99, 1.74),
+        _type("wither_skeleton", 0.7, 2.4, 2.1),
+        _type("bogged", 0.6, 1.99, 1.74),
+        _type("creeper", 0.6, 1.7),
+        _type("spider", 1.4, 0.9, 0.65),
+        _type("enderman", 0.6, 2.9, 2.55),
+        _type("bat", 0.5, 0.9, 0.45),
+        _type("boat", 1.375, 0.5625, 0.5625),
+        _type("minecart", 0.98, 0.7),
+    )
+}
+
+# A few vanilla entity type tags (data/minecraft/tags/entity_type in 1.21).
+ENTITY_TYPE_TAGS = {
+    "minecraft:skeletons": {"minecraft:skeleton", "minecraft:stray", "minecraft:wither_skeleton",
+                            "minecraft:skeleton_horse", "minecraft:bogged"},
+    "minecraft:zombies": {"minecraft:zombie_horse", "minecraft:zombie", "minecraft:zombie_villager",
+                          "minecraft:zombified_piglin", "minecraft:zoglin", "minecraft:drowned",
+                          "minecraft:husk"},
+    "minecraft:arrows": {"minecraft:arrow", "minecraft:spectral_arrow"},
+    "minecraft:raiders": {"minecraft:evoker", "minecraft:pillager", "minecraft:ravager",
+                          "minecraft:vindicator", "minecraft:illusioner", "minecraft:witch"},
+    "minecraft:impact_projectiles": {"minecraft:arrow", "minecraft:spectral_arrow", "minecraft:firework_rocket",
+                                     "minecraft:snowball", "minecraft:fireball", "minecraft:small_fireball",
+                                     "minecraft:egg", "minecraft:trident", "minecraft:dragon_fireball",
+                                     "minecraft:wither_skull", "minecraft:wind_charge",
+                                     "minecraft:breeze_wind_charge"},
+}
+
+
+def entity_type(type_id: str) -> EntityType:
+    """The type's size; an id outside the table gets the game builder's default size."""
+    return ENTITY_TYPES.get(type_id) or _type(type_id.split(":", 1)[-1], 0.6, 1.8)
+
+
+def uuid_string(uuid: tuple[int, int, int, int]) -> str:
+    """Java's ``UUID.toString()`` of the int[4] form (most significant int first)."""
+    value = 0
+    for part in uuid:
+        value = (value << 32) | (part & 0xFFFFFFFF)
+    text = f"{value:032x}"
+    return f"{text[:8]}-{text[8:12]}-{text[12:16]}-{text[16:20]}-{text[20:]}"
+
+
+def _signed32(x: int) -> int:
+    return ((x + 2**31) & 0xFFFFFFFF) - 2**31
+
+
+def insecure_uuid(rng: random.Random) -> tuple[int, int, int, int]:
+    """``Mth.createInsecureUUID``: two random longs with the version-4 and variant-2 bits set."""
+    most = (rng.getrandbits(64) & ~0xF000) | 0x4000
+    least = (rng.getrandbits(64) & 0x3FFFFFFFFFFFFFFF) | 0x8000000000000000
+    return tuple(_signed32(x) for x in (most >> 32, most, least >> 32, least))
+
+
+def _plain_text(name: str) -> str:
+    """The plain string of a text component as stored (JSON string or ``{"text": ...}``)."""
+    try:
+        value = json.loads(name)
+    except ValueError:
+        return name
+    if isinstance(value, str):
+        return value
+    if isinstance(value, dict):
+        return str(value.get("text", "")) + "".join(_plain_text(json.dumps(e)) for e in value.get("extra", []))
+    if isinstance(value, list):
+        return "".join(_plain_text(json.dumps(e)) for e in value)
+    return name
+
+
+@dataclass(eq=False)
+class Entity:
+    uuid: tuple[int, int, int, int]
+    type: str
+    pos: tuple[float, float, float]
+    yaw: np.float32 = F32(0.0)
+    pitch: np.float32 = F32(0.0)
+    motion: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    tags: set[str] = field(default_factory=set)
+    custom_name: str | None = None
+    data: Compound = field(default_factory=Compound)
+    order: int = 0
+    alive: bool = True
+    player_name: str | None = None
+    gamemode: str = "survival"
+    level: int = 0
+    team: str | None = None
+
+    @property
+    def is_player(self) -> bool:
+        return self.type == "minecraft:player"
+
+    @property
+    def uuid_string(self) -> str:
+        return uuid_string(self.uuid)
+
+    @property
+    def score_holder(self) -> str:
+        """``getScoreboardName``: a player's name, any other entity's UUID string."""
+        return self.player_name if self.is_player else self.uuid_string
+
+    @property
+    def display_name(self) -> str:
+        """``getName().getString()``: the custom name's text, a player's name, else the type's name."""
+        if self.is_player:
+            return self.player_name or ""
+        if self.custom_name is not None:
+            return _plain_text(self.custom_name)
+        return self.type.split(":", 1)[-1].replace("_", " ").title()
+
+    def _scale(self) -> np.float32:
+        # ArmorStand.getDimensions: a marker armor stand has no size, a small one is half size.
+        if self.type == "minecraft:armor_stand":
+            if self.data.get("Marker"):
+                return F32(0.0)
+            if self.data.get("Small"):
+                return F32(0.5)
+        return F32(1.0)
+
+    @property
+    def eye_height(self) -> np.float32:
+        return entity_type(self.type).eye_height * self._scale()
+
+    @property
+    def bounding_box(self) -> tuple[float, float, float, float, float, float]:
+        """``EntityDimensions.makeBoundingBox``: half the width around x/z, the height up from y."""
+        kind, scale = entity_type(self.type), self._scale()
+        half = float(kind.width * scale / F32(2.0))
+        height = float(kind.height * scale)
+        x, y, z = self.pos
+        return (x - half, y, z - half, x + half, y + height, z + half)
+
+    def anchor(self, anchor: str) -> tuple[float, float, float]:
+        """``EntityAnchorArgument.Anchor.apply(entity)``: feet, or eyes (y + eye height)."""
+        x, y, z = self.pos
+        return (x, y + float(self.eye_height), z) if anchor == "eyes" else self.pos
+
+
+def entity_nbt(entity: Entity) -> Compound:
+    """The entity's NBT as ``saveWithoutId`` writes it (modelled fields plus the kept ones)."""
+    nbt = Compound()
+    nbt["Pos"] = List(Double(v) for v in entity.pos)
+    nbt["Motion"] = List(Double(v) for v in entity.motion)
+    nbt["Rotation"] = List([Float(float(entity.yaw)), Float(float(entity.pitch))])
+    nbt.update(copy_tag(entity.data))
+    nbt["UUID"] = IntArray(Int(v) for v in entity.uuid)
+    if entity.custom_name is not None:
+        nbt["CustomName"] = String(entity.custom_name)
+    if entity.tags:
+        nbt["Tags"] = List(String(t) for t in sorted(entity.tags))
+    return nbt
+
+
+_MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id")
+
+
+def _typed_list(nbt: Compound, key: str, element: type) -> list:
+    """``CompoundTag.getList(key, type)``: the list if its elements have that type, else empty."""
+    value = nbt.get(key)
+    if isinstance(value, List) and all(type(v) is element for v in value):
+        return list(value)
+    return []
+
+
+def _component(values: list, i: int) -> float:
+    return float(values[i]) if i < len(values) else 0.0
+
+
+def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
+    """``Entity.load``: read a full compound back into the entity."""
+    pos = _typed_list(nbt, "Pos", Double)
+    x, y, z = (_component(pos, i) for i in range(3))
+    clamp = lambda v, lim: max(-lim, min(v, lim))  # noqa: E731 - Mth.clamp(double)
+    entity.pos = (clamp(x, POS_LIMIT_XZ), clamp(y, POS_LIMIT_Y), clamp(z, POS_LIMIT_XZ))
+    motion = _typed_list(nbt, "Motion", Double)
+    entity.motion = tuple(0.0 if abs(v) > MAX_LOADED_MOTION else v for v in (_component(motion, i) for i in range(3)))
+    rot = _typed_list(nbt, "Rotation", Float)
+    entity.yaw, entity.pitch = rotation.load_rotation(
+        (entity.yaw, entity.pitch), (F32(_component(rot, 0)), F32(_component(rot, 1))))
+    uuid = nbt.get("UUID")
+    if not keep_uuid and isinstance(uuid, IntArray) and len(uuid) == 4:
+        entity.uuid = tuple(int(v) for v in uuid)
+    name = nbt.get("CustomName")
+    entity.custom_name = str(name) if isinstance(name, String) else None
+    entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
+    entity.data = Compound((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED)
+
+
+def modify_entity(entity: Entity, change: Callable[[Compound], object]):
+    """Run a ``data`` change on the entity's NBT view and load the result back (UUID kept).
+
+    ``change`` may raise ``CommandFailure``; then the entity is untouched. Returns its result.
+    """
+    nbt = entity_nbt(entity)
+    result = change(nbt)
+    if entity.is_player:
+        raise CommandFailure("commands.data.entity.invalid")
+    load_nbt(entity, nbt, keep_uuid=True)
+    return result
+
+
+def _base_data() -> Compound:
+    """The fields every entity saves besides the modelled ones, at their spawn values."""
+    return Compound(FallDistance=Float(0.0), Fire=Short(-1), Air=Short(300), OnGround=Byte(0),
+                    Invulnerable=Byte(0), PortalCooldown=Int(0))
+
+
+class EntityStore:
+    """Every entity of the world in creation order (the order unsorted ``@e`` visits)."""
+
+    def __init__(self, seed: int = 0) -> None:
+        self.rng = random.Random(seed)
+        self.entities: list[Entity] = []
+        self._next_order = 0
+
+    def _add(self, entity: Entity) -> Entity:
+        entity.order = self._next_order
+        self._next_order += 1
+        self.entities.append(entity)
+        return entity
+
+    def summon(self, type_id: str, pos, nbt: Compound | None = None, yaw=0.0, pitch=0.0) -> Entity:
+        """``summon TYPE POS NBT``: a new entity; the NBT is loaded over the spawn state."""
+        entity = Entity(insecure_uuid(self.rng), type_id, tuple(float(v) for v in pos), F32(yaw), F32(pitch),
+                        data=_base_data())
+        if nbt:
+            full = entity_nbt(entity)
+            full.update(copy_tag(nbt))
+            load_nbt(entity, full)
+        entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
+        return self._add(entity)
+
+    def add_player(self, name: str, pos, yaw=0.0, pitch=0.0, gamemode: str = "survival", level: int = 0) -> Entity:
+        return self._add(Entity(insecure_uuid(self.rng), "minecraft:player", tuple(float(v) for v in pos),
+                                F32(yaw), F32(pitch), data=_base_data(), player_name=name,
+                                gamemode=gamemode, level=level))
+
+    def kill(self, entity: Entity) -> None:
+        entity.alive = False
+        self.entities.remove(entity)
+
+    def by_uuid(self, uuid) -> Entity | None:
+        uuid = tuple(uuid)
+        return next((e for e in self.entities if e.uuid == uuid), None)
+
+    def by_holder(self, name: str) -> Entity | None:
+        """The entity whose score holder name is ``name`` (player name or UUID string)."""
+        return next((e for e in self.entities if e.score_holder == name), None)
+
+    def players(self) -> list[Entity]:
+        return [e for e in self.entities if e.is_player]
+
+    def living(self) -> list[Entity]:
+        return [e for e in self.entities if e.alive]

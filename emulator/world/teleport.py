@@ -1,0 +1,108 @@
+"""``tp``/``teleport``: where each form puts its targets, with the game's float math.
+
+Public functions (each returns a ``Destination(pos, yaw, pitch)`` per target, computed against the
+entity's state at that moment, and ``apply`` moves the entity there)
+- ``to_position(source, entity, location, rotation_arg=None, facing=None, facing_entity=None,
+  facing_anchor="feet")``: ``tp TARGETS POS [ROT | facing POS | facing entity E [ANCHOR]]``.
+  Without a rotation the entity keeps its own (wrapped); ``~`` in a rotation is relative to the
+  *execution* rotation, not the entity's. ``facing`` turns the moved entity from its own anchor
+  (the execution anchor applied to it) towards the target.
+- ``to_position_self(source, location)``: ``tp POS``: the executor, rotation "~ ~" (the execution
+  rotation).
+- ``to_entity(entity, destination)``: ``tp [TARGETS] DEST``: the destination's position and rotation.
+- ``apply(entity, destination)``: set pos and rotation, zero the vertical motion (``tp`` does).
+- ``teleport(source, targets, ...)``: the whole command over several targets, in order (each
+  target sees the earlier ones already moved); returns the count.
+Every rotation goes through ``wrapDegrees`` and the pitch is clamped to [-90, 90]; a destination
+outside x/z [-30000000, 30000000) or y [-20000000, 20000000) fails "Invalid position for teleport".
+
+Source: decompiled 1.21 server/commands/TeleportCommand.java (teleportToPos, teleportToEntity,
+performTeleport, LookAtPosition/LookAtEntity) and world/entity/Entity.java (teleportTo, moveTo, lookAt).
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from mcfunction_parser import ast
+from emulator.world import rotation
+from emulator.world.errors import CommandFailure
+from emulator.world.source import Source
+
+HORIZONTAL_LIMIT = 30_000_000
+VERTICAL_LIMIT = 20_000_000
+
+
+@dataclass(frozen=True)
+class Destination:
+    pos: tuple[float, float, float]
+    yaw: np.float32
+    pitch: np.float32
+
+
+def _check_position(pos) -> None:
+    """``Level.isInSpawnableBounds(BlockPos.containing(pos))``."""
+    x, y, z = (math.floor(v) if math.isfinite(v) else v for v in pos)
+    if not (-HORIZONTAL_LIMIT <= x < HORIZONTAL_LIMIT and -HORIZONTAL_LIMIT <= z < HORIZONTAL_LIMIT
+            and -VERTICAL_LIMIT <= y < VERTICAL_LIMIT):
+        raise CommandFailure("commands.teleport.invalidPosition")
+
+
+def _moved(pos, yaw, pitch) -> Destination:
+    _check_position(pos)
+    yaw, pitch = rotation.teleport_rotation(yaw, pitch)
+    return Destination(tuple(pos), yaw, pitch)
+
+
+def _look_from(source: Source, pos, entity, target) -> Destination:
+    """``Entity.lookAt(source anchor, target)`` after the move: from the entity's anchor at ``pos``."""
+    x, y, z = pos
+    origin = (x, y + float(entity.eye_height), z) if source.anchor == "eyes" else (x, y, z)
+    return rotation.facing_rotation(origin, target)
+
+
+def to_position(source: Source, entity, location: ast.Vec3, rotation_arg: ast.Vec2 | None = None,
+                facing: ast.Vec3 | None = None, facing_entity=None, facing_anchor: str = "feet") -> Destination:
+    pos = source.position_of(location)
+    yaw, pitch = source.rotation_of(rotation_arg) if rotation_arg is not None else (entity.yaw, entity.pitch)
+    moved = _moved(pos, yaw, pitch)
+    target = None
+    if facing is not None:
+        target = source.position_of(facing)
+    elif facing_entity is not None:
+        target = facing_entity.anchor(facing_anchor)
+    if target is None:
+        return moved
+    yaw, pitch = _look_from(source, moved.pos, entity, target)
+    return Destination(moved.pos, yaw, pitch)
+
+
+def to_position_self(source: Source, location: ast.Vec3) -> Destination:
+    """``tp POS``: teleportToPos with ``WorldCoordinates.current()`` as the rotation."""
+    return _moved(source.position_of(location), source.yaw, source.pitch)
+
+
+def to_entity(entity, destination) -> Destination:
+    return _moved(destination.pos, destination.yaw, destination.pitch)
+
+
+def apply(entity, destination: Destination) -> None:
+    entity.pos = destination.pos
+    entity.yaw, entity.pitch = destination.yaw, destination.pitch
+    vx, _, vz = entity.motion
+    entity.motion = (vx, 0.0, vz)  # deltaMovement.multiply(1, 0, 1)
+
+
+def teleport(source: Source, targets: list, location: ast.Vec3 | None = None, destination_entity=None,
+             rotation_arg: ast.Vec2 | None = None, facing: ast.Vec3 | None = None,
+             facing_entity=None, facing_anchor: str = "feet") -> int:
+    """The whole ``tp TARGETS ...`` command; returns how many entities were teleported."""
+    for entity in targets:
+        if destination_entity is not None:
+            dest = to_entity(entity, destination_entity)
+        else:
+            dest = to_position(source, entity, location, rotation_arg, facing, facing_entity, facing_anchor)
+        apply(entity, dest)
+    return len(targets)
