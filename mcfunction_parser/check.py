@@ -13,6 +13,7 @@ version problems per command):
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
 import time
 from collections.abc import Iterator, Sequence
@@ -88,33 +89,51 @@ def _position(d: Diagnostic) -> tuple:
 def lint(loaded: LoadedPacks) -> list[Diagnostic]:
     """The whole-pack rules above, as new diagnostics."""
     found: list[Diagnostic] = []
-    _check_calls(loaded, found)
-    _check_objectives(loaded, found)
-    _check_unreferenced(loaded, found)
+    nodes = _nodes(loaded)
+    _check_calls(loaded, nodes, found)
+    _check_objectives(loaded, nodes, found)
+    _check_unreferenced(loaded, nodes, found)
     return found
 
 
 # ----------------------------------------------------------------------------- walking the AST
 
 
-def walk(node: object) -> Iterator[object]:
-    """Every AST node inside ``node`` (itself included), depth first in source order."""
-    yield node
-    for f in dataclasses.fields(node):
-        value = getattr(node, f.name)
-        if isinstance(value, tuple):
+def walk(node: object, out: list[object]) -> None:
+    """Append every AST node inside ``node`` (itself included) to ``out``, in source order."""
+    out.append(node)
+    for name in _child_fields(type(node)):
+        value = getattr(node, name)
+        if type(value) is tuple:
             for item in value:
-                if dataclasses.is_dataclass(item):
-                    yield from walk(item)
-        elif dataclasses.is_dataclass(value) and not isinstance(value, Loc):
-            yield from walk(value)
+                if hasattr(item, "__dataclass_fields__"):
+                    walk(item, out)
+        elif hasattr(value, "__dataclass_fields__"):
+            walk(value, out)
 
 
-def _nodes(loaded: LoadedPacks) -> Iterator[tuple[ast.Function, object]]:
+# Nodes whose insides never hold a command, a selector or an objective: not walked into.
+_LEAVES = (ast.Vec3, ast.Vec2, ast.Coord, ast.IntRange, ast.FloatRange, ast.NbtPath, ast.StorageData)
+
+
+@functools.cache
+def _child_fields(cls: type) -> tuple[str, ...]:
+    """Field names that may hold nodes (not ``loc``, not plain values), cached per class."""
+    if issubclass(cls, _LEAVES):
+        return ()
+    plain = ("str", "int", "bool", "float", "str | None", "int | None", "float | None", "bool | None")
+    return tuple(f.name for f in dataclasses.fields(cls) if f.name != "loc" and str(f.type) not in plain)
+
+
+def _nodes(loaded: LoadedPacks) -> list[tuple[ast.Function, object]]:
+    """(function, node) for every node of every loaded function."""
+    result = []
     for function in loaded.functions.values():
+        nodes: list[object] = []
         for command in function.commands:
-            for node in walk(command):
-                yield function, node
+            walk(command, nodes)
+        result.extend((function, node) for node in nodes)
+    return result
 
 
 def _at(loaded: LoadedPacks, severity: str, message: str, loc: Loc) -> Diagnostic:
@@ -140,13 +159,14 @@ def _references(node: object) -> Iterator[tuple[str, bool, str]]:
             yield name.removeprefix("#"), name.startswith("#"), "macro"
 
 
-def _check_calls(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
-    for _, node in _nodes(loaded):
+def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
+    for _, node in nodes:
         for name, is_tag, how in _references(node):
             if how != "macro":
                 problem = _missing(loaded, name, is_tag)
                 if problem:
-                    found.append(_at(loaded, ERROR, f"{how}: {problem}", node.loc))
+                    where = "" if how == "function" else f" ({how})"
+                    found.append(_at(loaded, ERROR, problem + where, node.loc))
         if isinstance(node, ast.FunctionCall) and not node.is_tag and node.arguments is None \
                 and node.with_source is None:
             callee = loaded.functions.get(node.function)
@@ -165,10 +185,10 @@ def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:
     return f"unknown function tag #{name}"
 
 
-def _check_objectives(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
+def _check_objectives(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
     created: set[str] = set()
     uses: dict[str, list[Loc]] = {}
-    for _, node in _nodes(loaded):
+    for _, node in nodes:
         if isinstance(node, ast.ObjectivesAdd):
             created.add(node.objective)
         elif isinstance(node, ast.MacroLine):
@@ -193,12 +213,12 @@ def _objectives_used(node: object) -> Iterator[str]:
             yield objective
 
 
-def _check_unreferenced(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
+def _check_unreferenced(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
     referenced = set(loaded.advancement_rewards)
     tags = [*loaded.tags.values(), *(failed.tag for failed in loaded.failed_tags.values())]
     for tag in tags:
         referenced.update(e.id for e in tag.entries if not e.is_tag)
-    for function, node in _nodes(loaded):
+    for function, node in nodes:
         for name, is_tag, _ in _references(node):
             if not is_tag and name != function.id:
                 referenced.add(name)

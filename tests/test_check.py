@@ -1,0 +1,167 @@
+"""The linter behind ``dpemu check``: parser errors surface, plus the whole-pack rules."""
+import json
+import re
+import sys
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings, strategies as st
+
+from mcfunction_parser.check import check_packs
+
+META = json.dumps({"pack": {"pack_format": 61, "description": "t"}})
+
+
+def write(root: Path, files: dict[str, str | bytes]) -> Path:
+    root.mkdir(parents=True, exist_ok=True)
+    if "pack.mcmeta" not in files:
+        (root / "pack.mcmeta").write_text(META)
+    for rel, content in files.items():
+        path = root / rel
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_bytes(content if isinstance(content, bytes) else content.encode())
+    return root
+
+
+def fn(name: str) -> str:
+    return f"data/a/function/{name}.mcfunction"
+
+
+LOAD = {"data/minecraft/tags/function/load.json": '{"values": ["a:load"]}'}
+
+
+def messages(result, severity):
+    return [d.message for d in result.of(severity)]
+
+
+def test_syntax_errors_come_from_the_parser_and_the_rest_still_loads(tmp_path):
+    root = write(tmp_path / "p", {**LOAD,
+        fn("load"): "scoreboard objectives add o dummy\nfunction a:broken\n",
+        fn("broken"): 'execute as @e[tag=a run say x\ndata modify storage a:b x set value "abc\nsay fine\n'})
+    result = check_packs([root])
+    errors = result.of("error")
+    assert [(e.line, e.col) for e in errors] == [(1, 21), (2, 37)]
+    assert "unclosed" in errors[1].message
+    assert errors[0].source_line == "execute as @e[tag=a run say x"
+    assert result.functions == 2 and result.commands == 3
+
+
+def test_literal_integers_out_of_range(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): "scoreboard objectives add o dummy\n"
+                                  "scoreboard players set x o 2147483648\nscoreboard players add x o -1\n"
+                                  "scoreboard players set x o -2147483648\n"})
+    errors = check_packs([root]).of("error")
+    assert [(e.line, e.col) for e in errors] == [(2, 28), (3, 28)]
+
+
+def test_calls_to_missing_functions_and_tags(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): (
+        "function a:nope\nschedule function a:gone 5t\nexecute if function a:missing run say x\n"
+        "function #a:no_tag\nexecute unless function #a:broken_tag\nfunction a:load\n"),
+        "data/a/tags/function/broken_tag.json": '{"values": ["a:absent"]}'})
+    result = check_packs([root])
+    linter = [(d.line, d.message) for d in result.of("error") if d.path.endswith("load.mcfunction")]
+    assert linter == [
+        (1, "unknown function a:nope"),
+        (2, "unknown function a:gone (schedule function)"),
+        (3, "unknown function a:missing (execute if function)"),
+        (4, "unknown function tag #a:no_tag"),
+        (5, "function tag #a:broken_tag fails to load (function a:absent does not exist) "
+            "(execute if function)"),
+    ]
+
+
+def test_macro_function_called_without_arguments(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): "function a:m\nfunction a:m {x: 1}\n",
+                                  fn("m"): "$say $(x)\n"})
+    [error] = check_packs([root]).of("error")
+    assert error.line == 1 and "a:m is a macro function" in error.message
+
+
+def test_objectives_never_created(tmp_path):
+    lib = write(tmp_path / "lib", {fn("lib_init"): "scoreboard objectives add shared dummy\n"
+                                   "$scoreboard objectives add $(name) dummy\n"
+                                   "$scoreboard objectives add macro_made $(criterion)\n",
+                                   "data/minecraft/tags/function/load.json": '{"values": ["a:lib_init"]}'})
+    game = write(tmp_path / "game", {**LOAD, fn("load"): (
+        "scoreboard players set x shared 1\nscoreboard players set x typo 1\n"
+        "execute if score x typo matches 1 run say hi\nexecute as @e[scores={other=1..}] run say x\n"
+        "scoreboard players operation x shared += y macro_made\n")})
+    result = check_packs([lib, game])
+    assert sorted(messages(result, "warning")) == [
+        "objective 'other' is used but never created by 'scoreboard objectives add' in the loaded packs",
+        "objective 'typo' is used but never created by 'scoreboard objectives add' in the loaded packs (2 uses)",
+    ]
+    typo = next(d for d in result.of("warning") if "typo" in d.message)
+    assert (typo.line, typo.col) == (2, 1)
+
+
+def test_unreferenced_functions_are_infos(tmp_path):
+    root = write(tmp_path / "p", {**LOAD,
+        fn("load"): "function a:called\nschedule function a:later 1s\n",
+        fn("called"): "say c\n", fn("later"): "say l\n", fn("reward"): "say r\n",
+        fn("orphan"): "say o\n", fn("recursive"): "function a:recursive\n",
+        "data/a/advancement/adv.json": '{"criteria": {}, "rewards": {"function": "a:reward"}}'})
+    result = check_packs([root])
+    assert sorted(messages(result, "info")) == [
+        f"function a:{name} is never referenced (no tag, function, schedule or advancement reward "
+        "names it)" for name in ("orphan", "recursive")]
+    assert result.of("error") == [] and result.of("warning") == []
+
+
+def test_functions_in_a_failed_tag_are_not_unreferenced(tmp_path):
+    root = write(tmp_path / "p", {fn("x"): "say x\n", "data/minecraft/tags/function/tick.json":
+                                  '{"values": ["a:x", "a:missing"]}'})
+    result = check_packs([root])
+    assert result.of("info") == [] and len(result.of("error")) == 1
+
+
+def test_summary_and_json(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): "say a\n\n# comment\nfunction a:nope\n"})
+    result = check_packs([root])
+    assert result.summary() == "3 files, 1 function, 2 commands: 1 error, 0 warnings"
+    data = result.to_json()
+    assert set(data) == {"files", "functions", "commands", "lines", "errors", "warnings", "infos", "seconds"}
+    assert data["lines"] == 4 and data["errors"][0] == {
+        "path": f"{root}/data/a/function/load.mcfunction", "line": 4, "col": 1,
+        "message": "unknown function a:nope"}
+
+
+def test_diagnostics_are_sorted_by_file_and_position(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): "function a:z\nfunction a:y\n", fn("b"): "function a:q\n"})
+    result = check_packs([root])
+    keys = [(d.path, d.line or 0) for d in result.diagnostics]
+    assert keys == sorted(keys)
+
+
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(function=st.binary(max_size=200), tag_file=st.binary(max_size=80), meta=st.binary(max_size=60))
+def test_arbitrary_bytes_never_crash(tmp_path_factory, function, tag_file, meta):
+    root = write(tmp_path_factory.mktemp("fuzz"), {
+        "pack.mcmeta": meta, fn("f"): function, "data/a/tags/function/t.json": tag_file})
+    result = check_packs([root])
+    assert result.summary()  # every problem became a diagnostic
+    assert all(d.path for d in result.diagnostics)
+
+
+def test_generated_corpus_checks_without_errors(tmp_path):
+    sys.path.insert(0, str(Path(__file__).parents[1] / "bench"))
+    corpus = pytest.importorskip("corpus")
+    lines = corpus.write_corpus(tmp_path / "corpus", lines=40000)
+    first = check_packs([tmp_path / "corpus"])
+    # The generated pack calls a few functions and tags it does not define: provide them in a
+    # second pack, so every remaining error would be a parser or linter fault.
+    missing = {m.group(2): m.group(1) for d in first.of("error")
+               if (m := re.match(r"unknown function (tag #)?(\S+)", d.message))}
+    library = {"pack.mcmeta": json.dumps({"pack": {"pack_format": corpus.PACK_FORMAT, "description": ""}})}
+    for name, is_tag in missing.items():
+        ns, path = name.split(":")
+        if is_tag:
+            library[f"data/{ns}/tags/function/{path}.json"] = '{"values": []}'
+        else:
+            library[f"data/{ns}/function/{path}.mcfunction"] = "return 1\n"
+    write(tmp_path / "library", library)
+    result = check_packs([tmp_path / "corpus", tmp_path / "library"])
+    assert result.of("error") == []
+    stubs = sum(1 for name, is_tag in missing.items() if not is_tag)
+    assert result.lines == lines + stubs and lines >= 40000 and result.commands > 25000

@@ -1,0 +1,112 @@
+"""``dpemu check``: exit codes, human output, JSON output."""
+import json
+from pathlib import Path
+
+from click.testing import CliRunner
+
+from emulator.cli import main
+
+
+def pack(root: Path, files: dict[str, str], pack_format: int = 61) -> Path:
+    root.mkdir(parents=True)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": pack_format, "description": ""}}))
+    for rel, text in files.items():
+        (root / rel).parent.mkdir(parents=True, exist_ok=True)
+        (root / rel).write_text(text)
+    return root
+
+
+CLEAN = {"data/a/function/load.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set x o 1\n",
+         "data/minecraft/tags/function/load.json": '{"values": ["a:load"]}'}
+
+
+def run(*args):
+    return CliRunner().invoke(main, ["check", *map(str, args)])
+
+
+def test_clean_pack_exits_0_with_summary(tmp_path):
+    result = run(pack(tmp_path / "p", CLEAN))
+    assert result.exit_code == 0
+    assert result.output == "3 files, 1 function, 2 commands: 0 errors, 0 warnings\n"
+
+
+def test_warnings_and_infos_still_exit_0(tmp_path):
+    files = {**CLEAN, "data/a/function/spare.mcfunction": "scoreboard players set x undefined 1\n"}
+    result = run(pack(tmp_path / "p", files))
+    assert result.exit_code == 0
+    assert "warning: objective 'undefined' is used but never created" in result.output
+    assert "info: function a:spare is never referenced" in result.output
+    assert result.output.splitlines()[-1].endswith("0 errors, 1 warning")
+
+
+def test_errors_exit_1_with_location_and_caret(tmp_path):
+    root = pack(tmp_path / "p", {**CLEAN, "data/a/function/load.mcfunction": "say ok\nexecute as @e[tag=x run say\n"})
+    result = run(root)
+    assert result.exit_code == 1
+    lines = result.output.splitlines()
+    assert lines[0].startswith(f"{root}/data/a/function/load.mcfunction:2:21: error: ")
+    assert lines[1] == "    execute as @e[tag=x run say"
+    assert lines[2] == "    " + " " * 20 + "^"
+    assert lines[-1] == "3 files, 1 function, 1 command: 1 error, 0 warnings"
+
+
+def test_json_output_is_one_object(tmp_path):
+    root = pack(tmp_path / "p", {**CLEAN, "data/a/function/extra.mcfunction": "function a:nope\n"})
+    result = run(root, "--json")
+    assert result.exit_code == 1
+    data = json.loads(result.output)
+    assert list(data) == ["files", "functions", "commands", "lines", "errors", "warnings", "infos", "seconds"]
+    assert (data["files"], data["functions"], data["commands"], data["lines"]) == (4, 2, 3, 3)
+    assert data["errors"] == [{"path": f"{root}/data/a/function/extra.mcfunction", "line": 1, "col": 1,
+                               "message": "unknown function a:nope"}]
+    assert data["infos"][0]["message"].startswith("function a:extra is never referenced")
+    assert isinstance(data["seconds"], float)
+
+
+def test_usage_errors_exit_2(tmp_path):
+    assert run(tmp_path / "missing").exit_code == 2
+    a_file = tmp_path / "file.txt"
+    a_file.write_text("x")
+    assert run(a_file).exit_code == 2
+    root = pack(tmp_path / "p", CLEAN)
+    bad_version = run(root, "--mc", "1.99")
+    assert bad_version.exit_code == 2 and "unknown release 1.99" in bad_version.output
+    assert run(root, "--mc", "latest").exit_code == 2
+    assert CliRunner().invoke(main, ["check"]).exit_code == 2
+
+
+def test_mc_option_changes_the_folders_read(tmp_path):
+    root = pack(tmp_path / "p", {"data/a/functions/old.mcfunction": "say hi\n"}, pack_format=26)
+    assert "1 function," in run(root).output
+    newer = run(root, "--mc", "1.21.4")
+    assert "0 functions" in newer.output and "ignored: 1.21.4 (format 61)" in newer.output
+
+
+def test_several_packs_in_order(tmp_path):
+    lib = pack(tmp_path / "lib", {"data/lib/function/api.mcfunction": "say lib\n"})
+    game = pack(tmp_path / "game", {**CLEAN, "data/a/function/load.mcfunction": "function lib:api\n"})
+    assert run(game).exit_code == 1
+    assert run(lib, game).exit_code == 0
+
+
+def test_empty_and_partial_packs_do_not_crash(tmp_path):
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    result = run(empty)
+    assert result.exit_code == 1 and "missing pack.mcmeta" in result.output
+    assert "Traceback" not in result.output
+    partial = pack(tmp_path / "partial", {})
+    result = run(partial)
+    assert result.exit_code == 0 and result.output == "1 file, 0 functions, 0 commands: 0 errors, 0 warnings\n"
+
+
+def test_binary_garbage_gives_diagnostics_not_a_traceback(tmp_path):
+    root = pack(tmp_path / "p", {})
+    (root / "data/a/function").mkdir(parents=True)
+    (root / "data/a/function/bin.mcfunction").write_bytes(bytes(range(256)) * 4)
+    (root / "data/a/tags/function").mkdir(parents=True)
+    (root / "data/a/tags/function/t.json").write_bytes(b"\x00\xff{")
+    result = run(root, "--json")
+    assert result.exception is None or isinstance(result.exception, SystemExit)
+    data = json.loads(result.output)
+    assert data["errors"] and result.exit_code == 1
