@@ -234,9 +234,10 @@ def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) ->
     result.files += 1
     if text is None:
         return None
-    result.sources[shown] = split_lines(text)
+    lines = result.sources[shown] = split_lines(text)
     try:
-        function, diagnostics = parse_function(text, shown, fid, result.version)
+        # "\n"-joined: the parser sees the same lines as the game (which also breaks on a lone \r)
+        function, diagnostics = parse_function("\n".join(lines), shown, fid, result.version)
     except Exception as exc:  # a parser bug must not stop the other functions
         result.diagnostics.append(Diagnostic(
             ERROR, f"internal error while parsing this file: {type(exc).__name__}: {exc}", shown))

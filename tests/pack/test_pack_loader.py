@@ -143,3 +143,12 @@ def test_empty_and_partial_packs(tmp_path, make_pack):
     assert [d.message for d in loaded.errors] == [
         "missing pack.mcmeta: the game does not recognise this folder as a data pack"]
     assert load_packs([make_pack()]).diagnostics == []
+
+
+def test_line_breaks_match_the_game(make_pack):
+    # BufferedReader.lines() ends a line at \n, \r\n or a lone \r: the parser sees those lines.
+    root = make_pack(files={"data/a/function/x.mcfunction": "say a\rsay b\r\nexecute as @e[tag=x run say\r\n"})
+    loaded = load_packs([root])
+    [error] = loaded.errors
+    assert (error.line, error.col) == (3, 21) and error.source_line == "execute as @e[tag=x run say"
+    assert len(loaded.functions["a:x"].commands) == 2
