@@ -84,9 +84,9 @@ def score_commands(draw) -> str:
 
 
 @st.composite
-def conditions(draw, callees: list[str], unless_function: bool = True) -> str:
+def conditions(draw, callees: list[str]) -> str:
     word = draw(st.sampled_from(("if", "unless")))
-    kinds = ["matches", "compare"] + (["function"] if callees and (word == "if" or unless_function) else [])
+    kinds = ["matches", "compare"] + (["function"] if callees else [])
     kind = draw(st.sampled_from(kinds))
     if kind == "matches":
         return f"{word} score {draw(holders)} {draw(objectives)} matches {draw(ranges())}"
@@ -97,7 +97,7 @@ def conditions(draw, callees: list[str], unless_function: bool = True) -> str:
 
 
 @st.composite
-def commands(draw, callees: list[str], unless_function: bool = True) -> str:
+def commands(draw, callees: list[str]) -> str:
     """One line of a function that may call ``callees``."""
     simple = score_commands()
     call = st.sampled_from(callees).map(lambda f: f"function {f}") if callees else simple
@@ -108,15 +108,15 @@ def commands(draw, callees: list[str], unless_function: bool = True) -> str:
     if kind == "call":
         return draw(call)
     if kind == "if":
-        return f"execute {draw(conditions(callees, unless_function))} run {draw(inner)}"
+        return f"execute {draw(conditions(callees))} run {draw(inner)}"
     if kind == "store":
         what = draw(st.sampled_from(("result", "success")))
         return f"execute store {what} score {draw(holders)} {draw(objectives)} run {draw(inner)}"
     if kind == "condition":
         # `if function` must be followed by more (ExecuteCommand registers it with fork only)
-        return f"execute {draw(conditions([], unless_function))}"
+        return f"execute {draw(conditions([]))}"
     ret = draw(st.sampled_from(("value", "fail", "run")))
-    guard = f"execute {draw(conditions(callees, unless_function))} run " if draw(st.booleans()) else ""
+    guard = f"execute {draw(conditions(callees))} run " if draw(st.booleans()) else ""
     if ret == "value":
         return f"{guard}return {draw(ints)}"
     if ret == "fail":
@@ -125,14 +125,13 @@ def commands(draw, callees: list[str], unless_function: bool = True) -> str:
 
 
 @st.composite
-def programs(draw, max_functions: int = 4, max_lines: int = 8, unless_function: bool = True) -> Program:
-    """``unless_function=False`` leaves out ``execute unless function``."""
+def programs(draw, max_functions: int = 4, max_lines: int = 8) -> Program:
     count = draw(st.integers(1, max_functions))
     names = [f"t:f{i}" for i in range(count)]
     functions: dict[str, str] = {}
     for i, name in enumerate(names):
         callees = names[i + 1:] + ["t:loop"]
-        lines = draw(st.lists(commands(callees, unless_function), min_size=1, max_size=max_lines))
+        lines = draw(st.lists(commands(callees), min_size=1, max_size=max_lines))
         if i == 0:
             lines = ["scoreboard objectives add o dummy", "scoreboard objectives add p dummy",
                      f"scoreboard players set #n p {draw(st.integers(0, 6))}"] + lines

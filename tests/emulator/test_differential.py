@@ -22,10 +22,7 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.function_scoped_fixture],
 )
 
-# `unless function` of a function that never returns: the VM and the reference disagree (see
-# KNOWN_VM_DIFFERENCES in test_java_edge_cases.py); left out of the generated programs until
-# the VM follows the game there.
-PROGRAMS = programs(unless_function=False)
+PROGRAMS = programs()
 
 
 def _compare(tmp_path_factory, program, sanitize: bool) -> None:

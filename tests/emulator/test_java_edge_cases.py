@@ -129,21 +129,8 @@ HELPERS = {
 }
 
 
-# Known disagreements between the VM and the reference (none now: the VM follows the
-# FallthroughTask of the isolated call). Strict, so a mark must go when the VM changes.
-KNOWN_VM_DIFFERENCES: set[str] = set()
-
-
-def _params():
-    for case in CASES:
-        for backend in BACKENDS:
-            marks = ()
-            if backend == "numba" and case[0] in KNOWN_VM_DIFFERENCES:
-                marks = pytest.mark.xfail(strict=True, reason="VM: unless function fails without a return")
-            yield pytest.param(backend, *case, marks=marks, id=f"{case[0]}-{backend}")
-
-
-@pytest.mark.parametrize("backend, case_id, body, expected, result", list(_params()))
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("case_id, body, expected, result", CASES, ids=[c[0] for c in CASES])
 def test_edge_case(tmp_path, backend, case_id, body, expected, result):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
     outcome = run_root(backend, pack, "t:main")
