@@ -26,6 +26,11 @@ MESSAGES = {
     "argument.entity.notfound.entity": "No entity was found",
     "argument.entity.toomany": "Only one entity is allowed, but the provided selector allows more than one",
     "argument.pos.outofworld": "That position is out of this world!",
+    "commands.setblock.failed": "Could not set the block",
+    "commands.fill.failed": "No blocks were filled",
+    "commands.fill.toobig": "Too many blocks in the specified area (maximum {0}, specified {1})",
+    "commands.execute.blocks.toobig": "Too many blocks in the specified area (maximum {0}, specified {1})",
+    "commands.data.block.invalid": "The target block is not a block entity",
 }
 
 

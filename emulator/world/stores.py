@@ -5,8 +5,8 @@ Public functions
   (or 1/0 for ``success``): ``(TYPE)((double) value * scale)`` with Java's narrowing casts:
   int/long truncate toward zero and saturate, NaN gives 0; byte/short go through ``(int)`` first and
   then keep the low 8/16 bits; float rounds to float32; double is stored as is.
-- ``store(root, path, type_name, value, scale)``: write it; a path error is swallowed (the game
-  catches it), so it returns True when stored, False when the store silently did nothing.
+- ``store(root, path, type_name, value, scale)``: write it; returns how many tags changed. A path
+  error is swallowed as the game's store callback does, so nothing stored is just 0.
 - ``data_get(root, path)``: ``data get PATH`` result: ``Mth.floor`` of a number, the size of a
   list/array/compound, the length of a string (in UTF-16 units, as Java counts).
 - ``data_get_scaled(root, path, scale)``: ``data get PATH SCALE``: ``Mth.floor(value * scale)``;
@@ -44,13 +44,12 @@ def stored_tag(type_name: str, value: int, scale: float):
     return _CASTS[type_name](float(value) * scale)
 
 
-def store(root, path: ast.NbtPath, type_name: str, value: int, scale: float) -> bool:
+def store(root, path: ast.NbtPath, type_name: str, value: int, scale: float) -> int:
     """Store into ``root`` at ``path``; failures are silent as in the game's store callback."""
     try:
-        nbt_ops.set_path(root, path, stored_tag(type_name, value, scale))
+        return nbt_ops.set_path(root, path, stored_tag(type_name, value, scale))
     except CommandFailure:
-        return False
-    return True
+        return 0
 
 
 def _single(root, path: ast.NbtPath):

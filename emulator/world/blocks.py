@@ -1,0 +1,242 @@
+"""A block map for ``setblock``, ``fill``, ``execute if block(s)`` and ``data ... block``.
+
+Blocks are stored as ``BlockState(id, properties)`` (properties as written, sorted by name) plus an
+optional block entity compound; every position not set is ``minecraft:air``. There is no block
+registry here, so a state only has the properties that were written (no defaults filled in).
+
+Public API
+- ``parse_block(text)``: ``id[props]{nbt}`` (an ``#tag`` too, for predicates) into
+  ``BlockSpec(id, is_tag, properties, nbt)``; ``BlockSpec.state`` gives the ``BlockState``.
+- ``block_pos(source, vec3)``: ``BlockPosArgument``: the position resolved like an entity
+  position but without centring, then floored.
+- ``BlockMap``: ``get(pos)``, ``entity(pos)`` (block entity compound or None),
+  ``setblock(pos, spec, mode="replace")``, ``fill(start, end, spec, mode="replace", filter=None)``,
+  ``test(pos, spec, block_tags=None)`` (``execute if block``),
+  ``compare_regions(start, end, destination, masked)`` (``execute if blocks``: the count or None),
+  ``block_nbt(pos)`` and ``modify_block(pos, change)`` (the ``data`` block accessor).
+Failures raise ``CommandFailure`` with the game's messages.
+
+Sources (decompiled 1.21): server/commands/SetBlockCommand.java, FillCommand.java,
+ExecuteCommand.java (checkRegions), commands/arguments/blocks/BlockPredicateArgument.java,
+commands/arguments/blocks/BlockInput.java, server/commands/data/BlockDataAccessor.java.
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Callable
+
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Compound, Int, String
+from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.snbt import compound as parse_compound
+from emulator.world.errors import CommandFailure
+from emulator.world.nbt_ops import compare_nbt, copy_tag, tags_equal
+from emulator.world.source import Source
+
+AIR = "minecraft:air"
+AIR_TYPES = {"minecraft:air", "minecraft:cave_air", "minecraft:void_air"}
+MODIFICATION_LIMIT = 32768  # gamerule commandModificationBlockLimit default
+
+
+_ID = re.compile(r"#?[a-z0-9_.\-]+(?::[a-z0-9_.\-/]+)?")
+_PROPERTY = re.compile(r"\s*([a-z0-9_]+)\s*=\s*([a-z0-9_\-.+]+)\s*")
+
+
+@dataclass(frozen=True)
+class BlockState:
+    id: str
+    properties: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def is_air(self) -> bool:
+        return self.id in AIR_TYPES
+
+    def __str__(self) -> str:
+        props = ",".join(f"{k}={v}" for k, v in self.properties)
+        return f"{self.id}[{props}]" if props else self.id
+
+
+@dataclass(frozen=True)
+class BlockSpec:
+    """A parsed block argument: a state to place or a predicate to test."""
+
+    id: str
+    is_tag: bool
+    properties: tuple[tuple[str, str], ...]
+    nbt: Compound | None
+
+    @property
+    def state(self) -> BlockState:
+        return BlockState(self.id, self.properties)
+
+
+def _namespaced(name: str) -> str:
+    return name if ":" in name else "minecraft:" + name
+
+
+def parse_block(text: str) -> BlockSpec:
+    """``id[k=v,...]{nbt}``; raises ValueError on malformed text (the parser reports it first)."""
+    m = _ID.match(text)
+    if m is None:
+        raise ValueError(f"expected a block id: {text!r}")
+    is_tag = m.group().startswith("#")
+    block_id, pos = _namespaced(m.group().lstrip("#")), m.end()
+    properties = {}
+    if text[pos:pos + 1] == "[":
+        close = text.index("]", pos)
+        body = text[pos + 1:close]
+        for part in filter(str.strip, body.split(",")):
+            pm = _PROPERTY.fullmatch(part)
+            if pm is None:
+                raise ValueError(f"bad block property {part!r} in {text!r}")
+            properties[pm.group(1)] = pm.group(2)
+        pos = close + 1
+    nbt = None
+    if text[pos:pos + 1] == "{":
+        reader = Reader(text, Loc("<block>", 1, 1), (1, 21, 0))
+        reader.pos = pos
+        try:
+            nbt = parse_compound(reader)
+        except ParseError as err:
+            raise ValueError(err.message) from None
+        pos = reader.pos
+    if pos != len(text):
+        raise ValueError(f"unexpected text after block: {text[pos:]!r}")
+    return BlockSpec(block_id, is_tag, tuple(sorted(properties.items())), nbt)
+
+
+def block_pos(source: Source, vec) -> tuple[int, int, int]:
+    """``BlockPos.containing(coordinates.getPosition(source))``: no centring, floor each axis."""
+    return tuple(math.floor(v) for v in source.position_of(vec, centre=False))
+
+
+def _box(start, end):
+    lo = tuple(min(a, b) for a, b in zip(start, end))
+    hi = tuple(max(a, b) for a, b in zip(start, end))
+    return lo, hi
+
+
+def _volume(lo, hi) -> int:
+    return math.prod(h - l + 1 for l, h in zip(lo, hi))
+
+
+def _positions(lo, hi):
+    # BlockPos.betweenClosed: x fastest, then y, then z.
+    for z in range(lo[2], hi[2] + 1):
+        for y in range(lo[1], hi[1] + 1):
+            for x in range(lo[0], hi[0] + 1):
+                yield (x, y, z)
+
+
+class BlockMap:
+    def __init__(self) -> None:
+        self.states: dict[tuple[int, int, int], BlockState] = {}
+        self.entities: dict[tuple[int, int, int], Compound] = {}
+
+    def get(self, pos) -> BlockState:
+        return self.states.get(tuple(pos), BlockState(AIR))
+
+    def entity(self, pos) -> Compound | None:
+        return self.entities.get(tuple(pos))
+
+    def _place(self, pos, spec: BlockSpec) -> bool:
+        """``BlockInput.place``: False when the state is already there (block entity data not applied)."""
+        pos, state = tuple(pos), spec.state
+        if self.get(pos) == state:
+            return False
+        if state.is_air:
+            self.states.pop(pos, None)
+        else:
+            self.states[pos] = state
+        self.entities.pop(pos, None)
+        if spec.nbt is not None:
+            self.entities[pos] = copy_tag(spec.nbt)
+        return True
+
+    def setblock(self, pos, spec: BlockSpec, mode: str = "replace") -> int:
+        """``setblock POS BLOCK [replace|keep|destroy]``: 1, or fails "Could not set the block"."""
+        if mode == "keep" and not self.get(pos).is_air:
+            raise CommandFailure("commands.setblock.failed")
+        if not self._place(pos, spec):
+            raise CommandFailure("commands.setblock.failed")
+        return 1
+
+    def fill(self, start, end, spec: BlockSpec, mode: str = "replace",
+             filter: Callable[[tuple[int, int, int]], bool] | None = None) -> int:
+        """``fill FROM TO BLOCK [replace [FILTER]|keep|hollow|outline|destroy]``: blocks changed."""
+        lo, hi = _box(start, end)
+        volume = _volume(lo, hi)
+        if volume > MODIFICATION_LIMIT:
+            raise CommandFailure("commands.fill.toobig", MODIFICATION_LIMIT, volume)
+        air = BlockSpec(AIR, False, (), None)
+        count = 0
+        for pos in list(_positions(lo, hi)):
+            if filter is not None and not filter(pos):
+                continue
+            if mode == "keep" and not self.get(pos).is_air:
+                continue
+            border = any(p in (l, h) for p, l, h in zip(pos, lo, hi))
+            if mode == "outline" and not border:
+                continue
+            count += self._place(pos, air if mode == "hollow" and not border else spec)
+        if count == 0:
+            raise CommandFailure("commands.fill.failed")
+        return count
+
+    def test(self, pos, spec: BlockSpec, block_tags: dict[str, set[str]] | None = None) -> bool:
+        """``execute if block``: id or tag, every written property equal, NBT a partial match."""
+        state = self.get(pos)
+        if spec.is_tag:
+            if state.id not in (block_tags or {}).get(spec.id, set()):
+                return False
+        elif state.id != spec.id:
+            return False
+        props = dict(state.properties)
+        if any(props.get(k) != v for k, v in spec.properties):
+            return False
+        if spec.nbt is not None:
+            return compare_nbt(spec.nbt, self.block_nbt(pos, quiet=True))
+        return True
+
+    def compare_regions(self, start, end, destination, masked: bool) -> int | None:
+        """``execute if blocks``: the number of compared blocks, or None at the first difference."""
+        lo, hi = _box(start, end)
+        volume = _volume(lo, hi)
+        if volume > MODIFICATION_LIMIT:
+            raise CommandFailure("commands.execute.blocks.toobig", MODIFICATION_LIMIT, volume)
+        offset = tuple(d - l for d, l in zip(destination, lo))
+        count = 0
+        for pos in _positions(lo, hi):
+            there = tuple(p + o for p, o in zip(pos, offset))
+            state = self.get(pos)
+            if masked and state.is_air:
+                continue
+            if state != self.get(there):
+                return None
+            here_nbt, there_nbt = self.entity(pos), self.entity(there)
+            if here_nbt is not None and (there_nbt is None or not tags_equal(here_nbt, there_nbt)):
+                return None
+            count += 1
+        return count
+
+    def block_nbt(self, pos, quiet: bool = False) -> Compound | None:
+        """The block entity's NBT with the position and id the game adds (``saveWithFullMetadata``)."""
+        stored = self.entity(pos)
+        if stored is None:
+            if quiet:
+                return None
+            raise CommandFailure("commands.data.block.invalid")
+        nbt = copy_tag(stored)
+        nbt.update(x=Int(pos[0]), y=Int(pos[1]), z=Int(pos[2]), id=String(self.get(pos).id))
+        return nbt
+
+    def modify_block(self, pos, change: Callable[[Compound], object]):
+        """The ``data`` block accessor: edit a copy, keep it only when ``change`` succeeds."""
+        nbt = self.block_nbt(pos)
+        result = change(nbt)
+        for key in ("x", "y", "z", "id"):
+            nbt.pop(key, None)
+        self.entities[tuple(pos)] = nbt
+        return result

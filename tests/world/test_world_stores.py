@@ -1,0 +1,51 @@
+"""``data get`` results and ``execute store`` into NBT (decompiled 1.21
+server/commands/data/DataCommands.java getData/getNumeric, ExecuteCommand.java storeData)."""
+from __future__ import annotations
+
+import pytest
+
+from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Long, String
+from emulator.world import stores
+from emulator.world.errors import CommandFailure
+from world_paths import path
+
+
+def test_data_get_numbers_floor_not_truncate():
+    root = Compound(d=Double(-2.5), f=Float(1.75), l=Long(2**40), b=Byte(-3))
+    assert stores.data_get(root, path("d", "d")) == -3  # Mth.floor, not (int)
+    assert stores.data_get(root, path("f", "f")) == 1
+    assert stores.data_get(root, path("l", "l")) == 2**31 - 1  # Mth.floor saturates
+    assert stores.data_get(root, path("b", "b")) == -3
+
+
+def test_data_get_sizes_of_non_numbers():
+    root = Compound(l=List([Int(1), Int(2)]), a=IntArray([1, 2, 3]), c=Compound(x=Int(1)), s=String("a\U0001F600"))
+    assert stores.data_get(root, path("l", "l")) == 2
+    assert stores.data_get(root, path("a", "a")) == 3
+    assert stores.data_get(root, path("c", "c")) == 1
+    assert stores.data_get(root, path("s", "s")) == 3  # String.length counts UTF-16 units
+
+
+def test_data_get_scaled():
+    root = Compound(d=Double(0.3), s=String("x"), l=List([Int(1), Int(2)]))
+    assert stores.data_get_scaled(root, path("d", "d"), 10.0) == 3  # floor(0.3 * 10.0) = floor(3.0)
+    assert stores.data_get_scaled(root, path("d", "d"), -10.0) == -3
+    with pytest.raises(CommandFailure) as err:
+        stores.data_get_scaled(root, path("s", "s"), 1.0)
+    assert err.value.message == "Can't get s; only numeric tags are allowed"
+    with pytest.raises(CommandFailure, match="single NBT value"):
+        stores.data_get(root, path("l[]", "l", "[]"))
+    with pytest.raises(CommandFailure, match="Found no elements matching x"):
+        stores.data_get(root, path("x", "x"))
+
+
+def test_store_writes_the_cast_tag_and_swallows_path_errors():
+    root = Compound(s=String("text"))
+    assert stores.store(root, path("a.b", "a", "b"), "short", 70000, 1.0) == 1
+    assert root["a"]["b"] == 70000 - 65536
+    assert stores.store(root, path("v", "v"), "double", 3, 0.5) == 1 and root["v"] == 1.5
+    # A key under a string selects nothing to set; a failing path (nothing found for a parent
+    # that cannot be created) is caught by the game's store callback: both store nothing.
+    assert stores.store(root, path("s.x", "s", "x"), "int", 1, 1.0) == 0
+    assert stores.store(root, path("s.x.y", "s", "x", "y"), "int", 1, 1.0) == 0
+    assert root["s"] == "text"
