@@ -45,8 +45,11 @@ def kill(r: Reader, loc) -> ast.Command:
 def _try_position(r: Reader):
     """A position if the cursor holds one, else None with the cursor unchanged (``tp`` is ambiguous:
     ``tp 1 2 3`` is a position, ``tp Steve`` a player; the game tries both branches)."""
-    if r.peek() == "@":
+    c = r.peek()
+    if c == "@":
         return None
+    if c == "~" or c == "^":  # can't start a name: report the position's own error
+        return vec3(r)
     start = r.pos
     try:
         return vec3(r)

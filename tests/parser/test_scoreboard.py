@@ -1,0 +1,104 @@
+import pytest
+
+from mcfunction_parser import ast
+from parser_helpers import parse_err, parse_ok
+
+
+def test_players_set_holds_any_int():
+    cmd = parse_ok("scoreboard players set #x obj -2147483648")
+    assert isinstance(cmd, ast.ScoreSet)
+    assert (cmd.action, cmd.objective, cmd.value) == ("set", "obj", -2147483648)
+    assert isinstance(cmd.targets, ast.NameTarget) and cmd.targets.name == "#x"
+    assert cmd.targets.loc.col == len("scoreboard players set ") + 1
+
+
+@pytest.mark.parametrize("action", ["add", "remove"])
+def test_add_remove_reject_negative_at_the_number(action):
+    text = f"scoreboard players {action} @s obj -1"
+    d = parse_err(text)
+    assert d.col == text.index("-1") + 1
+    assert "at least 0" in d.message
+
+
+def test_out_of_range_literal_is_an_error_at_its_column():
+    text = "scoreboard players set @s obj 2147483648"
+    d = parse_err(text)
+    assert d.col == text.index("2147483648") + 1
+    assert "32-bit" in d.message
+
+
+def test_add_accepts_int_max():
+    assert parse_ok("scoreboard players add $a obj 2147483647").value == 2147483647
+
+
+@pytest.mark.parametrize("op", ["=", "+=", "-=", "*=", "/=", "%=", "<", ">", "><"])
+def test_every_operation(op):
+    cmd = parse_ok(f"scoreboard players operation @e[tag=a] x {op} * y")
+    assert isinstance(cmd, ast.ScoreOperation)
+    assert cmd.op == op and isinstance(cmd.sources, ast.Wildcard)
+    assert isinstance(cmd.targets, ast.Selector) and cmd.targets.variable == "e"
+
+
+def test_unknown_operation_lists_choices():
+    d = parse_err("scoreboard players operation @s x ** @s y")
+    assert "operation" in d.message and "'**'" in d.message and d.col == 35
+
+
+def test_score_holders():
+    assert parse_ok("scoreboard players get $pub obj").target.name == "$pub"
+    assert parse_ok("scoreboard players get .x obj").target.name == ".x"
+    uuid = parse_ok("scoreboard players get 0-0-0-0-1 obj").target
+    assert uuid.is_uuid
+
+
+def test_get_needs_a_single_holder():
+    assert "only one" in parse_err("scoreboard players get @e obj").message
+    assert "'*'" in parse_err("scoreboard players get * obj").message
+
+
+def test_reset_enable_list():
+    assert parse_ok("scoreboard players reset * obj").objective == "obj"
+    assert parse_ok("scoreboard players reset @a").objective is None
+    assert isinstance(parse_ok("scoreboard players enable @a trig"), ast.ScoreEnable)
+    assert parse_ok("scoreboard players list").target is None
+    assert parse_ok("scoreboard players list @s").target.variable == "s"
+
+
+def test_objectives():
+    cmd = parse_ok('scoreboard objectives add speed dummy {"text":"Speed"}')
+    assert isinstance(cmd, ast.ObjectivesAdd)
+    assert (cmd.objective, cmd.criterion, cmd.display_name) == ("speed", "dummy", '{"text":"Speed"}')
+    assert parse_ok("scoreboard objectives add jumps minecraft.custom:minecraft.jump").criterion.endswith("jump")
+    assert parse_ok("scoreboard objectives add k teamkill.red").criterion == "teamkill.red"
+    assert isinstance(parse_ok("scoreboard objectives remove speed"), ast.ObjectivesRemove)
+    assert parse_ok("scoreboard objectives setdisplay sidebar.team.red speed").slot == "sidebar.team.red"
+    assert parse_ok("scoreboard objectives setdisplay sidebar").objective is None
+    assert parse_ok("scoreboard objectives modify speed rendertype hearts").value == "hearts"
+    assert isinstance(parse_ok("scoreboard objectives list"), ast.ObjectivesList)
+
+
+def test_objective_errors():
+    assert "criterion" in parse_err("scoreboard objectives add x nonsense").message
+    assert "display slot" in parse_err("scoreboard objectives setdisplay top x").message
+    d = parse_err('scoreboard objectives add x dummy {"text":"a"')
+    assert "unclosed" in d.message
+
+
+def test_objective_name_length_depends_on_version():
+    long_name = "a" * 17
+    assert parse_ok(f"scoreboard objectives add {long_name} dummy").objective == long_name
+    assert "16" in parse_err(f"scoreboard objectives add {long_name} dummy", (1, 17, 1)).message
+
+
+def test_display_and_numberformat_are_1_20_3():
+    assert isinstance(parse_ok("scoreboard players display name @s obj {\"text\":\"x\"}"), ast.ScoreDisplay)
+    assert "1.20.3" in parse_err("scoreboard players display name @s obj x", (1, 20, 2)).message
+    assert parse_ok("scoreboard objectives modify o numberformat styled {\"color\":\"red\"}").field == "numberformat"
+
+
+def test_incomplete_and_trailing():
+    assert "incomplete" in parse_err("scoreboard players set @s obj").message
+    d = parse_err("scoreboard players set @s obj 1 2")
+    assert "end of command" in d.message and d.col == 33
+    d = parse_err("scoreboard players set @s obj 1x")
+    assert d.col == 32

@@ -1,0 +1,81 @@
+import pytest
+
+from mcfunction_parser import ast
+from mcfunction_parser.nbt import Byte
+from parser_helpers import parse_err, parse_ok
+
+
+def _sel(text: str) -> ast.Selector:
+    return parse_ok(f"kill {text}").targets
+
+
+def test_every_option():
+    sel = _sel('@e[type=!minecraft:pig,tag=a,tag=!b,tag=,scores={x=1..,y=..-2,z=3},limit=2,sort=furthest,'
+               'distance=0.5..10,x=1,y=-2.5,z=3,dx=1,dy=2,dz=3,name="A B",nbt={OnGround:1b},'
+               'team=!red,predicate=ns:p,x_rotation=-90..0,y_rotation=10,'
+               'advancements={story/root=true,a:b={crit=false}}]')
+    args = {a.key: a for a in sel.args if a.key not in ("tag",)}
+    assert args["type"].value == "minecraft:pig" and args["type"].negated
+    assert [(a.value, a.negated) for a in sel.get("tag")] == [("a", False), ("b", True), ("", False)]
+    scores = dict(args["scores"].value)
+    assert (scores["x"].lo, scores["x"].hi, scores["y"].hi, scores["z"].lo) == (1, None, -2, 3)
+    assert args["limit"].value == 2 and args["sort"].value == "furthest"
+    assert (args["distance"].value.lo, args["distance"].value.hi) == (0.5, 10.0)
+    assert args["y"].value == -2.5 and args["name"].value == "A B"
+    assert type(args["nbt"].value["OnGround"]) is Byte
+    assert args["team"].negated and args["predicate"].value == "ns:p"
+    assert args["advancements"].value.startswith("{story/root")
+
+
+def test_level_and_gamemode_on_players():
+    sel = _sel("@a[level=5..,gamemode=!creative]")
+    assert sel.get("level")[0].value.lo == 5 and sel.get("gamemode")[0].negated
+
+
+def test_whitespace_inside_brackets():
+    sel = _sel("@e[ tag = a , limit = 1 ]")
+    assert [a.key for a in sel.args] == ["tag", "limit"]
+
+
+def test_type_tag_keeps_hash():
+    assert _sel("@e[type=#minecraft:skeletons]").args[0].value == "#minecraft:skeletons"
+
+
+@pytest.mark.parametrize("text,message", [
+    ("@e[foo=1]", "unknown selector option 'foo'"),
+    ("@x", "unknown selector type"),
+    ("@e[limit=0]", "at least 1"),
+    ("@s[limit=1]", "isn't applicable"),
+    ("@s[sort=nearest]", "isn't applicable"),
+    ("@a[type=player]", "isn't applicable"),
+    ("@e[type=pig,type=cow]", "isn't applicable"),
+    ("@e[type=!pig,type=cow]", "isn't applicable"),
+    ("@e[name=a,name=b]", "isn't applicable"),
+    ("@e[name=!a,name=b]", "isn't applicable"),
+    ("@e[limit=1,limit=2]", "only once"),
+    ("@e[distance=-1..]", "negative"),
+    ("@e[level=-1]", "negative"),
+    ("@e[sort=closest]", "sort type"),
+    ("@e[gamemode=god]", "game mode"),
+    ("@e[scores={x=5..1}]", "bigger than its maximum"),
+    ("@e[tag=a", "expected ',' or ']'"),
+    ("@e[limit=!1]", "expected limit"),
+    ("@e[x=1..2]", "invalid number"),
+])
+def test_selector_errors(text, message):
+    assert message in parse_err(f"kill {text}").message
+
+
+def test_repeatable_and_negated_options():
+    sel = _sel("@e[type=!pig,type=!cow,name=!a,name=!b,team=!x,team=y,nbt={a:1},nbt=!{b:2},predicate=a:b,predicate=!c:d]")
+    assert len(sel.args) == 10
+
+
+def test_error_column_points_at_option():
+    text = "kill @e[tag=a,limit=1,limit=2]"
+    assert parse_err(text).col == text.rindex("limit") + 1
+
+
+def test_at_n_needs_1_21():
+    assert "1.21" in parse_err("kill @n", (1, 20, 6)).message
+    parse_ok("kill @n")

@@ -1,0 +1,81 @@
+import pytest
+
+from mcfunction_parser import ast
+from parser_helpers import parse_err, parse_ok
+
+
+def test_gamerule():
+    assert parse_ok("gamerule doDaylightCycle false").value == "false"
+    assert parse_ok("gamerule maxCommandChainLength").value is None
+    assert "true, false or an integer" in parse_err("gamerule doDaylightCycle maybe").message
+
+
+def test_random():
+    cmd = parse_ok("random value 1..6")
+    assert (cmd.action, cmd.range.lo, cmd.range.hi, cmd.sequence) == ("value", 1, 6, None)
+    assert parse_ok("random roll 0..10 ns:dice").sequence == "ns:dice"
+    reset = parse_ok("random reset * 42 false true")
+    assert (reset.sequence, reset.seed, reset.include_world_seed, reset.include_sequence_id) == ("*", 42, False, True)
+    assert "1.20.2" in parse_err("random value 1..2", (1, 20, 1)).message
+
+
+@pytest.mark.parametrize("text,value", [("time set noon", 6000), ("time set midnight", 18000),
+                                        ("time set 1d", 24000), ("time add 20s", 400)])
+def test_time(text, value):
+    assert parse_ok(text).value == value
+
+
+def test_time_query():
+    assert parse_ok("time query gametime").query == "gametime"
+    assert "time query" in parse_err("time query hour").message
+
+
+def test_trigger():
+    cmd = parse_ok("trigger t set -3")
+    assert (cmd.objective, cmd.action, cmd.value) == ("t", "set", -3)
+    assert parse_ok("trigger t").action is None
+
+
+def test_say_and_tellraw():
+    assert parse_ok("say hello @a world").message == "hello @a world"
+    assert "unknown selector option" in parse_err("say hi @e[bogus=1]").message
+    cmd = parse_ok('tellraw @a {"text":"hi","extra":[{"text":"]"}]}')
+    assert isinstance(cmd, ast.Tellraw) and cmd.text.endswith("]}")
+    assert "only players" in parse_err('tellraw @e "x"').message
+    parse_ok('tellraw @e[type=player] "x"')
+    parse_ok('tellraw @s "x"')
+
+
+def test_generic_commands_are_kept_as_text():
+    cmd = parse_ok("particle minecraft:flame ~ ~ ~ 0 0 0 0 1")
+    assert isinstance(cmd, ast.GenericCommand) and cmd.name == "particle" and cmd.text.startswith("particle ")
+    assert parse_ok("reload").text == "reload"
+
+
+@pytest.mark.parametrize("text,version,message", [
+    ("replaceitem entity @s weapon.mainhand stone", (1, 17, 0), "removed in Minecraft 1.17"),
+    ("item replace entity @s weapon.mainhand with stone", (1, 16, 5), "requires Minecraft 1.17"),
+    ("damage @s 1", (1, 19, 3), "1.19.4"),
+    ("ride @s mount @e[limit=1]", (1, 19, 3), "1.19.4"),
+    ("place feature minecraft:tree", (1, 18, 2), "1.19"),
+    ("transfer host", (1, 20, 4), "1.20.5"),
+    ("rotate @s 0 0", (1, 21, 1), "1.21.2"),
+    ("test run x", (1, 21, 4), "1.21.5"),
+    ("frobnicate", (1, 21, 0), "unknown command 'frobnicate'"),
+])
+def test_command_versions(text, version, message):
+    assert message in parse_err(text, version).message
+
+
+def test_removed_command_suggests_replacement():
+    assert "use `item replace`" in parse_err("replaceitem block ~ ~ ~ container.0 stone", (1, 21, 0)).message
+    parse_ok("replaceitem entity @s weapon.mainhand stone", (1, 16, 5))
+
+
+def test_high_permission_commands_warn_and_parse():
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+
+    cmd, diags = parse_command("tick rate 40", Loc("t", 1, 1))
+    assert isinstance(cmd, ast.GenericCommand)
+    assert [d.severity for d in diags] == ["warning"] and "permission level 3" in diags[0].message

@@ -1,0 +1,82 @@
+import math
+
+import pytest
+
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import (Byte, ByteArray, Compound, Double, Float, Int, IntArray, List, Long, LongArray,
+                                   Short, String, to_snbt)
+from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.snbt import value
+
+
+def snbt(text: str, version=(1, 21, 0)):
+    r = Reader(text, Loc("t", 1, 1), version)
+    result = value(r)
+    assert r.pos == len(text), f"stopped at {r.pos}"
+    return result
+
+
+def snbt_error(text: str, version=(1, 21, 0)) -> ParseError:
+    with pytest.raises(ParseError) as info:
+        snbt(text, version)
+    return info.value
+
+
+@pytest.mark.parametrize("text,kind,expected", [
+    ("1b", Byte, 1), ("-2s", Short, -2), ("3", Int, 3), ("4L", Long, 4), ("4l", Long, 4),
+    ("1.5f", Float, 1.5), ("2d", Double, 2.0), ("2.5", Double, 2.5), (".5", Double, 0.5), ("1.", Double, 1.0),
+    ("1e3", String, "1e3"),  # an exponent without a point or suffix is not a number in TagParser
+    ("1.5e3", Double, 1500.0), ("true", Byte, 1), ("false", Byte, 0),
+    ("128b", String, "128b"),  # out of a byte's range: the game keeps the text as a string
+    ("2147483648", String, "2147483648"), ("abc", String, "abc"), ("+5", Int, 5), ("01", String, "01"),
+])
+def test_typed_primitives(text, kind, expected):
+    result = snbt(text)
+    assert type(result) is kind and result == expected
+
+
+def test_float_rounds_to_32_bits():
+    assert snbt("0.1f") == pytest.approx(0.1, rel=1e-7) and snbt("0.1f") != 0.1
+
+
+def test_strings_and_escapes():
+    assert snbt('"a\\"b"') == 'a"b'
+    assert snbt("'it''s'".replace("''", "\\'")) == "it's"
+    assert "escape" in snbt_error('"a\\nb"').message
+
+
+def test_compounds_lists_arrays():
+    c = snbt('{a: 1b , "b c":[1,2,],d:{},e:[B;1b,2b],f:[L;1L],g:[]}')
+    assert type(c) is Compound and list(c) == ["a", "b c", "d", "e", "f", "g"]
+    assert type(c["b c"]) is List and c["b c"] == [1, 2]
+    assert type(c["e"]) is ByteArray and type(c["f"]) is LongArray
+    assert type(snbt("[I;]")) is IntArray
+
+
+def test_round_trip_through_to_snbt():
+    text = '{a:1b,b:2s,c:3,d:4L,e:1.5f,f:2.5d,g:"x",h:[1,2],i:[I;1,2]}'
+    assert snbt(to_snbt(snbt(text))) == snbt(text)
+
+
+@pytest.mark.parametrize("text,message", [
+    ("[1,2b]", "can't insert TAG_Byte into a list of TAG_Int"),
+    ("[B;1,2]", "can't insert TAG_Int into TAG_Byte_Array"),
+    ("[X;1]", "invalid array type"),
+    ("{a:1", "expected ',' or '}'"),
+    ("{:1}", "expected a key"),
+    ("{a 1}", "expected ':'"),
+    ("[1 2]", "expected ',' or ']'"),
+    ('"open', "unclosed"),
+])
+def test_errors(text, message):
+    assert message in snbt_error(text).message
+
+
+def test_mixed_lists_from_1_21_5():
+    assert snbt("[1,2b]", (1, 21, 5)) == [1, 2]
+
+
+def test_float_overflow_is_infinity():
+    # Float.parseFloat("1e39") is Infinity; TagParser keeps it as a float tag
+    result = snbt("1e39f")
+    assert type(result) is Float and math.isinf(result)
