@@ -181,7 +181,10 @@ def _plain_text(component: Any) -> str:
         return "".join(_plain_text(part) for part in component)
     if isinstance(component, dict):
         own = component.get("text", component.get("translate", ""))
-        return _plain_text(own) + "".join(_plain_text(p) for p in component.get("extra", []) or [])
+        extra = component.get("extra")
+        return _plain_text(own) + (_plain_text(extra) if isinstance(extra, list) else "")
+    if isinstance(component, bool):
+        return "true" if component else "false"
     return "" if component is None else str(component)
 
 

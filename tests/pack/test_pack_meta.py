@@ -1,12 +1,15 @@
 """pack.mcmeta: formats, description, overlays list, and the diagnostics for bad files."""
+import itertools
 import json
 
 from mcfunction_parser.pack import load_packs
 from mcfunction_parser.pack_meta import ANY_MINOR
 
+_names = itertools.count()
+
 
 def _load_meta(make_pack, meta_text):
-    root = make_pack(meta_json=meta_text if isinstance(meta_text, str) else json.dumps(meta_text))
+    root = make_pack(f"p{next(_names)}", meta_json=meta_text if isinstance(meta_text, str) else json.dumps(meta_text))
     return load_packs([root])
 
 
@@ -80,3 +83,11 @@ def test_incompatible_target_version_warns(make_pack):
 def test_nonexistent_pack_is_an_error(tmp_path):
     loaded = load_packs([tmp_path / "nope"])
     assert loaded.packs == [] and "does not exist" in loaded.errors[0].message
+
+
+def test_description_of_any_shape(make_pack):
+    shapes = {"plain": "plain", "{'extra': 5}": {"text": "a", "extra": 5},
+              "ab": {"text": "a", "extra": [{"text": "b"}]}, "1true": [1, None, True]}
+    for expected, description in shapes.items():
+        loaded = _load_meta(make_pack, {"pack": {"pack_format": 61, "description": description}})
+        assert loaded.packs[0].description == ("a" if expected.startswith("{") else expected)
