@@ -36,16 +36,13 @@ import math
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import (
     ARRAY_TYPES,
-    Byte,
     Compound,
     Double,
     Float,
-    Int,
     INT_RANGES as INT_BITS,
     List,
     Long,
     NUMERIC_TYPES,
-    Short,
     String,
     to_snbt,
     type_of_array_item,

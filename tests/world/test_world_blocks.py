@@ -10,7 +10,7 @@ import pytest
 
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Byte, Compound, Int, String
+from mcfunction_parser.nbt import String
 from emulator.world import nbt_ops
 from emulator.world.blocks import BlockMap, BlockState, block_pos, parse_block
 from emulator.world.errors import CommandFailure

@@ -7,8 +7,6 @@ commands/arguments/coordinates/WorldCoordinate.java, CommandSourceStack.java.
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
