@@ -163,8 +163,11 @@ def objective(r: Reader) -> str:
     return name
 
 
-def score_holder(r: Reader, allow_wildcard: bool = True):
-    """A selector, ``*``, or any non-space word (player names, ``#fake``, ``$y``, UUIDs)."""
+def score_holder(r: Reader):
+    """A selector, ``*``, or any non-space word (player names, ``#fake``, ``$y``, UUIDs).
+
+    ScoreHolderArgument accepts ``*`` even where one holder is expected; that fails at run time.
+    """
     if r.text.startswith("@", r.pos):
         return selectors.selector(r)
     loc = r.loc()
@@ -173,8 +176,6 @@ def score_holder(r: Reader, allow_wildcard: bool = True):
     if not word:
         r.fail(f"expected a score holder, got {show(r.rest_word())}")
     if word == "*":
-        if not allow_wildcard:
-            r.fail("'*' is not allowed here", start)
         r.pos += 1
         return Wildcard(loc)
     r.pos = start + len(word)

@@ -47,6 +47,8 @@ def _options(r: Reader, variable: str) -> tuple[SelectorArg, ...]:
         key_pos = r.pos
         key_loc = r.loc()
         key = r.string()
+        if not key:
+            r.fail(f"expected a selector option, got {show(r.rest_word()[:1])}", key_pos)
         if key not in _PARSERS:
             r.fail(f"unknown selector option {show(key)}", key_pos)
         r.skip_ws()

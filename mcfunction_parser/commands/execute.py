@@ -118,7 +118,7 @@ def _summon(r, loc):
 
 
 def _if_score(r, loc, negated):
-    holder = score_holder(r, allow_wildcard=False)
+    holder = score_holder(r)
     r.space("objective")
     obj = objective(r)
     r.space("comparison or matches")
@@ -126,7 +126,7 @@ def _if_score(r, loc, negated):
     r.space("range" if op == "matches" else "score holder")
     if op == "matches":
         return ast.IfScoreMatches(loc, negated, holder, obj, int_range(r))
-    source = score_holder(r, allow_wildcard=False)
+    source = score_holder(r)
     r.space("objective")
     return ast.IfScore(loc, negated, holder, obj, op, source, objective(r))
 

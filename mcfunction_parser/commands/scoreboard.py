@@ -5,7 +5,7 @@ import re
 
 from .. import ast
 from ..arguments import json_span, objective, score_holder
-from ..features import feature_problem
+from ..features import feature_problem, version_text
 from ..reader import INT_MAX, Reader, show
 from ..selectors import is_single
 
@@ -17,6 +17,7 @@ _COLORS = frozenset((
     "blue", "green", "aqua", "red", "light_purple", "yellow", "white"))
 # statistic criteria: <stat type>:<id>, each part a resource location written with '.' for ':'
 _STAT_CRITERION = re.compile(r"[a-z0-9_.\-]+:[a-z0-9_.\-/]+\Z")
+BELOW_NAME_RENAMED = (1, 20, 2)
 OPERATIONS = frozenset(("=", "+=", "-=", "*=", "/=", "%=", "<", ">", "><"))
 
 
@@ -34,7 +35,13 @@ def _criterion(r: Reader) -> str:
 def _display_slot(r: Reader) -> str:
     start = r.pos
     word = r.word()
-    if word in ("list", "sidebar", "belowName", "below_name"):
+    if word in ("list", "sidebar"):
+        return word
+    if word in ("belowName", "below_name"):
+        # renamed to below_name in 1.20.2 (23w31a)
+        if (word == "below_name") != (r.version >= BELOW_NAME_RENAMED):
+            r.fail(f"display slot '{word}' is spelled "
+                   f"'{'below_name' if word == 'belowName' else 'belowName'}' in Minecraft {version_text(r.version)}", start)
         return word
     prefix, _, color = word.partition(".team.")
     if prefix == "sidebar" and color in _COLORS:
@@ -120,7 +127,7 @@ def _players(r: Reader, loc) -> ast.Command:
 
 def _single_holder(r: Reader):
     start = r.pos
-    holder = score_holder(r, allow_wildcard=False)
+    holder = score_holder(r)
     if isinstance(holder, ast.Selector) and not is_single(holder):
         r.fail("only one score holder is allowed, but the selector allows more than one", start)
     return holder
