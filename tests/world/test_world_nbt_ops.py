@@ -231,3 +231,27 @@ def test_set_then_get_round_trips(root, value):
     nbt_ops.set_path(root, p, value)
     assert nbt_ops.tags_equal(nbt_ops.get(root, p)[0], value)
     assert nbt_ops.set_path(root, p, value) == 0
+
+
+def _parsed(text: str):
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.nbt_path import nbt_path
+    from mcfunction_parser.reader import Reader
+
+    return nbt_path(Reader(text, Loc("t", 1, 1), (1, 21, 0)))
+
+
+@pytest.mark.parametrize("text, prefix", [
+    # NbtPath.createNotFoundException quotes the original text up to the end of the failing node.
+    ('a{b:1}.c[{d:"]"}].e', 'a{b:1}.c[{d:"]"}]'),
+    ('"q.k".y[-1]', '"q.k".y'),
+    ("{r:1}.zz[]", "{r:1}.zz"),
+    ("{r:2}.a", "{r:2}"),
+    ("k.missing.z", "k.missing"),
+])
+def test_nothing_found_prefix_with_parsed_paths(text, prefix):
+    root = C(a=C(b=Int(1), c=List([C(d=String("x"))])), k=C(), r=Int(1))
+    root["q.k"] = C(x=String("not a list"))
+    with pytest.raises(CommandFailure) as err:
+        nbt_ops.get(root, _parsed(text))
+    assert err.value.message == f"Found no elements matching {prefix}"
