@@ -9,7 +9,7 @@ from __future__ import annotations
 from emulator.semantics import INT_MAX
 from mcfunction_parser import ast
 
-from . import conditions, scoreboard
+from . import conditions, data, scoreboard
 from .failure import CommandFailure, unsupported
 from .source import Source
 
@@ -79,6 +79,7 @@ def condition(env, cond: ast.Condition, source: Source, where) -> int:
 
 HANDLERS = {
     **scoreboard.HANDLERS,
+    **data.HANDLERS,
     ast.Say: say,
     ast.Tellraw: tellraw,
     ast.Gamerule: gamerule,

@@ -1,13 +1,15 @@
 """``execute if|unless ...`` tests (ExecuteCommand.addConditionals), as a stage or as the final command.
 
 As a stage, a context passes when the test's outcome differs from ``negated``. As the final
-command (``execute if score ...`` without ``run``): ``if`` passes with 1 (``if entity``: the count),
+command (``execute if score ...`` without ``run``): ``if`` passes with 1 (``entity``, ``data``:
+the count),
 ``unless`` passes with 1, and a failing test fails the command ("Test failed").
 """
 from __future__ import annotations
 
 from mcfunction_parser import ast
 
+from . import data
 from .failure import CommandFailure, unsupported
 from .holders import select_entities, single_holder
 from .scoreboard import objective
@@ -23,7 +25,7 @@ _COMPARE = {
 
 
 def count(env, cond: ast.Condition, source: Source) -> int:
-    """How many things the test found: 0 or 1 for yes/no tests, entities for ``entity``."""
+    """How many things the test found: 0 or 1 for yes/no tests, a count for ``entity`` and ``data``."""
     if isinstance(cond, ast.IfScore):
         return int(_score_compare(env, cond, source))
     if isinstance(cond, ast.IfScoreMatches):
@@ -34,6 +36,8 @@ def count(env, cond: ast.Condition, source: Source) -> int:
         return int(value is not None and cond.range.contains(value))
     if isinstance(cond, ast.IfEntity):
         return len(select_entities(cond.targets, source))
+    if isinstance(cond, ast.IfData):
+        return data.count_matching(env, cond)
     if isinstance(cond, ast.IfDimension):
         return int(source.context.dimension == cond.dimension)
     raise unsupported(f"'execute {'unless' if cond.negated else 'if'} {_kind(cond)}'")
@@ -51,7 +55,7 @@ def run_as_command(env, cond: ast.Condition, source: Source, where) -> int:
         raise CommandFailure("Test failed")
     if found == 0:
         return 1
-    if isinstance(cond, ast.IfEntity):
+    if isinstance(cond, (ast.IfEntity, ast.IfData)):
         raise CommandFailure(f"Test failed, count: {found}")
     raise CommandFailure("Test failed")
 

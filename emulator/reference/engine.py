@@ -22,7 +22,7 @@ from emulator.state import Context, Overflow, WorldState
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 
-from . import modifiers
+from . import data, modifiers
 from .commands import run_command
 from .failure import CommandFailure
 from .macros import MacroExpander
@@ -262,10 +262,7 @@ class Interpreter:
     def _call_arguments(self, command: ast.FunctionCall):
         if command.with_source is None:
             return command.arguments
-        if isinstance(command.with_source, ast.StorageData) and command.with_path is None:
-            return self.state.storage.get(command.with_source.id, {})
-        raise CommandFailure("'function ... with' other than a whole storage is not supported by the reference backend",
-                             report=True)
+        return data.macro_arguments(self, command.with_source, command.with_path)
 
     def _functions(self, name: str, is_tag: bool) -> list[ast.Function]:
         if not is_tag:

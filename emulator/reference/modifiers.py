@@ -12,7 +12,7 @@ import math
 
 from mcfunction_parser import ast
 
-from . import conditions
+from . import conditions, data
 from .failure import CommandFailure, unsupported
 from .holders import holder_names, select_entities
 from .queue import chain
@@ -31,6 +31,8 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
         return [source] if conditions.passes(env, sub, source) else []
     if isinstance(sub, ast.StoreScore):
         return [store_score(env, sub, source)]
+    if isinstance(sub, ast.StoreData):
+        return [data.store_data(env, sub, source)]
     if isinstance(sub, (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity)):
         # each entity found gives a source; none are modelled yet (see holders.select_entities)
         return [source for _ in select_entities(sub.targets, source)]

@@ -177,6 +177,8 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
     from mcfunction_parser.pack import load_packs
 
     packs = load_packs([pack])
+    errors = [d.format() for d in packs.diagnostics if d.severity == "error"]
+    assert not errors, errors
     state = WorldState()
     for (holder, objective), value in (scores or {}).items():
         state.scoreboard.set(holder, objective, value)

@@ -18,8 +18,10 @@ SETUP = "scoreboard objectives add o dummy\n"
 def run(tmp_path, functions, entry="t:main", tags=None, sanitize=False, state=None):
     pack = write_pack(tmp_path / "pack", functions, tags)
     state = state or WorldState()
+    packs = load_packs([pack])
+    assert not [d for d in packs.diagnostics if d.severity == "error"], [d.format() for d in packs.diagnostics]
     backend = ReferenceBackend()
-    backend.load(load_packs([pack]), state, sanitize=sanitize)
+    backend.load(packs, state, sanitize=sanitize)
     return backend, state, backend.run_root(entry)
 
 
@@ -223,3 +225,31 @@ def test_sanitizer_reports_wrapping_results(tmp_path):
         ("t:main", 5, "*=", 65536, 65536, 2**32, 0),
     )
     assert run_root("python", pack, "t:main").overflows == ()
+
+
+# ----------------------------------------------------------------------------- storage data
+
+def test_storage_data_commands(tmp_path):
+    body = (SETUP + "data merge storage t:s {a:1.5d, list:[1,2], name:\"héllo\"}\n"
+            "data modify storage t:s list append value 3\n"
+            "execute store result score #len o run data get storage t:s list\n"
+            "execute store result score #name o run data get storage t:s name\n"
+            # DataCommands.getNumeric: Mth.floor(value * scale)
+            "execute store result score #a o run data get storage t:s a 10\n"
+            "execute store result score #neg o run data get storage t:s a -1\n"
+            # ExecuteCommand.storeData: (int)(result * scale) truncates toward zero and saturates
+            "scoreboard players set #big o 1000000000\n"
+            "execute store result storage t:s big int 1000 run scoreboard players get #big o\n"
+            "execute store result storage t:s half int 0.5 run scoreboard players set #m o -3\n"
+            "execute store result score #stored o run data get storage t:s big\n"
+            "execute store result score #half o run data get storage t:s half\n"
+            "execute store success score #has o if data storage t:s list[{}]\n"
+            "execute store result score #count o if data storage t:s list[]\n"
+            "execute store success score #nothing o run data remove storage t:s missing\n"
+            "function t:m with storage t:s")
+    functions = {"t:main": body, "t:m": "$scoreboard players set #from_macro o $(half)"}
+    _, state, _ = run(tmp_path, functions)
+    assert scores(state) == {
+        "#len": 3, "#name": 5, "#a": 15, "#neg": -2, "#big": 1000000000, "#m": -3,
+        "#stored": 2147483647, "#half": -1, "#has": 0, "#count": 3, "#nothing": 0, "#from_macro": -1,
+    }
