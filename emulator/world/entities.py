@@ -13,6 +13,8 @@ Public API
 - ``EntityStore(seed)``: entities in creation order; ``summon(type, pos, nbt=None, yaw=0, pitch=0)``,
   ``add_player(name, pos, ...)``, ``kill(entity)``, ``by_uuid(uuid)``, ``by_holder(name)``,
   ``living()``, ``players()``, ``rng`` (a seeded ``random.Random`` for UUIDs and ``sort=random``).
+- ``add_tag(entity, name)`` / ``remove_tag(entity, name)``: the ``tag`` command's per-entity step
+  (False when nothing changed; an entity holds at most 1024 tags).
 - ``entity_nbt(entity)``: the compound ``data get entity`` shows and ``nbt=`` matches against.
 - ``load_nbt(entity, compound)``: ``Entity.load`` (Pos clamped, Motion over 10 dropped, Rotation % 360,
   Tags, CustomName, the rest kept as is). ``modify_entity(entity, change)``: the ``data`` entity
@@ -222,6 +224,21 @@ class Entity:
         """``EntityAnchorArgument.Anchor.apply(entity)``: feet, or eyes (y + eye height)."""
         x, y, z = self.pos
         return (x, y + float(self.eye_height), z) if anchor == "eyes" else self.pos
+
+
+def add_tag(entity: Entity, name: str) -> bool:
+    """``Entity.addTag``: refused at 1024 tags; False if the tag was there."""
+    if len(entity.tags) >= MAX_TAGS or name in entity.tags:
+        return False
+    entity.tags.add(name)
+    return True
+
+
+def remove_tag(entity: Entity, name: str) -> bool:
+    if name not in entity.tags:
+        return False
+    entity.tags.remove(name)
+    return True
 
 
 def entity_nbt(entity: Entity) -> Compound:

@@ -13,12 +13,14 @@ Methods (each returns a new Source or a position; the Source itself is immutable
 - ``facing_entity(entity, anchor)``: ``execute facing entity E feet|eyes``.
 - ``with_position / with_rotation / with_entity / with_anchor``: ``positioned``, ``rotated``,
   ``as``, ``anchored``. ``at(entity)``: ``execute at`` (position and rotation of the entity).
+- ``aligned(axes)``: ``execute align xyz`` (``Vec3.align``: floor of the named axes).
 
 Sources (decompiled 1.21): commands/CommandSourceStack.java, commands/arguments/EntityAnchorArgument.java,
 commands/arguments/coordinates/WorldCoordinate(s).java, LocalCoordinates.java, Vec3Argument.java.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -80,6 +82,9 @@ class Source:
 
     def with_anchor(self, anchor: str) -> "Source":
         return replace(self, anchor=anchor)
+
+    def aligned(self, axes: str) -> "Source":
+        return replace(self, pos=tuple(float(math.floor(v)) if a in axes else v for a, v in zip("xyz", self.pos)))
 
     def at(self, entity) -> "Source":
         return replace(self, pos=entity.pos, yaw=entity.yaw, pitch=entity.pitch)

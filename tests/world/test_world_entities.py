@@ -314,3 +314,39 @@ def test_tp_to_entity_and_invalid_position():
     assert e.pos == (1.0, 2.0, 3.0) and (e.yaw, e.pitch) == (F32(-160.0), F32(-90.0))
     with pytest.raises(CommandFailure, match="Invalid position for teleport"):
         teleport.teleport(Source(), [e], vec(coord("abs", 3e7), coord("abs", 0.0), coord("abs", 0.0)))
+
+
+def test_tags_are_capped_at_1024():
+    from emulator.world.entities import add_tag, remove_tag
+
+    e = EntityStore().summon("minecraft:marker", (0, 0, 0))
+    assert all(add_tag(e, f"t{i}") for i in range(1024))
+    assert not add_tag(e, "one_more") and not add_tag(e, "t0")
+    assert remove_tag(e, "t0") and not remove_tag(e, "t0")
+
+
+def test_align_floors_the_named_axes():
+    src = Source(pos=(1.7, -0.5, -2.2)).aligned("xz")
+    assert src.pos == (1.0, -0.5, -3.0)
+
+
+def _parsed_selector(text: str) -> ast.Selector:
+    from mcfunction_parser.reader import Reader
+    from mcfunction_parser.selectors import selector
+
+    return selector(Reader(text, LOC, (1, 21, 0)))
+
+
+def test_selectors_from_the_parser(world):
+    store, ents = world
+    src = Source(pos=(0.0, 0.0, 0.0))
+    cases = {
+        "@e[type=!minecraft:marker,distance=..3.5]": ["alex", "steve"],
+        "@e[tag=ball,sort=furthest,limit=1]": ["far"],
+        "@e[x=4,y=0,z=0,distance=..1.5]": ["stand", "alex"],
+        "@a[x=2.5,y=-1,z=-1,dx=1,dy=1,dz=1]": ["alex"],
+        "@e[type=#minecraft:skeletons]": [],
+        "@p[name=!Steve]": ["alex"],
+    }
+    for text, expected in cases.items():
+        assert names(select(store, _parsed_selector(text), src), ents) == expected, text
