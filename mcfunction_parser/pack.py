@@ -20,7 +20,7 @@ from pathlib import Path
 
 from .ast import Function, FunctionTag
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
-from .pack_meta import FormatRange, PackMeta, read_pack_meta
+from .pack_meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
 from .pack_text import load_json, read_text, split_lines
 from .parse import parse_function
 from .tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
@@ -103,7 +103,8 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> Lo
     metas = [(Path(p), str(p), _read_meta(Path(p), str(p), diagnostics)) for p in paths]
     version = _target_version(mc_version, [m for _, _, m in metas if m is not None])
     target = pack_format_for_version(version)
-    result = LoadedPacks([], version, {}, {}, {}, diagnostics, files=sum(m is not None for *_, m in metas))
+    metas_read = sum((root / "pack.mcmeta").is_file() for root, _, _ in metas)
+    result = LoadedPacks([], version, {}, {}, {}, diagnostics, files=metas_read)
     packs = [_collect(root, shown, meta, target, version, diagnostics)
              for root, shown, meta in metas if root.is_dir()]
     result.packs = [p.info for p in packs]
@@ -155,8 +156,9 @@ def _collect(root: Path, shown: str, meta: PackMeta | None, target: Format, vers
 
 
 def _range_label(formats: FormatRange) -> str:
-    lo, hi = format_label(formats.min), format_label(formats.max).split(".")[0]
-    return lo if lo == hi and formats.max[1] > 2**30 else f"{lo}-{hi}"
+    lo = format_label(formats.min)
+    hi = str(formats.max[0]) if formats.max[1] == ANY_MINOR else format_label(formats.max)
+    return lo if lo == hi else f"{lo}-{hi}"
 
 
 def _data_files(base: Path) -> dict[str, Path]:
@@ -178,27 +180,26 @@ def _resources(pack: _PackFiles, folders: tuple[str, str], suffix: str,
     once per folder and skipped; invalid names are warned about and skipped, as the game does.
     """
     read, ignored = folders if pack.info.folder_style == "function" else folders[::-1]
+    depth = read.count("/") + 1  # path segments of the folder name
     found: dict[str, str] = {}
-    ignored_dirs: dict[str, int] = {}
+    ignored_count: dict[str, int] = {}  # "data/<ns>" -> files in its ignored folder
     for rel in pack.files:
         parts = rel.split("/")
-        folder_len = len(read.split("/"))
-        if len(parts) < 3 + folder_len or not rel.endswith(suffix):
+        if len(parts) < 3 + depth or not rel.endswith(suffix):
             continue
-        folder = "/".join(parts[2:2 + folder_len])
-        prefix = "/".join(parts[:2 + folder_len])
+        folder = "/".join(parts[2:2 + depth])
         if folder == ignored:
-            ignored_dirs[prefix] = ignored_dirs.get(prefix, 0) + 1
+            ns_dir = f"data/{parts[1]}"
+            ignored_count[ns_dir] = ignored_count.get(ns_dir, 0) + 1
         elif folder == read:
-            resource_id = _resource_id(parts[1], "/".join(parts[2 + folder_len:])[: -len(suffix)],
-                                       pack.shown_file(rel), diagnostics)
+            path = "/".join(parts[2 + depth:])[: -len(suffix)]
+            resource_id = _resource_id(parts[1], path, pack.shown_file(rel), diagnostics)
             if resource_id is not None:
                 found[resource_id] = rel
-    for prefix, count in ignored_dirs.items():
+    for ns_dir, count in ignored_count.items():
         diagnostics.append(Diagnostic(
-            WARNING, f"{count} file(s) in '{prefix}/' ignored: {pack.target_label} reads "
-            f"'{prefix.split('/')[0]}/{prefix.split('/')[1]}/{read}/' instead",
-            pack.shown(prefix)))
+            WARNING, f"{count} file(s) in '{ns_dir}/{ignored}/' ignored: {pack.target_label} reads "
+            f"'{ns_dir}/{read}/' instead", pack.shown(f"{ns_dir}/{ignored}")))
     return found
 
 
@@ -236,8 +237,9 @@ def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) ->
         return None
     lines = result.sources[shown] = split_lines(text)
     try:
-        # "\n"-joined: the parser sees the same lines as the game (which also breaks on a lone \r)
-        function, diagnostics = parse_function("\n".join(lines), shown, fid, result.version)
+        # re-joined with "\n": the parser sees the game's lines (which also end at a lone \r)
+        text = "".join(line + "\n" for line in lines)
+        function, diagnostics = parse_function(text, shown, fid, result.version)
     except Exception as exc:  # a parser bug must not stop the other functions
         result.diagnostics.append(Diagnostic(
             ERROR, f"internal error while parsing this file: {type(exc).__name__}: {exc}", shown))

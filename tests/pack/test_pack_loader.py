@@ -152,3 +152,9 @@ def test_line_breaks_match_the_game(make_pack):
     [error] = loaded.errors
     assert (error.line, error.col) == (3, 21) and error.source_line == "execute as @e[tag=x run say"
     assert len(loaded.functions["a:x"].commands) == 2
+
+
+def test_trailing_blank_lines_count(make_pack):
+    root = make_pack(files={"data/a/function/x.mcfunction": "say a\n\n\n", "data/a/function/y.mcfunction": "say a"})
+    loaded = load_packs([root])
+    assert loaded.functions["a:x"].lines == 3 and loaded.functions["a:y"].lines == 1
