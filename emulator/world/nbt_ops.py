@@ -20,7 +20,7 @@ Public functions
 - ``modify(root, path, mode, values, index=None)``: the whole ``data modify`` step, failing with
   "Nothing changed" when the count is 0 (``set`` uses the last source value).
 - ``data_remove(root, path)``: ``data remove`` with its "Nothing changed" failure.
-- ``data_merge(root, patch)``: ``data merge``: returns the merged copy or fails "Nothing changed".
+- ``data_merge(root, patch)``: ``data merge`` in place (returns 1) or fails "Nothing changed".
 - ``merge_compounds(target, patch)``: ``CompoundTag.merge`` (recursive into compounds) in place.
 - ``string_source(values, start=None, end=None)``: the ``string`` source of ``data modify``.
 - ``numeric_value(tag)``: ``NumericTag.getAsDouble``; ``is_numeric(tag)``.
@@ -633,14 +633,16 @@ def data_remove(root, path: ast.NbtPath) -> int:
     return _changed(remove(root, path))
 
 
-def data_merge(root: Compound, patch: Compound) -> Compound:
-    """``data merge``: the merged copy; fails when it equals the original."""
+def data_merge(root: Compound, patch: Compound) -> int:
+    """``data merge``: merge ``patch`` into ``root`` in place (returns 1); fails when nothing changes."""
     if is_too_deep(patch, 0):
         raise CommandFailure("arguments.nbtpath.too_deep")
     merged = merge_compounds(copy_tag(root), patch)
     if tags_equal(merged, root):
         raise CommandFailure("commands.data.merge.failed")
-    return merged
+    root.clear()
+    root.update(merged)
+    return 1
 
 
 def _as_text(tag) -> str:

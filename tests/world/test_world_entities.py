@@ -70,6 +70,8 @@ def test_hitboxes_and_eye_heights():
     assert stand.bounding_box == (0.75, 0.0, 0.75, 1.25, float(F32(1.975)), 1.25)
     assert small.eye_height == F32(1.7775) * F32(0.5)
     assert marker.bounding_box == (2.0, 3.0, 4.0, 2.0, 3.0, 4.0) and marker.eye_height == 0.0
+    display = store.summon("minecraft:item_display", (0.0, 0.0, 0.0))
+    assert display.eye_height == 0.0 and display.anchor("eyes") == display.pos
 
 
 def test_entity_nbt_view_and_load_back():
@@ -103,6 +105,8 @@ def test_modify_entity_keeps_uuid_and_refuses_players():
     assert e.data["data"] == {"x": 3}
     with pytest.raises(CommandFailure, match="Nothing changed"):
         modify_entity(e, lambda nbt: nbt_ops.modify(nbt, path("data.x", "data", "x"), "set", [Int(3)]))
+    modify_entity(e, lambda nbt: nbt_ops.data_merge(nbt, Compound(Rotation=List([Float(90.0), Float(0.0)]))))
+    assert e.yaw == F32(90.0)
     steve = store.add_player("Steve", (0, 0, 0))
     with pytest.raises(CommandFailure, match="Unable to modify player data"):
         modify_entity(steve, lambda nbt: nbt_ops.set_path(nbt, path("x", "x"), Int(1)))

@@ -177,6 +177,8 @@ def test_facing_and_local_coordinates_match_the_jvm(java):
         ours.append(" ".join(_hd(v) for v in rotation.local_to_world(o, yaw, pitch, *offsets)))
         queries.append(f"dir {_hf(yaw)} {_hf(pitch)}")
         ours.append(" ".join(_hd(v) for v in rotation.direction_from_rotation(yaw, pitch)))
+        queries.append(f"view {_hf(yaw)} {_hf(pitch)}")
+        ours.append(" ".join(_hd(v) for v in rotation.view_vector(yaw, pitch)))
     assert ours == java(queries)
 
 
@@ -189,4 +191,21 @@ def test_store_casts_match_the_jvm(java):
     for v, s in cases:
         tags = [stores.stored_tag(t, v, s) for t in ("int", "long", "short", "byte")]
         ours.append(" ".join(str(int(t)) for t in tags) + " " + _hf(stores.stored_tag("float", v, s)))
+    assert ours == answers
+
+
+def test_numeric_tag_narrowing_matches_the_jvm(java):
+    # NumericTag.getAsByte/Short/Int/Long for doubles and floats (what arrays store and paths read).
+    from emulator.world.nbt_ops import _narrow
+    from mcfunction_parser.nbt import Byte, Int, Long, Short
+
+    rng = np.random.default_rng(5)
+    values = [float(v) for v in rng.uniform(-1e6, 1e6, 300)] + [float(v) for v in rng.uniform(-3e9, 3e9, 200)]
+    values += [math.nan, math.inf, -math.inf, -0.5, 2.0**31, -(2.0**31) - 300.0, 1e20, -1e20, 255.9, -128.5]
+    answers = java([f"narrow {_hd(v)}" for v in values])
+    ours = []
+    for v in values:
+        as_double = [_narrow(Double(v), t) for t in (Byte, Short, Int, Long)]
+        as_float = [_narrow(Float(float(mth.f32(v))), t) for t in (Byte, Short, Int, Long)]
+        ours.append(" ".join(str(x) for x in as_double + as_float))
     assert ours == answers

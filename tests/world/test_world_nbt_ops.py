@@ -177,8 +177,8 @@ def test_merge_mode_and_data_merge():
     with pytest.raises(CommandFailure) as err:
         nbt_ops.modify(root, path("o", "o"), "merge", [Int(3)])
     assert err.value.message == "Expected object, got: 3"
-    merged = nbt_ops.data_merge(root, C(b=Int(2)))
-    assert merged["b"] == 2 and "b" not in root  # data merge returns a new compound
+    assert nbt_ops.data_merge(root, C(b=Int(2))) == 1
+    assert root["b"] == 2 and root["o"]["a"] == 1
     with pytest.raises(CommandFailure, match="Nothing changed"):
         nbt_ops.data_merge(root, C(o=C(a=Int(1))))
 

@@ -62,6 +62,9 @@ public class MthRef {
         return a;
     }
 
+    static int floor(double d) { int i = (int) d; return d < (double) i ? i - 1 : i; }
+    static int floorf(float f) { int i = (int) f; return f < (float) i ? i - 1 : i; }
+
     static float f(String s) { return Float.intBitsToFloat(Integer.parseUnsignedInt(s, 16)); }
     static double d(String s) { return Double.longBitsToDouble(Long.parseUnsignedLong(s, 16)); }
     static String hf(float v) { return Integer.toHexString(Float.floatToRawIntBits(v)); }
@@ -111,6 +114,20 @@ public class MthRef {
             case "store": {
                 double v = (double) Integer.parseInt(a[1]) * d(a[2]);
                 return (int) v + " " + (long) v + " " + (short) (int) v + " " + (byte) (int) v + " " + hf((float) v);
+            }
+            case "view": {
+                float yaw = f(a[1]), pitch = f(a[2]);
+                float p = pitch * (float) (Math.PI / 180.0), y = -yaw * (float) (Math.PI / 180.0);
+                float cy = cos(y), sy = sin(y), cp = cos(p), sp = sin(p);
+                return hd((double) (sy * cp)) + " " + hd((double) (-sp)) + " " + hd((double) (cy * cp));
+            }
+            case "narrow": {
+                // DoubleTag and FloatTag getAsByte/getAsShort/getAsInt/getAsLong.
+                double v = d(a[1]);
+                float w = (float) v;
+                return (byte) (floor(v) & 255) + " " + (short) (floor(v) & 65535) + " " + floor(v) + " "
+                    + (long) Math.floor(v) + " " + (byte) (floorf(w) & 255) + " " + (short) (floorf(w) & 65535)
+                    + " " + floorf(w) + " " + (long) w;
             }
             case "tables": {
                 StringBuilder rows = new StringBuilder();
