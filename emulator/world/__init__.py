@@ -5,8 +5,10 @@ reference interpreter). Modules:
 - ``errors``: ``CommandFailure`` and the game's messages.
 - ``nbt_ops``: NBT paths, ``data get/merge/modify/remove``, partial NBT matching.
 - ``stores``: ``execute store ... TYPE SCALE`` casts and ``data get [SCALE]`` results.
-- ``mth``: the game's float math (sine table, atan2, wrapDegrees) in float32.
+- ``mth``: the game's float math (sine table, atan2, wrapDegrees) in float32; ``atan_tables``
+  holds the JVM's own tables behind ``Mth.atan2``.
 - ``rotation``: directions, local coordinates ``^``, ``facing``, rotation wrapping.
+- ``source``: the execution context (position, rotation, executor, anchor) and coordinate arguments.
 - ``entities``: entity types, the entity store, entity NBT view and loading.
 - ``selectors``: ``@s @e @a @p @r @n`` with their arguments.
 - ``teleport``: ``tp`` destinations for every form.
