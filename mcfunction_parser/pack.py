@@ -108,6 +108,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> Lo
     packs = [_collect(root, shown, meta, target, version, diagnostics)
              for root, shown, meta in metas if root.is_dir()]
     result.packs = [p.info for p in packs]
+    _apply_filters(packs, [meta for root, _, meta in metas if root.is_dir()])
     _load_functions(packs, result)
     _load_tags(packs, result)
     _load_advancements(packs, result)
@@ -153,6 +154,16 @@ def _collect(root: Path, shown: str, meta: PackMeta | None, target: Format, vers
     info = PackInfo(root, meta.pack_format if meta else None, meta.supported if meta else None,
                     meta.description if meta else "", applied, style)
     return _PackFiles(info, shown, files, label)
+
+
+def _apply_filters(packs: list[_PackFiles], metas: list[PackMeta | None]) -> None:
+    """Each pack's ``filter.block`` hides matching files of the packs loaded before it."""
+    for index, meta in enumerate(metas):
+        if meta is None or meta.block is None:
+            continue
+        for earlier in packs[:index]:
+            for rel in [r for r in earlier.files if meta.block.blocks(*r.split("/", 2)[1:])]:
+                del earlier.files[rel]
 
 
 def _range_label(formats: FormatRange) -> str:

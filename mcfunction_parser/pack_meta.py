@@ -9,6 +9,11 @@ Fields (minecraft.wiki "Pack.mcmeta"):
   A single number as ``max_format`` means any minor version.
 - ``overlays.entries``: ``{"directory": "[a-z0-9_-]+", "formats": RANGE}`` (or min/max_format);
   "the first in the list is applied first", so later entries win.
+- ``filter.block``: ``[{"namespace": REGEX, "path": REGEX}]`` (1.19+), files of packs loaded
+  *before* this one that match are treated as absent. As in the game's
+  ``ResourceFilterSection``, a file is blocked when some pattern's namespace matches its
+  namespace and some pattern's path matches its path inside the namespace
+  (``function/a.mcfunction``); a missing regex matches everything; matches are whole-string.
 """
 from __future__ import annotations
 
@@ -42,12 +47,24 @@ class Overlay:
     formats: FormatRange
 
 
+@dataclass(frozen=True)
+class BlockFilter:
+    """``filter.block``: patterns as (namespace regex, path regex); None matches everything."""
+
+    patterns: tuple[tuple[re.Pattern | None, re.Pattern | None], ...]
+
+    def blocks(self, namespace: str, path: str) -> bool:
+        return (any(ns is None or ns.fullmatch(namespace) for ns, _ in self.patterns)
+                and any(p is None or p.fullmatch(path) for _, p in self.patterns))
+
+
 @dataclass
 class PackMeta:
     pack_format: int | None
     supported: FormatRange | None
     description: str
     overlays: list[Overlay] = field(default_factory=list)
+    block: BlockFilter | None = None
 
 
 class _Invalid(Exception):
@@ -89,7 +106,8 @@ def _meta_from_json(doc: JsonDocument) -> PackMeta:
     pack_format = _pack_format(pack, doc)
     supported = _supported_range(pack, pack_format, doc)
     overlays = _overlays(root.get("overlays"), doc)
-    return PackMeta(pack_format, supported, _plain_text(pack.get("description", "")), overlays)
+    block = _block_filter(root.get("filter"), doc)
+    return PackMeta(pack_format, supported, _plain_text(pack.get("description", "")), overlays, block)
 
 
 def _pack_format(pack: dict, doc: JsonDocument) -> int | None:
@@ -171,6 +189,29 @@ def _overlays(section: Any, doc: JsonDocument) -> list[Overlay]:
         result.append(Overlay(directory, formats))
         after = max(after, offset)
     return result
+
+
+def _block_filter(section: Any, doc: JsonDocument) -> BlockFilter | None:
+    if section is None:
+        return None
+    block = section.get("block") if isinstance(section, dict) else None
+    if not isinstance(block, list) or not all(isinstance(p, dict) for p in block):
+        raise _Invalid('"filter" must be an object with a "block" list of objects', doc.find_string("filter"))
+    patterns = tuple((_regex(p, "namespace", doc), _regex(p, "path", doc)) for p in block)
+    return BlockFilter(patterns)
+
+
+def _regex(pattern: dict, key: str, doc: JsonDocument) -> re.Pattern | None:
+    text = pattern.get(key)
+    if text is None:
+        return None
+    if not isinstance(text, str):
+        raise _Invalid(f'filter "{key}" must be a regular expression string', doc.find_string(key))
+    try:
+        return re.compile(text)
+    except re.error as exc:
+        raise _Invalid(f'filter "{key}" is not a valid regular expression: {exc}',
+                       doc.find_string(text)) from None
 
 
 def _plain_text(component: Any) -> str:

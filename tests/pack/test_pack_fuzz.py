@@ -9,9 +9,9 @@ from packbuild import write_pack
 KEYS = st.sampled_from(["pack", "pack_format", "description", "supported_formats", "min_format",
                         "max_format", "min_inclusive", "max_inclusive", "overlays", "entries",
                         "directory", "formats", "values", "replace", "id", "required", "rewards",
-                        "function", "text", "extra"])
+                        "function", "text", "extra", "filter", "block", "namespace", "path"])
 SCALARS = st.one_of(st.none(), st.booleans(), st.integers(-3, 100), st.floats(allow_nan=False),
-                    st.sampled_from(["", "a:x", "#a:t", "ov", "A:B", "a:missing", "x y"]))
+                    st.sampled_from(["", "a:x", "#a:t", "ov", "A:B", "a:missing", "x y", "(", ".*"]))
 JSON = st.recursive(SCALARS, lambda inner: st.one_of(
     st.lists(inner, max_size=4), st.dictionaries(KEYS, inner, max_size=4)), max_leaves=12)
 

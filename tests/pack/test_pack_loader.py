@@ -158,3 +158,22 @@ def test_trailing_blank_lines_count(make_pack):
     root = make_pack(files={"data/a/function/x.mcfunction": "say a\n\n\n", "data/a/function/y.mcfunction": "say a"})
     loaded = load_packs([root])
     assert loaded.functions["a:x"].lines == 3 and loaded.functions["a:y"].lines == 1
+
+
+def test_filter_block_hides_files_of_earlier_packs_only(tmp_path):
+    # minecraft.wiki "Pack.mcmeta" filter; matching follows the game's ResourceFilterSection.
+    lib = write_pack(tmp_path / "lib", {"data/lib/function/old/a.mcfunction": "say a\n",
+                                        "data/lib/function/keep.mcfunction": "say k\n",
+                                        "data/other/function/old/b.mcfunction": "say b\n"}, meta(61))
+    game = write_pack(tmp_path / "game", {"data/lib/function/old/own.mcfunction": "say own\n"},
+                      {**meta(61), "filter": {"block": [{"namespace": "lib", "path": "function/old/.*"}]}})
+    loaded = load_packs([lib, game])
+    assert sorted(loaded.functions) == ["lib:keep", "lib:old/own", "other:old/b"]
+    assert sorted(load_packs([game, lib]).functions) == [
+        "lib:keep", "lib:old/a", "lib:old/own", "other:old/b"]
+
+
+def test_filter_with_bad_regex_is_diagnosed(tmp_path):
+    root = write_pack(tmp_path / "p", {}, {**meta(61), "filter": {"block": [{"path": "function/("}]}})
+    [error] = load_packs([root]).errors
+    assert "not a valid regular expression" in error.message
