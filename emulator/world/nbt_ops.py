@@ -72,25 +72,43 @@ def numeric_value(tag) -> float:
     return float(tag)
 
 
+# The recursive helpers below use plain loops (one frame per level) so that NBT nested to the
+# game's limit of 512 levels stays within Python's default recursion limit.
+
+
 def tags_equal(a, b) -> bool:
     """``Tag.equals``: same tag type and equal content (floats compare with ``==``, so NaN != NaN)."""
     if type(a) is not type(b):
         return False
     if isinstance(a, dict):
-        return a.keys() == b.keys() and all(tags_equal(a[k], b[k]) for k in a)
-    if isinstance(a, ARRAY_TYPES):
-        return list(a) == list(b)
-    if isinstance(a, list):
-        return len(a) == len(b) and all(tags_equal(x, y) for x, y in zip(a, b))
+        if a.keys() != b.keys():
+            return False
+        for key, value in a.items():
+            if not tags_equal(value, b[key]):
+                return False
+        return True
+    if isinstance(a, list) and not isinstance(a, ARRAY_TYPES):
+        if len(a) != len(b):
+            return False
+        for x, y in zip(a, b):
+            if not tags_equal(x, y):
+                return False
+        return True
     return a == b
 
 
 def copy_tag(tag):
     """A deep copy that keeps every tag class."""
     if isinstance(tag, dict):
-        return type(tag)((k, copy_tag(v)) for k, v in tag.items())
+        copy = type(tag)()
+        for key, value in tag.items():
+            copy[key] = copy_tag(value)
+        return copy
     if isinstance(tag, list):
-        return type(tag)(copy_tag(v) for v in tag)
+        copy = type(tag)()
+        for value in tag:
+            copy.append(copy_tag(value))
+        return copy
     return tag
 
 
@@ -103,15 +121,24 @@ def compare_nbt(pattern, actual, partial_lists: bool = True) -> bool:
     if actual is None or type(pattern) is not type(actual):
         return False
     if isinstance(pattern, dict):
-        return len(actual) >= len(pattern) and all(
-            compare_nbt(v, actual.get(k), partial_lists) for k, v in pattern.items()
-        )
+        if len(actual) < len(pattern):
+            return False
+        for key, value in pattern.items():
+            if not compare_nbt(value, actual.get(key), partial_lists):
+                return False
+        return True
     if isinstance(pattern, List) and partial_lists:
         if not pattern:
             return not actual
         if len(actual) < len(pattern):
             return False
-        return all(any(compare_nbt(p, a, partial_lists) for a in actual) for p in pattern)
+        for wanted in pattern:
+            for candidate in actual:
+                if compare_nbt(wanted, candidate, partial_lists):
+                    break
+            else:
+                return False
+        return True
     return tags_equal(pattern, actual)
 
 

@@ -255,3 +255,13 @@ def test_nothing_found_prefix_with_parsed_paths(text, prefix):
     with pytest.raises(CommandFailure) as err:
         nbt_ops.get(root, _parsed(text))
     assert err.value.message == f"Found no elements matching {prefix}"
+
+
+def test_nesting_up_to_the_limit_is_handled():
+    # A value nested 510 deep under a 1-node path is allowed (isTooDeep counts from the path depth).
+    deep = Int(0)
+    for _ in range(510):
+        deep = C(x=deep)
+    root = C()
+    assert nbt_ops.set_path(root, path("a", "a"), deep) == 1
+    assert nbt_ops.tags_equal(root["a"], deep) and nbt_ops.compare_nbt(deep, root["a"])
