@@ -96,8 +96,21 @@ def conditions(draw, callees: list[str]) -> str:
     return f"{word} function {draw(st.sampled_from(callees))}"
 
 
+# Stages that change the context but not the scores (``as @e`` finds no entity: 0 contexts)
+MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
+
+
 @st.composite
-def commands(draw, callees: list[str]) -> str:
+def stage_chains(draw, callees: list[str], modifiers: bool) -> str:
+    """1 to 3 execute stages: conditions, and context modifiers when ``modifiers``."""
+    stage = conditions(callees)
+    if modifiers:
+        stage = st.one_of(stage, st.sampled_from(MODIFIERS))
+    return " ".join(draw(st.lists(stage, min_size=1, max_size=3)))
+
+
+@st.composite
+def commands(draw, callees: list[str], modifiers: bool = False) -> str:
     """One line of a function that may call ``callees``."""
     simple = score_commands()
     call = st.sampled_from(callees).map(lambda f: f"function {f}") if callees else simple
@@ -108,7 +121,7 @@ def commands(draw, callees: list[str]) -> str:
     if kind == "call":
         return draw(call)
     if kind == "if":
-        return f"execute {draw(conditions(callees))} run {draw(inner)}"
+        return f"execute {draw(stage_chains(callees, modifiers))} run {draw(inner)}"
     if kind == "store":
         what = draw(st.sampled_from(("result", "success")))
         return f"execute store {what} score {draw(holders)} {draw(objectives)} run {draw(inner)}"
@@ -116,7 +129,7 @@ def commands(draw, callees: list[str]) -> str:
         # `if function` must be followed by more (ExecuteCommand registers it with fork only)
         return f"execute {draw(conditions([]))}"
     ret = draw(st.sampled_from(("value", "fail", "run")))
-    guard = f"execute {draw(conditions(callees))} run " if draw(st.booleans()) else ""
+    guard = f"execute {draw(stage_chains(callees, modifiers))} run " if draw(st.booleans()) else ""
     if ret == "value":
         return f"{guard}return {draw(ints)}"
     if ret == "fail":
@@ -125,13 +138,14 @@ def commands(draw, callees: list[str]) -> str:
 
 
 @st.composite
-def programs(draw, max_functions: int = 4, max_lines: int = 8) -> Program:
+def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool = False) -> Program:
+    """``modifiers``: execute chains may hold context modifiers (positioned, align, in, as @e ...)."""
     count = draw(st.integers(1, max_functions))
     names = [f"t:f{i}" for i in range(count)]
     functions: dict[str, str] = {}
     for i, name in enumerate(names):
         callees = names[i + 1:] + ["t:loop"]
-        lines = draw(st.lists(commands(callees), min_size=1, max_size=max_lines))
+        lines = draw(st.lists(commands(callees, modifiers), min_size=1, max_size=max_lines))
         if i == 0:
             lines = ["scoreboard objectives add o dummy", "scoreboard objectives add p dummy",
                      f"scoreboard players set #n p {draw(st.integers(0, 6))}"] + lines

@@ -120,7 +120,17 @@ CASES = [
     # ... and a callee that never returns makes the caller fail (FallthroughTask)
     ("return_run_function_no_return", "return run function t:plain\nscoreboard players set #after o 1",
      {("#after", "o"): None, ("#plain", "o"): 1}, 0),
+    # a redirect stage before a custom command changes nothing about it (BuildContexts)
+    ("function_after_modifier", "execute align xyz run function t:plain", {("#plain", "o"): 1}, ...),
+    ("return_after_modifier", "execute anchored eyes run return 3", {}, 3),
+    ("return_run_function_after_modifier", "execute in minecraft:the_nether run return run function t:five", {}, 5),
+    ("if_function_after_modifier", "execute positioned 0 0 0 if function t:five run scoreboard players add #if o 1",
+     {("#if", "o"): 1}, ...),
+    ("store_function_after_modifier", "execute store result score #r o positioned 1 1 1 run function t:five",
+     {("#r", "o"): 5}, ...),
 ]
+# The VM runs these host-side and does not handle function/return there yet.
+VM_BUGS = {c[0] for c in CASES if c[0].endswith("_after_modifier")}
 
 HELPERS = {
     "t:plain": "scoreboard players add #plain o 1",
@@ -129,8 +139,16 @@ HELPERS = {
 }
 
 
-@pytest.mark.parametrize("backend", BACKENDS)
-@pytest.mark.parametrize("case_id, body, expected, result", CASES, ids=[c[0] for c in CASES])
+def _params():
+    for case in CASES:
+        for backend in BACKENDS:
+            marks = ()
+            if backend == "numba" and case[0] in VM_BUGS:
+                marks = pytest.mark.xfail(strict=True, reason="VM host fallback: function/return after a context modifier")
+            yield pytest.param(backend, *case, marks=marks, id=f"{case[0]}-{backend}")
+
+
+@pytest.mark.parametrize("backend, case_id, body, expected, result", list(_params()))
 def test_edge_case(tmp_path, backend, case_id, body, expected, result):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
     outcome = run_root(backend, pack, "t:main")
