@@ -153,7 +153,7 @@ def _references(node: object) -> Iterator[tuple[str, bool, str]]:
         yield node.function, node.is_tag, "schedule function"
     elif isinstance(node, ast.IfFunction):
         yield node.function, node.is_tag, "execute if function"
-    elif isinstance(node, ast.MacroLine) and "$(" not in node.template:
+    elif isinstance(node, ast.MacroLine):  # ids with a $(placeholder) do not match the pattern
         for match in _MACRO_FUNCTION.finditer(node.template):
             name = match.group(1)
             yield name.removeprefix("#"), name.startswith("#"), "macro"

@@ -109,6 +109,16 @@ def test_unreferenced_functions_are_infos(tmp_path):
     assert result.of("error") == [] and result.of("warning") == []
 
 
+def test_functions_named_in_macro_lines_are_referenced(tmp_path):
+    root = write(tmp_path / "p", {**LOAD,
+        fn("load"): "function a:m {v: 1, name: x}\n",
+        fn("m"): "$function a:helper {v: $(v)}\n$function a:$(name)\n$function a:pre_$(name)\n",
+        fn("helper"): "say h\n", fn("pre_"): "say never\n"})
+    result = check_packs([root])
+    assert messages(result, "info") == [
+        "function a:pre_ is never referenced (no tag, function, schedule or advancement reward names it)"]
+
+
 def test_functions_in_a_failed_tag_are_not_unreferenced(tmp_path):
     root = write(tmp_path / "p", {fn("x"): "say x\n", "data/minecraft/tags/function/tick.json":
                                   '{"values": ["a:x", "a:missing"]}'})
