@@ -38,7 +38,7 @@ import numpy as np
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import rotation
 from emulator.world.errors import CommandFailure
-from emulator.world.nbt_ops import copy_tag
+from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 
 F32 = np.float32
 MAX_TAGS = 1024
@@ -257,6 +257,9 @@ def entity_nbt(entity: Entity) -> Compound:
 
 
 _MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id")
+# Saved by every entity, read back with typed getters (Entity.saveWithoutId / Entity.load).
+BASE_FIELDS = {"FallDistance": Float, "Fire": Short, "Air": Short, "OnGround": Byte,
+               "Invulnerable": Byte, "PortalCooldown": Int}
 
 
 def _typed_list(nbt: Compound, key: str, element: type) -> list:
@@ -271,8 +274,33 @@ def _component(values: list, i: int) -> float:
     return float(values[i]) if i < len(values) else 0.0
 
 
+def _base_fields(nbt: Compound, previous: Compound) -> Compound:
+    """The fields ``Entity.load`` reads with typed getters and ``saveWithoutId`` writes back: a
+    missing or non-numeric value reads as 0 (``Air`` only changes when present), numbers are
+    converted to the saved type (``getShort``, ``getBoolean`` ...)."""
+    fields = Compound()
+    for key, kind in BASE_FIELDS.items():
+        value = nbt.get(key)
+        if key == "Air" and value is None:
+            fields[key] = previous.get(key, Short(300))
+        elif not is_numeric(value):
+            fields[key] = kind(0)
+        elif kind is Float:
+            fields[key] = Float(float(F32(numeric_value(value))))
+        elif kind is Byte:
+            fields[key] = Byte(1 if narrow(value, Byte) != 0 else 0)  # getBoolean: getByte() != 0
+        else:
+            fields[key] = kind(narrow(value, kind))
+    return fields
+
+
 def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
-    """``Entity.load``: read a full compound back into the entity."""
+    """``Entity.load``: read a full compound back into the entity.
+
+    Pos (clamped), Motion (components over 10 dropped) and Rotation (finite values, % 360) read
+    0 when missing or of the wrong list type; ``Tags`` and ``CustomName`` only change when present
+    (a ``Tags`` list of another type clears the tags); every other field is kept as given.
+    """
     pos = _typed_list(nbt, "Pos", Double)
     x, y, z = (_component(pos, i) for i in range(3))
     clamp = lambda v, lim: max(-lim, min(v, lim))  # noqa: E731 - Mth.clamp(double)
@@ -286,9 +314,13 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     if not keep_uuid and isinstance(uuid, IntArray) and len(uuid) == 4:
         entity.uuid = tuple(int(v) for v in uuid)
     name = nbt.get("CustomName")
-    entity.custom_name = str(name) if isinstance(name, String) else None
-    entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
-    entity.data = Compound((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED)
+    if isinstance(name, String):
+        entity.custom_name = str(name)
+    if isinstance(nbt.get("Tags"), List):
+        entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
+    data = _base_fields(nbt, entity.data)
+    data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED and k not in BASE_FIELDS)
+    entity.data = data
 
 
 def modify_entity(entity: Entity, change: Callable[[Compound], object]):

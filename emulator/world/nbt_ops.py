@@ -23,7 +23,8 @@ Public functions
 - ``data_merge(root, patch)``: ``data merge`` in place (returns 1) or fails "Nothing changed".
 - ``merge_compounds(target, patch)``: ``CompoundTag.merge`` (recursive into compounds) in place.
 - ``string_source(values, start=None, end=None)``: the ``string`` source of ``data modify``.
-- ``numeric_value(tag)``: ``NumericTag.getAsDouble``; ``is_numeric(tag)``.
+- ``numeric_value(tag)``: ``NumericTag.getAsDouble``; ``narrow(tag, Byte|Short|Int|Long)``:
+  ``getAsByte/Short/Int/Long``; ``is_numeric(tag)``.
 
 A path is an :class:`mcfunction_parser.ast.NbtPath` (``nodes`` and ``text``).
 Source: decompiled 1.21 ``commands/arguments/NbtPathArgument.java``, ``nbt/NbtUtils.java``,
@@ -171,10 +172,10 @@ def merge_compounds(target: Compound, patch: Compound) -> Compound:
 
 def _array_item(array, tag):
     """The value an array stores for a numeric tag (``getAsByte``/``getAsInt``/``getAsLong``)."""
-    return type_of_array_item(array)(_narrow(tag, type_of_array_item(array)))
+    return type_of_array_item(array)(narrow(tag, type_of_array_item(array)))
 
 
-def _narrow(tag, target: type) -> int:
+def narrow(tag, target: type) -> int:
     """``NumericTag.getAsByte/Short/Int/Long``: integers keep their low bits; a float or double goes
     through ``Mth.floor`` (``getAsLong``: ``(long) f`` for floats, ``(long) Math.floor(d)`` for doubles)."""
     if isinstance(tag, (Float, Double)):

@@ -354,3 +354,24 @@ def test_selectors_from_the_parser(world):
     }
     for text, expected in cases.items():
         assert names(select(store, _parsed_selector(text), src), ents) == expected, text
+
+
+def test_load_keeps_tags_and_name_when_missing_and_types_base_fields():
+    # Entity.load: Tags / CustomName only change when present; Fire is read with getShort,
+    # OnGround with getBoolean, a missing Air is kept, a missing Fire reads 0.
+    store = EntityStore()
+    e = store.summon("minecraft:marker", (0, 0, 0), Compound(Tags=List([String("a")]), CustomName=String('"Bob"')))
+    nbt = entity_nbt(e)
+    del nbt["Tags"], nbt["CustomName"], nbt["Air"], nbt["Fire"]
+    nbt["OnGround"] = Int(7)
+    nbt["FallDistance"] = Double(0.1)
+    load_nbt(e, nbt)
+    assert e.tags == {"a"} and e.display_name == "Bob"
+    view = entity_nbt(e)
+    assert view["Air"] == 300 and view["Fire"] == 0 and type(view["Fire"]).__name__ == "Short"
+    assert view["OnGround"] == 1 and type(view["OnGround"]).__name__ == "Byte"
+    assert view["FallDistance"] == float(F32(0.1)) and type(view["FallDistance"]) is Float
+    nbt = entity_nbt(e)
+    nbt["Tags"] = List()
+    load_nbt(e, nbt)
+    assert e.tags == set()

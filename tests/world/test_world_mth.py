@@ -196,7 +196,7 @@ def test_store_casts_match_the_jvm(java):
 
 def test_numeric_tag_narrowing_matches_the_jvm(java):
     # NumericTag.getAsByte/Short/Int/Long for doubles and floats (what arrays store and paths read).
-    from emulator.world.nbt_ops import _narrow
+    from emulator.world.nbt_ops import narrow
     from mcfunction_parser.nbt import Byte, Int, Long, Short
 
     rng = np.random.default_rng(5)
@@ -205,7 +205,7 @@ def test_numeric_tag_narrowing_matches_the_jvm(java):
     answers = java([f"narrow {_hd(v)}" for v in values])
     ours = []
     for v in values:
-        as_double = [_narrow(Double(v), t) for t in (Byte, Short, Int, Long)]
-        as_float = [_narrow(Float(float(mth.f32(v))), t) for t in (Byte, Short, Int, Long)]
+        as_double = [narrow(Double(v), t) for t in (Byte, Short, Int, Long)]
+        as_float = [narrow(Float(float(mth.f32(v))), t) for t in (Byte, Short, Int, Long)]
         ours.append(" ".join(str(x) for x in as_double + as_float))
     assert ours == answers
