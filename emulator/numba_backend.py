@@ -43,6 +43,7 @@ class NumbaBackend:
 
     def __init__(self) -> None:
         self.program: Program | None = None
+        self.counting = True  # per-instruction counters; bench/bench_vm.py turns them off to time them
 
     # ------------------------------------------------------------------ loading
     def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
@@ -84,6 +85,7 @@ class NumbaBackend:
         r[vm.R_ALIVE] = 1
         r[vm.R_CALLFN] = fn
         r[vm.R_SANITIZE] = int(self.sanitize)
+        r[vm.R_COUNTING] = int(self.counting)
         cut = self._drive(limit)
         self._flush_overflows()
         result = None

@@ -2,8 +2,8 @@
 per tick.
 
 ``self`` of a function is the cost charged by its own commands (a ``function`` call's own charge
-belongs to the calling line); ``total`` adds its callees, counted once per outermost activation
-(numba backend only). Macro instances (``ns:f#3``) fold into their function.
+belongs to the calling line; a root's own call is on no line); ``total`` adds its callees,
+counted once per outermost activation (numba backend only). Macro instances (``ns:f#3``) fold into their function.
 """
 from __future__ import annotations
 

@@ -72,8 +72,8 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_ARG, R_CTX = range(7, 16)
-R_SANITIZE, R_ERRPC = 16, 17
-N_REGS = 18
+R_SANITIZE, R_ERRPC, R_COUNTING = 16, 17, 18
+N_REGS = 19
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA = range(9)
 F_WIDTH = 9
@@ -117,6 +117,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     acc_sum = regs[R_ACC_SUM]
     abort = regs[R_ABORT]
     sanitize = regs[R_SANITIZE] != 0
+    counting = regs[R_COUNTING] != 0  # off only to measure the counters' cost
     novf = regs[R_NOVF]
     status = ST_DONE
     err = 0
@@ -131,7 +132,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 break
             cost = code[pc, 1]
             quota -= cost
-            counts[pc] += cost
+            if counting:
+                counts[pc] += cost
             alive = 1
             has = 0
             abort = code[pc, 2]
@@ -144,7 +146,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 status = ST_CUT
                 break
             quota -= 1
-            counts[pc] += 1
+            if counting:
+                counts[pc] += 1
             has = 1
             ok = 1
             if op == OP_RESETALL:
@@ -265,7 +268,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                     status = ST_CUT
                     break
                 quota -= 1
-                counts[pc] += 1
+                if counting:
+                    counts[pc] += 1
             h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
             o = code[pc, 2] if op == OP_IFMATCH else code[pc, 3]
             bad = alive_obj[o] == 0
@@ -344,7 +348,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 status = ST_GROW
                 break
             quota -= 1
-            counts[pc] += 1
+            if counting:
+                counts[pc] += 1
             frames[depth, F_RETPC] = pc + 1
             frames[depth, F_FN] = fn
             frames[depth, F_ALIVE] = alive
@@ -427,7 +432,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 break
             cost = code[pc, 1]
             quota -= cost
-            counts[pc] += cost
+            if counting:
+                counts[pc] += cost
             pc += 1
         elif op == OP_FAIL:
             if alive == 0:
@@ -438,7 +444,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 break
             if code[pc, 3]:
                 quota -= 1
-                counts[pc] += 1
+                if counting:
+                    counts[pc] += 1
             has = 1
             ok = 0
             val = 0
@@ -474,7 +481,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                     status = ST_CUT
                     break
                 quota -= 1
-                counts[pc] += 1
+                if counting:
+                    counts[pc] += 1
             status = ST_HOST
             break
         elif op == OP_MACRO:

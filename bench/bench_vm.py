@@ -1,0 +1,125 @@
+"""VM benchmark, figures side by side in one run:
+
+- VM throughput: commands per second on a loop-heavy function (1000 scoreboard operations per
+  call, called in a counted recursive loop) with the per-instruction counters on and off, and
+  with the overflow sanitizer on;
+- the same program on the reference backend (fewer iterations) and the speed ratio;
+- the first call in a new process with a warm numba cache (subprocess), minus a second call;
+- the host round trip: a function of host commands (``time query gametime``), per command.
+
+Usage: python bench/bench_vm.py [--quick]
+"""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import tempfile
+import textwrap
+import time
+from pathlib import Path
+
+BODY_OPS = 1000
+HOST_OPS = 2000
+
+
+def write_pack(root: Path) -> Path:
+    functions = root / "data" / "b" / "function"
+    functions.mkdir(parents=True)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "bench"}}))
+    # values stay small (every product is reduced mod #d), so the sanitizer path reports nothing
+    ops = ["scoreboard players operation #a o += #b o", "scoreboard players operation #a o %= #d o",
+           "scoreboard players operation #b o *= #c o", "scoreboard players operation #b o %= #d o",
+           "scoreboard players add #a o 7", "execute if score #a o matches 0.. run scoreboard players remove #b o 3"]
+    body = "\n".join(ops[i % len(ops)] for i in range(BODY_OPS))
+    (functions / "setup.mcfunction").write_text(
+        "scoreboard objectives add o dummy\ngamerule maxCommandChainLength 2147483647\n"
+        "scoreboard players set #a o 1\nscoreboard players set #b o 3\nscoreboard players set #c o 5\n"
+        "scoreboard players set #d o 1000003\n")
+    (functions / "body.mcfunction").write_text(body + "\n")
+    (functions / "loop.mcfunction").write_text(
+        "function b:body\nscoreboard players remove #i o 1\nexecute if score #i o matches 1.. run function b:loop\n")
+    (functions / "host.mcfunction").write_text("time query gametime\n" * HOST_OPS)
+    return root
+
+
+def timed_loop(pack: Path, backend: str, iterations: int, sanitize: bool = False, counting: bool = True) -> tuple[float, int]:
+    """(seconds, commands) of one root running the loop ``iterations`` times (after a warm-up)."""
+    from emulator import Emulator
+
+    emu = Emulator(backend=backend, sanitize=sanitize)
+    emu.load(pack)
+    if hasattr(emu.backend, "counting"):
+        emu.backend.counting = counting
+    emu.call("b:setup")
+    emu.set_score("#i", "o", 1)
+    emu.call("b:loop")  # warm-up: JIT compilation or cache load
+    emu.set_score("#i", "o", iterations)
+    start = time.perf_counter()
+    result = emu.runtime.call("b:loop")
+    return time.perf_counter() - start, result.cost
+
+
+def host_round_trip(pack: Path) -> float:
+    """Microseconds per host command, VM exit and resume included."""
+    from emulator import Emulator
+
+    emu = Emulator()
+    emu.load(pack)
+    emu.call("b:setup")
+    emu.call("b:host")
+    start = time.perf_counter()
+    emu.call("b:host")
+    return (time.perf_counter() - start) / HOST_OPS * 1e6
+
+
+def first_call_overhead(pack: Path) -> tuple[float, float]:
+    """(first call, second call) seconds in a fresh process, after a run that warmed the cache.
+    The first call pays for loading the VM's machine code from numba's cache."""
+    script = textwrap.dedent(f"""
+        import time
+        from emulator import Emulator
+        emu = Emulator(); emu.load({str(pack)!r})
+        t0 = time.perf_counter(); emu.call("b:setup"); t1 = time.perf_counter(); emu.call("b:setup")
+        t2 = time.perf_counter()
+        print(t1 - t0, t2 - t1)
+    """)
+    subprocess.run([sys.executable, "-c", script], check=True, capture_output=True)  # warm the cache
+    out = subprocess.run([sys.executable, "-c", script], check=True, capture_output=True, text=True).stdout
+    first, second = (float(x) for x in out.split())
+    return first, second
+
+
+def main() -> None:
+    quick = "--quick" in sys.argv
+    vm_iterations = 5_000 if quick else 50_000
+    ref_iterations = 20 if quick else 100
+    with tempfile.TemporaryDirectory() as tmp:
+        pack = write_pack(Path(tmp) / "pack")
+        rows = []
+        t, n = timed_loop(pack, "numba", vm_iterations)
+        vm_rate = n / t
+        rows.append(("VM, counters on", n, t, vm_rate))
+        t, n = timed_loop(pack, "numba", vm_iterations, counting=False)
+        off_rate = n / t
+        rows.append(("VM, counters off", n, t, off_rate))
+        t, n = timed_loop(pack, "numba", vm_iterations, sanitize=True)
+        rows.append(("VM, sanitizer on", n, t, n / t))
+        t, n = timed_loop(pack, "python", ref_iterations)
+        ref_rate = n / t
+        rows.append(("reference backend", n, t, ref_rate))
+        host_us = host_round_trip(pack)
+        first, second = first_call_overhead(pack)
+
+    print(f"{'run':<22}{'commands':>14}{'seconds':>10}{'commands/s':>16}")
+    for name, n, t, rate in rows:
+        print(f"{name:<22}{n:>14,}{t:>10.3f}{rate:>16,.0f}")
+    print(f"VM / reference speed: {vm_rate / ref_rate:,.0f}x")
+    print(f"counters' overhead: {(off_rate / vm_rate - 1) * 100:+.1f} % time")
+    print(f"host command round trip: {host_us:.2f} us per command (VM exit, Python handler, resume)")
+    print(f"first call in a new process (warm cache): {first:.3f} s; second call {second * 1e3:.2f} ms; "
+          f"added {first - second:.3f} s")
+
+
+if __name__ == "__main__":
+    main()
