@@ -260,6 +260,8 @@ _MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id")
 # Saved by every entity, read back with typed getters (Entity.saveWithoutId / Entity.load).
 BASE_FIELDS = {"FallDistance": Float, "Fire": Short, "Air": Short, "OnGround": Byte,
                "Invulnerable": Byte, "PortalCooldown": Int}
+# Read with getBoolean and saved only when true (as 1b).
+FLAG_FIELDS = ("CustomNameVisible", "Silent", "NoGravity", "Glowing", "HasVisualFire")
 
 
 def _typed_list(nbt: Compound, key: str, element: type) -> list:
@@ -291,6 +293,9 @@ def _base_fields(nbt: Compound, previous: Compound) -> Compound:
             fields[key] = Byte(1 if narrow(value, Byte) != 0 else 0)  # getBoolean: getByte() != 0
         else:
             fields[key] = kind(narrow(value, kind))
+    for key in FLAG_FIELDS:
+        if is_numeric(nbt.get(key)) and narrow(nbt[key], Byte) != 0:
+            fields[key] = Byte(1)
     return fields
 
 
@@ -319,7 +324,7 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     if isinstance(nbt.get("Tags"), List):
         entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
     data = _base_fields(nbt, entity.data)
-    data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED and k not in BASE_FIELDS)
+    data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED and k not in BASE_FIELDS and k not in FLAG_FIELDS)
     entity.data = data
 
 

@@ -365,12 +365,14 @@ def test_load_keeps_tags_and_name_when_missing_and_types_base_fields():
     del nbt["Tags"], nbt["CustomName"], nbt["Air"], nbt["Fire"]
     nbt["OnGround"] = Int(7)
     nbt["FallDistance"] = Double(0.1)
+    nbt["NoGravity"], nbt["Silent"] = Byte(1), Byte(0)
     load_nbt(e, nbt)
     assert e.tags == {"a"} and e.display_name == "Bob"
     view = entity_nbt(e)
     assert view["Air"] == 300 and view["Fire"] == 0 and type(view["Fire"]).__name__ == "Short"
     assert view["OnGround"] == 1 and type(view["OnGround"]).__name__ == "Byte"
     assert view["FallDistance"] == float(F32(0.1)) and type(view["FallDistance"]) is Float
+    assert view["NoGravity"] == 1 and "Silent" not in view  # flags are saved only when true
     nbt = entity_nbt(e)
     nbt["Tags"] = List()
     load_nbt(e, nbt)
