@@ -15,6 +15,7 @@ INT_MIN = -(2**31)
 INT_MAX = 2**31 - 1
 
 WORD = re.compile(r"[^ ]*")
+_SPACED_WORD = re.compile(r" ([^ ]+)")
 # Brigadier StringReader.isAllowedInUnquotedString
 UNQUOTED = re.compile(r"[0-9A-Za-z_\-.+]*")
 # Brigadier StringReader.isAllowedNumber: digits, '-' and '.'
@@ -146,6 +147,15 @@ class Reader:
             return word
         options = "|".join(sorted(choices))
         self.fail(f"expected {what} ({options}), got {show(word)}", start)
+
+    def keyword(self, choices, what: str) -> str:
+        """The space before a required literal and the literal itself (one of ``choices``)."""
+        m = _SPACED_WORD.match(self.text, self.pos)
+        if m is not None and m.group(1) in choices:
+            self.pos = m.end()
+            return m.group(1)
+        self.space(what)
+        return self.literal(choices, what)
 
     def unquoted(self) -> str:
         m = UNQUOTED.match(self.text, self.pos)

@@ -6,12 +6,16 @@ players-only selectors).
 """
 from __future__ import annotations
 
+import re
+
 from .arguments import float_range, int_range, is_uuid, json_span, resource_location
 from .ast import FloatRange, NameTarget, Selector, SelectorArg
+from .features import FEATURES, feature_problem
 from .reader import Reader, show
 from .snbt import compound
 
 VARIABLES = frozenset("spaern")
+AT_N = FEATURES["selector @n"][0]
 _SORTS = frozenset(("nearest", "furthest", "random", "arbitrary"))
 _GAMEMODES = frozenset(("survival", "creative", "adventure", "spectator"))
 _NEGATABLE = frozenset(("name", "gamemode", "team", "type", "tag", "nbt", "predicate"))
@@ -23,55 +27,83 @@ _PLAYER_TYPES = frozenset(("minecraft:player",))
 NAME_MAX = 16
 
 
+# A selector without nested brackets or quotes: its parse depends only on its text, so it is
+# cached (without locations) and rebuilt on a hit; real packs repeat the same few selectors.
+_PLAIN_SELECTOR = re.compile(r"@[a-z]\[[^\[\]\"']*\]")
+_CACHE: dict[str, tuple] = {}
+_CACHE_MAX = 4096
+_OPTION_KEY = re.compile(r"([a-z_]+)[ \t\r\n]*=[ \t\r\n]*")
+_AFTER_VALUE = re.compile(r"[ \t\r\n]*(,[ \t\r\n]*)?")
+
+
 def selector(r: Reader) -> Selector:
-    loc = r.loc()
     start = r.pos
-    variable = r.text[start + 1:start + 2]
+    text = r.text
+    variable = text[start + 1:start + 2]
     if variable not in VARIABLES or not variable:
-        r.fail(f"unknown selector type {show(r.text[start:start + 2])} (expected @s @e @a @p @r @n)", start)
-    if variable == "n" and r.version < (1, 21, 0):
-        from .features import feature_problem
-
+        r.fail(f"unknown selector type {show(text[start:start + 2])} (expected @s @e @a @p @r @n)", start)
+    if variable == "n" and r.version < AT_N:
         r.fail(feature_problem("selector @n", r.version), start)
-    r.pos = start + 2
-    if r.peek() != "[":
+    loc = r.loc_at(start)
+    if not text.startswith("[", start + 2):
+        r.pos = start + 2
         return Selector(variable, (), loc)
-    return Selector(variable, _options(r, variable), loc)
+    plain = _PLAIN_SELECTOR.match(text, start)
+    if plain is not None:
+        cached = _CACHE.get(plain.group())
+        if cached is not None:
+            r.pos = plain.end()
+            loc_at = r.loc_at
+            return Selector(variable, tuple(SelectorArg(key, value, negated, loc_at(start + offset))
+                                            for key, value, negated, offset in cached), loc)
+    r.pos = start + 2
+    args, offsets = _options(r, variable)
+    if plain is not None and r.pos == plain.end() and not any(a.key == "nbt" for a in args):
+        if len(_CACHE) >= _CACHE_MAX:
+            _CACHE.clear()
+        _CACHE[plain.group()] = tuple((a.key, a.value, a.negated, o - start) for a, o in zip(args, offsets))
+    return Selector(variable, args, loc)
 
 
-def _options(r: Reader, variable: str) -> tuple[SelectorArg, ...]:
+def _options(r: Reader, variable: str) -> tuple[tuple[SelectorArg, ...], list[int]]:
+    """The ``[...]`` options, and the offset of each option's key."""
     r.pos += 1  # '['
     args: list[SelectorArg] = []
+    offsets: list[int] = []
+    text = r.text
     r.skip_ws()
-    while r.more() and r.peek() != "]":
+    while r.pos < r.end and text[r.pos] != "]":
         key_pos = r.pos
-        key_loc = r.loc()
-        key = r.string()
+        m = _OPTION_KEY.match(text, key_pos)
+        if m is not None:
+            key = m.group(1)
+            r.pos = m.end()
+        else:
+            key = r.string()
         if not key:
             r.fail(f"expected a selector option, got {show(r.rest_word()[:1])}", key_pos)
         if key not in _PARSERS:
             r.fail(f"unknown selector option {show(key)}", key_pos)
-        r.skip_ws()
-        r.expect("=")
-        r.skip_ws()
+        if m is None:
+            r.skip_ws()
+            r.expect("=")
+            r.skip_ws()
         negated = False
-        if key in _NEGATABLE and r.peek() == "!":
+        if key in _NEGATABLE and text.startswith("!", r.pos):
             negated = True
             r.pos += 1
             r.skip_ws()
         _check_applicable(r, variable, key, negated, args, key_pos)
-        args.append(SelectorArg(key, _PARSERS[key](r), negated, key_loc))
-        r.skip_ws()
-        if r.peek() == ",":
-            r.pos += 1
-            r.skip_ws()
-            continue
-        if r.peek() != "]":
+        args.append(SelectorArg(key, _PARSERS[key](r), negated, r.loc_at(key_pos)))
+        offsets.append(key_pos)
+        after = _AFTER_VALUE.match(text, r.pos)
+        r.pos = after.end()
+        if after.group(1) is None and r.pos < r.end and text[r.pos] != "]":
             r.fail(f"expected ',' or ']' after selector option, got {show(r.rest_word())}")
-    if not r.more():
+    if r.pos >= r.end:
         r.fail("unclosed selector: expected ']'")
     r.pos += 1
-    return tuple(args)
+    return tuple(args), offsets
 
 
 def _check_applicable(r: Reader, variable: str, key: str, negated: bool, args: list[SelectorArg], pos: int):

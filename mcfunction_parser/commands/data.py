@@ -42,8 +42,7 @@ def _modify(r: Reader, loc):
     target = data_target(r)
     r.space("NBT path")
     path = nbt_path(r)
-    r.space("modification mode")
-    mode = r.literal(_MODES, "modification mode")
+    mode = r.keyword(_MODES, "modification mode")
     index = None
     if mode == "insert":
         r.space("index")
@@ -81,8 +80,7 @@ _ACTIONS = {"get": _get, "merge": _merge, "modify": _modify, "remove": _remove}
 
 
 def data(r: Reader, loc) -> ast.Command:
-    r.space("get, merge, modify or remove")
-    action = r.literal(_ACTIONS, "data action")
+    action = r.keyword(_ACTIONS, "data action")
     r.space("entity, storage or block")
     return _ACTIONS[action](r, loc)
 

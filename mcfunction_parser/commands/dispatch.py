@@ -12,24 +12,26 @@ REGISTRY: dict = {}
 
 
 @lru_cache(maxsize=64)
-def _available(version: tuple[int, int, int]) -> frozenset:
-    return frozenset(name for name in COMMANDS if command_problem(name, version) is None)
+def _table(version: tuple[int, int, int]) -> dict:
+    """The commands of ``version``: name -> (parser or None for generic commands, warning or None)."""
+    return {name: (REGISTRY.get(name), permission_warning(name))
+            for name in COMMANDS if command_problem(name, version) is None}
 
 
 def command(r: Reader) -> Command:
     """Parse the command starting at the cursor (the rest of the text)."""
     start = r.pos
     name = WORD.match(r.text, start).group()
-    if name not in _available(r.version):
+    entry = _table(r.version).get(name)
+    if entry is None:
         if not name:
             r.fail(f"expected a command, got {show(r.rest_word())}")
         r.fail(command_problem(name, r.version), start)
     loc = r.loc_at(start)
     r.pos = start + len(name)
-    warning = permission_warning(name)
+    parser, warning = entry
     if warning:
         r.warnings.append((warning, start))
-    parser = REGISTRY.get(name)
     if parser is not None:
         return parser(r, loc)
     r.pos = r.end

@@ -11,8 +11,7 @@ from ..snbt import compound
 def tag(r: Reader, loc) -> ast.Command:
     r.space("entities")
     who = target(r)
-    r.space("add, remove or list")
-    action = r.literal(("add", "remove", "list"), "tag action")
+    action = r.keyword(("add", "remove", "list"), "tag action")
     name = None
     if action != "list":
         r.space("tag name")

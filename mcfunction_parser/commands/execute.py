@@ -65,8 +65,7 @@ def _positioned(r, loc):
     if word == "over":
         _require(r, "execute positioned over", r.pos)
         r.pos += 4
-        r.space("heightmap")
-        return ast.ExPositionedOver(loc, r.literal(_HEIGHTMAPS, "heightmap"))
+        return ast.ExPositionedOver(loc, r.keyword(_HEIGHTMAPS, "heightmap"))
     return ast.ExPositioned(loc, vec3(r))
 
 
@@ -83,8 +82,7 @@ def _facing(r, loc):
         r.pos += 6
         r.space("entity")
         who = target(r)
-        r.space("anchor")
-        return ast.ExFacingEntity(loc, who, r.literal(_ANCHORS, "anchor"))
+        return ast.ExFacingEntity(loc, who, r.keyword(_ANCHORS, "anchor"))
     return ast.ExFacing(loc, vec3(r))
 
 
@@ -121,8 +119,7 @@ def _if_score(r, loc, negated):
     holder = score_holder(r)
     r.space("objective")
     obj = objective(r)
-    r.space("comparison or matches")
-    op = r.literal(_COMPARISONS + ("matches",), "comparison")
+    op = r.keyword(_COMPARISONS + ("matches",), "comparison")
     r.space("range" if op == "matches" else "score holder")
     if op == "matches":
         return ast.IfScoreMatches(loc, negated, holder, obj, int_range(r))
@@ -153,8 +150,7 @@ def _if_blocks(r, loc, negated):
     end = vec3(r, block=True)
     r.space("destination")
     dest = vec3(r, block=True)
-    r.space("all or masked")
-    return ast.IfBlocks(loc, negated, start, end, dest, r.literal(("all", "masked"), "mode"))
+    return ast.IfBlocks(loc, negated, start, end, dest, r.keyword(("all", "masked"), "mode"))
 
 
 def _if_function(r, loc, negated):
@@ -272,14 +268,12 @@ def _store(r, loc):
         return ast.StoreScore(loc, kind, holder, objective(r))
     if where == "bossbar":
         bar = resource_location(r, "bossbar")
-        r.space("value or max")
-        return ast.StoreBossbar(loc, kind, bar, r.literal(("value", "max"), "bossbar field"))
+        return ast.StoreBossbar(loc, kind, bar, r.keyword(("value", "max"), "bossbar field"))
     r.pos = start
     dest = data_target(r)
     r.space("NBT path")
     path = nbt_path(r)
-    r.space("type")
-    kind_type = r.literal(STORE_TYPES, "NBT type")
+    kind_type = r.keyword(STORE_TYPES, "NBT type")
     r.space("scale")
     return ast.StoreData(loc, kind, dest, path, kind_type, r.double(what="scale"))
 
@@ -295,16 +289,16 @@ _ALL = tuple(_SUBCOMMANDS) + ("run",)
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
     while True:
-        if not r.more() and subcommands and isinstance(subcommands[-1], ast.Condition):
+        if r.pos == r.end and subcommands and isinstance(subcommands[-1], ast.Condition):
             return ast.Execute(loc, tuple(subcommands), None)
-        r.space("subcommand")
-        sub_loc = r.loc()
-        name = r.literal(_ALL, "execute subcommand")
+        sub_loc = r.loc_at(r.pos + 1)
+        name = r.keyword(_ALL, "execute subcommand")
         r.space(name + " arguments" if name != "run" else "command")
         if name == "run":
             return ast.Execute(loc, tuple(subcommands), command(r))
-        subcommands.append(_SUBCOMMANDS[name](r, sub_loc))
-        if not r.more() and not isinstance(subcommands[-1], ast.Condition):
+        sub = _SUBCOMMANDS[name](r, sub_loc)
+        subcommands.append(sub)
+        if r.pos == r.end and not isinstance(sub, ast.Condition):
             r.fail(f"incomplete execute: expected another subcommand or 'run' after '{name}'")
 
 

@@ -55,8 +55,7 @@ def return_(r: Reader, loc) -> ast.Command:
 
 
 def schedule(r: Reader, loc) -> ast.Command:
-    r.space("function or clear")
-    action = r.literal(("function", "clear"), "schedule action")
+    action = r.keyword(("function", "clear"), "schedule action")
     r.space("function")
     if action == "clear":
         # a greedy string compared textually with the scheduled ids ("ns:path" or "#ns:path"),

@@ -56,8 +56,7 @@ def _require(r: Reader, feature: str, pos: int) -> None:
 
 
 def _objectives(r: Reader, loc) -> ast.Command:
-    r.space("objectives action")
-    action = r.literal(_OBJECTIVE_ACTIONS, "objectives action")
+    action = r.keyword(_OBJECTIVE_ACTIONS, "objectives action")
     return _OBJECTIVE_ACTIONS[action](r, loc)
 
 
@@ -120,8 +119,7 @@ _OBJECTIVE_ACTIONS = {
 
 
 def _players(r: Reader, loc) -> ast.Command:
-    r.space("players action")
-    action = r.literal(_PLAYER_ACTIONS, "players action")
+    action = r.keyword(_PLAYER_ACTIONS, "players action")
     return _PLAYER_ACTIONS[action](r, loc, action)
 
 
@@ -175,8 +173,7 @@ def _pl_operation(r, loc, action):
     targets = score_holder(r)
     r.space("objective")
     name = objective(r)
-    r.space("operation")
-    op = r.literal(OPERATIONS, "operation")
+    op = r.keyword(OPERATIONS, "operation")
     r.space("score holder")
     sources = score_holder(r)
     r.space("objective")
@@ -207,8 +204,7 @@ _PLAYER_ACTIONS = {
 
 
 def scoreboard(r: Reader, loc) -> ast.Command:
-    r.space("objectives or players")
-    branch = r.literal(("objectives", "players"), "scoreboard branch")
+    branch = r.keyword(("objectives", "players"), "scoreboard branch")
     return (_objectives if branch == "objectives" else _players)(r, loc)
 
 

@@ -66,8 +66,7 @@ def random(r: Reader, loc) -> ast.Command:
 
 
 def time(r: Reader, loc) -> ast.Command:
-    r.space("add, set or query")
-    action = r.literal(("add", "set", "query"), "time action")
+    action = r.keyword(("add", "set", "query"), "time action")
     r.space("time" if action != "query" else "daytime, gametime or day")
     if action == "query":
         query = r.literal(("daytime", "gametime", "day"), "time query")

@@ -58,7 +58,9 @@ def test_type_tag_keeps_hash():
     ("@e[sort=closest]", "sort type"),
     ("@e[gamemode=god]", "game mode"),
     ("@e[scores={x=5..1}]", "bigger than its maximum"),
-    ("@e[tag=a", "expected ',' or ']'"),
+    ("@e[tag=a", "unclosed selector"),
+    ("@e[tag=a tag=b]", "expected ',' or ']'"),
+    ("@e[tag=a,,tag=b]", "expected a selector option"),
     ("@e[limit=!1]", "expected limit"),
     ("@e[x=1..2]", "invalid number"),
 ])
@@ -79,3 +81,17 @@ def test_error_column_points_at_option():
 def test_at_n_needs_1_21():
     assert "1.21" in parse_err("kill @n", (1, 20, 6)).message
     parse_ok("kill @n")
+
+
+def test_repeated_selector_gets_its_own_locations():
+    first = _sel("@e[tag=a, limit=2]")
+    again = parse_ok("execute as @e[tag=a, limit=2] run kill").subcommands[0].targets
+    assert [(a.key, a.value) for a in first.args] == [(a.key, a.value) for a in again.args]
+    assert [a.loc.col for a in first.args] == [len("kill @e[") + 1, len("kill @e[tag=a, ") + 1]
+    assert [a.loc.col for a in again.args] == [len("execute as @e[") + 1, len("execute as @e[tag=a, ") + 1]
+    assert again.loc.col == len("execute as ") + 1
+
+
+def test_repeated_selector_still_checks_the_version():
+    parse_ok("kill @n[tag=a]")
+    assert "1.21" in parse_err("kill @n[tag=a]", (1, 20, 4)).message
