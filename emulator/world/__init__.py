@@ -4,6 +4,7 @@ Pure Python over plain values, callable from both backends (the numba VM's host 
 reference interpreter). Modules:
 - ``errors``: ``CommandFailure`` and the game's messages.
 - ``nbt_ops``: NBT paths, ``data get/merge/modify/remove``, partial NBT matching.
+- ``storage``: command storage (``data ... storage``) with the game's accessor semantics.
 - ``stores``: ``execute store ... TYPE SCALE`` casts and ``data get [SCALE]`` results.
 - ``mth``: the game's float math (sine table, atan2, wrapDegrees) in float32; ``atan_tables``
   holds the JVM's own tables behind ``Mth.atan2``.

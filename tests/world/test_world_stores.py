@@ -65,3 +65,23 @@ def test_store_into_entities():
     player = store.add_player("Steve", (0.0, 0.0, 0.0))
     assert stores.store_entity(player, path("Pos[1]", "Pos", 1), "double", 5, 1.0) == 0
     assert player.pos == (0.0, 0.0, 0.0)
+
+
+def test_command_storage_accessor():
+    from emulator.world import nbt_ops
+    from emulator.world.storage import CommandStorage
+
+    storage = CommandStorage()
+    # A failing change on a new id stores nothing.
+    with pytest.raises(CommandFailure, match="Nothing changed"):
+        storage.modify("ns:a", lambda root: nbt_ops.data_remove(root, path("x", "x")))
+    assert storage.ids() == []
+    storage.modify("ns:a", lambda root: nbt_ops.modify(root, path("l", "l"), "append", [Int(1)]))
+    assert storage.get("ns:a") == {"l": [1]}
+    # On an existing storage the game edits the live compound: a later failure keeps earlier edits.
+    with pytest.raises(CommandFailure, match="Invalid list index"):
+        storage.modify("ns:a", lambda root: nbt_ops.modify(root, path("m.l", "m", "l"), "insert", [Int(1)], index=3))
+    assert storage.get("ns:a") == {"l": [1], "m": {"l": []}}
+    # Emptying a storage removes its id (CommandStorage.Container.put).
+    storage.modify("ns:a", lambda root: [nbt_ops.data_remove(root, path(k, k)) for k in ("l", "m")])
+    assert storage.ids() == []

@@ -1,0 +1,40 @@
+"""Command storage (``data ... storage ID``), with the accessor semantics of the game.
+
+``CommandStorage`` maps resource ids to compounds.
+- ``get(id)``: the live compound, or a new empty one (not stored) for an unknown id.
+- ``modify(id, change)``: run ``change(root)`` on the live compound (or a new one) and store the
+  result; like the game, a failing change leaves partial edits of an existing storage in place
+  and stores nothing for a new id. Storing an empty compound removes the id.
+- ``ids()``: the ids holding data (``data get storage`` tab completion in the game).
+
+Source: decompiled 1.21 world/level/storage/CommandStorage.java, server/commands/data/StorageDataAccessor.java.
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+from mcfunction_parser.nbt import Compound
+
+
+class CommandStorage:
+    def __init__(self) -> None:
+        self._data: dict[str, Compound] = {}
+
+    def get(self, storage_id: str) -> Compound:
+        return self._data.get(storage_id, Compound())
+
+    def set(self, storage_id: str, root: Compound) -> None:
+        """``CommandStorage.Container.put``: an empty compound removes the id."""
+        if root:
+            self._data[storage_id] = root
+        else:
+            self._data.pop(storage_id, None)
+
+    def modify(self, storage_id: str, change: Callable[[Compound], object]):
+        root = self.get(storage_id)
+        result = change(root)
+        self.set(storage_id, root)
+        return result
+
+    def ids(self) -> list[str]:
+        return sorted(self._data)
