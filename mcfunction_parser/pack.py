@@ -25,7 +25,7 @@ from .pack_text import load_json, read_text, split_lines
 from .parse import parse_function
 from .tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from .versions import (
-    LATEST_RELEASE, Format, Version, format_label, pack_format_for_version, parse_mc_version,
+    FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, Format, Version, format_label, pack_format_for_version, parse_mc_version,
     uses_singular_folders, version_for_pack_format, version_label,
 )
 
@@ -108,7 +108,8 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> Lo
     packs = [_collect(root, shown, meta, target, version, diagnostics)
              for root, shown, meta in metas if root.is_dir()]
     result.packs = [p.info for p in packs]
-    _apply_filters(packs, [meta for root, _, meta in metas if root.is_dir()])
+    if target >= FILTER_FORMAT:
+        _apply_filters(packs, [meta for root, _, meta in metas if root.is_dir()])
     _load_functions(packs, result)
     _load_tags(packs, result)
     _load_advancements(packs, result)
@@ -146,7 +147,7 @@ def _collect(root: Path, shown: str, meta: PackMeta | None, target: Format, vers
             "lists it as incompatible", f"{shown.rstrip('/')}/pack.mcmeta"))
     files = _data_files(root)
     applied = []
-    for overlay in meta.overlays if meta is not None else []:
+    for overlay in meta.overlays if meta is not None and target >= OVERLAYS_FORMAT else []:
         if target in overlay.formats:
             files.update(_data_files(root / overlay.directory))
             applied.append(overlay.directory)

@@ -38,6 +38,9 @@ _FORMAT_RELEASES: tuple[tuple[Format, str], ...] = (
 
 # First format whose packs keep functions in data/<ns>/function and tags/function (1.21).
 SINGULAR_FOLDERS_FORMAT: Format = (48, 0)
+# First formats whose games read pack.mcmeta "filter" (1.19, 22w11a) and "overlays" (1.20.2, 23w31a).
+FILTER_FORMAT: Format = (10, 0)
+OVERLAYS_FORMAT: Format = (18, 0)
 # Oldest release the tools target.
 OLDEST_SUPPORTED: Version = (1, 16, 0)
 

@@ -70,6 +70,8 @@ def test_overlays_replace_files_of_the_matching_format(tmp_path):
     assert loaded.functions["a:x"].path == f"{root}/ov_b/data/a/function/x.mcfunction"  # later wins
     older = load_packs([root], mc_version="1.20.4")
     assert older.packs[0].overlays == ["ov_old"]
+    # overlays arrived in 1.20.2 (minecraft.wiki "Pack.mcmeta" history): older games ignore them
+    assert load_packs([root], mc_version="1.20.1").packs[0].overlays == []
 
 
 def test_overlay_min_max_format_and_bad_directory(tmp_path):
@@ -169,6 +171,10 @@ def test_filter_block_hides_files_of_earlier_packs_only(tmp_path):
                       {**meta(61), "filter": {"block": [{"namespace": "lib", "path": "function/old/.*"}]}})
     loaded = load_packs([lib, game])
     assert sorted(loaded.functions) == ["lib:keep", "lib:old/own", "other:old/b"]
+    old_lib = write_pack(tmp_path / "old_lib", {"data/lib/functions/old/a.mcfunction": "say a\n"}, meta(9))
+    old_game = write_pack(tmp_path / "old_game", {}, {**meta(9), "filter": {"block": [{"path": ".*"}]}})
+    assert "lib:old/a" in load_packs([old_lib, old_game]).functions  # 1.18.2: no filter yet (1.19)
+    assert load_packs([old_lib, old_game], mc_version="1.19").functions == {}
     assert sorted(load_packs([game, lib]).functions) == [
         "lib:keep", "lib:old/a", "lib:old/own", "other:old/b"]
 
