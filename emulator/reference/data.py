@@ -51,9 +51,7 @@ def data_get(env, cmd: ast.DataGet, source: Source, where) -> int:
 def data_merge(env, cmd: ast.DataMerge, source: Source, where) -> int:
     root = storage_root(env, cmd.target, create=True)
     with _world_failures():
-        merged = nbt_ops.data_merge(root, cmd.nbt)
-    env.state.storage[cmd.target.id] = merged
-    return 1
+        return nbt_ops.data_merge(root, cmd.nbt)
 
 
 def data_modify(env, cmd: ast.DataModify, source: Source, where) -> int:

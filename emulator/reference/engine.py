@@ -26,7 +26,7 @@ from . import data, modifiers
 from .commands import run_command
 from .failure import CommandFailure
 from .macros import MacroExpander
-from .queue import CallFrame, ExecutionQueue, chain, schedule_each
+from .queue import Action, CallFrame, ExecutionQueue, chain, schedule_each
 from .source import Activation, Source
 
 _CUSTOM_FINAL = (ast.FunctionCall, ast.Return)
@@ -73,7 +73,7 @@ class Interpreter:
 
     # ------------------------------------------------------------------ tasks
     def _call_function(self, function: ast.Function, commands, source: Source, result_callback,
-                       return_parent: bool, call_loc) -> callable:
+                       return_parent: bool, call_loc) -> Action:
         def call(queue: ExecutionQueue, frame: CallFrame) -> None:
             queue.charge()
             self._count(call_loc or ast_loc_of(function))
@@ -107,15 +107,18 @@ class Interpreter:
             queue.charge()
             self._count(line.loc)
             produced: list[Source] = []
+            fork_limit = self.state.gamerules.max_command_fork_count
             for source in sources:
                 try:
                     out = modifiers.apply(self, stage, source)
-                    modifiers.check_fork_limit(len(produced) + len(out), self.state.gamerules.max_command_fork_count)
                 except CommandFailure as failure:
                     self._fail(failure, source, line)
-                    if not forked or failure.message.startswith("Maximum number of contexts"):
+                    if not forked:
                         return
                     continue
+                if len(produced) + len(out) >= fork_limit:
+                    self._fail(modifiers.fork_limit_reached(fork_limit), source, line)
+                    return
                 produced.extend(out)
             sources = produced
             index += 1

@@ -137,6 +137,6 @@ def _wrap_degrees(angle: float) -> float:
     return angle
 
 
-def check_fork_limit(produced: int, limit: int) -> None:
-    if produced >= limit:
-        raise CommandFailure(f"Maximum number of contexts ({limit}) reached", report=True)
+def fork_limit_reached(limit: int) -> CommandFailure:
+    """BuildContexts.ERROR_FORK_LIMIT_REACHED: a stage would produce ``limit`` sources or more."""
+    return CommandFailure(f"Maximum number of contexts ({limit}) reached", report=True)

@@ -253,3 +253,13 @@ def test_storage_data_commands(tmp_path):
         "#len": 3, "#name": 5, "#a": 15, "#neg": -2, "#big": 1000000000, "#m": -3,
         "#stored": 2147483647, "#half": -1, "#has": 0, "#count": 3, "#nothing": 0, "#from_macro": -1,
     }
+
+
+def test_fork_limit(tmp_path):
+    # BuildContexts: a stage reaching maxCommandForkCount contexts fails the whole command
+    state = _with_objective()
+    state.gamerules.set("maxCommandForkCount", "1")
+    _, state, result = run(tmp_path, {"t:main": "execute positioned 0 0 0 run scoreboard players set #a o 1"}, state=state)
+    assert scores(state) == {}
+    assert state.diagnostics[0].message == "Maximum number of contexts (1) reached"
+    assert result.cost == 2
