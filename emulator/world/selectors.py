@@ -7,6 +7,8 @@
 - ``type_tags``: entity type tags by id (``minecraft:skeletons`` ...), the pack's own tags merged
   over :data:`ENTITY_TYPE_TAGS`.
 ``select_one(...)``: the single-entity form (fails "No entity was found" / "Only one entity ...").
+``SelectorQuery(selector, type_tags).run(store, source, scores)``: the same with the selector's
+tests built once, for callers that run one selector many times.
 
 Semantics (decompiled 1.21 commands/arguments/selector/EntitySelector.java, EntitySelectorParser.java,
 options/EntitySelectorOptions.java):
@@ -41,6 +43,10 @@ NOT_LIVING = {"minecraft:marker", "minecraft:item_display", "minecraft:block_dis
               "minecraft:area_effect_cloud", "minecraft:item_frame", "minecraft:falling_block",
               "minecraft:tnt", "minecraft:arrow", "minecraft:snowball", "minecraft:boat",
               "minecraft:minecart"}
+
+
+def _no_scores(holder: str, objective: str) -> None:
+    return None
 
 
 class UnsupportedSelector(Exception):
@@ -86,14 +92,16 @@ def _intersects(box, other) -> bool:
     return all(box[i] < other[i + 3] and box[i + 3] > other[i] for i in range(3))
 
 
-class _Query:
-    """A selector compiled against one execution source."""
+class SelectorQuery:
+    """A selector compiled once (its tests built), run against any store and source."""
 
-    def __init__(self, selector: ast.Selector, scores, type_tags) -> None:
+    def __init__(self, selector: ast.Selector, type_tags: dict[str, set[str]] | None = None) -> None:
         self.limit, self.players_only, alive, self.order = _VARIABLES[selector.variable]
         self.current = selector.variable == "s"
         self.tests: list[Callable[[Entity], bool]] = [lambda e: e.alive] if alive else []
-        self.scores, self.type_tags = scores, type_tags
+        self.type_tags = dict(ENTITY_TYPE_TAGS)
+        self.type_tags.update(type_tags or {})
+        self.scores: Callable[[str, str], int | None] = _no_scores
         self.coords: dict[str, float] = {}
         self.distance: ast.FloatRange | None = None
         for arg in selector.args:
@@ -140,7 +148,9 @@ class _Query:
             self.players_only = True
         self.tests.append(lambda e: (e.type == value) != negated)
 
-    def run(self, store: EntityStore, source: Source) -> list[Entity]:
+    def run(self, store: EntityStore, source: Source,
+            scores: Callable[[str, str], int | None] | None = None) -> list[Entity]:
+        self.scores = scores or _no_scores
         origin = tuple(self.coords.get(axis, base) for axis, base in zip("xyz", source.pos))
         tests = list(self.tests)
         box = None
@@ -179,16 +189,10 @@ class _Query:
         return sorted(found, key=lambda e: sign * _distance_sq(e, origin))
 
 
-def _no_scores(holder: str, objective: str) -> None:
-    return None
-
-
 def select(store: EntityStore, selector: ast.Selector, source: Source,
            scores: Callable[[str, str], int | None] | None = None,
            type_tags: dict[str, set[str]] | None = None) -> list[Entity]:
-    tags = dict(ENTITY_TYPE_TAGS)
-    tags.update(type_tags or {})
-    return _Query(selector, scores or _no_scores, tags).run(store, source)
+    return SelectorQuery(selector, type_tags).run(store, source, scores)
 
 
 def select_one(store: EntityStore, selector: ast.Selector, source: Source, **options) -> Entity:

@@ -377,3 +377,12 @@ def test_load_keeps_tags_and_name_when_missing_and_types_base_fields():
     nbt["Tags"] = List()
     load_nbt(e, nbt)
     assert e.tags == set()
+
+
+def test_compiled_query_runs_against_any_source(world):
+    from emulator.world.selectors import SelectorQuery
+
+    store, ents = world
+    nearest = SelectorQuery(_parsed_selector("@e[type=minecraft:marker,sort=nearest,limit=1]"))
+    assert names(nearest.run(store, Source(pos=(0.0, 0.0, 0.0))), ents) == ["near"]
+    assert names(nearest.run(store, Source(pos=(9.0, 0.0, 0.0))), ents) == ["far"]
