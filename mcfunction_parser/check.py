@@ -4,7 +4,10 @@ Rules added here (the parser already reports syntax, unknown commands, literal r
 version problems per command):
 - a ``function``, ``schedule function`` or ``execute if function`` naming a function or function
   tag that is not loaded (error; a tag the game refused to load is named as such);
-- calling a macro function without arguments (error: the game fails the call);
+- calling a macro function without arguments, or with a literal compound that lacks one of its
+  ``$(keys)`` (error: the game fails the call);
+- ``execute if|unless function`` on functions that contain no ``return`` (warning: the condition
+  fails both ways when no function returned);
 - an objective used but never created by ``scoreboard objectives add`` in the loaded packs
   (warning, once per objective);
 - a function nothing refers to: not in a tag, not called or scheduled by another function, not
@@ -160,6 +163,8 @@ def _references(node: object) -> Iterator[tuple[str, bool, str]]:
 
 
 def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
+    returning = {function.id for function, node in nodes
+                 if isinstance(node, (ast.Return, ast.MacroLine))}  # a macro line may return too
     for _, node in nodes:
         for name, is_tag, how in _references(node):
             if how != "macro":
@@ -167,12 +172,40 @@ def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> N
                 if problem:
                     where = "" if how == "function" else f" ({how})"
                     found.append(_at(loaded, ERROR, problem + where, node.loc))
-        if isinstance(node, ast.FunctionCall) and not node.is_tag and node.arguments is None \
-                and node.with_source is None:
-            callee = loaded.functions.get(node.function)
-            if callee is not None and callee.is_macro:
-                found.append(_at(loaded, ERROR, f"function {node.function} is a macro function: "
-                                 "calling it without arguments fails", node.loc))
+        if isinstance(node, ast.FunctionCall) and not node.is_tag and node.with_source is None:
+            _check_macro_arguments(loaded, node, found)
+        elif isinstance(node, ast.IfFunction):
+            _check_condition_returns(loaded, node, returning, found)
+
+
+def _check_macro_arguments(loaded: LoadedPacks, call: ast.FunctionCall, found: list[Diagnostic]) -> None:
+    """The game instantiates a macro function only when every ``$(key)`` of every line is given."""
+    callee = loaded.functions.get(call.function)
+    if callee is None or not callee.is_macro:
+        return
+    if call.arguments is None:
+        found.append(_at(loaded, ERROR, f"function {call.function} is a macro function: calling it "
+                         "without arguments fails", call.loc))
+        return
+    keys = dict.fromkeys(k for c in callee.commands if isinstance(c, ast.MacroLine) for k in c.keys)
+    missing = [k for k in keys if k not in call.arguments]
+    if missing:
+        found.append(_at(loaded, ERROR, f"function {call.function} needs macro argument(s) "
+                         f"{', '.join(missing)}: the call fails without them", call.loc))
+
+
+def _check_condition_returns(loaded: LoadedPacks, condition: ast.IfFunction, returning: set[str],
+                             found: list[Diagnostic]) -> None:
+    """``execute if|unless function`` fails both ways when no called function returns a value."""
+    if condition.is_tag:
+        members = loaded.resolve_tag(condition.function) if condition.function in loaded.tags else []
+    else:
+        members = [condition.function] if condition.function in loaded.functions else []
+    if members and not any(m in returning for m in members):
+        what = f"#{condition.function}" if condition.is_tag else condition.function
+        found.append(_at(loaded, WARNING, f"{what} never runs 'return', so 'execute "
+                         f"{'unless' if condition.negated else 'if'} function' always fails",
+                         condition.loc))
 
 
 def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:

@@ -71,11 +71,30 @@ def test_calls_to_missing_functions_and_tags(tmp_path):
     ]
 
 
-def test_macro_function_called_without_arguments(tmp_path):
-    root = write(tmp_path / "p", {**LOAD, fn("load"): "function a:m\nfunction a:m {x: 1}\n",
-                                  fn("m"): "$say $(x)\n"})
-    [error] = check_packs([root]).of("error")
-    assert error.line == 1 and "a:m is a macro function" in error.message
+def test_macro_function_calls_need_every_key(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): (
+        "function a:m\nfunction a:m {x: 1, y: 2}\nfunction a:m {x: 1}\n"
+        "function a:m with storage a:s args\nfunction a:plain {x: 1}\n"),
+        fn("m"): "$say $(x)\nsay between\n$say $(y) $(x)\n", fn("plain"): "say p\n"})
+    errors = check_packs([root]).of("error")
+    assert [(e.line, e.message) for e in errors] == [
+        (1, "function a:m is a macro function: calling it without arguments fails"),
+        (3, "function a:m needs macro argument(s) y: the call fails without them")]
+
+
+def test_execute_if_function_without_return(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): (
+        "execute if function a:silent run say 1\nexecute unless function #a:quiet run say 2\n"
+        "execute if function a:answers run say 3\nexecute if function #a:mixed run say 4\n"
+        "execute if function a:nested run say 5\nexecute if function a:macro run say 6\n"),
+        fn("silent"): "say s\n", fn("answers"): "execute if score x o matches 1 run return 1\n",
+        fn("nested"): "execute as @s run return run say hi\n", fn("macro"): "$return $(x)\n",
+        "data/a/tags/function/quiet.json": '{"values": ["a:silent"]}',
+        "data/a/tags/function/mixed.json": '{"values": ["a:silent", "a:answers"]}'})
+    warnings = [(d.line, d.message) for d in check_packs([root]).of("warning") if "return" in d.message]
+    assert warnings == [
+        (1, "a:silent never runs 'return', so 'execute if function' always fails"),
+        (2, "#a:quiet never runs 'return', so 'execute unless function' always fails")]
 
 
 def test_objectives_never_created(tmp_path):
