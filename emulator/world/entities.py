@@ -28,6 +28,7 @@ server/commands/data/EntityDataAccessor.java.
 """
 from __future__ import annotations
 
+import functools
 import json
 import random
 from dataclasses import dataclass, field
@@ -123,6 +124,12 @@ def entity_type(type_id: str) -> EntityType:
     return ENTITY_TYPES.get(type_id) or _type(type_id.split(":", 1)[-1], 0.6, 1.8)
 
 
+@functools.lru_cache(maxsize=None)
+def _box_extent(type_id: str, scale: float) -> tuple[float, float]:
+    kind = entity_type(type_id)
+    return float(kind.width * F32(scale) / F32(2.0)), float(kind.height * F32(scale))
+
+
 def uuid_string(uuid: tuple[int, int, int, int]) -> str:
     """Java's ``UUID.toString()`` of the int[4] form (most significant int first)."""
     value = 0
@@ -213,10 +220,9 @@ class Entity:
 
     @property
     def bounding_box(self) -> tuple[float, float, float, float, float, float]:
-        """``EntityDimensions.makeBoundingBox``: half the width around x/z, the height up from y."""
-        kind, scale = entity_type(self.type), self._scale()
-        half = float(kind.width * scale / F32(2.0))
-        height = float(kind.height * scale)
+        """``EntityDimensions.makeBoundingBox``: half the width around x/z, the height up from y
+        (``width / 2.0F`` and the height are floats, widened to double)."""
+        half, height = _box_extent(self.type, float(self._scale()) if self.type == "minecraft:armor_stand" else 1.0)
         x, y, z = self.pos
         return (x - half, y, z - half, x + half, y + height, z + half)
 

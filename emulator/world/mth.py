@@ -36,8 +36,12 @@ RAD_TO_DEG = F32(180.0) / F32(math.pi)  # 180.0F / (float)Math.PI = 57.295776F
 PI_F = F32(math.pi)  # (float)Math.PI
 
 
-def f32(x: float) -> np.float32:
+def f32(x) -> np.float32:
     """Java's ``(float)`` of a double: round to nearest, overflow to infinity."""
+    if type(x) is np.float32:
+        return x
+    if -3.0e38 < x < 3.0e38:
+        return F32(x)
     with np.errstate(over="ignore"):
         return F32(x)
 
@@ -54,16 +58,26 @@ def _table_index(x: np.float32) -> int:
     return double_to_int(float(x)) & 0xFFFF
 
 
+# Below this magnitude the table products cannot overflow float32, so numpy needs no error guard.
+_SAFE = F32(1e30)
+
+
 def sin(x) -> np.float32:
     """``Mth.sin(float)``."""
+    x = f32(x)
+    if -_SAFE < x < _SAFE:
+        return SIN_TABLE[_table_index(x * SIN_SCALE)]
     with np.errstate(over="ignore", invalid="ignore"):
-        return SIN_TABLE[_table_index(F32(x) * SIN_SCALE)]
+        return SIN_TABLE[_table_index(x * SIN_SCALE)]
 
 
 def cos(x) -> np.float32:
     """``Mth.cos(float)``: the table shifted by a quarter turn, the shift added in float."""
+    x = f32(x)
+    if -_SAFE < x < _SAFE:
+        return SIN_TABLE[_table_index(x * SIN_SCALE + QUARTER_TURN)]
     with np.errstate(over="ignore", invalid="ignore"):
-        return SIN_TABLE[_table_index(F32(x) * SIN_SCALE + QUARTER_TURN)]
+        return SIN_TABLE[_table_index(x * SIN_SCALE + QUARTER_TURN)]
 
 
 def java_float_rem(a, b) -> np.float32:
