@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from .ast import Coord, FloatRange, IntRange, NameTarget, Vec2, Vec3, Wildcard
-from .reader import INT_MAX, INT_MIN, WORD, Reader, show
+from .reader import INT_MAX, INT_MIN, UNQUOTED, WORD, Reader, show
 
 # ----------------------------------------------------------------------------- resource locations
 
@@ -74,9 +74,19 @@ def _coord(r: Reader, block: bool, allow_local: bool) -> Coord:
     return Coord(kind, value, not prefix and "." not in number)
 
 
+_VEC3 = re.compile(r"([~^]?)([0-9.\-]*) ([~^]?)([0-9.\-]*) ([~^]?)([0-9.\-]*)")
+_KINDS = {"": "abs", "~": "rel", "^": "local"}
+
+
 def vec3(r: Reader, block: bool = False) -> Vec3:
     """A position; ``block`` for block positions (absolute coordinates must be integers)."""
     loc = r.loc()
+    m = _VEC3.match(r.text, r.pos)
+    if m is not None:
+        fast = _vec3_fast(m.groups(), block)
+        if fast is not None:
+            r.pos = m.end()
+            return Vec3(fast[0], fast[1], fast[2], loc)
     start = r.pos
     x = _coord(r, block, True)
     r.space("y coordinate")
@@ -87,6 +97,24 @@ def vec3(r: Reader, block: bool = False) -> Vec3:
     if local not in (0, 3):
         r.fail("cannot mix world and local coordinates (use ^ for all three or for none)", start)
     return Vec3(x, y, z, loc)
+
+
+def _vec3_fast(groups: tuple, block: bool):
+    """The three coordinates when all are well formed and consistent, else None (the slow path
+    then finds and reports the error)."""
+    coords = []
+    for i in (0, 2, 4):
+        prefix, number = groups[i], groups[i + 1]
+        if number:
+            if not (_INT if block and not prefix else _DOUBLE).match(number):
+                return None
+            coords.append(Coord(_KINDS[prefix], float(number), not prefix and "." not in number))
+        elif prefix:
+            coords.append(Coord(_KINDS[prefix], 0.0, False))
+        else:
+            return None
+    local = (groups[0] == "^") + (groups[2] == "^") + (groups[4] == "^")
+    return coords if local == 0 or local == 3 else None
 
 
 def vec2(r: Reader, integers: bool = False) -> Vec2:
@@ -154,12 +182,14 @@ _OBJECTIVE_OLD_MAX = 16  # objective names were capped at 16 characters before 1
 
 def objective(r: Reader) -> str:
     start = r.pos
-    name = r.unquoted()
+    m = UNQUOTED.match(r.text, start)
+    name = m.group()
     if not name:
         r.fail(f"expected an objective name, got {show(r.rest_word())}", start)
-    if r.version < (1, 18, 0) and len(name) > _OBJECTIVE_OLD_MAX:
+    if len(name) > _OBJECTIVE_OLD_MAX and r.version < (1, 18, 0):
         r.fail(f"objective name '{name}' is longer than {_OBJECTIVE_OLD_MAX} characters "
                "(allowed from Minecraft 1.18)", start)
+    r.pos = m.end()
     return name
 
 
@@ -179,7 +209,7 @@ def score_holder(r: Reader):
         r.pos += 1
         return Wildcard(loc)
     r.pos = start + len(word)
-    return NameTarget(word, loc, is_uuid=_UUID.match(word) is not None)
+    return NameTarget(word, loc, "-" in word and _UUID.match(word) is not None)
 
 
 # java.util.UUID.fromString: five hyphen-separated hex groups

@@ -7,6 +7,8 @@ per entry where the release is not obvious).
 """
 from __future__ import annotations
 
+from functools import lru_cache
+
 Version = tuple[int, int, int]
 OLDEST: Version = (1, 13, 0)
 
@@ -158,6 +160,7 @@ def command_problem(name: str, version: Version) -> str | None:
     return problem
 
 
+@lru_cache(maxsize=1024)
 def feature_problem(feature: str, version: Version) -> str | None:
     since, until = FEATURES[feature]
     return _problem(f"`{feature}`", since, until, version)

@@ -19,16 +19,6 @@ _MACRO_KEY = re.compile(r"[A-Za-z0-9_]+\Z")
 
 
 @dataclass(frozen=True, slots=True)
-class LogicalLine:
-    """One command's text; ``segments`` maps offsets of a joined line back to (line, col)."""
-
-    text: str
-    line: int
-    col: int
-    segments: tuple[tuple[int, int, int], ...] = ()
-
-
-@dataclass(frozen=True, slots=True)
 class LineError:
     message: str
     line: int
@@ -36,40 +26,54 @@ class LineError:
 
 
 def logical_lines(physical: list[str], version: tuple[int, int, int]):
-    """Yield :class:`LogicalLine` (commands and ``$`` lines) and :class:`LineError` in order."""
+    """Yield ``(text, line, col, segments)`` for each command or ``$`` line, and :class:`LineError`.
+
+    ``segments`` is empty for a one-line command; for a joined one it maps offsets back to
+    ``(offset, line, col)`` of each physical piece.
+    """
     continuation = version >= FEATURES["line continuation"][0]
     count = len(physical)
     i = 0
     while i < count:
         raw = physical[i]
-        text = raw.strip(_TRIM)
-        line_no = i + 1
-        col = len(raw) - len(raw.lstrip(_TRIM)) + 1
         i += 1
-        segments = ()
-        if continuation and text.endswith("\\"):
-            pieces = [text[:-1]]
-            segments = [(0, line_no, col)]
-            offset = len(text) - 1
-            while True:
-                if i == count:
-                    yield LineError("line continuation '\\' at the end of the file", line_no, col + len(text) - 1)
-                    return
-                nxt = physical[i]
-                piece = nxt.strip(_TRIM)
-                segments.append((offset, i + 1, len(nxt) - len(nxt.lstrip(_TRIM)) + 1))
-                i += 1
-                if piece.endswith("\\"):
-                    pieces.append(piece[:-1])
-                    offset += len(piece) - 1
-                    continue
-                pieces.append(piece)
-                break
-            text = "".join(pieces)
-            segments = tuple(segments)
-        if not text or text[0] == "#":
+        text = raw.strip(_TRIM)
+        if not text:
             continue
-        yield LogicalLine(text, line_no, col, segments)
+        if continuation and text[-1] == "\\":
+            joined = _join(physical, i - 1, text)
+            if type(joined) is LineError:
+                yield joined
+                return
+            text, segments, i = joined
+            if text and text[0] != "#":
+                yield text, segments[0][1], segments[0][2], segments
+            continue
+        if text[0] == "#":
+            continue
+        yield text, i, (1 if raw[0] > " " else len(raw) - len(raw.lstrip(_TRIM)) + 1), ()
+
+
+def _join(physical: list[str], first: int, text: str):
+    """Join the continuation lines from ``first``: (text, segments, next index) or a LineError."""
+    raw = physical[first]
+    col = len(raw) - len(raw.lstrip(_TRIM)) + 1
+    pieces = [text[:-1]]
+    segments = [(0, first + 1, col)]
+    offset = len(text) - 1
+    i = first + 1
+    while True:
+        if i == len(physical):
+            return LineError("line continuation '\\' at the end of the file", first + 1, col + len(text) - 1)
+        nxt = physical[i]
+        piece = nxt.strip(_TRIM)
+        segments.append((offset, i + 1, len(nxt) - len(nxt.lstrip(_TRIM)) + 1))
+        i += 1
+        if not piece.endswith("\\"):
+            pieces.append(piece)
+            return "".join(pieces), tuple(segments), i
+        pieces.append(piece[:-1])
+        offset += len(piece) - 1
 
 
 def macro_keys(template: str) -> tuple[tuple[str, ...], str | None, int]:

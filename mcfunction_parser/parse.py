@@ -5,7 +5,7 @@ from .ast import Command, Function, MacroLine
 from .commands import command
 from .diagnostics import ERROR, WARNING, Diagnostic, Loc
 from .features import feature_problem
-from .lines import LineError, LogicalLine, logical_lines, macro_keys
+from .lines import LineError, logical_lines, macro_keys
 from .reader import JoinedReader, ParseError, Reader
 
 DEFAULT_VERSION = (1, 21, 0)
@@ -25,23 +25,23 @@ def parse_function(source: str, path: str, function_id: str,
         if type(item) is LineError:
             diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col, physical[item.line - 1]))
             continue
-        text = item.text
+        text, line, col, segments = item
+        loc = Loc(path, line, col)
         first = text[0]
         if first == "$":
             if not macros_ok:
-                diagnostics.append(Diagnostic(ERROR, feature_problem("macro lines", version), path, item.line,
-                                              item.col, physical[item.line - 1]))
+                diagnostics.append(Diagnostic(ERROR, feature_problem("macro lines", version), path, line, col,
+                                              physical[line - 1]))
                 continue
-            macro = _macro_line(item, path, physical, diagnostics)
+            macro = _macro_line(text, loc, segments, physical, diagnostics)
             if macro is not None:
                 commands.append(macro)
                 is_macro = True
             continue
         if first == "/":
-            _leading_slash(item, path, physical, diagnostics)
+            _leading_slash(text, loc, physical, diagnostics)
             continue
-        loc = Loc(path, item.line, item.col)
-        reader = JoinedReader(text, loc, version, item.segments) if item.segments else Reader(text, loc, version)
+        reader = JoinedReader(text, loc, version, segments) if segments else Reader(text, loc, version)
         cmd = _parse(reader, diagnostics, physical)
         if cmd is not None:
             commands.append(cmd)
@@ -87,22 +87,21 @@ def _report(reader: Reader, severity: str, message: str, pos: int, diagnostics: 
     diagnostics.append(Diagnostic.at(severity, message, loc, source_line))
 
 
-def _macro_line(item: LogicalLine, path: str, physical: list[str], diagnostics: list[Diagnostic]) -> MacroLine | None:
-    template = item.text[1:]
+def _macro_line(text: str, loc: Loc, segments: tuple, physical: list[str],
+                diagnostics: list[Diagnostic]) -> MacroLine | None:
+    template = text[1:]
     keys, error, offset = macro_keys(template)
-    loc = Loc(path, item.line, item.col)
     if error:
-        reader = JoinedReader(item.text, loc, (0, 0, 0), item.segments) if item.segments else Reader(item.text, loc, (0, 0, 0))
+        reader = JoinedReader(text, loc, (0, 0, 0), segments) if segments else Reader(text, loc, (0, 0, 0))
         _report(reader, ERROR, error, offset + 1, diagnostics, physical, None)
         return None
     return MacroLine(loc, template, keys)
 
 
-def _leading_slash(item: LogicalLine, path: str, physical: list[str], diagnostics: list[Diagnostic]) -> None:
-    text = item.text
+def _leading_slash(text: str, loc: Loc, physical: list[str], diagnostics: list[Diagnostic]) -> None:
     if text.startswith("//"):
         message = "unknown command '//...': comments start with '#', not '//'"
     else:
         name = text[1:].split(" ", 1)[0]
         message = f"unknown command '{text.split(' ', 1)[0]}': remove the leading '/' (did you mean '{name}'?)"
-    diagnostics.append(Diagnostic(ERROR, message, path, item.line, item.col, physical[item.line - 1]))
+    diagnostics.append(Diagnostic.at(ERROR, message, loc, physical[loc.line - 1]))

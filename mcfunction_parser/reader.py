@@ -151,9 +151,11 @@ class Reader:
     def keyword(self, choices, what: str) -> str:
         """The space before a required literal and the literal itself (one of ``choices``)."""
         m = _SPACED_WORD.match(self.text, self.pos)
-        if m is not None and m.group(1) in choices:
-            self.pos = m.end()
-            return m.group(1)
+        if m is not None:
+            word = m.group(1)
+            if word in choices:
+                self.pos = m.end()
+                return word
         self.space(what)
         return self.literal(choices, what)
 
