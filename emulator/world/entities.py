@@ -266,6 +266,8 @@ _MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id")
 # Saved by every entity, read back with typed getters (Entity.saveWithoutId / Entity.load).
 BASE_FIELDS = {"FallDistance": Float, "Fire": Short, "Air": Short, "OnGround": Byte,
                "Invulnerable": Byte, "PortalCooldown": Int}
+# Per type: compound fields always saved, read with getCompound (a missing or wrong value reads {}).
+TYPE_COMPOUNDS = {"minecraft:marker": ("data",)}
 # Read with getBoolean and saved only when true (as 1b).
 FLAG_FIELDS = ("CustomNameVisible", "Silent", "NoGravity", "Glowing", "HasVisualFire")
 
@@ -282,7 +284,7 @@ def _component(values: list, i: int) -> float:
     return float(values[i]) if i < len(values) else 0.0
 
 
-def _base_fields(nbt: Compound, previous: Compound) -> Compound:
+def _base_fields(type_id: str, nbt: Compound, previous: Compound) -> Compound:
     """The fields ``Entity.load`` reads with typed getters and ``saveWithoutId`` writes back: a
     missing or non-numeric value reads as 0 (``Air`` only changes when present), numbers are
     converted to the saved type (``getShort``, ``getBoolean`` ...)."""
@@ -302,6 +304,9 @@ def _base_fields(nbt: Compound, previous: Compound) -> Compound:
     for key in FLAG_FIELDS:
         if is_numeric(nbt.get(key)) and narrow(nbt[key], Byte) != 0:
             fields[key] = Byte(1)
+    for key in TYPE_COMPOUNDS.get(type_id, ()):
+        value = nbt.get(key)
+        fields[key] = copy_tag(value) if isinstance(value, Compound) else Compound()
     return fields
 
 
@@ -329,8 +334,8 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
         entity.custom_name = str(name)
     if isinstance(nbt.get("Tags"), List):
         entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
-    data = _base_fields(nbt, entity.data)
-    data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED and k not in BASE_FIELDS and k not in FLAG_FIELDS)
+    data = _base_fields(entity.type, nbt, entity.data)
+    data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED and k not in data and k not in FLAG_FIELDS)
     entity.data = data
 
 
@@ -347,10 +352,12 @@ def modify_entity(entity: Entity, change: Callable[[Compound], object]):
     return result
 
 
-def _base_data() -> Compound:
+def _base_data(type_id: str) -> Compound:
     """The fields every entity saves besides the modelled ones, at their spawn values."""
-    return Compound(FallDistance=Float(0.0), Fire=Short(-1), Air=Short(300), OnGround=Byte(0),
+    data = Compound(FallDistance=Float(0.0), Fire=Short(-1), Air=Short(300), OnGround=Byte(0),
                     Invulnerable=Byte(0), PortalCooldown=Int(0))
+    data.update((key, Compound()) for key in TYPE_COMPOUNDS.get(type_id, ()))
+    return data
 
 
 class EntityStore:
@@ -370,7 +377,7 @@ class EntityStore:
     def summon(self, type_id: str, pos, nbt: Compound | None = None, yaw=0.0, pitch=0.0) -> Entity:
         """``summon TYPE POS NBT``: a new entity; the NBT is loaded over the spawn state."""
         entity = Entity(insecure_uuid(self.rng), type_id, tuple(float(v) for v in pos), F32(yaw), F32(pitch),
-                        data=_base_data())
+                        data=_base_data(type_id))
         if nbt:
             full = entity_nbt(entity)
             full.update(copy_tag(nbt))
@@ -380,7 +387,7 @@ class EntityStore:
 
     def add_player(self, name: str, pos, yaw=0.0, pitch=0.0, gamemode: str = "survival", level: int = 0) -> Entity:
         return self._add(Entity(insecure_uuid(self.rng), "minecraft:player", tuple(float(v) for v in pos),
-                                F32(yaw), F32(pitch), data=_base_data(), player_name=name,
+                                F32(yaw), F32(pitch), data=_base_data("minecraft:player"), player_name=name,
                                 gamemode=gamemode, level=level))
 
     def kill(self, entity: Entity) -> None:

@@ -375,8 +375,10 @@ def test_load_keeps_tags_and_name_when_missing_and_types_base_fields():
     assert view["NoGravity"] == 1 and "Silent" not in view  # flags are saved only when true
     nbt = entity_nbt(e)
     nbt["Tags"] = List()
+    nbt["data"] = Int(3)  # Marker reads "data" with getCompound: a wrong type reads {}
     load_nbt(e, nbt)
-    assert e.tags == set()
+    assert e.tags == set() and entity_nbt(e)["data"] == {}
+    assert entity_nbt(store.summon("minecraft:marker", (0, 0, 0)))["data"] == {}
 
 
 def test_compiled_query_runs_against_any_source(world):
