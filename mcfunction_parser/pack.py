@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 import re
+import zipfile
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,7 +22,7 @@ from pathlib import Path
 from .ast import Function, FunctionTag
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from .pack_meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
-from .pack_text import load_json, read_text, split_lines
+from .pack_text import PackPath, load_json, read_text, split_lines
 from .parse import parse_function
 from .tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from .versions import (
@@ -37,7 +38,7 @@ _PATH = re.compile(r"[a-z0-9_./-]+")
 class PackInfo:
     """One loaded pack. ``supported`` is None when pack.mcmeta is missing or invalid."""
 
-    root: Path
+    root: Path  # the folder or .zip file
     pack_format: int | None
     supported: FormatRange | None
     description: str
@@ -80,11 +81,12 @@ class LoadedPacks:
 
 @dataclass
 class _PackFiles:
-    """One pack's files after overlays: relative path -> the file that provides it."""
+    """One pack's files after overlays: path relative to the pack -> the file providing it, and
+    that file's own path inside the pack (``overlay/data/...`` when an overlay provides it)."""
 
     info: PackInfo
     shown_root: str
-    files: dict[str, Path]
+    files: dict[str, tuple[PackPath, str]]
     target_label: str  # "1.21.4 (format 61)"
 
     def shown(self, rel: str) -> str:
@@ -93,35 +95,43 @@ class _PackFiles:
 
     def shown_file(self, rel: str) -> str:
         """The shown path of the file providing ``rel`` (inside its overlay, if any)."""
-        return self.shown(self.files[rel].relative_to(self.info.root).as_posix())
+        return self.shown(self.files[rel][1])
+
+    def read(self, rel: str) -> PackPath:
+        return self.files[rel][0]
 
 
 def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> LoadedPacks:
-    """Load packs in order (later ones override). ``mc_version`` ("1.21.4") overrides the
-    packs' own version; an unknown or malformed version raises ValueError."""
+    """Load packs (folders or .zip files) in order; later ones override. ``mc_version``
+    ("1.21.4") overrides the packs' own version; an unknown or malformed one raises ValueError."""
     diagnostics: list[Diagnostic] = []
-    metas = [(Path(p), str(p), _read_meta(Path(p), str(p), diagnostics)) for p in paths]
-    version = _target_version(mc_version, [m for _, _, m in metas if m is not None])
+    opened = [(Path(p), str(p), _open_pack(Path(p), str(p), diagnostics)) for p in paths]
+    opened = [(path, shown, root) for path, shown, root in opened if root is not None]
+    metas = [read_pack_meta(root, shown, diagnostics) for _, shown, root in opened]
+    version = _target_version(mc_version, [m for m in metas if m is not None])
     target = pack_format_for_version(version)
-    metas_read = sum((root / "pack.mcmeta").is_file() for root, _, _ in metas)
+    metas_read = sum((root / "pack.mcmeta").is_file() for _, _, root in opened)
     result = LoadedPacks([], version, {}, {}, {}, diagnostics, files=metas_read)
-    packs = [_collect(root, shown, meta, target, version, diagnostics)
-             for root, shown, meta in metas if root.is_dir()]
+    packs = [_collect(path, root, shown, meta, target, version, diagnostics)
+             for (path, shown, root), meta in zip(opened, metas)]
     result.packs = [p.info for p in packs]
     if target >= FILTER_FORMAT:
-        _apply_filters(packs, [meta for root, _, meta in metas if root.is_dir()])
+        _apply_filters(packs, metas)
     _load_functions(packs, result)
     _load_tags(packs, result)
     _load_advancements(packs, result)
     return result
 
 
-def _read_meta(root: Path, shown: str, diagnostics: list[Diagnostic]) -> PackMeta | None:
-    if not root.is_dir():
-        what = "is not a folder" if root.exists() else "does not exist"
-        diagnostics.append(Diagnostic(ERROR, f"pack {what}", shown))
-        return None
-    return read_pack_meta(root, shown, diagnostics)
+def _open_pack(path: Path, shown: str, diagnostics: list[Diagnostic]) -> PackPath | None:
+    """The pack's root: the folder itself, or the inside of a .zip file (as the game accepts)."""
+    if path.is_dir():
+        return path
+    if path.is_file() and zipfile.is_zipfile(path):
+        return zipfile.Path(path)
+    what = "is not a folder or a .zip file" if path.exists() else "does not exist"
+    diagnostics.append(Diagnostic(ERROR, f"pack {what}", shown))
+    return None
 
 
 def _target_version(mc_version: str | None, metas: list[PackMeta]) -> Version:
@@ -137,22 +147,22 @@ def _written_for(meta: PackMeta) -> Format:
     return (meta.pack_format, 0) if meta.pack_format is not None else meta.supported.max
 
 
-def _collect(root: Path, shown: str, meta: PackMeta | None, target: Format, version: Version,
-             diagnostics: list[Diagnostic]) -> _PackFiles:
+def _collect(path: Path, root: PackPath, shown: str, meta: PackMeta | None, target: Format,
+             version: Version, diagnostics: list[Diagnostic]) -> _PackFiles:
     """The pack's data files with the matching overlays laid over the base."""
     label = f"{version_label(version)} (format {format_label(target)})"
     if meta is not None and meta.supported is not None and target not in meta.supported:
         diagnostics.append(Diagnostic(
             WARNING, f"pack supports formats {_range_label(meta.supported)}, not {label}: the game "
             "lists it as incompatible", f"{shown.rstrip('/')}/pack.mcmeta"))
-    files = _data_files(root)
+    files = _data_files(root, "")
     applied = []
     for overlay in meta.overlays if meta is not None and target >= OVERLAYS_FORMAT else []:
         if target in overlay.formats:
-            files.update(_data_files(root / overlay.directory))
+            files.update(_data_files(root / overlay.directory, f"{overlay.directory}/"))
             applied.append(overlay.directory)
     style = "function" if uses_singular_folders(target) else "functions"
-    info = PackInfo(root, meta.pack_format if meta else None, meta.supported if meta else None,
+    info = PackInfo(path, meta.pack_format if meta else None, meta.supported if meta else None,
                     meta.description if meta else "", applied, style)
     return _PackFiles(info, shown, files, label)
 
@@ -173,12 +183,22 @@ def _range_label(formats: FormatRange) -> str:
     return lo if lo == hi else f"{lo}-{hi}"
 
 
-def _data_files(base: Path) -> dict[str, Path]:
-    """``data/**`` files under ``base``, keyed by path relative to it (posix)."""
-    data = base / "data"
-    if not data.is_dir():
-        return {}
-    return {p.relative_to(base).as_posix(): p for p in sorted(data.rglob("*")) if p.is_file()}
+def _data_files(base: PackPath, prefix: str) -> dict[str, tuple[PackPath, str]]:
+    """``data/**`` files under ``base`` (the pack root or an overlay folder), keyed by path
+    relative to ``base``, with their path inside the pack (``prefix`` + key)."""
+    found: dict[str, tuple[PackPath, str]] = {}
+    stack = [(base / "data", "data")]
+    while stack:
+        folder, rel = stack.pop()
+        if not folder.is_dir():
+            continue
+        for child in folder.iterdir():
+            child_rel = f"{rel}/{child.name}"
+            if child.is_dir():
+                stack.append((child, child_rel))
+            elif child.is_file():
+                found[child_rel] = (child, prefix + child_rel)
+    return dict(sorted(found.items()))
 
 
 # ----------------------------------------------------------------------------- resources
@@ -243,7 +263,7 @@ def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
 
 def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> Function | None:
     shown = pack.shown_file(rel)
-    text = read_text(pack.files[rel], shown, result.diagnostics, json_file=False)
+    text = read_text(pack.read(rel), shown, result.diagnostics, json_file=False)
     result.files += 1
     if text is None:
         return None
@@ -266,7 +286,7 @@ def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
                                       result.diagnostics).items():
             shown = pack.shown_file(rel)
             result.files += 1
-            parsed = read_tag_file(pack.files[rel], shown, result.diagnostics)
+            parsed = read_tag_file(pack.read(rel), shown, result.diagnostics)
             if parsed is None:
                 continue
             doc, replace, entries = parsed
@@ -281,7 +301,7 @@ def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
     for pack in packs:
         for rel in _resources(pack, ("advancement", "advancements"), ".json", result.diagnostics).values():
             result.files += 1
-            doc = load_json(pack.files[rel], pack.shown_file(rel), result.diagnostics)
+            doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
             rewards = doc.value.get("rewards") if doc is not None and isinstance(doc.value, dict) else None
             reward = rewards.get("function") if isinstance(rewards, dict) else None
             if isinstance(reward, str):

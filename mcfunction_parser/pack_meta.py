@@ -19,11 +19,10 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import Any
 
 from .diagnostics import ERROR, Diagnostic
-from .pack_text import JsonDocument, load_json
+from .pack_text import JsonDocument, PackPath, load_json
 from .versions import Format
 
 ANY_MINOR = 2**31 - 1
@@ -75,13 +74,13 @@ class _Invalid(Exception):
         self.offset = offset
 
 
-def read_pack_meta(root: Path, shown_root: str, diagnostics: list[Diagnostic]) -> PackMeta | None:
+def read_pack_meta(root: PackPath, shown_root: str, diagnostics: list[Diagnostic]) -> PackMeta | None:
     """Parse ``root/pack.mcmeta``; None (with an error) when it is missing or unusable."""
     path = root / "pack.mcmeta"
     shown = _join(shown_root, "pack.mcmeta")
     if not path.is_file():
         diagnostics.append(Diagnostic(
-            ERROR, "missing pack.mcmeta: the game does not recognise this folder as a data pack",
+            ERROR, "missing pack.mcmeta: the game does not recognise this as a data pack",
             shown))
         return None
     doc = load_json(path, shown, diagnostics)

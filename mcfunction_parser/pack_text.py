@@ -13,11 +13,16 @@ from __future__ import annotations
 import bisect
 import json
 import re
+import zipfile
+import zlib
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import Any, Union
 
 from .diagnostics import ERROR, WARNING, Diagnostic, Loc
+
+PackPath = Union[Path, zipfile.Path]  # a file or folder inside a pack folder or .zip
+_READ_ERRORS = (OSError, zipfile.BadZipFile, zlib.error)
 
 UTF8_BOM = b"\xef\xbb\xbf"
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
@@ -32,12 +37,12 @@ def split_lines(text: str) -> list[str]:
     return lines
 
 
-def read_text(path: Path, shown: str, diagnostics: list[Diagnostic], *, json_file: bool) -> str | None:
+def read_text(path: PackPath, shown: str, diagnostics: list[Diagnostic], *, json_file: bool) -> str | None:
     """The file's text, or None if it cannot be read. Problems are appended as diagnostics."""
     try:
         data = path.read_bytes()
-    except OSError as exc:
-        diagnostics.append(Diagnostic(ERROR, f"cannot read file: {exc.strerror or exc}", shown))
+    except _READ_ERRORS as exc:
+        diagnostics.append(Diagnostic(ERROR, f"cannot read file: {getattr(exc, 'strerror', None) or exc}", shown))
         return None
     if data.startswith(UTF8_BOM):
         data = data[len(UTF8_BOM):]
@@ -95,7 +100,7 @@ class JsonDocument:
         return Diagnostic.at(severity, message, loc, self.line_text(loc.line))
 
 
-def load_json(path: Path, shown: str, diagnostics: list[Diagnostic]) -> JsonDocument | None:
+def load_json(path: PackPath, shown: str, diagnostics: list[Diagnostic]) -> JsonDocument | None:
     """Parse a JSON file; a syntax error becomes a diagnostic with its line and column."""
     text = read_text(path, shown, diagnostics, json_file=True)
     if text is None:

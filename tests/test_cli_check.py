@@ -67,7 +67,8 @@ def test_usage_errors_exit_2(tmp_path):
     assert run(tmp_path / "missing").exit_code == 2
     a_file = tmp_path / "file.txt"
     a_file.write_text("x")
-    assert run(a_file).exit_code == 2
+    not_a_pack = run(a_file)
+    assert not_a_pack.exit_code == 2 and "neither a pack folder nor a .zip file" in not_a_pack.output
     root = pack(tmp_path / "p", CLEAN)
     bad_version = run(root, "--mc", "1.99")
     assert bad_version.exit_code == 2 and "unknown release 1.99" in bad_version.output
@@ -110,3 +111,14 @@ def test_binary_garbage_gives_diagnostics_not_a_traceback(tmp_path):
     assert result.exception is None or isinstance(result.exception, SystemExit)
     data = json.loads(result.output)
     assert data["errors"] and result.exit_code == 1
+
+
+def test_zip_pack(tmp_path):
+    import zipfile
+    archive = tmp_path / "pack.zip"
+    with zipfile.ZipFile(archive, "w") as zf:
+        zf.writestr("pack.mcmeta", json.dumps({"pack": {"pack_format": 61, "description": ""}}))
+        for rel, text in CLEAN.items():
+            zf.writestr(rel, text)
+    result = run(archive)
+    assert result.exit_code == 0 and result.output.endswith("1 function, 2 commands: 0 errors, 0 warnings\n")

@@ -143,7 +143,7 @@ def test_empty_and_partial_packs(tmp_path, make_pack):
     empty.mkdir()
     loaded = load_packs([empty])
     assert [d.message for d in loaded.errors] == [
-        "missing pack.mcmeta: the game does not recognise this folder as a data pack"]
+        "missing pack.mcmeta: the game does not recognise this as a data pack"]
     assert load_packs([make_pack()]).diagnostics == []
 
 
@@ -183,3 +183,31 @@ def test_filter_with_bad_regex_is_diagnosed(tmp_path):
     root = write_pack(tmp_path / "p", {}, {**meta(61), "filter": {"block": [{"path": "function/("}]}})
     [error] = load_packs([root]).errors
     assert "not a valid regular expression" in error.message
+
+
+def test_zip_pack_loads_like_a_folder(tmp_path):
+    import zipfile
+    overlays = {"entries": [{"directory": "ov", "formats": 61}]}
+    folder = write_pack(tmp_path / "folder", {
+        "data/a/function/x.mcfunction": "say x\nexecute as @e[tag=a run say\n",
+        "ov/data/a/function/y.mcfunction": "say y\n",
+        "data/a/tags/function/t.json": '{"values": ["a:x", "a:y"]}'}, {**meta(61), "overlays": overlays})
+    archive = tmp_path / "pack.zip"
+    with zipfile.ZipFile(archive, "w") as zf:  # no explicit folder entries, as many zip tools write
+        for path in sorted(folder.rglob("*")):
+            if path.is_file():
+                zf.write(path, path.relative_to(folder).as_posix())
+    loaded = load_packs([archive])
+    assert sorted(loaded.functions) == ["a:x", "a:y"] and loaded.packs[0].overlays == ["ov"]
+    assert loaded.resolve_tag("a:t") == ["a:x", "a:y"]
+    [error] = loaded.errors
+    assert (error.path, error.line, error.col) == (f"{archive}/data/a/function/x.mcfunction", 2, 21)
+    assert loaded.functions["a:y"].path == f"{archive}/ov/data/a/function/y.mcfunction"
+    assert loaded.packs[0].root == archive
+
+
+def test_a_plain_file_is_not_a_pack(tmp_path):
+    path = tmp_path / "notes.txt"
+    path.write_text("hello")
+    loaded = load_packs([path])
+    assert loaded.packs == [] and loaded.errors[0].message == "pack is not a folder or a .zip file"
