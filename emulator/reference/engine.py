@@ -60,7 +60,7 @@ class Interpreter:
             result[0] = value if success else 0
 
         limit = self.state.gamerules.max_command_chain_length
-        queue = ExecutionQueue(limit)
+        queue = ExecutionQueue(limit, self._internal_error)
         source = Source(context or Context(), None, None)
         top = CallFrame(0, None, 0)
         queue.queue_next(top, self._call_function(function, commands, source, on_result, False, None))
@@ -298,6 +298,9 @@ class Interpreter:
         name = getattr(command, "name", type(command).__name__)
         frames = source.activation.frames(where) if source.activation else ()
         self.state.error(f"'{name}' is not emulated: it succeeds without effect", frames, severity="warning")
+
+    def _internal_error(self, action, exc: Exception) -> None:
+        self.state.error(f"internal error in the reference backend: {type(exc).__name__}: {exc}", _where((None, action)))
 
     def _fail(self, failure: CommandFailure, source: Source | None, line: ast.Command) -> None:
         if failure.report:

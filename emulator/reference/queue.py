@@ -59,8 +59,9 @@ Action = Callable[["ExecutionQueue", CallFrame], None]
 class ExecutionQueue:
     """One root's queue, quota and cost."""
 
-    def __init__(self, limit: int) -> None:
+    def __init__(self, limit: int, on_internal_error: Callable[[Action, Exception], None]) -> None:
         self.limit = limit
+        self.on_internal_error = on_internal_error
         self.quota = limit
         self.cost = 0
         self.cut = False
@@ -99,7 +100,10 @@ class ExecutionQueue:
             if not self._queue:
                 return None
             frame, action = self._queue.popleft()
-            action(self, frame)
+            try:
+                action(self, frame)
+            except Exception as exc:  # a bug here must not stop the rest of the pack
+                self.on_internal_error(action, exc)
             if self.overflowed:
                 return None
             self._push_new()

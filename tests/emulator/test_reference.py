@@ -263,3 +263,18 @@ def test_fork_limit(tmp_path):
     assert scores(state) == {}
     assert state.diagnostics[0].message == "Maximum number of contexts (1) reached"
     assert result.cost == 2
+
+
+def test_an_internal_error_is_a_diagnostic_and_the_run_goes_on(tmp_path, monkeypatch):
+    from emulator.reference import commands
+    from mcfunction_parser import ast
+
+    def broken(*args):
+        raise RuntimeError("boom")
+
+    monkeypatch.setitem(commands.HANDLERS, ast.Say, broken)
+    _, state, result = run(tmp_path, {"t:main": SETUP + "say x\nscoreboard players set #after o 1"})
+    assert scores(state) == {"#after": 1}
+    (diag,) = state.diagnostics
+    assert diag.message == "internal error in the reference backend: RuntimeError: boom"
+    assert [(f.function, f.loc.line) for f in diag.frames] == [("t:main", 2)]
