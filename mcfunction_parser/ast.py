@@ -456,6 +456,14 @@ class IfItems(Condition):
 
 
 @dataclass(frozen=True, slots=True)
+class IfStopwatch(Condition):
+    """``if stopwatch ID RANGE`` (1.21.11+): the stopwatch's elapsed seconds are in the range."""
+
+    stopwatch: str
+    range: FloatRange
+
+
+@dataclass(frozen=True, slots=True)
 class StoreScore(Subcommand):
     """``store result|success score``; ``kind`` is ``"result"`` or ``"success"``."""
 

@@ -36,6 +36,7 @@ COMMANDS: dict[str, tuple[Version, Version | None, int]] = {
     "enchant": (OLDEST, None, 2),
     "execute": (OLDEST, None, 2),
     "experience": (OLDEST, None, 2),
+    "fetchprofile": ((1, 21, 9), None, 2),  # 25w34a
     "fill": (OLDEST, None, 2),
     "fillbiome": ((1, 19, 3), None, 2),  # 22w46a
     "forceload": (OLDEST, None, 2),
@@ -84,6 +85,7 @@ COMMANDS: dict[str, tuple[Version, Version | None, int]] = {
     "spectate": ((1, 15, 0), None, 2),
     "spreadplayers": (OLDEST, None, 2),
     "stop": (OLDEST, None, 4),
+    "stopwatch": ((1, 21, 11), None, 2),  # 25w41a
     "stopsound": (OLDEST, None, 2),
     "summon": (OLDEST, None, 2),
     "tag": (OLDEST, None, 2),
@@ -124,6 +126,7 @@ FEATURES: dict[str, tuple[Version, Version | None]] = {
     "execute if loaded": ((1, 19, 4), None),  # 23w03a
     "execute if function": ((1, 20, 3), None),  # 23w41a
     "execute if items": ((1, 20, 5), None),  # 24w10a
+    "execute if stopwatch": ((1, 21, 11), None),  # 25w41a
     "data modify string": ((1, 19, 4), None),  # 23w03a
     "selector @n": ((1, 21, 0), None),  # 24w21a
     "scoreboard players display": ((1, 20, 3), None),  # 23w46a

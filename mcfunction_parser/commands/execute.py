@@ -8,7 +8,8 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import int_range, json_span, objective, resource_location, resource_or_tag, score_holder, vec2, vec3
+from ..arguments import (float_range, int_range, json_span, objective, resource_location, resource_or_tag,
+                         score_holder, vec2, vec3)
 from ..features import feature_problem
 from ..nbt_path import nbt_path
 from ..reader import Reader, show
@@ -226,12 +227,18 @@ def _item_predicate(r: Reader) -> None:
         r.fail("unclosed '[' in item predicate")
 
 
+def _if_stopwatch(r, loc, negated):
+    name = resource_location(r, "stopwatch")
+    r.space("range")
+    return ast.IfStopwatch(loc, negated, name, float_range(r))
+
+
 _CONDITIONS = {
     "score": (_if_score, None), "entity": (_if_entity, None), "data": (_if_data, None),
     "block": (_if_block, None), "blocks": (_if_blocks, None), "predicate": (_if_predicate, None),
     "function": (_if_function, "execute if function"), "biome": (_if_biome, "execute if biome"),
     "loaded": (_if_loaded, "execute if loaded"), "dimension": (_if_dimension, "execute if dimension"),
-    "items": (_if_items, "execute if items"),
+    "items": (_if_items, "execute if items"), "stopwatch": (_if_stopwatch, "execute if stopwatch"),
 }
 
 
