@@ -128,14 +128,22 @@ def _emulator_runner():
         return None
 
     class EmulatorRunner:
+        """`emulator.Emulator` with its overflow sanitizer on."""
+
         name = "emulator"
 
         def __init__(self) -> None:
-            self._emu = Emulator()
+            self._emu = Emulator(sanitize=True)
             self._emu.load(str(PACK))
-            self.call = lambda function: self._emu.call(function)
             self.set_score = self._emu.set_score
             self.score = self._emu.score
+            self.call("pool:load")
+
+        def call(self, function: str) -> None:
+            self._emu.call(function)
+            if self._emu.overflows:
+                raise Overflow(str(self._emu.overflows))
+            assert not self._emu.diagnostics, self._emu.diagnostics
 
     return EmulatorRunner
 
