@@ -9,15 +9,15 @@ from emulator.program import Program
 from emulator.state import Scoreboard, WorldState
 
 # operand kinds per opcode, in slot order: h holder, o objective, i int, p pc, f function,
-# k operation, c comparison, n name, x host op, m macro call, b flag
+# c comparison, n name, x host op, m macro call, b flag
+_OPERANDS_OPERATION = "hoho"
 _OPERANDS = {
     vm.OP_CMD: "ip", vm.OP_CONT: "i", vm.OP_SET: "hoi", vm.OP_ADD: "hoi", vm.OP_REMOVE: "hoi",
-    vm.OP_RESET: "ho", vm.OP_RESETALL: "h", vm.OP_GET: "ho", vm.OP_OPER: "khoho",
+    vm.OP_RESET: "ho", vm.OP_RESETALL: "h", vm.OP_GET: "ho",
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "o", vm.OP_STORE: "bho",
     vm.OP_CALL: "f", vm.OP_RETV: "i", vm.OP_IFFN_STEP: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
     vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "xb", vm.OP_MACRO: "m",
 }
-_OPERATION_NAMES = {v: k for k, v in vm.OPK_BY_SYMBOL.items()}
 _COMPARISON_NAMES = {v: k for k, v in vm.CMP_BY_SYMBOL.items()}
 
 
@@ -45,7 +45,8 @@ def _instruction(program: Program, scoreboard: Scoreboard, pc: int) -> str:
     row = program.rows[pc]
     op = row[0]
     parts = [vm.OP_NAMES.get(op, str(op))]
-    for kind, value in zip(_OPERANDS.get(op, ""), row[1:]):
+    kinds = _OPERANDS_OPERATION if op >= vm.OP_OPER_BASE else _OPERANDS.get(op, "")
+    for kind, value in zip(kinds, row[1:]):
         parts.append(_operand(program, scoreboard, kind, value))
     return " ".join(p for p in parts if p)
 
@@ -57,8 +58,6 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
         return scoreboard.objectives[value]
     if kind == "f":
         return program.functions[value]
-    if kind == "k":
-        return _OPERATION_NAMES[value]
     if kind == "c":
         return _COMPARISON_NAMES[value]
     if kind == "n":

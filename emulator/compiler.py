@@ -1,12 +1,12 @@
 """AST -> bytecode for the numba VM.
 
 What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
-``$y``, player names), ``execute`` chains made of ``if|unless score`` on named holders,
-``store result|success score`` on named holders and ``if|unless function``, function calls and
-tags, every ``return`` form, and macro calls (instantiated by Python on first use). Every other
-command is a host op: as the last command of a compiled chain the VM charges it and Python runs
-it (``say``, ``schedule``, selectors ...); an ``execute`` chain with any other stage goes to the
-host whole.
+``$y``, player names), ``if|unless score`` on named holders, ``store result|success score`` on
+named holders, ``if|unless function``, function calls and tags, every ``return`` form, and macro
+calls (instantiated by Python on first use). Everything else is a host op run by
+:mod:`emulator.host`: a final command (``OP_HOST``: ``say``, ``schedule``, selectors ...), an
+execute stage (``OP_HOSTSTAGE``: ``as``, ``positioned``, ``if entity`` ...; it sets the
+context the rest of the chain runs in) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
 
 Shapes (the cost rule is in :mod:`emulator.backend`; the opcodes in :mod:`emulator.vm`)::
 
@@ -25,7 +25,7 @@ from emulator.program import HostOp, MacroCall, Program
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Execute, Function, FunctionCall, IfFunction, IfScore, IfScoreMatches, NameTarget, Return,
-    ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreScore, Subcommand,
+    ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData, StoreScore, Subcommand,
 )
 from emulator.semantics import INT_MAX, INT_MIN
 
@@ -78,10 +78,7 @@ class Compiler:
     def command(self, cmd: Command) -> None:
         if isinstance(cmd, Execute):
             stages, final = flatten_execute(cmd)
-            if all(self._vm_stage(s) for s in stages):
-                self.chain(stages, final, returning=False)
-            else:
-                self.host(cmd, whole=True)
+            self.chain(stages, final, returning=False)
         elif isinstance(cmd, Return):
             self.return_(cmd, [], in_chain=False)
         elif isinstance(cmd, FunctionCall):
@@ -101,24 +98,16 @@ class Compiler:
         elif isinstance(cmd, ScoreGet) and _named(cmd.target):
             self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
         elif isinstance(cmd, ScoreOperation) and _named(cmd.targets) and _named(cmd.sources):
-            self.emit(vm.OP_OPER, vm.OPK_BY_SYMBOL[cmd.op], self.holder(cmd.targets), self.objective(cmd.objective),
-                      self.holder(cmd.sources), self.objective(cmd.source_objective))
+            self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], self.holder(cmd.targets),
+                      self.objective(cmd.objective), self.holder(cmd.sources), self.objective(cmd.source_objective))
         else:
-            self.host(cmd, whole=False)
+            self.host(vm.OP_HOST, cmd)
 
-    def host(self, cmd: Command, whole: bool) -> None:
-        self.program.host_ops.append(HostOp(cmd, self.fn_id, whole))
-        self.emit(vm.OP_HOST, len(self.program.host_ops) - 1, int(whole))
+    def host(self, op: int, node: Command | Subcommand) -> None:
+        self.program.host_ops.append(HostOp(node, self.fn_id))
+        self.emit(op, len(self.program.host_ops) - 1)
 
     # ------------------------------------------------------------------ execute chains
-    def _vm_stage(self, st: Subcommand) -> bool:
-        if isinstance(st, IfScoreMatches):
-            return _named(st.target)
-        if isinstance(st, IfScore):
-            return _named(st.target) and _named(st.source)
-        if isinstance(st, StoreScore):
-            return _named(st.targets)
-        return isinstance(st, IfFunction)
 
     def chain(self, stages: list[Subcommand], final: Command | None, returning: bool,
               outer_stores: tuple[StoreScore, ...] = ()) -> None:
@@ -128,10 +117,11 @@ class Compiler:
         cmd_pc = self.emit(vm.OP_CMD, groups[0], 0)
         stores = list(outer_stores)
         group = 0
-        aborts = [cmd_pc]
         for i, st in enumerate(stages):
             last = final is None and i == len(stages) - 1
-            if isinstance(st, IfScoreMatches):
+            if isinstance(st, (IfScoreMatches, IfScore)) and not _vm_condition(st):
+                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st)
+            elif isinstance(st, IfScoreMatches):
                 lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
                 hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
                 self.emit(vm.OP_IFMATCH, self.holder(st.target), self.objective(st.objective), lo, hi, 0,
@@ -139,13 +129,17 @@ class Compiler:
             elif isinstance(st, IfScore):
                 self.emit(vm.OP_IFSCORE, vm.CMP_BY_SYMBOL[st.op], self.holder(st.target), self.objective(st.objective),
                           self.holder(st.source), self.objective(st.source_objective), int(st.negated), int(last))
-            elif isinstance(st, StoreScore):
+            elif isinstance(st, StoreScore) and _named(st.targets):
                 self.emit(vm.OP_CHKOBJ, self.objective(st.objective))
                 stores.append(st)
-            else:  # IfFunction: the calls, then a continuation entry charging the next group
+            elif isinstance(st, (StoreScore, StoreData, StoreBossbar)):
+                stores.append(st)
+            elif isinstance(st, IfFunction):  # the calls, then a continuation entry charging the next group
                 group += 1
                 self.if_function(st)
-                aborts.append(self.emit(vm.OP_CONT, groups[group]))
+                self.emit(vm.OP_CONT, groups[group])
+            else:  # a context modifier or a condition the VM does not evaluate
+                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st)
         if isinstance(final, Return):
             self.return_(final, stores, in_chain=True)
             stores = []
@@ -153,14 +147,22 @@ class Compiler:
             self.call(final, returning)
         elif final is not None:
             self.final(final)
-        for st in stores:
-            self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets), self.objective(st.objective))
+        self.stores(stores)
         if returning:
             self.emit(vm.OP_RETRES)
             end = self.emit(vm.OP_RETNONE)
         else:
             end = self.emit(vm.OP_ENDCMD)
         self.program.patch(cmd_pc, 2, end)
+
+    def stores(self, stores: list) -> None:
+        """Apply the chain's stores to the result, in the order written (callbacks chain so)."""
+        for st in stores:
+            if isinstance(st, StoreScore) and _named(st.targets):
+                self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
+                          self.objective(st.objective))
+            else:
+                self.host(vm.OP_HOSTSTORE, st)
 
     def if_function(self, st: IfFunction) -> None:
         members = self.members(st.function, st.is_tag, abort=True)
@@ -187,9 +189,7 @@ class Compiler:
             ok, value = (1, cmd.value) if cmd.kind == "value" else (0, 0)
             if stores:  # the return's callback feeds the chain's stores first
                 self.emit(vm.OP_RESULT, ok, value)
-                for st in stores:
-                    self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
-                              self.objective(st.objective))
+                self.stores(stores)
             if cmd.kind == "value":
                 self.emit(vm.OP_RETV, value)
             else:
@@ -199,11 +199,7 @@ class Compiler:
         gate = self.emit(vm.OP_JMPDEAD, 0) if in_chain else None
         inner = cmd.command
         stages, final = flatten_execute(inner) if isinstance(inner, Execute) else ([], inner)
-        if all(self._vm_stage(s) for s in stages):
-            self.chain(stages, final, returning=True, outer_stores=tuple(stores))
-        else:
-            self.host(inner, whole=True)
-            self.emit(vm.OP_RETRES)
+        self.chain(stages, final, returning=True, outer_stores=tuple(stores))
         if gate is not None:
             self.program.patch(gate, 1, self.program.next_pc)
 
@@ -218,7 +214,7 @@ class Compiler:
         macro = cmd.arguments is not None or cmd.with_source is not None or any(self.functions[m].is_macro for m in members)
         if macro:
             if cmd.is_tag:
-                self.host(cmd, whole=False)
+                self.host(vm.OP_HOST, cmd)
                 return
             self.program.macro_calls.append(MacroCall(cmd, cmd.function, self.fn_id))
             self.emit(vm.OP_MACRO, len(self.program.macro_calls) - 1)
@@ -264,6 +260,12 @@ class Compiler:
 
 def _named(holder) -> bool:
     return isinstance(holder, NameTarget)
+
+
+def _vm_condition(st: IfScore | IfScoreMatches) -> bool:
+    if isinstance(st, IfScore):
+        return _named(st.target) and _named(st.source)
+    return _named(st.target)
 
 
 def flatten_execute(cmd: Execute) -> tuple[list[Subcommand], Command | None]:

@@ -1,14 +1,15 @@
 """Host-side (Python) execution of the commands the VM does not run itself.
 
-The VM stops at an ``OP_HOST``; :meth:`Host.run` executes the command on the world state and
-writes the result back into the VM registers. Two kinds (see :class:`emulator.program.HostOp`):
+The VM stops at a host op and the numba backend calls one of (the VM has charged the costs):
 
-- a *final* command (``say``, ``schedule``, a score command on ``*`` or a selector ...): the VM has
-  already charged it; the host runs it once for the current context.
-- a *whole* ``execute`` chain with stages the VM does not compile (``as``, ``at``, ``positioned``,
-  ``if entity`` ...): the host charges the stages and per-context runs itself (the rule in
-  :mod:`emulator.backend`). Entities are not modelled yet, so selectors find nothing: ``as @e``
-  leaves no context and ``@s`` run by the server names no holder.
+- :meth:`Host.run_final`: a final command (``say``, ``schedule``, a score command on ``*`` or a
+  selector, a condition ending a chain ...) run once for the current context;
+- :meth:`Host.run_stage`: an execute stage the VM does not evaluate (``as``, ``positioned``,
+  ``if entity`` ...), giving the contexts the rest of the chain runs in;
+- :meth:`Host.run_store`: a ``store`` into storage (or a score holder named by a selector).
+
+Entities are not modelled yet, so selectors find nothing: ``as @e`` leaves no context and ``@s``
+run by the server names no holder.
 
 Failures are the game's: the command fails (result 0) and the run goes on. Failures that point at
 a bug or at a limit of the emulator become diagnostics; routine ones (``get`` of an unset score,
@@ -16,13 +17,15 @@ a bug or at a limit of the emulator become diagnostics; routine ones (``get`` of
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+import math
+from dataclasses import dataclass, replace
 from typing import Callable
 
-from emulator.compiler import flatten_execute
 from emulator.semantics import INT_MAX, floor_div, floor_mod, wrap32
 from emulator.state import SERVER, Context, WorldState
+from emulator.world import stores
 from mcfunction_parser import ast
+from mcfunction_parser.nbt import Compound
 
 
 class HostFailure(Exception):
@@ -32,10 +35,6 @@ class HostFailure(Exception):
         super().__init__(message)
         self.message = message
         self.report = report
-
-
-class QuotaCut(Exception):
-    """The quota ran out inside a whole command run by the host."""
 
 
 @dataclass
@@ -57,42 +56,44 @@ class Host:
         self._warned: set = set()
 
     # ------------------------------------------------------------------ entry points
-    def run_final(self, cmd: ast.Command, ctx: Context) -> HostResult:
+    def run_final(self, cmd: ast.Command | ast.Condition, ctx: Context) -> HostResult:
+        """A command (or a condition ending an execute chain) run once for ``ctx``."""
         try:
+            if isinstance(cmd, ast.Condition):
+                if not self.condition(cmd, ctx):
+                    raise HostFailure("Test failed")
+                return HostResult(True, True, 1)
             return HostResult(True, True, wrap32(self.command(cmd, ctx)))
         except HostFailure as failure:
             if failure.report:
                 self.report(failure.message, "error")
             return HostResult(True, False, 0)
 
-    def run_whole(self, cmd: ast.Execute, ctx: Context, charge: Callable[[int, bool], None]) -> HostResult:
-        """Run an execute chain: ``charge(n, check)`` takes ``n`` from the quota, first raising
-        :class:`QuotaCut` if ``check`` and the quota is exhausted (an entry boundary)."""
-        contexts = [ctx]
-        stages, final = flatten_execute(cmd)
-        charge(0, True)
+    def run_stage(self, st: ast.Subcommand, ctx: Context) -> list[Context] | None:
+        """The contexts one execute stage makes from ``ctx``; None when the stage fails the
+        command (a non-forked modifier error)."""
         try:
-            for i, st in enumerate(stages):
-                if final is None and i == len(stages) - 1:
-                    break
-                charge(1, False)
-                contexts = [new for c in contexts for new in self.stage(st, c)]
+            return self.stage(st, ctx)
         except HostFailure as failure:
             if failure.report:
                 self.report(failure.message, "error")
-            return HostResult(False, False, 0)
-        result = HostResult(False, False, 0)
-        for c in contexts:
-            charge(1, True)
-            if final is None:
-                passed = self.condition(stages[-1], c)
-                result = HostResult(True, passed, int(passed))
-            elif isinstance(final, (ast.FunctionCall, ast.Return)):
-                self.report(f"'{type(final).__name__}' after an execute stage the VM does not compile is not supported yet", "error")
-                result = HostResult(True, False, 0)
-            else:
-                result = self.run_final(final, c)
-        return result
+            return None
+
+    def run_store(self, st: ast.Subcommand, ctx: Context, ok: bool, value: int) -> None:
+        """A ``store`` stage's callback: ``result`` stores the value (0 on failure), ``success`` 1/0."""
+        stored = (value if ok else 0) if st.kind == "result" else int(ok)
+        if isinstance(st, ast.StoreData) and isinstance(st.target, ast.StorageData):
+            root = self.state.storage.setdefault(st.target.id, Compound())
+            stores.store(root, st.path, st.type, stored, st.scale)
+        elif isinstance(st, ast.StoreScore):
+            try:
+                names = self.holders(st.targets, ctx)
+            except HostFailure:
+                return
+            for name in names:
+                self.state.scoreboard.set(name, st.objective, stored)
+        else:
+            self.warn(st, "'store' into an entity, a block or a bossbar is not emulated yet")
 
     # ------------------------------------------------------------------ execute stages
     def stage(self, st: ast.Subcommand, ctx: Context) -> list[Context]:
@@ -102,12 +103,20 @@ class Host:
         if isinstance(st, (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity, ast.ExOn)):
             return []  # no entities: nothing selected
         if isinstance(st, ast.ExIn):
-            return [Context(ctx.executor, ctx.pos, ctx.rot, ctx.anchor, st.dimension)]
+            return [replace(ctx, dimension=st.dimension)]
         if isinstance(st, ast.ExAnchored):
-            return [Context(ctx.executor, ctx.pos, ctx.rot, st.anchor, ctx.dimension)]
-        if isinstance(st, (ast.StoreScore, ast.StoreData, ast.StoreBossbar)):
-            self.warn(st, "'store' in an execute chain the VM does not compile is ignored")
-            return [ctx]
+            return [replace(ctx, anchor=st.anchor)]
+        if isinstance(st, ast.ExAlign):
+            pos = tuple(float(math.floor(v)) if axis in st.axes else v for axis, v in zip("xyz", ctx.pos))
+            return [replace(ctx, pos=pos)]
+        if isinstance(st, ast.ExPositioned) and not st.pos.is_local:
+            # Vec3Argument centres integer x/z; positioned also resets the anchor to the feet
+            coords = (st.pos.x, st.pos.y, st.pos.z)
+            pos = tuple(_coord(c, base, centre=axis != 1) for axis, (c, base) in enumerate(zip(coords, ctx.pos)))
+            return [replace(ctx, pos=pos, anchor="feet")]
+        if isinstance(st, ast.ExRotated):
+            rot = (_coord(st.rot.x, ctx.rot[0], centre=False), _coord(st.rot.y, ctx.rot[1], centre=False))
+            return [replace(ctx, rot=rot)]
         self.warn(st, f"'{type(st).__name__}' is not emulated: the context is kept unchanged")
         return [ctx]
 
@@ -296,6 +305,13 @@ def _get_or_create(sb, holder: str, objective: str) -> int:
         sb.set(holder, objective, 0)
         return 0
     return value
+
+
+def _coord(c: ast.Coord, base: float, centre: bool) -> float:
+    """An absolute or ``~`` relative coordinate; integer absolute x/z are block centres."""
+    if c.kind == "rel":
+        return base + c.value
+    return c.value + 0.5 if centre and c.is_int else c.value
 
 
 _OPERATIONS = {

@@ -13,7 +13,7 @@ import numpy as np
 from emulator import vm
 from emulator.backend import RootResult, report_quota_cut
 from emulator.compiler import Compiler
-from emulator.host import Host, QuotaCut
+from emulator.host import Host
 from emulator.program import Program
 from emulator.reference.failure import CommandFailure
 from emulator.reference.macros import MacroExpander
@@ -62,12 +62,12 @@ class NumbaBackend:
         self.counts = np.zeros(0, dtype=np.int64)  # cost charged per instruction
         self.totals = np.zeros(0, dtype=np.int64)  # inclusive cost per function
         self.active = np.zeros(0, dtype=np.int64)
-        self.context = Context()
+        self.contexts: list[Context] = [Context()]  # R_CTX indexes this; reset per root
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
-        self.context = context or Context()
+        self.contexts = [context or Context()]
         function = self.packs.functions.get(function_id)
         if function is None:
             state.error(f"Unknown function {function_id}")
@@ -109,10 +109,7 @@ class NumbaBackend:
                 report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
                 return True
             if status == vm.ST_HOST:
-                if not self._host(int(r[vm.R_PC])):
-                    self._close_frames()
-                    report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
-                    return True
+                self._host(int(r[vm.R_PC]))
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_ERROR:
@@ -143,31 +140,40 @@ class NumbaBackend:
                 self.totals[fn] += int(self.frames[i, vm.F_QUOTA]) - quota
 
     # ------------------------------------------------------------------ requests
-    def _host(self, pc: int) -> bool:
-        """Run host op at ``pc``; False when the quota ran out inside it."""
-        op = self.program.host_ops[self.program.rows[pc][1]]
+    def _host(self, pc: int) -> None:
+        """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
+        opcode, index = self.program.rows[pc][0], self.program.rows[pc][1]
+        node = self.program.host_ops[index].node
         r = self.regs
         self._current_pc = pc
-        if op.whole:
-            try:
-                result = self.host.run_whole(op.command, self.context, self._charge)
-            except QuotaCut:
-                return False
-            r[vm.R_ALIVE] = 1
-        else:
-            result = self.host.run_final(op.command, self.context)
-        r[vm.R_HAS] = int(result.has)
-        r[vm.R_OK] = int(result.ok)
-        r[vm.R_VAL] = wrap32(result.value)
+        ctx = self.contexts[int(r[vm.R_CTX])]
         r[vm.R_PC] = pc + 1
-        return True
+        if opcode == vm.OP_HOST:
+            result = self.host.run_final(node, ctx)
+            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = int(result.has), int(result.ok), wrap32(result.value)
+        elif opcode == vm.OP_HOSTSTORE:
+            self.host.run_store(node, ctx, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
+        else:
+            self._stage(node, ctx)
 
-    def _charge(self, n: int, check: bool) -> None:
+    def _stage(self, node, ctx: Context) -> None:
+        """An execute stage: the VM runs a chain for one context, so a stage may leave 0 or 1."""
         r = self.regs
-        if check and r[vm.R_QUOTA] <= 0:
-            raise QuotaCut()
-        r[vm.R_QUOTA] -= n
-        self.counts[self._current_pc] += n
+        made = self.host.run_stage(node, ctx)
+        if made is None:  # the command fails here: skip to the chain's end
+            r[vm.R_ALIVE] = 0
+            r[vm.R_PC] = r[vm.R_ABORT]
+        elif not made:
+            r[vm.R_ALIVE] = 0
+        elif len(made) == 1:
+            if made[0] is not ctx:
+                self.contexts.append(made[0])
+                r[vm.R_CTX] = len(self.contexts) - 1
+        else:
+            self._report_here(f"execute forked into {len(made)} contexts: the VM runs one context per "
+                              "command line (not supported yet)", "error")
+            r[vm.R_ALIVE] = 0
+            r[vm.R_PC] = r[vm.R_ABORT]
 
     def _macro(self, pc: int) -> None:
         call = self.program.macro_calls[self.program.rows[pc][1]]

@@ -10,18 +10,17 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from emulator.vm import OP_CALLREG, OP_HALT, WIDTH
-from mcfunction_parser.ast import Command
+from mcfunction_parser.ast import Command, Subcommand
 from mcfunction_parser.diagnostics import Loc
 
 
 @dataclass(frozen=True, slots=True)
 class HostOp:
-    """A command the VM hands to :mod:`emulator.host`. ``whole``: the host runs the entire
-    command line, charging its own costs; otherwise the VM already charged the final command."""
+    """A node the VM hands to :mod:`emulator.host`: a final command, an execute stage or a store
+    (which one is told by the opcode naming it). The VM charges the costs."""
 
-    command: Command
+    node: Command | Subcommand
     function: str
-    whole: bool
 
 
 @dataclass(frozen=True, slots=True)

@@ -32,7 +32,7 @@ OP_REMOVE = 12  # a h, b o, c value
 OP_RESET = 13  # a h, b o
 OP_RESETALL = 14  # a h
 OP_GET = 15  # a h, b o
-OP_OPER = 16  # a: operation (OPK_*), b h1, c o1, d h2, e o2
+OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
 OP_CHKOBJ = 22  # a o: a stage naming objective o fails the command if o does not exist
@@ -55,14 +55,17 @@ OP_FAIL = 46  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. T
 OP_RESULT = 47  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
 OP_JMPDEAD = 48  # a: target. `run return run ...` with no context left: skip it
 OP_STOP = 49  # abort the chain without an error (`if function` on an empty tag)
-OP_HOST = 50  # a: host command index, b: 1 = whole command (host charges), 0 = final op
+OP_HOST = 50  # a: host op index. A final command run by Python (charged here, per context)
 OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
+OP_HOSTSTAGE = 52  # a: host op index. An execute stage run by Python: sets alive and R_CTX
+OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
 
-OP_NAMES = {v: k[3:] for k, v in dict(globals()).items() if k.startswith("OP_") and isinstance(v, int)}
-
-# operations of OP_OPER
+# operations: opcode OP_OPER_BASE + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 OPK_BY_SYMBOL = {"=": 0, "+=": 1, "-=": 2, "*=": 3, "/=": 4, "%=": 5, "<": 6, ">": 7, "><": 8}
+
+OP_NAMES = {v: k[3:] for k, v in dict(globals()).items() if k.startswith("OP_") and isinstance(v, int)}
+OP_NAMES.update({OP_OPER_BASE + k: f"OPER{symbol}" for symbol, k in OPK_BY_SYMBOL.items()})
 # comparisons of OP_IFSCORE
 CMP_LT, CMP_LE, CMP_EQ, CMP_GE, CMP_GT = range(5)
 CMP_BY_SYMBOL = {"<": 0, "<=": 1, "=": 2, ">=": 3, ">": 4}
@@ -116,6 +119,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     acc_any = regs[R_ACC_ANY]
     acc_sum = regs[R_ACC_SUM]
     abort = regs[R_ABORT]
+    ctx = regs[R_CTX]
     sanitize = regs[R_SANITIZE] != 0
     counting = regs[R_COUNTING] != 0  # off only to measure the counters' cost
     novf = regs[R_NOVF]
@@ -138,7 +142,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             has = 0
             abort = code[pc, 2]
             pc += 1
-        elif op == OP_SET or op == OP_ADD or op == OP_REMOVE or op == OP_GET or op == OP_OPER or op == OP_RESET or op == OP_RESETALL:
+        elif op >= OP_OPER_BASE:  # scoreboard players operation, one opcode per operation
             if alive == 0:
                 pc += 1
                 continue
@@ -148,20 +152,85 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             quota -= 1
             if counting:
                 counts[pc] += 1
-            has = 1
-            ok = 1
-            if op == OP_RESETALL:
-                h = code[pc, 1]
-                present[h, :] = 0
-                val = 1
-                pc += 1
-                continue
             h = code[pc, 1]
             o = code[pc, 2]
-            if op == OP_OPER:
-                h = code[pc, 2]
-                o = code[pc, 3]
+            h2 = code[pc, 3]
+            o2 = code[pc, 4]
+            if alive_obj[o] == 0 or alive_obj[o2] == 0:
+                has = 1
+                ok = 0
+                val = 0
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o if alive_obj[o] == 0 else o2
+                pc += 1
+                status = ST_ERROR
+                break
+            # get-or-create: target first, then source (ScoreboardCommand.performOperation)
+            if present[h, o] == 0:
+                values[h, o] = 0
+                present[h, o] = 1
+            if present[h2, o2] == 0:
+                values[h2, o2] = 0
+                present[h2, o2] = 1
+            a = np.int64(values[h, o])
+            b = np.int64(values[h2, o2])
+            k = op - OP_OPER_BASE
+            if k == OPK_ADD:
+                r = a + b
+            elif k == OPK_SUB:
+                r = a - b
+            elif k == OPK_MUL:
+                r = a * b
+            elif k == OPK_ASSIGN:
+                r = b
+            elif k == OPK_DIV or k == OPK_MOD:
+                if b == 0:
+                    has = 1
+                    ok = 0
+                    val = 0
+                    err = ERR_DIV_ZERO
+                    errarg = 0
+                    pc += 1
+                    status = ST_ERROR
+                    break
+                r = a // b if k == OPK_DIV else a % b
+            elif k == OPK_MIN:
+                r = a if a < b else b
+            elif k == OPK_MAX:
+                r = a if a > b else b
+            else:  # swap
+                values[h2, o2] = a
+                r = b
+            nv = _wrap(r)
+            values[h, o] = nv
+            has = 1
+            ok = 1
+            val = nv
+            pc += 1
+            if sanitize and _overflowed(r):
+                ovf[novf, 0] = ipc
+                ovf[novf, 1] = k
+                ovf[novf, 2] = a
+                ovf[novf, 3] = b
+                ovf[novf, 4] = r
+                novf += 1
+                if novf >= ovf.shape[0]:
+                    status = ST_FLUSH
+                    break
+        elif op == OP_ADD or op == OP_REMOVE or op == OP_SET:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            h = code[pc, 1]
+            o = code[pc, 2]
             if alive_obj[o] == 0:
+                has = 1
                 ok = 0
                 val = 0
                 err = ERR_UNKNOWN_OBJECTIVE
@@ -169,95 +238,63 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 pc += 1
                 status = ST_ERROR
                 break
+            d = np.int64(code[pc, 3])
+            old = np.int64(0)
             if op == OP_SET:
-                v = code[pc, 3]
-                values[h, o] = v
-                present[h, o] = 1
-                val = v
-            elif op == OP_ADD or op == OP_REMOVE:
+                exact = d
+            else:
                 old = np.int64(values[h, o]) if present[h, o] else np.int64(0)
-                d = np.int64(code[pc, 3])
                 exact = old + d if op == OP_ADD else old - d
-                if sanitize and _overflowed(exact):
-                    ovf[novf, 0] = pc
-                    ovf[novf, 1] = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
-                    ovf[novf, 2] = old
-                    ovf[novf, 3] = d
-                    ovf[novf, 4] = exact
-                    novf += 1
-                nv = _wrap(exact)
-                values[h, o] = nv
-                present[h, o] = 1
-                val = nv
-            elif op == OP_RESET:
-                present[h, o] = 0
-                val = 1
-            elif op == OP_GET:
-                if present[h, o]:
-                    val = values[h, o]
-                else:
-                    ok = 0
-                    val = 0
-            else:  # OP_OPER
-                k = code[pc, 1]
-                h2 = code[pc, 4]
-                o2 = code[pc, 5]
-                if alive_obj[o2] == 0:
-                    ok = 0
-                    val = 0
-                    err = ERR_UNKNOWN_OBJECTIVE
-                    errarg = o2
-                    pc += 1
-                    status = ST_ERROR
-                    break
-                # get-or-create: target first, then source (ScoreboardCommand.performOperation)
-                if present[h, o] == 0:
-                    values[h, o] = 0
-                    present[h, o] = 1
-                if present[h2, o2] == 0:
-                    values[h2, o2] = 0
-                    present[h2, o2] = 1
-                a = np.int64(values[h, o])
-                b = np.int64(values[h2, o2])
-                if k == OPK_ASSIGN:
-                    r = b
-                elif k == OPK_ADD:
-                    r = a + b
-                elif k == OPK_SUB:
-                    r = a - b
-                elif k == OPK_MUL:
-                    r = a * b
-                elif k == OPK_DIV or k == OPK_MOD:
-                    if b == 0:
-                        ok = 0
-                        val = 0
-                        err = ERR_DIV_ZERO
-                        errarg = 0
-                        pc += 1
-                        status = ST_ERROR
-                        break
-                    r = a // b if k == OPK_DIV else a % b
-                elif k == OPK_MIN:
-                    r = a if a < b else b
-                elif k == OPK_MAX:
-                    r = a if a > b else b
-                else:  # swap
-                    values[h2, o2] = a
-                    r = b
-                if sanitize and _overflowed(r):
-                    ovf[novf, 0] = pc
-                    ovf[novf, 1] = k
-                    ovf[novf, 2] = a
-                    ovf[novf, 3] = b
-                    ovf[novf, 4] = r
-                    novf += 1
-                nv = _wrap(r)
-                values[h, o] = nv
-                val = nv
+            nv = _wrap(exact)
+            values[h, o] = nv
+            present[h, o] = 1
+            has = 1
+            ok = 1
+            val = nv
             pc += 1
-            if novf >= ovf.shape[0]:
-                status = ST_FLUSH
+            if sanitize and _overflowed(exact):
+                ovf[novf, 0] = ipc
+                ovf[novf, 1] = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
+                ovf[novf, 2] = old
+                ovf[novf, 3] = d
+                ovf[novf, 4] = exact
+                novf += 1
+                if novf >= ovf.shape[0]:
+                    status = ST_FLUSH
+                    break
+        elif op == OP_GET or op == OP_RESET or op == OP_RESETALL:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
                 break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            h = code[pc, 1]
+            has = 1
+            ok = 1
+            val = 1
+            pc += 1
+            if op == OP_RESETALL:
+                present[h, :] = 0
+                continue
+            o = code[pc - 1, 2]
+            if alive_obj[o] == 0:
+                ok = 0
+                val = 0
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                status = ST_ERROR
+                break
+            if op == OP_RESET:
+                present[h, o] = 0
+            elif present[h, o]:
+                val = values[h, o]
+            else:
+                ok = 0
+                val = 0
         elif op == OP_IFSCORE or op == OP_IFMATCH:
             if alive == 0:
                 pc += 1
@@ -356,6 +393,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             frames[depth, F_ACC_ANY] = acc_any
             frames[depth, F_ACC_SUM] = acc_sum
             frames[depth, F_ABORT] = abort
+            frames[depth, F_CTX] = ctx
             frames[depth, F_CALLPC] = pc
             frames[depth, F_QUOTA] = quota
             active[fn] += 1
@@ -398,6 +436,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             acc_any = frames[depth, F_ACC_ANY]
             acc_sum = frames[depth, F_ACC_SUM]
             abort = frames[depth, F_ABORT]
+            ctx = frames[depth, F_CTX]
         elif op == OP_TAGBEGIN:
             acc_any = 0
             acc_sum = 0
@@ -476,13 +515,24 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             if alive == 0:
                 pc += 1
                 continue
-            if code[pc, 2] == 0:
-                if quota <= 0:
-                    status = ST_CUT
-                    break
-                quota -= 1
-                if counting:
-                    counts[pc] += 1
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            status = ST_HOST
+            break
+        elif op == OP_HOSTSTAGE:
+            if alive == 0:
+                pc += 1
+                continue
+            status = ST_HOST
+            break
+        elif op == OP_HOSTSTORE:
+            if alive == 0 or has == 0:
+                pc += 1
+                continue
             status = ST_HOST
             break
         elif op == OP_MACRO:
@@ -505,6 +555,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     regs[R_ACC_ANY] = acc_any
     regs[R_ACC_SUM] = acc_sum
     regs[R_ABORT] = abort
+    regs[R_CTX] = ctx
     regs[R_NOVF] = novf
     if status == ST_ERROR:
         regs[R_ERR] = err
