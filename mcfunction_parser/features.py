@@ -175,3 +175,105 @@ def permission_warning(name: str) -> str | None:
         return (f"`{name}` needs permission level {level}; functions run at level 2 unless "
                 "function-permission-level is raised")
     return None
+
+# ----------------------------------------------------------------------------- game rules
+# Names and value types from the game's command trees (the last patch of each minor version);
+# a rule is dated to the first minor version whose tree has it. 1.21.11 renamed every rule to
+# snake_case (a ``minecraft:`` prefix is accepted too).
+GAMERULES_CAMEL: dict[str, tuple[Version, str]] = {
+    "announceAdvancements": ((1, 16, 0), "bool"),
+    "commandBlockOutput": ((1, 16, 0), "bool"),
+    "disableElytraMovementCheck": ((1, 16, 0), "bool"),
+    "disableRaids": ((1, 16, 0), "bool"),
+    "doDaylightCycle": ((1, 16, 0), "bool"),
+    "doEntityDrops": ((1, 16, 0), "bool"),
+    "doFireTick": ((1, 16, 0), "bool"),
+    "doImmediateRespawn": ((1, 16, 0), "bool"),
+    "doInsomnia": ((1, 16, 0), "bool"),
+    "doLimitedCrafting": ((1, 16, 0), "bool"),
+    "doMobLoot": ((1, 16, 0), "bool"),
+    "doMobSpawning": ((1, 16, 0), "bool"),
+    "doPatrolSpawning": ((1, 16, 0), "bool"),
+    "doTileDrops": ((1, 16, 0), "bool"),
+    "doTraderSpawning": ((1, 16, 0), "bool"),
+    "doWeatherCycle": ((1, 16, 0), "bool"),
+    "drowningDamage": ((1, 16, 0), "bool"),
+    "fallDamage": ((1, 16, 0), "bool"),
+    "fireDamage": ((1, 16, 0), "bool"),
+    "forgiveDeadPlayers": ((1, 16, 0), "bool"),
+    "keepInventory": ((1, 16, 0), "bool"),
+    "logAdminCommands": ((1, 16, 0), "bool"),
+    "maxCommandChainLength": ((1, 16, 0), "int"),
+    "maxEntityCramming": ((1, 16, 0), "int"),
+    "mobGriefing": ((1, 16, 0), "bool"),
+    "naturalRegeneration": ((1, 16, 0), "bool"),
+    "randomTickSpeed": ((1, 16, 0), "int"),
+    "reducedDebugInfo": ((1, 16, 0), "bool"),
+    "sendCommandFeedback": ((1, 16, 0), "bool"),
+    "showDeathMessages": ((1, 16, 0), "bool"),
+    "spawnRadius": ((1, 16, 0), "int"),
+    "spectatorsGenerateChunks": ((1, 16, 0), "bool"),
+    "universalAnger": ((1, 16, 0), "bool"),
+    "freezeDamage": ((1, 17, 0), "bool"),
+    "playersSleepingPercentage": ((1, 17, 0), "int"),
+    "blockExplosionDropDecay": ((1, 19, 0), "bool"),
+    "commandModificationBlockLimit": ((1, 19, 0), "int"),
+    "doVinesSpread": ((1, 19, 0), "bool"),
+    "doWardenSpawning": ((1, 19, 0), "bool"),
+    "globalSoundEvents": ((1, 19, 0), "bool"),
+    "lavaSourceConversion": ((1, 19, 0), "bool"),
+    "mobExplosionDropDecay": ((1, 19, 0), "bool"),
+    "snowAccumulationHeight": ((1, 19, 0), "int"),
+    "tntExplosionDropDecay": ((1, 19, 0), "bool"),
+    "waterSourceConversion": ((1, 19, 0), "bool"),
+    "enderPearlsVanishOnDeath": ((1, 20, 0), "bool"),
+    "maxCommandForkCount": ((1, 20, 0), "int"),
+    "playersNetherPortalCreativeDelay": ((1, 20, 0), "int"),
+    "playersNetherPortalDefaultDelay": ((1, 20, 0), "int"),
+    "projectilesCanBreakBlocks": ((1, 20, 0), "bool"),
+    "spawnChunkRadius": ((1, 20, 0), "int"),
+}
+SNAKE_CASE_RULES: Version = (1, 21, 11)  # 25w44a
+_SNAKE_INT = frozenset((
+    "fire_spread_radius_around_player", "max_block_modifications", "max_command_forks",
+    "max_command_sequence_length", "max_entity_cramming", "max_minecart_speed", "max_snow_accumulation_height",
+    "players_nether_portal_creative_delay", "players_nether_portal_default_delay",
+    "players_sleeping_percentage", "random_tick_speed", "respawn_radius",
+))
+_SNAKE_BOOL = frozenset((
+    "advance_time", "advance_weather", "allow_entering_nether_using_portals", "block_drops",
+    "block_explosion_drop_decay", "command_block_output", "command_blocks_work", "drowning_damage",
+    "elytra_movement_check", "ender_pearls_vanish_on_death", "entity_drops", "fall_damage", "fire_damage",
+    "forgive_dead_players", "freeze_damage", "global_sound_events", "immediate_respawn", "keep_inventory",
+    "lava_source_conversion", "limited_crafting", "locator_bar", "log_admin_commands", "mob_drops",
+    "mob_explosion_drop_decay", "mob_griefing", "natural_health_regeneration", "player_movement_check",
+    "projectiles_can_break_blocks", "pvp", "raids", "reduced_debug_info", "send_command_feedback",
+    "show_advancement_messages", "show_death_messages", "spawn_mobs", "spawn_monsters", "spawn_patrols",
+    "spawn_phantoms", "spawn_wandering_traders", "spawn_wardens", "spawner_blocks_work",
+    "spectators_generate_chunks", "spread_vines", "tnt_explodes", "tnt_explosion_drop_decay",
+    "universal_anger", "water_source_conversion",
+))
+# Rules added between 1.20.6 and 1.21.10 are not in the table: unknown camelCase names there
+# only warn.
+_CAMEL_TABLE_EXACT_UNTIL: Version = (1, 21, 0)
+
+
+def gamerule_type(rule: str, version: Version) -> tuple[str | None, str | None]:
+    """The rule's value type (``"bool"`` or ``"int"``) and None; or None and why the rule doesn't
+    exist; or (None, None) for an unknown camelCase rule in 1.21.0 – 1.21.10, which the table
+    can't decide."""
+    if version >= SNAKE_CASE_RULES:
+        name = rule[10:] if rule.startswith("minecraft:") else rule
+        if name in _SNAKE_INT:
+            return "int", None
+        if name in _SNAKE_BOOL:
+            return "bool", None
+        return None, f"unknown game rule '{rule}' (game rules are snake_case from Minecraft 1.21.11)"
+    entry = GAMERULES_CAMEL.get(rule)
+    if entry is not None and version >= entry[0]:
+        return entry[1], None
+    if version >= _CAMEL_TABLE_EXACT_UNTIL and entry is None:
+        return None, None
+    if entry is not None:
+        return None, f"game rule '{rule}' requires Minecraft {version_text(entry[0])} or later"
+    return None, f"unknown game rule '{rule}'"

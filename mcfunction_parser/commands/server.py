@@ -5,11 +5,10 @@ import re
 
 from .. import ast
 from ..arguments import duration, int_range, objective, resource_location
-from ..features import feature_problem
+from ..features import feature_problem, gamerule_type, version_text
 from ..reader import Reader, show
 
 _RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")
-_INT_VALUE = re.compile(r"-?[0-9]+\Z")
 TIME_NAMES = {"day": 1000, "noon": 6000, "night": 13000, "midnight": 18000}
 
 
@@ -19,14 +18,21 @@ def gamerule(r: Reader, loc) -> ast.Command:
     rule = r.word()
     if not _RULE.match(rule):
         r.fail(f"expected a game rule name, got {show(rule)}", start)
+    kind, problem = gamerule_type(rule, r.version)
+    if problem:
+        r.fail(problem, start)
+    if kind is None:
+        r.warnings.append((f"unknown game rule '{rule}' (not in the rule table for {version_text(r.version)})", start))
     value = None
     if r.optional_space():
-        start = r.pos
-        value = r.word()
-        if value not in ("true", "false") and not _INT_VALUE.match(value):
-            r.fail(f"expected true, false or an integer for the game rule, got {show(value)}", start)
-        if _INT_VALUE.match(value) and not -(2**31) <= int(value) < 2**31:
-            r.fail(f"integer {value} is out of range for a 32-bit int", start)
+        if kind == "int":
+            value = str(r.integer(what="game rule value"))
+        elif kind == "bool":
+            value = "true" if r.boolean() else "false"
+        elif r.rest_word() in ("true", "false"):
+            value = r.word()
+        else:
+            value = str(r.integer(what="game rule value (true, false or an integer)"))
     r.finish()
     return ast.Gamerule(loc, rule, value)
 

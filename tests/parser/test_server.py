@@ -7,7 +7,27 @@ from parser_helpers import parse_err, parse_ok
 def test_gamerule():
     assert parse_ok("gamerule doDaylightCycle false").value == "false"
     assert parse_ok("gamerule maxCommandChainLength").value is None
-    assert "true, false or an integer" in parse_err("gamerule doDaylightCycle maybe").message
+    assert parse_ok("gamerule maxCommandChainLength 100").value == "100"
+    assert "true or false" in parse_err("gamerule doDaylightCycle 1").message
+    assert "game rule value" in parse_err("gamerule maxCommandChainLength true").message
+
+
+def test_gamerule_names_by_version():
+    # 1.21.11 renamed every rule to snake_case (the game's 1.21.11 command tree)
+    assert parse_ok("gamerule max_command_sequence_length 5", (1, 21, 11)).value == "5"
+    assert parse_ok("gamerule minecraft:advance_time false", (1, 21, 11)).value == "false"
+    assert "snake_case" in parse_err("gamerule doDaylightCycle false", (1, 21, 11)).message
+    assert "unknown game rule 'doDaylightCylce'" in parse_err("gamerule doDaylightCylce true", (1, 20, 4)).message
+    assert "1.19" in parse_err("gamerule doWardenSpawning false", (1, 18, 2)).message
+    parse_ok("gamerule freezeDamage false", (1, 17, 1))
+
+
+def test_gamerule_unknown_to_the_1_21_table_only_warns():
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+
+    cmd, diags = parse_command("gamerule tntExplodes false", Loc("t", 1, 1), (1, 21, 5))
+    assert cmd.value == "false" and [d.severity for d in diags] == ["warning"]
 
 
 def test_random():
