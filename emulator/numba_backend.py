@@ -62,12 +62,15 @@ class NumbaBackend:
         self.counts = np.zeros(0, dtype=np.int64)  # cost charged per instruction
         self.totals = np.zeros(0, dtype=np.int64)  # inclusive cost per function
         self.active = np.zeros(0, dtype=np.int64)
-        self.contexts: list[Context] = [Context()]  # R_CTX indexes this; reset per root
+        self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
+        self.context_ids: dict[tuple, int] = {}
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
-        self.contexts = [context or Context()]
+        self.contexts = []
+        self.context_ids: dict[tuple, int] = {}
+        self._context_index(context or Context())
         function = self.packs.functions.get(function_id)
         if function is None:
             state.error(f"Unknown function {function_id}")
@@ -156,6 +159,15 @@ class NumbaBackend:
         else:
             self._stage(node, ctx)
 
+    def _context_index(self, ctx: Context) -> int:
+        """Intern a context (a loop re-running a stage must not grow the table)."""
+        key = (ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension)
+        index = self.context_ids.get(key)
+        if index is None:
+            index = self.context_ids[key] = len(self.contexts)
+            self.contexts.append(ctx)
+        return index
+
     def _stage(self, node, ctx: Context) -> None:
         """An execute stage: the VM runs a chain for one context, so a stage may leave 0 or 1."""
         r = self.regs
@@ -167,8 +179,7 @@ class NumbaBackend:
             r[vm.R_ALIVE] = 0
         elif len(made) == 1:
             if made[0] is not ctx:
-                self.contexts.append(made[0])
-                r[vm.R_CTX] = len(self.contexts) - 1
+                r[vm.R_CTX] = self._context_index(made[0])
         else:
             self._report_here(f"execute forked into {len(made)} contexts: the VM runs one context per "
                               "command line (not supported yet)", "error")
