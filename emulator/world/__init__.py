@@ -12,6 +12,7 @@ reference interpreter). Modules:
 - ``source``: the execution context (position, rotation, executor, anchor) and coordinate arguments.
 - ``entities``: entity types, the entity store, entity NBT view and loading.
 - ``selectors``: ``@s @e @a @p @r @n`` with their arguments.
+- ``text``: numbers and tags as Java prints them (``Double.toString``, ``Tag.getAsString``).
 - ``teleport``: ``tp`` destinations for every form.
 - ``blocks``: a block map for ``setblock``/``fill``/``execute if block(s)``.
 """

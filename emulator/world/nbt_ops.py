@@ -51,6 +51,7 @@ from mcfunction_parser.nbt import (
 from emulator.semantics import double_to_long, mth_floor
 from emulator.world import mth
 from emulator.world.errors import CommandFailure
+from emulator.world.text import tag_as_string
 
 MAX_DEPTH = 512
 
@@ -675,10 +676,8 @@ def data_merge(root: Compound, patch: Compound) -> int:
 
 def _as_text(tag) -> str:
     """``Tag.getAsString`` for value tags (strings and numbers); compounds and lists fail."""
-    if isinstance(tag, str):
-        return str(tag)
-    if is_numeric(tag):
-        return to_snbt(tag)
+    if isinstance(tag, str) or is_numeric(tag):
+        return tag_as_string(tag)
     raise CommandFailure("commands.data.modify.expected_value", to_snbt(tag))
 
 

@@ -121,19 +121,45 @@ def _pd(h: str) -> float:
     return struct.unpack("<d", struct.pack("<Q", int(h, 16)))[0]
 
 
-@pytest.fixture(scope="module")
-def java(tmp_path_factory):
-    if shutil.which("javac") is None or shutil.which("java") is None:
-        pytest.skip("no JDK: the JVM cross-check needs javac and java")
-    out = tmp_path_factory.mktemp("mthref")
-    subprocess.run(["javac", "-d", str(out), str(JAVA_SOURCE)], check=True, capture_output=True)
+def _jdk_bins() -> list[Path]:
+    """Directories holding both ``java`` and ``javac``: the one on PATH first, then /usr/lib/jvm."""
+    found = []
+    if shutil.which("javac") and shutil.which("java"):
+        found.append(Path(shutil.which("java")).resolve().parent)
+    found += sorted(Path(p).parent for p in Path("/usr/lib/jvm").glob("*/bin/javac"))
+    return [b for b in found if (b / "java").exists()]
+
+
+def _major(bin_dir: Path) -> int:
+    out = subprocess.run([str(bin_dir / "java"), "-version"], capture_output=True, text=True).stderr
+    version = out.split('"')[1] if '"' in out else "0"
+    return int(version.split(".")[0])
+
+
+def _jvm(tmp_path_factory, min_major: int):
+    bins = [b for b in _jdk_bins() if _major(b) >= min_major]
+    if not bins:
+        pytest.skip(f"no JDK {min_major}+: the JVM cross-check needs javac and java")
+    bin_dir, out = bins[0], tmp_path_factory.mktemp("mthref")
+    subprocess.run([str(bin_dir / "javac"), "-d", str(out), str(JAVA_SOURCE)], check=True, capture_output=True)
 
     def ask(lines: list[str]) -> list[str]:
-        done = subprocess.run(["java", "-cp", str(out), "MthRef"], input="\n".join(lines) + "\n",
+        done = subprocess.run([str(bin_dir / "java"), "-cp", str(out), "MthRef"], input="\n".join(lines) + "\n",
                               check=True, capture_output=True, text=True)
         return done.stdout.splitlines()
 
     return ask
+
+
+@pytest.fixture(scope="module")
+def java(tmp_path_factory):
+    return _jvm(tmp_path_factory, 8)
+
+
+@pytest.fixture(scope="module")
+def java19(tmp_path_factory):
+    # Double/Float.toString print the shortest digits from Java 19 on (1.20.5+ runs on Java 21).
+    return _jvm(tmp_path_factory, 19)
 
 
 def _random_floats(rng, n, scale):
@@ -208,4 +234,16 @@ def test_numeric_tag_narrowing_matches_the_jvm(java):
         as_double = [narrow(Double(v), t) for t in (Byte, Short, Int, Long)]
         as_float = [narrow(Float(float(mth.f32(v))), t) for t in (Byte, Short, Int, Long)]
         ours.append(" ".join(str(x) for x in as_double + as_float))
+    assert ours == answers
+
+
+def test_number_text_matches_java_19(java19):
+    from emulator.world.text import java_double_string, java_float_string
+
+    rng = np.random.default_rng(6)
+    doubles = [float(v) for v in rng.uniform(-1e4, 1e4, 300)] + [float(10.0 ** e) * 1.2345 for e in range(-330, 300, 7)]
+    doubles += [5e-324, 1e-3, 9.999999999999999e-4, 1e7, 9999999.999999998, 0.1, 1e23, -0.0, 0.0, math.inf, math.nan, 100.0]
+    floats = [F32(v) for v in rng.uniform(-1e4, 1e4, 300)] + [F32(1.4e-45), F32(3.4028235e38), F32(1e7), F32(0.001), F32(-0.0)]
+    answers = java19([f"dtext {_hd(v)}" for v in doubles] + [f"ftext {_hf(v)}" for v in floats])
+    ours = [java_double_string(v) for v in doubles] + [java_float_string(v) for v in floats]
     assert ours == answers

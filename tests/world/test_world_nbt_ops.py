@@ -196,6 +196,8 @@ def test_string_source_substrings():
     # DataCommands.substring: negative bounds count from the end; bad bounds fail.
     assert nbt_ops.string_source([String("hello")], 1, -1) == ["ell"]
     assert nbt_ops.string_source([Int(42)]) == ["42"]
+    # Tag.getAsString: numbers as Java prints them with their suffix (StringTagVisitor).
+    assert nbt_ops.string_source([Float(0.1), Double(1e7), Byte(-3), Long(5)]) == ["0.1f", "1.0E7d", "-3b", "5L"]
     with pytest.raises(CommandFailure) as err:
         nbt_ops.string_source([String("hi")], 3)
     assert err.value.message == "Invalid substring indices: 3 to 2"

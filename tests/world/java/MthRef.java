@@ -129,6 +129,8 @@ public class MthRef {
                     + (long) Math.floor(v) + " " + (byte) (floorf(w) & 255) + " " + (short) (floorf(w) & 65535)
                     + " " + floorf(w) + " " + (long) w;
             }
+            case "dtext": return Double.toString(d(a[1]));
+            case "ftext": return Float.toString(f(a[1]));
             case "tables": {
                 StringBuilder rows = new StringBuilder();
                 for (int i = 0; i < 257; i++) {

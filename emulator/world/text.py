@@ -1,0 +1,71 @@
+"""Numbers and tags as text, the way the game's Java prints them.
+
+- ``java_double_string(x)`` / ``java_float_string(x)``: ``Double.toString`` / ``Float.toString``
+  (Java 19+, which 1.20.5+ requires): the shortest digits that read back to the same value; plain
+  decimal (at least one fractional digit) for 1e-3 <= |x| < 1e7, else ``d.dddE±n``;
+  ``NaN``, ``Infinity``, ``-0.0``.
+- ``tag_as_string(tag)``: ``Tag.getAsString()``: a string's own text, a number with its SNBT
+  suffix (``1b``, ``2.5f``, ``0.1d``, ``3L``), anything else as SNBT. It is what ``data modify ...
+  string`` copies and what ``data get`` shows for a single value.
+
+Source: decompiled 1.21 nbt/StringTagVisitor.java (visitFloat/visitDouble append the Java number
+and the suffix), java.lang.Double/Float.toString.
+"""
+from __future__ import annotations
+
+import math
+from decimal import ROUND_HALF_EVEN, Decimal
+
+import numpy as np
+
+from mcfunction_parser.nbt import Double, Float, to_snbt
+
+
+def _java_text(value: float, shortest: str, reads_back) -> str:
+    if math.isnan(value):
+        return "NaN"
+    if math.isinf(value):
+        return "Infinity" if value > 0 else "-Infinity"
+    sign = "-" if math.copysign(1.0, value) < 0 else ""
+    if value == 0.0:
+        return sign + "0.0"
+    exact = _digits(abs(value), Decimal(shortest).copy_abs().normalize(), reads_back)
+    digits = "".join(map(str, exact.as_tuple().digits))
+    exponent = exact.as_tuple().exponent + len(digits) - 1  # scientific exponent of the first digit
+    if 1e-3 <= abs(value) < 1e7:
+        text = format(exact, "f")
+        return sign + (text if "." in text else text + ".0")
+    return f"{sign}{digits[0]}.{digits[1:] or '0'}E{exponent}"
+
+
+def _digits(value: float, shortest: Decimal, reads_back) -> Decimal:
+    """Java's choice of digits: the shortest decimal that reads back, except that a one-digit
+    result gives way to the closest two-digit one (``Double.MIN_VALUE`` prints ``4.9E-324``)."""
+    if len(shortest.as_tuple().digits) > 1:
+        return shortest
+    exact = Decimal(value)
+    unit = Decimal(1).scaleb(exact.adjusted() - 1)  # two digits at the magnitude of the value itself
+    two = (exact / unit).quantize(Decimal(1), rounding=ROUND_HALF_EVEN) * unit
+    if reads_back(two) and abs(two - exact) < abs(shortest - exact):
+        return two.normalize()
+    return shortest
+
+
+def java_double_string(x: float) -> str:
+    return _java_text(x, repr(x), lambda d: float(d) == x)
+
+
+def java_float_string(x) -> str:
+    value = np.float32(x)
+    return _java_text(float(value), np.format_float_positional(value, unique=True, trim="-"),
+                      lambda d: np.float32(float(d)) == value)
+
+
+def tag_as_string(tag) -> str:
+    if isinstance(tag, str):
+        return str(tag)
+    if isinstance(tag, Float):
+        return java_float_string(float(tag)) + "f"
+    if isinstance(tag, Double):
+        return java_double_string(float(tag)) + "d"
+    return to_snbt(tag)
