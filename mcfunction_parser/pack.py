@@ -5,7 +5,8 @@ same id and its tag files merge on top (``replace`` honoured). All packs are rea
 version: ``mc_version`` when given, else the newest release any pack is written for (its
 ``pack_format``, or its ``max_format`` when it has no ``pack_format``). That version's format
 decides the folder names (``function`` from 1.21, ``functions`` before; the other name is
-ignored by the game, and warned about here) and which overlays apply.
+ignored by the game, and warned about here), which overlays apply (1.20.2+) and whether
+``filter.block`` hides earlier packs' files (1.19+). A pack is a folder or a .zip file.
 
 Nothing here raises on bad input: every problem is a :class:`Diagnostic`, and a problem in one
 file never stops the others.
@@ -26,8 +27,9 @@ from .pack_text import PackPath, load_json, read_text, split_lines
 from .parse import parse_function
 from .tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from .versions import (
-    FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, Format, Version, format_label, pack_format_for_version, parse_mc_version,
-    uses_singular_folders, version_for_pack_format, version_label,
+    FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, Format, Version, format_label,
+    pack_format_for_version, parse_mc_version, uses_singular_folders, version_for_pack_format,
+    version_label,
 )
 
 _NAMESPACE = re.compile(r"[a-z0-9_.-]+")

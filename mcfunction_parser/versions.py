@@ -41,8 +41,6 @@ SINGULAR_FOLDERS_FORMAT: Format = (48, 0)
 # First formats whose games read pack.mcmeta "filter" (1.19, 22w11a) and "overlays" (1.20.2, 23w31a).
 FILTER_FORMAT: Format = (10, 0)
 OVERLAYS_FORMAT: Format = (18, 0)
-# Oldest release the tools target.
-OLDEST_SUPPORTED: Version = (1, 16, 0)
 
 _VERSION_RE = re.compile(r"(\d+)\.(\d+)(?:\.(\d+))?")
 
@@ -77,10 +75,6 @@ def _build_release_table() -> dict[Version, Format]:
 
 RELEASE_FORMATS: dict[Version, Format] = _build_release_table()
 LATEST_RELEASE: Version = max(RELEASE_FORMATS)
-
-
-def is_known_release(version: Version) -> bool:
-    return version in RELEASE_FORMATS
 
 
 def pack_format_for_version(version: Version) -> Format:
