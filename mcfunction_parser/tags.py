@@ -14,12 +14,11 @@ from __future__ import annotations
 import re
 from collections.abc import Collection
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 from .ast import FunctionTag, TagEntry
 from .diagnostics import ERROR, Diagnostic, Loc
-from .pack_text import JsonDocument, load_json
+from .pack_text import JsonDocument, PackPath, load_json
 
 _NAMESPACE = r"[a-z0-9_.-]+"
 _RESOURCE_LOCATION = re.compile(rf"(?:{_NAMESPACE}:)?[a-z0-9_./-]+")
@@ -38,7 +37,7 @@ def normalise_id(text: str) -> str:
     return text if ":" in text else f"minecraft:{text}"
 
 
-def read_tag_file(path: Path, shown: str, diagnostics: list[Diagnostic]
+def read_tag_file(path: PackPath, shown: str, diagnostics: list[Diagnostic]
                   ) -> tuple[JsonDocument, bool, list[TagEntry]] | None:
     """Parse one tag file: (document, replace flag, entries); None if unusable (diagnosed)."""
     doc = load_json(path, shown, diagnostics)
@@ -66,7 +65,7 @@ def _entries(values: list[Any], doc: JsonDocument, diagnostics: list[Diagnostic]
         if isinstance(value, dict):
             raw, required = value.get("id"), value.get("required", True)
             if isinstance(raw, str):
-                cursor = doc.find_string(raw, doc.find_string("id", cursor))
+                cursor = _advance(doc, raw, _advance(doc, "id", cursor))
             if not isinstance(raw, str) or not isinstance(required, bool):
                 diagnostics.append(doc.diagnostic(
                     ERROR, 'a tag entry object needs "id" (a string) and optional "required" '
@@ -74,7 +73,7 @@ def _entries(values: list[Any], doc: JsonDocument, diagnostics: list[Diagnostic]
                 return None
         elif isinstance(value, str):
             raw, required = value, True
-            cursor = doc.find_string(raw, cursor)
+            cursor = _advance(doc, raw, cursor)
         else:
             diagnostics.append(doc.diagnostic(
                 ERROR, "a tag entry must be a string or an object with \"id\"", cursor))
@@ -88,6 +87,12 @@ def _entries(values: list[Any], doc: JsonDocument, diagnostics: list[Diagnostic]
             return None
         entries.append(TagEntry(normalise_id(name), is_tag, required, doc.loc_at(max(cursor, 0))))
     return entries
+
+
+def _advance(doc: JsonDocument, token: str, cursor: int) -> int:
+    """Offset of the next ``token`` string after ``cursor``; ``cursor`` itself if there is none."""
+    found = doc.find_string(token, cursor)
+    return found if found >= 0 else cursor
 
 
 def merge_tag(tags: dict[str, FunctionTag], tag_id: str, replace: bool, entries: list[TagEntry]) -> None:
