@@ -5,7 +5,7 @@ from __future__ import annotations
 import re
 
 from .ast import Coord, FloatRange, IntRange, NameTarget, Vec2, Vec3, Wildcard
-from .reader import INT_MAX, INT_MIN, UNQUOTED, WORD, Reader, show
+from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, Reader, show
 
 # ----------------------------------------------------------------------------- resource locations
 
@@ -51,8 +51,17 @@ def resource_or_tag(r: Reader, what: str) -> tuple[str, bool]:
 # ----------------------------------------------------------------------------- coordinates
 
 _COORD = re.compile(r"([~^]?)([0-9.\-]*)")
-_DOUBLE = re.compile(r"-?(?:[0-9]+\.?[0-9]*|\.[0-9]+)\Z")
-_INT = re.compile(r"-?[0-9]+\Z")
+_VEC3 = re.compile(r"([~^]?)([0-9.\-]*) ([~^]?)([0-9.\-]*) ([~^]?)([0-9.\-]*)")
+_KINDS = {"": "abs", "~": "rel", "^": "local"}
+
+
+def _make_coord(prefix: str, number: str, block: bool) -> Coord | None:
+    """The coordinate ``prefix`` + ``number`` (``~``, ``^-1``, ``3``...), None if malformed."""
+    if number:
+        if not (INT_TEXT if block and not prefix else FLOAT_TEXT).match(number):
+            return None
+        return Coord(_KINDS[prefix], float(number), not prefix and "." not in number)
+    return Coord(_KINDS[prefix], 0.0) if prefix else None
 
 
 def _coord(r: Reader, block: bool, allow_local: bool) -> Coord:
@@ -63,30 +72,28 @@ def _coord(r: Reader, block: bool, allow_local: bool) -> Coord:
         r.fail(f"expected a coordinate, got {show(r.rest_word())}")
     if prefix == "^" and not allow_local:
         r.fail("local coordinates (^) are not allowed here", start)
-    if number:
-        if not (_INT if block and not prefix else _DOUBLE).match(number):
-            r.fail(f"invalid {'integer ' if block and not prefix else ''}coordinate '{number}'", start + len(prefix))
-        value = float(number)
-    else:
-        value = 0.0
+    coord = _make_coord(prefix, number, block)
+    if coord is None:
+        r.fail(f"invalid {'integer ' if block and not prefix else ''}coordinate '{number}'", start + len(prefix))
     r.pos = m.end()
-    kind = "abs" if not prefix else ("rel" if prefix == "~" else "local")
-    return Coord(kind, value, not prefix and "." not in number)
-
-
-_VEC3 = re.compile(r"([~^]?)([0-9.\-]*) ([~^]?)([0-9.\-]*) ([~^]?)([0-9.\-]*)")
-_KINDS = {"": "abs", "~": "rel", "^": "local"}
+    return coord
 
 
 def vec3(r: Reader, block: bool = False) -> Vec3:
-    """A position; ``block`` for block positions (absolute coordinates must be integers)."""
+    """A position; ``block`` for block positions (absolute coordinates must be integers).
+
+    One regex reads the usual well-formed position; anything else goes coordinate by coordinate,
+    which finds and reports the error.
+    """
     loc = r.loc()
     m = _VEC3.match(r.text, r.pos)
     if m is not None:
-        fast = _vec3_fast(m.groups(), block)
-        if fast is not None:
-            r.pos = m.end()
-            return Vec3(fast[0], fast[1], fast[2], loc)
+        g = m.groups()
+        if (g[0] == "^") + (g[2] == "^") + (g[4] == "^") in (0, 3):
+            x, y, z = _make_coord(g[0], g[1], block), _make_coord(g[2], g[3], block), _make_coord(g[4], g[5], block)
+            if x is not None and y is not None and z is not None:
+                r.pos = m.end()
+                return Vec3(x, y, z, loc)
     start = r.pos
     x = _coord(r, block, True)
     r.space("y coordinate")
@@ -97,24 +104,6 @@ def vec3(r: Reader, block: bool = False) -> Vec3:
     if local not in (0, 3):
         r.fail("cannot mix world and local coordinates (use ^ for all three or for none)", start)
     return Vec3(x, y, z, loc)
-
-
-def _vec3_fast(groups: tuple, block: bool):
-    """The three coordinates when all are well formed and consistent, else None (the slow path
-    then finds and reports the error)."""
-    coords = []
-    for i in (0, 2, 4):
-        prefix, number = groups[i], groups[i + 1]
-        if number:
-            if not (_INT if block and not prefix else _DOUBLE).match(number):
-                return None
-            coords.append(Coord(_KINDS[prefix], float(number), not prefix and "." not in number))
-        elif prefix:
-            coords.append(Coord(_KINDS[prefix], 0.0, False))
-        else:
-            return None
-    local = (groups[0] == "^") + (groups[2] == "^") + (groups[4] == "^")
-    return coords if local == 0 or local == 3 else None
 
 
 def vec2(r: Reader, integers: bool = False) -> Vec2:
@@ -137,7 +126,7 @@ def _bound(r: Reader, is_int: bool):
     token = _BOUND.match(r.text, start).group()
     if not token:
         return None
-    if not (_INT if is_int else _DOUBLE).match(token):
+    if not (INT_TEXT if is_int else FLOAT_TEXT).match(token):
         r.fail(f"invalid {'integer' if is_int else 'number'} '{token}' in range", start)
     r.pos = start + len(token)
     if is_int:
@@ -233,7 +222,7 @@ def duration(r: Reader, minimum: int = 0) -> int:
     number, unit = m.group(1), m.group(2)
     if not number:
         r.fail(f"expected a time, got {show(r.rest_word())}")
-    if not _DOUBLE.match(number):
+    if not FLOAT_TEXT.match(number):
         r.fail(f"invalid time '{number}'", start)
     ticks = round(float(number) * _TIME_UNITS[unit])  # TimeArgument uses Math.round
     if ticks < minimum:

@@ -26,8 +26,9 @@ QUOTED = {
     "'": re.compile(r"'((?:[^'\\]|\\['\\])*)'"),
 }
 _UNESCAPE = re.compile(r"\\(.)")
-_INT_TEXT = re.compile(r"-?[0-9]+\Z")
-_FLOAT_TEXT = re.compile(r"-?(?:[0-9]+\.?[0-9]*|\.[0-9]+)\Z")
+# a whole token that Integer.parseInt / Double.parseDouble accept (within Brigadier's number characters)
+INT_TEXT = re.compile(r"-?[0-9]+\Z")
+FLOAT_TEXT = re.compile(r"-?(?:[0-9]+\.?[0-9]*|\.[0-9]+)\Z")
 
 
 class ParseError(Exception):
@@ -200,7 +201,7 @@ class Reader:
         token = NUMBER.match(self.text, start).group()
         if not token:
             self.fail(f"expected {what}, got {show(self.rest_word())}")
-        if not _INT_TEXT.match(token):
+        if not INT_TEXT.match(token):
             self.fail(f"invalid integer '{token}'", start)
         value = int(token)
         if value < INT_MIN or value > INT_MAX:
@@ -212,23 +213,12 @@ class Reader:
         self.pos = start + len(token)
         return value
 
-    def long(self, what: str = "long") -> int:
-        start = self.pos
-        token = NUMBER.match(self.text, start).group()
-        if not token or not _INT_TEXT.match(token):
-            self.fail(f"expected {what}, got {show(self.rest_word())}")
-        value = int(token)
-        if not -(2**63) <= value < 2**63:
-            self.fail(f"{what} {token} is out of range for a 64-bit long", start)
-        self.pos = start + len(token)
-        return value
-
     def double(self, lo: float | None = None, hi: float | None = None, what: str = "number") -> float:
         start = self.pos
         token = NUMBER.match(self.text, start).group()
         if not token:
             self.fail(f"expected {what}, got {show(self.rest_word())}")
-        if not _FLOAT_TEXT.match(token):
+        if not FLOAT_TEXT.match(token):
             self.fail(f"invalid number '{token}'", start)
         value = float(token)
         if lo is not None and value < lo:

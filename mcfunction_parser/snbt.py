@@ -14,7 +14,6 @@ from .nbt import (Byte, ByteArray, Compound, Double, Float, Int, IntArray, List,
                   String)
 from .reader import UNQUOTED, Reader, show
 
-_UNQUOTED_VALUE = UNQUOTED
 _INTEGER = re.compile(r"[-+]?(?:0|[1-9][0-9]*)([bBsSlL]?)\Z")
 _DECIMAL = re.compile(r"[-+]?(?:[0-9]+\.|[0-9]*\.[0-9]+)(?:[eE][-+]?[0-9]+)?\Z")
 _SUFFIXED = re.compile(r"[-+]?(?:[0-9]+\.?|[0-9]*\.[0-9]+)(?:[eE][-+]?[0-9]+)?([dDfF])\Z")
@@ -81,7 +80,7 @@ def value(r: Reader):
     if c == '"' or c == "'":
         return String(r.quoted())
     start = r.pos
-    m = _UNQUOTED_VALUE.match(r.text, start)
+    m = UNQUOTED.match(r.text, start)
     token = m.group()
     if not token:
         r.fail(f"expected an NBT value, got {show(r.text[start:start + 1])}")
