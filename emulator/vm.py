@@ -130,19 +130,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     while True:
         ipc = pc
         op = code[pc, 0]
-        if op == OP_CMD:
-            if quota <= 0:
-                status = ST_CUT
-                break
-            cost = code[pc, 1]
-            quota -= cost
-            if counting:
-                counts[pc] += cost
-            alive = 1
-            has = 0
-            abort = code[pc, 2]
-            pc += 1
-        elif op >= OP_OPER_BASE:  # scoreboard players operation, one opcode per operation
+        if op >= OP_OPER_BASE:  # scoreboard players operation, one opcode per operation
             if alive == 0:
                 pc += 1
                 continue
@@ -295,6 +283,18 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             else:
                 ok = 0
                 val = 0
+        elif op == OP_CMD:
+            if quota <= 0:
+                status = ST_CUT
+                break
+            cost = code[pc, 1]
+            quota -= cost
+            if counting:
+                counts[pc] += cost
+            alive = 1
+            has = 0
+            abort = code[pc, 2]
+            pc += 1
         elif op == OP_IFSCORE or op == OP_IFMATCH:
             if alive == 0:
                 pc += 1
