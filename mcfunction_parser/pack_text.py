@@ -75,8 +75,11 @@ class JsonDocument:
     path: str
     text: str
     value: Any
-    _tokens: list[tuple[str, int]]
+    _tokens: list[tuple[str, int]]  # (decoded string, offset), in file order
     _line_starts: list[int]
+
+    def __post_init__(self) -> None:
+        self._offsets = [offset for _, offset in self._tokens]
 
     def loc_at(self, offset: int) -> Loc:
         index = bisect.bisect_right(self._line_starts, offset) - 1
@@ -89,9 +92,10 @@ class JsonDocument:
 
     def find_string(self, value: str, after: int = -1) -> int:
         """Offset of the first string token equal to ``value`` starting after ``after``; -1 if none."""
-        for token, offset in self._tokens:
-            if offset > after and token == value:
-                return offset
+        tokens = self._tokens
+        for index in range(bisect.bisect_right(self._offsets, after), len(tokens)):
+            if tokens[index][0] == value:
+                return tokens[index][1]
         return -1
 
     def diagnostic(self, severity: str, message: str, offset: int) -> Diagnostic:
