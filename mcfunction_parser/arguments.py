@@ -5,6 +5,7 @@ from __future__ import annotations
 import re
 
 from .ast import Coord, FloatRange, IntRange, NameTarget, Vec2, Vec3, Wildcard
+from .diagnostics import Loc
 from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, Reader, show
 
 # ----------------------------------------------------------------------------- resource locations
@@ -167,17 +168,23 @@ def float_range(r: Reader) -> FloatRange:
 # ----------------------------------------------------------------------------- names
 
 _OBJECTIVE_OLD_MAX = 16  # objective names were capped at 16 characters before 1.18 (21w37a)
+_LONG_OBJECTIVES = (1, 18, 0)
+
+
+def objective_too_long(name: str, version: tuple[int, int, int]) -> bool:
+    return len(name) > _OBJECTIVE_OLD_MAX and version < _LONG_OBJECTIVES
 
 
 def objective(r: Reader) -> str:
+    """An objective name: Brigadier's unquoted string characters."""
     start = r.pos
     m = UNQUOTED.match(r.text, start)
     name = m.group()
     if not name:
         r.fail(f"expected an objective name, got {show(r.rest_word())}", start)
-    if len(name) > _OBJECTIVE_OLD_MAX and r.version < (1, 18, 0):
+    if objective_too_long(name, r.version):
         r.fail(f"objective name '{name}' is longer than {_OBJECTIVE_OLD_MAX} characters "
-               "(allowed from Minecraft 1.18)", start)
+               f"(allowed from Minecraft {_LONG_OBJECTIVES[0]}.{_LONG_OBJECTIVES[1]})", start)
     r.pos = m.end()
     return name
 
@@ -189,15 +196,18 @@ def score_holder(r: Reader):
     """
     if r.text.startswith("@", r.pos):
         return selectors.selector(r)
-    loc = r.loc()
     start = r.pos
     word = WORD.match(r.text, start).group()
     if not word:
         r.fail(f"expected a score holder, got {show(r.rest_word())}")
-    if word == "*":
-        r.pos += 1
-        return Wildcard(loc)
     r.pos = start + len(word)
+    return holder_from_word(word, r.loc_at(start))
+
+
+def holder_from_word(word: str, loc: Loc):
+    """A score holder written as a word: ``*`` or a name (UUIDs recognised)."""
+    if word == "*":
+        return Wildcard(loc)
     return NameTarget(word, loc, "-" in word and _UUID.match(word) is not None)
 
 

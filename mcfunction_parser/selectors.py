@@ -40,14 +40,11 @@ def selector(r: Reader) -> Selector:
     start = r.pos
     text = r.text
     variable = text[start + 1:start + 2]
-    if variable not in VARIABLES or not variable:
-        r.fail(f"unknown selector type {show(text[start:start + 2])} (expected @s @e @a @p @r @n)", start)
-    if variable == "n" and r.version < AT_N:
-        r.fail(feature_problem("selector @n", r.version), start)
-    loc = r.loc_at(start)
     if not text.startswith("[", start + 2):
         r.pos = start + 2
-        return Selector(variable, (), loc)
+        return bare_selector(r, variable, start)
+    _check_variable(r, variable, start)
+    loc = r.loc_at(start)
     plain = _PLAIN_SELECTOR.match(text, start)
     if plain is not None:
         cached = _CACHE.get(plain.group())
@@ -63,6 +60,19 @@ def selector(r: Reader) -> Selector:
             _CACHE.clear()
         _CACHE[plain.group()] = tuple((a.key, a.value, a.negated, o - start) for a, o in zip(args, offsets))
     return Selector(variable, args, loc)
+
+
+def bare_selector(r: Reader, variable: str, start: int) -> Selector:
+    """``@s``, ``@e`` ... without options, written at offset ``start``."""
+    _check_variable(r, variable, start)
+    return Selector(variable, (), r.loc_at(start))
+
+
+def _check_variable(r: Reader, variable: str, start: int) -> None:
+    if variable not in VARIABLES or not variable:
+        r.fail(f"unknown selector type {show(r.text[start:start + 2])} (expected @s @e @a @p @r @n)", start)
+    if variable == "n" and r.version < AT_N:
+        r.fail(feature_problem("selector @n", r.version), start)
 
 
 def _options(r: Reader, variable: str) -> tuple[tuple[SelectorArg, ...], list[int]]:

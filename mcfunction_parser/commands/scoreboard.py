@@ -4,10 +4,10 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import json_span, objective, score_holder
+from ..arguments import holder_from_word, json_span, objective, objective_too_long, score_holder
 from ..features import feature_problem, version_text
-from ..reader import INT_MAX, Reader, show
-from ..selectors import is_single
+from ..reader import INT_MAX, INT_MIN, Reader, show
+from ..selectors import bare_selector, is_single
 
 _SIMPLE_CRITERIA = frozenset((
     "dummy", "trigger", "deathCount", "playerKillCount", "totalKillCount", "health", "xp", "level",
@@ -131,7 +131,49 @@ def _single_holder(r: Reader):
     return holder
 
 
+# Fast paths for the two commands that dominate real packs, when every holder is a plain word or
+# an option-less selector: one regex, then the same helpers the general path uses. Anything else
+# (selectors with options, out-of-range numbers, errors) takes the general path.
+_HOLDER = r"(@[a-z]|[^ @]+)"
+_OBJECTIVE = r"([0-9A-Za-z_\-.+]+)"
+_FAST_OPERATION = re.compile(rf" {_HOLDER} {_OBJECTIVE} ([^ ]+) {_HOLDER} {_OBJECTIVE}\Z")
+_FAST_SET = re.compile(rf" {_HOLDER} {_OBJECTIVE} (-?[0-9]{{1,10}})\Z")
+
+
+def _fast_holder(r: Reader, m, group: int):
+    word = m.group(group)
+    start = m.start(group)
+    if word[0] == "@":
+        return bare_selector(r, word[1], start)
+    return holder_from_word(word, r.loc_at(start))
+
+
+def _fast_operation(r: Reader, loc):
+    m = _FAST_OPERATION.match(r.text, r.pos)
+    if m is None or m.group(3) not in OPERATIONS:
+        return None
+    name, source_name = m.group(2), m.group(5)
+    if objective_too_long(name, r.version) or objective_too_long(source_name, r.version):
+        return None
+    r.pos = r.end
+    return ast.ScoreOperation(loc, _fast_holder(r, m, 1), name, m.group(3), _fast_holder(r, m, 4), source_name)
+
+
+def _fast_set(r: Reader, loc, action: str):
+    m = _FAST_SET.match(r.text, r.pos)
+    if m is None or objective_too_long(m.group(2), r.version):
+        return None
+    value = int(m.group(3))
+    if not (INT_MIN if action == "set" else 0) <= value <= INT_MAX:
+        return None
+    r.pos = r.end
+    return ast.ScoreSet(loc, action, _fast_holder(r, m, 1), m.group(2), value)
+
+
 def _pl_set(r, loc, action):
+    fast = _fast_set(r, loc, action)
+    if fast is not None:
+        return fast
     r.space("score holder")
     holder = score_holder(r)
     r.space("objective")
@@ -169,6 +211,9 @@ def _pl_enable(r, loc, action):
 
 
 def _pl_operation(r, loc, action):
+    fast = _fast_operation(r, loc)
+    if fast is not None:
+        return fast
     r.space("score holder")
     targets = score_holder(r)
     r.space("objective")

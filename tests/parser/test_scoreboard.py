@@ -1,7 +1,11 @@
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mcfunction_parser import ast
-from parser_helpers import parse_err, parse_ok
+from mcfunction_parser.commands import scoreboard
+from mcfunction_parser.parse import parse_command
+from parser_helpers import LOC, parse_err, parse_ok
 
 
 def test_players_set_holds_any_int():
@@ -110,3 +114,36 @@ def test_incomplete_and_trailing():
     assert "end of command" in d.message and d.col == 33
     d = parse_err("scoreboard players set @s obj 1x")
     assert d.col == 32
+
+
+_WORDS = st.sampled_from(["@s", "@e", "@n", "@x", "*", "#tmp", "$x", ".y", "Steve", "0-0-0-0-1", "a@b", '"q"',
+                          "@e[tag=a]", "@a[limit=1]", "", "obj", "o.b+j", "abcdefghijklmnopq", "x y"])
+_NUMBERS = st.sampled_from(["0", "-1", "5", "2147483647", "2147483648", "-2147483648", "-2147483649", "1.5", "x",
+                            "99999999999", "-0"])
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.sampled_from(["set", "add", "remove"]), _WORDS, _WORDS, _NUMBERS, st.sampled_from([(1, 17, 1), (1, 21, 0)]))
+def test_fast_set_path_matches_the_general_path(action, holder, obj, number, version):
+    text = f"scoreboard players {action} {holder} {obj} {number}"
+    _same_as_general(text, version, "_fast_set")
+
+
+@settings(max_examples=300, deadline=None)
+@given(_WORDS, _WORDS, st.sampled_from(["=", "+=", "><", "**", "<", ""]), _WORDS, _WORDS,
+       st.sampled_from([(1, 16, 5), (1, 21, 0)]))
+def test_fast_operation_path_matches_the_general_path(target, obj, op, source, obj2, version):
+    text = f"scoreboard players operation {target} {obj} {op} {source} {obj2}"
+    _same_as_general(text, version, "_fast_operation")
+
+
+def _same_as_general(text, version, fast_name):
+    fast = parse_command(text, LOC, version)
+    original = getattr(scoreboard, fast_name)
+    setattr(scoreboard, fast_name, lambda *args: None)
+    try:
+        general = parse_command(text, LOC, version)
+    finally:
+        setattr(scoreboard, fast_name, original)
+    assert fast[0] == general[0]
+    assert [(d.col, d.message) for d in fast[1]] == [(d.col, d.message) for d in general[1]]
