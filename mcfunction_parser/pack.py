@@ -27,7 +27,7 @@ from .pack_text import PackPath, load_json, read_text, split_lines
 from .parse import parse_function
 from .tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from .versions import (
-    FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, Format, Version, format_label,
+    FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, SINGULAR_FOLDERS_FORMAT, Format, Version, format_label,
     pack_format_for_version, parse_mc_version, uses_singular_folders, version_for_pack_format,
     version_label,
 )
@@ -230,10 +230,13 @@ def _resources(pack: _PackFiles, folders: tuple[str, str], suffix: str,
             resource_id = _resource_id(parts[1], path, pack.shown_file(rel), diagnostics)
             if resource_id is not None:
                 found[resource_id] = rel
+    # A pack declaring formats on both sides of the rename keeps both folders on purpose.
+    spans = pack.info.supported is not None and pack.info.supported.min < SINGULAR_FOLDERS_FORMAT \
+        <= pack.info.supported.max
     for ns_dir, count in ignored_count.items():
         diagnostics.append(Diagnostic(
-            WARNING, f"{count} file(s) in '{ns_dir}/{ignored}/' ignored: {pack.target_label} reads "
-            f"'{ns_dir}/{read}/' instead", pack.shown(f"{ns_dir}/{ignored}")))
+            INFO if spans else WARNING, f"{count} file(s) in '{ns_dir}/{ignored}/' ignored: "
+            f"{pack.target_label} reads '{ns_dir}/{read}/' instead", pack.shown(f"{ns_dir}/{ignored}")))
     return found
 
 

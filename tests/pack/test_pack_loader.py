@@ -211,3 +211,11 @@ def test_a_plain_file_is_not_a_pack(tmp_path):
     path.write_text("hello")
     loaded = load_packs([path])
     assert loaded.packs == [] and loaded.errors[0].message == "pack is not a folder or a .zip file"
+
+
+def test_both_folders_in_a_pack_for_both_sides_of_the_rename_is_only_info(tmp_path):
+    files = {"data/a/functions/x.mcfunction": "say old\n", "data/a/function/x.mcfunction": "say new\n"}
+    dual = write_pack(tmp_path / "dual", files, meta(48, supported_formats=[26, 61]))
+    loaded = load_packs([dual])
+    assert loaded.warnings == [] and "'data/a/functions/' ignored" in loaded.infos[0].message
+    assert load_packs([dual], mc_version="1.20.4").functions["a:x"].path.endswith("functions/x.mcfunction")
