@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import os
 
-import pytest
 from hypothesis import HealthCheck, given, note, settings
 
 from programs import programs, run_root, write_pack
@@ -51,10 +50,7 @@ def test_random_programs_agree_under_sanitizer(tmp_path_factory, program):
     _compare(tmp_path_factory, program, sanitize=True)
 
 
-# Execute chains with context modifiers before `function`, `return` or `if function` go through
-# the VM's host fallback, which does not run them yet (e.g. `execute align xyz run function f`
-# charges the call but never runs f; see the *_after_modifier rows of test_java_edge_cases.py).
-@pytest.mark.xfail(reason="VM host fallback: function/return/if function after a context modifier", strict=False)
+# Execute chains with context modifiers (positioned, align, in, as @e ...) around calls and returns
 @settings(settings.get_profile("differential"), max_examples=max(EXAMPLES // 3, 20))
 @given(program=programs(modifiers=True))
 def test_random_programs_with_context_modifiers_agree(tmp_path_factory, program):
