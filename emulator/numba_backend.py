@@ -34,6 +34,7 @@ _ERROR_TEXT = {
     vm.ERR_UNKNOWN_FUNCTION: "Unknown function {}",
     vm.ERR_EMPTY_TAG: "No functions in tag {}",
     vm.ERR_MACRO_ARGS: "Function {} needs macro arguments",
+    vm.ERR_FORK_LIMIT: "Maximum number of contexts ({}) reached",
 }
 _SANITIZER_OPS = {**{v: k for k, v in vm.OPK_BY_SYMBOL.items()}, vm.SAN_ADD_CMD: "add", vm.SAN_REMOVE_CMD: "remove"}
 
@@ -89,6 +90,7 @@ class NumbaBackend:
         r[vm.R_CALLFN] = fn
         r[vm.R_SANITIZE] = int(self.sanitize)
         r[vm.R_COUNTING] = int(self.counting)
+        r[vm.R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
         cut = self._drive(limit)
         self._flush_overflows()
         result = None
@@ -175,6 +177,11 @@ class NumbaBackend:
         if made is None:  # the command fails here: skip to the chain's end
             r[vm.R_ALIVE] = 0
             r[vm.R_PC] = r[vm.R_ABORT]
+        elif len(made) >= self.state.gamerules.max_command_fork_count:  # BuildContexts' fork limit
+            self._report_here(_ERROR_TEXT[vm.ERR_FORK_LIMIT].format(self.state.gamerules.max_command_fork_count),
+                              "error")
+            r[vm.R_ALIVE] = 0
+            r[vm.R_PC] = r[vm.R_ABORT]
         elif not made:
             r[vm.R_ALIVE] = 0
         elif len(made) == 1:
@@ -234,7 +241,7 @@ class NumbaBackend:
         elif code in (vm.ERR_UNKNOWN_FUNCTION, vm.ERR_EMPTY_TAG, vm.ERR_MACRO_ARGS):
             operand = self.program.names[arg]
         else:
-            operand = ""
+            operand = arg
         self.state.error(_ERROR_TEXT[code].format(operand), self.traceback(pc))
 
     def _grow(self) -> bool:

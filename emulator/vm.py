@@ -35,7 +35,7 @@ OP_GET = 15  # a h, b o
 OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
-OP_CHKOBJ = 22  # a o: a stage naming objective o fails the command if o does not exist
+OP_CHKOBJ = 22  # a o: a store stage naming objective o fails the command if o does not exist
 OP_STORE = 23  # a: 0 result / 1 success, b h, c o
 OP_CALL = 30  # a: function id
 OP_CALLREG = 31  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
@@ -75,15 +75,15 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_ARG, R_CTX = range(7, 16)
-R_SANITIZE, R_ERRPC, R_COUNTING = 16, 17, 18
-N_REGS = 19
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT = 16, 17, 18, 19
+N_REGS = 20
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA = range(9)
 F_WIDTH = 9
 
 ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO = range(7)
 
-ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS = range(1, 6)
+ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS, ERR_FORK_LIMIT = range(1, 7)
 
 INT_MIN = -2147483648
 INT_MAX = 2147483647
@@ -122,6 +122,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     ctx = regs[R_CTX]
     sanitize = regs[R_SANITIZE] != 0
     counting = regs[R_COUNTING] != 0  # off only to measure the counters' cost
+    forklimit = regs[R_FORKLIMIT]
     novf = regs[R_NOVF]
     status = ST_DONE
     err = 0
@@ -352,6 +353,13 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 val = 1 if passed else 0
             elif not passed:
                 alive = 0
+            elif forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                alive = 0
+                pc = abort
+                status = ST_ERROR
+                break
             pc += 1
         elif op == OP_STORE:
             if alive and has:
@@ -362,9 +370,9 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 present[h, o] = 1
             pc += 1
         elif op == OP_CHKOBJ:
-            if alive_obj[code[pc, 1]] == 0:
-                err = ERR_UNKNOWN_OBJECTIVE
-                errarg = code[pc, 1]
+            if alive and (alive_obj[code[pc, 1]] == 0 or forklimit <= 1):
+                err = ERR_UNKNOWN_OBJECTIVE if alive_obj[code[pc, 1]] == 0 else ERR_FORK_LIMIT
+                errarg = code[pc, 1] if err == ERR_UNKNOWN_OBJECTIVE else forklimit
                 alive = 0
                 pc = abort
                 status = ST_ERROR

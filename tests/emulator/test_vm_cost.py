@@ -82,3 +82,18 @@ def test_cut_in_nested_function_reports_each_frame(tmp_path):
     assert (result.cost, result.cut, emu.score("#n", "o")) == (4, True, 1)
     [diag] = emu.diagnostics
     assert [(f.function, f.loc.line) for f in diag.frames] == [("t:outer", 2), ("t:inner", 2)]
+
+
+@pytest.mark.parametrize("stage", ["if score #one o matches 1", "positioned 0 0 0", "store result score #s o"])
+def test_fork_limit(tmp_path, stage):
+    # BuildContexts: a stage fails the command when the contexts it makes reach maxCommandForkCount
+    emu = emulator_for(tmp_path, {"t:setup": FUNCTIONS["t:setup"],
+                                  "t:f": f"execute {stage} run scoreboard players set #x o 1\nscoreboard players set #y o 1"})
+    emu.call("t:setup")
+    emu.state.gamerules.set("maxCommandForkCount", "1")
+    emu.call("t:f")
+    assert (emu.score("#x", "o"), emu.score("#y", "o")) == (None, 1)
+    assert [d.message for d in emu.diagnostics] == ["Maximum number of contexts (1) reached"]
+    emu.state.gamerules.set("maxCommandForkCount", "2")
+    emu.call("t:f")
+    assert emu.score("#x", "o") == 1
