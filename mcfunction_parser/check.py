@@ -4,7 +4,8 @@ Rules added here (the parser already reports syntax, unknown commands, literal r
 version problems per command):
 - a ``function``, ``schedule function`` or ``execute if function`` naming a function or function
   tag that is not loaded (error; a tag the game refused to load is named as such);
-- calling a macro function without arguments, or with a literal compound that lacks one of its
+- calling a macro function without arguments (directly, by ``schedule``, or as a member of
+  ``#minecraft:load``/``#minecraft:tick``), or with a literal compound that lacks one of its
   ``$(keys)`` (error: the game fails the call);
 - ``execute if|unless function`` on functions that contain no ``return`` (warning: the condition
   fails both ways when no function returned);
@@ -176,13 +177,32 @@ def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> N
             _check_macro_arguments(loaded, node, found)
         elif isinstance(node, ast.IfFunction):
             _check_condition_returns(loaded, node, returning, found)
+        elif isinstance(node, ast.Schedule) and not node.is_tag and _is_macro(loaded, node.function):
+            found.append(_at(loaded, ERROR, f"function {node.function} is a macro function: a "
+                             "scheduled call has no arguments and fails", node.loc))
+    _check_game_tags(loaded, found)
+
+
+def _is_macro(loaded: LoadedPacks, function_id: str) -> bool:
+    function = loaded.functions.get(function_id)
+    return function is not None and function.is_macro
+
+
+def _check_game_tags(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
+    """The game runs ``#minecraft:load`` and ``#minecraft:tick`` members without arguments."""
+    for tag_id in ("minecraft:load", "minecraft:tick"):
+        for function_id in loaded.resolve_tag(tag_id):
+            if _is_macro(loaded, function_id):
+                found.append(Diagnostic(ERROR, f"function {function_id} is a macro function: as a "
+                                        f"member of #{tag_id} it runs without arguments and fails",
+                                        loaded.functions[function_id].path))
 
 
 def _check_macro_arguments(loaded: LoadedPacks, call: ast.FunctionCall, found: list[Diagnostic]) -> None:
     """The game instantiates a macro function only when every ``$(key)`` of every line is given."""
-    callee = loaded.functions.get(call.function)
-    if callee is None or not callee.is_macro:
+    if not _is_macro(loaded, call.function):
         return
+    callee = loaded.functions[call.function]
     if call.arguments is None:
         found.append(_at(loaded, ERROR, f"function {call.function} is a macro function: calling it "
                          "without arguments fails", call.loc))

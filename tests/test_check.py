@@ -82,6 +82,18 @@ def test_macro_function_calls_need_every_key(tmp_path):
         (3, "function a:m needs macro argument(s) y: the call fails without them")]
 
 
+def test_macro_functions_run_without_arguments_by_schedule_and_game_tags(tmp_path):
+    root = write(tmp_path / "p", {
+        "data/minecraft/tags/function/tick.json": '{"values": ["#a:inner"]}',
+        "data/a/tags/function/inner.json": '{"values": ["a:m"]}',
+        fn("m"): "$say $(x)\nschedule function a:m 1t\n"})
+    errors = [(e.line, e.message) for e in check_packs([root]).of("error")]
+    assert errors == [
+        (None, "function a:m is a macro function: as a member of #minecraft:tick it runs without "
+               "arguments and fails"),
+        (2, "function a:m is a macro function: a scheduled call has no arguments and fails")]
+
+
 def test_execute_if_function_without_return(tmp_path):
     root = write(tmp_path / "p", {**LOAD, fn("load"): (
         "execute if function a:silent run say 1\nexecute unless function #a:quiet run say 2\n"
