@@ -31,7 +31,7 @@ from emulator.world import mth
 
 F32 = np.float32
 _RIGHT_ANGLE = F32(90.0)
-_PI_F_AS_DOUBLE = float(mth.PI_F)
+_RAD_TO_DEG_D = float(mth.RAD_TO_DEG)  # 57.2957763671875
 
 
 def direction_from_rotation(yaw, pitch) -> tuple[float, float, float]:
@@ -77,16 +77,22 @@ def local_to_world(origin, yaw, pitch, left: float, up: float, forwards: float) 
     )
 
 
-def facing_rotation(origin, target) -> tuple[np.float32, np.float32]:
+def facing_rotation(origin, target, float_horizontal: bool = False) -> tuple[np.float32, np.float32]:
     """The rotation looking from ``origin`` to ``target`` (``CommandSourceStack.facing``).
 
-    ``pitch = wrapDegrees((float) -(atan2(dy, horizontal) * 180.0 / (double)(float)PI))`` and
-    ``yaw = wrapDegrees((float)(atan2(dz, dx) * 180.0 / (double)(float)PI) - 90.0F)``.
+    ``pitch = wrapDegrees((float) -(atan2(dy, horizontal) * RAD_TO_DEG))`` and
+    ``yaw = wrapDegrees((float)(atan2(dz, dx) * RAD_TO_DEG) - 90.0F)``, where ``RAD_TO_DEG`` is the
+    float ``180F / (float)PI`` widened to double (57.2957763671875): one multiplication. (Vineflower
+    prints that constant as ``180.0F / (float)Math.PI`` without parentheses; CFR decompiles of the
+    same method show the single constant.) ``float_horizontal``: 1.17 and older rounded the
+    horizontal distance to float (``Mth.sqrt``); 1.18+ use ``Math.sqrt``.
     """
     dx, dy, dz = (t - o for t, o in zip(target, origin))
     horizontal = math.sqrt(dx * dx + dz * dz)
-    pitch = mth.wrap_degrees_f(mth.f32(-(mth.atan2(dy, horizontal) * 180.0 / _PI_F_AS_DOUBLE)))
-    yaw = mth.wrap_degrees_f(mth.f32(mth.atan2(dz, dx) * 180.0 / _PI_F_AS_DOUBLE) - _RIGHT_ANGLE)
+    if float_horizontal:
+        horizontal = float(mth.f32(horizontal))
+    pitch = mth.wrap_degrees_f(mth.f32(-(mth.atan2(dy, horizontal) * _RAD_TO_DEG_D)))
+    yaw = mth.wrap_degrees_f(mth.f32(mth.atan2(dz, dx) * _RAD_TO_DEG_D) - _RIGHT_ANGLE)
     return yaw, pitch
 
 

