@@ -2,8 +2,9 @@
 
 Rules added here (the parser already reports syntax, unknown commands, literal ranges and
 version problems per command):
-- a ``function``, ``schedule function`` or ``execute if function`` naming a function or function
-  tag that is not loaded (error; a tag the game refused to load is named as such);
+- a ``function``, ``schedule function``, ``execute if function`` or advancement reward naming a
+  function or function tag that is not loaded (error; a tag the game refused to load is named as
+  such);
 - calling a macro function without arguments (directly, by ``schedule``, or as a member of
   ``#minecraft:load``/``#minecraft:tick``), or with a literal compound that lacks one of its
   ``$(keys)`` (error: the game fails the call);
@@ -181,6 +182,10 @@ def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> N
             found.append(_at(loaded, ERROR, f"function {node.function} is a macro function: a "
                              "scheduled call has no arguments and fails", node.loc))
     _check_game_tags(loaded, found)
+    for function_id, locs in loaded.advancement_rewards.items():
+        if function_id not in loaded.functions:
+            found.extend(_at(loaded, ERROR, f"unknown function {function_id} (advancement reward)", loc)
+                         for loc in locs)
 
 
 def _is_macro(loaded: LoadedPacks, function_id: str) -> bool:

@@ -302,13 +302,19 @@ def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
 
 
 def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
-    """Record ``rewards.function`` of every advancement: those functions are reachable."""
+    """Record ``rewards.function`` of every advancement (a later pack's file of the same id
+    replaces an earlier one): those functions are reachable."""
+    chosen: dict[str, tuple[_PackFiles, str]] = {}
     for pack in packs:
-        for rel in _resources(pack, ("advancement", "advancements"), ".json", result.diagnostics).values():
-            result.files += 1
-            doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
-            rewards = doc.value.get("rewards") if doc is not None and isinstance(doc.value, dict) else None
-            reward = rewards.get("function") if isinstance(rewards, dict) else None
-            if isinstance(reward, str):
-                loc = doc.loc_at(max(doc.find_string(reward, doc.find_string("rewards")), 0))
-                result.advancement_rewards.setdefault(normalise_id(reward), []).append(loc)
+        for advancement_id, rel in _resources(pack, ("advancement", "advancements"), ".json",
+                                              result.diagnostics).items():
+            chosen[advancement_id] = (pack, rel)
+    for pack, rel in chosen.values():
+        result.files += 1
+        doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
+        rewards = doc.value.get("rewards") if doc is not None and isinstance(doc.value, dict) else None
+        reward = rewards.get("function") if isinstance(rewards, dict) else None
+        if isinstance(reward, str):
+            result.sources[doc.path] = split_lines(doc.text)
+            loc = doc.loc_at(max(doc.find_string(reward, doc.find_string("rewards")), 0))
+            result.advancement_rewards.setdefault(normalise_id(reward), []).append(loc)

@@ -206,3 +206,15 @@ def test_generated_corpus_checks_without_errors(tmp_path):
     assert result.of("error") == []
     stubs = sum(1 for name, is_tag in missing.items() if not is_tag)
     assert result.lines == lines + stubs and lines >= 40000 and result.commands > 25000
+
+
+def test_advancement_rewards_must_exist_and_later_packs_replace_advancements(tmp_path):
+    first = write(tmp_path / "first", {"data/a/advancement/adv.json": '{"rewards": {"function": "a:old"}}',
+                                       fn("old"): "say old\n"})
+    second = write(tmp_path / "second", {"data/a/advancement/adv.json": '{"criteria": {},\n'
+                                         ' "rewards": {"function": "a:gone"}}'})
+    result = check_packs([first, second])
+    [error] = result.of("error")
+    assert (error.message, error.line, error.col) == ("unknown function a:gone (advancement reward)", 2, 26)
+    assert error.source_line == ' "rewards": {"function": "a:gone"}}'
+    assert [d.message.split(" is ")[0] for d in result.of("info")] == ["function a:old"]
