@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import functools
 import json
+import math
 import random
 from dataclasses import dataclass, field
 from typing import Callable
@@ -128,6 +129,19 @@ def entity_type(type_id: str) -> EntityType:
 def _box_extent(type_id: str, scale: float) -> tuple[float, float]:
     kind = entity_type(type_id)
     return float(kind.width * F32(scale) / F32(2.0)), float(kind.height * F32(scale))
+
+
+HORIZONTAL_LIMIT = 30_000_000
+VERTICAL_LIMIT = 20_000_000
+
+
+def in_spawnable_bounds(pos) -> bool:
+    """``Level.isInSpawnableBounds(BlockPos.containing(pos))``: x/z in [-3e7, 3e7), y in [-2e7, 2e7)."""
+    if not all(math.isfinite(v) for v in pos):
+        return False
+    x, y, z = (math.floor(v) for v in pos)
+    return (-HORIZONTAL_LIMIT <= x < HORIZONTAL_LIMIT and -HORIZONTAL_LIMIT <= z < HORIZONTAL_LIMIT
+            and -VERTICAL_LIMIT <= y < VERTICAL_LIMIT)
 
 
 def uuid_string(uuid: tuple[int, int, int, int]) -> str:
@@ -375,13 +389,23 @@ class EntityStore:
         return entity
 
     def summon(self, type_id: str, pos, nbt: Compound | None = None, yaw=0.0, pitch=0.0) -> Entity:
-        """``summon TYPE POS NBT``: a new entity; the NBT is loaded over the spawn state."""
+        """``summon TYPE POS NBT``: a new entity; the NBT is loaded over the spawn state.
+
+        Fails for players (not summonable), outside the spawnable bounds, or when the NBT's UUID
+        is already taken (SummonCommand.createEntity).
+        """
+        if type_id == "minecraft:player":
+            raise CommandFailure("entity.not_summonable", type_id)
+        if not in_spawnable_bounds(pos):
+            raise CommandFailure("commands.summon.invalidPosition")
         entity = Entity(insecure_uuid(self.rng), type_id, tuple(float(v) for v in pos), F32(yaw), F32(pitch),
                         data=_base_data(type_id))
         if nbt:
             full = entity_nbt(entity)
             full.update(copy_tag(nbt))
             load_nbt(entity, full)
+            if self.by_uuid(entity.uuid) is not None:
+                raise CommandFailure("commands.summon.failed.uuid")
         entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
         return self._add(entity)
 

@@ -21,19 +21,15 @@ performTeleport, LookAtPosition/LookAtEntity) and world/entity/Entity.java (tele
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
 
 from mcfunction_parser import ast
 from emulator.world import rotation
+from emulator.world.entities import in_spawnable_bounds
 from emulator.world.errors import CommandFailure
 from emulator.world.source import Source
-
-HORIZONTAL_LIMIT = 30_000_000
-VERTICAL_LIMIT = 20_000_000
-
 
 @dataclass(frozen=True)
 class Destination:
@@ -42,16 +38,9 @@ class Destination:
     pitch: np.float32
 
 
-def _check_position(pos) -> None:
-    """``Level.isInSpawnableBounds(BlockPos.containing(pos))``."""
-    x, y, z = (math.floor(v) if math.isfinite(v) else v for v in pos)
-    if not (-HORIZONTAL_LIMIT <= x < HORIZONTAL_LIMIT and -HORIZONTAL_LIMIT <= z < HORIZONTAL_LIMIT
-            and -VERTICAL_LIMIT <= y < VERTICAL_LIMIT):
-        raise CommandFailure("commands.teleport.invalidPosition")
-
-
 def _moved(pos, yaw, pitch) -> Destination:
-    _check_position(pos)
+    if not in_spawnable_bounds(pos):
+        raise CommandFailure("commands.teleport.invalidPosition")
     yaw, pitch = rotation.teleport_rotation(yaw, pitch)
     return Destination(tuple(pos), yaw, pitch)
 

@@ -391,3 +391,15 @@ def test_compiled_query_runs_against_any_source(world):
     nearest = SelectorQuery(_parsed_selector("@e[type=minecraft:marker,sort=nearest,limit=1]"))
     assert names(nearest.run(store, Source(pos=(0.0, 0.0, 0.0))), ents) == ["near"]
     assert names(nearest.run(store, Source(pos=(9.0, 0.0, 0.0))), ents) == ["far"]
+
+
+def test_summon_failures():
+    store = EntityStore()
+    with pytest.raises(CommandFailure, match="Can't summon entity of type minecraft:player"):
+        store.summon("minecraft:player", (0, 0, 0))
+    with pytest.raises(CommandFailure, match="Invalid position for summon"):
+        store.summon("minecraft:marker", (0.0, 2.0e7, 0.0))
+    first = store.summon("minecraft:marker", (0, 0, 0))
+    with pytest.raises(CommandFailure, match="duplicate UUIDs"):
+        store.summon("minecraft:marker", (0, 0, 0), Compound(UUID=nbt_ops.copy_tag(entity_nbt(first)["UUID"])))
+    assert len(store.entities) == 1
