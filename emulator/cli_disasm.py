@@ -16,7 +16,8 @@ _OPERANDS = {
     vm.OP_RESET: "ho", vm.OP_RESETALL: "h", vm.OP_GET: "ho",
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "o", vm.OP_STORE: "bho",
     vm.OP_CALL: "f", vm.OP_RETV: "i", vm.OP_IFFN_STEP: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
-    vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "xb", vm.OP_MACRO: "m",
+    vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "x", vm.OP_HOSTSTAGE: "x", vm.OP_HOSTSTORE: "x",
+    vm.OP_MACRO: "m",
 }
 _COMPARISON_NAMES = {v: k for k, v in vm.CMP_BY_SYMBOL.items()}
 
@@ -65,8 +66,7 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
     if kind == "p":
         return f"->{value}"
     if kind == "x":
-        host = program.host_ops[value]
-        return f"[{type(host.command).__name__}{' whole' if host.whole else ''}]"
+        return f"[{type(program.host_ops[value].node).__name__}]"
     if kind == "m":
         return program.macro_calls[value].function
     if kind == "_":

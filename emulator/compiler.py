@@ -133,6 +133,7 @@ class Compiler:
                 self.emit(vm.OP_CHKOBJ, self.objective(st.objective))
                 stores.append(st)
             elif isinstance(st, (StoreScore, StoreData, StoreBossbar)):
+                self.host(vm.OP_HOSTSTAGE, st)  # resolves the store's target now, as the modifier does
                 stores.append(st)
             elif isinstance(st, IfFunction):  # the calls, then a continuation entry charging the next group
                 group += 1

@@ -102,6 +102,14 @@ class Host:
             return [ctx] if self.condition(st, ctx) else []
         if isinstance(st, (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity, ast.ExOn)):
             return []  # no entities: nothing selected
+        if isinstance(st, ast.StoreScore):
+            self.objective(st.objective)
+            self.holders(st.targets, ctx)
+            return [ctx]
+        if isinstance(st, ast.StoreData) and isinstance(st.target, ast.EntityData):
+            raise HostFailure("No entity was found")
+        if isinstance(st, (ast.StoreData, ast.StoreBossbar)):
+            return [ctx]
         if isinstance(st, ast.ExIn):
             return [replace(ctx, dimension=st.dimension)]
         if isinstance(st, ast.ExAnchored):
