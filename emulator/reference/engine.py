@@ -241,7 +241,8 @@ class Interpreter:
         """FunctionCommand: queue a CallFunction per function (instantiated with the arguments)."""
         functions = self._functions(command.function, command.is_tag)
         if not functions:
-            raise CommandFailure(f"Can't find any functions for tag #{command.function}")
+            # FunctionCommand.ERROR_NO_FUNCTIONS; reported, as an empty tag is a pack mistake
+            raise CommandFailure(f"No functions in tag #{command.function}", report=True)
         arguments = self._call_arguments(command)
         sender = source.with_callback(None)
         if is_return:
