@@ -267,3 +267,30 @@ def test_nesting_up_to_the_limit_is_handled():
     root = C()
     assert nbt_ops.set_path(root, path("a", "a"), deep) == 1
     assert nbt_ops.tags_equal(root["a"], deep) and nbt_ops.compare_nbt(deep, root["a"])
+
+
+keys = st.lists(st.sampled_from(["x", "y", "z"]), min_size=1, max_size=3)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.dictionaries(st.sampled_from(["x", "y", "z"]), tags, max_size=3).map(Compound), keys)
+def test_remove_then_nothing_matches(root, names):
+    p = path(".".join(names), *names)
+    before = nbt_ops.count_matching(root, p)
+    assert nbt_ops.remove(root, p) == before
+    assert nbt_ops.count_matching(root, p) == 0
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.integers(-5, 5).map(Int), max_size=4), st.lists(st.integers(-5, 5).map(Int), min_size=1, max_size=3),
+       st.integers(-6, 6))
+def test_insert_matches_python_list_insert(initial, values, index):
+    # NbtPath.insert: index < 0 counts from the end (+1), elements go in one after another.
+    root = C(l=List(initial))
+    position = len(initial) + index + 1 if index < 0 else index
+    if not 0 <= position <= len(initial):
+        with pytest.raises(CommandFailure, match="Invalid list index"):
+            nbt_ops.insert(root, path("l", "l"), index, values)
+        return
+    assert nbt_ops.insert(root, path("l", "l"), index, values) == 1
+    assert root["l"] == initial[:position] + values + initial[position:]
