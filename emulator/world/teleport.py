@@ -9,7 +9,7 @@ entity's state at that moment, and ``apply`` moves the entity there)
   (the execution anchor applied to it) towards the target.
 - ``to_position_self(source, location)``: ``tp POS``: the executor, rotation "~ ~" (the execution
   rotation).
-- ``to_entity(entity, destination)``: ``tp [TARGETS] DEST``: the destination's position and rotation.
+- ``to_entity(destination)``: ``tp [TARGETS] DEST``: the destination entity's position and rotation.
 - ``apply(entity, destination)``: set pos and rotation, zero the vertical motion (``tp`` does).
 - ``teleport(source, targets, ...)``: the whole command over several targets, in order (each
   target sees the earlier ones already moved); returns the count.
@@ -31,6 +31,7 @@ from emulator.world.entities import in_spawnable_bounds
 from emulator.world.errors import CommandFailure
 from emulator.world.source import Source
 
+
 @dataclass(frozen=True)
 class Destination:
     pos: tuple[float, float, float]
@@ -45,7 +46,7 @@ def _moved(pos, yaw, pitch) -> Destination:
     return Destination(tuple(pos), yaw, pitch)
 
 
-def _look_from(source: Source, pos, entity, target) -> Destination:
+def _look_from(source: Source, pos, entity, target) -> tuple[np.float32, np.float32]:
     """``Entity.lookAt(source anchor, target)`` after the move: from the entity's anchor at ``pos``."""
     x, y, z = pos
     origin = (x, y + float(entity.eye_height), z) if source.anchor == "eyes" else (x, y, z)
@@ -73,7 +74,7 @@ def to_position_self(source: Source, location: ast.Vec3) -> Destination:
     return _moved(source.position_of(location), source.yaw, source.pitch)
 
 
-def to_entity(entity, destination) -> Destination:
+def to_entity(destination) -> Destination:
     return _moved(destination.pos, destination.yaw, destination.pitch)
 
 
@@ -90,7 +91,7 @@ def teleport(source: Source, targets: list, location: ast.Vec3 | None = None, de
     """The whole ``tp TARGETS ...`` command; returns how many entities were teleported."""
     for entity in targets:
         if destination_entity is not None:
-            dest = to_entity(entity, destination_entity)
+            dest = to_entity(destination_entity)
         else:
             dest = to_position(source, entity, location, rotation_arg, facing, facing_entity, facing_anchor)
         apply(entity, dest)
