@@ -20,7 +20,6 @@ from emulator.backend import RootResult, report_quota_cut
 from emulator.semantics import wrap32, wraps32
 from emulator.state import Context, Overflow, WorldState
 from mcfunction_parser import ast
-from mcfunction_parser.diagnostics import Loc
 
 from . import data, modifiers
 from .commands import run_command
@@ -76,7 +75,8 @@ class Interpreter:
                        return_parent: bool, call_loc) -> Action:
         def call(queue: ExecutionQueue, frame: CallFrame) -> None:
             queue.charge()
-            self._count(call_loc or ast_loc_of(function))
+            if call_loc is not None:  # a root call is on no line
+                self._count(call_loc)
             depth = frame.depth + 1
             new_frame = CallFrame(depth, result_callback, frame.discard_depth if return_parent else depth)
             bound = source.in_function(Activation(function.id, source.activation, call_loc))
@@ -360,11 +360,6 @@ def _accumulator(callback):
             callback(True, state["sum"])
 
     return add, report
-
-
-def ast_loc_of(function: ast.Function) -> Loc:
-    """Where a root call is counted: line 0 of the function's file."""
-    return Loc(function.path, 0, 0)
 
 
 def _where(stopped):

@@ -27,7 +27,7 @@ def holder_names(holder, source: Source, scoreboard: Scoreboard) -> list[str]:
     if isinstance(holder, NameTarget):
         return [holder.name]
     if isinstance(holder, Wildcard):
-        names = tracked_holders(scoreboard)
+        names = scoreboard.tracked_holders()
         if not names:
             raise CommandFailure("No relevant score holders could be found")
         return names
@@ -43,9 +43,3 @@ def single_holder(holder, source: Source, scoreboard: Scoreboard) -> str:
     """ScoreHolderArgument.getName: the first of the names."""
     return holder_names(holder, source, scoreboard)[0]
 
-
-def tracked_holders(scoreboard: Scoreboard) -> list[str]:
-    n = len(scoreboard.holders)
-    alive = scoreboard.alive[: len(scoreboard.objectives)].astype(bool)
-    rows = scoreboard.present[:n, : len(scoreboard.objectives)][:, alive].any(axis=1)
-    return [scoreboard.holders[h] for h in range(n) if rows[h]]

@@ -10,7 +10,7 @@ from emulator.semantics import floor_div, floor_mod, wrap32
 from mcfunction_parser import ast
 
 from .failure import CommandFailure, unknown_objective
-from .holders import holder_names, single_holder, tracked_holders
+from .holders import holder_names, single_holder
 from .source import Source
 
 
@@ -123,7 +123,7 @@ def players_enable(env, cmd: ast.ScoreEnable, source: Source, where) -> int:
 def players_list(env, cmd: ast.ScoreList, source: Source, where) -> int:
     board = env.state.scoreboard
     if cmd.target is None:
-        return len(tracked_holders(board))
+        return len(board.tracked_holders())
     name = single_holder(cmd.target, source, board)
     return sum(1 for obj in board.objectives if board.get(name, obj) is not None)
 
