@@ -1,7 +1,7 @@
 """The backend protocol: what the runtime needs from an executor of compiled or parsed functions.
 
-Two backends implement it: the numba VM (:mod:`emulator.vm` via :mod:`emulator.api`'s
-``NumbaBackend``) and the plain-Python reference (:mod:`emulator.reference`). The runtime
+Two backends implement it: the numba VM (:class:`emulator.numba_backend.NumbaBackend`, driving
+:mod:`emulator.vm`) and the plain-Python reference (:mod:`emulator.reference`). The runtime
 (:mod:`emulator.runtime`) owns the tick loop and the schedule queue's timing; it asks the backend
 to run one *root sequence* at a time. Both act on the same :class:`~emulator.state.WorldState`.
 
@@ -90,9 +90,9 @@ class Backend(Protocol):
         """
 
     def line_counts(self) -> dict[tuple[str, int], int]:
-        """Executed commands so far per ``(source path, line)``, cumulative over the run (each
-        execution of a command per context counts 1; what is summed per line is the backend's
-        cost-bearing runs, so the totals equal the cost). May be ``{}`` if not tracked."""
+        """Cost charged so far per ``(source path, line)``, cumulative over the run: the sum over
+        all lines equals the total cost minus the roots' own CallFunction charges (a root call is
+        on no line). May be ``{}`` if not tracked."""
 
 
 def quota_cut_message(limit: int) -> str:

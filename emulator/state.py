@@ -151,14 +151,6 @@ class Scoreboard:
         rows = (self.present[:n, :m] & self.alive[:m]).any(axis=1)
         return [self.holders[h] for h in np.flatnonzero(rows)]
 
-    def holders_in(self, objective: str) -> list[str]:
-        """Holders with a score in ``objective``, in interning order."""
-        if not self.exists(objective):
-            return []
-        oid = self.objective_ids[objective]
-        n = len(self.holders)
-        return [self.holders[h] for h in np.flatnonzero(self.present[:n, oid])]
-
     def scores(self) -> dict[str, dict[str, int]]:
         """``{objective: {holder: value}}`` for every set score of every existing objective."""
         out: dict[str, dict[str, int]] = {}

@@ -74,7 +74,7 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
-R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_ARG, R_CTX = range(7, 16)
+R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
 R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT = 16, 17, 18, 19
 N_REGS = 20
 
