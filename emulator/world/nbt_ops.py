@@ -33,6 +33,7 @@ Source: decompiled 1.21 ``commands/arguments/NbtPathArgument.java``, ``nbt/NbtUt
 from __future__ import annotations
 
 import math
+from abc import ABC, abstractmethod
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import (
@@ -237,25 +238,30 @@ def _set_tag(collection, index: int, tag) -> bool:
 # ----------------------------------------------------------------------------- path nodes
 
 
-class _Node:
-    """One game path node; ``end`` is where it ends in the path text (for error messages)."""
+class _Node(ABC):
+    """One game path node (``NbtPathArgument.Node``); ``end`` is where it ends in the path text."""
 
     end: int = 0
 
+    @abstractmethod
     def get(self, tag) -> list:
-        raise NotImplementedError
+        """The tags this node selects under ``tag``."""
 
     def get_or_create(self, tag, make) -> list:
+        """Like ``get``, creating what is missing with ``make()`` where the node can."""
         return self.get(tag)
 
     def preferred_parent(self):
+        """The container a missing parent of this node is created as."""
         return List()
 
+    @abstractmethod
     def set(self, tag, value) -> int:
-        raise NotImplementedError
+        """Replace what this node selects under ``tag`` with ``value()``; how many changed."""
 
+    @abstractmethod
     def remove(self, tag) -> int:
-        raise NotImplementedError
+        """Remove what this node selects under ``tag``; how many were removed."""
 
 
 class _Child(_Node):
