@@ -1,7 +1,7 @@
 """Runners that execute pool datapack functions on fake players, for the math tests.
 
 `MiniScoreboard` interprets only the command subset the math library uses (scoreboard
-players set/add/remove/operation, `execute if|unless score ... run`, `function`, `return`)
+players set/add/remove/operation, `execute if|unless score ... run`, `function`, `return [run]`)
 with the Java semantics of `emulator.semantics`. It is the stepping stone used until
 `emulator.Emulator` runs the pack; tests run on every runner available.
 """
@@ -36,6 +36,7 @@ class MiniScoreboard:
     def __init__(self) -> None:
         self.scores: dict[tuple[str, str], int] = {}
         self.commands = 0
+        self._executor: str | None = None
         self._cache: dict[str, list[str]] = {}
         self.call("pool:load")
 
@@ -45,7 +46,9 @@ class MiniScoreboard:
     def score(self, holder: str, objective: str) -> int:
         return self.scores[holder, objective]
 
-    def call(self, function: str) -> None:
+    def call(self, function: str, as_: str | None = None) -> None:
+        """Run ``function``; ``as_`` names the fake player that ``@s`` stands for."""
+        self._executor = as_
         self._run(function)
 
     def _lines(self, function: str) -> list[str]:
@@ -68,6 +71,8 @@ class MiniScoreboard:
         if words[:2] == ["scoreboard", "objectives"]:
             return False
         if words[0] == "return":
+            if words[1] == "run":
+                self._command(words[2:])
             return True
         if words[0] == "function":
             self._run(words[1])
@@ -76,7 +81,7 @@ class MiniScoreboard:
             return self._execute(words[1:])
         assert words[:2] == ["scoreboard", "players"], words
         action, holder, objective, *rest = words[2:]
-        key = (holder, objective)
+        key = (self._holder(holder), objective)
         if action == "set":
             self.scores[key] = int(rest[0])
         elif action in ("add", "remove"):
@@ -84,6 +89,7 @@ class MiniScoreboard:
             self._store(key, self.scores.get(key, 0) + delta)
         elif action == "operation":
             op, source, source_objective = rest
+            source = self._holder(source)
             a = self.scores.get(key, 0)
             b = self.scores.get((source, source_objective), 0)
             if op == "><":
@@ -95,6 +101,12 @@ class MiniScoreboard:
             raise AssertionError(f"unsupported: {words}")
         return False
 
+    def _holder(self, name: str) -> str:
+        if name == "@s":
+            assert self._executor is not None, "@s used without an executor"
+            return self._executor
+        return name
+
     def _store(self, key: tuple[str, str], value: int) -> None:
         if wrap32(value) != value:
             raise Overflow(f"{key} = {value} wraps")
@@ -104,7 +116,7 @@ class MiniScoreboard:
         while words[0] != "run":
             mode, kind, holder, objective = words[:4]
             assert kind == "score", words
-            value = self.scores.get((holder, objective))
+            value = self.scores.get((self._holder(holder), objective))
             if words[4] == "matches":
                 low, _, high = words[5].partition("..")
                 if ".." not in words[5]:
@@ -113,7 +125,7 @@ class MiniScoreboard:
                     not high or value <= int(high))
                 words = words[6:]
             else:
-                other = self.scores.get((words[5], words[6]))
+                other = self.scores.get((self._holder(words[5]), words[6]))
                 passed = value is not None and other is not None and _CMP[words[4]](value, other)
                 words = words[7:]
             if passed != (mode == "if"):

@@ -133,3 +133,28 @@ def test_atan2_axes_and_diagonals(board, x, z, expected):
     board.set_score("$z", "pool.math", z)
     board.call("pool:math/atan2")
     assert board.score("$out", "pool.math") == expected
+
+
+def _round_half_away(numerator, denominator):
+    q = (abs(numerator) * 2 + denominator) // (2 * denominator)
+    return q if numerator >= 0 else -q
+
+
+def test_mul_1e5_rounds_exactly(board):
+    rng = random.Random(11)
+    cases = [(21_000_000, 100_000), (-21_000_000, 99_999), (1, 50_000), (-1, 50_000), (0, 7)]
+    cases += [(rng.randint(-21_000_000, 21_000_000), rng.randint(-100_000, 100_000))
+              for _ in range(300)]
+    for a, b in cases:
+        board.set_score("$a", "pool.math", a)
+        board.set_score("$b", "pool.math", b)
+        board.call("pool:math/mul_1e5")
+        assert board.score("$out", "pool.math") == _round_half_away(a * b, 100_000), (a, b)
+
+
+def test_div_round_halves_away_from_zero(board):
+    for a, b in [(7, 2), (-7, 2), (6, 4), (-6, 4), (5, 7), (-5, 7), (2_000_000_000, 3), (0, 9)]:
+        board.set_score("$a", "pool.math", a)
+        board.set_score("$b", "pool.math", b)
+        board.call("pool:math/div_round")
+        assert board.score("$out", "pool.math") == _round_half_away(a, b), (a, b)

@@ -29,7 +29,7 @@ scoreboard objectives add pool.az dummy
 scoreboard objectives add pool.tau dummy
 scoreboard objectives add pool.rx dummy
 scoreboard objectives add pool.rz dummy
-# rolling phase: start position (um), direction (x 10000), speed (0.01 um/tick), distance (0.01 um)
+# rolling phase: start position (um), direction (x 100000), speed (0.01 um/tick), distance (0.01 um)
 scoreboard objectives add pool.x0 dummy
 scoreboard objectives add pool.z0 dummy
 scoreboard objectives add pool.dx dummy
@@ -59,7 +59,8 @@ scoreboard players set #10000 pool.const 10000
 scoreboard players set #20000 pool.const 20000
 scoreboard players set #32767 pool.const 32767
 scoreboard players set #32768 pool.const 32768
-scoreboard players set #1000000 pool.const 1000000
+scoreboard players set #100000 pool.const 100000
+scoreboard players set #100000000 pool.const 100000000
 
 # Physical constants (see emulator/physics/constants.py for the same values in SI)
 # ball radius R = 28.575 mm; 2R = 57150 um
