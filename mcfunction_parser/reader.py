@@ -16,6 +16,8 @@ INT_MAX = 2**31 - 1
 
 WORD = re.compile(r"[^ ]*")
 _SPACED_WORD = re.compile(r" ([^ ]+)")
+_SPACED_WORD_THEN_ARG = re.compile(r" ([^ ]+) (?=.)")
+_WORD_THEN_ARG = re.compile(r"([^ ]+) (?=.)")
 # Brigadier StringReader.isAllowedInUnquotedString
 UNQUOTED = re.compile(r"[0-9A-Za-z_\-.+]*")
 # Brigadier StringReader.isAllowedNumber: digits, '-' and '.'
@@ -159,6 +161,31 @@ class Reader:
                 return word
         self.space(what)
         return self.literal(choices, what)
+
+    def keyword_then_space(self, choices, what: str, next_what) -> str:
+        """:meth:`keyword` and the space before the argument that must follow it;
+        ``next_what(word)`` names that argument in the error message."""
+        m = _SPACED_WORD_THEN_ARG.match(self.text, self.pos)
+        if m is not None:
+            word = m.group(1)
+            if word in choices:
+                self.pos = m.end()
+                return word
+        word = self.keyword(choices, what)
+        self.space(next_what(word))
+        return word
+
+    def word_then_space(self, choices, what: str, next_what) -> str:
+        """:meth:`literal` and the space before the argument that must follow it."""
+        m = _WORD_THEN_ARG.match(self.text, self.pos)
+        if m is not None:
+            word = m.group(1)
+            if word in choices:
+                self.pos = m.end()
+                return word
+        word = self.literal(choices, what)
+        self.space(next_what(word))
+        return word
 
     def unquoted(self) -> str:
         m = UNQUOTED.match(self.text, self.pos)

@@ -21,6 +21,7 @@ _ANCHORS = ("eyes", "feet")
 _HEIGHTMAPS = ("world_surface", "motion_blocking", "motion_blocking_no_leaves", "ocean_floor")
 _RELATIONS = ("attacker", "controller", "leasher", "origin", "owner", "passengers", "target", "vehicle")
 _COMPARISONS = ("<", "<=", "=", ">=", ">")
+_SCORE_TESTS = frozenset(_COMPARISONS + ("matches",))
 STORE_TYPES = ("byte", "short", "int", "long", "float", "double")
 _AXES = re.compile(r"[xyz]{1,3}")
 
@@ -116,12 +117,15 @@ def _summon(r, loc):
 # ----------------------------------------------------------------------------- conditions
 
 
+def _score_test_follows(op: str) -> str:
+    return "range" if op == "matches" else "score holder"
+
+
 def _if_score(r, loc, negated):
     holder = score_holder(r)
     r.space("objective")
     obj = objective(r)
-    op = r.keyword(_COMPARISONS + ("matches",), "comparison")
-    r.space("range" if op == "matches" else "score holder")
+    op = r.keyword_then_space(_SCORE_TESTS, "comparison", _score_test_follows)
     if op == "matches":
         return ast.IfScoreMatches(loc, negated, holder, obj, int_range(r))
     source = score_holder(r)
@@ -244,11 +248,10 @@ _CONDITIONS = {
 
 def _condition(r, loc, negated):
     start = r.pos
-    kind = r.literal(_CONDITIONS, "condition")
+    kind = r.word_then_space(_CONDITIONS, "condition", _what_follows)
     parser, feature = _CONDITIONS[kind]
     if feature:
         _require(r, feature, start)
-    r.space(kind + " arguments")
     return parser(r, loc, negated)
 
 
@@ -293,14 +296,17 @@ _SUBCOMMANDS = {
 _ALL = tuple(_SUBCOMMANDS) + ("run",)
 
 
+def _what_follows(name: str) -> str:
+    return "command" if name == "run" else name + " arguments"
+
+
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
     while True:
         if r.pos == r.end and subcommands and isinstance(subcommands[-1], ast.Condition):
             return ast.Execute(loc, tuple(subcommands), None)
         sub_loc = r.loc_at(r.pos + 1)
-        name = r.keyword(_ALL, "execute subcommand")
-        r.space(name + " arguments" if name != "run" else "command")
+        name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
         if name == "run":
             return ast.Execute(loc, tuple(subcommands), command(r))
         sub = _SUBCOMMANDS[name](r, sub_loc)
