@@ -5,6 +5,8 @@ version problems per command):
 - a ``function``, ``schedule function``, ``execute if function`` or advancement reward naming a
   function or function tag that is not loaded (error; a tag the game refused to load is named as
   such);
+- ``execute if predicate`` or a selector's ``predicate=`` naming a predicate file that is not
+  loaded (error);
 - calling a macro function without arguments (directly, by ``schedule``, or as a member of
   ``#minecraft:load``/``#minecraft:tick``), or with a literal compound that lacks one of its
   ``$(keys)`` (error: the game fails the call);
@@ -31,6 +33,7 @@ from .pack import LoadedPacks, load_packs
 
 # Function references and objective definitions inside macro templates (unparsed until called).
 _MACRO_FUNCTION = re.compile(r"(?:^|\s)function\s+(#?[a-z0-9_.-]+:[a-z0-9_./-]+)(?=\s|$)")
+_RESOURCE_LOCATION = re.compile(r"[a-z0-9_.-]+:[a-z0-9_./-]+")
 _MACRO_OBJECTIVE_ADD = re.compile(r"(?:^|\s)scoreboard\s+objectives\s+add\s+(\S+)")
 
 
@@ -96,6 +99,7 @@ def lint(loaded: LoadedPacks) -> list[Diagnostic]:
     found: list[Diagnostic] = []
     nodes = _nodes(loaded)
     _check_calls(loaded, nodes, found)
+    _check_predicates(loaded, nodes, found)
     _check_objectives(loaded, nodes, found)
     _check_unreferenced(loaded, nodes, found)
     return found
@@ -241,6 +245,20 @@ def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:
     if name in loaded.failed_tags:
         return f"function tag #{name} fails to load ({loaded.failed_tags[name].reason})"
     return f"unknown function tag #{name}"
+
+
+def _check_predicates(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
+    """``execute if predicate ID`` and ``@e[predicate=ID]`` need a predicate file (the vanilla
+    pack defines none); inline ``{...}`` predicates (1.20.5+) are not looked up."""
+    for _, node in nodes:
+        if isinstance(node, ast.IfPredicate):
+            name = node.predicate
+        elif isinstance(node, ast.SelectorArg) and node.key == "predicate":
+            name = node.value
+        else:
+            continue
+        if _RESOURCE_LOCATION.fullmatch(name) and name not in loaded.predicates:
+            found.append(_at(loaded, ERROR, f"unknown predicate {name}", node.loc))
 
 
 def _check_objectives(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:

@@ -1,4 +1,5 @@
-"""Loading data packs: pack.mcmeta, overlays, function files, function tags, advancement rewards.
+"""Loading data packs: pack.mcmeta, overlays, functions, function tags, advancement rewards and
+the ids of predicates.
 
 Several packs load together in order; a later pack overrides an earlier pack's function of the
 same id and its tag files merge on top (``replace`` honoured). All packs are read for one game
@@ -58,6 +59,7 @@ class LoadedPacks:
     diagnostics: list[Diagnostic]
     failed_tags: dict[str, FailedTag] = field(default_factory=dict)  # tags the game refuses to load
     advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
+    predicates: set[str] = field(default_factory=set)  # ids of the predicate files
     files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
 
     @property
@@ -122,6 +124,8 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> Lo
     _load_functions(packs, result)
     _load_tags(packs, result)
     _load_advancements(packs, result)
+    for pack in packs:
+        result.predicates.update(_resources(pack, ("predicate", "predicates"), ".json", diagnostics))
     return result
 
 

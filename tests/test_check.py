@@ -190,22 +190,23 @@ def test_generated_corpus_checks_without_errors(tmp_path):
     corpus = pytest.importorskip("corpus")
     lines = corpus.write_corpus(tmp_path / "corpus", lines=40000)
     first = check_packs([tmp_path / "corpus"])
-    # The generated pack calls a few functions and tags it does not define: provide them in a
-    # second pack, so every remaining error would be a parser or linter fault.
+    # The generated pack names a few functions, tags and predicates it does not define: provide
+    # them in a second pack, so every remaining error would be a parser or linter fault.
     missing = {m.group(2): m.group(1) for d in first.of("error")
-               if (m := re.match(r"unknown function (tag #)?(\S+)", d.message))}
+               if (m := re.match(r"unknown (function tag #|function |predicate )(\S+)", d.message))}
     library = {"pack.mcmeta": json.dumps({"pack": {"pack_format": corpus.PACK_FORMAT, "description": ""}})}
-    for name, is_tag in missing.items():
+    stubs = {"function tag #": ("tags/function", ".json", '{"values": []}'),
+             "function ": ("function", ".mcfunction", "return 1\n"),
+             "predicate ": ("predicate", ".json", '{"condition": "minecraft:random_chance", "chance": 1}')}
+    for name, kind in missing.items():
         ns, path = name.split(":")
-        if is_tag:
-            library[f"data/{ns}/tags/function/{path}.json"] = '{"values": []}'
-        else:
-            library[f"data/{ns}/function/{path}.mcfunction"] = "return 1\n"
+        folder, suffix, text = stubs[kind]
+        library[f"data/{ns}/{folder}/{path}{suffix}"] = text
     write(tmp_path / "library", library)
     result = check_packs([tmp_path / "corpus", tmp_path / "library"])
     assert result.of("error") == []
-    stubs = sum(1 for name, is_tag in missing.items() if not is_tag)
-    assert result.lines == lines + stubs and lines >= 40000 and result.commands > 25000
+    functions_added = sum(kind == "function " for kind in missing.values())
+    assert result.lines == lines + functions_added and lines >= 40000 and result.commands > 25000
 
 
 def test_advancement_rewards_must_exist_and_later_packs_replace_advancements(tmp_path):
@@ -218,3 +219,14 @@ def test_advancement_rewards_must_exist_and_later_packs_replace_advancements(tmp
     assert (error.message, error.line, error.col) == ("unknown function a:gone (advancement reward)", 2, 26)
     assert error.source_line == ' "rewards": {"function": "a:gone"}}'
     assert [d.message.split(" is ")[0] for d in result.of("info")] == ["function a:old"]
+
+
+def test_predicates_must_exist_unless_inline(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("load"): (
+        "execute if predicate a:known run say 1\nexecute if predicate a:unknown run say 2\n"
+        "execute as @e[predicate=!a:missing] run say 3\n"
+        'execute if predicate {condition: "minecraft:random_chance", chance: 0.5} run say 4\n'),
+        "data/a/predicate/known.json": '{"condition": "minecraft:random_chance", "chance": 0.5}',
+        "data/a/predicates/old_folder.json": "{}"})
+    errors = [(e.line, e.message) for e in check_packs([root]).of("error")]
+    assert errors == [(2, "unknown predicate a:unknown"), (3, "unknown predicate a:missing")]
