@@ -21,7 +21,7 @@ import math
 from dataclasses import dataclass, replace
 from typing import Callable
 
-from emulator.semantics import INT_MAX, floor_div, floor_mod, wrap32
+from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
 from emulator.state import SERVER, Context, WorldState
 from emulator.world import stores
 from mcfunction_parser import ast
@@ -48,12 +48,20 @@ class Host:
     """Runs host ops against ``state``; ``quota`` is read and charged through callbacks so the
     VM's register stays the single count."""
 
-    def __init__(self, state: WorldState, functions: dict, tags, report: Callable[[str, str], None]) -> None:
+    def __init__(self, state: WorldState, functions: dict, tags, report: Callable[[str, str], None],
+                 overflow: Callable[[str, int, int, int], None] | None = None) -> None:
         self.state = state
         self.functions = functions
         self.tags = tags
         self.report = report  # (message, severity) -> diagnostic at the current command
+        self.overflow = overflow  # sanitizer: (op, a, b, exact) for a result that wraps
         self._warned: set = set()
+
+    def arith(self, op: str, a: int, b: int, exact: int) -> int:
+        """The stored (wrapped) result; under the sanitizer a wrap is reported."""
+        if self.overflow is not None and wraps32(exact):
+            self.overflow(op, a, b, exact)
+        return wrap32(exact)
 
     # ------------------------------------------------------------------ entry points
     def run_final(self, cmd: ast.Command | ast.Condition, ctx: Context) -> HostResult:
@@ -261,7 +269,7 @@ def _players_set(host: Host, cmd: ast.ScoreSet, ctx: Context) -> int:
             value = cmd.value
         else:
             old = sb.get(name, cmd.objective) or 0
-            value = wrap32(old + cmd.value if cmd.action == "add" else old - cmd.value)
+            value = host.arith(cmd.action, old, cmd.value, old + cmd.value if cmd.action == "add" else old - cmd.value)
         sb.set(name, cmd.objective, value)
         total += value
     return wrap32(cmd.value * len(names)) if cmd.action == "set" else wrap32(total)
@@ -302,7 +310,7 @@ def _players_operation(host: Host, cmd: ast.ScoreOperation, ctx: Context) -> int
                 continue
             if cmd.op in ("/=", "%=") and b == 0:
                 raise HostFailure("Cannot divide by zero", report=True)
-            sb.set(t, cmd.objective, _OPERATIONS[cmd.op](a, b))
+            sb.set(t, cmd.objective, host.arith(cmd.op, a, b, _OPERATIONS[cmd.op](a, b)))
         total += sb.get(t, cmd.objective)
     return wrap32(total)
 
@@ -322,12 +330,12 @@ def _coord(c: ast.Coord, base: float, centre: bool) -> float:
     return c.value + 0.5 if centre and c.is_int else c.value
 
 
-_OPERATIONS = {
+_OPERATIONS = {  # exact results; Host.arith wraps them (floorDiv's MIN / -1 included)
     "=": lambda a, b: b,
-    "+=": lambda a, b: wrap32(a + b),
-    "-=": lambda a, b: wrap32(a - b),
-    "*=": lambda a, b: wrap32(a * b),
-    "/=": floor_div,
+    "+=": lambda a, b: a + b,
+    "-=": lambda a, b: a - b,
+    "*=": lambda a, b: a * b,
+    "/=": lambda a, b: a // b,
     "%=": floor_mod,
     "<": min,
     ">": max,

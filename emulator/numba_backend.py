@@ -56,7 +56,8 @@ class NumbaBackend:
         self.compiler.compile_all()
         self.macros = MacroExpander(packs.version)
         self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
-        self.host = Host(state, packs.functions, packs.tags, self._report_here)
+        self.host = Host(state, packs.functions, packs.tags, self._report_here,
+                         self._host_overflow if sanitize else None)
         self.regs = vm.new_registers()
         self.frames = vm.new_frames(256)
         self.ovf = vm.new_overflow_buffer()
@@ -274,6 +275,11 @@ class NumbaBackend:
             loc = self.program.locs[here] if 0 <= here < len(self.program.locs) else None
             frames.append(Frame(self.program.functions[fn], loc))
         return tuple(f for f in frames if f.loc is not None)
+
+    def _host_overflow(self, op: str, a: int, b: int, exact: int) -> None:
+        pc = self._current_pc
+        self.state.overflows.append(Overflow(self.state.tick, self.program.function_of(pc), self.program.locs[pc],
+                                             op, a, b, exact, wrap32(exact)))
 
     def _report_here(self, message: str, severity: str) -> None:
         self.state.error(message, self.traceback(self._current_pc), severity)

@@ -47,3 +47,11 @@ def test_host_stage_costs(tmp_path, backend):
     emu, _ = run_main(tmp_path, "", {"t:f": "execute positioned 0 0 0 as @e run say hi"}, backend=backend)
     result = emu.runtime.call("t:f")
     assert result.cost == 1 + 2  # two stages, no context left to run `say`
+
+
+def test_sanitizer_sees_host_arithmetic(tmp_path, backend):
+    emu, _ = run_main(tmp_path, "scoreboard players set #a o 2147483647\nscoreboard players set #b o 5\n"
+                                "scoreboard players add * o 1", sanitize=True, backend=backend)
+    assert emu.score("#a", "o") == -2147483648
+    assert [(o.function, o.loc.line, o.op, o.a, o.b, o.exact) for o in emu.overflows] == [
+        ("t:main", 4, "add", 2147483647, 1, 2147483648)]
