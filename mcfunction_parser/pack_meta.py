@@ -79,8 +79,12 @@ def read_pack_meta(root: PackPath, shown_root: str, diagnostics: list[Diagnostic
     path = root / "pack.mcmeta"
     shown = _join(shown_root, "pack.mcmeta")
     if not path.is_file():
+        nested = sorted(child.name for child in root.iterdir()
+                        if child.is_dir() and (child / "pack.mcmeta").is_file())
+        hint = f" (found one inside {', '.join(repr(n + '/') for n in nested[:3])}: check that " \
+            "folder instead)" if nested else ""
         diagnostics.append(Diagnostic(
-            ERROR, "missing pack.mcmeta: the game does not recognise this as a data pack",
+            ERROR, f"missing pack.mcmeta: the game does not recognise this as a data pack{hint}",
             shown))
         return None
     doc = load_json(path, shown, diagnostics)

@@ -91,3 +91,10 @@ def test_description_of_any_shape(make_pack):
     for expected, description in shapes.items():
         loaded = _load_meta(make_pack, {"pack": {"pack_format": 61, "description": description}})
         assert loaded.packs[0].description == ("a" if expected.startswith("{") else expected)
+
+
+def test_missing_pack_mcmeta_points_at_a_nested_pack(tmp_path):
+    from packbuild import write_pack
+    write_pack(tmp_path / "outer" / "inner", {}, {"pack": {"pack_format": 61, "description": ""}})
+    [error] = load_packs([tmp_path / "outer"]).errors
+    assert error.message.endswith("(found one inside 'inner/': check that folder instead)")
