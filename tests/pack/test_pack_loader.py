@@ -112,6 +112,8 @@ def test_invalid_utf8_is_a_diagnostic_with_position_and_the_rest_loads(make_pack
 
 
 def test_bom_in_function_is_an_error_but_json_tolerates_it(make_pack):
+    # Gson's JsonReader.fillBuffer consumes a leading U+FEFF; Java's UTF-8 InputStreamReader (used
+    # for function lines) keeps it, so it lands in the first command.
     root = make_pack(files={"data/a/function/x.mcfunction": b"\xef\xbb\xbfsay x\n",
                             "data/a/tags/function/t.json": b'\xef\xbb\xbf{"values": ["a:x"]}'})
     loaded = load_packs([root])
