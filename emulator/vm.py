@@ -483,7 +483,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 counts[pc] += cost
             pc += 1
         elif op == OP_FAIL:
-            if alive == 0:
+            if alive == 0 and code[pc, 4] == 0:  # an aborting failure happens even with no context
                 pc += 1
                 continue
             if quota <= 0:
@@ -513,12 +513,9 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             pc += 1
         elif op == OP_JMPDEAD:
             pc = pc + 1 if alive else code[pc, 1]
-        elif op == OP_STOP:
-            if alive:
-                alive = 0
-                pc = abort
-            else:
-                pc += 1
+        elif op == OP_STOP:  # even with no context left: nothing of the chain follows
+            alive = 0
+            pc = abort
         elif op == OP_HOST:
             if alive == 0:
                 pc += 1

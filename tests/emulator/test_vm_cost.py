@@ -97,3 +97,13 @@ def test_fork_limit(tmp_path, stage):
     emu.state.gamerules.set("maxCommandForkCount", "2")
     emu.call("t:f")
     assert emu.score("#x", "o") == 1
+
+
+def test_if_function_on_empty_tag_ends_the_chain_without_charges(tmp_path):
+    # scheduleFunctionConditionsAndTest: no functions, no continuation (not even for 0 contexts)
+    emu = emulator_for(tmp_path, {"t:setup": FUNCTIONS["t:setup"],
+                                  "t:f": "execute if score #u o matches 1 if function #t:empty if score #one o matches 1 "
+                                         "run say never"}, tags={"t:empty": []})
+    emu.call("t:setup")
+    result = emu.runtime.call("t:f")
+    assert result.cost == 1 + 1  # the call and the first stage; nothing after the empty tag
