@@ -10,7 +10,8 @@ reference interpreter). Modules:
   holds the JVM's own tables behind ``Mth.atan2``.
 - ``rotation``: directions, local coordinates ``^``, ``facing``, rotation wrapping.
 - ``source``: the execution context (position, rotation, executor, anchor) and coordinate arguments.
-- ``entities``: entity types, the entity store, entity NBT view and loading.
+- ``entities``: entity types, the entity store, entity NBT view and loading; ``display`` holds the
+  render fields display entities save and how loading reads them.
 - ``selectors``: ``@s @e @a @p @r @n`` with their arguments.
 - ``text``: numbers and tags as Java prints them (``Double.toString``, ``Tag.getAsString``).
 - ``teleport``: ``tp`` destinations for every form.

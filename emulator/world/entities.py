@@ -38,7 +38,7 @@ from typing import Callable
 import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
-from emulator.world import rotation
+from emulator.world import display, rotation
 from emulator.world.errors import CommandFailure
 from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 
@@ -321,6 +321,8 @@ def _base_fields(type_id: str, nbt: Compound, previous: Compound) -> Compound:
     for key in TYPE_COMPOUNDS.get(type_id, ()):
         value = nbt.get(key)
         fields[key] = copy_tag(value) if isinstance(value, Compound) else Compound()
+    if type_id in display.DISPLAY_TYPES:
+        fields.update(display.read_fields(type_id, nbt, previous))
     return fields
 
 
@@ -349,7 +351,8 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     if isinstance(nbt.get("Tags"), List):
         entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
     data = _base_fields(entity.type, nbt, entity.data)
-    data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in _MODELLED and k not in data and k not in FLAG_FIELDS)
+    dropped = set(_MODELLED) | set(FLAG_FIELDS) | (set(display.NOT_SAVED) if entity.type in display.DISPLAY_TYPES else set())
+    data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in data and k not in dropped)
     entity.data = data
 
 
@@ -371,6 +374,8 @@ def _base_data(type_id: str) -> Compound:
     data = Compound(FallDistance=Float(0.0), Fire=Short(-1), Air=Short(300), OnGround=Byte(0),
                     Invulnerable=Byte(0), PortalCooldown=Int(0))
     data.update((key, Compound()) for key in TYPE_COMPOUNDS.get(type_id, ()))
+    if type_id in display.DISPLAY_TYPES:
+        data.update(display.default_fields(type_id))
     return data
 
 

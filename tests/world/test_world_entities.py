@@ -403,3 +403,24 @@ def test_summon_failures():
     with pytest.raises(CommandFailure, match="duplicate UUIDs"):
         store.summon("minecraft:marker", (0, 0, 0), Compound(UUID=nbt_ops.copy_tag(entity_nbt(first)["UUID"])))
     assert len(store.entities) == 1
+
+
+def test_display_entities_save_their_render_fields():
+    # Display.addAdditionalSaveData always writes transformation, billboard, durations, view
+    # range, shadow and size fields; readAdditionalSaveData ignores values of the wrong kind.
+    store = EntityStore()
+    d = store.summon("minecraft:item_display", (0, 0, 0), Compound(teleport_duration=Int(80), billboard=String("center")))
+    nbt = entity_nbt(d)
+    assert nbt["transformation"]["scale"] == [1.0, 1.0, 1.0] and type(nbt["transformation"]["scale"][0]) is Float
+    assert nbt["teleport_duration"] == 59 and nbt["billboard"] == "center" and nbt["item_display"] == "none"
+    modify_entity(d, lambda n: nbt_ops.set_path(n, path("transformation.translation", "transformation", "translation"),
+                                                List([Double(0.5), Double(1.0), Double(0.1)])))
+    t = entity_nbt(d)["transformation"]
+    assert t["translation"] == [0.5, 1.0, float(F32(0.1))] and type(t["translation"][0]) is Float
+    assert t["left_rotation"] == [0.0, 0.0, 0.0, 1.0]
+    # A partial transformation does not decode: the previous one stays.
+    modify_entity(d, lambda n: nbt_ops.set_path(n, path("transformation", "transformation"),
+                                                Compound(scale=List([Float(2.0)] * 3))))
+    assert entity_nbt(d)["transformation"] == t
+    modify_entity(d, lambda n: nbt_ops.set_path(n, path("start_interpolation", "start_interpolation"), Int(0)))
+    assert "start_interpolation" not in entity_nbt(d)  # read, never saved

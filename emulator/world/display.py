@@ -1,0 +1,88 @@
+"""Display entities' own NBT (``item_display``, ``block_display``, ``text_display``).
+
+A display always saves its render fields, so ``data modify entity @s transformation.translation
+...`` works on a full compound even when the entity was summoned without one. Loading reads each
+field the way ``Display.readAdditionalSaveData`` does: a field of the wrong kind keeps the current
+value, numbers are converted to the saved type, ``teleport_duration`` is clamped to 0..59,
+``start_interpolation`` is read but never saved, and a missing ``brightness`` clears it.
+
+- ``DISPLAY_TYPES``: the three display entity ids.
+- ``default_fields(type_id)``: the fields a new display saves.
+- ``read_fields(type_id, nbt, previous)``: the fields after loading ``nbt`` over ``previous``.
+- ``NOT_SAVED``: fields a display reads but does not save.
+
+Limitations: ``transformation`` is read in its decomposed form with quaternion rotations; the
+16-number matrix form and axis-angle rotations keep the previous value. Item and block contents
+(``item``, ``block_state``, ``text``) are kept as given.
+
+Source: decompiled 1.21 world/entity/Display.java (defineSynchedData, readAdditionalSaveData,
+addAdditionalSaveData) and com/mojang/math/Transformation.java (EXTENDED_CODEC).
+"""
+from __future__ import annotations
+
+from mcfunction_parser.nbt import Compound, Float, Int, List, String
+from emulator.world import mth
+from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
+
+DISPLAY_TYPES = ("minecraft:item_display", "minecraft:block_display", "minecraft:text_display")
+NOT_SAVED = ("start_interpolation",)  # read by load, never written back
+BILLBOARDS = ("fixed", "vertical", "horizontal", "center")
+_FLOATS = {"view_range": 1.0, "shadow_radius": 0.0, "shadow_strength": 1.0, "width": 0.0, "height": 0.0}
+_INTS = {"interpolation_duration": 0, "teleport_duration": 0, "glow_color_override": -1}
+# Transformation's record fields in codec order, with their sizes and defaults.
+_TRANSFORM = (("translation", (0.0, 0.0, 0.0)), ("left_rotation", (0.0, 0.0, 0.0, 1.0)),
+              ("scale", (1.0, 1.0, 1.0)), ("right_rotation", (0.0, 0.0, 0.0, 1.0)))
+_TYPE_DEFAULTS = {"minecraft:item_display": {"item_display": String("none")},
+                  "minecraft:block_display": {"block_state": Compound(Name=String("minecraft:air"))}}
+
+
+def _floats(values) -> List:
+    return List(Float(float(mth.f32(v))) for v in values)
+
+
+def default_fields(type_id: str) -> Compound:
+    fields = Compound(transformation=Compound((k, _floats(v)) for k, v in _TRANSFORM))
+    fields["billboard"] = String("fixed")
+    fields.update((k, Int(v)) for k, v in _INTS.items())
+    fields.update((k, Float(v)) for k, v in _FLOATS.items())
+    fields.update((k, copy_tag(v)) for k, v in _TYPE_DEFAULTS.get(type_id, {}).items())
+    return fields
+
+
+def _transformation(value, previous: Compound) -> Compound:
+    """The decomposed form with every part a numeric list of the right size, else the previous one."""
+    if not isinstance(value, Compound):
+        return copy_tag(previous)
+    parts = Compound()
+    for key, default in _TRANSFORM:
+        part = value.get(key)
+        if not isinstance(part, List) or len(part) != len(default) or not all(is_numeric(v) for v in part):
+            return copy_tag(previous)
+        parts[key] = _floats(numeric_value(v) for v in part)
+    return parts
+
+
+def read_fields(type_id: str, nbt: Compound, previous: Compound) -> Compound:
+    """The display fields after ``readAdditionalSaveData(nbt)`` on an entity that had ``previous``."""
+    fields = default_fields(type_id)
+    fields.update((k, copy_tag(v)) for k, v in previous.items() if k in fields or k == "brightness")
+    if "transformation" in nbt:
+        fields["transformation"] = _transformation(nbt["transformation"], fields["transformation"])
+    for key in _INTS:
+        if is_numeric(nbt.get(key)):
+            value = narrow(nbt[key], Int)
+            fields[key] = Int(min(max(value, 0), 59) if key == "teleport_duration" else value)
+    for key in _FLOATS:
+        if is_numeric(nbt.get(key)):
+            fields[key] = Float(float(mth.f32(numeric_value(nbt[key]))))
+    if isinstance(nbt.get("billboard"), String) and nbt["billboard"] in BILLBOARDS:
+        fields["billboard"] = String(nbt["billboard"])
+    brightness = nbt.get("brightness")
+    fields.pop("brightness", None)
+    if isinstance(brightness, Compound) and all(
+            is_numeric(brightness.get(k)) and 0 <= narrow(brightness[k], Int) <= 15 for k in ("sky", "block")):
+        fields["brightness"] = Compound(sky=Int(narrow(brightness["sky"], Int)), block=Int(narrow(brightness["block"], Int)))
+    for key in _TYPE_DEFAULTS.get(type_id, {}):
+        if key in nbt:
+            fields[key] = copy_tag(nbt[key])
+    return fields
