@@ -50,10 +50,11 @@ def show(text: str) -> str:
 class Reader:
     """The command text, the cursor, and how offsets map back to file positions."""
 
-    __slots__ = ("text", "pos", "end", "path", "line", "col", "version", "warnings")
+    __slots__ = ("text", "pos", "end", "start_loc", "path", "line", "col", "version", "warnings")
 
     def __init__(self, text: str, loc: Loc, version: tuple[int, int, int]):
         self.text = text
+        self.start_loc = loc  # where the text starts: the location of a command at offset 0
         self.pos = 0
         self.end = len(text)
         self.path = loc.path

@@ -27,7 +27,7 @@ def command(r: Reader) -> Command:
         if not name:
             r.fail(f"expected a command, got {show(r.rest_word())}")
         r.fail(command_problem(name, r.version), start)
-    loc = r.loc_at(start)
+    loc = r.start_loc if start == 0 else r.loc_at(start)
     r.pos = start + len(name)
     parser, warning = entry
     if warning:
