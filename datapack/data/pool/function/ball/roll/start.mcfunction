@@ -35,11 +35,15 @@ scoreboard players operation $b pool.math = #20000 pool.const
 function pool:math/div_round
 scoreboard players operation #l pool.tmp -= $out pool.math
 scoreboard players operation @s pool.spd = #l pool.tmp
+# direction d = 10^7 v / spd = 10000 (1000 v) / spd
+scoreboard players operation $b pool.math = @s pool.spd
 scoreboard players operation $a pool.math = @s pool.vx
-function pool:ball/roll/direction
+scoreboard players operation $a pool.math *= #1000 pool.const
+function pool:math/div_1e4
 scoreboard players operation @s pool.dx = $out pool.math
 scoreboard players operation $a pool.math = @s pool.vz
-function pool:ball/roll/direction
+scoreboard players operation $a pool.math *= #1000 pool.const
+function pool:math/div_1e4
 scoreboard players operation @s pool.dz = $out pool.math
 scoreboard players set @s pool.s 0
 scoreboard players operation @s pool.x0 = @s pool.x
