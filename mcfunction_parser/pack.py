@@ -194,10 +194,15 @@ def _data_files(base: PackPath, prefix: str) -> dict[str, tuple[PackPath, str]]:
     relative to ``base``, with their path inside the pack (``prefix`` + key)."""
     found: dict[str, tuple[PackPath, str]] = {}
     stack = [(base / "data", "data")]
+    seen: set[Path] = set()  # folders already walked: a symbolic link loop is walked once
     while stack:
         folder, rel = stack.pop()
         if not folder.is_dir():
             continue
+        if isinstance(folder, Path):
+            if folder.resolve() in seen:
+                continue
+            seen.add(folder.resolve())
         for child in folder.iterdir():
             child_rel = f"{rel}/{child.name}"
             if child.is_dir():

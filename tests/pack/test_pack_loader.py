@@ -221,3 +221,9 @@ def test_both_folders_in_a_pack_for_both_sides_of_the_rename_is_only_info(tmp_pa
     loaded = load_packs([dual])
     assert loaded.warnings == [] and "'data/a/functions/' ignored" in loaded.infos[0].message
     assert load_packs([dual], mc_version="1.20.4").functions["a:x"].path.endswith("functions/x.mcfunction")
+
+
+def test_symbolic_link_loop_is_walked_once(make_pack):
+    root = make_pack(files={"data/a/function/x.mcfunction": "say x\n"})
+    (root / "data/a/function/loop").symlink_to(root / "data/a/function", target_is_directory=True)
+    assert list(load_packs([root]).functions) == ["a:x"]
