@@ -71,7 +71,7 @@ class NumbaBackend:
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
         self.contexts = []
-        self.context_ids: dict[tuple, int] = {}
+        self.context_ids = {}
         self._context_index(context or Context())
         function = self.packs.functions.get(function_id)
         if function is None:
@@ -115,7 +115,7 @@ class NumbaBackend:
                 report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
                 return True
             if status == vm.ST_HOST:
-                self._host(int(r[vm.R_PC]))
+                self._host_guarded(int(r[vm.R_PC]))
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_ERROR:
@@ -146,6 +146,17 @@ class NumbaBackend:
                 self.totals[fn] += int(self.frames[i, vm.F_QUOTA]) - quota
 
     # ------------------------------------------------------------------ requests
+    def _host_guarded(self, pc: int) -> None:
+        """A bug in a host handler fails that one command with a diagnostic, never the run."""
+        try:
+            self._host(pc)
+        except Exception as error:  # noqa: BLE001 - the pack's run must go on
+            r = self.regs
+            self.state.error(f"internal error running this command: {type(error).__name__}: {error}",
+                             self.traceback(pc))
+            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = 1, 0, 0
+            r[vm.R_PC] = pc + 1
+
     def _host(self, pc: int) -> None:
         """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
         opcode, index = self.program.rows[pc][0], self.program.rows[pc][1]
