@@ -10,6 +10,7 @@ from __future__ import annotations
 import re
 
 from .diagnostics import Loc
+from .features import feature_problem
 
 INT_MIN = -(2**31)
 INT_MAX = 2**31 - 1
@@ -74,6 +75,12 @@ class Reader:
 
     def fail(self, message: str, pos: int | None = None):
         raise ParseError(message, self.pos if pos is None else pos)
+
+    def require(self, feature: str, pos: int) -> None:
+        """Fail at ``pos`` when ``feature`` (a key of features.FEATURES) is not in the target version."""
+        problem = feature_problem(feature, self.version)
+        if problem:
+            self.fail(problem, pos)
 
     # ------------------------------------------------------------------ structure
 

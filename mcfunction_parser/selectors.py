@@ -10,7 +10,7 @@ import re
 
 from .arguments import float_range, int_range, is_uuid, json_span, resource_location
 from .ast import FloatRange, NameTarget, Selector, SelectorArg
-from .features import FEATURES, feature_problem
+from .features import FEATURES
 from .reader import Reader, show
 from .snbt import compound
 
@@ -72,7 +72,7 @@ def _check_variable(r: Reader, variable: str, start: int) -> None:
     if variable not in VARIABLES or not variable:
         r.fail(f"unknown selector type {show(r.text[start:start + 2])} (expected @s @e @a @p @r @n)", start)
     if variable == "n" and r.version < AT_N:
-        r.fail(feature_problem("selector @n", r.version), start)
+        r.require("selector @n", start)
 
 
 def _options(r: Reader, variable: str) -> tuple[tuple[SelectorArg, ...], list[int]]:

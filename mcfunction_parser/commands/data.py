@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 from .. import ast
-from ..features import feature_problem
 from ..nbt_path import nbt_path
 from ..reader import Reader
 from ..snbt import compound, value
@@ -61,9 +60,7 @@ def _source(r: Reader) -> ast.DataSource:
     if kind == "value":
         return ast.SourceValue(value(r), loc)
     if kind == "string":
-        problem = feature_problem("data modify string", r.version)
-        if problem:
-            r.fail(problem, start)
+        r.require("data modify string", start)
     source = data_target(r)
     path = nbt_path(r) if r.optional_space() else None
     if kind == "from":

@@ -10,7 +10,6 @@ import re
 from .. import ast
 from ..arguments import (float_range, int_range, json_span, objective, resource_location, resource_or_tag,
                          score_holder, vec2, vec3)
-from ..features import feature_problem
 from ..nbt_path import nbt_path
 from ..reader import Reader, show
 from ..selectors import target
@@ -25,11 +24,6 @@ _SCORE_TESTS = frozenset(_COMPARISONS + ("matches",))
 STORE_TYPES = ("byte", "short", "int", "long", "float", "double")
 _AXES = re.compile(r"[xyz]{1,3}")
 
-
-def _require(r: Reader, feature: str, pos: int) -> None:
-    problem = feature_problem(feature, r.version)
-    if problem:
-        r.fail(problem, pos)
 
 
 def block_predicate(r: Reader) -> str:
@@ -65,7 +59,7 @@ def _positioned(r, loc):
         r.space("entity")
         return ast.ExPositionedAs(loc, target(r))
     if word == "over":
-        _require(r, "execute positioned over", r.pos)
+        r.require("execute positioned over", r.pos)
         r.pos += 4
         return ast.ExPositionedOver(loc, r.keyword(_HEIGHTMAPS, "heightmap"))
     return ast.ExPositioned(loc, vec3(r))
@@ -105,12 +99,12 @@ def _in(r, loc):
 
 
 def _on(r, loc):
-    _require(r, "execute on", r.pos - 3)
+    r.require("execute on", r.pos - 3)
     return ast.ExOn(loc, r.literal(_RELATIONS, "relation"))
 
 
 def _summon(r, loc):
-    _require(r, "execute summon", r.pos - 7)
+    r.require("execute summon", r.pos - 7)
     return ast.ExSummon(loc, resource_location(r, "entity type"))
 
 
@@ -251,7 +245,7 @@ def _condition(r, loc, negated):
     kind = r.word_then_space(_CONDITIONS, "condition", _what_follows)
     parser, feature = _CONDITIONS[kind]
     if feature:
-        _require(r, feature, start)
+        r.require(feature, start)
     return parser(r, loc, negated)
 
 

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 from .. import ast
 from ..arguments import duration, resource_or_tag
-from ..features import feature_problem
 from ..nbt_path import nbt_path
 from ..reader import Reader
 from ..snbt import compound
@@ -11,18 +10,13 @@ from .data_targets import data_target
 from .dispatch import command
 
 
-def _require(r: Reader, feature: str, pos: int) -> None:
-    problem = feature_problem(feature, r.version)
-    if problem:
-        r.fail(problem, pos)
-
 
 def function(r: Reader, loc) -> ast.Command:
     r.space("function")
     name, is_tag = resource_or_tag(r, "function")
     if not r.optional_space():
         return ast.FunctionCall(loc, name, is_tag)
-    _require(r, "function arguments", r.pos)
+    r.require("function arguments", r.pos)
     if r.peek() == "{":
         args = compound(r)
         r.finish()
@@ -40,12 +34,12 @@ def return_(r: Reader, loc) -> ast.Command:
     start = r.pos
     word = r.rest_word()
     if word == "run":
-        _require(r, "return run", start)
+        r.require("return run", start)
         r.pos += 3
         r.space("command")
         return ast.Return(loc, "run", command=command(r))
     if word == "fail":
-        _require(r, "return fail", start)
+        r.require("return fail", start)
         r.pos += 4
         r.finish()
         return ast.Return(loc, "fail")

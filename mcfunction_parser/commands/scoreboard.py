@@ -5,7 +5,7 @@ import re
 
 from .. import ast
 from ..arguments import holder_from_word, json_span, objective, objective_too_long, score_holder
-from ..features import feature_problem, version_text
+from ..features import version_text
 from ..reader import INT_MAX, INT_MIN, Reader, show
 from ..selectors import bare_selector, is_single
 
@@ -49,11 +49,6 @@ def _display_slot(r: Reader) -> str:
     r.fail(f"unknown display slot {show(word)}", start)
 
 
-def _require(r: Reader, feature: str, pos: int) -> None:
-    problem = feature_problem(feature, r.version)
-    if problem:
-        r.fail(problem, pos)
-
 
 def _objectives(r: Reader, loc) -> ast.Command:
     action = r.keyword(_OBJECTIVE_ACTIONS, "objectives action")
@@ -84,7 +79,7 @@ def _obj_modify(r, loc):
     start = r.pos
     field = r.literal(("displayname", "rendertype", "displayautoupdate", "numberformat"), "objective property")
     if field in ("displayautoupdate", "numberformat"):
-        _require(r, "objectives modify " + field, start)
+        r.require("objectives modify " + field, start)
     if field == "numberformat":
         value = r.text[r.pos + 1:] if r.optional_space() else ""
         r.pos = r.end
@@ -234,7 +229,7 @@ def _pl_list(r, loc, action):
 
 
 def _pl_display(r, loc, action):
-    _require(r, "scoreboard players display", r.pos - len(action))
+    r.require("scoreboard players display", r.pos - len(action))
     r.space("display property")
     text = r.rest()
     if not text.startswith(("name ", "numberformat ")):

@@ -5,7 +5,7 @@ import re
 
 from .. import ast
 from ..arguments import duration, int_range, objective, resource_location
-from ..features import feature_problem, gamerule_type, version_text
+from ..features import gamerule_type, version_text
 from ..reader import Reader, show
 
 _RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")
@@ -51,9 +51,7 @@ def random(r: Reader, loc) -> ast.Command:
         seq = _sequence(r)
         r.finish()
         return ast.RandomCommand(loc, action, rng, seq)
-    problem = feature_problem("random reset", r.version)
-    if problem:
-        r.fail(problem, start)
+    r.require("random reset", start)
     if r.peek() == "*" and r.rest_word() == "*":
         r.pos += 1
         seq = "*"
