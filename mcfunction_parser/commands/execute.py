@@ -25,7 +25,6 @@ STORE_TYPES = ("byte", "short", "int", "long", "float", "double")
 _AXES = re.compile(r"[xyz]{1,3}")
 
 
-
 def block_predicate(r: Reader) -> str:
     """A block id or #tag with optional ``[states]`` and ``{nbt}``, returned as written."""
     start = r.pos

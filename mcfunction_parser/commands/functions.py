@@ -10,7 +10,6 @@ from .data_targets import data_target
 from .dispatch import command
 
 
-
 def function(r: Reader, loc) -> ast.Command:
     r.space("function")
     name, is_tag = resource_or_tag(r, "function")

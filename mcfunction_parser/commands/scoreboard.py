@@ -49,7 +49,6 @@ def _display_slot(r: Reader) -> str:
     r.fail(f"unknown display slot {show(word)}", start)
 
 
-
 def _objectives(r: Reader, loc) -> ast.Command:
     action = r.keyword(_OBJECTIVE_ACTIONS, "objectives action")
     return _OBJECTIVE_ACTIONS[action](r, loc)
