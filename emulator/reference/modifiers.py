@@ -1,15 +1,12 @@
 """``execute`` stages that change or filter the sources (the redirect and fork modifiers).
 
 :func:`apply` maps one source to the sources the stage produces (ExecuteCommand.register).
-Positions follow the game's argument rules where they cannot be wrong without entities:
-``~`` is relative to the source position, absolute integer x/z are block centres, ``align``
-floors, ``in`` scales x/z by the dimensions' coordinate scale. Local coordinates (``^``) and
-``facing`` use plain double trigonometry here, not the game's float tables.
+Positions and rotations use the world library's game math (:mod:`emulator.world.source`);
+``in`` scales x/z by the dimensions' coordinate scale (CommandSourceStack.withLevel).
 """
 from __future__ import annotations
 
-import math
-
+from emulator.world.source import Source as WorldSource
 from mcfunction_parser import ast
 
 from . import conditions, data
@@ -39,16 +36,17 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
     if isinstance(sub, ast.ExOn):
         return []  # the server has no relations; entities are not modelled
     if isinstance(sub, ast.ExPositioned):
-        return [source.with_context(pos=position(sub.pos, source), anchor="feet")]
+        return [source.with_context(pos=_world(source).position_of(sub.pos), anchor="feet")]
     if isinstance(sub, ast.ExRotated):
-        return [source.with_context(rot=rotation(sub.rot, source))]
+        return [_with_rotation(source, _world(source).rotation_of(sub.rot))]
     if isinstance(sub, ast.ExFacing):
-        return [source.with_context(rot=facing(source.context.pos, position(sub.pos, source)))]
+        world = _world(source)
+        turned = world.facing_position(world.position_of(sub.pos))
+        return [_with_rotation(source, (turned.yaw, turned.pitch))]
     if isinstance(sub, ast.ExAnchored):
         return [source.with_context(anchor=sub.anchor)]
     if isinstance(sub, ast.ExAlign):
-        pos = tuple(float(math.floor(v)) if axis in sub.axes else v for axis, v in zip("xyz", source.context.pos))
-        return [source.with_context(pos=pos)]
+        return [source.with_context(pos=_world(source).aligned(sub.axes).pos)]
     if isinstance(sub, ast.ExIn):
         return [in_dimension(source, sub.dimension)]
     raise unsupported(f"'execute {type(sub).__name__.removeprefix('Ex').lower()}'")
@@ -70,35 +68,14 @@ def store_score(env, sub: ast.StoreScore, source: Source) -> Source:
     return source.with_callback(chain(source.callback, store))
 
 
-def position(vec: ast.Vec3, source: Source) -> tuple[float, float, float]:
-    """Vec3Argument: world coordinates (absolute integer x/z centred) or local ``^`` coordinates."""
-    if vec.is_local:
-        return _local(vec, source)
-    base = source.context.pos
-    out = []
-    for axis, coord, origin in zip("xyz", (vec.x, vec.y, vec.z), base):
-        if coord.kind == "rel":
-            out.append(origin + coord.value)
-        elif coord.is_int and axis != "y":
-            out.append(coord.value + 0.5)
-        else:
-            out.append(float(coord.value))
-    return tuple(out)
+def _world(source: Source) -> WorldSource:
+    """The world library's view of the source (no executing entity: entities are not modelled)."""
+    context = source.context
+    return WorldSource(pos=context.pos, yaw=context.rot[0], pitch=context.rot[1], anchor=context.anchor)
 
 
-def rotation(vec: ast.Vec2, source: Source) -> tuple[float, float]:
-    yaw, pitch = source.context.rot
-    new_yaw = yaw + vec.x.value if vec.x.kind == "rel" else vec.x.value
-    new_pitch = pitch + vec.y.value if vec.y.kind == "rel" else vec.y.value
-    return (new_yaw, new_pitch)
-
-
-def facing(origin, target) -> tuple[float, float]:
-    dx, dy, dz = (t - o for t, o in zip(target, origin))
-    horizontal = math.sqrt(dx * dx + dz * dz)
-    pitch = -math.degrees(math.atan2(dy, horizontal))
-    yaw = math.degrees(math.atan2(dz, dx)) - 90.0
-    return (_wrap_degrees(yaw), _wrap_degrees(pitch))
+def _with_rotation(source: Source, rot) -> Source:
+    return source.with_context(rot=(float(rot[0]), float(rot[1])))
 
 
 def in_dimension(source: Source, dimension: str) -> Source:
@@ -108,33 +85,6 @@ def in_dimension(source: Source, dimension: str) -> Source:
     scale = _COORDINATE_SCALE.get(source.context.dimension, 1.0) / _COORDINATE_SCALE.get(dimension, 1.0)
     x, y, z = source.context.pos
     return source.with_context(dimension=dimension, pos=(x * scale, y, z * scale))
-
-
-def _local(vec: ast.Vec3, source: Source) -> tuple[float, float, float]:
-    yaw, pitch = source.context.rot
-    left, up, forwards = vec.x.value, vec.y.value, vec.z.value
-    cy, sy = math.cos(math.radians(yaw + 90.0)), math.sin(math.radians(yaw + 90.0))
-    cp, sp = math.cos(math.radians(-pitch)), math.sin(math.radians(-pitch))
-    cp2, sp2 = math.cos(math.radians(-pitch + 90.0)), math.sin(math.radians(-pitch + 90.0))
-    f = (cy * cp, sp, sy * cp)
-    u = (cy * cp2, sp2, sy * cp2)
-    l_ = (f[1] * u[2] - f[2] * u[1], f[2] * u[0] - f[0] * u[2], f[0] * u[1] - f[1] * u[0])
-    l_ = (-l_[0], -l_[1], -l_[2])
-    x, y, z = source.context.pos
-    return (
-        x + f[0] * forwards + u[0] * up + l_[0] * left,
-        y + f[1] * forwards + u[1] * up + l_[1] * left,
-        z + f[2] * forwards + u[2] * up + l_[2] * left,
-    )
-
-
-def _wrap_degrees(angle: float) -> float:
-    angle = math.fmod(angle, 360.0)
-    if angle >= 180.0:
-        angle -= 360.0
-    if angle < -180.0:
-        angle += 360.0
-    return angle
 
 
 def fork_limit_reached(limit: int) -> CommandFailure:

@@ -278,3 +278,27 @@ def test_an_internal_error_is_a_diagnostic_and_the_run_goes_on(tmp_path, monkeyp
     (diag,) = state.diagnostics
     assert diag.message == "internal error in the reference backend: RuntimeError: boom"
     assert [(f.function, f.loc.line) for f in diag.frames] == [("t:main", 2)]
+
+
+def test_context_modifiers_move_the_source(tmp_path):
+    # positions and rotations come from the world library's game math; the checks here are the
+    # ones with exact answers: centring of integer x/z, local coordinates at yaw 90 (facing -x),
+    # align flooring, and the nether's coordinate scale of 8
+    from emulator.reference.modifiers import apply
+    from emulator.reference.source import Source
+    from emulator.state import Context
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+
+    def where(text):
+        command, _ = parse_command(f"execute {text} run say x", Loc("x", 1, 1))
+        source = Source(Context(pos=(8.0, 64.0, 16.0)), None, None)
+        for sub in command.subcommands:
+            (source,) = apply(None, sub, source)
+        return source.context
+
+    assert where("positioned 1 2 3").pos == (1.5, 2.0, 3.5)
+    assert where("rotated 90 0 positioned ^ ^ ^1").pos == (7.0, 64.0, 16.0)
+    assert where("positioned 0.7 1.2 -0.5 align xz").pos == (0.0, 1.2, -1.0)
+    assert where("in minecraft:the_nether").pos == (1.0, 64.0, 2.0)
+    assert where("rotated ~10 ~-5").rot == (10.0, -5.0)
