@@ -184,22 +184,46 @@ def _function_lines(rng: random.Random, count: int, macro: bool) -> list[str]:
     return lines
 
 
+# Resources the generated lines refer to, so the pack also passes cross-reference checks.
+FIXED_FUNCTIONS = {
+    "physics/step": ["# one integration step (kept tiny: generated functions call it a lot)",
+                     "scoreboard players operation @s pos_x += @s vel_x",
+                     "scoreboard players operation @s pos_y += @s vel_y"],
+    "tick": ["scoreboard players add #ticks timer 1"],
+    "util/check": ["execute if score #tmp state matches 1.. run return 1", "return 0"],
+    "macro/apply": ["$scoreboard players set #arg tmp $(value)", "$tag @e[name=$(name),limit=1] add selected"],
+}
+FUNCTION_TAGS = {"on_hit": [f"{NAMESPACE}:physics/step"]}
+PREDICATES = {"is_moving": {"condition": "minecraft:entity_properties", "entity": "this",
+                            "predicate": {"flags": {"is_on_ground": False}}}}
+
+
+def _write(path: Path, text: str) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(text)
+
+
 def write_corpus(dest_dir, lines: int = 40000, seed: int = 0) -> int:
     """Write the pack under ``dest_dir``; returns the number of function lines written."""
     rng = random.Random(seed)
     root = Path(dest_dir)
-    (root / "data" / NAMESPACE / "function").mkdir(parents=True, exist_ok=True)
-    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": PACK_FORMAT, "description": "parser benchmark"}}))
+    data = root / "data" / NAMESPACE
+    _write(root / "pack.mcmeta", json.dumps({"pack": {"pack_format": PACK_FORMAT, "description": "parser benchmark"}}))
+    for name, values in FUNCTION_TAGS.items():
+        _write(data / "tags" / "function" / f"{name}.json", json.dumps({"values": values}))
+    for name, predicate in PREDICATES.items():
+        _write(data / "predicate" / f"{name}.json", json.dumps(predicate))
     written = 0
+    for name, body in FIXED_FUNCTIONS.items():
+        text = "\n".join(body) + "\n"
+        _write(data / "function" / f"{name}.mcfunction", text)
+        written += len(body)
     index = 0
     while written < lines:
         folder = ("physics", "util", "macro", "ui", "balls")[index % 5]
         count = min(rng.randint(20, 120), max(lines - written, 5))
-        body = _function_lines(rng, count, macro=(folder == "macro"))
-        text = "\n".join(body) + "\n"
-        path = root / "data" / NAMESPACE / "function" / folder / f"f{index:04d}.mcfunction"
-        path.parent.mkdir(parents=True, exist_ok=True)
-        path.write_text(text)
+        text = "\n".join(_function_lines(rng, count, macro=(folder == "macro"))) + "\n"
+        _write(data / "function" / folder / f"f{index:04d}.mcfunction", text)
         written += text.count("\n")
         index += 1
     return written
