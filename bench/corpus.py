@@ -186,6 +186,8 @@ def _function_lines(rng: random.Random, count: int, macro: bool) -> list[str]:
 
 # Resources the generated lines refer to, so the pack also passes cross-reference checks.
 FIXED_FUNCTIONS = {
+    "load": [f"scoreboard objectives add {name} dummy" for name in OBJECTIVES]
+    + ["scoreboard objectives add trigger_me trigger"],
     "physics/step": ["# one integration step (kept tiny: generated functions call it a lot)",
                      "scoreboard players operation @s pos_x += @s vel_x",
                      "scoreboard players operation @s pos_y += @s vel_y"],
@@ -211,6 +213,7 @@ def write_corpus(dest_dir, lines: int = 40000, seed: int = 0) -> int:
     _write(root / "pack.mcmeta", json.dumps({"pack": {"pack_format": PACK_FORMAT, "description": "parser benchmark"}}))
     for name, values in FUNCTION_TAGS.items():
         _write(data / "tags" / "function" / f"{name}.json", json.dumps({"values": values}))
+    _write(root / "data" / "minecraft" / "tags" / "function" / "load.json", json.dumps({"values": [f"{NAMESPACE}:load"]}))
     for name, predicate in PREDICATES.items():
         _write(data / "predicate" / f"{name}.json", json.dumps(predicate))
     written = 0
