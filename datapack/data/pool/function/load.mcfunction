@@ -69,6 +69,9 @@ scoreboard players set $2R pool.const 57150
 # playing area 2.54 m x 1.27 m
 scoreboard players set $L pool.const 2540000
 scoreboard players set $W pool.const 1270000
+# pocket openings along the rail lines: 90 mm from each corner, 65 mm either side of a long rail's middle
+scoreboard players set $corner_open pool.const 90000
+scoreboard players set $side_open pool.const 65000
 # sliding friction mu_s g = 0.2 * 9.81 m/s^2 = 4905 um/tick^2
 scoreboard players set $mu_s_g pool.const 4905
 # rolling resistance mu_r g = 0.01 * 9.81 m/s^2 = 24525 (0.01 um/tick^2)

@@ -1,0 +1,100 @@
+"""Swept (continuous) collision tests of the event loop, on fake players: pool:physics/sweep/..."""
+import math
+import random
+
+import numpy as np
+import pytest
+
+from emulator.physics.constants import CORNER_OPENING, SIDE_OPENING_HALF
+from scoreboard_runner import RUNNERS
+
+TWO_R = 57150
+NO_EVENT = 10001
+
+
+@pytest.fixture(scope="module", params=RUNNERS, ids=lambda r: r.name)
+def board(request):
+    return request.param()
+
+
+def set_chord(board, who, start, end):
+    for name, value in zip(("bx", "bz", "ex", "ez"), (*start, *end)):
+        board.set_score(f"#{who}.{name}", "pool.tmp", int(value))
+
+
+def exact_contact_fraction(a0, a1, b0, b1):
+    d0 = np.subtract(b0, a0, dtype=float)
+    d = np.subtract(b1, b0, dtype=float) - np.subtract(a1, a0, dtype=float)
+    a, b, c = d @ d, 2 * d0 @ d, d0 @ d0 - TWO_R**2
+    disc = b * b - 4 * a * c
+    if a == 0 or disc < 0:
+        return None
+    f = (-b - math.sqrt(disc)) / (2 * a)
+    if f > 1 or d0 @ d >= 0:
+        return None
+    return max(f, 0.0)
+
+
+def chords():
+    rng = random.Random(2)
+    fixed = [((0, 0), (500000, 0), (300000, 0), (300000, 0)),          # head-on, 10 m/s
+             ((0, 0), (200000, 0), (150000, 40000), (150000, 40000)),  # cut
+             ((0, 0), (100000, 0), (60000, 57000), (60000, 57000)),    # nearly grazing
+             ((0, 0), (0, 0), (200000, 0), (-100000, 0)),              # the other one moves
+             ((0, 0), (100000, 0), (-200000, 0), (-200000, 0))]       # moving away
+    drawn = []
+    for _ in range(150):
+        a0 = (rng.randint(0, 2_000_000), rng.randint(0, 1_000_000))
+        b0 = (a0[0] + rng.randint(-400000, 400000), a0[1] + rng.randint(-200000, 200000))
+        a1 = (a0[0] + rng.randint(-500000, 500000), a0[1] + rng.randint(-500000, 500000))
+        b1 = (b0[0] + rng.randint(-100000, 100000), b0[1] + rng.randint(-100000, 100000))
+        if math.dist(a0, b0) > TWO_R:
+            drawn.append((a0, a1, b0, b1))
+    return fixed + drawn
+
+
+def test_pair_sweep_finds_the_first_contact(board):
+    hits = 0
+    for a0, a1, b0, b1 in chords():
+        set_chord(board, "a", a0, a1)
+        set_chord(board, "b", b0, b1)
+        board.call("pool:physics/sweep/pair")
+        f = board.score("#f", "pool.tmp")
+        expected = exact_contact_fraction(a0, a1, b0, b1)
+        if expected is None:
+            assert f == NO_EVENT, (a0, a1, b0, b1)
+            continue
+        hits += 1
+        assert f != NO_EVENT, (a0, a1, b0, b1)
+        # centre distance at the reported fraction: 2R .. 2R + 0.2 mm
+        t = f / 10000
+        pa = np.add(a0, t * np.subtract(a1, a0))
+        pb = np.add(b0, t * np.subtract(b1, b0))
+        assert 0 <= np.linalg.norm(pb - pa) - TWO_R <= 200, (a0, a1, b0, b1, f, expected)
+    assert hits >= 10
+
+
+@pytest.mark.parametrize("start,end,rail,pocket", [
+    ((100000, 600000), (0, 650000), 1, 0),
+    ((2400000, 600000), (2600000, 600000), 2, 0),
+    ((800000, 60000), (820000, 0), 3, 0),
+    ((800000, 1200000), (800000, 1300000), 4, 0),
+    ((60000, 60000), (0, 0), 1, 1),                       # corner, crossing the left line first
+    ((1270000, 100000), (1270000, 0), 3, 1),              # side pocket
+    ((1270000 + 70000, 100000), (1270000 + 70000, 0), 3, 0),
+    ((600000, 600000), (700000, 650000), 0, 0),           # stays inside
+])
+def test_rail_sweep(board, start, end, rail, pocket):
+    set_chord(board, "a", start, end)
+    board.call("pool:physics/sweep/rails")
+    assert board.score("#rail", "pool.tmp") == rail
+    assert board.score("#pocket", "pool.tmp") == pocket
+    if rail:
+        axis, line = [(0, 28575), (0, 2540000 - 28575), (1, 28575), (1, 1270000 - 28575)][rail - 1]
+        f = board.score("#rf", "pool.tmp") / 10000
+        crossing = start[axis] + f * (end[axis] - start[axis])
+        assert abs(crossing - line) <= 1 + abs(end[axis] - start[axis]) / 10000
+
+
+def test_pocket_openings_match_the_reference_constants():
+    assert CORNER_OPENING * 1e6 == 90000 and SIDE_OPENING_HALF * 1e6 == 65000
