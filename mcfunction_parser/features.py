@@ -172,8 +172,8 @@ def feature_problem(feature: str, version: Version) -> str | None:
 def permission_warning(name: str) -> str | None:
     level = COMMANDS[name][2]
     if level > 2:
-        return (f"`{name}` needs permission level {level}; functions run at level 2 unless "
-                "function-permission-level is raised")
+        return (f"`{name}` needs permission level {level}: functions are compiled at level 2, so the "
+                "game won't load this function unless the server raises function-permission-level")
     return None
 
 # ----------------------------------------------------------------------------- game rules

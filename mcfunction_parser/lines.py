@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from .features import FEATURES
 
 _TRIM = "".join(chr(c) for c in range(0x21))
+MAX_COMMAND_LENGTH = 2_000_000  # CommandFunction.checkCommandLineLength
 _MACRO_VAR = re.compile(r"\$\(([^)]*)\)?")
 _MACRO_KEY = re.compile(r"[A-Za-z0-9_]+\Z")
 
@@ -46,10 +47,16 @@ def logical_lines(physical: list[str], version: tuple[int, int, int]):
                 yield joined
                 return
             text, segments, i = joined
-            if text and text[0] != "#":
+            if len(text) > MAX_COMMAND_LENGTH:
+                yield LineError(f"command too long: {len(text)} characters (at most {MAX_COMMAND_LENGTH})",
+                                segments[0][1], segments[0][2])
+            elif text and text[0] != "#":
                 yield text, segments[0][1], segments[0][2], segments
             continue
         if text[0] == "#":
+            continue
+        if len(text) > MAX_COMMAND_LENGTH:
+            yield LineError(f"command too long: {len(text)} characters (at most {MAX_COMMAND_LENGTH})", i, 1)
             continue
         yield text, i, (1 if raw[0] > " " else len(raw) - len(raw.lstrip(_TRIM)) + 1), ()
 

@@ -84,3 +84,8 @@ def test_leading_slash():
 def test_crlf_and_trailing_whitespace():
     fn, diags = parse("say a  \r\nkill @s\r\n")
     assert not diags and fn.commands[0].message == "a" and isinstance(fn.commands[1], ast.Kill)
+
+
+def test_overlong_command_is_an_error():
+    fn, diags = parse("say " + "x" * 2_000_000 + "\nsay ok\n")
+    assert "too long" in diags[0].message and [c.message for c in fn.commands] == ["ok"]
