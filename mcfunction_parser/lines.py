@@ -53,10 +53,10 @@ def logical_lines(physical: list[str], version: tuple[int, int, int]):
             elif text and text[0] != "#":
                 yield text, segments[0][1], segments[0][2], segments
             continue
-        if text[0] == "#":
-            continue
-        if len(text) > MAX_COMMAND_LENGTH:
+        if len(text) > MAX_COMMAND_LENGTH:  # checked before comments are skipped, as the game does
             yield LineError(f"command too long: {len(text)} characters (at most {MAX_COMMAND_LENGTH})", i, 1)
+            continue
+        if text[0] == "#":
             continue
         yield text, i, (1 if raw[0] > " " else len(raw) - len(raw.lstrip(_TRIM)) + 1), ()
 
