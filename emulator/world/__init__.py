@@ -5,6 +5,8 @@ reference interpreter). Modules:
 - ``errors``: ``CommandFailure`` and the game's messages.
 - ``nbt_ops``: NBT paths, ``data get/merge/modify/remove``, partial NBT matching.
 - ``storage``: command storage (``data ... storage``) with the game's accessor semantics.
+- ``data_commands``: ``data``/``execute store``/``if data`` on storage, entities and blocks
+  through the game's accessors, and the ``World`` bundle they need.
 - ``stores``: ``execute store ... TYPE SCALE`` casts and ``data get [SCALE]`` results.
 - ``mth``: the game's float math (sine table, atan2, wrapDegrees) in float32; ``atan_tables``
   holds the JVM's own tables behind ``Mth.atan2``.

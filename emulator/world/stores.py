@@ -7,8 +7,7 @@ Public functions
   then keep the low 8/16 bits; float rounds to float32; double is stored as is.
 - ``store(root, path, type_name, value, scale)``: write it; returns how many tags changed. A path
   error is swallowed as the game's store callback does, so nothing stored is just 0.
-- ``store_entity(entity, path, type_name, value, scale)``: the same into an entity through its
-  ``data`` accessor (NBT view, loaded back with the UUID kept); a player refuses silently.
+  (Into an entity or block through its accessor: :func:`emulator.world.data_commands.store_data`.)
 - ``data_get(root, path)``: ``data get PATH`` result: ``Mth.floor`` of a number, the size of a
   list/array/compound, the length of a string (in UTF-16 units, as Java counts).
 - ``data_get_scaled(root, path, scale)``: ``data get PATH SCALE``: ``Mth.floor(value * scale)``;
@@ -29,7 +28,6 @@ from emulator.semantics import (
     mth_floor,
 )
 from emulator.world import mth, nbt_ops
-from emulator.world.entities import Entity, modify_entity
 from emulator.world.errors import CommandFailure
 
 _CASTS = {
@@ -51,14 +49,6 @@ def store(root, path: ast.NbtPath, type_name: str, value: int, scale: float) -> 
     """Store into ``root`` at ``path``; failures are silent as in the game's store callback."""
     try:
         return nbt_ops.set_path(root, path, stored_tag(type_name, value, scale))
-    except CommandFailure:
-        return 0
-
-
-def store_entity(entity: Entity, path: ast.NbtPath, type_name: str, value: int, scale: float) -> int:
-    """``execute store ... entity``: every error (path, player data) is swallowed by the callback."""
-    try:
-        return modify_entity(entity, lambda nbt: nbt_ops.set_path(nbt, path, stored_tag(type_name, value, scale)))
     except CommandFailure:
         return 0
 

@@ -52,18 +52,22 @@ def test_store_writes_the_cast_tag_and_swallows_path_errors():
 
 
 def test_store_into_entities():
+    from emulator.world.data_commands import EntityAccessor, store_data
     from emulator.world.entities import EntityStore
+
+    def store_entity(entity, p, type_name, value, scale):
+        return store_data(EntityAccessor(entity), p, type_name, value, scale)
 
     store = EntityStore()
     marker = store.summon("minecraft:marker", (0.0, 0.0, 0.0))
-    assert stores.store_entity(marker, path("Pos[1]", "Pos", 1), "double", 5, 0.5) == 1
+    assert store_entity(marker, path("Pos[1]", "Pos", 1), "double", 5, 0.5) == 1
     assert marker.pos == (0.0, 2.5, 0.0)
-    assert stores.store_entity(marker, path("Rotation[0]", "Rotation", 0), "float", 725, 1.0) == 1
+    assert store_entity(marker, path("Rotation[0]", "Rotation", 0), "float", 725, 1.0) == 1
     assert marker.yaw == 5.0  # loading Rotation keeps yaw % 360
     # An int into a list of doubles is refused by ListTag.setTag: nothing stored.
-    assert stores.store_entity(marker, path("Pos[0]", "Pos", 0), "int", 7, 1.0) == 0
+    assert store_entity(marker, path("Pos[0]", "Pos", 0), "int", 7, 1.0) == 0
     player = store.add_player("Steve", (0.0, 0.0, 0.0))
-    assert stores.store_entity(player, path("Pos[1]", "Pos", 1), "double", 5, 1.0) == 0
+    assert store_entity(player, path("Pos[1]", "Pos", 1), "double", 5, 1.0) == 0
     assert player.pos == (0.0, 0.0, 0.0)
 
 
