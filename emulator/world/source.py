@@ -11,7 +11,9 @@ Methods (each returns a new Source or a position; the Source itself is immutable
 - ``rotation_of(vec2)``: a rotation argument resolved against this rotation.
 - ``facing_position(target)``: ``execute facing X Y Z`` (from the anchor position).
 - ``facing_entity(entity, anchor)``: ``execute facing entity E feet|eyes``.
-- ``with_position / with_rotation / with_entity / with_anchor``: ``positioned``, ``rotated``,
+- ``positioned(vec3)``: ``execute positioned X Y Z``: the resolved position, and the anchor goes
+  back to feet (``positioned as``, ``at`` and ``facing`` keep the anchor).
+- ``with_position / with_rotation / with_entity / with_anchor``: ``positioned as``, ``rotated``,
   ``as``, ``anchored``. ``at(entity)``: ``execute at`` (position and rotation of the entity).
 - ``aligned(axes)``: ``execute align xyz`` (``Vec3.align``: floor of the named axes).
 
@@ -70,6 +72,9 @@ class Source:
 
     def facing_entity(self, entity, anchor: str) -> "Source":
         return self.facing_position(entity.anchor(anchor))
+
+    def positioned(self, vec: ast.Vec3) -> "Source":
+        return replace(self, pos=self.position_of(vec), anchor="feet")
 
     def with_position(self, pos) -> "Source":
         return replace(self, pos=tuple(float(v) for v in pos))

@@ -424,3 +424,13 @@ def test_display_entities_save_their_render_fields():
     assert entity_nbt(d)["transformation"] == t
     modify_entity(d, lambda n: nbt_ops.set_path(n, path("start_interpolation", "start_interpolation"), Int(0)))
     assert "start_interpolation" not in entity_nbt(d)  # read, never saved
+
+
+def test_positioned_resets_the_anchor_to_feet():
+    # ExecuteCommand: positioned POS is withPosition(...).withAnchor(FEET); positioned as keeps it.
+    store = EntityStore()
+    steve = store.add_player("Steve", (0.0, 0.0, 0.0))
+    src = Source(entity=steve, anchor="eyes")
+    moved = src.positioned(vec(coord("local", 0), coord("local", 0), coord("local", 0)))
+    assert moved.pos == (0.0, float(F32(1.62)), 0.0) and moved.anchor == "feet"
+    assert src.with_position((1.0, 2.0, 3.0)).anchor == "eyes"
