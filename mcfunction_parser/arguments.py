@@ -225,8 +225,9 @@ _TIME = re.compile(r"([0-9.\-]*)([tsd]?)")
 _TIME_UNITS = {"": 1, "t": 1, "s": 20, "d": 24000}
 
 
-def duration(r: Reader, minimum: int = 0) -> int:
-    """A time argument (``10``, ``10t``, ``2.5s``, ``1d``) converted to ticks (rounded as the game does)."""
+def duration(r: Reader) -> int:
+    """A time argument (``10``, ``10t``, ``2.5s``, ``1d``) converted to ticks (rounded as the game
+    does); TimeArgument rejects a negative tick count."""
     start = r.pos
     m = _TIME.match(r.text, start)
     number, unit = m.group(1), m.group(2)
@@ -235,8 +236,8 @@ def duration(r: Reader, minimum: int = 0) -> int:
     if not FLOAT_TEXT.match(number):
         r.fail(f"invalid time '{number}'", start)
     ticks = round(float(number) * _TIME_UNITS[unit])  # TimeArgument uses Math.round
-    if ticks < minimum:
-        r.fail(f"time must be at least {minimum} tick{'s' if minimum != 1 else ''}, got {m.group()}", start)
+    if ticks < 0:
+        r.fail(f"time must be at least 0 ticks, got {m.group()}", start)
     r.pos = m.end()
     return ticks
 

@@ -57,7 +57,12 @@ def schedule(r: Reader, loc) -> ast.Command:
         return ast.ScheduleClear(loc, text[1:] if text.startswith("#") else text, text.startswith("#"))
     name, is_tag = resource_or_tag(r, "function")
     r.space("time")
-    ticks = duration(r, minimum=1)
+    time_pos = r.pos
+    ticks = duration(r)
+    if ticks == 0:
+        # ScheduleCommand parses 0 and fails when run ("Can't schedule for current tick")
+        r.warnings.append(("schedule time 0 fails every time it runs: the game can't schedule for the current tick",
+                           time_pos))
     mode = r.literal(("append", "replace"), "schedule mode") if r.optional_space() else "replace"
     r.finish()
     return ast.Schedule(loc, name, is_tag, ticks, mode)

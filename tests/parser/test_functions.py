@@ -2,7 +2,8 @@ import pytest
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte, String
-from parser_helpers import parse_err, parse_ok
+from mcfunction_parser.parse import parse_command
+from parser_helpers import LOC, parse_err, parse_ok
 
 
 def test_function_forms():
@@ -58,8 +59,12 @@ def test_schedule_modes_and_clear():
     assert isinstance(clear, ast.ScheduleClear) and clear.is_tag and clear.function == "ns:t"
 
 
-def test_schedule_zero_is_an_error():
+def test_schedule_zero_parses_with_a_warning():
+    # ScheduleCommand accepts the argument and throws ERROR_SAME_TICK when run (decompiled 1.21.x),
+    # so the function still loads; the command is kept and flagged
     text = "schedule function ns:f 0t"
-    d = parse_err(text)
-    assert "at least 1" in d.message and d.col == text.index("0t") + 1
+    cmd, diags = parse_command(text, LOC)
+    assert cmd.ticks == 0
+    assert [d.severity for d in diags] == ["warning"] and diags[0].col == text.index("0t") + 1
+    assert "at least 0" in parse_err("schedule function ns:f -1t").message
     assert "schedule mode" in parse_err("schedule function ns:f 1 later").message
