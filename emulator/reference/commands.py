@@ -65,7 +65,8 @@ def schedule_clear(env, cmd: ast.ScheduleClear, source: Source, where) -> int:
 def time(env, cmd: ast.Time, source: Source, where) -> int:
     if cmd.action == "query" and cmd.query == "gametime":
         return env.state.gametime % INT_MAX
-    raise unsupported(f"'time {cmd.action}'")
+    shown = cmd.action if cmd.value is None else f"{cmd.action} {cmd.value}"
+    raise unsupported(f"'time {shown}'")
 
 
 def not_modelled(env, cmd: ast.Command, source: Source, where) -> int:

@@ -40,7 +40,7 @@ def count(env, cond: ast.Condition, source: Source) -> int:
         return data.count_matching(env, cond)
     if isinstance(cond, ast.IfDimension):
         return int(source.context.dimension == cond.dimension)
-    raise unsupported(f"'execute {'unless' if cond.negated else 'if'} {_kind(cond)}'")
+    raise unsupported(f"'{type(cond).__name__}'")
 
 
 def passes(env, cond: ast.Condition, source: Source) -> bool:
@@ -71,6 +71,3 @@ def _score_compare(env, cond: ast.IfScore, source: Source) -> bool:
     # ExecuteCommand.checkScore: false when either score is unset
     return a is not None and b is not None and _COMPARE[cond.op](a, b)
 
-
-def _kind(cond: ast.Condition) -> str:
-    return type(cond).__name__.removeprefix("If").lower()

@@ -275,7 +275,7 @@ class Interpreter:
                 raise CommandFailure(f"Unknown function {name}", report=True)
             return [function]
         if name not in self.packs.tags:
-            raise CommandFailure(f"Unknown function tag #{name}", report=True)
+            raise CommandFailure(f"Unknown function #{name}", report=True)
         return [self.packs.functions[f] for f in self.packs.resolve_tag(name) if f in self.packs.functions]
 
     def require_function(self, name: str, is_tag: bool) -> None:

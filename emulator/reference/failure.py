@@ -23,4 +23,5 @@ def unknown_objective(name: str) -> CommandFailure:
 
 
 def unsupported(what: str) -> CommandFailure:
-    return CommandFailure(f"{what} is not supported by the reference backend", report=True)
+    """A command or stage the emulator cannot run yet (worded as the numba backend's host does)."""
+    return CommandFailure(f"{what} is not supported yet", report=True)

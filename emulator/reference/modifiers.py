@@ -49,7 +49,7 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
         return [source.with_context(pos=_world(source).aligned(sub.axes).pos)]
     if isinstance(sub, ast.ExIn):
         return [in_dimension(source, sub.dimension)]
-    raise unsupported(f"'execute {type(sub).__name__.removeprefix('Ex').lower()}'")
+    raise unsupported(f"'{type(sub).__name__}'")
 
 
 def store_score(env, sub: ast.StoreScore, source: Source) -> Source:

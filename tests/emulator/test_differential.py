@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import os
 
+import pytest
 from hypothesis import HealthCheck, given, note, settings
 
 from programs import programs, run_root, write_pack
@@ -55,3 +56,23 @@ def test_random_programs_agree_under_sanitizer(tmp_path_factory, program):
 @given(program=programs(modifiers=True))
 def test_random_programs_with_context_modifiers_agree(tmp_path_factory, program):
     _compare(tmp_path_factory, program, sanitize=False)
+
+
+# Runtime problems read the same on both backends: message and function traceback
+FAILING_LINES = [
+    "function t:missing", "function #t:missing", "function #t:empty", "function t:macro", "function t:macro {x:1}",
+    "scoreboard players operation #a o /= #z o", "scoreboard players set #a nope 1",
+    "execute if function t:missing run say x",
+    "schedule function t:missing 1t", "gamerule nope", "particle flame ~ ~ ~", "time set day",
+    "execute if block ~ ~ ~ stone run say x",
+]
+
+
+@pytest.mark.parametrize("line", FAILING_LINES)
+def test_runtime_diagnostics_agree(tmp_path, line):
+    functions = {"t:main": "scoreboard objectives add o dummy\nfunction t:f", "t:f": line, "t:macro": "$say $(y)"}
+    pack = write_pack(tmp_path / "pack", functions, {"t:empty": []})
+    reference, vm = run_root("python", pack, "t:main"), run_root("numba", pack, "t:main")
+    assert reference.diagnostics, "the reference reports the problem"
+    assert vm.diagnostics == reference.diagnostics
+    assert vm.cost == reference.cost
