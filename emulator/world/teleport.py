@@ -21,6 +21,7 @@ performTeleport, LookAtPosition/LookAtEntity) and world/entity/Entity.java (tele
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -79,8 +80,12 @@ def to_entity(destination) -> Destination:
 
 
 def apply(entity, destination: Destination) -> None:
+    """Move the entity; a non-finite rotation is discarded (``setYRot``/``setXRot`` refuse it)."""
     entity.pos = destination.pos
-    entity.yaw, entity.pitch = destination.yaw, destination.pitch
+    if math.isfinite(destination.yaw):
+        entity.yaw = destination.yaw
+    if math.isfinite(destination.pitch):
+        entity.pitch = destination.pitch
     vx, _, vz = entity.motion
     entity.motion = (vx, 0.0, vz)  # deltaMovement.multiply(1, 0, 1)
 

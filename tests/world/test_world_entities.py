@@ -434,3 +434,12 @@ def test_positioned_resets_the_anchor_to_feet():
     moved = src.positioned(vec(coord("local", 0), coord("local", 0), coord("local", 0)))
     assert moved.pos == (0.0, float(F32(1.62)), 0.0) and moved.anchor == "feet"
     assert src.with_position((1.0, 2.0, 3.0)).anchor == "eyes"
+
+
+def test_tp_discards_a_non_finite_rotation():
+    # A rotation argument of 1e39 is infinite as a float; wrapDegrees gives NaN and setYRot refuses it.
+    store = EntityStore()
+    e = store.summon("minecraft:marker", (0, 0, 0), yaw=30.0)
+    rot = ast.Vec2(coord("abs", 1e39), coord("abs", 10), LOC)
+    teleport.teleport(Source(), [e], vec(coord("abs", 1.0), coord("abs", 2.0), coord("abs", 3.0)), rotation_arg=rot)
+    assert e.yaw == F32(30.0) and e.pitch == F32(10.0) and e.pos == (1.0, 2.0, 3.0)
