@@ -67,8 +67,7 @@ class Compiler:
             self.loc = cmd.loc
             self.command(cmd)
         self.emit(vm.OP_FEND)
-        self.program.starts[idx] = start
-        self.program._arrays = None
+        self.program.set_start(idx, start)
         return idx
 
     def emit(self, op: int, *args: int) -> int:

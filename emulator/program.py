@@ -79,6 +79,10 @@ class Program:
             self._arrays = None
         return idx
 
+    def set_start(self, function_index: int, pc: int) -> None:
+        self.starts[function_index] = pc
+        self._arrays = None
+
     def intern_name(self, name: str) -> int:
         self.names.append(name)
         return len(self.names) - 1
