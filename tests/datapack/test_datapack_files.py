@@ -57,10 +57,18 @@ def test_pack_mcmeta_covers_every_1_21_release():
     assert pack["min_format"] == 48 and pack["max_format"] == 94
 
 
-@pytest.mark.parametrize("tag,member", [("load", "pool:load")])
+@pytest.mark.parametrize("tag,member", [("load", "pool:load"), ("tick", "pool:tick")])
 def test_function_tags(tag, member):
     tag_file = PACK / "data" / "minecraft" / "tags" / "function" / f"{tag}.json"
     assert json.loads(tag_file.read_text())["values"] == [member]
+
+
+OBJECTIVE_USES = [
+    re.compile(r"\b(?:set|add|remove|reset|get|enable|operation) \S+ (pool\.[a-z0-9_]+)"),
+    re.compile(r"\bscore \S+ (pool\.[a-z0-9_]+)"),
+    re.compile(r"(?:[-+*/%]?=|<|>|><) \S+ (pool\.[a-z0-9_]+)"),
+    re.compile(r"\"objective\":\"(pool\.[a-z0-9_]+)\""),
+]
 
 
 def test_load_creates_every_objective_used():
@@ -69,5 +77,9 @@ def test_load_creates_every_objective_used():
     used = set()
     for path in FUNCTIONS:
         commands = "\n".join(l for l in path.read_text().splitlines() if not l.startswith("#"))
-        used |= set(re.findall(r"(?<![=.])\b(pool\.[a-z0-9_]+)\b", commands))
+        for pattern in OBJECTIVE_USES:
+            used |= set(pattern.findall(commands))
+        for scores in re.findall(r"scores=\{([^}]*)\}", commands):
+            used |= {item.split("=")[0] for item in scores.split(",")}
+    assert "pool.x" in used and "pool.power" in used
     assert used - created == set()

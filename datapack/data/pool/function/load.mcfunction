@@ -12,6 +12,7 @@
 #   rolling speed   0.01 um/tick; rolling distance 0.01 um
 #   time in a tick  1/10000 tick
 #   angles          1/100 degree (centidegrees)
+# Ball states (pool.state): 0 at rest, 1 sliding, 2 rolling, 3 pocketed.
 
 # Per-ball state (on @e[tag=pool.ball])
 scoreboard objectives add pool.id dummy
@@ -36,9 +37,18 @@ scoreboard objectives add pool.dx dummy
 scoreboard objectives add pool.dz dummy
 scoreboard objectives add pool.spd dummy
 scoreboard objectives add pool.s dummy
-# end-of-tick position of the current sweep (um)
-scoreboard objectives add pool.ex dummy
-scoreboard objectives add pool.ez dummy
+# state saved at the start of a sub-step (the chord start), restored to rewind to an event
+scoreboard objectives add pool.bx dummy
+scoreboard objectives add pool.bz dummy
+scoreboard objectives add pool.bvx dummy
+scoreboard objectives add pool.bvz dummy
+scoreboard objectives add pool.bwx dummy
+scoreboard objectives add pool.bwz dummy
+scoreboard objectives add pool.bwy dummy
+scoreboard objectives add pool.btau dummy
+scoreboard objectives add pool.bs dummy
+scoreboard objectives add pool.bspd dummy
+scoreboard objectives add pool.bstate dummy
 
 # Temporaries, math library I/O, constants, game state
 scoreboard objectives add pool.tmp dummy
@@ -82,5 +92,9 @@ scoreboard players set $spin_decay pool.const 779
 scoreboard players set $e_cushion pool.const 8500
 scoreboard players set $mu_cushion pool.const 2000
 
-# Game state: $resting pool.game is 1 when no ball moves
+# events resolved per tick at most (each costs a rewind of every ball)
+scoreboard players set $max_events pool.const 8
+
+# Game state (public): $resting pool.game is 1 when no ball moves; $pocketed counts pocketed balls
+# and $last_pocketed holds the number of the last one; the table corner $origin.x/y/z is in mm.
 execute unless score $resting pool.game matches 0..1 run scoreboard players set $resting pool.game 1

@@ -1,0 +1,15 @@
+# pool:physics/find/pair — swept contact test of ball @s (b) with the ball tagged pool.self (a).
+# Reads: #a.* chord, @s pool.bx pool.bz pool.x pool.z (a ball at rest has bx = x).
+# Writes: #best #kind pool.tmp and the event tags when this contact is the earliest so far.
+scoreboard players operation #b.bx pool.tmp = @s pool.bx
+scoreboard players operation #b.bz pool.tmp = @s pool.bz
+scoreboard players operation #b.ex pool.tmp = @s pool.x
+scoreboard players operation #b.ez pool.tmp = @s pool.z
+function pool:physics/sweep/pair
+execute if score #f pool.tmp >= #best pool.tmp run return 0
+scoreboard players operation #best pool.tmp = #f pool.tmp
+scoreboard players set #kind pool.tmp 1
+tag @e[tag=pool.event] remove pool.event
+tag @e[tag=pool.event_b] remove pool.event_b
+tag @e[tag=pool.self] add pool.event
+tag @s add pool.event_b

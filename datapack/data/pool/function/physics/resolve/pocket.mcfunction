@@ -1,0 +1,9 @@
+# pool:physics/resolve/pocket — @s drops into a pocket: it leaves play and is reported.
+# Writes: @s pool.state (3) and motion scores; $pocketed $last_pocketed pool.game; hides @s.
+function pool:ball/roll/stop
+scoreboard players set @s pool.state 3
+scoreboard players set @s pool.wy 0
+scoreboard players add $pocketed pool.game 1
+scoreboard players operation $last_pocketed pool.game = @s pool.id
+tellraw @a [{"text":"Pool: ball "},{"score":{"name":"@s","objective":"pool.id"}},{"text":" is pocketed"}]
+data merge entity @s {view_range:0f}
