@@ -181,3 +181,32 @@ def test_double_to_long_saturates():
 @pytest.mark.parametrize("value, expected", [(2.5, 2), (-2.5, -3), (-0.0, 0), (math.nan, 0), (1e12, INT_MAX)])
 def test_mth_floor(value, expected):
     assert mth_floor(value) == expected
+
+
+# Doubles into ints through command storage. DataCommands.getNumeric: Mth.floor(value * scale);
+# ExecuteCommand.storeData: (int)(result * scale), JLS 5.1.3 (saturation, NaN -> 0).
+# 0 x Infinity is NaN (IEEE 754); a 400-digit scale parses to Infinity (Double.parseDouble).
+STORAGE_CASES = [
+    ("data_get_1e12", "data modify storage t:s v set value 1000000000000.0d\n"
+     "execute store result score #r o run data get storage t:s v", {"#r": INT_MAX}),
+    ("data_get_scaled", "data modify storage t:s v set value 1000000000000.0d\n"
+     "execute store result score #r o run data get storage t:s v 0.001", {"#r": 1_000_000_000}),
+    ("data_get_floors_negative", "data modify storage t:s v set value -2.5d\n"
+     "execute store result score #r o run data get storage t:s v", {"#r": -3}),
+    ("store_int_saturates", "execute store result storage t:s i int 1000000 run scoreboard players set #m o 5000\n"
+     "execute store result score #r o run data get storage t:s i", {"#r": INT_MAX}),
+    ("store_nan_reads_zero", "scoreboard players set #z o 0\n"
+     f"execute store result storage t:s n double {'9' * 400} run scoreboard players get #z o\n"
+     "execute store result score #r o run data get storage t:s n", {"#r": 0}),
+]
+
+
+@pytest.mark.parametrize("backend", [
+    "python",
+    pytest.param("numba", marks=pytest.mark.xfail(strict=True, reason="VM: data commands on storage not emulated yet")),
+])
+@pytest.mark.parametrize("case_id, body, expected", STORAGE_CASES, ids=[c[0] for c in STORAGE_CASES])
+def test_storage_edge_case(tmp_path, backend, case_id, body, expected):
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body})
+    scores = run_root(backend, pack, "t:main").scores["o"]
+    assert {holder: scores.get(holder) for holder in expected} == expected
