@@ -45,6 +45,7 @@ class NumbaBackend:
     def __init__(self) -> None:
         self.program: Program | None = None
         self.counting = True  # per-instruction counters; bench/bench_vm.py turns them off to time them
+        self.max_depth = MAX_DEPTH
 
     # ------------------------------------------------------------------ loading
     def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
@@ -258,11 +259,11 @@ class NumbaBackend:
 
     def _grow(self) -> bool:
         depth = self.frames.shape[0]
-        if depth >= MAX_DEPTH:
-            self.state.error(f"Command execution stopped due to command queue overflow (max {MAX_DEPTH})",
+        if depth >= self.max_depth:
+            self.state.error(f"Command execution stopped due to command queue overflow (max {self.max_depth})",
                              self.traceback(int(self.regs[vm.R_PC])))
             return False
-        frames = vm.new_frames(min(MAX_DEPTH, depth * 4))
+        frames = vm.new_frames(min(self.max_depth, depth * 4))
         frames[:depth] = self.frames
         self.frames = frames
         return True

@@ -137,3 +137,18 @@ def test_recursion_100000_deep(tmp_path):
     assert emu.score("#n", "o") == 0
     assert emu.score("#back", "o") == 100000  # every frame resumed after its callee
     assert emu.diagnostics == []
+
+
+def test_stack_overflow_stops_the_root_cleanly(tmp_path):
+    functions = {"t:main": SETUP + "gamerule maxCommandChainLength 2000000",
+                 "t:forever": "scoreboard players add #depth o 1\nfunction t:forever"}
+    emu = emulator_for(tmp_path, functions)
+    emu.call("t:main")
+    emu.backend.max_depth = 1000  # the game's cap is 10,000,000 queued entries; smaller to test
+    emu.call("t:forever")
+    assert emu.score("#depth", "o") == 1000  # 1000 activations fit; the 1001st call stops the root
+    [diag] = emu.diagnostics
+    assert diag.message == "Command execution stopped due to command queue overflow (max 1000)"
+    assert len(diag.frames) == 1000 and diag.frames[-1].loc.line == 2
+    emu.call("t:main")  # the next root runs normally
+    assert len(emu.diagnostics) == 1
