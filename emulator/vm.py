@@ -32,7 +32,6 @@ OP_REMOVE = 12  # a h, b o, c value
 OP_RESET = 13  # a h, b o
 OP_RESETALL = 14  # a h
 OP_GET = 15  # a h, b o
-OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
 OP_CHKOBJ = 22  # a o: a store stage naming objective o fails the command if o does not exist
@@ -59,6 +58,7 @@ OP_HOST = 50  # a: host op index. A final command run by Python (charged here, p
 OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
 OP_HOSTSTAGE = 52  # a: host op index. An execute stage run by Python: sets alive and R_CTX
 OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 
 # operations: opcode OP_OPER_BASE + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
@@ -75,8 +75,8 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT = 16, 17, 18, 19
-N_REGS = 20
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT = range(15, 19)
+N_REGS = 19
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA = range(9)
 F_WIDTH = 9
@@ -85,8 +85,6 @@ ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO = range(7)
 
 ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS, ERR_FORK_LIMIT = range(1, 7)
 
-INT_MIN = -2147483648
-INT_MAX = 2147483647
 OVF_WIDTH = 5  # pc, op kind, a, b, exact
 
 
@@ -106,8 +104,9 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
     outermost activation only (``active[f]`` counts f's frames on the stack).
-    On return ``regs[R_PC]`` is where to resume (for ST_HOST/ST_MACRO: the instruction after the
-    one that asked, once Python has set ``R_HAS/R_OK/R_VAL`` or ``R_CALLFN``).
+    On return ``regs[R_PC]`` is where to resume; for ST_HOST/ST_MACRO it is the asking instruction
+    and Python moves it past once it has set ``R_HAS/R_OK/R_VAL`` (or ``R_CALLFN``), for ST_CUT the
+    entry that was not run, for ST_GROW the call to retry.
     """
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
