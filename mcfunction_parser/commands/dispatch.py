@@ -13,7 +13,7 @@ REGISTRY: dict = {}
 
 @lru_cache(maxsize=64)
 def _table(version: tuple[int, int, int]) -> dict:
-    """The commands of ``version``: name -> (parser or None for generic commands, warning or None)."""
+    """The commands of ``version``: name -> (parser, or None for a generic command; warning or None)."""
     return {name: (REGISTRY.get(name), permission_warning(name))
             for name in COMMANDS if command_problem(name, version) is None}
 

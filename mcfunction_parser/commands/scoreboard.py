@@ -49,12 +49,7 @@ def _display_slot(r: Reader) -> str:
     r.fail(f"unknown display slot {show(word)}", start)
 
 
-def _objectives(r: Reader, loc) -> ast.Command:
-    action = r.keyword(_OBJECTIVE_ACTIONS, "objectives action")
-    return _OBJECTIVE_ACTIONS[action](r, loc)
-
-
-def _obj_add(r, loc):
+def _obj_add(r, loc, action):
     r.space("objective name")
     name = objective(r)
     r.space("criterion")
@@ -64,14 +59,14 @@ def _obj_add(r, loc):
     return ast.ObjectivesAdd(loc, name, criterion, display)
 
 
-def _obj_remove(r, loc):
+def _obj_remove(r, loc, action):
     r.space("objective name")
     name = objective(r)
     r.finish()
     return ast.ObjectivesRemove(loc, name)
 
 
-def _obj_modify(r, loc):
+def _obj_modify(r, loc, action):
     r.space("objective name")
     name = objective(r)
     r.space("property to modify")
@@ -94,7 +89,7 @@ def _obj_modify(r, loc):
     return ast.ObjectivesModify(loc, name, field, value)
 
 
-def _obj_setdisplay(r, loc):
+def _obj_setdisplay(r, loc, action):
     r.space("display slot")
     slot = _display_slot(r)
     name = objective(r) if r.optional_space() else None
@@ -102,7 +97,7 @@ def _obj_setdisplay(r, loc):
     return ast.ObjectivesSetdisplay(loc, slot, name)
 
 
-def _obj_list(r, loc):
+def _obj_list(r, loc, action):
     r.finish()
     return ast.ObjectivesList(loc)
 
@@ -110,11 +105,6 @@ def _obj_list(r, loc):
 _OBJECTIVE_ACTIONS = {
     "add": _obj_add, "remove": _obj_remove, "modify": _obj_modify, "setdisplay": _obj_setdisplay, "list": _obj_list,
 }
-
-
-def _players(r: Reader, loc) -> ast.Command:
-    action = r.keyword(_PLAYER_ACTIONS, "players action")
-    return _PLAYER_ACTIONS[action](r, loc, action)
 
 
 def _single_holder(r: Reader):
@@ -242,9 +232,21 @@ _PLAYER_ACTIONS = {
 }
 
 
+_ACTIONS = {"objectives": _OBJECTIVE_ACTIONS, "players": _PLAYER_ACTIONS}
+_BRANCH_ACTION = re.compile(r" (objectives|players) ([a-z]+)")
+
+
 def scoreboard(r: Reader, loc) -> ast.Command:
-    branch = r.keyword(("objectives", "players"), "scoreboard branch")
-    return (_objectives if branch == "objectives" else _players)(r, loc)
+    m = _BRANCH_ACTION.match(r.text, r.pos)
+    if m is not None:
+        actions = _ACTIONS[m.group(1)]
+        action = m.group(2)
+        if action in actions:
+            r.pos = m.end()
+            return actions[action](r, loc, action)
+    branch = r.keyword(_ACTIONS, "scoreboard branch")
+    action = r.keyword(_ACTIONS[branch], branch + " action")
+    return _ACTIONS[branch][action](r, loc, action)
 
 
 PARSERS = {"scoreboard": scoreboard}
