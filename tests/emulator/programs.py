@@ -2,8 +2,10 @@
 
 ``write_pack`` turns ``{function id: text}`` into a 1.21 pack folder. ``programs()`` draws a
 :class:`Program`: several functions in namespace ``t`` that set, add, operate on, compare, store,
-return and call each other (``function``, ``execute if|unless function``, ``return run``), with
-calls only to later functions plus one counted self-recursive loop, so every program ends.
+return, say and call each other (``function``, ``execute if|unless function``, ``return run``),
+plus leaf functions reached through the tag ``#t:leaves``, a macro function ``t:mac`` and one
+counted self-recursive loop. Calls only go to later functions, leaves, the macro or the loop, so
+every program ends.
 """
 from __future__ import annotations
 
@@ -44,10 +46,12 @@ def write_pack(root: Path, functions: dict[str, str], tags: dict[str, list[str]]
 @dataclass(frozen=True)
 class Program:
     functions: dict[str, str]
+    tags: dict[str, list[str]]
     entry: str = "t:f0"
 
     def text(self) -> str:
-        return "\n".join(f"# {fid}\n{body}" for fid, body in self.functions.items())
+        tags = "".join(f"# tag {tid}: {values}\n" for tid, values in self.tags.items())
+        return tags + "\n".join(f"# {fid}\n{body}" for fid, body in self.functions.items())
 
 
 holders = st.sampled_from(HOLDERS)
@@ -110,14 +114,22 @@ def stage_chains(draw, callees: list[str], modifiers: bool) -> str:
 
 
 @st.composite
+def macro_calls(draw) -> str:
+    holder = draw(holders)
+    return f'function t:mac {{h:"{holder}", v:{draw(ints)}}}'
+
+
+@st.composite
 def commands(draw, callees: list[str], modifiers: bool = False) -> str:
-    """One line of a function that may call ``callees``."""
+    """One line of a function that may call ``callees`` (ids or ``#tags``) and the macro."""
     simple = score_commands()
-    call = st.sampled_from(callees).map(lambda f: f"function {f}") if callees else simple
+    call = st.one_of(st.sampled_from(callees).map(lambda f: f"function {f}"), macro_calls()) if callees else simple
     inner = st.one_of(simple, simple, call)
-    kind = draw(st.sampled_from(("score", "score", "score", "call", "if", "store", "condition", "return")))
+    kind = draw(st.sampled_from(("score", "score", "score", "say", "call", "if", "store", "condition", "return")))
     if kind == "score":
         return draw(simple)
+    if kind == "say":
+        return f"say {draw(st.sampled_from(('a', 'b', 'c')))}"
     if kind == "call":
         return draw(call)
     if kind == "if":
@@ -143,8 +155,15 @@ def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool =
     count = draw(st.integers(1, max_functions))
     names = [f"t:f{i}" for i in range(count)]
     functions: dict[str, str] = {}
+    for leaf in ("t:leaf0", "t:leaf1"):
+        body = draw(st.lists(score_commands(), min_size=1, max_size=3))
+        ending = draw(st.sampled_from(("", "return 1", "return -4", "return fail", "return 0")))
+        functions[leaf] = "\n".join(body + ([ending] if ending else []))
+    tags = {"t:leaves": draw(st.lists(st.sampled_from(("t:leaf0", "t:leaf1")), min_size=1, max_size=3))}
+    functions["t:mac"] = "$scoreboard players set $(h) o $(v)\n" + draw(
+        st.sampled_from(("$return $(v)", "$scoreboard players operation #a o += $(h) o", "return run say mac")))
     for i, name in enumerate(names):
-        callees = names[i + 1:] + ["t:loop"]
+        callees = names[i + 1:] + ["t:loop", "t:leaf0", "#t:leaves"]
         lines = draw(st.lists(commands(callees, modifiers), min_size=1, max_size=max_lines))
         if i == 0:
             lines = ["scoreboard objectives add o dummy", "scoreboard objectives add p dummy",
@@ -154,7 +173,7 @@ def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool =
     functions["t:loop"] = "\n".join(
         ["scoreboard players remove #n p 1"] + loop_body + ["execute if score #n p matches 1.. run function t:loop"]
     )
-    return Program(functions)
+    return Program(functions, tags)
 
 
 # ----------------------------------------------------------------------------- running

@@ -28,9 +28,10 @@ PROGRAMS = programs()
 
 def _compare(tmp_path_factory, program, sanitize: bool) -> None:
     note(program.text())
-    pack = write_pack(tmp_path_factory.mktemp("pack"), program.functions)
+    pack = write_pack(tmp_path_factory.mktemp("pack"), program.functions, program.tags)
     reference = run_root("python", pack, program.entry, sanitize=sanitize)
     vm = run_root("numba", pack, program.entry, sanitize=sanitize)
+    assert not [m for m, _ in reference.diagnostics if m.startswith("internal error")]
     assert vm.scores == reference.scores
     assert vm.result == reference.result
     assert (vm.cost, vm.cut) == (reference.cost, reference.cut)
