@@ -204,6 +204,18 @@ def score_holder(r: Reader):
     return holder_from_word(word, r.loc_at(start))
 
 
+# A score holder that is one plain word or an option-less selector, for one-regex fast paths.
+PLAIN_HOLDER = r"(@[a-z]|[^ @]+)"
+PLAIN_OBJECTIVE = r"([0-9A-Za-z_\-.+]+)"
+
+
+def plain_holder(r: Reader, word: str, start: int):
+    """The holder matched by PLAIN_HOLDER at offset ``start``."""
+    if word[0] == "@":
+        return selectors.bare_selector(r, word[1], start)
+    return holder_from_word(word, r.loc_at(start))
+
+
 def holder_from_word(word: str, loc: Loc):
     """A score holder written as a word: ``*`` or a name (UUIDs recognised)."""
     if word == "*":

@@ -8,8 +8,9 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import (float_range, int_range, json_span, objective, resource_location, resource_or_tag,
-                         score_holder, vec2, vec3)
+from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, float_range, int_range, json_span, objective,
+                         objective_too_long, plain_holder, resource_location, resource_or_tag, score_holder, vec2,
+                         vec3)
 from ..nbt_path import nbt_path
 from ..reader import Reader, show
 from ..selectors import target
@@ -293,12 +294,30 @@ def _what_follows(name: str) -> str:
     return "command" if name == "run" else name + " arguments"
 
 
+# ``if|unless score HOLDER OBJ matches RANGE``, the commonest subcommand, read by one regex when the
+# holder is plain (see scoreboard's fast paths); the range goes through int_range as usual.
+_FAST_SCORE_MATCHES = re.compile(rf" (if|unless) score {PLAIN_HOLDER} {PLAIN_OBJECTIVE} matches (?=[^ ])")
+
+
+def _fast_score_matches(r: Reader, sub_loc):
+    m = _FAST_SCORE_MATCHES.match(r.text, r.pos)
+    if m is None or objective_too_long(m.group(3), r.version):
+        return None
+    holder = plain_holder(r, m.group(2), m.start(2))
+    r.pos = m.end()
+    return ast.IfScoreMatches(sub_loc, m.group(1) == "unless", holder, m.group(3), int_range(r))
+
+
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
     while True:
         if r.pos == r.end and subcommands and isinstance(subcommands[-1], ast.Condition):
             return ast.Execute(loc, tuple(subcommands), None)
         sub_loc = r.loc_at(r.pos + 1)
+        fast = _fast_score_matches(r, sub_loc)
+        if fast is not None:
+            subcommands.append(fast)
+            continue
         name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
         if name == "run":
             return ast.Execute(loc, tuple(subcommands), command(r))

@@ -4,10 +4,11 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import holder_from_word, json_span, objective, objective_too_long, score_holder
+from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, json_span, objective, objective_too_long, plain_holder,
+                         score_holder)
 from ..features import version_text
 from ..reader import INT_MAX, INT_MIN, Reader, show
-from ..selectors import bare_selector, is_single
+from ..selectors import is_single
 
 _SIMPLE_CRITERIA = frozenset((
     "dummy", "trigger", "deathCount", "playerKillCount", "totalKillCount", "health", "xp", "level",
@@ -118,18 +119,12 @@ def _single_holder(r: Reader):
 # Fast paths for the two commands that dominate real packs, when every holder is a plain word or
 # an option-less selector: one regex, then the same helpers the general path uses. Anything else
 # (selectors with options, out-of-range numbers, errors) takes the general path.
-_HOLDER = r"(@[a-z]|[^ @]+)"
-_OBJECTIVE = r"([0-9A-Za-z_\-.+]+)"
-_FAST_OPERATION = re.compile(rf" {_HOLDER} {_OBJECTIVE} ([^ ]+) {_HOLDER} {_OBJECTIVE}\Z")
-_FAST_SET = re.compile(rf" {_HOLDER} {_OBJECTIVE} (-?[0-9]{{1,10}})\Z")
+_FAST_OPERATION = re.compile(rf" {PLAIN_HOLDER} {PLAIN_OBJECTIVE} ([^ ]+) {PLAIN_HOLDER} {PLAIN_OBJECTIVE}\Z")
+_FAST_SET = re.compile(rf" {PLAIN_HOLDER} {PLAIN_OBJECTIVE} (-?[0-9]{{1,10}})\Z")
 
 
 def _fast_holder(r: Reader, m, group: int):
-    word = m.group(group)
-    start = m.start(group)
-    if word[0] == "@":
-        return bare_selector(r, word[1], start)
-    return holder_from_word(word, r.loc_at(start))
+    return plain_holder(r, m.group(group), m.start(group))
 
 
 def _fast_operation(r: Reader, loc):

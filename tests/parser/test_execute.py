@@ -1,7 +1,11 @@
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from mcfunction_parser import ast
-from parser_helpers import parse_err, parse_ok
+from mcfunction_parser.commands import execute as execute_module
+from mcfunction_parser.parse import parse_command
+from parser_helpers import LOC, parse_err, parse_ok
 
 
 def test_chain_with_run():
@@ -127,3 +131,25 @@ def test_local_coordinates_all_or_none():
     assert parse_ok("execute positioned ^ ^1 ^-2 run say x").subcommands[0].pos.is_local
     d = parse_err("execute positioned ^ ~ ^ run say x")
     assert "mix" in d.message and d.col == len("execute positioned ") + 1
+
+
+_HOLDERS = st.sampled_from(["@s", "@x", "@n", "*", "#t", "$v", "a@b", "@e[limit=1]", "0-0-0-0-1", ""])
+_OBJECTIVES = st.sampled_from(["obj", "o.b-j+", "abcdefghijklmnopq", "", "Ob"])
+_RANGES = st.sampled_from(["1", "..-1", "1..", "5..1", "..", "1.5", "x", "", "2147483648", "-0..0"])
+_TAILS = st.sampled_from(["", " run say x", " if entity @s", "x", " ", " run"])
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.sampled_from(["if", "unless"]), _HOLDERS, _OBJECTIVES, _RANGES, _TAILS,
+       st.sampled_from([(1, 17, 1), (1, 20, 6), (1, 21, 0)]))
+def test_fast_score_matches_path_matches_the_general_path(kind, holder, objective, rng, tail, version):
+    text = f"execute {kind} score {holder} {objective} matches {rng}{tail}"
+    fast = parse_command(text, LOC, version)
+    original = execute_module._fast_score_matches
+    execute_module._fast_score_matches = lambda *args: None
+    try:
+        general = parse_command(text, LOC, version)
+    finally:
+        execute_module._fast_score_matches = original
+    assert fast[0] == general[0]
+    assert [(d.col, d.message) for d in fast[1]] == [(d.col, d.message) for d in general[1]]
