@@ -23,6 +23,8 @@ Public functions
 - ``data_merge(root, patch)``: ``data merge`` in place (returns 1) or fails "Nothing changed".
 - ``merge_compounds(target, patch)``: ``CompoundTag.merge`` (recursive into compounds) in place.
 - ``string_source(values, start=None, end=None)``: the ``string`` source of ``data modify``.
+- ``list_rules(version)``: a context manager selecting the list rule of a game version: one tag
+  type per list before 1.21.5, mixed types allowed from 1.21.5 (default: the older rule).
 - ``numeric_value(tag)``: ``NumericTag.getAsDouble``; ``narrow(tag, Byte|Short|Int|Long)``:
   ``getAsByte/Short/Int/Long``; ``is_numeric(tag)``.
 
@@ -34,6 +36,8 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
+from contextlib import contextmanager
+from contextvars import ContextVar
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import (
@@ -201,9 +205,25 @@ def _elements(collection) -> list:
     return [_element_tag(collection, i) for i in range(len(collection))]
 
 
+# Up to 1.21.4 a list holds one tag type; from 1.21.5 a list may mix types. Operations read the
+# rule of the pack being run from this context variable (see ``list_rules``).
+_MIXED_LISTS: ContextVar[bool] = ContextVar("mixed_lists", default=False)
+MIXED_LISTS_VERSION = (1, 21, 5)
+
+
+@contextmanager
+def list_rules(version: tuple[int, int, int]):
+    """Run NBT operations with the list rule of ``version`` (mixed-type lists from 1.21.5)."""
+    token = _MIXED_LISTS.set(tuple(version) >= MIXED_LISTS_VERSION)
+    try:
+        yield
+    finally:
+        _MIXED_LISTS.reset(token)
+
+
 def _list_accepts(lst: List, tag) -> bool:
-    """``ListTag.updateType``: a list holds one tag type, fixed by its first element."""
-    return not lst or type(lst[0]) is type(tag)
+    """``ListTag.updateType`` (before 1.21.5): a list holds one tag type, fixed by its first element."""
+    return _MIXED_LISTS.get() or not lst or type(lst[0]) is type(tag)
 
 
 def _add_tag(collection, index: int, tag) -> bool:

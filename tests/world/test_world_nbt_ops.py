@@ -294,3 +294,15 @@ def test_insert_matches_python_list_insert(initial, values, index):
         return
     assert nbt_ops.insert(root, path("l", "l"), index, values) == 1
     assert root["l"] == initial[:position] + values + initial[position:]
+
+
+def test_list_rules_by_version():
+    # ListTag up to 1.21.4 refuses a second tag type; 1.21.5 lists may mix types.
+    root = C(l=List([Int(1)]))
+    with nbt_ops.list_rules((1, 21, 4)):
+        with pytest.raises(CommandFailure, match="Nothing changed"):
+            nbt_ops.modify(root, path("l", "l"), "append", [String("a")])
+    with nbt_ops.list_rules((1, 21, 5)):
+        assert nbt_ops.modify(root, path("l", "l"), "append", [String("a")]) == 1
+        assert nbt_ops.set_path(root, path("l[0]", "l", 0), Byte(2)) == 1
+    assert root["l"] == [2, "a"] and type(root["l"][0]) is Byte
