@@ -67,6 +67,7 @@ class NumbaBackend:
         self.active = np.zeros(0, dtype=np.int64)
         self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
         self.context_ids: dict[tuple, int] = {}
+        self.forks: dict[int, list[tuple[int, list[int]]]] = {}  # depth -> [(resume pc, contexts left)]
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
@@ -119,6 +120,8 @@ class NumbaBackend:
                 self._host_guarded(int(r[vm.R_PC]))
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
+            elif status == vm.ST_NEXTCTX:
+                self._next_context()
             elif status == vm.ST_ERROR:
                 self._runtime_error()
             elif status == vm.ST_FLUSH:
@@ -184,7 +187,7 @@ class NumbaBackend:
         return index
 
     def _stage(self, node, ctx: Context) -> None:
-        """An execute stage: the VM runs a chain for one context, so a stage may leave 0 or 1."""
+        """An execute stage run by the host: no context left, one, or a fork."""
         r = self.regs
         made = self.host.run_stage(node, ctx)
         if made is None:  # the command fails here: skip to the chain's end
@@ -201,10 +204,36 @@ class NumbaBackend:
             if made[0] is not ctx:
                 r[vm.R_CTX] = self._context_index(made[0])
         else:
-            self._report_here(f"execute forked into {len(made)} contexts: the VM runs one context per "
-                              "command line (not supported yet)", "error")
-            r[vm.R_ALIVE] = 0
-            r[vm.R_PC] = r[vm.R_ABORT]
+            self._fork([self._context_index(c) for c in made])
+
+    def _fork(self, contexts: list[int]) -> None:
+        """Run the rest of the chain for ``contexts[0]`` now and keep the others for its ENDCMD.
+        A fork inside a forked chain stacks on top (the game's context order: each outer context's
+        inner contexts in turn). Each frame depth has its own stack."""
+        r = self.regs
+        depth = int(r[vm.R_DEPTH])
+        entry = (int(r[vm.R_PC]), contexts[1:])
+        if r[vm.R_LOOP]:
+            self.forks[depth].append(entry)
+        else:  # a new command: whatever an earlier function left at this depth is stale
+            self.forks[depth] = [entry]
+            r[vm.R_LOOP] = 1
+        r[vm.R_CTX] = contexts[0]
+
+    def _next_context(self) -> None:
+        """At a forked chain's ENDCMD: re-enter it for the next context, or end the command."""
+        r = self.regs
+        stack = self.forks[int(r[vm.R_DEPTH])]
+        while stack and not stack[-1][1]:
+            stack.pop()
+        r[vm.R_ALIVE] = 1
+        if not stack:
+            r[vm.R_LOOP] = 0
+            r[vm.R_PC] += 1
+            return
+        resume, remaining = stack[-1]
+        r[vm.R_CTX] = remaining.pop(0)
+        r[vm.R_PC] = resume
 
     def _macro(self, pc: int) -> None:
         call = self.program.macro_calls[self.program.rows[pc][1]]

@@ -12,7 +12,12 @@ instantiation, a full frame stack, a runtime error, a full overflow buffer) and 
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
 scoreboard ``values``/``present``/``alive``, the per-instruction ``counts`` and the sanitizer's
 ``ovf`` buffer. Registers that matter across a call (``alive``, the tag accumulator, the command's
-abort target) are saved in the frame and restored on return.
+abort target, the context, the fork loop flag) are saved in the frame and restored on return.
+
+Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
+table). When a host stage makes several, Python sets ``R_LOOP`` and keeps the others; the chain's
+``ENDCMD`` then returns ST_NEXTCTX and Python re-enters the chain after that stage with the next
+context. Stage charges are all taken by ``CMD``, so a re-entered chain is not charged again.
 """
 from __future__ import annotations
 
@@ -75,13 +80,13 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT = range(15, 19)
-N_REGS = 19
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP = range(15, 20)
+N_REGS = 20
 
-F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA = range(9)
-F_WIDTH = 9
+F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP = range(10)
+F_WIDTH = 10
 
-ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO = range(7)
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX = range(8)
 
 ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS, ERR_FORK_LIMIT = range(1, 7)
 
@@ -119,6 +124,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     acc_sum = regs[R_ACC_SUM]
     abort = regs[R_ABORT]
     ctx = regs[R_CTX]
+    loop = regs[R_LOOP]
     sanitize = regs[R_SANITIZE] != 0
     counting = regs[R_COUNTING] != 0  # off only to measure the counters' cost
     forklimit = regs[R_FORKLIMIT]
@@ -378,6 +384,9 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 break
             pc += 1
         elif op == OP_ENDCMD:
+            if loop:  # a stage forked: Python runs the chain's rest for the next context
+                status = ST_NEXTCTX
+                break
             alive = 1
             pc += 1
         elif op == OP_CALL or op == OP_CALLREG:
@@ -403,9 +412,11 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             frames[depth, F_CTX] = ctx
             frames[depth, F_CALLPC] = pc
             frames[depth, F_QUOTA] = quota
+            frames[depth, F_LOOP] = loop
             active[fn] += 1
             depth += 1
             has = 0
+            loop = 0
             pc = func_start[fn]
         elif op >= OP_FEND and op <= OP_RETIFHAS:
             if op == OP_FEND or op == OP_RETNONE:
@@ -444,6 +455,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             acc_sum = frames[depth, F_ACC_SUM]
             abort = frames[depth, F_ABORT]
             ctx = frames[depth, F_CTX]
+            loop = frames[depth, F_LOOP]
         elif op == OP_TAGBEGIN:
             acc_any = 0
             acc_sum = 0
@@ -560,6 +572,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     regs[R_ACC_SUM] = acc_sum
     regs[R_ABORT] = abort
     regs[R_CTX] = ctx
+    regs[R_LOOP] = loop
     regs[R_NOVF] = novf
     if status == ST_ERROR:
         regs[R_ERR] = err

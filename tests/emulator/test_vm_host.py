@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import pytest
 
+from emulator.state import Context
 from mcfunction_parser.nbt import Int
 from vm_helpers import run_main
 
@@ -55,3 +56,43 @@ def test_sanitizer_sees_host_arithmetic(tmp_path, backend):
     assert emu.score("#a", "o") == -2147483648
     assert [(o.function, o.loc.line, o.op, o.a, o.b, o.exact) for o in emu.overflows] == [
         ("t:main", 4, "add", 2147483647, 1, 2147483648)]
+
+
+def _forking_positioned(emu, n: int) -> None:
+    """Make ``positioned`` fork into ``n`` contexts, as ``as @e`` will once entities exist."""
+    stage = emu.backend.host.stage
+
+    def fork(st, ctx):
+        if type(st).__name__ == "ExPositioned":
+            return [Context(pos=(float(i), 0.0, 0.0)) for i in range(n)]
+        return stage(st, ctx)
+
+    emu.backend.host.stage = fork
+
+
+@pytest.mark.parametrize("body, cost, plain", [
+    ("execute positioned 0 0 0 run function t:plain", 1 + 1 + 3 * (1 + 1), 3),
+    ("execute positioned 0 0 0 positioned 0 0 0 run function t:plain", 1 + 2 + 9 * (1 + 1), 9),
+    ("execute positioned 0 0 0 if score #one o matches 1 run scoreboard players add #plain o 1", 1 + 2 + 3, 3),
+    ("execute positioned 0 0 0 unless score #one o matches 1 run scoreboard players add #plain o 1", 1 + 2, None),
+])
+def test_forked_chains_run_per_context(tmp_path, backend, body, cost, plain):
+    if backend == "python":
+        pytest.skip("the fork is simulated by patching the VM's host")
+    emu, _ = run_main(tmp_path, "scoreboard players set #one o 1", {**HELPERS, "t:f": body}, backend=backend)
+    _forking_positioned(emu, 3)
+    result = emu.runtime.call("t:f")
+    # stages are charged once; each context runs the rest (a call and its add, or the add)
+    assert (result.cost, emu.score("#plain", "o")) == (cost, plain)
+    assert emu.diagnostics == []
+
+
+def test_return_in_a_forked_chain_ends_the_function(tmp_path, backend):
+    if backend == "python":
+        pytest.skip("the fork is simulated by patching the VM's host")
+    emu, _ = run_main(tmp_path, "", {**HELPERS, "t:f": "execute positioned 0 0 0 run function t:plain\n"
+                                                       "execute positioned 0 0 0 run return 7\nsay never"},
+                      backend=backend)
+    _forking_positioned(emu, 2)
+    assert emu.call("t:f") == 7
+    assert emu.score("#plain", "o") == 2 and emu.log == []
