@@ -1,6 +1,7 @@
-# pool:physics/resolve/balls — @s (a) meets the ball tagged pool.event_b (b): collide, then both
+# pool:physics/resolve/balls — @s (a) meets the ball tagged pool.event_b (b): touch, collide, then both
 # start new motion phases. Reads/writes: both balls' scores; #b.* pool.tmp.
 execute as @e[tag=pool.event_b,limit=1] run function pool:physics/resolve/load_b
+function pool:physics/resolve/touch
 function pool:ball/collide/resolve
 function pool:ball/phase/start
 execute as @e[tag=pool.event_b,limit=1] run function pool:physics/resolve/store_b

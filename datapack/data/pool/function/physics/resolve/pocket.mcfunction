@@ -1,6 +1,8 @@
 # pool:physics/resolve/pocket — @s drops into a pocket: it leaves play and is reported.
-# Writes: @s pool.state (3) and motion scores; $pocketed $last_pocketed pool.game; hides @s.
+# Writes: @s pool.state (3), motion scores and tag pool.moving; $pocketed $last_pocketed pool.game;
+# hides @s.
 function pool:ball/roll/stop
+tag @s remove pool.moving
 scoreboard players set @s pool.state 3
 scoreboard players set @s pool.wy 0
 scoreboard players add $pocketed pool.game 1
