@@ -10,14 +10,17 @@ Public API
   Properties: ``uuid_string`` (Java ``UUID.toString``), ``score_holder`` (player name or UUID
   string, what the scoreboard uses), ``is_player``, ``eye_height``, ``bounding_box`` (min/max
   corners), ``display_name`` (what ``name=`` compares), ``anchor(anchor)`` (feet or eyes position).
-- ``EntityStore(seed)``: entities in creation order; ``summon(type, pos, nbt=None, yaw=0, pitch=0)``,
+- ``EntityStore(seed)``: entities in creation order; ``summon(type, pos, nbt=None, yaw=0, pitch=0)``
+  (fails for players, outside the spawnable bounds, or on a duplicate UUID),
   ``add_player(name, pos, ...)``, ``kill(entity)``, ``by_uuid(uuid)``, ``by_holder(name)``,
   ``living()``, ``players()``, ``rng`` (a seeded ``random.Random`` for UUIDs and ``sort=random``).
+- ``in_spawnable_bounds(pos)``: ``Level.isInSpawnableBounds`` (summon and tp refuse positions outside).
 - ``add_tag(entity, name)`` / ``remove_tag(entity, name)``: the ``tag`` command's per-entity step
   (False when nothing changed; an entity holds at most 1024 tags).
 - ``entity_nbt(entity)``: the compound ``data get entity`` shows and ``nbt=`` matches against.
 - ``load_nbt(entity, compound)``: ``Entity.load`` (Pos clamped, Motion over 10 dropped, Rotation % 360,
-  Tags, CustomName, the rest kept as is). ``modify_entity(entity, change)``: the ``data`` entity
+  Tags and CustomName only when present, the common fields read with typed getters, display render
+  fields as ``Display`` reads them, the rest kept as is). ``modify_entity(entity, change)``: the ``data`` entity
   accessor: ``change`` edits a fresh NBT view, which is loaded back with the UUID kept; players fail
   "Unable to modify player data".
 
