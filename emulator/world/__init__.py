@@ -17,6 +17,7 @@ reference interpreter). Modules:
 - ``selectors``: ``@s @e @a @p @r @n`` with their arguments.
 - ``text``: numbers and tags as Java prints them (``Double.toString``, ``Tag.getAsString``).
 - ``teleport``: ``tp`` destinations for every form.
-- ``commands``: ``tp`` and ``summon`` from their AST nodes, and entity argument resolution.
+- ``commands``: ``tp``, ``summon``, ``kill`` and ``tag`` from their AST nodes, and entity
+  argument resolution.
 - ``blocks``: a block map for ``setblock``/``fill``/``execute if block(s)``.
 """

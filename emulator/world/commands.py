@@ -7,6 +7,10 @@
 - ``teleport_command(cmd, store, source, **options)``: every ``tp`` form; returns the count.
 - ``summon_command(cmd, store, source)``: ``summon TYPE [POS] [NBT]`` at the execution position by
   default; returns the new entity.
+- ``kill_command(cmd, store, source, **options)``: ``kill [TARGETS]`` (the executor by default);
+  entities leave the store, players stay (they respawn); returns the count.
+- ``tag_command(cmd, store, source, **options)``: ``tag TARGETS add|remove NAME`` (the number of
+  entities changed; none fails with the game's message) and ``tag TARGETS list`` (the tag count).
 ``options`` are the selector options (``scores``, ``type_tags``) of :func:`selectors.select`.
 
 Source: decompiled 1.21 commands/arguments/EntityArgument.java, server/commands/TeleportCommand.java,
@@ -16,7 +20,7 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 from emulator.world import teleport
-from emulator.world.entities import Entity, EntityStore
+from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
 from emulator.world.errors import CommandFailure
 from emulator.world.selectors import select
 from emulator.world.source import Source
@@ -76,3 +80,27 @@ def teleport_command(cmd: ast.Teleport, store: EntityStore, source: Source, **op
 def summon_command(cmd: ast.Summon, store: EntityStore, source: Source) -> Entity:
     pos = source.pos if cmd.pos is None else source.position_of(cmd.pos)
     return store.summon(cmd.entity_type, pos, cmd.nbt)
+
+
+def kill_command(cmd: ast.Kill, store: EntityStore, source: Source, **options) -> int:
+    if cmd.targets is None:
+        if source.entity is None:
+            raise CommandFailure("permissions.requires.entity")
+        targets = [source.entity]
+    else:
+        targets = resolve_entities(cmd.targets, store, source, **options)
+    for entity in targets:
+        if not entity.is_player and entity.alive:
+            store.kill(entity)
+    return len(targets)
+
+
+def tag_command(cmd: ast.TagCommand, store: EntityStore, source: Source, **options) -> int:
+    targets = resolve_entities(cmd.targets, store, source, **options)
+    if cmd.action == "list":
+        return len({tag for entity in targets for tag in entity.tags})
+    change = add_tag if cmd.action == "add" else remove_tag
+    changed = sum(change(entity, cmd.name) for entity in targets)
+    if changed == 0:
+        raise CommandFailure("commands.tag.add.failed" if cmd.action == "add" else "commands.tag.remove.failed")
+    return changed

@@ -24,6 +24,8 @@ MESSAGES = {
     "commands.data.entity.invalid": "Unable to modify player data",
     "commands.teleport.invalidPosition": "Invalid position for teleport",
     "commands.summon.invalidPosition": "Invalid position for summon",
+    "commands.tag.add.failed": "Target either already has the tag or has too many tags",
+    "commands.tag.remove.failed": "Target does not have this tag",
     "commands.summon.failed.uuid": "Unable to summon entity due to duplicate UUIDs",
     "entity.not_summonable": "Can't summon entity of type {0}",
     "argument.entity.notfound.entity": "No entity was found",

@@ -61,3 +61,24 @@ def test_entity_arguments_fail_like_the_game():
     assert resolve_entity(parsed("tp Steve ~ ~ ~").targets, store, Source()) is steve
     uuid_text = store.entities[0].uuid_string
     assert resolve_entity(parsed(f"tp {uuid_text} ~ ~ ~").targets, store, Source()) is store.entities[0]
+
+
+def test_kill_and_tag_commands():
+    from emulator.world.commands import kill_command, tag_command
+
+    store = EntityStore()
+    a = store.summon("minecraft:marker", (0, 0, 0))
+    b = store.summon("minecraft:marker", (0, 0, 0))
+    steve = store.add_player("Steve", (0, 0, 0))
+    src = Source(entity=a)
+    assert tag_command(parsed("tag @e add ball"), store, src) == 3
+    with pytest.raises(CommandFailure, match="already has the tag"):
+        tag_command(parsed("tag @e add ball"), store, src)
+    assert tag_command(parsed("tag @s remove ball"), store, src) == 1
+    with pytest.raises(CommandFailure, match="does not have this tag"):
+        tag_command(parsed("tag @s remove ball"), store, src)
+    assert tag_command(parsed("tag @e list"), store, src) == 1
+    assert kill_command(parsed("kill @e[tag=ball]"), store, src) == 2  # b and Steve
+    assert store.entities == [a, steve] and not b.alive
+    assert kill_command(parsed("kill"), store, src) == 1
+    assert store.entities == [steve]
