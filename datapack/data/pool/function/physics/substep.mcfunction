@@ -11,7 +11,6 @@ tag @e[tag=pool.event] remove pool.event
 tag @e[tag=pool.event_b] remove pool.event_b
 execute as @e[tag=pool.moving] run function pool:physics/find/ball
 execute if score #best pool.tmp matches 10001 run return 0
-execute if score #events pool.tmp >= $max_events pool.const run return 0
 # the event's time: best / 10000 of the remaining interval
 scoreboard players operation #step pool.tmp = #best pool.tmp
 scoreboard players operation #step pool.tmp *= #rem pool.tmp
@@ -20,4 +19,6 @@ execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/rew
 execute as @e[tag=pool.event,limit=1] run function pool:physics/resolve
 scoreboard players operation #now pool.tmp += #step pool.tmp
 scoreboard players add #events pool.tmp 1
+# at the cap the rest of this tick is dropped: the balls wait at the event (never pass through)
+execute if score #events pool.tmp >= $max_events pool.const run return 0
 execute if score #now pool.tmp matches ..9999 run function pool:physics/substep
