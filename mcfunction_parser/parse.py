@@ -1,6 +1,8 @@
 """Public entry points: parse one function file, or one command (a macro line after substitution)."""
 from __future__ import annotations
 
+import re
+
 from .ast import Command, Function, MacroLine
 from .commands import command
 from .diagnostics import ERROR, WARNING, Diagnostic, Loc
@@ -9,16 +11,28 @@ from .lines import LineError, logical_lines, macro_keys
 from .reader import JoinedReader, ParseError, Reader
 
 DEFAULT_VERSION = (1, 21, 0)
+_LINE_BREAK = re.compile(r"\r\n|\r|\n")
+_BOM = "\ufeff"
 
 
 def parse_function(source: str, path: str, function_id: str,
                    version: tuple[int, int, int] = DEFAULT_VERSION) -> tuple[Function, list[Diagnostic]]:
-    """Parse a whole .mcfunction file. A bad line is reported and left out; the rest still parses."""
-    physical = source.split("\n")
+    """Parse a whole .mcfunction file. A bad line is reported and left out; the rest still parses.
+
+    (The game itself refuses to load a function with any bad line.)
+    """
+    # the game reads lines with BufferedReader: '\n', '\r' and '\r\n' all end a line
+    physical = _LINE_BREAK.split(source) if "\r" in source else source.split("\n")
     if physical and physical[-1] == "":
         physical.pop()
     commands: list[Command] = []
     diagnostics: list[Diagnostic] = []
+    if physical and physical[0].startswith(_BOM):
+        # Java keeps the byte order mark as a character (trim() doesn't remove it), so the game fails
+        # on the first line; it is reported once here and the rest is parsed without it
+        physical[0] = physical[0][1:]
+        diagnostics.append(Diagnostic(ERROR, "the file starts with a byte order mark (U+FEFF), which the game "
+                                      "reads as part of the first line", path, 1, 1, physical[0]))
     is_macro = False
     macros_ok = feature_problem("macro lines", version) is None
     for item in logical_lines(physical, version):

@@ -89,3 +89,15 @@ def test_crlf_and_trailing_whitespace():
 def test_overlong_command_is_an_error():
     fn, diags = parse("say " + "x" * 2_000_000 + "\nsay ok\n")
     assert "too long" in diags[0].message and [c.message for c in fn.commands] == ["ok"]
+
+
+def test_lone_carriage_returns_end_lines():
+    # BufferedReader.lines() ends a line at '\n', '\r' or '\r\n'
+    fn, diags = parse("say a\rsay b\r\nsay c\n")
+    assert not diags and [(c.message, c.loc.line) for c in fn.commands] == [("a", 1), ("b", 2), ("c", 3)]
+
+
+def test_byte_order_mark_is_reported():
+    fn, diags = parse("\ufeffsay a\nsay b\n")
+    assert [(d.line, d.col) for d in diags] == [(1, 1)] and "byte order mark" in diags[0].message
+    assert [c.message for c in fn.commands] == ["a", "b"]
