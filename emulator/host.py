@@ -17,13 +17,15 @@ a bug or at a limit of the emulator become diagnostics; routine ones (``get`` of
 """
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, replace
 from typing import Callable
+
+import numpy as np
 
 from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
 from emulator.state import SERVER, Context, WorldState
 from emulator.world import stores
+from emulator.world.source import Source
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound
 
@@ -120,19 +122,8 @@ class Host:
             return [ctx]
         if isinstance(st, ast.ExIn):
             return [replace(ctx, dimension=st.dimension)]
-        if isinstance(st, ast.ExAnchored):
-            return [replace(ctx, anchor=st.anchor)]
-        if isinstance(st, ast.ExAlign):
-            pos = tuple(float(math.floor(v)) if axis in st.axes else v for axis, v in zip("xyz", ctx.pos))
-            return [replace(ctx, pos=pos)]
-        if isinstance(st, ast.ExPositioned) and not st.pos.is_local:
-            # Vec3Argument centres integer x/z; positioned also resets the anchor to the feet
-            coords = (st.pos.x, st.pos.y, st.pos.z)
-            pos = tuple(_coord(c, base, centre=axis != 1) for axis, (c, base) in enumerate(zip(coords, ctx.pos)))
-            return [replace(ctx, pos=pos, anchor="feet")]
-        if isinstance(st, ast.ExRotated):
-            rot = (_coord(st.rot.x, ctx.rot[0], centre=False), _coord(st.rot.y, ctx.rot[1], centre=False))
-            return [replace(ctx, rot=rot)]
+        if isinstance(st, (ast.ExAnchored, ast.ExAlign, ast.ExPositioned, ast.ExRotated, ast.ExFacing)):
+            return [_context(_SOURCE_MODIFIERS[type(st)](_source(ctx), st), ctx)]
         self.warn(st, f"'{type(st).__name__}' is not emulated: the context is kept unchanged")
         return [ctx]
 
@@ -323,11 +314,22 @@ def _get_or_create(sb, holder: str, objective: str) -> int:
     return value
 
 
-def _coord(c: ast.Coord, base: float, centre: bool) -> float:
-    """An absolute or ``~`` relative coordinate; integer absolute x/z are block centres."""
-    if c.kind == "rel":
-        return base + c.value
-    return c.value + 0.5 if centre and c.is_int else c.value
+def _source(ctx: Context) -> Source:
+    """The world library's view of a context (its float32 rotation and local-coordinate math)."""
+    return Source(pos=ctx.pos, yaw=np.float32(ctx.rot[0]), pitch=np.float32(ctx.rot[1]), anchor=ctx.anchor)
+
+
+def _context(source: Source, ctx: Context) -> Context:
+    return replace(ctx, pos=tuple(source.pos), rot=(float(source.yaw), float(source.pitch)), anchor=source.anchor)
+
+
+_SOURCE_MODIFIERS = {
+    ast.ExAnchored: lambda src, st: src.with_anchor(st.anchor),
+    ast.ExAlign: lambda src, st: src.aligned(st.axes),
+    ast.ExPositioned: lambda src, st: src.positioned(st.pos),  # also resets the anchor to the feet
+    ast.ExRotated: lambda src, st: src.with_rotation(*src.rotation_of(st.rot)),
+    ast.ExFacing: lambda src, st: src.facing_position(src.position_of(st.pos)),
+}
 
 
 _OPERATIONS = {  # exact results; Host.arith wraps them (floorDiv's MIN / -1 included)

@@ -96,3 +96,18 @@ def test_return_in_a_forked_chain_ends_the_function(tmp_path, backend):
     _forking_positioned(emu, 2)
     assert emu.call("t:f") == 7
     assert emu.score("#plain", "o") == 2 and emu.log == []
+
+
+def test_context_modifiers_use_the_world_math(tmp_path, backend):
+    if backend == "python":
+        pytest.skip("reads the numba backend's context table")
+    emu, _ = run_main(tmp_path, "", {"t:f": "execute positioned 1 2 3 rotated 90 0 positioned ^ ^ ^2 "
+                                             "align y anchored eyes run say here"}, backend=backend)
+    seen = []
+    final = emu.backend.host.run_final
+    emu.backend.host.run_final = lambda cmd, ctx: (seen.append(ctx), final(cmd, ctx))[1]
+    emu.call("t:f")
+    [ctx] = seen
+    # positioned centres integer x/z; yaw 90 faces -x, so two blocks forward is x - 2
+    assert ctx.pos == pytest.approx((1.5 - 2.0, 2.0, 3.5), abs=1e-6)
+    assert ctx.rot == (90.0, 0.0) and ctx.anchor == "eyes"
