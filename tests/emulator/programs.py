@@ -203,9 +203,10 @@ def make_backend(name: str):
     return NumbaBackend()
 
 
-def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, scores: dict | None = None) -> Outcome:
+def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, scores: dict | None = None,
+             limit: int | None = None) -> Outcome:
     """Load ``pack`` and run ``entry`` as one root on a fresh world; ``scores`` seeds
-    ``{(holder, objective): value}`` first."""
+    ``{(holder, objective): value}`` first; ``limit`` sets maxCommandChainLength."""
     from emulator.state import WorldState
     from mcfunction_parser.pack import load_packs
 
@@ -213,6 +214,8 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
     errors = [d.format() for d in packs.diagnostics if d.severity == "error"]
     assert not errors, errors
     state = WorldState()
+    if limit is not None:
+        state.gamerules.set("maxCommandChainLength", str(limit))
     for (holder, objective), value in (scores or {}).items():
         state.scoreboard.set(holder, objective, value)
     backend = make_backend(backend_name)
