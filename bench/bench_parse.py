@@ -1,6 +1,7 @@
 """Parse the generated corpus with dpemu's parser and with mecha in the same run; print lines/s.
 
-Usage: ``python bench/bench_parse.py [--lines N] [--repeat R] [--no-mecha]``. Lines counts every
+Usage: ``python bench/bench_parse.py [--lines N] [--repeat R] [--no-mecha] [--pack DIR]`` (``--pack``
+parses an existing pack's functions instead of the generated corpus). Lines counts every
 physical line (comments and blanks included), as a pack's size is usually quoted. Times are CPU
 seconds of this process (``time.process_time``) and each parser's best of R runs is reported,
 which damps the noise of other processes on a shared machine.
@@ -63,17 +64,22 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--no-mecha", action="store_true")
+    parser.add_argument("--pack", type=Path, help="parse this pack's .mcfunction files instead")
     args = parser.parse_args()
-    with tempfile.TemporaryDirectory() as tmp:
-        write_corpus(tmp, args.lines, args.seed)
-        sources = _load(Path(tmp))
+    if args.pack:
+        sources = _load(args.pack)
+    else:
+        with tempfile.TemporaryDirectory() as tmp:
+            write_corpus(tmp, args.lines, args.seed)
+            sources = _load(Path(tmp))
     lines = sum(text.count("\n") for _, text in sources)
     ours, errors = _best(_ours, sources, args.repeat)
     print(f"dpemu : {lines} lines in {ours:.3f} CPU s = {lines / ours:,.0f} lines/s ({errors} diagnostics)")
     if args.no_mecha:
         return
     theirs, failures = _best(_mecha, sources, max(1, args.repeat // 2))
-    print(f"mecha : {lines} lines in {theirs:.3f} CPU s = {lines / theirs:,.0f} lines/s ({failures} files rejected)")
+    print(f"mecha : {lines} lines in {theirs:.3f} CPU s = {lines / theirs:,.0f} lines/s ({failures} files rejected;"
+          " mecha's 1.21 tree is 1.21.11, which renamed the corpus' 1.21.0 game rules)")
     print(f"ratio : dpemu is {theirs / ours:.1f}x mecha's speed")
 
 
