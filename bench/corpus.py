@@ -25,7 +25,8 @@ def _sel(rng: random.Random) -> str:
         "@s", "@a", "@p", "@r", "@n",
         f"@e[type=minecraft:marker,tag={rng.choice(TAGS)}]",
         f"@e[tag={rng.choice(TAGS)},tag=!{rng.choice(TAGS)},limit={rng.randint(1, 9)},sort=nearest]",
-        f"@e[scores={{{rng.choice(OBJECTIVES)}={rng.randint(-5, 0)}..{rng.randint(1, 50)}}},distance=..{rng.randint(1, 30)}]",
+        f"@e[scores={{{rng.choice(OBJECTIVES)}={rng.randint(-5, 0)}..{rng.randint(1, 50)}}},"
+        f"distance=..{rng.randint(1, 30)}]",
         f"@a[x=0,y=64,z=0,dx=10,dy=5,dz=10,gamemode=!spectator]",
         f'@e[type=armor_stand,name="Ball {rng.randint(1, 15)}",nbt={{Tags:["{rng.choice(TAGS)}"]}}]',
     ))
@@ -45,7 +46,8 @@ def _obj(rng: random.Random) -> str:
 
 def _pos(rng: random.Random) -> str:
     return rng.choice((
-        "~ ~ ~", f"~{rng.randint(-3, 3)} ~1.5 ~", f"^ ^ ^{rng.randint(1, 5)}", f"{rng.randint(-100, 100)} 64 {rng.randint(-100, 100)}",
+        "~ ~ ~", f"~{rng.randint(-3, 3)} ~1.5 ~", f"^ ^ ^{rng.randint(1, 5)}",
+        f"{rng.randint(-100, 100)} 64 {rng.randint(-100, 100)}",
         f"{rng.uniform(-50, 50):.3f} {rng.uniform(60, 70):.2f} {rng.uniform(-50, 50):.3f}",
     ))
 
@@ -86,7 +88,8 @@ def _execute_prefix(rng: random.Random) -> str:
             f"rotated as {_single(rng)}", f"facing {_pos(rng)}", f"facing entity {_single(rng)} eyes",
             "anchored eyes", "align xz", "in minecraft:overworld", "on passengers", "summon marker",
             f"if score {_holder(rng)} {_obj(rng)} matches {rng.randint(0, 9)}..{rng.randint(10, 99)}",
-            f"unless score {_holder(rng)} {_obj(rng)} {rng.choice(('<', '<=', '=', '>=', '>'))} {_holder(rng)} {_obj(rng)}",
+            f"unless score {_holder(rng)} {_obj(rng)} {rng.choice(('<', '<=', '=', '>=', '>'))} "
+            f"{_holder(rng)} {_obj(rng)}",
             f"if entity {_sel(rng)}", f"if data {_data_target(rng)} {_path(rng)}",
             f"unless block {_block_pos(rng)} minecraft:stone_slab[type=top]", "if block ~ ~ ~ #minecraft:logs",
             f"if function {NAMESPACE}:util/check", f"if predicate {NAMESPACE}:is_moving", "if loaded ~ ~ ~",
@@ -135,7 +138,8 @@ def _other(rng: random.Random) -> str:
         f"function {NAMESPACE}:macro/apply {{value:{rng.randint(0, 99)},name:\"ball\"}}",
         f"function {NAMESPACE}:macro/apply with storage {_storage(rng)} args",
         f"return {rng.randint(-10, 10)}", "return fail", f"return run scoreboard players get #tmp {_obj(rng)}",
-        f"schedule function {NAMESPACE}:tick {rng.choice(('1t', '20', '2s', '1d'))} {rng.choice(('append', 'replace'))}",
+        f"schedule function {NAMESPACE}:tick {rng.choice(('1t', '20', '2s', '1d'))} "
+        f"{rng.choice(('append', 'replace'))}",
         f"schedule clear {NAMESPACE}:tick",
         f"data get {_data_target(rng)} {_path(rng)} 1000", f"data merge storage {_storage(rng)} {{a:1,b:[1,2]}}",
         f"data modify storage {_storage(rng)} {_path(rng)} set value {_snbt(rng)}",
@@ -152,9 +156,11 @@ def _other(rng: random.Random) -> str:
         f"random value 1..{rng.randint(2, 100)}", f"random roll 0..10 {NAMESPACE}:dice", "random reset * 42 true false",
         "time set day", f"time add {rng.randint(1, 100)}t", "time query gametime",
         f"trigger trigger_me set {rng.randint(0, 9)}", "trigger trigger_me",
-        f"say Ball {rng.randint(1, 15)} hit @s", f'tellraw @a {{"text":"score: ","extra":[{{"score":{{"name":"@s","objective":"{_obj(rng)}"}}}}]}}',
+        f"say Ball {rng.randint(1, 15)} hit @s",
+        f'tellraw @a {{"text":"score: ","extra":[{{"score":{{"name":"@s","objective":"{_obj(rng)}"}}}}]}}',
         'tellraw @a[tag=cue] ["",{"text":"Power","color":"red"}]',
-        f"particle minecraft:crit {_pos(rng)} 0 0 0 0 1 force", "playsound minecraft:block.note_block.hat master @a ~ ~ ~ 1 2",
+        f"particle minecraft:crit {_pos(rng)} 0 0 0 0 1 force",
+        "playsound minecraft:block.note_block.hat master @a ~ ~ ~ 1 2",
         f"setblock {_block_pos(rng)} minecraft:stone", "fill ~-1 ~ ~-1 ~1 ~ ~1 minecraft:air replace minecraft:water",
         'title @a actionbar {"text":"Break!"}', "effect give @s minecraft:speed 1 0 true",
         "bossbar set bench:power value 50", "item replace entity @s weapon.mainhand with minecraft:stick",
@@ -178,7 +184,8 @@ def _function_lines(rng: random.Random, count: int, macro: bool) -> list[str]:
         elif macro and roll < 0.15:
             lines.append(_macro_line(rng))
         elif roll < 0.17:
-            lines.append(f"execute as @e[tag=ball] at @s \\\n    if score @s state matches 1 \\\n    run function {NAMESPACE}:physics/step")
+            lines.append("execute as @e[tag=ball] at @s \\\n    if score @s state matches 1 \\\n"
+                         f"    run function {NAMESPACE}:physics/step")
         else:
             lines.append(("    " if roll > 0.97 else "") + _command(rng))
     return lines
@@ -213,7 +220,8 @@ def write_corpus(dest_dir, lines: int = 40000, seed: int = 0) -> int:
     _write(root / "pack.mcmeta", json.dumps({"pack": {"pack_format": PACK_FORMAT, "description": "parser benchmark"}}))
     for name, values in FUNCTION_TAGS.items():
         _write(data / "tags" / "function" / f"{name}.json", json.dumps({"values": values}))
-    _write(root / "data" / "minecraft" / "tags" / "function" / "load.json", json.dumps({"values": [f"{NAMESPACE}:load"]}))
+    load_tag = root / "data" / "minecraft" / "tags" / "function" / "load.json"
+    _write(load_tag, json.dumps({"values": [f"{NAMESPACE}:load"]}))
     for name, predicate in PREDICATES.items():
         _write(data / "predicate" / f"{name}.json", json.dumps(predicate))
     written = 0

@@ -41,8 +41,8 @@ def _display_slot(r: Reader) -> str:
     if word in ("belowName", "below_name"):
         # renamed to below_name in 1.20.2 (23w31a)
         if (word == "below_name") != (r.version >= BELOW_NAME_RENAMED):
-            r.fail(f"display slot '{word}' is spelled "
-                   f"'{'below_name' if word == 'belowName' else 'belowName'}' in Minecraft {version_text(r.version)}", start)
+            spelled = "below_name" if word == "belowName" else "belowName"
+            r.fail(f"display slot '{word}' is spelled '{spelled}' in Minecraft {version_text(r.version)}", start)
         return word
     prefix, _, color = word.partition(".team.")
     if prefix == "sidebar" and color in _COLORS:

@@ -67,7 +67,8 @@ def test_float_ranges(text, lo, hi):
     assert (rng.lo, rng.hi) == (lo, hi)
 
 
-@pytest.mark.parametrize("text,message", [("..", "value or range"), ("5..1", "bigger than"), ("1.5", "invalid integer")])
+@pytest.mark.parametrize("text,message", [("..", "value or range"), ("5..1", "bigger than"),
+                                          ("1.5", "invalid integer")])
 def test_range_errors(text, message):
     with pytest.raises(ParseError, match=message):
         arguments.int_range(reader(text))

@@ -51,7 +51,8 @@ def test_messages_name_both_versions():
 def test_a_valid_1_16_pack_gets_no_false_errors():
     for line in ["replaceitem entity @s weapon.mainhand minecraft:stone", "locatebiome minecraft:plains",
                  "execute as @e[type=minecraft:pig] at @s if block ~ ~-1 ~ minecraft:grass_block run tp @s ~ ~1 ~",
-                 "scoreboard objectives setdisplay belowName health", "attribute @s minecraft:generic.max_health base set 40",
+                 "scoreboard objectives setdisplay belowName health",
+                 "attribute @s minecraft:generic.max_health base set 40",
                  "data modify storage ns:s list append value [1,2,3]", "spectate @e[type=minecraft:bat,limit=1] @s"]:
         parse_ok(line, (1, 16, 5))
 

@@ -32,7 +32,8 @@ def test_unusual_key_characters():
     assert path("a-b:c+d")[0].name == "a-b:c+d"
 
 
-@pytest.mark.parametrize("text", ["a..b", "a.", "a[x]", "a[0]{b:1}", "a[{x:1}]{y:2}", "{a:1}{b:1}", "a.{b:1}", "[0", "{a:1}b"])
+@pytest.mark.parametrize("text", ["a..b", "a.", "a[x]", "a[0]{b:1}", "a[{x:1}]{y:2}", "{a:1}{b:1}", "a.{b:1}", "[0",
+                                  "{a:1}b"])
 def test_invalid_paths(text):
     with pytest.raises(ParseError):
         path(text)

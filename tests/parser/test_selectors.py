@@ -69,7 +69,8 @@ def test_selector_errors(text, message):
 
 
 def test_repeatable_and_negated_options():
-    sel = _sel("@e[type=!pig,type=!cow,name=!a,name=!b,team=!x,team=y,nbt={a:1},nbt=!{b:2},predicate=a:b,predicate=!c:d]")
+    sel = _sel("@e[type=!pig,type=!cow,name=!a,name=!b,team=!x,team=y,nbt={a:1},nbt=!{b:2},"
+               "predicate=a:b,predicate=!c:d]")
     assert len(sel.args) == 10
 
 
