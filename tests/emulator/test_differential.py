@@ -38,7 +38,9 @@ def _compare(tmp_path_factory, program, sanitize: bool, limit: int | None = None
     assert (vm.cost, vm.cut) == (reference.cost, reference.cut)
     assert vm.log == reference.log
     if sanitize:
-        assert vm.overflows == reference.overflows
+        # the VM names a macro instance "ns:f#N"; the reference names the function
+        vm_overflows = tuple((o[0].split("#")[0],) + o[1:] for o in vm.overflows)
+        assert vm_overflows == reference.overflows
 
 
 @settings.get_profile("differential")
