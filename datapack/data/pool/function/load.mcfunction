@@ -49,6 +49,11 @@ scoreboard objectives add pool.btau dummy
 scoreboard objectives add pool.bs dummy
 scoreboard objectives add pool.bspd dummy
 scoreboard objectives add pool.bstate dummy
+# the box around a ball's chord in a sub-step, grown by R (um)
+scoreboard objectives add pool.lx dummy
+scoreboard objectives add pool.hx dummy
+scoreboard objectives add pool.lz dummy
+scoreboard objectives add pool.hz dummy
 
 # Temporaries, math library I/O, constants, game state
 scoreboard objectives add pool.tmp dummy

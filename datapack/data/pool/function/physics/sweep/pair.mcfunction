@@ -19,8 +19,8 @@ scoreboard players operation $z pool.math = #b.ez pool.tmp
 scoreboard players operation $z pool.math -= #b.bz pool.tmp
 scoreboard players operation $z pool.math -= #a.ez pool.tmp
 scoreboard players operation $z pool.math += #a.bz pool.tmp
-# reject: the boxes swept by the two balls (grown by 2R) are apart in x or z
-function pool:physics/sweep/pair_apart
+# cheap reject: separating
+function pool:physics/sweep/pair_reject
 execute if score #apart pool.tmp matches 1 run return 0
 function pool:math/normalize
 execute if score $len pool.math matches 0 run return 0
