@@ -191,9 +191,9 @@ class Compiler:
                 self.emit(vm.OP_RESULT, ok, value)
                 self.stores(stores)
             if cmd.kind == "value":
-                self.emit(vm.OP_RETV, value)
+                self.emit(vm.OP_RETV, value, int(not in_chain))
             else:
-                self.emit(vm.OP_RETFAIL)
+                self.emit(vm.OP_RETFAIL, 0, int(not in_chain))
             return
         # return run CMD: a continuation entry in return mode; skipped if no context is left
         gate = self.emit(vm.OP_JMPDEAD, 0) if in_chain else None

@@ -84,6 +84,7 @@ class NumbaBackend:
         except CommandFailure as failure:
             state.error(failure.message, (Frame(function_id, Loc(function.path, 1, 1)),))
             return RootResult(0, None)
+        self.root_frame = Frame(function_id, Loc(function.path, max(function.lines, 1), 1))  # where a root ends
         limit = state.gamerules.max_command_chain_length
         r = self.regs
         r[:] = 0
@@ -111,7 +112,11 @@ class NumbaBackend:
             status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts,
                             self.totals, self.active, self.ovf)
             if status == vm.ST_DONE:
-                return False
+                if r[vm.R_QUOTA] > 0:
+                    return False
+                # the queue checks the quota before polling, even when nothing is left
+                report_quota_cut(self.state, limit, (self.root_frame,))
+                return True
             if status == vm.ST_CUT:
                 self._close_frames()
                 report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))

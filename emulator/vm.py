@@ -44,8 +44,8 @@ OP_STORE = 23  # a: 0 result / 1 success, b h, c o
 OP_CALL = 30  # a: function id
 OP_CALLREG = 31  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
 OP_FEND = 32  # end of a function body: return without a result
-OP_RETV = 33  # a: value. `return N`
-OP_RETFAIL = 34  # `return fail`
+OP_RETV = 33  # a: value, b: 1 when the return is its own command line (an entry). `return N`
+OP_RETFAIL = 34  # b: as RETV. `return fail`
 OP_RETRES = 35  # end of `return run CMD`: return CMD's result (fail if it had none)
 OP_RETNONE = 36  # abort target of `return run`: end the function without a result
 OP_RETIFHAS = 37  # `return run function #tag`: the first member that returned ends the caller
@@ -421,21 +421,21 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
         elif op >= OP_FEND and op <= OP_RETIFHAS:
             if op == OP_FEND or op == OP_RETNONE:
                 has = 0
-            elif op == OP_RETV:
+            elif op == OP_RETV or op == OP_RETFAIL:
                 if alive == 0:
                     pc += 1
                     continue
+                if code[pc, 2] and quota <= 0:  # a `return` line is an entry of its own
+                    status = ST_CUT
+                    break
                 has = 1
-                ok = 1
-                val = code[pc, 1]
-            elif op == OP_RETFAIL:
-                if alive == 0:
-                    pc += 1
-                    continue
-                has = 1
-                ok = 0
-                val = 0
+                ok = 1 if op == OP_RETV else 0
+                val = code[pc, 1] if op == OP_RETV else 0
             elif op == OP_RETRES:
+                if not (alive and has):  # FallthroughTask, an entry: returns failure
+                    if quota <= 0:
+                        status = ST_CUT
+                        break
                 if not (alive and has and ok):
                     ok = 0
                     val = 0
@@ -465,7 +465,10 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 acc_any = 1
                 acc_sum = _wrap(acc_sum + (val if ok else 0))
             pc += 1
-        elif op == OP_TAGEND:
+        elif op == OP_TAGEND:  # the accumulator's report is an entry queued after the members
+            if alive and quota <= 0:
+                status = ST_CUT
+                break
             if alive:
                 has = acc_any
                 ok = 1

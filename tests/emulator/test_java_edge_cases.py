@@ -225,14 +225,10 @@ QUOTA_CASES = [
 ]
 
 
-VM_QUOTA_GAP = pytest.mark.xfail(strict=True, reason="VM: runs free entries after the quota is spent, no cut logged")
-
-
 def _quota_params():
     for case in QUOTA_CASES:
         yield pytest.param("python", *case, id=f"{case[0]}-python")
-        marks = VM_QUOTA_GAP if case[4] else ()
-        yield pytest.param("numba", *case, marks=marks, id=f"{case[0]}-numba")
+        yield pytest.param("numba", *case, id=f"{case[0]}-numba")
 
 
 @pytest.mark.parametrize("backend, case_id, body, limit, result, cut", list(_quota_params()))

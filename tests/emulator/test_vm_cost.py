@@ -107,3 +107,19 @@ def test_if_function_on_empty_tag_ends_the_chain_without_charges(tmp_path):
     emu.call("t:setup")
     result = emu.runtime.call("t:f")
     assert result.cost == 1 + 1  # the call and the first stage; nothing after the empty tag
+
+
+@pytest.mark.parametrize("body, cut, result", [
+    ("scoreboard players set #a o 1\nscoreboard players set #b o 1\nreturn 7", True, None),  # return never reached
+    ("scoreboard players set #a o 1\nscoreboard players set #b o 1", True, None),  # cut logged with nothing left
+    ("scoreboard players set #a o 1\nreturn 7", False, 7),
+    ("execute if score #one o matches 1 run return 7", False, 7),  # the return runs inside the charged entry
+])
+def test_quota_checked_before_every_entry(tmp_path, body, cut, result):
+    # ExecutionContext.runCommandQueue checks `commandQuota <= 0` before polling each entry
+    emu = emulator_for(tmp_path, {"t:setup": FUNCTIONS["t:setup"], "t:f": body})
+    emu.call("t:setup")
+    emu.state.gamerules.set("maxCommandChainLength", "3")
+    root = emu.runtime.call("t:f")
+    assert (root.cut, root.result) == (cut, result)
+    assert any("stopped due to limit" in d.message for d in emu.diagnostics) == cut
