@@ -6,18 +6,18 @@ import re
 from .. import ast
 from ..arguments import json_span
 from ..reader import Reader
-from ..selectors import selector, target
+from ..selectors import AT_N, selector, target
 
 # MessageArgument parses a selector wherever '@' is followed by a selector letter.
 _MESSAGE_SELECTOR = re.compile(r"@[spaern]")
-_MESSAGE_SELECTOR_OLD = re.compile(r"@[spaer]")  # before @n (1.21)
+_MESSAGE_SELECTOR_OLD = re.compile(r"@[spaer]")  # before @n existed
 
 
 def say(r: Reader, loc) -> ast.Command:
     r.space("message")
     start = r.pos
     text = r.text
-    pattern = _MESSAGE_SELECTOR if r.version >= (1, 21, 0) else _MESSAGE_SELECTOR_OLD
+    pattern = _MESSAGE_SELECTOR if r.version >= AT_N else _MESSAGE_SELECTOR_OLD
     for m in pattern.finditer(text, start):
         if m.start() < r.pos:
             continue
