@@ -63,8 +63,6 @@ def test_random_programs_with_context_modifiers_agree(tmp_path_factory, program)
 
 
 # A small maxCommandChainLength cuts programs anywhere: the same partial work must be done
-@pytest.mark.xfail(reason="VM: free entries after the quota is spent (see QUOTA_CASES in test_java_edge_cases.py)",
-                   strict=False)
 @settings(settings.get_profile("differential"), max_examples=max(EXAMPLES // 3, 20))
 @given(program=programs(modifiers=True), limit=st.integers(1, 60))
 def test_quota_cuts_agree(tmp_path_factory, program, limit):
