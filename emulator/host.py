@@ -24,7 +24,8 @@ import numpy as np
 
 from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
 from emulator.state import SERVER, Context, WorldState
-from emulator.world import stores
+from emulator.world import nbt_ops, stores
+from emulator.world.errors import CommandFailure as WorldFailure
 from emulator.world.source import Source
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound
@@ -93,8 +94,7 @@ class Host:
         """A ``store`` stage's callback: ``result`` stores the value (0 on failure), ``success`` 1/0."""
         stored = (value if ok else 0) if st.kind == "result" else int(ok)
         if isinstance(st, ast.StoreData) and isinstance(st.target, ast.StorageData):
-            root = self.state.storage.setdefault(st.target.id, Compound())
-            stores.store(root, st.path, st.type, stored, st.scale)
+            stores.store(self.storage(st.target, create=True), st.path, st.type, stored, st.scale)
         elif isinstance(st, ast.StoreScore):
             try:
                 names = self.holders(st.targets, ctx)
@@ -137,6 +137,8 @@ class Host:
             passed = a is not None and b is not None and _COMPARE[st.op](a, b)
         elif isinstance(st, ast.IfEntity):
             passed = False
+        elif isinstance(st, ast.IfData):
+            passed = _world(nbt_ops.count_matching, self.storage(st.source, create=False), st.path) > 0
         else:
             raise HostFailure(f"'{type(st).__name__}' is not supported yet", report=True)
         return passed != st.negated
@@ -177,6 +179,17 @@ class Host:
         if writable and not sb.is_writable(name):
             raise HostFailure(f"Objective '{name}' is read-only", report=True)
         return sb.objective_ids[name]
+
+    def storage(self, target: ast.DataTarget, create: bool) -> Compound:
+        """The compound of ``storage ID`` (CommandStorage: a missing id reads as empty)."""
+        if not isinstance(target, ast.StorageData):
+            raise HostFailure("entity and block data are not emulated yet", report=True)
+        root = self.state.storage.get(target.id)
+        if root is None:
+            root = Compound()
+            if create:
+                self.state.storage[target.id] = root
+        return root
 
     def function_exists(self, function: str, is_tag: bool) -> None:
         if function not in (self.tags if is_tag else self.functions):
@@ -306,6 +319,47 @@ def _players_operation(host: Host, cmd: ast.ScoreOperation, ctx: Context) -> int
     return wrap32(total)
 
 
+def _data_get(host: Host, cmd: ast.DataGet, ctx: Context) -> int:
+    root = host.storage(cmd.target, create=False)
+    if cmd.path is None:
+        return 1
+    if cmd.scale is None:
+        return _world(stores.data_get, root, cmd.path)
+    return _world(stores.data_get_scaled, root, cmd.path, cmd.scale)
+
+
+def _data_merge(host: Host, cmd: ast.DataMerge, ctx: Context) -> int:
+    return _world(nbt_ops.data_merge, host.storage(cmd.target, create=True), cmd.nbt)
+
+
+def _data_modify(host: Host, cmd: ast.DataModify, ctx: Context) -> int:
+    values = _source_values(host, cmd.source)
+    return _world(nbt_ops.modify, host.storage(cmd.target, create=True), cmd.path, cmd.mode, values, cmd.index)
+
+
+def _data_remove(host: Host, cmd: ast.DataRemove, ctx: Context) -> int:
+    return _world(nbt_ops.data_remove, host.storage(cmd.target, create=True), cmd.path)
+
+
+def _source_values(host: Host, source) -> list:
+    """The tags a ``data modify`` source gives (copies, so the target never aliases them)."""
+    if isinstance(source, ast.SourceValue):
+        return [source.value]
+    root = host.storage(source.source, create=False)
+    values = [root] if source.path is None else _world(nbt_ops.get, root, source.path)
+    if isinstance(source, ast.SourceString):
+        return _world(nbt_ops.string_source, values, source.start, source.end)
+    return [nbt_ops.copy_tag(v) for v in values]
+
+
+def _world(operation, *args):
+    """Run a world-library operation; its failures are this command's failures."""
+    try:
+        return operation(*args)
+    except WorldFailure as failure:
+        raise HostFailure(failure.message) from None
+
+
 def _get_or_create(sb, holder: str, objective: str) -> int:
     value = sb.get(holder, objective)
     if value is None:
@@ -362,4 +416,8 @@ _HANDLERS = {
     ast.ScoreReset: _players_reset,
     ast.ScoreGet: _players_get,
     ast.ScoreOperation: _players_operation,
+    ast.DataGet: _data_get,
+    ast.DataMerge: _data_merge,
+    ast.DataModify: _data_modify,
+    ast.DataRemove: _data_remove,
 }

@@ -201,10 +201,7 @@ STORAGE_CASES = [
 ]
 
 
-@pytest.mark.parametrize("backend", [
-    "python",
-    pytest.param("numba", marks=pytest.mark.xfail(strict=True, reason="VM: data commands on storage not emulated yet")),
-])
+@pytest.mark.parametrize("backend", ["python", "numba"])
 @pytest.mark.parametrize("case_id, body, expected", STORAGE_CASES, ids=[c[0] for c in STORAGE_CASES])
 def test_storage_edge_case(tmp_path, backend, case_id, body, expected):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body})

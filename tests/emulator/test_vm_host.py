@@ -111,3 +111,19 @@ def test_context_modifiers_use_the_world_math(tmp_path, backend):
     # positioned centres integer x/z; yaw 90 faces -x, so two blocks forward is x - 2
     assert ctx.pos == pytest.approx((1.5 - 2.0, 2.0, 3.5), abs=1e-6)
     assert ctx.rot == (90.0, 0.0) and ctx.anchor == "eyes"
+
+
+def test_storage_data_commands(tmp_path, backend):
+    emu, _ = run_main(tmp_path, "data modify storage t:s list set value [1, 2, 3]\n"
+                                "data merge storage t:s {name: \"ball\", r: 2.5d}\n"
+                                "execute store result score #len o run data get storage t:s list\n"
+                                "execute store result score #r o run data get storage t:s r 10\n"
+                                "data remove storage t:s list[0]\n"
+                                "execute store result score #len2 o run data get storage t:s list\n"
+                                "execute if data storage t:s name run scoreboard players set #named o 1\n"
+                                "execute unless data storage t:s missing run scoreboard players set #none o 1\n"
+                                "data modify storage t:s copy set from storage t:s list[-1]\n"
+                                "execute store result score #copy o run data get storage t:s copy",
+                      backend=backend)
+    assert [emu.score(h, "o") for h in ("#len", "#r", "#len2", "#named", "#none", "#copy")] == [3, 25, 2, 1, 1, 3]
+    assert emu.diagnostics == []
