@@ -76,6 +76,8 @@ def score_commands(draw) -> str:
     """A scoreboard command that can run anywhere (no calls)."""
     kind = draw(st.sampled_from(("set", "add", "remove", "operation", "operation", "operation", "reset", "get")))
     h, o = draw(holders), draw(objectives)
+    if kind in ("set", "add", "remove", "reset") and draw(st.integers(0, 9)) == 0:
+        h = "*"  # every tracked holder; order-independent commands only (the game's order is a hash order)
     if kind == "set":
         return f"scoreboard players set {h} {o} {draw(ints)}"
     if kind in ("add", "remove"):
@@ -106,10 +108,12 @@ MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0",
 
 @st.composite
 def stage_chains(draw, callees: list[str], modifiers: bool) -> str:
-    """1 to 3 execute stages: conditions, and context modifiers when ``modifiers``."""
+    """1 to 3 execute stages: conditions, and context modifiers and stores when ``modifiers``."""
     stage = conditions(callees)
     if modifiers:
-        stage = st.one_of(stage, st.sampled_from(MODIFIERS))
+        stores = st.builds(lambda kind, h, o: f"store {kind} score {h} {o}",
+                           st.sampled_from(("result", "success")), holders, objectives)
+        stage = st.one_of(stage, st.sampled_from(MODIFIERS), stores)
     return " ".join(draw(st.lists(stage, min_size=1, max_size=3)))
 
 
