@@ -319,6 +319,18 @@ def _players_operation(host: Host, cmd: ast.ScoreOperation, ctx: Context) -> int
     return wrap32(total)
 
 
+def _players_enable(host: Host, cmd: ast.ScoreEnable, ctx: Context) -> int:
+    """Trigger locks are not modelled: enabling creates the scores (get-or-create) and counts them."""
+    names = host.holders(cmd.targets, ctx)
+    host.objective(cmd.objective)
+    sb = host.state.scoreboard
+    if sb.criteria[sb.objective_ids[cmd.objective]] != "trigger":
+        raise HostFailure("You can only enable trigger-objectives")
+    for name in names:
+        _get_or_create(sb, name, cmd.objective)
+    return len(names)
+
+
 def _data_get(host: Host, cmd: ast.DataGet, ctx: Context) -> int:
     root = host.storage(cmd.target, create=False)
     if cmd.path is None:
@@ -416,6 +428,7 @@ _HANDLERS = {
     ast.ScoreReset: _players_reset,
     ast.ScoreGet: _players_get,
     ast.ScoreOperation: _players_operation,
+    ast.ScoreEnable: _players_enable,
     ast.DataGet: _data_get,
     ast.DataMerge: _data_merge,
     ast.DataModify: _data_modify,

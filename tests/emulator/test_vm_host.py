@@ -127,3 +127,11 @@ def test_storage_data_commands(tmp_path, backend):
                       backend=backend)
     assert [emu.score(h, "o") for h in ("#len", "#r", "#len2", "#named", "#none", "#copy")] == [3, 25, 2, 1, 1, 3]
     assert emu.diagnostics == []
+
+
+def test_enable_trigger(tmp_path, backend):
+    emu, _ = run_main(tmp_path, "scoreboard objectives add go trigger\nscoreboard players enable Alex go\n"
+                                "execute store success score #bad o run scoreboard players enable Alex o",
+                      backend=backend)
+    assert emu.score("Alex", "go") == 0 and emu.score("#bad", "o") == 0
+    assert emu.diagnostics == []
