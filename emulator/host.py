@@ -319,6 +319,19 @@ def _players_operation(host: Host, cmd: ast.ScoreOperation, ctx: Context) -> int
     return wrap32(total)
 
 
+def _objectives_list(host: Host, cmd: ast.ObjectivesList, ctx: Context) -> int:
+    return int(host.state.scoreboard.alive.sum())
+
+
+def _players_list(host: Host, cmd: ast.ScoreList, ctx: Context) -> int:
+    """The number of holders tracked, or of one holder's scores."""
+    sb = host.state.scoreboard
+    if cmd.target is None:
+        return len(sb.tracked_holders())
+    name = host.holders(cmd.target, ctx)[0]
+    return sum(1 for objective in sb.objectives if sb.get(name, objective) is not None)
+
+
 def _players_enable(host: Host, cmd: ast.ScoreEnable, ctx: Context) -> int:
     """Trigger locks are not modelled: enabling creates the scores (get-or-create) and counts them."""
     names = host.holders(cmd.targets, ctx)
@@ -423,7 +436,9 @@ _HANDLERS = {
     ast.ObjectivesRemove: _objectives_remove,
     ast.ObjectivesModify: _objectives_other,
     ast.ObjectivesSetdisplay: _objectives_other,
-    ast.ObjectivesList: _objectives_other,
+    ast.ObjectivesList: _objectives_list,
+    ast.ScoreList: _players_list,
+    ast.ScoreDisplay: lambda host, cmd, ctx: 0,
     ast.ScoreSet: _players_set,
     ast.ScoreReset: _players_reset,
     ast.ScoreGet: _players_get,

@@ -129,3 +129,13 @@ def test_objectives_add_remove(tmp_path):
     emu, _ = run_main(tmp_path, "scoreboard objectives add p dummy\nscoreboard players set #a p 1\n"
                                 "scoreboard objectives remove p\nscoreboard objectives add p dummy")
     assert emu.scores()["p"] == {}
+
+
+def test_list_results(tmp_path):
+    emu, _ = run_main(tmp_path, "scoreboard objectives add p dummy\nscoreboard players set #a o 1\n"
+                                "scoreboard players set #a p 1\nscoreboard players set #b p 1\n"
+                                "execute store result score #objectives o run scoreboard objectives list\n"
+                                "execute store result score #holders o run scoreboard players list\n"
+                                "execute store result score #of_a o run scoreboard players list #a")
+    # holders listed before #holders and #of_a are stored: #a, #b, #objectives
+    assert [emu.score(h, "o") for h in ("#objectives", "#holders", "#of_a")] == [2, 3, 2]
