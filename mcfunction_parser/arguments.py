@@ -2,11 +2,13 @@
 objectives, durations and JSON text spans."""
 from __future__ import annotations
 
+import json
 import re
 
+from . import snbt
 from .ast import Coord, FloatRange, IntRange, NameTarget, Vec2, Vec3, Wildcard
 from .diagnostics import Loc
-from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, Reader, show
+from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, ParseError, Reader, show
 
 # ----------------------------------------------------------------------------- resource locations
 
@@ -259,6 +261,31 @@ def duration(r: Reader) -> int:
 _JSON_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|\'(?:[^\'\\]|\\.)*\'|[\[\]{}]|["\']')
 _JSON_PRIMITIVE = re.compile(r"[^ \[\]{},]+")
 _CLOSERS = {"[": "]", "{": "}"}
+
+
+SNBT_TEXT_COMPONENTS = (1, 21, 5)  # 25w02a: text components in commands are SNBT, not JSON
+
+
+def text_component(r: Reader) -> str:
+    """A text component, as written: strict JSON before 1.21.5 (the game's JsonReader is not
+    lenient), SNBT from 1.21.5."""
+    start = r.pos
+    span = json_span(r, "text component")
+    if r.version >= SNBT_TEXT_COMPONENTS:
+        inner = Reader(span, r.loc_at(start), r.version)
+        try:
+            snbt.value(inner)
+        except ParseError as error:
+            r.fail(f"invalid SNBT text component: {error.message}", start + error.pos)
+        if inner.pos != len(span):
+            r.fail("invalid SNBT text component: unexpected text after the value", start + inner.pos)
+        return span
+    try:
+        json.loads(span)
+    except ValueError as error:
+        pos = getattr(error, "pos", 0)
+        r.fail(f"invalid JSON text: {getattr(error, 'msg', str(error))}", start + pos)
+    return span
 
 
 def json_span(r: Reader, what: str = "JSON text") -> str:

@@ -4,7 +4,7 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import json_span
+from ..arguments import text_component
 from ..reader import Reader
 from ..selectors import AT_N, selector, target
 
@@ -30,8 +30,8 @@ def say(r: Reader, loc) -> ast.Command:
 def tellraw(r: Reader, loc) -> ast.Command:
     r.space("players")
     who = target(r, players=True)
-    r.space("JSON text")
-    component = json_span(r)
+    r.space("text component")
+    component = text_component(r)
     r.finish()
     return ast.Tellraw(loc, who, component)
 

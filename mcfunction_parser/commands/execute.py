@@ -13,6 +13,7 @@ from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, float_range, int_range, 
                          vec3)
 from ..nbt_path import nbt_path
 from ..reader import Reader, show
+from ..snbt import compound
 from ..selectors import target
 from .data_targets import data_target
 from .dispatch import command
@@ -33,7 +34,7 @@ def block_predicate(r: Reader) -> str:
     if r.peek() == "[":
         _bracketed(r, "[", "]", "block states")
     if r.peek() == "{":
-        json_span(r, "block NBT")
+        compound(r)
     return r.text[start:r.pos]
 
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, json_span, objective, objective_too_long, plain_holder,
-                         score_holder)
+from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, objective, objective_too_long, plain_holder,
+                         score_holder, text_component)
 from ..features import version_text
 from ..reader import INT_MAX, INT_MIN, Reader, show
 from ..selectors import is_single
@@ -55,7 +55,7 @@ def _obj_add(r, loc, action):
     name = objective(r)
     r.space("criterion")
     criterion = _criterion(r)
-    display = json_span(r) if r.optional_space() else None
+    display = text_component(r) if r.optional_space() else None
     r.finish()
     return ast.ObjectivesAdd(loc, name, criterion, display)
 
@@ -81,7 +81,7 @@ def _obj_modify(r, loc, action):
         return ast.ObjectivesModify(loc, name, field, value)
     r.space("value")
     if field == "displayname":
-        value = json_span(r)
+        value = text_component(r)
     elif field == "rendertype":
         value = r.literal(("hearts", "integer"), "render type")
     else:

@@ -99,3 +99,19 @@ def test_high_permission_commands_warn_and_parse():
     cmd, diags = parse_command("tick rate 40", Loc("t", 1, 1))
     assert isinstance(cmd, ast.GenericCommand)
     assert [d.severity for d in diags] == ["warning"] and "permission level 3" in diags[0].message
+
+
+def test_text_components_are_strict_json_before_1_21_5():
+    # ComponentArgument reads with a non-lenient JsonReader (decompiled Component.Serializer.fromJson)
+    text = 'tellraw @a {"text":"a" "color":"red"}'
+    d = parse_err(text)
+    assert "invalid JSON text" in d.message and d.col == text.index('"color"') + 1
+    assert "invalid JSON text" in parse_err("tellraw @a {text:'a'}").message
+    assert "invalid JSON text" in parse_err('scoreboard objectives add o dummy {"text":"a",}').message
+    parse_ok('tellraw @a ["",{"text":"a","bold":true},"b"]')
+
+
+def test_text_components_are_snbt_from_1_21_5():
+    assert parse_ok("tellraw @a {text:'a',color:red}", (1, 21, 5)).text == "{text:'a',color:red}"
+    parse_ok('tellraw @a ["",{"text":"a"}]', (1, 21, 5))
+    assert "SNBT text component" in parse_err("tellraw @a {text:}", (1, 21, 5)).message
