@@ -89,7 +89,8 @@ def _parse_until(text: str) -> Until:
 @click.command("run", cls=_OrderedCommand)
 @click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False))
 @click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run.")
-@click.option("--call", multiple=True, metavar="FN", help="Call a function (as the server) before ticking.")
+@click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
+              help="Call a function (as the server) before ticking; macro arguments in SNBT.")
 @click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking.")
 @click.option("--watch", multiple=True, metavar='"HOLDER OBJ"', help="Report this score (and per tick in --csv).")
 @click.option("--until", metavar='"HOLDER OBJ RANGE"', help="Stop after the tick where the score is in RANGE.")
@@ -101,6 +102,7 @@ def _parse_until(text: str) -> Until:
 def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version) -> None:
     """Emulate PACKS: apply --set and --call in order, then run --ticks ticks."""
     sets = [_parse_set(s) for s in set_]
+    calls = [_parse_call(c) for c in call]
     watches = [_parse_watch(w) for w in watch]
     stop = _parse_until(until) if until else None
     if stop and stop.watch not in watches:
@@ -115,7 +117,7 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
             click.echo(diag.format(), err=True)
 
     started = time.perf_counter()
-    _apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, list(call))
+    _apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
     rows = _tick(emu, ticks, watches, stop)
     wall = time.perf_counter() - started
 
@@ -130,14 +132,31 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
             writer.writerows(rows)
 
 
-def _apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[str]) -> None:
+def _parse_call(text: str) -> tuple[str, object]:
+    """``FN`` or ``FN {key: value}`` (macro arguments in SNBT, as after ``function``)."""
+    if " " not in text.strip():
+        return text.strip(), None
+    from mcfunction_parser.ast import FunctionCall
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+
+    cmd, diagnostics = parse_command(f"function {text.strip()}", Loc("--call", 1, 1))
+    errors = [d for d in diagnostics if d.severity == "error"]
+    if errors or not isinstance(cmd, FunctionCall) or cmd.is_tag or cmd.with_source is not None:
+        reason = errors[0].message if errors else "expected FN or \"FN {key: value}\""
+        raise click.BadParameter(f"--call {text!r}: {reason}")
+    return cmd.function, cmd.arguments
+
+
+def _apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[str, object]]) -> None:
     sets_iter, calls_iter = iter(sets), iter(calls)
     for name in order:
         if name == "set_":
             holder, objective, value = next(sets_iter)
             emu.set_score(holder, objective, value)
         else:
-            emu.call(next(calls_iter))
+            function, arguments = next(calls_iter)
+            emu.call(function, arguments=arguments)
 
 
 def _tick(emu: Emulator, ticks: int, watches: list[Watch], stop: Until | None) -> list[list]:

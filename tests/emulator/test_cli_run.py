@@ -100,3 +100,12 @@ def test_runtime_errors_are_reported_not_raised(pack, tmp_path):
     report = json.loads(out.read_text())
     assert report["diagnostics"][0]["message"] == "Unknown function t:missing"
     assert report["scores"]["o"]["#n"] == 10
+
+
+def test_call_with_macro_arguments(tmp_path):
+    pack = str(write_pack(tmp_path / "pack", {**FUNCTIONS, "t:m": "$scoreboard players set #m o $(v)"}, TAGS))
+    out = tmp_path / "r.json"
+    invoke(pack, "--ticks", "1", "--call", "t:load", "--call", "t:m {v: 12}", "--json", str(out))
+    assert json.loads(out.read_text())["scores"]["o"]["#m"] == 12
+    result = invoke(pack, "--call", "t:m {v: }")
+    assert result.exit_code == 2 and "--call" in result.output
