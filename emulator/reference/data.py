@@ -18,12 +18,12 @@ from .source import Source
 
 
 @contextmanager
-def _world_failures():
+def _world_failures(report: bool = False):
     """The world library's failures are command failures with the same message."""
     try:
         yield
     except WorldFailure as failure:
-        raise CommandFailure(failure.message) from None
+        raise CommandFailure(failure.message, report) from None
 
 
 def storage_root(env, target: ast.DataTarget, create: bool) -> Compound:
@@ -96,16 +96,17 @@ def count_matching(env, cond: ast.IfData) -> int:
 
 
 def macro_arguments(env, target: ast.DataTarget, path: ast.NbtPath | None) -> Compound:
-    """``function F with storage ID [PATH]``: the compound at PATH (FunctionCommand.getArgumentTag)."""
+    """``function F with storage ID [PATH]``: the compound at PATH (FunctionCommand.getArgumentTag).
+    Failures are reported: like a missing macro key, they are pack mistakes."""
     root = storage_root(env, target, create=False)
     if path is None:
         return root
-    with _world_failures():
+    with _world_failures(report=True):
         found = nbt_ops.get(root, path)
     if len(found) > 1:
-        raise CommandFailure("This argument accepts a single NBT value")
+        raise CommandFailure("This argument accepts a single NBT value", report=True)
     if not isinstance(found[0], dict):
-        raise CommandFailure(f"Expected argument to be a compound, got {type(found[0]).__name__}")
+        raise CommandFailure(f"Expected argument to be a compound, got {type(found[0]).__name__}", report=True)
     return found[0]
 
 
