@@ -1,0 +1,76 @@
+"""PackTest directives: ``# @name [value]`` comments at the start of a test file (before its first
+command), as documented in misode/packtest's README:
+
+- ``@template ID``: structure placed for the test (default: an empty 1x1x1 structure). The
+  emulator has no block world yet, so the template is recorded, not placed.
+- ``@timeout N``: ticks before the test fails (default 100).
+- ``@optional [true|false]``: the test may fail without failing the run (no value: true).
+- ``@dummy [POS]``: spawn a dummy player as ``@s`` (default ``~0.5 ~ ~0.5``).
+- ``@batch NAME``: the batch (default ``packtestBatch``).
+- ``@beforebatch CMD`` / ``@afterbatch CMD``: a command run before / after the batch, one per batch.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from mcfunction_parser.diagnostics import Diagnostic, Loc
+
+DEFAULT_TIMEOUT = 100
+DEFAULT_BATCH = "packtestBatch"
+DEFAULT_DUMMY_POS = "~0.5 ~ ~0.5"
+KNOWN = ("template", "timeout", "optional", "dummy", "batch", "beforebatch", "afterbatch")
+_DIRECTIVE = re.compile(r"#\s*@(\S*)\s*(.*)$")
+_RESOURCE = re.compile(r"(?:[a-z0-9_.-]+:)?[a-z0-9_./-]+")
+
+
+@dataclass
+class Directives:
+    template: str | None = None
+    timeout: int = DEFAULT_TIMEOUT
+    optional: bool = False
+    dummy: str | None = None  # the spawn position when @dummy is given
+    batch: str = DEFAULT_BATCH
+    before_batch: tuple[str, Loc] | None = None
+    after_batch: tuple[str, Loc] | None = None
+    errors: list[Diagnostic] = field(default_factory=list)
+
+
+def directive_match(line: str) -> re.Match | None:
+    return _DIRECTIVE.match(line.strip())
+
+
+def apply(directives: Directives, match: re.Match, loc: Loc, source_line: str) -> None:
+    """Apply one ``# @name value`` line; a bad one becomes an error in ``directives.errors``."""
+    name, value = match.group(1), match.group(2).strip()
+    error = _apply(directives, name, value, loc)
+    if error:
+        directives.errors.append(Diagnostic.at("error", error, loc, source_line))
+
+
+def _apply(d: Directives, name: str, value: str, loc: Loc) -> str | None:
+    if name == "template":
+        if not _RESOURCE.fullmatch(value):
+            return f"@template: expected a resource location, got {value!r}"
+        d.template = value
+    elif name == "timeout":
+        if not value.isdigit() or int(value) <= 0:
+            return f"@timeout: expected a positive number of ticks, got {value!r}"
+        d.timeout = int(value)
+    elif name == "optional":
+        if value not in ("", "true", "false"):
+            return f"@optional: expected true, false or nothing, got {value!r}"
+        d.optional = value != "false"
+    elif name == "dummy":
+        d.dummy = value or DEFAULT_DUMMY_POS
+    elif name == "batch":
+        if not value:
+            return "@batch: expected a batch name"
+        d.batch = value
+    elif name in ("beforebatch", "afterbatch"):
+        if not value:
+            return f"@{name}: expected a command"
+        setattr(d, "before_batch" if name == "beforebatch" else "after_batch", (value, loc))
+    else:
+        return f"unknown directive '@{name}': expected one of " + ", ".join("@" + k for k in KNOWN)
+    return None

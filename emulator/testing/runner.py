@@ -1,0 +1,177 @@
+"""Running test cases: each in a fresh world (its pack loaded, ``#minecraft:load`` run), steps in
+order, ``await`` ticking the world (``#minecraft:tick``, schedules) until the test's timeout."""
+from __future__ import annotations
+
+import os
+import re
+import time
+from collections.abc import Callable, Iterable
+from pathlib import Path
+
+from emulator.api import Emulator
+from emulator.runtime import Runtime
+from emulator.state import WorldState
+from emulator.testing.discovery import TestFile
+from emulator.testing.results import FAILED, PASSED, SKIPPED, Summary, TestResult
+from emulator.testing.testfile import Check, Delay, Dummy, Fail, Run, Succeed, TestCase, read_test
+from mcfunction_parser.diagnostics import Diagnostic
+from mcfunction_parser.pack import load_packs
+
+_SCORE_MATCHES = re.compile(r"score (\S+) (\S+) matches (\S+)$")
+_SCORE_COMPARE = re.compile(r"score (\S+) (\S+) (<=|>=|=|<|>) (\S+) (\S+)$")
+
+
+class _Verdict(Exception):
+    def __init__(self, status: str, message: str = "", line: int | None = None) -> None:
+        super().__init__(message)
+        self.status, self.message, self.line = status, message, line
+
+
+def shown_path(path: Path) -> str:
+    """A path as messages show it: relative to the working folder when inside it."""
+    rel = os.path.relpath(path)
+    return path.as_posix() if rel.startswith("..") else Path(rel).as_posix()
+
+
+def load_suite(files: list[TestFile], pattern: str | None = None):
+    """Parse each pack once and its test files; yield ``(packs, [TestCase])`` per pack with the
+    generated functions added to ``packs.functions``."""
+    by_pack: dict[Path, list[TestFile]] = {}
+    for tf in files:
+        if pattern is None or pattern.lower() in tf.id.lower():
+            by_pack.setdefault(tf.pack_root, []).append(tf)
+    key = 0
+    for root, pack_files in by_pack.items():
+        packs = load_packs([root])
+        cases = []
+        for tf in pack_files:
+            cases.append(read_test(tf.id, tf.path, shown_path(tf.path), f"t{key}", packs.version))
+            key += 1
+        for case in cases:
+            packs.functions.update(case.functions)
+        yield packs, _in_batches(cases)
+
+
+def _in_batches(cases: list[TestCase]) -> list[TestCase]:
+    """Order by batch (first appearance); a second, different @beforebatch/@afterbatch in a batch
+    is an error of the test giving it (PackTest allows one per batch)."""
+    batches: dict[str, list[TestCase]] = {}
+    hooks: dict[tuple[str, str], str] = {}
+    for case in cases:
+        d = case.directives
+        for name, given in (("@beforebatch", d.before_batch), ("@afterbatch", d.after_batch)):
+            if given is None:
+                continue
+            first = hooks.setdefault((d.batch, name), given[0])
+            if first != given[0]:
+                message = f"{name}: batch {d.batch!r} already has {first!r}"
+                case.errors.append(Diagnostic.at("error", message, given[1]))
+        batches.setdefault(d.batch, []).append(case)
+    return [case for batch in batches.values() for case in batch]
+
+
+def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None = None,
+              on_result: Callable[[TestResult], None] | None = None, on_load=None) -> Summary:
+    """Run every test in ``files`` (those whose id contains ``pattern``, case-insensitively)."""
+    summary = Summary()
+    for packs, cases in load_suite(files, pattern):
+        if on_load is not None:
+            on_load(packs)
+        for case in cases:
+            result = run_case(case, packs, backend)
+            summary.results.append(result)
+            if on_result is not None:
+                on_result(result)
+    return summary
+
+
+def fresh_world(packs, backend: str) -> Emulator:
+    """An emulator on already parsed ``packs`` with an empty world (what Emulator.load does after
+    parsing), then ``#minecraft:load`` run as the server's first tick would."""
+    emu = Emulator(backend=backend)
+    emu.packs = packs
+    emu.state = WorldState()
+    emu.backend.load(packs, emu.state, False)
+    emu.runtime = Runtime(emu.backend, packs, emu.state)
+    emu.call("#minecraft:load")
+    emu.runtime.loaded = True
+    return emu
+
+
+def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
+    result = TestResult(case.id, case.path, PASSED, optional=case.directives.optional)
+    if case.errors:
+        first = case.errors[0]
+        result.status, result.message, result.line = FAILED, first.message, first.line
+        result.details = [d.format() for d in case.errors]
+        return result
+    if case.needs_dummy:
+        result.status = SKIPPED
+        result.message = "dummy players need player entities, which the emulator does not model yet"
+        return result
+    started = time.perf_counter()
+    emu = fresh_world(packs, backend)
+    if case.before_batch:
+        emu.call(case.before_batch)
+    try:
+        _run_steps(emu, case, case.steps)
+    except _Verdict as verdict:
+        result.status, result.message, result.line = verdict.status, verdict.message, verdict.line
+    if case.after_batch:
+        emu.call(case.after_batch)
+    result.ticks = emu.ticks
+    result.seconds = time.perf_counter() - started
+    if result.status != PASSED:
+        result.details = [d.format() for d in emu.diagnostics if d.severity == "error"]
+    return result
+
+
+def _run_steps(emu: Emulator, case: TestCase, steps: Iterable) -> None:
+    timeout = case.directives.timeout
+    for step in steps:
+        if step.gate and emu.call(step.gate) != 1:
+            continue
+        if isinstance(step, Run):
+            emu.call(step.function)
+        elif isinstance(step, Check) and step.mode == "assert":
+            if emu.call(step.function) != 1:
+                raise _Verdict(FAILED, describe_failure(emu, step), step.loc.line)
+        elif isinstance(step, Check):
+            while emu.call(step.function) != 1:
+                _tick_or_time_out(emu, timeout, step, describe_failure(emu, step))
+        elif isinstance(step, Delay):
+            for _ in range(step.ticks):
+                _tick_or_time_out(emu, timeout, step, f"still in 'await delay {step.ticks}'")
+        elif isinstance(step, Fail):
+            raise _Verdict(FAILED, step.message, step.loc.line)
+        elif isinstance(step, Succeed):
+            raise _Verdict(PASSED)
+        elif isinstance(step, Dummy):  # skipped before running (needs_dummy)
+            raise AssertionError("dummy steps never run")
+
+
+def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
+    if emu.ticks >= timeout:
+        raise _Verdict(FAILED, f"Timed out after {timeout} ticks: {waiting}", step.loc.line)
+    emu.tick()
+
+
+def describe_failure(emu: Emulator, check: Check) -> str:
+    """PackTest's message for a failed score condition (ScoreAssertion.java); others name the
+    condition."""
+    expect = "Did not expect" if check.negated else "Expected"
+    match = _SCORE_MATCHES.match(check.condition)
+    if match:
+        holder, objective, rng = match.groups()
+        return f"{expect} score {holder} {objective} to match {rng}, found {_value(emu, holder, objective)}"
+    match = _SCORE_COMPARE.match(check.condition)
+    if match:
+        holder, objective, op, source, source_objective = match.groups()
+        return (f"{expect} score {holder} {objective} {op} {source} {source_objective}, found "
+                f"{_value(emu, holder, objective)} {op} {_value(emu, source, source_objective)}")
+    return f"{expect} {check.condition}"
+
+
+def _value(emu: Emulator, holder: str, objective: str) -> str:
+    value = emu.score(holder, objective)
+    return "undefined" if value is None else str(value)

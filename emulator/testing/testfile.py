@@ -1,0 +1,243 @@
+"""Reading one PackTest test file into a :class:`TestCase`: its directives and its steps.
+
+Ordinary lines are parsed by the project parser (in place, so every location is the file's own)
+and grouped into generated functions, one per run of lines between test commands. The test
+commands (``assert``, ``await``, ``fail``, ``succeed``, ``dummy``), also after
+``execute ... run``, become steps. A condition is checked by a generated function
+``execute if|unless COND run return 1`` / ``return 0``, so it means exactly what ``execute if``
+means in the emulator; an ``execute`` prefix becomes a generated gate ``PREFIX run return 1``
+(the step runs once when the gate passes; the prefix's context does not reach the step).
+"""
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from emulator.testing.directives import Directives, apply, directive_match
+from mcfunction_parser.ast import Command, Function
+from mcfunction_parser.diagnostics import Diagnostic, Loc
+from mcfunction_parser.parse import parse_command, parse_function
+
+GENERATED_NAMESPACE = "dpemu.test"
+# the conditions of `execute if` (PackTest's own `chat` needs a chat recorder the emulator lacks)
+CONDITIONS = ("biome", "block", "blocks", "data", "dimension", "entity", "function", "items", "loaded",
+              "predicate", "score")
+_TEST_COMMAND = re.compile(r"(assert|await|fail|succeed|dummy)(?=\s|$)")
+_EXECUTE_PREFIX = re.compile(r"(execute\s.*?)\s+run\s+(?=(?:assert|await|fail|succeed|dummy)(?:\s|$))")
+_TIME = re.compile(r"(\d+(?:\.\d+)?|\.\d+)([tsd]?)")
+_TIME_UNITS = {"": 1, "t": 1, "s": 20, "d": 24000}
+
+
+@dataclass(frozen=True)
+class Step:
+    loc: Loc
+    gate: str | None  # generated function whose result 1 lets the step run
+
+
+@dataclass(frozen=True)
+class Run(Step):
+    function: str
+
+
+@dataclass(frozen=True)
+class Check(Step):
+    mode: str  # "assert" or "await"
+    negated: bool
+    condition: str
+    function: str
+
+
+@dataclass(frozen=True)
+class Delay(Step):
+    ticks: int
+
+
+@dataclass(frozen=True)
+class Fail(Step):
+    message: str
+
+
+@dataclass(frozen=True)
+class Succeed(Step):
+    pass
+
+
+@dataclass(frozen=True)
+class Dummy(Step):
+    pass
+
+
+@dataclass
+class TestCase:
+    id: str
+    path: str
+    directives: Directives
+    steps: list[Step] = field(default_factory=list)
+    functions: dict[str, Function] = field(default_factory=dict)  # generated, by id
+    before_batch: str | None = None  # generated function of @beforebatch
+    after_batch: str | None = None  # generated function of @afterbatch
+    errors: list[Diagnostic] = field(default_factory=list)  # the test cannot run
+
+    @property
+    def needs_dummy(self) -> bool:
+        return self.directives.dummy is not None or any(isinstance(s, Dummy) for s in self.steps)
+
+
+class _Builder:
+    def __init__(self, case: TestCase, key: str, lines: list[str], version) -> None:
+        self.case, self.key, self.lines, self.version = case, key, lines, version
+
+    def function(self, commands: list[Command]) -> str:
+        fid = f"{GENERATED_NAMESPACE}:{self.key}/{len(self.case.functions)}"
+        last = max(c.loc.line for c in commands)
+        self.case.functions[fid] = Function(fid, self.case.path, tuple(commands), last)
+        return fid
+
+    def command(self, text: str, line: int, text_col: int, shown_col: int) -> Command | None:
+        """Parse generated ``text`` whose character ``text_col`` (1-based) stands for column
+        ``shown_col`` of the file's line, so diagnostics point into the file."""
+        cmd, diagnostics = parse_command(text, Loc(self.case.path, line, 1), self.version)
+        for d in diagnostics:
+            if d.severity == "error":
+                col = max(1, (d.col or 1) - text_col + shown_col)
+                self.error(d.message, line, col)
+        return cmd if not any(d.severity == "error" for d in diagnostics) else None
+
+    def error(self, message: str, line: int, col: int) -> None:
+        self.case.errors.append(Diagnostic.at("error", message, Loc(self.case.path, line, col), self.lines[line - 1]))
+
+
+def read_test(test_id: str, path: Path, shown: str, key: str, version) -> TestCase:
+    """Read the test file ``path`` (shown as ``shown`` in messages); ``key`` makes the generated
+    function ids unique."""
+    text = path.read_text(encoding="utf-8-sig")
+    lines = text.splitlines()
+    case = TestCase(test_id, shown, Directives())
+    builder = _Builder(case, key, lines, version)
+    test_lines = _read_header_and_classify(case, lines)
+    ordinary = "".join(("" if i + 1 in test_lines else line) + "\n" for i, line in enumerate(lines))
+    function, diagnostics = parse_function(ordinary, shown, f"{GENERATED_NAMESPACE}:{key}", version)
+    case.errors.extend(d for d in diagnostics if d.severity == "error")
+    case.errors.extend(case.directives.errors)
+    by_line = {c.loc.line: c for c in function.commands}
+    pending: list[Command] = []
+    for number in range(1, len(lines) + 1):
+        if number in by_line:
+            pending.append(by_line[number])
+        elif number in test_lines:
+            if pending:
+                case.steps.append(Run(pending[0].loc, None, builder.function(pending)))
+                pending = []
+            step = _test_step(builder, number, lines[number - 1])
+            if step is not None:
+                case.steps.append(step)
+    if pending:
+        case.steps.append(Run(pending[0].loc, None, builder.function(pending)))
+    case.before_batch = _batch_command(builder, case.directives.before_batch)
+    case.after_batch = _batch_command(builder, case.directives.after_batch)
+    return case
+
+
+def _batch_command(b: _Builder, given: tuple[str, Loc] | None) -> str | None:
+    if given is None:
+        return None
+    text, loc = given
+    shown_col = b.lines[loc.line - 1].index(text) + 1
+    cmd = b.command(text, loc.line, 1, shown_col)
+    return b.function([cmd]) if cmd is not None else None
+
+
+def _read_header_and_classify(case: TestCase, lines: list[str]) -> set[int]:
+    """Apply the header's directives; return the numbers of the lines holding test commands."""
+    in_header = True
+    test_lines: set[int] = set()
+    for number, line in enumerate(lines, 1):
+        stripped = line.strip()
+        if not stripped or stripped.startswith("#"):
+            match = directive_match(stripped) if in_header else None
+            if match:
+                apply(case.directives, match, Loc(case.path, number, line.index("#") + 1), line)
+            continue
+        in_header = False
+        if _TEST_COMMAND.match(stripped) or _EXECUTE_PREFIX.match(stripped):
+            test_lines.add(number)
+    return test_lines
+
+
+def _test_step(b: _Builder, number: int, line: str) -> Step | None:
+    col = len(line) - len(line.lstrip()) + 1
+    text = line.strip()
+    gate = None
+    prefix = _EXECUTE_PREFIX.match(text)
+    if prefix:
+        gate_cmd = b.command(prefix.group(1) + " run return 1", number, 1, col)
+        if gate_cmd is None:
+            return None
+        gate = b.function([gate_cmd])
+        col += prefix.end()
+        text = text[prefix.end():]
+    loc = Loc(b.case.path, number, col)
+    word, _, rest = text.partition(" ")
+    rest_col = col + len(word) + 1 + (len(rest) - len(rest.lstrip()))
+    rest = rest.strip()
+    if word == "succeed":
+        return Succeed(loc, gate) if not rest else _bad(b, "succeed takes no arguments", number, rest_col)
+    if word == "fail":
+        return Fail(loc, gate, _text_component(rest)) if rest else _bad(b, "fail: expected a message", number, rest_col)
+    if word == "dummy":
+        return Dummy(loc, gate)
+    if word == "await" and rest.split(" ", 1)[0] == "delay":
+        return _delay(b, loc, gate, rest[len("delay"):].strip(), number, rest_col + len("delay "))
+    negated = rest.split(" ", 1)[0] == "not"
+    if negated:
+        rest_col += len("not")
+        rest = rest[len("not"):]
+        rest_col += len(rest) - len(rest.lstrip())
+        rest = rest.strip()
+    return _check(b, loc, gate, word, negated, rest, number, rest_col)
+
+
+def _check(b: _Builder, loc: Loc, gate, mode: str, negated: bool, condition: str, number: int, col: int):
+    kind = condition.split(" ", 1)[0]
+    if kind not in CONDITIONS:
+        return _bad(b, f"{mode}: unknown condition {kind!r}: expected one of " + ", ".join(CONDITIONS), number, col)
+    head = f"execute {'unless' if negated else 'if'} "
+    cmd = b.command(head + condition + " run return 1", number, len(head) + 1, col)
+    fallback = b.command("return 0", number, 1, col)
+    if cmd is None or fallback is None:
+        return None
+    return Check(loc, gate, mode, negated, condition, b.function([cmd, fallback]))
+
+
+def _delay(b: _Builder, loc: Loc, gate, text: str, number: int, col: int):
+    match = _TIME.fullmatch(text)
+    if not match:
+        return _bad(b, f"await delay: expected a time such as 20, 20t, 1s or 1d, got {text!r}", number, col)
+    # TimeArgument: round(value * unit ticks)
+    return Delay(loc, gate, round(float(match.group(1)) * _TIME_UNITS[match.group(2)]))
+
+
+def _bad(b: _Builder, message: str, number: int, col: int) -> None:
+    b.error(message, number, col)
+    return None
+
+
+def _text_component(text: str) -> str:
+    """The plain text of a ``fail`` message: a JSON/SNBT string or ``{"text": ...}``, else as written."""
+    try:
+        value = json.loads(text)
+    except ValueError:
+        return text
+    return _plain(value)
+
+
+def _plain(value) -> str:
+    if isinstance(value, str):
+        return value
+    if isinstance(value, list):
+        return "".join(_plain(v) for v in value)
+    if isinstance(value, dict):
+        return str(value.get("text", value.get("translate", ""))) + "".join(_plain(v) for v in value.get("extra", []))
+    return str(value)
