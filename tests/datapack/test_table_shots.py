@@ -4,6 +4,7 @@ resolve) against the float reference's event-driven simulation, plus the shot AP
 Runs on the mini runner, whose entities are named score holders with tags (the emulator does not
 model entities yet)."""
 import math
+import re
 
 import numpy as np
 import pytest
@@ -11,6 +12,7 @@ import pytest
 from emulator.physics.ball import Ball
 from emulator.physics.cue import Shot, strike
 from emulator.physics.simulator import simulate_ticks
+from pack_paths import PACK
 from scoreboard_runner import MiniScoreboard
 
 TWO_R = 57150
@@ -162,3 +164,36 @@ def test_idle_tick_costs_at_most_50_commands():
     before = board.commands
     board.call("pool:tick")
     assert board.commands - before <= 50
+
+
+def rack_positions():
+    """The pack's own rack (pool:table/rack's macro calls), cue ball first."""
+    text = (PACK / "data/pool/function/table/rack.mcfunction").read_text()
+    return [(int(x), int(z)) for x, z in re.findall(r"id:\d+,x:(\d+),z:(\d+)", text)]
+
+
+def test_break_keeps_every_ball_on_the_table_and_apart():
+    start = rack_positions()
+    board = table(start)
+    shoot(board, angle=0, speed=6000)
+    n = len(start)
+    ticks = 0
+    while board.score("$resting", "pool.game") == 0 and ticks < 600:
+        board.call("pool:tick")
+        ticks += 1
+        in_play = [i for i in range(n) if board.score(f"ball{i}", "pool.state") != 3]
+        p = positions(board, n)
+        for i in in_play:
+            assert 28575 <= p[i][0] <= 2540000 - 28575 and 28575 <= p[i][1] <= 1270000 - 28575
+        for k, i in enumerate(in_play):
+            for j in in_play[k + 1:]:
+                assert np.linalg.norm(p[i] - p[j]) >= TWO_R - 2, (ticks, i, j)
+    assert board.score("$resting", "pool.game") == 1
+
+
+def test_command_cost_per_tick():
+    # measured with the mini runner's count (one per command, as the game's budget counts them)
+    board = table([(635000, 635000)])
+    shoot(board, angle=1000, speed=1500)
+    costs = play(board)
+    assert max(costs) <= 1500 and sum(costs) / len(costs) <= 400

@@ -37,7 +37,7 @@ scoreboard objectives add pool.dx dummy
 scoreboard objectives add pool.dz dummy
 scoreboard objectives add pool.spd dummy
 scoreboard objectives add pool.s dummy
-# state saved at the start of a sub-step (the chord start), restored to rewind to an event
+# state saved at the tick's start or at the ball's last event (time pool.bt), restored to rewind
 scoreboard objectives add pool.bx dummy
 scoreboard objectives add pool.bz dummy
 scoreboard objectives add pool.bvx dummy
@@ -49,6 +49,11 @@ scoreboard objectives add pool.btau dummy
 scoreboard objectives add pool.bs dummy
 scoreboard objectives add pool.bspd dummy
 scoreboard objectives add pool.bstate dummy
+scoreboard objectives add pool.bt dummy
+# the ball's chord in this tick: from (cx, cz) at time ct (1/10000 tick) to (x, z) at the tick's end
+scoreboard objectives add pool.cx dummy
+scoreboard objectives add pool.cz dummy
+scoreboard objectives add pool.ct dummy
 # the box around a ball's chord in a sub-step, grown by R (um)
 scoreboard objectives add pool.lx dummy
 scoreboard objectives add pool.hx dummy
@@ -81,6 +86,8 @@ scoreboard players set #100000000 pool.const 100000000
 # ball radius R = 28.575 mm; 2R = 57150 um
 scoreboard players set $R pool.const 28575
 scoreboard players set $2R pool.const 57150
+# centre distance at which the swept test reports a contact: 2R + 20 um (see pool:physics/sweep/pair)
+scoreboard players set $contact pool.const 57170
 # playing area 2.54 m x 1.27 m
 scoreboard players set $L pool.const 2540000
 scoreboard players set $W pool.const 1270000

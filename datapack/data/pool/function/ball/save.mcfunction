@@ -1,4 +1,4 @@
-# pool:ball/save — copy @s's changing state into the saved objectives (pool.b*).
+# pool:ball/save — copy @s's changing state into the saved objectives (pool.b*), at time #now.
 # The phase constants (ax az rx rz dx dz x0 z0) change only when a phase starts, which
 # pool:ball/advance redoes identically after a restore.
 scoreboard players operation @s pool.bx = @s pool.x
@@ -12,3 +12,4 @@ scoreboard players operation @s pool.btau = @s pool.tau
 scoreboard players operation @s pool.bs = @s pool.s
 scoreboard players operation @s pool.bspd = @s pool.spd
 scoreboard players operation @s pool.bstate = @s pool.state
+scoreboard players operation @s pool.bt = #now pool.tmp

@@ -1,8 +1,14 @@
-# pool:ball/trial — start of a sub-step for @s: mark it moving or not, save its state (the chord
-# start), advance it by #step to the sub-step's end (the chord end) and box the chord.
-# Reads: #step pool.tmp, @s scores. Writes: tag pool.moving, @s saved and current scores, box.
+# pool:ball/trial — start of a sub-step for @s. A dirty ball (just saved or resolved, at #now)
+# starts a new chord here, is advanced by #rem to the tick's end and boxed; a clean one keeps its
+# chord (and box) but moves the chord's start to #now.
+# Reads: #now #rem pool.tmp, @s scores. Writes: tags pool.moving pool.dirty, @s chord and state.
+execute if entity @s[tag=!pool.dirty] run return run function pool:ball/chord_start
+tag @s remove pool.dirty
 tag @s remove pool.moving
 execute if score @s pool.state matches 1..2 run tag @s add pool.moving
-function pool:ball/save
+scoreboard players operation @s pool.cx = @s pool.x
+scoreboard players operation @s pool.cz = @s pool.z
+scoreboard players operation @s pool.ct = #now pool.tmp
+scoreboard players operation #step pool.tmp = #rem pool.tmp
 function pool:ball/advance
 function pool:ball/chord_box

@@ -1,8 +1,11 @@
 # pool:physics/step — one tick of table physics: events found by swept tests are resolved in time
 # order within the tick (at most $max_events), then the displays follow the scores.
+# Every ball in play is saved at the tick's start (time 0) and marked dirty (needs a trial).
 # Reads/writes: every ball's scores; #now #events pool.tmp; $resting pool.game.
 scoreboard players set #now pool.tmp 0
 scoreboard players set #events pool.tmp 0
+execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/save
+tag @e[tag=pool.ball,scores={pool.state=0..2}] add pool.dirty
 function pool:physics/substep
 execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/display/place
 execute unless entity @e[tag=pool.ball,scores={pool.state=1..2}] run function pool:physics/at_rest

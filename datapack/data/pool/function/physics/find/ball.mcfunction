@@ -1,12 +1,12 @@
 # pool:physics/find/ball — earliest event of the moving ball @s in this sub-step: a rail or pocket
 # on its chord, or a contact with another ball; improves #best #kind and the event tags.
-# Reads: @s pool.id pool.bx pool.bz pool.x pool.z (chord) pool.lx pool.hx pool.lz pool.hz (its box),
+# Reads: @s pool.id pool.cx pool.cz pool.x pool.z (chord) pool.lx pool.hx pool.lz pool.hz (its box),
 # #best pool.tmp.
 # Writes: #best #kind (1 balls, 2 cushion, 3 pocket) #rail pool.tmp, tags pool.event (@s or the
 # first ball) and pool.event_b (the other ball); #a.* chord copies.
 scoreboard players operation #a.id pool.tmp = @s pool.id
-scoreboard players operation #a.bx pool.tmp = @s pool.bx
-scoreboard players operation #a.bz pool.tmp = @s pool.bz
+scoreboard players operation #a.bx pool.tmp = @s pool.cx
+scoreboard players operation #a.bz pool.tmp = @s pool.cz
 scoreboard players operation #a.ex pool.tmp = @s pool.x
 scoreboard players operation #a.ez pool.tmp = @s pool.z
 scoreboard players operation #a.lx pool.tmp = @s pool.lx

@@ -1,12 +1,12 @@
 # pool:physics/find/pair — swept contact test of ball @s (b) with the ball tagged pool.self (a).
-# Reads: #a.* chord and box, @s pool.bx pool.bz pool.x pool.z and box (a ball at rest has bx = x).
+# Reads: #a.* chord and box, @s pool.cx pool.cz pool.x pool.z and box (a ball at rest has cx = x).
 # Writes: #best #kind pool.tmp and the event tags when this contact is the earliest so far.
 execute if score @s pool.lx > #a.hx pool.tmp run return 0
 execute if score @s pool.hx < #a.lx pool.tmp run return 0
 execute if score @s pool.lz > #a.hz pool.tmp run return 0
 execute if score @s pool.hz < #a.lz pool.tmp run return 0
-scoreboard players operation #b.bx pool.tmp = @s pool.bx
-scoreboard players operation #b.bz pool.tmp = @s pool.bz
+scoreboard players operation #b.bx pool.tmp = @s pool.cx
+scoreboard players operation #b.bz pool.tmp = @s pool.cz
 scoreboard players operation #b.ex pool.tmp = @s pool.x
 scoreboard players operation #b.ez pool.tmp = @s pool.z
 function pool:physics/sweep/pair

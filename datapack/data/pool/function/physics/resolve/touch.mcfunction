@@ -1,6 +1,7 @@
-# pool:physics/resolve/touch — bring @s (a) and b (#b.*) to touching, |r_b - r_a| = 2R, by moving
-# both along their velocities by the same small time g / c (g = gap, c = closing speed): the
-# sweep's chords miss the curved sliding path by up to 0.6 mm, which would tilt the contact normal.
+# pool:physics/resolve/touch — bring @s (a) and b (#b.*) to touching, |r_b - r_a| = 2R + 10 um
+# (between 2R and the sweep's $contact), by moving both along their velocities by the same small
+# time g / c (g = gap, c = closing speed): the sweep's chords miss the curved sliding path by up to
+# 0.6 mm, which would tilt the contact normal.
 # Reads/writes: @s pool.x pool.z, #b.x #b.z pool.tmp; reads @s pool.vx pool.vz, #b.vx #b.vz.
 # Temporaries #g #c pool.tmp and the math library's.
 scoreboard players operation $x pool.math = #b.x pool.tmp
@@ -10,6 +11,7 @@ scoreboard players operation $z pool.math -= @s pool.z
 function pool:math/normalize
 scoreboard players operation #g pool.tmp = $len pool.math
 scoreboard players operation #g pool.tmp -= $2R pool.const
+scoreboard players remove #g pool.tmp 10
 scoreboard players operation $a pool.math = @s pool.vx
 scoreboard players operation $a pool.math -= #b.vx pool.tmp
 scoreboard players operation $b pool.math = $ux pool.math

@@ -4,7 +4,8 @@
 # Reads: #a.bx #a.bz #a.ex #a.ez #b.bx #b.bz #b.ex #b.ez pool.tmp (chord start, end, um).
 # Writes: #f pool.tmp (0..10000, or 10001 when they do not touch); temporaries #dx #dz #p #q #h.
 # With u = D/|D|: p = -d0.u is the distance to closest approach, q = d0 x u the miss distance;
-# contact comes at p - sqrt(4R^2 - q^2), taken 2 um early so that the balls never overlap.
+# contact comes at p - sqrt(D^2 - q^2) for D = $contact = 2R + 20 um: early enough that the
+# rounded unit vector (1e-4) never lets balls overlap; the resolver then closes the gap.
 # The fraction's step is 1/10000 of the chords: at most 0.1 mm at 10 m/s head-on.
 scoreboard players set #f pool.tmp 10001
 scoreboard players operation #dx pool.tmp = #b.bx pool.tmp
@@ -45,19 +46,18 @@ scoreboard players operation $b pool.math = $ux pool.math
 function pool:math/mul_unit
 scoreboard players operation #q pool.tmp -= $out pool.math
 execute if score #q pool.tmp matches ..-1 run scoreboard players operation #q pool.tmp *= #-1 pool.const
-execute if score #q pool.tmp >= $2R pool.const run return 0
-# h = sqrt((2R - q)(2R + q)) = 2 sqrt((2R - q)((2R + q)/4)), rounded up by 2 um
-scoreboard players operation #h pool.tmp = $2R pool.const
+execute if score #q pool.tmp >= $contact pool.const run return 0
+# h = sqrt((D - q)(D + q)) = 2 sqrt((D - q)((D + q)/4))
+scoreboard players operation #h pool.tmp = $contact pool.const
 scoreboard players operation #h pool.tmp += #q pool.tmp
 scoreboard players set #c pool.tmp 4
 scoreboard players operation #h pool.tmp /= #c pool.tmp
-scoreboard players operation $in pool.math = $2R pool.const
+scoreboard players operation $in pool.math = $contact pool.const
 scoreboard players operation $in pool.math -= #q pool.tmp
 scoreboard players operation $in pool.math *= #h pool.tmp
 function pool:math/isqrt
 scoreboard players operation #p pool.tmp -= $out pool.math
 scoreboard players operation #p pool.tmp -= $out pool.math
-scoreboard players remove #p pool.tmp 2
 execute if score #p pool.tmp > $len pool.math run return 0
 execute if score #p pool.tmp matches ..-1 run scoreboard players set #p pool.tmp 0
 scoreboard players operation $a pool.math = #p pool.tmp
