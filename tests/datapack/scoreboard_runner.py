@@ -3,12 +3,14 @@
 `MiniScoreboard` interprets only the command subset the pool datapack's physics uses, with the
 Java semantics of `emulator.semantics`: scoreboard players set/add/remove/operation/get,
 `execute as|if|unless|store result entity ... run`, `function` (with macro arguments), `return`,
-`tag`, and entities reduced to named score holders with tags (`@s[..]`, `@e[tag=..,scores={..},
-limit=..]`; no players, no summon). It is the stepping stone used until `emulator.Emulator` runs
+`tag`, and entities reduced to named score holders with tags, a position and a rotation
+(`@s[..]`, `@e[tag=..,scores={..},limit=..]`, `@a[..]` for the entities marked as players;
+no summon). It is the stepping stone used until `emulator.Emulator` runs
 entities; the math tests run on every runner available. Any int32 wrap raises `Overflow`.
 """
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 
@@ -32,6 +34,8 @@ class Entity:
     name: str                      # its score holder name
     tags: set = field(default_factory=set)
     pos: list = field(default_factory=lambda: [0.0, 0.0, 0.0])
+    rotation: list = field(default_factory=lambda: [0.0, 0.0])
+    player: bool = False
 
 
 def _in_range(value: int | None, text: str) -> bool:
@@ -61,8 +65,8 @@ class MiniScoreboard:
     def score(self, holder: str, objective: str) -> int:
         return self.scores[holder, objective]
 
-    def add_entity(self, name: str, *tags: str) -> Entity:
-        entity = Entity(name, set(tags))
+    def add_entity(self, name: str, *tags: str, player: bool = False) -> Entity:
+        entity = Entity(name, set(tags), player=player)
         self.entities.append(entity)
         return entity
 
@@ -150,6 +154,15 @@ class MiniScoreboard:
                 for entity in self._select(words[1], executor):
                     ended |= self._execute(words[2:], entity.name)
                 return ended
+            if words[:3] == ["store", "result", "score"]:
+                (holder,) = self._holders(words[3], executor)
+                get = words[words.index("run") + 1:]
+                assert get[:3] == ["data", "get", "entity"] and get[4].startswith("Rotation["), get
+                (entity,) = self._select(get[3], executor)
+                self.commands += 1
+                value = entity.rotation[int(get[4][len("Rotation["):-1])] * float(get[5])
+                self.scores[holder, words[4]] = math.floor(value)
+                return False
             if words[0] == "store":
                 (entity,) = self._select(words[3], executor)
                 axis = int(words[4][len("Pos["):-1])
@@ -189,10 +202,10 @@ class MiniScoreboard:
             assert executor is not None, "@s used without an executor"
             chosen = [e for e in self.entities if e.name == executor] or [Entity(executor)]
         elif selector.startswith("@a"):
-            return []
+            chosen = [e for e in self.entities if e.player]
         else:
             assert selector.startswith("@e"), selector
-            chosen = list(self.entities)
+            chosen = [e for e in self.entities if not e.player]
         limit = None
         for key, value in re.findall(r"(\w+)=(\{[^}]*\}|[^,\]]+)", selector):
             if key == "tag":

@@ -197,3 +197,30 @@ def test_command_cost_per_tick():
     shoot(board, angle=1000, speed=1500)
     costs = play(board)
     assert max(costs) <= 1500 and sum(costs) / len(costs) <= 400
+
+
+def test_displays_follow_the_scores_from_the_table_corner():
+    board = table([(635000, 635000)])
+    for axis, value in zip("xyz", (100000, 64000, -20000)):      # corner at (100, 64, -20) blocks
+        board.set_score(f"$origin.{axis}", "pool.game", value)
+    shoot(board, angle=0, speed=1000)
+    board.call("pool:tick")
+    (ball,) = [e for e in board.entities if e.name == "ball0"]
+    x, z = board.score("ball0", "pool.x"), board.score("ball0", "pool.z")
+    assert ball.pos == pytest.approx([100 + x // 1000 / 1000, 64 + 28 / 1000, -20 + z // 1000 / 1000])
+
+
+@pytest.mark.parametrize("yaw,direction", [(-90.0, (1, 0)), (0.0, (0, 1)), (90.0, (-1, 0)),
+                                           (180.0, (0, -1)), (-45.0, (1, 1))])
+def test_trigger_strikes_along_the_players_view(yaw, direction):
+    # Minecraft's yaw: 0 faces south (+z), 90 west (-x), -90 east (+x)
+    board = table([(1270000, 635000)])
+    player = board.add_entity("Steve", player=True)
+    player.rotation = [yaw, 0.0]
+    board.set_score("Steve", "pool.power", 40)
+    board.call("pool:tick")
+    assert board.score("Steve", "pool.power") == 0
+    v = np.array([board.score("ball0", "pool.vx"), board.score("ball0", "pool.vz")], float)
+    assert np.linalg.norm(v) > 0
+    expected = np.array(direction, float) / np.linalg.norm(direction)
+    assert np.allclose(v / np.linalg.norm(v), expected, atol=1e-3)
