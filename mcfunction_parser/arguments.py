@@ -6,7 +6,7 @@ import json
 import re
 
 from . import snbt
-from .ast import Coord, FloatRange, IntRange, NameTarget, Vec2, Vec3, Wildcard
+from .ast import Coord, FloatRange, IntRange, NameTarget, Selector, Vec2, Vec3, Wildcard
 from .diagnostics import Loc
 from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, ParseError, Reader, show
 
@@ -204,6 +204,15 @@ def score_holder(r: Reader):
         r.fail(f"expected a score holder, got {show(r.rest_word())}")
     r.pos = start + len(word)
     return holder_from_word(word, r.loc_at(start))
+
+
+def single_score_holder(r: Reader):
+    """ScoreHolderArgument.scoreHolder(): a selector must select at most one entity ('*' still parses)."""
+    start = r.pos
+    holder = score_holder(r)
+    if type(holder) is Selector and not selectors.is_single(holder):
+        r.fail("only one score holder is allowed, but the selector allows more than one", start)
+    return holder
 
 
 # A score holder that is one plain word or an option-less selector, for one-regex fast paths.

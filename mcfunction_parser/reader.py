@@ -130,9 +130,12 @@ class Reader:
     def finish(self) -> None:
         """The command must end here."""
         if self.pos < self.end:
-            if self.text[self.pos] == " ":
-                self.fail(f"expected end of command, got {show(self.rest_word(self.pos + 1))}", self.pos + 1)
-            self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+            if self.text[self.pos] != " ":
+                self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+            extra = self.rest_word(self.pos + 1)
+            if extra:
+                self.fail(f"expected end of command, got '{extra}'", self.pos + 1)
+            self.fail("unexpected space: arguments are separated by exactly one space", self.pos)
 
     def rest_word(self, pos: int | None = None) -> str:
         return WORD.match(self.text, self.pos if pos is None else pos).group()

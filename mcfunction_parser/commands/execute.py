@@ -9,8 +9,8 @@ import re
 
 from .. import ast
 from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, float_range, int_range, json_span, objective,
-                         objective_too_long, plain_holder, resource_location, resource_or_tag, score_holder, vec2,
-                         vec3)
+                         objective_too_long, plain_holder, resource_location, resource_or_tag, score_holder,
+                         single_score_holder, vec2, vec3)
 from ..nbt_path import nbt_path
 from ..reader import Reader, show
 from ..snbt import compound
@@ -27,22 +27,23 @@ STORE_TYPES = ("byte", "short", "int", "long", "float", "double")
 _AXES = re.compile(r"[xyz]{1,3}")
 
 
+# BlockStateParser: [name=value,...] with optional whitespace; names and values are Brigadier strings
+_STATE = r"[ ]*[0-9A-Za-z_\-.+]+[ ]*=[ ]*[0-9A-Za-z_\-.+]+[ ]*"
+_BLOCK_STATES = re.compile(rf"\[(?:{_STATE}(?:,{_STATE})*)?[ ]*\]")
+
+
 def block_predicate(r: Reader) -> str:
     """A block id or #tag with optional ``[states]`` and ``{nbt}``, returned as written."""
     start = r.pos
     resource_or_tag(r, "block")
     if r.peek() == "[":
-        _bracketed(r, "[", "]", "block states")
+        m = _BLOCK_STATES.match(r.text, r.pos)
+        if m is None:
+            r.fail("invalid block states: expected [name=value,...]")
+        r.pos = m.end()
     if r.peek() == "{":
         compound(r)
     return r.text[start:r.pos]
-
-
-def _bracketed(r: Reader, opener: str, closer: str, what: str) -> None:
-    end = r.text.find(closer, r.pos)
-    if end < 0:
-        r.fail(f"unclosed '{opener}' in {what}")
-    r.pos = end + 1
 
 
 def _as(r, loc):
@@ -117,13 +118,13 @@ def _score_test_follows(op: str) -> str:
 
 
 def _if_score(r, loc, negated):
-    holder = score_holder(r)
+    holder = single_score_holder(r)
     r.space("objective")
     obj = objective(r)
     op = r.keyword_then_space(_SCORE_TESTS, "comparison", _score_test_follows)
     if op == "matches":
         return ast.IfScoreMatches(loc, negated, holder, obj, int_range(r))
-    source = score_holder(r)
+    source = single_score_holder(r)
     r.space("objective")
     return ast.IfScore(loc, negated, holder, obj, op, source, objective(r))
 
@@ -302,7 +303,7 @@ _FAST_SCORE_MATCHES = re.compile(rf" (if|unless) score {PLAIN_HOLDER} {PLAIN_OBJ
 
 def _fast_score_matches(r: Reader, sub_loc):
     m = _FAST_SCORE_MATCHES.match(r.text, r.pos)
-    if m is None or objective_too_long(m.group(3), r.version):
+    if m is None or m.group(2) in ("@a", "@e") or objective_too_long(m.group(3), r.version):
         return None
     holder = plain_holder(r, m.group(2), m.start(2))
     r.pos = m.end()

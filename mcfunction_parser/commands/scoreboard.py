@@ -5,10 +5,9 @@ import re
 
 from .. import ast
 from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, objective, objective_too_long, plain_holder,
-                         score_holder, text_component)
+                         score_holder, single_score_holder, text_component)
 from ..features import version_text
 from ..reader import INT_MAX, INT_MIN, Reader, show
-from ..selectors import is_single
 
 _SIMPLE_CRITERIA = frozenset((
     "dummy", "trigger", "deathCount", "playerKillCount", "totalKillCount", "health", "xp", "level",
@@ -108,14 +107,6 @@ _OBJECTIVE_ACTIONS = {
 }
 
 
-def _single_holder(r: Reader):
-    start = r.pos
-    holder = score_holder(r)
-    if isinstance(holder, ast.Selector) and not is_single(holder):
-        r.fail("only one score holder is allowed, but the selector allows more than one", start)
-    return holder
-
-
 # Fast paths for the two commands that dominate real packs, when every holder is a plain word or
 # an option-less selector: one regex, then the same helpers the general path uses. Anything else
 # (selectors with options, out-of-range numbers, errors) takes the general path.
@@ -173,7 +164,7 @@ def _pl_reset(r, loc, action):
 
 def _pl_get(r, loc, action):
     r.space("score holder")
-    holder = _single_holder(r)
+    holder = single_score_holder(r)
     r.space("objective")
     name = objective(r)
     r.finish()
@@ -207,7 +198,7 @@ def _pl_operation(r, loc, action):
 
 
 def _pl_list(r, loc, action):
-    holder = _single_holder(r) if r.optional_space() else None
+    holder = single_score_holder(r) if r.optional_space() else None
     r.finish()
     return ast.ScoreList(loc, holder)
 

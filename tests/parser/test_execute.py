@@ -153,3 +153,19 @@ def test_fast_score_matches_path_matches_the_general_path(kind, holder, objectiv
         execute_module._fast_score_matches = original
     assert fast[0] == general[0]
     assert [(d.col, d.message) for d in fast[1]] == [(d.col, d.message) for d in general[1]]
+
+
+def test_if_score_holders_must_be_single():
+    # ScoreHolderArgument.scoreHolder() rejects a selector that can select more than one entity
+    assert "only one score holder" in parse_err("execute if score @e[tag=a] x matches 1").message
+    assert "only one score holder" in parse_err("execute if score @s x = @a y").message
+    assert "only one score holder" in parse_err("execute unless score @a x matches 1").message
+    parse_ok("execute if score @e[tag=a,limit=1] x matches 1")
+    parse_ok("execute if score * x matches 1")
+
+
+def test_block_states_are_checked():
+    assert parse_ok("execute if block ~ ~ ~ minecraft:oak_stairs[ facing = east , half=top ]").subcommands[0].block \
+        == "minecraft:oak_stairs[ facing = east , half=top ]"
+    assert "block states" in parse_err("execute if block ~ ~ ~ stone[slab[type=top] run say x").message
+    assert "block states" in parse_err("execute if block ~ ~ ~ stone[facing] run say x").message

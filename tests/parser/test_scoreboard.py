@@ -147,3 +147,8 @@ def _same_as_general(text, version, fast_name):
         setattr(scoreboard, fast_name, original)
     assert fast[0] == general[0]
     assert [(d.col, d.message) for d in fast[1]] == [(d.col, d.message) for d in general[1]]
+
+
+def test_double_space_is_reported_as_such():
+    d = parse_err("scoreboard players set @s x 1  ")
+    assert "exactly one space" in d.message
