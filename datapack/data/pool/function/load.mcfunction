@@ -8,7 +8,7 @@
 #   spin            w = R (omega x up): velocity of the ball surface at the cloth in um/tick,
 #                   so the slip is u = v - w and the ball rolls when w = v;
 #                   side spin wy = R omega_y in um/tick (positive = counter-clockwise from above)
-#   unit vectors    x 10000
+#   unit vectors    x 10000 (a rolling ball's direction x 100000)
 #   rolling speed   0.01 um/tick; rolling distance 0.01 um
 #   time in a tick  1/10000 tick
 #   angles          1/100 degree (centidegrees)
@@ -54,7 +54,7 @@ scoreboard objectives add pool.bt dummy
 scoreboard objectives add pool.cx dummy
 scoreboard objectives add pool.cz dummy
 scoreboard objectives add pool.ct dummy
-# the box around a ball's chord in a sub-step, grown by R (um)
+# the box around a ball's chord in this tick, grown by R (um)
 scoreboard objectives add pool.lx dummy
 scoreboard objectives add pool.hx dummy
 scoreboard objectives add pool.lz dummy
@@ -98,13 +98,13 @@ scoreboard players set $side_open pool.const 65000
 scoreboard players set $mu_s_g pool.const 4905
 # rolling resistance mu_r g = 0.01 * 9.81 m/s^2 = 24525 (0.01 um/tick^2)
 scoreboard players set $mu_r_g pool.const 24525
-# side-spin decay (5/2) mu_sp g = 2.5 * 0.0127 * 9.81 m/s^2 = 779 um/tick^2
+# side-spin decay (5/2) mu_sp g = 2.5 * 0.0127 * 9.81 m/s^2 = 778.67 um/tick^2, rounded to 779
 scoreboard players set $spin_decay pool.const 779
 # cushion restitution e = 0.85 and friction mu_c = 0.2, both x 10000
 scoreboard players set $e_cushion pool.const 8500
 scoreboard players set $mu_cushion pool.const 2000
 
-# events resolved per tick at most (each costs a rewind of every ball)
+# events resolved per tick at most (each costs a new sweep of every moving ball)
 scoreboard players set $max_events pool.const 8
 
 # Game state (public): $resting pool.game is 1 when no ball moves; $pocketed counts pocketed balls
