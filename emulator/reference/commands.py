@@ -65,12 +65,12 @@ def schedule_clear(env, cmd: ast.ScheduleClear, source: Source, where) -> int:
 def time(env, cmd: ast.Time, source: Source, where) -> int:
     if cmd.action == "query" and cmd.query == "gametime":
         return env.state.gametime % INT_MAX
-    shown = cmd.action if cmd.value is None else f"{cmd.action} {cmd.value}"
-    raise unsupported(f"'time {shown}'")
+    raise unsupported(f"'time {cmd.action} {cmd.query or cmd.value}'")
 
 
 def not_modelled(env, cmd: ast.Command, source: Source, where) -> int:
-    env.warn_once(cmd, source, where)
+    name = getattr(cmd, "name", type(cmd).__name__)
+    env.warn_once(cmd, f"'{name}' is not emulated: it succeeds without effect", source)
     return 1
 
 

@@ -12,7 +12,7 @@ from emulator.world.errors import CommandFailure as WorldFailure
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound
 
-from .failure import CommandFailure, unsupported
+from .failure import CommandFailure
 from .queue import chain
 from .source import Source
 
@@ -29,7 +29,7 @@ def _world_failures(report: bool = False):
 def storage_root(env, target: ast.DataTarget, create: bool) -> Compound:
     """CommandStorage.get: a missing storage reads as an empty compound."""
     if not isinstance(target, ast.StorageData):
-        raise unsupported(f"{type(target).__name__.removesuffix('Data').lower()} data")
+        raise CommandFailure("entity and block data are not emulated yet", report=True)
     root = env.state.storage.get(target.id)
     if root is None:
         root = Compound()

@@ -291,14 +291,14 @@ class Interpreter:
             self.state.overflows.append(Overflow(self.state.tick, function, where, op, a, b, exact, stored))
         return stored
 
-    def warn_once(self, command: ast.Command, source: Source, where) -> None:
-        key = (where.path, where.line, where.col)
+    def warn_once(self, node, message: str, source: Source) -> None:
+        """A warning for something the emulator skips, once per command or stage in the source."""
+        key = (node.loc.path, node.loc.line, node.loc.col)
         if key in self._warned:
             return
         self._warned.add(key)
-        name = getattr(command, "name", type(command).__name__)
-        frames = source.activation.frames(where) if source.activation else ()
-        self.state.error(f"'{name}' is not emulated: it succeeds without effect", frames, severity="warning")
+        frames = source.activation.frames(node.loc) if source.activation else ()
+        self.state.error(message, frames, severity="warning")
 
     def _internal_error(self, action, exc: Exception) -> None:
         self.state.error(f"internal error in the reference backend: {type(exc).__name__}: {exc}", _where((None, action)))

@@ -10,7 +10,7 @@ from emulator.world.source import Source as WorldSource
 from mcfunction_parser import ast
 
 from . import conditions, data
-from .failure import CommandFailure, unsupported
+from .failure import CommandFailure
 from .holders import holder_names, select_entities
 from .queue import chain
 from .scoreboard import objective
@@ -28,8 +28,13 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
         return [source] if conditions.passes(env, sub, source) else []
     if isinstance(sub, ast.StoreScore):
         return [store_score(env, sub, source)]
-    if isinstance(sub, ast.StoreData):
+    if isinstance(sub, ast.StoreData) and isinstance(sub.target, ast.StorageData):
         return [data.store_data(env, sub, source)]
+    if isinstance(sub, ast.StoreData) and isinstance(sub.target, ast.EntityData):
+        select_entities(sub.target.target, source)  # EntityArgument.getEntity: none are modelled
+        raise CommandFailure("No entity was found")
+    if isinstance(sub, (ast.StoreData, ast.StoreBossbar)):
+        return [store_not_modelled(env, sub, source)]
     if isinstance(sub, (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity)):
         # each entity found gives a source; none are modelled yet (see holders.select_entities)
         return [source for _ in select_entities(sub.targets, source)]
@@ -49,7 +54,19 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
         return [source.with_context(pos=_world(source).aligned(sub.axes).pos)]
     if isinstance(sub, ast.ExIn):
         return [in_dimension(source, sub.dimension)]
-    raise unsupported(f"'{type(sub).__name__}'")
+    # summon, positioned over: the world is not modelled; going on unchanged keeps the scores
+    # the rest of the chain computes
+    env.warn_once(sub, f"'{type(sub).__name__}' is not emulated: the context is kept unchanged", source)
+    return [source]
+
+
+def store_not_modelled(env, sub: ast.Subcommand, source: Source) -> Source:
+    """``store`` into a block or a bossbar: the chain runs, the result goes nowhere (warned)."""
+
+    def store(success: bool, value: int) -> None:
+        env.warn_once(sub, "'store' into an entity, a block or a bossbar is not emulated yet", source)
+
+    return source.with_callback(chain(source.callback, store))
 
 
 def store_score(env, sub: ast.StoreScore, source: Source) -> Source:
