@@ -8,7 +8,7 @@ import re
 from . import snbt
 from .ast import Coord, FloatRange, IntRange, NameTarget, Selector, Vec2, Vec3, Wildcard
 from .diagnostics import Loc
-from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, ParseError, Reader, show
+from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, ParseError, Reader
 
 # ----------------------------------------------------------------------------- resource locations
 
@@ -28,7 +28,7 @@ def resource_location(r: Reader, what: str = "resource location") -> str:
         r.fail(f"invalid character '{text[end]}' in {what} (allowed: a-z 0-9 _ - . / and one ':')", end)
     token = m.group()
     if not token:
-        r.fail(f"expected {what}, got {show(r.rest_word())}")
+        r.fail(f"expected {what}, got {r.found()}")
     r.pos = end
     colon = token.find(":")
     if colon < 0:
@@ -72,7 +72,7 @@ def _coord(r: Reader, block: bool, allow_local: bool) -> Coord:
     m = _COORD.match(r.text, start)
     prefix, number = m.group(1), m.group(2)
     if not prefix and not number:
-        r.fail(f"expected a coordinate, got {show(r.rest_word())}")
+        r.fail(f"expected a coordinate, got {r.found()}")
     if prefix == "^" and not allow_local:
         r.fail("local coordinates (^) are not allowed here", start)
     coord = _make_coord(prefix, number, block)
@@ -150,7 +150,7 @@ def _range(r: Reader, is_int: bool):
             r.fail("expected a value or range of values, got '..'", start)
     else:
         if lo is None:
-            r.fail(f"expected a value or range of values, got {show(r.rest_word())}", start)
+            r.fail(f"expected a value or range of values, got {r.found()}", start)
         hi = lo
     if lo is not None and hi is not None and lo > hi:
         r.fail(f"range minimum {lo} is bigger than its maximum {hi}", start)
@@ -183,7 +183,7 @@ def objective(r: Reader) -> str:
     m = UNQUOTED.match(r.text, start)
     name = m.group()
     if not name:
-        r.fail(f"expected an objective name, got {show(r.rest_word())}", start)
+        r.fail(f"expected an objective name, got {r.found()}", start)
     if objective_too_long(name, r.version):
         r.fail(f"objective name '{name}' is longer than {_OBJECTIVE_OLD_MAX} characters "
                f"(allowed from Minecraft {_LONG_OBJECTIVES[0]}.{_LONG_OBJECTIVES[1]})", start)
@@ -201,7 +201,7 @@ def score_holder(r: Reader):
     start = r.pos
     word = WORD.match(r.text, start).group()
     if not word:
-        r.fail(f"expected a score holder, got {show(r.rest_word())}")
+        r.fail(f"expected a score holder, got {r.found()}")
     r.pos = start + len(word)
     return holder_from_word(word, r.loc_at(start))
 
@@ -255,7 +255,7 @@ def duration(r: Reader) -> int:
     m = _TIME.match(r.text, start)
     number, unit = m.group(1), m.group(2)
     if not number:
-        r.fail(f"expected a time, got {show(r.rest_word())}")
+        r.fail(f"expected a time, got {r.found()}")
     if not FLOAT_TEXT.match(number):
         r.fail(f"invalid time '{number}'", start)
     ticks = round(float(number) * _TIME_UNITS[unit])  # TimeArgument uses Math.round
@@ -331,7 +331,7 @@ def json_span(r: Reader, what: str = "JSON text") -> str:
         return m.group()
     m = _JSON_PRIMITIVE.match(text, start)
     if m is None:
-        r.fail(f"expected {what}, got {show(r.rest_word())}")
+        r.fail(f"expected {what}, got {r.found()}")
     r.pos = m.end()
     return m.group()
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 import re
 
 from .ast import NbtPath, PathAll, PathFilter, PathIndex, PathKey, PathMatch
-from .reader import INT_MAX, INT_MIN, Reader, show
+from .reader import INT_MAX, INT_MIN, Reader
 from .snbt import compound
 
 # NbtPathArgument.isAllowedInUnquotedName: anything but space, quotes, brackets, braces and '.'
@@ -31,7 +31,7 @@ def nbt_path(r: Reader) -> NbtPath:
         else:
             m = _KEY.match(text, r.pos)
             if m is None:
-                r.fail(f"expected an NBT path, got {show(r.rest_word())}")
+                r.fail(f"expected an NBT path, got {r.found()}")
             r.pos = m.end()
             nodes.append(PathKey(m.group()))
         first = False
@@ -66,7 +66,7 @@ def _bracket(r: Reader):
         start = r.pos
         m = _INDEX.match(r.text, start)
         if m is None:
-            r.fail(f"expected an index, '{{' or ']' in NBT path, got {show(r.rest_word())}")
+            r.fail(f"expected an index, '{{' or ']' in NBT path, got {r.found()}")
         index = int(m.group())
         if not INT_MIN <= index <= INT_MAX:
             r.fail(f"index {m.group()} is out of range for a 32-bit int", start)

@@ -101,7 +101,7 @@ class Reader:
         if self.pos < self.end and self.text[self.pos] == char:
             self.pos += 1
             return
-        self.fail(f"expected '{char}', got {show(self.rest_word())}")
+        self.fail(f"expected '{char}', got {self.found()}")
 
     def space(self, what: str = "an argument") -> None:
         """Consume the one space before a required argument."""
@@ -113,7 +113,7 @@ class Reader:
             self.fail(f"expected {what} after the space, got end of command", pos + 1)
         if pos >= self.end:
             self.fail(f"incomplete command: expected {what}")
-        self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+        self.fail(f"expected whitespace to end the argument, got {self.found()}")
 
     def optional_space(self) -> bool:
         """True (and the space consumed) when another argument follows."""
@@ -125,17 +125,25 @@ class Reader:
             return True
         if self.text[pos] == " ":
             self.fail("trailing space after the last argument", pos)
-        self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+        self.fail(f"expected whitespace to end the argument, got {self.found()}")
 
     def finish(self) -> None:
         """The command must end here."""
         if self.pos < self.end:
             if self.text[self.pos] != " ":
-                self.fail(f"expected whitespace to end the argument, got {show(self.rest_word())}")
+                self.fail(f"expected whitespace to end the argument, got {self.found()}")
             extra = self.rest_word(self.pos + 1)
             if extra:
                 self.fail(f"expected end of command, got '{extra}'", self.pos + 1)
             self.fail("unexpected space: arguments are separated by exactly one space", self.pos)
+
+    def found(self) -> str:
+        """What is at the cursor, for "expected X, got Y" messages."""
+        if self.pos >= self.end:
+            return "end of command"
+        if self.text[self.pos] == " ":
+            return "a second space (arguments are separated by exactly one space)"
+        return f"'{self.rest_word()}'"
 
     def rest_word(self, pos: int | None = None) -> str:
         return WORD.match(self.text, self.pos if pos is None else pos).group()
@@ -238,7 +246,7 @@ class Reader:
         start = self.pos
         token = NUMBER.match(self.text, start).group()
         if not token:
-            self.fail(f"expected {what}, got {show(self.rest_word())}")
+            self.fail(f"expected {what}, got {self.found()}")
         if not INT_TEXT.match(token):
             self.fail(f"invalid integer '{token}'", start)
         value = int(token)
@@ -255,7 +263,7 @@ class Reader:
         start = self.pos
         token = NUMBER.match(self.text, start).group()
         if not token:
-            self.fail(f"expected {what}, got {show(self.rest_word())}")
+            self.fail(f"expected {what}, got {self.found()}")
         if not FLOAT_TEXT.match(token):
             self.fail(f"invalid number '{token}'", start)
         value = float(token)

@@ -109,7 +109,7 @@ def _options(r: Reader, variable: str) -> tuple[tuple[SelectorArg, ...], list[in
         after = _AFTER_VALUE.match(text, r.pos)
         r.pos = after.end()
         if after.group(1) is None and r.pos < r.end and text[r.pos] != "]":
-            r.fail(f"expected ',' or ']' after selector option, got {show(r.rest_word())}")
+            r.fail(f"expected ',' or ']' after selector option, got {r.found()}")
     if r.pos >= r.end:
         r.fail("unclosed selector: expected ']'")
     r.pos += 1
@@ -194,7 +194,7 @@ def _scores(r: Reader):
         start = r.pos
         name = r.unquoted()
         if not name:
-            r.fail(f"expected an objective name, got {show(r.rest_word())}", start)
+            r.fail(f"expected an objective name, got {r.found()}", start)
         r.skip_ws()
         r.expect("=")
         r.skip_ws()
@@ -209,7 +209,7 @@ def _scores(r: Reader):
 
 def _advancements(r: Reader) -> str:
     if r.peek() != "{":
-        r.fail(f"expected '{{' for advancements, got {show(r.rest_word())}")
+        r.fail(f"expected '{{' for advancements, got {r.found()}")
     return json_span(r, "advancements")
 
 
@@ -268,7 +268,10 @@ def target(r: Reader, single: bool = False, players: bool = False):
         name = r.string()
         uuid = is_uuid(name)
         if not uuid and (not name or len(name) > NAME_MAX):
-            r.fail(f"expected a selector, player name or UUID, got {show(name or r.rest_word())}", start)
+            if name:
+                r.fail(f"player name '{name}' is longer than {NAME_MAX} characters", start)
+            r.pos = start
+            r.fail(f"expected a selector, player name or UUID, got {r.found()}", start)
         result = NameTarget(name, loc, is_uuid=uuid)
     if single and not is_single(result):
         r.fail("only one entity is allowed, but the selector allows more than one (add limit=1)", start)

@@ -65,7 +65,7 @@ def _skip_ws(r: Reader) -> None:
 def compound(r: Reader) -> Compound:
     """A ``{...}`` compound starting at the cursor."""
     if r.peek() != "{":
-        r.fail(f"expected an NBT compound '{{...}}', got {show(r.rest_word())}")
+        r.fail(f"expected an NBT compound '{{...}}', got {r.found()}")
     return _compound(r)
 
 

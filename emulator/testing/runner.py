@@ -53,21 +53,27 @@ def load_suite(files: list[TestFile], pattern: str | None = None):
 
 
 def _in_batches(cases: list[TestCase]) -> list[TestCase]:
-    """Order by batch (first appearance); a second, different @beforebatch/@afterbatch in a batch
-    is an error of the test giving it (PackTest allows one per batch)."""
+    """Order by batch (first appearance) and give every test of a batch the batch's
+    @beforebatch/@afterbatch; a second, different one in a batch is an error of the test giving
+    it (PackTest allows one per batch)."""
     batches: dict[str, list[TestCase]] = {}
-    hooks: dict[tuple[str, str], str] = {}
+    hooks: dict[tuple[str, str], tuple[str, str | None]] = {}  # (batch, directive) -> (text, function)
     for case in cases:
         d = case.directives
-        for name, given in (("@beforebatch", d.before_batch), ("@afterbatch", d.after_batch)):
+        for name, given, function in (("@beforebatch", d.before_batch, case.before_batch),
+                                      ("@afterbatch", d.after_batch, case.after_batch)):
             if given is None:
                 continue
-            first = hooks.setdefault((d.batch, name), given[0])
+            first = hooks.setdefault((d.batch, name), (given[0], function))[0]
             if first != given[0]:
                 message = f"{name}: batch {d.batch!r} already has {first!r}"
                 case.errors.append(Diagnostic.at("error", message, given[1]))
         batches.setdefault(d.batch, []).append(case)
-    return [case for batch in batches.values() for case in batch]
+    for batch, members in batches.items():
+        for case in members:
+            case.before_batch = hooks.get((batch, "@beforebatch"), (None, None))[1]
+            case.after_batch = hooks.get((batch, "@afterbatch"), (None, None))[1]
+    return [case for members in batches.values() for case in members]
 
 
 def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None = None,

@@ -180,7 +180,7 @@ def _test_step(b: _Builder, number: int, line: str) -> Step | None:
         text = text[prefix.end():]
     loc = Loc(b.case.path, number, col)
     word, _, rest = text.partition(" ")
-    rest_col = col + len(word) + 1 + (len(rest) - len(rest.lstrip()))
+    rest_col = min(col + len(word) + 1 + (len(rest) - len(rest.lstrip())), len(line) + 1)
     rest = rest.strip()
     if word == "succeed":
         return Succeed(loc, gate) if not rest else _bad(b, "succeed takes no arguments", number, rest_col)

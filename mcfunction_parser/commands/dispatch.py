@@ -5,7 +5,7 @@ from functools import lru_cache
 
 from ..ast import Command, GenericCommand
 from ..features import COMMANDS, command_problem, permission_warning
-from ..reader import WORD, Reader, show
+from ..reader import WORD, Reader
 
 # name -> parser(reader positioned after the name, loc of the name) -> Command
 REGISTRY: dict = {}
@@ -25,7 +25,7 @@ def command(r: Reader) -> Command:
     entry = _table(r.version).get(name)
     if entry is None:
         if not name:
-            r.fail(f"expected a command, got {show(r.rest_word())}")
+            r.fail(f"expected a command, got {r.found()}")
         r.fail(command_problem(name, r.version), start)
     loc = r.start_loc if start == 0 else r.loc_at(start)
     r.pos = start + len(name)

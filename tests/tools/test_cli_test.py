@@ -1,0 +1,57 @@
+"""``dpemu test``: output, exit code, -k, JUnit XML; and the pool datapack's own test files."""
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+from click.testing import CliRunner
+
+from emulator.cli import main
+
+DATAPACK = Path(__file__).resolve().parents[2] / "datapack"
+FILES = {
+    "demo/test/good.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\nassert score $x o matches 4\n",
+    "demo/test/bad.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\nassert score $x o matches 5\n",
+    "demo/test/skip.mcfunction": "# @dummy\nsucceed\n",
+}
+
+
+def test_output_summary_and_exit_code(pack):
+    root = pack(FILES)
+    result = CliRunner().invoke(main, ["test", str(root)])
+    lines = result.output.splitlines()
+    assert result.exit_code == 1
+    assert lines[-1] == "1 passed, 1 failed, 1 skipped"
+    assert "FAIL demo:bad" in lines
+    assert any(line.endswith("bad.mcfunction:3: Expected score $x o to match 5, found 4") for line in lines)
+
+
+def test_filter_passes_with_exit_zero(pack):
+    result = CliRunner().invoke(main, ["test", str(pack(FILES)), "-k", "good", "--backend", "python"])
+    assert result.exit_code == 0
+    assert result.output.splitlines() == ["PASS demo:good", "1 passed, 0 failed"]
+
+
+def test_junit_xml_structure(pack, tmp_path):
+    out = tmp_path / "junit.xml"
+    CliRunner().invoke(main, ["test", str(pack(FILES)), "--junit", str(out)])
+    suite = ET.parse(out).getroot().find("testsuite")
+    assert (suite.get("tests"), suite.get("failures"), suite.get("skipped")) == ("3", "1", "1")
+    cases = {c.get("name"): c for c in suite.findall("testcase")}
+    assert set(cases) == {"good", "bad", "skip"} and cases["bad"].get("classname") == "demo"
+    failure = cases["bad"].find("failure")
+    assert failure.get("message") == "Expected score $x o to match 5, found 4"
+    assert "bad.mcfunction:3: " in failure.text and cases["bad"].get("line") == "3"
+    assert cases["skip"].find("skipped") is not None and cases["good"].find("failure") is None
+
+
+def test_a_missing_path_is_a_usage_error(tmp_path):
+    result = CliRunner().invoke(main, ["test", str(tmp_path / "nope")])
+    assert result.exit_code == 2 and "does not exist" in result.output
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_the_pool_datapack_tests_pass(backend):
+    result = CliRunner().invoke(main, ["test", str(DATAPACK), "--backend", backend])
+    assert result.exit_code == 0, result.output
+    passed = int(result.output.splitlines()[-1].split()[0])
+    assert passed >= 5 and "pool:math/isqrt" in result.output

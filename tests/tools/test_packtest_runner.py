@@ -1,0 +1,160 @@
+"""PackTest-format test files run by emulator.testing (format: misode/packtest README)."""
+import pytest
+
+from emulator.testing import discover, run_suite
+from emulator.testing.discovery import DiscoveryError
+
+SETUP = "scoreboard objectives add o dummy\nscoreboard players set $x o 4\n"
+
+
+def run(root, backend="numba", pattern=None):
+    return run_suite(discover([root]), backend, pattern)
+
+
+def by_id(summary):
+    return {r.id: r for r in summary.results}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_failing_assert_names_file_line_expected_and_found(pack, backend):
+    root = pack({"demo/test/fails.mcfunction": SETUP + "assert score $x o matches 4\nassert score $x o matches 5\n"})
+    result = run(root, backend).results[0]
+    assert result.status == "failed"
+    # PackTest's ScoreAssertion message
+    assert result.message == "Expected score $x o to match 5, found 4"
+    assert result.where.endswith("data/demo/test/fails.mcfunction:4")
+    assert result.report().splitlines()[0] == "FAIL demo:fails"
+
+
+def test_messages_for_not_comparison_and_unset(pack):
+    root = pack({
+        "demo/test/a.mcfunction": SETUP + "assert not score $x o matches 4\n",
+        "demo/test/b.mcfunction": SETUP + "scoreboard players set $y o 9\nassert score $x o >= $y o\n",
+        "demo/test/c.mcfunction": SETUP + "assert score $nobody o matches 0\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:a"].message == "Did not expect score $x o to match 4, found 4"
+    assert results["demo:b"].message == "Expected score $x o >= $y o, found 4 >= 9"
+    assert results["demo:c"].message == "Expected score $nobody o to match 0, found undefined"
+
+
+def test_unknown_directive_is_reported_and_the_rest_still_runs(pack):
+    root = pack({
+        "demo/test/bad.mcfunction": "# @timout 5\n" + SETUP,
+        "demo/test/good.mcfunction": SETUP + "assert score $x o matches 4\n",
+    })
+    results = by_id(run(root))
+    bad = results["demo:bad"]
+    assert bad.status == "failed" and bad.line == 1
+    assert bad.message.startswith("unknown directive '@timout': expected one of @template, @timeout")
+    assert results["demo:good"].status == "passed"
+
+
+@pytest.mark.parametrize("line,col,message", [
+    ("assert score $x o matchez 4", 19, "matchez"),
+    ("assert scroe $x o matches 4", 8, "unknown condition 'scroe'"),
+    ("await delay soon", 13, "expected a time"),
+    ("fail", 5, "expected a message"),
+])
+def test_malformed_test_command_is_reported_at_its_column(pack, line, col, message):
+    root = pack({"demo/test/bad.mcfunction": SETUP + line + "\n",
+                 "demo/test/good.mcfunction": SETUP})
+    results = by_id(run(root))
+    bad = results["demo:bad"]
+    assert bad.status == "failed" and bad.line == 3
+    assert message in bad.message
+    assert f"bad.mcfunction:3:{col}:" in bad.details[0]
+    assert results["demo:good"].status == "passed"
+
+
+def test_a_test_that_never_finishes_stops_at_its_timeout(pack):
+    root = pack({"demo/test/hang.mcfunction": "# @timeout 5\n" + SETUP + "await score $x o matches 1\n"})
+    result = run(root).results[0]
+    assert result.status == "failed"
+    assert result.message == "Timed out after 5 ticks: Expected score $x o to match 1, found 4"
+    assert result.ticks == 5 and result.line == 4
+
+
+def test_default_timeout_is_100_ticks(pack):
+    root = pack({"demo/test/hang.mcfunction": SETUP + "await delay 6s\n"})
+    result = run(root).results[0]
+    assert result.message.startswith("Timed out after 100 ticks") and result.ticks == 100
+
+
+def test_await_ticks_the_world_until_the_condition_holds(pack):
+    root = pack({
+        "demo/function/count.mcfunction": "scoreboard players add $t o 1\n",
+        "demo/function/init.mcfunction": "scoreboard objectives add o dummy\n",
+        "demo/test/wait.mcfunction": "await score $t o matches 3\nassert score $t o matches 3\n"
+                                     "await delay 1s\nassert score $t o matches 23\n",
+    }, tick=["demo:count"], load=["demo:init"])
+    result = run(root).results[0]
+    assert result.status == "passed", result.message
+    assert result.ticks == 23
+
+
+def test_fail_succeed_and_execute_prefixes(pack):
+    root = pack({
+        "demo/test/fail_json.mcfunction": SETUP + 'fail {"text": "Oh ", "extra": ["no"]}\n',
+        "demo/test/fail_plain.mcfunction": SETUP + "fail nope\n",
+        "demo/test/succeed.mcfunction": SETUP + "succeed\nfail \"not reached\"\n",
+        "demo/test/gated.mcfunction": SETUP + "execute if score $x o matches 5 run fail \"gate\"\n"
+                                      "execute if score $x o matches 4 run succeed\nfail \"after\"\n",
+        "demo/test/gated_assert.mcfunction": SETUP + "execute if score $x o matches 4 run assert score $x o matches 3\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:fail_json"].message == "Oh no"
+    assert results["demo:fail_plain"].message == "nope"
+    assert results["demo:succeed"].status == "passed"
+    assert results["demo:gated"].status == "passed"
+    assert results["demo:gated_assert"].message == "Expected score $x o to match 3, found 4"
+
+
+def test_each_test_runs_in_a_fresh_world_after_load(pack):
+    root = pack({
+        "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $loaded o 1\n",
+        "demo/test/a.mcfunction": "scoreboard players set $leak o 1\nassert score $loaded o matches 1\n",
+        "demo/test/b.mcfunction": "assert not score $leak o matches 1\nassert score $loaded o matches 1\n",
+    }, load=["demo:init"])
+    assert [r.status for r in run(root).results] == ["passed", "passed"]
+
+
+def test_optional_dummy_and_summary(pack):
+    root = pack({
+        "demo/test/opt.mcfunction": "# @optional\nfail \"allowed\"\n",
+        "demo/test/dummy.mcfunction": "# @dummy\nsucceed\n",
+        "demo/test/ok.mcfunction": "succeed\n",
+    })
+    summary = run(root)
+    results = by_id(summary)
+    assert results["demo:opt"].report().startswith("FAIL (optional) demo:opt")
+    assert results["demo:dummy"].status == "skipped"
+    assert summary.line() == "1 passed, 0 failed, 2 skipped" and summary.ok
+
+
+def test_batches_run_their_before_command_and_allow_only_one(pack):
+    root = pack({
+        "demo/test/a.mcfunction": "# @batch b1\n# @beforebatch scoreboard objectives add o dummy\n"
+                                  "scoreboard players set $x o 1\nassert score $x o matches 1\n",
+        "demo/test/b.mcfunction": "# @batch b1\n# @beforebatch say other\nsucceed\n",
+        "demo/test/c.mcfunction": "# @batch b1\nscoreboard players set $x o 1\nassert score $x o matches 1\n",
+        "demo/test/d.mcfunction": "# @timeout 0\nsucceed\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:a"].status == "passed"
+    assert results["demo:b"].message == "@beforebatch: batch 'b1' already has 'scoreboard objectives add o dummy'"
+    assert results["demo:c"].status == "passed"  # the batch's before command ran in its world too
+    assert "expected a positive number of ticks" in results["demo:d"].message
+
+
+def test_discovery_ids_filter_and_errors(pack, tmp_path):
+    root = pack({"demo/test/sub/a.mcfunction": "succeed\n", "old/tests/b.mcfunction": "succeed\n",
+                 "demo/function/f.mcfunction": "say hi\n"})
+    assert [t.id for t in discover([root])] == ["demo:sub/a", "old:b"]
+    assert [r.id for r in run(root, pattern="SUB").results] == ["demo:sub/a"]
+    assert [t.id for t in discover([root / "data/old/tests/b.mcfunction"])] == ["old:b"]
+    with pytest.raises(DiscoveryError, match="not a test file"):
+        discover([root / "data/demo/function/f.mcfunction"])
+    (tmp_path / "loose").mkdir()
+    with pytest.raises(DiscoveryError, match="not inside a datapack"):
+        discover([tmp_path / "loose"])
