@@ -168,7 +168,7 @@ class Reader:
             self.pos = start + len(word)
             return word
         options = "|".join(sorted(choices))
-        self.fail(f"expected {what} ({options}), got {show(word)}", start)
+        self.fail(f"expected {what} ({options}), got {show(word) if word else self.found()}", start)
 
     def keyword(self, choices, what: str) -> str:
         """The space before a required literal and the literal itself (one of ``choices``)."""
