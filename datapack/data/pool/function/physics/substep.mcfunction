@@ -3,6 +3,7 @@
 # its start moved to #now. If the chords meet a rail, a pocket or another ball, only the balls of
 # the earliest event are rewound to it and resolved, then the rest of the tick is redone.
 # Reads/writes: #now #events pool.tmp, every ball's scores; temporaries #rem #step #te #best #kind.
+# A ball at rest that was not hit keeps cx = x (its chord is a point) all through the tick.
 scoreboard players set #rem pool.tmp 10000
 scoreboard players operation #rem pool.tmp -= #now pool.tmp
 execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/trial

@@ -1,10 +1,14 @@
-# pool:physics/find/pair — swept contact test of ball @s (b) with the ball tagged pool.self (a).
-# Reads: #a.* chord and box, @s pool.cx pool.cz pool.x pool.z and box (a ball at rest has cx = x).
-# Writes: #best #kind pool.tmp and the event tags when this contact is the earliest so far.
+# pool:physics/find/pair — swept contact test of ball @s (b) with the ball tagged pool.self (a),
+# after the cheap test of their chord boxes.
+# Reads: #a.lx #a.hx #a.lz #a.hz pool.tmp (a's box), @s box and chord (a ball at rest has cx = x).
+# Writes: #best #kind pool.tmp and the event tags when this contact is the earliest so far;
+# both chords' starts moved to #now.
 execute if score @s pool.lx > #a.hx pool.tmp run return 0
 execute if score @s pool.hx < #a.lx pool.tmp run return 0
 execute if score @s pool.lz > #a.hz pool.tmp run return 0
 execute if score @s pool.hz < #a.lz pool.tmp run return 0
+execute as @e[tag=pool.self] run function pool:physics/find/chord_a
+execute if entity @s[tag=pool.moving] run function pool:ball/chord_start
 scoreboard players operation #b.bx pool.tmp = @s pool.cx
 scoreboard players operation #b.bz pool.tmp = @s pool.cz
 scoreboard players operation #b.ex pool.tmp = @s pool.x
