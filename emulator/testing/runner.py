@@ -93,12 +93,18 @@ def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None
 
 def fresh_world(packs, backend: str) -> Emulator:
     """An emulator on already parsed ``packs`` with an empty world (what Emulator.load does after
-    parsing), then ``#minecraft:load`` run as the server's first tick would."""
+    parsing), then started with :func:`run_load`."""
     emu = Emulator(backend=backend)
     emu.packs = packs
     emu.state = WorldState()
     emu.backend.load(packs, emu.state, False)
     emu.runtime = Runtime(emu.backend, packs, emu.state)
+    return run_load(emu)
+
+
+def run_load(emu: Emulator) -> Emulator:
+    """Run ``#minecraft:load`` now, as the server's first tick would (and not again on it): a test
+    starts in a running world."""
     emu.call("#minecraft:load")
     emu.runtime.loaded = True
     return emu
