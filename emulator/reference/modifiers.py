@@ -78,6 +78,8 @@ def store_score(env, sub: ast.StoreScore, source: Source) -> Source:
     want_result = sub.kind == "result"
 
     def store(success: bool, value: int) -> None:
+        if not board.exists(obj):
+            return  # removed meanwhile: the game writes to the dropped Objective, which nothing sees
         stored = value if want_result else int(success)
         for name in names:
             board.set(name, obj, stored)

@@ -134,6 +134,10 @@ CASES = [
      {("#ran", "o"): None}, ...),
     # ... while in a forked chain (after a condition) the other contexts would go on; with one
     # context nothing runs either
+    # ExecuteCommand.storeValue keeps the Objective it resolved; once removed, the stored score
+    # goes to the dropped objective: a new `o` does not have it
+    ("store_into_removed_objective", "execute store result score #a o run scoreboard objectives remove o\n"
+     "scoreboard objectives add o dummy", {("#a", "o"): None}, ...),
     ("store_after_condition_aborts_context", "execute if score #u o matches ..0 store result score @s o run "
      "scoreboard players set #ran o 1\nexecute unless score #u o matches ..0 store result score @s o run "
      "scoreboard players set #ran2 o 1", {("#ran", "o"): None, ("#ran2", "o"): None}, ...),
