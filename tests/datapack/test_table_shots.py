@@ -85,19 +85,22 @@ def test_shot_ends_where_the_float_reference_does(start, shot):
     assert error <= 1000 + 0.0005 * path, (error, path)
 
 
+def assert_on_table_and_apart(board, n):
+    in_play = [i for i in range(n) if board.score(f"ball{i}", "pool.state") != 3]
+    p = positions(board, n)
+    for k, i in enumerate(in_play):
+        assert 28575 <= p[i][0] <= 2540000 - 28575 and 28575 <= p[i][1] <= 1270000 - 28575, i
+        for j in in_play[k + 1:]:
+            assert np.linalg.norm(p[i] - p[j]) >= TWO_R - 2, (i, j)
+
+
 def test_balls_never_overlap_and_stay_on_the_table():
     start = [(635000, 635000), (1905000, 640000), (1963000, 610000), (1963000, 668000)]
     board = table(start)
     shoot(board, angle=0, speed=4000)
     while board.score("$resting", "pool.game") == 0:
         board.call("pool:tick")
-        in_play = [i for i in range(len(start)) if board.score(f"ball{i}", "pool.state") != 3]
-        p = positions(board, len(start))
-        for i in in_play:
-            assert 28575 <= p[i][0] <= 2540000 - 28575 and 28575 <= p[i][1] <= 1270000 - 28575
-            for j in in_play:
-                if i < j:
-                    assert np.linalg.norm(p[i] - p[j]) >= TWO_R - 2, (i, j)
+        assert_on_table_and_apart(board, len(start))
 
 
 def test_integer_energy_never_rises_between_ticks():
@@ -176,18 +179,11 @@ def test_break_keeps_every_ball_on_the_table_and_apart():
     start = rack_positions()
     board = table(start)
     shoot(board, angle=0, speed=6000)
-    n = len(start)
-    ticks = 0
-    while board.score("$resting", "pool.game") == 0 and ticks < 600:
+    for _ in range(600):
         board.call("pool:tick")
-        ticks += 1
-        in_play = [i for i in range(n) if board.score(f"ball{i}", "pool.state") != 3]
-        p = positions(board, n)
-        for i in in_play:
-            assert 28575 <= p[i][0] <= 2540000 - 28575 and 28575 <= p[i][1] <= 1270000 - 28575
-        for k, i in enumerate(in_play):
-            for j in in_play[k + 1:]:
-                assert np.linalg.norm(p[i] - p[j]) >= TWO_R - 2, (ticks, i, j)
+        assert_on_table_and_apart(board, len(start))
+        if board.score("$resting", "pool.game") == 1:
+            break
     assert board.score("$resting", "pool.game") == 1
 
 
