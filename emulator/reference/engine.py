@@ -59,7 +59,7 @@ class Interpreter:
             result[0] = value if success else 0
 
         limit = self.state.gamerules.max_command_chain_length
-        queue = ExecutionQueue(limit, self._internal_error)
+        queue = ExecutionQueue(limit, self.state.gamerules.max_command_fork_count, self._internal_error)
         source = Source(context or Context(), None, None)
         top = CallFrame(0, None, 0)
         queue.queue_next(top, self._call_function(function, commands, source, on_result, False, None))
@@ -107,7 +107,7 @@ class Interpreter:
             queue.charge()
             self._count(line.loc)
             produced: list[Source] = []
-            fork_limit = self.state.gamerules.max_command_fork_count
+            fork_limit = queue.fork_limit
             for source in sources:
                 try:
                     out = modifiers.apply(self, stage, source)

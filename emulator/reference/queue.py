@@ -57,10 +57,11 @@ Action = Callable[["ExecutionQueue", CallFrame], None]
 
 
 class ExecutionQueue:
-    """One root's queue, quota and cost."""
+    """One root's queue, quota and cost. Both limits are read once, when the root starts."""
 
-    def __init__(self, limit: int, on_internal_error: Callable[[Action, Exception], None]) -> None:
+    def __init__(self, limit: int, fork_limit: int, on_internal_error: Callable[[Action, Exception], None]) -> None:
         self.limit = limit
+        self.fork_limit = fork_limit
         self.on_internal_error = on_internal_error
         self.quota = limit
         self.cost = 0
