@@ -250,6 +250,9 @@ COST_CASES = [
     ("empty_stage_charges_later_stages", "execute if score #u o matches 1 positioned 0 0 0 align xyz run say x", 5),
     # a modifier error in a non-forked chain returns at once: later stages are not charged
     ("failing_store_stops_charging", "execute store result score @s o positioned 0 0 0 align xyz run say x", 3),
+    # ... but in a forked chain (a condition is a fork) the error only drops that context, and the
+    # later stages are still charged (BuildContexts: `if (!forked) return;`)
+    ("forked_failure_charges_later_stages", "execute if score @s o matches 0 positioned 0 0 0 align xyz run say x", 5),
     ("condition_as_final_command", "execute if score #u o matches 1", 3),
     ("function_call", "function t:plain", 4),
     ("if_function_stage_is_free", "execute if function t:five run say x", 4),
@@ -257,7 +260,9 @@ COST_CASES = [
 ]
 
 
-VM_COST_GAP = {"failing_store_stops_charging": "VM: charges the stages after a failing modifier"}
+VM_COST_GAP = {
+    "forked_failure_charges_later_stages": "VM: stops charging after an error in a forked chain",
+}
 
 
 def _cost_params():
