@@ -51,8 +51,8 @@ def selector(r: Reader) -> Selector:
         if cached is not None:
             r.pos = plain.end()
             loc_at = r.loc_at
-            return Selector(variable, tuple(SelectorArg(key, value, negated, loc_at(start + offset))
-                                            for key, value, negated, offset in cached), loc)
+            return Selector(variable, tuple([SelectorArg(key, value, negated, loc_at(start + offset))
+                                             for key, value, negated, offset in cached]), loc)
     r.pos = start + 2
     args, offsets = _options(r, variable)
     if plain is not None and r.pos == plain.end() and not any(a.key == "nbt" for a in args):

@@ -301,9 +301,9 @@ def _what_follows(name: str) -> str:
 _FAST_SCORE_MATCHES = re.compile(rf" (if|unless) score {PLAIN_HOLDER} {PLAIN_OBJECTIVE} matches (?=[^ ])")
 
 
-def _fast_score_matches(r: Reader, sub_loc):
-    m = _FAST_SCORE_MATCHES.match(r.text, r.pos)
-    if m is None or m.group(2) in ("@a", "@e") or objective_too_long(m.group(3), r.version):
+def _fast_score_matches(r: Reader, m, sub_loc):
+    """The subcommand for a _FAST_SCORE_MATCHES match, or None to take the general path."""
+    if m.group(2) in ("@a", "@e") or objective_too_long(m.group(3), r.version):
         return None
     holder = plain_holder(r, m.group(2), m.start(2))
     r.pos = m.end()
@@ -316,10 +316,12 @@ def execute(r: Reader, loc) -> ast.Command:
         if r.pos == r.end and subcommands and isinstance(subcommands[-1], ast.Condition):
             return ast.Execute(loc, tuple(subcommands), None)
         sub_loc = r.loc_at(r.pos + 1)
-        fast = _fast_score_matches(r, sub_loc)
-        if fast is not None:
-            subcommands.append(fast)
-            continue
+        m = _FAST_SCORE_MATCHES.match(r.text, r.pos)
+        if m is not None:
+            fast = _fast_score_matches(r, m, sub_loc)
+            if fast is not None:
+                subcommands.append(fast)
+                continue
         name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
         if name == "run":
             return ast.Execute(loc, tuple(subcommands), command(r))
