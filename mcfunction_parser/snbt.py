@@ -1,14 +1,16 @@
-"""SNBT (stringified NBT) literals, with the game's TagParser rules (1.13 – 1.21.4).
+r"""SNBT (stringified NBT) literals, with the game's TagParser rules (1.13 – 1.21.4).
 
 Unquoted values are typed by the game's patterns: ``1b 2s 3 4L 1.5f 2.0d 1.5`` (a bare decimal is
 a double), ``true``/``false`` are bytes, a number out of its type's range stays a string.
-From 1.21.5 the game's new SNBT grammar also accepts lists of mixed types; that is the only
-1.21.5 extension modelled here.
+From 1.21.5 (25w02a) the game's new SNBT grammar also accepts lists of mixed types, any integer
+type in typed arrays, and more escapes in quoted strings (``\n \t \s \x41 \u00e9 \N{name}``...); its
+other additions (hex/binary/underscored numbers, ``bool(..)``/``uuid(..)``) are not modelled.
 """
 from __future__ import annotations
 
 import re
 import struct
+import unicodedata
 
 from .nbt import (Byte, ByteArray, Compound, Double, Float, Int, IntArray, List, Long, LongArray, Short,
                   String)
@@ -23,7 +25,14 @@ _ARRAY_TYPES = {"B": (ByteArray, Byte), "I": (IntArray, Int), "L": (LongArray, L
 _TYPE_NAMES = {Byte: "TAG_Byte", Short: "TAG_Short", Int: "TAG_Int", Long: "TAG_Long", Float: "TAG_Float",
                Double: "TAG_Double", String: "TAG_String", List: "TAG_List", Compound: "TAG_Compound",
                ByteArray: "TAG_Byte_Array", IntArray: "TAG_Int_Array", LongArray: "TAG_Long_Array"}
-MIXED_LISTS = (1, 21, 5)
+NEW_GRAMMAR = (1, 21, 5)
+_INTEGRAL = (Byte, Short, Int, Long)
+_NEW_QUOTED = {
+    '"': re.compile(r'"((?:[^"\\]|\\.)*)"'),
+    "'": re.compile(r"'((?:[^'\\]|\\.)*)'"),
+}
+_NEW_ESCAPE = re.compile(r"\\(?:x([0-9a-fA-F]{2})|u([0-9a-fA-F]{4})|U([0-9a-fA-F]{8})|N\{([^}]*)\}|(.))")
+_SIMPLE_ESCAPES = {"b": "\b", "s": " ", "t": "\t", "n": "\n", "f": "\f", "r": "\r", "\\": "\\", '"': '"', "'": "'"}
 
 
 def to_float32(value: float) -> float:
@@ -55,6 +64,39 @@ def typed_primitive(token: str):
     return String(token)
 
 
+def _quoted(r: Reader) -> str:
+    """A quoted string: Brigadier's escapes (quote and backslash) before 1.21.5, the SNBT grammar's after."""
+    if r.version < NEW_GRAMMAR:
+        return r.quoted()
+    start = r.pos
+    m = _NEW_QUOTED[r.text[start]].match(r.text, start)
+    if m is None:
+        r.fail("unclosed quoted string", start)
+    body = m.group(1)
+    if "\\" in body:
+        body = _NEW_ESCAPE.sub(lambda e: _unescape(r, e, start + 1), body)
+    r.pos = m.end()
+    return body
+
+
+def _unescape(r: Reader, e, offset: int) -> str:
+    hex_2, hex_4, hex_8, name, char = e.groups()
+    code = hex_2 or hex_4 or hex_8
+    if code:
+        value = int(code, 16)
+        if value > 0x10FFFF:
+            r.fail(f"invalid code point in escape '{e.group()}'", offset + e.start())
+        return chr(value)
+    if name is not None:
+        try:
+            return unicodedata.lookup(name)
+        except KeyError:
+            r.fail(f"unknown character name in escape '{e.group()}'", offset + e.start())
+    if char in _SIMPLE_ESCAPES:
+        return _SIMPLE_ESCAPES[char]
+    r.fail(f"invalid escape sequence '{e.group()}' in quoted string", offset + e.start())
+
+
 def _skip_ws(r: Reader) -> None:
     text, pos, end = r.text, r.pos, r.end
     while pos < end and text[pos] in _WS:
@@ -78,7 +120,7 @@ def value(r: Reader):
     if c == "[":
         return _list_or_array(r)
     if c == '"' or c == "'":
-        return String(r.quoted())
+        return String(_quoted(r))
     start = r.pos
     m = UNQUOTED.match(r.text, start)
     token = m.group()
@@ -95,7 +137,7 @@ def _compound(r: Reader) -> Compound:
     text = r.text
     while r.pos < r.end and text[r.pos] != "}":
         key_start = r.pos
-        key = r.string()
+        key = _quoted(r) if text[key_start] in "\"'" else r.unquoted()
         if not key:
             r.fail(f"expected a key, got {show(text[key_start:key_start + 1])}", key_start)
         _skip_ws(r)
@@ -129,7 +171,7 @@ def _list_or_array(r: Reader):
     _skip_ws(r)
     items = List()
     first_type = None
-    mixed_ok = r.version >= MIXED_LISTS
+    mixed_ok = r.version >= NEW_GRAMMAR
     while r.pos < r.end and text[r.pos] != "]":
         item_start = r.pos
         item = value(r)
@@ -161,7 +203,7 @@ def _array(r: Reader):
     while r.pos < r.end and text[r.pos] != "]":
         item_start = r.pos
         item = value(r)
-        if type(item) is not item_type:
+        if type(item) is not item_type and not (r.version >= NEW_GRAMMAR and type(item) in _INTEGRAL):
             r.fail(f"can't insert {_TYPE_NAMES[type(item)]} into {_TYPE_NAMES[array_type]}", item_start)
         items.append(int(item))
         if not _separator(r):

@@ -80,3 +80,16 @@ def test_float_overflow_is_infinity():
     # Float.parseFloat("1e39") is Infinity; TagParser keeps it as a float tag
     result = snbt("1e39f")
     assert type(result) is Float and math.isinf(result)
+
+
+def test_new_grammar_escapes_from_1_21_5():
+    # 25w02a: quoted SNBT strings gained \b \s \t \n \f \r \x.. \u.... \U........ \N{name}
+    assert snbt(r'"a\nb\tc\sd\x41\u00e9\N{SNOWMAN}"', (1, 21, 5)) == "a\nb\tc dA\u00e9\u2603"
+    assert snbt(r"{'k\n':1}", (1, 21, 5)) == {"k\n": 1}
+    assert "escape" in snbt_error(r'"a\qb"', (1, 21, 5)).message
+    assert "character name" in snbt_error(r'"\N{NOT A NAME}"', (1, 21, 5)).message
+    assert "escape" in snbt_error(r'"a\nb"', (1, 21, 4)).message
+
+
+def test_arrays_take_any_integer_from_1_21_5():
+    assert type(snbt("[B;1,2]", (1, 21, 5))) is ByteArray
