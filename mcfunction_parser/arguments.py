@@ -14,7 +14,6 @@ from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, Pars
 
 # Characters Minecraft's ResourceLocation.read consumes; validity of each part is checked after.
 _RESLOC = re.compile(r"[0-9a-z_:/.\-]*")
-_NAMESPACE = re.compile(r"[0-9a-z_.\-]+\Z")
 _RESLOC_STOP = frozenset(" ,]}=[{")
 
 
