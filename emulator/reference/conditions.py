@@ -2,8 +2,7 @@
 
 As a stage, a context passes when the test's outcome differs from ``negated``. As the final
 command (``execute if score ...`` without ``run``): ``if`` passes with 1 (``entity``, ``data``:
-the count),
-``unless`` passes with 1, and a failing test fails the command ("Test failed").
+the count), ``unless`` passes with 1, and a failing test fails the command ("Test failed").
 """
 from __future__ import annotations
 

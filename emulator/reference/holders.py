@@ -40,6 +40,9 @@ def holder_names(holder, source: Source, scoreboard: Scoreboard) -> list[str]:
 
 
 def single_holder(holder, source: Source, scoreboard: Scoreboard) -> str:
-    """ScoreHolderArgument.getName: the first of the names."""
+    """ScoreHolderArgument.getName: the first of the names; ``*`` has no default here (an empty
+    list), so it always fails."""
+    if isinstance(holder, Wildcard):
+        raise CommandFailure("No relevant score holders could be found")
     return holder_names(holder, source, scoreboard)[0]
 

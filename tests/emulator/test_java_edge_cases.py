@@ -76,6 +76,11 @@ CASES = [
      "execute if score #a o = #u o run scoreboard players add #if o 1\n"
      "execute unless score #a o = #u o run scoreboard players add #unless o 1",
      {("#if", "o"): None, ("#unless", "o"): 1}, ...),
+    # ScoreHolderArgument.getName (single holder: `get`, `if score`) has an empty default for '*',
+    # so '*' fails there ("No relevant score holders could be found")
+    ("wildcard_single_holder_fails", "scoreboard players set #a o 1\n"
+     "execute store success score #g o run scoreboard players get * o\n"
+     "execute store success score #i o if score * o matches 1", {("#g", "o"): 0, ("#i", "o"): 0}, ...),
     # IntRange bounds are inclusive
     ("range_inclusive", "scoreboard players set #a o 5\n"
      "execute if score #a o matches 5..5 run scoreboard players add #hit o 1\n"
@@ -149,8 +154,18 @@ HELPERS = {
 }
 
 
-@pytest.mark.parametrize("backend", BACKENDS)
-@pytest.mark.parametrize("case_id, body, expected, result", CASES, ids=[c[0] for c in CASES])
+VM_GAPS = {"wildcard_single_holder_fails": "VM: '*' as a single score holder takes the first tracked holder"}
+
+
+def _case_params():
+    for case in CASES:
+        yield pytest.param("python", *case, id=f"{case[0]}-python")
+        gap = VM_GAPS.get(case[0])
+        marks = pytest.mark.xfail(strict=True, reason=gap) if gap else ()
+        yield pytest.param("numba", *case, marks=marks, id=f"{case[0]}-numba")
+
+
+@pytest.mark.parametrize("backend, case_id, body, expected, result", list(_case_params()))
 def test_edge_case(tmp_path, backend, case_id, body, expected, result):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
     outcome = run_root(backend, pack, "t:main")
@@ -260,9 +275,7 @@ COST_CASES = [
 ]
 
 
-VM_COST_GAP = {
-    "forked_failure_charges_later_stages": "VM: stops charging after an error in a forked chain",
-}
+VM_COST_GAP: dict[str, str] = {}
 
 
 def _cost_params():

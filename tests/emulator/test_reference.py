@@ -302,3 +302,12 @@ def test_context_modifiers_move_the_source(tmp_path):
     assert where("positioned 0.7 1.2 -0.5 align xz").pos == (0.0, 1.2, -1.0)
     assert where("in minecraft:the_nether").pos == (1.0, 64.0, 2.0)
     assert where("rotated ~10 ~-5").rot == (10.0, -5.0)
+
+
+def test_wildcard_is_no_single_holder(tmp_path):
+    # ScoreHolderArgument.getName passes an empty default for '*': `get *` and `if score *` fail
+    body = (SETUP + "scoreboard players set #a o 1\n"
+            "execute store success score #g o run scoreboard players get * o\n"
+            "execute store success score #i o if score * o matches 1")
+    _, state, _ = run(tmp_path, {"t:main": body})
+    assert scores(state) == {"#a": 1, "#g": 0, "#i": 0}
