@@ -1,5 +1,5 @@
 # pool:physics/step — one tick of table physics: events found by swept tests are resolved in time
-# order within the tick (at most $max_events), then the displays follow the scores.
+# order within the tick (at most $max_events), then the displays of the balls that moved follow.
 # Every ball in play is saved at the tick's start (time 0) and marked dirty (needs a trial).
 # Reads/writes: every ball's scores; #now #events pool.tmp; $resting pool.game.
 scoreboard players set #now pool.tmp 0
@@ -7,5 +7,5 @@ scoreboard players set #events pool.tmp 0
 execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/save
 tag @e[tag=pool.ball,scores={pool.state=0..2}] add pool.dirty
 function pool:physics/substep
-execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/display/place
+execute as @e[tag=pool.moving] run function pool:ball/display/place
 execute unless entity @e[tag=pool.ball,scores={pool.state=1..2}] run function pool:physics/at_rest
