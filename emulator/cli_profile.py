@@ -1,0 +1,232 @@
+"""``dpemu profile``: run packs like ``dpemu run`` and report exact command counts: per tick, per
+root (quota headroom), per function (self, total, calls), per line (with the VM's instructions,
+i.e. each execute stage), the commands run host-side, and call stacks.
+
+Collapsed stacks and the ``/debug function`` trace need the call stack of every charge, which the
+reference backend records (:mod:`emulator.profile_stacks`); those formats run on it.
+"""
+from __future__ import annotations
+
+import json
+import sys
+from collections import Counter, defaultdict
+from pathlib import Path
+
+import click
+
+from emulator import profile_formats as formats
+from emulator.api import Emulator
+from emulator.cli_run import _apply_setup, _OrderedCommand, _parse_call, _parse_set, _parse_until
+from emulator.profile_stacks import StackBackend
+
+STACK_FORMATS = ("collapsed", "trace")
+
+
+class RootLog:
+    """Records every root sequence the runtime runs: (function, cost, cut)."""
+
+    def __init__(self, runtime) -> None:
+        self.runs: list[tuple[str, int, bool]] = []
+        inner = runtime.run_root
+
+        def run_root(function_id, context=None, arguments=None):
+            result = inner(function_id, context, arguments)
+            self.runs.append((function_id, result.cost, result.cut))
+            return result
+
+        runtime.run_root = run_root
+
+    def summary(self, limit: int) -> list[dict]:
+        by_function: dict[str, list[tuple[int, bool]]] = defaultdict(list)
+        for function, cost, cut in self.runs:
+            by_function[function].append((cost, cut))
+        rows = []
+        for function, runs in by_function.items():
+            costs = [c for c, _ in runs]
+            rows.append({"function": function, "runs": len(runs), "max_cost": max(costs),
+                         "mean_cost": sum(costs) / len(costs), "headroom": limit - max(costs),
+                         "cut": sum(cut for _, cut in runs)})
+        return sorted(rows, key=lambda r: -r["max_cost"])
+
+
+@click.command("profile", cls=_OrderedCommand)
+@click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False))
+@click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run.")
+@click.option("--call", multiple=True, metavar="FN", help="Call a function (as the server) before ticking.")
+@click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking.")
+@click.option("--until", metavar='"HOLDER OBJ RANGE"', help="Stop after the tick where the score is in RANGE.")
+@click.option("--backend", type=click.Choice(["numba", "python"]),
+              help="Default: numba; python for --format collapsed|trace (which need call stacks).")
+@click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")
+@click.option("--format", "fmt", type=click.Choice(formats.FORMATS), default="table", show_default=True)
+@click.option("--top", default=20, show_default=True, type=click.IntRange(min=1), help="Rows per table section.")
+@click.option("-o", "--output", metavar="FILE", type=click.Path(dir_okay=False), help="Write here instead of stdout.")
+@click.option("--baseline", metavar="FILE", help="A JSON profile to compare with: exit 1 when a function grew.")
+@click.option("--threshold", default=formats.DEFAULT_THRESHOLD, show_default=True, type=click.FloatRange(min=0),
+              metavar="PCT", help="Allowed growth per function with --baseline, in percent.")
+def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, output, baseline, threshold) -> None:
+    """Profile PACKS: apply --set and --call in order, run --ticks ticks, report command counts."""
+    if fmt in STACK_FORMATS and backend == "numba":
+        raise click.UsageError(f"--format {fmt} needs call stacks, which only --backend python records")
+    saved = _read_baseline(baseline) if baseline else None
+    sets, calls = [_parse_set(s) for s in set_], [_parse_call(c) for c in call]
+    stop = _parse_until(until) if until else None
+    stacks = fmt in STACK_FORMATS or backend == "python"
+    trace = formats.TraceWriter() if fmt == "trace" else None
+    emu = Emulator(backend="python" if stacks else "numba")
+    if stacks:
+        emu.backend = StackBackend(trace)
+    try:
+        emu.load(list(packs), mc_version)
+    except ValueError as error:
+        raise click.BadParameter(str(error), param_hint="--mc") from None
+    for diag in emu.load_diagnostics:
+        if diag.severity == "error":
+            click.echo(diag.format(), err=True)
+    roots = RootLog(emu.runtime)
+    _apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+    for _ in range(ticks):
+        emu.tick()
+        if stop and stop.met(emu):
+            break
+    report = build_report(emu, roots)
+    text = {"table": lambda: formats.write_table(report, top), "json": lambda: formats.write_json(report),
+            "collapsed": lambda: formats.write_collapsed(report), "trace": lambda: trace.text()}[fmt]()
+    if output:
+        Path(output).write_text(text)
+    else:
+        click.echo(text, nl=False)
+    if saved is not None:
+        grown = formats.compare(saved, report, threshold)
+        for line in grown:
+            click.echo(f"regression: {line}", err=True)
+        if grown:
+            sys.exit(1)
+        click.echo(f"no function grew more than {threshold:g}% over {baseline}", err=True)
+
+
+def _read_baseline(path: str) -> dict:
+    try:
+        data = json.loads(Path(path).read_text())
+    except FileNotFoundError:
+        raise click.BadParameter(f"{path}: no such file (write one with --format json -o FILE)",
+                                 param_hint="--baseline") from None
+    except (OSError, ValueError) as error:
+        raise click.BadParameter(f"{path}: not a JSON profile ({error})", param_hint="--baseline") from None
+    if not isinstance(data, dict) or not isinstance(data.get("functions"), list):
+        raise click.BadParameter(f"{path}: not a JSON profile (no \"functions\" list)", param_hint="--baseline")
+    return data
+
+
+# ---------------------------------------------------------------------- the report
+def build_report(emu: Emulator, roots: RootLog) -> dict:
+    runtime = emu.runtime
+    series = emu.commands_per_tick
+    limit = emu.state.gamerules.max_command_chain_length
+    prof = emu.profile
+    sources = emu.packs.sources
+    backend = emu.backend
+    if isinstance(backend, StackBackend):
+        stacks = dict(backend.stacks)
+        calls = dict(backend.calls)
+        totals = _totals_from_stacks(stacks, backend.root_calls)
+        instructions: dict = {}
+        host: list = []
+    else:
+        stacks = None
+        calls = _vm_calls(backend, roots)
+        totals = prof.functions_total
+        instructions = _vm_instructions(backend)
+        host = _vm_host(backend, sources)
+    names = set(prof.functions_self) | set(totals) | set(calls)
+    functions = [{"function": f, "self": prof.functions_self.get(f, 0), "total": totals.get(f),
+                  "calls": calls.get(f)} for f in names]
+    functions.sort(key=lambda f: (-(f["total"] if f["total"] is not None else f["self"]), f["function"]))
+    report = {
+        "backend": emu.backend_name,
+        "limit": limit,
+        "commands": sum(series) + runtime.commands_outside_ticks,
+        "ticks": {"count": len(series), "mean": sum(series) / len(series) if series else 0.0,
+                  "max": max(series, default=0), "series": series},
+        "roots": roots.summary(limit),
+        "functions": functions,
+        "lines": [{"path": path, "line": line, "commands": count, "source": _source(sources, path, line),
+                   "instructions": instructions.get((path, line), [])}
+                  for (path, line), count in prof.top_lines(len(prof.lines))],
+        "host": host,
+    }
+    if stacks is not None:
+        report["stacks"] = {";".join(stack): count for stack, count in sorted(stacks.items())}
+    return report
+
+
+def _source(sources: dict, path: str, line: int) -> str:
+    lines = sources.get(path) or []
+    return lines[line - 1].strip() if 0 < line <= len(lines) else ""
+
+
+def _totals_from_stacks(stacks: dict, root_calls: Counter) -> dict[str, int]:
+    """Inclusive cost as the VM counts it (emulator.profile_data): every charge counts once for
+    each distinct function on its stack, except a root's own call, which is on no line."""
+    totals: Counter = Counter()
+    for stack, count in stacks.items():
+        for function in set(stack):
+            totals[function] += count
+    totals.subtract(root_calls)
+    return {f: c for f, c in totals.items() if c}
+
+
+def _vm_ops() -> dict[int, str]:
+    from emulator import vm
+
+    return {value: name[3:].lower() for name, value in vars(vm).items() if name.startswith("OP_") and isinstance(value, int)}
+
+
+def _vm_instructions(backend) -> dict[tuple[str, int], list[dict]]:
+    """Per source line, the cost charged at each VM instruction (an execute stage, the final
+    command, a call), in code order."""
+    import numpy as np
+
+    code, _ = backend.program.arrays()
+    names = _vm_ops()
+    out: dict[tuple[str, int], list[dict]] = defaultdict(list)
+    for pc in np.flatnonzero(backend.counts):
+        loc = backend.program.locs[pc]
+        if loc is not None:
+            out[(loc.path, loc.line)].append({"op": names.get(int(code[pc, 0]), str(code[pc, 0])),
+                                              "count": int(backend.counts[pc])})
+    return dict(out)
+
+
+def _vm_calls(backend, roots: RootLog) -> dict[str, int]:
+    """Calls per function: the cost at each ``function`` instruction (1 per call) plus root runs."""
+    import numpy as np
+
+    from emulator import vm
+    from emulator.profile_data import base_function
+
+    code, _ = backend.program.arrays()
+    calls: Counter = Counter(function for function, cost, _ in roots.runs if cost)
+    for pc in np.flatnonzero(backend.counts):
+        if code[pc, 0] == vm.OP_CALL:
+            calls[base_function(backend.program.functions[code[pc, 1]])] += int(backend.counts[pc])
+    return dict(calls)
+
+
+def _vm_host(backend, sources: dict) -> list[dict]:
+    """The commands and stages the VM handed to Python, with the cost charged at them."""
+    import numpy as np
+
+    from emulator import vm
+
+    code, _ = backend.program.arrays()
+    names = _vm_ops()
+    rows = []
+    for pc in np.flatnonzero(backend.counts):
+        op = int(code[pc, 0])
+        if op in (vm.OP_HOST, vm.OP_HOSTSTAGE, vm.OP_HOSTSTORE):
+            host_op = backend.program.host_ops[code[pc, 1]]
+            loc = host_op.node.loc
+            rows.append({"function": host_op.function, "path": loc.path, "line": loc.line, "op": names[op],
+                         "command": _source(sources, loc.path, loc.line), "count": int(backend.counts[pc])})
+    return sorted(rows, key=lambda r: -r["count"])
