@@ -13,7 +13,7 @@ Shapes (the cost rule is in :mod:`emulator.backend`; the opcodes in :mod:`emulat
     scoreboard players add #a o 1      ADD h o 1                       (charges 1 itself)
     function f                         CALL f                          (charges 1 itself)
     execute if score #a o matches 1.. store result score #b o run function f
-                                       CMD 2 ->end; IFMATCH; CHKOBJ; CALL f; STORE; end: ENDCMD
+                                       CMD ->end; IFMATCH; CHKOBJ; CALL f; STORE; end: ENDCMD
     return run CMD                     CMD k ->none; ...CMD...; RETRES; none: RETNONE
 """
 from __future__ import annotations
@@ -24,7 +24,8 @@ from emulator import vm
 from emulator.program import HostOp, MacroCall, Program
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Execute, Function, FunctionCall, IfFunction, IfScore, IfScoreMatches, NameTarget, Return,
+    Command, Condition, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs, ExSummon, Function,
+    FunctionCall, IfFunction, IfScore, IfScoreMatches, NameTarget, Return,
     ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData, StoreScore, Subcommand,
 )
 from emulator.semantics import INT_MAX, INT_MIN
@@ -102,9 +103,9 @@ class Compiler:
         else:
             self.host(vm.OP_HOST, cmd)
 
-    def host(self, op: int, node: Command | Subcommand) -> None:
+    def host(self, op: int, node: Command | Subcommand, *operands: int) -> None:
         self.program.host_ops.append(HostOp(node, self.fn_id))
-        self.emit(op, len(self.program.host_ops) - 1)
+        self.emit(op, len(self.program.host_ops) - 1, *operands)
 
     # ------------------------------------------------------------------ execute chains
 
@@ -112,14 +113,14 @@ class Compiler:
               outer_stores: tuple[StoreScore, ...] = ()) -> None:
         """``CMD``, the stages, the final command, the stores, then the chain's end: ``ENDCMD``,
         or for ``return run`` (``returning``) ``RETRES`` with the abort target ``RETNONE``."""
-        groups = _cost_groups(stages, final)
-        cmd_pc = self.emit(vm.OP_CMD, groups[0], 0)
+        cmd_pc = self.emit(vm.OP_CMD, 0)
         stores = list(outer_stores)
-        group = 0
+        forked = False  # BuildContexts: after a fork, a stage's error fails only its context
         for i, st in enumerate(stages):
             last = final is None and i == len(stages) - 1
+            forked = forked or isinstance(st, _FORKS)
             if isinstance(st, (IfScoreMatches, IfScore)) and not _vm_condition(st):
-                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st)
+                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
             elif isinstance(st, IfScoreMatches):
                 lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
                 hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
@@ -129,17 +130,16 @@ class Compiler:
                 self.emit(vm.OP_IFSCORE, vm.CMP_BY_SYMBOL[st.op], self.holder(st.target), self.objective(st.objective),
                           self.holder(st.source), self.objective(st.source_objective), int(st.negated), int(last))
             elif isinstance(st, StoreScore) and _named(st.targets):
-                self.emit(vm.OP_CHKOBJ, self.objective(st.objective))
+                self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked))
                 stores.append(st)
             elif isinstance(st, (StoreScore, StoreData, StoreBossbar)):
-                self.host(vm.OP_HOSTSTAGE, st)  # resolves the store's target now, as the modifier does
+                self.host(vm.OP_HOSTSTAGE, st, int(forked))  # resolves the store's target now, as the modifier does
                 stores.append(st)
-            elif isinstance(st, IfFunction):  # the calls, then a continuation entry charging the next group
-                group += 1
+            elif isinstance(st, IfFunction):  # the calls, then the rest of the chain as a new entry
                 self.if_function(st)
-                self.emit(vm.OP_CONT, groups[group])
+                self.emit(vm.OP_CONT)
             else:  # a context modifier or a condition the VM does not evaluate
-                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st)
+                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
         if isinstance(final, Return):
             self.return_(final, stores, in_chain=True)
             stores = []
@@ -153,7 +153,7 @@ class Compiler:
             end = self.emit(vm.OP_RETNONE)
         else:
             end = self.emit(vm.OP_ENDCMD)
-        self.program.patch(cmd_pc, 2, end)
+        self.program.patch(cmd_pc, 1, end)
 
     def stores(self, stores: list) -> None:
         """Apply the chain's stores to the result, in the order written (callbacks chain so)."""
@@ -258,6 +258,10 @@ class Compiler:
         return self.program.intern_name(text)
 
 
+# Stages registered with ``fork`` in ExecuteCommand (the others are plain redirects)
+_FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn, ExSummon)
+
+
 def _named(holder) -> bool:
     return isinstance(holder, NameTarget)
 
@@ -276,15 +280,3 @@ def flatten_execute(cmd: Execute) -> tuple[list[Subcommand], Command | None]:
         stages.extend(final.subcommands)
         final = final.run
     return stages, final
-
-
-def _cost_groups(stages: list[Subcommand], final: Command | None) -> list[int]:
-    """Stage charges per entry: the first entry, then one after each ``if function`` (rule 2, 4).
-    A condition that ends the chain is the final command, not a stage."""
-    groups = [0]
-    for i, st in enumerate(stages):
-        if isinstance(st, IfFunction):
-            groups.append(0)
-        elif not (final is None and i == len(stages) - 1):
-            groups[-1] += 1
-    return groups

@@ -20,6 +20,7 @@ from emulator.reference.macros import MacroExpander
 from emulator.semantics import wrap32
 from emulator.state import Context, Frame, Overflow, WorldState
 from emulator.world import nbt_ops
+from emulator.world.errors import CommandFailure as WorldFailure
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
@@ -195,9 +196,10 @@ class NumbaBackend:
         """An execute stage run by the host: no context left, one, or a fork."""
         r = self.regs
         made = self.host.run_stage(node, ctx)
-        if made is None:  # the command fails here: skip to the chain's end
+        if made is None:  # the stage failed: the command, or in a forked chain this context
             r[vm.R_ALIVE] = 0
-            r[vm.R_PC] = r[vm.R_ABORT]
+            if not self.program.rows[int(r[vm.R_PC]) - 1][2]:
+                r[vm.R_PC] = r[vm.R_ABORT]
         elif len(made) >= self.state.gamerules.max_command_fork_count:  # BuildContexts' fork limit
             self._report_here(_ERROR_TEXT[vm.ERR_FORK_LIMIT].format(self.state.gamerules.max_command_fork_count),
                               "error")
@@ -218,11 +220,11 @@ class NumbaBackend:
         r = self.regs
         depth = int(r[vm.R_DEPTH])
         entry = (int(r[vm.R_PC]), contexts[1:])
-        if r[vm.R_LOOP]:
+        if r[vm.R_LOOP] != vm.LOOP_NONE:
             self.forks[depth].append(entry)
         else:  # a new command: whatever an earlier function left at this depth is stale
             self.forks[depth] = [entry]
-            r[vm.R_LOOP] = 1
+            r[vm.R_LOOP] = vm.LOOP_FORKED
         r[vm.R_CTX] = contexts[0]
 
     def _next_context(self) -> None:
@@ -233,12 +235,13 @@ class NumbaBackend:
             stack.pop()
         r[vm.R_ALIVE] = 1
         if not stack:
-            r[vm.R_LOOP] = 0
+            r[vm.R_LOOP] = vm.LOOP_NONE
             r[vm.R_PC] += 1
             return
         resume, remaining = stack[-1]
         r[vm.R_CTX] = remaining.pop(0)
         r[vm.R_PC] = resume
+        r[vm.R_LOOP] = vm.LOOP_REENTERED
 
     def _macro(self, pc: int) -> None:
         call = self.program.macro_calls[self.program.rows[pc][1]]
@@ -275,7 +278,10 @@ class NumbaBackend:
         root = self.state.storage.get(cmd.with_source.id, Compound())
         if cmd.with_path is None:
             return root
-        found = nbt_ops.get(root, cmd.with_path)
+        try:
+            found = nbt_ops.get(root, cmd.with_path)
+        except WorldFailure as failure:  # e.g. nothing at the path
+            raise CommandFailure(failure.message, report=True) from None
         if len(found) != 1 or not isinstance(found[0], dict):
             raise CommandFailure(f"Expected a single compound at {cmd.with_path.text}", report=True)
         return found[0]

@@ -17,7 +17,8 @@ abort target, the context, the fork loop flag) are saved in the frame and restor
 Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
 table). When a host stage makes several, Python sets ``R_LOOP`` and keeps the others; the chain's
 ``ENDCMD`` then returns ST_NEXTCTX and Python re-enters the chain after that stage with the next
-context. Stage charges are all taken by ``CMD``, so a re-entered chain is not charged again.
+context. Stage ops charge themselves (once, even with no context left, and not on a re-entered
+pass), so a stage that fails the command leaves the later stages uncharged, as in the game.
 """
 from __future__ import annotations
 
@@ -28,9 +29,9 @@ WIDTH = 8
 
 # ---------------------------------------------------------------- opcodes
 OP_HALT = 0  # root finished: return ST_DONE
-OP_CMD = 1  # a: stage cost, b: abort pc. Entry check, charge stages, alive = 1, has = 0
+OP_CMD = 1  # a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
 OP_ENDCMD = 2  # alive = 1 (after a chain with conditions)
-OP_CONT = 3  # a: stage cost. A continuation entry (after `if function`): check, charge
+OP_CONT = 3  # a continuation entry (after `if function`): the entry check
 OP_SET = 10  # a: holder, b: objective, c: value
 OP_ADD = 11  # a h, b o, c value
 OP_REMOVE = 12  # a h, b o, c value
@@ -39,7 +40,7 @@ OP_RESETALL = 14  # a h
 OP_GET = 15  # a h, b o
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
-OP_CHKOBJ = 22  # a o: a store stage naming objective o fails the command if o does not exist
+OP_CHKOBJ = 22  # a o, b forked: the `store ... score` stage: fails if o does not exist
 OP_STORE = 23  # a: 0 result / 1 success, b h, c o
 OP_CALL = 30  # a: function id
 OP_CALLREG = 31  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
@@ -61,7 +62,7 @@ OP_JMPDEAD = 48  # a: target. `run return run ...` with no context left: skip it
 OP_STOP = 49  # abort the chain without an error (`if function` on an empty tag)
 OP_HOST = 50  # a: host op index. A final command run by Python (charged here, per context)
 OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
-OP_HOSTSTAGE = 52  # a: host op index. An execute stage run by Python: sets alive and R_CTX
+OP_HOSTSTAGE = 52  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
 OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 
@@ -87,6 +88,10 @@ F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA,
 F_WIDTH = 10
 
 ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX = range(8)
+
+# R_LOOP: no fork in this command; forked, first pass; re-entered for a later context (its stages
+# were charged on the first pass)
+LOOP_NONE, LOOP_FORKED, LOOP_REENTERED = range(3)
 
 ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS, ERR_FORK_LIMIT = range(1, 7)
 
@@ -293,19 +298,19 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             if quota <= 0:
                 status = ST_CUT
                 break
-            cost = code[pc, 1]
-            quota -= cost
-            if counting:
-                counts[pc] += cost
             alive = 1
             has = 0
-            abort = code[pc, 2]
+            abort = code[pc, 1]
             pc += 1
         elif op == OP_IFSCORE or op == OP_IFMATCH:
+            final = code[pc, 7]
+            if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
             if alive == 0:
                 pc += 1
                 continue
-            final = code[pc, 7]
             if final:
                 if quota <= 0:
                     status = ST_CUT
@@ -325,7 +330,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 has = 1
                 ok = 0
                 val = 0
-                pc = abort if not final else pc + 1
+                # a condition is a fork: its error drops the context, later stages still run
+                pc += 1
                 alive = 0 if not final else alive
                 status = ST_ERROR
                 break
@@ -374,12 +380,16 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 values[h, o] = v
                 present[h, o] = 1
             pc += 1
-        elif op == OP_CHKOBJ:
+        elif op == OP_CHKOBJ:  # the `store ... score` stage
+            if loop != LOOP_REENTERED:
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
             if alive and (alive_obj[code[pc, 1]] == 0 or forklimit <= 1):
                 err = ERR_UNKNOWN_OBJECTIVE if alive_obj[code[pc, 1]] == 0 else ERR_FORK_LIMIT
                 errarg = code[pc, 1] if err == ERR_UNKNOWN_OBJECTIVE else forklimit
                 alive = 0
-                pc = abort
+                pc = pc + 1 if code[pc, 2] else abort  # in a forked chain only this context fails
                 status = ST_ERROR
                 break
             pc += 1
@@ -491,10 +501,6 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             if quota <= 0:
                 status = ST_CUT
                 break
-            cost = code[pc, 1]
-            quota -= cost
-            if counting:
-                counts[pc] += cost
             pc += 1
         elif op == OP_FAIL:
             if alive == 0 and code[pc, 4] == 0:  # an aborting failure happens even with no context
@@ -543,6 +549,10 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             status = ST_HOST
             break
         elif op == OP_HOSTSTAGE:
+            if loop != LOOP_REENTERED:
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
             if alive == 0:
                 pc += 1
                 continue

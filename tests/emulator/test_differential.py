@@ -76,8 +76,7 @@ FAILING_LINES = [
     "execute if function t:missing run say x",
     "schedule function t:missing 1t", "gamerule nope", "particle flame ~ ~ ~", "time set day",
     "execute if block ~ ~ ~ stone run say x",
-    pytest.param("function t:macro with storage t:none args", marks=pytest.mark.xfail(
-        strict=True, reason="VM: the world library's failure escapes run_root")),
+    "function t:macro with storage t:none args",
 ]
 
 

@@ -123,3 +123,12 @@ def test_quota_checked_before_every_entry(tmp_path, body, cut, result):
     root = emu.runtime.call("t:f")
     assert (root.cut, root.result) == (cut, result)
     assert any("stopped due to limit" in d.message for d in emu.diagnostics) == cut
+
+
+def test_failing_stage_stops_charging(tmp_path):
+    # BuildContexts: a non-forked modifier error returns at once; the later stages are not charged
+    emu = emulator_for(tmp_path, {"t:setup": FUNCTIONS["t:setup"],
+                                  "t:f": "execute store result score @s o positioned 0 0 0 align xyz run say x"})
+    emu.call("t:setup")
+    assert emu.runtime.call("t:f").cost == 1 + 1
+    assert emu.log == []

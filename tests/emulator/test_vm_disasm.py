@@ -28,7 +28,8 @@ def test_disasm_host_ops(tmp_path):
     result = CliRunner().invoke(main, ["disasm", str(pack), "t:f"])
     assert result.exit_code == 0, result.output
     ops = [line.split(None, 3)[2:] for line in result.output.splitlines() if line.startswith("      |")]
-    assert ops == [["CMD", "2 ->7"], ["HOSTSTAGE", "[ExAs]"], ["HOSTSTAGE", "[StoreData]"], ["HOST", "[Say]"],
+    # host stages carry the forked flag: after `as`, a failing stage drops only its context
+    assert ops == [["CMD", "->7"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"], ["HOST", "[Say]"],
                    ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
 
 
