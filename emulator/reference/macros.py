@@ -6,8 +6,10 @@ key its lines use (checked before any line runs); each ``$`` line is substituted
 """
 from __future__ import annotations
 
-from decimal import ROUND_HALF_EVEN, Decimal
+import math
+from decimal import ROUND_HALF_EVEN, Context, Decimal
 
+from emulator.semantics import double_to_float
 from mcfunction_parser import ast, nbt
 from mcfunction_parser.parse import parse_command
 
@@ -17,10 +19,14 @@ from .failure import CommandFailure
 def stringify(value) -> str:
     """MacroFunction.stringify: floats with up to 15 decimals and no exponent, integers plain,
     strings raw, compounds and lists as SNBT."""
-    if isinstance(value, (nbt.Float, nbt.Double)) or (isinstance(value, float) and not isinstance(value, bool)):
-        text = format(Decimal(repr(float(value))).quantize(Decimal("1e-15"), ROUND_HALF_EVEN), "f")
-        text = text.rstrip("0").rstrip(".") if "." in text else text
-        return "0" if text in ("-0", "") else text
+    if isinstance(value, float):
+        # a float tag is widened from its float32 value ((double) floatTag.getAsFloat())
+        number = double_to_float(value) if isinstance(value, nbt.Float) else float(value)
+        if not math.isfinite(number):
+            return "NaN" if number != number else ("-\u221e" if number < 0 else "\u221e")  # DecimalFormatSymbols
+        exact = Decimal(repr(number))
+        text = format(exact.quantize(Decimal("1e-15"), ROUND_HALF_EVEN, Context(prec=400)), "f")
+        return text.rstrip("0").rstrip(".") if "." in text else text
     if isinstance(value, bool):
         return "1" if value else "0"
     if isinstance(value, int):

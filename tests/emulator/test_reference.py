@@ -311,3 +311,19 @@ def test_wildcard_is_no_single_holder(tmp_path):
             "execute store success score #i o if score * o matches 1")
     _, state, _ = run(tmp_path, {"t:main": body})
     assert scores(state) == {"#a": 1, "#g": 0, "#i": 0}
+
+
+@pytest.mark.parametrize("value, text", [
+    # MacroFunction.stringify: DecimalFormat("#") with 15 fraction digits, HALF_EVEN, US symbols;
+    # a float tag goes through (double) of its float32 value
+    ("0.1f", "0.100000001490116"), ("0.1d", "0.1"), ("2.0d", "2"), ("1e20d", "100000000000000000000"),
+    ("1e-20d", "0"), ("-3b", "-3"), ("7", "7"), ('"hi"', "hi"), ("{a:1b}", "{a:1b}"),
+])
+def test_macro_values_are_stringified_as_the_game(value, text):
+    from emulator.reference.macros import stringify
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.reader import Reader
+    from mcfunction_parser.snbt import compound
+
+    parsed = compound(Reader("{v:" + value + "}", Loc("x", 1, 1), (1, 21, 0)))["v"]
+    assert stringify(parsed) == text
