@@ -20,9 +20,11 @@ Costs are charged as follows:
    redirect/fork modifier (``as at positioned rotated facing anchored align in on summon``,
    ``if|unless`` *followed by more stages*, ``store ...``) costs 1, once per stage, whatever the
    number of contexts (0 included); these are charged without further checks, so the quota can go
-   negative. ``run`` costs nothing. If a stage leaves 0 contexts, later stages are still charged;
-   if a stage fails the command (a modifier error, e.g. ``store ... score @s`` run by the server),
-   the later stages are not.
+   negative. ``run`` costs nothing. If a stage leaves 0 contexts, later stages are still charged.
+   A stage's error (e.g. ``store ... score @s`` run by the server) fails the whole command, and
+   the later stages are not charged, unless the chain is forked by then (a ``fork`` stage at or
+   before it: ``if|unless ...``, ``as``, ``at``, ``positioned as``, ``rotated as``,
+   ``facing entity``, ``on``, ``summon``): then only that context is dropped.
 3. The final command then runs once per remaining context, each run its own entry costing 1
    (ExecuteCommand). A condition that ends the chain (``execute if score ...`` without ``run``)
    is such a final command: 1 per context.
