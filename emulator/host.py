@@ -48,8 +48,7 @@ class HostResult:
 
 
 class Host:
-    """Runs host ops against ``state``; ``quota`` is read and charged through callbacks so the
-    VM's register stays the single count."""
+    """Runs host ops against ``state`` (the VM has charged their cost)."""
 
     def __init__(self, state: WorldState, functions: dict, tags, report: Callable[[str, str], None],
                  overflow: Callable[[str, int, int, int], None] | None = None) -> None:
@@ -81,8 +80,8 @@ class Host:
             return HostResult(True, False, 0)
 
     def run_stage(self, st: ast.Subcommand, ctx: Context) -> list[Context] | None:
-        """The contexts one execute stage makes from ``ctx``; None when the stage fails the
-        command (a non-forked modifier error)."""
+        """The contexts one execute stage makes from ``ctx``; None when the stage fails (the
+        whole command, or in a forked chain only this context: the caller decides)."""
         try:
             return self.stage(st, ctx)
         except HostFailure as failure:
