@@ -3,8 +3,9 @@ r"""SNBT (stringified NBT) literals, with the game's TagParser rules (1.13 – 1
 Unquoted values are typed by the game's patterns: ``1b 2s 3 4L 1.5f 2.0d 1.5`` (a bare decimal is
 a double), ``true``/``false`` are bytes, a number out of its type's range stays a string.
 From 1.21.5 (25w02a) the game's new SNBT grammar also accepts lists of mixed types, any integer
-type in typed arrays, and more escapes in quoted strings (``\n \t \s \x41 \u00e9 \N{name}``...); its
-other additions (hex/binary/underscored numbers, ``bool(..)``/``uuid(..)``) are not modelled.
+type in typed arrays, more escapes in quoted strings (``\n \t \s \x41 \u00e9 \N{name}``...) and the
+``bool(..)``/``uuid(..)`` operations; its hex/binary/underscored numbers are not modelled (they read
+as strings).
 """
 from __future__ import annotations
 
@@ -127,7 +128,46 @@ def value(r: Reader):
     if not token:
         r.fail(f"expected an NBT value, got {show(r.text[start:start + 1])}")
     r.pos = m.end()
+    if token in _OPERATIONS and r.version >= NEW_GRAMMAR and r.peek() == "(":
+        return _OPERATIONS[token](r, start)
     return typed_primitive(token)
+
+
+def _operation_argument(r: Reader):
+    r.pos += 1  # '('
+    argument = value(r)
+    _skip_ws(r)
+    r.expect(")")
+    return argument
+
+
+def _bool(r: Reader, start: int) -> Byte:
+    """``bool(x)``: 1b when the number x is not zero (or x is true)."""
+    argument = _operation_argument(r)
+    if type(argument) is String:
+        r.fail("bool(..) expects a number or a boolean", start)
+    return Byte(1 if argument else 0)
+
+
+def _uuid(r: Reader, start: int) -> IntArray:
+    """``uuid(x)``: the UUID text as the game's four-int array."""
+    r.pos += 1  # '('
+    _skip_ws(r)
+    m = _UUID_TEXT.match(r.text, r.pos)
+    if m is None:
+        r.fail("uuid(..) expects a UUID like 0-0-0-0-1", r.pos)
+    r.pos = m.end()
+    _skip_ws(r)
+    r.expect(")")
+    parts = [int(part, 16) for part in m.group().split("-")]
+    bits = (parts[0] << 96) | (parts[1] << 80) | (parts[2] << 64) | (parts[3] << 48) | parts[4]
+    words = [(bits >> shift) & 0xFFFFFFFF for shift in (96, 64, 32, 0)]
+    return IntArray(w - (1 << 32) if w >= 1 << 31 else w for w in words)
+
+
+_OPERATIONS = {"bool": _bool, "uuid": _uuid}
+# java.util.UUID.fromString: five hyphen-separated hex groups
+_UUID_TEXT = re.compile(r"[0-9a-fA-F]{1,8}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,12}")
 
 
 def _compound(r: Reader) -> Compound:

@@ -93,3 +93,14 @@ def test_new_grammar_escapes_from_1_21_5():
 
 def test_arrays_take_any_integer_from_1_21_5():
     assert type(snbt("[B;1,2]", (1, 21, 5))) is ByteArray
+
+
+def test_operations_from_1_21_5():
+    assert snbt("bool(5)", (1, 21, 5)) == 1 and type(snbt("bool(0)", (1, 21, 5))) is Byte
+    assert snbt("{a:bool(false)}", (1, 21, 5)) == {"a": 0}
+    # UUID 0-0-0-0-1 is the int array [0,0,0,1]; f81d4fae-7dec-11d0-a765-00a0c91e6bf6 as the game stores it
+    assert snbt("uuid(0-0-0-0-1)", (1, 21, 5)) == [0, 0, 0, 1]
+    assert snbt("uuid(f81d4fae-7dec-11d0-a765-00a0c91e6bf6)", (1, 21, 5)) == [-132296786, 2112623056, -1486552928,
+                                                                               -920753162]
+    assert "bool(..)" in snbt_error("bool('x')", (1, 21, 5)).message
+    assert type(snbt("bool", (1, 21, 5))) is String
