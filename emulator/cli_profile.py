@@ -152,7 +152,7 @@ def build_report(emu: Emulator, roots: RootLog) -> dict:
         "functions": functions,
         "lines": [{"path": path, "line": line, "commands": count, "source": _source(sources, path, line),
                    "instructions": instructions.get((path, line), [])}
-                  for (path, line), count in prof.top_lines(len(prof.lines))],
+                  for (path, line), count in sorted(prof.lines.items(), key=lambda kv: (-kv[1], kv[0]))],
         "host": host,
     }
     if stacks is not None:

@@ -1,0 +1,153 @@
+"""``dpemu profile``: every format, backends agreeing, stacks, the trace format, baselines."""
+import json
+
+import pytest
+from click.testing import CliRunner
+
+from emulator.cli import main
+from emulator.profile_formats import compare, parse_collapsed
+
+# main calls a twice and b once; both call the shared leaf f, so f has two distinct stacks
+FUNCTIONS = {
+    "demo/function/main.mcfunction": "scoreboard players set $x o 1\nfunction demo:a\nfunction demo:a\nfunction demo:b\n"
+                                     "execute if score $x o matches 1.. run scoreboard players add $y o 1\n",
+    "demo/function/a.mcfunction": "scoreboard players add $x o 2\nfunction demo:f\n",
+    "demo/function/b.mcfunction": "function demo:f\nsay hello\n",
+    "demo/function/f.mcfunction": "scoreboard players add $x o 1\nscoreboard players add $x o 1\n",
+    "demo/function/init.mcfunction": "scoreboard objectives add o dummy\n",
+    "demo/function/tick.mcfunction": "scoreboard players add $t o 1\nexecute if score $t o matches 2 run function demo:main\n",
+}
+
+
+@pytest.fixture
+def demo(pack):
+    return pack(FUNCTIONS, load=["demo:init"], tick=["demo:tick"])
+
+
+def profile(*args):
+    result = CliRunner().invoke(main, ["profile", *map(str, args)])
+    return result
+
+
+def report(root, *args):
+    result = profile(root, "--format", "json", *args)
+    assert result.exit_code == 0, result.output
+    return json.loads(result.output)
+
+
+@pytest.mark.parametrize("args", [(), ("--call", "demo:main")])
+def test_backends_agree_on_every_count(demo, args):
+    numba = report(demo, "--ticks", 3, *args)
+    python = report(demo, "--ticks", 3, "--backend", "python", *args)
+    for key in ("commands", "ticks", "roots", "functions"):
+        assert numba[key] == python[key], key
+    assert [(l["path"], l["line"], l["commands"]) for l in numba["lines"]] == \
+           [(l["path"], l["line"], l["commands"]) for l in python["lines"]]
+
+
+def test_counts_per_tick_root_function_and_line(demo):
+    r = report(demo, "--ticks", 3)
+    # tick 1: load (call 1 + 1 command) + tick (call 1 + 1 command + 1 failed condition stage);
+    # tick 2 also calls main (1) from the tick's execute line; main's body: set 1, a twice
+    # (call 1 + add 1 + call f 1 + f's 2), b (call 1 + call f 1 + f's 2 + say 1), execute 1 + 1
+    main_body = 1 + 2 * (1 + 1 + 1 + 2) + (1 + 1 + 2 + 1) + 2
+    assert r["ticks"]["series"] == [2 + 3, 3 + 1 + main_body, 3]
+    assert r["commands"] == sum(r["ticks"]["series"])
+    assert r["ticks"]["max"] == 4 + main_body and r["ticks"]["mean"] == pytest.approx(r["commands"] / 3)
+    roots = {x["function"]: x for x in r["roots"]}
+    assert roots["demo:tick"]["runs"] == 3 and roots["demo:tick"]["max_cost"] == 4 + main_body
+    assert roots["demo:tick"]["headroom"] == 65536 - 4 - main_body
+    functions = {f["function"]: f for f in r["functions"]}
+    assert functions["demo:f"] == {"function": "demo:f", "self": 6, "total": 6, "calls": 3}
+    assert functions["demo:a"]["calls"] == 2 and functions["demo:a"]["total"] == 2 * (2 + 2)
+    lines = {(l["path"].rsplit("/", 1)[-1], l["line"]): l for l in r["lines"]}
+    assert lines[("f.mcfunction", 1)]["commands"] == 3
+    assert lines[("main.mcfunction", 5)]["source"] == "execute if score $x o matches 1.. run scoreboard players add $y o 1"
+    # one VM instruction for the condition, one for the final command
+    assert [i["count"] for i in lines[("main.mcfunction", 5)]["instructions"]] == [1, 1]
+
+
+def test_host_commands_are_listed_with_counts(demo):
+    host = report(demo, "--ticks", 3)["host"]
+    say = [h for h in host if h["command"] == "say hello"]
+    assert say and say[0]["count"] == 1 and say[0]["function"] == "demo:b" and say[0]["line"] == 2
+
+
+def test_collapsed_stacks_add_up_to_the_command_count(demo):
+    result = profile(demo, "--ticks", 3, "--format", "collapsed")
+    assert result.exit_code == 0, result.output
+    stacks = parse_collapsed(result.output)
+    assert sum(stacks.values()) == report(demo, "--ticks", 3)["commands"]
+    # the leaf's cost is split by caller
+    assert stacks["demo:tick;demo:main;demo:a;demo:f"] == 4
+    assert stacks["demo:tick;demo:main;demo:b;demo:f"] == 2
+    assert all(" " not in stack for stack in stacks)
+
+
+def test_collapsed_needs_the_python_backend(demo):
+    result = profile(demo, "--format", "collapsed", "--backend", "numba")
+    assert result.exit_code == 2 and "only --backend python" in result.output
+
+
+def test_trace_matches_the_debug_function_format(pack):
+    root = pack({"demo/function/main.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 1\n"
+                                                  "function demo:sub\nexecute if score $x o matches 5 run say no\n",
+                 "demo/function/sub.mcfunction": "scoreboard players add $x o 2\n"})
+    result = profile(root, "--ticks", 0, "--call", "demo:main", "--format", "trace")
+    assert result.exit_code == 0, result.output
+    # DebugCommand.Tracer: 4 spaces per depth + 1; " -> N" after a command's result
+    assert result.output == (
+        "demo:main\n"
+        "    [F] demo:main size=4\n"
+        "        [C] scoreboard objectives add o dummy -> 1\n"
+        "        [C] scoreboard players set $x o 1 -> 1\n"
+        "        [C] function demo:sub\n"
+        "        [F] demo:sub size=1\n"
+        "            [C] scoreboard players add $x o 2 -> 3\n"
+        "        [C] execute if score $x o matches 5 run say no\n"
+    )
+
+
+def test_table_format(demo):
+    result = profile(demo, "--ticks", 3, "--top", 3)
+    assert result.exit_code == 0, result.output
+    text = result.output
+    assert text.startswith("backend numba: ") and "roots (quota 65536 each):" in text
+    assert "functions (top 3 by total):" in text and "hot lines (top 3):" in text and "say hello" in text
+
+
+def test_quota_cut_shows_in_the_roots(pack):
+    root = pack({"demo/function/init.mcfunction": "gamerule maxCommandChainLength 5\n",
+                 "demo/function/loop.mcfunction": "function demo:loop\n"}, load=["demo:init"], tick=["demo:loop"])
+    roots = {r["function"]: r for r in report(root, "--ticks", 2)["roots"]}
+    assert roots["demo:loop"]["cut"] == 2 and roots["demo:loop"]["headroom"] <= 0
+
+
+def test_baseline_comparison(demo, tmp_path):
+    saved = tmp_path / "base.json"
+    assert profile(demo, "--ticks", 3, "--format", "json", "-o", saved).exit_code == 0
+    same = profile(demo, "--ticks", 3, "--baseline", saved)
+    assert same.exit_code == 0 and "no function grew more than 10%" in same.output
+    data = json.loads(saved.read_text())
+    for f in data["functions"]:
+        if f["function"] == "demo:f":
+            f["total"] = 5  # now 6: +20%
+    saved.write_text(json.dumps(data))
+    grown = profile(demo, "--ticks", 3, "--baseline", saved)
+    assert grown.exit_code == 1 and "regression: demo:f: 5 -> 6 (+20.0%, threshold 10%)" in grown.output
+    assert profile(demo, "--ticks", 3, "--baseline", saved, "--threshold", 25).exit_code == 0
+
+
+def test_missing_or_bad_baseline_is_a_clear_error(demo, tmp_path):
+    missing = profile(demo, "--baseline", tmp_path / "nope.json")
+    assert missing.exit_code == 2 and "nope.json: no such file" in missing.output
+    (tmp_path / "bad.json").write_text("[1]")
+    bad = profile(demo, "--baseline", tmp_path / "bad.json")
+    assert bad.exit_code == 2 and "not a JSON profile" in bad.output
+
+
+def test_compare_rules():
+    before = {"functions": [{"function": "a", "self": 10, "total": 100}, {"function": "b", "self": 5, "total": None}]}
+    after = {"functions": [{"function": "a", "self": 10, "total": 110}, {"function": "b", "self": 6, "total": None},
+                           {"function": "c", "self": 1, "total": 1}]}
+    assert compare(before, after, 10.0) == ["b: 5 -> 6 (+20.0%, threshold 10%)", "c: 0 -> 1 (new, threshold 10%)"]
