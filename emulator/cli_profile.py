@@ -187,13 +187,13 @@ def _vm_instructions(backend) -> dict[tuple[str, int], list[dict]]:
     command, a call), in code order."""
     import numpy as np
 
-    code, _ = backend.program.arrays()
+    rows = backend.program.rows
     names = _vm_ops()
     out: dict[tuple[str, int], list[dict]] = defaultdict(list)
     for pc in np.flatnonzero(backend.counts):
         loc = backend.program.locs[pc]
         if loc is not None:
-            out[(loc.path, loc.line)].append({"op": names.get(int(code[pc, 0]), str(code[pc, 0])),
+            out[(loc.path, loc.line)].append({"op": names.get(rows[pc][0], str(rows[pc][0])),
                                               "count": int(backend.counts[pc])})
     return dict(out)
 
@@ -205,11 +205,11 @@ def _vm_calls(backend, roots: RootLog) -> dict[str, int]:
     from emulator import vm
     from emulator.profile_data import base_function
 
-    code, _ = backend.program.arrays()
+    rows = backend.program.rows
     calls: Counter = Counter(function for function, cost, _ in roots.runs if cost)
     for pc in np.flatnonzero(backend.counts):
-        if code[pc, 0] == vm.OP_CALL:
-            calls[base_function(backend.program.functions[code[pc, 1]])] += int(backend.counts[pc])
+        if rows[pc][0] == vm.OP_CALL:
+            calls[base_function(backend.program.functions[rows[pc][1]])] += int(backend.counts[pc])
     return dict(calls)
 
 
@@ -219,13 +219,13 @@ def _vm_host(backend, sources: dict) -> list[dict]:
 
     from emulator import vm
 
-    code, _ = backend.program.arrays()
+    code = backend.program.rows
     names = _vm_ops()
     rows = []
     for pc in np.flatnonzero(backend.counts):
-        op = int(code[pc, 0])
+        op = code[pc][0]
         if op in (vm.OP_HOST, vm.OP_HOSTSTAGE, vm.OP_HOSTSTORE):
-            host_op = backend.program.host_ops[code[pc, 1]]
+            host_op = backend.program.host_ops[code[pc][1]]
             loc = host_op.node.loc
             rows.append({"function": host_op.function, "path": loc.path, "line": loc.line, "op": names[op],
                          "command": _source(sources, loc.path, loc.line), "count": int(backend.counts[pc])})
