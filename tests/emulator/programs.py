@@ -194,6 +194,7 @@ class Outcome:
     overflows: tuple
     log: tuple
     diagnostics: tuple
+    line_costs: dict  # {(file name, line): cost charged there}
 
 
 def make_backend(name: str):
@@ -233,4 +234,5 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
         overflows=tuple((o.function, o.loc.line, o.op, o.a, o.b, o.exact, o.stored) for o in state.overflows),
         log=tuple((e.kind, e.text) for e in state.log),
         diagnostics=tuple((d.message, tuple((f.function, f.loc.line) for f in d.frames)) for d in state.diagnostics),
+        line_costs={(Path(path).name, line): n for (path, line), n in backend.line_counts().items() if n},
     )
