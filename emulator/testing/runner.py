@@ -13,7 +13,8 @@ from emulator.runtime import Runtime
 from emulator.state import WorldState
 from emulator.testing.discovery import TestFile
 from emulator.testing.results import FAILED, PASSED, SKIPPED, Summary, TestResult
-from emulator.testing.testfile import Check, Delay, Dummy, Fail, Run, Succeed, TestCase, read_test
+from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run, Succeed, TestCase, plain_text,
+                                       read_test)
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.pack import load_packs
 
@@ -134,23 +135,24 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
     result.ticks = emu.ticks
     result.seconds = time.perf_counter() - started
     if result.status != PASSED:
-        result.details = [d.format() for d in emu.diagnostics if d.severity == "error"]
+        result.details = list(dict.fromkeys(d.format() for d in emu.diagnostics))
     return result
 
 
 def _run_steps(emu: Emulator, case: TestCase, steps: Iterable) -> None:
     timeout = case.directives.timeout
+    chat_start = len(emu.log)  # chat conditions see the messages since the test started
     for step in steps:
         if step.gate and emu.call(step.gate) != 1:
             continue
         if isinstance(step, Run):
             emu.call(step.function)
-        elif isinstance(step, Check) and step.mode == "assert":
-            if emu.call(step.function) != 1:
-                raise _Verdict(FAILED, describe_failure(emu, step), step.loc.line)
-        elif isinstance(step, Check):
-            while emu.call(step.function) != 1:
-                _tick_or_time_out(emu, timeout, step, describe_failure(emu, step))
+        elif isinstance(step, (Check, ChatCheck)) and step.mode == "assert":
+            if not _holds(emu, step, chat_start):
+                raise _Verdict(FAILED, describe_failure(emu, step, chat_start), step.loc.line)
+        elif isinstance(step, (Check, ChatCheck)):
+            while not _holds(emu, step, chat_start):
+                _tick_or_time_out(emu, timeout, step, describe_failure(emu, step, chat_start))
         elif isinstance(step, Delay):
             for _ in range(step.ticks):
                 _tick_or_time_out(emu, timeout, step, f"still in 'await delay {step.ticks}'")
@@ -162,16 +164,34 @@ def _run_steps(emu: Emulator, case: TestCase, steps: Iterable) -> None:
             raise AssertionError("dummy steps never run")
 
 
+def _holds(emu: Emulator, step, chat_start: int) -> bool:
+    if isinstance(step, ChatCheck):
+        return bool(_chat_matches(emu, step, chat_start)) != step.negated
+    return emu.call(step.function) == 1
+
+
+def _chat(emu: Emulator, chat_start: int) -> list[str]:
+    return [e.text if e.kind == "say" else plain_text(e.text) for e in emu.log[chat_start:] if e.kind in ("say", "tellraw")]
+
+
+def _chat_matches(emu: Emulator, step: ChatCheck, chat_start: int) -> list[str]:
+    return [m for m in _chat(emu, chat_start) if re.search(step.pattern, m)]
+
+
 def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
     if emu.ticks >= timeout:
         raise _Verdict(FAILED, f"Timed out after {timeout} ticks: {waiting}", step.loc.line)
     emu.tick()
 
 
-def describe_failure(emu: Emulator, check: Check) -> str:
-    """PackTest's message for a failed score condition (ScoreAssertion.java); others name the
-    condition."""
+def describe_failure(emu: Emulator, check, chat_start: int = 0) -> str:
+    """PackTest's messages for failed score and chat conditions (ScoreAssertion.java,
+    ChatAssertion.java); others name the condition."""
     expect = "Did not expect" if check.negated else "Expected"
+    if isinstance(check, ChatCheck):
+        if check.negated:
+            return f"Did not expect chat message matching {check.pattern}, found {len(_chat_matches(emu, check, chat_start))}"
+        return f"Expected chat message matching {check.pattern}, received {_sample(_chat(emu, chat_start))}"
     match = _SCORE_MATCHES.match(check.condition)
     if match:
         holder, objective, rng = match.groups()
@@ -182,6 +202,13 @@ def describe_failure(emu: Emulator, check: Check) -> str:
         return (f"{expect} score {holder} {objective} {op} {source} {source_objective}, found "
                 f"{_value(emu, holder, objective)} {op} {_value(emu, source, source_objective)}")
     return f"{expect} {check.condition}"
+
+
+def _sample(messages: list[str]) -> str:
+    if not messages:
+        return "nothing"
+    shown = ", ".join('"' + (m[:80] + "…" if len(m) > 80 else m) + '"' for m in messages[:5])
+    return shown + (f" and {len(messages) - 5} more" if len(messages) > 5 else "")
 
 
 def _value(emu: Emulator, holder: str, objective: str) -> str:

@@ -21,9 +21,10 @@ from mcfunction_parser.diagnostics import Diagnostic, Loc
 from mcfunction_parser.parse import parse_command, parse_function
 
 GENERATED_NAMESPACE = "dpemu.test"
-# the conditions of `execute if` (PackTest's own `chat` needs a chat recorder the emulator lacks)
-CONDITIONS = ("biome", "block", "blocks", "data", "dimension", "entity", "function", "items", "loaded",
+# the conditions of `execute if`, checked through the emulator, and PackTest's own `chat`
+CONDITIONS = ("biome", "block", "blocks", "chat", "data", "dimension", "entity", "function", "items", "loaded",
               "predicate", "score")
+_QUOTED = re.compile(r'"((?:[^"\\]|\\.)*)"|\'((?:[^\'\\]|\\.)*)\'')
 _TEST_COMMAND = re.compile(r"(assert|await|fail|succeed|dummy)(?=\s|$)")
 _EXECUTE_PREFIX = re.compile(r"(execute\s.*?)\s+run\s+(?=(?:assert|await|fail|succeed|dummy)(?:\s|$))")
 _TIME = re.compile(r"(\d+(?:\.\d+)?|\.\d+)([tsd]?)")
@@ -47,6 +48,16 @@ class Check(Step):
     negated: bool
     condition: str
     function: str
+
+
+@dataclass(frozen=True)
+class ChatCheck(Step):
+    """PackTest's ``chat PATTERN``: a message (say, tellraw) since the test started matches the
+    regular expression (searched, as Java's Matcher.find)."""
+
+    mode: str
+    negated: bool
+    pattern: str
 
 
 @dataclass(frozen=True)
@@ -185,7 +196,7 @@ def _test_step(b: _Builder, number: int, line: str) -> Step | None:
     if word == "succeed":
         return Succeed(loc, gate) if not rest else _bad(b, "succeed takes no arguments", number, rest_col)
     if word == "fail":
-        return Fail(loc, gate, _text_component(rest)) if rest else _bad(b, "fail: expected a message", number, rest_col)
+        return Fail(loc, gate, plain_text(rest)) if rest else _bad(b, "fail: expected a message", number, rest_col)
     if word == "dummy":
         return Dummy(loc, gate)
     if word == "await" and rest.split(" ", 1)[0] == "delay":
@@ -203,12 +214,34 @@ def _check(b: _Builder, loc: Loc, gate, mode: str, negated: bool, condition: str
     kind = condition.split(" ", 1)[0]
     if kind not in CONDITIONS:
         return _bad(b, f"{mode}: unknown condition {kind!r}: expected one of " + ", ".join(CONDITIONS), number, col)
+    if kind == "chat":
+        return _chat(b, loc, gate, mode, negated, condition[len("chat"):].strip(), number, col + len("chat "))
     head = f"execute {'unless' if negated else 'if'} "
     cmd = b.command(head + condition + " run return 1", number, len(head) + 1, col)
     fallback = b.command("return 0", number, 1, col)
     if cmd is None or fallback is None:
         return None
     return Check(loc, gate, mode, negated, condition, b.function([cmd, fallback]))
+
+
+def _chat(b: _Builder, loc: Loc, gate, mode: str, negated: bool, text: str, number: int, col: int):
+    """``chat PATTERN`` where PATTERN is a brigadier string: a quoted string or one word."""
+    quoted = _QUOTED.match(text)
+    if quoted:
+        pattern = re.sub(r"\\(.)", r"\1", quoted.group(1) if quoted.group(1) is not None else quoted.group(2))
+        rest = text[quoted.end():].strip()
+    else:
+        pattern, _, rest = text.partition(" ")
+    if not pattern:
+        return _bad(b, f"{mode} chat: expected a pattern", number, col)
+    if rest:
+        return _bad(b, f"{mode} chat: receivers need player entities, which the emulator does not model yet",
+                    number, col + len(text) - len(rest))
+    try:
+        re.compile(pattern)
+    except re.error:
+        return _bad(b, f"Invalid pattern '{pattern}'", number, col)
+    return ChatCheck(loc, gate, mode, negated, pattern)
 
 
 def _delay(b: _Builder, loc: Loc, gate, text: str, number: int, col: int):
@@ -224,8 +257,8 @@ def _bad(b: _Builder, message: str, number: int, col: int) -> None:
     return None
 
 
-def _text_component(text: str) -> str:
-    """The plain text of a ``fail`` message: a JSON/SNBT string or ``{"text": ...}``, else as written."""
+def plain_text(text: str) -> str:
+    """The plain text of a text component: a JSON string or ``{"text": ...}``, else as written."""
     try:
         value = json.loads(text)
     except ValueError:

@@ -158,3 +158,26 @@ def test_discovery_ids_filter_and_errors(pack, tmp_path):
     (tmp_path / "loose").mkdir()
     with pytest.raises(DiscoveryError, match="not inside a datapack"):
         discover([tmp_path / "loose"])
+
+
+def test_chat_conditions_see_messages_since_the_test_started(pack):
+    # messages and wording as PackTest's ChatAssertion (regex find over the received messages)
+    root = pack({
+        "demo/function/init.mcfunction": "say from load\n",
+        "demo/test/chat.mcfunction": 'say hello world\nassert chat "hello w.rld"\nassert not chat "from load"\n'
+                                     'tellraw @a {"text": "json msg"}\nassert chat ^json\nassert chat bye\n',
+        "demo/test/not.mcfunction": "say hi\nassert not chat hi\n",
+        "demo/test/players.mcfunction": "assert chat hi @a\n",
+    }, load=["demo:init"])
+    results = by_id(run(root))
+    assert results["demo:chat"].message == 'Expected chat message matching bye, received "[Server] hello world", "json msg"'
+    assert results["demo:chat"].line == 6
+    assert results["demo:not"].message == "Did not expect chat message matching hi, found 1"
+    assert "receivers need player entities" in results["demo:players"].message
+
+
+def test_failure_details_name_what_the_emulator_skipped(pack):
+    root = pack({"demo/test/ent.mcfunction": "summon pig ~ ~ ~\nassert entity @e[type=pig]\n"})
+    result = run(root).results[0]
+    assert result.message == "Expected entity @e[type=pig]"
+    assert any("ent.mcfunction:1:1" in d and "Summon" in d for d in result.details)
