@@ -1,7 +1,16 @@
 """The reference backend: a plain-Python interpreter of the AST, the oracle the numba VM is
-checked against. Clarity over speed; it follows the game's execution model task by task
-(:mod:`.engine`) and shares only value helpers (:mod:`emulator.semantics`) and the world state
+checked against. Clarity over speed; it follows the game's execution model task by task and
+shares only value helpers (:mod:`emulator.semantics`, :mod:`emulator.world`) and the world state
 with the VM.
+
+Modules
+- :mod:`.queue`       the command queue of one root (ExecutionContext): frames, quota, cost
+- :mod:`.engine`      function calls, execute chains, ``function``/``return``/``if function``
+- :mod:`.modifiers`   execute stages that change or filter the sources (as, positioned, store ...)
+- :mod:`.conditions`  ``if|unless`` tests, as a stage or as the final command
+- :mod:`.scoreboard`  ``scoreboard`` commands; :mod:`.data` storage data; :mod:`.commands` the rest
+- :mod:`.holders`     score holders and entity targets; :mod:`.macros` macro instantiation
+- :mod:`.source`      command sources and call traces; :mod:`.failure` command failures
 """
 from __future__ import annotations
 
