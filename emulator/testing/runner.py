@@ -130,6 +130,8 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
         _run_steps(emu, case, case.steps)
     except _Verdict as verdict:
         result.status, result.message, result.line = verdict.status, verdict.message, verdict.line
+    except Exception as error:  # an emulator bug fails this test, not the suite
+        result.status, result.message = FAILED, f"internal error: {type(error).__name__}: {error}"
     if case.after_batch:
         emu.call(case.after_batch)
     result.ticks = emu.ticks

@@ -16,8 +16,9 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from emulator.testing.directives import Directives, apply, directive_match
-from mcfunction_parser.ast import Command, Function
+from mcfunction_parser.ast import Command, Function, MacroLine
 from mcfunction_parser.diagnostics import Diagnostic, Loc
+from mcfunction_parser.pack_text import split_lines
 from mcfunction_parser.parse import parse_command, parse_function
 
 GENERATED_NAMESPACE = "dpemu.test"
@@ -123,16 +124,22 @@ class _Builder:
 def read_test(test_id: str, path: Path, shown: str, key: str, version) -> TestCase:
     """Read the test file ``path`` (shown as ``shown`` in messages); ``key`` makes the generated
     function ids unique."""
-    text = path.read_text(encoding="utf-8-sig")
-    lines = text.splitlines()
     case = TestCase(test_id, shown, Directives())
+    try:
+        lines = split_lines(path.read_text(encoding="utf-8-sig"))  # the game's line breaks
+    except (OSError, UnicodeDecodeError) as error:
+        case.errors.append(Diagnostic("error", f"cannot read the test file: {error}", shown))
+        return case
     builder = _Builder(case, key, lines, version)
     test_lines = _read_header_and_classify(case, lines)
     ordinary = "".join(("" if i + 1 in test_lines else line) + "\n" for i, line in enumerate(lines))
     function, diagnostics = parse_function(ordinary, shown, f"{GENERATED_NAMESPACE}:{key}", version)
     case.errors.extend(d for d in diagnostics if d.severity == "error")
     case.errors.extend(case.directives.errors)
-    by_line = {c.loc.line: c for c in function.commands}
+    by_line = {c.loc.line: c for c in function.commands if not isinstance(c, MacroLine)}
+    for c in function.commands:
+        if isinstance(c, MacroLine):
+            builder.error("a macro line needs arguments, and a test runs without any", c.loc.line, c.loc.col)
     pending: list[Command] = []
     for number in range(1, len(lines) + 1):
         if number in by_line:

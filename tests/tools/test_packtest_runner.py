@@ -181,3 +181,13 @@ def test_failure_details_name_what_the_emulator_skipped(pack):
     result = run(root).results[0]
     assert result.message == "Expected entity @e[type=pig]"
     assert any("ent.mcfunction:1:1" in d and "Summon" in d for d in result.details)
+
+
+def test_macro_lines_and_unreadable_files_are_reported(pack):
+    root = pack({"demo/test/macro.mcfunction": "$say $(x)\n", "demo/test/ok.mcfunction": "succeed\n"})
+    (root / "data/demo/test/binary.mcfunction").write_bytes(b"\xff\xfe\x00say")
+    results = by_id(run(root))
+    assert results["demo:macro"].message == "a macro line needs arguments, and a test runs without any"
+    assert results["demo:macro"].line == 1
+    assert results["demo:binary"].message.startswith("cannot read the test file")
+    assert results["demo:ok"].status == "passed"
