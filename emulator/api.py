@@ -10,13 +10,15 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from pathlib import Path
 
 from emulator.backend import Backend, RootResult
 from emulator.profile_data import Profile, fold
 from emulator.runtime import Runtime
 from emulator.semantics import INT_MAX, INT_MIN
-from emulator.state import Context, WorldState
+from emulator import world_entities
+from emulator.state import Context
 from mcfunction_parser.diagnostics import Diagnostic
 
 
@@ -33,11 +35,12 @@ def make_backend(name: str) -> Backend:
 
 
 class Emulator:
-    def __init__(self, backend: str = "numba", sanitize: bool = False) -> None:
+    def __init__(self, backend: str = "numba", sanitize: bool = False, shuffle: int | None = None) -> None:
         self.backend_name = backend
         self.sanitize = sanitize
+        self.shuffle = shuffle  # seed permuting unsorted @e order (None: creation order)
         self.backend = make_backend(backend)
-        self.state = WorldState()
+        self.state = world_entities.new_state(shuffle)
         self.packs = None
         self.runtime: Runtime | None = None
 
@@ -50,7 +53,7 @@ class Emulator:
         if isinstance(paths, (str, Path)):
             paths = [paths]
         self.packs = load_packs([Path(p) for p in paths], mc_version)
-        self.state = WorldState()
+        self.state = world_entities.new_state(self.shuffle)
         self.backend.load(self.packs, self.state, self.sanitize)
         self.runtime = Runtime(self.backend, self.packs, self.state)
         return self.packs
@@ -67,13 +70,16 @@ class Emulator:
     # ------------------------------------------------------------------ running
     def call(self, function: str, as_=None, at: tuple[float, float, float] | None = None, arguments=None) -> int | None:
         """Run ``function`` (``ns:path``, ``path`` for ``minecraft:``, or ``#tag``: each member)
-        as one root sequence, as the server (entities are not modelled yet, so ``as_`` must be
-        None) at ``at`` (default: world spawn). Returns the function's return value (None when it
-        did not return; for a tag, the last member's)."""
-        if as_ is not None:
-            raise ValueError("call(as_=...): entities are not modelled yet; functions run as the server")
+        as one root sequence, as the server at ``at`` (default: world spawn), or with ``as_`` (a
+        player name, a UUID string or a selector finding one entity) as that entity at its
+        position and rotation (``at`` still overrides the position). Returns the function's return
+        value (None when it did not return; for a tag, the last member's)."""
         runtime = self._runtime()
         context = Context(pos=tuple(float(c) for c in at)) if at is not None else None
+        if as_ is not None:
+            context = world_entities.entity_context(self.state, self._one_entity(as_))
+            if at is not None:
+                context = replace(context, pos=tuple(float(c) for c in at))
         name = _normalise(function)
         if name.startswith("#"):
             results = [runtime.call(f, context, arguments) for f in runtime.members(name[1:])]
@@ -107,6 +113,30 @@ class Emulator:
 
     def scores(self) -> dict[str, dict[str, int]]:
         return self.state.scoreboard.scores()
+
+    # ------------------------------------------------------------------ entities
+    def add_player(self, name: str, pos=(0.0, 0.0, 0.0), rotation=(0.0, 0.0), gamemode: str = "survival",
+                   level: int = 0) -> str:
+        """Put a simulated player in the world (after :meth:`load`); returns its UUID string.
+        ``rotation`` is (yaw, pitch) in degrees."""
+        player = self.state.entities.add_player(name, tuple(float(c) for c in pos), rotation[0], rotation[1],
+                                                gamemode, level)
+        return player.uuid_string
+
+    def entities(self, selector: str = "@e") -> list[dict]:
+        """What ``selector`` (a selector, player name or UUID) finds, run as the server at world
+        spawn: one dict per entity (uuid, type, tags, pos, rotation, scores)."""
+        return [world_entities.describe(self.state, e) for e in self._select(selector)]
+
+    def _select(self, text: str):
+        target = world_entities.parse_target(text)
+        return world_entities.select(self.state, target, Context())
+
+    def _one_entity(self, text: str):
+        found = self._select(text)
+        if len(found) != 1:
+            raise ValueError(f"{text!r} finds {len(found)} entities; exactly one is needed")
+        return found[0]
 
     # ------------------------------------------------------------------ reports
     @property

@@ -26,6 +26,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from emulator.world.blocks import BlockMap
+from emulator.world.entities import EntityStore
 from mcfunction_parser.diagnostics import Loc
 
 # Criteria whose scores only the game sets (ObjectiveCriteria with readOnly=true).
@@ -395,6 +397,11 @@ class WorldState:
     diagnostics: list[RuntimeDiagnostic] = field(default_factory=list)
     overflows: list[Overflow] = field(default_factory=list)
     storage: dict = field(default_factory=dict)  # storage id -> nbt.Compound
+    # the world's entities (creation order, UUIDs, seeded RNG) and blocks: see emulator.world_entities
+    entities: EntityStore = field(default_factory=EntityStore)
+    blocks: BlockMap = field(default_factory=BlockMap)
+    executors: dict = field(default_factory=dict)  # Context.executor id (Entity.order) -> Entity
+    selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
 
     def emit(self, kind: str, text: str, loc: Loc | None = None) -> None:
         self.log.append(LogEntry(self.tick, kind, text, loc))

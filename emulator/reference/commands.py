@@ -9,7 +9,7 @@ from __future__ import annotations
 from emulator.semantics import INT_MAX
 from mcfunction_parser import ast
 
-from . import conditions, data, scoreboard
+from . import conditions, data, entities, scoreboard
 from .failure import CommandFailure, unsupported
 from .source import Source
 
@@ -93,5 +93,7 @@ HANDLERS = {
 def run_command(env, cmd, source: Source, where) -> int:
     if isinstance(cmd, ast.Condition):
         return condition(env, cmd, source, where)
+    if entities.world.is_world_command(cmd):
+        return entities.command(env, cmd, source, where)
     handler = HANDLERS.get(type(cmd), not_modelled)
     return handler(env, cmd, source, where)

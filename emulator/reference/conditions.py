@@ -8,9 +8,9 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import data
+from . import data, entities
 from .failure import CommandFailure, unsupported
-from .holders import select_entities, single_holder
+from .holders import single_holder
 from .scoreboard import objective
 from .source import Source
 
@@ -33,8 +33,8 @@ def count(env, cond: ast.Condition, source: Source) -> int:
         value = board.get(holder, objective(env, cond.objective))
         # ExecuteCommand.checkScore: an unset score never matches
         return int(value is not None and cond.range.contains(value))
-    if isinstance(cond, ast.IfEntity):
-        return len(select_entities(cond.targets, source))
+    if entities.world.is_world_condition(cond):  # entity, block, entity or block data
+        return entities.condition_count(cond, source)
     if isinstance(cond, ast.IfData):
         return data.count_matching(env, cond)
     if isinstance(cond, ast.IfDimension):

@@ -1,21 +1,21 @@
 """Score holders and entity targets, as the game resolves them (ScoreHolderArgument, EntityArgument).
 
-Entities are not modelled in the world state yet, so every selector finds no entity: ``@s`` run
-by the server, ``@e``, ``@a`` ... select nothing, and a player name as an *entity* target finds no
-online player. Score holders named by text (players, ``#fake``, ``$fake``, UUIDs) need no entity.
+Selectors and entity names resolve through the world's entity store (:mod:`.entities`); score
+holders named by text (players, ``#fake``, ``$fake``, UUIDs) need no entity.
 """
 from __future__ import annotations
 
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import NameTarget, Selector, Wildcard
 
+from . import entities
 from .failure import CommandFailure
 from .source import Source
 
 
 def select_entities(target, source: Source) -> list:
-    """EntityArgument.getOptionalEntities: the entities a selector or name finds (none yet)."""
-    return []
+    """EntityArgument.getOptionalEntities: the entities a selector or name finds."""
+    return entities.select(target, source)
 
 
 def holder_names(holder, source: Source, scoreboard: Scoreboard) -> list[str]:
@@ -32,10 +32,7 @@ def holder_names(holder, source: Source, scoreboard: Scoreboard) -> list[str]:
             raise CommandFailure("No relevant score holders could be found")
         return names
     if isinstance(holder, Selector):
-        entities = select_entities(holder, source)
-        if not entities:
-            raise CommandFailure("No entity was found")
-        return [str(e) for e in entities]
+        return entities.holder_names(holder, source)
     raise TypeError(f"not a score holder: {holder!r}")
 
 

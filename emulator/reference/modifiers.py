@@ -9,9 +9,9 @@ from __future__ import annotations
 from emulator.world.source import Source as WorldSource
 from mcfunction_parser import ast
 
-from . import conditions, data
+from . import conditions, data, entities
 from .failure import CommandFailure
-from .holders import holder_names, select_entities
+from .holders import holder_names
 from .queue import chain
 from .scoreboard import objective
 from .source import Source
@@ -30,16 +30,12 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
         return [store_score(env, sub, source)]
     if isinstance(sub, ast.StoreData) and isinstance(sub.target, ast.StorageData):
         return [data.store_data(env, sub, source)]
-    if isinstance(sub, ast.StoreData) and isinstance(sub.target, ast.EntityData):
-        select_entities(sub.target.target, source)  # EntityArgument.getEntity: none are modelled
-        raise CommandFailure("No entity was found")
-    if isinstance(sub, (ast.StoreData, ast.StoreBossbar)):
+    if isinstance(sub, ast.StoreData):  # into an entity or a block
+        return [entities.store_data(sub, source)]
+    if isinstance(sub, ast.StoreBossbar):
         return [store_not_modelled(env, sub, source)]
-    if isinstance(sub, (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity)):
-        # each entity found gives a source; none are modelled yet (see holders.select_entities)
-        return [source for _ in select_entities(sub.targets, source)]
-    if isinstance(sub, ast.ExOn):
-        return []  # the server has no relations; entities are not modelled
+    if isinstance(sub, entities.world.ENTITY_STAGES):
+        return entities.stage(sub, source)
     if isinstance(sub, ast.ExPositioned):
         return [source.with_context(pos=_world(source).position_of(sub.pos), anchor="feet")]
     if isinstance(sub, ast.ExRotated):
@@ -54,7 +50,7 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
         return [source.with_context(pos=_world(source).aligned(sub.axes).pos)]
     if isinstance(sub, ast.ExIn):
         return [in_dimension(source, sub.dimension)]
-    # summon, positioned over: the world is not modelled; going on unchanged keeps the scores
+    # positioned over: the world has no terrain; going on unchanged keeps the scores
     # the rest of the chain computes
     env.warn_once(sub, f"'{type(sub).__name__}' is not emulated: the context is kept unchanged", source)
     return [source]
@@ -88,9 +84,8 @@ def store_score(env, sub: ast.StoreScore, source: Source) -> Source:
 
 
 def _world(source: Source) -> WorldSource:
-    """The world library's view of the source (no executing entity: entities are not modelled)."""
-    context = source.context
-    return WorldSource(pos=context.pos, yaw=context.rot[0], pitch=context.rot[1], anchor=context.anchor)
+    """The world library's view of the source (with its executing entity, for the eye anchor)."""
+    return entities.world.world_source(source.state, source.context)
 
 
 def _with_rotation(source: Source, rot) -> Source:

@@ -43,6 +43,7 @@ class Source:
     context: Context
     callback: Callback
     activation: Activation
+    state: object = None  # the WorldState the entity commands act on (emulator.reference.entities)
 
     def with_callback(self, callback: Callback) -> "Source":
         return dataclasses.replace(self, callback=callback)

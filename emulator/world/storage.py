@@ -17,8 +17,8 @@ from mcfunction_parser.nbt import Compound
 
 
 class CommandStorage:
-    def __init__(self) -> None:
-        self._data: dict[str, Compound] = {}
+    def __init__(self, data: dict[str, Compound] | None = None) -> None:
+        self._data: dict[str, Compound] = {} if data is None else data  # a caller's dict is shared, not copied
 
     def get(self, storage_id: str) -> Compound:
         return self._data.get(storage_id, Compound())

@@ -62,9 +62,9 @@ def test_call_tag_and_default_namespace(tmp_path):
     assert emu.call("hello") == 7
 
 
-def test_call_as_entity_is_a_clear_error(tmp_path):
+def test_call_as_missing_entity_is_a_clear_error(tmp_path):
     emu = emulator_for(tmp_path, FUNCTIONS, TAGS)
-    with pytest.raises(ValueError, match="entities are not modelled"):
+    with pytest.raises(ValueError, match="finds 0 entities"):
         emu.call("t:work", as_="@e")
 
 
