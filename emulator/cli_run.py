@@ -99,7 +99,11 @@ def _parse_until(text: str) -> Until:
 @click.option("--json", "json_out", metavar="FILE|-", help="Write the results as JSON.")
 @click.option("--csv", "csv_out", metavar="FILE", type=click.Path(dir_okay=False), help="Watched values per tick.")
 @click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")
-def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version) -> None:
+@click.option("--player", "players", multiple=True, metavar="NAME@X,Y,Z[,YAW,PITCH]",
+              help="Add a simulated player before anything runs.")
+@click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
+def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
+        shuffle) -> None:
     """Emulate PACKS: apply --set and --call in order, then run --ticks ticks."""
     sets = [_parse_set(s) for s in set_]
     calls = [_parse_call(c) for c in call]
@@ -107,11 +111,14 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
     stop = _parse_until(until) if until else None
     if stop and stop.watch not in watches:
         watches.append(stop.watch)
-    emu = Emulator(backend=backend, sanitize=sanitize)
+    players = [_parse_player(p) for p in players]
+    emu = Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle)
     try:
         emu.load(list(packs), mc_version)
     except ValueError as error:  # an unknown --mc version
         raise click.BadParameter(str(error), param_hint="--mc") from None
+    for name, pos, rotation in players:
+        emu.add_player(name, pos, rotation)
     for diag in emu.load_diagnostics:
         if diag.severity == "error":
             click.echo(diag.format(), err=True)
@@ -130,6 +137,18 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
             writer = csv.writer(handle)
             writer.writerow(["tick", *(w.label for w in watches)])
             writer.writerows(rows)
+
+
+def _parse_player(text: str) -> tuple[str, tuple[float, ...], tuple[float, float]]:
+    """``NAME@X,Y,Z[,YAW,PITCH]``."""
+    name, _, numbers = text.partition("@")
+    try:
+        values = [float(v) for v in numbers.split(",")]
+    except ValueError:
+        values = []
+    if not name or len(values) not in (3, 5):
+        raise click.BadParameter(f"{text!r}: expected NAME@X,Y,Z or NAME@X,Y,Z,YAW,PITCH", param_hint="--player")
+    return name, tuple(values[:3]), tuple(values[3:]) or (0.0, 0.0)
 
 
 def _parse_call(text: str) -> tuple[str, object]:
@@ -193,6 +212,7 @@ def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float
         "watch": {w.label: emu.score(w.holder, w.objective) for w in watches},
         "until_met": stop.met(emu) if stop else None,
         "scores": emu.scores(),
+        "entities": emu.entities(),
         "log": [entry.to_json() for entry in emu.log],
         "overflows": [o.to_json() for o in emu.overflows],
         "diagnostics": [d.to_json() for d in emu.diagnostics],
