@@ -235,7 +235,11 @@ def _chat(b: _Builder, loc: Loc, gate, mode: str, negated: bool, text: str, numb
     """``chat PATTERN`` where PATTERN is a brigadier string: a quoted string or one word."""
     quoted = _QUOTED.match(text)
     if quoted:
-        pattern = re.sub(r"\\(.)", r"\1", quoted.group(1) if quoted.group(1) is not None else quoted.group(2))
+        body = quoted.group(1) if quoted.group(1) is not None else quoted.group(2)
+        bad = next((m for m in re.finditer(r"\\(.)", body) if m.group(1) not in "\\\"'"), None)
+        if bad:  # StringReader.readStringUntil accepts only \\, \" and \'
+            return _bad(b, f"Invalid escape sequence '{bad.group()}' in quoted string", number, col + 1 + bad.start())
+        pattern = re.sub(r"\\(.)", r"\1", body)
         rest = text[quoted.end():].strip()
     else:
         pattern, _, rest = text.partition(" ")

@@ -176,11 +176,11 @@ def test_chat_conditions_see_messages_since_the_test_started(pack):
     assert "receivers need player entities" in results["demo:players"].message
 
 
-def test_failure_details_name_what_the_emulator_skipped(pack):
-    root = pack({"demo/test/ent.mcfunction": "summon pig ~ ~ ~\nassert entity @e[type=pig]\n"})
+def test_failure_details_show_the_runtime_diagnostics(pack):
+    root = pack({"demo/test/obj.mcfunction": "scoreboard players set $x nope 1\nassert score $x nope matches 1\n"})
     result = run(root).results[0]
-    assert result.message == "Expected entity @e[type=pig]"
-    assert any("ent.mcfunction:1:1" in d and "Summon" in d for d in result.details)
+    assert result.message == "Expected score $x nope to match 1, found undefined"
+    assert any("obj.mcfunction:1:1" in d and "Unknown scoreboard objective 'nope'" in d for d in result.details)
 
 
 def test_macro_lines_and_unreadable_files_are_reported(pack):
@@ -191,3 +191,12 @@ def test_macro_lines_and_unreadable_files_are_reported(pack):
     assert results["demo:macro"].line == 1
     assert results["demo:binary"].message.startswith("cannot read the test file")
     assert results["demo:ok"].status == "passed"
+
+
+def test_chat_patterns_are_brigadier_strings(pack):
+    root = pack({"demo/test/esc.mcfunction": 'say a.b (c)\nassert chat "^\\\\[Server\\\\] a\\\\.b \\\\(c\\\\)$"\n',
+                 "demo/test/bad_escape.mcfunction": 'assert chat "a\\.b"\n'})
+    results = by_id(run(root))
+    assert results["demo:esc"].status == "passed", results["demo:esc"].message
+    assert results["demo:bad_escape"].message == "Invalid escape sequence '\\.' in quoted string"
+    assert "bad_escape.mcfunction:1:15:" in results["demo:bad_escape"].details[0]
