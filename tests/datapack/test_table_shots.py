@@ -225,3 +225,25 @@ def test_trigger_strikes_along_the_players_view(yaw, direction):
     assert np.linalg.norm(v) > 0
     expected = np.array(direction, float) / np.linalg.norm(direction)
     assert np.allclose(v / np.linalg.norm(v), expected, atol=1e-3)
+
+
+def test_pocketed_cue_ball_is_refused_then_spotted_again():
+    board = table([(300000, 300000), (1905000, 635000)])
+    shoot(board, angle=-13500, speed=2000)
+    play(board)
+    assert board.score("ball0", "pool.state") == 3
+    shoot(board, angle=0)
+    assert any("not on the table" in m for m in board.messages)
+    board.call("pool:table/spot_cue")
+    assert [board.score("ball0", f"pool.{k}") for k in ("x", "z", "state")] == [635000, 635000, 0]
+    shoot(board, angle=0, speed=1000)
+    assert board.score("$resting", "pool.game") == 0
+
+
+def test_cue_ball_is_not_spotted_onto_another_ball():
+    board = table([(300000, 300000), (650000, 640000)])
+    shoot(board, angle=-13500, speed=2000)
+    play(board)
+    board.call("pool:table/spot_cue")
+    assert board.score("ball0", "pool.state") == 3
+    assert any("head spot is taken" in m for m in board.messages)

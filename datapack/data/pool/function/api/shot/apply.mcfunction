@@ -3,7 +3,7 @@
 # Writes: $shot.* and $resting pool.game, the cue ball's scores; or a refusal message and nothing.
 scoreboard players set #ok pool.tmp 1
 execute if score $resting pool.game matches 0 run function pool:api/shot/refuse {reason:"the balls are still moving"}
-execute unless entity @e[tag=pool.ball,scores={pool.id=0,pool.state=0..2}] run function pool:api/shot/refuse {reason:"the cue ball is not on the table"}
+execute unless entity @e[tag=pool.ball,scores={pool.id=0,pool.state=0..2}] run function pool:api/shot/refuse {reason:"the cue ball is not on the table (function pool:table/spot_cue)"}
 execute unless score #in.speed pool.tmp matches 1..6500 run function pool:api/shot/refuse {reason:"speed must be 1..6500 (mm/s)"}
 execute unless score #in.elevation pool.tmp matches 0..8900 run function pool:api/shot/refuse {reason:"elevation must be 0..8900 (centidegrees)"}
 execute unless score #in.tip_x pool.tmp matches -500..500 run function pool:api/shot/refuse {reason:"tip_x must be -500..500"}
