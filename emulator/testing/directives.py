@@ -1,5 +1,6 @@
-"""PackTest directives: ``# @name [value]`` comments at the start of a test file (before its first
-command), as documented in misode/packtest's README:
+"""PackTest directives: ``# @name [value]`` comments at the start of a test file, as documented in
+misode/packtest's README. As PackTestFunction.fromLines reads them: only the leading run of lines
+that start with ``#`` (a blank or indented line ends it); a name alone means ``true``.
 
 - ``@template ID``: structure placed for the test (default: an empty 1x1x1 structure). The
   emulator has no block world yet, so the template is recorded, not placed.
@@ -20,7 +21,7 @@ DEFAULT_TIMEOUT = 100
 DEFAULT_BATCH = "packtestBatch"
 DEFAULT_DUMMY_POS = "~0.5 ~ ~0.5"
 KNOWN = ("template", "timeout", "optional", "dummy", "batch", "beforebatch", "afterbatch")
-_DIRECTIVE = re.compile(r"#\s*@(\S*)\s*(.*)$")
+_DIRECTIVE = re.compile(r"#\s*@(\w+)(?:\s+(.+))?$")  # PackTestFunction.DIRECTIVE_PATTERN
 _RESOURCE = re.compile(r"(?:[a-z0-9_.-]+:)?[a-z0-9_./-]+")
 
 
@@ -37,12 +38,12 @@ class Directives:
 
 
 def directive_match(line: str) -> re.Match | None:
-    return _DIRECTIVE.match(line.strip())
+    return _DIRECTIVE.match(line)
 
 
 def apply(directives: Directives, match: re.Match, loc: Loc, source_line: str) -> None:
     """Apply one ``# @name value`` line; a bad one becomes an error in ``directives.errors``."""
-    name, value = match.group(1), match.group(2).strip()
+    name, value = match.group(1), (match.group(2) or "").strip()
     error = _apply(directives, name, value, loc)
     if error:
         directives.errors.append(Diagnostic.at("error", error, loc, source_line))
@@ -58,9 +59,9 @@ def _apply(d: Directives, name: str, value: str, loc: Loc) -> str | None:
             return f"@timeout: expected a positive number of ticks, got {value!r}"
         d.timeout = int(value)
     elif name == "optional":
-        if value not in ("", "true", "false"):
+        if value.lower() not in ("", "true", "false"):
             return f"@optional: expected true, false or nothing, got {value!r}"
-        d.optional = value != "false"
+        d.optional = value.lower() != "false"
     elif name == "dummy":
         d.dummy = value or DEFAULT_DUMMY_POS
     elif name == "batch":

@@ -3,6 +3,7 @@ order, ``await`` ticking the world (``#minecraft:tick``, schedules) until the te
 from __future__ import annotations
 
 import os
+import random
 import re
 import time
 from collections.abc import Callable, Iterable
@@ -10,7 +11,7 @@ from pathlib import Path
 
 from emulator.api import Emulator
 from emulator.runtime import Runtime
-from emulator.state import WorldState
+from emulator.world_entities import new_state
 from emulator.testing.discovery import TestFile
 from emulator.testing.results import FAILED, PASSED, SKIPPED, Summary, TestResult
 from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run, Succeed, TestCase, plain_text,
@@ -97,7 +98,7 @@ def fresh_world(packs, backend: str) -> Emulator:
     parsing), then started with :func:`run_load`."""
     emu = Emulator(backend=backend)
     emu.packs = packs
-    emu.state = WorldState()
+    emu.state = new_state(emu.shuffle)
     emu.backend.load(packs, emu.state, False)
     emu.runtime = Runtime(emu.backend, packs, emu.state)
     return run_load(emu)
@@ -118,16 +119,17 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
         result.status, result.message, result.line = FAILED, first.message, first.line
         result.details = [d.format() for d in case.errors]
         return result
-    if case.needs_dummy:
+    if case.drives_dummies:
         result.status = SKIPPED
-        result.message = "dummy players need player entities, which the emulator does not model yet"
+        result.message = "the dummy command needs player actions, which the emulator does not model yet"
         return result
     started = time.perf_counter()
     emu = fresh_world(packs, backend)
     if case.before_batch:
         emu.call(case.before_batch)
     try:
-        _run_steps(emu, case, case.steps)
+        source = TestSource(emu, spawn_dummy(emu, case))
+        _run_steps(emu, source, case)
     except _Verdict as verdict:
         result.status, result.message, result.line = verdict.status, verdict.message, verdict.line
     except Exception as error:  # an emulator bug fails this test, not the suite
@@ -141,19 +143,63 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
     return result
 
 
-def _run_steps(emu: Emulator, case: TestCase, steps: Iterable) -> None:
+class TestSource:
+    """Where test commands run (PackTestFunction.createTestBody): as the server, or as the test's
+    dummy, at the test structure's origin plus one block up; the structure sits at the world origin."""
+
+    ORIGIN = (0.0, 1.0, 0.0)
+
+    def __init__(self, emu: Emulator, dummy: str | None) -> None:
+        self.emu, self.dummy = emu, dummy
+
+    def call(self, function: str) -> int | None:
+        return self.emu.call(function, as_=self.dummy, at=self.ORIGIN)
+
+
+def spawn_dummy(emu: Emulator, case: TestCase) -> str | None:
+    """The @dummy player (PackTest's Dummy.createRandom: named Dummy100..Dummy999, here seeded by the
+    test id), at the directive's position relative to the test origin; returns its UUID."""
+    if case.directives.dummy is None:
+        return None
+    pos = _position(case.directives.dummy, TestSource.ORIGIN)
+    if pos is None:
+        raise _Verdict(FAILED, "Failed to initialize test with dummy", 1)
+    name = f"Dummy{random.Random(case.id).randrange(100, 1000)}"
+    return emu.add_player(name, pos)
+
+
+def _position(text: str, origin: tuple[float, float, float]) -> tuple[float, float, float] | None:
+    """An absolute or ``~``-relative position (Vec3Argument without ``^``), None if malformed."""
+    parts = text.split()
+    if len(parts) != 3:
+        return None
+    out = []
+    for part, base in zip(parts, origin):
+        relative = part.startswith("~")
+        number = part[1:] if relative else part
+        try:
+            value = float(number) if number else (0.0 if relative else None)
+        except ValueError:
+            return None
+        if value is None:
+            return None
+        out.append(base + value if relative else value)
+    return tuple(out)
+
+
+def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
     timeout = case.directives.timeout
     chat_start = len(emu.log)  # chat conditions see the messages since the test started
-    for step in steps:
-        if step.gate and emu.call(step.gate) != 1:
+    for step in case.steps:
+        if step.gate and source.call(step.gate) != 1:
             continue
         if isinstance(step, Run):
-            emu.call(step.function)
+            source.call(step.function)
         elif isinstance(step, (Check, ChatCheck)) and step.mode == "assert":
-            if not _holds(emu, step, chat_start):
+            if not _holds(source, step, chat_start):
                 raise _Verdict(FAILED, describe_failure(emu, step, chat_start), step.loc.line)
         elif isinstance(step, (Check, ChatCheck)):
-            while not _holds(emu, step, chat_start):
+            while not _holds(source, step, chat_start):
                 _tick_or_time_out(emu, timeout, step, describe_failure(emu, step, chat_start))
         elif isinstance(step, Delay):
             for _ in range(step.ticks):
@@ -162,14 +208,14 @@ def _run_steps(emu: Emulator, case: TestCase, steps: Iterable) -> None:
             raise _Verdict(FAILED, step.message, step.loc.line)
         elif isinstance(step, Succeed):
             raise _Verdict(PASSED)
-        elif isinstance(step, Dummy):  # skipped before running (needs_dummy)
+        elif isinstance(step, Dummy):  # skipped before running (drives_dummies)
             raise AssertionError("dummy steps never run")
 
 
-def _holds(emu: Emulator, step, chat_start: int) -> bool:
+def _holds(source: TestSource, step, chat_start: int) -> bool:
     if isinstance(step, ChatCheck):
-        return bool(_chat_matches(emu, step, chat_start)) != step.negated
-    return emu.call(step.function) == 1
+        return bool(_chat_matches(source.emu, step, chat_start)) != step.negated
+    return source.call(step.function) == 1
 
 
 def _chat(emu: Emulator, chat_start: int) -> list[str]:

@@ -93,8 +93,9 @@ class TestCase:
     errors: list[Diagnostic] = field(default_factory=list)  # the test cannot run
 
     @property
-    def needs_dummy(self) -> bool:
-        return self.directives.dummy is not None or any(isinstance(s, Dummy) for s in self.steps)
+    def drives_dummies(self) -> bool:
+        """``dummy NAME ...`` commands make a simulated player act (jump, use, mine ...)."""
+        return any(isinstance(s, Dummy) for s in self.steps)
 
 
 class _Builder:
@@ -172,14 +173,12 @@ def _read_header_and_classify(case: TestCase, lines: list[str]) -> set[int]:
     in_header = True
     test_lines: set[int] = set()
     for number, line in enumerate(lines, 1):
+        in_header = in_header and line.startswith("#")
+        match = directive_match(line) if in_header else None
+        if match:
+            apply(case.directives, match, Loc(case.path, number, 1), line)
         stripped = line.strip()
-        if not stripped or stripped.startswith("#"):
-            match = directive_match(stripped) if in_header else None
-            if match:
-                apply(case.directives, match, Loc(case.path, number, line.index("#") + 1), line)
-            continue
-        in_header = False
-        if _TEST_COMMAND.match(stripped) or _EXECUTE_PREFIX.match(stripped):
+        if stripped and not stripped.startswith("#") and (_TEST_COMMAND.match(stripped) or _EXECUTE_PREFIX.match(stripped)):
             test_lines.add(number)
     return test_lines
 
@@ -206,8 +205,9 @@ def _test_step(b: _Builder, number: int, line: str) -> Step | None:
         return Fail(loc, gate, plain_text(rest)) if rest else _bad(b, "fail: expected a message", number, rest_col)
     if word == "dummy":
         return Dummy(loc, gate)
-    if word == "await" and rest.split(" ", 1)[0] == "delay":
-        return _delay(b, loc, gate, rest[len("delay"):].strip(), number, rest_col + len("delay "))
+    first = rest.split(" ", 1)[0]
+    if word == "await" and first in ("delay", "for"):  # "await for" in PackTest before 1.7
+        return _delay(b, loc, gate, rest[len(first):].strip(), number, rest_col + len(first) + 1)
     negated = rest.split(" ", 1)[0] == "not"
     if negated:
         rest_col += len("not")

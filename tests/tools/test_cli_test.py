@@ -11,7 +11,7 @@ DATAPACK = Path(__file__).resolve().parents[2] / "datapack"
 FILES = {
     "demo/test/good.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\nassert score $x o matches 4\n",
     "demo/test/bad.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\nassert score $x o matches 5\n",
-    "demo/test/skip.mcfunction": "# @dummy\nsucceed\n",
+    "demo/test/skip.mcfunction": "dummy Bob jump\nsucceed\n",
 }
 
 

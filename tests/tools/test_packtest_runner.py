@@ -122,7 +122,7 @@ def test_each_test_runs_in_a_fresh_world_after_load(pack):
 def test_optional_dummy_and_summary(pack):
     root = pack({
         "demo/test/opt.mcfunction": "# @optional\nfail \"allowed\"\n",
-        "demo/test/dummy.mcfunction": "# @dummy\nsucceed\n",
+        "demo/test/dummy.mcfunction": "dummy Bob jump\nsucceed\n",
         "demo/test/ok.mcfunction": "succeed\n",
     })
     summary = run(root)
@@ -200,3 +200,34 @@ def test_chat_patterns_are_brigadier_strings(pack):
     assert results["demo:esc"].status == "passed", results["demo:esc"].message
     assert results["demo:bad_escape"].message == "Invalid escape sequence '\\.' in quoted string"
     assert "bad_escape.mcfunction:1:15:" in results["demo:bad_escape"].details[0]
+
+
+def test_dummy_directive_spawns_a_player_as_the_test_source(pack):
+    # PackTestFunction: the source is the test origin + (0, 1, 0); @dummy defaults to ~0.5 ~ ~0.5
+    root = pack({
+        "demo/test/default.mcfunction": "# @dummy\nassert entity @s[type=player]\n"
+                                        "assert entity @a[x=0.5,y=1,z=0.5,distance=..0.001]\n",
+        "demo/test/placed.mcfunction": "# @dummy ~2 ~ 5\nassert entity @a[x=2,y=1,z=5,distance=..0.001]\n"
+                                       "assert entity @s[name=Dummy4]\n",
+        "demo/test/server.mcfunction": "assert not entity @s\nassert not entity @a\n",
+        "demo/test/bad.mcfunction": "# @dummy here\nsucceed\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:default"].status == "passed", results["demo:default"].message
+    assert results["demo:placed"].message == "Expected entity @s[name=Dummy4]"  # named Dummy100..999
+    assert results["demo:server"].status == "passed", results["demo:server"].message
+    assert results["demo:bad"].message == "Failed to initialize test with dummy"
+
+
+def test_directives_are_the_leading_comment_lines(pack):
+    # PackTestFunction.fromLines stops at the first line not starting with '#'
+    root = pack({"demo/test/late.mcfunction": "# @timeout 3\n\n# @timeout 50\nawait delay 10\n",
+                 "demo/test/flag.mcfunction": "#@optional\nfail no\n"})
+    results = by_id(run(root))
+    assert results["demo:late"].message.startswith("Timed out after 3 ticks")
+    assert results["demo:flag"].optional
+
+
+def test_await_for_is_the_old_spelling_of_await_delay(pack):
+    root = pack({"demo/test/old.mcfunction": "await for 2s\n"})
+    assert run(root).results[0].ticks == 40
