@@ -234,9 +234,8 @@ class NumbaBackend:
         while stack and not stack[-1][1]:
             stack.pop()
         r[vm.R_ALIVE] = 1
-        if not stack:
+        if not stack:  # ENDCMD runs again, now ending the command (and restoring the context)
             r[vm.R_LOOP] = vm.LOOP_NONE
-            r[vm.R_PC] += 1
             return
         resume, remaining = stack[-1]
         r[vm.R_CTX] = remaining.pop(0)

@@ -398,6 +398,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 status = ST_NEXTCTX
                 break
             alive = 1
+            ctx = frames[depth - 1, F_CTX]  # the next command runs in the function's own context again
             pc += 1
         elif op == OP_CALL or op == OP_CALLREG:
             fn = code[pc, 1] if op == OP_CALL else regs[R_CALLFN]

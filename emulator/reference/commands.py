@@ -26,7 +26,9 @@ def tellraw(env, cmd: ast.Tellraw, source: Source, where) -> int:
 
 
 def sender_name(source: Source) -> str:
-    return "Server" if source.context.executor < 0 else str(source.context.executor)
+    """The executor's display name (custom name, player name or type name), or "Server"."""
+    entity = entities.world.executor(source.state, source.context)
+    return "Server" if entity is None else entity.display_name
 
 
 def gamerule(env, cmd: ast.Gamerule, source: Source, where) -> int:

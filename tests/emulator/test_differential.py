@@ -77,7 +77,7 @@ FAILING_LINES = [
     "scoreboard players operation #a o /= #z o", "scoreboard players set #a nope 1",
     "execute if function t:missing run say x",
     "schedule function t:missing 1t", "gamerule nope", "particle flame ~ ~ ~", "time set day",
-    "execute if block ~ ~ ~ stone run say x",
+    "execute if biome ~ ~ ~ minecraft:plains run say x",
     "function t:macro with storage t:none args",
 ]
 
