@@ -1,0 +1,237 @@
+"""Entities in the emulator: packs that keep their state on entities run identically on both
+backends, and give the numbers the game's own formulas give (computed here with the world
+library's float math, :mod:`emulator.world.rotation` / :mod:`emulator.world.stores`)."""
+from __future__ import annotations
+
+import random
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from emulator.api import Emulator
+from emulator.world import rotation
+from emulator.world.stores import stored_tag
+from programs import write_pack
+
+F32 = np.float32
+SETUP = "scoreboard objectives add v dummy\n"
+
+
+def run_both(tmp_path: Path, functions: dict[str, str], entry: str = "t:main", players=(), shuffle=None,
+             ticks: int = 0):
+    """Run ``entry`` on both backends; assert they agree on scores, entities, log, diagnostics and
+    cost; return the reference emulator."""
+    pack = write_pack(tmp_path / "pack", functions)
+    runs = []
+    for backend in ("python", "numba"):
+        emu = Emulator(backend=backend, shuffle=shuffle)
+        emu.load(pack)
+        for name, pos, rot in players:
+            emu.add_player(name, pos, rot)
+        root = emu.runtime.call(entry)
+        emu.tick(ticks)
+        runs.append((emu, root.cost))
+    (ref, ref_cost), (vm, vm_cost) = runs
+    assert vm.scores() == ref.scores()
+    assert vm.entities() == ref.entities()
+    assert [e.text for e in vm.log] == [e.text for e in ref.log]
+    assert [d.format() for d in vm.diagnostics] == [d.format() for d in ref.diagnostics]
+    assert (vm_cost, vm.commands_per_tick) == (ref_cost, ref.commands_per_tick)
+    return ref
+
+
+def tagged(emu: Emulator, tag: str) -> list[dict]:
+    return emu.entities(f"@e[tag={tag}]")
+
+
+# ---------------------------------------------------------------------- tp ^ at game rotations
+ROTATIONS = [(0.0, 0.0), (45.0, 0.0), (90.0, 0.0), (137.5, 0.0), (0.0, 45.0), (137.5, -30.0), (-90.0, 90.0)]
+_rng = random.Random(4)
+ROTATIONS += [(_rng.uniform(-180, 180), _rng.uniform(-90, 90)) for _ in range(4)]
+
+
+@pytest.mark.parametrize("yaw,pitch", ROTATIONS)
+def test_tp_local_forward_matches_the_game_formula(tmp_path, yaw, pitch):
+    # LocalCoordinates.getPosition with Mth.sin/cos (the 65536-entry float table), as the world
+    # library computes it; the ball loop moves each ball twice.
+    summon = f"summon marker 1.25 64 -3.5 {{Tags:[\"ball\"],Rotation:[{yaw}f,{pitch}f]}}\n"
+    loop = "execute as @e[tag=ball] at @s run tp @s ^ ^ ^1\n"
+    emu = run_both(tmp_path, {"t:main": SETUP + summon + loop + loop})
+    [ball] = tagged(emu, "ball")
+    yaw32, pitch32 = F32(yaw), F32(pitch)
+    expected = (1.25, 64.0, -3.5)
+    for _ in range(2):
+        expected = rotation.local_to_world(expected, yaw32, pitch32, 0.0, 0.0, 1.0)
+    assert ball["pos"] == list(expected)
+    assert ball["rotation"] == [float(F32(yaw)), float(F32(pitch))]
+
+
+def test_tp_forward_at_yaw_zero_moves_south(tmp_path):
+    # yaw 0 looks to +z (Entity.calculateViewVector): ^ ^ ^1 adds 1 to z exactly
+    emu = run_both(tmp_path, {"t:main": SETUP + "summon marker 0.5 0 0.5 {Tags:[\"b\"]}\n"
+                                                "execute as @e[tag=b] at @s run tp @s ^ ^ ^1"})
+    assert tagged(emu, "b")[0]["pos"][2] == 1.5
+
+
+def test_facing_entity_then_reading_rotation(tmp_path):
+    # execute facing entity: CommandSourceStack.facing (Mth.atan2, float rotation); tp ~ ~ ~ ~ ~
+    # stores it wrapped (Entity.setYRot/ setXRot via teleportTo), data get Rotation[i] 1000 floors
+    body = (SETUP + "summon marker 1 2 3 {Tags:[\"a\"]}\nsummon marker -4.25 7 9.5 {Tags:[\"b\"]}\n"
+            "execute as @e[tag=a] at @s facing entity @e[tag=b,limit=1] feet run tp @s ~ ~ ~ ~ ~\n"
+            "execute as @e[tag=a] store result score #yaw v run data get entity @s Rotation[0] 1000\n"
+            "execute as @e[tag=a] store result score #pitch v run data get entity @s Rotation[1] 1000\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    yaw, pitch = rotation.teleport_rotation(*rotation.facing_rotation((1.5, 2.0, 3.5), (-4.25, 7.0, 9.5)))
+    assert tagged(emu, "a")[0]["rotation"] == [float(yaw), float(pitch)]
+    assert emu.score("#yaw", "v") == int(np.floor(float(yaw) * 1000.0))
+    assert emu.score("#pitch", "v") == int(np.floor(float(pitch) * 1000.0))
+
+
+# ---------------------------------------------------------------------- selectors
+def test_distance_is_inclusive_at_the_boundary(tmp_path):
+    # EntitySelector: distance compares squared distances to the feet, inclusive (MinMaxBounds)
+    body = (SETUP + "summon marker 2.0 0 0.5 {Tags:[\"on\"]}\nsummon marker 2.0001 0 0.5 {Tags:[\"past\"]}\n"
+            "execute positioned 0.5 0 0.5 store result score #n v if entity @e[distance=..1.5]\n"
+            "execute positioned 0.5 0 0.5 store result score #far v if entity @e[distance=1.5..]\n"
+            "execute positioned 0.5 0 0.5 store result score #open v if entity @e[distance=1.50001..]\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert (emu.score("#n", "v"), emu.score("#far", "v"), emu.score("#open", "v")) == (1, 2, 1)
+
+
+def test_box_volumes_use_strict_hitbox_intersection(tmp_path):
+    # x/y/z + dx/dy/dz: the box [x, x + dx + 1) per axis; AABB.intersects is strict, so a
+    # zero-size marker on the box's faces is outside (EntitySelectorParser.createAabb)
+    body = SETUP + "".join(f"summon marker {x} 0.5 0.5 {{Tags:[\"m{i}\"]}}\n" for i, x in enumerate(("0.0", "0.5", "1.0", "1.999", "2.0")))
+    body += "execute store result score #dx0 v if entity @e[x=0,y=0,z=0,dx=0,dy=0,dz=0]\n"
+    body += "execute store result score #dx1 v if entity @e[x=0,y=0,z=0,dx=1,dy=0,dz=0]\n"
+    body += "execute as @e[x=0,y=0,z=0,dx=1,dy=0,dz=0] run tag @s add inside\n"
+    emu = run_both(tmp_path, {"t:main": body})
+    assert (emu.score("#dx0", "v"), emu.score("#dx1", "v")) == (1, 3)
+    assert [e["pos"][0] for e in tagged(emu, "inside")] == [0.5, 1.0, 1.999]
+
+
+def test_selector_order_with_and_without_sort(tmp_path):
+    # unsorted @e: creation order; nearest/furthest: stable sort by distance; @n: the nearest
+    body = SETUP + "".join(f"summon marker {x} 0 0 {{Tags:[\"m\"]}}\n" for x in (3, 1, 2, 1))
+    body += "execute as @e[tag=m,x=0,y=0,z=0,sort=furthest,limit=2] run tag @s add far\n"
+    body += "execute positioned 0 0 0 as @n[tag=m] run tag @s add nearest\n"
+    emu = run_both(tmp_path, {"t:main": body})
+    by_x = [e["pos"][0] for e in tagged(emu, "m")]
+    assert by_x == [3.5, 1.5, 2.5, 1.5]  # creation order
+    assert emu.entities("@e[tag=m,sort=nearest]") == [tagged(emu, "m")[i] for i in (1, 3, 2, 0)]
+    assert emu.entities("@e[tag=m,sort=furthest]") == [tagged(emu, "m")[i] for i in (0, 2, 1, 3)]
+    assert tagged(emu, "nearest") == [tagged(emu, "m")[1]]
+    assert [e["pos"][0] for e in tagged(emu, "far")] == [3.5, 2.5]
+
+
+def test_shuffle_permutes_unsorted_order_and_both_backends_agree(tmp_path):
+    body = SETUP + "".join(f"summon marker {x} 0 0 {{Tags:[\"m\"]}}\n" for x in range(8))
+    body += "execute as @e[tag=m] run scoreboard players add #i v 1\n"
+    body += "execute as @e[tag=m] run scoreboard players operation @s v = #i v\n"
+    plain = run_both(tmp_path / "plain", {"t:main": body})
+    shuffled = run_both(tmp_path / "shuffled", {"t:main": body}, shuffle=7)
+    xs = lambda emu: [e["pos"][0] for e in tagged(emu, "m")]  # noqa: E731
+    assert xs(plain) == [x + 0.5 for x in range(8)]
+    assert sorted(xs(shuffled)) == xs(plain) and xs(shuffled) != xs(plain)
+    # sorting ignores the shuffle
+    assert [e["pos"][0] for e in shuffled.entities("@e[tag=m,sort=nearest,x=0,y=0,z=0]")] == xs(plain)
+
+
+# ---------------------------------------------------------------------- scores and data on entities
+def test_scores_on_entities_are_held_by_uuid(tmp_path):
+    body = (SETUP + "summon marker 0 0 0 {Tags:[\"ball\"]}\nsummon marker 1 0 0 {Tags:[\"ball\"]}\n"
+            "execute as @e[tag=ball] store result score @s v run data get entity @s Pos[0] 100\n"
+            "execute as @e[tag=ball,scores={v=100..}] run tag @s add moved\n"
+            "scoreboard players add @e[tag=ball] v 1\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    balls = tagged(emu, "ball")
+    assert [b["scores"] for b in balls] == [{"v": 51}, {"v": 151}]
+    assert emu.score(balls[1]["uuid"], "v") == 151
+    assert [b["uuid"] for b in tagged(emu, "moved")] == [balls[1]["uuid"]]
+
+
+STORE_VALUES = [(300, "byte", 1.0), (-129, "byte", 1.0), (40000, "short", 1.0), (7, "int", 0.5),
+                (-7, "int", 0.5), (2147483647, "int", 2.0), (2147483647, "long", 2.0), (3, "float", 0.1),
+                (3, "double", 0.1), (-2147483648, "short", 1.0)]
+
+
+@pytest.mark.parametrize("value,type_name,scale", STORE_VALUES)
+def test_every_store_cast_into_entity_nbt(tmp_path, value, type_name, scale):
+    # ExecuteCommand.storeData: (TYPE)(value * scale) with Java's narrowing; read back unscaled
+    body = (SETUP + f"scoreboard players set #x v {value}\nsummon marker 0 0 0 {{Tags:[\"m\"]}}\n"
+            f"execute as @e[tag=m] store result entity @s data.n {type_name} {scale} run scoreboard players get #x v\n"
+            "execute as @e[tag=m] store result score #back v run data get entity @s data.n 1000\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    stored = float(stored_tag(type_name, value, scale))
+    assert emu.score("#back", "v") == max(-2**31, min(2**31 - 1, int(np.floor(stored * 1000.0))))
+
+
+def test_store_cast_pins(tmp_path):
+    # (byte) 300 = 44, (short) 40000 = -25536, (int) 3.5 = 3, (int) -3.5 = -3 (truncation)
+    assert [int(stored_tag(*args)) for args in (("byte", 300, 1.0), ("short", 40000, 1.0),
+                                                ("int", 7, 0.5), ("int", -7, 0.5))] == [44, -25536, 3, -3]
+
+
+def test_entity_data_modify_and_storage_round_trip(tmp_path):
+    body = (SETUP + "summon marker 1 2 3 {Tags:[\"m\"],data:{speed:5}}\n"
+            "data modify storage t:s pos set from entity @e[tag=m,limit=1] Pos\n"
+            "execute store result score #len v run data get storage t:s pos\n"
+            "data modify entity @e[tag=m,limit=1] data.speed set value 9\n"
+            "execute store result score #speed v run data get entity @e[tag=m,limit=1] data.speed\n"
+            "data merge entity @e[tag=m,limit=1] {Tags:[\"m\",\"merged\"]}\n"
+            "execute store result score #has v if data entity @e[tag=merged,limit=1] data.speed\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert (emu.score("#len", "v"), emu.score("#speed", "v"), emu.score("#has", "v")) == (3, 9, 1)
+
+
+# ---------------------------------------------------------------------- failures
+def test_a_selector_matching_nothing_fails_and_store_stores_zero(tmp_path):
+    body = (SETUP + "scoreboard players set #r v 5\nscoreboard players set #s v 5\n"
+            "execute store result score #r v run kill @e[tag=none]\n"
+            "execute store success score #s v run tp @e[tag=none] 0 0 0\n"
+            "execute store result score #t v run tag @e[tag=none] add x\n"
+            "summon marker 0 0 0 {Tags:[\"m\"]}\n"
+            "execute store success score #bad v run data get entity @e[tag=m,limit=1] no.such.path\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert [emu.score(h, "v") for h in ("#r", "#s", "#t", "#bad")] == [0, 0, 0, 0]
+    assert emu.diagnostics == []  # routine failures are silent, as in the game
+
+
+def test_unknown_type_warns_and_predicate_is_reported(tmp_path):
+    body = SETUP + "summon foo:bar 0 0 0\nexecute store result score #p v if entity @e[predicate=t:p]\n"
+    emu = run_both(tmp_path, {"t:main": body})
+    assert [e["type"] for e in emu.entities()] == ["foo:bar"]
+    messages = [(d.severity, d.message) for d in emu.diagnostics]
+    assert messages[0][0] == "warning" and "foo:bar" in messages[0][1]
+    assert messages[1] == ("error", "selector argument 'predicate' is not supported")
+    assert emu.score("#p", "v") == 0
+
+
+def test_stale_fork_context_does_not_leak_into_the_next_command(tmp_path):
+    # after `execute ... at @s run ...` the next line runs at the function's own position again
+    body = (SETUP + "summon marker 0 0 5 {Tags:[\"b\"]}\nsummon marker 0 0 9 {Tags:[\"b\"]}\n"
+            "execute as @e[tag=b] at @s run say x\nsummon pig\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert [e["pos"] for e in emu.entities("@e[type=pig]")] == [[0.0, 0.0, 0.0]]
+
+
+# ---------------------------------------------------------------------- players and blocks
+def test_players_and_call_as(tmp_path):
+    functions = {"t:main": SETUP + "execute as @a at @s run summon marker ^ ^ ^2 {Tags:[\"m\"]}",
+                 "t:me": "scoreboard players set @s v 3\ntp @s ~ ~1 ~"}
+    emu = run_both(tmp_path, functions, players=[("Alex", (0.5, 64, 0.5), (90.0, 0.0))])
+    [marker] = tagged(emu, "m")
+    assert marker["pos"] == list(rotation.local_to_world((0.5, 64.0, 0.5), F32(90), F32(0), 0.0, 0.0, 2.0))
+    emu.call("t:me", as_="Alex")
+    [alex] = emu.entities("Alex")
+    assert alex["scores"] == {"v": 3} and alex["pos"] == [0.5, 65.0, 0.5] and alex["name"] == "Alex"
+
+
+def test_blocks_setblock_fill_and_if_block(tmp_path):
+    body = (SETUP + "fill 0 0 0 2 0 2 stone\nsetblock 1 0 1 minecraft:gold_block\n"
+            "execute store result score #stone v if blocks 0 0 0 2 0 2 0 0 0 all\n"
+            "execute store success score #gold v if block 1 0 1 gold_block\n"
+            "execute store success score #air v if block 1 1 1 air\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert (emu.score("#stone", "v"), emu.score("#gold", "v"), emu.score("#air", "v")) == (9, 1, 1)
