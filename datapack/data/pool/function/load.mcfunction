@@ -54,6 +54,12 @@ scoreboard objectives add pool.bt dummy
 scoreboard objectives add pool.cx dummy
 scoreboard objectives add pool.cz dummy
 scoreboard objectives add pool.ct dummy
+# the earliest event found for a ball as the first of a pair: absolute time in the tick
+# (1/10000 tick, 20000 = none), kind (1 ball, 2 cushion, 3 pocket), rail, partner's pool.id
+scoreboard objectives add pool.nt dummy
+scoreboard objectives add pool.nk dummy
+scoreboard objectives add pool.nr dummy
+scoreboard objectives add pool.np dummy
 # the box around a ball's chord in this tick, grown by R (um)
 scoreboard objectives add pool.lx dummy
 scoreboard objectives add pool.hx dummy

@@ -1,7 +1,7 @@
 # pool:physics/find/pair — swept contact test of ball @s (b) with the ball tagged pool.self (a),
 # after the cheap test of their chord boxes.
 # Reads: #a.lx #a.hx #a.lz #a.hz pool.tmp (a's box), @s box and chord (a ball at rest has cx = x).
-# Writes: #best #kind pool.tmp and the event tags when this contact is the earliest so far;
+# Writes: #best (absolute time) #kind #partner pool.tmp when this contact is the earliest so far;
 # both chords' starts moved to #now.
 execute if score @s pool.lx > #a.hx pool.tmp run return 0
 execute if score @s pool.hx < #a.lx pool.tmp run return 0
@@ -14,10 +14,9 @@ scoreboard players operation #b.bz pool.tmp = @s pool.cz
 scoreboard players operation #b.ex pool.tmp = @s pool.x
 scoreboard players operation #b.ez pool.tmp = @s pool.z
 function pool:physics/sweep/pair
-execute if score #f pool.tmp >= #best pool.tmp run return 0
-scoreboard players operation #best pool.tmp = #f pool.tmp
+execute if score #f pool.tmp matches 10001 run return 0
+function pool:physics/find/absolute
+execute if score #t pool.tmp >= #best pool.tmp run return 0
+scoreboard players operation #best pool.tmp = #t pool.tmp
 scoreboard players set #kind pool.tmp 1
-tag @e[tag=pool.event] remove pool.event
-tag @e[tag=pool.event_b] remove pool.event_b
-tag @e[tag=pool.self] add pool.event
-tag @s add pool.event_b
+scoreboard players operation #partner pool.tmp = @s pool.id

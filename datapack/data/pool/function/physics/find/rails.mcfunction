@@ -2,4 +2,7 @@
 # Reads/writes: as pool:physics/find/ball; #a.bx #a.bz #a.ex #a.ez pool.tmp (the chord).
 function pool:physics/find/chord_a
 function pool:physics/sweep/rails
-execute if score #rf pool.tmp < #best pool.tmp run function pool:physics/find/rail_event
+execute if score #rf pool.tmp matches 10001 run return 0
+scoreboard players operation #f pool.tmp = #rf pool.tmp
+function pool:physics/find/absolute
+execute if score #t pool.tmp < #best pool.tmp run function pool:physics/find/rail_event

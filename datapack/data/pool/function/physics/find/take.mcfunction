@@ -1,0 +1,9 @@
+# pool:physics/find/take — @s's stored event is the earliest of the tick so far.
+# Reads: @s pool.nt pool.nk pool.nr pool.np. Writes: #te #kind #event_rail #partner pool.tmp, tag
+# pool.event (on @s only).
+scoreboard players operation #te pool.tmp = @s pool.nt
+scoreboard players operation #kind pool.tmp = @s pool.nk
+scoreboard players operation #event_rail pool.tmp = @s pool.nr
+scoreboard players operation #partner pool.tmp = @s pool.np
+tag @e[tag=pool.event] remove pool.event
+tag @s add pool.event
