@@ -40,7 +40,8 @@ def test_isqrt_of_negative_is_zero(board):
 
 
 @pytest.mark.parametrize("a,b", [(123456789, 7071), (-123456789, 7071), (2**30, -10000),
-                                 (-1, 5000), (14999, 1), (2_000_000_000, 10000), (999, -9999)])
+                                 (-1, 5000), (14999, 1), (2_000_000_000, 10000), (999, -9999),
+                                 (214700, -10000), (-214700, 9999), (214701, 10000), (46341, 46341)])
 def test_mul_unit_rounds_half_away_from_zero(board, a, b):
     board.set_score("$a", "pool.math", a)
     board.set_score("$b", "pool.math", b)

@@ -2,9 +2,9 @@
 # Reads: $a $b pool.math with |$b| <= 214748 and |$a * $b| < 2.1e13 (e.g. um times a unit vector
 # component x 10000). Writes: $out pool.math; temporaries #a #b #q #r #neg pool.math.
 # Works on magnitudes so that mirrored inputs give exactly mirrored outputs.
-# a*b/c = (a div c)*b + ((a mod c)*b)/c keeps every intermediate inside int32; when |a| and |b|
-# are both small enough the product is formed directly (pool:math/mul_unit/small).
-execute if score $a pool.math matches -46340..46340 if score $b pool.math matches -46340..46340 run return run function pool:math/mul_unit/small
+# a*b/c = (a div c)*b + ((a mod c)*b)/c keeps every intermediate inside int32; when |b| <= 10000
+# (a unit vector component) and |a| <= 214700 the product is formed directly (mul_unit/small).
+execute if score $b pool.math matches -10000..10000 if score $a pool.math matches -214700..214700 run return run function pool:math/mul_unit/small
 scoreboard players operation #a pool.math = $a pool.math
 scoreboard players operation #b pool.math = $b pool.math
 scoreboard players set #neg pool.math 0

@@ -1,4 +1,5 @@
-# pool:math/mul_unit/small — pool:math/mul_unit when |$a|, |$b| <= 46340 (the product fits).
+# pool:math/mul_unit/small — pool:math/mul_unit when |$a| <= 214700 and |$b| <= 10000, so that
+# |a b| + 5000 fits in an int.
 # Reads: $a $b pool.math. Writes: $out pool.math; temporary #p pool.math.
 scoreboard players operation #p pool.math = $a pool.math
 scoreboard players operation #p pool.math *= $b pool.math
