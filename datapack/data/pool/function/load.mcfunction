@@ -110,7 +110,7 @@ scoreboard players set $spin_decay pool.const 779
 scoreboard players set $e_cushion pool.const 8500
 scoreboard players set $mu_cushion pool.const 2000
 
-# events resolved per tick at most (each costs a new sweep of every moving ball)
+# events resolved per tick at most (each costs a rewind of its balls, its resolution and new sweeps)
 scoreboard players set $max_events pool.const 8
 
 # Game state (public): $resting pool.game is 1 when no ball moves; $pocketed counts pocketed balls
