@@ -247,3 +247,13 @@ def test_cue_ball_is_not_spotted_onto_another_ball():
     board.call("pool:table/spot_cue")
     assert board.score("ball0", "pool.state") == 3
     assert any("head spot is taken" in m for m in board.messages)
+
+
+def test_no_tunnelling_at_ten_metres_per_second():
+    # cue speed 6.5 m/s gives the ball ~10 m/s: 0.5 m per tick, the object ball 7 diameters away
+    board = table([(635000, 635000), (1035000, 635000)])
+    shoot(board, angle=0, speed=6500)
+    assert board.score("ball0", "pool.vx") >= 490000
+    board.call("pool:tick")
+    assert board.score("ball1", "pool.vx") > 400000          # hit within the first tick
+    assert board.score("ball1", "pool.x") - board.score("ball0", "pool.x") >= TWO_R
