@@ -81,6 +81,11 @@ def _coord(r: Reader, block: bool, allow_local: bool) -> Coord:
     return coord
 
 
+# Well-formed positions by (text, block): their coordinates carry no location, so they are shared.
+_VEC3_CACHE: dict[tuple[str, bool], tuple[Coord, Coord, Coord]] = {}
+_CACHE_MAX = 4096
+
+
 def vec3(r: Reader, block: bool = False) -> Vec3:
     """A position; ``block`` for block positions (absolute coordinates must be integers).
 
@@ -90,12 +95,17 @@ def vec3(r: Reader, block: bool = False) -> Vec3:
     loc = r.loc()
     m = _VEC3.match(r.text, r.pos)
     if m is not None:
-        g = m.groups()
-        if (g[0] == "^") + (g[2] == "^") + (g[4] == "^") in (0, 3):
-            x, y, z = _make_coord(g[0], g[1], block), _make_coord(g[2], g[3], block), _make_coord(g[4], g[5], block)
-            if x is not None and y is not None and z is not None:
-                r.pos = m.end()
-                return Vec3(x, y, z, loc)
+        key = (m.group(), block)
+        coords = _VEC3_CACHE.get(key)
+        if coords is None:
+            coords = _fast_coords(m.groups(), block)
+            if coords is not None:
+                if len(_VEC3_CACHE) >= _CACHE_MAX:
+                    _VEC3_CACHE.clear()
+                _VEC3_CACHE[key] = coords
+        if coords is not None:
+            r.pos = m.end()
+            return Vec3(*coords, loc)
     start = r.pos
     x = _coord(r, block, True)
     r.space("y coordinate")
@@ -106,6 +116,16 @@ def vec3(r: Reader, block: bool = False) -> Vec3:
     if local not in (0, 3):
         r.fail("cannot mix world and local coordinates (use ^ for all three or for none)", start)
     return Vec3(x, y, z, loc)
+
+
+def _fast_coords(g: tuple, block: bool) -> tuple[Coord, Coord, Coord] | None:
+    """The coordinates of a _VEC3 match, None when the slow path must find the error."""
+    if (g[0] == "^") + (g[2] == "^") + (g[4] == "^") not in (0, 3):
+        return None
+    x, y, z = _make_coord(g[0], g[1], block), _make_coord(g[2], g[3], block), _make_coord(g[4], g[5], block)
+    if x is None or y is None or z is None:
+        return None
+    return x, y, z
 
 
 def vec2(r: Reader, integers: bool = False) -> Vec2:
@@ -156,9 +176,26 @@ def _range(r: Reader, is_int: bool):
     return lo, hi
 
 
+# A range token is read from these characters only, and ranges carry no location, so a
+# successfully parsed token's IntRange is shared by every later occurrence of the same text.
+_RANGE_TOKEN = re.compile(r"[0-9.\-]*")
+_INT_RANGES: dict[str, IntRange] = {}
+
+
 def int_range(r: Reader) -> IntRange:
+    start = r.pos
+    token = _RANGE_TOKEN.match(r.text, start).group()
+    cached = _INT_RANGES.get(token)
+    if cached is not None:
+        r.pos = start + len(token)
+        return cached
     lo, hi = _range(r, True)
-    return IntRange(lo, hi)
+    result = IntRange(lo, hi)
+    if r.pos == start + len(token):
+        if len(_INT_RANGES) >= _CACHE_MAX:
+            _INT_RANGES.clear()
+        _INT_RANGES[token] = result
+    return result
 
 
 def float_range(r: Reader) -> FloatRange:

@@ -1,27 +1,32 @@
 """Dispatch on a command's first word; every command family registers its parsers here."""
 from __future__ import annotations
 
-from functools import lru_cache
-
 from ..ast import Command, GenericCommand
 from ..features import COMMANDS, command_problem, permission_warning
-from ..reader import WORD, Reader
+from ..reader import Reader
 
 # name -> parser(reader positioned after the name, loc of the name) -> Command
 REGISTRY: dict = {}
 
 
-@lru_cache(maxsize=64)
+_TABLES: dict = {}  # version -> its table, built on first use (after every family has registered)
+
+
 def _table(version: tuple[int, int, int]) -> dict:
     """The commands of ``version``: name -> (parser, or None for a generic command; warning or None)."""
-    return {name: (REGISTRY.get(name), permission_warning(name))
-            for name in COMMANDS if command_problem(name, version) is None}
+    table = _TABLES.get(version)
+    if table is None:
+        table = _TABLES[version] = {name: (REGISTRY.get(name), permission_warning(name))
+                                    for name in COMMANDS if command_problem(name, version) is None}
+    return table
 
 
 def command(r: Reader) -> Command:
     """Parse the command starting at the cursor (the rest of the text)."""
     start = r.pos
-    name = WORD.match(r.text, start).group()
+    text = r.text
+    space = text.find(" ", start)
+    name = text[start:space] if space >= 0 else text[start:]
     entry = _table(r.version).get(name)
     if entry is None:
         if not name:

@@ -290,6 +290,7 @@ _SUBCOMMANDS = {
     "if": _if, "unless": _unless, "store": _store,
 }
 _ALL = tuple(_SUBCOMMANDS) + ("run",)
+_CONDITION_SUBCOMMANDS = ("if", "unless")
 
 
 def _what_follows(name: str) -> str:
@@ -312,22 +313,28 @@ def _fast_score_matches(r: Reader, m, sub_loc):
 
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
+    text = r.text
+    condition_last = False  # the chain may end after a condition
     while True:
-        if r.pos == r.end and subcommands and isinstance(subcommands[-1], ast.Condition):
+        pos = r.pos
+        if pos == r.end and condition_last:
             return ast.Execute(loc, tuple(subcommands), None)
-        sub_loc = r.loc_at(r.pos + 1)
-        m = _FAST_SCORE_MATCHES.match(r.text, r.pos)
+        if text.startswith(" run ", pos) and pos + 5 < r.end:
+            r.pos = pos + 5
+            return ast.Execute(loc, tuple(subcommands), command(r))
+        m = _FAST_SCORE_MATCHES.match(text, pos)
         if m is not None:
-            fast = _fast_score_matches(r, m, sub_loc)
+            fast = _fast_score_matches(r, m, r.loc_at(pos + 1))
             if fast is not None:
                 subcommands.append(fast)
+                condition_last = True
                 continue
         name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
         if name == "run":
             return ast.Execute(loc, tuple(subcommands), command(r))
-        sub = _SUBCOMMANDS[name](r, sub_loc)
-        subcommands.append(sub)
-        if r.pos == r.end and not isinstance(sub, ast.Condition):
+        subcommands.append(_SUBCOMMANDS[name](r, r.loc_at(pos + 1)))
+        condition_last = name in _CONDITION_SUBCOMMANDS
+        if r.pos == r.end and not condition_last:
             r.fail(f"incomplete execute: expected another subcommand or 'run' after '{name}'")
 
 
