@@ -703,3 +703,8 @@ class FunctionTag:
 
     id: str
     entries: list[TagEntry] = field(default_factory=list)
+
+
+from .frozen_init import speed_up_inits  # noqa: E402
+
+speed_up_inits(globals())  # same nodes, built about twice as fast (see frozen_init)

@@ -62,3 +62,8 @@ def _clip(line: str, col: int, width: int = 120) -> tuple[str, int]:
     prefix = "..." if start > 0 else ""
     suffix = "..." if end < len(line) else ""
     return prefix + line[start:end] + suffix, col - start + len(prefix)
+
+
+from .frozen_init import speed_up_inits  # noqa: E402
+
+speed_up_inits(globals())  # same Loc and Diagnostic, built about twice as fast (see frozen_init)
