@@ -8,8 +8,8 @@ The VM stops at a host op and the numba backend calls one of (the VM has charged
   ``if entity`` ...), giving the contexts the rest of the chain runs in;
 - :meth:`Host.run_store`: a ``store`` into storage (or a score holder named by a selector).
 
-Entities are not modelled yet, so selectors find nothing: ``as @e`` leaves no context and ``@s``
-run by the server names no holder.
+Entities, blocks and entity/block data go through :mod:`emulator.world_entities`, the code the
+reference backend runs too.
 
 Failures are the game's: the command fails (result 0) and the run goes on. Failures that point at
 a bug or at a limit of the emulator become diagnostics; routine ones (``get`` of an unset score,
@@ -23,7 +23,8 @@ from typing import Callable
 import numpy as np
 
 from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
-from emulator.state import SERVER, Context, WorldState
+from emulator import world_entities
+from emulator.state import Context, WorldState
 from emulator.world import nbt_ops, stores
 from emulator.world.errors import CommandFailure as WorldFailure
 from emulator.world.source import Source
@@ -69,10 +70,11 @@ class Host:
     def run_final(self, cmd: ast.Command | ast.Condition, ctx: Context) -> HostResult:
         """A command (or a condition ending an execute chain) run once for ``ctx``."""
         try:
-            if isinstance(cmd, ast.Condition):
-                if not self.condition(cmd, ctx):
+            if isinstance(cmd, ast.Condition):  # a test ending the chain: its count, or 1 for unless
+                count = self.condition_count(cmd, ctx)
+                if (count > 0) == cmd.negated:
                     raise HostFailure("Test failed")
-                return HostResult(True, True, 1)
+                return HostResult(True, True, 1 if cmd.negated else count)
             return HostResult(True, True, wrap32(self.command(cmd, ctx)))
         except HostFailure as failure:
             if failure.report:
@@ -94,6 +96,12 @@ class Host:
         stored = (value if ok else 0) if st.kind == "result" else int(ok)
         if isinstance(st, ast.StoreData) and isinstance(st.target, ast.StorageData):
             stores.store(self.storage(st.target, create=True), st.path, st.type, stored, st.scale)
+        elif world_entities.is_world_store(st):
+            try:  # resolved again for the callback; a target gone since fails silently
+                target = _entities(world_entities.store_target, self.state, st, ctx)
+            except HostFailure:
+                return
+            world_entities.store(target, st, ok, value)
         elif isinstance(st, ast.StoreScore):
             try:
                 names = self.holders(st.targets, ctx)
@@ -102,21 +110,22 @@ class Host:
             for name in names:
                 self.state.scoreboard.set(name, st.objective, stored)
         else:
-            self.warn(st, "'store' into an entity, a block or a bossbar is not emulated yet")
+            self.warn(st, "'store' into a bossbar is not emulated yet")
 
     # ------------------------------------------------------------------ execute stages
     def stage(self, st: ast.Subcommand, ctx: Context) -> list[Context]:
         """The contexts one stage makes from one context."""
         if isinstance(st, ast.Condition):
             return [ctx] if self.condition(st, ctx) else []
-        if isinstance(st, (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity, ast.ExOn)):
-            return []  # no entities: nothing selected
+        if world_entities.is_world_stage(st):
+            return _entities(world_entities.stage, self.state, st, ctx)
         if isinstance(st, ast.StoreScore):
             self.objective(st.objective)
             self.holders(st.targets, ctx)
             return [ctx]
-        if isinstance(st, ast.StoreData) and isinstance(st.target, ast.EntityData):
-            raise HostFailure("No entity was found")
+        if world_entities.is_world_store(st):  # the target (one entity, or a block) is resolved now
+            _entities(world_entities.store_target, self.state, st, ctx)
+            return [ctx]
         if isinstance(st, (ast.StoreData, ast.StoreBossbar)):
             return [ctx]
         if isinstance(st, ast.ExIn):
@@ -127,20 +136,23 @@ class Host:
         return [ctx]
 
     def condition(self, st: ast.Subcommand, ctx: Context) -> bool:
+        return (self.condition_count(st, ctx) > 0) != st.negated
+
+    def condition_count(self, st: ast.Subcommand, ctx: Context) -> int:
+        """What an ``if`` test counts (0: it fails): 1 for scores, the entities of ``if entity``,
+        the matches of ``if data``, the blocks of ``if blocks``."""
         if isinstance(st, ast.IfScoreMatches):
             value = self.score_of(st.target, st.objective, ctx)
-            passed = value is not None and st.range.contains(value)
-        elif isinstance(st, ast.IfScore):
+            return int(value is not None and st.range.contains(value))
+        if isinstance(st, ast.IfScore):
             a = self.score_of(st.target, st.objective, ctx)
             b = self.score_of(st.source, st.source_objective, ctx)
-            passed = a is not None and b is not None and _COMPARE[st.op](a, b)
-        elif isinstance(st, ast.IfEntity):
-            passed = False
-        elif isinstance(st, ast.IfData):
-            passed = _world(nbt_ops.count_matching, self.storage(st.source, create=False), st.path) > 0
-        else:
-            raise HostFailure(f"'{type(st).__name__}' is not supported yet", report=True)
-        return passed != st.negated
+            return int(a is not None and b is not None and _COMPARE[st.op](a, b))
+        if isinstance(st, ast.IfData) and isinstance(st.source, ast.StorageData):
+            return _world(nbt_ops.count_matching, self.storage(st.source, create=False), st.path)
+        if world_entities.is_world_condition(st):
+            return _entities(world_entities.condition_count, self.state, st, ctx)
+        raise HostFailure(f"'{type(st).__name__}' is not supported yet", report=True)
 
     def score_of(self, holder, objective: str, ctx: Context) -> int | None:
         self.objective(objective)
@@ -148,6 +160,8 @@ class Host:
 
     # ------------------------------------------------------------------ final commands
     def command(self, cmd: ast.Command, ctx: Context) -> int:
+        if world_entities.is_world_command(cmd):
+            return _entities(world_entities.command, self.state, cmd, ctx, self.warn)
         handler = _HANDLERS.get(type(cmd))
         if handler is None:
             self.warn(cmd, f"'{getattr(cmd, 'name', type(cmd).__name__)}' is not emulated: it succeeds without effect")
@@ -161,7 +175,7 @@ class Host:
             self.report(message, "warning")
 
     def holders(self, holder, ctx: Context) -> list[str]:
-        """ScoreHolderArgument.getNamesWithDefaultWildcard (no entities yet)."""
+        """ScoreHolderArgument.getNamesWithDefaultWildcard: names, ``*``, or a selector's entities."""
         if isinstance(holder, ast.NameTarget):
             return [holder.name]
         if isinstance(holder, ast.Wildcard):
@@ -169,7 +183,7 @@ class Host:
             if not names:
                 raise HostFailure("No relevant score holders could be found")
             return names
-        raise HostFailure("No entity was found")
+        return _entities(world_entities.holder_names, self.state, holder, ctx)
 
     def objective(self, name: str, writable: bool = False) -> int:
         sb = self.state.scoreboard
@@ -197,7 +211,8 @@ class Host:
 
 # ---------------------------------------------------------------------- handlers
 def _say(host: Host, cmd: ast.Say, ctx: Context) -> int:
-    sender = "Server" if ctx.executor == SERVER else str(ctx.executor)
+    entity = world_entities.executor(host.state, ctx)
+    sender = "Server" if entity is None else entity.display_name
     host.state.emit("say", f"[{sender}] {cmd.message}", cmd.loc)
     return 1
 
@@ -374,6 +389,14 @@ def _source_values(host: Host, source) -> list:
     if isinstance(source, ast.SourceString):
         return _world(nbt_ops.string_source, values, source.start, source.end)
     return [nbt_ops.copy_tag(v) for v in values]
+
+
+def _entities(operation, *args):
+    """Run a :mod:`emulator.world_entities` operation; its failures are this command's failures."""
+    try:
+        return operation(*args)
+    except world_entities.WorldCommandError as failure:
+        raise HostFailure(failure.message, failure.report) from None
 
 
 def _world(operation, *args):

@@ -135,3 +135,27 @@ def test_enable_trigger(tmp_path, backend):
                       backend=backend)
     assert emu.score("Alex", "go") == 0 and emu.score("#bad", "o") == 0
     assert emu.diagnostics == []
+
+
+ENTITY_BODY = """summon marker 0 0 0 {Tags:["a"]}
+summon marker 1 0 0 {Tags:["a"]}
+summon marker 2 0 0
+execute as @e[tag=a] run scoreboard players add @s o 1
+execute as @e[tag=a] run function t:count
+execute store result score #c o if entity @e[tag=a]
+execute as @e[tag=a] at @s run summon marker ~ ~1 ~
+execute store result score #all o if entity @e
+execute as @e[tag=a] store result score @s o run data get entity @s Pos[0]
+execute as @e[type=marker,tag=!a] run say hi"""
+
+
+def test_entities_through_the_world_library(tmp_path, backend):
+    emu, _ = run_main(tmp_path, "", {"t:f": ENTITY_BODY, "t:count": "scoreboard players add #n o 1"}, backend=backend)
+    root = emu.runtime.call("t:f")
+    assert (emu.score("#n", "o"), emu.score("#c", "o"), emu.score("#all", "o")) == (2, 2, 5)
+    assert [e["scores"] for e in emu.entities("@e[tag=a]")] == [{"o": 0}, {"o": 1}]  # x of each marker
+    assert [entry.text for entry in emu.log] == ["[Marker] hi"] * 3
+    # the call; 3 summons; as + 2 adds; as + 2 x (call + add); store + test; as + at + 2 summons;
+    # store + test; as + store + 2 gets; as + 3 says
+    assert root.cost == 1 + 3 + 3 + 5 + 2 + 4 + 2 + 4 + 4
+    assert emu.diagnostics == []
