@@ -12,7 +12,7 @@ from emulator.state import Scoreboard, WorldState
 # c comparison, n name, x host op, m macro call, b flag
 _OPERANDS_OPERATION = "hoho"
 _OPERANDS = {
-    vm.OP_CMD: "p", vm.OP_SET: "hoi", vm.OP_ADD: "hoi", vm.OP_REMOVE: "hoi",
+    vm.OP_CMD: "p", vm.OP_STAGESDONE: "p", vm.OP_SET: "hoi", vm.OP_ADD: "hoi", vm.OP_REMOVE: "hoi",
     vm.OP_RESET: "ho", vm.OP_RESETALL: "h", vm.OP_GET: "ho",
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "ob", vm.OP_STORE: "bho",
     vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",

@@ -140,6 +140,8 @@ class Compiler:
                 self.emit(vm.OP_CONT)
             else:  # a context modifier or a condition the VM does not evaluate
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
+        collect = final is not None and not returning and any(isinstance(st, _MULTIPLY) for st in stages)
+        collect_pc = self.emit(vm.OP_STAGESDONE, 0) if collect else None
         if isinstance(final, Return):
             self.return_(final, stores, in_chain=True)
             stores = []
@@ -154,6 +156,8 @@ class Compiler:
         else:
             end = self.emit(vm.OP_ENDCMD)
         self.program.patch(cmd_pc, 1, end)
+        if collect_pc is not None:
+            self.program.patch(collect_pc, 1, end)
 
     def stores(self, stores: list) -> None:
         """Apply the chain's stores to the result, in the order written (callbacks chain so)."""
@@ -260,6 +264,8 @@ class Compiler:
 
 # Stages registered with ``fork`` in ExecuteCommand (the others are plain redirects)
 _FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn, ExSummon)
+# Stages that can make several contexts: their chains collect the contexts before the final command
+_MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
 
 
 def _named(holder) -> bool:

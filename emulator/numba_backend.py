@@ -69,6 +69,7 @@ class NumbaBackend:
         self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
         self.context_ids: dict[tuple, int] = {}
         self.forks: dict[int, list[tuple[int, list[int]]]] = {}  # depth -> [(resume pc, contexts left)]
+        self.collected: dict[int, tuple[int, int, list[int]]] = {}  # depth -> (final pc, end pc, contexts)
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
@@ -128,6 +129,8 @@ class NumbaBackend:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_NEXTCTX:
                 self._next_context()
+            elif status == vm.ST_COLLECT:
+                self._collect()
             elif status == vm.ST_ERROR:
                 self._runtime_error()
             elif status == vm.ST_FLUSH:
@@ -224,23 +227,40 @@ class NumbaBackend:
             self.forks[depth].append(entry)
         else:  # a new command: whatever an earlier function left at this depth is stale
             self.forks[depth] = [entry]
+            self.collected.pop(depth, None)
             r[vm.R_LOOP] = vm.LOOP_FORKED
         r[vm.R_CTX] = contexts[0]
 
-    def _next_context(self) -> None:
-        """At a forked chain's ENDCMD: re-enter it for the next context, or end the command."""
+    def _collect(self) -> None:
+        """At a forked chain's STAGESDONE: keep the context for the final command, then go on."""
         r = self.regs
-        stack = self.forks[int(r[vm.R_DEPTH])]
+        depth, pc = int(r[vm.R_DEPTH]), int(r[vm.R_PC])
+        final_pc, end_pc, contexts = self.collected.setdefault(depth, (pc + 1, self.program.rows[pc][1], []))
+        contexts.append(int(r[vm.R_CTX]))
+        r[vm.R_PC] = end_pc
+        self._next_context()
+
+    def _next_context(self) -> None:
+        """At a forked chain's ENDCMD: the next context through the stages, else the next kept
+        context through the final command, else end the command."""
+        r = self.regs
+        depth = int(r[vm.R_DEPTH])
+        stack = self.forks[depth]
         while stack and not stack[-1][1]:
             stack.pop()
         r[vm.R_ALIVE] = 1
-        if not stack:  # ENDCMD runs again, now ending the command (and restoring the context)
-            r[vm.R_LOOP] = vm.LOOP_NONE
-            return
-        resume, remaining = stack[-1]
-        r[vm.R_CTX] = remaining.pop(0)
-        r[vm.R_PC] = resume
         r[vm.R_LOOP] = vm.LOOP_REENTERED
+        if stack:
+            resume, remaining = stack[-1]
+            r[vm.R_CTX] = remaining.pop(0)
+            r[vm.R_PC] = resume
+        elif self.collected.get(depth, (0, 0, None))[2]:
+            final_pc, _, contexts = self.collected[depth]
+            r[vm.R_CTX] = contexts.pop(0)
+            r[vm.R_PC] = final_pc
+        else:  # ENDCMD runs again, now ending the command (and restoring the context)
+            self.collected.pop(depth, None)
+            r[vm.R_LOOP] = vm.LOOP_NONE
 
     def _macro(self, pc: int) -> None:
         call = self.program.macro_calls[self.program.rows[pc][1]]

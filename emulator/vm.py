@@ -16,8 +16,11 @@ abort target, the context, the fork loop flag) are saved in the frame and restor
 
 Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
 table). When a host stage makes several, Python sets ``R_LOOP`` and keeps the others; the chain's
-``ENDCMD`` then returns ST_NEXTCTX and Python re-enters the chain after that stage with the next
-context. Stage ops charge themselves (once, even with no context left, and not on a re-entered
+``STAGESDONE`` (after the last stage) returns ST_COLLECT: Python keeps the context and re-enters
+the chain after that stage with the next context; once every context went through the stages, it
+runs the final command for each kept context in turn (each stage sees all contexts before any
+final command runs, as the game's BuildContexts does). The chain's ``ENDCMD`` returns ST_NEXTCTX
+to move on to the next context. Stage ops charge themselves (once, even with no context left, and not on a re-entered
 pass), so a stage that fails the command leaves the later stages uncharged, as in the game.
 """
 from __future__ import annotations
@@ -32,6 +35,7 @@ OP_HALT = 0  # root finished: return ST_DONE
 OP_CMD = 1  # a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
 OP_ENDCMD = 2  # alive = 1 (after a chain with conditions)
 OP_CONT = 3  # a continuation entry (after `if function`): the entry check
+OP_STAGESDONE = 4  # a: the chain's ENDCMD. After a fork, Python keeps this context for the final command
 OP_SET = 10  # a: holder, b: objective, c: value
 OP_ADD = 11  # a h, b o, c value
 OP_REMOVE = 12  # a h, b o, c value
@@ -87,7 +91,7 @@ N_REGS = 20
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP = range(10)
 F_WIDTH = 10
 
-ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX = range(8)
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX, ST_COLLECT = range(9)
 
 # R_LOOP: no fork in this command; forked, first pass; re-entered for a later context (its stages
 # were charged on the first pass)
@@ -391,6 +395,11 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 alive = 0
                 pc = pc + 1 if code[pc, 2] else abort  # in a forked chain only this context fails
                 status = ST_ERROR
+                break
+            pc += 1
+        elif op == OP_STAGESDONE:
+            if loop and alive:  # forked: every context goes through the stages before any runs
+                status = ST_COLLECT
                 break
             pc += 1
         elif op == OP_ENDCMD:

@@ -235,3 +235,15 @@ def test_blocks_setblock_fill_and_if_block(tmp_path):
             "execute store success score #air v if block 1 1 1 air\n")
     emu = run_both(tmp_path, {"t:main": body})
     assert (emu.score("#stone", "v"), emu.score("#gold", "v"), emu.score("#air", "v")) == (9, 1, 1)
+
+
+def test_each_stage_sees_every_context_before_any_command_runs(tmp_path):
+    # BuildContexts applies a stage to all contexts, then queues the command per context: the
+    # `if` below is tested for the three markers before any increments #x (so all three run)
+    body = (SETUP + "".join(f"summon marker {x} 0 0 {{Tags:[\"m\"]}}\n" for x in range(3))
+            + "scoreboard players set #x v 0\n"
+            "execute as @e[tag=m] if score #x v matches 0 run scoreboard players add #x v 1\n"
+            "scoreboard players set #y v 0\n"
+            "execute as @e[tag=m] as @e[tag=m] if score #y v matches 0 run function t:inc\n")
+    emu = run_both(tmp_path, {"t:main": body, "t:inc": "scoreboard players add #y v 1"})
+    assert (emu.score("#x", "v"), emu.score("#y", "v")) == (3, 9)

@@ -29,8 +29,9 @@ def test_disasm_host_ops(tmp_path):
     assert result.exit_code == 0, result.output
     ops = [line.split(None, 3)[2:] for line in result.output.splitlines() if line.startswith("      |")]
     # host stages carry the forked flag: after `as`, a failing stage drops only its context
-    assert ops == [["CMD", "->7"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"], ["HOST", "[Say]"],
-                   ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
+    # after a stage that can fork, STAGESDONE collects each context before any runs the command
+    assert ops == [["CMD", "->8"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"], ["STAGESDONE", "->8"],
+                   ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
 
 
 def test_disasm_unknown_function(tmp_path):
