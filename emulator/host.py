@@ -156,7 +156,7 @@ class Host:
 
     def score_of(self, holder, objective: str, ctx: Context) -> int | None:
         self.objective(objective)
-        return self.state.scoreboard.get(self.holders(holder, ctx)[0], objective)
+        return self.state.scoreboard.get(self.holder(holder, ctx), objective)
 
     # ------------------------------------------------------------------ final commands
     def command(self, cmd: ast.Command, ctx: Context) -> int:
@@ -184,6 +184,13 @@ class Host:
                 raise HostFailure("No relevant score holders could be found")
             return names
         return _entities(world_entities.holder_names, self.state, holder, ctx)
+
+    def holder(self, holder, ctx: Context) -> str:
+        """ScoreHolderArgument.getName (one holder: ``get``, ``if score``, ``list``): the first name;
+        its ``*`` has an empty default, so ``*`` fails there."""
+        if isinstance(holder, ast.Wildcard):
+            raise HostFailure("No relevant score holders could be found")
+        return self.holders(holder, ctx)[0]
 
     def objective(self, name: str, writable: bool = False) -> int:
         sb = self.state.scoreboard
@@ -304,7 +311,7 @@ def _players_reset(host: Host, cmd: ast.ScoreReset, ctx: Context) -> int:
 
 def _players_get(host: Host, cmd: ast.ScoreGet, ctx: Context) -> int:
     host.objective(cmd.objective)
-    name = host.holders(cmd.target, ctx)[0]
+    name = host.holder(cmd.target, ctx)
     value = host.state.scoreboard.get(name, cmd.objective)
     if value is None:
         raise HostFailure(f"Can't get value of {cmd.objective} for {name}; none is set")
@@ -342,7 +349,7 @@ def _players_list(host: Host, cmd: ast.ScoreList, ctx: Context) -> int:
     sb = host.state.scoreboard
     if cmd.target is None:
         return len(sb.tracked_holders())
-    name = host.holders(cmd.target, ctx)[0]
+    name = host.holder(cmd.target, ctx)
     return sum(1 for objective in sb.objectives if sb.get(name, objective) is not None)
 
 

@@ -22,7 +22,6 @@ BACKENDS = ["python", "numba"]
 # Cases the numba VM gets wrong, by case id, with why. Strict xfails: an entry must go when the VM
 # is fixed.
 VM_GAPS = {
-    "wildcard_single_holder_fails": "VM: '*' as a single score holder takes the first tracked holder",
     "custom_command_in_the_charging_entry": "VM: checks the quota between a stage and its custom command",
 }
 
