@@ -97,10 +97,11 @@ class NumbaBackend:
         r[vm.R_SANITIZE] = int(self.sanitize)
         r[vm.R_COUNTING] = int(self.counting)
         r[vm.R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
+        self.returned = False
         cut = self._drive(limit)
         self._flush_overflows()
         result = None
-        if not cut and r[vm.R_HAS]:
+        if self.returned and r[vm.R_HAS]:
             result = int(r[vm.R_VAL]) if r[vm.R_OK] else 0
         return RootResult(int(limit - r[vm.R_QUOTA]), result, cut)
 
@@ -114,6 +115,7 @@ class NumbaBackend:
             status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts,
                             self.totals, self.active, self.ovf)
             if status == vm.ST_DONE:
+                self.returned = True  # the root function came back (a cut may still be logged)
                 if r[vm.R_QUOTA] > 0:
                     return False
                 # the queue checks the quota before polling, even when nothing is left

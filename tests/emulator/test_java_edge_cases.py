@@ -21,9 +21,7 @@ BACKENDS = ["python", "numba"]
 
 # Cases the numba VM gets wrong, by case id, with why. Strict xfails: an entry must go when the VM
 # is fixed.
-VM_GAPS = {
-    "custom_command_in_the_charging_entry": "VM: checks the quota between a stage and its custom command",
-}
+VM_GAPS: dict[str, str] = {}
 
 
 def on_both_backends(cases):
