@@ -8,7 +8,7 @@ the packs loaded (and ``#minecraft:load`` run); ``emulator`` is a fresh emulator
 mcfunction tests are opt-in: ``--mcfunction-tests PATH`` (repeatable) or the ini option
 ``mcfunction_tests`` (paths relative to the rootdir) name packs, folders or test files.
 
-Helpers: :func:`assert_score` and :func:`assert_position`.
+Helpers: :func:`assert_score`, :func:`assert_position`, :func:`assert_entity_position`.
 """
 from __future__ import annotations
 
@@ -63,13 +63,23 @@ def assert_score(emu, holder: str, objective: str, expected: int, tolerance: int
 
 
 def assert_position(entity, expected, tolerance: float = 1e-6) -> None:
-    """Fail unless ``entity`` (anything with ``pos``, e.g. a world-library Entity, or an (x, y, z)
-    tuple) is within ``tolerance`` blocks (Euclidean) of ``expected``."""
+    """Fail unless ``entity`` (an :meth:`Emulator.entities` dict, anything with ``pos``, or an
+    (x, y, z) tuple) is within ``tolerance`` blocks (Euclidean) of ``expected``."""
     __tracebackhide__ = True
-    pos = tuple(getattr(entity, "pos", entity))
+    pos = entity["pos"] if isinstance(entity, dict) else getattr(entity, "pos", entity)
+    pos = tuple(pos)
     distance = math.dist(pos, tuple(expected))
     if not distance <= tolerance:
         raise AssertionError(f"Expected position {tuple(expected)} ± {tolerance}, found {pos} (off by {distance:.6g})")
+
+
+def assert_entity_position(emu, selector: str, expected, tolerance: float = 1e-6) -> None:
+    """Fail unless ``selector`` finds exactly one entity and it is within ``tolerance`` of ``expected``."""
+    __tracebackhide__ = True
+    found = emu.entities(selector)
+    if len(found) != 1:
+        raise AssertionError(f"Expected one entity for {selector}, found {len(found)}")
+    assert_position(found[0], expected, tolerance)
 
 
 # ---------------------------------------------------------------------- mcfunction test items

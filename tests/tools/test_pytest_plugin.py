@@ -4,7 +4,7 @@ import sys
 
 import pytest
 
-from emulator.pytest_plugin import assert_position, assert_score
+from emulator.pytest_plugin import assert_entity_position, assert_position, assert_score
 
 TESTS = {
     "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\n",
@@ -40,6 +40,18 @@ def test_assert_position():
     assert_position(Entity(), (1.0, 64.0, 2.05), tolerance=0.1)
     with pytest.raises(AssertionError, match="off by 0.5"):
         assert_position((0.0, 0.0, 0.0), (0.3, 0.0, 0.4), tolerance=0.1)
+
+
+def test_assert_entity_position(pack, dpemu_pack):
+    root = pack({"demo/function/place.mcfunction": "summon marker 1 2 3 {Tags:[\"m\"]}\n"})
+    emu = dpemu_pack(root)
+    emu.call("demo:place")
+    assert_entity_position(emu, "@e[tag=m]", (1.5, 2.0, 3.5))  # whole x and z are block centres
+    assert_entity_position(emu, "@e[tag=m]", (1.5, 2.0, 3.55), tolerance=0.1)
+    with pytest.raises(AssertionError, match="found 0"):
+        assert_entity_position(emu, "@e[tag=none]", (0, 0, 0))
+    with pytest.raises(AssertionError, match="off by 1"):
+        assert_entity_position(emu, "@e[tag=m]", (1.5, 2.0, 4.5), tolerance=0.5)
 
 
 def test_mcfunction_files_are_collected_only_when_asked(pack, tmp_path):
