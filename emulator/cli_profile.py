@@ -179,7 +179,8 @@ def _totals_from_stacks(stacks: dict, root_calls: Counter) -> dict[str, int]:
 def _vm_ops() -> dict[int, str]:
     from emulator import vm
 
-    return {value: name[3:].lower() for name, value in vars(vm).items() if name.startswith("OP_") and isinstance(value, int)}
+    return {value: name[3:].lower() for name, value in vars(vm).items()
+            if name.startswith("OP_") and isinstance(value, int)}
 
 
 def _vm_instructions(backend) -> dict[tuple[str, int], list[dict]]:

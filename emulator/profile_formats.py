@@ -94,9 +94,11 @@ def write_table(report: dict, top: int) -> str:
     if t["series"]:
         shown = " ".join(str(c) for c in t["series"][:top])
         lines.append(f"per tick: {shown}{' ...' if len(t['series']) > top else ''}")
-    lines += ["", f"roots (quota {report['limit']} each):", f"{'runs':>8} {'max':>8} {'mean':>10} {'headroom':>9} {'cut':>4}  function"]
+    lines += ["", f"roots (quota {report['limit']} each):",
+              f"{'runs':>8} {'max':>8} {'mean':>10} {'headroom':>9} {'cut':>4}  function"]
     for r in report["roots"]:
-        lines.append(f"{r['runs']:>8} {r['max_cost']:>8} {r['mean_cost']:>10.1f} {r['headroom']:>9} {r['cut']:>4}  {r['function']}")
+        lines.append(f"{r['runs']:>8} {r['max_cost']:>8} {r['mean_cost']:>10.1f} {r['headroom']:>9} {r['cut']:>4}  "
+                     f"{r['function']}")
     lines += ["", f"functions (top {top} by total):", f"{'self':>10} {'total':>10} {'calls':>8}  function"]
     for f in report["functions"][:top]:
         lines.append(f"{f['self']:>10} {_opt(f['total']):>10} {_opt(f['calls']):>8}  {f['function']}")

@@ -6,7 +6,7 @@ import os
 import random
 import re
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from pathlib import Path
 
 from emulator.api import Emulator
@@ -219,7 +219,8 @@ def _holds(source: TestSource, step, chat_start: int) -> bool:
 
 
 def _chat(emu: Emulator, chat_start: int) -> list[str]:
-    return [e.text if e.kind == "say" else plain_text(e.text) for e in emu.log[chat_start:] if e.kind in ("say", "tellraw")]
+    return [e.text if e.kind == "say" else plain_text(e.text)
+            for e in emu.log[chat_start:] if e.kind in ("say", "tellraw")]
 
 
 def _chat_matches(emu: Emulator, step: ChatCheck, chat_start: int) -> list[str]:
@@ -238,7 +239,8 @@ def describe_failure(emu: Emulator, check, chat_start: int = 0) -> str:
     expect = "Did not expect" if check.negated else "Expected"
     if isinstance(check, ChatCheck):
         if check.negated:
-            return f"Did not expect chat message matching {check.pattern}, found {len(_chat_matches(emu, check, chat_start))}"
+            found = len(_chat_matches(emu, check, chat_start))
+            return f"Did not expect chat message matching {check.pattern}, found {found}"
         return f"Expected chat message matching {check.pattern}, received {_sample(_chat(emu, chat_start))}"
     match = _SCORE_MATCHES.match(check.condition)
     if match:

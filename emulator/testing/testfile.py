@@ -178,7 +178,8 @@ def _read_header_and_classify(case: TestCase, lines: list[str]) -> set[int]:
         if match:
             apply(case.directives, match, Loc(case.path, number, 1), line)
         stripped = line.strip()
-        if stripped and not stripped.startswith("#") and (_TEST_COMMAND.match(stripped) or _EXECUTE_PREFIX.match(stripped)):
+        is_command = stripped and not stripped.startswith("#")
+        if is_command and (_TEST_COMMAND.match(stripped) or _EXECUTE_PREFIX.match(stripped)):
             test_lines.add(number)
     return test_lines
 

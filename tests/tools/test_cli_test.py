@@ -8,9 +8,10 @@ from click.testing import CliRunner
 from emulator.cli import main
 
 DATAPACK = Path(__file__).resolve().parents[2] / "datapack"
+SETUP = "scoreboard objectives add o dummy\nscoreboard players set $x o 4\n"
 FILES = {
-    "demo/test/good.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\nassert score $x o matches 4\n",
-    "demo/test/bad.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\nassert score $x o matches 5\n",
+    "demo/test/good.mcfunction": SETUP + "assert score $x o matches 4\n",
+    "demo/test/bad.mcfunction": SETUP + "assert score $x o matches 5\n",
     "demo/test/skip.mcfunction": "dummy Bob jump\nsucceed\n",
 }
 

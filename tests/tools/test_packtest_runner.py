@@ -100,7 +100,8 @@ def test_fail_succeed_and_execute_prefixes(pack):
         "demo/test/succeed.mcfunction": SETUP + "succeed\nfail \"not reached\"\n",
         "demo/test/gated.mcfunction": SETUP + "execute if score $x o matches 5 run fail \"gate\"\n"
                                       "execute if score $x o matches 4 run succeed\nfail \"after\"\n",
-        "demo/test/gated_assert.mcfunction": SETUP + "execute if score $x o matches 4 run assert score $x o matches 3\n",
+        "demo/test/gated_assert.mcfunction": SETUP + "execute if score $x o matches 4 run "
+                                                     "assert score $x o matches 3\n",
     })
     results = by_id(run(root))
     assert results["demo:fail_json"].message == "Oh no"
@@ -170,7 +171,8 @@ def test_chat_conditions_see_messages_since_the_test_started(pack):
         "demo/test/players.mcfunction": "assert chat hi @a\n",
     }, load=["demo:init"])
     results = by_id(run(root))
-    assert results["demo:chat"].message == 'Expected chat message matching bye, received "[Server] hello world", "json msg"'
+    assert results["demo:chat"].message == \
+        'Expected chat message matching bye, received "[Server] hello world", "json msg"'
     assert results["demo:chat"].line == 6
     assert results["demo:not"].message == "Did not expect chat message matching hi, found 1"
     assert "receivers need player entities" in results["demo:players"].message

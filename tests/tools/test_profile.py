@@ -9,13 +9,15 @@ from emulator.profile_formats import compare, parse_collapsed
 
 # main calls a twice and b once; both call the shared leaf f, so f has two distinct stacks
 FUNCTIONS = {
-    "demo/function/main.mcfunction": "scoreboard players set $x o 1\nfunction demo:a\nfunction demo:a\nfunction demo:b\n"
+    "demo/function/main.mcfunction": "scoreboard players set $x o 1\nfunction demo:a\nfunction demo:a\n"
+                                     "function demo:b\n"
                                      "execute if score $x o matches 1.. run scoreboard players add $y o 1\n",
     "demo/function/a.mcfunction": "scoreboard players add $x o 2\nfunction demo:f\n",
     "demo/function/b.mcfunction": "function demo:f\nsay hello\n",
     "demo/function/f.mcfunction": "scoreboard players add $x o 1\nscoreboard players add $x o 1\n",
     "demo/function/init.mcfunction": "scoreboard objectives add o dummy\n",
-    "demo/function/tick.mcfunction": "scoreboard players add $t o 1\nexecute if score $t o matches 2 run function demo:main\n",
+    "demo/function/tick.mcfunction": "scoreboard players add $t o 1\n"
+                                     "execute if score $t o matches 2 run function demo:main\n",
 }
 
 
@@ -41,8 +43,8 @@ def test_backends_agree_on_every_count(demo, args):
     python = report(demo, "--ticks", 3, "--backend", "python", *args)
     for key in ("commands", "ticks", "roots", "functions"):
         assert numba[key] == python[key], key
-    assert [(l["path"], l["line"], l["commands"]) for l in numba["lines"]] == \
-           [(l["path"], l["line"], l["commands"]) for l in python["lines"]]
+    assert [(x["path"], x["line"], x["commands"]) for x in numba["lines"]] == \
+           [(x["path"], x["line"], x["commands"]) for x in python["lines"]]
 
 
 def test_counts_per_tick_root_function_and_line(demo):
@@ -60,9 +62,10 @@ def test_counts_per_tick_root_function_and_line(demo):
     functions = {f["function"]: f for f in r["functions"]}
     assert functions["demo:f"] == {"function": "demo:f", "self": 6, "total": 6, "calls": 3}
     assert functions["demo:a"]["calls"] == 2 and functions["demo:a"]["total"] == 2 * (2 + 2)
-    lines = {(l["path"].rsplit("/", 1)[-1], l["line"]): l for l in r["lines"]}
+    lines = {(x["path"].rsplit("/", 1)[-1], x["line"]): x for x in r["lines"]}
     assert lines[("f.mcfunction", 1)]["commands"] == 3
-    assert lines[("main.mcfunction", 5)]["source"] == "execute if score $x o matches 1.. run scoreboard players add $y o 1"
+    assert lines[("main.mcfunction", 5)]["source"] == \
+        "execute if score $x o matches 1.. run scoreboard players add $y o 1"
     # one VM instruction for the condition, one for the final command
     assert [i["count"] for i in lines[("main.mcfunction", 5)]["instructions"]] == [1, 1]
 
