@@ -54,7 +54,7 @@ def _instruction(program: Program, scoreboard: Scoreboard, pc: int) -> str:
 
 def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) -> str:
     if kind == "h":
-        return scoreboard.holders[value]
+        return "@s" if value == vm.HOLDER_SELF else scoreboard.holders[value]
     if kind == "o":
         return scoreboard.objectives[value]
     if kind == "f":

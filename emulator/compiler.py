@@ -25,7 +25,7 @@ from emulator.program import HostOp, MacroCall, Program
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Condition, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs, ExSummon, Function,
-    FunctionCall, IfFunction, IfScore, IfScoreMatches, NameTarget, Return,
+    FunctionCall, IfFunction, IfScore, IfScoreMatches, NameTarget, Return, Selector,
     ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData, StoreScore, Subcommand,
 )
 from emulator.semantics import INT_MAX, INT_MIN
@@ -129,7 +129,7 @@ class Compiler:
             elif isinstance(st, IfScore):
                 self.emit(vm.OP_IFSCORE, vm.CMP_BY_SYMBOL[st.op], self.holder(st.target), self.objective(st.objective),
                           self.holder(st.source), self.objective(st.source_objective), int(st.negated), int(last))
-            elif isinstance(st, StoreScore) and _named(st.targets):
+            elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
                 self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked))
                 stores.append(st)
             elif isinstance(st, (StoreScore, StoreData, StoreBossbar)):
@@ -162,7 +162,7 @@ class Compiler:
     def stores(self, stores: list) -> None:
         """Apply the chain's stores to the result, in the order written (callbacks chain so)."""
         for st in stores:
-            if isinstance(st, StoreScore) and _named(st.targets):
+            if isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
                 self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
                           self.objective(st.objective))
             else:
@@ -252,7 +252,10 @@ class Compiler:
         return None
 
     # ------------------------------------------------------------------ names
-    def holder(self, target: NameTarget) -> int:
+    def holder(self, target) -> int:
+        """A name's holder id, or HOLDER_SELF for a bare ``@s`` (the VM reads the executor's)."""
+        if isinstance(target, Selector):
+            return vm.HOLDER_SELF
         return self.sb.holder_id(target.name)
 
     def objective(self, name: str) -> int:
@@ -269,7 +272,9 @@ _MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
 
 
 def _named(holder) -> bool:
-    return isinstance(holder, NameTarget)
+    """A holder the VM resolves itself: a name, or a bare ``@s`` (through the context's holder)."""
+    return isinstance(holder, NameTarget) or (isinstance(holder, Selector) and holder.variable == "s"
+                                              and not holder.args)
 
 
 def _vm_condition(st: IfScore | IfScoreMatches) -> bool:

@@ -10,7 +10,7 @@ from collections import Counter
 
 import numpy as np
 
-from emulator import vm
+from emulator import vm, world_entities
 from emulator.backend import RootResult, report_quota_cut
 from emulator.compiler import Compiler
 from emulator.host import Host
@@ -67,6 +67,7 @@ class NumbaBackend:
         self.totals = np.zeros(0, dtype=np.int64)  # inclusive cost per function
         self.active = np.zeros(0, dtype=np.int64)
         self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
+        self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
         self.context_ids: dict[tuple, int] = {}
         self.forks: dict[int, list[tuple[int, list[int]]]] = {}  # depth -> [(resume pc, contexts left)]
         self.collected: dict[int, tuple[int, int, list[int]]] = {}  # depth -> (final pc, end pc, contexts)
@@ -113,7 +114,7 @@ class NumbaBackend:
             code, starts = self.program.arrays()
             self._fit_counters(code.shape[0], starts.shape[0])
             status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts,
-                            self.totals, self.active, self.ovf)
+                            self.totals, self.active, self.ovf, self.ctx_holder)
             if status == vm.ST_DONE:
                 self.returned = True  # the root function came back (a cut may still be logged)
                 if r[vm.R_QUOTA] > 0:
@@ -195,6 +196,10 @@ class NumbaBackend:
         if index is None:
             index = self.context_ids[key] = len(self.contexts)
             self.contexts.append(ctx)
+            if index >= self.ctx_holder.shape[0]:
+                self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
+            entity = world_entities.executor(self.state, ctx)
+            self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
         return index
 
     def _stage(self, node, ctx: Context) -> None:

@@ -31,6 +31,10 @@ from numba import njit
 WIDTH = 8
 
 # ---------------------------------------------------------------- opcodes
+# A holder operand naming the executor (`@s`): ctx_holder[ctx] is its holder id, -1 for the server
+# (the command fails, or a condition stage drops the context: "No entity was found")
+HOLDER_SELF = -2
+
 OP_HALT = 0  # root finished: return ST_DONE
 OP_CMD = 1  # a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
 OP_ENDCMD = 2  # alive = 1 (after a chain with conditions)
@@ -113,7 +117,7 @@ def _overflowed(x):
 
 
 @njit(cache=True)
-def run(code, func_start, regs, frames, values, present, alive_obj, counts, totals, active, ovf):
+def run(code, func_start, regs, frames, values, present, alive_obj, counts, totals, active, ovf, ctx_holder):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -168,6 +172,16 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 pc += 1
                 status = ST_ERROR
                 break
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
+            if h2 == HOLDER_SELF:
+                h2 = ctx_holder[ctx]
+            if h < 0 or h2 < 0:  # @s run by the server
+                has = 1
+                ok = 0
+                val = 0
+                pc += 1
+                continue
             # get-or-create: target first, then source (ScoreboardCommand.performOperation)
             if present[h, o] == 0:
                 values[h, o] = 0
@@ -241,6 +255,14 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 pc += 1
                 status = ST_ERROR
                 break
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
+            if h < 0:  # @s run by the server
+                has = 1
+                ok = 0
+                val = 0
+                pc += 1
+                continue
             d = np.int64(code[pc, 3])
             old = np.int64(0)
             if op == OP_SET:
@@ -276,10 +298,16 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             if counting:
                 counts[pc] += 1
             h = code[pc, 1]
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
             has = 1
             ok = 1
             val = 1
             pc += 1
+            if h < 0:  # @s run by the server
+                ok = 0
+                val = 0
+                continue
             if op == OP_RESETALL:
                 present[h, :] = 0
                 continue
@@ -339,6 +367,19 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 alive = 0 if not final else alive
                 status = ST_ERROR
                 break
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
+            if op == OP_IFSCORE and code[pc, 4] == HOLDER_SELF and ctx_holder[ctx] < 0:
+                h = -1
+            if h < 0:  # @s run by the server: a final test fails, a stage (a fork) drops the context
+                if final:
+                    has = 1
+                    ok = 0
+                    val = 0
+                else:
+                    alive = 0
+                pc += 1
+                continue
             passed = False
             if present[h, o]:
                 a = values[h, o]
@@ -346,6 +387,8 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                     passed = code[pc, 3] <= a <= code[pc, 4]
                 else:
                     h2 = code[pc, 4]
+                    if h2 == HOLDER_SELF:
+                        h2 = ctx_holder[ctx]
                     o2 = code[pc, 5]
                     if present[h2, o2]:
                         b = values[h2, o2]

@@ -247,3 +247,24 @@ def test_each_stage_sees_every_context_before_any_command_runs(tmp_path):
             "execute as @e[tag=m] as @e[tag=m] if score #y v matches 0 run function t:inc\n")
     emu = run_both(tmp_path, {"t:main": body, "t:inc": "scoreboard players add #y v 1"})
     assert (emu.score("#x", "v"), emu.score("#y", "v")) == (3, 9)
+
+
+def test_self_scores_run_in_the_vm_and_fail_for_the_server(tmp_path):
+    # `@s` as a holder is the executor's UUID; run by the server it finds no entity: the command
+    # fails silently (ScoreHolderArgument), a condition stage drops the context
+    body = (SETUP + "summon marker 0 0 0 {Tags:[\"m\"]}\nsummon marker 1 0 0 {Tags:[\"m\"]}\n"
+            "scoreboard players set #two v 2\n"
+            "execute as @e[tag=m] run scoreboard players set @s v 5\n"
+            "execute as @e[tag=m] run scoreboard players operation @s v += #two v\n"
+            "execute as @e[tag=m] if score @s v matches 7 run scoreboard players add #seven v 1\n"
+            "execute as @e[tag=m] if score @s v = @s v store result score #got v run scoreboard players get @s v\n"
+            "execute store success score #server v run scoreboard players set @s v 1\n"
+            "execute store success score #op v run scoreboard players operation #two v += @s v\n"
+            "execute store success score #if v if score @s v matches 7\n"
+            "execute if score @s v matches 7 run scoreboard players set #ran v 1\n"
+            "execute as @e[tag=m] run scoreboard players reset @s v\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert [emu.score(h, "v") for h in ("#seven", "#got", "#server", "#op", "#if", "#ran", "#two")] == [
+        2, 7, 0, 0, 0, None, 2]
+    assert [e["scores"] for e in tagged(emu, "m")] == [{}, {}]
+    assert emu.diagnostics == []
