@@ -154,3 +154,17 @@ def test_compare_rules():
     after = {"functions": [{"function": "a", "self": 10, "total": 110}, {"function": "b", "self": 6, "total": None},
                            {"function": "c", "self": 1, "total": 1}]}
     assert compare(before, after, 10.0) == ["b: 5 -> 6 (+20.0%, threshold 10%)", "c: 0 -> 1 (new, threshold 10%)"]
+
+
+def test_trace_of_a_forked_command_puts_later_results_on_their_own_lines(pack):
+    root = pack({"demo/function/main.mcfunction": "scoreboard objectives add o dummy\nsummon marker\nsummon marker\n"
+                                                  "execute as @e[type=marker] run scoreboard players add $x o 1\n"})
+    result = profile(root, "--ticks", 0, "--call", "demo:main", "--format", "trace")
+    lines = result.output.splitlines()
+    command = "execute as @e[type=marker] run scoreboard players add $x o 1"
+    assert lines[-2:] == [f"        [C] {command} -> 1", f"        [R = 2] {command}"]
+
+
+def test_until_stops_the_run(demo):
+    r = report(demo, "--ticks", 50, "--until", "$t o 4")
+    assert r["ticks"]["count"] == 4
