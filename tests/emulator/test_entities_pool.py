@@ -65,4 +65,12 @@ def test_score_commands_on_self_need_no_host(runs):
     host_nodes = [program.host_ops[row[1]].node for pc, row in enumerate(program.rows)
                   if row[0] == vm_ops.OP_HOST and counts[pc]]
     assert host_nodes, "the pool pack still has host commands (tags, selectors)"
-    assert not [n for n in host_nodes if isinstance(n, (ast.ScoreSet, ast.ScoreOperation, ast.ScoreGet))]
+    def bare_self(holder) -> bool:
+        return isinstance(holder, ast.Selector) and holder.variable == "s" and not holder.args
+
+    def only_self_or_names(node) -> bool:
+        holders = [getattr(node, key) for key in ("targets", "target", "sources") if hasattr(node, key)]
+        return all(bare_self(h) or isinstance(h, ast.NameTarget) for h in holders) and any(map(bare_self, holders))
+
+    score_commands = (ast.ScoreSet, ast.ScoreOperation, ast.ScoreGet, ast.ScoreReset)
+    assert not [n for n in host_nodes if isinstance(n, score_commands) and only_self_or_names(n)]
