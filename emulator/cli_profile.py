@@ -131,7 +131,7 @@ def build_report(emu: Emulator, roots: RootLog) -> dict:
         calls = dict(backend.calls)
         totals = _totals_from_stacks(stacks, backend.root_calls)
         instructions: dict = {}
-        host: list = []
+        host = None  # the reference backend runs everything in Python: no VM/host split
     else:
         stacks = None
         calls = _vm_calls(backend, roots)

@@ -7,7 +7,7 @@ The report they write is a plain dict built by :mod:`emulator.cli_profile`::
      "roots": [{"function", "runs", "max_cost", "mean_cost", "headroom", "cut"}],
      "functions": [{"function", "self", "total", "calls"}],
      "lines": [{"path", "line", "commands", "source", "instructions": [{"op", "count"}]}],
-     "host": [{"function", "path", "line", "op", "command", "count"}],
+     "host": [{"function", "path", "line", "op", "command", "count"}] (None on the python backend),
      "stacks": {"a;b;c": count} (when recorded)}
 """
 from __future__ import annotations
@@ -109,8 +109,11 @@ def write_table(report: dict, top: int) -> str:
         if ops:
             lines.append(f"{'':>12}[{ops}]")
     host = report["host"]
-    lines += ["", f"host-executed commands ({len(host)}, top {top}):" if host else "host-executed commands: none"]
-    for h in host[:top]:
+    if host is None:
+        lines += ["", "host-executed commands: n/a (the python backend runs every command in Python)"]
+    else:
+        lines += ["", f"host-executed commands ({len(host)}, top {top}):" if host else "host-executed commands: none"]
+    for h in (host or [])[:top]:
         lines.append(f"{h['count']:>10}  {h['path']}:{h['line']}  {h['op']}  {h['command']}")
     return "\n".join(lines) + "\n"
 
