@@ -54,10 +54,41 @@ class Program:
         return tags + "\n".join(f"# {fid}\n{body}" for fid, body in self.functions.items())
 
 
-holders = st.sampled_from(HOLDERS)
 objectives = st.sampled_from(OBJECTIVES)
 ints = st.one_of(st.sampled_from(INTERESTING), st.integers(INT_MIN, INT_MAX), st.integers(-20, 20))
 non_negative = st.one_of(st.sampled_from((0, 1, 2, 7, 65536, INT_MAX)), st.integers(0, INT_MAX))
+
+# Stages that change the context but not the scores (``as @e`` with no entities: 0 contexts)
+MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
+# With entities: three markers summoned by t:f0, tagged m+a, m, n
+ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"]}',
+                'summon marker ~ ~1 ~5 {Tags:["n"]}')
+ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=marker,sort=nearest,limit=2]",
+                    "positioned as @e[tag=n]", "as @e[tag=m] at @s", "as @e[sort=furthest]")
+SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
+ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
+                   'summon marker ~ ~ ~ {Tags:["n"]}', "scoreboard players add @e[tag=m] o 3")
+
+
+@dataclass(frozen=True)
+class Vocabulary:
+    """What random programs are made of: which score holders (single: usable where the game
+    wants one), execute modifiers and extra commands."""
+
+    holders: st.SearchStrategy
+    single_holders: st.SearchStrategy
+    modifiers: tuple[str, ...]
+    extra_commands: tuple[str, ...]
+    setup: tuple[str, ...]
+
+
+def vocabulary(modifiers: bool, entities: bool) -> Vocabulary:
+    names = st.sampled_from(HOLDERS)
+    if not entities:
+        return Vocabulary(names, names, MODIFIERS if modifiers else (), (), ())
+    single = st.one_of(names, st.sampled_from(SINGLE_ENTITY_HOLDERS))
+    return Vocabulary(st.one_of(single, st.just("@e[tag=m]")), single,
+                      (MODIFIERS if modifiers else ()) + ENTITY_MODIFIERS, ENTITY_COMMANDS, ENTITY_SETUP)
 
 
 @st.composite
@@ -72,10 +103,10 @@ def ranges(draw) -> str:
 
 
 @st.composite
-def score_commands(draw) -> str:
+def score_commands(draw, vocab: Vocabulary) -> str:
     """A scoreboard command that can run anywhere (no calls)."""
     kind = draw(st.sampled_from(("set", "add", "remove", "operation", "operation", "operation", "reset", "get")))
-    h, o = draw(holders), draw(objectives)
+    h, o = draw(vocab.holders), draw(objectives)
     if kind in ("set", "add", "remove", "reset") and draw(st.integers(0, 9)) == 0:
         h = "*"  # every tracked holder; order-independent commands only (the game's order is a hash order)
     if kind == "set":
@@ -85,49 +116,51 @@ def score_commands(draw) -> str:
     if kind == "reset":
         return f"scoreboard players reset {h} {o}"
     if kind == "get":
-        return f"scoreboard players get {h} {o}"
-    return f"scoreboard players operation {h} {o} {draw(st.sampled_from(OPERATIONS))} {draw(holders)} {draw(objectives)}"
+        return f"scoreboard players get {draw(vocab.single_holders)} {o}"
+    source = draw(vocab.holders)
+    return f"scoreboard players operation {h} {o} {draw(st.sampled_from(OPERATIONS))} {source} {draw(objectives)}"
 
 
 @st.composite
-def conditions(draw, callees: list[str]) -> str:
+def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
     word = draw(st.sampled_from(("if", "unless")))
-    kinds = ["matches", "compare"] + (["function"] if callees else [])
+    kinds = ["matches", "compare"] + (["function"] if callees else []) + (["entity"] if vocab.setup else [])
     kind = draw(st.sampled_from(kinds))
+    single = vocab.single_holders
     if kind == "matches":
-        return f"{word} score {draw(holders)} {draw(objectives)} matches {draw(ranges())}"
+        return f"{word} score {draw(single)} {draw(objectives)} matches {draw(ranges())}"
     if kind == "compare":
-        return (f"{word} score {draw(holders)} {draw(objectives)} {draw(st.sampled_from(COMPARISONS))} "
-                f"{draw(holders)} {draw(objectives)}")
+        return (f"{word} score {draw(single)} {draw(objectives)} {draw(st.sampled_from(COMPARISONS))} "
+                f"{draw(single)} {draw(objectives)}")
+    if kind == "entity":
+        return f"{word} entity {draw(st.sampled_from(('@s', '@e[tag=a]', '@e[tag=n]')))}"
     return f"{word} function {draw(st.sampled_from(callees))}"
 
 
-# Stages that change the context but not the scores (``as @e`` finds no entity: 0 contexts)
-MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
-
-
 @st.composite
-def stage_chains(draw, callees: list[str], modifiers: bool) -> str:
-    """1 to 3 execute stages: conditions, and context modifiers and stores when ``modifiers``."""
-    stage = conditions(callees)
-    if modifiers:
+def stage_chains(draw, callees: list[str], vocab: Vocabulary) -> str:
+    """1 to 3 execute stages: conditions, plus the vocabulary's modifiers and stores if it has any."""
+    stage = conditions(callees, vocab)
+    if vocab.modifiers:
         stores = st.builds(lambda kind, h, o: f"store {kind} score {h} {o}",
-                           st.sampled_from(("result", "success")), holders, objectives)
-        stage = st.one_of(stage, st.sampled_from(MODIFIERS), stores)
+                           st.sampled_from(("result", "success")), vocab.holders, objectives)
+        stage = st.one_of(stage, st.sampled_from(vocab.modifiers), stores)
     return " ".join(draw(st.lists(stage, min_size=1, max_size=3)))
 
 
 @st.composite
-def macro_calls(draw) -> str:
-    holder = draw(holders)
+def macro_calls(draw, vocab: Vocabulary) -> str:
+    holder = draw(vocab.single_holders)
     return f'function t:mac {{h:"{holder}", v:{draw(ints)}}}'
 
 
 @st.composite
-def commands(draw, callees: list[str], modifiers: bool = False) -> str:
+def commands(draw, callees: list[str], vocab: Vocabulary) -> str:
     """One line of a function that may call ``callees`` (ids or ``#tags``) and the macro."""
-    simple = score_commands()
-    call = st.one_of(st.sampled_from(callees).map(lambda f: f"function {f}"), macro_calls()) if callees else simple
+    simple = score_commands(vocab)
+    if vocab.extra_commands:
+        simple = st.one_of(simple, simple, st.sampled_from(vocab.extra_commands))
+    call = st.one_of(st.sampled_from(callees).map(lambda f: f"function {f}"), macro_calls(vocab)) if callees else simple
     inner = st.one_of(simple, simple, call)
     kind = draw(st.sampled_from(("score", "score", "score", "say", "call", "if", "store", "condition", "return")))
     if kind == "score":
@@ -137,15 +170,15 @@ def commands(draw, callees: list[str], modifiers: bool = False) -> str:
     if kind == "call":
         return draw(call)
     if kind == "if":
-        return f"execute {draw(stage_chains(callees, modifiers))} run {draw(inner)}"
+        return f"execute {draw(stage_chains(callees, vocab))} run {draw(inner)}"
     if kind == "store":
         what = draw(st.sampled_from(("result", "success")))
-        return f"execute store {what} score {draw(holders)} {draw(objectives)} run {draw(inner)}"
+        return f"execute store {what} score {draw(vocab.holders)} {draw(objectives)} run {draw(inner)}"
     if kind == "condition":
         # `if function` must be followed by more (ExecuteCommand registers it with fork only)
-        return f"execute {draw(conditions([]))}"
+        return f"execute {draw(conditions([], vocab))}"
     ret = draw(st.sampled_from(("value", "fail", "run")))
-    guard = f"execute {draw(stage_chains(callees, modifiers))} run " if draw(st.booleans()) else ""
+    guard = f"execute {draw(stage_chains(callees, vocab))} run " if draw(st.booleans()) else ""
     if ret == "value":
         return f"{guard}return {draw(ints)}"
     if ret == "fail":
@@ -154,13 +187,16 @@ def commands(draw, callees: list[str], modifiers: bool = False) -> str:
 
 
 @st.composite
-def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool = False) -> Program:
-    """``modifiers``: execute chains may hold context modifiers (positioned, align, in, as @e ...)."""
+def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool = False,
+             entities: bool = False) -> Program:
+    """``modifiers``: execute chains may hold context modifiers (positioned, align, in, as @e ...)
+    and stores; ``entities``: three markers exist, selected, tagged, killed and used as holders."""
+    vocab = vocabulary(modifiers, entities)
     count = draw(st.integers(1, max_functions))
     names = [f"t:f{i}" for i in range(count)]
     functions: dict[str, str] = {}
     for leaf in ("t:leaf0", "t:leaf1"):
-        body = draw(st.lists(score_commands(), min_size=1, max_size=3))
+        body = draw(st.lists(score_commands(vocab), min_size=1, max_size=3))
         ending = draw(st.sampled_from(("", "return 1", "return -4", "return fail", "return 0")))
         functions[leaf] = "\n".join(body + ([ending] if ending else []))
     tags = {"t:leaves": draw(st.lists(st.sampled_from(("t:leaf0", "t:leaf1")), min_size=1, max_size=3))}
@@ -168,12 +204,12 @@ def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool =
         st.sampled_from(("$return $(v)", "$scoreboard players operation #a o += $(h) o", "return run say mac")))
     for i, name in enumerate(names):
         callees = names[i + 1:] + ["t:loop", "t:leaf0", "#t:leaves"]
-        lines = draw(st.lists(commands(callees, modifiers), min_size=1, max_size=max_lines))
+        lines = draw(st.lists(commands(callees, vocab), min_size=1, max_size=max_lines))
         if i == 0:
             lines = ["scoreboard objectives add o dummy", "scoreboard objectives add p dummy",
-                     f"scoreboard players set #n p {draw(st.integers(0, 6))}"] + lines
+                     f"scoreboard players set #n p {draw(st.integers(0, 6))}", *vocab.setup] + lines
         functions[name] = "\n".join(lines)
-    loop_body = draw(st.lists(score_commands(), min_size=0, max_size=3))
+    loop_body = draw(st.lists(score_commands(vocab), min_size=0, max_size=3))
     functions["t:loop"] = "\n".join(
         ["scoreboard players remove #n p 1"] + loop_body + ["execute if score #n p matches 1.. run function t:loop"]
     )

@@ -89,3 +89,12 @@ def test_runtime_diagnostics_agree(tmp_path, line):
     assert reference.diagnostics, "the reference reports the problem"
     assert vm.diagnostics == reference.diagnostics
     assert vm.cost == reference.cost
+
+
+# Entities: markers selected, tagged, killed and used as score holders; several contexts per
+# stage exercise the per-context costs, return-run's first context and if function per context
+@pytest.mark.xfail(reason="VM_GAPS return_in_each_context (test_java_edge_cases.py)", strict=False)
+@settings(settings.get_profile("differential"), max_examples=max(EXAMPLES // 3, 20))
+@given(program=programs(modifiers=True, entities=True))
+def test_random_programs_with_entities_agree(tmp_path_factory, program):
+    _compare(tmp_path_factory, program, sanitize=False)
