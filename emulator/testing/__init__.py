@@ -2,7 +2,19 @@
 
 discovery finds test files and their packs; directives and testfile read one file into a
 :class:`~emulator.testing.testfile.TestCase`; runner runs cases in fresh worlds; results and
-junit report them.
+junit report them. The format is misode/packtest's (README and PackTestFunction):
+
+- every test gets a fresh world: the pack loaded and ``#minecraft:load`` run; the test's commands
+  run as the server (or its ``@dummy`` player) at (0, 1, 0), one block above the test structure;
+- ``assert [not] COND`` / ``await [not] COND`` with the conditions of ``execute if`` (checked by
+  the emulator itself) and PackTest's ``chat PATTERN``; ``await delay TIME`` (``await for`` in
+  older PackTest); ``fail MESSAGE``; ``succeed``; each also after ``execute ... run``;
+- ``await`` ticks the world (``#minecraft:tick``, schedules) until the condition holds or the
+  ``@timeout`` (100 ticks) runs out; a test that reaches its end passes.
+
+Not modelled: test commands inside functions the test calls (only the test file's own lines are
+test commands), structure templates (``@template`` is read, not placed), the ``dummy`` command's
+player actions (such tests are skipped) and chat receivers.
 """
 from emulator.testing.discovery import discover
 from emulator.testing.results import Summary, TestResult

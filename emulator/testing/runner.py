@@ -11,11 +11,11 @@ from pathlib import Path
 
 from emulator.api import Emulator
 from emulator.runtime import Runtime
-from emulator.world_entities import new_state
 from emulator.testing.discovery import TestFile
 from emulator.testing.results import FAILED, PASSED, SKIPPED, Summary, TestResult
 from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run, Succeed, TestCase, plain_text,
                                        read_test)
+from emulator.world_entities import new_state
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.pack import load_packs
 
@@ -57,7 +57,8 @@ def load_suite(files: list[TestFile], pattern: str | None = None):
 def _in_batches(cases: list[TestCase]) -> list[TestCase]:
     """Order by batch (first appearance) and give every test of a batch the batch's
     @beforebatch/@afterbatch; a second, different one in a batch is an error of the test giving
-    it (PackTest allows one per batch)."""
+    it (PackTest allows one per batch). As each test has a world of its own, the batch's commands
+    run in each test's world, before and after the test."""
     batches: dict[str, list[TestCase]] = {}
     hooks: dict[tuple[str, str], tuple[str, str | None]] = {}  # (batch, directive) -> (text, function)
     for case in cases:
