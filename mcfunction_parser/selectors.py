@@ -15,6 +15,7 @@ from .reader import Reader, show
 from .snbt import compound
 
 VARIABLES = frozenset("spaern")
+_ALWAYS_VALID = frozenset("spaer")  # @n depends on the version
 AT_N = FEATURES["selector @n"][0]
 _SORTS = frozenset(("nearest", "furthest", "random", "arbitrary"))
 _GAMEMODES = frozenset(("survival", "creative", "adventure", "spectator"))
@@ -43,7 +44,8 @@ def selector(r: Reader) -> Selector:
     if not text.startswith("[", start + 2):
         r.pos = start + 2
         return bare_selector(r, variable, start)
-    _check_variable(r, variable, start)
+    if variable not in _ALWAYS_VALID:
+        _check_variable(r, variable, start)
     loc = r.loc_at(start)
     plain = _PLAIN_SELECTOR.match(text, start)
     if plain is not None:
@@ -64,7 +66,8 @@ def selector(r: Reader) -> Selector:
 
 def bare_selector(r: Reader, variable: str, start: int) -> Selector:
     """``@s``, ``@e`` ... without options, written at offset ``start``."""
-    _check_variable(r, variable, start)
+    if variable not in _ALWAYS_VALID:
+        _check_variable(r, variable, start)
     return Selector(variable, (), r.loc_at(start))
 
 

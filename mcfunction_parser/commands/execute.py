@@ -304,9 +304,10 @@ _FAST_SCORE_MATCHES = re.compile(rf" (if|unless) score {PLAIN_HOLDER} {PLAIN_OBJ
 
 def _fast_score_matches(r: Reader, m, sub_loc):
     """The subcommand for a _FAST_SCORE_MATCHES match, or None to take the general path."""
-    if m.group(2) in ("@a", "@e") or objective_too_long(m.group(3), r.version):
+    holder_text = m.group(2)
+    if holder_text in ("@a", "@e") or objective_too_long(m.group(3), r.version):
         return None
-    holder = plain_holder(r, m.group(2), m.start(2))
+    holder = plain_holder(r, holder_text, m.start(2))
     r.pos = m.end()
     return ast.IfScoreMatches(sub_loc, m.group(1) == "unless", holder, m.group(3), int_range(r))
 
