@@ -268,3 +268,25 @@ def test_self_scores_run_in_the_vm_and_fail_for_the_server(tmp_path):
         2, 7, 0, 0, 0, None, 2]
     assert [e["scores"] for e in tagged(emu, "m")] == [{}, {}]
     assert emu.diagnostics == []
+
+
+def test_context_stages_from_entities(tmp_path):
+    # positioned as / rotated as / execute summon / on (no relations here) / kill then @s
+    body = (SETUP + "summon marker 3.25 4 5.75 {Tags:[\"a\"],Rotation:[30f,-20f]}\n"
+            "execute positioned as @e[tag=a] run summon marker ~ ~1 ~ {Tags:[\"above\"]}\n"
+            "execute rotated as @e[tag=a] positioned 0 0 0 run summon marker ^ ^ ^2 {Tags:[\"ahead\"]}\n"
+            "execute summon marker run tag @s add made\n"
+            "execute store result score #on v as @e[tag=a] on vehicle run say never\n"
+            "execute as @e[tag=made] run kill @s\n"
+            "execute store result score #made v if entity @e[tag=made]\n"
+            "execute as @e[tag=a] at @s run tp @s ~ ~ ~ facing 0 4 0\n"
+            "execute as @e[tag=a] at @s run tp @s ^1 ^ ^\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert tagged(emu, "above")[0]["pos"] == [3.25, 5.0, 5.75]
+    ahead = rotation.local_to_world((0.5, 0.0, 0.5), F32(30), F32(-20), 0.0, 0.0, 2.0)  # 0 0 0 is centred
+    assert tagged(emu, "ahead")[0]["pos"] == list(ahead)
+    assert (emu.score("#on", "v"), emu.score("#made", "v")) == (None, 0)  # no context: nothing stored
+    yaw, pitch = rotation.teleport_rotation(*rotation.facing_rotation((3.25, 4.0, 5.75), (0.5, 4.0, 0.5)))
+    [a] = tagged(emu, "a")
+    assert a["rotation"] == [float(yaw), float(pitch)]
+    assert a["pos"] == list(rotation.local_to_world((3.25, 4.0, 5.75), yaw, pitch, 1.0, 0.0, 0.0))
