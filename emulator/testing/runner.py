@@ -17,10 +17,13 @@ from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run
                                        read_test)
 from emulator.world_entities import new_state
 from mcfunction_parser.diagnostics import Diagnostic
+from mcfunction_parser.nbt import Compound, to_snbt
 from mcfunction_parser.pack import load_packs
 
 _SCORE_MATCHES = re.compile(r"score (\S+) (\S+) matches (\S+)$")
 _SCORE_COMPARE = re.compile(r"score (\S+) (\S+) (<=|>=|=|<|>) (\S+) (\S+)$")
+_ENTITY = re.compile(r"entity (.+)$")
+_DATA = re.compile(r"data (?:storage (\S+) |entity (?:\S+\[.*\]|\S+) |block \S+ \S+ \S+ )(.+)$")
 
 
 class _Verdict(Exception):
@@ -235,8 +238,8 @@ def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
 
 
 def describe_failure(emu: Emulator, check, chat_start: int = 0) -> str:
-    """PackTest's messages for failed score and chat conditions (ScoreAssertion.java,
-    ChatAssertion.java); others name the condition."""
+    """PackTest's messages for failed score, chat, entity and data conditions (ScoreAssertion,
+    ChatAssertion, EntityAssertion, DataAssertion); others name the condition."""
     expect = "Did not expect" if check.negated else "Expected"
     if isinstance(check, ChatCheck):
         if check.negated:
@@ -252,7 +255,33 @@ def describe_failure(emu: Emulator, check, chat_start: int = 0) -> str:
         holder, objective, op, source, source_objective = match.groups()
         return (f"{expect} score {holder} {objective} {op} {source} {source_objective}, found "
                 f"{_value(emu, holder, objective)} {op} {_value(emu, source, source_objective)}")
+    match = _ENTITY.match(check.condition)
+    if match:
+        found = _entity_count(emu, match.group(1))
+        if not check.negated:
+            return f"Expected entity matching {match.group(1)}"
+        return f"Did not expect entity matching {match.group(1)}" + (f", found {found}" if found is not None else "")
+    match = _DATA.match(check.condition)
+    if match:
+        storage, path = match.groups()
+        if check.negated:
+            return f"Did not expect data at {path}"
+        if storage and ":" not in storage:
+            storage = "minecraft:" + storage
+        found = to_snbt(emu.state.storage.get(storage, Compound())) if storage else None
+        return f"Expected data at {path}" + (f", found {found}" if found is not None else "")
     return f"{expect} {check.condition}"
+
+
+def _entity_count(emu: Emulator, selector: str) -> int | None:
+    """How many entities ``selector`` finds from the world spawn (None when it needs a context
+    the test source had, such as ``@s``)."""
+    if selector.startswith("@s"):
+        return None
+    try:
+        return len(emu.entities(selector))
+    except Exception:  # a selector the world library cannot read from here: say nothing
+        return None
 
 
 def _sample(messages: list[str]) -> str:

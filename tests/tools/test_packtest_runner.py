@@ -216,7 +216,7 @@ def test_dummy_directive_spawns_a_player_as_the_test_source(pack):
     })
     results = by_id(run(root))
     assert results["demo:default"].status == "passed", results["demo:default"].message
-    assert results["demo:placed"].message == "Expected entity @s[name=Dummy4]"  # named Dummy100..999
+    assert results["demo:placed"].message == "Expected entity matching @s[name=Dummy4]"  # named Dummy100..999
     assert results["demo:server"].status == "passed", results["demo:server"].message
     assert results["demo:bad"].message == "Failed to initialize test with dummy"
 
@@ -233,3 +233,17 @@ def test_directives_are_the_leading_comment_lines(pack):
 def test_await_for_is_the_old_spelling_of_await_delay(pack):
     root = pack({"demo/test/old.mcfunction": "await for 2s\n"})
     assert run(root).results[0].ticks == 40
+
+
+def test_entity_and_data_messages_follow_packtest(pack):
+    root = pack({
+        "demo/test/ent.mcfunction": "assert entity @e[type=marker]\n",
+        "demo/test/not_ent.mcfunction": "summon marker\nsummon marker\nassert not entity @e[type=marker]\n",
+        "demo/test/data.mcfunction": "data modify storage demo:s x set value 3\nassert data storage demo:s y\n",
+        "demo/test/not_data.mcfunction": "data modify storage demo:s x set value 3\nassert not data storage demo:s x\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:ent"].message == "Expected entity matching @e[type=marker]"
+    assert results["demo:not_ent"].message == "Did not expect entity matching @e[type=marker], found 2"
+    assert results["demo:data"].message == "Expected data at y, found {x:3}"
+    assert results["demo:not_data"].message == "Did not expect data at x"
