@@ -24,14 +24,16 @@ class TraceWriter:
     """The game's trace format (DebugCommand.Tracer, 1.20.3+): per traced root its id, then
     ``[F] id size=N`` per call, ``[C] command`` per command line, its result appended as
     `` -> N`` or, when something came in between, ``[R = N] command`` on its own line; each line
-    indented 4 spaces per depth plus one."""
+    indented 4 spaces per depth plus one; ``[E] message`` for a command that failed."""
 
     def __init__(self) -> None:
         self.out = io.StringIO()
         self.waiting = False  # a [C] line waits for its result
+        self.last_depth = 0
 
     def _indent(self, depth: int) -> None:
         self.out.write("    " * (depth + 1))
+        self.last_depth = depth
 
     def _end_line(self) -> None:
         if self.waiting:
@@ -60,6 +62,13 @@ class TraceWriter:
         else:
             self._indent(depth)
             self.out.write(f"[R = {value}] {text}\n")
+
+    def error(self, message: str) -> None:
+        """``[E] message`` one level deeper than the last line; like the game's Tracer.onError, it
+        ends no line, so what follows continues on it."""
+        self._end_line()
+        self._indent(self.last_depth + 1)
+        self.out.write(f"[E] {message}")
 
     def text(self) -> str:
         self._end_line()

@@ -112,6 +112,11 @@ class StackInterpreter(Interpreter):
         execute.entry = inner.entry
         return execute
 
+    def _fail(self, failure, source, line) -> None:
+        if self.trace is not None:
+            self.trace.error(failure.message)
+        super()._fail(failure, source, line)
+
     def _text(self, loc) -> str:
         lines = self.packs.sources.get(loc.path)
         if not lines or not 0 < loc.line <= len(lines):

@@ -168,3 +168,12 @@ def test_trace_of_a_forked_command_puts_later_results_on_their_own_lines(pack):
 def test_until_stops_the_run(demo):
     r = report(demo, "--ticks", 50, "--until", "$t o 4")
     assert r["ticks"]["count"] == 4
+
+
+def test_trace_errors_continue_on_the_same_line_as_in_the_game(pack):
+    # DebugCommand.Tracer.onError prints "[E] message" one level deeper and ends no line
+    root = pack({"demo/function/main.mcfunction": "scoreboard players set $x nope 1\nsay hi\n"})
+    result = profile(root, "--ticks", 0, "--call", "demo:main", "--format", "trace")
+    lines = result.output.splitlines()
+    assert lines[2] == "        [C] scoreboard players set $x nope 1"
+    assert lines[3] == "            [E] Unknown scoreboard objective 'nope'        [C] say hi -> 1"
