@@ -16,3 +16,4 @@ from emulator.cli_run import run; main.add_command(run)  # noqa: E402,E702
 from emulator.cli_disasm import disasm; main.add_command(disasm)  # noqa: E402,E702
 from emulator.cli_test import test; main.add_command(test)  # noqa: E402,E702
 from emulator.cli_profile import profile; main.add_command(profile)  # noqa: E402,E702
+from emulator.cli_shot import shot; main.add_command(shot)  # noqa: E402,E702

@@ -1,0 +1,135 @@
+"""One pool shot on the pool datapack in the emulator: set up a table, rack, strike through the
+pack's public API (``pool:api/shot``), tick until the table is at rest, and report where every
+ball went. ``dpemu shot`` (emulator/cli_shot.py) prints it; the datapack tests and the bench
+drive the same functions.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+from emulator.api import Emulator
+
+DEFAULT_PACK = Path(__file__).resolve().parents[1] / "datapack"
+TABLE_CORNER = (0.0, 64.0, 0.0)   # where pool:table/setup runs (the playing area's corner)
+POCKETED = 3                      # pool.state of a ball that left play (pool:load's header)
+REQUIRED_FUNCTIONS = ("pool:table/setup", "pool:api/shot")
+
+
+@dataclass(frozen=True)
+class Shot:
+    """A cue shot in player units; ``macro_arguments`` turns it into pool:api/shot's integers."""
+
+    angle: float = 0.0            # degrees, counter-clockwise from the table's +x towards +z
+    speed: float = 6.5            # cue speed, m/s
+    tip_x: float = 0.0            # tip offset right of centre, fraction of the ball radius
+    tip_y: float = 0.0            # tip offset above centre, fraction of the ball radius
+    elevation: float = 0.0        # cue butt raised, degrees
+
+    def macro_arguments(self) -> dict[str, int]:
+        return {"angle": round(self.angle * 100), "speed": round(self.speed * 1000),
+                "tip_x": round(self.tip_x * 1000), "tip_y": round(self.tip_y * 1000),
+                "elevation": round(self.elevation * 100)}
+
+
+# The break: full power (the trigger's 100 %) from the head spot straight at the apex ball.
+BREAK = Shot(angle=0.0, speed=6.5)
+
+
+@dataclass
+class BallOutcome:
+    id: int
+    x_mm: float                   # final centre, table frame (from the corner), millimetres
+    z_mm: float
+    pocketed: bool
+    tick: int | None              # pocketed or stopped at this tick (1 = the first after the strike); None: never moved
+
+
+@dataclass
+class ShotResult:
+    refused: list[str]            # the pack's chat messages when it refused the shot
+    at_rest: bool
+    ticks: int
+    commands_per_tick: list[int]
+    seconds: float                # wall time of the ticks after the strike
+    balls: list[BallOutcome] = field(default_factory=list)
+    overflows: list = field(default_factory=list)
+    diagnostics: list = field(default_factory=list)
+
+    @property
+    def commands_mean(self) -> float:
+        return sum(self.commands_per_tick) / len(self.commands_per_tick) if self.commands_per_tick else 0.0
+
+    @property
+    def commands_max(self) -> int:
+        return max(self.commands_per_tick, default=0)
+
+    def to_json(self) -> dict:
+        return {"refused": self.refused, "at_rest": self.at_rest, "ticks": self.ticks,
+                "commands_per_tick": {"mean": self.commands_mean, "max": self.commands_max,
+                                      "each": self.commands_per_tick},
+                "seconds": self.seconds, "balls": [asdict(b) for b in self.balls],
+                "overflows": [o.to_json() for o in self.overflows],
+                "diagnostics": [d.to_json() for d in self.diagnostics]}
+
+
+def missing_functions(emu: Emulator) -> list[str]:
+    """The pool API functions the loaded packs lack (empty for a pool datapack)."""
+    return [f for f in REQUIRED_FUNCTIONS if f not in emu.packs.functions]
+
+
+def new_table(pack: str | Path = DEFAULT_PACK, backend: str = "numba", sanitize: bool = False) -> Emulator:
+    """An emulator with ``pack`` loaded, its load tick run and a racked table at TABLE_CORNER."""
+    emu = Emulator(backend=backend, sanitize=sanitize)
+    emu.load(pack)
+    if missing_functions(emu):
+        return emu
+    emu.tick()
+    emu.call("pool:table/setup", at=TABLE_CORNER)
+    return emu
+
+
+def ball_states(emu: Emulator) -> dict[int, tuple[int, int, int]]:
+    """Ball id -> (x um, z um, pool.state) read from the ball entities' scores."""
+    return {e["scores"]["pool.id"]: (e["scores"]["pool.x"], e["scores"]["pool.z"], e["scores"]["pool.state"])
+            for e in emu.entities("@e[tag=pool.ball]")}
+
+
+def strike(emu: Emulator, shot: Shot) -> list[str]:
+    """Play ``shot`` through pool:api/shot; returns the refusal messages (empty when struck)."""
+    first = len(emu.log)
+    result = emu.call("pool:api/shot", arguments=shot.macro_arguments())
+    if result == 1:
+        return []
+    return [entry.text for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
+
+
+def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
+    """Strike and tick until ``$resting pool.game`` is 1 or ``max_ticks`` ran."""
+    refused = strike(emu, shot)
+    start = ball_states(emu)
+    if refused:
+        return ShotResult(refused, emu.score("$resting", "pool.game") == 1, 0, [], 0.0, _outcomes(start, {}), list(emu.overflows),
+                          list(emu.diagnostics))
+    last_change: dict[int, int] = {}
+    previous, first_tick = start, len(emu.commands_per_tick)
+    started = time.perf_counter()
+    at_rest = False
+    for tick in range(1, max_ticks + 1):
+        emu.tick()
+        now = ball_states(emu)
+        last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
+        previous = now
+        if emu.score("$resting", "pool.game") == 1:
+            at_rest = True
+            break
+    seconds = time.perf_counter() - started
+    costs = emu.commands_per_tick[first_tick:]
+    return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(previous, last_change),
+                      list(emu.overflows), list(emu.diagnostics))
+
+
+def _outcomes(states: dict[int, tuple[int, int, int]], last_change: dict[int, int]) -> list[BallOutcome]:
+    return [BallOutcome(i, x / 1000, z / 1000, state == POCKETED, last_change.get(i))
+            for i, (x, z, state) in sorted(states.items())]
