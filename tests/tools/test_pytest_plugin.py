@@ -57,8 +57,8 @@ def test_assert_entity_position(pack, dpemu_pack):
 def test_mcfunction_files_are_collected_only_when_asked(pack, tmp_path):
     root = pack(TESTS, load=["demo:init"])
     (tmp_path / "test_nothing.py").write_text("def test_py():\n    pass\n")
-    command = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-o", "addopts=", "--rootdir", str(tmp_path),
-               str(tmp_path / "test_nothing.py")]
+    base = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-o", "addopts="]
+    command = base + ["--rootdir", str(tmp_path), str(tmp_path / "test_nothing.py")]
     plain = subprocess.run(command, capture_output=True, text=True, cwd=tmp_path)
     assert "1 passed" in plain.stdout
     run = subprocess.run(command + ["--mcfunction-tests", str(root), "--dpemu-backend", "python", "-rf"],
@@ -67,3 +67,8 @@ def test_mcfunction_files_are_collected_only_when_asked(pack, tmp_path):
     assert "1 failed, 2 passed" in run.stdout
     assert "pack/data/demo/test/bad.mcfunction:2: Expected score $x o to match 4, found 5" in run.stdout
     assert "FAILED pack/data/demo/test/bad.mcfunction::demo:bad" in run.stdout
+    # the ini option names the packs instead (paths relative to the ini file)
+    (tmp_path / "pytest.ini").write_text("[pytest]\nmcfunction_tests = pack/data/demo/test/good.mcfunction\n")
+    ini = subprocess.run(base + ["-c", str(tmp_path / "pytest.ini"), str(tmp_path / "test_nothing.py")],
+                         capture_output=True, text=True, cwd=tmp_path)
+    assert "2 passed" in ini.stdout, ini.stdout + ini.stderr
