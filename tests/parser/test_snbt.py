@@ -104,3 +104,70 @@ def test_operations_from_1_21_5():
                                                                                -920753162]
     assert "bool(..)" in snbt_error("bool('x')", (1, 21, 5)).message
     assert type(snbt("bool", (1, 21, 5))) is String
+
+
+NEW = (1, 21, 5)
+
+
+# SnbtGrammar (25w02a, read in the decompiled 1.21.7 source): integer_literal is sign? (0x HEX | 0b BIN |
+# DEC) suffix?, where hex and binary are unsigned unless 's' precedes the type, decimal signed unless 'u'
+# does; '_' may separate digits; float_literal also takes an exponent without a point.
+@pytest.mark.parametrize("text,kind,expected", [
+    ("0x1F", Int, 31), ("0xFFub", Byte, -1), ("0xFFFFFFFF", Int, -1), ("-1sb", Byte, -1), ("0b101", Int, 5),
+    ("0b", Byte, 0), ("0b1b", Byte, 1), ("0xFFb", Int, 0xFFB),  # hex digits run greedily: 'b' is one
+    ("1_000", Int, 1000), ("1ub", Byte, 1), ("1sl", Long, 1), ("0xFFFFFFFFFFFFFFFFul", Long, -1),
+    ("1e3", Double, 1000.0), ("1.5e3f", Float, 1500.0), ("+.5e-3d", Double, 0.0005), ("1.", Double, 1.0),
+    ("1i", Int, 1), ("TRUE", Byte, 1), ("False", Byte, 0), ("_1", String, "_1"),
+])
+def test_new_grammar_numbers(text, kind, expected):
+    result = snbt(text, NEW)
+    assert type(result) is kind and result == expected
+
+
+@pytest.mark.parametrize("text,message", [
+    ("01", "invalid number"),  # leading_zero_not_allowed
+    ("1_", "invalid number"), ("1a", "invalid number"), ("-", "invalid number"),  # invalid_unquoted_start
+    ("-0x1", "non-negative"), ("-1ub", "non-negative"),
+    ("128b", "out of range for TAG_Byte"), ("2147483648", "out of range for TAG_Int"),
+    ("0x100000000", "out of range for an unsigned TAG_Int"),
+    ("1e400", "infinity"), ("1e39f", "infinity"),
+])
+def test_new_grammar_number_errors(text, message):
+    # the old parser kept such tokens as strings; the new grammar only lets an unquoted string start
+    # with a character that can't start a number
+    assert message in snbt_error(text, NEW).message
+    assert snbt_error(text, NEW).pos == 0
+
+
+def test_new_grammar_typed_arrays_hold_integer_literals_of_their_type():
+    # ArrayPrefix: B takes bytes, I ints, bytes and shorts, L every integer type; no suffix means the array's type
+    assert snbt("[B;1,2]", NEW) == [1, 2] and snbt("[I;1b,2s,3]", NEW) == [1, 2, 3]
+    assert type(snbt("[L;1,2i]", NEW)) is LongArray
+    assert "TAG_Long into an array of TAG_Byte" in snbt_error("[B;1L]", NEW).message
+    assert "TAG_Long into an array of TAG_Int" in snbt_error("[I;1L]", NEW).message
+    assert "out of range for TAG_Byte" in snbt_error("[B;200]", NEW).message
+    assert "expected an integer" in snbt_error("[I;abc]", NEW).message
+    assert snbt_error("[I;1.5]", NEW).pos == 3
+
+
+def test_old_grammar_keeps_strings_and_compares_booleans_ignoring_case():
+    # TagParser.type (1.13 - 1.21.4): patterns match the whole token or it is a string; "true".equalsIgnoreCase
+    assert snbt("0x1F") == "0x1F" and type(snbt("1_000")) is String
+    assert type(snbt("TRUE")) is Byte and snbt("TRUE") == 1
+
+
+@pytest.mark.parametrize("version", [(1, 20, 4), NEW])
+def test_nesting_up_to_512_levels(version):
+    # the game's NBT depth limit is 512 (NbtAccounter); deeper data can't be stored
+    deep = snbt("{a:" * 512 + "1" + "}" * 512, version)
+    assert type(deep) is Compound
+    assert type(snbt("[" * 512 + "]" * 512, version)) is List
+    assert "deeper than 512" in snbt_error("[" * 513 + "]" * 513, version).message
+    assert "deeper than 512" in snbt_error("{a:" * 600 + "1" + "}" * 600, version).message
+
+
+def test_a_command_with_512_levels_parses():
+    from mcfunction_parser.parse import parse_command
+    cmd, diagnostics = parse_command("execute as @s run data merge storage a:b " + "{a:" * 512 + "1" + "}" * 512,
+                                     Loc("f", 1, 1))
+    assert cmd is not None and diagnostics == []
