@@ -37,13 +37,41 @@ def test_vec3_fast_path_agrees_with_slow_path(parts, block):
         expected = slow_vec3(text, block)
     except ParseError:
         expected = None
-    r = reader(text)
-    try:
-        got = arguments.vec3(r, block)
-        got = ([got.x, got.y, got.z], r.pos)
-    except ParseError:
-        got = None
-    assert got == expected
+    for _ in range(2):  # the second time the well-formed positions come from the cache
+        r = reader(text)
+        try:
+            got = arguments.vec3(r, block)
+            got = ([got.x, got.y, got.z], r.pos)
+        except ParseError:
+            got = None
+        assert got == expected
+
+
+RANGE = st.one_of(st.sampled_from(["1", "..-1", "1..", "5..1", "..", "1.5", "", "2147483648", "-0..0", "1...2", ".."]),
+                  st.from_regex(r"-?[0-9]{0,3}(\.\.?)?-?[0-9]{0,3}", fullmatch=True))
+
+
+@settings(max_examples=300, deadline=None)
+@given(RANGE, st.sampled_from(["", " x", "]", ",a"]))
+def test_int_range_cache_agrees_with_the_general_path(text, tail):
+    def general():
+        r = reader(text + tail)
+        try:
+            lo, hi = arguments._range(r, True)
+            return (lo, hi), r.pos
+        except ParseError as error:
+            return error.message, error.pos
+
+    def cached():
+        r = reader(text + tail)
+        try:
+            rng = arguments.int_range(r)
+            return (rng.lo, rng.hi), r.pos
+        except ParseError as error:
+            return error.message, error.pos
+
+    expected = general()
+    assert cached() == expected and cached() == expected  # a miss, then a hit when it parsed
 
 
 def test_coordinates():

@@ -8,7 +8,14 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.parse import parse_command, parse_function
 from test_mecha_agreement import INVALID, VALID
 
-SEEDS = VALID + INVALID
+# lines exercising the fast paths, caches and the 1.21.5 SNBT grammar, whose mutations reach new branches
+FAST_PATH_SEEDS = [
+    "execute if score @s obj matches 1..5 unless score #a obj matches ..-1 run scoreboard players set @s o 1",
+    "execute as @e[tag=a,limit=1] positioned ~1 ~.5 ~ run tp @s 1 2 3",
+    "data merge storage a:b {h:0xFFub,b:0b101,u:1_000,e:1e3,f:-1.5e-3f,l:[B;1,2],i:[I;1b,2s],g:[L;1,0x7Fl]}",
+    "summon marker ~ ~ ~ {Tags:[\"a\"],data:{x:[1,2b,{y:TRUE}]}}",
+]
+SEEDS = VALID + INVALID + FAST_PATH_SEEDS
 ALPHABET = st.sampled_from(list(" @[]{}()=,.:;!#$^~\\\"'-+0123456789abcdefxyzABC_/\t\n") + ["\u00e9", "\u2603"])
 VERSIONS = st.sampled_from([(1, 16, 5), (1, 19, 4), (1, 20, 2), (1, 20, 3), (1, 21, 0), (1, 21, 5)])
 
