@@ -201,10 +201,10 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
             source.call(step.function)
         elif isinstance(step, (Check, ChatCheck)) and step.mode == "assert":
             if not _holds(source, step, chat_start):
-                raise _Verdict(FAILED, describe_failure(emu, step, chat_start), step.loc.line)
+                raise _Verdict(FAILED, describe_failure(source, step, chat_start), step.loc.line)
         elif isinstance(step, (Check, ChatCheck)):
             while not _holds(source, step, chat_start):
-                _tick_or_time_out(emu, timeout, step, describe_failure(emu, step, chat_start))
+                _tick_or_time_out(emu, timeout, step, describe_failure(source, step, chat_start))
         elif isinstance(step, Delay):
             for _ in range(step.ticks):
                 _tick_or_time_out(emu, timeout, step, f"still in 'await delay {step.ticks}'")
@@ -237,10 +237,11 @@ def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
     emu.tick()
 
 
-def describe_failure(emu: Emulator, check, chat_start: int = 0) -> str:
+def describe_failure(test: TestSource, check, chat_start: int = 0) -> str:
     """PackTest's messages for failed score, chat, entity and data conditions (ScoreAssertion,
     ChatAssertion, EntityAssertion, DataAssertion); others name the condition."""
     expect = "Did not expect" if check.negated else "Expected"
+    emu = test.emu
     if isinstance(check, ChatCheck):
         if check.negated:
             found = len(_chat_matches(emu, check, chat_start))
@@ -249,12 +250,12 @@ def describe_failure(emu: Emulator, check, chat_start: int = 0) -> str:
     match = _SCORE_MATCHES.match(check.condition)
     if match:
         holder, objective, rng = match.groups()
-        return f"{expect} score {holder} {objective} to match {rng}, found {_value(emu, holder, objective)}"
+        return f"{expect} score {holder} {objective} to match {rng}, found {_value(test, holder, objective)}"
     match = _SCORE_COMPARE.match(check.condition)
     if match:
         holder, objective, op, source, source_objective = match.groups()
         return (f"{expect} score {holder} {objective} {op} {source} {source_objective}, found "
-                f"{_value(emu, holder, objective)} {op} {_value(emu, source, source_objective)}")
+                f"{_value(test, holder, objective)} {op} {_value(test, source, source_objective)}")
     match = _ENTITY.match(check.condition)
     if match:
         found = _entity_count(emu, match.group(1))
@@ -278,8 +279,13 @@ def _entity_count(emu: Emulator, selector: str) -> int | None:
     the test source had, such as ``@s``)."""
     if selector.startswith("@s"):
         return None
+    found = _entities(emu, selector)
+    return None if found is None else len(found)
+
+
+def _entities(emu: Emulator, selector: str) -> list[dict] | None:
     try:
-        return len(emu.entities(selector))
+        return emu.entities(selector)
     except Exception:  # a selector the world library cannot read from here: say nothing
         return None
 
@@ -291,6 +297,14 @@ def _sample(messages: list[str]) -> str:
     return shown + (f" and {len(messages) - 5} more" if len(messages) > 5 else "")
 
 
-def _value(emu: Emulator, holder: str, objective: str) -> str:
-    value = emu.score(holder, objective)
+def _value(test: TestSource, holder: str, objective: str) -> str:
+    """A score as the message shows it; a selector holder (``@s`` is the dummy) must find one entity."""
+    if holder.startswith("@"):
+        selector = test.dummy if holder == "@s" and test.dummy else holder
+        found = (_entities(test.emu, selector) if selector != "@s" else None) or []
+        if len(found) != 1:
+            return "undefined"
+        value = found[0]["scores"].get(objective)
+    else:
+        value = test.emu.score(holder, objective)
     return "undefined" if value is None else str(value)

@@ -247,3 +247,16 @@ def test_entity_and_data_messages_follow_packtest(pack):
     assert results["demo:not_ent"].message == "Did not expect entity matching @e[type=marker], found 2"
     assert results["demo:data"].message == "Expected data at y, found {x:3}"
     assert results["demo:not_data"].message == "Did not expect data at x"
+
+
+def test_score_messages_resolve_selector_holders(pack):
+    root = pack({
+        "demo/test/dummy.mcfunction": "# @dummy\nscoreboard objectives add o dummy\nscoreboard players set @s o 7\n"
+                                      "assert score @s o matches 8\n",
+        "demo/test/marker.mcfunction": "scoreboard objectives add o dummy\nsummon marker ~ ~ ~ {Tags:[\"m\"]}\n"
+                                       "scoreboard players set @e[tag=m] o 3\n"
+                                       "assert score @e[tag=m,limit=1] o matches 4\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:dummy"].message == "Expected score @s o to match 8, found 7"
+    assert results["demo:marker"].message == "Expected score @e[tag=m,limit=1] o to match 4, found 3"
