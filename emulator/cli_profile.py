@@ -71,18 +71,8 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     saved = _read_baseline(baseline) if baseline else None
     sets, calls = [_parse_set(s) for s in set_], [_parse_call(c) for c in call]
     stop = _parse_until(until) if until else None
-    stacks = fmt in STACK_FORMATS or backend == "python"
     trace = formats.TraceWriter() if fmt == "trace" else None
-    emu = Emulator(backend="python" if stacks else "numba")
-    if stacks:
-        emu.backend = StackBackend(trace)
-    try:
-        emu.load(list(packs), mc_version)
-    except ValueError as error:
-        raise click.BadParameter(str(error), param_hint="--mc") from None
-    for diag in emu.load_diagnostics:
-        if diag.severity == "error":
-            click.echo(diag.format(), err=True)
+    emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace)
     roots = RootLog(emu.runtime)
     _apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
     for _ in range(ticks):
@@ -97,12 +87,31 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     else:
         click.echo(text, nl=False)
     if saved is not None:
-        grown = formats.compare(saved, report, threshold)
-        for line in grown:
-            click.echo(f"regression: {line}", err=True)
-        if grown:
-            sys.exit(1)
-        click.echo(f"no function grew more than {threshold:g}% over {baseline}", err=True)
+        _check_baseline(saved, report, threshold, baseline)
+
+
+def _loaded(packs, mc_version: str | None, stacks: bool, trace) -> Emulator:
+    """An emulator with ``packs`` loaded: the numba VM, or the reference backend recording stacks."""
+    emu = Emulator(backend="python" if stacks else "numba")
+    if stacks:
+        emu.backend = StackBackend(trace)
+    try:
+        emu.load(list(packs), mc_version)
+    except ValueError as error:
+        raise click.BadParameter(str(error), param_hint="--mc") from None
+    for diag in emu.load_diagnostics:
+        if diag.severity == "error":
+            click.echo(diag.format(), err=True)
+    return emu
+
+
+def _check_baseline(saved: dict, report: dict, threshold: float, path: str) -> None:
+    grown = formats.compare(saved, report, threshold)
+    for line in grown:
+        click.echo(f"regression: {line}", err=True)
+    if grown:
+        sys.exit(1)
+    click.echo(f"no function grew more than {threshold:g}% over {path}", err=True)
 
 
 def _read_baseline(path: str) -> dict:
