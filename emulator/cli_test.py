@@ -27,6 +27,9 @@ def test(paths, pattern, junit_file, backend) -> None:
             click.echo(diag.format(), err=True)
 
     summary = run_suite(files, backend, pattern, on_result=lambda r: click.echo(r.report()), on_load=loaded)
+    if not summary.results:
+        click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
+                   + ") under " + ", ".join(paths), err=True)
     if junit_file:
         with open(junit_file, "w", encoding="utf-8") as handle:
             handle.write(junit_xml(summary))

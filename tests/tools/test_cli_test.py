@@ -56,3 +56,9 @@ def test_the_pool_datapack_tests_pass(backend):
     assert result.exit_code == 0, result.output
     passed = int(result.output.splitlines()[-1].split()[0])
     assert passed >= 5 and "pool:math/isqrt" in result.output
+
+
+def test_no_tests_found_is_said(pack):
+    result = CliRunner().invoke(main, ["test", str(pack({"demo/function/f.mcfunction": "say hi\n"}))])
+    assert result.exit_code == 0 and "no test files (data/<ns>/test/**.mcfunction) under" in result.output
+    assert result.output.splitlines()[-1] == "0 passed, 0 failed"
