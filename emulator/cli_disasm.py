@@ -17,7 +17,7 @@ _OPERANDS = {
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "ob", vm.OP_STORE: "bho",
     vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
     vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "x", vm.OP_HOSTSTAGE: "xb", vm.OP_HOSTSTORE: "x",
-    vm.OP_MACRO: "m",
+    vm.OP_MACRO: "m", vm.OP_TAGSELF: "ib", vm.OP_IFSELF: "ii___bb",
 }
 _COMPARISON_NAMES = {v: k for k, v in vm.CMP_BY_SYMBOL.items()}
 

@@ -25,7 +25,7 @@ from emulator.program import HostOp, MacroCall, Program
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Condition, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs, ExSummon, Function,
-    FunctionCall, IfFunction, IfScore, IfScoreMatches, NameTarget, Return, Selector,
+    FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, Return, Selector, TagCommand,
     ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData, StoreScore, Subcommand,
 )
 from emulator.semantics import INT_MAX, INT_MIN
@@ -41,8 +41,9 @@ class Compiler:
     """
 
     def __init__(self, program: Program, scoreboard: Scoreboard, functions: dict[str, Function],
-                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict) -> None:
+                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, tag_mirror=None) -> None:
         self.program = program
+        self.tag_mirror = tag_mirror  # emulator.entity_arrays.TagMirror: entity tag bits for @s forms
         self.sb = scoreboard
         self.functions = functions
         self.resolve_tag = resolve_tag
@@ -100,6 +101,8 @@ class Compiler:
         elif isinstance(cmd, ScoreOperation) and _named(cmd.targets) and _named(cmd.sources):
             self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], self.holder(cmd.targets),
                       self.objective(cmd.objective), self.holder(cmd.sources), self.objective(cmd.source_objective))
+        elif isinstance(cmd, TagCommand) and (bit := self.self_tag(cmd)) is not None:
+            self.emit(vm.OP_TAGSELF, bit, int(cmd.action == "add"))
         else:
             self.host(vm.OP_HOST, cmd)
 
@@ -121,6 +124,8 @@ class Compiler:
             forked = forked or isinstance(st, _FORKS)
             if isinstance(st, (IfScoreMatches, IfScore)) and not _vm_condition(st):
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
+            elif isinstance(st, IfEntity) and (masks := self.self_tags_test(st)) is not None:
+                self.emit(vm.OP_IFSELF, masks[0], masks[1], 0, 0, 0, int(st.negated), int(last))
             elif isinstance(st, IfScoreMatches):
                 lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
                 hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
@@ -251,6 +256,26 @@ class Compiler:
         self.emit(vm.OP_FAIL, vm.ERR_UNKNOWN_FUNCTION, self.name(function), 0, int(abort))
         return None
 
+    # ------------------------------------------------------------------ entity tags of @s
+    def self_tag(self, cmd: TagCommand) -> int | None:
+        """The tag bit of ``tag @s add|remove T`` when the VM can run it, else None."""
+        if self.tag_mirror is None or cmd.action not in ("add", "remove") or not _bare_self(cmd.targets):
+            return None
+        return self.tag_mirror.bit(cmd.name)
+
+    def self_tags_test(self, st: IfEntity) -> tuple[int, int] | None:
+        """(required, forbidden) tag masks of ``if entity @s[tag=A,tag=!B ...]``, else None."""
+        target = st.targets
+        if self.tag_mirror is None or not isinstance(target, Selector) or target.variable != "s":
+            return None
+        masks = [0, 0]
+        for arg in target.args:
+            bit = self.tag_mirror.bit(arg.value) if arg.key == "tag" and arg.value else None
+            if bit is None:  # another argument, `tag=` (no tags), or the table is full
+                return None
+            masks[int(arg.negated)] |= 1 << bit
+        return masks[0], masks[1]
+
     # ------------------------------------------------------------------ names
     def holder(self, target) -> int:
         """A name's holder id, or HOLDER_SELF for a bare ``@s`` (the VM reads the executor's)."""
@@ -271,10 +296,13 @@ _FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, Ex
 _MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
 
 
+def _bare_self(target) -> bool:
+    return isinstance(target, Selector) and target.variable == "s" and not target.args
+
+
 def _named(holder) -> bool:
     """A holder the VM resolves itself: a name, or a bare ``@s`` (through the context's holder)."""
-    return isinstance(holder, NameTarget) or (isinstance(holder, Selector) and holder.variable == "s"
-                                              and not holder.args)
+    return isinstance(holder, NameTarget) or _bare_self(holder)
 
 
 def _vm_condition(st: IfScore | IfScoreMatches) -> bool:

@@ -101,7 +101,7 @@ class Host:
                 target = _entities(world_entities.store_target, self.state, st, ctx)
             except HostFailure:
                 return
-            world_entities.store(target, st, ok, value)
+            world_entities.store(self.state, target, st, ok, value)
         elif isinstance(st, ast.StoreScore):
             try:
                 names = self.holders(st.targets, ctx)

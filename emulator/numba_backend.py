@@ -13,6 +13,7 @@ import numpy as np
 from emulator import vm, world_entities
 from emulator.backend import RootResult, report_quota_cut
 from emulator.compiler import Compiler
+from emulator.entity_arrays import TagMirror
 from emulator.host import Host
 from emulator.program import Program
 from emulator.reference.failure import CommandFailure
@@ -54,7 +55,9 @@ class NumbaBackend:
         self.state = state
         self.sanitize = sanitize
         self.program = Program()
-        self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags)
+        self.tag_mirror = TagMirror()
+        self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
+                                 self.tag_mirror)
         self.compiler.compile_all()
         self.macros = MacroExpander(packs.version)
         self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
@@ -68,6 +71,7 @@ class NumbaBackend:
         self.active = np.zeros(0, dtype=np.int64)
         self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
         self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
+        self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
         self.context_ids: dict[tuple, int] = {}
         self.forks: dict[int, list[tuple[int, list[int]]]] = {}  # depth -> [(resume pc, contexts left)]
         self.collected: dict[int, tuple[int, int, list[int]]] = {}  # depth -> (final pc, end pc, contexts)
@@ -113,8 +117,12 @@ class NumbaBackend:
         while True:
             code, starts = self.program.arrays()
             self._fit_counters(code.shape[0], starts.shape[0])
+            mirror = self.tag_mirror
+            mirror.load(self.state.tags_version)
             status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts,
-                            self.totals, self.active, self.ovf, self.ctx_holder)
+                            self.totals, self.active, self.ovf, self.ctx_holder, self.ctx_entity, mirror.tags,
+                            mirror.dirty)
+            mirror.store()
             if status == vm.ST_DONE:
                 self.returned = True  # the root function came back (a cut may still be logged)
                 if r[vm.R_QUOTA] > 0:
@@ -198,8 +206,12 @@ class NumbaBackend:
             self.contexts.append(ctx)
             if index >= self.ctx_holder.shape[0]:
                 self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
+                self.ctx_entity = np.concatenate([self.ctx_entity, np.full(index + 1, -1, dtype=np.int64)])
             entity = world_entities.executor(self.state, ctx)
             self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
+            self.ctx_entity[index] = -1 if entity is None else entity.order
+            if entity is not None:
+                self.tag_mirror.track(entity)
         return index
 
     def _stage(self, node, ctx: Context) -> None:

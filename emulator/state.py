@@ -402,6 +402,7 @@ class WorldState:
     blocks: BlockMap = field(default_factory=BlockMap)
     executors: dict = field(default_factory=dict)  # Context.executor id (Entity.order) -> Entity
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
+    tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.entity_arrays)
 
     def emit(self, kind: str, text: str, loc: Loc | None = None) -> None:
         self.log.append(LogEntry(self.tick, kind, text, loc))

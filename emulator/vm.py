@@ -46,6 +46,8 @@ OP_REMOVE = 12  # a h, b o, c value
 OP_RESET = 13  # a h, b o
 OP_RESETALL = 14  # a h
 OP_GET = 15  # a h, b o
+OP_TAGSELF = 16  # a: tag bit, b: 1 add / 0 remove. `tag @s add|remove T` (fails when nothing changes)
+OP_IFSELF = 17  # a: required tag bits, b: forbidden tag bits, f negated, g final. `if entity @s[tag=..]`
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
 OP_CHKOBJ = 22  # a o, b forked: the `store ... score` stage: fails if o does not exist
@@ -117,7 +119,8 @@ def _overflowed(x):
 
 
 @njit(cache=True)
-def run(code, func_start, regs, frames, values, present, alive_obj, counts, totals, active, ovf, ctx_holder):
+def run(code, func_start, regs, frames, values, present, alive_obj, counts, totals, active, ovf, ctx_holder,
+        ctx_entity, ent_tags, ent_dirty):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -326,6 +329,67 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             else:
                 ok = 0
                 val = 0
+        elif op == OP_TAGSELF:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            e = ctx_entity[ctx]
+            has = 1
+            ok = 0
+            val = 0
+            if e >= 0:
+                m = np.int64(1) << code[pc, 1]
+                had = (ent_tags[e] & m) != 0
+                if code[pc, 2] and not had:
+                    ent_tags[e] |= m
+                    ok = 1
+                elif not code[pc, 2] and had:
+                    ent_tags[e] &= ~m
+                    ok = 1
+                if ok:
+                    val = 1
+                    ent_dirty[e] = 1
+            pc += 1
+        elif op == OP_IFSELF:
+            final = code[pc, 7]
+            if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            if alive == 0:
+                pc += 1
+                continue
+            if final:
+                if quota <= 0:
+                    status = ST_CUT
+                    break
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            e = ctx_entity[ctx]
+            passed = e >= 0 and (ent_tags[e] & code[pc, 1]) == code[pc, 1] and (ent_tags[e] & code[pc, 2]) == 0
+            if code[pc, 6]:
+                passed = not passed
+            if final:
+                has = 1
+                ok = 1 if passed else 0
+                val = 1 if passed else 0
+            elif not passed:
+                alive = 0
+            elif forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                alive = 0
+                pc = abort
+                status = ST_ERROR
+                break
+            pc += 1
         elif op == OP_CMD:
             if quota <= 0:
                 status = ST_CUT

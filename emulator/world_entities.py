@@ -264,11 +264,14 @@ def store_target(state: WorldState, sub: ast.StoreData, ctx: Context):
         return _accessor(state, sub.target, ctx)
 
 
-def store(target, sub: ast.StoreData, success: bool, value: int) -> None:
+def store(state: WorldState, target, sub: ast.StoreData, success: bool, value: int) -> None:
     """The store callback: ``result`` stores the value (0 on failure), ``success`` 1/0; every
     failure is silent (ExecuteCommand.storeData)."""
     stored = (value if success else 0) if sub.kind == "result" else int(success)
     data_commands.store_data(target, sub.path, sub.type, stored, sub.scale)
+    first = sub.path.nodes[0] if sub.path.nodes else None
+    if isinstance(target, data_commands.EntityAccessor) and not (isinstance(first, ast.PathKey) and first.name != "Tags"):
+        state.tags_version += 1
 
 
 # ---------------------------------------------------------------------- final commands
@@ -280,6 +283,8 @@ def is_world_command(cmd: ast.Command) -> bool:
 def command(state: WorldState, cmd: ast.Command, ctx: Context, warn) -> int:
     """Run one world command for ``ctx``; ``warn(node, message)`` reports a warning once."""
     source = world_source(state, ctx)
+    if isinstance(cmd, ast.TagCommand) or is_world_data(cmd):
+        state.tags_version += 1  # the tags of some entity may change
     with failures():
         if isinstance(cmd, ast.Summon):
             if cmd.entity_type not in ENTITY_TYPES:

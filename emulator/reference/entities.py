@@ -56,7 +56,7 @@ def store_data(sub: ast.StoreData, source: Source) -> Source:
         target = world.store_target(source.state, sub, source.context)
 
     def store(success: bool, value: int) -> None:
-        world.store(target, sub, success, value)
+        world.store(source.state, target, sub, success, value)
 
     return source.with_callback(chain(source.callback, store))
 

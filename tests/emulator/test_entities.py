@@ -290,3 +290,23 @@ def test_context_stages_from_entities(tmp_path):
     [a] = tagged(emu, "a")
     assert a["rotation"] == [float(yaw), float(pitch)]
     assert a["pos"] == list(rotation.local_to_world((3.25, 4.0, 5.75), yaw, pitch, 1.0, 0.0, 0.0))
+
+
+def test_self_tags_run_in_the_vm_and_agree(tmp_path):
+    # `tag @s add|remove` fails when nothing changes (TagCommand); `if entity @s[tag=..]` tests the
+    # executor only, alive or not; the server has no @s
+    body = (SETUP + "summon marker 0 0 0 {Tags:[\"m\",\"x\"]}\nsummon marker 1 0 0 {Tags:[\"m\"]}\n"
+            "execute as @e[tag=m] store success score @s v run tag @s add x\n"
+            "execute as @e[tag=m] if entity @s[tag=x,tag=!y] run tag @s add y\n"
+            "execute as @e[tag=m] unless entity @s[tag=y] run scoreboard players add #bad v 1\n"
+            "execute as @e[tag=m,limit=1] run tag @s remove x\n"
+            "execute store result score #xs v if entity @e[tag=x]\n"
+            "execute store success score #server v run tag @s add z\n"
+            "execute store success score #sif v if entity @s[tag=x]\n"
+            "execute as @e[tag=m] store result score @s v if entity @s[tag=!x]\n"
+            "data merge entity @e[tag=m,limit=1] {Tags:[\"m\",\"w\"]}\n"
+            "execute as @e[tag=m] if entity @s[tag=w] run tag @s add seen\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert [(e["tags"], e["scores"]) for e in tagged(emu, "m")] == [
+        (["m", "seen", "w"], {"v": 1}), (["m", "x", "y"], {"v": 0})]
+    assert [emu.score(h, "v") for h in ("#bad", "#xs", "#server", "#sif")] == [None, 1, 0, 0]
