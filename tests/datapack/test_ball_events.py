@@ -1,6 +1,6 @@
 """Cushion rebound, ball-ball collision and cue strike in mcfunction (pool:ball/...) against the
-float reference, with DESIGN.md section 6's thresholds. Run on the mini scoreboard runner with
-@s bound to a fake player (entities are not in the emulator yet)."""
+float reference, with DESIGN.md section 6's thresholds. Run on the emulator (numba, sanitizer on)
+with @s a simulated player."""
 import math
 
 import numpy as np
@@ -8,14 +8,15 @@ import pytest
 
 from emulator.physics import ball_ball, cushion
 from emulator.physics.cue import Shot, strike
-from scoreboard_runner import MiniScoreboard
+from pool_world import PoolWorld
 
 UM_PER_TICK = 1e6 / 20
-A = "$a_ball"
+A = "ball_a"     # a simulated player stands in for the ball entity (@s)
 
 
 def board_with(holder=A, **scores):
-    board = MiniScoreboard()
+    board = PoolWorld()
+    board.add_player(holder)
     for name, value in scores.items():
         board.set_score(holder, f"pool.{name}", value)
     return board

@@ -1,23 +1,24 @@
 """The per-ball models in mcfunction (pool:ball/...) against the float reference
 (emulator.physics), scored by the thresholds of DESIGN.md section 6.
 
-Ball functions work on @s; until the emulator models entities they run on the mini
-scoreboard runner with @s bound to a fake player."""
+Ball functions work on @s: they run on the emulator (numba, sanitizer on) with @s a simulated
+player."""
 import math
 
 import numpy as np
 import pytest
 
 from emulator.physics.ball import AT_REST, Ball, advance_through
-from scoreboard_runner import MiniScoreboard
+from pool_world import PoolWorld
 
 UM_PER_TICK = 1e6 / 20   # um/tick per m/s
-BALL = "$ball"
+BALL = "ball"    # a simulated player stands in for the ball entity (@s)
 STATE = ("x", "z", "vx", "vz", "wx", "wz", "wy")
 
 
 def board_with_ball(x, z, vx, vz, wx=0, wz=0, wy=0):
-    board = MiniScoreboard()
+    board = PoolWorld()
+    board.add_player(BALL)
     for name, value in zip(STATE, (x, z, vx, vz, wx, wz, wy)):
         board.set_score(BALL, f"pool.{name}", value)
     board.call("pool:ball/phase/start", as_=BALL)

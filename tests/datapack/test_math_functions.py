@@ -1,17 +1,17 @@
-"""The pool math library (datapack/data/pool/function/math) run on fake players."""
+"""The pool math library (datapack/data/pool/function/math) run on the emulator's both backends."""
 import math
 import random
 
 import pytest
 
-from scoreboard_runner import RUNNERS
+from pool_world import BACKENDS, PoolWorld
 
 INT_MAX = 2**31 - 1
 
 
-@pytest.fixture(scope="module", params=RUNNERS, ids=lambda r: r.name)
+@pytest.fixture(scope="module", params=BACKENDS)
 def board(request):
-    return request.param()
+    return PoolWorld(request.param)
 
 
 def _isqrt_cases():

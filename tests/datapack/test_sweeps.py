@@ -1,4 +1,4 @@
-"""Swept (continuous) collision tests of the event loop, on fake players: pool:physics/sweep/..."""
+"""Swept (continuous) collision tests of the event loop, on the emulator's both backends: pool:physics/sweep/..."""
 import math
 import random
 
@@ -6,16 +6,16 @@ import numpy as np
 import pytest
 
 from emulator.physics.constants import CORNER_OPENING, SIDE_OPENING_HALF
-from scoreboard_runner import RUNNERS
+from pool_world import BACKENDS, PoolWorld
 
 TWO_R = 57150
 CONTACT = TWO_R + 20   # $contact: the sweep reports contacts 20 um early (pool:physics/sweep/pair)
 NO_EVENT = 10001
 
 
-@pytest.fixture(scope="module", params=RUNNERS, ids=lambda r: r.name)
+@pytest.fixture(scope="module", params=BACKENDS)
 def board(request):
-    return request.param()
+    return PoolWorld(request.param)
 
 
 def set_chord(board, who, start, end):
