@@ -8,9 +8,10 @@ A failing program is printed in full by hypothesis (the ``note``), ready to past
 from __future__ import annotations
 
 import os
+import re
 
 import pytest
-from hypothesis import HealthCheck, given, note, settings
+from hypothesis import HealthCheck, assume, given, note, settings
 from hypothesis import strategies as st
 
 from programs import programs, run_root, write_pack
@@ -27,7 +28,17 @@ settings.register_profile(
 PROGRAMS = programs()
 
 
+# Programs with a construct the VM gets wrong (see VM_GAPS in test_java_edge_cases.py) are
+# skipped until it is fixed; everything else must agree.
+KNOWN_VM_GAPS = {
+    "return_in_each_context": re.compile(r"as @e[^\n]* run return"),
+    "store_return_run_function_tag": re.compile(r"store [^\n]* run return run function #"),
+    "store_holders_resolved_at_the_stage": re.compile(r"store \w+ score @e"),
+}
+
+
 def _compare(tmp_path_factory, program, sanitize: bool, limit: int | None = None) -> None:
+    assume(not any(gap.search(program.text()) for gap in KNOWN_VM_GAPS.values()))
     note(program.text())
     pack = write_pack(tmp_path_factory.mktemp("pack"), program.functions, program.tags)
     reference = run_root("python", pack, program.entry, sanitize=sanitize, limit=limit)
@@ -93,7 +104,6 @@ def test_runtime_diagnostics_agree(tmp_path, line):
 
 # Entities: markers selected, tagged, killed and used as score holders; several contexts per
 # stage exercise the per-context costs, return-run's first context and if function per context
-@pytest.mark.xfail(reason="VM_GAPS return_in_each_context (test_java_edge_cases.py)", strict=False)
 @settings(settings.get_profile("differential"), max_examples=max(EXAMPLES // 3, 20))
 @given(program=programs(modifiers=True, entities=True))
 def test_random_programs_with_entities_agree(tmp_path_factory, program):

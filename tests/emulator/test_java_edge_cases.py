@@ -21,7 +21,11 @@ BACKENDS = ["python", "numba"]
 
 # Cases the numba VM gets wrong, by case id, with why. Strict xfails: an entry must go when the VM
 # is fixed.
-VM_GAPS = {"return_in_each_context": "VM: stops a custom final command's contexts at the first return"}
+VM_GAPS = {
+    "return_in_each_context": "VM: stops a custom final command's contexts at the first return",
+    "store_return_run_function_tag": "VM: `return run function #tag` does not report to the store callback",
+    "store_holders_resolved_at_the_stage": "VM: resolves store holders with the final context",
+}
 
 
 def on_both_backends(cases):
@@ -99,6 +103,14 @@ CASES = [
     ("return_in_each_context", "summon marker\nsummon marker\nsummon marker\n"
      "execute store result score #r o run function t:return_as_markers\n"
      "execute store result score #n o if entity @e[type=marker,scores={o=7}]", {("#n", "o"): 3, ("#r", "o"): 7}, ...),
+    # ExecuteCommand.storeValue resolves the holders in the store stage, with that stage's source:
+    # the nearest marker from the origin, not from where `positioned as` moved the chain later
+    ("store_holders_resolved_at_the_stage", 'summon marker 0 0 0 {Tags:["m","near"]}\n'
+     'summon marker 10 0 0 {Tags:["m","far"]}\n'
+     "execute store result score @e[tag=m,sort=nearest,limit=1] o positioned as @e[tag=far] run "
+     "scoreboard players set #x o 7\n"
+     "execute store result score #near o if entity @e[tag=near,scores={o=7}]\n"
+     "execute store result score #far o if entity @e[tag=far,scores={o=7}]", {("#near", "o"): 1, ("#far", "o"): 0}, ...),
     # IntRange bounds are inclusive
     ("range_inclusive", "scoreboard players set #a o 5\n"
      "execute if score #a o matches 5..5 run scoreboard players add #hit o 1\n"
@@ -140,6 +152,13 @@ CASES = [
     ("if_function_isolated", "execute if function t:five run scoreboard players add #if o 1\nreturn 9", {}, 9),
     # return run function: the callee's return becomes the caller's (queueFunctionsAsReturn)
     ("return_run_function", "return run function t:five", {}, 5),
+    # ... and the function's return also reaches the caller's store (queueFunctionsAsReturn
+    # chains the source's callback with the frame's return), for a tag too
+    ("store_return_run_function", "execute store result score #r o run return run function t:five",
+     {("#r", "o"): 5}, 5),
+    # (the first member returns: the discard drops the later members)
+    ("store_return_run_function_tag", "execute store result score #r o run return run function #t:five_plain",
+     {("#r", "o"): 5, ("#plain", "o"): None}, 5),
     # ... and a callee that never returns makes the caller fail (FallthroughTask)
     ("return_run_function_no_return", "return run function t:plain\nscoreboard players set #after o 1",
      {("#after", "o"): None, ("#plain", "o"): 1}, 0),
@@ -171,11 +190,12 @@ HELPERS = {
     "t:fails": "return fail",
     "t:return_as_markers": "execute as @e[type=marker] store result score @s o run return 7",
 }
+HELPER_TAGS = {"t:five_plain": ["t:five", "t:plain"]}
 
 
 @pytest.mark.parametrize("backend, case_id, body, expected, result", list(on_both_backends(CASES)))
 def test_edge_case(tmp_path, backend, case_id, body, expected, result):
-    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS}, HELPER_TAGS)
     outcome = run_root(backend, pack, "t:main")
     scores = outcome.scores.get("o", {})
     for (holder, objective), value in expected.items():
