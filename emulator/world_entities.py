@@ -13,8 +13,12 @@ keeps its entity object).
   entity on summon``) makes from one context.
 - ``condition_count(state, cond, ctx)``: ``if entity|data|block|blocks``: what the test counts.
 - ``command(state, cmd, ctx, warn)``: ``summon kill tag tp data setblock fill``; the int result.
-- ``store_target(state, sub, ctx)`` then ``store(target, sub, value)``: ``execute store ...
-  entity|block|storage`` (the target is resolved when the stage runs, as the game's modifier does).
+- ``store_target(state, sub, ctx)`` then ``store(state, target, sub, success, value)``: ``execute
+  store ... entity|block`` (the target is resolved when the stage runs, as the game's modifier does).
+- ``new_state(shuffle)``, ``parse_target(text)``, ``describe(state, entity)``: the API's side.
+
+Commands that may change entity tags bump ``state.tags_version`` (the numba VM mirrors the tags of
+executing entities as bits: :mod:`emulator.entity_arrays`).
 
 Failures raise :class:`WorldCommandError` (``report``: also worth a diagnostic, e.g. an
 unsupported selector argument); backends turn it into their failed command.
