@@ -180,7 +180,8 @@ class Context:
     """One command source: who runs it and where.
 
     ``executor`` is ``SERVER`` (-1) or the executing entity's ``Entity.order`` (looked up in
-    ``WorldState.executors``). ``pos`` is (x, y, z) doubles, ``rot`` (yaw, pitch) floats, ``anchor`` ``"feet"``/``"eyes"``.
+    ``WorldState.executors``). ``pos`` is (x, y, z) doubles, ``rot`` (yaw, pitch) floats,
+    ``anchor`` ``"feet"``/``"eyes"``.
     The server's default context is at world spawn (0, 0, 0 here) in the overworld.
     """
 
