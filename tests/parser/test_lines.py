@@ -101,3 +101,19 @@ def test_byte_order_mark_is_reported():
     fn, diags = parse("\ufeffsay a\nsay b\n")
     assert [(d.line, d.col) for d in diags] == [(1, 1)] and "byte order mark" in diags[0].message
     assert [c.message for c in fn.commands] == ["a", "b"]
+
+
+def test_parsing_leaves_the_garbage_collector_as_it_was():
+    # parse_function pauses the cyclic collector while it builds the AST (see parse.py)
+    import gc
+
+    from mcfunction_parser.parse import parse_function
+    assert gc.isenabled()
+    parse_function("say a\nbad command\n", "f", "t:f")
+    assert gc.isenabled()
+    gc.disable()
+    try:
+        parse_function("say a\n", "f", "t:f")
+        assert not gc.isenabled()
+    finally:
+        gc.enable()
