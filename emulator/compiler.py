@@ -24,7 +24,7 @@ from emulator import vm
 from emulator.program import HostOp, MacroCall, Program
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Condition, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs, ExSummon, Function,
+    Command, Condition, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs, Function,
     FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, Return, Selector, TagCommand,
     ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData, StoreScore, Subcommand,
 )
@@ -291,7 +291,7 @@ class Compiler:
 
 
 # Stages registered with ``fork`` in ExecuteCommand (the others are plain redirects)
-_FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn, ExSummon)
+_FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)  # `summon` redirects
 # Stages that can make several contexts: their chains collect the contexts before the final command
 _MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
 

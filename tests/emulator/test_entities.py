@@ -310,3 +310,12 @@ def test_self_tags_run_in_the_vm_and_agree(tmp_path):
     assert [(e["tags"], e["scores"]) for e in tagged(emu, "m")] == [
         (["m", "seen", "w"], {"v": 1}), (["m", "x", "y"], {"v": 0})]
     assert [emu.score(h, "v") for h in ("#bad", "#xs", "#server", "#sif")] == [None, 1, 0, 0]
+
+
+def test_execute_summon_is_a_redirect_not_a_fork(tmp_path):
+    # ExecuteCommand registers `summon` with redirect (not fork): a later stage's error fails the
+    # whole command and the stages after it are not charged, as without summon
+    body = (SETUP + "execute summon marker store result score @s nope positioned ~ ~ ~ rotated 0 0 run say x\n"
+            "execute summon marker store result score @s v positioned ~ ~ ~ run say y\n")
+    emu = run_both(tmp_path, {"t:main": body})
+    assert [e.text for e in emu.log] == ["[Marker] y"] and len(emu.entities()) == 2
