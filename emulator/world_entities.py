@@ -33,10 +33,10 @@ import numpy as np
 
 from emulator.state import SERVER, Context, WorldState
 from emulator.world import commands as world_commands
-from emulator.world import data_commands
+from emulator.world import data_commands, stores
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.data_commands import World
-from emulator.world.entities import ENTITY_TYPES, Entity, EntityStore
+from emulator.world.entities import ENTITY_TYPES, POS_LIMIT_XZ, POS_LIMIT_Y, Entity, EntityStore
 from emulator.world.errors import CommandFailure as WorldFailure
 from emulator.world.selectors import SelectorQuery, UnsupportedSelector
 from emulator.world.source import Source
@@ -272,10 +272,34 @@ def store(state: WorldState, target, sub: ast.StoreData, success: bool, value: i
     """The store callback: ``result`` stores the value (0 on failure), ``success`` 1/0; every
     failure is silent (ExecuteCommand.storeData)."""
     stored = (value if success else 0) if sub.kind == "result" else int(success)
+    axis = _position_axis(target, sub)
+    if axis is not None:
+        _store_position(target.entity, axis, float(stores.stored_tag("double", stored, sub.scale)))
+        return
     data_commands.store_data(target, sub.path, sub.type, stored, sub.scale)
     first = sub.path.nodes[0] if sub.path.nodes else None
     if isinstance(target, data_commands.EntityAccessor) and not (isinstance(first, ast.PathKey) and first.name != "Tags"):
         state.tags_version += 1
+
+
+def _position_axis(target, sub: ast.StoreData) -> int | None:
+    """The axis of ``store ... entity E Pos[0|1|2] double S`` on a non-player, else None."""
+    nodes = sub.path.nodes
+    if (sub.type == "double" and isinstance(target, data_commands.EntityAccessor) and not target.entity.is_player
+            and len(nodes) == 2 and nodes[0] == ast.PathKey("Pos") and isinstance(nodes[1], ast.PathIndex)
+            and nodes[1].index in (0, 1, 2)):
+        return nodes[1].index
+    return None
+
+
+def _store_position(entity: Entity, axis: int, value: float) -> None:
+    """What the entity accessor's save, ``set Pos[axis]``, load does to the entity: the position
+    component, clamped as ``Entity.load`` clamps it (every other saved field reads back unchanged;
+    tests/emulator/test_entities.py checks this shortcut against the full round trip)."""
+    limit = POS_LIMIT_Y if axis == 1 else POS_LIMIT_XZ
+    pos = list(entity.pos)
+    pos[axis] = max(-limit, min(value, limit))
+    entity.pos = tuple(pos)
 
 
 # ---------------------------------------------------------------------- final commands

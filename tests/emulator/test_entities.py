@@ -3,6 +3,7 @@ backends, and give the numbers the game's own formulas give (computed here with 
 library's float math, :mod:`emulator.world.rotation` / :mod:`emulator.world.stores`)."""
 from __future__ import annotations
 
+import dataclasses
 import random
 from pathlib import Path
 
@@ -319,3 +320,42 @@ def test_execute_summon_is_a_redirect_not_a_fork(tmp_path):
             "execute summon marker store result score @s v positioned ~ ~ ~ run say y\n")
     emu = run_both(tmp_path, {"t:main": body})
     assert [e.text for e in emu.log] == ["[Marker] y"] and len(emu.entities()) == 2
+
+
+# ---------------------------------------------------------------------- the Pos store shortcut
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+from emulator import world_entities  # noqa: E402
+from emulator.world import data_commands, nbt_ops  # noqa: E402
+from emulator.world.entities import EntityStore, entity_nbt  # noqa: E402
+from mcfunction_parser.diagnostics import Loc  # noqa: E402
+from mcfunction_parser.parse import parse_command  # noqa: E402
+from mcfunction_parser.reader import Reader  # noqa: E402
+from mcfunction_parser.snbt import compound  # noqa: E402
+
+SUMMONS = [("minecraft:marker", '{data:{k:1b},Tags:["a"]}'), ("minecraft:item_display",
+           '{teleport_duration:1,item:{id:"minecraft:stone",count:1},transformation:{left_rotation:[0f,0f,0f,1f],'
+           'right_rotation:[0f,0f,0f,1f],translation:[0f,0.5f,0f],scale:[0.057f,0.057f,0.057f]},Rotation:[370f,-20f]}'),
+           ("minecraft:armor_stand", '{Motion:[0.5d,12.0d,0.0d],NoGravity:1b,CustomName:\'"x"\'}'),
+           ("minecraft:pig", "{}"), ("minecraft:text_display", '{text:\'"hi"\',brightness:{sky:3,block:4}}')]
+
+
+@settings(max_examples=150, deadline=None)
+@given(kind=st.sampled_from(SUMMONS), axis=st.integers(0, 2), value=st.integers(-2**31, 2**31 - 1),
+       scale=st.sampled_from([0.001, 1.0, -0.5, 1e3, 1e300, float("inf")]))
+def test_position_store_shortcut_equals_the_full_round_trip(kind, axis, value, scale):
+    # ExecuteCommand.storeData through EntityDataAccessor: save, set Pos[i], load
+    type_id, snbt = kind
+    stores_ = [EntityStore(seed=1), EntityStore(seed=1)]
+    nbt = compound(Reader(snbt, Loc("t", 1, 1), (1, 21, 0)))
+    slow, fast = (s.summon(type_id, (1.5, 64.0, -2.25), nbt) for s in stores_)
+    cmd, _ = parse_command(f"execute store result entity @s Pos[{axis}] double 1 run say x", Loc("t", 1, 1))
+    sub = dataclasses.replace(cmd.subcommands[0], scale=scale)
+    data_commands.store_data(data_commands.EntityAccessor(slow), sub.path, "double", value, sub.scale)
+    state = world_entities.new_state()
+    world_entities.store(state, data_commands.EntityAccessor(fast), sub, True, value)
+    assert fast.pos == slow.pos
+    assert nbt_ops.tags_equal(entity_nbt(fast), entity_nbt(slow))
+    assert (fast.yaw, fast.pitch, fast.motion, fast.tags) == (slow.yaw, slow.pitch, slow.motion, slow.tags)
+
