@@ -144,8 +144,11 @@ def _round_half_away(numerator, denominator):
 def test_mul_1e5_rounds_exactly(board):
     rng = random.Random(11)
     cases = [(21_000_000, 100_000), (-21_000_000, 99_999), (1, 50_000), (-1, 50_000), (0, 7)]
+    # both sides of the direct-product path (|a| <= 21474)
+    cases += [(21474, 100_000), (-21474, -100_000), (21475, 100_000), (-21475, 99_999), (3, -50_000)]
     cases += [(rng.randint(-21_000_000, 21_000_000), rng.randint(-100_000, 100_000))
               for _ in range(300)]
+    cases += [(rng.randint(-21474, 21474), rng.randint(-100_000, 100_000)) for _ in range(200)]
     for a, b in cases:
         board.set_score("$a", "pool.math", a)
         board.set_score("$b", "pool.math", b)

@@ -104,6 +104,13 @@ scoreboard players set $side_open pool.const 65000
 scoreboard players set $mu_s_g pool.const 4905
 # rolling resistance mu_r g = 0.01 * 9.81 m/s^2 = 24525 (0.01 um/tick^2)
 scoreboard players set $mu_r_g pool.const 24525
+# a whole tick of rolling (pool:ball/roll/whole_tick): the distance lost, mu_r g / 2 rounded as
+# pool:math/div_round rounds it, and the speed 2 mu_r g from which the ball cannot stop within it
+scoreboard players operation $mu_r_g_half pool.const = $mu_r_g pool.const
+scoreboard players add $mu_r_g_half pool.const 1
+scoreboard players operation $mu_r_g_half pool.const /= #2 pool.const
+scoreboard players operation $roll_tick_min pool.const = $mu_r_g pool.const
+scoreboard players operation $roll_tick_min pool.const *= #2 pool.const
 # side-spin decay (5/2) mu_sp g = 2.5 * 0.0127 * 9.81 m/s^2 = 778.67 um/tick^2, rounded to 779
 scoreboard players set $spin_decay pool.const 779
 # cushion restitution e = 0.85 and friction mu_c = 0.2, both x 10000

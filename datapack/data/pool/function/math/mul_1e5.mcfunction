@@ -1,7 +1,9 @@
 # pool:math/mul_1e5 — $out = round($a * $b / 100000), halves away from zero, without overflow.
 # Reads: $a $b pool.math with |$a| <= 21000000 and |$b| <= 100000 (a length times a direction
 # component x 100000). Writes: $out pool.math; temporaries #a #b #q #r #neg pool.math.
-# a = h*1000 + l: a*b/1e5 = (h b)/100 + ((h b mod 100)*1000 + l b)/1e5, all below 2^31.
+# a = h*1000 + l: a*b/1e5 = (h b)/100 + ((h b mod 100)*1000 + l b)/1e5, all below 2^31; when
+# |a| <= 21474 the product itself fits (mul_1e5/small), as for most speeds.
+execute if score $a pool.math matches -21474..21474 run return run function pool:math/mul_1e5/small
 scoreboard players operation #a pool.math = $a pool.math
 scoreboard players operation #b pool.math = $b pool.math
 scoreboard players set #neg pool.math 0

@@ -3,6 +3,7 @@
 # Reads: #f pool.tmp; @s pool.spd pool.s pool.dx pool.dz pool.x0 pool.z0.
 # Writes: @s pool.spd pool.s pool.x pool.z pool.vx pool.vz pool.wx pool.wz (pool.state on stop);
 # temporaries #fs #g #r pool.tmp and the math library's.
+execute if score #f pool.tmp matches 10000 if score @s pool.spd >= $roll_tick_min pool.const run return run function pool:ball/roll/whole_tick
 # time to stop: spd * 10000 / 24525 = (spd / 24525) * 10000 + (spd mod 24525) * 10000 / 24525
 scoreboard players operation #fs pool.tmp = @s pool.spd
 scoreboard players operation #fs pool.tmp /= $mu_r_g pool.const
