@@ -9,10 +9,18 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
+from emulator import world_entities
 from emulator.api import Emulator
-from emulator.world import rotation
+from emulator.world import data_commands, nbt_ops, rotation
+from emulator.world.entities import EntityStore, entity_nbt
 from emulator.world.stores import stored_tag
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.parse import parse_command
+from mcfunction_parser.reader import Reader
+from mcfunction_parser.snbt import compound
 from programs import write_pack
 
 F32 = np.float32
@@ -323,17 +331,6 @@ def test_execute_summon_is_a_redirect_not_a_fork(tmp_path):
 
 
 # ---------------------------------------------------------------------- the Pos store shortcut
-from hypothesis import given, settings  # noqa: E402
-from hypothesis import strategies as st  # noqa: E402
-
-from emulator import world_entities  # noqa: E402
-from emulator.world import data_commands, nbt_ops  # noqa: E402
-from emulator.world.entities import EntityStore, entity_nbt  # noqa: E402
-from mcfunction_parser.diagnostics import Loc  # noqa: E402
-from mcfunction_parser.parse import parse_command  # noqa: E402
-from mcfunction_parser.reader import Reader  # noqa: E402
-from mcfunction_parser.snbt import compound  # noqa: E402
-
 SUMMONS = [("minecraft:marker", '{data:{k:1b},Tags:["a"]}'), ("minecraft:item_display",
            '{teleport_duration:1,item:{id:"minecraft:stone",count:1},transformation:{left_rotation:[0f,0f,0f,1f],'
            'right_rotation:[0f,0f,0f,1f],translation:[0f,0.5f,0f],scale:[0.057f,0.057f,0.057f]},Rotation:[370f,-20f]}'),
