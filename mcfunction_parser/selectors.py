@@ -53,8 +53,10 @@ def selector(r: Reader) -> Selector:
         if cached is not None:
             r.pos = plain.end()
             loc_at = r.loc_at
-            return Selector(variable, tuple([SelectorArg(key, value, negated, loc_at(start + offset))
-                                             for key, value, negated, offset in cached]), loc)
+            args = []
+            for key, value, negated, offset in cached:  # a loop: a comprehension costs a call in 3.11
+                args.append(SelectorArg(key, value, negated, loc_at(start + offset)))
+            return Selector(variable, tuple(args), loc)
     r.pos = start + 2
     args, offsets = _options(r, variable)
     if plain is not None and r.pos == plain.end() and not any(a.key == "nbt" for a in args):

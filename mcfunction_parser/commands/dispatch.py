@@ -27,7 +27,7 @@ def command(r: Reader) -> Command:
     text = r.text
     space = text.find(" ", start)
     name = text[start:space] if space >= 0 else text[start:]
-    entry = _table(r.version).get(name)
+    entry = (_TABLES.get(r.version) or _table(r.version)).get(name)
     if entry is None:
         if not name:
             r.fail(f"expected a command, got {r.found()}")
