@@ -12,12 +12,10 @@ REGISTRY: dict = {}
 _TABLES: dict = {}  # version -> its table, built on first use (after every family has registered)
 
 
-def _table(version: tuple[int, int, int]) -> dict:
+def _build_table(version: tuple[int, int, int]) -> dict:
     """The commands of ``version``: name -> (parser, or None for a generic command; warning or None)."""
-    table = _TABLES.get(version)
-    if table is None:
-        table = _TABLES[version] = {name: (REGISTRY.get(name), permission_warning(name))
-                                    for name in COMMANDS if command_problem(name, version) is None}
+    table = _TABLES[version] = {name: (REGISTRY.get(name), permission_warning(name))
+                                for name in COMMANDS if command_problem(name, version) is None}
     return table
 
 
@@ -27,7 +25,7 @@ def command(r: Reader) -> Command:
     text = r.text
     space = text.find(" ", start)
     name = text[start:space] if space >= 0 else text[start:]
-    entry = (_TABLES.get(r.version) or _table(r.version)).get(name)
+    entry = (_TABLES.get(r.version) or _build_table(r.version)).get(name)
     if entry is None:
         if not name:
             r.fail(f"expected a command, got {r.found()}")
