@@ -76,6 +76,7 @@ scoreboard objectives add pool.power trigger
 # Constants named by value
 scoreboard players set #-1 pool.const -1
 scoreboard players set #2 pool.const 2
+scoreboard players set #4 pool.const 4
 scoreboard players set #5 pool.const 5
 scoreboard players set #7 pool.const 7
 scoreboard players set #10 pool.const 10

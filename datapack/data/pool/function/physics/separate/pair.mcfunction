@@ -9,6 +9,16 @@ execute unless score $x pool.math matches -57159..57159 run return 0
 scoreboard players operation $z pool.math = @s pool.z
 scoreboard players operation $z pool.math -= #a.z pool.tmp
 execute unless score $z pool.math matches -57159..57159 run return 0
+# cheap reject in quarter-um units: (dx/4)^2 + (dz/4)^2 >= 14292^2 (= 204261264) means more than
+# 2R + 10 = 4 x 14290 apart even with both quotients rounded the wrong way
+scoreboard players operation #g pool.tmp = $x pool.math
+scoreboard players operation #g pool.tmp /= #4 pool.const
+scoreboard players operation #g pool.tmp *= #g pool.tmp
+scoreboard players operation #sz pool.tmp = $z pool.math
+scoreboard players operation #sz pool.tmp /= #4 pool.const
+scoreboard players operation #sz pool.tmp *= #sz pool.tmp
+scoreboard players operation #g pool.tmp += #sz pool.tmp
+execute if score #g pool.tmp matches 204261264.. run return 0
 function pool:math/normalize
 # #g = half the shortfall, rounded up: (2R + 10 - len + 1) / 2
 scoreboard players operation #g pool.tmp = $2R pool.const
