@@ -5,6 +5,7 @@ drive the same functions.
 """
 from __future__ import annotations
 
+import json
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -102,7 +103,22 @@ def strike(emu: Emulator, shot: Shot) -> list[str]:
     result = emu.call("pool:api/shot", arguments=shot.macro_arguments())
     if result == 1:
         return []
-    return [entry.text for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
+    return [_plain(entry.text) for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
+
+
+def _plain(component: str) -> str:
+    """The text of a chat component as logged (JSON or a plain string): its "text" and extras."""
+    try:
+        value = json.loads(component)
+    except ValueError:
+        return component
+    if isinstance(value, str):
+        return value
+    if isinstance(value, list):
+        return "".join(_plain(json.dumps(v)) for v in value)
+    if isinstance(value, dict):
+        return str(value.get("text", "")) + "".join(_plain(json.dumps(v)) for v in value.get("extra", []))
+    return component
 
 
 def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
