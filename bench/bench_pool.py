@@ -13,11 +13,10 @@ Usage: python bench/bench_pool.py [--shots N] [--seed S]   (the issue's sweep: -
 from __future__ import annotations
 
 import argparse
-import math
 import random
 import time
 
-from emulator.shot import BREAK, Shot, new_table, play, strike
+from emulator.shot import BREAK, Shot, new_table, play, random_shot, strike
 
 BUDGET_MOVING, BUDGET_IDLE = 5000, 50
 
@@ -38,14 +37,6 @@ def shot_costs(shot: Shot) -> tuple[list[int], list[int]]:
         if emu.score("#events", "pool.tmp") == 0:
             quiet.append(costs[-1])
     return costs, quiet
-
-
-def random_shot(rng: random.Random, k: int) -> Shot:
-    if k % 10 == 0:
-        return BREAK
-    r, phi = 0.5 * math.sqrt(rng.random()), rng.uniform(0, 2 * math.pi)   # inside the miscue limit
-    return Shot(angle=rng.uniform(-180, 180), speed=rng.uniform(0.05, 6.5), tip_x=round(r * math.cos(phi), 3),
-                tip_y=round(r * math.sin(phi), 3), elevation=rng.choice([0.0, rng.uniform(0, 30)]))
 
 
 def overflow_sweep(shots: int, seed: int) -> dict:

@@ -6,6 +6,8 @@ drive the same functions.
 from __future__ import annotations
 
 import json
+import math
+import random
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -36,6 +38,16 @@ class Shot:
 
 # The break: full power (the trigger's 100 %) from the head spot straight at the apex ball.
 BREAK = Shot(angle=0.0, speed=6.5)
+
+
+def random_shot(rng: random.Random, k: int) -> Shot:
+    """The k-th shot of the overflow sweep: every tenth the break, else any aim, speed up to full
+    power, a tip offset inside the miscue limit, a level or raised cue."""
+    if k % 10 == 0:
+        return BREAK
+    r, phi = 0.5 * math.sqrt(rng.random()), rng.uniform(0, 2 * math.pi)
+    return Shot(angle=rng.uniform(-180, 180), speed=rng.uniform(0.05, 6.5), tip_x=round(r * math.cos(phi), 3),
+                tip_y=round(r * math.sin(phi), 3), elevation=rng.choice([0.0, rng.uniform(0, 30)]))
 
 
 @dataclass

@@ -4,6 +4,7 @@ resolve) against the float reference's event-driven simulation, plus the shot AP
 Runs on the emulator (numba, sanitizer on) with real ball entities; costs are the emulator's
 counts (each command per context, each execute stage with a modifier, each function call)."""
 import math
+import random
 
 import numpy as np
 import pytest
@@ -11,6 +12,7 @@ import pytest
 from emulator.physics.ball import Ball
 from emulator.physics.cue import Shot, strike
 from emulator.physics.simulator import simulate_ticks
+from emulator.shot import random_shot
 from pool_world import PoolWorld
 
 TWO_R = 57150
@@ -256,3 +258,16 @@ def test_no_tunnelling_at_ten_metres_per_second():
     board.tick()
     assert board.ball_score(1, "pool.vx") > 400000          # hit within the first tick
     assert board.ball_score(1, "pool.x") - board.ball_score(0, "pool.x") >= TWO_R
+
+
+def test_random_shots_never_wrap_and_keep_the_balls_apart():
+    # a fixed-seed subset of bench/bench_pool.py's overflow sweep (the sanitizer is on in PoolWorld)
+    rng = random.Random(7)
+    for k in range(1, 5):
+        board = racked_table()
+        shot = random_shot(rng, k)
+        assert board.call("pool:api/shot", arguments=shot.macro_arguments()) == 1, shot
+        costs = play(board)
+        assert board.score("$resting", "pool.game") == 1, shot
+        assert_on_table_and_apart(board, 16)
+        assert max(costs) <= 65536, shot          # far from the game's command quota
