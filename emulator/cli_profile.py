@@ -16,7 +16,7 @@ import click
 
 from emulator import profile_formats as formats
 from emulator.api import Emulator
-from emulator.cli_run import _apply_setup, _OrderedCommand, _parse_call, _parse_set, _parse_until
+from emulator.cli_options import OrderedCommand, apply_setup, parse_call, parse_set, parse_until
 from emulator.profile_stacks import StackBackend
 
 STACK_FORMATS = ("collapsed", "trace")
@@ -49,7 +49,7 @@ class RootLog:
         return sorted(rows, key=lambda r: -r["max_cost"])
 
 
-@click.command("profile", cls=_OrderedCommand)
+@click.command("profile", cls=OrderedCommand)
 @click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False))
 @click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run.")
 @click.option("--call", multiple=True, metavar="FN", help="Call a function (as the server) before ticking.")
@@ -69,12 +69,12 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     if fmt in STACK_FORMATS and backend == "numba":
         raise click.UsageError(f"--format {fmt} needs call stacks, which only --backend python records")
     saved = _read_baseline(baseline) if baseline else None
-    sets, calls = [_parse_set(s) for s in set_], [_parse_call(c) for c in call]
-    stop = _parse_until(until) if until else None
+    sets, calls = [parse_set(s) for s in set_], [parse_call(c) for c in call]
+    stop = parse_until(until) if until else None
     trace = formats.TraceWriter() if fmt == "trace" else None
     emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace)
     roots = RootLog(emu.runtime)
-    _apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+    apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
     for _ in range(ticks):
         emu.tick()
         if stop and stop.met(emu):
