@@ -52,11 +52,16 @@ class Emulator:
 
         if isinstance(paths, (str, Path)):
             paths = [paths]
-        self.packs = load_packs([Path(p) for p in paths], mc_version)
+        return self.load_parsed(load_packs([Path(p) for p in paths], mc_version))
+
+    def load_parsed(self, packs):
+        """Start an empty world on packs already loaded by ``mcfunction_parser.load_packs`` (a test
+        runner parses a pack once and starts a fresh world per test); returns ``packs``."""
+        self.packs = packs
         self.state = world_entities.new_state(self.shuffle)
-        self.backend.load(self.packs, self.state, self.sanitize)
-        self.runtime = Runtime(self.backend, self.packs, self.state)
-        return self.packs
+        self.backend.load(packs, self.state, self.sanitize)
+        self.runtime = Runtime(self.backend, packs, self.state)
+        return packs
 
     @property
     def load_diagnostics(self) -> list[Diagnostic]:

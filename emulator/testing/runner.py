@@ -10,12 +10,10 @@ from collections.abc import Callable
 from pathlib import Path
 
 from emulator.api import Emulator
-from emulator.runtime import Runtime
 from emulator.testing.discovery import TestFile
 from emulator.testing.results import FAILED, PASSED, SKIPPED, Summary, TestResult
 from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run, Succeed, TestCase, plain_text,
                                        read_test)
-from emulator.world_entities import new_state
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.nbt import Compound, to_snbt
 from mcfunction_parser.pack import load_packs
@@ -98,13 +96,9 @@ def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None
 
 
 def fresh_world(packs, backend: str) -> Emulator:
-    """An emulator on already parsed ``packs`` with an empty world (what Emulator.load does after
-    parsing), then started with :func:`run_load`."""
+    """An emulator on already parsed ``packs`` with an empty world, started with :func:`run_load`."""
     emu = Emulator(backend=backend)
-    emu.packs = packs
-    emu.state = new_state(emu.shuffle)
-    emu.backend.load(packs, emu.state, False)
-    emu.runtime = Runtime(emu.backend, packs, emu.state)
+    emu.load_parsed(packs)
     return run_load(emu)
 
 
