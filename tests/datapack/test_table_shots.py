@@ -271,3 +271,14 @@ def test_random_shots_never_wrap_and_keep_the_balls_apart():
         assert board.score("$resting", "pool.game") == 1, shot
         assert_on_table_and_apart(board, 16)
         assert max(costs) <= 65536, shot          # far from the game's command quota
+
+
+def test_near_tangent_contact_in_the_rack_does_not_freeze_the_table():
+    # this shot left ball 4 grazing ball 10: an immediate contact that the sweep reported and the
+    # collision found not approaching, again and again at the same time (8 events a tick, for ever)
+    board = racked_table()
+    shoot(board, angle=-2847, speed=1263, tip_x=-58, tip_y=50)
+    costs = play(board, max_ticks=400)
+    assert board.score("$resting", "pool.game") == 1
+    assert_on_table_and_apart(board, 16)
+    assert len(costs) < 400

@@ -1,9 +1,10 @@
 # pool:physics/step — one tick of table physics: events found by swept tests are resolved in time
 # order within the tick (at most $max_events), then the displays of the balls that moved follow.
 # Every ball in play is saved at the tick's start (time 0) and marked dirty (needs a trial).
-# Reads/writes: every ball's scores; #now #events pool.tmp; $resting pool.game.
+# Reads/writes: every ball's scores; #now #events #nohit.t pool.tmp; $resting pool.game.
 scoreboard players set #now pool.tmp 0
 scoreboard players set #events pool.tmp 0
+scoreboard players set #nohit.t pool.tmp -1
 execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/save
 tag @e[tag=pool.ball,scores={pool.state=0..2}] add pool.dirty
 function pool:physics/substep

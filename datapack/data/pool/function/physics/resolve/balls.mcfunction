@@ -3,5 +3,6 @@
 execute as @e[tag=pool.event_b,limit=1] run function pool:physics/resolve/load_b
 function pool:physics/resolve/touch
 function pool:ball/collide/resolve
+execute if score #hit pool.tmp matches 0 run function pool:physics/resolve/no_hit
 function pool:ball/phase/start
 execute as @e[tag=pool.event_b,limit=1] run function pool:physics/resolve/store_b
