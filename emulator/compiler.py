@@ -15,6 +15,7 @@ Shapes (the cost rule is in :mod:`emulator.backend`; the opcodes in :mod:`emulat
     execute if score #a o matches 1.. store result score #b o run function f
                                        CMD ->end; IFMATCH; CHKOBJ; CALL f; STORE; end: ENDCMD
     return run CMD                     CMD k ->none; ...CMD...; RETRES; none: RETNONE
+    execute as @e run return 1         CMD ->end; HOSTSTAGE; STAGESDONE; RETV 1; end: ENDCMD; RETPEND
 """
 from __future__ import annotations
 
@@ -160,6 +161,8 @@ class Compiler:
             end = self.emit(vm.OP_RETNONE)
         else:
             end = self.emit(vm.OP_ENDCMD)
+            if isinstance(final, Return) and final.kind != "run":
+                self.emit(vm.OP_RETPEND)  # each context returned (or none did): now the function ends
         self.program.patch(cmd_pc, 1, end)
         if collect_pc is not None:
             self.program.patch(collect_pc, 1, end)
@@ -231,10 +234,13 @@ class Compiler:
             return
         ids = [self.program.intern_function(m) for m in members]
         if returning:
+            skips = []
             for i, fn in enumerate(ids):
                 self.emit(vm.OP_CALL, fn)
                 if i < len(ids) - 1:
-                    self.emit(vm.OP_RETIFHAS)
+                    skips.append(self.emit(vm.OP_RETIFHAS, 0))
+            for pc in skips:
+                self.program.patch(pc, 1, self.program.next_pc)
         elif len(ids) == 1:
             self.emit(vm.OP_CALL, ids[0])
         else:

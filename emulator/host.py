@@ -6,7 +6,9 @@ The VM stops at a host op and the numba backend calls one of (the VM has charged
   selector, a condition ending a chain ...) run once for the current context;
 - :meth:`Host.run_stage`: an execute stage the VM does not evaluate (``as``, ``positioned``,
   ``if entity`` ...), giving the contexts the rest of the chain runs in;
-- :meth:`Host.run_store`: a ``store`` into storage (or a score holder named by a selector).
+- :meth:`Host.run_store_stage`: a ``store`` stage whose target the VM cannot name (a selector's
+  score holders, an entity, a block): the target, resolved now, as ExecuteCommand.storeValue does;
+- :meth:`Host.run_store`: a ``store`` into storage, or into the target its stage resolved.
 
 Entities, blocks and entity/block data go through :mod:`emulator.world_entities`, the code the
 reference backend runs too.
@@ -39,6 +41,18 @@ class HostFailure(Exception):
         super().__init__(message)
         self.message = message
         self.report = report
+
+
+@dataclass(frozen=True)
+class StoreTarget:
+    """What a store stage resolved: score holder names, or a world store's entity/block accessor."""
+    value: object
+
+
+def resolves_target(st: ast.Subcommand) -> bool:
+    """A store stage the host resolves (a score store on a name is the VM's own)."""
+    return (isinstance(st, ast.StoreScore) and not isinstance(st.targets, ast.NameTarget)) or \
+        world_entities.is_world_store(st)
 
 
 @dataclass
@@ -91,23 +105,29 @@ class Host:
                 self.report(failure.message, "error")
             return None
 
-    def run_store(self, st: ast.Subcommand, ctx: Context, ok: bool, value: int) -> None:
-        """A ``store`` stage's callback: ``result`` stores the value (0 on failure), ``success`` 1/0."""
+    def run_store_stage(self, st: ast.Subcommand, ctx: Context) -> StoreTarget | None:
+        """A store stage with a target to resolve (:func:`resolves_target`): the target, or None
+        when the stage fails (no entity, an unknown objective ...)."""
+        try:
+            if isinstance(st, ast.StoreScore):
+                self.objective(st.objective)
+                return StoreTarget(tuple(self.holders(st.targets, ctx)))
+            return StoreTarget(_entities(world_entities.store_target, self.state, st, ctx))
+        except HostFailure as failure:
+            if failure.report:
+                self.report(failure.message, "error")
+            return None
+
+    def run_store(self, st: ast.Subcommand, target: StoreTarget | None, ok: bool, value: int) -> None:
+        """A ``store`` stage's callback: ``result`` stores the value (0 on failure), ``success`` 1/0.
+        ``target``: what the stage resolved (None for storage and bossbars)."""
         stored = (value if ok else 0) if st.kind == "result" else int(ok)
         if isinstance(st, ast.StoreData) and isinstance(st.target, ast.StorageData):
             stores.store(self.storage(st.target, create=True), st.path, st.type, stored, st.scale)
         elif world_entities.is_world_store(st):
-            try:  # resolved again for the callback; a target gone since fails silently
-                target = _entities(world_entities.store_target, self.state, st, ctx)
-            except HostFailure:
-                return
-            world_entities.store(self.state, target, st, ok, value)
+            world_entities.store(self.state, target.value, st, ok, value)
         elif isinstance(st, ast.StoreScore):
-            try:
-                names = self.holders(st.targets, ctx)
-            except HostFailure:
-                return
-            for name in names:
+            for name in target.value:
                 self.state.scoreboard.set(name, st.objective, stored)
         else:
             self.warn(st, "'store' into a bossbar is not emulated yet")
@@ -119,13 +139,6 @@ class Host:
             return [ctx] if self.condition(st, ctx) else []
         if world_entities.is_world_stage(st):
             return _entities(world_entities.stage, self.state, st, ctx)
-        if isinstance(st, ast.StoreScore):
-            self.objective(st.objective)
-            self.holders(st.targets, ctx)
-            return [ctx]
-        if world_entities.is_world_store(st):  # the target (one entity, or a block) is resolved now
-            _entities(world_entities.store_target, self.state, st, ctx)
-            return [ctx]
         if isinstance(st, (ast.StoreData, ast.StoreBossbar)):
             return [ctx]
         if isinstance(st, ast.ExIn):

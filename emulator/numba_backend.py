@@ -14,7 +14,7 @@ from emulator import vm, world_entities
 from emulator.backend import RootResult, report_quota_cut
 from emulator.compiler import Compiler
 from emulator.entity_arrays import TagMirror
-from emulator.host import Host
+from emulator.host import Host, StoreTarget, resolves_target
 from emulator.program import Program
 from emulator.reference.failure import CommandFailure
 from emulator.reference.macros import MacroExpander
@@ -73,6 +73,10 @@ class NumbaBackend:
         self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
         self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
         self.context_ids: dict[tuple, int] = {}
+        # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
+        # writes to what its stage resolved, whatever context the chain ends in
+        self.bindings: list[tuple] = []
+        self.store_targets: dict[object, StoreTarget] = {}  # key -> target; reset per root
         self.forks: dict[int, list[tuple[int, list[int]]]] = {}  # depth -> [(resume pc, contexts left)]
         self.collected: dict[int, tuple[int, int, list[int]]] = {}  # depth -> (final pc, end pc, contexts)
 
@@ -81,7 +85,9 @@ class NumbaBackend:
         state = self.state
         self.contexts = []
         self.context_ids = {}
-        self._context_index(context or Context())
+        self.bindings = []
+        self.store_targets = {}
+        self._context_index(context or Context(), ())
         function = self.packs.functions.get(function_id)
         if function is None:
             state.error(f"Unknown function {function_id}")
@@ -142,6 +148,8 @@ class NumbaBackend:
                 self._next_context()
             elif status == vm.ST_COLLECT:
                 self._collect()
+            elif status == vm.ST_REPEAT:
+                self._repeat()
             elif status == vm.ST_ERROR:
                 self._runtime_error()
             elif status == vm.ST_FLUSH:
@@ -193,17 +201,21 @@ class NumbaBackend:
             result = self.host.run_final(node, ctx)
             r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = int(result.has), int(result.ok), wrap32(result.value)
         elif opcode == vm.OP_HOSTSTORE:
-            self.host.run_store(node, ctx, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
+            target = None
+            if resolves_target(node):
+                target = self.store_targets[dict(self.bindings[int(r[vm.R_CTX])])[id(node)]]
+            self.host.run_store(node, target, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
         else:
             self._stage(node, ctx)
 
-    def _context_index(self, ctx: Context) -> int:
-        """Intern a context (a loop re-running a stage must not grow the table)."""
-        key = (ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension)
+    def _context_index(self, ctx: Context, bindings: tuple) -> int:
+        """Intern a context with its store bindings (a loop re-running a stage must not grow the table)."""
+        key = (ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension, bindings)
         index = self.context_ids.get(key)
         if index is None:
             index = self.context_ids[key] = len(self.contexts)
             self.contexts.append(ctx)
+            self.bindings.append(bindings)
             if index >= self.ctx_holder.shape[0]:
                 self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
                 self.ctx_entity = np.concatenate([self.ctx_entity, np.full(index + 1, -1, dtype=np.int64)])
@@ -214,10 +226,28 @@ class NumbaBackend:
                 self.tag_mirror.track(entity)
         return index
 
+    def _bind(self, index: int, node, target: StoreTarget) -> tuple:
+        """Context ``index``'s bindings with ``node``'s store target replaced (a recursive chain
+        binds the same store again)."""
+        # holder names compare by value (a loop storing to the same holders reuses its context);
+        # an entity or block accessor by identity (kept alive in store_targets for this root)
+        key = target.value if isinstance(target.value, tuple) else id(target.value)
+        self.store_targets[key] = target
+        kept = tuple(b for b in self.bindings[index] if b[0] != id(node))
+        return kept + ((id(node), key),)
+
     def _stage(self, node, ctx: Context) -> None:
         """An execute stage run by the host: no context left, one, or a fork."""
         r = self.regs
-        made = self.host.run_stage(node, ctx)
+        index = int(r[vm.R_CTX])
+        bindings = self.bindings[index]
+        if resolves_target(node):
+            target = self.host.run_store_stage(node, ctx)
+            made = None if target is None else [ctx]
+            if target is not None:
+                bindings = self._bind(index, node, target)
+        else:
+            made = self.host.run_stage(node, ctx)
         if made is None:  # the stage failed: the command, or in a forked chain this context
             r[vm.R_ALIVE] = 0
             if not self.program.rows[int(r[vm.R_PC]) - 1][2]:
@@ -230,10 +260,10 @@ class NumbaBackend:
         elif not made:
             r[vm.R_ALIVE] = 0
         elif len(made) == 1:
-            if made[0] is not ctx:
-                r[vm.R_CTX] = self._context_index(made[0])
+            if made[0] is not ctx or bindings is not self.bindings[index]:
+                r[vm.R_CTX] = self._context_index(made[0], bindings)
         else:
-            self._fork([self._context_index(c) for c in made])
+            self._fork([self._context_index(c, bindings) for c in made])
 
     def _fork(self, contexts: list[int]) -> None:
         """Run the rest of the chain for ``contexts[0]`` now and keep the others for its ENDCMD.
@@ -249,6 +279,14 @@ class NumbaBackend:
             self.collected.pop(depth, None)
             r[vm.R_LOOP] = vm.LOOP_FORKED
         r[vm.R_CTX] = contexts[0]
+
+    def _repeat(self) -> None:
+        """``if function``: the isolated call's callback added this context once per return (each
+        context of a forked ``return`` in the function returns): the rest of the chain runs once per copy."""
+        r = self.regs
+        copies = int(r[vm.R_HAS])
+        r[vm.R_HAS] = 0
+        self._fork([int(r[vm.R_CTX])] * copies)
 
     def _collect(self) -> None:
         """At a forked chain's STAGESDONE: keep the context for the final command, then go on."""

@@ -55,17 +55,22 @@ OP_STORE = 23  # a: 0 result / 1 success, b h, c o
 OP_CALL = 30  # a: function id
 OP_CALLREG = 31  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
 OP_FEND = 32  # end of a function body: return without a result
-OP_RETV = 33  # a: value, b: 1 when the return is its own command line (an entry). `return N`
+OP_RETV = 33  # a: value, b: 1 when the return is its own command line (an entry). `return N`.
+# In a forked chain every context returns (BuildContexts runs the custom command for each one):
+# RETV counts the returns in R_NRET and goes on; the chain's RETPEND then ends the function
 OP_RETFAIL = 34  # b: as RETV. `return fail`
 OP_RETRES = 35  # end of `return run CMD`: return CMD's result (fail if it had none)
 OP_RETNONE = 36  # abort target of `return run`: end the function without a result
-OP_RETIFHAS = 37  # `return run function #tag`: the first member that returned ends the caller
+OP_RETPEND = 37  # after a forked chain ending in `return N|fail`: return, if some context did
+OP_RETIFHAS = 38  # a: pc after the calls. `return run function #tag`: a member that returned skips the
+# later members (the discard drops them); the chain's stores and RETRES follow
 OP_TAGBEGIN = 40  # acc_any = 0, acc_sum = 0
 OP_TAGACC = 41  # add the last call's result to the accumulator
 OP_TAGEND = 42  # the tag's result: the sum, if any member returned
 OP_IFFN_BEGIN = 43  # has = 0
 OP_IFFN_STEP = 44  # a: pc after the calls. A returned member ends the isolated call
-OP_IFFN_END = 45  # a: negated. alive &= (value != 0) != negated; no return counts as value 0
+OP_IFFN_END = 45  # a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function
+# that returned in several contexts passes the context once per return (ST_REPEAT)
 OP_FAIL = 46  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
 OP_RESULT = 47  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
 OP_JMPDEAD = 48  # a: target. `run return run ...` with no context left: skip it
@@ -91,13 +96,13 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP = range(15, 20)
-N_REGS = 20
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET = range(15, 21)
+N_REGS = 21
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP = range(10)
 F_WIDTH = 10
 
-ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX, ST_COLLECT = range(9)
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX, ST_COLLECT, ST_REPEAT = range(10)
 
 # R_LOOP: no fork in this command; forked, first pass; re-entered for a later context (its stages
 # were charged on the first pass)
@@ -141,6 +146,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     abort = regs[R_ABORT]
     ctx = regs[R_CTX]
     loop = regs[R_LOOP]
+    nret = regs[R_NRET]
     sanitize = regs[R_SANITIZE] != 0
     counting = regs[R_COUNTING] != 0  # off only to measure the counters' cost
     forklimit = regs[R_FORKLIMIT]
@@ -545,7 +551,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             has = 0
             loop = 0
             pc = func_start[fn]
-        elif op >= OP_FEND and op <= OP_RETIFHAS:
+        elif op >= OP_FEND and op <= OP_RETPEND:
             if op == OP_FEND or op == OP_RETNONE:
                 has = 0
             elif op == OP_RETV or op == OP_RETFAIL:
@@ -558,19 +564,27 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 has = 1
                 ok = 1 if op == OP_RETV else 0
                 val = code[pc, 1] if op == OP_RETV else 0
+                if loop:  # one context of a forked chain: the others return too
+                    nret += 1
+                    pc += 1
+                    continue
             elif op == OP_RETRES:
                 if not (alive and has):  # FallthroughTask, an entry: returns failure
                     if quota <= 0:
                         status = ST_CUT
                         break
-                if not (alive and has and ok):
+                    has = 1
                     ok = 0
                     val = 0
-                has = 1
-            else:  # OP_RETIFHAS
-                if not has:
-                    pc += 1
-                    continue
+                elif not ok:
+                    val = 0
+                # else `has` keeps the callee's count of returns: each reaches the caller
+            elif nret == 0:  # OP_RETPEND: no context returned
+                pc += 1
+                continue
+            if nret:  # the caller's callback hears every context's return
+                has = nret
+                nret = 0
             depth -= 1
             fn = frames[depth, F_FN]
             active[fn] -= 1
@@ -590,7 +604,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
         elif op == OP_TAGACC:
             if alive and has:
                 acc_any = 1
-                acc_sum = _wrap(acc_sum + (val if ok else 0))
+                acc_sum = _wrap(acc_sum + (val if ok else 0) * has)  # has: the member's count of returns
             pc += 1
         elif op == OP_TAGEND:  # the accumulator's report is an entry queued after the members
             if alive and quota <= 0:
@@ -604,7 +618,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
         elif op == OP_IFFN_BEGIN:
             has = 0
             pc += 1
-        elif op == OP_IFFN_STEP:
+        elif op == OP_IFFN_STEP or op == OP_RETIFHAS:
             pc = code[pc, 1] if has else pc + 1
         elif op == OP_IFFN_END:
             if alive:
@@ -612,6 +626,10 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 v = val if (has and ok) else 0
                 passed = (v == 0) if code[pc, 1] else (v != 0)
                 alive = 1 if passed else 0
+                if passed and has > 1:  # each return passed the context on: Python forks it (R_HAS copies)
+                    pc += 1
+                    status = ST_REPEAT
+                    break
             has = 0
             pc += 1
         elif op == OP_CONT:
@@ -703,6 +721,7 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
     regs[R_ABORT] = abort
     regs[R_CTX] = ctx
     regs[R_LOOP] = loop
+    regs[R_NRET] = nret
     regs[R_NOVF] = novf
     if status == ST_ERROR:
         regs[R_ERR] = err

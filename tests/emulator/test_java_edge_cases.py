@@ -22,9 +22,6 @@ BACKENDS = ["python", "numba"]
 # Cases the numba VM gets wrong, by case id, with why. Strict xfails: an entry must go when the VM
 # is fixed.
 VM_GAPS = {
-    "return_in_each_context": "VM: stops a custom final command's contexts at the first return",
-    "store_return_run_function_tag": "VM: `return run function #tag` does not report to the store callback",
-    "store_holders_resolved_at_the_stage": "VM: resolves store holders with the final context",
 }
 
 
@@ -103,6 +100,13 @@ CASES = [
     ("return_in_each_context", "summon marker\nsummon marker\nsummon marker\n"
      "execute store result score #r o run function t:return_as_markers\n"
      "execute store result score #n o if entity @e[type=marker,scores={o=7}]", {("#n", "o"): 3, ("#r", "o"): 7}, ...),
+    # ... so the caller's callback hears each return: FunctionCommand's Accumulator sums a tag's
+    # 3 + 3 returns (`return run function` passes each one on), and
+    ("tag_sums_each_context_return", "summon marker\nsummon marker\nsummon marker\n"
+     "execute store result score #r o run function #t:markers_twice", {("#r", "o"): 42}, ...),
+    # ... ExecuteCommand's `if function` callback adds the source once per passing return
+    ("if_function_passes_per_return", "summon marker\nsummon marker\nsummon marker\n"
+     "execute if function t:return_as_markers run scoreboard players add #if o 1", {("#if", "o"): 3}, ...),
     # ExecuteCommand.storeValue resolves the holders in the store stage, with that stage's source:
     # the nearest marker from the origin, not from where `positioned as` moved the chain later
     ("store_holders_resolved_at_the_stage", 'summon marker 0 0 0 {Tags:["m","near"]}\n'
@@ -189,8 +193,9 @@ HELPERS = {
     "t:five": "return 5",
     "t:fails": "return fail",
     "t:return_as_markers": "execute as @e[type=marker] store result score @s o run return 7",
+    "t:return_run_as_markers": "return run function t:return_as_markers",
 }
-HELPER_TAGS = {"t:five_plain": ["t:five", "t:plain"]}
+HELPER_TAGS = {"t:five_plain": ["t:five", "t:plain"], "t:markers_twice": ["t:return_as_markers", "t:return_run_as_markers"]}
 
 
 @pytest.mark.parametrize("backend, case_id, body, expected, result", list(on_both_backends(CASES)))
