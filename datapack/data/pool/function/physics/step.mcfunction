@@ -8,5 +8,10 @@ scoreboard players set #nohit.t pool.tmp -1
 execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/save
 tag @e[tag=pool.ball,scores={pool.state=0..2}] add pool.dirty
 function pool:physics/substep
+# balls that touched another this tick: a pair left touching but not approaching
+# (pool:physics/find/touching) can end closer than 2R along converging chords, and the contact
+# shift of pool:physics/resolve/touch can carry a ball a few um into a third one
+execute as @e[tag=pool.touch,scores={pool.state=0..2}] run function pool:physics/separate/ball
+tag @e[tag=pool.touch] remove pool.touch
 execute as @e[tag=pool.moving] run function pool:ball/display/place
 execute unless entity @e[tag=pool.ball,scores={pool.state=1..2}] run function pool:physics/at_rest

@@ -10,12 +10,15 @@ scoreboard players operation #rem pool.tmp -= #now pool.tmp
 tag @e[tag=pool.fresh] remove pool.fresh
 execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/trial
 execute as @e[tag=pool.moving] run function pool:physics/find/ball
-# the earliest of the balls' events
+# the earliest of the balls' events: the minimum first, then its ball (a running minimum
+# `execute as @e if score @s pool.nt < #te run ...` would take the last ball visited, since
+# each execute stage runs over all contexts before `run`)
 scoreboard players set #te pool.tmp 20000
+scoreboard players operation #te pool.tmp < @e[tag=pool.moving] pool.nt
 tag @e[tag=pool.event] remove pool.event
 tag @e[tag=pool.event_b] remove pool.event_b
-execute as @e[tag=pool.moving] if score @s pool.nt < #te pool.tmp run function pool:physics/find/take
 execute if score #te pool.tmp matches 20000 run return 0
+execute as @e[tag=pool.moving] if score @s pool.nt = #te pool.tmp run function pool:physics/find/take
 execute if score #kind pool.tmp matches 1 as @e[tag=pool.ball] if score @s pool.id = #partner pool.tmp run tag @s add pool.event_b
 execute as @e[tag=pool.event] run function pool:ball/rewind
 execute as @e[tag=pool.event_b] run function pool:ball/rewind

@@ -15,8 +15,8 @@ scoreboard players operation #b.ex pool.tmp = @s pool.x
 scoreboard players operation #b.ez pool.tmp = @s pool.z
 function pool:physics/sweep/pair
 execute if score #f pool.tmp matches 10001 run return 0
-execute if score #f pool.tmp matches 0 if function pool:physics/find/resolved_apart run return 0
-execute if score #f pool.tmp matches 0 if function pool:physics/find/separating run return 0
+execute if score #f pool.tmp matches 0 if function pool:physics/find/resolved_apart run return run function pool:physics/find/touching
+execute if score #f pool.tmp matches 0 if function pool:physics/find/separating run return run function pool:physics/find/touching
 function pool:physics/find/absolute
 execute if score #t pool.tmp >= #best pool.tmp run return 0
 scoreboard players operation #best pool.tmp = #t pool.tmp

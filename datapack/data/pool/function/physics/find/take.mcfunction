@@ -1,4 +1,5 @@
-# pool:physics/find/take — @s's stored event is the earliest of the tick so far.
+# pool:physics/find/take — @s's stored event is at the earliest time #te of the moving balls' events
+# (of balls tied at it, the last one visited is taken).
 # Reads: @s pool.nt pool.nk pool.nr pool.np. Writes: #te #kind #event_rail #partner pool.tmp, tag
 # pool.event (on @s only).
 scoreboard players operation #te pool.tmp = @s pool.nt

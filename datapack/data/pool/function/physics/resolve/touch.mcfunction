@@ -24,6 +24,9 @@ function pool:math/mul_unit
 scoreboard players operation #c pool.tmp += $out pool.math
 execute if score #c pool.tmp matches ..0 run return 0
 execute unless score #g pool.tmp matches -2000..2000 run return 0
+# a nearly tangent closing speed would carry both balls far along their paths (time g / c) into
+# other balls: shift only when each moves at most 8 |g|
+execute if function pool:physics/resolve/too_tangent run return 0
 scoreboard players operation $b pool.math = #c pool.tmp
 scoreboard players operation $a pool.math = @s pool.vx
 scoreboard players operation $a pool.math *= #g pool.tmp

@@ -1,10 +1,10 @@
-# pool:physics/separate/ball — the moving ball @s (a) against every other ball in play after it
-# (moving with a larger pool.id, or at rest): pairs closer than 2R + 10 um are pushed apart.
+# pool:physics/separate/ball — ball @s (a) against every other ball in play after it (moving with
+# a larger pool.id, or at rest): pairs closer than 2R + 10 um are pushed apart.
 # Reads: @s pool.id pool.x pool.z. Writes: #a.id #a.x #a.z pool.tmp, tag pool.self (removed).
 scoreboard players operation #a.id pool.tmp = @s pool.id
 scoreboard players operation #a.x pool.tmp = @s pool.x
 scoreboard players operation #a.z pool.tmp = @s pool.z
 tag @s add pool.self
 execute as @e[tag=pool.ball,tag=!pool.self,scores={pool.state=1..2}] if score @s pool.id > #a.id pool.tmp run function pool:physics/separate/pair
-execute as @e[tag=pool.ball,scores={pool.state=0}] run function pool:physics/separate/pair
+execute as @e[tag=pool.ball,tag=!pool.self,scores={pool.state=0}] run function pool:physics/separate/pair
 tag @s remove pool.self
