@@ -125,3 +125,27 @@ def test_cue_strike_matches_reference(angle, speed, tip_x, tip_y, elevation):
     spin_error = math.sqrt(((mine_w - w) ** 2).sum() + (board.score(A, "pool.wy") - wy) ** 2)
     assert spin_error <= 5e-3 * spin + 2
     assert board.score(A, "pool.state") in (1, 2)
+
+
+def touch_shift(v_a, gap):
+    """pool:physics/resolve/touch for a at (600000, 600000) with velocity v_a and b at rest 2R + gap
+    along +x: a's displacement (um)."""
+    board = board_with(x=600000, z=600000, vx=v_a[0], vz=v_a[1])
+    for name, value in zip(("x", "z", "vx", "vz"), (600000 + 57150 + gap, 600000, 0, 0)):
+        board.set_score(f"#b.{name}", "pool.tmp", value)
+    board.call("pool:physics/resolve/touch", as_=A)
+    return vector(board, "x", "z") - 600000
+
+
+def test_contact_shift_closes_the_gap_of_a_head_on_pair():
+    # gap 40 um, 10 um kept: a moves 30 um towards b
+    assert touch_shift((100000, 0), 40) == pytest.approx([30, 0], abs=1)
+
+
+def test_contact_shift_is_skipped_for_a_nearly_tangent_pair():
+    # closing speed 1000 um/tick against 100000 along the tangent: closing 30 um would carry a
+    # 3 mm along its path (into any ball there), so nothing moves
+    assert list(touch_shift((1000, 100000), 40)) == [0, 0]
+    # |vx| + |vz| = 115000 <= 8 x 15000: it still moves, 100000 x 30 / 15000 = 200 um along z
+    shift = touch_shift((15000, 100000), 40)
+    assert shift[0] == pytest.approx(30, abs=1) and 0 < shift[1] <= 8 * 30
