@@ -9,6 +9,11 @@ Scoreboard layout (what the VM reads directly)
   Interning never creates a score and never creates an objective.
 - ``values[h, o]`` is an ``int32`` matrix and ``present[h, o]`` a ``uint8`` mask (1 = the score
   is set). An unset score has ``present == 0``; its ``values`` cell is meaningless.
+- ``locked[h, o]`` (``uint8``, same shape and growth as ``present``) is the trigger lock of the
+  score (Score.locked; 1 = locked). The game creates every score locked, so the invariant is
+  ``locked == 1`` wherever ``present == 0``: whoever clears ``present`` sets ``locked`` back to 1.
+  ``scoreboard players enable`` creates missing scores (0) and clears their ``locked``;
+  ``trigger`` fails unless the score is present and unlocked, then locks it again.
 - ``alive[o]`` (``uint8``) says whether objective ``o`` currently exists (``scoreboard objectives
   add`` sets it, ``remove`` clears it and its column). Commands naming an objective that is not
   alive fail ("Unknown scoreboard objective").
@@ -49,6 +54,7 @@ class Scoreboard:
         self.display_names: list[str | None] = []
         self.values = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.int32)
         self.present = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
+        self.locked = np.ones((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
         self.alive = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
 
     # ------------------------------------------------------------------ interning
@@ -84,9 +90,11 @@ class Scoreboard:
         present = np.zeros((new_h, new_o), dtype=np.uint8)
         values[:cap_h, :cap_o] = self.values
         present[:cap_h, :cap_o] = self.present
+        locked = np.ones((new_h, new_o), dtype=np.uint8)
+        locked[:cap_h, :cap_o] = self.locked
         alive = np.zeros(new_o, dtype=np.uint8)
         alive[:cap_o] = self.alive
-        self.values, self.present, self.alive = values, present, alive
+        self.values, self.present, self.locked, self.alive = values, present, locked, alive
 
     # ------------------------------------------------------------------ objectives
     def exists(self, objective: str) -> bool:
@@ -102,6 +110,7 @@ class Scoreboard:
         self.criteria[oid] = criterion
         self.display_names[oid] = display_name
         self.present[:, oid] = 0
+        self.locked[:, oid] = 1
         return True
 
     def remove_objective(self, name: str) -> bool:
@@ -111,6 +120,7 @@ class Scoreboard:
         oid = self.objective_ids[name]
         self.alive[oid] = 0
         self.present[:, oid] = 0
+        self.locked[:, oid] = 1
         return True
 
     def is_writable(self, objective: str) -> bool:
@@ -143,8 +153,26 @@ class Scoreboard:
             return
         if objective is None:
             self.present[hid, :] = 0
+            self.locked[hid, :] = 1
         elif objective in self.objective_ids:
-            self.present[hid, self.objective_ids[objective]] = 0
+            oid = self.objective_ids[objective]
+            self.present[hid, oid] = 0
+            self.locked[hid, oid] = 1
+
+    def enable(self, holder: str, objective: str) -> None:
+        """``scoreboard players enable``: get-or-create the score (0) and unlock it."""
+        if self.get(holder, objective) is None:
+            self.set(holder, objective, 0)
+        self.locked[self.holder_ids[holder], self.objective_ids[objective]] = 0
+
+    def is_unlocked(self, holder: str, objective: str) -> bool:
+        """True when the score exists and is unlocked: what ``trigger`` needs."""
+        if self.get(holder, objective) is None:
+            return False
+        return not self.locked[self.holder_ids[holder], self.objective_ids[objective]]
+
+    def lock(self, holder: str, objective: str) -> None:
+        self.locked[self.holder_ids[holder], self.objective_ids[objective]] = 1
 
     def tracked_holders(self) -> list[str]:
         """Holders with a score in any existing objective, in interning order: what ``*`` names
