@@ -15,7 +15,7 @@ from pathlib import Path
 
 from emulator.backend import Backend, RootResult
 from emulator.profile_data import Profile, fold
-from emulator.runtime import Runtime
+from emulator.runtime import LOAD_TAG, Runtime
 from emulator.semantics import INT_MAX, INT_MIN
 from emulator import world_entities
 from emulator.state import Context
@@ -73,6 +73,18 @@ class Emulator:
         return self.runtime
 
     # ------------------------------------------------------------------ running
+    def start(self) -> int:
+        """The world loads: run ``#minecraft:load`` now (each member its own root, as the server),
+        as the game does when a world (re)loads, before any player command can arrive. Its commands
+        count outside the ticks; the next tick runs only ``#minecraft:tick`` and the schedule.
+        Without this call the first tick runs the load functions. Returns the commands executed
+        (0 when the load functions already ran)."""
+        runtime = self._runtime()
+        if runtime.loaded:
+            return 0
+        runtime.loaded = True
+        return sum(runtime.call(f).cost for f in runtime.members(LOAD_TAG))
+
     def call(self, function: str, as_=None, at: tuple[float, float, float] | None = None, arguments=None) -> int | None:
         """Run ``function`` (``ns:path``, ``path`` for ``minecraft:``, or ``#tag``: each member)
         as one root sequence, as the server at ``at`` (default: world spawn), or with ``as_`` (a

@@ -108,7 +108,10 @@ def parse_call(text: str) -> tuple[str, object]:
     return cmd.function, cmd.arguments
 
 
-def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[str, object]]) -> None:
+def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[str, object]]) -> int:
+    """Start the world (``#minecraft:load`` runs first, as when a world loads, before any player
+    command), then apply --set and --call in command-line order. Returns the load's commands."""
+    load_commands = emu.start()
     sets_iter, calls_iter = iter(sets), iter(calls)
     for name in order:
         if name == "set_":
@@ -117,3 +120,4 @@ def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[s
         else:
             function, arguments = next(calls_iter)
             emu.call(function, arguments=arguments)
+    return load_commands

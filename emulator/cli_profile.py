@@ -65,7 +65,8 @@ class RootLog:
 @click.option("--threshold", default=formats.DEFAULT_THRESHOLD, show_default=True, type=click.FloatRange(min=0),
               metavar="PCT", help="Allowed growth per function with --baseline, in percent.")
 def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, output, baseline, threshold) -> None:
-    """Profile PACKS: apply --set and --call in order, run --ticks ticks, report command counts."""
+    """Profile PACKS: run #minecraft:load, apply --set and --call in order, run --ticks ticks, report
+    command counts."""
     if fmt in STACK_FORMATS and backend == "numba":
         raise click.UsageError(f"--format {fmt} needs call stacks, which only --backend python records")
     saved = _read_baseline(baseline) if baseline else None
@@ -74,12 +75,12 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     trace = formats.TraceWriter() if fmt == "trace" else None
     emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace)
     roots = RootLog(emu.runtime)
-    apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+    load_commands = apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
     for _ in range(ticks):
         emu.tick()
         if stop and stop.met(emu):
             break
-    report = build_report(emu, roots)
+    report = build_report(emu, roots, load_commands)
     text = {"table": lambda: formats.write_table(report, top), "json": lambda: formats.write_json(report),
             "collapsed": lambda: formats.write_collapsed(report), "trace": lambda: trace.text()}[fmt]()
     if output:
@@ -128,7 +129,9 @@ def _read_baseline(path: str) -> dict:
 
 
 # ---------------------------------------------------------------------- the report
-def build_report(emu: Emulator, roots: RootLog) -> dict:
+def build_report(emu: Emulator, roots: RootLog, load_commands: int = 0) -> dict:
+    """The profile; ``load_commands`` of the commands outside ticks were the load functions' (the
+    rest were --set/--call's)."""
     runtime = emu.runtime
     series = emu.commands_per_tick
     limit = emu.state.gamerules.max_command_chain_length
@@ -155,6 +158,7 @@ def build_report(emu: Emulator, roots: RootLog) -> dict:
         "backend": emu.backend_name,
         "limit": limit,
         "commands": sum(series) + runtime.commands_outside_ticks,
+        "outside_ticks": {"load": load_commands, "setup": runtime.commands_outside_ticks - load_commands},
         "ticks": {"count": len(series), "mean": sum(series) / len(series) if series else 0.0,
                   "max": max(series, default=0), "series": series},
         "roots": roots.summary(limit),

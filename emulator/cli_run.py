@@ -1,4 +1,5 @@
-"""``dpemu run``: load packs, apply --set/--call in command-line order, tick, report."""
+"""``dpemu run``: load packs, run ``#minecraft:load``, apply --set/--call in command-line order, tick,
+report."""
 from __future__ import annotations
 
 import csv
@@ -35,7 +36,7 @@ PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
 @click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
 def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
         shuffle) -> None:
-    """Emulate PACKS: apply --set and --call in order, then run --ticks ticks."""
+    """Emulate PACKS: run #minecraft:load, apply --set and --call in order, then run --ticks ticks."""
     sets = [parse_set(s) for s in set_]
     calls = [parse_call(c) for c in call]
     watches = [parse_watch(w) for w in watch]
@@ -55,11 +56,11 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
             click.echo(diag.format(), err=True)
 
     started = time.perf_counter()
-    apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+    load_commands = apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
     rows = _tick(emu, ticks, watches, stop)
     wall = time.perf_counter() - started
 
-    report = _report(emu, watches, stop, wall)
+    report = _report(emu, watches, stop, wall, load_commands)
     _print_summary(report, emu, to_stderr=json_out == "-")
     if json_out:
         _write_json(json_out, report)
@@ -89,12 +90,15 @@ def _value(emu: Emulator, w: Watch):
     return "" if value is None else value
 
 
-def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float) -> dict:
+def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float, load_commands: int) -> dict:
     per_tick = emu.commands_per_tick
     limit = emu.state.gamerules.max_command_chain_length
+    outside = emu.runtime.commands_outside_ticks
     return {
         "ticks": emu.ticks,
-        "commands": sum(per_tick) + emu.runtime.commands_outside_ticks,
+        "commands": sum(per_tick) + outside,
+        "load_commands": load_commands,
+        "setup_commands": outside - load_commands,
         "commands_per_tick": per_tick,
         "commands_per_tick_mean": (sum(per_tick) / len(per_tick)) if per_tick else 0.0,
         "commands_per_tick_max": max(per_tick, default=0),
@@ -118,7 +122,9 @@ def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:
     def out(text: str) -> None:
         click.echo(text, err=to_stderr)
 
-    out(f"ticks: {report['ticks']}   commands: {report['commands']}   wall: {report['wall_time_s']:.3f} s")
+    out(f"ticks: {report['ticks']}   commands: {report['commands']} (load {report['load_commands']}, "
+        f"--set/--call {report['setup_commands']}, ticks {sum(report['commands_per_tick'])})   "
+        f"wall: {report['wall_time_s']:.3f} s")
     out(f"commands/tick: mean {report['commands_per_tick_mean']:.1f}, max {report['commands_per_tick_max']}   "
         f"quota headroom: {report['quota_headroom']} (costliest root {report['max_root_cost']})")
     for label, value in report["watch"].items():

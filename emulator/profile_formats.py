@@ -100,6 +100,9 @@ def write_table(report: dict, top: int) -> str:
         f"backend {report['backend']}: {report['commands']} commands, {t['count']} ticks "
         f"(mean {t['mean']:.1f}, max {t['max']} per tick)",
     ]
+    outside = report.get("outside_ticks")
+    if outside:
+        lines.append(f"outside ticks: load {outside['load']}, --set/--call {outside['setup']}")
     if t["series"]:
         shown = " ".join(str(c) for c in t["series"][:top])
         lines.append(f"per tick: {shown}{' ...' if len(t['series']) > top else ''}")

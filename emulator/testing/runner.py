@@ -103,10 +103,8 @@ def fresh_world(packs, backend: str) -> Emulator:
 
 
 def run_load(emu: Emulator) -> Emulator:
-    """Run ``#minecraft:load`` now, as the server's first tick would (and not again on it): a test
-    starts in a running world."""
-    emu.call("#minecraft:load")
-    emu.runtime.loaded = True
+    """Run ``#minecraft:load`` now (:meth:`Emulator.start`): a test starts in a running world."""
+    emu.start()
     return emu
 
 

@@ -38,9 +38,10 @@ def test_json_report(pack, tmp_path):
     assert {"ticks", "commands", "commands_per_tick", "scores", "log", "overflows", "diagnostics"} <= set(report)
     assert report["ticks"] == 4
     assert report["scores"]["o"]["#n"] == 40
-    # tick 1: load (call + 2) and tick (call + op + if stage); then 3 per tick, +1 for say at #n=30
-    assert report["commands_per_tick"] == [3 + 3, 3, 4, 3]
-    assert report["commands"] == sum(report["commands_per_tick"])
+    # the load (call + 2) before the ticks; each tick: call + op + if stage, +1 for say at #n=30
+    assert report["commands_per_tick"] == [3, 3, 4, 3]
+    assert (report["load_commands"], report["setup_commands"]) == (3, 0)
+    assert report["commands"] == sum(report["commands_per_tick"]) + 3
     assert report["log"][0]["text"] == "[Server] thirty" and report["log"][0]["tick"] == 2
     assert report["quota_headroom"] == 65536 - 4
     assert "#n o = 40" in result.output
@@ -51,7 +52,19 @@ def test_set_and_call_apply_in_command_line_order(pack, tmp_path):
     invoke(pack, "--ticks", "0", "--set", "#n o 3", "--call", "t:double", "--set", "#k o 1",
            "--call", "t:double", "--json", str(out))
     report = json.loads(out.read_text())
-    assert report["scores"]["o"] == {"#n": 12, "#k": 1}  # (3 * 2) * 2: both calls after the first --set
+    assert report["scores"]["o"] == {"#step": 10, "#n": 12, "#k": 1}  # (3 * 2) * 2: both calls after the first --set
+
+
+def test_load_runs_before_set_and_call(pack, tmp_path):
+    # as in the game, #minecraft:load runs when the world loads, before any command: t:double
+    # finds the objective and #step set, and the first tick runs only #minecraft:tick
+    out = tmp_path / "r.json"
+    invoke(pack, "--ticks", "1", "--call", "t:double", "--set", "#n o 5", "--call", "t:double", "--json", str(out))
+    report = json.loads(out.read_text())
+    assert report["diagnostics"] == []
+    assert report["scores"]["o"] == {"#step": 10, "#n": 5 * 2 + 10}
+    assert report["commands_per_tick"] == [3]
+    assert (report["load_commands"], report["setup_commands"]) == (3, 2 * 2)
 
 
 def test_until_and_csv(pack, tmp_path):
@@ -71,7 +84,7 @@ def test_json_to_stdout_stays_parseable(pack):
 @pytest.mark.parametrize("backend", ["numba", "python"])
 def test_sanitize_reports_overflow(pack, tmp_path, backend):
     out = tmp_path / "r.json"
-    invoke(pack, "--ticks", "1", "--call", "t:load", "--call", "t:big", "--sanitize", "--backend", backend,
+    invoke(pack, "--ticks", "1", "--call", "t:big", "--sanitize", "--backend", backend,
            "--json", str(out))
     report = json.loads(out.read_text())
     assert report["scores"]["o"]["#m"] == -2147483648  # the stored value stays the game's
@@ -105,7 +118,7 @@ def test_runtime_errors_are_reported_not_raised(pack, tmp_path):
 def test_call_with_macro_arguments(tmp_path):
     pack = str(write_pack(tmp_path / "pack", {**FUNCTIONS, "t:m": "$scoreboard players set #m o $(v)"}, TAGS))
     out = tmp_path / "r.json"
-    invoke(pack, "--ticks", "1", "--call", "t:load", "--call", "t:m {v: 12}", "--json", str(out))
+    invoke(pack, "--ticks", "1", "--call", "t:m {v: 12}", "--json", str(out))
     assert json.loads(out.read_text())["scores"]["o"]["#m"] == 12
     result = invoke(pack, "--call", "t:m {v: }")
     assert result.exit_code == 2 and "--call" in result.output

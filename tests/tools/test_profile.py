@@ -49,13 +49,15 @@ def test_backends_agree_on_every_count(demo, args):
 
 def test_counts_per_tick_root_function_and_line(demo):
     r = report(demo, "--ticks", 3)
-    # tick 1: load (call 1 + 1 command) + tick (call 1 + 1 command + 1 failed condition stage);
-    # tick 2 also calls main (1) from the tick's execute line; main's body: set 1, a twice
+    # the load (call 1 + 1 command) runs before the first tick; tick 1: tick (call 1 + 1 command
+    # + 1 failed condition stage); tick 2 also calls main (1) from the tick's execute line;
+    # main's body: set 1, a twice
     # (call 1 + add 1 + call f 1 + f's 2), b (call 1 + call f 1 + f's 2 + say 1), execute 1 + 1
     main_body = 1 + 2 * (1 + 1 + 1 + 2) + (1 + 1 + 2 + 1) + 2
-    assert r["ticks"]["series"] == [2 + 3, 3 + 1 + main_body, 3]
-    assert r["commands"] == sum(r["ticks"]["series"])
-    assert r["ticks"]["max"] == 4 + main_body and r["ticks"]["mean"] == pytest.approx(r["commands"] / 3)
+    assert r["ticks"]["series"] == [3, 3 + 1 + main_body, 3]
+    assert r["outside_ticks"] == {"load": 2, "setup": 0}
+    assert r["commands"] == sum(r["ticks"]["series"]) + 2
+    assert r["ticks"]["max"] == 4 + main_body and r["ticks"]["mean"] == pytest.approx((r["commands"] - 2) / 3)
     roots = {x["function"]: x for x in r["roots"]}
     assert roots["demo:tick"]["runs"] == 3 and roots["demo:tick"]["max_cost"] == 4 + main_body
     assert roots["demo:tick"]["headroom"] == 65536 - 4 - main_body
