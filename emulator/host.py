@@ -27,7 +27,7 @@ import numpy as np
 from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
 from emulator import world_entities
 from emulator.state import Context, WorldState
-from emulator.world import nbt_ops, stores
+from emulator.world import nbt_ops, server_commands, stores
 from emulator.world.errors import CommandFailure as WorldFailure
 from emulator.world.source import Source
 from mcfunction_parser import ast
@@ -231,9 +231,7 @@ class Host:
 
 # ---------------------------------------------------------------------- handlers
 def _say(host: Host, cmd: ast.Say, ctx: Context) -> int:
-    entity = world_entities.executor(host.state, ctx)
-    sender = "Server" if entity is None else entity.display_name
-    host.state.emit("say", f"[{sender}] {cmd.message}", cmd.loc)
+    host.state.emit("say", f"[{_sender_name(host, ctx)}] {cmd.message}", cmd.loc)
     return 1
 
 
@@ -272,9 +270,22 @@ def _schedule_clear(host: Host, cmd: ast.ScheduleClear, ctx: Context) -> int:
 
 
 def _time(host: Host, cmd: ast.Time, ctx: Context) -> int:
-    if cmd.action == "query" and cmd.query == "gametime":
-        return host.state.gametime % INT_MAX
-    raise HostFailure(f"'time {cmd.action} {cmd.query or cmd.value}' is not supported yet", report=True)
+    return server_commands.time_command(host.state, cmd)
+
+
+def _random(host: Host, cmd: ast.RandomCommand, ctx: Context) -> int:
+    return _world(server_commands.random_command, host.state, cmd, _sender_name(host, ctx))
+
+
+def _trigger(host: Host, cmd: ast.Trigger, ctx: Context) -> int:
+    host.objective(cmd.objective)
+    return _world(server_commands.trigger_command, host.state, cmd, world_entities.executor(host.state, ctx))
+
+
+def _sender_name(host: Host, ctx: Context) -> str:
+    """CommandSourceStack.getDisplayName: the executor's name, or "Server"."""
+    entity = world_entities.executor(host.state, ctx)
+    return "Server" if entity is None else entity.display_name
 
 
 def _objectives_add(host: Host, cmd: ast.ObjectivesAdd, ctx: Context) -> int:
@@ -367,15 +378,9 @@ def _players_list(host: Host, cmd: ast.ScoreList, ctx: Context) -> int:
 
 
 def _players_enable(host: Host, cmd: ast.ScoreEnable, ctx: Context) -> int:
-    """Trigger locks are not modelled: enabling creates the scores (get-or-create) and counts them."""
     names = host.holders(cmd.targets, ctx)
     host.objective(cmd.objective)
-    sb = host.state.scoreboard
-    if sb.criteria[sb.objective_ids[cmd.objective]] != "trigger":
-        raise HostFailure("You can only enable trigger-objectives")
-    for name in names:
-        _get_or_create(sb, name, cmd.objective)
-    return len(names)
+    return _world(server_commands.enable_command, host.state, names, cmd.objective)
 
 
 def _data_get(host: Host, cmd: ast.DataGet, ctx: Context) -> int:
@@ -474,6 +479,8 @@ _HANDLERS = {
     ast.Schedule: _schedule,
     ast.ScheduleClear: _schedule_clear,
     ast.Time: _time,
+    ast.RandomCommand: _random,
+    ast.Trigger: _trigger,
     ast.ObjectivesAdd: _objectives_add,
     ast.ObjectivesRemove: _objectives_remove,
     ast.ObjectivesModify: _objectives_other,

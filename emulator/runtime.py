@@ -5,12 +5,14 @@ Each server tick (ServerFunctionManager.tick, then ServerLevel.tickTime):
 2. every ``#minecraft:tick`` member in order, each its own root;
 3. the game time advances by one, then every scheduled event due at the new time runs, by due
    time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
-   run as the server at world spawn.
+   run as the server at world spawn;
+4. the day time advances by one when ``doDaylightCycle`` is on.
 """
 from __future__ import annotations
 
 from emulator.backend import Backend, RootResult
 from emulator.state import Context, WorldState
+from emulator.world.server_commands import advance_time
 
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"
@@ -54,6 +56,7 @@ class Runtime:
                 cost += self._run_all(self.members(entry.function))
             else:
                 cost += self.run_root(entry.function).cost
+        advance_time(state)
         self.commands_per_tick.append(cost)
         state.tick += 1
         return cost

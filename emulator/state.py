@@ -33,6 +33,7 @@ import numpy as np
 
 from emulator.world.blocks import BlockMap
 from emulator.world.entities import EntityStore
+from emulator.world.random_sequences import RandomSequences
 from mcfunction_parser.diagnostics import Loc
 
 # Criteria whose scores only the game sets (ObjectiveCriteria with readOnly=true).
@@ -159,11 +160,15 @@ class Scoreboard:
             self.present[hid, oid] = 0
             self.locked[hid, oid] = 1
 
-    def enable(self, holder: str, objective: str) -> None:
-        """``scoreboard players enable``: get-or-create the score (0) and unlock it."""
+    def enable(self, holder: str, objective: str) -> bool:
+        """``scoreboard players enable`` for one holder: get-or-create the score (0) and unlock
+        it; True when it was locked (the command counts those and fails when there are none)."""
         if self.get(holder, objective) is None:
             self.set(holder, objective, 0)
-        self.locked[self.holder_ids[holder], self.objective_ids[objective]] = 0
+        cell = self.holder_ids[holder], self.objective_ids[objective]
+        was_locked = bool(self.locked[cell])
+        self.locked[cell] = 0
+        return was_locked
 
     def is_unlocked(self, holder: str, objective: str) -> bool:
         """True when the score exists and is unlocked: what ``trigger`` needs."""
@@ -343,7 +348,8 @@ class Gamerules:
 # ---------------------------------------------------------------------- log, diagnostics, overflow
 @dataclass(frozen=True, slots=True)
 class LogEntry:
-    """One line of output: ``kind`` is ``"say"``, ``"tellraw"``, ``"info"`` (e.g. the quota cut
+    """One line of output: ``kind`` is ``"say"``, ``"tellraw"``, ``"chat"`` (a system message such
+    as ``random roll``'s), ``"info"`` (e.g. the quota cut
     message "Command execution stopped due to limit") or ``"error"`` (a failed command's message)."""
 
     tick: int
@@ -421,6 +427,7 @@ class WorldState:
     schedule: ScheduleQueue = field(default_factory=ScheduleQueue)
     gamerules: Gamerules = field(default_factory=Gamerules)
     gametime: int = 0
+    daytime: int = 0  # the overworld's day time (time set/add; advances with doDaylightCycle)
     tick: int = 0
     log: list[LogEntry] = field(default_factory=list)
     diagnostics: list[RuntimeDiagnostic] = field(default_factory=list)
@@ -431,6 +438,7 @@ class WorldState:
     blocks: BlockMap = field(default_factory=BlockMap)
     executors: dict = field(default_factory=dict)  # Context.executor id (Entity.order) -> Entity
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
+    random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.entity_arrays)
 
     def emit(self, kind: str, text: str, loc: Loc | None = None) -> None:

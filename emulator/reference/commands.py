@@ -9,8 +9,12 @@ from __future__ import annotations
 from emulator.semantics import INT_MAX
 from mcfunction_parser import ast
 
+from emulator.world import server_commands
+
 from . import conditions, data, entities, scoreboard
-from .failure import CommandFailure, unsupported
+from .data import world_failures
+from .failure import CommandFailure
+from .scoreboard import objective
 from .source import Source
 
 
@@ -65,9 +69,18 @@ def schedule_clear(env, cmd: ast.ScheduleClear, source: Source, where) -> int:
 
 
 def time(env, cmd: ast.Time, source: Source, where) -> int:
-    if cmd.action == "query" and cmd.query == "gametime":
-        return env.state.gametime % INT_MAX
-    raise unsupported(f"'time {cmd.action} {cmd.query or cmd.value}'")
+    return server_commands.time_command(env.state, cmd)
+
+
+def random(env, cmd: ast.RandomCommand, source: Source, where) -> int:
+    with world_failures():
+        return server_commands.random_command(env.state, cmd, sender_name(source))
+
+
+def trigger(env, cmd: ast.Trigger, source: Source, where) -> int:
+    objective(env, cmd.objective)
+    with world_failures():
+        return server_commands.trigger_command(env.state, cmd, entities.world.executor(source.state, source.context))
 
 
 def not_modelled(env, cmd: ast.Command, source: Source, where) -> int:
@@ -89,6 +102,8 @@ HANDLERS = {
     ast.Schedule: schedule,
     ast.ScheduleClear: schedule_clear,
     ast.Time: time,
+    ast.RandomCommand: random,
+    ast.Trigger: trigger,
 }
 
 

@@ -18,7 +18,7 @@ from .source import Source
 
 
 @contextmanager
-def _world_failures(report: bool = False):
+def world_failures(report: bool = False):
     """The world library's failures are command failures with the same message."""
     try:
         yield
@@ -42,7 +42,7 @@ def data_get(env, cmd: ast.DataGet, source: Source, where) -> int:
     root = storage_root(env, cmd.target, create=False)
     if cmd.path is None:
         return 1
-    with _world_failures():
+    with world_failures():
         if cmd.scale is None:
             return stores.data_get(root, cmd.path)
         return stores.data_get_scaled(root, cmd.path, cmd.scale)
@@ -50,12 +50,12 @@ def data_get(env, cmd: ast.DataGet, source: Source, where) -> int:
 
 def data_merge(env, cmd: ast.DataMerge, source: Source, where) -> int:
     root = storage_root(env, cmd.target, create=True)
-    with _world_failures():
+    with world_failures():
         return nbt_ops.data_merge(root, cmd.nbt)
 
 
 def data_modify(env, cmd: ast.DataModify, source: Source, where) -> int:
-    with _world_failures():
+    with world_failures():
         values = _source_values(env, cmd.source)
         root = storage_root(env, cmd.target, create=True)
         return nbt_ops.modify(root, cmd.path, cmd.mode, values, cmd.index)
@@ -63,7 +63,7 @@ def data_modify(env, cmd: ast.DataModify, source: Source, where) -> int:
 
 def data_remove(env, cmd: ast.DataRemove, source: Source, where) -> int:
     root = storage_root(env, cmd.target, create=True)
-    with _world_failures():
+    with world_failures():
         return nbt_ops.data_remove(root, cmd.path)
 
 
@@ -91,7 +91,7 @@ def store_data(env, sub: ast.StoreData, source: Source) -> Source:
 
 def count_matching(env, cond: ast.IfData) -> int:
     root = storage_root(env, cond.source, create=False)
-    with _world_failures():
+    with world_failures():
         return nbt_ops.count_matching(root, cond.path)
 
 
@@ -101,7 +101,7 @@ def macro_arguments(env, target: ast.DataTarget, path: ast.NbtPath | None) -> Co
     root = storage_root(env, target, create=False)
     if path is None:
         return root
-    with _world_failures(report=True):
+    with world_failures(report=True):
         found = nbt_ops.get(root, path)
     if len(found) > 1:
         raise CommandFailure("This argument accepts a single NBT value", report=True)

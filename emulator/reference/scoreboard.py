@@ -7,8 +7,10 @@ arithmetic that reports overflows to the sanitizer).
 from __future__ import annotations
 
 from emulator.semantics import floor_div, floor_mod, wrap32
+from emulator.world import server_commands
 from mcfunction_parser import ast
 
+from .data import world_failures
 from .failure import CommandFailure, unknown_objective
 from .holders import holder_names, single_holder
 from .source import Source
@@ -109,15 +111,10 @@ def players_get(env, cmd: ast.ScoreGet, source: Source, where) -> int:
 
 
 def players_enable(env, cmd: ast.ScoreEnable, source: Source, where) -> int:
-    """Scores are not locked in this model: enabling a trigger creates the scores and counts them."""
     names = holder_names(cmd.targets, source, env.state.scoreboard)
     obj = objective(env, cmd.objective)
-    board = env.state.scoreboard
-    if board.criteria[board.objective_ids[obj]] != "trigger":
-        raise CommandFailure("You can only enable trigger-objectives")
-    for name in names:
-        get_or_create(env, name, obj)
-    return len(names)
+    with world_failures():
+        return server_commands.enable_command(env.state, names, obj)
 
 
 def players_list(env, cmd: ast.ScoreList, source: Source, where) -> int:

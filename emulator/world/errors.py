@@ -37,6 +37,14 @@ MESSAGES = {
     "commands.fill.toobig": "Too many blocks in the specified area (maximum {0}, specified {1})",
     "commands.execute.blocks.toobig": "Too many blocks in the specified area (maximum {0}, specified {1})",
     "commands.data.block.invalid": "The target block is not a block entity",
+    "permissions.requires.player": "A player is required to run this command here",
+    "commands.trigger.failed.unprimed": "You cannot trigger this objective yet",
+    "commands.trigger.failed.invalid": "You can only trigger objectives that are 'trigger' type",
+    "commands.scoreboard.players.enable.failed": "Nothing changed. That trigger is already enabled",
+    "commands.scoreboard.players.enable.invalid": "Enable only works on trigger-objectives",
+    "commands.random.error.range_too_large": "The range of the random value must be at most 2147483646",
+    "commands.random.error.range_too_small": "The range of the random value must be at least 2",
+    "commands.random.roll": "{0} rolled {1} (from {2} to {3})",
 }
 
 
