@@ -9,7 +9,7 @@ from emulator.program import Program
 from emulator.state import Scoreboard, WorldState
 
 # operand kinds per opcode, in slot order: h holder, o objective, i int, p pc, f function,
-# c comparison, n name, x host op, m macro call, b flag
+# c comparison, n name, x host op, m macro call, b flag, s selector, d float
 _OPERANDS_OPERATION = "hoho"
 _OPERANDS = {
     vm.OP_CMD: "p", vm.OP_STAGESDONE: "p", vm.OP_SET: "hoi", vm.OP_ADD: "hoi", vm.OP_REMOVE: "hoi",
@@ -17,7 +17,8 @@ _OPERANDS = {
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "ob", vm.OP_STORE: "bho",
     vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_RETIFHAS: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
     vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "x", vm.OP_HOSTSTAGE: "xb", vm.OP_HOSTSTORE: "x",
-    vm.OP_MACRO: "m", vm.OP_TAGSELF: "ib", vm.OP_IFSELF: "ii___bb",
+    vm.OP_MACRO: "m", vm.OP_TAG: "sib", vm.OP_IFENT: "s_____b", vm.OP_ENABLE: "ho", vm.OP_ASSTAGE: "sb",
+    vm.OP_POSSTAGE: "_b", vm.OP_STOREPOS: "ibd",
 }
 _COMPARISON_NAMES = {v: k for k, v in vm.CMP_BY_SYMBOL.items()}
 
@@ -54,7 +55,13 @@ def _instruction(program: Program, scoreboard: Scoreboard, pc: int) -> str:
 
 def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) -> str:
     if kind == "h":
+        if value <= vm.HOLDER_SEL_BASE:
+            return f"sel#{vm.HOLDER_SEL_BASE - value}"
         return "@s" if value == vm.HOLDER_SELF else scoreboard.holders[value]
+    if kind == "s":
+        return f"sel#{value}"
+    if kind == "d":
+        return repr(program.floats[value])
     if kind == "o":
         return scoreboard.objectives[value]
     if kind == "f":

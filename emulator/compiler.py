@@ -1,9 +1,12 @@
 """AST -> bytecode for the numba VM.
 
 What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
-``$y``, player names), ``if|unless score`` on named holders, ``store result|success score`` on
-named holders, ``if|unless function``, function calls and tags, every ``return`` form, and macro
-calls (instantiated by Python on first use). Everything else is a host op run by
+``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.entity_arrays`:
+``@e @a @s`` with type, tag, scores, limit), ``tag SEL add|remove``, ``enable``; ``if|unless
+score`` on named holders and ``@s``, ``if|unless entity SEL``, ``as SEL``, ``store result|success
+score`` on named holders, ``store ... entity @s Pos[i] double S``; ``if|unless function``,
+function calls and tags, every ``return`` form, and macro calls (instantiated by Python on first
+use). Everything else is a host op run by
 :mod:`emulator.host`: a final command (``OP_HOST``: ``say``, ``schedule``, selectors ...), an
 execute stage (``OP_HOSTSTAGE``: ``as``, ``positioned``, ``if entity`` ...; it sets the
 context the rest of the chain runs in) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
@@ -25,9 +28,10 @@ from emulator import vm
 from emulator.program import HostOp, MacroCall, Program
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Condition, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs, Function,
-    FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, Return, Selector, TagCommand,
-    ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData, StoreScore, Subcommand,
+    Command, Condition, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
+    Function, FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey, Return,
+    Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
+    StoreScore, Subcommand,
 )
 from emulator.semantics import INT_MAX, INT_MIN
 
@@ -42,9 +46,9 @@ class Compiler:
     """
 
     def __init__(self, program: Program, scoreboard: Scoreboard, functions: dict[str, Function],
-                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, tag_mirror=None) -> None:
+                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, mirror=None) -> None:
         self.program = program
-        self.tag_mirror = tag_mirror  # emulator.entity_arrays.TagMirror: entity tag bits for @s forms
+        self.mirror = mirror  # emulator.entity_arrays.EntityMirror: selectors, tag bits (None: no entity forms)
         self.sb = scoreboard
         self.functions = functions
         self.resolve_tag = resolve_tag
@@ -90,20 +94,23 @@ class Compiler:
 
     def final(self, cmd: Command) -> None:
         """A command run once per context, charging 1 (rule 3)."""
-        if isinstance(cmd, ScoreSet) and _named(cmd.targets):
-            self.emit(_SET_OPS[cmd.action], self.holder(cmd.targets), self.objective(cmd.objective), cmd.value)
-        elif isinstance(cmd, ScoreReset) and _named(cmd.targets):
+        if isinstance(cmd, ScoreSet) and (h := self.holders(cmd.targets)) is not None:
+            self.emit(_SET_OPS[cmd.action], h, self.objective(cmd.objective), cmd.value)
+        elif isinstance(cmd, ScoreReset) and (h := self.holders(cmd.targets)) is not None:
             if cmd.objective is None:
-                self.emit(vm.OP_RESETALL, self.holder(cmd.targets))
+                self.emit(vm.OP_RESETALL, h)
             else:
-                self.emit(vm.OP_RESET, self.holder(cmd.targets), self.objective(cmd.objective))
+                self.emit(vm.OP_RESET, h, self.objective(cmd.objective))
         elif isinstance(cmd, ScoreGet) and _named(cmd.target):
             self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
-        elif isinstance(cmd, ScoreOperation) and _named(cmd.targets) and _named(cmd.sources):
-            self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], self.holder(cmd.targets),
-                      self.objective(cmd.objective), self.holder(cmd.sources), self.objective(cmd.source_objective))
-        elif isinstance(cmd, TagCommand) and (bit := self.self_tag(cmd)) is not None:
-            self.emit(vm.OP_TAGSELF, bit, int(cmd.action == "add"))
+        elif (isinstance(cmd, ScoreOperation) and (h := self.holders(cmd.targets)) is not None
+              and (h2 := self.holders(cmd.sources)) is not None):
+            self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], h, self.objective(cmd.objective), h2,
+                      self.objective(cmd.source_objective))
+        elif isinstance(cmd, ScoreEnable) and (h := self.holders(cmd.targets)) is not None:
+            self.emit(vm.OP_ENABLE, h, self.objective(cmd.objective))
+        elif isinstance(cmd, TagCommand) and (tag := self.tag_operands(cmd)) is not None:
+            self.emit(vm.OP_TAG, tag[0], tag[1], int(cmd.action == "add"))
         else:
             self.host(vm.OP_HOST, cmd)
 
@@ -125,8 +132,13 @@ class Compiler:
             forked = forked or isinstance(st, _FORKS)
             if isinstance(st, (IfScoreMatches, IfScore)) and not _vm_condition(st):
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
-            elif isinstance(st, IfEntity) and (masks := self.self_tags_test(st)) is not None:
-                self.emit(vm.OP_IFSELF, masks[0], masks[1], 0, 0, 0, int(st.negated), int(last))
+            elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
+                self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
+            elif isinstance(st, ExAs) and not last and (sel := self.selector(st.targets)) is not None:
+                self.emit(vm.OP_ASSTAGE, sel, int(forked))
+            elif (axis := _position_store(st)) is not None and _context_kept(stages[i + 1:], final):
+                self.emit(vm.OP_POSSTAGE, 0, int(forked))
+                stores.append(_PositionStore(st, axis))
             elif isinstance(st, IfScoreMatches):
                 lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
                 hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
@@ -170,7 +182,10 @@ class Compiler:
     def stores(self, stores: list) -> None:
         """Apply the chain's stores to the result, in the order written (callbacks chain so)."""
         for st in stores:
-            if isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
+            if isinstance(st, _PositionStore):
+                self.emit(vm.OP_STOREPOS, st.axis, 0 if st.node.kind == "result" else 1,
+                          self.program.intern_float(st.node.scale))
+            elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
                 self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
                           self.objective(st.objective))
             else:
@@ -262,25 +277,17 @@ class Compiler:
         self.emit(vm.OP_FAIL, vm.ERR_UNKNOWN_FUNCTION, self.name(function), 0, int(abort))
         return None
 
-    # ------------------------------------------------------------------ entity tags of @s
-    def self_tag(self, cmd: TagCommand) -> int | None:
-        """The tag bit of ``tag @s add|remove T`` when the VM can run it, else None."""
-        if self.tag_mirror is None or cmd.action not in ("add", "remove") or not _bare_self(cmd.targets):
-            return None
-        return self.tag_mirror.bit(cmd.name)
+    # ------------------------------------------------------------------ entities
+    def selector(self, target) -> int | None:
+        """The selector row of ``target`` when the VM evaluates it, else None."""
+        return None if self.mirror is None else self.mirror.selector(target)
 
-    def self_tags_test(self, st: IfEntity) -> tuple[int, int] | None:
-        """(required, forbidden) tag masks of ``if entity @s[tag=A,tag=!B ...]``, else None."""
-        target = st.targets
-        if self.tag_mirror is None or not isinstance(target, Selector) or target.variable != "s":
+    def tag_operands(self, cmd: TagCommand) -> tuple[int, int] | None:
+        """(selector, tag bit) of ``tag SEL add|remove T`` when the VM can run it, else None."""
+        if cmd.action not in ("add", "remove") or (sel := self.selector(cmd.targets)) is None:
             return None
-        masks = [0, 0]
-        for arg in target.args:
-            bit = self.tag_mirror.bit(arg.value) if arg.key == "tag" and arg.value else None
-            if bit is None:  # another argument, `tag=` (no tags), or the table is full
-                return None
-            masks[int(arg.negated)] |= 1 << bit
-        return masks[0], masks[1]
+        bit = self.mirror.bit(cmd.name)
+        return None if bit is None else (sel, bit)
 
     # ------------------------------------------------------------------ names
     def holder(self, target) -> int:
@@ -288,6 +295,13 @@ class Compiler:
         if isinstance(target, Selector):
             return vm.HOLDER_SELF
         return self.sb.holder_id(target.name)
+
+    def holders(self, target) -> int | None:
+        """The holder operand of a name, ``@s`` or a selector the VM evaluates; None for the host."""
+        if _named(target):
+            return self.holder(target)
+        sel = self.selector(target)
+        return None if sel is None else vm.HOLDER_SEL_BASE - sel
 
     def objective(self, name: str) -> int:
         return self.sb.objective_id(name)
@@ -300,6 +314,32 @@ class Compiler:
 _FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)  # `summon` redirects
 # Stages that can make several contexts: their chains collect the contexts before the final command
 _MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
+
+
+class _PositionStore:
+    """A ``store ... entity @s Pos[axis] double S`` the VM runs (see :func:`_position_store`)."""
+
+    def __init__(self, node: StoreData, axis: int) -> None:
+        self.node = node
+        self.axis = axis
+
+
+def _position_store(st) -> int | None:
+    """The axis of ``store result|success entity @s Pos[0|1|2] double S``, else None."""
+    if not (isinstance(st, StoreData) and isinstance(st.target, EntityData) and _bare_self(st.target.target)
+            and st.type == "double"):
+        return None
+    nodes = st.path.nodes
+    if len(nodes) == 2 and nodes[0] == PathKey("Pos") and isinstance(nodes[1], PathIndex) and nodes[1].index in (0, 1, 2):
+        return nodes[1].index
+    return None
+
+
+def _context_kept(later: list[Subcommand], final) -> bool:
+    """No later stage (nor a ``return run`` chain) changes the executor: a store resolved at its
+    stage writes to the entity the chain ends with."""
+    return all(isinstance(st, (Condition, StoreScore, StoreData, StoreBossbar)) for st in later) and not (
+        isinstance(final, Return) and final.kind == "run")
 
 
 def _bare_self(target) -> bool:

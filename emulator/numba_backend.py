@@ -13,7 +13,7 @@ import numpy as np
 from emulator import vm, world_entities
 from emulator.backend import RootResult, report_quota_cut
 from emulator.compiler import Compiler
-from emulator.entity_arrays import TagMirror
+from emulator.entity_arrays import EntityMirror
 from emulator.host import Host, StoreTarget, resolves_target
 from emulator.program import Program
 from emulator.reference.failure import CommandFailure
@@ -55,9 +55,9 @@ class NumbaBackend:
         self.state = state
         self.sanitize = sanitize
         self.program = Program()
-        self.tag_mirror = TagMirror()
+        self.mirror = EntityMirror(state.scoreboard)
         self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
-                                 self.tag_mirror)
+                                 self.mirror)
         self.compiler.compile_all()
         self.macros = MacroExpander(packs.version)
         self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
@@ -72,6 +72,8 @@ class NumbaBackend:
         self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
         self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
         self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
+        self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
+        self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
         self.context_ids: dict[tuple, int] = {}
         # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
         # writes to what its stage resolved, whatever context the chain ends in
@@ -83,6 +85,7 @@ class NumbaBackend:
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
+        self.mirror.invalidate()  # the API may have changed entities between roots
         self.contexts = []
         self.context_ids = {}
         self.bindings = []
@@ -120,14 +123,17 @@ class NumbaBackend:
         """Run the VM until the root is done; True when the quota (or the depth cap) cut it."""
         sb = self.state.scoreboard
         r = self.regs
+        mirror = self.mirror
         while True:
-            code, starts = self.program.arrays()
+            code, starts, floats = self.program.arrays()
             self._fit_counters(code.shape[0], starts.shape[0])
-            mirror = self.tag_mirror
-            mirror.load(self.state.tags_version)
-            status = vm.run(code, starts, r, self.frames, sb.values, sb.present, sb.alive, self.counts,
-                            self.totals, self.active, self.ovf, self.ctx_holder, self.ctx_entity, mirror.tags,
-                            mirror.dirty)
+            if mirror.stale:
+                self._load_entities()
+            sels, tests = mirror.selector_arrays()
+            status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
+                            self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
+                            self.ctx_entity, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
+                            self.selbuf)
             mirror.store()
             if status == vm.ST_DONE:
                 self.returned = True  # the root function came back (a cut may still be logged)
@@ -141,7 +147,12 @@ class NumbaBackend:
                 report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
                 return True
             if status == vm.ST_HOST:
-                self._host_guarded(int(r[vm.R_PC]))
+                pc = int(r[vm.R_PC])
+                self._host_guarded(pc)
+                if self._may_change_entities(pc):
+                    mirror.invalidate()
+            elif status == vm.ST_FORK:
+                self._as_contexts()
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_NEXTCTX:
@@ -153,11 +164,29 @@ class NumbaBackend:
             elif status == vm.ST_ERROR:
                 self._runtime_error()
             elif status == vm.ST_FLUSH:
+                if not r[vm.R_NOVF]:  # one command reports more than the buffer holds
+                    self.ovf = vm.new_overflow_buffer(4 * self.ovf.shape[0])
                 self._flush_overflows()
             elif status == vm.ST_GROW:
                 if not self._grow():
                     self._close_frames()
                     return True
+
+    def _load_entities(self) -> None:
+        """Rebuild the entity arrays (and what else Python may have changed: trigger objectives)."""
+        sb = self.state.scoreboard
+        self.mirror.load(self.state)  # interns the entities' holders: may grow the scoreboard
+        need = 2 * self.mirror.order.shape[0] + 2
+        if self.selbuf.shape[0] < need:
+            self.selbuf = np.zeros(2 * need, dtype=np.int64)
+        self.triggers = np.zeros(sb.alive.shape[0], dtype=np.uint8)
+        self.triggers[:len(sb.criteria)] = [c == "trigger" for c in sb.criteria]
+
+    def _may_change_entities(self, pc: int) -> bool:
+        """A host op that may change entities or objectives: any final command or store; of the
+        stages, ``summon`` (the others only read them)."""
+        row = self.program.rows[pc]
+        return row[0] != vm.OP_HOSTSTAGE or isinstance(self.program.host_ops[row[1]].node, ast.ExSummon)
 
     def _fit_counters(self, n_code: int, n_functions: int) -> None:
         """Grow the per-instruction and per-function counters with the program (macro instances)."""
@@ -222,8 +251,8 @@ class NumbaBackend:
             entity = world_entities.executor(self.state, ctx)
             self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
             self.ctx_entity[index] = -1 if entity is None else entity.order
-            if entity is not None:
-                self.tag_mirror.track(entity)
+            if entity is not None and entity.order not in self.mirror.entities:
+                self.mirror.invalidate()  # an executor the arrays do not hold yet (the API's as_=)
         return index
 
     def _bind(self, index: int, node, target: StoreTarget) -> tuple:
@@ -279,6 +308,19 @@ class NumbaBackend:
             self.collected.pop(depth, None)
             r[vm.R_LOOP] = vm.LOOP_FORKED
         r[vm.R_CTX] = contexts[0]
+
+    def _as_contexts(self) -> None:
+        """``execute as SEL`` run by the VM: a context per entity it found (``selbuf[:R_NSEL]``)."""
+        r = self.regs
+        index = int(r[vm.R_CTX])
+        ctx, bindings = self.contexts[index], self.bindings[index]
+        entity = self.mirror.entity
+        made = [self._context_index(world_entities.context_as(self.state, ctx, entity(slot)), bindings)
+                for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist()]
+        if len(made) == 1:
+            r[vm.R_CTX] = made[0]
+        else:
+            self._fork(made)
 
     def _repeat(self) -> None:
         """``if function``: the isolated call's callback added this context once per return (each

@@ -43,6 +43,7 @@ class Program:
     host_ops: list[HostOp] = field(default_factory=list)
     macro_calls: list[MacroCall] = field(default_factory=list)
     names: list[str] = field(default_factory=list)  # operands of OP_FAIL (missing function ids)
+    floats: list[float] = field(default_factory=list)  # float operands (store scales), by index
     _arrays: tuple | None = None
 
     ROOT_PC = 0  # the root stub: CALLREG then HALT
@@ -87,13 +88,19 @@ class Program:
         self.names.append(name)
         return len(self.names) - 1
 
+    def intern_float(self, value: float) -> int:
+        self.floats.append(float(value))
+        self._arrays = None
+        return len(self.floats) - 1
+
     # ------------------------------------------------------------------ for the VM
-    def arrays(self) -> tuple[np.ndarray, np.ndarray]:
-        """``(code int32[n, WIDTH], func_start int64[functions])``."""
+    def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(code int32[n, WIDTH], func_start int64[functions], floats float64[k])``."""
         if self._arrays is None:
             code = np.array(self.rows, dtype=np.int32).reshape(-1, WIDTH)
             starts = np.array(self.starts, dtype=np.int64)
-            self._arrays = (code, starts)
+            floats = np.array(self.floats or [0.0], dtype=np.float64)
+            self._arrays = (code, starts, floats)
         return self._arrays
 
     def function_of(self, pc: int) -> str:

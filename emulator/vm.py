@@ -31,23 +31,26 @@ from numba import njit
 WIDTH = 8
 
 # ---------------------------------------------------------------- opcodes
-# A holder operand naming the executor (`@s`): ctx_holder[ctx] is its holder id, -1 for the server
-# (the command fails, or a condition stage drops the context: "No entity was found")
+# Holder operands: >= 0 a holder id; HOLDER_SELF the executor (`@s`): ctx_holder[ctx] is its holder
+# id, -1 for the server (the command fails, or a condition stage drops the context: "No entity was
+# found"); <= HOLDER_SEL_BASE the holders of selector HOLDER_SEL_BASE - operand (see entity_arrays)
 HOLDER_SELF = -2
+HOLDER_SEL_BASE = -3
 
 OP_HALT = 0  # root finished: return ST_DONE
 OP_CMD = 1  # a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
 OP_ENDCMD = 2  # alive = 1 (after a chain with conditions)
 OP_CONT = 3  # a continuation entry (after `if function`): the entry check
 OP_STAGESDONE = 4  # a: the chain's ENDCMD. After a fork, Python keeps this context for the final command
-OP_SET = 10  # a: holder, b: objective, c: value
-OP_ADD = 11  # a h, b o, c value
-OP_REMOVE = 12  # a h, b o, c value
-OP_RESET = 13  # a h, b o
-OP_RESETALL = 14  # a h
-OP_GET = 15  # a h, b o
-OP_TAGSELF = 16  # a: tag bit, b: 1 add / 0 remove. `tag @s add|remove T` (fails when nothing changes)
-OP_IFSELF = 17  # a: required tag bits, b: forbidden tag bits, f negated, g final. `if entity @s[tag=..]`
+OP_SET = 10  # a: holders, b: objective, c: value
+OP_ADD = 11  # a holders, b o, c value
+OP_REMOVE = 12  # a holders, b o, c value
+OP_RESET = 13  # a holders, b o
+OP_RESETALL = 14  # a holders
+OP_GET = 15  # a h (a name or @s), b o
+OP_TAG = 16  # a: selector, b: tag bit, c: 1 add / 0 remove. `tag SEL add|remove T` (fails when nothing changes)
+OP_IFENT = 17  # a: selector, f negated, g final. `if|unless entity SEL`
+OP_ENABLE = 18  # a: holders, b: objective. `scoreboard players enable`
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
 OP_CHKOBJ = 22  # a o, b forked: the `store ... score` stage: fails if o does not exist
@@ -79,6 +82,9 @@ OP_HOST = 50  # a: host op index. A final command run by Python (charged here, p
 OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
 OP_HOSTSTAGE = 52  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_ASSTAGE = 54  # a: selector, b forked. `execute as SEL`: one context per entity (ST_FORK: Python makes them)
+OP_POSSTAGE = 55  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
+OP_STOREPOS = 56  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
 OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 
 # operations: opcode OP_OPER_BASE + OPK_*
@@ -96,13 +102,13 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET = range(15, 21)
-N_REGS = 21
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL = range(15, 22)
+N_REGS = 22
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP = range(10)
 F_WIDTH = 10
 
-ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX, ST_COLLECT, ST_REPEAT = range(10)
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX, ST_COLLECT, ST_REPEAT, ST_FORK = range(11)
 
 # R_LOOP: no fork in this command; forked, first pass; re-entered for a later context (its stages
 # were charged on the first pass)
@@ -111,6 +117,20 @@ LOOP_NONE, LOOP_FORKED, LOOP_REENTERED = range(3)
 ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS, ERR_FORK_LIMIT = range(1, 7)
 
 OVF_WIDTH = 5  # pc, op kind, a, b, exact
+
+# ---------------------------------------------------------------- entities (emulator.entity_arrays)
+# ent[slot]: type id, tag bits, score holder id; slot = Entity.order. dirty[slot]: what the VM changed
+ENT_WIDTH = 3
+E_TYPE, E_TAGS, E_HOLDER = range(ENT_WIDTH)
+DIRTY_TAGS, DIRTY_POS = 1, 2
+PLAYER_TYPE = 0
+# selector rows: kind (@e/@a/@s), required and forbidden tag bits, limit, its tests (first, count);
+# a test row: [TEST_SCORE, objective, lo, hi] or [TEST_TYPE, type id, negated, 0]
+SEL_WIDTH = 6
+S_KIND, S_REQUIRED, S_FORBIDDEN, S_LIMIT, S_TESTS, S_NTESTS = range(SEL_WIDTH)
+KIND_E, KIND_A, KIND_S = range(3)
+TEST_SCORE, TEST_TYPE = range(2)
+POS_LIMIT_XZ, POS_LIMIT_Y = 3.0000512e7, 2.0e7  # Entity.load clamps positions to these
 
 
 @njit(cache=True, inline="always")
@@ -124,8 +144,75 @@ def _overflowed(x):
 
 
 @njit(cache=True)
-def run(code, func_start, regs, frames, values, present, alive_obj, counts, totals, active, ovf, ctx_holder,
-        ctx_entity, ent_tags, ent_dirty):
+def _matches(sel, slot, sels, tests, ent, values, present, alive_obj):
+    """EntitySelector's predicate for one entity (tags, @a's player test, type and score tests)."""
+    tags = ent[slot, E_TAGS]
+    if (tags & sels[sel, S_REQUIRED]) != sels[sel, S_REQUIRED] or (tags & sels[sel, S_FORBIDDEN]) != 0:
+        return False
+    if sels[sel, S_KIND] == KIND_A and ent[slot, E_TYPE] != PLAYER_TYPE:
+        return False
+    first = sels[sel, S_TESTS]
+    for t in range(first, first + sels[sel, S_NTESTS]):
+        if tests[t, 0] == TEST_TYPE:
+            if (ent[slot, E_TYPE] == tests[t, 1]) == (tests[t, 2] != 0):
+                return False
+        else:
+            o = tests[t, 1]
+            h = ent[slot, E_HOLDER]
+            if alive_obj[o] == 0 or present[h, o] == 0 or values[h, o] < tests[t, 2] or values[h, o] > tests[t, 3]:
+                return False
+    return True
+
+
+@njit(cache=True)
+def _select(sel, self_slot, sels, tests, ent, order, values, present, alive_obj, out, off):
+    """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server), written to
+    ``out[off:]`` in the game's order (unsorted: the store's order, cut at the limit); their count."""
+    if sels[sel, S_KIND] == KIND_S:
+        if self_slot >= 0 and _matches(sel, self_slot, sels, tests, ent, values, present, alive_obj):
+            out[off] = self_slot
+            return 1
+        return 0
+    n = 0
+    limit = sels[sel, S_LIMIT]
+    for i in range(order.shape[0]):
+        slot = order[i]
+        if _matches(sel, slot, sels, tests, ent, values, present, alive_obj):
+            out[off + n] = slot
+            n += 1
+            if n >= limit:
+                break
+    return n
+
+
+@njit(cache=True, inline="always")
+def _holders(h, ctx, ctx_holder, ctx_entity, sels, tests, ent, order, values, present, alive_obj, out, off):
+    """ScoreHolderArgument: the holder ids operand ``h`` names, written to ``out[off:]``; their count
+    (0: "No entity was found", the command fails)."""
+    if h >= 0:
+        out[off] = h
+        return 1
+    if h == HOLDER_SELF:
+        if ctx_holder[ctx] < 0:
+            return 0
+        out[off] = ctx_holder[ctx]
+        return 1
+    n = _select(HOLDER_SEL_BASE - h, ctx_entity[ctx], sels, tests, ent, order, values, present, alive_obj, out, off)
+    for i in range(off, off + n):
+        out[i] = ent[out[i], E_HOLDER]
+    return n
+
+
+@njit(cache=True, inline="always")
+def _clamp_pos(v, limit):
+    """``max(-limit, min(v, limit))`` as Python evaluates it (the host's clamp; NaN gives -limit)."""
+    t = limit if limit < v else v
+    return t if t > -limit else -limit
+
+
+@njit(cache=True)
+def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, trig, counts, totals, active, ovf,
+        ctx_holder, ctx_entity, sels, tests, ent, epos, edirty, eorder, selbuf):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -165,84 +252,86 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             if quota <= 0:
                 status = ST_CUT
                 break
+            o = code[pc, 2]
+            o2 = code[pc, 4]
+            nt = _holders(code[pc, 1], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
+                          alive_obj, selbuf, 0)
+            ns = _holders(code[pc, 3], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
+                          alive_obj, selbuf, nt)
+            if sanitize and novf + nt * ns > ovf.shape[0]:  # room for every report first: runs again after
+                status = ST_FLUSH
+                break
             quota -= 1
             if counting:
                 counts[pc] += 1
-            h = code[pc, 1]
-            o = code[pc, 2]
-            h2 = code[pc, 3]
-            o2 = code[pc, 4]
+            has = 1
+            ok = 0
+            val = 0
+            pc += 1
+            # the game's argument order: targets, target objective, sources, source objective
+            if nt == 0 or (alive_obj[o] != 0 and ns == 0):
+                continue
             if alive_obj[o] == 0 or alive_obj[o2] == 0:
-                has = 1
-                ok = 0
-                val = 0
                 err = ERR_UNKNOWN_OBJECTIVE
                 errarg = o if alive_obj[o] == 0 else o2
-                pc += 1
                 status = ST_ERROR
                 break
-            if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
-            if h2 == HOLDER_SELF:
-                h2 = ctx_holder[ctx]
-            if h < 0 or h2 < 0:  # @s run by the server
-                has = 1
-                ok = 0
-                val = 0
-                pc += 1
-                continue
-            # get-or-create: target first, then source (ScoreboardCommand.performOperation)
-            if present[h, o] == 0:
-                values[h, o] = 0
-                present[h, o] = 1
-            if present[h2, o2] == 0:
-                values[h2, o2] = 0
-                present[h2, o2] = 1
-            a = np.int64(values[h, o])
-            b = np.int64(values[h2, o2])
             k = op - OP_OPER_BASE
-            if k == OPK_ADD:
-                r = a + b
-            elif k == OPK_SUB:
-                r = a - b
-            elif k == OPK_MUL:
-                r = a * b
-            elif k == OPK_ASSIGN:
-                r = b
-            elif k == OPK_DIV or k == OPK_MOD:
-                if b == 0:
-                    has = 1
-                    ok = 0
-                    val = 0
-                    err = ERR_DIV_ZERO
-                    errarg = 0
-                    pc += 1
-                    status = ST_ERROR
+            total = np.int64(0)
+            failed = False
+            for i in range(nt):
+                h = selbuf[i]
+                if present[h, o] == 0:  # get-or-create: the target first, then each source
+                    values[h, o] = 0
+                    present[h, o] = 1
+                for j in range(nt, nt + ns):
+                    h2 = selbuf[j]
+                    if present[h2, o2] == 0:
+                        values[h2, o2] = 0
+                        present[h2, o2] = 1
+                    a = np.int64(values[h, o])
+                    b = np.int64(values[h2, o2])
+                    if k == OPK_ADD:
+                        r = a + b
+                    elif k == OPK_SUB:
+                        r = a - b
+                    elif k == OPK_MUL:
+                        r = a * b
+                    elif k == OPK_ASSIGN:
+                        r = b
+                    elif k == OPK_DIV or k == OPK_MOD:
+                        if b == 0:
+                            failed = True
+                            break
+                        r = a // b if k == OPK_DIV else a % b
+                    elif k == OPK_MIN:
+                        r = a if a < b else b
+                    elif k == OPK_MAX:
+                        r = a if a > b else b
+                    else:  # swap
+                        values[h2, o2] = a
+                        r = b
+                    values[h, o] = _wrap(r)
+                    if sanitize and _overflowed(r):
+                        ovf[novf, 0] = ipc
+                        ovf[novf, 1] = k
+                        ovf[novf, 2] = a
+                        ovf[novf, 3] = b
+                        ovf[novf, 4] = r
+                        novf += 1
+                if failed:
                     break
-                r = a // b if k == OPK_DIV else a % b
-            elif k == OPK_MIN:
-                r = a if a < b else b
-            elif k == OPK_MAX:
-                r = a if a > b else b
-            else:  # swap
-                values[h2, o2] = a
-                r = b
-            nv = _wrap(r)
-            values[h, o] = nv
-            has = 1
+                total += values[h, o]
+            if failed:
+                err = ERR_DIV_ZERO
+                errarg = 0
+                status = ST_ERROR
+                break
             ok = 1
-            val = nv
-            pc += 1
-            if sanitize and _overflowed(r):
-                ovf[novf, 0] = ipc
-                ovf[novf, 1] = k
-                ovf[novf, 2] = a
-                ovf[novf, 3] = b
-                ovf[novf, 4] = r
-                novf += 1
-                if novf >= ovf.shape[0]:
-                    status = ST_FLUSH
-                    break
+            val = _wrap(total)
+            if sanitize and novf >= ovf.shape[0]:
+                status = ST_FLUSH
+                break
         elif op == OP_ADD or op == OP_REMOVE or op == OP_SET:
             if alive == 0:
                 pc += 1
@@ -250,119 +339,136 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
             if quota <= 0:
                 status = ST_CUT
                 break
+            n = _holders(code[pc, 1], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
+                         alive_obj, selbuf, 0)
+            if sanitize and novf + n > ovf.shape[0]:
+                status = ST_FLUSH
+                break
             quota -= 1
             if counting:
                 counts[pc] += 1
-            h = code[pc, 1]
             o = code[pc, 2]
-            if alive_obj[o] == 0:
-                has = 1
-                ok = 0
-                val = 0
-                err = ERR_UNKNOWN_OBJECTIVE
-                errarg = o
-                pc += 1
-                status = ST_ERROR
-                break
-            if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
-            if h < 0:  # @s run by the server
-                has = 1
-                ok = 0
-                val = 0
-                pc += 1
-                continue
-            d = np.int64(code[pc, 3])
-            old = np.int64(0)
-            if op == OP_SET:
-                exact = d
-            else:
-                old = np.int64(values[h, o]) if present[h, o] else np.int64(0)
-                exact = old + d if op == OP_ADD else old - d
-            nv = _wrap(exact)
-            values[h, o] = nv
-            present[h, o] = 1
-            has = 1
-            ok = 1
-            val = nv
-            pc += 1
-            if sanitize and _overflowed(exact):
-                ovf[novf, 0] = ipc
-                ovf[novf, 1] = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
-                ovf[novf, 2] = old
-                ovf[novf, 3] = d
-                ovf[novf, 4] = exact
-                novf += 1
-                if novf >= ovf.shape[0]:
-                    status = ST_FLUSH
-                    break
-        elif op == OP_GET or op == OP_RESET or op == OP_RESETALL:
-            if alive == 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            h = code[pc, 1]
-            if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
-            has = 1
-            ok = 1
-            val = 1
-            pc += 1
-            if h < 0:  # @s run by the server
-                ok = 0
-                val = 0
-                continue
-            if op == OP_RESETALL:
-                present[h, :] = 0
-                continue
-            o = code[pc - 1, 2]
-            if alive_obj[o] == 0:
-                ok = 0
-                val = 0
-                err = ERR_UNKNOWN_OBJECTIVE
-                errarg = o
-                status = ST_ERROR
-                break
-            if op == OP_RESET:
-                present[h, o] = 0
-            elif present[h, o]:
-                val = values[h, o]
-            else:
-                ok = 0
-                val = 0
-        elif op == OP_TAGSELF:
-            if alive == 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            e = ctx_entity[ctx]
             has = 1
             ok = 0
             val = 0
-            if e >= 0:
-                m = np.int64(1) << code[pc, 1]
-                had = (ent_tags[e] & m) != 0
-                if code[pc, 2] and not had:
-                    ent_tags[e] |= m
-                    ok = 1
-                elif not code[pc, 2] and had:
-                    ent_tags[e] &= ~m
-                    ok = 1
-                if ok:
-                    val = 1
-                    ent_dirty[e] = 1
             pc += 1
-        elif op == OP_IFSELF:
+            if n == 0:  # "No entity was found"
+                continue
+            if alive_obj[o] == 0:
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                status = ST_ERROR
+                break
+            d = np.int64(code[ipc, 3])
+            total = np.int64(0)
+            for i in range(n):
+                h = selbuf[i]
+                old = np.int64(0)
+                if op == OP_SET:
+                    exact = d
+                else:
+                    old = np.int64(values[h, o]) if present[h, o] else np.int64(0)
+                    exact = old + d if op == OP_ADD else old - d
+                nv = _wrap(exact)
+                values[h, o] = nv
+                present[h, o] = 1
+                total += nv
+                if sanitize and _overflowed(exact):
+                    ovf[novf, 0] = ipc
+                    ovf[novf, 1] = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
+                    ovf[novf, 2] = old
+                    ovf[novf, 3] = d
+                    ovf[novf, 4] = exact
+                    novf += 1
+            ok = 1
+            val = _wrap(d * n) if op == OP_SET else _wrap(total)
+            if sanitize and novf >= ovf.shape[0]:
+                status = ST_FLUSH
+                break
+        elif op == OP_GET or op == OP_RESET or op == OP_RESETALL or op == OP_ENABLE:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            n = _holders(code[pc, 1], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
+                         alive_obj, selbuf, 0)
+            o = code[pc, 2]
+            has = 1
+            ok = 0
+            val = 0
+            pc += 1
+            if n == 0:  # @s run by the server, a selector finding nothing
+                continue
+            if op != OP_RESETALL and alive_obj[o] == 0:
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                status = ST_ERROR
+                break
+            if op == OP_GET:
+                h = selbuf[0]
+                if present[h, o]:
+                    ok = 1
+                    val = values[h, o]
+                continue
+            if op == OP_ENABLE:
+                if trig[o] == 0:  # "You can only enable trigger-objectives"
+                    continue
+                unlocked = 0
+                for i in range(n):  # get-or-create (0), then unlock: the count of scores unlocked
+                    h = selbuf[i]
+                    if present[h, o] == 0:
+                        values[h, o] = 0
+                        present[h, o] = 1
+                    if locked[h, o]:
+                        locked[h, o] = 0
+                        unlocked += 1
+                ok = 1 if unlocked else 0
+                val = unlocked
+                continue
+            for i in range(n):  # reset: an unset score is locked again
+                h = selbuf[i]
+                if op == OP_RESETALL:
+                    present[h, :] = 0
+                    locked[h, :] = 1
+                else:
+                    present[h, o] = 0
+                    locked[h, o] = 1
+            ok = 1
+            val = n
+        elif op == OP_TAG:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+            m = np.int64(1) << code[pc, 2]
+            changed = 0
+            for i in range(n):
+                e = selbuf[i]
+                had = (ent[e, E_TAGS] & m) != 0
+                if code[pc, 3] != 0 and not had:
+                    ent[e, E_TAGS] |= m
+                elif code[pc, 3] == 0 and had:
+                    ent[e, E_TAGS] &= ~m
+                else:
+                    continue
+                changed += 1
+                edirty[e] |= DIRTY_TAGS
+            has = 1
+            ok = 1 if changed else 0
+            val = changed
+            pc += 1
+        elif op == OP_IFENT:
             final = code[pc, 7]
             if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
                 quota -= 1
@@ -378,14 +484,12 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 quota -= 1
                 if counting:
                     counts[pc] += 1
-            e = ctx_entity[ctx]
-            passed = e >= 0 and (ent_tags[e] & code[pc, 1]) == code[pc, 1] and (ent_tags[e] & code[pc, 2]) == 0
-            if code[pc, 6]:
-                passed = not passed
-            if final:
+            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+            passed = (n > 0) != (code[pc, 6] != 0)
+            if final:  # `if` counts the entities, `unless` gives 1
                 has = 1
                 ok = 1 if passed else 0
-                val = 1 if passed else 0
+                val = 0 if not passed else (1 if code[pc, 6] else n)
             elif not passed:
                 alive = 0
             elif forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
@@ -395,6 +499,55 @@ def run(code, func_start, regs, frames, values, present, alive_obj, counts, tota
                 pc = abort
                 status = ST_ERROR
                 break
+            pc += 1
+        elif op == OP_ASSTAGE:
+            if loop != LOOP_REENTERED:
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            if alive == 0:
+                pc += 1
+                continue
+            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+            pc += 1
+            if n == 0:
+                alive = 0
+            elif n >= forklimit:  # BuildContexts' fork limit
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                alive = 0
+                pc = abort
+                status = ST_ERROR
+                break
+            else:  # Python makes the contexts of selbuf[:n] (and forks if several)
+                regs[R_NSEL] = n
+                status = ST_FORK
+                break
+        elif op == OP_POSSTAGE:
+            if loop != LOOP_REENTERED:
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            if alive and ctx_entity[ctx] < 0:  # "No entity was found": the command, or this context, fails
+                alive = 0
+                pc = pc + 1 if code[pc, 2] else abort
+                continue
+            if alive and forklimit <= 1:
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                alive = 0
+                pc = abort
+                status = ST_ERROR
+                break
+            pc += 1
+        elif op == OP_STOREPOS:
+            e = ctx_entity[ctx]
+            if alive and has and e >= 0 and ent[e, E_TYPE] != PLAYER_TYPE:  # a player's data cannot be modified
+                stored = (val if ok else 0) if code[pc, 2] == 0 else ok
+                axis = code[pc, 1]
+                epos[e, axis] = _clamp_pos(np.float64(stored) * floats[code[pc, 3]],
+                                           POS_LIMIT_Y if axis == 1 else POS_LIMIT_XZ)
+                edirty[e] |= DIRTY_POS
             pc += 1
         elif op == OP_CMD:
             if quota <= 0:
