@@ -33,6 +33,7 @@ import numpy as np
 
 from emulator.world.blocks import BlockMap
 from emulator.world.entities import EntityStore
+from emulator.world.hash_order import OpenHashKeys
 from emulator.world.random_sequences import RandomSequences
 from mcfunction_parser.diagnostics import Loc
 
@@ -57,6 +58,9 @@ class Scoreboard:
         self.present = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
         self.locked = np.ones((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
         self.alive = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
+        # the game's holder map (Scoreboard.playerScores) for the order of ``*``: see tracked_holders
+        self.tracked = OpenHashKeys(16, 0.5)
+        self._kept_empty: set[str] = set()  # tracked holders whose last score went with its objective
 
     # ------------------------------------------------------------------ interning
     def holder_id(self, name: str) -> int:
@@ -119,9 +123,13 @@ class Scoreboard:
         if not self.exists(name):
             return False
         oid = self.objective_ids[name]
+        n = len(self.holders)
+        had = np.flatnonzero(self.present[:n, oid])
         self.alive[oid] = 0
         self.present[:, oid] = 0
         self.locked[:, oid] = 1
+        # Scoreboard.removeObjective empties PlayerScores but keeps the holders in the map
+        self._kept_empty.update(self.holders[h] for h in had if not self.present[h].any())
         return True
 
     def is_writable(self, objective: str) -> bool:
@@ -146,6 +154,8 @@ class Scoreboard:
         oid = self.objective_ids[objective]
         self.values[hid, oid] = value
         self.present[hid, oid] = 1
+        self.tracked.add(holder)  # getOrCreatePlayerInfo
+        self._kept_empty.discard(holder)
 
     def reset(self, holder: str, objective: str | None = None) -> None:
         """Unset one score, or every score of the holder when ``objective`` is None."""
@@ -159,6 +169,10 @@ class Scoreboard:
             oid = self.objective_ids[objective]
             self.present[hid, oid] = 0
             self.locked[hid, oid] = 1
+        # resetAllPlayerScores drops the holder; resetSinglePlayerScore once it has no score left
+        if objective is None or not self.present[hid].any():
+            self.tracked.remove(holder)
+            self._kept_empty.discard(holder)
 
     def enable(self, holder: str, objective: str) -> bool:
         """``scoreboard players enable`` for one holder: get-or-create the score (0) and unlock
@@ -180,11 +194,24 @@ class Scoreboard:
         self.locked[self.holder_ids[holder], self.objective_ids[objective]] = 1
 
     def tracked_holders(self) -> list[str]:
-        """Holders with a score in any existing objective, in interning order: what ``*`` names
-        (Scoreboard.getTrackedPlayers)."""
-        n, m = len(self.holders), len(self.objectives)
-        rows = (self.present[:n, :m] & self.alive[:m]).any(axis=1)
-        return [self.holders[h] for h in np.flatnonzero(rows)]
+        """What ``*`` names (Scoreboard.getTrackedPlayers): the holders of the game's score map in
+        its hash order (:mod:`emulator.world.hash_order`), those whose scores went with a removed
+        objective included.
+
+        Python code changes scores through :meth:`set`/:meth:`reset`, which replay the map exactly.
+        The VM writes ``present`` directly, so the map is first brought up to date: holders the VM
+        emptied leave it, holders it gave a first score join it in interning order (in the game,
+        in the order of their first score; the two differ only for holders that collide in the
+        table and were created between two uses of ``*``)."""
+        n = len(self.holders)
+        rows = self.present[:n].any(axis=1)
+        for name in self.tracked.keys():
+            if not rows[self.holder_ids[name]] and name not in self._kept_empty:
+                self.tracked.remove(name)
+        for h in np.flatnonzero(rows):
+            self.tracked.add(self.holders[h])
+            self._kept_empty.discard(self.holders[h])
+        return self.tracked.keys()
 
     def scores(self) -> dict[str, dict[str, int]]:
         """``{objective: {holder: value}}`` for every set score of every existing objective."""

@@ -8,32 +8,12 @@ server/commands/ScoreboardCommand.java (enableTrigger).
 """
 from __future__ import annotations
 
-import json
-
 import pytest
 
-from emulator import Emulator
 from emulator.world.random_sequences import RandomSequences, Xoroshiro, mix_stafford13, seed_from_hash_of
+from world_emulator import emulator
 
 BACKENDS = ["python", "numba"]
-
-
-def make_pack(root, functions: dict[str, str]):
-    root.mkdir(parents=True, exist_ok=True)
-    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "t"}}))
-    for fid, text in functions.items():
-        ns, path = fid.split(":", 1)
-        file = root / "data" / ns / "function" / f"{path}.mcfunction"
-        file.parent.mkdir(parents=True, exist_ok=True)
-        file.write_text(text + "\n")
-    return root
-
-
-def emulator(tmp_path, backend, functions):
-    emu = Emulator(backend=backend)
-    emu.load(make_pack(tmp_path / "p", {"t:setup": "scoreboard objectives add o dummy", **functions}))
-    emu.call("t:setup")
-    return emu
 
 
 # ---------------------------------------------------------------------- time
