@@ -28,10 +28,10 @@ from emulator import vm
 from emulator.program import HostOp, MacroCall, Program
 from emulator.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Condition, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
+    Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
     Function, FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey, Return,
     Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
-    StoreScore, Subcommand,
+    StoreScore, Subcommand, Tellraw,
 )
 from emulator.semantics import INT_MAX, INT_MIN
 
@@ -111,6 +111,11 @@ class Compiler:
             self.emit(vm.OP_ENABLE, h, self.objective(cmd.objective))
         elif isinstance(cmd, TagCommand) and (tag := self.tag_operands(cmd)) is not None:
             self.emit(vm.OP_TAG, tag[0], tag[1], int(cmd.action == "add"))
+        elif isinstance(cmd, DataGet) and (axis := _position_path(cmd.target, cmd.path)) is not None:
+            scale = -1 if cmd.scale is None else self.program.intern_float(cmd.scale)
+            self.emit(vm.OP_GETPOS, axis, scale)
+        elif isinstance(cmd, Tellraw):  # logged as written, result 1 (emulator.host)
+            self.host(vm.OP_LOG, cmd)
         else:
             self.host(vm.OP_HOST, cmd)
 
@@ -326,10 +331,16 @@ class _PositionStore:
 
 def _position_store(st) -> int | None:
     """The axis of ``store result|success entity @s Pos[0|1|2] double S``, else None."""
-    if not (isinstance(st, StoreData) and isinstance(st.target, EntityData) and _bare_self(st.target.target)
-            and st.type == "double"):
+    if not (isinstance(st, StoreData) and st.type == "double"):
         return None
-    nodes = st.path.nodes
+    return _position_path(st.target, st.path)
+
+
+def _position_path(target, path) -> int | None:
+    """The axis when ``target path`` is ``entity @s Pos[0|1|2]``, else None."""
+    if not (isinstance(target, EntityData) and _bare_self(target.target) and path is not None):
+        return None
+    nodes = path.nodes
     if len(nodes) == 2 and nodes[0] == PathKey("Pos") and isinstance(nodes[1], PathIndex) and nodes[1].index in (0, 1, 2):
         return nodes[1].index
     return None

@@ -73,6 +73,7 @@ class NumbaBackend:
         self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
         self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
+        self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
         self.context_ids: dict[tuple, int] = {}
         # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
@@ -127,14 +128,17 @@ class NumbaBackend:
         while True:
             code, starts, floats = self.program.arrays()
             self._fit_counters(code.shape[0], starts.shape[0])
-            if mirror.stale:
+            if mirror.stale or self.triggers.shape[0] != sb.alive.shape[0]:
                 self._load_entities()
             sels, tests = mirror.selector_arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
                             self.ctx_entity, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
-                            self.selbuf)
+                            self.selbuf, self.logbuf)
             mirror.store()
+            log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
+            if r[vm.R_NLOG]:
+                self._write_log()
             if status == vm.ST_DONE:
                 self.returned = True  # the root function came back (a cut may still be logged)
                 if r[vm.R_QUOTA] > 0:
@@ -164,13 +168,21 @@ class NumbaBackend:
             elif status == vm.ST_ERROR:
                 self._runtime_error()
             elif status == vm.ST_FLUSH:
-                if not r[vm.R_NOVF]:  # one command reports more than the buffer holds
+                if not r[vm.R_NOVF] and not log_full:  # one command reports more than the buffer holds
                     self.ovf = vm.new_overflow_buffer(4 * self.ovf.shape[0])
                 self._flush_overflows()
             elif status == vm.ST_GROW:
                 if not self._grow():
                     self._close_frames()
                     return True
+
+    def _write_log(self) -> None:
+        """The log lines OP_LOG queued, written by the host as a host op would (it never fails)."""
+        r = self.regs
+        n = int(r[vm.R_NLOG])
+        for index, ctx in self.logbuf[:n].tolist():
+            self.host.run_final(self.program.host_ops[index].node, self.contexts[ctx])
+        r[vm.R_NLOG] = 0
 
     def _load_entities(self) -> None:
         """Rebuild the entity arrays (and what else Python may have changed: trigger objectives)."""

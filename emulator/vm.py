@@ -28,6 +28,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from emulator import semantics
+
 WIDTH = 8
 
 # ---------------------------------------------------------------- opcodes
@@ -85,6 +87,9 @@ OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`,
 OP_ASSTAGE = 54  # a: selector, b forked. `execute as SEL`: one context per entity (ST_FORK: Python makes them)
 OP_POSSTAGE = 55  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
 OP_STOREPOS = 56  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
+OP_GETPOS = 58  # a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
+OP_LOG = 57  # a: host op index. `tellraw`: result 1; queued in logbuf (op, context), Python writes the log
+# line when the VM returns (before it serves anything else, so the log keeps its order)
 OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 
 # operations: opcode OP_OPER_BASE + OPK_*
@@ -102,8 +107,8 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL = range(15, 22)
-N_REGS = 22
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG = range(15, 23)
+N_REGS = 23
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP = range(10)
 F_WIDTH = 10
@@ -203,6 +208,16 @@ def _holders(h, ctx, ctx_holder, ctx_entity, sels, tests, ent, order, values, pr
     return n
 
 
+_double_to_int = njit(cache=True)(semantics.double_to_int)  # Java's (int) of a double
+
+
+@njit(cache=True)
+def _mth_floor(x):
+    """``semantics.mth_floor`` (Mth.floor) on the jitted cast."""
+    i = _double_to_int(x)
+    return _wrap(i - 1) if x < i else i
+
+
 @njit(cache=True, inline="always")
 def _clamp_pos(v, limit):
     """``max(-limit, min(v, limit))`` as Python evaluates it (the host's clamp; NaN gives -limit)."""
@@ -212,7 +227,7 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True)
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, trig, counts, totals, active, ovf,
-        ctx_holder, ctx_entity, sels, tests, ent, epos, edirty, eorder, selbuf):
+        ctx_holder, ctx_entity, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -238,6 +253,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
     counting = regs[R_COUNTING] != 0  # off only to measure the counters' cost
     forklimit = regs[R_FORKLIMIT]
     novf = regs[R_NOVF]
+    nlog = regs[R_NLOG]
     status = ST_DONE
     err = 0
     errarg = 0
@@ -852,6 +868,47 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 continue
             status = ST_HOST
             break
+        elif op == OP_GETPOS:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            e = ctx_entity[ctx]
+            has = 1
+            ok = 0
+            val = 0
+            if e >= 0:  # else "No entity was found"
+                x = epos[e, code[pc, 1]]
+                if code[pc, 2] >= 0:
+                    x = x * floats[code[pc, 2]]
+                ok = 1
+                val = _mth_floor(x)
+            pc += 1
+        elif op == OP_LOG:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            if nlog >= logbuf.shape[0]:  # runs again once Python wrote the queued lines
+                status = ST_FLUSH
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            logbuf[nlog, 0] = code[pc, 1]
+            logbuf[nlog, 1] = ctx
+            nlog += 1
+            has = 1
+            ok = 1
+            val = 1
+            pc += 1
         elif op == OP_MACRO:
             if alive == 0:
                 regs[R_CALLFN] = -1
@@ -876,6 +933,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
     regs[R_LOOP] = loop
     regs[R_NRET] = nret
     regs[R_NOVF] = novf
+    regs[R_NLOG] = nlog
     if status == ST_ERROR:
         regs[R_ERR] = err
         regs[R_ERRARG] = errarg
