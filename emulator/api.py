@@ -18,6 +18,7 @@ from emulator.profile_data import Profile, fold
 from emulator.runtime import LOAD_TAG, Runtime
 from emulator.semantics import INT_MAX, INT_MIN
 from emulator import world_entities
+from emulator.world import statistics
 from emulator.state import Context
 from mcfunction_parser.diagnostics import Diagnostic
 
@@ -106,14 +107,20 @@ class Emulator:
     def tick(self, n: int = 1) -> int:
         """Run ``n`` ticks; returns the commands executed."""
         runtime = self._runtime()
-        return sum(runtime.tick() for _ in range(n))
+        return sum(self._tick(runtime) for _ in range(n))
+
+    def _tick(self, runtime: Runtime) -> int:
+        """One server tick: the functions and schedules, then the players' per-tick statistics."""
+        cost = runtime.tick()
+        statistics.tick_players(self.state)
+        return cost
 
     def run_until(self, predicate: Callable[["Emulator"], bool], max_ticks: int) -> int:
         """Tick until ``predicate(self)`` holds (checked after each tick) or ``max_ticks`` ran;
         returns the ticks run."""
         runtime = self._runtime()
         for n in range(1, max_ticks + 1):
-            runtime.tick()
+            self._tick(runtime)
             if predicate(self):
                 return n
         return max_ticks

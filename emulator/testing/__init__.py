@@ -12,9 +12,11 @@ junit report them. The format is misode/packtest's (README and PackTestFunction)
 - ``await`` ticks the world (``#minecraft:tick``, schedules) until the condition holds or the
   ``@timeout`` (100 ticks) runs out; a test that reaches its end passes.
 
+- ``dummy <player> <action>``: simulated players (:mod:`emulator.testing.dummies` says what each
+  action changes, and which actions fail the test as not modelled).
+
 Not modelled: test commands inside functions the test calls (only the test file's own lines are
-test commands), structure templates (``@template`` is read, not placed), the ``dummy`` command's
-player actions (such tests are skipped) and chat receivers.
+test commands), structure templates (``@template`` is read, not placed) and chat receivers.
 """
 from emulator.testing.discovery import discover
 from emulator.testing.results import Summary, TestResult

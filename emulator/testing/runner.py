@@ -7,13 +7,18 @@ import random
 import re
 import time
 from collections.abc import Callable
+from dataclasses import replace
 from pathlib import Path
 
+from emulator import world_entities
 from emulator.api import Emulator
+from emulator.state import Context
 from emulator.testing.discovery import TestFile
-from emulator.testing.results import FAILED, PASSED, SKIPPED, Summary, TestResult
+from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
+from emulator.testing.results import FAILED, PASSED, Summary, TestResult
 from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run, Succeed, TestCase, plain_text,
                                        read_test)
+from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.nbt import Compound, to_snbt
 from mcfunction_parser.pack import load_packs
@@ -115,16 +120,13 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
         result.status, result.message, result.line = FAILED, first.message, first.line
         result.details = [d.format() for d in case.errors]
         return result
-    if case.drives_dummies:
-        result.status = SKIPPED
-        result.message = "the dummy command needs player actions, which the emulator does not model yet"
-        return result
     started = time.perf_counter()
     emu = fresh_world(packs, backend)
     if case.before_batch:
         emu.call(case.before_batch)
     try:
-        source = TestSource(emu, spawn_dummy(emu, case))
+        source = TestSource(emu, Dummies(emu.state))
+        source.dummy_entity = spawn_dummy(source, case)
         _run_steps(emu, source, case)
     except _Verdict as verdict:
         result.status, result.message, result.line = verdict.status, verdict.message, verdict.line
@@ -140,28 +142,40 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
 
 
 class TestSource:
-    """Where test commands run (PackTestFunction.createTestBody): as the server, or as the test's
-    dummy, at the test structure's origin plus one block up; the structure sits at the world origin."""
+    """Where test commands run (PackTestExecutor.createCommandSourceStack): as the server, or as the
+    test's dummy, at the test structure's origin plus one block up; the structure sits at the world
+    origin. The dummy stays the source's entity even after it left or respawned, as in PackTest."""
 
     ORIGIN = (0.0, 1.0, 0.0)
 
-    def __init__(self, emu: Emulator, dummy: str | None) -> None:
-        self.emu, self.dummy = emu, dummy
+    def __init__(self, emu: Emulator, dummies: Dummies) -> None:
+        self.emu, self.dummies = emu, dummies
+        self.dummy_entity: Entity | None = None
+
+    @property
+    def dummy(self) -> str | None:
+        """The @dummy's UUID (None without one)."""
+        return self.dummy_entity.uuid_string if self.dummy_entity is not None else None
+
+    def context(self) -> Context:
+        if self.dummy_entity is None:
+            return Context(pos=self.ORIGIN)
+        return replace(world_entities.entity_context(self.emu.state, self.dummy_entity), pos=self.ORIGIN)
 
     def call(self, function: str) -> int | None:
-        return self.emu.call(function, as_=self.dummy, at=self.ORIGIN)
+        return self.emu.runtime.call(function, self.context()).result
 
 
-def spawn_dummy(emu: Emulator, case: TestCase) -> str | None:
+def spawn_dummy(source: TestSource, case: TestCase) -> Entity | None:
     """The @dummy player (PackTest's Dummy.createRandom: named Dummy100..Dummy999, here seeded by the
-    test id), at the directive's position relative to the test origin; returns its UUID."""
+    test id), at the directive's position relative to the test origin."""
     if case.directives.dummy is None:
         return None
     pos = _position(case.directives.dummy, TestSource.ORIGIN)
     if pos is None:
         raise _Verdict(FAILED, "Failed to initialize test with dummy", 1)
     name = f"Dummy{random.Random(case.id).randrange(100, 1000)}"
-    return emu.add_player(name, pos)
+    return source.dummies.spawn(name, pos)
 
 
 def _position(text: str, origin: tuple[float, float, float]) -> tuple[float, float, float] | None:
@@ -204,8 +218,19 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
             raise _Verdict(FAILED, step.message, step.loc.line)
         elif isinstance(step, Succeed):
             raise _Verdict(PASSED)
-        elif isinstance(step, Dummy):  # skipped before running (drives_dummies)
-            raise AssertionError("dummy steps never run")
+        elif isinstance(step, Dummy):
+            _act(source, step)
+
+
+def _act(source: TestSource, step: Dummy) -> None:
+    """A dummy action: the game's refusal fails only the command (kept as a diagnostic); what the
+    emulator cannot model fails the test."""
+    try:
+        source.dummies.run(step.command, source.context())
+    except DummyFailure as refused:
+        source.emu.state.error(f"{step.loc.path}:{step.loc.line}: {step.command.text}: {refused}")
+    except Unsupported as reason:
+        raise _Verdict(FAILED, f"{step.command.text}: not modelled: {reason}", step.loc.line) from None
 
 
 def _holds(source: TestSource, step, chat_start: int) -> bool:

@@ -16,10 +16,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from emulator.testing.directives import Directives, apply, directive_match
+from emulator.testing.dummies import DummyCommand, parse as parse_dummy
 from mcfunction_parser.ast import Command, Function, MacroLine
 from mcfunction_parser.diagnostics import Diagnostic, Loc
 from mcfunction_parser.pack_text import split_lines
 from mcfunction_parser.parse import parse_command, parse_function
+from mcfunction_parser.reader import ParseError
 
 GENERATED_NAMESPACE = "dpemu.test"
 # the conditions of `execute if`, checked through the emulator, and PackTest's own `chat`
@@ -78,7 +80,9 @@ class Succeed(Step):
 
 @dataclass(frozen=True)
 class Dummy(Step):
-    pass
+    """PackTest's ``dummy <player> <action>`` (emulator.testing.dummies)."""
+
+    command: DummyCommand
 
 
 @dataclass
@@ -91,11 +95,6 @@ class TestCase:
     before_batch: str | None = None  # generated function of @beforebatch
     after_batch: str | None = None  # generated function of @afterbatch
     errors: list[Diagnostic] = field(default_factory=list)  # the test cannot run
-
-    @property
-    def drives_dummies(self) -> bool:
-        """``dummy NAME ...`` commands make a simulated player act (jump, use, mine ...)."""
-        return any(isinstance(s, Dummy) for s in self.steps)
 
 
 class _Builder:
@@ -205,7 +204,10 @@ def _test_step(b: _Builder, number: int, line: str) -> Step | None:
     if word == "fail":
         return Fail(loc, gate, plain_text(rest)) if rest else _bad(b, "fail: expected a message", number, rest_col)
     if word == "dummy":
-        return Dummy(loc, gate)
+        try:
+            return Dummy(loc, gate, parse_dummy(text, loc, b.version))
+        except ParseError as error:
+            return _bad(b, error.message, number, col + error.pos)
     first = rest.split(" ", 1)[0]
     if word == "await" and first in ("delay", "for"):  # "await for" in PackTest before 1.7
         return _delay(b, loc, gate, rest[len(first):].strip(), number, rest_col + len(first) + 1)

@@ -199,6 +199,9 @@ class Entity:
     gamemode: str = "survival"
     level: int = 0
     team: str | None = None
+    # a player's inputs (not saved in its NBT; predicates' flags and sneak_time read them)
+    sneaking: bool = False
+    sprinting: bool = False
 
     @property
     def is_player(self) -> bool:

@@ -76,3 +76,28 @@ def test_use_before_load():
 def test_unknown_backend():
     with pytest.raises(ValueError, match="unknown backend"):
         Emulator(backend="java")
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_start_runs_the_load_functions_once_before_any_tick(tmp_path, backend):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS, backend=backend)
+    assert emu.start() > 0 and emu.score("#n", "o") == 0
+    assert emu.start() == 0                      # loaded already: nothing runs again
+    emu.set_score("#n", "o", 10)
+    emu.tick()                                   # only #minecraft:tick: #n is not reset by t:load
+    assert emu.score("#n", "o") == 11 and emu.ticks == 1
+
+
+def test_players_earn_the_per_tick_statistics(tmp_path):
+    # Player.tick (server side): play_time, total_world_time, time_since_death, time_since_rest
+    # every tick; sneak_time while the sneak key is held; the criteria name statistics either way
+    functions = {**FUNCTIONS, "t:load": FUNCTIONS["t:load"] + "\nscoreboard objectives add play minecraft.custom:"
+                 "minecraft.play_time\nscoreboard objectives add rest custom:time_since_rest\n"
+                 "scoreboard objectives add sneak minecraft.custom:minecraft.sneak_time"}
+    emu = emulator_for(tmp_path, functions, TAGS)
+    emu.add_player("Steve")
+    emu.tick(3)
+    emu.state.entities.by_holder("Steve").sneaking = True
+    emu.run_until(lambda e: False, max_ticks=2)
+    assert (emu.score("Steve", "play"), emu.score("Steve", "rest"), emu.score("Steve", "sneak")) == (5, 5, 2)
+    assert emu.score("#n", "play") is None

@@ -1,0 +1,276 @@
+"""PackTest's ``dummy`` command: simulated players (``Dummy``, a ServerPlayer) that a test spawns and
+makes act, with what a datapack can observe of each action (misode/packtest DummyCommand.java,
+Dummy.java, PackTestExecutor.java; the game's Player and Interaction classes).
+
+    dummy <player> spawn | leave | respawn | jump | sneak <bool> | sprint <bool> | selectslot <1..9>
+                   | attack <entity> | use entity <entity> [<pos>] | mine <pos>
+                   | drop [all] | swap | use item | use block <pos> [<direction>]
+
+Modelled:
+- ``spawn``: a survival player named as written (a plain name; ``@s`` has none) at the test
+  source's position, with the offline-mode UUID the game gives it (``UUIDUtil.
+  createOfflinePlayerUUID``), standing on the ground (PackTest's own ``setOnGround(true)`` for the
+  ``@dummy`` one; the emulator has no entity physics to land it).
+- ``leave``: ``minecraft.custom:minecraft.leave_game`` + 1, then the player is gone (scores stay).
+- ``respawn``: a new player entity with the same name, UUID and tags at the dummy's first spawn
+  position, rotation 0 0 (PackTest's PlayerListMixin), sneak/sprint released, slot 1.
+- ``jump``: only from the ground; ``minecraft.custom:minecraft.jump`` + 1. The jump's motion is not
+  applied: without gravity and landing it would never end.
+- ``sneak``/``sprint``: the key state (failing when unchanged, as PackTest does); a sneaking player
+  earns ``minecraft.custom:minecraft.sneak_time`` every tick (emulator.world.statistics). Sprinting is
+  observable only through predicates, which the emulator does not evaluate.
+- ``selectslot N``: ``SelectedItemSlot`` (N - 1) in the player's NBT.
+- ``attack``/``use entity`` on an ``interaction`` entity: its ``attack``/``interaction`` NBT
+  ``{player: UUID, timestamp: game time}`` (Interaction.skipAttackInteraction / interact).
+- ``mine``: a creative player removes the block; a survival player mining air succeeds without
+  effect; adventure and spectator players fail ("failed to mine block").
+
+Not modelled, so a test using them fails with the reason: held items (``drop``, ``swap``, ``use
+item``, ``use block``; the emulator has no player inventories), attacking or using any other entity
+(damage, health, mob interactions), and a survival player mining a block (its drops come from loot
+tables and ``minecraft.mined`` needs the right tool, neither modelled).
+
+As in PackTest, an action the game refuses (``Dummy X is not on the ground`` ...) is a failed
+command: the test goes on, and the message is kept as a runtime diagnostic.
+"""
+from __future__ import annotations
+
+import hashlib
+import uuid as uuid_lib
+from dataclasses import dataclass, replace
+
+from emulator import world_entities
+from emulator.state import Context
+from emulator.world import statistics
+from emulator.world.blocks import block_pos, parse_block
+from emulator.world.entities import Entity
+from emulator.world.errors import CommandFailure
+from mcfunction_parser import ast, selectors
+from mcfunction_parser.arguments import holder_from_word, vec3
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
+from mcfunction_parser.reader import ParseError, Reader
+
+SIMPLE = ("spawn", "leave", "respawn", "jump", "swap")
+ACTIONS = (*SIMPLE, "sneak", "sprint", "drop", "selectslot", "use", "attack", "mine")
+DIRECTIONS = ("down", "up", "north", "south", "west", "east")
+NO_INVENTORY = "player inventories (held items) are not modelled by the emulator"
+
+
+@dataclass(frozen=True)
+class DummyCommand:
+    """One parsed ``dummy`` line."""
+
+    target: object  # ast.Selector or ast.NameTarget
+    action: str  # an entry of ACTIONS, "use item|block|entity" spelled out
+    flag: bool | None = None  # sneak/sprint's active, drop's all
+    slot: int | None = None
+    entity: object = None  # attack / use entity
+    pos: ast.Vec3 | None = None  # use block / use entity / mine
+    text: str = ""  # the line as written, for messages
+
+
+class DummyFailure(Exception):
+    """The game refuses the action: the command fails, the test goes on."""
+
+
+class Unsupported(Exception):
+    """The emulator cannot carry the action out faithfully: the test fails with the reason."""
+
+
+# ---------------------------------------------------------------------- parsing
+def parse(text: str, loc: Loc, version) -> DummyCommand:
+    """``dummy ...`` (the whole command) as DummyCommand's brigadier tree reads it; raises
+    ParseError (with the offset in ``text``) when malformed."""
+    r = Reader(text, loc, version)
+    r.pos = len("dummy")
+    r.space("a player")
+    target = _entity(r)
+    r.space("an action")
+    action = _word(r)
+    if action not in ACTIONS:
+        r.fail(f"dummy: unknown action {action!r}: expected one of " + ", ".join(ACTIONS), r.pos - len(action))
+    command = DummyCommand(target, action, text=text)
+    if action in ("sneak", "sprint"):
+        r.space("true or false")
+        word = _word(r)
+        if word not in ("true", "false"):
+            r.fail(f"dummy {action}: expected true or false, got {word!r}", r.pos - len(word))
+        command = replace(command, flag=word == "true")
+    elif action == "drop" and r.optional_space():
+        word = _word(r)
+        if word != "all":
+            r.fail(f"dummy drop: expected 'all' or nothing, got {word!r}", r.pos - len(word))
+        command = replace(command, flag=True)
+    elif action == "selectslot":
+        r.space("a hotbar slot 1..9")
+        word = _word(r)
+        if not word.isdigit() or not 1 <= int(word) <= 9:
+            r.fail(f"dummy selectslot: expected a hotbar slot 1..9, got {word!r}", r.pos - len(word))
+        command = replace(command, slot=int(word))
+    elif action == "attack":
+        r.space("an entity")
+        command = replace(command, entity=_entity(r))
+    elif action == "mine":
+        r.space("a block position")
+        command = replace(command, pos=vec3(r, block=True))
+    elif action == "use":
+        command = _use(r, command)
+    r.finish()
+    return command
+
+
+def _use(r: Reader, command: DummyCommand) -> DummyCommand:
+    r.space("item, block or entity")
+    what = _word(r)
+    if what == "item":
+        return replace(command, action="use item")
+    if what == "block":
+        r.space("a position")
+        command = replace(command, action="use block", pos=vec3(r))
+        if r.optional_space():
+            direction = _word(r)
+            if direction not in DIRECTIONS:
+                r.fail(f"dummy use block: unknown direction {direction!r}", r.pos - len(direction))
+        return command
+    if what == "entity":
+        r.space("an entity")
+        command = replace(command, action="use entity", entity=_entity(r))
+        return replace(command, pos=vec3(r)) if r.optional_space() else command
+    r.fail(f"dummy use: expected item, block or entity, got {what!r}", r.pos - len(what))
+
+
+def _word(r: Reader) -> str:
+    start = r.pos
+    while r.more() and r.peek() != " ":
+        r.pos += 1
+    return r.text[start:r.pos]
+
+
+def _entity(r: Reader):
+    """EntityArgument.entity(): a selector, a player name or a UUID."""
+    if r.peek() == "@":
+        return selectors.selector(r)
+    start = r.pos
+    return holder_from_word(_word(r), r.loc_at(start))
+
+
+# ---------------------------------------------------------------------- running
+def offline_uuid(name: str) -> tuple[int, int, int, int]:
+    """``UUIDUtil.createOfflinePlayerUUID``: ``UUID.nameUUIDFromBytes("OfflinePlayer:" + name)``."""
+    value = uuid_lib.UUID(bytes=hashlib.md5(f"OfflinePlayer:{name}".encode()).digest(), version=3).int
+    return tuple(((value >> shift) + 2**31) % 2**32 - 2**31 for shift in (96, 64, 32, 0))  # int[4]
+
+
+class Dummies:
+    """The dummies of one test world: which players are dummies, and where each first spawned."""
+
+    def __init__(self, state) -> None:
+        self.state = state
+        self.spawns: dict[tuple, tuple[float, float, float]] = {}  # UUID -> first spawn position
+
+    def spawn(self, name: str, pos) -> Entity:
+        """A new dummy ``name`` at ``pos`` (Dummy.create)."""
+        for player in self.state.entities.players():
+            if player.player_name == name:
+                kind = "is already logged on" if player.uuid in self.spawns else "is already a player"
+                raise DummyFailure(f"Dummy {name} {kind}")
+        player = self.state.entities.add_player(name, tuple(float(c) for c in pos))
+        player.uuid = offline_uuid(name)
+        player.data["OnGround"] = Byte(1)
+        player.data["SelectedItemSlot"] = Int(0)
+        self.spawns[player.uuid] = tuple(pos)
+        self._changed()
+        return player
+
+    def run(self, command: DummyCommand, ctx: Context) -> None:
+        """Carry out ``command`` run from ``ctx``; DummyFailure / Unsupported as described above."""
+        if command.action == "spawn":
+            if not isinstance(command.target, ast.NameTarget) or command.target.is_uuid:
+                raise DummyFailure("Cannot spawn dummy without a name")
+            self.spawn(command.target.name, ctx.pos)
+            return
+        dummy = self._dummy(command.target, ctx)
+        getattr(self, "_" + command.action.replace(" ", "_"))(dummy, command, ctx)
+
+    def _dummy(self, target, ctx: Context) -> Entity:
+        """DummyCommand.getDummy: exactly one player, and a dummy."""
+        found = world_entities.select(self.state, target, ctx)
+        if len(found) != 1 or not found[0].is_player or found[0].uuid not in self.spawns:
+            raise DummyFailure("No dummy was found")
+        return found[0]
+
+    def _entity(self, target, ctx: Context) -> Entity:
+        found = world_entities.select(self.state, target, ctx)
+        if not found:
+            raise DummyFailure("No entity was found")
+        if len(found) > 1:
+            raise DummyFailure("Only one entity is allowed, but the provided selector allows more than one")
+        return found[0]
+
+    def _changed(self) -> None:
+        self.state.tags_version += 1  # the set of entities changed (the VM mirrors entity tags)
+
+    # ---------------------------------------------------------------- actions
+    def _leave(self, dummy: Entity, command, ctx) -> None:
+        statistics.award(self.state, dummy, statistics.stat_name("custom", "leave_game"))
+        self.state.entities.kill(dummy)
+        self._changed()
+
+    def _respawn(self, dummy: Entity, command, ctx) -> None:
+        tags, spawn = set(dummy.tags), self.spawns.pop(dummy.uuid)
+        self.state.entities.kill(dummy)
+        reborn = self.spawn(dummy.player_name, spawn)
+        reborn.tags = tags
+
+    def _jump(self, dummy: Entity, command, ctx) -> None:
+        if not dummy.data.get("OnGround"):
+            raise DummyFailure(f"Dummy {dummy.player_name} is not on the ground")
+        statistics.award(self.state, dummy, statistics.stat_name("custom", "jump"))
+
+    def _sneak(self, dummy: Entity, command, ctx) -> None:
+        if dummy.sneaking == command.flag:
+            raise DummyFailure(f"Dummy {dummy.player_name} is already {'' if command.flag else 'not '}sneaking")
+        dummy.sneaking = command.flag
+
+    def _sprint(self, dummy: Entity, command, ctx) -> None:
+        if dummy.sprinting == command.flag:
+            raise DummyFailure(f"Dummy {dummy.player_name} is already {'' if command.flag else 'not '}sprinting")
+        dummy.sprinting = command.flag
+
+    def _selectslot(self, dummy: Entity, command, ctx) -> None:
+        if int(dummy.data.get("SelectedItemSlot", Int(0))) == command.slot - 1:
+            raise DummyFailure(f"Dummy {dummy.player_name} already has slot {command.slot} selected")
+        dummy.data["SelectedItemSlot"] = Int(command.slot - 1)
+
+    def _attack(self, dummy: Entity, command, ctx) -> None:
+        self._record(dummy, self._entity(command.entity, ctx), "attack", "attacking")
+
+    def _use_entity(self, dummy: Entity, command, ctx) -> None:
+        self._record(dummy, self._entity(command.entity, ctx), "interaction", "using an item on")
+
+    def _record(self, dummy: Entity, target: Entity, key: str, doing: str) -> None:
+        """An interaction entity remembers who attacked / used it and when (PlayerAction)."""
+        if target.type != "minecraft:interaction":
+            raise Unsupported(f"{doing} {target.type} is not modelled (only interaction entities record "
+                              f"players' actions in the emulator)")
+        target.data[key] = Compound(player=IntArray(Int(v) for v in dummy.uuid), timestamp=Long(self.state.gametime))
+
+    def _mine(self, dummy: Entity, command, ctx) -> None:
+        pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)
+        if dummy.gamemode in ("adventure", "spectator"):
+            raise DummyFailure(f"Dummy {dummy.player_name} failed to mine block")
+        if dummy.gamemode == "creative":
+            try:
+                self.state.blocks.setblock(pos, parse_block("minecraft:air"))
+            except CommandFailure:
+                pass  # it was air already
+        elif not self.state.blocks.get(pos).is_air:
+            raise Unsupported(f"a survival player mining {self.state.blocks.get(pos)} drops its loot and counts "
+                              f"minecraft.mined only with the right tool, which the emulator does not model")
+
+    def _unsupported(self, dummy: Entity, command, ctx) -> None:
+        raise Unsupported(NO_INVENTORY)
+
+    _drop = _swap = _use_item = _use_block = _unsupported
+
