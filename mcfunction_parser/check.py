@@ -47,17 +47,21 @@ class CheckResult:
     def files(self) -> int:
         return self.loaded.files
 
+    def _parsed(self) -> list:
+        """Every function file parsed, those the game refuses included."""
+        return [*self.loaded.functions.values(), *self.loaded.refused.values()]
+
     @property
     def functions(self) -> int:
-        return len(self.loaded.functions)
+        return len(self._parsed())
 
     @property
     def commands(self) -> int:
-        return sum(len(f.commands) for f in self.loaded.functions.values())
+        return sum(len(f.commands) for f in self._parsed())
 
     @property
     def lines(self) -> int:
-        return sum(f.lines for f in self.loaded.functions.values())
+        return sum(f.lines for f in self._parsed())
 
     def of(self, severity: str) -> list[Diagnostic]:
         return [d for d in self.diagnostics if d.severity == severity]
@@ -137,7 +141,7 @@ def _child_fields(cls: type) -> tuple[str, ...]:
 def _nodes(loaded: LoadedPacks) -> list[tuple[ast.Function, object]]:
     """(function, node) for every node of every loaded function."""
     result = []
-    for function in loaded.functions.values():
+    for function in [*loaded.functions.values(), *loaded.refused.values()]:  # refused ones too
         nodes: list[object] = []
         for command in function.commands:
             walk(command, nodes)
@@ -239,6 +243,8 @@ def _check_condition_returns(loaded: LoadedPacks, condition: ast.IfFunction, ret
 
 def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:
     if not is_tag:
+        if name in loaded.refused:
+            return f"function {name} fails to load (a line of it does not parse), so it is unknown to the game"
         return None if name in loaded.functions else f"unknown function {name}"
     if name in loaded.tags:
         return None

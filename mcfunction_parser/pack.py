@@ -61,6 +61,10 @@ class LoadedPacks:
     advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
     predicates: set[str] = field(default_factory=set)  # ids of the predicate files
     files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
+    # functions the game refuses whole because a line does not parse (ServerFunctionLibrary logs
+    # "Failed to load function" and leaves it out): parsed for ``dpemu check``, absent from
+    # ``functions``, so calling one fails as an unknown function and a tag requiring one fails
+    refused: dict[str, Function] = field(default_factory=dict)
 
     @property
     def format(self) -> Format:
@@ -270,12 +274,15 @@ def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
                     pack.shown_file(rel)))
             chosen[fid] = (pack, rel)
     for fid, (pack, rel) in chosen.items():
-        function = _load_function(pack, rel, fid, result)
-        if function is not None:
-            result.functions[fid] = function
+        loaded = _load_function(pack, rel, fid, result)
+        if loaded is not None:
+            function, parses = loaded
+            (result.functions if parses else result.refused)[fid] = function
 
 
-def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> Function | None:
+def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> tuple[Function, bool] | None:
+    """The parsed function and whether every line parses (else the game refuses it), or None
+    when the file cannot be read."""
     shown = pack.shown_file(rel)
     text = read_text(pack.read(rel), shown, result.diagnostics, json_file=False)
     result.files += 1
@@ -291,7 +298,8 @@ def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) ->
             ERROR, f"internal error while parsing this file: {type(exc).__name__}: {exc}", shown))
         return None
     result.diagnostics.extend(diagnostics)
-    return dataclasses.replace(function, pack=str(pack.info.root))
+    parses = not any(d.severity == ERROR for d in diagnostics)
+    return dataclasses.replace(function, pack=str(pack.info.root)), parses
 
 
 def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
@@ -307,7 +315,7 @@ def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
             result.sources[shown] = split_lines(doc.text)
             merge_tag(result.tags, tag_id, replace, entries)
     result.failed_tags = validate_tags(result.tags, result.functions, result.sources,
-                                       result.diagnostics)
+                                       result.diagnostics, result.refused)
 
 
 def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:

@@ -104,12 +104,17 @@ def merge_tag(tags: dict[str, FunctionTag], tag_id: str, replace: bool, entries:
 
 
 def validate_tags(tags: dict[str, FunctionTag], functions: Collection[str],
-                  sources: dict[str, list[str]], diagnostics: list[Diagnostic]) -> dict[str, FailedTag]:
-    """Remove the tags the game would refuse to load and return them with the reason."""
+                  sources: dict[str, list[str]], diagnostics: list[Diagnostic],
+                  refused: Collection[str] = ()) -> dict[str, FailedTag]:
+    """Remove the tags the game would refuse to load and return them with the reason.
+    ``refused``: functions whose file exists but fails to load (a line does not parse)."""
     failed: dict[str, str] = {}
     for tag in tags.values():
         for entry in tag.entries:
-            if entry.required and not entry.is_tag and entry.id not in functions:
+            if entry.required and not entry.is_tag and entry.id in refused:
+                _fail(failed, tag.id, f"function {entry.id} fails to load (a line of it does not parse)",
+                      entry, sources, diagnostics)
+            elif entry.required and not entry.is_tag and entry.id not in functions:
                 _fail(failed, tag.id, f"function {entry.id} does not exist", entry, sources, diagnostics)
             elif entry.required and entry.is_tag and entry.id not in tags:
                 _fail(failed, tag.id, f"function tag #{entry.id} does not exist", entry, sources,

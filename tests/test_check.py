@@ -40,8 +40,11 @@ def test_syntax_errors_come_from_the_parser_and_the_rest_still_loads(tmp_path):
         fn("broken"): 'execute as @e[tag=a run say x\ndata modify storage a:b x set value "abc\nsay fine\n'})
     result = check_packs([root])
     errors = result.of("error")
-    assert [(e.line, e.col) for e in errors] == [(1, 21), (2, 37)]
+    # ServerFunctionLibrary: a function with a line that does not parse fails to load, so the
+    # call to it names an unknown function
+    assert [(e.line, e.col) for e in errors] == [(1, 21), (2, 37), (2, 1)]
     assert "unclosed" in errors[1].message
+    assert errors[2].message.startswith("function a:broken fails to load")
     assert errors[0].source_line == "execute as @e[tag=a run say x"
     assert result.functions == 2 and result.commands == 3
 
@@ -51,7 +54,9 @@ def test_literal_integers_out_of_range(tmp_path):
                                   "scoreboard players set x o 2147483648\nscoreboard players add x o -1\n"
                                   "scoreboard players set x o -2147483648\n"})
     errors = check_packs([root]).of("error")
-    assert [(e.line, e.col) for e in errors] == [(2, 28), (3, 28)]
+    # the function fails to load, and #minecraft:load with it (TagLoader: a missing reference)
+    assert [(e.line, e.col) for e in errors] == [(2, 28), (3, 28), (1, 13)]
+    assert "fails to load (a line of it does not parse)" in errors[2].message
 
 
 def test_calls_to_missing_functions_and_tags(tmp_path):

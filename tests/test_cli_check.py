@@ -47,7 +47,8 @@ def test_errors_exit_1_with_location_and_caret(tmp_path):
     assert lines[0].startswith(f"{root}/data/a/function/load.mcfunction:2:21: error: ")
     assert lines[1] == "    execute as @e[tag=x run say"
     assert lines[2] == "    " + " " * 20 + "^"
-    assert lines[-1] == "3 files, 1 function, 1 command: 1 error, 0 warnings"
+    # the second error: the tag naming the function fails, as the function fails to load
+    assert lines[-1] == "3 files, 1 function, 1 command: 2 errors, 0 warnings"
 
 
 def test_json_output_is_one_object(tmp_path):
