@@ -61,3 +61,15 @@ def test_folder_rename_at_1_21():
 def test_labels():
     assert format_label((94, 1)) == "94.1" and format_label((61, 0)) == "61"
     assert version_label((1, 21, 0)) == "1.21"
+
+
+def test_newest_formats_checked_against_independent_sources():
+    # 1.21.9 -> 88.0: minecraft.wiki "Pack format" (2026-02 copy: the 1.21.9 pack.mcmeta example has
+    # "min_format": 88, "max_format": 88). 1.21.10 -> 88 and 1.21.11 -> 94: version tables of two
+    # public projects ({"1.21.9": 88, "1.21.10": 88, "1.21.11": 94}) and a pack migrator's 1.21.11
+    # step "Update pack format to 94". The minor .1: the pack.mcmeta a 1.21.11 Paper server writes
+    # for its own data pack reads "min_format": [94, 1]. (The wiki table row itself could not be
+    # read here; re-check it when the table is reachable.)
+    assert pack_format_for_version((1, 21, 9)) == (88, 0)
+    assert pack_format_for_version((1, 21, 10)) == (88, 0)
+    assert pack_format_for_version((1, 21, 11)) == (94, 1)
