@@ -10,13 +10,14 @@ junit report them. The format is misode/packtest's (README and PackTestFunction)
   the emulator itself) and PackTest's ``chat PATTERN``; ``await delay TIME`` (``await for`` in
   older PackTest); ``fail MESSAGE``; ``succeed``; each also after ``execute ... run``;
 - ``await`` ticks the world (``#minecraft:tick``, schedules) until the condition holds or the
-  ``@timeout`` (100 ticks) runs out; a test that reaches its end passes.
-
+  ``@timeout`` (100 ticks) runs out; a test that reaches its end passes;
+- ``@template ID`` places the structure file's blocks and entities with its corner at the world
+  origin (:mod:`emulator.world.structures`);
 - ``dummy <player> <action>``: simulated players (:mod:`emulator.testing.dummies` says what each
   action changes, and which actions fail the test as not modelled).
 
 Not modelled: test commands inside functions the test calls (only the test file's own lines are
-test commands), structure templates (``@template`` is read, not placed) and chat receivers.
+test commands) and chat receivers.
 """
 from emulator.testing.discovery import discover
 from emulator.testing.results import Summary, TestResult

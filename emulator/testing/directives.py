@@ -2,8 +2,8 @@
 misode/packtest's README. As PackTestFunction.fromLines reads them: only the leading run of lines
 that start with ``#`` (a blank or indented line ends it); a name alone means ``true``.
 
-- ``@template ID``: structure placed for the test (default: an empty 1x1x1 structure). The
-  emulator has no block world yet, so the template is recorded, not placed.
+- ``@template ID``: the structure (``data/<ns>/structure/<path>.nbt``) placed for the test with its
+  corner at the world origin (default: an empty 1x1x1 structure, nothing to place).
 - ``@timeout N``: ticks before the test fails (default 100).
 - ``@optional [true|false]``: the test may fail without failing the run (no value: true).
 - ``@dummy [POS]``: spawn a dummy player as ``@s`` (default ``~0.5 ~ ~0.5``).

@@ -18,6 +18,7 @@ from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
 from emulator.testing.results import FAILED, PASSED, Summary, TestResult
 from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run, Succeed, TestCase, plain_text,
                                        read_test)
+from emulator.world import structures
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.nbt import Compound, to_snbt
@@ -125,6 +126,8 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
     if case.before_batch:
         emu.call(case.before_batch)
     try:
+        if case.directives.template:
+            place_template(emu, packs, case.directives.template)
         source = TestSource(emu, Dummies(emu.state))
         source.dummy_entity = spawn_dummy(source, case)
         _run_steps(emu, source, case)
@@ -139,6 +142,18 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
     if result.status != PASSED:
         result.details = list(dict.fromkeys(d.format() for d in emu.diagnostics))
     return result
+
+
+def place_template(emu: Emulator, packs, template_id: str) -> None:
+    """The test's structure with its corner at the world origin (the test source is one block up)."""
+    data = structures.find_template(packs, template_id)
+    if data is None:
+        raise _Verdict(FAILED, f"Missing test structure: {template_id} (no {structures.template_file(packs, template_id)})")
+    try:
+        template = structures.read_template(data)
+    except structures.StructureError as error:
+        raise _Verdict(FAILED, f"Test structure {template_id}: {error}") from None
+    structures.place(emu.state, template, (0, 0, 0))
 
 
 class TestSource:

@@ -1,0 +1,149 @@
+"""Structure templates (``data/<ns>/structure/<path>.nbt``, ``structures`` before 1.21): finding one
+in the loaded packs, reading it, placing its blocks and entities in the world.
+
+- ``find_template(packs, id)``: the file's bytes from the last pack holding it (later packs
+  override), or None. Folders and ``.zip`` packs; overlays are not searched.
+- ``read_template(data)``: a :class:`Template` (size, blocks with their palette state and block
+  entity NBT, entities with their relative position and NBT); :class:`StructureError` says what is
+  wrong with a corrupt or malformed file.
+- ``place(state, template, origin)``: ``StructureTemplate.placeInWorld`` without rotation or mirror:
+  every block at origin + pos (its block entity NBT kept), every entity summoned at origin + pos
+  from its NBT with a new UUID (``placeEntities`` removes the saved one).
+
+The file (decompiled 1.21 StructureTemplate.save/load): a gzipped NBT compound with ``size`` (3 ints),
+``palette`` (block states ``{Name, Properties}``; or ``palettes``, a list of palettes, the first of
+which is used), ``blocks`` (``{pos: [x, y, z], state: palette index, nbt?}``) and ``entities``
+(``{pos: [x, y, z] doubles, blockPos, nbt: {id, ...}}``).
+"""
+from __future__ import annotations
+
+import zipfile
+from dataclasses import dataclass
+
+from emulator.world.blocks import BlockSpec
+from emulator.world.errors import CommandFailure
+from emulator.world.nbt_binary import NbtFormatError, read_nbt
+from mcfunction_parser.nbt import Compound, Double, Int, List, String
+from mcfunction_parser.versions import uses_singular_folders
+
+
+class StructureError(ValueError):
+    pass
+
+
+@dataclass(frozen=True)
+class Template:
+    size: tuple[int, int, int]
+    blocks: list[tuple[tuple[int, int, int], BlockSpec]]
+    entities: list[tuple[tuple[float, float, float], Compound]]
+
+
+def template_file(packs, template_id: str) -> str:
+    """The path of template ``ns:path`` inside a pack for the packs' game version."""
+    namespace, _, path = template_id.partition(":") if ":" in template_id else ("minecraft", "", template_id)
+    folder = "structure" if uses_singular_folders(packs.format) else "structures"
+    return f"data/{namespace}/{folder}/{path}.nbt"
+
+
+def find_template(packs, template_id: str) -> bytes | None:
+    name = template_file(packs, template_id)
+    for pack in reversed(packs.packs):
+        if pack.root.is_dir():
+            candidate = pack.root / name
+            if candidate.is_file():
+                return candidate.read_bytes()
+        elif zipfile.is_zipfile(pack.root):
+            with zipfile.ZipFile(pack.root) as archive:
+                if name in archive.namelist():
+                    return archive.read(name)
+    return None
+
+
+def read_template(data: bytes) -> Template:
+    try:
+        _, root = read_nbt(data)
+    except NbtFormatError as error:
+        raise StructureError(f"not a valid NBT file: {error}") from None
+    size = _ints(root.get("size"), "size")
+    palette = _palette(root)
+    blocks = []
+    for i, block in enumerate(_list(root.get("blocks", List()), "blocks")):
+        where = f"blocks[{i}]"
+        block = _compound(block, where)
+        state = block.get("state")
+        if not isinstance(state, Int) or not 0 <= state < len(palette):
+            raise StructureError(f"{where}.state: expected a palette index 0..{len(palette) - 1}, got {state!r}")
+        nbt = block.get("nbt")
+        if nbt is not None:
+            nbt = _compound(nbt, f"{where}.nbt")
+        spec = palette[state]
+        blocks.append((_ints(block.get("pos"), f"{where}.pos"), BlockSpec(spec.id, False, spec.properties, nbt)))
+    entities = []
+    for i, entity in enumerate(_list(root.get("entities", List()), "entities")):
+        where = f"entities[{i}]"
+        entity = _compound(entity, where)
+        pos = entity.get("pos")
+        if not (isinstance(pos, List) and len(pos) == 3 and all(isinstance(v, Double) for v in pos)):
+            raise StructureError(f"{where}.pos: expected 3 doubles, got {pos!r}")
+        nbt = _compound(entity.get("nbt"), f"{where}.nbt")
+        if not isinstance(nbt.get("id"), String):
+            raise StructureError(f"{where}.nbt: expected an entity id (id:\"minecraft:...\")")
+        entities.append((tuple(float(v) for v in pos), nbt))
+    return Template(size, blocks, entities)
+
+
+def _palette(root: Compound) -> list[BlockSpec]:
+    if "palette" in root:
+        states = _list(root["palette"], "palette")
+        where = "palette"
+    elif "palettes" in root and _list(root["palettes"], "palettes"):
+        states = _list(root["palettes"][0], "palettes[0]")
+        where = "palettes[0]"
+    else:
+        raise StructureError("no palette: expected a 'palette' list of block states")
+    specs = []
+    for i, state in enumerate(states):
+        state = _compound(state, f"{where}[{i}]")
+        name = state.get("Name")
+        if not isinstance(name, String):
+            raise StructureError(f"{where}[{i}].Name: expected a block id")
+        properties = _compound(state.get("Properties", Compound()), f"{where}[{i}].Properties")
+        block_id = str(name) if ":" in name else f"minecraft:{name}"
+        specs.append(BlockSpec(block_id, False, tuple(sorted((k, str(v)) for k, v in properties.items())), None))
+    return specs
+
+
+def _list(value, where: str) -> List:
+    if not isinstance(value, List):
+        raise StructureError(f"{where}: expected a list, got {type(value).__name__}")
+    return value
+
+
+def _compound(value, where: str) -> Compound:
+    if not isinstance(value, Compound):
+        raise StructureError(f"{where}: expected a compound, got {type(value).__name__}")
+    return value
+
+
+def _ints(value, where: str) -> tuple[int, int, int]:
+    if not (isinstance(value, List) and len(value) == 3 and all(isinstance(v, Int) for v in value)):
+        raise StructureError(f"{where}: expected 3 ints, got {value!r}")
+    return tuple(int(v) for v in value)
+
+
+def place(state, template: Template, origin: tuple[int, int, int]) -> None:
+    """Put ``template``'s blocks and entities into the world with its corner at ``origin``."""
+    ox, oy, oz = origin
+    for (x, y, z), spec in template.blocks:
+        try:
+            state.blocks.setblock((ox + x, oy + y, oz + z), spec)
+        except CommandFailure:
+            pass  # the same block is there already
+    for (x, y, z), nbt in template.entities:
+        data = Compound((k, v) for k, v in nbt.items() if k not in ("id", "UUID", "Pos"))
+        try:
+            state.entities.summon(str(nbt["id"]), (ox + x, oy + y, oz + z), data)
+        except CommandFailure:
+            pass  # createEntityIgnoreException: an entity that cannot be created is left out
+    if template.entities:
+        state.tags_version += 1  # new entities (the VM mirrors entity tags)
