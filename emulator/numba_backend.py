@@ -369,6 +369,7 @@ class NumbaBackend:
             final_pc, _, contexts = self.collected[depth]
             r[vm.R_CTX] = contexts.pop(0)
             r[vm.R_PC] = final_pc
+            r[vm.R_LOOP] = vm.LOOP_FINAL
         else:  # ENDCMD runs again, now ending the command (and restoring the context)
             self.collected.pop(depth, None)
             r[vm.R_LOOP] = vm.LOOP_NONE

@@ -116,8 +116,9 @@ F_WIDTH = 10
 ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX, ST_COLLECT, ST_REPEAT, ST_FORK = range(11)
 
 # R_LOOP: no fork in this command; forked, first pass; re-entered for a later context (its stages
-# were charged on the first pass)
-LOOP_NONE, LOOP_FORKED, LOOP_REENTERED = range(3)
+# were charged on the first pass); a kept context running the final command (a `return run`
+# chain there is new: its stages charge)
+LOOP_NONE, LOOP_FORKED, LOOP_REENTERED, LOOP_FINAL = range(4)
 
 ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MACRO_ARGS, ERR_FORK_LIMIT = range(1, 7)
 

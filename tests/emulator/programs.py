@@ -60,14 +60,28 @@ non_negative = st.one_of(st.sampled_from((0, 1, 2, 7, 65536, INT_MAX)), st.integ
 
 # Stages that change the context but not the scores (``as @e`` with no entities: 0 contexts)
 MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
-# With entities: three markers summoned by t:f0, tagged m+a, m, n
+# With entities: three markers summoned by t:f0, tagged m+a, m, n, an armor stand tagged m, and a
+# trigger objective t
 ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"]}',
-                'summon marker ~ ~1 ~5 {Tags:["n"]}')
+                'summon marker ~ ~1 ~5 {Tags:["n"]}', 'summon armor_stand ~1 ~ ~1 {Tags:["m"]}',
+                "scoreboard objectives add t trigger")
+# (the VM evaluates @e/@a/@s with type, tag, scores and limit itself; sort, distance ... go to the host)
 ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=marker,sort=nearest,limit=2]",
-                    "positioned as @e[tag=n]", "as @e[tag=m] at @s", "as @e[sort=furthest]")
+                    "positioned as @e[tag=n]", "as @e[tag=m] at @s", "as @e[sort=furthest]",
+                    "as @e[tag=m,tag=!a]", "as @e[type=marker,scores={o=0..}]", "as @e[type=!marker]",
+                    "as @e[tag=m,limit=2]", "as @s[tag=m]", "as @e[scores={o=..3,p=-5..}]")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
+MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]")
 ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
-                   'summon marker ~ ~ ~ {Tags:["n"]}', "scoreboard players add @e[tag=m] o 3")
+                   'summon marker ~ ~ ~ {Tags:["n"]}', "scoreboard players add @e[tag=m] o 3",
+                   "tag @e[tag=m,tag=!a] add a", "tag @e[scores={o=1..}] remove m", "tag @e[type=armor_stand] add n",
+                   "scoreboard players operation #a o < @e[tag=m] o", "scoreboard players reset @e[tag=a] o",
+                   "scoreboard players operation @e[tag=m] o += @e[tag=n] p", "scoreboard players enable @e[tag=m] t",
+                   "execute store result entity @s Pos[0] double 0.5 run scoreboard players get #a o",
+                   "execute store success entity @s Pos[1] double 2 if entity @e[tag=a]",
+                   "execute store result score #b o run data get entity @s Pos[0] 100",
+                   "execute store result score #c p run data get entity @s Pos[1]",
+                   'tellraw @a {"text":"hi"}')
 
 
 @dataclass(frozen=True)
@@ -87,7 +101,7 @@ def vocabulary(modifiers: bool, entities: bool) -> Vocabulary:
     if not entities:
         return Vocabulary(names, names, MODIFIERS if modifiers else (), (), ())
     single = st.one_of(names, st.sampled_from(SINGLE_ENTITY_HOLDERS))
-    return Vocabulary(st.one_of(single, st.just("@e[tag=m]")), single,
+    return Vocabulary(st.one_of(single, st.sampled_from(MULTI_ENTITY_HOLDERS)), single,
                       (MODIFIERS if modifiers else ()) + ENTITY_MODIFIERS, ENTITY_COMMANDS, ENTITY_SETUP)
 
 
@@ -133,7 +147,9 @@ def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
         return (f"{word} score {draw(single)} {draw(objectives)} {draw(st.sampled_from(COMPARISONS))} "
                 f"{draw(single)} {draw(objectives)}")
     if kind == "entity":
-        return f"{word} entity {draw(st.sampled_from(('@s', '@e[tag=a]', '@e[tag=n]')))}"
+        targets = ('@s', '@e[tag=a]', '@e[tag=n]', '@e[tag=m,scores={o=1..}]', '@e[type=marker,limit=1]',
+                   '@s[tag=a]', '@e[tag=m,tag=!a]', '@e[type=!marker]')
+        return f"{word} entity {draw(st.sampled_from(targets))}"
     return f"{word} function {draw(st.sampled_from(callees))}"
 
 
@@ -231,6 +247,7 @@ class Outcome:
     log: tuple
     diagnostics: tuple
     line_costs: dict  # {(file name, line): cost charged there}
+    entities: tuple = ()  # (uuid, type, pos, sorted tags) of every entity, in the store's order
 
 
 def make_backend(name: str):
@@ -271,4 +288,5 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
         log=tuple((e.kind, e.text) for e in state.log),
         diagnostics=tuple((d.message, tuple((f.function, f.loc.line) for f in d.frames)) for d in state.diagnostics),
         line_costs={(Path(path).name, line): n for (path, line), n in backend.line_counts().items() if n},
+        entities=tuple((e.uuid_string, e.type, e.pos, tuple(sorted(e.tags))) for e in state.entities.entities),
     )

@@ -45,6 +45,7 @@ def _compare(tmp_path_factory, program, sanitize: bool, limit: int | None = None
     assert (vm.cost, vm.cut) == (reference.cost, reference.cut)
     assert vm.line_costs == reference.line_costs
     assert vm.log == reference.log
+    assert vm.entities == reference.entities
     if sanitize:
         # the VM names a macro instance "ns:f#N"; the reference names the function. Sorted: '*'
         # walks holders in interning order, which differs between the backends (the VM interns
@@ -100,8 +101,9 @@ def test_runtime_diagnostics_agree(tmp_path, line):
     assert vm.cost == reference.cost
 
 
-# Entities: markers selected, tagged, killed and used as score holders; several contexts per
-# stage exercise the per-context costs, return-run's first context and if function per context
+# Entities: markers selected (by the VM's own selectors and by the host's), tagged, killed, moved
+# by store ... Pos[i], read by data get and used as score holders; several contexts per stage
+# exercise the per-context costs, return-run's first context and if function per context
 @settings(settings.get_profile("differential"), max_examples=max(EXAMPLES // 3, 20))
 @given(program=programs(modifiers=True, entities=True))
 def test_random_programs_with_entities_agree(tmp_path_factory, program):
