@@ -52,7 +52,8 @@ class RootLog:
 @click.command("profile", cls=OrderedCommand)
 @click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False))
 @click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run.")
-@click.option("--call", multiple=True, metavar="FN", help="Call a function (as the server) before ticking.")
+@click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
+              help="Call a function (as the server) before ticking; macro arguments in SNBT.")
 @click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking.")
 @click.option("--until", metavar='"HOLDER OBJ RANGE"', help="Stop after the tick where the score is in RANGE.")
 @click.option("--backend", type=click.Choice(["numba", "python"]),

@@ -1,11 +1,20 @@
 """``dpemu profile``: every format, backends agreeing, stacks, the trace format, baselines."""
 import json
+import re
+from pathlib import Path
 
 import pytest
 from click.testing import CliRunner
 
 from emulator.cli import main
 from emulator.profile_formats import compare, parse_collapsed
+
+DATAPACK = Path(__file__).resolve().parents[2] / "datapack"
+# the pool pack's break (README, "Profiling packs"): load, table, full-power shot, then its first ticks
+BREAK = ("--call", "pool:table/setup", "--call", "pool:api/shot {angle:0,speed:6500,tip_x:0,tip_y:0,elevation:0}",
+         "--ticks", 5)
+# a folded stack as flamegraph.pl and speedscope read it: frames joined by ';', a space, a count
+FOLDED = re.compile(r"[^;\s]+(?:;[^;\s]+)* [1-9][0-9]*")
 
 # main calls a twice and b once; both call the shared leaf f, so f has two distinct stacks
 FUNCTIONS = {
@@ -179,3 +188,18 @@ def test_trace_errors_continue_on_the_same_line_as_in_the_game(pack):
     lines = result.output.splitlines()
     assert lines[2] == "        [C] scoreboard players set $x nope 1"
     assert lines[3] == "            [E] Unknown scoreboard objective 'nope'        [C] say hi -> 1"
+
+
+def test_break_shot_profile_opens_in_a_flame_graph_viewer():
+    result = profile(DATAPACK, *BREAK, "--format", "collapsed")
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert lines and all(FOLDED.fullmatch(line) for line in lines)
+    stacks = parse_collapsed(result.output)
+    numba = report(DATAPACK, *BREAK)
+    assert sum(stacks.values()) == numba["commands"]
+    # the shot was played, not refused for lack of objectives (the load functions ran first):
+    # the physics step runs every tick and carries most of the cost
+    assert numba["outside_ticks"]["load"] > 0 and min(numba["ticks"]["series"]) > 100
+    physics = sum(count for stack, count in stacks.items() if stack.startswith("pool:tick;pool:physics/step"))
+    assert physics > 0.9 * sum(numba["ticks"]["series"])
