@@ -82,6 +82,7 @@ class NumbaBackend:
         self.store_targets: dict[object, StoreTarget] = {}  # key -> target; reset per root
         self.forks: dict[int, list[tuple[int, list[int]]]] = {}  # depth -> [(resume pc, contexts left)]
         self.collected: dict[int, tuple[int, int, list[int]]] = {}  # depth -> (final pc, end pc, contexts)
+        self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
@@ -236,6 +237,7 @@ class NumbaBackend:
         node = self.program.host_ops[index].node
         r = self.regs
         self._current_pc = pc
+        self.host_runs[pc] += 1
         ctx = self.contexts[int(r[vm.R_CTX])]
         r[vm.R_PC] = pc + 1
         if opcode == vm.OP_HOST:
@@ -466,6 +468,12 @@ class NumbaBackend:
 
     def _report_here(self, message: str, severity: str) -> None:
         self.state.error(message, self.traceback(self._current_pc), severity)
+
+    def host_ops_run(self) -> list[tuple[str, ast.Command | ast.Subcommand, int]]:
+        """``(function, node, runs)`` of every host op Python ran since load (or since
+        ``host_runs.clear()``): what the VM could not do itself."""
+        return [(self.program.host_ops[self.program.rows[pc][1]].function,
+                 self.program.host_ops[self.program.rows[pc][1]].node, n) for pc, n in sorted(self.host_runs.items())]
 
     def function_totals(self) -> dict[str, int]:
         """Inclusive cost per function (callees included, outermost activations only)."""
