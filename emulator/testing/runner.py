@@ -27,6 +27,7 @@ from mcfunction_parser.pack import load_packs
 _SCORE_MATCHES = re.compile(r"score (\S+) (\S+) matches (\S+)$")
 _SCORE_COMPARE = re.compile(r"score (\S+) (\S+) (<=|>=|=|<|>) (\S+) (\S+)$")
 _ENTITY = re.compile(r"entity (.+)$")
+_CONTEXT_BOUND = re.compile(r"@s|[~^]")  # a condition whose meaning depends on the context
 _DATA = re.compile(r"data (?:storage (\S+) |entity (?:\S+\[.*\]|\S+) |block \S+ \S+ \S+ )(.+)$")
 
 
@@ -279,6 +280,8 @@ def describe_failure(test: TestSource, check, chat_start: int = 0) -> str:
             found = len(_chat_matches(emu, check, chat_start))
             return f"Did not expect chat message matching {check.pattern}, found {found}"
         return f"Expected chat message matching {check.pattern}, received {_sample(_chat(emu, chat_start))}"
+    if check.per_context and _CONTEXT_BOUND.search(check.condition):  # the failing context is gone
+        return f"{expect} {check.condition} (in every context of the execute prefix)"
     match = _SCORE_MATCHES.match(check.condition)
     if match:
         holder, objective, rng = match.groups()

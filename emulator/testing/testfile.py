@@ -51,6 +51,7 @@ class Check(Step):
     negated: bool
     condition: str
     function: str
+    per_context: bool = False  # an ``execute ... run assert``: checked in every context of the prefix
 
 
 @dataclass(frozen=True)
@@ -186,10 +187,11 @@ def _read_header_and_classify(case: TestCase, lines: list[str]) -> set[int]:
 def _test_step(b: _Builder, number: int, line: str) -> Step | None:
     col = len(line) - len(line.lstrip()) + 1
     text = line.strip()
-    gate = None
+    gate = prefix_text = None
     prefix = _EXECUTE_PREFIX.match(text)
     if prefix:
-        gate_cmd = b.command(prefix.group(1) + " run return 1", number, 1, col)
+        prefix_text = prefix.group(1)
+        gate_cmd = b.command(prefix_text + " run return 1", number, 1, col)
         if gate_cmd is None:
             return None
         gate = b.function([gate_cmd])
@@ -217,7 +219,22 @@ def _test_step(b: _Builder, number: int, line: str) -> Step | None:
         rest = rest[len("not"):]
         rest_col += len(rest) - len(rest.lstrip())
         rest = rest.strip()
+    kind = rest.split(" ", 1)[0]
+    if prefix_text and word == "assert" and kind in CONDITIONS and kind != "chat":
+        return _check_each(b, loc, prefix_text, negated, rest, number, rest_col)
     return _check(b, loc, gate, word, negated, rest, number, rest_col)
+
+
+def _check_each(b: _Builder, loc: Loc, prefix: str, negated: bool, condition: str, number: int, col: int):
+    """``execute PREFIX run assert [not] COND`` asserts in every context the prefix makes (none: it
+    passes), as PackTest runs the assert command per context: the generated function returns 0 at
+    the first context where the assertion fails."""
+    head = f"{prefix} {'if' if negated else 'unless'} "
+    cmd = b.command(head + condition + " run return 0", number, len(head) + 1, col)
+    passed = b.command("return 1", number, 1, col)
+    if cmd is None or passed is None:
+        return None
+    return Check(loc, None, "assert", negated, condition, b.function([cmd, passed]), per_context=True)
 
 
 def _check(b: _Builder, loc: Loc, gate, mode: str, negated: bool, condition: str, number: int, col: int):

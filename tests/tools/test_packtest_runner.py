@@ -260,3 +260,20 @@ def test_score_messages_resolve_selector_holders(pack):
     results = by_id(run(root))
     assert results["demo:dummy"].message == "Expected score @s o to match 8, found 7"
     assert results["demo:marker"].message == "Expected score @e[tag=m,limit=1] o to match 4, found 3"
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_execute_run_assert_asserts_in_every_context(pack, backend):
+    # PackTestExecutor runs each line as a command: an assert after `execute as ...` runs once per
+    # context and the first failing one fails the test; with no context it never runs
+    setup = ("scoreboard objectives add o dummy\nsummon marker ~ ~ ~ {Tags:[\"m\"]}\nsummon marker ~ ~ ~ {Tags:[\"m\"]}\n"
+             "scoreboard players set @e[tag=m,limit=1] o 1\n")
+    root = pack({
+        "demo/test/each.mcfunction": setup + "execute as @e[tag=none] run assert score @s o matches 5\n"
+                                             "execute as @e[tag=m,limit=1] run assert score @s o matches 1\n"
+                                             "execute as @e[tag=m] run assert not score @s o matches 2\n"
+                                             "execute as @e[tag=m] run assert score @s o matches 1\n",
+    })
+    result = run(root, backend).results[0]
+    assert (result.status, result.line) == ("failed", 8)
+    assert result.message == "Expected score @s o matches 1 (in every context of the execute prefix)"
