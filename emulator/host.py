@@ -27,7 +27,7 @@ import numpy as np
 from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
 from emulator import world_entities
 from emulator.state import Context, WorldState
-from emulator.world import nbt_ops, server_commands, stores
+from emulator.world import bossbars, nbt_ops, server_commands, stores
 from emulator.world.errors import CommandFailure as WorldFailure
 from emulator.world.source import Source
 from mcfunction_parser import ast
@@ -52,7 +52,7 @@ class StoreTarget:
 def resolves_target(st: ast.Subcommand) -> bool:
     """A store stage the host resolves (a score store on a name is the VM's own)."""
     return (isinstance(st, ast.StoreScore) and not isinstance(st.targets, ast.NameTarget)) or \
-        world_entities.is_world_store(st)
+        isinstance(st, ast.StoreBossbar) or world_entities.is_world_store(st)
 
 
 @dataclass
@@ -112,6 +112,8 @@ class Host:
             if isinstance(st, ast.StoreScore):
                 self.objective(st.objective)
                 return StoreTarget(tuple(self.holders(st.targets, ctx)))
+            if isinstance(st, ast.StoreBossbar):
+                return StoreTarget(_world(bossbars.store_target, self.state.bossbars, st))
             return StoreTarget(_entities(world_entities.store_target, self.state, st, ctx))
         except HostFailure as failure:
             if failure.report:
@@ -120,7 +122,7 @@ class Host:
 
     def run_store(self, st: ast.Subcommand, target: StoreTarget | None, ok: bool, value: int) -> None:
         """A ``store`` stage's callback: ``result`` stores the value (0 on failure), ``success`` 1/0.
-        ``target``: what the stage resolved (None for storage and bossbars)."""
+        ``target``: what the stage resolved (None for storage)."""
         stored = (value if ok else 0) if st.kind == "result" else int(ok)
         if isinstance(st, ast.StoreData) and isinstance(st.target, ast.StorageData):
             stores.store(self.storage(st.target, create=True), st.path, st.type, stored, st.scale)
@@ -130,7 +132,7 @@ class Host:
             for name in target.value:
                 self.state.scoreboard.set(name, st.objective, stored)
         else:
-            self.warn(st, "'store' into a bossbar is not emulated yet")
+            bossbars.store(target.value, st, ok, value)
 
     # ------------------------------------------------------------------ execute stages
     def stage(self, st: ast.Subcommand, ctx: Context) -> list[Context]:
@@ -139,7 +141,7 @@ class Host:
             return [ctx] if self.condition(st, ctx) else []
         if world_entities.is_world_stage(st):
             return _entities(world_entities.stage, self.state, st, ctx)
-        if isinstance(st, (ast.StoreData, ast.StoreBossbar)):
+        if isinstance(st, ast.StoreData):
             return [ctx]
         if isinstance(st, ast.ExIn):
             return [replace(ctx, dimension=st.dimension)]
@@ -280,6 +282,14 @@ def _random(host: Host, cmd: ast.RandomCommand, ctx: Context) -> int:
 def _trigger(host: Host, cmd: ast.Trigger, ctx: Context) -> int:
     host.objective(cmd.objective)
     return _world(server_commands.trigger_command, host.state, cmd, world_entities.executor(host.state, ctx))
+
+
+def _bossbar(host: Host, cmd: ast.Bossbar, ctx: Context) -> int:
+    players = None
+    if cmd.targets is not None:  # EntityArgument.getOptionalPlayers: none found is not an error
+        found = _entities(world_entities.select, host.state, cmd.targets, ctx)
+        players = [e.player_name for e in found if e.is_player]
+    return _world(bossbars.bossbar_command, host.state.bossbars, cmd, players)
 
 
 def _sender_name(host: Host, ctx: Context) -> str:
@@ -481,6 +491,7 @@ _HANDLERS = {
     ast.Time: _time,
     ast.RandomCommand: _random,
     ast.Trigger: _trigger,
+    ast.Bossbar: _bossbar,
     ast.ObjectivesAdd: _objectives_add,
     ast.ObjectivesRemove: _objectives_remove,
     ast.ObjectivesModify: _objectives_other,

@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from emulator.world.blocks import BlockMap
+from emulator.world.bossbars import BossBars
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
 from emulator.world.random_sequences import RandomSequences
@@ -466,6 +467,7 @@ class WorldState:
     executors: dict = field(default_factory=dict)  # Context.executor id (Entity.order) -> Entity
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
+    bossbars: BossBars = field(default_factory=BossBars)
     tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.entity_arrays)
 
     def emit(self, kind: str, text: str, loc: Loc | None = None) -> None:

@@ -657,6 +657,22 @@ class Time(Command):
 
 
 @dataclass(frozen=True, slots=True)
+class Bossbar(Command):
+    """``bossbar add|remove|list|set|get``. ``field``: the property ``set``/``get`` name (name,
+    color, style, value, max, visible, players); ``text``: the name component as written (add,
+    set name) or the color/style word; ``number``: set value|max; ``flag``: set visible;
+    ``targets``: set players TARGETS (None: nobody)."""
+
+    action: str
+    id: str | None
+    field: str | None = None
+    text: str | None = None
+    number: int | None = None
+    flag: bool | None = None
+    targets: Target | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Trigger(Command):
     objective: str
     action: str | None  # None (increment by 1), "add", "set"

@@ -9,7 +9,7 @@ from __future__ import annotations
 from emulator.semantics import INT_MAX
 from mcfunction_parser import ast
 
-from emulator.world import server_commands
+from emulator.world import bossbars, server_commands
 
 from . import conditions, data, entities, scoreboard
 from .data import world_failures
@@ -83,6 +83,15 @@ def trigger(env, cmd: ast.Trigger, source: Source, where) -> int:
         return server_commands.trigger_command(env.state, cmd, entities.world.executor(source.state, source.context))
 
 
+def bossbar(env, cmd: ast.Bossbar, source: Source, where) -> int:
+    players = None
+    if cmd.targets is not None:  # EntityArgument.getOptionalPlayers: none found is not an error
+        found = entities.select(cmd.targets, source)
+        players = [e.player_name for e in found if e.is_player]
+    with world_failures():
+        return bossbars.bossbar_command(env.state.bossbars, cmd, players)
+
+
 def not_modelled(env, cmd: ast.Command, source: Source, where) -> int:
     name = getattr(cmd, "name", type(cmd).__name__)
     env.warn_once(cmd, f"'{name}' is not emulated: it succeeds without effect", source)
@@ -104,6 +113,7 @@ HANDLERS = {
     ast.Time: time,
     ast.RandomCommand: random,
     ast.Trigger: trigger,
+    ast.Bossbar: bossbar,
 }
 
 

@@ -6,6 +6,7 @@ Positions and rotations use the world library's game math (:mod:`emulator.world.
 """
 from __future__ import annotations
 
+from emulator.world import bossbars
 from emulator.world.source import Source as WorldSource
 from mcfunction_parser import ast
 
@@ -33,7 +34,7 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
     if isinstance(sub, ast.StoreData):  # into an entity or a block
         return [entities.store_data(sub, source)]
     if isinstance(sub, ast.StoreBossbar):
-        return [store_not_modelled(env, sub, source)]
+        return [store_bossbar(sub, source)]
     if isinstance(sub, entities.world.ENTITY_STAGES):
         return entities.stage(sub, source)
     if isinstance(sub, ast.ExPositioned):
@@ -56,11 +57,14 @@ def apply(env, sub: ast.Subcommand, source: Source) -> list[Source]:
     return [source]
 
 
-def store_not_modelled(env, sub: ast.Subcommand, source: Source) -> Source:
-    """``store`` into a block or a bossbar: the chain runs, the result goes nowhere (warned)."""
+def store_bossbar(sub: ast.StoreBossbar, source: Source) -> Source:
+    """``store result|success bossbar ID value|max``: the bar is looked up now (an unknown one
+    fails the stage); the callback writes the result into it."""
+    with data.world_failures():
+        bar = bossbars.store_target(source.state.bossbars, sub)
 
     def store(success: bool, value: int) -> None:
-        env.warn_once(sub, "'store' into an entity, a block or a bossbar is not emulated yet", source)
+        bossbars.store(bar, sub, success, value)
 
     return source.with_callback(chain(source.callback, store))
 

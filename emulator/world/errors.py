@@ -45,6 +45,16 @@ MESSAGES = {
     "commands.random.error.range_too_large": "The range of the random value must be at most 2147483646",
     "commands.random.error.range_too_small": "The range of the random value must be at least 2",
     "commands.random.roll": "{0} rolled {1} (from {2} to {3})",
+    "commands.bossbar.create.failed": "A bossbar already exists with the ID '{0}'",
+    "commands.bossbar.unknown": "No bossbar exists with the ID '{0}'",
+    "commands.bossbar.set.players.unchanged": "Nothing changed. Those players are already on the bossbar with nobody to add or remove",
+    "commands.bossbar.set.name.unchanged": "Nothing changed. That's already the name of this bossbar",
+    "commands.bossbar.set.color.unchanged": "Nothing changed. That's already the color of this bossbar",
+    "commands.bossbar.set.style.unchanged": "Nothing changed. That's already the style of this bossbar",
+    "commands.bossbar.set.value.unchanged": "Nothing changed. That's already the value of this bossbar",
+    "commands.bossbar.set.max.unchanged": "Nothing changed. That's already the max of this bossbar",
+    "commands.bossbar.set.visibility.unchanged.hidden": "Nothing changed. The bossbar is already hidden",
+    "commands.bossbar.set.visibility.unchanged.visible": "Nothing changed. The bossbar is already visible",
 }
 
 

@@ -13,6 +13,7 @@ from emulator.state import WorldState
 from emulator.world.entities import Entity
 from emulator.world.errors import MESSAGES, CommandFailure
 from mcfunction_parser import ast
+from mcfunction_parser.tags import normalise_id  # ResourceLocation.toString (the MD5 seed hashes it)
 
 DAY_TICKS = 24000
 
@@ -53,7 +54,7 @@ def random_command(state: WorldState, cmd: ast.RandomCommand, source_name: str) 
     sequences = state.random_sequences
     if cmd.action == "reset":
         if cmd.sequence != "*":
-            sequences.reset(cmd.sequence, cmd.seed, cmd.include_world_seed, cmd.include_sequence_id)
+            sequences.reset(normalise_id(cmd.sequence), cmd.seed, cmd.include_world_seed, cmd.include_sequence_id)
             return 1
         if cmd.seed is not None:
             sequences.salt = cmd.seed
@@ -67,16 +68,11 @@ def random_command(state: WorldState, cmd: ast.RandomCommand, source_name: str) 
         raise CommandFailure("commands.random.error.range_too_small")
     if span >= INT_MAX:
         raise CommandFailure("commands.random.error.range_too_large")
-    source = sequences.level_random if cmd.sequence is None else sequences.get(_full_id(cmd.sequence))
+    source = sequences.level_random if cmd.sequence is None else sequences.get(normalise_id(cmd.sequence))
     value = source.between_inclusive(low, high)
     if cmd.action == "roll":
         state.emit("chat", MESSAGES["commands.random.roll"].format(source_name, value, low, high), cmd.loc)
     return value
-
-
-def _full_id(sequence: str) -> str:
-    """ResourceLocation.toString: the id with its namespace (the MD5 seed hashes this text)."""
-    return sequence if ":" in sequence else "minecraft:" + sequence
 
 
 def trigger_command(state: WorldState, cmd: ast.Trigger, executor: Entity | None) -> int:
