@@ -6,17 +6,24 @@
 - break: the full-power break, mean and max per tick, and the max over ticks without events;
 - overflow sweep: random shots (angle, speed up to full power, tip offset within the miscue
   limit, elevation) from the rack, every tenth a full-power break, with the overflow sanitizer;
-  counts wrapped values, runtime diagnostics and tables that did not come to rest.
+  counts wrapped values, runtime diagnostics and tables that did not come to rest, and reports
+  the commands per tick (max over the sweep, shots over the budget) and the wall time per shot.
 
-Usage: python bench/bench_pool.py [--shots N] [--seed S]   (the issue's sweep: --shots 1000)
+Each sweep worker loads the pack once and starts every shot on a fresh world
+(emulator.shot.reset_table); the shots are split over --jobs processes.
+
+Usage: python bench/bench_pool.py [--shots N] [--seed S] [--jobs J]   (the issue's sweep: --shots 1000)
 """
 from __future__ import annotations
 
 import argparse
+import multiprocessing
+import os
 import random
 import time
+from dataclasses import dataclass
 
-from emulator.shot import BREAK, Shot, new_table, play, random_shot, strike
+from emulator.shot import BREAK, Shot, new_table, play, random_shot, reset_table, strike
 
 BUDGET_MOVING, BUDGET_IDLE = 5000, 50
 
@@ -39,19 +46,44 @@ def shot_costs(shot: Shot) -> tuple[list[int], list[int]]:
     return costs, quiet
 
 
-def overflow_sweep(shots: int, seed: int) -> dict:
+@dataclass(frozen=True)
+class SweepShot:
+    """One shot of the overflow sweep: what the sanitizer and the counters saw."""
+    k: int
+    ticks: int
+    max_commands: int
+    overflows: int
+    diagnostics: int
+    at_rest: bool
+    refused: bool
+    seconds: float               # wall time: fresh world, strike, ticks until rest
+
+
+_worker_emu = None
+
+
+def _sweep_worker_start() -> None:
+    global _worker_emu
+    _worker_emu = new_table(sanitize=True)
+
+
+def _sweep_one(job: tuple[int, Shot]) -> SweepShot:
+    k, shot = job
+    started = time.perf_counter()
+    emu = reset_table(_worker_emu)
+    result = play(emu, shot)
+    return SweepShot(k, result.ticks, result.commands_max, len(result.overflows), len(result.diagnostics),
+                     result.at_rest, bool(result.refused), time.perf_counter() - started)
+
+
+def overflow_sweep(shots: int, seed: int, jobs: int) -> list[SweepShot]:
     rng = random.Random(seed)
-    emu = new_table(sanitize=True)
-    totals = {"shots": shots, "overflows": 0, "diagnostics": 0, "not_at_rest": 0, "refused": 0, "ticks": 0}
-    for k in range(shots):
-        emu.call("pool:table/setup", at=(0.0, 64.0, 0.0))
-        result = play(emu, random_shot(rng, k))
-        totals["overflows"] = len(result.overflows)          # the emulator's lists accumulate
-        totals["diagnostics"] = len(result.diagnostics)
-        totals["not_at_rest"] += not result.at_rest
-        totals["refused"] += bool(result.refused)
-        totals["ticks"] += result.ticks
-    return totals
+    work = [(k, random_shot(rng, k)) for k in range(shots)]
+    if jobs <= 1:
+        _sweep_worker_start()
+        return [_sweep_one(job) for job in work]
+    with multiprocessing.get_context("fork").Pool(jobs, initializer=_sweep_worker_start) as pool:
+        return list(pool.imap(_sweep_one, work, chunksize=4))
 
 
 def _row(name: str, costs: list[int], budget: int) -> str:
@@ -59,10 +91,30 @@ def _row(name: str, costs: list[int], budget: int) -> str:
     return f"{name:<28} {mean:>9.0f} {max(costs):>9d} {budget:>9d}  {'ok' if max(costs) <= budget else 'OVER'}"
 
 
+def _sweep_report(results: list[SweepShot], seed: int, jobs: int, seconds: float) -> list[str]:
+    if not results:
+        return [f"overflow sweep: 0 shots (seed {seed})"]
+    worst = max(results, key=lambda r: r.max_commands)
+    over = [r.k for r in results if r.max_commands > BUDGET_MOVING]
+    walls = sorted(r.seconds for r in results)
+    lines = [
+        f"overflow sweep: {len(results)} shots (seed {seed}), {sum(r.ticks for r in results)} ticks, "
+        f"{sum(r.overflows for r in results)} wrapped values, {sum(r.diagnostics for r in results)} runtime "
+        f"diagnostics, {sum(not r.at_rest for r in results)} not at rest, {sum(r.refused for r in results)} refused",
+        _row("sweep, max per shot", [r.max_commands for r in results], BUDGET_MOVING)
+        + f"  (worst: shot {worst.k}; {len(over)} shots over the budget{': ' + str(over[:20]) if over else ''})",
+        f"wall time per shot: mean {sum(walls) / len(walls):.2f} s, median {walls[len(walls) // 2]:.2f} s, "
+        f"max {walls[-1]:.2f} s; sweep {seconds:.0f} s on {jobs} process(es)",
+    ]
+    return lines
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--shots", type=int, default=100)
     parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--jobs", type=int, default=min(2, os.cpu_count() or 1),
+                        help="sweep processes (default: 2, or 1 on a single core)")
     args = parser.parse_args()
     print(f"{'commands per tick':<28} {'mean':>9} {'max':>9} {'budget':>9}")
     print(_row("idle", [idle_cost()], BUDGET_IDLE))
@@ -72,11 +124,9 @@ def main() -> None:
     print(_row("break (16 balls)", brk, BUDGET_MOVING))
     print(_row("break, ticks without events", quiet, BUDGET_MOVING))
     started = time.perf_counter()
-    totals = overflow_sweep(args.shots, args.seed)
-    seconds = time.perf_counter() - started
-    print(f"overflow sweep: {totals['shots']} shots (seed {args.seed}), {totals['ticks']} ticks, "
-          f"{totals['overflows']} wrapped values, {totals['diagnostics']} runtime diagnostics, "
-          f"{totals['not_at_rest']} not at rest, {totals['refused']} refused; {seconds:.0f} s")
+    results = overflow_sweep(args.shots, args.seed, args.jobs)
+    for line in _sweep_report(results, args.seed, args.jobs, time.perf_counter() - started):
+        print(line, flush=True)
 
 
 if __name__ == "__main__":

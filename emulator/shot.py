@@ -98,15 +98,34 @@ def new_table(pack: str | Path = DEFAULT_PACK, backend: str = "numba", sanitize:
     emu.load(pack)
     if missing_functions(emu):
         return emu
-    emu.tick()
+    return _set_up(emu)
+
+
+def reset_table(emu: Emulator) -> Emulator:
+    """A fresh world on ``emu``'s already loaded pack (no reparse, no recompile): its load tick run
+    and a racked table at TABLE_CORNER, as :func:`new_table` leaves it. Many shots on one emulator
+    start each from here, so that no score or entity of an earlier shot slows the next."""
+    emu.load_parsed(emu.packs)
+    return _set_up(emu)
+
+
+def _set_up(emu: Emulator) -> Emulator:
+    emu.tick()                                         # the load tick
     emu.call("pool:table/setup", at=TABLE_CORNER)
     return emu
 
 
-def ball_states(emu: Emulator) -> dict[int, tuple[int, int, int]]:
-    """Ball id -> (x um, z um, pool.state) read from the ball entities' scores."""
-    return {e["scores"]["pool.id"]: (e["scores"]["pool.x"], e["scores"]["pool.z"], e["scores"]["pool.state"])
-            for e in emu.entities("@e[tag=pool.ball]")}
+def ball_holders(emu: Emulator) -> dict[int, str]:
+    """Ball id -> its entity's score holder (UUID), found once by selector."""
+    return {e["scores"]["pool.id"]: e["uuid"] for e in emu.entities("@e[tag=pool.ball]")}
+
+
+def ball_states(emu: Emulator, holders: dict[int, str] | None = None) -> dict[int, tuple[int, int, int]]:
+    """Ball id -> (x um, z um, pool.state) from the balls' scores (``holders`` from
+    :func:`ball_holders` saves running a selector each time)."""
+    holders = holders if holders is not None else ball_holders(emu)
+    return {i: (emu.score(u, "pool.x"), emu.score(u, "pool.z"), emu.score(u, "pool.state"))
+            for i, u in holders.items()}
 
 
 def strike(emu: Emulator, shot: Shot) -> list[str]:
@@ -136,7 +155,8 @@ def _plain(component: str) -> str:
 def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
     """Strike and tick until ``$resting pool.game`` is 1 or ``max_ticks`` ran."""
     refused = strike(emu, shot)
-    start = ball_states(emu)
+    holders = ball_holders(emu)
+    start = ball_states(emu, holders)
     if refused:
         return ShotResult(refused, emu.score("$resting", "pool.game") == 1, 0, [], 0.0, _outcomes(start, {}), list(emu.overflows),
                           list(emu.diagnostics))
@@ -146,7 +166,7 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
     at_rest = False
     for tick in range(1, max_ticks + 1):
         emu.tick()
-        now = ball_states(emu)
+        now = ball_states(emu, holders)
         last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
         previous = now
         if emu.score("$resting", "pool.game") == 1:

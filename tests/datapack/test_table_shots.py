@@ -74,7 +74,14 @@ def test_shot_ends_where_the_float_reference_does(start, shot):
     assert error <= 1000 + 0.0005 * path, (error, path)
 
 
+def complete(board):
+    """The balls' scores hold one moment: no physics tick is carried over to the next game tick
+    ($carry pool.game, pool:physics/step: mid-computation, balls are at different times)."""
+    return board.score("$carry", "pool.game") != 1
+
+
 def assert_on_table_and_apart(board, n):
+    assert complete(board)
     in_play = [i for i in range(n) if board.ball_score(i, "pool.state") != 3]
     p = positions(board, n)
     for k, i in enumerate(in_play):
@@ -87,9 +94,13 @@ def test_balls_never_overlap_and_stay_on_the_table():
     start = [(635000, 635000), (1905000, 640000), (1963000, 610000), (1963000, 668000)]
     board = table(start)
     shoot(board, angle=0, speed=4000)
+    checked = 0
     while board.score("$resting", "pool.game") == 0:
         board.tick()
-        assert_on_table_and_apart(board, len(start))
+        if complete(board):
+            assert_on_table_and_apart(board, len(start))
+            checked += 1
+    assert checked >= 20
 
 
 def test_integer_energy_never_rises_between_ticks():
@@ -98,6 +109,8 @@ def test_integer_energy_never_rises_between_ticks():
     energies = []
     while board.score("$resting", "pool.game") == 0:
         board.tick()
+        if not complete(board):
+            continue
         energies.append(sum(
             board.ball_score(i, "pool.vx") ** 2 + board.ball_score(i, "pool.vz") ** 2
             + 0.4 * (board.ball_score(i, "pool.wx") ** 2 + board.ball_score(i, "pool.wz") ** 2
@@ -183,16 +196,13 @@ def test_setup_racks_sixteen_balls_apart_at_the_corner():
 def test_full_power_break_keeps_every_ball_on_the_table_and_apart():
     board = racked_table()
     shoot(board, angle=0, speed=6500)
-    quiet_costs = []   # ticks without events: the 5000-command budget holds for 16 balls
     for _ in range(600):
-        cost = board.tick()
-        if board.score("#events", "pool.tmp") == 0:
-            quiet_costs.append(cost)
-        assert_on_table_and_apart(board, 16)
+        board.tick()
+        if complete(board):
+            assert_on_table_and_apart(board, 16)
         if board.score("$resting", "pool.game") == 1:
             break
     assert board.score("$resting", "pool.game") == 1
-    assert max(quiet_costs) <= 5000
 
 
 def test_command_cost_per_tick_of_one_rolling_ball():
@@ -270,7 +280,7 @@ def test_random_shots_never_wrap_and_keep_the_balls_apart():
         costs = play(board)
         assert board.score("$resting", "pool.game") == 1, shot
         assert_on_table_and_apart(board, 16)
-        assert max(costs) <= 65536, shot          # far from the game's command quota
+        assert max(costs) <= 5000, shot           # the issue's budget per tick
 
 
 def test_near_tangent_contact_in_the_rack_does_not_freeze_the_table():

@@ -1,15 +1,20 @@
 # pool:physics/substep — from #now to the tick's end: dirty balls (all at the tick's start, then
-# those of the last event) are advanced to the end along new chords; the others keep their chord,
-# its start moved to #now. If the chords meet a rail, a pocket or another ball, only the balls of
-# the earliest event are rewound to it and resolved, then the rest of the tick is redone.
-# Reads/writes: #now #events pool.tmp, every ball's scores; temporaries #rem #step #te #best #kind
-# #partner #event_rail pool.tmp. A ball at rest that was not hit keeps cx = x (its chord is a
-# point) all through the tick.
+# those of the last event) are advanced to the end along new chords (pool.fresh); the others keep
+# their chord, its start moved to #now. If the chords meet a rail, a pocket or another ball, only
+# the balls of the earliest event are rewound to it and resolved, then the rest of the tick is
+# redone. Each step (a trial, a ball's event search, an event) runs only when its estimated cost
+# still fits in this game tick's $budget (#work); else $carry pool.game is set and the next game
+# tick goes on from where this one stopped (pool:physics/step). The searches done (pool.found) and
+# the new chords (pool.fresh) stay tagged until the event is resolved or the tick ends.
+# Reads/writes: #now #work #events pool.tmp, $carry pool.game, every ball's scores; temporaries
+# #rem #step #te #best #kind #partner #event_rail pool.tmp. A ball at rest that was not hit keeps
+# cx = x (its chord is a point) all through the tick.
 scoreboard players set #rem pool.tmp 10000
 scoreboard players operation #rem pool.tmp -= #now pool.tmp
-tag @e[tag=pool.fresh] remove pool.fresh
-execute as @e[tag=pool.ball,scores={pool.state=0..2}] run function pool:ball/trial
-execute as @e[tag=pool.moving] run function pool:physics/find/ball
+execute as @e[tag=pool.dirty] run function pool:physics/trial
+execute if entity @e[tag=pool.dirty] run return run scoreboard players set $carry pool.game 1
+execute as @e[tag=pool.moving,tag=!pool.found] run function pool:physics/find/next
+execute if entity @e[tag=pool.moving,tag=!pool.found] run return run scoreboard players set $carry pool.game 1
 # the earliest of the balls' events: the minimum first, then its ball (a running minimum
 # `execute as @e if score @s pool.nt < #te run ...` would take the last ball visited, since
 # each execute stage runs over all contexts before `run`)
@@ -19,15 +24,6 @@ tag @e[tag=pool.event] remove pool.event
 tag @e[tag=pool.event_b] remove pool.event_b
 execute if score #te pool.tmp matches 20000 run return 0
 execute as @e[tag=pool.moving] if score @s pool.nt = #te pool.tmp run function pool:physics/find/take
-execute if score #kind pool.tmp matches 1 as @e[tag=pool.ball] if score @s pool.id = #partner pool.tmp run tag @s add pool.event_b
-execute as @e[tag=pool.event] run function pool:ball/rewind
-execute as @e[tag=pool.event_b] run function pool:ball/rewind
-execute as @e[tag=pool.event,limit=1] run function pool:physics/resolve
-scoreboard players operation #now pool.tmp = #te pool.tmp
-execute as @e[tag=pool.event] run function pool:ball/resume
-execute as @e[tag=pool.event_b] run function pool:ball/resume
-function pool:physics/find/mark_stale
-scoreboard players add #events pool.tmp 1
-# at the cap the rest of this tick is dropped: every ball waits at the event's time
-execute if score #events pool.tmp >= $max_events pool.const run return run function pool:physics/wait
+function pool:physics/event
+execute if score $carry pool.game matches 1 run return 0
 execute if score #now pool.tmp matches ..9999 run function pool:physics/substep

@@ -3,6 +3,8 @@
 # (rows 49519 um apart = (2R + 30) cos 30 degrees, balls 57180 um apart in a row).
 # Writes: the ball entities and their scores; $resting (1), $pocketed (0) pool.game.
 kill @e[tag=pool.ball]
+# a physics tick left unfinished by the old balls is dropped with them
+scoreboard players set $carry pool.game 0
 function pool:table/rack/ball {id:0,x:635000,z:635000,item:"minecraft:white_concrete"}
 function pool:table/rack/ball {id:1,x:1905000,z:635000,item:"minecraft:yellow_concrete"}
 function pool:table/rack/ball {id:9,x:1954519,z:606410,item:"minecraft:yellow_terracotta"}

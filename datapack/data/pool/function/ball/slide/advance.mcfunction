@@ -2,6 +2,7 @@
 # r += v f + a f^2 / 2, v += a f, w -= (5/2) a f, tau -= f.
 # Reads: #f pool.tmp; @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.ax pool.az pool.tau.
 # Writes: those @s scores; temporaries #g #d pool.tmp and the math library's.
+execute if score #f pool.tmp matches 10000 run return run function pool:ball/slide/whole_tick
 # g = f^2 / 10000 (so a f^2 / 2 = a g / 20000 in um)
 scoreboard players operation #g pool.tmp = #f pool.tmp
 scoreboard players operation #g pool.tmp *= #f pool.tmp

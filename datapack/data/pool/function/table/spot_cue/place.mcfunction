@@ -1,5 +1,6 @@
 # pool:table/spot_cue/place — the cue ball @s returns to the head spot, at rest, visible.
-# Writes: @s pool.x pool.z pool.state and motion scores, its display.
+# Writes: @s pool.x pool.z pool.state and motion scores, its display; tag pool.settled removed.
+tag @s remove pool.settled
 scoreboard players set @s pool.x 635000
 scoreboard players set @s pool.z 635000
 function pool:ball/roll/stop
