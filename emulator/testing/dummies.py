@@ -49,7 +49,7 @@ from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word, vec3
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
-from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.reader import Reader
 
 SIMPLE = ("spawn", "leave", "respawn", "jump", "swap")
 ACTIONS = (*SIMPLE, "sneak", "sprint", "drop", "selectslot", "use", "attack", "mine")
@@ -81,7 +81,7 @@ class Unsupported(Exception):
 # ---------------------------------------------------------------------- parsing
 def parse(text: str, loc: Loc, version) -> DummyCommand:
     """``dummy ...`` (the whole command) as DummyCommand's brigadier tree reads it; raises
-    ParseError (with the offset in ``text``) when malformed."""
+    mcfunction_parser's ParseError (with the offset in ``text``) when malformed."""
     r = Reader(text, loc, version)
     r.pos = len("dummy")
     r.space("a player")

@@ -149,7 +149,8 @@ def place_template(emu: Emulator, packs, template_id: str) -> None:
     """The test's structure with its corner at the world origin (the test source is one block up)."""
     data = structures.find_template(packs, template_id)
     if data is None:
-        raise _Verdict(FAILED, f"Missing test structure: {template_id} (no {structures.template_file(packs, template_id)})")
+        missing = structures.template_file(packs, template_id)
+        raise _Verdict(FAILED, f"Missing test structure: {template_id} (no {missing})")
     try:
         template = structures.read_template(data)
     except structures.StructureError as error:

@@ -2,7 +2,6 @@
 test_pool_pack_suite.py)."""
 import xml.etree.ElementTree as ET
 
-import pytest
 from click.testing import CliRunner
 
 from emulator.cli import main

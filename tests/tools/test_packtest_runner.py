@@ -266,8 +266,8 @@ def test_score_messages_resolve_selector_holders(pack):
 def test_execute_run_assert_asserts_in_every_context(pack, backend):
     # PackTestExecutor runs each line as a command: an assert after `execute as ...` runs once per
     # context and the first failing one fails the test; with no context it never runs
-    setup = ("scoreboard objectives add o dummy\nsummon marker ~ ~ ~ {Tags:[\"m\"]}\nsummon marker ~ ~ ~ {Tags:[\"m\"]}\n"
-             "scoreboard players set @e[tag=m,limit=1] o 1\n")
+    setup = ("scoreboard objectives add o dummy\n" + "summon marker ~ ~ ~ {Tags:[\"m\"]}\n" * 2
+             + "scoreboard players set @e[tag=m,limit=1] o 1\n")
     root = pack({
         "demo/test/each.mcfunction": setup + "execute as @e[tag=none] run assert score @s o matches 5\n"
                                              "execute as @e[tag=m,limit=1] run assert score @s o matches 1\n"
