@@ -5,14 +5,14 @@ discovery finds test files and their packs; directives and testfile read one fil
 junit report them. The format is misode/packtest's (README and PackTestFunction):
 
 - every test gets a fresh world: the pack loaded and ``#minecraft:load`` run; the test's commands
-  run as the server (or its ``@dummy`` player) at (0, 1, 0), one block above the test structure;
+  run as the server (or its ``@dummy`` player) at (0, 1, 0), the test structure's corner;
 - ``assert [not] COND`` / ``await [not] COND`` with the conditions of ``execute if`` (checked by
   the emulator itself) and PackTest's ``chat PATTERN``; ``await delay TIME`` (``await for`` in
   older PackTest); ``fail MESSAGE``; ``succeed``; each also after ``execute ... run``;
 - ``await`` ticks the world (``#minecraft:tick``, schedules) until the condition holds or the
   ``@timeout`` (100 ticks) runs out; a test that reaches its end passes;
-- ``@template ID`` places the structure file's blocks and entities with its corner at the world
-  origin (:mod:`emulator.world.structures`);
+- ``@template ID`` places the structure file's blocks and entities with its corner at the test
+  source (:mod:`emulator.world.structures`);
 - ``dummy <player> <action>``: simulated players (:mod:`emulator.testing.dummies` says what each
   action changes, and which actions fail the test as not modelled).
 

@@ -3,7 +3,7 @@ misode/packtest's README. As PackTestFunction.fromLines reads them: only the lea
 that start with ``#`` (a blank or indented line ends it); a name alone means ``true``.
 
 - ``@template ID``: the structure (``data/<ns>/structure/<path>.nbt``) placed for the test with its
-  corner at the world origin (default: an empty 1x1x1 structure, nothing to place).
+  corner at the test source, (0, 1, 0) (default: an empty 1x1x1 structure, nothing to place).
 - ``@timeout N``: ticks before the test fails (default 100).
 - ``@optional [true|false]``: the test may fail without failing the run (no value: true).
 - ``@dummy [POS]``: spawn a dummy player as ``@s`` (default ``~0.5 ~ ~0.5``).

@@ -146,7 +146,7 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
 
 
 def place_template(emu: Emulator, packs, template_id: str) -> None:
-    """The test's structure with its corner at the world origin (the test source is one block up)."""
+    """The test's structure with its corner at the test source's block."""
     data = structures.find_template(packs, template_id)
     if data is None:
         missing = structures.template_file(packs, template_id)
@@ -155,13 +155,15 @@ def place_template(emu: Emulator, packs, template_id: str) -> None:
         template = structures.read_template(data)
     except structures.StructureError as error:
         raise _Verdict(FAILED, f"Test structure {template_id}: {error}") from None
-    structures.place(emu.state, template, (0, 0, 0))
+    structures.place(emu.state, template, tuple(int(c) for c in TestSource.ORIGIN))
 
 
 class TestSource:
     """Where test commands run (PackTestExecutor.createCommandSourceStack): as the server, or as the
-    test's dummy, at the test structure's origin plus one block up; the structure sits at the world
-    origin. The dummy stays the source's entity even after it left or respawned, as in PackTest."""
+    test's dummy, at the test structure's corner (0, 1, 0). PackTest 1.x ran them at the test's
+    structure block + (0, 1, 0), which is where the structure block places a structure, and
+    PackTest 2 at the test origin, the same corner. The dummy stays the source's entity even after
+    it left or respawned, as in PackTest."""
 
     ORIGIN = (0.0, 1.0, 0.0)
 

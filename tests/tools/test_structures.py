@@ -85,17 +85,20 @@ def results(root, backend="numba"):
     return {r.id: r for r in run_suite(discover([root]), backend).results}
 
 
+# the structure's corner is the test source's block (GameTest: the structure block places it at
+# its own position + (0, 1, 0), where PackTest 1.x runs the test; PackTest 2: the test origin)
 TEST = ("# @template demo:room\n"
-        "assert block ~ ~-1 ~ stone\n"
-        "assert block ~1 ~-1 ~ oak_stairs[facing=east]\n"
-        "assert block ~2 ~ ~ chest{Lock:\"key\"}\n"
-        "assert block ~1 ~ ~ air\n"
-        "assert entity @e[type=armor_stand,tag=from_template,x=1.5,y=1,z=0.5,distance=..0.001]\n"
+        "assert block ~ ~ ~ stone\n"
+        "assert block ~1 ~ ~ oak_stairs[facing=east]\n"
+        "assert block ~2 ~1 ~ chest{Lock:\"key\"}\n"
+        "assert block ~1 ~1 ~ air\n"
+        "assert block ~ ~-1 ~ air\n"
+        "assert entity @e[type=armor_stand,tag=from_template,x=1.5,y=2,z=0.5,distance=..0.001]\n"
         "assert not entity @e[type=armor_stand,nbt={UUID:[I;1,2,3,4]}]\n")
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])
-def test_template_blocks_and_entities_are_placed_at_the_test_origin(tmp_path, backend):
+def test_template_blocks_and_entities_are_placed_at_the_test_source(tmp_path, backend):
     root = write(tmp_path, {"demo/structure/room.nbt": structure(BLOCKS, PALETTE, [ENTITY]),
                             "demo/test/room.mcfunction": TEST})
     result = results(root, backend)["demo:room"]
