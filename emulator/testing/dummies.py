@@ -221,7 +221,8 @@ class Dummies:
         tags, spawn = set(dummy.tags), self.spawns.pop(dummy.uuid)
         self.state.entities.kill(dummy)
         reborn = self.spawn(dummy.player_name, spawn)
-        reborn.tags = tags
+        reborn.tags = tags  # PlayerList.respawn copies the tags to the new player
+        self._changed()
 
     def _jump(self, dummy: Entity, command, ctx) -> None:
         if not dummy.data.get("OnGround"):
