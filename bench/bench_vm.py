@@ -5,7 +5,9 @@
   with the overflow sanitizer on;
 - the same program on the reference backend (fewer iterations) and the speed ratio;
 - the first call in a new process with a warm numba cache (subprocess), minus a second call;
-- the host round trip: a function of host commands (``time query gametime``), per command.
+- the host round trip: a function of host commands (``time query gametime``), per command;
+- an entity-heavy loop: 16 markers, ``execute as @e[tag=x,scores={s=0..2}] run scoreboard players
+  add @s s 1`` and a selector ``set`` per iteration, on the VM (selectors, forks) and on the reference.
 
 Usage: python bench/bench_vm.py [--quick]
 """
@@ -21,6 +23,7 @@ from pathlib import Path
 
 BODY_OPS = 1000
 HOST_OPS = 2000
+ENTITIES = 16
 
 
 def write_pack(root: Path) -> Path:
@@ -40,11 +43,18 @@ def write_pack(root: Path) -> Path:
     (functions / "loop.mcfunction").write_text(
         "function b:body\nscoreboard players remove #i o 1\nexecute if score #i o matches 1.. run function b:loop\n")
     (functions / "host.mcfunction").write_text("time query gametime\n" * HOST_OPS)
+    (functions / "esetup.mcfunction").write_text(
+        "scoreboard objectives add s dummy\n" + 'summon marker 0 0 0 {Tags:["x"]}\n' * ENTITIES
+        + "scoreboard players set @e[tag=x] s 0\n")
+    (functions / "eloop.mcfunction").write_text(
+        "execute as @e[tag=x,scores={s=0..2}] run scoreboard players add @s s 1\n"
+        "scoreboard players set @e[tag=x,scores={s=3..}] s 0\n"
+        "scoreboard players remove #i o 1\nexecute if score #i o matches 1.. run function b:eloop\n")
     return root
 
 
 def timed_loop(pack: Path, backend: str, iterations: int, sanitize: bool = False, counting: bool = True,
-               repeats: int = 3) -> tuple[float, int]:
+               repeats: int = 3, loop: str = "b:loop", setup: tuple[str, ...] = ("b:setup",)) -> tuple[float, int]:
     """(seconds, commands) of one root running the loop ``iterations`` times, after a warm-up;
     the best of ``repeats`` runs, since the machine is shared."""
     from emulator import Emulator
@@ -53,14 +63,15 @@ def timed_loop(pack: Path, backend: str, iterations: int, sanitize: bool = False
     emu.load(pack)
     if hasattr(emu.backend, "counting"):
         emu.backend.counting = counting
-    emu.call("b:setup")
+    for function in setup:
+        emu.call(function)
     emu.set_score("#i", "o", 1)
-    emu.call("b:loop")  # warm-up: JIT compilation or cache load
+    emu.call(loop)  # warm-up: JIT compilation or cache load
     best = float("inf")
     for _ in range(repeats):
         emu.set_score("#i", "o", iterations)
         start = time.perf_counter()
-        result = emu.runtime.call("b:loop")
+        result = emu.runtime.call(loop)
         best = min(best, time.perf_counter() - start)
     return best, result.cost
 
@@ -113,6 +124,11 @@ def main() -> None:
         t, n = timed_loop(pack, "python", ref_iterations, repeats=1)
         ref_rate = n / t
         rows.append(("reference backend", n, t, ref_rate))
+        entity_rows = []
+        for backend, iterations in (("numba", vm_iterations // 10), ("python", ref_iterations * 10)):
+            t, n = timed_loop(pack, backend, iterations, loop="b:eloop", setup=("b:setup", "b:esetup"),
+                              repeats=3 if backend == "numba" else 1)
+            entity_rows.append((f"entities, {'VM' if backend == 'numba' else 'reference'}", n, t, n / t))
         host_us = host_round_trip(pack)
         first, second = first_call_overhead(pack)
 
@@ -120,6 +136,9 @@ def main() -> None:
     for name, n, t, rate in rows:
         print(f"{name:<22}{n:>14,}{t:>10.3f}{rate:>16,.0f}")
     print(f"VM / reference speed: {vm_rate / ref_rate:,.0f}x")
+    for name, n, t, rate in entity_rows:
+        print(f"{name:<22}{n:>14,}{t:>10.3f}{rate:>16,.0f}")
+    print(f"entities: VM / reference speed: {entity_rows[0][3] / entity_rows[1][3]:,.1f}x")
     print(f"counters' overhead: {(off_rate / vm_rate - 1) * 100:+.1f} % time")
     print(f"host command round trip: {host_us:.2f} us per command (VM exit, Python handler, resume)")
     print(f"first call in a new process (warm cache): {first:.3f} s; second call {second * 1e3:.2f} ms; "

@@ -191,19 +191,15 @@ def _select(sel, self_slot, sels, tests, ent, order, values, present, alive_obj,
     return n
 
 
-@njit(cache=True, inline="always")
-def _holders(h, ctx, ctx_holder, ctx_entity, sels, tests, ent, order, values, present, alive_obj, out, off):
-    """ScoreHolderArgument: the holder ids operand ``h`` names, written to ``out[off:]``; their count
-    (0: "No entity was found", the command fails)."""
-    if h >= 0:
-        out[off] = h
-        return 1
-    if h == HOLDER_SELF:
-        if ctx_holder[ctx] < 0:
-            return 0
-        out[off] = ctx_holder[ctx]
-        return 1
-    n = _select(HOLDER_SEL_BASE - h, ctx_entity[ctx], sels, tests, ent, order, values, present, alive_obj, out, off)
+@njit(cache=True)
+def _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, out, off):
+    """ScoreHolderArgument for an operand that is not a name: the holder ids it names, written to
+    ``out[off:]``; their count (0: "No entity was found", the command fails). The dispatch loop
+    resolves names and ``@s`` itself (HOLDER_SELF run by the server arrives here as -1): a call
+    with array arguments costs more than a whole scoreboard command."""
+    if h > HOLDER_SEL_BASE:
+        return 0
+    n = _select(HOLDER_SEL_BASE - h, ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, out, off)
     for i in range(off, off + n):
         out[i] = ent[out[i], E_HOLDER]
     return n
@@ -271,10 +267,22 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 break
             o = code[pc, 2]
             o2 = code[pc, 4]
-            nt = _holders(code[pc, 1], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
-                          alive_obj, selbuf, 0)
-            ns = _holders(code[pc, 3], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
-                          alive_obj, selbuf, nt)
+            h = code[pc, 1]
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
+            if h >= 0:
+                selbuf[0] = h
+                nt = 1
+            else:
+                nt = _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+            h2 = code[pc, 3]
+            if h2 == HOLDER_SELF:
+                h2 = ctx_holder[ctx]
+            if h2 >= 0:
+                selbuf[nt] = h2
+                ns = 1
+            else:
+                ns = _holders(h2, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, nt)
             if sanitize and novf + nt * ns > ovf.shape[0]:  # room for every report first: runs again after
                 status = ST_FLUSH
                 break
@@ -356,8 +364,14 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             if quota <= 0:
                 status = ST_CUT
                 break
-            n = _holders(code[pc, 1], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
-                         alive_obj, selbuf, 0)
+            h = code[pc, 1]
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
+            if h >= 0:  # a name, or @s run by an entity (selectors: below; calls cost, keep them off this path)
+                selbuf[0] = h
+                n = 1
+            else:
+                n = _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
             if sanitize and novf + n > ovf.shape[0]:
                 status = ST_FLUSH
                 break
@@ -412,8 +426,14 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             quota -= 1
             if counting:
                 counts[pc] += 1
-            n = _holders(code[pc, 1], ctx, ctx_holder, ctx_entity, sels, tests, ent, eorder, values, present,
-                         alive_obj, selbuf, 0)
+            h = code[pc, 1]
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
+            if h >= 0:
+                selbuf[0] = h
+                n = 1
+            else:
+                n = _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
             o = code[pc, 2]
             has = 1
             ok = 0
