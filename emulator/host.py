@@ -27,7 +27,7 @@ import numpy as np
 from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
 from emulator import world_entities
 from emulator.state import Context, WorldState
-from emulator.world import bossbars, nbt_ops, server_commands, stores
+from emulator.world import bossbars, nbt_ops, relations, server_commands, stores
 from emulator.world.errors import CommandFailure as WorldFailure
 from emulator.world.source import Source
 from mcfunction_parser import ast
@@ -292,6 +292,12 @@ def _bossbar(host: Host, cmd: ast.Bossbar, ctx: Context) -> int:
     return _world(bossbars.bossbar_command, host.state.bossbars, cmd, players)
 
 
+def _ride(host: Host, cmd: ast.Ride, ctx: Context) -> int:
+    riders = _entities(world_entities.select, host.state, cmd.target, ctx)
+    vehicles = [] if cmd.vehicle is None else _entities(world_entities.select, host.state, cmd.vehicle, ctx)
+    return _world(relations.ride_command, cmd, riders, vehicles)
+
+
 def _sender_name(host: Host, ctx: Context) -> str:
     """CommandSourceStack.getDisplayName: the executor's name, or "Server"."""
     entity = world_entities.executor(host.state, ctx)
@@ -492,6 +498,7 @@ _HANDLERS = {
     ast.RandomCommand: _random,
     ast.Trigger: _trigger,
     ast.Bossbar: _bossbar,
+    ast.Ride: _ride,
     ast.ObjectivesAdd: _objectives_add,
     ast.ObjectivesRemove: _objectives_remove,
     ast.ObjectivesModify: _objectives_other,

@@ -33,7 +33,7 @@ import numpy as np
 
 from emulator.state import SERVER, Context, WorldState
 from emulator.world import commands as world_commands
-from emulator.world import data_commands, stores
+from emulator.world import data_commands, relations, stores
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.data_commands import World
 from emulator.world.entities import ENTITY_TYPES, POS_LIMIT_XZ, POS_LIMIT_Y, Entity, EntityStore
@@ -171,7 +171,7 @@ def stage(state: WorldState, sub: ast.Subcommand, ctx: Context) -> list[Context]
             entity = state.entities.summon(sub.entity_type, ctx.pos)
         return [context_as(state, ctx, entity)]
     if isinstance(sub, ast.ExOn):
-        return []  # no relations (vehicles, owners, attackers ...) exist in this world
+        return [context_as(state, ctx, e) for e in relations.related(state.entities, executor(state, ctx), sub.relation)]
     entities = select(state, sub.targets, ctx)
     if isinstance(sub, ast.ExAs):
         return [context_as(state, ctx, e) for e in entities]

@@ -657,6 +657,15 @@ class Time(Command):
 
 
 @dataclass(frozen=True, slots=True)
+class Ride(Command):
+    """``ride TARGET mount VEHICLE`` or ``ride TARGET dismount`` (1.19.4+)."""
+
+    target: Target
+    action: str  # "mount" | "dismount"
+    vehicle: Target | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Bossbar(Command):
     """``bossbar add|remove|list|set|get``. ``field``: the property ``set``/``get`` name (name,
     color, style, value, max, visible, players); ``text``: the name component as written (add,

@@ -9,7 +9,7 @@ from __future__ import annotations
 from emulator.semantics import INT_MAX
 from mcfunction_parser import ast
 
-from emulator.world import bossbars, server_commands
+from emulator.world import bossbars, relations, server_commands
 
 from . import conditions, data, entities, scoreboard
 from .data import world_failures
@@ -92,6 +92,13 @@ def bossbar(env, cmd: ast.Bossbar, source: Source, where) -> int:
         return bossbars.bossbar_command(env.state.bossbars, cmd, players)
 
 
+def ride(env, cmd: ast.Ride, source: Source, where) -> int:
+    riders = entities.select(cmd.target, source)
+    vehicles = [] if cmd.vehicle is None else entities.select(cmd.vehicle, source)
+    with world_failures():
+        return relations.ride_command(cmd, riders, vehicles)
+
+
 def not_modelled(env, cmd: ast.Command, source: Source, where) -> int:
     name = getattr(cmd, "name", type(cmd).__name__)
     env.warn_once(cmd, f"'{name}' is not emulated: it succeeds without effect", source)
@@ -114,6 +121,7 @@ HANDLERS = {
     ast.RandomCommand: random,
     ast.Trigger: trigger,
     ast.Bossbar: bossbar,
+    ast.Ride: ride,
 }
 
 

@@ -6,7 +6,7 @@
 - ``resolve_entity(target, ...)``: a single-entity argument (``entity()``).
 - ``teleport_command(cmd, store, source, **options)``: every ``tp`` form; returns the count.
 - ``summon_command(cmd, store, source)``: ``summon TYPE [POS] [NBT]`` at the execution position by
-  default; returns the new entity.
+  default (``Passengers`` summoned riding it); returns the new entity.
 - ``kill_command(cmd, store, source, **options)``: ``kill [TARGETS]`` (the executor by default);
   entities leave the store, players stay (they respawn); returns the count.
 - ``tag_command(cmd, store, source, **options)``: ``tag TARGETS add|remove NAME`` (the number of
@@ -19,7 +19,7 @@ server/commands/SummonCommand.java, java.util.UUID.fromString.
 from __future__ import annotations
 
 from mcfunction_parser import ast
-from emulator.world import teleport
+from emulator.world import relations, teleport
 from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
 from emulator.world.errors import CommandFailure
 from emulator.world.selectors import select
@@ -79,7 +79,7 @@ def teleport_command(cmd: ast.Teleport, store: EntityStore, source: Source, **op
 
 def summon_command(cmd: ast.Summon, store: EntityStore, source: Source) -> Entity:
     pos = source.pos if cmd.pos is None else source.position_of(cmd.pos)
-    return store.summon(cmd.entity_type, pos, cmd.nbt)
+    return relations.summon_with_passengers(store, cmd.entity_type, pos, cmd.nbt)
 
 
 def kill_command(cmd: ast.Kill, store: EntityStore, source: Source, **options) -> int:

@@ -202,6 +202,9 @@ class Entity:
     # a player's inputs (not saved in its NBT; predicates' flags and sneak_time read them)
     sneaking: bool = False
     sprinting: bool = False
+    # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
+    vehicle: "Entity | None" = field(default=None, repr=False)
+    passengers: list = field(default_factory=list, repr=False)
 
     @property
     def is_player(self) -> bool:

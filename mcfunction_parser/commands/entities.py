@@ -1,4 +1,4 @@
-"""``tag``, ``summon``, ``kill`` and ``tp``/``teleport``."""
+"""``tag``, ``summon``, ``kill``, ``tp``/``teleport`` and ``ride``."""
 from __future__ import annotations
 
 from .. import ast
@@ -94,4 +94,16 @@ def teleport(r: Reader, loc) -> ast.Command:
     return ast.Teleport(loc, who, pos, facing_entity=facing_entity, facing_anchor=anchor)
 
 
-PARSERS = {"tag": tag, "summon": summon, "kill": kill, "tp": teleport, "teleport": teleport}
+def ride(r: Reader, loc) -> ast.Command:
+    r.space("target entity")
+    who = target(r, single=True)
+    action = r.keyword(("mount", "dismount"), "ride action")
+    vehicle = None
+    if action == "mount":
+        r.space("vehicle entity")
+        vehicle = target(r, single=True)
+    r.finish()
+    return ast.Ride(loc, who, action, vehicle)
+
+
+PARSERS = {"tag": tag, "summon": summon, "kill": kill, "tp": teleport, "teleport": teleport, "ride": ride}

@@ -1,0 +1,143 @@
+"""Relations between entities: riding (``Passengers`` in summon NBT, ``ride``) and the owners named
+by UUID, for ``execute on <relation>``.
+
+Sources (decompiled 1.21): commands/ExecuteCommand (``on``: expandOneToOneEntityRelation /
+expandOneToManyEntityRelation; only the executor changes, removed entities are skipped, no executor
+gives no context), world/entity/EntityType.loadEntityRecursive (each ``Passengers`` compound is
+loaded and starts riding its vehicle, forced), server/level/ServerLevel.tryAddFreshEntityWithPassengers
+(the vehicle is added first, then its passengers depth first), world/entity/Entity.startRiding
+(a vehicle that cannot accept passengers, the current vehicle, or a loop refuses), Marker
+(couldAcceptPassenger false), server/commands/RideCommand.
+``owner`` follows the ``Owner`` UUID of tameable animals and horses (OwnableEntity); ``origin``
+follows ``Owner`` of projectiles, evoker fangs and area effect clouds and ``Thrower`` of items
+(TraceableEntity). ``controller``, ``attacker``, ``leasher`` and ``target`` need AI, combat or
+leads, which the emulator does not model: they find nothing.
+"""
+from __future__ import annotations
+
+from emulator.world.entities import Entity, EntityStore
+from emulator.world.errors import CommandFailure
+from mcfunction_parser import ast
+from mcfunction_parser.nbt import Compound, IntArray, List, String
+from mcfunction_parser.tags import normalise_id
+
+_NO_PASSENGERS = frozenset({"minecraft:marker"})
+_OWNABLE = frozenset(f"minecraft:{t}" for t in (
+    "wolf", "cat", "parrot", "horse", "donkey", "mule", "llama", "trader_llama", "skeleton_horse",
+    "zombie_horse", "camel"))
+_TRACEABLE = {f"minecraft:{t}": "Owner" for t in (
+    "arrow", "spectral_arrow", "trident", "snowball", "egg", "ender_pearl", "experience_bottle", "potion",
+    "splash_potion", "lingering_potion", "fireball", "small_fireball", "dragon_fireball", "wither_skull",
+    "shulker_bullet", "llama_spit", "firework_rocket", "wind_charge", "breeze_wind_charge", "evoker_fangs",
+    "area_effect_cloud")}
+_TRACEABLE["minecraft:item"] = "Thrower"
+
+
+def vehicle_of(entity: Entity) -> Entity | None:
+    v = entity.vehicle
+    return v if v is not None and v.alive else None
+
+
+def passengers_of(entity: Entity) -> list[Entity]:
+    return [p for p in entity.passengers if p.alive]
+
+
+def start_riding(rider: Entity, vehicle: Entity) -> bool:
+    """Entity.startRiding(vehicle, force=true): False when refused."""
+    if vehicle is vehicle_of(rider) or vehicle.type in _NO_PASSENGERS:
+        return False
+    carrier = vehicle
+    while vehicle_of(carrier) is not None:
+        carrier = vehicle_of(carrier)
+        if carrier is rider:
+            return False
+    stop_riding(rider)
+    rider.vehicle = vehicle
+    vehicle.passengers.append(rider)
+    return True
+
+
+def stop_riding(rider: Entity) -> None:
+    if rider.vehicle is not None:
+        rider.vehicle.passengers.remove(rider)
+        rider.vehicle = None
+
+
+def summon_with_passengers(store: EntityStore, type_id: str, pos, nbt: Compound | None) -> Entity:
+    """``summon`` with ``Passengers``: the vehicle, then each passenger compound (``id`` required)
+    at the same position, depth first, riding it. A passenger that cannot be created is skipped."""
+    riders = nbt.get("Passengers") if nbt is not None else None
+    own = nbt
+    if riders is not None:
+        own = Compound((k, v) for k, v in nbt.items() if k != "Passengers")
+    vehicle = store.summon(type_id, pos, own)
+    for rider_nbt in riders if isinstance(riders, List) else ():
+        kind = rider_nbt.get("id") if isinstance(rider_nbt, Compound) else None
+        if not isinstance(kind, String):
+            continue
+        try:
+            rider = summon_with_passengers(store, normalise_id(str(kind)), pos, rider_nbt)
+        except CommandFailure:
+            continue
+        start_riding(rider, vehicle)
+    return vehicle
+
+
+def _by_uuid_field(store: EntityStore, entity: Entity, key: str) -> list[Entity]:
+    value = entity.data.get(key)
+    if isinstance(value, IntArray) and len(value) == 4:
+        found = store.by_uuid(tuple(int(v) for v in value))
+        return [found] if found is not None and found.alive else []
+    return []
+
+
+def related(store: EntityStore, entity: Entity | None, relation: str) -> list[Entity]:
+    """The entities ``execute on <relation>`` runs as, from ``entity`` (None: the server)."""
+    if entity is None:
+        return []
+    if relation == "passengers":
+        return passengers_of(entity)
+    if relation == "vehicle":
+        vehicle = vehicle_of(entity)
+        return [] if vehicle is None else [vehicle]
+    if relation == "owner" and entity.type in _OWNABLE:
+        return _by_uuid_field(store, entity, "Owner")
+    if relation == "origin" and entity.type in _TRACEABLE:
+        return _by_uuid_field(store, entity, _TRACEABLE[entity.type])
+    return []
+
+
+def ride_command(cmd: ast.Ride, riders: list[Entity], vehicles: list[Entity]) -> int:
+    """RideCommand: ``ride TARGET mount VEHICLE`` / ``ride TARGET dismount``; 1 on success.
+    ``riders``/``vehicles``: what the (single-entity) arguments found."""
+    rider = _single(riders)
+    vehicle = _single(vehicles) if cmd.action == "mount" else None
+    current = vehicle_of(rider)
+    if cmd.action == "dismount":
+        if current is None:
+            raise CommandFailure("commands.ride.not_riding", rider.display_name)
+        stop_riding(rider)
+        return 1
+    if current is not None:
+        raise CommandFailure("commands.ride.already_riding", rider.display_name, current.display_name)
+    if vehicle.is_player:
+        raise CommandFailure("commands.ride.mount.failure.cant_ride_players")
+    if vehicle is rider or vehicle in _self_and_passengers(rider):
+        raise CommandFailure("commands.ride.mount.failure.loop")
+    if not start_riding(rider, vehicle):
+        raise CommandFailure("commands.ride.mount.failure.generic", rider.display_name, vehicle.display_name)
+    return 1
+
+
+def _single(found: list[Entity]) -> Entity:
+    """EntityArgument.getEntity: nothing found fails (the parser allows one at most)."""
+    if not found:
+        raise CommandFailure("argument.entity.notfound.entity")
+    return found[0]
+
+
+def _self_and_passengers(entity: Entity) -> list[Entity]:
+    found = [entity]
+    for p in passengers_of(entity):
+        found += _self_and_passengers(p)
+    return found
