@@ -13,6 +13,7 @@ The expected orders below were worked out by hand from that code.
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings, strategies as st
 
 from emulator.state import Scoreboard
 from emulator.world.hash_order import OpenHashKeys, array_size, java_string_hash, max_fill, mix
@@ -133,3 +134,27 @@ def test_wildcard_operation_visits_holders_in_map_order(tmp_path, backend):
                                        "scoreboard players operation * o += * o"})
     emu.call("t:main")
     assert (emu.score("#x", "o"), emu.score("#d", "o")) == (21, 44)
+
+
+# Linear probing's invariant after any history (fastutil relies on it to find keys): between a
+# key's home slot and its slot there is no empty slot; and the table holds exactly the live keys.
+_NAMES = st.sampled_from([f"#{a}{b}" for a in "abcdefgh" for b in "abcdefgh"])
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(st.booleans(), _NAMES), max_size=120))
+def test_probing_invariant_holds_after_any_history(operations):
+    table, live = OpenHashKeys(16, 0.5), set()
+    for add, key in operations:
+        (table.add if add else table.remove)(key)
+        (live.add if add else live.discard)(key)
+    assert sorted(table.keys()) == sorted(live) and len(table) == len(live)
+    mask = table.n - 1
+    for pos, key in enumerate(table.table):
+        if key is None:
+            continue
+        slot = mix(java_string_hash(key)) & mask
+        while slot != pos:
+            assert table.table[slot] is not None, (key, slot, pos)
+            slot = (slot + 1) & mask
+    assert table.n == 32 or len(table) >= table.max_fill // 4  # shrinks back, never below 32
