@@ -1,6 +1,8 @@
 # pool:physics/substep — from #now to the tick's end: dirty balls (all at the tick's start, then
 # those of the last event) are advanced to the end along new chords (pool.fresh); the others keep
-# their chord, its start moved to #now. If the chords meet a rail, a pocket or another ball, only
+# their chord, its start moved to #now. The balls with new chords, and those whose stored event
+# involved the last event's balls (pool.stale), search their events (pool:physics/find/next);
+# the others' stored events stay valid. If the chords meet a rail, a pocket or another ball, only
 # the balls of the earliest event are rewound to it and resolved, then the rest of the tick is
 # redone. Each step (a trial, a ball's event search, an event) runs only when its estimated cost
 # still fits in this game tick's $budget (#work); else $carry pool.game is set and the next game
@@ -13,8 +15,10 @@ scoreboard players set #rem pool.tmp 10000
 scoreboard players operation #rem pool.tmp -= #now pool.tmp
 execute as @e[tag=pool.dirty] run function pool:physics/trial
 execute if entity @e[tag=pool.dirty] run return run scoreboard players set $carry pool.game 1
-execute as @e[tag=pool.moving,tag=!pool.found] run function pool:physics/find/next
-execute if entity @e[tag=pool.moving,tag=!pool.found] run return run scoreboard players set $carry pool.game 1
+execute as @e[tag=pool.fresh,tag=!pool.found] run function pool:physics/find/next
+execute as @e[tag=pool.stale,tag=!pool.found] run function pool:physics/find/next
+execute if entity @e[tag=pool.fresh,tag=!pool.found] run return run scoreboard players set $carry pool.game 1
+execute if entity @e[tag=pool.stale,tag=!pool.found] run return run scoreboard players set $carry pool.game 1
 # the earliest of the balls' events: the minimum first, then its ball (a running minimum
 # `execute as @e if score @s pool.nt < #te run ...` would take the last ball visited, since
 # each execute stage runs over all contexts before `run`)

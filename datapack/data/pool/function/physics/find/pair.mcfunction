@@ -1,27 +1,7 @@
-# pool:physics/find/pair — swept contact test of ball @s (b) with the ball tagged pool.self (a),
-# after the cheap test of their chord boxes.
-# Reads: #a.lx #a.hx #a.lz #a.hz pool.tmp (a's box), @s box and chord (a ball at rest has cx = x).
-# Writes: #best (absolute time) #kind #partner pool.tmp when this contact is the earliest so far;
-# both chords' starts moved to #now; #work pool.tmp (the exact test's cost), #abort pool.tmp.
-# Reads: #find_cap pool.tmp.
-execute if score @s pool.lx > #a.hx pool.tmp run return 0
-execute if score @s pool.hx < #a.lx pool.tmp run return 0
-execute if score @s pool.lz > #a.hz pool.tmp run return 0
-execute if score @s pool.hz < #a.lz pool.tmp run return 0
-# the exact test costs about 280 commands: past #find_cap the search is dropped (pool:physics/find/next)
-execute if score #work pool.tmp > #find_cap pool.tmp run return run scoreboard players set #abort pool.tmp 1
-scoreboard players add #work pool.tmp 280
-execute as @e[tag=pool.self] run function pool:physics/find/chord_a
-execute if entity @s[tag=pool.moving] run function pool:ball/chord_start
-scoreboard players operation #b.bx pool.tmp = @s pool.cx
-scoreboard players operation #b.bz pool.tmp = @s pool.cz
-scoreboard players operation #b.ex pool.tmp = @s pool.x
-scoreboard players operation #b.ez pool.tmp = @s pool.z
-function pool:physics/sweep/pair
-execute if score #f pool.tmp matches 10001 run return 0
-execute if score #f pool.tmp matches 0 if function pool:physics/find/resolved_apart run return run function pool:physics/find/touching
-execute if score #f pool.tmp matches 0 if function pool:physics/find/separating run return run function pool:physics/find/touching
-function pool:physics/find/absolute
+# pool:physics/find/pair — the contact of ball @s (b) with the ball tagged pool.self (a)
+# (pool:physics/find/contact) becomes a's event if it is the earliest so far.
+# Reads: #best pool.tmp. Writes: #best (absolute time) #kind #partner pool.tmp.
+execute unless function pool:physics/find/contact run return 0
 execute if score #t pool.tmp >= #best pool.tmp run return 0
 scoreboard players operation #best pool.tmp = #t pool.tmp
 scoreboard players set #kind pool.tmp 1

@@ -1,0 +1,27 @@
+# pool:physics/find/contact — swept contact test of ball @s (b) with the ball tagged pool.self
+# (a), after the cheap test of their chord boxes: returns 1 with the contact's tick time in #t, or
+# 0 (no contact, or a touching pair that does not approach: pool:physics/find/touching).
+# Reads: #a.id #a.lx #a.hx #a.lz #a.hz #find_cap pool.tmp (a's box), @s box and chord (a ball at
+# rest has cx = x). Writes: #t #work (the exact test's cost) #abort pool.tmp; both chords' starts
+# moved to #now; the sweep's temporaries.
+execute if score @s pool.lx > #a.hx pool.tmp run return 0
+execute if score @s pool.hx < #a.lx pool.tmp run return 0
+execute if score @s pool.lz > #a.hz pool.tmp run return 0
+execute if score @s pool.hz < #a.lz pool.tmp run return 0
+# the exact test costs about 340 commands (with the touching tests): past #find_cap the search
+# is dropped (pool:physics/find/next)
+execute if score #work pool.tmp > #find_cap pool.tmp run scoreboard players set #abort pool.tmp 1
+execute if score #abort pool.tmp matches 1 run return 0
+scoreboard players add #work pool.tmp 340
+execute as @e[tag=pool.self] run function pool:physics/find/chord_a
+execute if entity @s[tag=pool.moving] run function pool:ball/chord_start
+scoreboard players operation #b.bx pool.tmp = @s pool.cx
+scoreboard players operation #b.bz pool.tmp = @s pool.cz
+scoreboard players operation #b.ex pool.tmp = @s pool.x
+scoreboard players operation #b.ez pool.tmp = @s pool.z
+function pool:physics/sweep/pair
+execute if score #f pool.tmp matches 10001 run return 0
+execute if score #f pool.tmp matches 0 if function pool:physics/find/resolved_apart run return run function pool:physics/find/touching
+execute if score #f pool.tmp matches 0 if function pool:physics/find/separating run return run function pool:physics/find/touching
+function pool:physics/find/absolute
+return 1
