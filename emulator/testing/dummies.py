@@ -51,8 +51,8 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
 from mcfunction_parser.reader import Reader
 
-SIMPLE = ("spawn", "leave", "respawn", "jump", "swap")
-ACTIONS = (*SIMPLE, "sneak", "sprint", "drop", "selectslot", "use", "attack", "mine")
+ACTIONS = ("spawn", "leave", "respawn", "jump", "swap", "sneak", "sprint", "drop", "selectslot", "use", "attack",
+           "mine")
 DIRECTIONS = ("down", "up", "north", "south", "west", "east")
 NO_INVENTORY = "player inventories (held items) are not modelled by the emulator"
 
@@ -193,15 +193,21 @@ class Dummies:
         dummy = self._dummy(command.target, ctx)
         getattr(self, "_" + command.action.replace(" ", "_"))(dummy, command, ctx)
 
+    def _select(self, target, ctx: Context) -> list[Entity]:
+        try:
+            return world_entities.select(self.state, target, ctx)
+        except world_entities.WorldCommandError as error:  # a selector the world library cannot read
+            raise (Unsupported if error.report else DummyFailure)(error.message) from None
+
     def _dummy(self, target, ctx: Context) -> Entity:
         """DummyCommand.getDummy: exactly one player, and a dummy."""
-        found = world_entities.select(self.state, target, ctx)
+        found = self._select(target, ctx)
         if len(found) != 1 or not found[0].is_player or found[0].uuid not in self.spawns:
             raise DummyFailure("No dummy was found")
         return found[0]
 
     def _entity(self, target, ctx: Context) -> Entity:
-        found = world_entities.select(self.state, target, ctx)
+        found = self._select(target, ctx)
         if not found:
             raise DummyFailure("No entity was found")
         if len(found) > 1:
