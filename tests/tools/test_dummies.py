@@ -121,3 +121,19 @@ def test_malformed_dummy_lines_are_reported_with_file_line_and_column(pack, line
 def test_dummies_have_the_offline_mode_uuid():
     # UUID.nameUUIDFromBytes("OfflinePlayer:Notch"), the well-known offline UUID of that name
     assert uuid_string(offline_uuid("Notch")) == "b50ad385-829d-3141-a216-7e7d7539ba7f"
+
+
+@pytest.mark.parametrize("written, name", [
+    ("minecraft.custom:minecraft.jump", "minecraft.custom:minecraft.jump"),
+    ("custom:jump", "minecraft.custom:minecraft.jump"),
+    ("minecraft.used:carrot_on_a_stick", "minecraft.used:minecraft.carrot_on_a_stick"),
+    ("mined:minecraft.stone", "minecraft.mined:minecraft.stone"),
+    ("dummy", "dummy"),
+    ("teamkill.red", "teamkill.red"),
+    ("other.thing:x", "other.thing:x"),
+])
+def test_statistic_criteria_are_read_as_the_game_reads_them(written, name):
+    # ObjectiveCriteria.byName: type and value are resource locations written with '.' for ':'
+    from emulator.world.statistics import canonical_criterion
+
+    assert canonical_criterion(written) == name
