@@ -17,15 +17,19 @@ Usage: python bench/bench_pool.py [--shots N] [--seed S] [--jobs J]   (the issue
 from __future__ import annotations
 
 import argparse
+import itertools
+import math
 import multiprocessing
 import os
 import random
 import time
 from dataclasses import dataclass
 
-from emulator.shot import BREAK, Shot, new_table, play, random_shot, reset_table, strike
+from emulator.physics.constants import BALL_RADIUS, TABLE_LENGTH, TABLE_WIDTH
+from emulator.shot import BREAK, BallOutcome, Shot, new_table, play, random_shot, reset_table, strike
 
 BUDGET_MOVING, BUDGET_IDLE = 5000, 50
+R_MM, L_MM, W_MM = BALL_RADIUS * 1e3, TABLE_LENGTH * 1e3, TABLE_WIDTH * 1e3
 
 
 def idle_cost() -> int:
@@ -56,7 +60,20 @@ class SweepShot:
     diagnostics: int
     at_rest: bool
     refused: bool
+    misplaced: int               # balls in play off the playing area or overlapping another at rest
+    carried: int                 # ticks in slow motion (a physics tick carried over)
     seconds: float               # wall time: fresh world, strike, ticks until rest
+
+
+def misplaced_balls(balls: list[BallOutcome]) -> int:
+    """Balls in play whose centre is off the area R..L-R x R..W-R, or closer than 2R - 2 um to
+    another ball's (1 um rounding either way)."""
+    in_play = [b for b in balls if not b.pocketed]
+    off = {b.id for b in in_play if not (R_MM <= b.x_mm <= L_MM - R_MM and R_MM <= b.z_mm <= W_MM - R_MM)}
+    touching = [pair for pair in itertools.combinations(in_play, 2)
+                if math.dist((pair[0].x_mm, pair[0].z_mm), (pair[1].x_mm, pair[1].z_mm)) < 2 * R_MM - 0.002]
+    close = {b.id for pair in touching for b in pair}
+    return len(off | close)
 
 
 _worker_emu = None
@@ -73,7 +90,8 @@ def _sweep_one(job: tuple[int, Shot]) -> SweepShot:
     emu = reset_table(_worker_emu)
     result = play(emu, shot)
     return SweepShot(k, result.ticks, result.commands_max, len(result.overflows), len(result.diagnostics),
-                     result.at_rest, bool(result.refused), time.perf_counter() - started)
+                     result.at_rest, bool(result.refused), misplaced_balls(result.balls), result.carried,
+                     time.perf_counter() - started)
 
 
 def overflow_sweep(shots: int, seed: int, jobs: int) -> list[SweepShot]:
@@ -100,7 +118,9 @@ def _sweep_report(results: list[SweepShot], seed: int, jobs: int, seconds: float
     lines = [
         f"overflow sweep: {len(results)} shots (seed {seed}), {sum(r.ticks for r in results)} ticks, "
         f"{sum(r.overflows for r in results)} wrapped values, {sum(r.diagnostics for r in results)} runtime "
-        f"diagnostics, {sum(not r.at_rest for r in results)} not at rest, {sum(r.refused for r in results)} refused",
+        f"diagnostics, {sum(not r.at_rest for r in results)} not at rest, {sum(r.refused for r in results)} refused, "
+        f"{sum(r.misplaced for r in results)} balls overlapping or off the table at rest; "
+        f"{sum(r.carried for r in results)} ticks in slow motion",
         _row("sweep, max per shot", [r.max_commands for r in results], BUDGET_MOVING)
         + f"  (worst: shot {worst.k}; {len(over)} shots over the budget{': ' + str(over[:20]) if over else ''})",
         f"wall time per shot: mean {sum(walls) / len(walls):.2f} s, median {walls[len(walls) // 2]:.2f} s, "

@@ -92,8 +92,8 @@ def _print(result: ShotResult, to_stderr: bool) -> None:
             outcome = f"stopped at tick {ball.tick}" if ball.tick is not None else "did not move"
         out(f"{BALL_NAMES.get(ball.id, ball.id):>4}  {ball.x_mm:8.1f}  {ball.z_mm:8.1f}  {outcome}")
     rest = "table at rest" if result.at_rest else "table still moving (--max-ticks reached)"
-    out(f"{rest} after {result.ticks} ticks; commands per tick mean {result.commands_mean:.0f}, "
-        f"max {result.commands_max}; {result.seconds:.2f} s")
+    out(f"{rest} after {result.ticks} ticks ({result.carried} in slow motion: a burst of events carried "
+        f"over); commands per tick mean {result.commands_mean:.0f}, max {result.commands_max}; {result.seconds:.2f} s")
     for overflow in result.overflows:
         out(f"{overflow.loc}: overflow: {overflow.a} {overflow.op} {overflow.b} = {overflow.exact}, "
             f"stored {overflow.stored} (tick {overflow.tick})")

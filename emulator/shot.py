@@ -69,6 +69,7 @@ class ShotResult:
     balls: list[BallOutcome] = field(default_factory=list)
     overflows: list = field(default_factory=list)
     diagnostics: list = field(default_factory=list)
+    carried: int = 0              # ticks that ended mid physics tick ($carry pool.game: slow motion)
 
     @property
     def commands_mean(self) -> float:
@@ -79,7 +80,7 @@ class ShotResult:
         return max(self.commands_per_tick, default=0)
 
     def to_json(self) -> dict:
-        return {"refused": self.refused, "at_rest": self.at_rest, "ticks": self.ticks,
+        return {"refused": self.refused, "at_rest": self.at_rest, "ticks": self.ticks, "carried": self.carried,
                 "commands_per_tick": {"mean": self.commands_mean, "max": self.commands_max,
                                       "each": self.commands_per_tick},
                 "seconds": self.seconds, "balls": [asdict(b) for b in self.balls],
@@ -163,9 +164,10 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
     last_change: dict[int, int] = {}
     previous, first_tick = start, len(emu.commands_per_tick)
     started = time.perf_counter()
-    at_rest = False
+    at_rest, carried = False, 0
     for tick in range(1, max_ticks + 1):
         emu.tick()
+        carried += emu.score("$carry", "pool.game") == 1
         now = ball_states(emu, holders)
         last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
         previous = now
@@ -175,7 +177,7 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
     seconds = time.perf_counter() - started
     costs = emu.commands_per_tick[first_tick:]
     return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(previous, last_change),
-                      list(emu.overflows), list(emu.diagnostics))
+                      list(emu.overflows), list(emu.diagnostics), carried)
 
 
 def _outcomes(states: dict[int, tuple[int, int, int]], last_change: dict[int, int]) -> list[BallOutcome]:
