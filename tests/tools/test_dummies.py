@@ -6,6 +6,7 @@ import pytest
 
 from emulator.testing import discover, run_suite
 from emulator.testing.dummies import offline_uuid
+from emulator.world.statistics import canonical_criterion
 from emulator.world.entities import uuid_string
 
 STATS = ("scoreboard objectives add jumps minecraft.custom:minecraft.jump\n"
@@ -134,6 +135,4 @@ def test_dummies_have_the_offline_mode_uuid():
 ])
 def test_statistic_criteria_are_read_as_the_game_reads_them(written, name):
     # ObjectiveCriteria.byName: type and value are resource locations written with '.' for ':'
-    from emulator.world.statistics import canonical_criterion
-
     assert canonical_criterion(written) == name
