@@ -21,7 +21,8 @@ assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.z matches 635000
 await delay 74
 # tick 94: still rolling
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.state matches 2
-await score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.state matches 0
-# stopped by tick 97
+await delay 3
+# tick 97: stopped
+assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.state matches 0
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.x matches 1425111..1432781
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vx matches 0

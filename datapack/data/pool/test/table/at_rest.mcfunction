@@ -19,6 +19,8 @@ await delay 84
 # tick 94
 assert score $resting pool.game matches 0
 assert not chat "the table is at rest"
-await score $resting pool.game matches 1
+await delay 3
+# tick 97: at rest
+assert score $resting pool.game matches 1
 assert chat "^Pool: the table is at rest$"
 assert not entity @e[tag=pool.ball,scores={pool.state=1..3}]
