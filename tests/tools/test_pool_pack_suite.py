@@ -17,7 +17,7 @@ def test_the_suite_covers_every_model_and_the_controls():
     assert {"math", "model", "table", "controls", "api"} <= folders
     assert {"pool:model/sliding", "pool:model/rolling", "pool:model/side_spin", "pool:model/ball_ball",
             "pool:model/cushion", "pool:model/cue_strike", "pool:table/pockets", "pool:table/at_rest",
-            "pool:controls/trigger"} <= {case.id for case in CASES}
+            "pool:table/break", "pool:controls/trigger"} <= {case.id for case in CASES}
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])
