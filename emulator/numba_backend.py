@@ -76,12 +76,13 @@ class NumbaBackend:
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
         self.context_ids: dict[tuple, int] = {}
+        self.as_contexts: dict[tuple[int, int], int] = {}  # (context, entity slot) -> `as` context; per root
         # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
         # writes to what its stage resolved, whatever context the chain ends in
         self.bindings: list[tuple] = []
         self.store_targets: dict[object, StoreTarget] = {}  # key -> target; reset per root
-        self.forks: dict[int, list[tuple[int, list[int]]]] = {}  # depth -> [(resume pc, contexts left)]
-        self.collected: dict[int, tuple[int, int, list[int]]] = {}  # depth -> (final pc, end pc, contexts)
+        self.fstack = vm.new_fork_stack()  # contexts waiting for the rest of their chain (see emulator.vm)
+        self.coll = vm.new_fork_stack()  # contexts kept for their chain's final command
         self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
 
     # ------------------------------------------------------------------ running
@@ -90,6 +91,7 @@ class NumbaBackend:
         self.mirror.invalidate()  # the API may have changed entities between roots
         self.contexts = []
         self.context_ids = {}
+        self.as_contexts = {}
         self.bindings = []
         self.store_targets = {}
         self._context_index(context or Context(), ())
@@ -135,8 +137,10 @@ class NumbaBackend:
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
                             self.ctx_entity, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
-                            self.selbuf, self.logbuf)
-            mirror.store()
+                            self.selbuf, self.logbuf, self.fstack, self.coll)
+            if r[vm.R_EDIRTY]:
+                mirror.store()
+                r[vm.R_EDIRTY] = 0
             log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
             if r[vm.R_NLOG]:
                 self._write_log()
@@ -160,10 +164,8 @@ class NumbaBackend:
                 self._as_contexts()
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
-            elif status == vm.ST_NEXTCTX:
-                self._next_context()
-            elif status == vm.ST_COLLECT:
-                self._collect()
+            elif status == vm.ST_GROWCOLL:
+                self.coll = _grown(self.coll)
             elif status == vm.ST_REPEAT:
                 self._repeat()
             elif status == vm.ST_ERROR:
@@ -309,18 +311,22 @@ class NumbaBackend:
             self._fork([self._context_index(c, bindings) for c in made])
 
     def _fork(self, contexts: list[int]) -> None:
-        """Run the rest of the chain for ``contexts[0]`` now and keep the others for its ENDCMD.
-        A fork inside a forked chain stacks on top (the game's context order: each outer context's
-        inner contexts in turn). Each frame depth has its own stack."""
+        """Run the rest of the chain for ``contexts[0]`` now and push the others on the fork stack
+        for its ENDCMD. A fork inside a forked chain stacks on top (the game's context order: each
+        outer context's inner contexts in turn). Each frame depth has its own rows."""
         r = self.regs
         depth = int(r[vm.R_DEPTH])
-        entry = (int(r[vm.R_PC]), contexts[1:])
-        if r[vm.R_LOOP] != vm.LOOP_NONE:
-            self.forks[depth].append(entry)
-        else:  # a new command: whatever an earlier function left at this depth is stale
-            self.forks[depth] = [entry]
-            self.collected.pop(depth, None)
+        if r[vm.R_LOOP] == vm.LOOP_NONE:  # a new command: whatever an earlier function left at this depth is stale
+            r[vm.R_NCOLL] = _drop_rows(self.coll, int(r[vm.R_NCOLL]), depth)
             r[vm.R_LOOP] = vm.LOOP_FORKED
+            n = _drop_rows(self.fstack, int(r[vm.R_NFORK]), depth)
+        else:
+            n = _drop_rows(self.fstack, int(r[vm.R_NFORK]), depth + 1)
+        rest = contexts[:0:-1]  # the next one on top
+        while self.fstack.shape[0] < n + len(rest):
+            self.fstack = _grown(self.fstack)
+        self.fstack[n:n + len(rest)] = [(depth, int(r[vm.R_PC]), c) for c in rest]
+        r[vm.R_NFORK] = n + len(rest)
         r[vm.R_CTX] = contexts[0]
 
     def _as_contexts(self) -> None:
@@ -328,9 +334,13 @@ class NumbaBackend:
         r = self.regs
         index = int(r[vm.R_CTX])
         ctx, bindings = self.contexts[index], self.bindings[index]
-        entity = self.mirror.entity
-        made = [self._context_index(world_entities.context_as(self.state, ctx, entity(slot)), bindings)
-                for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist()]
+        made = []
+        for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist():
+            made_index = self.as_contexts.get((index, slot))
+            if made_index is None:
+                as_ctx = world_entities.context_as(self.state, ctx, self.mirror.entity(slot))
+                made_index = self.as_contexts[(index, slot)] = self._context_index(as_ctx, bindings)
+            made.append(made_index)
         if len(made) == 1:
             r[vm.R_CTX] = made[0]
         else:
@@ -343,38 +353,6 @@ class NumbaBackend:
         copies = int(r[vm.R_HAS])
         r[vm.R_HAS] = 0
         self._fork([int(r[vm.R_CTX])] * copies)
-
-    def _collect(self) -> None:
-        """At a forked chain's STAGESDONE: keep the context for the final command, then go on."""
-        r = self.regs
-        depth, pc = int(r[vm.R_DEPTH]), int(r[vm.R_PC])
-        final_pc, end_pc, contexts = self.collected.setdefault(depth, (pc + 1, self.program.rows[pc][1], []))
-        contexts.append(int(r[vm.R_CTX]))
-        r[vm.R_PC] = end_pc
-        self._next_context()
-
-    def _next_context(self) -> None:
-        """At a forked chain's ENDCMD: the next context through the stages, else the next kept
-        context through the final command, else end the command."""
-        r = self.regs
-        depth = int(r[vm.R_DEPTH])
-        stack = self.forks[depth]
-        while stack and not stack[-1][1]:
-            stack.pop()
-        r[vm.R_ALIVE] = 1
-        r[vm.R_LOOP] = vm.LOOP_REENTERED
-        if stack:
-            resume, remaining = stack[-1]
-            r[vm.R_CTX] = remaining.pop(0)
-            r[vm.R_PC] = resume
-        elif self.collected.get(depth, (0, 0, None))[2]:
-            final_pc, _, contexts = self.collected[depth]
-            r[vm.R_CTX] = contexts.pop(0)
-            r[vm.R_PC] = final_pc
-            r[vm.R_LOOP] = vm.LOOP_FINAL
-        else:  # ENDCMD runs again, now ending the command (and restoring the context)
-            self.collected.pop(depth, None)
-            r[vm.R_LOOP] = vm.LOOP_NONE
 
     def _macro(self, pc: int) -> None:
         call = self.program.macro_calls[self.program.rows[pc][1]]
@@ -486,6 +464,17 @@ class NumbaBackend:
             if loc is not None:
                 out[(loc.path, loc.line)] += int(self.counts[pc])
         return dict(out)
+
+
+def _drop_rows(rows: np.ndarray, n: int, depth: int) -> int:
+    """The row count once the top rows of ``depth`` or deeper are dropped (a fork stack)."""
+    while n > 0 and rows[n - 1, 0] >= depth:
+        n -= 1
+    return n
+
+
+def _grown(rows: np.ndarray) -> np.ndarray:
+    return np.concatenate([rows, np.zeros_like(rows)])
 
 
 def _extend(array: np.ndarray, size: int) -> np.ndarray:

@@ -15,13 +15,17 @@ scoreboard ``values``/``present``/``alive``, the per-instruction ``counts`` and 
 abort target, the context, the fork loop flag) are saved in the frame and restored on return.
 
 Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
-table). When a host stage makes several, Python sets ``R_LOOP`` and keeps the others; the chain's
-``STAGESDONE`` (after the last stage) returns ST_COLLECT: Python keeps the context and re-enters
-the chain after that stage with the next context; once every context went through the stages, it
-runs the final command for each kept context in turn (each stage sees all contexts before any
-final command runs, as the game's BuildContexts does). The chain's ``ENDCMD`` returns ST_NEXTCTX
-to move on to the next context. Stage ops charge themselves (once, even with no context left, and not on a re-entered
-pass), so a stage that fails the command leaves the later stages uncharged, as in the game.
+table). When a stage makes several (Python makes the contexts: a host stage, ``as SEL``, ``if
+function`` returning several times), Python sets ``R_LOOP`` and pushes the others on the fork
+stack ``fstack`` (rows ``[depth, resume pc, context]``, the next one on top). The chain's
+``STAGESDONE`` (after the last stage) keeps the context in ``coll`` (rows ``[depth, context,
+final pc]``; the frame's ``F_CHEAD`` is the first not yet run) and jumps to the chain's ``ENDCMD``,
+which re-enters the chain after the forking stage with the next context of its depth; once every
+context went through the stages, it runs the final command for each kept context in turn (each
+stage sees all contexts before any final command runs, as the game's BuildContexts does), then
+ends the command. Rows of deeper depths left by a function that returned early are stale: they
+are dropped when met. Stage ops charge themselves (once, even with no context left, and not on a
+re-entered pass), so a stage that fails the command leaves the later stages uncharged, as in the game.
 """
 from __future__ import annotations
 
@@ -107,13 +111,14 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG = range(15, 23)
-N_REGS = 23
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG, R_EDIRTY = range(15, 24)
+R_NFORK, R_NCOLL = range(24, 26)  # rows used in fstack and coll
+N_REGS = 26  # R_EDIRTY: 1 once the VM marked an entity dirty (Python writes them back, clears it)
 
-F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP = range(10)
-F_WIDTH = 10
+F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
+F_WIDTH = 11
 
-ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_NEXTCTX, ST_COLLECT, ST_REPEAT, ST_FORK = range(11)
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_GROWCOLL, ST_REPEAT, ST_FORK = range(10)
 
 # R_LOOP: no fork in this command; forked, first pass; re-entered for a later context (its stages
 # were charged on the first pass); a kept context running the final command (a `return run`
@@ -224,7 +229,7 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True)
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, trig, counts, totals, active, ovf,
-        ctx_holder, ctx_entity, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf):
+        ctx_holder, ctx_entity, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack, coll):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -501,6 +506,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     continue
                 changed += 1
                 edirty[e] |= DIRTY_TAGS
+                regs[R_EDIRTY] = 1
             has = 1
             ok = 1 if changed else 0
             val = changed
@@ -585,6 +591,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 epos[e, axis] = _clamp_pos(np.float64(stored) * floats[code[pc, 3]],
                                            POS_LIMIT_Y if axis == 1 else POS_LIMIT_XZ)
                 edirty[e] |= DIRTY_POS
+                regs[R_EDIRTY] = 1
             pc += 1
         elif op == OP_CMD:
             if quota <= 0:
@@ -702,13 +709,50 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             pc += 1
         elif op == OP_STAGESDONE:
             if loop and alive:  # forked: every context goes through the stages before any runs
-                status = ST_COLLECT
-                break
+                nc = regs[R_NCOLL]
+                while nc > 0 and coll[nc - 1, 0] > depth:  # stale rows of a function that returned early
+                    nc -= 1
+                regs[R_NCOLL] = nc
+                if nc >= coll.shape[0]:
+                    status = ST_GROWCOLL
+                    break
+                if nc == 0 or coll[nc - 1, 0] != depth:  # the command's first kept context
+                    frames[depth - 1, F_CHEAD] = nc
+                coll[nc, 0] = depth
+                coll[nc, 1] = ctx
+                coll[nc, 2] = pc + 1
+                regs[R_NCOLL] = nc + 1
+                pc = code[pc, 1]  # the chain's ENDCMD: the next context
+                continue
             pc += 1
         elif op == OP_ENDCMD:
-            if loop:  # a stage forked: Python runs the chain's rest for the next context
-                status = ST_NEXTCTX
-                break
+            if loop:  # a stage forked: the next context through the rest of the chain
+                nf = regs[R_NFORK]
+                while nf > 0 and fstack[nf - 1, 0] > depth:
+                    nf -= 1
+                regs[R_NFORK] = nf
+                alive = 1
+                if nf > 0 and fstack[nf - 1, 0] == depth:
+                    regs[R_NFORK] = nf - 1
+                    pc = fstack[nf - 1, 1]
+                    ctx = fstack[nf - 1, 2]
+                    loop = LOOP_REENTERED
+                    continue
+                nc = regs[R_NCOLL]
+                while nc > 0 and coll[nc - 1, 0] > depth:
+                    nc -= 1
+                head = frames[depth - 1, F_CHEAD]
+                if head < nc and coll[head, 0] == depth:  # the next kept context through the final command
+                    frames[depth - 1, F_CHEAD] = head + 1
+                    regs[R_NCOLL] = nc
+                    ctx = coll[head, 1]
+                    pc = coll[head, 2]
+                    loop = LOOP_FINAL
+                    continue
+                while nc > 0 and coll[nc - 1, 0] >= depth:  # every context done: the command ends
+                    nc -= 1
+                regs[R_NCOLL] = nc
+                loop = LOOP_NONE
             alive = 1
             ctx = frames[depth - 1, F_CTX]  # the next command runs in the function's own context again
             pc += 1
@@ -968,6 +1012,10 @@ def new_registers() -> np.ndarray:
 
 def new_frames(depth: int) -> np.ndarray:
     return np.zeros((depth, F_WIDTH), dtype=np.int64)
+
+
+def new_fork_stack(size: int = 64) -> np.ndarray:
+    return np.zeros((size, 3), dtype=np.int64)
 
 
 def new_overflow_buffer(size: int = 1024) -> np.ndarray:
