@@ -114,8 +114,8 @@ class Compiler:
         elif isinstance(cmd, DataGet) and (axis := _position_path(cmd.target, cmd.path)) is not None:
             scale = -1 if cmd.scale is None else self.program.intern_float(cmd.scale)
             self.emit(vm.OP_GETPOS, axis, scale)
-        elif isinstance(cmd, Tellraw):  # logged as written, result 1 (emulator.host)
-            self.host(vm.OP_LOG, cmd)
+        elif isinstance(cmd, Tellraw) and (sel := self.selector(cmd.targets)) is not None:
+            self.host(vm.OP_LOG, cmd, sel)  # the host writes the line
         else:
             self.host(vm.OP_HOST, cmd)
 

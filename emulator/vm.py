@@ -92,8 +92,9 @@ OP_ASSTAGE = 54  # a: selector, b forked. `execute as SEL`: one context per enti
 OP_POSSTAGE = 55  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
 OP_STOREPOS = 56  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
 OP_GETPOS = 58  # a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
-OP_LOG = 57  # a: host op index. `tellraw`: result 1; queued in logbuf (op, context), Python writes the log
-# line when the VM returns (before it serves anything else, so the log keeps its order)
+OP_LOG = 57  # a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
+# EntityArgument.getPlayers), else its result is the count and the line is queued in logbuf (op, context):
+# Python writes it when the VM returns (before it serves anything else, so the log keeps its order)
 OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 
 # operations: opcode OP_OPER_BASE + OPK_*
@@ -967,12 +968,14 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             quota -= 1
             if counting:
                 counts[pc] += 1
-            logbuf[nlog, 0] = code[pc, 1]
-            logbuf[nlog, 1] = ctx
-            nlog += 1
+            n = _select(code[pc, 2], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
             has = 1
-            ok = 1
-            val = 1
+            ok = 1 if n else 0
+            val = n
+            if n:
+                logbuf[nlog, 0] = code[pc, 1]
+                logbuf[nlog, 1] = ctx
+                nlog += 1
             pc += 1
         elif op == OP_MACRO:
             if alive == 0:

@@ -17,8 +17,8 @@ keeps its entity object).
   store ... entity|block`` (the target is resolved when the stage runs, as the game's modifier does).
 - ``new_state(shuffle)``, ``parse_target(text)``, ``describe(state, entity)``: the API's side.
 
-Commands that may change entity tags bump ``state.tags_version`` (the numba VM mirrors the tags of
-executing entities as bits: :mod:`emulator.entity_arrays`).
+The numba VM keeps entities as arrays (:mod:`emulator.entity_arrays`): it reloads them after any
+host op that may change entities, so nothing here needs to notify it.
 
 Failures raise :class:`WorldCommandError` (``report``: also worth a diagnostic, e.g. an
 unsupported selector argument); backends turn it into their failed command.
@@ -277,9 +277,6 @@ def store(state: WorldState, target, sub: ast.StoreData, success: bool, value: i
         _store_position(target.entity, axis, float(stores.stored_tag("double", stored, sub.scale)))
         return
     data_commands.store_data(target, sub.path, sub.type, stored, sub.scale)
-    first = sub.path.nodes[0] if sub.path.nodes else None
-    if isinstance(target, data_commands.EntityAccessor) and not (isinstance(first, ast.PathKey) and first.name != "Tags"):
-        state.tags_version += 1
 
 
 def _position_axis(target, sub: ast.StoreData) -> int | None:
@@ -311,8 +308,6 @@ def is_world_command(cmd: ast.Command) -> bool:
 def command(state: WorldState, cmd: ast.Command, ctx: Context, warn) -> int:
     """Run one world command for ``ctx``; ``warn(node, message)`` reports a warning once."""
     source = world_source(state, ctx)
-    if isinstance(cmd, ast.TagCommand) or is_world_data(cmd):
-        state.tags_version += 1  # the tags of some entity may change
     with failures():
         if isinstance(cmd, ast.Summon):
             if cmd.entity_type not in ENTITY_TYPES:
@@ -320,7 +315,7 @@ def command(state: WorldState, cmd: ast.Command, ctx: Context, warn) -> int:
             world_commands.summon_command(cmd, state.entities, source)
             return 1
         if isinstance(cmd, ast.Kill):
-            return world_commands.kill_command(cmd, state.entities, source, **_options(state))
+            return _kill(state, cmd, source)
         if isinstance(cmd, ast.TagCommand):
             return world_commands.tag_command(cmd, state.entities, source, **_options(state))
         if isinstance(cmd, ast.Teleport):
@@ -328,6 +323,16 @@ def command(state: WorldState, cmd: ast.Command, ctx: Context, warn) -> int:
         if isinstance(cmd, ast.GenericCommand):
             return _block_command(state, cmd, source)
         return _data(state, cmd, ctx)
+
+
+def _kill(state: WorldState, cmd: ast.Kill, source: Source) -> int:
+    """``kill``; a removed entity loses every score (Scoreboard.entityRemoved -> resetAllPlayerScores)."""
+    before = list(state.entities.entities)
+    count = world_commands.kill_command(cmd, state.entities, source, **_options(state))
+    for entity in before:
+        if not entity.alive:
+            state.scoreboard.reset(entity.score_holder)
+    return count
 
 
 def _block_command(state: WorldState, cmd: ast.GenericCommand, source: Source) -> int:

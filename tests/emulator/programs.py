@@ -80,8 +80,7 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "execute store result entity @s Pos[0] double 0.5 run scoreboard players get #a o",
                    "execute store success entity @s Pos[1] double 2 if entity @e[tag=a]",
                    "execute store result score #b o run data get entity @s Pos[0] 100",
-                   "execute store result score #c p run data get entity @s Pos[1]",
-                   'tellraw @a {"text":"hi"}')
+                   "execute store result score #c p run data get entity @s Pos[1]")
 
 
 @dataclass(frozen=True)

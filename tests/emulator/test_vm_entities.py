@@ -135,3 +135,26 @@ def test_other_selectors_stay_with_the_host(tmp_path, selector):
     emu = emulator_for(tmp_path, {"t:main": SETUP + f"tag {selector} add z"})
     emu.call("t:main")
     assert [type(node).__name__ for _, node, _ in emu.backend.host_ops_run()][-1] == "TagCommand"
+
+
+def test_tellraw_needs_a_player(tmp_path):
+    # TellRawCommand: the targets are EntityArgument.getPlayers (none found fails the command, so
+    # nothing is logged); the result is the number of players. Numba only: the host and the
+    # reference backend still log every tellraw (see /work/notes/s2/interfaces.md)
+    body = ('execute store result score #none o run tellraw @a {"text":"nobody"}\n'
+            'execute if entity @a run execute store result score #one o run tellraw @a[tag=!none] {"text":"hi"}')
+    emu = emulator_for(tmp_path, {"t:main": SETUP + body})
+    emu.call("t:main")
+    assert (emu.score("#none", "o"), emu.score("#one", "o"), emu.log) == (0, None, [])
+    emu.add_player("Steve")
+    emu.call("t:main")
+    assert (emu.score("#none", "o"), emu.score("#one", "o")) == (1, 1)
+    assert [e.text for e in emu.log] == ['{"text":"nobody"}', '{"text":"hi"}']
+
+
+def test_a_killed_entity_loses_its_scores(tmp_path):
+    # Scoreboard.entityRemoved -> resetAllPlayerScores: it leaves `*` and every objective
+    emu = _run_both(tmp_path, "scoreboard players set @e s 4\nkill @e[tag=a]\n"
+                              "execute store result score #n o run scoreboard players add * s 0")
+    assert emu.score("#n", "o") == 12
+    assert sum(len(holders) for holders in emu.scores().values()) == 4  # three entities' s, and #n
