@@ -1,23 +1,21 @@
-# pool:physics/finish — the end of a complete physics tick, when its estimated cost (about 150
-# commands per ball that touched another, 300 for the displays) still fits in this game tick's
-# $budget, else it carries over: balls that touched another are pushed apart, the displays follow
-# the balls that moved, and the table may come to rest.
-# Reads: #work pool.tmp, tags pool.touch pool.moving. Writes: #c pool.tmp, $carry pool.game, tags
-# pool.found pool.fresh (removed), through
-# pool:physics/separate/ball, pool:ball/display/place and pool:physics/at_rest.
-execute store result score #c pool.tmp if entity @e[tag=pool.touch,scores={pool.state=0..2}]
-scoreboard players set #k pool.tmp 150
-scoreboard players operation #c pool.tmp *= #k pool.tmp
-scoreboard players add #c pool.tmp 300
-scoreboard players operation #c pool.tmp += #work pool.tmp
-# (a game tick that has done nothing else yet finishes whatever the estimate, so that it gets on)
-execute if score #work pool.tmp matches 1.. if score #c pool.tmp > $budget pool.const run return run scoreboard players set $carry pool.game 1
-tag @e[tag=pool.found] remove pool.found
-tag @e[tag=pool.fresh] remove pool.fresh
+# pool:physics/finish — the end of a complete physics tick: balls that touched another are pushed
+# apart, then the balls those pushes moved are looked at again (four passes at most); then the
+# displays follow the balls that moved and the table may come to rest. Each ball's separation runs
+# only when its estimated cost fits in this game tick's $budget (#work), else the rest carries over
+# to the next game tick (#finishing pool.tmp: the physics tick is done, only this remains).
+# Reads/writes: #work #finishing #passes pool.tmp, $carry pool.game, tags pool.touch pool.shifted
+# pool.again pool.found pool.fresh; through pool:physics/separate/*, pool:ball/display/place and
+# pool:physics/at_rest.
+execute unless score #finishing pool.tmp matches 1 run function pool:physics/finish/start
 # a pair left touching but not approaching (pool:physics/find/touching) can end closer than 2R
 # along converging chords, and the contact shift of pool:physics/resolve/touch can carry a ball a
 # few um into a third one
-execute as @e[tag=pool.touch,scores={pool.state=0..2}] run function pool:physics/separate/ball
-tag @e[tag=pool.touch] remove pool.touch
+execute as @e[tag=pool.touch] run function pool:physics/separate/next_touch
+execute if entity @e[tag=pool.touch] run return run scoreboard players set $carry pool.game 1
+# a push can carry a ball into a third one
+function pool:physics/separate/passes
+execute if score $carry pool.game matches 1 run return 0
+tag @e[tag=pool.shifted] remove pool.shifted
+scoreboard players set #finishing pool.tmp 0
 execute as @e[tag=pool.moving] run function pool:ball/display/place
 execute unless entity @e[tag=pool.ball,scores={pool.state=1..2}] run function pool:physics/at_rest

@@ -4,11 +4,12 @@
 # over ($carry pool.game = 1) to the next game tick, which goes on from where this one stopped, so
 # the table runs in slow motion through a burst of events (the break) and no game tick exceeds
 # the command budget. When a physics tick is complete, pool:physics/finish ends it.
-# Reads/writes: every ball's scores; #now #events #work pool.tmp; $carry $resting pool.game.
+# Reads/writes: every ball's scores; #now #events #work #finishing pool.tmp; $carry $resting
+# pool.game.
 scoreboard players set #events pool.tmp 0
 scoreboard players set #work pool.tmp 0
 execute unless score $carry pool.game matches 1 run function pool:physics/begin
 scoreboard players set $carry pool.game 0
-function pool:physics/substep
+execute unless score #finishing pool.tmp matches 1 run function pool:physics/substep
 execute if score $carry pool.game matches 1 run return 0
 function pool:physics/finish
