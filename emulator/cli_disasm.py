@@ -17,7 +17,7 @@ _OPERANDS = {
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "ob", vm.OP_STORE: "bho",
     vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_RETIFHAS: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
     vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "x", vm.OP_HOSTSTAGE: "xb", vm.OP_HOSTSTORE: "x",
-    vm.OP_MACRO: "m", vm.OP_TAG: "sib", vm.OP_IFENT: "s_____b", vm.OP_ENABLE: "ho", vm.OP_ASSTAGE: "sb",
+    vm.OP_MACRO: "m", vm.OP_TAG: "sib", vm.OP_IFENT: "s_____b", vm.OP_ENABLE: "ho", vm.OP_ASSTAGE: "sbb", vm.OP_TP: "sdi",
     vm.OP_POSSTAGE: "_b", vm.OP_STOREPOS: "ibd", vm.OP_GETPOS: "i", vm.OP_LOG: "xs",
 }
 _COMPARISON_NAMES = {v: k for k, v in vm.CMP_BY_SYMBOL.items()}

@@ -31,9 +31,10 @@ from mcfunction_parser.ast import (
     Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
     Function, FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey, Return,
     Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
-    StoreScore, Subcommand, Tellraw,
+    StoreScore, Subcommand, Teleport, Tellraw, Vec3,
 )
 from emulator.semantics import INT_MAX, INT_MIN
+from emulator.world.source import world_coordinate
 
 _SET_OPS = {"set": vm.OP_SET, "add": vm.OP_ADD, "remove": vm.OP_REMOVE}
 
@@ -111,6 +112,8 @@ class Compiler:
             self.emit(vm.OP_ENABLE, h, self.objective(cmd.objective))
         elif isinstance(cmd, TagCommand) and (tag := self.tag_operands(cmd)) is not None:
             self.emit(vm.OP_TAG, tag[0], tag[1], int(cmd.action == "add"))
+        elif isinstance(cmd, Teleport) and (tp := self.teleport(cmd)) is not None:
+            self.emit(vm.OP_TP, *tp)
         elif isinstance(cmd, DataGet) and (axis := _position_path(cmd.target, cmd.path)) is not None:
             scale = -1 if cmd.scale is None else self.program.intern_float(cmd.scale)
             self.emit(vm.OP_GETPOS, axis, scale)
@@ -139,8 +142,8 @@ class Compiler:
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
             elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
-            elif isinstance(st, ExAs) and not last and (sel := self.selector(st.targets)) is not None:
-                self.emit(vm.OP_ASSTAGE, sel, int(forked))
+            elif isinstance(st, (ExAs, ExAt)) and not last and (sel := self.selector(st.targets)) is not None:
+                self.emit(vm.OP_ASSTAGE, sel, int(forked), int(isinstance(st, ExAt)))
             elif (axis := _position_store(st)) is not None and _context_kept(stages[i + 1:], final):
                 self.emit(vm.OP_POSSTAGE, 0, int(forked))
                 stores.append(_PositionStore(st, axis))
@@ -286,6 +289,23 @@ class Compiler:
     def selector(self, target) -> int | None:
         """The selector row of ``target`` when the VM evaluates it, else None."""
         return None if self.mirror is None else self.mirror.selector(target)
+
+    def teleport(self, cmd: Teleport) -> tuple[int, int, int] | None:
+        """(selector, first of x y z in floats, relative-axis bits) of ``tp SEL X Y Z`` with world
+        coordinates and no rotation or facing; else None. Absolute integer x/z are centred (+0.5),
+        as Vec3Argument's ``WorldCoordinate.get`` does (emulator.world.source)."""
+        dest = cmd.destination
+        if (cmd.targets is None or not isinstance(dest, Vec3) or dest.is_local or cmd.rotation is not None
+                or cmd.facing is not None or cmd.facing_entity is not None):
+            return None
+        sel = self.selector(cmd.targets)
+        if sel is None:
+            return None
+        coords = (dest.x, dest.y, dest.z)
+        first = self.program.next_float
+        for axis, coord in enumerate(coords):
+            self.program.intern_float(world_coordinate(coord, 0.0, axis != 1) if coord.kind != "rel" else coord.value)
+        return sel, first, sum(1 << axis for axis, coord in enumerate(coords) if coord.kind == "rel")
 
     def tag_operands(self, cmd: TagCommand) -> tuple[int, int] | None:
         """(selector, tag bit) of ``tag SEL add|remove T`` when the VM can run it, else None."""

@@ -8,15 +8,18 @@ The Python entity store (:mod:`emulator.world.entities`) stays the source of tru
   the interned tags), ``E_HOLDER`` (its score holder id); ``pos[slot]`` (3 doubles);
 - ``order``: the slots unsorted ``@e`` visits, in the store's order (creation order, or the
   ``--shuffle`` permutation);
-- ``dirty[slot]``: set by the VM when it changed the entity's tags (``DIRTY_TAGS``) or its position
-  (``DIRTY_POS``).
+- ``dirty[slot]``: set by the VM when it changed the entity's tags (``DIRTY_TAGS``), its position
+  (``DIRTY_POS``) or teleported it (``DIRTY_TP``: the write-back applies the rest of ``tp``).
+
+The layout constants live in :mod:`emulator.vm` (numba's cache does not see constants change in
+another module).
 
 Synchronisation, both ways and exact:
 - Python -> VM: :meth:`EntityMirror.invalidate` marks the arrays stale (the backend calls it at each
   root and after every host op that may touch entities: a final command, a store, ``summon``);
   :meth:`EntityMirror.load` rebuilds them from the store before the VM runs again.
-- VM -> Python: after each VM run :meth:`EntityMirror.store` writes the dirty entities back (tag sets:
-  interned tags from the bits, other tags kept; positions).
+- VM -> Python: after each VM run that changed one, :meth:`EntityMirror.store` writes the dirty
+  entities back (tag sets: interned tags from the bits, other tags kept; positions; teleports).
 
 Selectors the VM evaluates (:meth:`EntityMirror.selector`): ``@e``, ``@a``, ``@s`` with ``type``
 (``!`` too, no ``#`` tags), ``tag`` (several, ``!``; not the empty ``tag=``), ``scores``, and for
@@ -31,17 +34,13 @@ import numpy as np
 
 from mcfunction_parser import ast
 from emulator.semantics import INT_MAX, INT_MIN
+from emulator.vm import (
+    DIRTY_POS, DIRTY_TAGS, DIRTY_TP, E_HOLDER, E_TAGS, E_TYPE, ENT_WIDTH, KIND_A, KIND_E, KIND_S, PLAYER_TYPE,
+    SEL_WIDTH, TEST_SCORE, TEST_TYPE,
+)
+from emulator.world import teleport
 
 MAX_TAGS = 63  # bits of an int64 mask
-ENT_WIDTH = 3
-E_TYPE, E_TAGS, E_HOLDER = range(ENT_WIDTH)
-DIRTY_TAGS, DIRTY_POS = 1, 2
-PLAYER_TYPE = 0  # the type id of minecraft:player
-
-SEL_WIDTH = 6
-S_KIND, S_REQUIRED, S_FORBIDDEN, S_LIMIT, S_TESTS, S_NTESTS = range(SEL_WIDTH)
-KIND_E, KIND_A, KIND_S = range(3)
-TEST_SCORE, TEST_TYPE = range(2)
 _KINDS = {"e": KIND_E, "a": KIND_A, "s": KIND_S}
 
 
@@ -159,6 +158,9 @@ class EntityMirror:
                 bits = int(self.ent[slot, E_TAGS])
                 entity.tags = {t for t in entity.tags if t not in self.bits} | {
                     t for t, b in self.bits.items() if bits >> b & 1}
-            if flags & DIRTY_POS:
-                entity.pos = tuple(float(v) for v in self.pos[slot])
+            pos = tuple(float(v) for v in self.pos[slot])
+            if flags & DIRTY_TP:  # the rest of `tp`: its own rotation wrapped, no vertical motion
+                teleport.apply(entity, teleport.to_entity(teleport.Destination(pos, entity.yaw, entity.pitch)))
+            elif flags & DIRTY_POS:
+                entity.pos = pos
         self.dirty[changed] = 0

@@ -72,6 +72,7 @@ class NumbaBackend:
         self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
         self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
         self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
+        self.ctx_pos = np.zeros((16, 3), dtype=np.float64)  # per context: its position
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
@@ -136,7 +137,7 @@ class NumbaBackend:
             sels, tests = mirror.selector_arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
-                            self.ctx_entity, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
+                            self.ctx_entity, self.ctx_pos, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
                             self.selbuf, self.logbuf, self.fstack, self.coll)
             if r[vm.R_EDIRTY]:
                 mirror.store()
@@ -161,7 +162,7 @@ class NumbaBackend:
                 if self._may_change_entities(pc):
                     mirror.invalidate()
             elif status == vm.ST_FORK:
-                self._as_contexts()
+                self._entity_contexts()
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_GROWCOLL:
@@ -264,6 +265,8 @@ class NumbaBackend:
             if index >= self.ctx_holder.shape[0]:
                 self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
                 self.ctx_entity = np.concatenate([self.ctx_entity, np.full(index + 1, -1, dtype=np.int64)])
+                self.ctx_pos = np.concatenate([self.ctx_pos, np.zeros((index + 1, 3))])
+            self.ctx_pos[index] = ctx.pos
             entity = world_entities.executor(self.state, ctx)
             self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
             self.ctx_entity[index] = -1 if entity is None else entity.order
@@ -329,16 +332,21 @@ class NumbaBackend:
         r[vm.R_NFORK] = n + len(rest)
         r[vm.R_CTX] = contexts[0]
 
-    def _as_contexts(self) -> None:
-        """``execute as SEL`` run by the VM: a context per entity it found (``selbuf[:R_NSEL]``)."""
+    def _entity_contexts(self) -> None:
+        """``execute as|at SEL`` run by the VM: a context per entity it found (``selbuf[:R_NSEL]``)."""
         r = self.regs
         index = int(r[vm.R_CTX])
         ctx, bindings = self.contexts[index], self.bindings[index]
+        at = self.program.rows[int(r[vm.R_PC]) - 1][3]
         made = []
         for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist():
+            entity = self.mirror.entity(slot)
+            if at:  # the entity may have moved since: no cache
+                made.append(self._context_index(world_entities.context_at(ctx, entity), bindings))
+                continue
             made_index = self.as_contexts.get((index, slot))
             if made_index is None:
-                as_ctx = world_entities.context_as(self.state, ctx, self.mirror.entity(slot))
+                as_ctx = world_entities.context_as(self.state, ctx, entity)
                 made_index = self.as_contexts[(index, slot)] = self._context_index(as_ctx, bindings)
             made.append(made_index)
         if len(made) == 1:

@@ -88,6 +88,10 @@ class Program:
         self.names.append(name)
         return len(self.names) - 1
 
+    @property
+    def next_float(self) -> int:
+        return len(self.floats)
+
     def intern_float(self, value: float) -> int:
         self.floats.append(float(value))
         self._arrays = None

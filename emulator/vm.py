@@ -88,9 +88,13 @@ OP_HOST = 50  # a: host op index. A final command run by Python (charged here, p
 OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
 OP_HOSTSTAGE = 52  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 54  # a: selector, b forked. `execute as SEL`: one context per entity (ST_FORK: Python makes them)
+OP_ASSTAGE = 54  # a: selector, b forked, c: 0 `as` / 1 `at`. `execute as|at SEL`: one context per entity
+# (ST_FORK: Python makes them)
 OP_POSSTAGE = 55  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
 OP_STOREPOS = 56  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
+OP_TP = 59  # a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) axes.
+# `tp SEL X Y Z`: every target to the same position (the execution position plus the relative
+# parts), each keeping its rotation; outside the spawnable bounds the command fails
 OP_GETPOS = 58  # a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
 OP_LOG = 57  # a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
 # EntityArgument.getPlayers), else its result is the count and the line is queued in logbuf (op, context):
@@ -134,7 +138,7 @@ OVF_WIDTH = 5  # pc, op kind, a, b, exact
 # ent[slot]: type id, tag bits, score holder id; slot = Entity.order. dirty[slot]: what the VM changed
 ENT_WIDTH = 3
 E_TYPE, E_TAGS, E_HOLDER = range(ENT_WIDTH)
-DIRTY_TAGS, DIRTY_POS = 1, 2
+DIRTY_TAGS, DIRTY_POS, DIRTY_TP = 1, 2, 4  # DIRTY_TP: Python applies the rest of a teleport
 PLAYER_TYPE = 0
 # selector rows: kind (@e/@a/@s), required and forbidden tag bits, limit, its tests (first, count);
 # a test row: [TEST_SCORE, objective, lo, hi] or [TEST_TYPE, type id, negated, 0]
@@ -221,6 +225,15 @@ def _mth_floor(x):
     return _wrap(i - 1) if x < i else i
 
 
+@njit(cache=True)
+def _in_spawnable_bounds(x, y, z):
+    """``world.entities.in_spawnable_bounds``: finite, floor of x/z in [-3e7, 3e7), of y in [-2e7, 2e7)."""
+    if not (np.isfinite(x) and np.isfinite(y) and np.isfinite(z)):
+        return False
+    fx, fy, fz = np.floor(x), np.floor(y), np.floor(z)
+    return -3.0e7 <= fx < 3.0e7 and -3.0e7 <= fz < 3.0e7 and -2.0e7 <= fy < 2.0e7
+
+
 @njit(cache=True, inline="always")
 def _clamp_pos(v, limit):
     """``max(-limit, min(v, limit))`` as Python evaluates it (the host's clamp; NaN gives -limit)."""
@@ -230,7 +243,7 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True)
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, trig, counts, totals, active, ovf,
-        ctx_holder, ctx_entity, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack, coll):
+        ctx_holder, ctx_entity, ctx_pos, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack, coll):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -934,6 +947,36 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 continue
             status = ST_HOST
             break
+        elif op == OP_TP:
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+            k = code[pc, 2]
+            x = floats[k] + ctx_pos[ctx, 0] if code[pc, 3] & 1 else floats[k]  # WorldCoordinate.get: value + base
+            y = floats[k + 1] + ctx_pos[ctx, 1] if code[pc, 3] & 2 else floats[k + 1]
+            z = floats[k + 2] + ctx_pos[ctx, 2] if code[pc, 3] & 4 else floats[k + 2]
+            has = 1
+            ok = 0
+            val = 0
+            pc += 1
+            if n == 0 or not _in_spawnable_bounds(x, y, z):  # "No entity was found", "Invalid position"
+                continue
+            for i in range(n):
+                e = selbuf[i]
+                epos[e, 0] = x
+                epos[e, 1] = y
+                epos[e, 2] = z
+                edirty[e] |= DIRTY_TP
+            regs[R_EDIRTY] = 1
+            ok = 1
+            val = n
         elif op == OP_GETPOS:
             if alive == 0:
                 pc += 1

@@ -106,6 +106,11 @@ def context_as(state: WorldState, ctx: Context, entity: Entity) -> Context:
     return replace(ctx, executor=register(state, entity))
 
 
+def context_at(ctx: Context, entity: Entity) -> Context:
+    """``execute at``: the entity's position and rotation (the executor stays)."""
+    return replace(ctx, pos=entity.pos, rot=(float(entity.yaw), float(entity.pitch)))
+
+
 def _with_source(ctx: Context, source: Source) -> Context:
     return replace(ctx, pos=tuple(source.pos), rot=(float(source.yaw), float(source.pitch)))
 
@@ -176,7 +181,7 @@ def stage(state: WorldState, sub: ast.Subcommand, ctx: Context) -> list[Context]
     if isinstance(sub, ast.ExAs):
         return [context_as(state, ctx, e) for e in entities]
     if isinstance(sub, ast.ExAt):
-        return [replace(ctx, pos=e.pos, rot=(float(e.yaw), float(e.pitch))) for e in entities]
+        return [context_at(ctx, e) for e in entities]
     if isinstance(sub, ast.ExPositionedAs):
         return [replace(ctx, pos=e.pos) for e in entities]
     if isinstance(sub, ast.ExRotatedAs):

@@ -80,7 +80,9 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "execute store result entity @s Pos[0] double 0.5 run scoreboard players get #a o",
                    "execute store success entity @s Pos[1] double 2 if entity @e[tag=a]",
                    "execute store result score #b o run data get entity @s Pos[0] 100",
-                   "execute store result score #c p run data get entity @s Pos[1]")
+                   "execute store result score #c p run data get entity @s Pos[1]",
+                   "tp @s ~1 ~ ~-0.5", "tp @e[tag=n] 3 4.5 -2", "execute at @s run tp @e[tag=a] ~ ~1 ~",
+                   "tp @s 40000000 0 0", "execute at @e[tag=m] run tp @s ~ ~ ~0.25")
 
 
 @dataclass(frozen=True)

@@ -158,3 +158,16 @@ def test_a_killed_entity_loses_its_scores(tmp_path):
                               "execute store result score #n o run scoreboard players add * s 0")
     assert emu.score("#n", "o") == 12
     assert sum(len(holders) for holders in emu.scores().values()) == 4  # three entities' s, and #n
+
+
+def test_teleport_and_execute_at(tmp_path):
+    # TeleportCommand.teleportToPos: every target to the same point, integer x/z centred, `~`
+    # from the execution position; out of the spawnable bounds fails; `at` takes the entity's position
+    emu = _run_both(tmp_path, "tp @e[tag=x] 5 64 -3\n"
+                              "execute as @e[tag=a] at @s run tp @e[tag=y] ~1 ~0.5 ~\n"
+                              "execute store success score #far o run tp @e[tag=y] 30000000 0 0")
+    assert [e["pos"] for e in emu.entities()] == [[5.5, 64.0, -2.5]] * 3 + [[6.5, 64.5, -2.5]]
+    assert emu.score("#far", "o") == 0
+    ops = {row[0] for row in emu.backend.program.rows}
+    assert {vm.OP_TP, vm.OP_ASSTAGE} <= ops
+    assert {type(node).__name__ for _, node, _ in emu.backend.host_ops_run()} == {"ObjectivesAdd", "Summon"}
