@@ -27,7 +27,7 @@ import numpy as np
 from emulator.semantics import INT_MAX, floor_mod, wrap32, wraps32
 from emulator import world_entities
 from emulator.state import Context, WorldState
-from emulator.world import bossbars, nbt_ops, relations, server_commands, stores
+from emulator.world import bossbars, nbt_ops, relations, server_commands, stores, text_components
 from emulator.world.errors import CommandFailure as WorldFailure
 from emulator.world.source import Source
 from mcfunction_parser import ast
@@ -238,9 +238,11 @@ def _say(host: Host, cmd: ast.Say, ctx: Context) -> int:
 
 
 def _tellraw(host: Host, cmd: ast.Tellraw, ctx: Context) -> int:
-    """Logged as written: no players are online to receive it."""
-    host.state.emit("tellraw", cmd.text, cmd.loc)
-    return 1
+    def select(target) -> list:
+        return _entities(world_entities.select, host.state, target, ctx)
+
+    finder = text_components.finder(world_entities.parse_target, select)
+    return _world(text_components.tellraw_command, host.state, cmd, select(cmd.targets), finder)
 
 
 def _gamerule(host: Host, cmd: ast.Gamerule, ctx: Context) -> int:

@@ -9,7 +9,7 @@ from __future__ import annotations
 from emulator.semantics import INT_MAX
 from mcfunction_parser import ast
 
-from emulator.world import bossbars, relations, server_commands
+from emulator.world import bossbars, relations, server_commands, text_components
 
 from . import conditions, data, entities, scoreboard
 from .data import world_failures
@@ -24,9 +24,12 @@ def say(env, cmd: ast.Say, source: Source, where) -> int:
 
 
 def tellraw(env, cmd: ast.Tellraw, source: Source, where) -> int:
-    """The JSON text is logged as written (no players are online to receive it)."""
-    env.state.emit("tellraw", cmd.text, where)
-    return 1
+    def select(target) -> list:
+        return entities.select(target, source)
+
+    finder = text_components.finder(entities.world.parse_target, select)
+    with world_failures():
+        return text_components.tellraw_command(env.state, cmd, select(cmd.targets), finder)
 
 
 def sender_name(source: Source) -> str:

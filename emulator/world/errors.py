@@ -30,6 +30,7 @@ MESSAGES = {
     "entity.not_summonable": "Can't summon entity of type {0}",
     "argument.entity.notfound.entity": "No entity was found",
     "permissions.requires.entity": "An entity is required to run this command here",
+    "argument.entity.notfound.player": "No player was found",
     "argument.entity.toomany": "Only one entity is allowed, but the provided selector allows more than one",
     "argument.pos.outofworld": "That position is out of this world!",
     "commands.setblock.failed": "Could not set the block",

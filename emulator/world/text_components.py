@@ -1,0 +1,150 @@
+"""``tellraw``: the receivers and the text as the game resolves it for them.
+
+Source (decompiled 1.21): server/commands/TellRawCommand.java (EntityArgument.getPlayers: no
+player fails "No player was found"; each receiver gets ComponentUtils.updateForEntity(source,
+component, player, 0); the result is the number of receivers), network/chat/ComponentUtils
+(updateForEntity resolves every contents part and keeps the style and the ``extra`` siblings),
+contents/ScoreContents (a selector name must find exactly one entity, ``*`` is the receiver; an
+unset score or unknown objective reads as empty), contents/SelectorContents (the display names
+joined with ", "), contents/NbtContents (``storage``/``entity`` values as text, joined with ", ").
+
+The log keeps one line per command: the component as written when nothing in it needs resolving,
+else the resolved component as compact JSON (``*`` in a score name resolved for the first
+receiver). SNBT components (1.21.5+) are read as SNBT.
+"""
+from __future__ import annotations
+
+import json
+from typing import Callable
+
+from emulator.state import WorldState
+from emulator.world import nbt_ops
+from emulator.world.entities import Entity, entity_nbt
+from emulator.world.errors import CommandFailure
+from emulator.world.text import tag_as_string
+from mcfunction_parser import ast
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Compound, List
+from mcfunction_parser.nbt_path import nbt_path
+from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.snbt import value as snbt_value
+
+_RESOLVED = ("score", "selector", "nbt")
+_CONTENT_KEYS = _RESOLVED + ("separator", "storage", "entity", "block", "interpret", "source")
+Select = Callable[[str], list[Entity]]  # a selector or name as written -> the entities it finds
+
+
+def finder(parse: Callable[[str], object], select: Callable[[object], list[Entity]]) -> Select:
+    """A :data:`Select` from a backend's target parser and selector evaluation (a malformed
+    selector inside a text finds nothing)."""
+    def find(text: str) -> list[Entity]:
+        try:
+            target = parse(text)
+        except ValueError:
+            return []
+        return select(target)
+
+    return find
+
+
+def tellraw_command(state: WorldState, cmd: ast.Tellraw, receivers: list[Entity], select: Select) -> int:
+    """Log the line for ``receivers`` (what the targets found); fails when none is a player."""
+    players = [e for e in receivers if e.is_player]
+    if not players:
+        raise CommandFailure("argument.entity.notfound.player")
+    state.emit("tellraw", resolved_text(cmd.text, state, select, players[0]), cmd.loc)
+    return len(players)
+
+
+def resolved_text(text: str, state: WorldState, select: Select, receiver: Entity) -> str:
+    component = _read(text)
+    if component is None or not _needs_resolving(component):
+        return text
+    resolved = _resolve(component, _Resolver(state, select, receiver))
+    return json.dumps(resolved, ensure_ascii=False, separators=(",", ":"))
+
+
+def _read(text: str):
+    try:
+        return json.loads(text)
+    except ValueError:
+        pass
+    try:
+        return _plain_value(snbt_value(Reader(text, Loc("<text>", 1, 1), (1, 21, 5))))
+    except ParseError:
+        return None
+
+
+def _plain_value(tag):
+    if isinstance(tag, Compound):
+        return {k: _plain_value(v) for k, v in tag.items()}
+    if isinstance(tag, List):
+        return [_plain_value(v) for v in tag]
+    if isinstance(tag, str):
+        return str(tag)
+    return int(tag) if isinstance(tag, int) else float(tag)
+
+
+def _needs_resolving(component) -> bool:
+    if isinstance(component, list):
+        return any(_needs_resolving(c) for c in component)
+    if isinstance(component, dict):
+        return any(k in component for k in _RESOLVED) or _needs_resolving(component.get("extra", []))
+    return False
+
+
+def _resolve(component, resolver: "_Resolver"):
+    if isinstance(component, list):
+        return [_resolve(c, resolver) for c in component]
+    if not isinstance(component, dict):
+        return component
+    out = {k: v for k, v in component.items() if k not in _CONTENT_KEYS}  # the style stays
+    if "score" in component:
+        out["text"] = resolver.score(component["score"])
+    elif "selector" in component:
+        out["text"] = ", ".join(e.display_name for e in resolver.select(str(component["selector"])))
+    elif "nbt" in component:
+        out["text"] = resolver.nbt(component)
+    if "extra" in component:
+        out["extra"] = _resolve(component["extra"], resolver)
+    return out
+
+
+class _Resolver:
+    def __init__(self, state: WorldState, select: Select, receiver: Entity) -> None:
+        self.state, self.select, self.receiver = state, select, receiver
+
+    def score(self, score: dict) -> str:
+        """ScoreContents.resolve: the holder (one entity for a selector, the receiver for ``*``)."""
+        name = str(score.get("name", ""))
+        if name == "*":
+            holder = self.receiver.score_holder
+        elif name.startswith("@"):
+            found = self.select(name)
+            if len(found) != 1:
+                raise CommandFailure("argument.entity.toomany")
+            holder = found[0].score_holder
+        else:
+            holder = name
+        value = self.state.scoreboard.get(holder, str(score.get("objective", "")))
+        return "" if value is None else str(value)
+
+    def nbt(self, component: dict) -> str:
+        """NbtContents: the values at the path in the storage or the entities, as text."""
+        try:
+            path = nbt_path(Reader(str(component["nbt"]), Loc("<text>", 1, 1), (1, 21, 0)))
+        except ParseError:
+            return ""
+        if "storage" in component:
+            roots = [self.state.storage.get(str(component["storage"]), Compound())]
+        elif "entity" in component:
+            roots = [entity_nbt(e) for e in self.select(str(component["entity"]))]
+        else:
+            return ""  # block entities are not modelled
+        values = []
+        for root in roots:
+            try:
+                values += nbt_ops.get(root, path)
+            except CommandFailure:
+                continue
+        return ", ".join(tag_as_string(v) for v in values)
