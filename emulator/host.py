@@ -233,7 +233,8 @@ class Host:
 
 # ---------------------------------------------------------------------- handlers
 def _say(host: Host, cmd: ast.Say, ctx: Context) -> int:
-    host.state.emit("say", f"[{_sender_name(host, ctx)}] {cmd.message}", cmd.loc)
+    message = text_components.say_text(cmd.message, lambda sel: _entities(world_entities.select, host.state, sel, ctx))
+    host.state.emit("say", f"[{_sender_name(host, ctx)}] {message}", cmd.loc)
     return 1
 
 

@@ -19,7 +19,8 @@ from .source import Source
 
 
 def say(env, cmd: ast.Say, source: Source, where) -> int:
-    env.state.emit("say", f"[{sender_name(source)}] {cmd.message}", where)
+    message = text_components.say_text(cmd.message, lambda sel: entities.select(sel, source))
+    env.state.emit("say", f"[{sender_name(source)}] {message}", where)
     return 1
 
 

@@ -1,4 +1,4 @@
-"""``tellraw``: the receivers and the text as the game resolves it for them.
+"""``tellraw`` and ``say``: the receivers and the text as the game resolves it for them.
 
 Source (decompiled 1.21): server/commands/TellRawCommand.java (EntityArgument.getPlayers: no
 player fails "No player was found"; each receiver gets ComponentUtils.updateForEntity(source,
@@ -11,10 +11,14 @@ joined with ", "), contents/NbtContents (``storage``/``entity`` values as text, 
 The log keeps one line per command: the component as written when nothing in it needs resolving,
 else the resolved component as compact JSON (``*`` in a score name resolved for the first
 receiver). SNBT components (1.21.5+) are read as SNBT.
+
+``say``: MessageArgument replaces each selector in the message by the display names it finds,
+joined with ", " (EntitySelector.joinNames; nothing found leaves nothing).
 """
 from __future__ import annotations
 
 import json
+import re
 from typing import Callable
 
 from emulator.state import WorldState
@@ -27,8 +31,10 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound, List
 from mcfunction_parser.nbt_path import nbt_path
 from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.selectors import selector
 from mcfunction_parser.snbt import value as snbt_value
 
+_MESSAGE_SELECTOR = re.compile(r"@[spaern]")
 _RESOLVED = ("score", "selector", "nbt")
 _CONTENT_KEYS = _RESOLVED + ("separator", "storage", "entity", "block", "interpret", "source")
 Select = Callable[[str], list[Entity]]  # a selector or name as written -> the entities it finds
@@ -45,6 +51,23 @@ def finder(parse: Callable[[str], object], select: Callable[[object], list[Entit
         return select(target)
 
     return find
+
+
+def say_text(message: str, select: Callable[[ast.Selector], list[Entity]]) -> str:
+    """The message of ``say`` with its selectors replaced by the names they find."""
+    parts, pos = [], 0
+    for match in _MESSAGE_SELECTOR.finditer(message):
+        if match.start() < pos:
+            continue
+        reader = Reader(message, Loc("<message>", 1, 1), (1, 21, 0))
+        reader.pos = match.start()
+        try:
+            found = select(selector(reader))
+        except ParseError:  # the parser checked the message: not a selector here
+            continue
+        parts += [message[pos:match.start()], ", ".join(e.display_name for e in found)]
+        pos = reader.pos
+    return "".join(parts) + message[pos:]
 
 
 def tellraw_command(state: WorldState, cmd: ast.Tellraw, receivers: list[Entity], select: Select) -> int:

@@ -60,3 +60,12 @@ def test_a_score_selector_must_find_one_entity(tmp_path, backend):
     emu.add_player("Alex")
     emu.call("t:main")
     assert (emu.score("#ok", "o"), emu.log) == (0, [])
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_say_replaces_its_selectors_by_names(tmp_path, backend):
+    # MessageArgument: each selector becomes the display names it finds, joined with ", "
+    emu = emulator(tmp_path, backend, {"t:main": "summon pig\nsummon cow 0 0 0 {CustomName:'\"Daisy\"'}\n"
+                                       "say found @e[type=!player] and @e[tag=none] at @s"})
+    emu.call("t:main")
+    assert [e.text for e in emu.log] == ["[Server] found Pig, Daisy and  at "]
