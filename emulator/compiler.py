@@ -4,7 +4,7 @@ What compiles to VM instructions: scoreboard ``players`` commands on named holde
 ``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.entity_arrays`:
 ``@e @a @s`` with type, tag, scores, limit), ``tag SEL add|remove``, ``enable``; ``if|unless
 score`` on named holders and ``@s``, ``if|unless entity SEL``, ``as SEL``, ``store result|success
-score`` on named holders, ``store ... entity @s Pos[i] double S``; ``if|unless function``,
+score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``; ``if|unless function``,
 function calls and tags, every ``return`` form, and macro calls (instantiated by Python on first
 use). Everything else is a host op run by
 :mod:`emulator.host`: a final command (``OP_HOST``: ``say``, ``schedule``, selectors ...), an
@@ -158,6 +158,9 @@ class Compiler:
             elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
                 self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked))
                 stores.append(st)
+            elif isinstance(st, StoreScore) and _bare_self(st.targets) and _context_kept(stages[i + 1:], final):
+                self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked), 1)
+                stores.append(_SelfScoreStore(st))
             elif isinstance(st, (StoreScore, StoreData, StoreBossbar)):
                 self.host(vm.OP_HOSTSTAGE, st, int(forked))  # resolves the store's target now, as the modifier does
                 stores.append(st)
@@ -190,7 +193,10 @@ class Compiler:
     def stores(self, stores: list) -> None:
         """Apply the chain's stores to the result, in the order written (callbacks chain so)."""
         for st in stores:
-            if isinstance(st, _PositionStore):
+            if isinstance(st, _SelfScoreStore):
+                self.emit(vm.OP_STORE, 0 if st.node.kind == "result" else 1, vm.HOLDER_SELF,
+                          self.objective(st.node.objective))
+            elif isinstance(st, _PositionStore):
                 self.emit(vm.OP_STOREPOS, st.axis, 0 if st.node.kind == "result" else 1,
                           self.program.intern_float(st.node.scale))
             elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
@@ -347,6 +353,13 @@ class _PositionStore:
     def __init__(self, node: StoreData, axis: int) -> None:
         self.node = node
         self.axis = axis
+
+
+class _SelfScoreStore:
+    """A ``store result|success score @s OBJ`` the VM runs (the chain keeps its executor)."""
+
+    def __init__(self, node: StoreScore) -> None:
+        self.node = node
 
 
 def _position_store(st) -> int | None:

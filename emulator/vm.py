@@ -59,8 +59,9 @@ OP_IFENT = 17  # a: selector, f negated, g final. `if|unless entity SEL`
 OP_ENABLE = 18  # a: holders, b: objective. `scoreboard players enable`
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
-OP_CHKOBJ = 22  # a o, b forked: the `store ... score` stage: fails if o does not exist
-OP_STORE = 23  # a: 0 result / 1 success, b h, c o
+OP_CHKOBJ = 22  # a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not
+# exist, or (c) without an executor ("No entity was found": the command, or in a forked chain this context)
+OP_STORE = 23  # a: 0 result / 1 success, b h (a name or @s), c o
 OP_CALL = 30  # a: function id
 OP_CALLREG = 31  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
 OP_FEND = 32  # end of a function body: return without a result
@@ -703,6 +704,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_STORE:
             if alive and has:
                 h = code[pc, 2]
+                if h == HOLDER_SELF:  # the chain's stage checked there is an executor
+                    h = ctx_holder[ctx]
                 o = code[pc, 3]
                 v = (val if ok else 0) if code[pc, 1] == 0 else ok
                 values[h, o] = v
@@ -720,6 +723,10 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc = pc + 1 if code[pc, 2] else abort  # in a forked chain only this context fails
                 status = ST_ERROR
                 break
+            if alive and code[pc, 3] and ctx_holder[ctx] < 0:
+                alive = 0
+                pc = pc + 1 if code[pc, 2] else abort
+                continue
             pc += 1
         elif op == OP_STAGESDONE:
             if loop and alive:  # forked: every context goes through the stages before any runs

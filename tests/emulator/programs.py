@@ -82,7 +82,9 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "execute store result score #b o run data get entity @s Pos[0] 100",
                    "execute store result score #c p run data get entity @s Pos[1]",
                    "tp @s ~1 ~ ~-0.5", "tp @e[tag=n] 3 4.5 -2", "execute at @s run tp @e[tag=a] ~ ~1 ~",
-                   "tp @s 40000000 0 0", "execute at @e[tag=m] run tp @s ~ ~ ~0.25")
+                   "tp @s 40000000 0 0", "execute at @e[tag=m] run tp @s ~ ~ ~0.25",
+                   "execute store result score @s o run scoreboard players add #a o 1",
+                   "execute store success score @s p if score @s o matches 1.. run scoreboard players get #a o")
 
 
 @dataclass(frozen=True)
