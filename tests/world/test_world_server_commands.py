@@ -175,3 +175,17 @@ def test_trigger_refuses_non_trigger_objectives_and_non_players(tmp_path, backen
     assert emu.score("#v", "o") == 0 and emu.score("Alex", "t") == 0
     emu.call("t:set", as_="Alex")
     assert emu.score("#v", "o") == -3 and emu.score("Alex", "t") == -3
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_random_reset_with_a_seed_and_flags(tmp_path, backend):
+    # RandomSequences.createSequence: seed = (includeWorldSeed ? worldSeed : 0) ^ salt, the id's
+    # hash mixed in only with includeSequenceId; `random reset * SALT ...` sets the defaults
+    emu = emulator(tmp_path, backend, {
+        "t:a": "random reset t:d 7 false false\nexecute store result score #a o run random value 1..1000 t:d",
+        "t:b": "random reset * 9 true false\nexecute store result score #b o run random value 1..1000 t:e",
+    })
+    emu.call("t:a")
+    emu.call("t:b")
+    assert emu.score("#a", "o") == Xoroshiro.sequence(7, None).between_inclusive(1, 1000)
+    assert emu.score("#b", "o") == Xoroshiro.sequence(0 ^ 9, None).between_inclusive(1, 1000)
