@@ -18,7 +18,11 @@ Shapes (the cost rule is in :mod:`emulator.backend`; the opcodes in :mod:`emulat
     execute if score #a o matches 1.. store result score #b o run function f
                                        CMD ->end; IFMATCH; CHKOBJ; CALL f; STORE; end: ENDCMD
     return run CMD                     CMD k ->none; ...CMD...; RETRES; none: RETNONE
-    execute as @e run return 1         CMD ->end; HOSTSTAGE; STAGESDONE; RETV 1; end: ENDCMD; RETPEND
+    execute as @e run return 1         CMD ->end; ASSTAGE sel; STAGESDONE; RETV 1; end: ENDCMD; RETPEND
+    execute as @e[tag=x] at @s run tp @s ~ ~1 ~
+                                       CMD ->end; ASSTAGE sel; ASSTAGE sel' at; STAGESDONE; TP sel' x 2; end: ENDCMD
+    execute as @e[distance=..2] run say hi
+                                       CMD ->end; HOSTSTAGE; STAGESDONE; HOST; end: ENDCMD
 """
 from __future__ import annotations
 

@@ -8,11 +8,18 @@ A command line compiles to a short sequence (see the compiler); the cost rule im
 the one documented in :mod:`emulator.backend`.
 
 Machine state lives in arrays owned by Python so the loop can return (for a host command, a macro
-instantiation, a full frame stack, a runtime error, a full overflow buffer) and resume:
+instantiation, contexts to make, a full frame stack, a runtime error, a full buffer) and resume:
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
-scoreboard ``values``/``present``/``alive``, the per-instruction ``counts`` and the sanitizer's
-``ovf`` buffer. Registers that matter across a call (``alive``, the tag accumulator, the command's
-abort target, the context, the fork loop flag) are saved in the frame and restored on return.
+scoreboard ``values``/``present``/``locked``/``alive``, the per-instruction ``counts``, the
+sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, per context its executor's holder,
+slot and position (``ctx_holder``, ``ctx_entity``, ``ctx_pos``), and the entities
+(:mod:`emulator.entity_arrays`: ``ent``, ``epos``, ``edirty``, ``eorder``, with the selector
+tables ``sels``/``tests`` and the scratch ``selbuf`` for what a selector finds). Registers that
+matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
+the fork loop flag) are saved in the frame and restored on return.
+
+A call with array arguments costs more than a whole scoreboard command here: the dispatch loop
+resolves names and ``@s`` itself and calls the selector helpers only for selectors.
 
 Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
 table). When a stage makes several (Python makes the contexts: a host stage, ``as SEL``, ``if
