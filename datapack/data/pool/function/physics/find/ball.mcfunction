@@ -7,7 +7,7 @@
 # Reads: @s pool.id, chord, box. Writes: @s pool.nt pool.nk pool.nr pool.np (and the offered
 # balls'); tag pool.stale removed (pool:physics/find/store); #work #a.* #best #kind #event_rail
 # #partner pool.tmp.
-# charged to #work: 140 commands, 340 per exact sweep (pool:physics/find/contact)
+# charged to #work: 140 commands, 220 to 350 per exact sweep (pool:physics/find/contact)
 scoreboard players add #work pool.tmp 140
 function pool:physics/find/self
 scoreboard players set #best pool.tmp 20000

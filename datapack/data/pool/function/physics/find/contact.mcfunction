@@ -8,11 +8,12 @@ execute if score @s pool.lx > #a.hx pool.tmp run return 0
 execute if score @s pool.hx < #a.lx pool.tmp run return 0
 execute if score @s pool.lz > #a.hz pool.tmp run return 0
 execute if score @s pool.hz < #a.lz pool.tmp run return 0
-# the exact test costs about 340 commands (with the touching tests): past #find_cap the search
-# is dropped (pool:physics/find/next)
+# the exact test costs about 220 commands with the touching tests, 130 more when its unit vector
+# is not the last one (pool:physics/sweep/unit): past #find_cap the search is dropped
+# (pool:physics/find/next)
 execute if score #work pool.tmp > #find_cap pool.tmp run scoreboard players set #abort pool.tmp 1
 execute if score #abort pool.tmp matches 1 run return 0
-scoreboard players add #work pool.tmp 340
+scoreboard players add #work pool.tmp 220
 execute as @e[tag=pool.self] run function pool:physics/find/chord_a
 execute if entity @s[tag=pool.moving] run function pool:ball/chord_start
 scoreboard players operation #b.bx pool.tmp = @s pool.cx

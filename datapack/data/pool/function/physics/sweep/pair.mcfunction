@@ -2,7 +2,8 @@
 # rest of the tick: the smallest fraction f (1/10000 of the interval) with |d0 + f D| = 2R while
 # approaching, where d0 = b0 - a0 and D = (b1 - b0) - (a1 - a0).
 # Reads: #a.bx #a.bz #a.ex #a.ez #b.bx #b.bz #b.ex #b.ez pool.tmp (chord start, end, um).
-# Writes: #f pool.tmp (0..10000, or 10001 when they do not touch); temporaries #dx #dz #p #q #h.
+# Writes: #f pool.tmp (0..10000, or 10001 when they do not touch); temporaries #dx #dz #p #q #h,
+# pool:physics/sweep/unit's memo.
 # With u = D/|D|: p = -d0.u is the distance to closest approach, q = d0 x u the miss distance;
 # contact comes at p - sqrt(D^2 - q^2) for D = $contact = 2R + 20 um: early enough that the
 # rounded unit vector (1e-4) never lets balls overlap; the resolver then closes the gap.
@@ -23,7 +24,7 @@ scoreboard players operation $z pool.math += #a.bz pool.tmp
 # cheap reject: separating
 function pool:physics/sweep/pair_reject
 execute if score #apart pool.tmp matches 1 run return 0
-function pool:math/normalize
+function pool:physics/sweep/unit
 execute if score $len pool.math matches 0 run return 0
 # p = -(d0 . u)
 scoreboard players operation $a pool.math = #dx pool.tmp
