@@ -1,4 +1,6 @@
 """PackTest-format test files run by emulator.testing (format: misode/packtest README)."""
+import re
+
 import pytest
 
 from emulator.testing import discover, run_suite
@@ -165,15 +167,17 @@ def test_chat_conditions_see_messages_since_the_test_started(pack):
     # messages and wording as PackTest's ChatAssertion (regex find over the received messages)
     root = pack({
         "demo/function/init.mcfunction": "say from load\n",
-        "demo/test/chat.mcfunction": 'say hello world\nassert chat "hello w.rld"\nassert not chat "from load"\n'
+        "demo/test/chat.mcfunction": '# @dummy\nsay hello world\nassert chat "hello w.rld"\nassert not chat "from load"\n'
                                      'tellraw @a {"text": "json msg"}\nassert chat ^json\nassert chat bye\n',
         "demo/test/not.mcfunction": "say hi\nassert not chat hi\n",
         "demo/test/players.mcfunction": "assert chat hi @a\n",
     }, load=["demo:init"])
     results = by_id(run(root))
-    assert results["demo:chat"].message == \
-        'Expected chat message matching bye, received "[Server] hello world", "json msg"'
-    assert results["demo:chat"].line == 6
+    # tellraw needs a receiving player (no player found fails it), so the test has a @dummy; it is
+    # also the test's source, named Dummy100..Dummy999 (PackTest's Dummy.createRandom)
+    assert re.fullmatch(r'Expected chat message matching bye, received "\[Dummy\d{3}\] hello world", "json msg"',
+                        results["demo:chat"].message)
+    assert results["demo:chat"].line == 7
     assert results["demo:not"].message == "Did not expect chat message matching hi, found 1"
     assert "receivers need player entities" in results["demo:players"].message
 
