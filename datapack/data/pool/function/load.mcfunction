@@ -121,6 +121,8 @@ scoreboard players set $mu_cushion pool.const 2000
 # commands a game tick may spend on the table's physics, as pool:physics/step estimates them
 # (#work): the issue's budget is 5000 per tick; the rest of a physics tick carries over
 scoreboard players set $budget pool.const 4400
+# pool:physics/sweep/unit remembers its last result: forget it, the reloaded math may differ
+scoreboard players reset #unit.x pool.tmp
 
 # Game state (public): $resting pool.game is 1 when no ball moves; $pocketed counts pocketed balls
 # and $last_pocketed holds the number of the last one; the table corner $origin.x/y/z is in mm;
