@@ -77,7 +77,7 @@ class NumbaBackend:
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
         self.context_ids: dict[tuple, int] = {}
-        self.as_contexts: dict[tuple[int, int], int] = {}  # (context, entity slot) -> `as` context; per root
+        self.as_cache = np.full((vm.AS_CACHE_SIZE, 3), -1, dtype=np.int64)  # rows (context, slot, `as` context)
         # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
         # writes to what its stage resolved, whatever context the chain ends in
         self.bindings: list[tuple] = []
@@ -92,7 +92,7 @@ class NumbaBackend:
         self.mirror.invalidate()  # the API may have changed entities between roots
         self.contexts = []
         self.context_ids = {}
-        self.as_contexts = {}
+        self.as_cache[:, 0] = -1  # context indexes start again
         self.bindings = []
         self.store_targets = {}
         self._context_index(context or Context(), ())
@@ -138,7 +138,7 @@ class NumbaBackend:
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
                             self.ctx_entity, self.ctx_pos, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
-                            self.selbuf, self.logbuf, self.fstack, self.coll)
+                            self.selbuf, self.logbuf, self.fstack, self.coll, self.as_cache)
             if r[vm.R_EDIRTY]:
                 mirror.store()
                 r[vm.R_EDIRTY] = 0
@@ -314,23 +314,11 @@ class NumbaBackend:
             self._fork([self._context_index(c, bindings) for c in made])
 
     def _fork(self, contexts: list[int]) -> None:
-        """Run the rest of the chain for ``contexts[0]`` now and push the others on the fork stack
-        for its ENDCMD. A fork inside a forked chain stacks on top (the game's context order: each
-        outer context's inner contexts in turn). Each frame depth has its own rows."""
+        """Run the rest of the chain for ``contexts[0]`` now, the others later (:func:`vm.fork_contexts`)."""
         r = self.regs
-        depth = int(r[vm.R_DEPTH])
-        if r[vm.R_LOOP] == vm.LOOP_NONE:  # a new command: whatever an earlier function left at this depth is stale
-            r[vm.R_NCOLL] = _drop_rows(self.coll, int(r[vm.R_NCOLL]), depth)
-            r[vm.R_LOOP] = vm.LOOP_FORKED
-            n = _drop_rows(self.fstack, int(r[vm.R_NFORK]), depth)
-        else:
-            n = _drop_rows(self.fstack, int(r[vm.R_NFORK]), depth + 1)
-        rest = contexts[:0:-1]  # the next one on top
-        while self.fstack.shape[0] < n + len(rest):
+        made = np.array(contexts, dtype=np.int64)
+        while not vm.fork_contexts(r, self.fstack, self.coll, made, len(made), int(r[vm.R_DEPTH]), int(r[vm.R_PC])):
             self.fstack = _grown(self.fstack)
-        self.fstack[n:n + len(rest)] = [(depth, int(r[vm.R_PC]), c) for c in rest]
-        r[vm.R_NFORK] = n + len(rest)
-        r[vm.R_CTX] = contexts[0]
 
     def _entity_contexts(self) -> None:
         """``execute as|at SEL`` run by the VM: a context per entity it found (``selbuf[:R_NSEL]``)."""
@@ -344,11 +332,10 @@ class NumbaBackend:
             if at:  # the entity may have moved since: no cache
                 made.append(self._context_index(world_entities.context_at(ctx, entity), bindings))
                 continue
-            made_index = self.as_contexts.get((index, slot))
-            if made_index is None:
-                as_ctx = world_entities.context_as(self.state, ctx, entity)
-                made_index = self.as_contexts[(index, slot)] = self._context_index(as_ctx, bindings)
-            made.append(made_index)
+            row = self.as_cache[vm.as_cache_row(index, slot)]
+            if row[0] != index or row[1] != slot:
+                row[:] = (index, slot, self._context_index(world_entities.context_as(self.state, ctx, entity), bindings))
+            made.append(int(row[2]))
         if len(made) == 1:
             r[vm.R_CTX] = made[0]
         else:
@@ -472,13 +459,6 @@ class NumbaBackend:
             if loc is not None:
                 out[(loc.path, loc.line)] += int(self.counts[pc])
         return dict(out)
-
-
-def _drop_rows(rows: np.ndarray, n: int, depth: int) -> int:
-    """The row count once the top rows of ``depth`` or deeper are dropped (a fork stack)."""
-    while n > 0 and rows[n - 1, 0] >= depth:
-        n -= 1
-    return n
 
 
 def _grown(rows: np.ndarray) -> np.ndarray:

@@ -105,8 +105,9 @@ OP_TP = 59  # a: selector, b: x (index into floats; y, z follow), c: bits of the
 # parts), each keeping its rotation; outside the spawnable bounds the command fails
 OP_GETPOS = 58  # a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
 OP_LOG = 57  # a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
-# EntityArgument.getPlayers), else its result is the count and the line is queued in logbuf (op, context):
-# Python writes it when the VM returns (before it serves anything else, so the log keeps its order)
+# EntityArgument.getPlayers), else its result is the count. The line is queued in logbuf (op, context)
+# either way: the host's tellraw decides what is written, when the VM returns (before Python serves
+# anything else, so the log keeps its order)
 OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
 
 # operations: opcode OP_OPER_BASE + OPK_*
@@ -223,6 +224,44 @@ def _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, aliv
     return n
 
 
+@njit(cache=True)
+def fork_contexts(regs, fstack, coll, contexts, n, depth, resume):
+    """A stage made ``contexts[:n]`` (n >= 2) at frame ``depth``: run the rest of the chain (from
+    ``resume``) for the first now and push the others on the fork stack for the chain's ENDCMD.
+    A fork inside a forked chain stacks on top (the game's order: each outer context's inner
+    contexts in turn); in a new command, rows an earlier function left at this depth are stale.
+    The VM and Python (host stages) both fork through here. False when ``fstack`` is too small
+    (nothing changed)."""
+    fresh = regs[R_LOOP] == LOOP_NONE
+    nf = regs[R_NFORK]
+    while nf > 0 and fstack[nf - 1, 0] >= (depth if fresh else depth + 1):
+        nf -= 1
+    if nf + n - 1 > fstack.shape[0]:
+        return False
+    if fresh:
+        nc = regs[R_NCOLL]
+        while nc > 0 and coll[nc - 1, 0] >= depth:
+            nc -= 1
+        regs[R_NCOLL] = nc
+        regs[R_LOOP] = LOOP_FORKED
+    for i in range(1, n):  # the next one on top
+        row = nf + n - 1 - i
+        fstack[row, 0] = depth
+        fstack[row, 1] = resume
+        fstack[row, 2] = contexts[i]
+    regs[R_NFORK] = nf + n - 1
+    regs[R_CTX] = contexts[0]
+    return True
+
+
+AS_CACHE_SIZE = 4096  # (context, entity slot) -> the `as` context: a direct-mapped cache, per root
+
+
+@njit(cache=True, inline="always")
+def as_cache_row(ctx, slot):
+    return (ctx * 7919 + slot) & (AS_CACHE_SIZE - 1)
+
+
 _double_to_int = njit(cache=True)(semantics.double_to_int)  # Java's (int) of a double
 
 
@@ -251,7 +290,8 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True)
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, trig, counts, totals, active, ovf,
-        ctx_holder, ctx_entity, ctx_pos, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack, coll):
+        ctx_holder, ctx_entity, ctx_pos, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack, coll,
+        as_cache):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -584,10 +624,26 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc = abort
                 status = ST_ERROR
                 break
-            else:  # Python makes the contexts of selbuf[:n] (and forks if several)
-                regs[R_NSEL] = n
-                status = ST_FORK
-                break
+            else:
+                cached = code[pc - 1, 3] == 0 and regs[R_NFORK] + n <= fstack.shape[0]
+                for i in range(n if cached else 0):  # `as`: contexts made before for these entities?
+                    row = as_cache_row(ctx, selbuf[i])
+                    if as_cache[row, 0] != ctx or as_cache[row, 1] != selbuf[i]:
+                        cached = False
+                        break
+                if not cached:  # Python makes the contexts of selbuf[:n] (and forks if several)
+                    regs[R_NSEL] = n
+                    status = ST_FORK
+                    break
+                for i in range(n):
+                    selbuf[i] = as_cache[as_cache_row(ctx, selbuf[i]), 2]
+                if n == 1:
+                    ctx = selbuf[0]
+                    continue
+                regs[R_LOOP] = loop
+                fork_contexts(regs, fstack, coll, selbuf, n, depth, pc)  # room checked above
+                loop = regs[R_LOOP]
+                ctx = regs[R_CTX]
         elif op == OP_POSSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1
@@ -1029,10 +1085,9 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             has = 1
             ok = 1 if n else 0
             val = n
-            if n:
-                logbuf[nlog, 0] = code[pc, 1]
-                logbuf[nlog, 1] = ctx
-                nlog += 1
+            logbuf[nlog, 0] = code[pc, 1]
+            logbuf[nlog, 1] = ctx
+            nlog += 1
             pc += 1
         elif op == OP_MACRO:
             if alive == 0:

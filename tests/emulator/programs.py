@@ -84,7 +84,8 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "tp @s ~1 ~ ~-0.5", "tp @e[tag=n] 3 4.5 -2", "execute at @s run tp @e[tag=a] ~ ~1 ~",
                    "tp @s 40000000 0 0", "execute at @e[tag=m] run tp @s ~ ~ ~0.25",
                    "execute store result score @s o run scoreboard players add #a o 1",
-                   "execute store success score @s p if score @s o matches 1.. run scoreboard players get #a o")
+                   "execute store success score @s p if score @s o matches 1.. run scoreboard players get #a o",
+                   'tellraw @a {"text":"hi"}', 'execute store result score #t o run tellraw @a[tag=!x] "x"')
 
 
 @dataclass(frozen=True)
