@@ -18,6 +18,7 @@ DEFAULT_PACK = Path(__file__).resolve().parents[1] / "datapack"
 TABLE_CORNER = (0.0, 64.0, 0.0)   # where pool:table/setup runs (the playing area's corner)
 POCKETED = 3                      # pool.state of a ball that left play (pool:load's header)
 REQUIRED_FUNCTIONS = ("pool:table/setup", "pool:api/shot")
+LISTENER = "dpemu"                # the simulated player who watches (and reads the chat)
 
 
 @dataclass(frozen=True)
@@ -94,7 +95,8 @@ def missing_functions(emu: Emulator) -> list[str]:
 
 
 def new_table(pack: str | Path = DEFAULT_PACK, backend: str = "numba", sanitize: bool = False) -> Emulator:
-    """An emulator with ``pack`` loaded, its load tick run and a racked table at TABLE_CORNER."""
+    """An emulator with ``pack`` loaded, its load tick run, a racked table at TABLE_CORNER and a
+    player (LISTENER) watching."""
     emu = Emulator(backend=backend, sanitize=sanitize)
     emu.load(pack)
     if missing_functions(emu):
@@ -113,6 +115,9 @@ def reset_table(emu: Emulator) -> Emulator:
 def _set_up(emu: Emulator) -> Emulator:
     emu.tick()                                         # the load tick
     emu.call("pool:table/setup", at=TABLE_CORNER)
+    # a player at the table, added after the balls: tellraw @a fails with nobody online (as in
+    # the game), and the pack's refusals are read from the chat
+    emu.add_player(LISTENER, TABLE_CORNER, gamemode="spectator")
     return emu
 
 

@@ -49,6 +49,11 @@ class PoolWorld:
     def add_player(self, name: str, rotation=(0.0, 0.0)) -> str:
         return self.emu.add_player(name, TABLE_CORNER, rotation)
 
+    def listen(self) -> None:
+        """A player at the table: tellraw @a fails and shows nothing when no player is online
+        (as in the game), so tests that read the pack's chat messages need one."""
+        self.add_player("Listener")
+
     @property
     def messages(self) -> list[str]:
         return [entry.text for entry in self.emu.log if entry.kind == "tellraw"]

@@ -121,6 +121,7 @@ def test_integer_energy_never_rises_between_ticks():
 
 def test_ball_sent_into_a_corner_is_pocketed_and_reported():
     board = table([(300000, 300000)])
+    board.listen()
     shoot(board, angle=-13500, speed=2000)
     play(board)
     assert board.ball_score(0, "pool.state") == 3
@@ -154,6 +155,7 @@ def world_snapshot(board):
     (dict(tip_y=-600), "tip_y")])
 def test_out_of_range_shots_are_refused_without_change(arguments, reason):
     board = table([(635000, 635000)])
+    board.listen()
     shot = dict(angle=0, speed=2000, tip_x=0, tip_y=0, elevation=0) | arguments
     before = world_snapshot(board)
     assert board.call("pool:api/shot", arguments=shot) == 0          # return fail
@@ -163,6 +165,7 @@ def test_out_of_range_shots_are_refused_without_change(arguments, reason):
 
 def test_shot_while_moving_is_refused():
     board = table([(635000, 635000)])
+    board.listen()
     shoot(board)
     board.tick()
     vx = board.ball_score(0, "pool.vx")
@@ -240,6 +243,7 @@ def test_trigger_strikes_along_the_players_view(yaw, direction):
 
 def test_pocketed_cue_ball_is_refused_then_spotted_again():
     board = table([(300000, 300000), (1905000, 635000)])
+    board.listen()
     shoot(board, angle=-13500, speed=2000)
     play(board)
     assert board.ball_score(0, "pool.state") == 3
@@ -253,6 +257,7 @@ def test_pocketed_cue_ball_is_refused_then_spotted_again():
 
 def test_cue_ball_is_not_spotted_onto_another_ball():
     board = table([(300000, 300000), (650000, 640000)])
+    board.listen()
     shoot(board, angle=-13500, speed=2000)
     play(board)
     board.call("pool:table/spot_cue")
