@@ -15,7 +15,7 @@ _OPERANDS = {
     vm.OP_CMD: "p", vm.OP_STAGESDONE: "p", vm.OP_SET: "hoi", vm.OP_ADD: "hoi", vm.OP_REMOVE: "hoi",
     vm.OP_RESET: "ho", vm.OP_RESETALL: "h", vm.OP_GET: "ho",
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "obb", vm.OP_STORE: "bho",
-    vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_RETIFHAS: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
+    vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_RETIFHAS: "p", vm.OP_IFNOFN: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
     vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "x", vm.OP_HOSTSTAGE: "xb", vm.OP_HOSTSTORE: "x",
     vm.OP_MACRO: "m", vm.OP_TAG: "sib", vm.OP_IFENT: "s_____b", vm.OP_ENABLE: "ho", vm.OP_ASSTAGE: "sbb", vm.OP_TP: "sdi",
     vm.OP_POSSTAGE: "_b", vm.OP_STOREPOS: "ibd", vm.OP_GETPOS: "i", vm.OP_LOG: "xs",

@@ -256,32 +256,47 @@ class Compiler:
         if not members:
             self.emit(vm.OP_FAIL, vm.ERR_EMPTY_TAG, self.name("#" + cmd.function), 0, 0)
             return
-        macro = cmd.arguments is not None or cmd.with_source is not None or any(self.functions[m].is_macro for m in members)
-        if macro:
-            if cmd.is_tag:
-                self.host(vm.OP_HOST, cmd)
-                return
-            self.program.macro_calls.append(MacroCall(cmd, cmd.function, self.fn_id))
-            self.emit(vm.OP_MACRO, len(self.program.macro_calls) - 1)
+        with_arguments = cmd.arguments is not None or cmd.with_source is not None
+        if not cmd.is_tag and (with_arguments or self.functions[members[0]].is_macro):
+            self.macro_call(cmd, members[0])
             self.emit(vm.OP_CALLREG)
             return
-        ids = [self.program.intern_function(m) for m in members]
+        # a tag: each macro member is instantiated with the call's arguments (a plain one ignores
+        # them); one that cannot be fails the command and the later members are not queued
+        ends = []
         if returning:
             skips = []
-            for i, fn in enumerate(ids):
-                self.emit(vm.OP_CALL, fn)
-                if i < len(ids) - 1:
+            for i, member in enumerate(members):
+                ends += self.member_call(member, cmd)
+                if i < len(members) - 1:
                     skips.append(self.emit(vm.OP_RETIFHAS, 0))
-            for pc in skips:
+            for pc in skips + ends:
                 self.program.patch(pc, 1, self.program.next_pc)
-        elif len(ids) == 1:
-            self.emit(vm.OP_CALL, ids[0])
+            return
+        if len(members) == 1:
+            ends += self.member_call(members[0], cmd)
         else:
             self.emit(vm.OP_TAGBEGIN)
-            for fn in ids:
-                self.emit(vm.OP_CALL, fn)
+            for member in members:
+                ends += self.member_call(member, cmd)
                 self.emit(vm.OP_TAGACC)
             self.emit(vm.OP_TAGEND)
+        for pc in ends:
+            self.program.patch(pc, 1, self.program.next_pc)
+
+    def member_call(self, member: str, cmd: FunctionCall) -> list[int]:
+        """Call one member of a tag; the pcs to patch with the call's end (after a failed instantiation)."""
+        if not self.functions[member].is_macro:
+            self.emit(vm.OP_CALL, self.program.intern_function(member))
+            return []
+        self.macro_call(cmd, member)
+        skip = self.emit(vm.OP_IFNOFN, 0)
+        self.emit(vm.OP_CALLREG)
+        return [skip]
+
+    def macro_call(self, cmd: FunctionCall, function: str) -> None:
+        self.program.macro_calls.append(MacroCall(cmd, function, self.fn_id))
+        self.emit(vm.OP_MACRO, len(self.program.macro_calls) - 1)
 
     def members(self, function: str, is_tag: bool, abort: bool) -> list[str] | None:
         """The functions a reference runs, or None after emitting the unknown-function failure."""

@@ -81,6 +81,8 @@ OP_RETNONE = 36  # abort target of `return run`: end the function without a resu
 OP_RETPEND = 37  # after a forked chain ending in `return N|fail`: return, if some context did
 OP_RETIFHAS = 38  # a: pc after the calls. `return run function #tag`: a member that returned skips the
 # later members (the discard drops them); the chain's stores and RETRES follow
+OP_IFNOFN = 39  # a: target. After OP_MACRO in a tag call: a member that could not be instantiated
+# (or no context) skips the rest of the call (the command fails)
 OP_TAGBEGIN = 40  # acc_any = 0, acc_sum = 0
 OP_TAGACC = 41  # add the last call's result to the accumulator
 OP_TAGEND = 42  # the tag's result: the sum, if any member returned
@@ -936,6 +938,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_IFFN_BEGIN:
             has = 0
             pc += 1
+        elif op == OP_IFNOFN:
+            pc = code[pc, 1] if regs[R_CALLFN] < 0 else pc + 1
         elif op == OP_IFFN_STEP or op == OP_RETIFHAS:
             pc = code[pc, 1] if has else pc + 1
         elif op == OP_IFFN_END:

@@ -3,7 +3,8 @@
 ``write_pack`` turns ``{function id: text}`` into a 1.21 pack folder. ``programs()`` draws a
 :class:`Program`: several functions in namespace ``t`` that set, add, operate on, compare, store,
 return, say and call each other (``function``, ``execute if|unless function``, ``return run``),
-plus leaf functions reached through the tag ``#t:leaves``, a macro function ``t:mac`` and one
+plus leaf functions reached through the tag ``#t:leaves``, a macro function ``t:mac`` (also in the
+tag ``#t:macs``) and one
 counted self-recursive loop. Calls only go to later functions, leaves, the macro or the loop, so
 every program ends.
 """
@@ -170,8 +171,13 @@ def stage_chains(draw, callees: list[str], vocab: Vocabulary) -> str:
 
 @st.composite
 def macro_calls(draw, vocab: Vocabulary) -> str:
+    """``t:mac`` or the tag ``#t:macs`` (a plain member, then t:mac) with arguments; sometimes the
+    tag without them (its macro member cannot be instantiated: the call fails after the first)."""
     holder = draw(vocab.single_holders)
-    return f'function t:mac {{h:"{holder}", v:{draw(ints)}}}'
+    target = draw(st.sampled_from(("t:mac", "t:mac", "#t:macs")))
+    if target == "#t:macs" and draw(st.integers(0, 3)) == 0:
+        return "function #t:macs"
+    return f'function {target} {{h:"{holder}", v:{draw(ints)}}}'
 
 
 @st.composite
@@ -219,7 +225,8 @@ def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool =
         body = draw(st.lists(score_commands(vocab), min_size=1, max_size=3))
         ending = draw(st.sampled_from(("", "return 1", "return -4", "return fail", "return 0")))
         functions[leaf] = "\n".join(body + ([ending] if ending else []))
-    tags = {"t:leaves": draw(st.lists(st.sampled_from(("t:leaf0", "t:leaf1")), min_size=1, max_size=3))}
+    tags = {"t:leaves": draw(st.lists(st.sampled_from(("t:leaf0", "t:leaf1")), min_size=1, max_size=3)),
+            "t:macs": ["t:leaf1", "t:mac"]}
     functions["t:mac"] = "$scoreboard players set $(h) o $(v)\n" + draw(
         st.sampled_from(("$return $(v)", "$scoreboard players operation #a o += $(h) o", "return run say mac")))
     for i, name in enumerate(names):

@@ -21,12 +21,7 @@ BACKENDS = ["python", "numba"]
 
 # Cases the numba VM gets wrong, by case id, with why. Strict xfails: an entry must go when the VM
 # is fixed.
-_TAG_MACRO_GAP = "the compiler sends 'function #tag' with arguments (or a macro member) host-side, which skips it"
-VM_GAPS: dict[str, str] = {
-    "tag_call_with_arguments": _TAG_MACRO_GAP,
-    "tag_call_with_storage": _TAG_MACRO_GAP,
-    "tag_call_missing_arguments": _TAG_MACRO_GAP,
-}
+VM_GAPS: dict[str, str] = {}
 
 
 def on_both_backends(cases):
