@@ -20,7 +20,8 @@ Shapes (the cost rule is in :mod:`emulator.backend`; the opcodes in :mod:`emulat
     return run CMD                     CMD k ->none; ...CMD...; RETRES; none: RETNONE
     execute as @e run return 1         CMD ->end; ASSTAGE sel; STAGESDONE; RETV 1; end: ENDCMD; RETPEND
     execute as @e[tag=x] at @s run tp @s ~ ~1 ~
-                                       CMD ->end; ASSTAGE sel; ASSTAGE sel' at; STAGESDONE; TP sel' x 2; end: ENDCMD
+                                       CMD ->end; ASSTAGE sel; ASSTAGE sel' at; STAGESDONE; TP sel' k 7; end: ENDCMD
+                                       (sel' is @s; floats[k:k+3] = 0, 1, 0; 7: all three relative)
     execute as @e[distance=..2] run say hi
                                        CMD ->end; HOSTSTAGE; STAGESDONE; HOST; end: ENDCMD
 """
