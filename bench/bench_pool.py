@@ -6,8 +6,9 @@
 - break: the full-power break, mean and max per tick, and the max over ticks without events;
 - overflow sweep: random shots (angle, speed up to full power, tip offset within the miscue
   limit, elevation) from the rack, every tenth a full-power break, with the overflow sanitizer;
-  counts wrapped values, runtime diagnostics and tables that did not come to rest, and reports
-  the commands per tick (max over the sweep, shots over the budget) and the wall time per shot.
+  counts wrapped values, runtime diagnostics, tables that did not come to rest and balls left
+  overlapping or off the table, and reports the commands per tick (max over the sweep, shots over
+  the budget), the ticks in slow motion (a physics tick carried over) and the wall time per shot.
 
 Each sweep worker loads the pack once and starts every shot on a fresh world
 (emulator.shot.reset_table); the shots are split over --jobs processes.
