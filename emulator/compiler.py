@@ -40,6 +40,7 @@ from mcfunction_parser.ast import (
 )
 from emulator.semantics import INT_MAX, INT_MIN
 from emulator.world.source import world_coordinate
+from emulator.world_entities import ENTITY_CONTEXT_STAGES
 
 _SET_OPS = {"set": vm.OP_SET, "add": vm.OP_ADD, "remove": vm.OP_REMOVE}
 
@@ -147,8 +148,8 @@ class Compiler:
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
             elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
-            elif isinstance(st, (ExAs, ExAt)) and not last and (sel := self.selector(st.targets)) is not None:
-                self.emit(vm.OP_ASSTAGE, sel, int(forked), int(isinstance(st, ExAt)))
+            elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
+                self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
             elif (axis := _position_store(st)) is not None and _context_kept(stages[i + 1:], final):
                 self.emit(vm.OP_POSSTAGE, 0, int(forked))
                 stores.append(_PositionStore(st, axis))

@@ -321,16 +321,18 @@ class NumbaBackend:
             self.fstack = _grown(self.fstack)
 
     def _entity_contexts(self) -> None:
-        """``execute as|at SEL`` run by the VM: a context per entity it found (``selbuf[:R_NSEL]``)."""
+        """``execute as|at|positioned as|rotated as SEL`` run by the VM: a context per entity it found
+        (``selbuf[:R_NSEL]``)."""
         r = self.regs
         index = int(r[vm.R_CTX])
         ctx, bindings = self.contexts[index], self.bindings[index]
-        at = self.program.rows[int(r[vm.R_PC]) - 1][3]
+        kind = self.program.rows[int(r[vm.R_PC]) - 1][3]
         made = []
         for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist():
             entity = self.mirror.entity(slot)
-            if at:  # the entity may have moved since: no cache
-                made.append(self._context_index(world_entities.context_at(ctx, entity), bindings))
+            if kind:  # at, positioned as, rotated as: the entity may have moved since (no cache)
+                made.append(self._context_index(world_entities.entity_stage_context(kind, self.state, ctx, entity),
+                                                bindings))
                 continue
             row = self.as_cache[vm.as_cache_row(index, slot)]
             if row[0] != index or row[1] != slot:

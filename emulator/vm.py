@@ -98,8 +98,9 @@ OP_HOST = 50  # a: host op index. A final command run by Python (charged here, p
 OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
 OP_HOSTSTAGE = 52  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 54  # a: selector, b forked, c: 0 `as` / 1 `at`. `execute as|at SEL`: one context per entity
-# (ST_FORK: Python makes them)
+OP_ASSTAGE = 54  # a: selector, b forked, c: kind (world_entities.ENTITY_CONTEXT_STAGES: as, at, positioned
+# as, rotated as). One context per entity found: `as` contexts made earlier in the root come from
+# as_cache, the others from Python (ST_FORK)
 OP_POSSTAGE = 55  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
 OP_STOREPOS = 56  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
 OP_TP = 59  # a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) axes.

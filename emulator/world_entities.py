@@ -111,6 +111,22 @@ def context_at(ctx: Context, entity: Entity) -> Context:
     return replace(ctx, pos=entity.pos, rot=(float(entity.yaw), float(entity.pitch)))
 
 
+# The stages that make one context per entity from the entity alone, by the VM's kind number
+# (OP_ASSTAGE's operand): as, at, positioned as, rotated as
+ENTITY_CONTEXT_STAGES = (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs)
+
+
+def entity_stage_context(kind: int, state: WorldState, ctx: Context, entity: Entity) -> Context:
+    """The context stage ``ENTITY_CONTEXT_STAGES[kind]`` makes from ``ctx`` for ``entity``."""
+    if kind == 0:
+        return context_as(state, ctx, entity)
+    if kind == 1:
+        return context_at(ctx, entity)
+    if kind == 2:
+        return replace(ctx, pos=entity.pos)
+    return replace(ctx, rot=(float(entity.yaw), float(entity.pitch)))
+
+
 def _with_source(ctx: Context, source: Source) -> Context:
     return replace(ctx, pos=tuple(source.pos), rot=(float(source.yaw), float(source.pitch)))
 
@@ -178,14 +194,9 @@ def stage(state: WorldState, sub: ast.Subcommand, ctx: Context) -> list[Context]
     if isinstance(sub, ast.ExOn):
         return [context_as(state, ctx, e) for e in relations.related(state.entities, executor(state, ctx), sub.relation)]
     entities = select(state, sub.targets, ctx)
-    if isinstance(sub, ast.ExAs):
-        return [context_as(state, ctx, e) for e in entities]
-    if isinstance(sub, ast.ExAt):
-        return [context_at(ctx, e) for e in entities]
-    if isinstance(sub, ast.ExPositionedAs):
-        return [replace(ctx, pos=e.pos) for e in entities]
-    if isinstance(sub, ast.ExRotatedAs):
-        return [replace(ctx, rot=(float(e.yaw), float(e.pitch))) for e in entities]
+    if isinstance(sub, ENTITY_CONTEXT_STAGES):
+        kind = ENTITY_CONTEXT_STAGES.index(type(sub))
+        return [entity_stage_context(kind, state, ctx, e) for e in entities]
     source = world_source(state, ctx)
     return [_with_source(ctx, source.facing_entity(e, sub.anchor)) for e in entities]
 

@@ -70,7 +70,8 @@ ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {T
 ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=marker,sort=nearest,limit=2]",
                     "positioned as @e[tag=n]", "as @e[tag=m] at @s", "as @e[sort=furthest]",
                     "as @e[tag=m,tag=!a]", "as @e[type=marker,scores={o=0..}]", "as @e[type=!marker]",
-                    "as @e[tag=m,limit=2]", "as @s[tag=m]", "as @e[scores={o=..3,p=-5..}]")
+                    "as @e[tag=m,limit=2]", "as @s[tag=m]", "as @e[scores={o=..3,p=-5..}]",
+                    "rotated as @e[type=armor_stand]", "positioned as @s")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]")
 ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",

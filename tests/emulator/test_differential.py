@@ -30,7 +30,13 @@ PROGRAMS = programs()
 
 # Programs with a construct the VM gets wrong (see VM_GAPS in test_java_edge_cases.py) are
 # skipped until it is fixed; everything else must agree.
-KNOWN_VM_GAPS: dict[str, re.Pattern] = {}
+KNOWN_VM_GAPS: dict[str, re.Pattern] = {
+    # The game instantiates every member of a tag call before running any: a macro member that
+    # cannot be instantiated fails the command first, then the members before it run. The VM
+    # instantiates each member just before calling it: the same scores and result, but a quota
+    # cut (or a log line) in an earlier member comes before the failure instead of after it.
+    "tag call whose macro member fails": re.compile(r"function #t:macs$", re.M),
+}
 
 
 def _compare(tmp_path_factory, program, sanitize: bool, limit: int | None = None) -> None:
