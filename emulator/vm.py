@@ -461,6 +461,12 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_ERROR
                 break
             d = np.int64(code[ipc, 3])
+            if op == OP_SET and h >= 0:  # one named holder (or @s): the common case, kept lean
+                values[h, o] = d
+                present[h, o] = 1
+                ok = 1
+                val = d
+                continue
             total = np.int64(0)
             for i in range(n):
                 h = selbuf[i]
