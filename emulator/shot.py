@@ -46,7 +46,8 @@ def random_shot(rng: random.Random, k: int) -> Shot:
     power, a tip offset inside the miscue limit, a level or raised cue."""
     if k % 10 == 0:
         return BREAK
-    r, phi = 0.5 * math.sqrt(rng.random()), rng.uniform(0, 2 * math.pi)
+    # radius 0.499: the tip's components are rounded to 1/1000, which must not pass the limit 0.5
+    r, phi = 0.499 * math.sqrt(rng.random()), rng.uniform(0, 2 * math.pi)
     return Shot(angle=rng.uniform(-180, 180), speed=rng.uniform(0.05, 6.5), tip_x=round(r * math.cos(phi), 3),
                 tip_y=round(r * math.sin(phi), 3), elevation=rng.choice([0.0, rng.uniform(0, 30)]))
 

@@ -299,6 +299,18 @@ def test_near_tangent_contact_in_the_rack_does_not_freeze_the_table():
     assert len(costs) < 400
 
 
+def test_immediate_contact_rounded_to_now_does_not_freeze_the_table():
+    # the sweep put this pair's contact one fraction unit after #now, which rounds to #now: the
+    # collision found no approach, the search found it again at the same time, for ever (the
+    # physics tick never ended once the rest of a tick was carried over instead of dropped)
+    board = racked_table()
+    shoot(board, angle=-6088, speed=3081, tip_x=264, tip_y=-241)
+    costs = play(board, max_ticks=600)
+    assert board.score("$resting", "pool.game") == 1
+    assert_on_table_and_apart(board, 16)
+    assert len(costs) < 600
+
+
 def moving_table(balls):
     """Balls sliding without spin: [((x, z), (vx, vz))], ball i created i-th (the order @e visits)."""
     board = table([r for r, _ in balls])

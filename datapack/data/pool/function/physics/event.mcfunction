@@ -1,7 +1,7 @@
 # pool:physics/event — resolve the earliest event (time #te, on the moving balls tagged by
 # pool:physics/find/take) when its estimated cost still fits in this game tick's $budget, else
 # carry the physics tick over: its balls are rewound to #te, resolved, and go on from there.
-# Reads/writes: #te #kind #partner #now #work pool.tmp, $carry pool.game, the event's balls; tags pool.event
+# Reads/writes: #te #kind #partner #now #work #same pool.tmp, $carry pool.game, the event's balls; tags pool.event
 # pool.event_b, pool.settled (removed from the event's balls).
 execute if score #kind pool.tmp matches 1 as @e[tag=pool.ball] if score @s pool.id = #partner pool.tmp run tag @s add pool.event_b
 # the resolution and restarts about 900 commands, plus each ball's rewind from its saved time
@@ -19,6 +19,9 @@ tag @e[tag=pool.event_b] remove pool.settled
 execute as @e[tag=pool.event] run function pool:ball/rewind
 execute as @e[tag=pool.event_b] run function pool:ball/rewind
 execute as @e[tag=pool.event,limit=1] run function pool:physics/resolve
+# events at one same instant, one after another (#same): a guard against a pair found again and again
+execute if score #te pool.tmp = #now pool.tmp run scoreboard players add #same pool.tmp 1
+execute unless score #te pool.tmp = #now pool.tmp run scoreboard players set #same pool.tmp 0
 scoreboard players operation #now pool.tmp = #te pool.tmp
 execute as @e[tag=pool.event] run function pool:ball/resume
 execute as @e[tag=pool.event_b] run function pool:ball/resume

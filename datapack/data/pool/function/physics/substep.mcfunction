@@ -27,6 +27,10 @@ scoreboard players operation #te pool.tmp < @e[tag=pool.moving] pool.nt
 tag @e[tag=pool.event] remove pool.event
 tag @e[tag=pool.event_b] remove pool.event_b
 execute if score #te pool.tmp matches 20000 run return 0
+# a guard that should never act: after 64 events at one instant the rest of the physics tick is
+# run without events (pool:physics/finish pushes apart what that leaves overlapping) rather than
+# freezing the table
+execute if score #same pool.tmp matches 64.. run return 0
 execute as @e[tag=pool.moving] if score @s pool.nt = #te pool.tmp run function pool:physics/find/take
 function pool:physics/event
 execute if score $carry pool.game matches 1 run return 0

@@ -22,7 +22,9 @@ scoreboard players operation #b.ex pool.tmp = @s pool.x
 scoreboard players operation #b.ez pool.tmp = @s pool.z
 function pool:physics/sweep/pair
 execute if score #f pool.tmp matches 10001 run return 0
-execute if score #f pool.tmp matches 0 if function pool:physics/find/resolved_apart run return run function pool:physics/find/touching
-execute if score #f pool.tmp matches 0 if function pool:physics/find/separating run return run function pool:physics/find/touching
 function pool:physics/find/absolute
+# an immediate contact (at #now: the fraction 0, or one small enough to round to it) that does not
+# approach is no event: resolving it would change nothing and find it again at once, for ever
+execute if score #t pool.tmp = #now pool.tmp if function pool:physics/find/resolved_apart run return run function pool:physics/find/touching
+execute if score #t pool.tmp = #now pool.tmp if function pool:physics/find/separating run return run function pool:physics/find/touching
 return 1

@@ -1,4 +1,4 @@
-# pool:physics/find/separating — for a contact the sweep puts at the sub-step's start: returns 1
+# pool:physics/find/separating — for a contact the sweep puts at once (at #now): returns 1
 # when b (@s) and a (tagged pool.self) do not approach there, s = (v_a - v_b) . n <= 0 with
 # n = (r_b - r_a)/|r_b - r_a|: the test of pool:ball/collide/resolve, with the velocities saved at
 # the chords' starts. Their chords can still converge (a sliding ball's path curves away from its
