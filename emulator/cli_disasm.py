@@ -17,7 +17,7 @@ _OPERANDS = {
     vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "obb", vm.OP_STORE: "bho",
     vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_RETIFHAS: "p", vm.OP_IFNOFN: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
     vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "x", vm.OP_HOSTSTAGE: "xb", vm.OP_HOSTSTORE: "x",
-    vm.OP_MACRO: "m", vm.OP_TAG: "sib", vm.OP_IFENT: "s_____b", vm.OP_ENABLE: "ho", vm.OP_ASSTAGE: "sbb", vm.OP_TP: "sdi",
+    vm.OP_MACRO: "m", vm.OP_TAG: "sib", vm.OP_IFENT: "s_____b", vm.OP_ENABLE: "ho", vm.OP_SELHOLDERS: "sb", vm.OP_ASSTAGE: "sbb", vm.OP_TP: "sdi",
     vm.OP_POSSTAGE: "_b", vm.OP_STOREPOS: "ibd", vm.OP_GETPOS: "i", vm.OP_LOG: "xs",
 }
 _COMPARISON_NAMES = {v: k for k, v in vm.CMP_BY_SYMBOL.items()}
@@ -55,8 +55,8 @@ def _instruction(program: Program, scoreboard: Scoreboard, pc: int) -> str:
 
 def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) -> str:
     if kind == "h":
-        if value <= vm.HOLDER_SEL_BASE:
-            return f"sel#{vm.HOLDER_SEL_BASE - value}"
+        if value == vm.HOLDER_SELBUF:
+            return "<selected>"
         return "@s" if value == vm.HOLDER_SELF else scoreboard.holders[value]
     if kind == "s":
         return f"sel#{value}"

@@ -101,20 +101,23 @@ class Compiler:
 
     def final(self, cmd: Command) -> None:
         """A command run once per context, charging 1 (rule 3)."""
-        if isinstance(cmd, ScoreSet) and (h := self.holders(cmd.targets)) is not None:
+        if isinstance(cmd, ScoreSet) and self.vm_holders(cmd.targets):
+            h = self.holders(cmd.targets)
             self.emit(_SET_OPS[cmd.action], h, self.objective(cmd.objective), cmd.value)
-        elif isinstance(cmd, ScoreReset) and (h := self.holders(cmd.targets)) is not None:
+        elif isinstance(cmd, ScoreReset) and self.vm_holders(cmd.targets):
+            h = self.holders(cmd.targets)
             if cmd.objective is None:
                 self.emit(vm.OP_RESETALL, h)
             else:
                 self.emit(vm.OP_RESET, h, self.objective(cmd.objective))
         elif isinstance(cmd, ScoreGet) and _named(cmd.target):
             self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
-        elif (isinstance(cmd, ScoreOperation) and (h := self.holders(cmd.targets)) is not None
-              and (h2 := self.holders(cmd.sources)) is not None):
+        elif isinstance(cmd, ScoreOperation) and self.vm_holders(cmd.targets) and self.vm_holders(cmd.sources):
+            h, h2 = self.holders(cmd.targets), self.holders(cmd.sources, sources=True)
             self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], h, self.objective(cmd.objective), h2,
                       self.objective(cmd.source_objective))
-        elif isinstance(cmd, ScoreEnable) and (h := self.holders(cmd.targets)) is not None:
+        elif isinstance(cmd, ScoreEnable) and self.vm_holders(cmd.targets):
+            h = self.holders(cmd.targets)
             self.emit(vm.OP_ENABLE, h, self.objective(cmd.objective))
         elif isinstance(cmd, TagCommand) and (tag := self.tag_operands(cmd)) is not None:
             self.emit(vm.OP_TAG, tag[0], tag[1], int(cmd.action == "add"))
@@ -348,12 +351,20 @@ class Compiler:
             return vm.HOLDER_SELF
         return self.sb.holder_id(target.name)
 
-    def holders(self, target) -> int | None:
-        """The holder operand of a name, ``@s`` or a selector the VM evaluates; None for the host."""
+    def holders(self, target, sources: bool = False) -> int | None:
+        """The holder operand of a name, ``@s`` or a selector the VM evaluates (its SELHOLDERS is
+        emitted now, so call this just before the op and only once it will be emitted); None for
+        the host."""
         if _named(target):
             return self.holder(target)
         sel = self.selector(target)
-        return None if sel is None else vm.HOLDER_SEL_BASE - sel
+        if sel is None:
+            return None
+        self.emit(vm.OP_SELHOLDERS, sel, int(sources))
+        return vm.HOLDER_SELBUF
+
+    def vm_holders(self, target) -> bool:
+        return _named(target) or self.selector(target) is not None
 
     def objective(self, name: str) -> int:
         return self.sb.objective_id(name)

@@ -18,8 +18,9 @@ tables ``sels``/``tests`` and the scratch ``selbuf`` for what a selector finds).
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
 the fork loop flag) are saved in the frame and restored on return.
 
-A call with array arguments costs more than a whole scoreboard command here: the dispatch loop
-resolves names and ``@s`` itself and calls the selector helpers only for selectors.
+A call with array arguments costs more than a whole scoreboard command here, and even an untaken
+call in a branch slows it: the scoreboard ops resolve names and ``@s`` themselves and read a
+selector's holders from OP_SELHOLDERS, emitted just before them.
 
 Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
 table). When a stage makes several (Python makes the contexts: a host stage, ``as SEL``, ``if
@@ -46,9 +47,9 @@ WIDTH = 8
 # ---------------------------------------------------------------- opcodes
 # Holder operands: >= 0 a holder id; HOLDER_SELF the executor (`@s`): ctx_holder[ctx] is its holder
 # id, -1 for the server (the command fails, or a condition stage drops the context: "No entity was
-# found"); <= HOLDER_SEL_BASE the holders of selector HOLDER_SEL_BASE - operand (see entity_arrays)
+# found"); HOLDER_SELBUF the holders the SELHOLDERS just before found (see entity_arrays)
 HOLDER_SELF = -2
-HOLDER_SEL_BASE = -3
+HOLDER_SELBUF = -3
 
 OP_HALT = 0  # root finished: return ST_DONE
 OP_CMD = 1  # a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
@@ -64,6 +65,9 @@ OP_GET = 15  # a h (a name or @s), b o
 OP_TAG = 16  # a: selector, b: tag bit, c: 1 add / 0 remove. `tag SEL add|remove T` (fails when nothing changes)
 OP_IFENT = 17  # a: selector, f negated, g final. `if|unless entity SEL`
 OP_ENABLE = 18  # a: holders, b: objective. `scoreboard players enable`
+OP_SELHOLDERS = 19  # a: selector, b: 0 targets / 1 sources. Free. The holders of the selector's entities
+# for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle
+# (R_NSEL2 of them). A separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
 OP_IFSCORE = 20  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # a h, b o, c lo, d hi, f negated, g final
 OP_CHKOBJ = 22  # a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not
@@ -129,8 +133,8 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
 R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG, R_EDIRTY = range(15, 24)
-R_NFORK, R_NCOLL = range(24, 26)  # rows used in fstack and coll
-N_REGS = 26  # R_EDIRTY: 1 once the VM marked an entity dirty (Python writes them back, clears it)
+R_NFORK, R_NCOLL, R_NSEL2 = range(24, 27)  # rows used in fstack and coll; SELHOLDERS' source count
+N_REGS = 27  # R_EDIRTY: 1 once the VM marked an entity dirty (Python writes them back, clears it)
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
 F_WIDTH = 11
@@ -210,20 +214,6 @@ def _select(sel, self_slot, sels, tests, ent, order, values, present, alive_obj,
             n += 1
             if n >= limit:
                 break
-    return n
-
-
-@njit(cache=True)
-def _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, out, off):
-    """ScoreHolderArgument for an operand that is not a name: the holder ids it names, written to
-    ``out[off:]``; their count (0: "No entity was found", the command fails). The dispatch loop
-    resolves names and ``@s`` itself (HOLDER_SELF run by the server arrives here as -1): a call
-    with array arguments costs more than a whole scoreboard command."""
-    if h > HOLDER_SEL_BASE:
-        return 0
-    n = _select(HOLDER_SEL_BASE - h, ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, out, off)
-    for i in range(off, off + n):
-        out[i] = ent[out[i], E_HOLDER]
     return n
 
 
@@ -344,15 +334,16 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 selbuf[0] = h
                 nt = 1
             else:
-                nt = _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                nt = regs[R_NSEL] if h == HOLDER_SELBUF else 0
+            half = selbuf.shape[0] >> 1
             h2 = code[pc, 3]
             if h2 == HOLDER_SELF:
                 h2 = ctx_holder[ctx]
             if h2 >= 0:
-                selbuf[nt] = h2
+                selbuf[half] = h2
                 ns = 1
             else:
-                ns = _holders(h2, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, nt)
+                ns = regs[R_NSEL2] if h2 == HOLDER_SELBUF else 0
             if sanitize and novf + nt * ns > ovf.shape[0]:  # room for every report first: runs again after
                 status = ST_FLUSH
                 break
@@ -379,7 +370,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 if present[h, o] == 0:  # get-or-create: the target first, then each source
                     values[h, o] = 0
                     present[h, o] = 1
-                for j in range(nt, nt + ns):
+                for j in range(half, half + ns):
                     h2 = selbuf[j]
                     if present[h2, o2] == 0:
                         values[h2, o2] = 0
@@ -437,11 +428,11 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             h = code[pc, 1]
             if h == HOLDER_SELF:
                 h = ctx_holder[ctx]
-            if h >= 0:  # a name, or @s run by an entity (selectors: below; calls cost, keep them off this path)
+            if h >= 0:  # a name, or @s run by an entity
                 selbuf[0] = h
                 n = 1
             else:
-                n = _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                n = regs[R_NSEL] if h == HOLDER_SELBUF else 0
             if sanitize and novf + n > ovf.shape[0]:
                 status = ST_FLUSH
                 break
@@ -509,7 +500,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 selbuf[0] = h
                 n = 1
             else:
-                n = _holders(h, ctx, ctx_entity, sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                n = regs[R_NSEL] if h == HOLDER_SELBUF else 0
             o = code[pc, 2]
             has = 1
             ok = 0
@@ -553,6 +544,15 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     locked[h, o] = 1
             ok = 1
             val = n
+        elif op == OP_SELHOLDERS:
+            if alive:
+                off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj,
+                            selbuf, off)
+                for i in range(off, off + n):
+                    selbuf[i] = ent[selbuf[i], E_HOLDER]
+                regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
+            pc += 1
         elif op == OP_TAG:
             if alive == 0:
                 pc += 1
