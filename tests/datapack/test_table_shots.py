@@ -12,7 +12,7 @@ import pytest
 from emulator.physics.ball import Ball
 from emulator.physics.cue import Shot, strike
 from emulator.physics.simulator import simulate_ticks
-from emulator.shot import random_shot
+from emulator.shot import TABLE_CORNER, random_shot
 from pool_world import PoolWorld
 
 TWO_R = 57150
@@ -128,6 +128,11 @@ def test_ball_sent_into_a_corner_is_pocketed_and_reported():
     assert board.score("$pocketed", "pool.game") == 1
     assert board.score("$last_pocketed", "pool.game") == 0
     assert any("pocketed" in m for m in board.messages)
+    # its display sits in the ball return (pool:ball/display/tray): 60 mm x the pocketing order
+    # along x, 120 mm outside the z = 0 cushion line, both from the table corner
+    (entity,) = board.emu.entities(f"@e[tag=pool.ball,scores={{pool.id=0}}]")
+    assert entity["pos"][0] == pytest.approx(TABLE_CORNER[0] + 0.060)
+    assert entity["pos"][2] == pytest.approx(TABLE_CORNER[2] - 0.120)
 
 
 def test_mirrored_shot_gives_mirrored_integers():
@@ -251,6 +256,9 @@ def test_pocketed_cue_ball_is_refused_then_spotted_again():
     assert any("not on the table" in m for m in board.messages)
     board.call("pool:table/spot_cue")
     assert [board.ball_score(0, f"pool.{k}") for k in ("x", "z", "state")] == [635000, 635000, 0]
+    (entity,) = board.emu.entities(f"@e[tag=pool.ball,scores={{pool.id=0}}]")
+    assert entity["pos"][0] == pytest.approx(TABLE_CORNER[0] + 0.635)  # the display is back on the table
+    assert entity["pos"][2] == pytest.approx(TABLE_CORNER[2] + 0.635)
     shoot(board, angle=0, speed=1000)
     assert board.score("$resting", "pool.game") == 0
 

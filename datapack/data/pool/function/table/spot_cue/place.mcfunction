@@ -1,9 +1,8 @@
-# pool:table/spot_cue/place — the cue ball @s returns to the head spot, at rest, visible.
+# pool:table/spot_cue/place — the cue ball @s returns to the head spot, at rest, its display back on the table.
 # Writes: @s pool.x pool.z pool.state and motion scores, its display; tag pool.settled removed.
 tag @s remove pool.settled
 scoreboard players set @s pool.x 635000
 scoreboard players set @s pool.z 635000
 function pool:ball/roll/stop
 scoreboard players set @s pool.wy 0
-data merge entity @s {view_range:1f}
 function pool:ball/display/place
