@@ -76,7 +76,10 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     trace = formats.TraceWriter() if fmt == "trace" else None
     emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace)
     roots = RootLog(emu.runtime)
-    load_commands = apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+    load_commands = emu.start()
+    if hasattr(emu.backend, "host_runs"):
+        emu.backend.host_runs.clear()  # list what --set/--call and the ticks hand to Python, not the load's setup
+    apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
     for _ in range(ticks):
         emu.tick()
         if stop and stop.met(emu):
@@ -228,20 +231,22 @@ def _vm_calls(backend, roots: RootLog) -> dict[str, int]:
     return dict(calls)
 
 
+# what each host opcode hands to Python, as the profile names it
+HOST_KINDS = {"host": "command", "hoststage": "stage", "hoststore": "store"}
+
+
 def _vm_host(backend, sources: dict) -> list[dict]:
-    """The commands and stages the VM handed to Python, with the cost charged at them."""
-    import numpy as np
-
-    from emulator import vm
-
+    """The host ops Python ran after the load (final commands, execute stages, stores) with how
+    often each ran.
+    Read from the backend's record of the ops it served, not from the VM's charged counts: a
+    store is never charged, so the counts would hide a host-run store."""
     code = backend.program.rows
     names = _vm_ops()
     rows = []
-    for pc in np.flatnonzero(backend.counts):
-        op = code[pc][0]
-        if op in (vm.OP_HOST, vm.OP_HOSTSTAGE, vm.OP_HOSTSTORE):
-            host_op = backend.program.host_ops[code[pc][1]]
-            loc = host_op.node.loc
-            rows.append({"function": host_op.function, "path": loc.path, "line": loc.line, "op": names[op],
-                         "command": _source(sources, loc.path, loc.line), "count": int(backend.counts[pc])})
-    return sorted(rows, key=lambda r: -r["count"])
+    for pc, runs in backend.host_runs.items():
+        host_op = backend.program.host_ops[code[pc][1]]
+        loc = host_op.node.loc
+        rows.append({"function": host_op.function, "path": loc.path, "line": loc.line,
+                     "op": HOST_KINDS[names[code[pc][0]]], "command": _source(sources, loc.path, loc.line),
+                     "count": runs})
+    return sorted(rows, key=lambda r: (-r["count"], r["path"], r["line"]))

@@ -7,7 +7,9 @@ The report they write is a plain dict built by :mod:`emulator.cli_profile`::
      "roots": [{"function", "runs", "max_cost", "mean_cost", "headroom", "cut"}],
      "functions": [{"function", "self", "total", "calls"}],
      "lines": [{"path", "line", "commands", "source", "instructions": [{"op", "count"}]}],
-     "host": [{"function", "path", "line", "op", "command", "count"}] (None on the python backend),
+     "host": [{"function", "path", "line", "op", "command", "count"}] (None on the python backend):
+         every host op Python ran, op being "command" (a final command), "stage" (an execute
+         stage) or "store" (an execute store), count the times it ran,
      "stacks": {"a;b;c": count} (when recorded)}
 """
 from __future__ import annotations
@@ -126,7 +128,7 @@ def write_table(report: dict, top: int) -> str:
     else:
         lines += ["", f"host-executed commands ({len(host)}, top {top}):" if host else "host-executed commands: none"]
     for h in (host or [])[:top]:
-        lines.append(f"{h['count']:>10}  {h['path']}:{h['line']}  {h['op']}  {h['command']}")
+        lines.append(f"{h['count']:>10}  {h['function']}  {h['path']}:{h['line']}  {h['op']}  {h['command']}")
     return "\n".join(lines) + "\n"
 
 

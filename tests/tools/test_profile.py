@@ -87,6 +87,42 @@ def test_host_commands_are_listed_with_counts(demo):
     assert say and say[0]["count"] == 1 and say[0]["function"] == "demo:b" and say[0]["line"] == 2
 
 
+# a tick whose stores and teleport only Python can do: a store into an entity's Rotation (the VM
+# stores only Pos) is never charged, so only the backend's record of host runs can list it
+HOST_ONLY = {
+    "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nsummon marker\nsummon marker\n",
+    "demo/function/tick.mcfunction": "execute as @e[type=marker] store result entity @s Rotation[0] float 1 "
+                                     "run scoreboard players add $t o 1\n"
+                                     "execute as @e[type=marker] run tp @s ^ ^ ^1\n",
+}
+
+
+def test_host_run_stores_and_teleports_are_listed_with_their_runs(pack):
+    root = pack(HOST_ONLY, load=["demo:init"], tick=["demo:tick"])
+    host = report(root, "--ticks", 3)["host"]
+    by_kind = {(h["line"], h["op"]): h for h in host if h["function"] == "demo:tick"}
+    # 2 markers x 3 ticks: the store runs after each add, the teleport once per marker
+    store = by_kind[(1, "store")]
+    assert store["count"] == 6 and store["function"] == "demo:tick" and store["path"].endswith("tick.mcfunction")
+    assert store["command"].startswith("execute as @e[type=marker] store result entity @s Rotation[0]")
+    assert by_kind[(2, "command")]["count"] == 6 and by_kind[(2, "command")]["command"].endswith("tp @s ^ ^ ^1")
+    assert not [h for h in host if h["function"] == "demo:init"]  # the load's summons are not listed
+    table = profile(root, "--ticks", 3).output
+    assert "host-executed commands (" in table
+    assert re.search(r"^\s+6  demo:tick  \S+tick\.mcfunction:1  store  execute as", table, re.M)
+
+
+def test_a_tick_without_host_ops_lists_none(pack):
+    # the load's host commands (objectives add, summon) are not listed; a --call's are
+    root = pack({**HOST_ONLY, "demo/function/tick.mcfunction": "scoreboard players add $t o 1\n"},
+                load=["demo:init"], tick=["demo:tick"])
+    assert report(root, "--ticks", 3)["host"] == []
+    assert "host-executed commands: none" in profile(root, "--ticks", 3).output
+    called = report(root, "--ticks", 1, "--call", "demo:init")["host"]
+    assert [(h["line"], h["op"], h["count"]) for h in called] == [(1, "command", 1), (2, "command", 1),
+                                                                   (3, "command", 1)]
+
+
 def test_collapsed_stacks_add_up_to_the_command_count(demo):
     result = profile(demo, "--ticks", 3, "--format", "collapsed")
     assert result.exit_code == 0, result.output
