@@ -12,12 +12,13 @@ from pathlib import Path
 
 from emulator import world_entities
 from emulator.api import Emulator
+from emulator.host import Host, HostFailure
 from emulator.state import Context
 from emulator.testing.discovery import TestFile
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
 from emulator.testing.results import FAILED, PASSED, Summary, TestResult
-from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, Run, Succeed, TestCase, plain_text,
-                                       read_test)
+from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, PerContext, Run, Succeed, TestCase,
+                                       plain_text, read_test)
 from emulator.world import structures
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
@@ -181,8 +182,27 @@ class TestSource:
             return Context(pos=self.ORIGIN)
         return replace(world_entities.entity_context(self.emu.state, self.dummy_entity), pos=self.ORIGIN)
 
-    def call(self, function: str) -> int | None:
-        return self.emu.runtime.call(function, self.context()).result
+    def call(self, function: str, context: Context | None = None) -> int | None:
+        return self.emu.runtime.call(function, context or self.context()).result
+
+    def contexts(self, stages: tuple) -> list[Context]:
+        """The contexts an execute prefix's ``stages`` make from the test source, each stage over
+        all contexts before the next (ContextChain.executeAll); a stage that fails drops its
+        context. One the emulator cannot evaluate here fails the test saying so."""
+        emu = self.emu
+        host = Host(emu.state, emu.packs.functions, emu.packs.tags, lambda message, severity: None)
+        contexts = [self.context()]
+        for stage in stages:
+            made = []
+            for ctx in contexts:
+                try:
+                    made += host.stage(stage, ctx)
+                except HostFailure as failure:
+                    if failure.report:
+                        raise _Verdict(FAILED, f"execute ... run: {failure.message} before a test command",
+                                       stage.loc.line) from None
+            contexts = made
+        return contexts
 
 
 def spawn_dummy(source: TestSource, case: TestCase) -> Entity | None:
@@ -238,24 +258,56 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
         elif isinstance(step, Succeed):
             raise _Verdict(PASSED)
         elif isinstance(step, Dummy):
-            _act(source, step)
+            _act(source, step, source.context())
+        elif isinstance(step, PerContext):
+            _run_per_context(emu, source, step, timeout, chat_start)
 
 
-def _act(source: TestSource, step: Dummy) -> None:
-    """A dummy action: the game's refusal fails only the command (kept as a diagnostic); what the
-    emulator cannot model fails the test."""
+def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeout: int, chat_start: int) -> None:
+    """PackTestExecutor: the test command runs in each context of the prefix now; an ``await``
+    whose condition does not hold yet (and every ``await delay``) registers a poll, and the polls
+    are tried one at a time, the first after each tick, until none is left."""
+    inner = step.step
+    polls = []
+    for ctx in source.contexts(step.stages):
+        if isinstance(inner, Dummy):
+            _act(source, inner, ctx)
+        elif isinstance(inner, Delay):
+            polls.append(_countdown(inner.ticks))
+        elif not _holds(source, inner, chat_start, ctx):
+            polls.append(lambda ctx=ctx: _holds(source, inner, chat_start, ctx))
+    while polls:
+        waiting = (f"still in 'await delay {inner.ticks}'" if isinstance(inner, Delay)
+                   else describe_failure(source, inner, chat_start))
+        _tick_or_time_out(emu, timeout, inner, f"{waiting} ({len(polls)} context(s) of the execute prefix waiting)")
+        if polls[0]():
+            polls.pop(0)
+
+
+def _countdown(ticks: int):
+    left = [ticks]
+
+    def poll() -> bool:
+        left[0] -= 1
+        return left[0] <= 0
+    return poll
+
+
+def _act(source: TestSource, step: Dummy, ctx: Context) -> None:
+    """A dummy action run from ``ctx``: the game's refusal fails only the command (kept as a
+    diagnostic); what the emulator cannot model fails the test."""
     try:
-        source.dummies.run(step.command, source.context())
+        source.dummies.run(step.command, ctx)
     except DummyFailure as refused:
         source.emu.state.error(f"{step.loc.path}:{step.loc.line}: {step.command.text}: {refused}")
     except Unsupported as reason:
         raise _Verdict(FAILED, f"{step.command.text}: not modelled: {reason}", step.loc.line) from None
 
 
-def _holds(source: TestSource, step, chat_start: int) -> bool:
+def _holds(source: TestSource, step, chat_start: int, ctx: Context | None = None) -> bool:
     if isinstance(step, ChatCheck):
         return bool(_chat_matches(source.emu, step, chat_start)) != step.negated
-    return source.call(step.function) == 1
+    return source.call(step.function, ctx) == 1
 
 
 def _chat(emu: Emulator, chat_start: int) -> list[str]:

@@ -5,8 +5,11 @@ and grouped into generated functions, one per run of lines between test commands
 commands (``assert``, ``await``, ``fail``, ``succeed``, ``dummy``), also after
 ``execute ... run``, become steps. A condition is checked by a generated function
 ``execute if|unless COND run return 1`` / ``return 0``, so it means exactly what ``execute if``
-means in the emulator; an ``execute`` prefix becomes a generated gate ``PREFIX run return 1``
-(the step runs once when the gate passes; the prefix's context does not reach the step).
+means in the emulator. After an ``execute`` prefix, as PackTest runs the test command once per
+context of the prefix: ``assert`` checks every context in one generated function; ``await`` and
+``dummy`` become a :class:`PerContext` step (the runner makes the prefix's contexts and runs the
+step in each); ``fail`` and ``succeed`` (which end the test at the first context) get a generated
+gate ``PREFIX run return 1`` and run once when it passes.
 """
 from __future__ import annotations
 
@@ -84,6 +87,16 @@ class Dummy(Step):
     """PackTest's ``dummy <player> <action>`` (emulator.testing.dummies)."""
 
     command: DummyCommand
+
+
+@dataclass(frozen=True)
+class PerContext(Step):
+    """``execute PREFIX run await|dummy ...``: ``step`` (without a gate) runs once in each context
+    the prefix's ``stages`` make from the test source, in order (PackTestExecutor: each await
+    registers its own poll, polled one after the other)."""
+
+    stages: tuple
+    step: Step
 
 
 @dataclass
@@ -187,16 +200,26 @@ def _read_header_and_classify(case: TestCase, lines: list[str]) -> set[int]:
 def _test_step(b: _Builder, number: int, line: str) -> Step | None:
     col = len(line) - len(line.lstrip()) + 1
     text = line.strip()
-    gate = prefix_text = None
+    gate = prefix_text = stages = None
     prefix = _EXECUTE_PREFIX.match(text)
     if prefix:
         prefix_text = prefix.group(1)
         gate_cmd = b.command(prefix_text + " run return 1", number, 1, col)
         if gate_cmd is None:
             return None
-        gate = b.function([gate_cmd])
         col += prefix.end()
         text = text[prefix.end():]
+        if text.split(" ", 1)[0] in ("await", "dummy"):
+            stages = gate_cmd.subcommands
+        else:
+            gate = b.function([gate_cmd])
+    step = _plain_step(b, number, line, text, col, gate, prefix_text)
+    if stages is None or step is None:
+        return step
+    return PerContext(step.loc, None, stages, step)
+
+
+def _plain_step(b: _Builder, number: int, line: str, text: str, col: int, gate, prefix_text) -> Step | None:
     loc = Loc(b.case.path, number, col)
     word, _, rest = text.partition(" ")
     rest_col = min(col + len(word) + 1 + (len(rest) - len(rest.lstrip())), len(line) + 1)

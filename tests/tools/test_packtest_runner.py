@@ -281,3 +281,52 @@ def test_execute_run_assert_asserts_in_every_context(pack, backend):
     result = run(root, backend).results[0]
     assert (result.status, result.line) == ("failed", 8)
     assert result.message == "Expected score @s o matches 1 (in every context of the execute prefix)"
+
+
+# PackTestExecutor (misode/packtest): a test command after `execute ... run` runs in each context of
+# the prefix; each `await` that does not hold yet registers a poll (frozen with its context), and
+# the polls are tried one at a time, the first after each tick, before the next step runs
+PER_CONTEXT_TICK = ("scoreboard players add $t o 1\n"
+                    "execute if score $t o matches 3.. run tag @e[tag=m1] add done\n"
+                    "execute if score $t o matches 1.. run tag @e[tag=m2] add done\n")
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_await_after_execute_polls_each_context_in_turn(pack, backend):
+    root = pack({
+        "demo/function/init.mcfunction": "scoreboard objectives add o dummy\n",
+        "demo/function/tick.mcfunction": PER_CONTEXT_TICK,
+        "demo/test/each.mcfunction": "summon marker ~ ~ ~ {Tags:[m1]}\nsummon marker ~ ~ ~ {Tags:[m2]}\n"
+                                     "execute as @e[type=marker] run await entity @s[tag=done]\n"
+                                     "assert score $t o matches 4\n",
+        # each: m1's poll passes after tick 3, m2's (true since tick 1) is tried after the next tick:
+        # 4 ticks, not the 3 a re-evaluated prefix would take; delays: 2 contexts x 2 ticks
+        "demo/test/delays.mcfunction": "summon marker\nsummon marker\nexecute as @e[type=marker] run await delay 2\n"
+                                       "assert score $t o matches 4\n",
+        "demo/test/none.mcfunction": "execute as @e[type=marker] run await entity @s[tag=never]\n"
+                                     "assert not score $t o matches 1..\n",  # no context: no tick waited
+        "demo/test/timeout.mcfunction": "# @timeout 5\nsummon marker ~ ~ ~ {Tags:[m3]}\n"
+                                        "execute as @e[type=marker] run await entity @s[tag=done]\n",
+    }, load=["demo:init"], tick=["demo:tick"])
+    results = by_id(run(root, backend))
+    for test in ("each", "delays", "none"):
+        assert results[f"demo:{test}"].status == "passed", (test, results[f"demo:{test}"].message)
+    assert results["demo:timeout"].message.startswith("Timed out after 5 ticks: Expected entity matching @s[tag=done]")
+    assert "(1 context(s) of the execute prefix waiting)" in results["demo:timeout"].message
+
+
+def test_dummy_after_execute_runs_in_each_context(pack):
+    # DummyCommand.spawn puts the dummy at the source's position: the prefix's, not the test's
+    # (Vec3Argument centres integer x and z: 5 1 7 is 5.5 1 7.5)
+    root = pack({
+        "demo/test/spawn.mcfunction": "execute positioned 5 1 7 run dummy Bob spawn\n"
+                                      "assert entity @a[name=Bob,x=5.5,y=1,z=7.5,distance=..0.001]\n",
+        "demo/test/none.mcfunction": "execute if entity @e[type=marker] run dummy Bob spawn\nassert not entity @a\n",
+        "demo/test/unsupported.mcfunction": "execute if function demo:f run dummy Bob spawn\n",
+        "demo/function/f.mcfunction": "return 1\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:spawn"].status == "passed", results["demo:spawn"].message
+    assert results["demo:none"].status == "passed", results["demo:none"].message
+    assert results["demo:unsupported"].status == "failed"
+    assert "not supported" in results["demo:unsupported"].message and results["demo:unsupported"].line == 1
