@@ -234,7 +234,7 @@ class Host:
 # ---------------------------------------------------------------------- handlers
 def _say(host: Host, cmd: ast.Say, ctx: Context) -> int:
     message = text_components.say_text(cmd.message, lambda sel: _entities(world_entities.select, host.state, sel, ctx))
-    host.state.emit("say", f"[{_sender_name(host, ctx)}] {message}", cmd.loc)
+    host.state.broadcast("say", f"[{_sender_name(host, ctx)}] {message}", cmd.loc)
     return 1
 
 

@@ -384,6 +384,7 @@ class LogEntry:
     kind: str
     text: str
     loc: Loc | None = None
+    receivers: tuple[str, ...] = ()  # UUIDs (Java strings) of the players the message was sent to
 
     def to_json(self) -> dict:
         return {"tick": self.tick, "kind": self.kind, "text": self.text, "where": str(self.loc) if self.loc else None}
@@ -470,8 +471,12 @@ class WorldState:
     bossbars: BossBars = field(default_factory=BossBars)
     tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.entity_arrays)
 
-    def emit(self, kind: str, text: str, loc: Loc | None = None) -> None:
-        self.log.append(LogEntry(self.tick, kind, text, loc))
+    def emit(self, kind: str, text: str, loc: Loc | None = None, receivers: tuple[str, ...] = ()) -> None:
+        self.log.append(LogEntry(self.tick, kind, text, loc, receivers))
+
+    def broadcast(self, kind: str, text: str, loc: Loc | None = None) -> None:
+        """A message every player online receives (PlayerList.broadcastSystemMessage / broadcastChatMessage)."""
+        self.emit(kind, text, loc, tuple(p.uuid_string for p in self.entities.players()))
 
     def error(self, message: str, frames: tuple[Frame, ...] = (), severity: str = "error") -> None:
         self.diagnostics.append(RuntimeDiagnostic(self.tick, message, frames, severity))

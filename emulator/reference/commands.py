@@ -20,7 +20,7 @@ from .source import Source
 
 def say(env, cmd: ast.Say, source: Source, where) -> int:
     message = text_components.say_text(cmd.message, lambda sel: entities.select(sel, source))
-    env.state.emit("say", f"[{sender_name(source)}] {message}", where)
+    env.state.broadcast("say", f"[{sender_name(source)}] {message}", where)
     return 1
 
 

@@ -14,11 +14,11 @@ from emulator import world_entities
 from emulator.api import Emulator
 from emulator.host import Host, HostFailure
 from emulator.state import Context
+from emulator.testing import chat
 from emulator.testing.discovery import TestFile
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
 from emulator.testing.results import FAILED, PASSED, Summary, TestResult
-from emulator.testing.testfile import (ChatCheck, Check, Delay, Dummy, Fail, PerContext, Run, Succeed, TestCase,
-                                       plain_text, read_test)
+from emulator.testing.testfile import ChatCheck, Check, Delay, Dummy, Fail, PerContext, Run, Succeed, TestCase, read_test
 from emulator.world import structures
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
@@ -268,19 +268,24 @@ def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeou
     whose condition does not hold yet (and every ``await delay``) registers a poll, and the polls
     are tried one at a time, the first after each tick, until none is left."""
     inner = step.step
-    polls = []
+    polls = []  # (context, poll)
     for ctx in source.contexts(step.stages):
         if isinstance(inner, Dummy):
             _act(source, inner, ctx)
         elif isinstance(inner, Delay):
-            polls.append(_countdown(inner.ticks))
-        elif not _holds(source, inner, chat_start, ctx):
-            polls.append(lambda ctx=ctx: _holds(source, inner, chat_start, ctx))
+            polls.append((ctx, _countdown(inner.ticks)))
+        elif _holds(source, inner, chat_start, ctx):
+            continue
+        elif inner.mode == "assert":
+            raise _Verdict(FAILED, describe_failure(source, inner, chat_start, ctx), inner.loc.line)
+        else:
+            polls.append((ctx, lambda ctx=ctx: _holds(source, inner, chat_start, ctx)))
     while polls:
+        ctx, poll = polls[0]
         waiting = (f"still in 'await delay {inner.ticks}'" if isinstance(inner, Delay)
-                   else describe_failure(source, inner, chat_start))
+                   else describe_failure(source, inner, chat_start, ctx))
         _tick_or_time_out(emu, timeout, inner, f"{waiting} ({len(polls)} context(s) of the execute prefix waiting)")
-        if polls[0]():
+        if poll():
             polls.pop(0)
 
 
@@ -306,17 +311,8 @@ def _act(source: TestSource, step: Dummy, ctx: Context) -> None:
 
 def _holds(source: TestSource, step, chat_start: int, ctx: Context | None = None) -> bool:
     if isinstance(step, ChatCheck):
-        return bool(_chat_matches(source.emu, step, chat_start)) != step.negated
+        return chat.holds(source.emu, step, chat_start, ctx or source.context())
     return source.call(step.function, ctx) == 1
-
-
-def _chat(emu: Emulator, chat_start: int) -> list[str]:
-    return [e.text if e.kind == "say" else plain_text(e.text)
-            for e in emu.log[chat_start:] if e.kind in ("say", "tellraw")]
-
-
-def _chat_matches(emu: Emulator, step: ChatCheck, chat_start: int) -> list[str]:
-    return [m for m in _chat(emu, chat_start) if re.search(step.pattern, m)]
 
 
 def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
@@ -325,16 +321,13 @@ def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
     emu.tick()
 
 
-def describe_failure(test: TestSource, check, chat_start: int = 0) -> str:
+def describe_failure(test: TestSource, check, chat_start: int = 0, ctx: Context | None = None) -> str:
     """PackTest's messages for failed score, chat, entity and data conditions (ScoreAssertion,
     ChatAssertion, EntityAssertion, DataAssertion); others name the condition."""
     expect = "Did not expect" if check.negated else "Expected"
     emu = test.emu
     if isinstance(check, ChatCheck):
-        if check.negated:
-            found = len(_chat_matches(emu, check, chat_start))
-            return f"Did not expect chat message matching {check.pattern}, found {found}"
-        return f"Expected chat message matching {check.pattern}, received {_sample(_chat(emu, chat_start))}"
+        return chat.failure(emu, check, chat_start, ctx or test.context(), _sample)
     if check.per_context and _CONTEXT_BOUND.search(check.condition):  # the failing context is gone
         return f"{expect} {check.condition} (in every context of the execute prefix)"
     match = _SCORE_MATCHES.match(check.condition)

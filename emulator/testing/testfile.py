@@ -6,9 +6,9 @@ commands (``assert``, ``await``, ``fail``, ``succeed``, ``dummy``), also after
 ``execute ... run``, become steps. A condition is checked by a generated function
 ``execute if|unless COND run return 1`` / ``return 0``, so it means exactly what ``execute if``
 means in the emulator. After an ``execute`` prefix, as PackTest runs the test command once per
-context of the prefix: ``assert`` checks every context in one generated function; ``await`` and
-``dummy`` become a :class:`PerContext` step (the runner makes the prefix's contexts and runs the
-step in each); ``fail`` and ``succeed`` (which end the test at the first context) get a generated
+context of the prefix: ``assert`` checks every context in one generated function; ``await``,
+``assert chat`` and ``dummy`` become a :class:`PerContext` step (the runner makes the prefix's
+contexts and runs the step in each); ``fail`` and ``succeed`` (which end the test at the first context) get a generated
 gate ``PREFIX run return 1`` and run once when it passes.
 """
 from __future__ import annotations
@@ -18,6 +18,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from emulator import world_entities
 from emulator.testing.directives import Directives, apply, directive_match
 from emulator.testing.dummies import DummyCommand, parse as parse_dummy
 from mcfunction_parser.ast import Command, Function, MacroLine
@@ -59,12 +60,14 @@ class Check(Step):
 
 @dataclass(frozen=True)
 class ChatCheck(Step):
-    """PackTest's ``chat PATTERN``: a message (say, tellraw) since the test started matches the
-    regular expression (searched, as Java's Matcher.find)."""
+    """PackTest's ``chat PATTERN [RECEIVERS]``: a system message (tellraw ...) a player received
+    since the test started matches the regular expression (searched, as Java's Matcher.find);
+    see :mod:`emulator.testing.chat`."""
 
     mode: str
     negated: bool
     pattern: str
+    receivers: object = None  # the RECEIVERS target (ast), None: every player's messages
 
 
 @dataclass(frozen=True)
@@ -209,12 +212,12 @@ def _test_step(b: _Builder, number: int, line: str) -> Step | None:
             return None
         col += prefix.end()
         text = text[prefix.end():]
-        if text.split(" ", 1)[0] in ("await", "dummy"):
-            stages = gate_cmd.subcommands
-        else:
+        if text.split(" ", 1)[0] in ("fail", "succeed"):
             gate = b.function([gate_cmd])
+        else:
+            stages = gate_cmd.subcommands
     step = _plain_step(b, number, line, text, col, gate, prefix_text)
-    if stages is None or step is None:
+    if stages is None or step is None or getattr(step, "per_context", False):
         return step
     return PerContext(step.loc, None, stages, step)
 
@@ -288,14 +291,17 @@ def _chat(b: _Builder, loc: Loc, gate, mode: str, negated: bool, text: str, numb
         pattern, _, rest = text.partition(" ")
     if not pattern:
         return _bad(b, f"{mode} chat: expected a pattern", number, col)
+    receivers = None
     if rest:
-        return _bad(b, f"{mode} chat: receivers need player entities, which the emulator does not model yet",
-                    number, col + len(text) - len(rest))
+        try:
+            receivers = world_entities.parse_target(rest)
+        except ValueError as error:
+            return _bad(b, f"{mode} chat: receivers: {error}", number, col + len(text) - len(rest))
     try:
         re.compile(pattern)
     except re.error:
         return _bad(b, f"Invalid pattern '{pattern}'", number, col)
-    return ChatCheck(loc, gate, mode, negated, pattern)
+    return ChatCheck(loc, gate, mode, negated, pattern, receivers)
 
 
 def _delay(b: _Builder, loc: Loc, gate, text: str, number: int, col: int):

@@ -71,7 +71,7 @@ def random_command(state: WorldState, cmd: ast.RandomCommand, source_name: str) 
     source = sequences.level_random if cmd.sequence is None else sequences.get(normalise_id(cmd.sequence))
     value = source.between_inclusive(low, high)
     if cmd.action == "roll":
-        state.emit("chat", MESSAGES["commands.random.roll"].format(source_name, value, low, high), cmd.loc)
+        state.broadcast("chat", MESSAGES["commands.random.roll"].format(source_name, value, low, high), cmd.loc)
     return value
 
 

@@ -75,7 +75,8 @@ def tellraw_command(state: WorldState, cmd: ast.Tellraw, receivers: list[Entity]
     players = [e for e in receivers if e.is_player]
     if not players:
         raise CommandFailure("argument.entity.notfound.player")
-    state.emit("tellraw", resolved_text(cmd.text, state, select, players[0]), cmd.loc)
+    state.emit("tellraw", resolved_text(cmd.text, state, select, players[0]), cmd.loc,
+               tuple(p.uuid_string for p in players))
     return len(players)
 
 

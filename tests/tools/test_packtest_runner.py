@@ -164,22 +164,44 @@ def test_discovery_ids_filter_and_errors(pack, tmp_path):
 
 
 def test_chat_conditions_see_messages_since_the_test_started(pack):
-    # messages and wording as PackTest's ChatAssertion (regex find over the received messages)
+    # messages and wording as PackTest's ChatAssertion (regex find over the received messages);
+    # ChatRecorder keeps the system messages sent to players (ServerPlayer.sendSystemMessage),
+    # one record per receiving player: tellraw is one, `say` (a chat message) is not
     root = pack({
-        "demo/function/init.mcfunction": "say from load\n",
-        "demo/test/chat.mcfunction": '# @dummy\nsay hello world\nassert chat "hello w.rld"\nassert not chat "from load"\n'
-                                     'tellraw @a {"text": "json msg"}\nassert chat ^json\nassert chat bye\n',
-        "demo/test/not.mcfunction": "say hi\nassert not chat hi\n",
-        "demo/test/players.mcfunction": "assert chat hi @a\n",
+        "demo/function/init.mcfunction": "tellraw @a \"from load\"\n",
+        "demo/test/chat.mcfunction": '# @dummy\ntellraw @a "hello world"\nassert chat "hello w.rld"\n'
+                                     'assert not chat "from load"\ntellraw @a {"text": "json msg"}\nassert chat ^json\n'
+                                     'say a said line\nassert chat bye\n',
+        "demo/test/not.mcfunction": "# @dummy\ntellraw @a \"hi\"\nassert not chat hi\n",
+        "demo/test/say.mcfunction": "# @dummy\nsay hi\nassert chat hi\n",
+        "demo/test/nobody.mcfunction": "tellraw @a \"hi\"\nassert not chat hi\n",
     }, load=["demo:init"])
     results = by_id(run(root))
-    # tellraw needs a receiving player (no player found fails it), so the test has a @dummy; it is
-    # also the test's source, named Dummy100..Dummy999 (PackTest's Dummy.createRandom)
-    assert re.fullmatch(r'Expected chat message matching bye, received "\[Dummy\d{3}\] hello world", "json msg"',
-                        results["demo:chat"].message)
-    assert results["demo:chat"].line == 7
+    assert results["demo:chat"].message == 'Expected chat message matching bye, received "hello world", "json msg"'
+    assert results["demo:chat"].line == 8
     assert results["demo:not"].message == "Did not expect chat message matching hi, found 1"
-    assert "receivers need player entities" in results["demo:players"].message
+    assert results["demo:say"].message == "Expected chat message matching hi, received nothing"
+    assert results["demo:nobody"].status == "passed", results["demo:nobody"].message  # nobody received it
+
+
+def test_chat_receivers_see_their_own_messages(pack):
+    # ChatAssertion with players: each receiver's messages (ChatRecorder.since with a recipient),
+    # flat-mapped over the players; no player found is an error, failing `assert not` too
+    root = pack({
+        "demo/test/receivers.mcfunction":
+            "dummy Ann spawn\ndummy Bob spawn\ntellraw Ann \"to ann\"\ntellraw @a \"to all\"\n"
+            "assert chat \"to ann\" Ann\nassert not chat \"to ann\" Bob\nassert chat \"to all\" Bob\n"
+            "execute as @a run assert chat \"to all\" @s\nassert chat \"to ann\" Bob\n",
+        "demo/test/count.mcfunction": "dummy Ann spawn\ndummy Bob spawn\ntellraw @a \"x\"\nassert not chat x\n",
+        "demo/test/nobody.mcfunction": "assert not chat hi @a\n",
+        "demo/test/bad.mcfunction": "assert chat hi @a[\n",
+    })
+    results = by_id(run(root))
+    assert results["demo:receivers"].message == 'Expected chat message matching to ann, received "to all"'
+    assert results["demo:receivers"].line == 9
+    assert results["demo:count"].message == "Did not expect chat message matching x, found 2"  # one per receiver
+    assert results["demo:nobody"].message == "No player was found"
+    assert results["demo:bad"].status == "failed" and "receivers: bad selector" in results["demo:bad"].message
 
 
 def test_failure_details_show_the_runtime_diagnostics(pack):
@@ -200,7 +222,8 @@ def test_macro_lines_and_unreadable_files_are_reported(pack):
 
 
 def test_chat_patterns_are_brigadier_strings(pack):
-    root = pack({"demo/test/esc.mcfunction": 'say a.b (c)\nassert chat "^\\\\[Server\\\\] a\\\\.b \\\\(c\\\\)$"\n',
+    root = pack({"demo/test/esc.mcfunction": '# @dummy\ntellraw @a "[Server] a.b (c)"\n'
+                                             'assert chat "^\\\\[Server\\\\] a\\\\.b \\\\(c\\\\)$"\n',
                  "demo/test/bad_escape.mcfunction": 'assert chat "a\\.b"\n'})
     results = by_id(run(root))
     assert results["demo:esc"].status == "passed", results["demo:esc"].message
