@@ -17,7 +17,8 @@ Public API
 - ``in_spawnable_bounds(pos)``: ``Level.isInSpawnableBounds`` (summon and tp refuse positions outside).
 - ``add_tag(entity, name)`` / ``remove_tag(entity, name)``: the ``tag`` command's per-entity step
   (False when nothing changed; an entity holds at most 1024 tags).
-- ``entity_nbt(entity)``: the compound ``data get entity`` shows and ``nbt=`` matches against.
+- ``entity_nbt(entity)``: the compound ``data get entity`` shows and ``nbt=`` matches against
+  (a vehicle's riders in ``Passengers``, as Entity.saveWithoutId writes them).
 - ``load_nbt(entity, compound)``: ``Entity.load`` (Pos clamped, Motion over 10 dropped, Rotation % 360,
   Tags and CustomName only when present, the common fields read with typed getters, display render
   fields as ``Display`` reads them, the rest kept as is). ``modify_entity(entity, change)``: the ``data`` entity
@@ -282,10 +283,23 @@ def entity_nbt(entity: Entity) -> Compound:
         nbt["CustomName"] = String(entity.custom_name)
     if entity.tags:
         nbt["Tags"] = List(String(t) for t in sorted(entity.tags))
+    riders = List(_passenger_nbt(p) for p in entity.passengers if p.alive and not p.is_player)
+    if riders:
+        nbt["Passengers"] = riders
     return nbt
 
 
-_MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id")
+def _passenger_nbt(entity: Entity) -> Compound:
+    """Entity.saveAsPassenger: ``id`` then saveWithoutId (riders of riders included). Players have
+    no encode id: they are left out of their vehicle's ``Passengers``."""
+    nbt = Compound(id=String(entity.type))
+    nbt.update(entity_nbt(entity))
+    return nbt
+
+
+# Written by entity_nbt from the entity's own fields; Entity.load does not read Passengers (riders
+# come only from summon's NBT and ride), so a data change on a vehicle keeps its riders.
+_MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id", "Passengers")
 # Saved by every entity, read back with typed getters (Entity.saveWithoutId / Entity.load).
 BASE_FIELDS = {"FallDistance": Float, "Fire": Short, "Air": Short, "OnGround": Byte,
                "Invulnerable": Byte, "PortalCooldown": Int}

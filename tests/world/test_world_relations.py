@@ -91,3 +91,31 @@ def test_owner_and_origin_follow_uuids(tmp_path, backend):
     ])})
     emu.call("t:main")
     assert [emu.score(h, "o") for h in ("#owner", "#origin", "#wild", "#dog_origin", "#server")] == [1, 2, None, None, None]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_vehicle_saves_its_riders_in_passengers(tmp_path, backend):
+    # Entity.saveWithoutId: a vehicle writes Passengers, each rider as saveAsPassenger does (id,
+    # then its own saved data and riders); a player has no encode id and is left out; Entity.load
+    # does not read Passengers, so merging data into a vehicle keeps its riders
+    emu = emulator(tmp_path, backend, {"t:main": CART + "\n"
+        "execute store result score #riders o run data get entity @e[tag=cart,limit=1] Passengers\n"
+        "execute store result score #top o if data entity @e[tag=cart,limit=1] "
+        "Passengers[{id:\"minecraft:pig\"}].Passengers[{id:\"minecraft:zombie\",Tags:[\"top\"]}]\n"
+        "execute store result score #match o if entity @e[nbt={Passengers:[{Tags:[\"second\"]}]}]\n"
+        "data merge entity @e[tag=cart,limit=1] {Passengers:[],Tags:[\"cart\",\"merged\"]}\n"
+        "execute store result score #after o run data get entity @e[tag=merged,limit=1] Passengers\n"
+        "execute store result score #none o run data get entity @e[tag=top,limit=1] Passengers\n"
+        "summon pig 0 0 0 {Tags:[\"mount\"]}\n"
+        "ride @p mount @e[tag=mount,limit=1]\n"
+        "execute store success score #player o run data get entity @e[tag=mount,limit=1] Passengers\n"
+        "execute as @p on vehicle run scoreboard players set #rides o 1",
+    })
+    emu.add_player("Steve", (0.0, 0.0, 0.0))
+    emu.call("t:main")
+    assert emu.score("#riders", "o") == 2  # the pig and the cow (the zombie rides the pig)
+    assert emu.score("#top", "o") == 1
+    assert emu.score("#match", "o") == 1
+    assert emu.score("#after", "o") == 2  # the merge's empty Passengers changed nothing
+    assert emu.score("#none", "o") == 0  # no riders: no Passengers (the get fails, storing 0)
+    assert emu.score("#rides", "o") == 1 and emu.score("#player", "o") == 0  # it rides, unsaved
