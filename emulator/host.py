@@ -402,6 +402,11 @@ def _players_enable(host: Host, cmd: ast.ScoreEnable, ctx: Context) -> int:
     return _world(server_commands.enable_command, host.state, names, cmd.objective)
 
 
+def _players_display(host: Host, cmd: ast.ScoreDisplay, ctx: Context) -> int:
+    return _world(server_commands.display_command, host.state, cmd, lambda holder: host.holders(holder, ctx),
+                  host.objective)
+
+
 def _data_get(host: Host, cmd: ast.DataGet, ctx: Context) -> int:
     root = host.storage(cmd.target, create=False)
     if cmd.path is None:
@@ -508,7 +513,7 @@ _HANDLERS = {
     ast.ObjectivesSetdisplay: _objectives_other,
     ast.ObjectivesList: _objectives_list,
     ast.ScoreList: _players_list,
-    ast.ScoreDisplay: lambda host, cmd, ctx: 0,
+    ast.ScoreDisplay: _players_display,
     ast.ScoreSet: _players_set,
     ast.ScoreReset: _players_reset,
     ast.ScoreGet: _players_get,

@@ -126,7 +126,10 @@ def players_list(env, cmd: ast.ScoreList, source: Source, where) -> int:
 
 
 def players_display(env, cmd: ast.ScoreDisplay, source: Source, where) -> int:
-    return 0
+    with world_failures():
+        return server_commands.display_command(
+            env.state, cmd, lambda holder: holder_names(holder, source, env.state.scoreboard),
+            lambda name: objective(env, name))
 
 
 def players_operation(env, cmd: ast.ScoreOperation, source: Source, where) -> int:

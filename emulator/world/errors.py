@@ -29,6 +29,7 @@ MESSAGES = {
     "commands.summon.failed.uuid": "Unable to summon entity due to duplicate UUIDs",
     "entity.not_summonable": "Can't summon entity of type {0}",
     "argument.entity.notfound.entity": "No entity was found",
+    "command.unknown.argument": "Incorrect argument for command",
     "permissions.requires.entity": "An entity is required to run this command here",
     "argument.entity.notfound.player": "No player was found",
     "argument.entity.toomany": "Only one entity is allowed, but the provided selector allows more than one",

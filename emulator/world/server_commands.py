@@ -4,15 +4,20 @@ failed command).
 
 Sources (decompiled 1.21): server/commands/TimeCommand.java, server/commands/RandomCommand.java
 (randomSample), server/commands/TriggerCommand.java (getScore), server/commands/ScoreboardCommand.java
-(enableTrigger), server/level/ServerLevel.tickTime (see :func:`advance_time`).
+(enableTrigger, setScoreDisplay, setScoreNumberFormat), server/level/ServerLevel.tickTime (see
+:func:`advance_time`).
 """
 from __future__ import annotations
+
+from typing import Callable
 
 from emulator.semantics import INT_MAX, INT_MIN, wrap32
 from emulator.state import WorldState
 from emulator.world.entities import Entity
 from emulator.world.errors import MESSAGES, CommandFailure
 from mcfunction_parser import ast
+from mcfunction_parser.arguments import score_holder
+from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.tags import normalise_id  # ResourceLocation.toString (the MD5 seed hashes it)
 
 DAY_TICKS = 24000
@@ -106,3 +111,33 @@ def enable_command(state: WorldState, names: list[str], objective: str) -> int:
     if unlocked == 0:
         raise CommandFailure("commands.scoreboard.players.enable.failed")
     return unlocked
+
+
+def display_command(state: WorldState, cmd: ast.ScoreDisplay, holders: Callable[[object], list[str]],
+                    objective: Callable[[str], object]) -> int:
+    """``scoreboard players display name|numberformat TARGETS OBJECTIVE ...``: each target's score
+    is fetched get-or-create (an unset one becomes 0, as for ``set``) before its display name or
+    number format changes, which the emulator does not keep; the result is the number of targets.
+    ``holders`` resolves the targets (getNamesWithDefaultWildcard), ``objective`` checks the name
+    (ObjectiveArgument.getObjective: any objective, read-only ones too); both fail the command."""
+    holder, name = display_arguments(cmd)
+    targets = holders(holder)  # the arguments are read in order: the targets, then the objective
+    objective(name)
+    for target in targets:
+        if state.scoreboard.get(target, name) is None:
+            state.scoreboard.set(target, name, 0)
+    return len(targets)
+
+
+def display_arguments(cmd: ast.ScoreDisplay) -> tuple[object, str]:
+    """The TARGETS (a score holder node) and OBJECTIVE of the text the parser kept after ``display``."""
+    kind, _, rest = cmd.text.partition(" ")
+    reader = Reader(rest, cmd.loc, (1, 21, 0))
+    try:
+        holder = score_holder(reader)
+    except ParseError:
+        raise CommandFailure("command.unknown.argument") from None
+    name = rest[reader.pos:].split(maxsplit=1)
+    if not name:
+        raise CommandFailure("command.unknown.argument")
+    return holder, name[0]

@@ -195,6 +195,18 @@ CASES = [
     ("store_after_condition_aborts_context", "execute if score #u o matches ..0 store result score @s o run "
      "scoreboard players set #ran o 1\nexecute unless score #u o matches ..0 store result score @s o run "
      "scoreboard players set #ran2 o 1", {("#ran", "o"): None, ("#ran2", "o"): None}, ...),
+    # ScoreboardCommand.setScoreDisplay / setScoreNumberFormat: each target's score is
+    # getOrCreatePlayerScore'd (an unset one becomes 0, a set one keeps its value); the result
+    # is the number of targets; `*` is every tracked holder; the objective is read with
+    # getObjective after the targets (unknown: the command fails, nothing created)
+    ("display_creates_the_score", "execute store result score #n o run scoreboard players display name #a o "
+     "{\"text\":\"A\"}\nscoreboard players display numberformat #b o blank\nscoreboard players set #c o 4\n"
+     "scoreboard players display name #c o\nscoreboard players display numberformat #d o fixed \"x\"",
+     {("#a", "o"): 0, ("#b", "o"): 0, ("#c", "o"): 4, ("#d", "o"): 0, ("#n", "o"): 1}, ...),
+    ("display_wildcard", "scoreboard players set #a o 1\nscoreboard players set #b o 2\n"
+     "execute store result score #w o run scoreboard players display numberformat * o", {("#w", "o"): 2}, ...),
+    ("display_unknown_objective", "execute store success score #s o run scoreboard players display name #a nope",
+     {("#s", "o"): 0, ("#a", "o"): None}, ...),
 ]
 HELPERS = {
     "t:plain": "scoreboard players add #plain o 1",
