@@ -199,7 +199,7 @@ class TestSource:
                     made += host.stage(stage, ctx)
                 except HostFailure as failure:
                     if failure.report:
-                        raise _Verdict(FAILED, f"execute ... run: {failure.message} before a test command",
+                        raise _Verdict(FAILED, f"{failure.message} (in the execute prefix of a test command)",
                                        stage.loc.line) from None
             contexts = made
         return contexts
@@ -290,6 +290,7 @@ def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeou
 
 
 def _countdown(ticks: int):
+    """``await delay``'s poll (PackTestExecutor.await): true at the ``ticks``-th try."""
     left = [ticks]
 
     def poll() -> bool:
