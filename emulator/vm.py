@@ -21,6 +21,12 @@ the fork loop flag) are saved in the frame and restored on return.
 A call with array arguments costs more than a whole scoreboard command here, and even an untaken
 call in a branch slows it: the scoreboard ops resolve names and ``@s`` themselves and read a
 selector's holders from OP_SELHOLDERS, emitted just before them.
+The same holds for an ``inline="always"`` helper taking an array when the inlined body branches
+(numba then keeps a reference count increment and decrement per use: the charge preamble
+``quota -= 1; counts[pc] += 1`` as such a helper halved the loop's speed), so the charge is
+written out in each op; the shared helpers take scalars or run straight-line code. The scoreboard
+ops take a lean path for one target and one source (a name or ``@s``), and the dispatch chain
+tests the hottest opcodes first (operations, set/add/remove, a chain's CMD/IF*/ENDCMD, calls).
 
 Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
 table). When a stage makes several (Python makes the contexts: a host stage, ``as SEL``, ``if
@@ -173,6 +179,53 @@ def _wrap(x):
 @njit(cache=True, inline="always")
 def _overflowed(x):
     return x < -2147483648 or x > 2147483647
+
+
+@njit(cache=True, inline="always")
+def _operate(k, a, b):
+    """``a OP b`` for OPK_* ``k`` (exact, in int64; the caller wraps). Division by zero is the
+    caller's check; for a swap this is the target's new value (the caller writes the source)."""
+    if k == OPK_ADD:
+        return a + b
+    if k == OPK_SUB:
+        return a - b
+    if k == OPK_MUL:
+        return a * b
+    if k == OPK_DIV:
+        return a // b
+    if k == OPK_MOD:
+        return a % b
+    if k == OPK_MIN:
+        return a if a < b else b
+    if k == OPK_MAX:
+        return a if a > b else b
+    return b  # assign, swap
+
+
+@njit(cache=True, inline="always")
+def _set_score(op, values, present, h, o, d):
+    """`scoreboard players set|add|remove` of ``d`` on one score (an unset score counts as 0):
+    (the old value, the exact new one); the wrapped one is stored."""
+    old = np.int64(0)
+    if op == OP_SET:
+        exact = d
+    else:
+        old = np.int64(values[h, o]) if present[h, o] else np.int64(0)
+        exact = old + d if op == OP_ADD else old - d
+    values[h, o] = _wrap(exact)
+    present[h, o] = 1
+    return old, exact
+
+
+@njit(cache=True, inline="always")
+def _report(ovf, novf, pc, kind, a, b, exact):
+    """The sanitizer's row for an operation at ``pc`` whose exact result left int32; the new row count."""
+    ovf[novf, 0] = pc
+    ovf[novf, 1] = kind
+    ovf[novf, 2] = a
+    ovf[novf, 3] = b
+    ovf[novf, 4] = exact
+    return novf + 1
 
 
 @njit(cache=True)
@@ -330,15 +383,58 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             h = code[pc, 1]
             if h == HOLDER_SELF:
                 h = ctx_holder[ctx]
+            h2 = code[pc, 3]
+            if h2 == HOLDER_SELF:
+                h2 = ctx_holder[ctx]
+            k = op - OP_OPER_BASE
+            if h >= 0 and h2 >= 0:  # one target, one source (names or @s): the common case, kept lean
+                if sanitize and novf >= ovf.shape[0]:
+                    status = ST_FLUSH
+                    break
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+                has = 1
+                ok = 0
+                val = 0
+                pc += 1
+                if alive_obj[o] == 0 or alive_obj[o2] == 0:
+                    err = ERR_UNKNOWN_OBJECTIVE
+                    errarg = o if alive_obj[o] == 0 else o2
+                    status = ST_ERROR
+                    break
+                if present[h, o] == 0:  # get-or-create: the target first, then the source
+                    values[h, o] = 0
+                    present[h, o] = 1
+                if present[h2, o2] == 0:
+                    values[h2, o2] = 0
+                    present[h2, o2] = 1
+                a = np.int64(values[h, o])
+                b = np.int64(values[h2, o2])
+                if b == 0 and (k == OPK_DIV or k == OPK_MOD):
+                    err = ERR_DIV_ZERO
+                    errarg = 0
+                    status = ST_ERROR
+                    break
+                r = _operate(k, a, b)
+                if k == OPK_SWAP:
+                    values[h2, o2] = a
+                nv = _wrap(r)
+                values[h, o] = nv
+                ok = 1
+                val = nv
+                if sanitize and _overflowed(r):
+                    novf = _report(ovf, novf, ipc, k, a, b, r)
+                    if novf >= ovf.shape[0]:
+                        status = ST_FLUSH
+                        break
+                continue
             if h >= 0:
                 selbuf[0] = h
                 nt = 1
             else:
                 nt = regs[R_NSEL] if h == HOLDER_SELBUF else 0
             half = selbuf.shape[0] >> 1
-            h2 = code[pc, 3]
-            if h2 == HOLDER_SELF:
-                h2 = ctx_holder[ctx]
             if h2 >= 0:
                 selbuf[half] = h2
                 ns = 1
@@ -362,7 +458,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 errarg = o if alive_obj[o] == 0 else o2
                 status = ST_ERROR
                 break
-            k = op - OP_OPER_BASE
             total = np.int64(0)
             failed = False
             for i in range(nt):
@@ -377,34 +472,15 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                         present[h2, o2] = 1
                     a = np.int64(values[h, o])
                     b = np.int64(values[h2, o2])
-                    if k == OPK_ADD:
-                        r = a + b
-                    elif k == OPK_SUB:
-                        r = a - b
-                    elif k == OPK_MUL:
-                        r = a * b
-                    elif k == OPK_ASSIGN:
-                        r = b
-                    elif k == OPK_DIV or k == OPK_MOD:
-                        if b == 0:
-                            failed = True
-                            break
-                        r = a // b if k == OPK_DIV else a % b
-                    elif k == OPK_MIN:
-                        r = a if a < b else b
-                    elif k == OPK_MAX:
-                        r = a if a > b else b
-                    else:  # swap
+                    if b == 0 and (k == OPK_DIV or k == OPK_MOD):
+                        failed = True
+                        break
+                    r = _operate(k, a, b)
+                    if k == OPK_SWAP:
                         values[h2, o2] = a
-                        r = b
                     values[h, o] = _wrap(r)
                     if sanitize and _overflowed(r):
-                        ovf[novf, 0] = ipc
-                        ovf[novf, 1] = k
-                        ovf[novf, 2] = a
-                        ovf[novf, 3] = b
-                        ovf[novf, 4] = r
-                        novf += 1
+                        novf = _report(ovf, novf, ipc, k, a, b, r)
                 if failed:
                     break
                 total += values[h, o]
@@ -429,7 +505,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             if h == HOLDER_SELF:
                 h = ctx_holder[ctx]
             if h >= 0:  # a name, or @s run by an entity
-                selbuf[0] = h
                 n = 1
             else:
                 n = regs[R_NSEL] if h == HOLDER_SELBUF else 0
@@ -452,37 +527,227 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_ERROR
                 break
             d = np.int64(code[ipc, 3])
-            if op == OP_SET and h >= 0:  # one named holder (or @s): the common case, kept lean
-                values[h, o] = d
-                present[h, o] = 1
+            kind = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
+            if h >= 0:  # one holder: the common case, kept lean
+                old, exact = _set_score(op, values, present, h, o, d)
                 ok = 1
-                val = d
+                val = _wrap(exact)
+                if sanitize and _overflowed(exact):
+                    novf = _report(ovf, novf, ipc, kind, old, d, exact)
+                    if novf >= ovf.shape[0]:
+                        status = ST_FLUSH
+                        break
                 continue
             total = np.int64(0)
             for i in range(n):
-                h = selbuf[i]
-                old = np.int64(0)
-                if op == OP_SET:
-                    exact = d
-                else:
-                    old = np.int64(values[h, o]) if present[h, o] else np.int64(0)
-                    exact = old + d if op == OP_ADD else old - d
-                nv = _wrap(exact)
-                values[h, o] = nv
-                present[h, o] = 1
-                total += nv
+                old, exact = _set_score(op, values, present, selbuf[i], o, d)
+                total += _wrap(exact)
                 if sanitize and _overflowed(exact):
-                    ovf[novf, 0] = ipc
-                    ovf[novf, 1] = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
-                    ovf[novf, 2] = old
-                    ovf[novf, 3] = d
-                    ovf[novf, 4] = exact
-                    novf += 1
+                    novf = _report(ovf, novf, ipc, kind, old, d, exact)
             ok = 1
             val = _wrap(d * n) if op == OP_SET else _wrap(total)
             if sanitize and novf >= ovf.shape[0]:
                 status = ST_FLUSH
                 break
+        elif op == OP_CMD:
+            if quota <= 0:
+                status = ST_CUT
+                break
+            alive = 1
+            has = 0
+            abort = code[pc, 1]
+            pc += 1
+        elif op == OP_IFSCORE or op == OP_IFMATCH:
+            final = code[pc, 7]
+            if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            if alive == 0:
+                pc += 1
+                continue
+            if final:
+                if quota <= 0:
+                    status = ST_CUT
+                    break
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
+            o = code[pc, 2] if op == OP_IFMATCH else code[pc, 3]
+            bad = alive_obj[o] == 0
+            if op == OP_IFSCORE and alive_obj[code[pc, 5]] == 0:
+                bad = True
+                o = code[pc, 5]
+            if bad:
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                has = 1
+                ok = 0
+                val = 0
+                # a condition is a fork: its error drops the context, later stages still run
+                pc += 1
+                alive = 0 if not final else alive
+                status = ST_ERROR
+                break
+            if h == HOLDER_SELF:
+                h = ctx_holder[ctx]
+            if op == OP_IFSCORE and code[pc, 4] == HOLDER_SELF and ctx_holder[ctx] < 0:
+                h = -1
+            if h < 0:  # @s run by the server: a final test fails, a stage (a fork) drops the context
+                if final:
+                    has = 1
+                    ok = 0
+                    val = 0
+                else:
+                    alive = 0
+                pc += 1
+                continue
+            passed = False
+            if present[h, o]:
+                a = values[h, o]
+                if op == OP_IFMATCH:
+                    passed = code[pc, 3] <= a <= code[pc, 4]
+                else:
+                    h2 = code[pc, 4]
+                    if h2 == HOLDER_SELF:
+                        h2 = ctx_holder[ctx]
+                    o2 = code[pc, 5]
+                    if present[h2, o2]:
+                        b = values[h2, o2]
+                        c = code[pc, 1]
+                        if c == CMP_LT:
+                            passed = a < b
+                        elif c == CMP_LE:
+                            passed = a <= b
+                        elif c == CMP_EQ:
+                            passed = a == b
+                        elif c == CMP_GE:
+                            passed = a >= b
+                        else:
+                            passed = a > b
+            if code[pc, 6]:
+                passed = not passed
+            if final:
+                has = 1
+                ok = 1 if passed else 0
+                val = 1 if passed else 0
+            elif not passed:
+                alive = 0
+            elif forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                alive = 0
+                pc = abort
+                status = ST_ERROR
+                break
+            pc += 1
+        elif op == OP_ENDCMD:
+            if loop:  # a stage forked: the next context through the rest of the chain
+                nf = regs[R_NFORK]
+                while nf > 0 and fstack[nf - 1, 0] > depth:
+                    nf -= 1
+                regs[R_NFORK] = nf
+                alive = 1
+                if nf > 0 and fstack[nf - 1, 0] == depth:
+                    regs[R_NFORK] = nf - 1
+                    pc = fstack[nf - 1, 1]
+                    ctx = fstack[nf - 1, 2]
+                    loop = LOOP_REENTERED
+                    continue
+                nc = regs[R_NCOLL]
+                while nc > 0 and coll[nc - 1, 0] > depth:
+                    nc -= 1
+                head = frames[depth - 1, F_CHEAD]
+                if head < nc and coll[head, 0] == depth:  # the next kept context through the final command
+                    frames[depth - 1, F_CHEAD] = head + 1
+                    regs[R_NCOLL] = nc
+                    ctx = coll[head, 1]
+                    pc = coll[head, 2]
+                    loop = LOOP_FINAL
+                    continue
+                while nc > 0 and coll[nc - 1, 0] >= depth:  # every context done: the command ends
+                    nc -= 1
+                regs[R_NCOLL] = nc
+                loop = LOOP_NONE
+            alive = 1
+            ctx = frames[depth - 1, F_CTX]  # the next command runs in the function's own context again
+            pc += 1
+        elif op == OP_CALL or op == OP_CALLREG:
+            fn = code[pc, 1] if op == OP_CALL else regs[R_CALLFN]
+            if alive == 0 or fn < 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            if depth >= frames.shape[0]:
+                status = ST_GROW
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            frames[depth, F_RETPC] = pc + 1
+            frames[depth, F_FN] = fn
+            frames[depth, F_ALIVE] = alive
+            frames[depth, F_ACC_ANY] = acc_any
+            frames[depth, F_ACC_SUM] = acc_sum
+            frames[depth, F_ABORT] = abort
+            frames[depth, F_CTX] = ctx
+            frames[depth, F_CALLPC] = pc
+            frames[depth, F_QUOTA] = quota
+            frames[depth, F_LOOP] = loop
+            active[fn] += 1
+            depth += 1
+            has = 0
+            loop = 0
+            pc = func_start[fn]
+        elif op >= OP_FEND and op <= OP_RETPEND:
+            if op == OP_FEND or op == OP_RETNONE:
+                has = 0
+            elif op == OP_RETV or op == OP_RETFAIL:
+                if alive == 0:
+                    pc += 1
+                    continue
+                if code[pc, 2] and quota <= 0:  # a `return` line is an entry of its own
+                    status = ST_CUT
+                    break
+                has = 1
+                ok = 1 if op == OP_RETV else 0
+                val = code[pc, 1] if op == OP_RETV else 0
+                if loop:  # one context of a forked chain: the others return too
+                    nret += 1
+                    pc += 1
+                    continue
+            elif op == OP_RETRES:
+                if not (alive and has):  # FallthroughTask, an entry: returns failure
+                    if quota <= 0:
+                        status = ST_CUT
+                        break
+                    has = 1
+                    ok = 0
+                    val = 0
+                elif not ok:
+                    val = 0
+                # else `has` keeps the callee's count of returns: each reaches the caller
+            elif nret == 0:  # OP_RETPEND: no context returned
+                pc += 1
+                continue
+            if nret:  # the caller's callback hears every context's return
+                has = nret
+                nret = 0
+            depth -= 1
+            fn = frames[depth, F_FN]
+            active[fn] -= 1
+            if active[fn] == 0:
+                totals[fn] += frames[depth, F_QUOTA] - quota
+            pc = frames[depth, F_RETPC]
+            alive = frames[depth, F_ALIVE]
+            acc_any = frames[depth, F_ACC_ANY]
+            acc_sum = frames[depth, F_ACC_SUM]
+            abort = frames[depth, F_ABORT]
+            ctx = frames[depth, F_CTX]
+            loop = frames[depth, F_LOOP]
         elif op == OP_GET or op == OP_RESET or op == OP_RESETALL or op == OP_ENABLE:
             if alive == 0:
                 pc += 1
@@ -680,99 +945,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 edirty[e] |= DIRTY_POS
                 regs[R_EDIRTY] = 1
             pc += 1
-        elif op == OP_CMD:
-            if quota <= 0:
-                status = ST_CUT
-                break
-            alive = 1
-            has = 0
-            abort = code[pc, 1]
-            pc += 1
-        elif op == OP_IFSCORE or op == OP_IFMATCH:
-            final = code[pc, 7]
-            if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
-                quota -= 1
-                if counting:
-                    counts[pc] += 1
-            if alive == 0:
-                pc += 1
-                continue
-            if final:
-                if quota <= 0:
-                    status = ST_CUT
-                    break
-                quota -= 1
-                if counting:
-                    counts[pc] += 1
-            h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
-            o = code[pc, 2] if op == OP_IFMATCH else code[pc, 3]
-            bad = alive_obj[o] == 0
-            if op == OP_IFSCORE and alive_obj[code[pc, 5]] == 0:
-                bad = True
-                o = code[pc, 5]
-            if bad:
-                err = ERR_UNKNOWN_OBJECTIVE
-                errarg = o
-                has = 1
-                ok = 0
-                val = 0
-                # a condition is a fork: its error drops the context, later stages still run
-                pc += 1
-                alive = 0 if not final else alive
-                status = ST_ERROR
-                break
-            if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
-            if op == OP_IFSCORE and code[pc, 4] == HOLDER_SELF and ctx_holder[ctx] < 0:
-                h = -1
-            if h < 0:  # @s run by the server: a final test fails, a stage (a fork) drops the context
-                if final:
-                    has = 1
-                    ok = 0
-                    val = 0
-                else:
-                    alive = 0
-                pc += 1
-                continue
-            passed = False
-            if present[h, o]:
-                a = values[h, o]
-                if op == OP_IFMATCH:
-                    passed = code[pc, 3] <= a <= code[pc, 4]
-                else:
-                    h2 = code[pc, 4]
-                    if h2 == HOLDER_SELF:
-                        h2 = ctx_holder[ctx]
-                    o2 = code[pc, 5]
-                    if present[h2, o2]:
-                        b = values[h2, o2]
-                        c = code[pc, 1]
-                        if c == CMP_LT:
-                            passed = a < b
-                        elif c == CMP_LE:
-                            passed = a <= b
-                        elif c == CMP_EQ:
-                            passed = a == b
-                        elif c == CMP_GE:
-                            passed = a >= b
-                        else:
-                            passed = a > b
-            if code[pc, 6]:
-                passed = not passed
-            if final:
-                has = 1
-                ok = 1 if passed else 0
-                val = 1 if passed else 0
-            elif not passed:
-                alive = 0
-            elif forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
-                err = ERR_FORK_LIMIT
-                errarg = forklimit
-                alive = 0
-                pc = abort
-                status = ST_ERROR
-                break
-            pc += 1
         elif op == OP_STORE:
             if alive and has:
                 h = code[pc, 2]
@@ -818,112 +990,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc = code[pc, 1]  # the chain's ENDCMD: the next context
                 continue
             pc += 1
-        elif op == OP_ENDCMD:
-            if loop:  # a stage forked: the next context through the rest of the chain
-                nf = regs[R_NFORK]
-                while nf > 0 and fstack[nf - 1, 0] > depth:
-                    nf -= 1
-                regs[R_NFORK] = nf
-                alive = 1
-                if nf > 0 and fstack[nf - 1, 0] == depth:
-                    regs[R_NFORK] = nf - 1
-                    pc = fstack[nf - 1, 1]
-                    ctx = fstack[nf - 1, 2]
-                    loop = LOOP_REENTERED
-                    continue
-                nc = regs[R_NCOLL]
-                while nc > 0 and coll[nc - 1, 0] > depth:
-                    nc -= 1
-                head = frames[depth - 1, F_CHEAD]
-                if head < nc and coll[head, 0] == depth:  # the next kept context through the final command
-                    frames[depth - 1, F_CHEAD] = head + 1
-                    regs[R_NCOLL] = nc
-                    ctx = coll[head, 1]
-                    pc = coll[head, 2]
-                    loop = LOOP_FINAL
-                    continue
-                while nc > 0 and coll[nc - 1, 0] >= depth:  # every context done: the command ends
-                    nc -= 1
-                regs[R_NCOLL] = nc
-                loop = LOOP_NONE
-            alive = 1
-            ctx = frames[depth - 1, F_CTX]  # the next command runs in the function's own context again
-            pc += 1
-        elif op == OP_CALL or op == OP_CALLREG:
-            fn = code[pc, 1] if op == OP_CALL else regs[R_CALLFN]
-            if alive == 0 or fn < 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            if depth >= frames.shape[0]:
-                status = ST_GROW
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            frames[depth, F_RETPC] = pc + 1
-            frames[depth, F_FN] = fn
-            frames[depth, F_ALIVE] = alive
-            frames[depth, F_ACC_ANY] = acc_any
-            frames[depth, F_ACC_SUM] = acc_sum
-            frames[depth, F_ABORT] = abort
-            frames[depth, F_CTX] = ctx
-            frames[depth, F_CALLPC] = pc
-            frames[depth, F_QUOTA] = quota
-            frames[depth, F_LOOP] = loop
-            active[fn] += 1
-            depth += 1
-            has = 0
-            loop = 0
-            pc = func_start[fn]
-        elif op >= OP_FEND and op <= OP_RETPEND:
-            if op == OP_FEND or op == OP_RETNONE:
-                has = 0
-            elif op == OP_RETV or op == OP_RETFAIL:
-                if alive == 0:
-                    pc += 1
-                    continue
-                if code[pc, 2] and quota <= 0:  # a `return` line is an entry of its own
-                    status = ST_CUT
-                    break
-                has = 1
-                ok = 1 if op == OP_RETV else 0
-                val = code[pc, 1] if op == OP_RETV else 0
-                if loop:  # one context of a forked chain: the others return too
-                    nret += 1
-                    pc += 1
-                    continue
-            elif op == OP_RETRES:
-                if not (alive and has):  # FallthroughTask, an entry: returns failure
-                    if quota <= 0:
-                        status = ST_CUT
-                        break
-                    has = 1
-                    ok = 0
-                    val = 0
-                elif not ok:
-                    val = 0
-                # else `has` keeps the callee's count of returns: each reaches the caller
-            elif nret == 0:  # OP_RETPEND: no context returned
-                pc += 1
-                continue
-            if nret:  # the caller's callback hears every context's return
-                has = nret
-                nret = 0
-            depth -= 1
-            fn = frames[depth, F_FN]
-            active[fn] -= 1
-            if active[fn] == 0:
-                totals[fn] += frames[depth, F_QUOTA] - quota
-            pc = frames[depth, F_RETPC]
-            alive = frames[depth, F_ALIVE]
-            acc_any = frames[depth, F_ACC_ANY]
-            acc_sum = frames[depth, F_ACC_SUM]
-            abort = frames[depth, F_ABORT]
-            ctx = frames[depth, F_CTX]
-            loop = frames[depth, F_LOOP]
         elif op == OP_TAGBEGIN:
             acc_any = 0
             acc_sum = 0
