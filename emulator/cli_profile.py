@@ -237,16 +237,18 @@ HOST_KINDS = {"host": "command", "hoststage": "stage", "hoststore": "store"}
 
 def _vm_host(backend, sources: dict) -> list[dict]:
     """The host ops Python ran after the load (final commands, execute stages, stores) with how
-    often each ran.
-    Read from the backend's record of the ops it served, not from the VM's charged counts: a
-    store is never charged, so the counts would hide a host-run store."""
+    often each ran, macro instances of a line counted together. Read from the backend's record of
+    the ops it served, not from the VM's charged counts: a store is never charged, so the counts
+    would hide a host-run store."""
+    from emulator.profile_data import base_function
+
     code = backend.program.rows
     names = _vm_ops()
-    rows = []
-    for pc, runs in backend.host_runs.items():
+    runs: Counter = Counter()
+    for pc, count in backend.host_runs.items():
         host_op = backend.program.host_ops[code[pc][1]]
         loc = host_op.node.loc
-        rows.append({"function": host_op.function, "path": loc.path, "line": loc.line,
-                     "op": HOST_KINDS[names[code[pc][0]]], "command": _source(sources, loc.path, loc.line),
-                     "count": runs})
+        runs[(base_function(host_op.function), loc.path, loc.line, HOST_KINDS[names[code[pc][0]]])] += count
+    rows = [{"function": function, "path": path, "line": line, "op": op, "command": _source(sources, path, line),
+             "count": count} for (function, path, line, op), count in runs.items()]
     return sorted(rows, key=lambda r: (-r["count"], r["path"], r["line"]))

@@ -123,6 +123,14 @@ def test_a_tick_without_host_ops_lists_none(pack):
                                                                    (3, "command", 1)]
 
 
+def test_host_ops_of_macro_instances_count_on_their_line(pack):
+    # each instance of a macro line is a function of its own in the VM: the list counts them together
+    root = pack({"demo/function/tick.mcfunction": 'function demo:mark {t:"a"}\nfunction demo:mark {t:"b"}\n',
+                 "demo/function/mark.mcfunction": '$summon marker ~ ~ ~ {Tags:["$(t)"]}\n'}, tick=["demo:tick"])
+    host = report(root, "--ticks", 2)["host"]
+    assert [(h["function"], h["line"], h["op"], h["count"]) for h in host] == [("demo:mark", 1, "command", 4)]
+
+
 def test_collapsed_stacks_add_up_to_the_command_count(demo):
     result = profile(demo, "--ticks", 3, "--format", "collapsed")
     assert result.exit_code == 0, result.output
