@@ -185,14 +185,18 @@ class TestSource:
     def call(self, function: str, context: Context | None = None) -> int | None:
         return self.emu.runtime.call(function, context or self.context()).result
 
-    def contexts(self, stages: tuple) -> list[Context]:
-        """The contexts an execute prefix's ``stages`` make from the test source, each stage over
-        all contexts before the next (ContextChain.executeAll); a stage that fails drops its
-        context. One the emulator cannot evaluate here fails the test saying so."""
+    def contexts(self, step: PerContext) -> list[Context]:
+        """The contexts an execute prefix makes from the test source, each stage over all
+        contexts before the next (ContextChain.executeAll): a condition through its generated
+        function, the other stages through the host; a stage that fails drops its context. One
+        the emulator cannot evaluate here fails the test saying so."""
         emu = self.emu
         host = Host(emu.state, emu.packs.functions, emu.packs.tags, lambda message, severity: None)
         contexts = [self.context()]
-        for stage in stages:
+        for stage, condition in zip(step.stages, step.conditions):
+            if condition is not None:
+                contexts = [ctx for ctx in contexts if self.call(condition, ctx) == 1]
+                continue
             made = []
             for ctx in contexts:
                 try:
@@ -269,7 +273,7 @@ def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeou
     are tried one at a time, the first after each tick, until none is left."""
     inner = step.step
     polls = []  # (context, poll)
-    for ctx in source.contexts(step.stages):
+    for ctx in source.contexts(step):
         if isinstance(inner, Dummy):
             _act(source, inner, ctx)
         elif isinstance(inner, Delay):

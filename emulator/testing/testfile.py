@@ -21,7 +21,7 @@ from pathlib import Path
 from emulator import world_entities
 from emulator.testing.directives import Directives, apply, directive_match
 from emulator.testing.dummies import DummyCommand, parse as parse_dummy
-from mcfunction_parser.ast import Command, Function, MacroLine
+from mcfunction_parser.ast import Command, Condition, Function, MacroLine
 from mcfunction_parser.diagnostics import Diagnostic, Loc
 from mcfunction_parser.pack_text import split_lines
 from mcfunction_parser.parse import parse_command, parse_function
@@ -96,9 +96,12 @@ class Dummy(Step):
 class PerContext(Step):
     """``execute PREFIX run await|dummy ...``: ``step`` (without a gate) runs once in each context
     the prefix's ``stages`` make from the test source, in order (PackTestExecutor: each await
-    registers its own poll, polled one after the other)."""
+    registers its own poll, polled one after the other). ``conditions`` has, for each stage that
+    is an ``if``/``unless`` test, a generated ``execute <test> run return 1`` that the runner
+    calls per context (None for the other stages), so a test means what ``execute if`` means."""
 
     stages: tuple
+    conditions: tuple
     step: Step
 
 
@@ -219,7 +222,25 @@ def _test_step(b: _Builder, number: int, line: str) -> Step | None:
     step = _plain_step(b, number, line, text, col, gate, prefix_text)
     if stages is None or step is None or getattr(step, "per_context", False):
         return step
-    return PerContext(step.loc, None, stages, step)
+    conditions = _stage_conditions(b, stages, prefix_text, number, col - prefix.end())
+    return None if conditions is None else PerContext(step.loc, None, stages, conditions, step)
+
+
+def _stage_conditions(b: _Builder, stages: tuple, prefix: str, number: int, col: int) -> tuple | None:
+    """Per stage of an execute prefix, a generated function testing it when it is a condition."""
+    ends = [s.loc.col - 1 for s in stages[1:]] + [len(prefix)]
+    out = []
+    for stage, end in zip(stages, ends):
+        if not isinstance(stage, Condition):
+            out.append(None)
+            continue
+        head = "execute "
+        start = stage.loc.col - 1
+        cmd = b.command(head + prefix[start:end].strip() + " run return 1", number, len(head) + 1, col + start)
+        if cmd is None:
+            return None
+        out.append(b.function([cmd]))
+    return tuple(out)
 
 
 def _plain_step(b: _Builder, number: int, line: str, text: str, col: int, gate, prefix_text) -> Step | None:

@@ -345,11 +345,16 @@ def test_dummy_after_execute_runs_in_each_context(pack):
         "demo/test/spawn.mcfunction": "execute positioned 5 1 7 run dummy Bob spawn\n"
                                       "assert entity @a[name=Bob,x=5.5,y=1,z=7.5,distance=..0.001]\n",
         "demo/test/none.mcfunction": "execute if entity @e[type=marker] run dummy Bob spawn\nassert not entity @a\n",
-        "demo/test/unsupported.mcfunction": "execute if function demo:f run dummy Bob spawn\n",
-        "demo/function/f.mcfunction": "return 1\n",
+        # conditions run as the emulator's `execute if` (here `if function`), per context
+        "demo/test/function.mcfunction": "execute if function demo:yes positioned 1 1 1 unless function demo:no "
+                                         "run dummy Bob spawn\nexecute if function demo:no run dummy Ann spawn\n"
+                                         "assert entity @a[name=Bob,x=1.5,y=1,z=1.5,distance=..0.001]\n"
+                                         "assert not entity @a[name=Ann]\n",
+        "demo/function/yes.mcfunction": "return 1\n",
+        "demo/function/no.mcfunction": "return 0\n",
+        "demo/test/bad.mcfunction": "execute if function demo:yes if nonsense run dummy Bob spawn\n",
     })
     results = by_id(run(root))
-    assert results["demo:spawn"].status == "passed", results["demo:spawn"].message
-    assert results["demo:none"].status == "passed", results["demo:none"].message
-    assert results["demo:unsupported"].status == "failed"
-    assert "not supported" in results["demo:unsupported"].message and results["demo:unsupported"].line == 1
+    for test in ("spawn", "none", "function"):
+        assert results[f"demo:{test}"].status == "passed", (test, results[f"demo:{test}"].message)
+    assert results["demo:bad"].status == "failed" and results["demo:bad"].line == 1
