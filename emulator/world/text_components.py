@@ -71,12 +71,20 @@ def say_text(message: str, select: Callable[[ast.Selector], list[Entity]]) -> st
 
 
 def tellraw_command(state: WorldState, cmd: ast.Tellraw, receivers: list[Entity], select: Select) -> int:
-    """Log the line for ``receivers`` (what the targets found); fails when none is a player."""
+    """Log the line for ``receivers`` (what the targets found); fails when none is a player.
+    TellRawCommand resolves the text for each player in turn (a ``*`` score is the receiver's):
+    one log entry per distinct text, with the players who got it; when resolving fails for a
+    player, the players before it have their message."""
     players = [e for e in receivers if e.is_player]
     if not players:
         raise CommandFailure("argument.entity.notfound.player")
-    state.emit("tellraw", resolved_text(cmd.text, state, select, players[0]), cmd.loc,
-               tuple(p.uuid_string for p in players))
+    sent: dict[str, list[str]] = {}  # text -> receivers, in the order first sent
+    try:
+        for player in players:
+            sent.setdefault(resolved_text(cmd.text, state, select, player), []).append(player.uuid_string)
+    finally:
+        for text, uuids in sent.items():
+            state.emit("tellraw", text, cmd.loc, tuple(uuids))
     return len(players)
 
 

@@ -69,3 +69,17 @@ def test_say_replaces_its_selectors_by_names(tmp_path, backend):
                                        "say found @e[type=!player] and @e[tag=none] at @s"})
     emu.call("t:main")
     assert [e.text for e in emu.log] == ["[Server] found Pig, Daisy and  at "]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_each_player_gets_the_text_resolved_for_them(tmp_path, backend):
+    # TellRawCommand: sendSystemMessage(ComponentUtils.updateForEntity(source, text, player)) per
+    # player; a `*` score is the receiver's: one log entry per distinct text, with its receivers
+    emu = emulator(tmp_path, backend, {"t:main": "scoreboard players set Alex o 11\nscoreboard players set Steve o 4\n"
+                                       "scoreboard players set Sam o 4\n"
+                                       'tellraw @a [{"text":"you have "},{"score":{"name":"*","objective":"o"}}]\n'
+                                       'tellraw @a[name=!Sam] "plain"'})
+    uuid = {emu.add_player(name): name for name in ("Alex", "Steve", "Sam")}
+    emu.call("t:main")
+    assert [(plain(e.text), [uuid[r] for r in e.receivers]) for e in emu.log] == [
+        ("you have 11", ["Alex"]), ("you have 4", ["Steve", "Sam"]), ("plain", ["Alex", "Steve"])]
