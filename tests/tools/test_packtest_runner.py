@@ -1,5 +1,4 @@
 """PackTest-format test files run by emulator.testing (format: misode/packtest README)."""
-import re
 
 import pytest
 
