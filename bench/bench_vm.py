@@ -9,11 +9,17 @@
 - an entity-heavy loop: 16 markers, ``execute as @e[tag=x,scores={s=0..2}] run scoreboard players
   add @s s 1`` and a selector ``set`` per iteration, on the VM (selectors, forks) and on the reference.
 
-Usage: python bench/bench_vm.py [--quick]
+Usage: python bench/bench_vm.py [--quick] [--baseline DIR]
+
+``--baseline DIR`` (an export of an older commit, e.g. ``git archive REV | tar -x -C DIR``) only
+compares the scoreboard loop (counters on): this tree and DIR's emulator, each in a fresh process,
+alternately, reporting the medians (the machine is shared, so single runs are noisy).
 """
 from __future__ import annotations
 
 import json
+import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -106,8 +112,45 @@ def first_call_overhead(pack: Path) -> tuple[float, float]:
     return first, second
 
 
+def loop_rate_in(tree: Path, iterations: int) -> float:
+    """Commands per second of the scoreboard loop (counters on), run by ``tree``'s emulator in a new
+    process (this file's pack and timing; the tree comes first on the import path)."""
+    script = textwrap.dedent(f"""
+        import importlib.util, tempfile
+        from pathlib import Path
+        spec = importlib.util.spec_from_file_location("bench_vm", {__file__!r})
+        bench = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(bench)
+        with tempfile.TemporaryDirectory() as tmp:
+            seconds, commands = bench.timed_loop(bench.write_pack(Path(tmp) / "pack"), "numba", {iterations}, repeats=5)
+        print(commands / seconds)
+    """)
+    env = dict(os.environ, PYTHONPATH=str(tree))
+    return float(subprocess.run([sys.executable, "-c", script], check=True, capture_output=True, text=True,
+                                env=env).stdout)
+
+
+def compare_with(baseline: Path, rounds: int, iterations: int) -> None:
+    """This tree's scoreboard loop against ``baseline``'s, alternating, medians of ``rounds`` runs each."""
+    here = Path(__file__).resolve().parents[1]
+    rates: dict[Path, list[float]] = {here: [], baseline: []}
+    for _ in range(rounds):
+        for tree in (baseline, here):
+            rates[tree].append(loop_rate_in(tree, iterations))
+    now, before = statistics.median(rates[here]), statistics.median(rates[baseline])
+    print(f"scoreboard loop, counters on (median of {rounds} runs each, best of 5 inside a run)")
+    for name, tree in (("this tree", here), (str(baseline), baseline)):
+        print(f"  {name:<28}{statistics.median(rates[tree]):>16,.0f} commands/s   runs: "
+              + ", ".join(f"{r / 1e6:.0f}M" for r in rates[tree]))
+    print(f"this tree / baseline: {now / before:.3f}")
+
+
 def main() -> None:
     quick = "--quick" in sys.argv
+    if "--baseline" in sys.argv:
+        compare_with(Path(sys.argv[sys.argv.index("--baseline") + 1]).resolve(), 3 if quick else 5,
+                     5_000 if quick else 50_000)
+        return
     vm_iterations = 5_000 if quick else 50_000
     ref_iterations = 20 if quick else 100
     with tempfile.TemporaryDirectory() as tmp:
