@@ -559,7 +559,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             has = 0
             abort = code[pc, 1]
             pc += 1
-        elif op == OP_IFSCORE or op == OP_IFMATCH:
+        elif op == OP_IFSCORE or op == OP_IFMATCH or op == OP_IFENT:  # a condition: a stage, or final
             final = code[pc, 7]
             if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
                 quota -= 1
@@ -575,65 +575,72 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 quota -= 1
                 if counting:
                     counts[pc] += 1
-            h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
-            o = code[pc, 2] if op == OP_IFMATCH else code[pc, 3]
-            bad = alive_obj[o] == 0
-            if op == OP_IFSCORE and alive_obj[code[pc, 5]] == 0:
-                bad = True
-                o = code[pc, 5]
-            if bad:
-                err = ERR_UNKNOWN_OBJECTIVE
-                errarg = o
-                has = 1
-                ok = 0
-                val = 0
-                # a condition is a fork: its error drops the context, later stages still run
-                pc += 1
-                alive = 0 if not final else alive
-                status = ST_ERROR
-                break
-            if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
-            if op == OP_IFSCORE and code[pc, 4] == HOLDER_SELF and ctx_holder[ctx] < 0:
-                h = -1
-            if h < 0:  # @s run by the server: a final test fails, a stage (a fork) drops the context
-                if final:
+            if op == OP_IFENT:  # `if|unless entity SEL`
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj,
+                            selbuf, 0)
+                passed = (n > 0) != (code[pc, 6] != 0)
+                fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
+            else:
+                h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
+                o = code[pc, 2] if op == OP_IFMATCH else code[pc, 3]
+                bad = alive_obj[o] == 0
+                if op == OP_IFSCORE and alive_obj[code[pc, 5]] == 0:
+                    bad = True
+                    o = code[pc, 5]
+                if bad:
+                    err = ERR_UNKNOWN_OBJECTIVE
+                    errarg = o
                     has = 1
                     ok = 0
                     val = 0
-                else:
-                    alive = 0
-                pc += 1
-                continue
-            passed = False
-            if present[h, o]:
-                a = values[h, o]
-                if op == OP_IFMATCH:
-                    passed = code[pc, 3] <= a <= code[pc, 4]
-                else:
-                    h2 = code[pc, 4]
-                    if h2 == HOLDER_SELF:
-                        h2 = ctx_holder[ctx]
-                    o2 = code[pc, 5]
-                    if present[h2, o2]:
-                        b = values[h2, o2]
-                        c = code[pc, 1]
-                        if c == CMP_LT:
-                            passed = a < b
-                        elif c == CMP_LE:
-                            passed = a <= b
-                        elif c == CMP_EQ:
-                            passed = a == b
-                        elif c == CMP_GE:
-                            passed = a >= b
-                        else:
-                            passed = a > b
-            if code[pc, 6]:
-                passed = not passed
+                    # a condition is a fork: its error drops the context, later stages still run
+                    pc += 1
+                    alive = 0 if not final else alive
+                    status = ST_ERROR
+                    break
+                if h == HOLDER_SELF:
+                    h = ctx_holder[ctx]
+                if op == OP_IFSCORE and code[pc, 4] == HOLDER_SELF and ctx_holder[ctx] < 0:
+                    h = -1
+                if h < 0:  # @s run by the server: a final test fails, a stage (a fork) drops the context
+                    if final:
+                        has = 1
+                        ok = 0
+                        val = 0
+                    else:
+                        alive = 0
+                    pc += 1
+                    continue
+                passed = False
+                if present[h, o]:
+                    a = values[h, o]
+                    if op == OP_IFMATCH:
+                        passed = code[pc, 3] <= a <= code[pc, 4]
+                    else:
+                        h2 = code[pc, 4]
+                        if h2 == HOLDER_SELF:
+                            h2 = ctx_holder[ctx]
+                        o2 = code[pc, 5]
+                        if present[h2, o2]:
+                            b = values[h2, o2]
+                            c = code[pc, 1]
+                            if c == CMP_LT:
+                                passed = a < b
+                            elif c == CMP_LE:
+                                passed = a <= b
+                            elif c == CMP_EQ:
+                                passed = a == b
+                            elif c == CMP_GE:
+                                passed = a >= b
+                            else:
+                                passed = a > b
+                if code[pc, 6]:
+                    passed = not passed
+                fval = 1 if passed else 0
             if final:
                 has = 1
                 ok = 1 if passed else 0
-                val = 1 if passed else 0
+                val = fval
             elif not passed:
                 alive = 0
             elif forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
@@ -848,38 +855,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             has = 1
             ok = 1 if changed else 0
             val = changed
-            pc += 1
-        elif op == OP_IFENT:
-            final = code[pc, 7]
-            if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
-                quota -= 1
-                if counting:
-                    counts[pc] += 1
-            if alive == 0:
-                pc += 1
-                continue
-            if final:
-                if quota <= 0:
-                    status = ST_CUT
-                    break
-                quota -= 1
-                if counting:
-                    counts[pc] += 1
-            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
-            passed = (n > 0) != (code[pc, 6] != 0)
-            if final:  # `if` counts the entities, `unless` gives 1
-                has = 1
-                ok = 1 if passed else 0
-                val = 0 if not passed else (1 if code[pc, 6] else n)
-            elif not passed:
-                alive = 0
-            elif forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
-                err = ERR_FORK_LIMIT
-                errarg = forklimit
-                alive = 0
-                pc = abort
-                status = ST_ERROR
-                break
             pc += 1
         elif op == OP_ASSTAGE:
             if loop != LOOP_REENTERED:
