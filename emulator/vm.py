@@ -106,7 +106,7 @@ OP_FAIL = 46  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. T
 OP_RESULT = 47  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
 OP_JMPDEAD = 48  # a: target. `run return run ...` with no context left: skip it
 OP_STOP = 49  # abort the chain without an error (`if function` on an empty tag)
-OP_HOST = 50  # a: host op index. A final command run by Python (charged here, per context)
+OP_STOREPOS = 50  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
 OP_MACRO = 51  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
 OP_HOSTSTAGE = 52  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 53  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
@@ -114,7 +114,7 @@ OP_ASSTAGE = 54  # a: selector, b forked, c: kind (world_entities.ENTITY_CONTEXT
 # as, rotated as). One context per entity found: `as` contexts made earlier in the root come from
 # as_cache, the others from Python (ST_FORK)
 OP_POSSTAGE = 55  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
-OP_STOREPOS = 56  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
+OP_HOST = 56  # a: host op index. A final command run by Python (charged here, per context)
 OP_TP = 59  # a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) axes.
 # `tp SEL X Y Z`: every target to the same position (the execution position plus the relative
 # parts), each keeping its rotation; outside the spawnable bounds the command fails
@@ -124,6 +124,8 @@ OP_LOG = 57  # a: host op index, b: selector. `tellraw SEL`: fails when SEL find
 # either way: the host's tellraw decides what is written, when the VM returns (before Python serves
 # anything else, so the log keeps its order)
 OP_OPER_BASE = 60  # + OPK_*: a h1, b o1, c h2, d o2. One opcode per operation (no inner dispatch)
+# OP_RESET..OP_ENABLE and OP_HOST..OP_TP are commands of a line of their own served by one branch of the
+# dispatch (one entry rule: skipped without a context, the root cut without quota, then charged)
 
 # operations: opcode OP_OPER_BASE + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
@@ -757,67 +759,136 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             abort = frames[depth, F_ABORT]
             ctx = frames[depth, F_CTX]
             loop = frames[depth, F_LOOP]
-        elif op == OP_GET or op == OP_RESET or op == OP_RESETALL or op == OP_ENABLE:
+        elif OP_RESET <= op <= OP_ENABLE or OP_HOST <= op <= OP_TP:  # the other commands of a line of their own
             if alive == 0:
                 pc += 1
                 continue
             if quota <= 0:
                 status = ST_CUT
                 break
+            if op == OP_LOG and nlog >= logbuf.shape[0]:  # runs again once Python wrote the queued lines
+                status = ST_FLUSH
+                break
             quota -= 1
             if counting:
                 counts[pc] += 1
-            h = code[pc, 1]
-            if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
-            if h >= 0:
-                selbuf[0] = h
-                n = 1
-            else:
-                n = regs[R_NSEL] if h == HOLDER_SELBUF else 0
-            o = code[pc, 2]
-            has = 1
-            ok = 0
-            val = 0
-            pc += 1
-            if n == 0:  # @s run by the server, a selector finding nothing
-                continue
-            if op != OP_RESETALL and alive_obj[o] == 0:
-                err = ERR_UNKNOWN_OBJECTIVE
-                errarg = o
-                status = ST_ERROR
-                break
-            if op == OP_GET:
-                h = selbuf[0]
-                if present[h, o]:
-                    ok = 1
-                    val = values[h, o]
-                continue
-            if op == OP_ENABLE:
-                if trig[o] == 0:  # "You can only enable trigger-objectives"
-                    continue
-                unlocked = 0
-                for i in range(n):  # get-or-create (0), then unlock: the count of scores unlocked
-                    h = selbuf[i]
-                    if present[h, o] == 0:
-                        values[h, o] = 0
-                        present[h, o] = 1
-                    if locked[h, o]:
-                        locked[h, o] = 0
-                        unlocked += 1
-                ok = 1 if unlocked else 0
-                val = unlocked
-                continue
-            for i in range(n):  # reset: an unset score is locked again
-                h = selbuf[i]
-                if op == OP_RESETALL:
-                    present[h, :] = 0
-                    locked[h, :] = 1
+            if op == OP_GET or op == OP_RESET or op == OP_RESETALL or op == OP_ENABLE:
+                h = code[pc, 1]
+                if h == HOLDER_SELF:
+                    h = ctx_holder[ctx]
+                if h >= 0:
+                    selbuf[0] = h
+                    n = 1
                 else:
-                    present[h, o] = 0
-                    locked[h, o] = 1
-            ok = 1
-            val = n
+                    n = regs[R_NSEL] if h == HOLDER_SELBUF else 0
+                o = code[pc, 2]
+                has = 1
+                ok = 0
+                val = 0
+                pc += 1
+                if n == 0:  # @s run by the server, a selector finding nothing
+                    continue
+                if op != OP_RESETALL and alive_obj[o] == 0:
+                    err = ERR_UNKNOWN_OBJECTIVE
+                    errarg = o
+                    status = ST_ERROR
+                    break
+                if op == OP_GET:
+                    h = selbuf[0]
+                    if present[h, o]:
+                        ok = 1
+                        val = values[h, o]
+                    continue
+                if op == OP_ENABLE:
+                    if trig[o] == 0:  # "You can only enable trigger-objectives"
+                        continue
+                    unlocked = 0
+                    for i in range(n):  # get-or-create (0), then unlock: the count of scores unlocked
+                        h = selbuf[i]
+                        if present[h, o] == 0:
+                            values[h, o] = 0
+                            present[h, o] = 1
+                        if locked[h, o]:
+                            locked[h, o] = 0
+                            unlocked += 1
+                    ok = 1 if unlocked else 0
+                    val = unlocked
+                    continue
+                for i in range(n):  # reset: an unset score is locked again
+                    h = selbuf[i]
+                    if op == OP_RESETALL:
+                        present[h, :] = 0
+                        locked[h, :] = 1
+                    else:
+                        present[h, o] = 0
+                        locked[h, o] = 1
+                ok = 1
+                val = n
+            elif op == OP_TAG:
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                m = np.int64(1) << code[pc, 2]
+                changed = 0
+                for i in range(n):
+                    e = selbuf[i]
+                    had = (ent[e, E_TAGS] & m) != 0
+                    if code[pc, 3] != 0 and not had:
+                        ent[e, E_TAGS] |= m
+                    elif code[pc, 3] == 0 and had:
+                        ent[e, E_TAGS] &= ~m
+                    else:
+                        continue
+                    changed += 1
+                    edirty[e] |= DIRTY_TAGS
+                    regs[R_EDIRTY] = 1
+                has = 1
+                ok = 1 if changed else 0
+                val = changed
+                pc += 1
+            elif op == OP_HOST:
+                status = ST_HOST
+                break
+            elif op == OP_TP:
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                k = code[pc, 2]
+                x = floats[k] + ctx_pos[ctx, 0] if code[pc, 3] & 1 else floats[k]  # WorldCoordinate.get: value + base
+                y = floats[k + 1] + ctx_pos[ctx, 1] if code[pc, 3] & 2 else floats[k + 1]
+                z = floats[k + 2] + ctx_pos[ctx, 2] if code[pc, 3] & 4 else floats[k + 2]
+                has = 1
+                ok = 0
+                val = 0
+                pc += 1
+                if n == 0 or not _in_spawnable_bounds(x, y, z):  # "No entity was found", "Invalid position"
+                    continue
+                for i in range(n):
+                    e = selbuf[i]
+                    epos[e, 0] = x
+                    epos[e, 1] = y
+                    epos[e, 2] = z
+                    edirty[e] |= DIRTY_TP
+                regs[R_EDIRTY] = 1
+                ok = 1
+                val = n
+            elif op == OP_GETPOS:
+                e = ctx_entity[ctx]
+                has = 1
+                ok = 0
+                val = 0
+                if e >= 0:  # else "No entity was found"
+                    x = epos[e, code[pc, 1]]
+                    if code[pc, 2] >= 0:
+                        x = x * floats[code[pc, 2]]
+                    ok = 1
+                    val = _mth_floor(x)
+                pc += 1
+            else:  # OP_LOG
+                n = _select(code[pc, 2], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                has = 1
+                ok = 1 if n else 0
+                val = n
+                logbuf[nlog, 0] = code[pc, 1]
+                logbuf[nlog, 1] = ctx
+                nlog += 1
+                pc += 1
         elif op == OP_SELHOLDERS:
             if alive:
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
@@ -826,35 +897,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 for i in range(off, off + n):
                     selbuf[i] = ent[selbuf[i], E_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
-            pc += 1
-        elif op == OP_TAG:
-            if alive == 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
-            m = np.int64(1) << code[pc, 2]
-            changed = 0
-            for i in range(n):
-                e = selbuf[i]
-                had = (ent[e, E_TAGS] & m) != 0
-                if code[pc, 3] != 0 and not had:
-                    ent[e, E_TAGS] |= m
-                elif code[pc, 3] == 0 and had:
-                    ent[e, E_TAGS] &= ~m
-                else:
-                    continue
-                changed += 1
-                edirty[e] |= DIRTY_TAGS
-                regs[R_EDIRTY] = 1
-            has = 1
-            ok = 1 if changed else 0
-            val = changed
             pc += 1
         elif op == OP_ASSTAGE:
             if loop != LOOP_REENTERED:
@@ -1043,18 +1085,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_STOP:  # even with no context left: nothing of the chain follows
             alive = 0
             pc = abort
-        elif op == OP_HOST:
-            if alive == 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            status = ST_HOST
-            break
         elif op == OP_HOSTSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1
@@ -1071,78 +1101,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 continue
             status = ST_HOST
             break
-        elif op == OP_TP:
-            if alive == 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
-            k = code[pc, 2]
-            x = floats[k] + ctx_pos[ctx, 0] if code[pc, 3] & 1 else floats[k]  # WorldCoordinate.get: value + base
-            y = floats[k + 1] + ctx_pos[ctx, 1] if code[pc, 3] & 2 else floats[k + 1]
-            z = floats[k + 2] + ctx_pos[ctx, 2] if code[pc, 3] & 4 else floats[k + 2]
-            has = 1
-            ok = 0
-            val = 0
-            pc += 1
-            if n == 0 or not _in_spawnable_bounds(x, y, z):  # "No entity was found", "Invalid position"
-                continue
-            for i in range(n):
-                e = selbuf[i]
-                epos[e, 0] = x
-                epos[e, 1] = y
-                epos[e, 2] = z
-                edirty[e] |= DIRTY_TP
-            regs[R_EDIRTY] = 1
-            ok = 1
-            val = n
-        elif op == OP_GETPOS:
-            if alive == 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            e = ctx_entity[ctx]
-            has = 1
-            ok = 0
-            val = 0
-            if e >= 0:  # else "No entity was found"
-                x = epos[e, code[pc, 1]]
-                if code[pc, 2] >= 0:
-                    x = x * floats[code[pc, 2]]
-                ok = 1
-                val = _mth_floor(x)
-            pc += 1
-        elif op == OP_LOG:
-            if alive == 0:
-                pc += 1
-                continue
-            if quota <= 0:
-                status = ST_CUT
-                break
-            if nlog >= logbuf.shape[0]:  # runs again once Python wrote the queued lines
-                status = ST_FLUSH
-                break
-            quota -= 1
-            if counting:
-                counts[pc] += 1
-            n = _select(code[pc, 2], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
-            has = 1
-            ok = 1 if n else 0
-            val = n
-            logbuf[nlog, 0] = code[pc, 1]
-            logbuf[nlog, 1] = ctx
-            nlog += 1
-            pc += 1
         elif op == OP_MACRO:
             if alive == 0:
                 regs[R_CALLFN] = -1
