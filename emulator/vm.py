@@ -393,7 +393,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             h2 = code[pc, 3]
             if h2 == HOLDER_SELF:
                 h2 = ctx_holder[ctx]
-            k = op - OP_OPER_BASE
             if h >= 0 and h2 >= 0:  # one target, one source (names or @s): the common case, kept lean
                 if sanitize and novf >= ovf.shape[0]:
                     status = ST_FLUSH
@@ -418,6 +417,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     present[h2, o2] = 1
                 a = np.int64(values[h, o])
                 b = np.int64(values[h2, o2])
+                k = op - OP_OPER_BASE
                 if b == 0 and (k == OPK_DIV or k == OPK_MOD):
                     err = ERR_DIV_ZERO
                     errarg = 0
@@ -465,6 +465,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 errarg = o if alive_obj[o] == 0 else o2
                 status = ST_ERROR
                 break
+            k = op - OP_OPER_BASE
             total = np.int64(0)
             failed = False
             for i in range(nt):
