@@ -5,7 +5,6 @@ drive the same functions.
 """
 from __future__ import annotations
 
-import json
 import math
 import random
 import time
@@ -13,6 +12,7 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 from emulator.api import Emulator
+from emulator.world.text import plain_text
 
 DEFAULT_PACK = Path(__file__).resolve().parents[1] / "datapack"
 TABLE_CORNER = (0.0, 64.0, 0.0)   # where pool:table/setup runs (the playing area's corner)
@@ -141,22 +141,7 @@ def strike(emu: Emulator, shot: Shot) -> list[str]:
     result = emu.call("pool:api/shot", arguments=shot.macro_arguments())
     if result == 1:
         return []
-    return [_plain(entry.text) for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
-
-
-def _plain(component: str) -> str:
-    """The text of a chat component as logged (JSON or a plain string): its "text" and extras."""
-    try:
-        value = json.loads(component)
-    except ValueError:
-        return component
-    if isinstance(value, str):
-        return value
-    if isinstance(value, list):
-        return "".join(_plain(json.dumps(v)) for v in value)
-    if isinstance(value, dict):
-        return str(value.get("text", "")) + "".join(_plain(json.dumps(v)) for v in value.get("extra", []))
-    return component
+    return [plain_text(entry.text) for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
 
 
 def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:

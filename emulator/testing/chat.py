@@ -13,7 +13,8 @@ import re
 
 from emulator import world_entities
 from emulator.state import Context
-from emulator.testing.testfile import ChatCheck, plain_text
+from emulator.testing.testfile import ChatCheck
+from emulator.world.text import plain_text
 
 SYSTEM_MESSAGES = ("tellraw", "chat")  # log kinds sent with sendSystemMessage
 

@@ -13,7 +13,6 @@ gate ``PREFIX run return 1`` and run once when it passes.
 """
 from __future__ import annotations
 
-import json
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,6 +20,7 @@ from pathlib import Path
 from emulator import world_entities
 from emulator.testing.directives import Directives, apply, directive_match
 from emulator.testing.dummies import DummyCommand, parse as parse_dummy
+from emulator.world.text import plain_text
 from mcfunction_parser.ast import Command, Condition, Function, MacroLine
 from mcfunction_parser.diagnostics import Diagnostic, Loc
 from mcfunction_parser.pack_text import split_lines
@@ -336,22 +336,3 @@ def _delay(b: _Builder, loc: Loc, gate, text: str, number: int, col: int):
 def _bad(b: _Builder, message: str, number: int, col: int) -> None:
     b.error(message, number, col)
     return None
-
-
-def plain_text(text: str) -> str:
-    """The plain text of a text component: a JSON string or ``{"text": ...}``, else as written."""
-    try:
-        value = json.loads(text)
-    except ValueError:
-        return text
-    return _plain(value)
-
-
-def _plain(value) -> str:
-    if isinstance(value, str):
-        return value
-    if isinstance(value, list):
-        return "".join(_plain(v) for v in value)
-    if isinstance(value, dict):
-        return str(value.get("text", value.get("translate", ""))) + "".join(_plain(v) for v in value.get("extra", []))
-    return str(value)

@@ -33,7 +33,6 @@ server/commands/data/EntityDataAccessor.java.
 from __future__ import annotations
 
 import functools
-import json
 import math
 import random
 from dataclasses import dataclass, field
@@ -44,6 +43,7 @@ import numpy as np
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, rotation
 from emulator.world.errors import CommandFailure
+from emulator.world.text import plain_text
 from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 
 F32 = np.float32
@@ -168,21 +168,6 @@ def insecure_uuid(rng: random.Random) -> tuple[int, int, int, int]:
     return tuple(_signed32(x) for x in (most >> 32, most, least >> 32, least))
 
 
-def _plain_text(name: str) -> str:
-    """The plain string of a text component as stored (JSON string or ``{"text": ...}``)."""
-    try:
-        value = json.loads(name)
-    except ValueError:
-        return name
-    if isinstance(value, str):
-        return value
-    if isinstance(value, dict):
-        return str(value.get("text", "")) + "".join(_plain_text(json.dumps(e)) for e in value.get("extra", []))
-    if isinstance(value, list):
-        return "".join(_plain_text(json.dumps(e)) for e in value)
-    return name
-
-
 @dataclass(eq=False)
 class Entity:
     uuid: tuple[int, int, int, int]
@@ -226,7 +211,7 @@ class Entity:
         if self.is_player:
             return self.player_name or ""
         if self.custom_name is not None:
-            return _plain_text(self.custom_name)
+            return plain_text(self.custom_name)
         return self.type.split(":", 1)[-1].replace("_", " ").title()
 
     def _scale(self) -> np.float32:

@@ -13,6 +13,7 @@ and the suffix), java.lang.Double/Float.toString.
 """
 from __future__ import annotations
 
+import json
 import math
 from decimal import ROUND_HALF_EVEN, Decimal
 
@@ -69,3 +70,23 @@ def tag_as_string(tag) -> str:
     if isinstance(tag, Double):
         return java_double_string(float(tag)) + "d"
     return to_snbt(tag)
+
+
+def plain_text(text: str) -> str:
+    """The plain text of a text component as written (a JSON string, list or ``{"text": ...}``
+    with its extras; a ``translate`` key stands for its translation), else the text as written."""
+    try:
+        value = json.loads(text)
+    except ValueError:
+        return text
+    return _plain(value)
+
+
+def _plain(value) -> str:
+    if isinstance(value, str):
+        return value
+    if isinstance(value, list):
+        return "".join(_plain(v) for v in value)
+    if isinstance(value, dict):
+        return str(value.get("text", value.get("translate", ""))) + "".join(_plain(v) for v in value.get("extra", []))
+    return str(value)
