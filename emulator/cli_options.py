@@ -121,3 +121,19 @@ def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[s
             function, arguments = next(calls_iter)
             emu.call(function, arguments=arguments)
     return load_commands
+
+
+def run_options(command):
+    """The arguments ``dpemu run`` and ``dpemu profile`` share: PACKS, --ticks, --call, --set, --until."""
+    decorators = [
+        click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False)),
+        click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run."),
+        click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
+                     help="Call a function (as the server) before ticking; macro arguments in SNBT."),
+        click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking."),
+        click.option("--until", metavar='"HOLDER OBJ RANGE"',
+                     help="Stop after the tick where the score is in RANGE."),
+    ]
+    for decorate in reversed(decorators):
+        command = decorate(command)
+    return command

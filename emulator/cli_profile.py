@@ -16,7 +16,7 @@ import click
 
 from emulator import profile_formats as formats
 from emulator.api import Emulator
-from emulator.cli_options import OrderedCommand, apply_setup, parse_call, parse_set, parse_until
+from emulator.cli_options import OrderedCommand, apply_setup, parse_call, parse_set, parse_until, run_options
 from emulator.profile_stacks import StackBackend
 
 STACK_FORMATS = ("collapsed", "trace")
@@ -50,12 +50,7 @@ class RootLog:
 
 
 @click.command("profile", cls=OrderedCommand)
-@click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False))
-@click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run.")
-@click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
-              help="Call a function (as the server) before ticking; macro arguments in SNBT.")
-@click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking.")
-@click.option("--until", metavar='"HOLDER OBJ RANGE"', help="Stop after the tick where the score is in RANGE.")
+@run_options
 @click.option("--backend", type=click.Choice(["numba", "python"]),
               help="Default: numba; python for --format collapsed|trace (which need call stacks).")
 @click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")

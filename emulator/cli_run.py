@@ -12,20 +12,15 @@ import click
 
 from emulator.api import Emulator
 from emulator.cli_options import (
-    OrderedCommand, Until, Watch, apply_setup, parse_call, parse_player, parse_set, parse_until, parse_watch,
+    OrderedCommand, Until, Watch, apply_setup, parse_call, parse_player, parse_set, parse_until, parse_watch, run_options,
 )
 
 PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
 
 
 @click.command("run", cls=OrderedCommand)
-@click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False))
-@click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run.")
-@click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
-              help="Call a function (as the server) before ticking; macro arguments in SNBT.")
-@click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking.")
+@run_options
 @click.option("--watch", multiple=True, metavar='"HOLDER OBJ"', help="Report this score (and per tick in --csv).")
-@click.option("--until", metavar='"HOLDER OBJ RANGE"', help="Stop after the tick where the score is in RANGE.")
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 @click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
 @click.option("--json", "json_out", metavar="FILE|-", help="Write the results as JSON.")
