@@ -11,7 +11,7 @@
   the budget), the ticks in slow motion (a physics tick carried over) and the wall time per shot.
 
 Each sweep worker loads the pack once and starts every shot on a fresh world
-(emulator.shot.reset_table); the shots are split over --jobs processes.
+(poolgame.shot.reset_table); the shots are split over --jobs processes.
 
 Usage: python bench/bench_pool.py [--shots N] [--seed S] [--jobs J]   (the issue's sweep: --shots 1000)
 """
@@ -26,8 +26,8 @@ import random
 import time
 from dataclasses import dataclass
 
-from emulator.physics.constants import BALL_RADIUS, TABLE_LENGTH, TABLE_WIDTH
-from emulator.shot import BREAK, BallOutcome, Shot, new_table, play, random_shot, reset_table, strike
+from poolgame.physics.constants import BALL_RADIUS, TABLE_LENGTH, TABLE_WIDTH
+from poolgame.shot import BREAK, BallOutcome, Shot, new_table, play, random_shot, reset_table, strike
 
 BUDGET_MOVING, BUDGET_IDLE = 5000, 50
 R_MM, L_MM, W_MM = BALL_RADIUS * 1e3, TABLE_LENGTH * 1e3, TABLE_WIDTH * 1e3

@@ -13,19 +13,19 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from pathlib import Path
 
-from emulator.backend import Backend, RootResult
-from emulator.profile_data import Profile, fold
-from emulator.runtime import LOAD_TAG, Runtime
-from emulator.semantics import INT_MAX, INT_MIN
-from emulator import world_entities
+from emulator.runtime.backend import Backend, RootResult
+from emulator.profile.data import Profile, fold
+from emulator.runtime.server import LOAD_TAG, Runtime
+from emulator.world.semantics import INT_MAX, INT_MIN
+from emulator.commands import entities as world_entities
 from emulator.world import statistics
-from emulator.state import Context
+from emulator.world.state import Context
 from mcfunction_parser.diagnostics import Diagnostic
 
 
 def make_backend(name: str) -> Backend:
     if name == "numba":
-        from emulator.numba_backend import NumbaBackend
+        from emulator.vm.backend import NumbaBackend
 
         return NumbaBackend()
     if name == "python":
@@ -49,7 +49,7 @@ class Emulator:
     def load(self, paths: str | Path | Sequence[str | Path], mc_version: str | None = None):
         """Load one pack or several (later ones override); returns the loaded packs. Pack problems
         are in :attr:`load_diagnostics`; the world starts empty."""
-        from mcfunction_parser.pack import load_packs
+        from mcfunction_parser.pack.loader import load_packs
 
         if isinstance(paths, (str, Path)):
             paths = [paths]

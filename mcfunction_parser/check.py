@@ -29,7 +29,7 @@ from pathlib import Path
 
 from . import ast
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
-from .pack import LoadedPacks, load_packs
+from mcfunction_parser.pack.loader import LoadedPacks, load_packs
 
 # Function references and objective definitions inside macro templates (unparsed until called).
 _MACRO_FUNCTION = re.compile(r"(?:^|\s)function\s+(#?[a-z0-9_.-]+:[a-z0-9_./-]+)(?=\s|$)")

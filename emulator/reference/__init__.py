@@ -1,6 +1,6 @@
 """The reference backend: a plain-Python interpreter of the AST, the oracle the numba VM is
 checked against. Clarity over speed; it follows the game's execution model task by task and
-shares only value helpers (:mod:`emulator.semantics`, :mod:`emulator.world`) and the world state
+shares only value helpers (:mod:`emulator.world.semantics`, :mod:`emulator.world`) and the world state
 with the VM.
 
 Modules
@@ -14,14 +14,14 @@ Modules
 """
 from __future__ import annotations
 
-from emulator.backend import RootResult
-from emulator.state import Context, WorldState
+from emulator.runtime.backend import RootResult
+from emulator.world.state import Context, WorldState
 
 from .engine import Interpreter
 
 
 class ReferenceBackend:
-    """Implements :class:`emulator.backend.Backend`."""
+    """Implements :class:`emulator.runtime.backend.Backend`."""
 
     name = "python"
 

@@ -6,7 +6,7 @@ succeed with result 1 and no effect; each such command is reported once as a war
 """
 from __future__ import annotations
 
-from emulator.semantics import INT_MAX
+from emulator.world.semantics import INT_MAX
 from mcfunction_parser import ast
 
 from emulator.world import bossbars, relations, server_commands, text_components

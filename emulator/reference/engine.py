@@ -10,21 +10,21 @@ returns and command costs agree with it by construction:
 - ``_isolated_call``      IsolatedCall      (``execute if function``: a frame of its own)
 - ``_run_function_command`` / ``_return``   the custom executors of ``function`` and ``return``
 
-See :mod:`emulator.backend` for the cost rule both backends share.
+See :mod:`emulator.runtime.backend` for the cost rule both backends share.
 """
 from __future__ import annotations
 
 from collections import Counter
 
-from emulator.backend import RootResult, report_quota_cut
-from emulator.semantics import wrap32, wraps32
-from emulator.state import Context, Overflow, WorldState
+from emulator.runtime.backend import RootResult, report_quota_cut
+from emulator.world.semantics import wrap32, wraps32
+from emulator.world.state import Context, Overflow, WorldState
 from mcfunction_parser import ast
 
 from . import data, modifiers
 from .commands import run_command
 from .failure import CommandFailure
-from .macros import MacroExpander
+from emulator.runtime.macros import MacroExpander
 from .queue import Action, CallFrame, ExecutionQueue, chain, schedule_each
 from .source import Activation, Source
 

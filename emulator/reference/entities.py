@@ -1,5 +1,5 @@
 """The reference backend's entry into the world (entities, blocks, entity and block data): each
-function runs the shared :mod:`emulator.world_entities` and turns its failures into this
+function runs the shared :mod:`emulator.commands.entities` and turns its failures into this
 backend's :class:`CommandFailure`, so both backends share one implementation.
 
 The world state is reached through ``source.state`` (set on the root source by the engine).
@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from contextlib import contextmanager
 
-from emulator import world_entities as world
+from emulator.commands import entities as world
 from mcfunction_parser import ast
 
 from .failure import CommandFailure

@@ -5,7 +5,7 @@ holders named by text (players, ``#fake``, ``$fake``, UUIDs) need no entity.
 """
 from __future__ import annotations
 
-from emulator.state import Scoreboard
+from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import NameTarget, Selector, Wildcard
 
 from . import entities

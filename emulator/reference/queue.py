@@ -6,7 +6,7 @@ makes execution depth-first without any Python recursion: a 100,000-deep functio
 long queue, not a deep stack.
 
 Before each entry the quota is checked (``quota <= 0`` stops the root); only
-:meth:`ExecutionQueue.charge` lowers it (the cost rule is documented in :mod:`emulator.backend`).
+:meth:`ExecutionQueue.charge` lowers it (the cost rule is documented in :mod:`emulator.runtime.backend`).
 """
 from __future__ import annotations
 

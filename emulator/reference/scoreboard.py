@@ -6,7 +6,7 @@ arithmetic that reports overflows to the sanitizer).
 """
 from __future__ import annotations
 
-from emulator.semantics import floor_div, floor_mod, wrap32
+from emulator.world.semantics import floor_div, floor_mod, wrap32
 from emulator.world import server_commands
 from mcfunction_parser import ast
 

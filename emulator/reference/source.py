@@ -1,6 +1,6 @@
 """Command sources (the game's ``CommandSourceStack``) and call traces.
 
-A :class:`Source` is who runs a command and where (:class:`emulator.state.Context`), the callback
+A :class:`Source` is who runs a command and where (:class:`emulator.world.state.Context`), the callback
 its result goes to (``execute store`` chains callbacks), and the :class:`Activation` it runs in,
 which only serves diagnostics: the function traceback of a runtime error.
 """
@@ -9,7 +9,7 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from emulator.state import Context, Frame
+from emulator.world.state import Context, Frame
 from mcfunction_parser.diagnostics import Loc
 
 from .queue import Callback

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import re
 
-from emulator import world_entities
-from emulator.state import Context
+from emulator.commands import entities as world_entities
+from emulator.world.state import Context
 from emulator.testing.testfile import ChatCheck
 from emulator.world.text import plain_text
 

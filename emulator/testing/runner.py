@@ -10,10 +10,10 @@ from collections.abc import Callable
 from dataclasses import replace
 from pathlib import Path
 
-from emulator import world_entities
+from emulator.commands import entities as world_entities
 from emulator.api import Emulator
-from emulator.host import Host, HostFailure
-from emulator.state import Context
+from emulator.vm.host import Host, HostFailure
+from emulator.world.state import Context
 from emulator.testing import chat
 from emulator.testing.discovery import TestFile
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
@@ -23,7 +23,7 @@ from emulator.world import structures
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.nbt import Compound, to_snbt
-from mcfunction_parser.pack import load_packs
+from mcfunction_parser.pack.loader import load_packs
 
 _SCORE_MATCHES = re.compile(r"score (\S+) (\S+) matches (\S+)$")
 _SCORE_COMPARE = re.compile(r"score (\S+) (\S+) (<=|>=|=|<|>) (\S+) (\S+)$")

@@ -17,13 +17,13 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from emulator import world_entities
+from emulator.commands import entities as world_entities
 from emulator.testing.directives import Directives, apply, directive_match
 from emulator.testing.dummies import DummyCommand, parse as parse_dummy
 from emulator.world.text import plain_text
 from mcfunction_parser.ast import Command, Condition, Function, MacroLine
 from mcfunction_parser.diagnostics import Diagnostic, Loc
-from mcfunction_parser.pack_text import split_lines
+from mcfunction_parser.pack.text import split_lines
 from mcfunction_parser.parse import parse_command, parse_function
 from mcfunction_parser.reader import ParseError
 

@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 
 from emulator.world.errors import CommandFailure
 from mcfunction_parser import ast
-from mcfunction_parser.tags import normalise_id
+from mcfunction_parser.pack.tags import normalise_id
 
 
 @dataclass

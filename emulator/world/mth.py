@@ -25,7 +25,7 @@ import struct
 
 import numpy as np
 
-from emulator.semantics import double_to_int
+from emulator.world.semantics import double_to_int
 from emulator.world.atan_tables import ASIN_TAB, COS_TAB
 
 F32 = np.float32

@@ -53,7 +53,7 @@ from mcfunction_parser.nbt import (
     to_snbt,
     type_of_array_item,
 )
-from emulator.semantics import double_to_long, mth_floor
+from emulator.world.semantics import double_to_long, mth_floor
 from emulator.world import mth
 from emulator.world.errors import CommandFailure
 from emulator.world.text import tag_as_string

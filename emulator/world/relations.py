@@ -19,7 +19,7 @@ from emulator.world.entities import Entity, EntityStore
 from emulator.world.errors import CommandFailure
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound, IntArray, List, String
-from mcfunction_parser.tags import normalise_id
+from mcfunction_parser.pack.tags import normalise_id
 
 _NO_PASSENGERS = frozenset({"minecraft:marker"})
 _OWNABLE = frozenset(f"minecraft:{t}" for t in (

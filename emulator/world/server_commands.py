@@ -11,14 +11,14 @@ from __future__ import annotations
 
 from typing import Callable
 
-from emulator.semantics import INT_MAX, INT_MIN, wrap32
-from emulator.state import WorldState
+from emulator.world.semantics import INT_MAX, INT_MIN, wrap32
+from emulator.world.state import WorldState
 from emulator.world.entities import Entity
 from emulator.world.errors import MESSAGES, CommandFailure
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import score_holder
 from mcfunction_parser.reader import ParseError, Reader
-from mcfunction_parser.tags import normalise_id  # ResourceLocation.toString (the MD5 seed hashes it)
+from mcfunction_parser.pack.tags import normalise_id  # ResourceLocation.toString (the MD5 seed hashes it)
 
 DAY_TICKS = 24000
 

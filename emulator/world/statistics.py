@@ -20,7 +20,7 @@ server/level/ServerPlayer.java (awardStat -> Scoreboard.forAllObjectives ... Sco
 """
 from __future__ import annotations
 
-from emulator.semantics import wrap32
+from emulator.world.semantics import wrap32
 
 STAT_TYPES = ("custom", "mined", "crafted", "used", "broken", "picked_up", "dropped", "killed", "killed_by")
 # Player.tick's statistics (server side) of a living player who is not sleeping

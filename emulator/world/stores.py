@@ -20,7 +20,7 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte, Double, Float, Int, Long, Short
-from emulator.semantics import (
+from emulator.world.semantics import (
     double_to_byte,
     double_to_int,
     double_to_long,

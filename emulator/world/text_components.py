@@ -21,7 +21,7 @@ import json
 import re
 from typing import Callable
 
-from emulator.state import WorldState
+from emulator.world.state import WorldState
 from emulator.world import nbt_ops
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import CommandFailure

@@ -7,9 +7,9 @@ holder); the table tests place real ball entities with the pack's own pool:table
 from __future__ import annotations
 
 from emulator import Emulator
-from emulator.shot import TABLE_CORNER
+from poolgame.shot import TABLE_CORNER
 
-from pack_paths import PACK
+from tests.datapack.pack_paths import PACK
 
 BACKENDS = ("numba", "python")
 BALL_ITEM = "minecraft:white_concrete"

@@ -6,9 +6,9 @@ import math
 import numpy as np
 import pytest
 
-from emulator.physics import ball_ball, cushion
-from emulator.physics.cue import Shot, strike
-from pool_world import PoolWorld
+from poolgame.physics import ball_ball, cushion
+from poolgame.physics.cue import Shot, strike
+from tests.datapack.pool_world import PoolWorld
 
 UM_PER_TICK = 1e6 / 20
 A = "ball_a"     # a simulated player stands in for the ball entity (@s)

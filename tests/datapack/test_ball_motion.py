@@ -1,5 +1,5 @@
 """The per-ball models in mcfunction (pool:ball/...) against the float reference
-(emulator.physics), scored by the thresholds of DESIGN.md section 6.
+(poolgame.physics), scored by the thresholds of DESIGN.md section 6.
 
 Ball functions work on @s: they run on the emulator (numba, sanitizer on) with @s a simulated
 player."""
@@ -8,8 +8,8 @@ import math
 import numpy as np
 import pytest
 
-from emulator.physics.ball import AT_REST, Ball, advance_through
-from pool_world import PoolWorld
+from poolgame.physics.ball import AT_REST, Ball, advance_through
+from tests.datapack.pool_world import PoolWorld
 
 UM_PER_TICK = 1e6 / 20   # um/tick per m/s
 BALL = "ball"    # a simulated player stands in for the ball entity (@s)

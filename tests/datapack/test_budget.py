@@ -2,7 +2,7 @@
 and the carry-over that keeps it (pool:physics/step): a game tick does only the physics work
 that fits in $budget pool.const, the rest of the physics tick goes on in the next game tick.
 Command counts are deterministic, so they are asserted exactly against the budget."""
-from emulator.shot import BREAK, new_table, play, reset_table
+from poolgame.shot import BREAK, new_table, play, reset_table
 
 BUDGET = 5000
 

@@ -6,7 +6,7 @@ import re
 import pytest
 from mecha import Mecha
 
-from pack_paths import FUNCTIONS, PACK, function_id
+from tests.datapack.pack_paths import FUNCTIONS, PACK, function_id
 
 MACRO_VARIABLE = re.compile(r"\$\(([A-Za-z0-9_]+)\)")
 FUNCTION_REF = re.compile(r"function (#?[a-z0-9_.-]+:[a-z0-9_./-]+)")

@@ -4,7 +4,7 @@ import random
 
 import pytest
 
-from pool_world import BACKENDS, PoolWorld
+from tests.datapack.pool_world import BACKENDS, PoolWorld
 
 INT_MAX = 2**31 - 1
 

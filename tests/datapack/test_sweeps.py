@@ -5,8 +5,8 @@ import random
 import numpy as np
 import pytest
 
-from emulator.physics.constants import CORNER_OPENING, SIDE_OPENING_HALF
-from pool_world import BACKENDS, PoolWorld
+from poolgame.physics.constants import CORNER_OPENING, SIDE_OPENING_HALF
+from tests.datapack.pool_world import BACKENDS, PoolWorld
 
 TWO_R = 57150
 CONTACT = TWO_R + 20   # $contact: the sweep reports contacts 20 um early (pool:physics/sweep/pair)

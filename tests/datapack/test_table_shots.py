@@ -9,11 +9,11 @@ import random
 import numpy as np
 import pytest
 
-from emulator.physics.ball import Ball
-from emulator.physics.cue import Shot, strike
-from emulator.physics.simulator import simulate_ticks
-from emulator.shot import TABLE_CORNER, random_shot
-from pool_world import PoolWorld
+from poolgame.physics.ball import Ball
+from poolgame.physics.cue import Shot, strike
+from poolgame.physics.simulator import simulate_ticks
+from poolgame.shot import TABLE_CORNER, random_shot
+from tests.datapack.pool_world import PoolWorld
 
 TWO_R = 57150
 

@@ -6,7 +6,7 @@ from mcfunction_parser import arguments
 from mcfunction_parser.ast import Coord
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.reader import ParseError, Reader
-from parser_helpers import parse_err, parse_ok
+from tests.parser.parser_helpers import parse_err, parse_ok
 
 
 def reader(text: str, version=(1, 21, 0)) -> Reader:

@@ -2,7 +2,7 @@
 import pytest
 
 from mcfunction_parser import ast
-from parser_helpers import parse_err, parse_ok
+from tests.parser.parser_helpers import parse_err, parse_ok
 
 
 def test_add_remove_list():

@@ -1,6 +1,6 @@
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List
-from parser_helpers import parse_err, parse_ok
+from tests.parser.parser_helpers import parse_err, parse_ok
 
 
 def test_get():

@@ -8,7 +8,7 @@ from importlib import resources
 import pytest
 
 from mcfunction_parser import features
-from parser_helpers import parse_err, parse_ok
+from tests.parser.parser_helpers import parse_err, parse_ok
 
 pytest.importorskip("mecha")
 

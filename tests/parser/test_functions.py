@@ -3,7 +3,7 @@ import pytest
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte, String
 from mcfunction_parser.parse import parse_command
-from parser_helpers import LOC, parse_err, parse_ok
+from tests.parser.parser_helpers import LOC, parse_err, parse_ok
 
 
 def test_function_forms():

@@ -6,7 +6,7 @@ from hypothesis import strategies as st
 
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.parse import parse_command, parse_function
-from test_mecha_agreement import INVALID, VALID
+from tests.parser.test_mecha_agreement import INVALID, VALID
 
 # lines exercising the fast paths, caches and the 1.21.5 SNBT grammar, whose mutations reach new branches
 FAST_PATH_SEEDS = [

@@ -1,6 +1,6 @@
 """``ride`` (RideCommand, 1.19.4+): single-entity target and vehicle."""
 from mcfunction_parser import ast
-from parser_helpers import parse_err, parse_ok
+from tests.parser.parser_helpers import parse_err, parse_ok
 
 
 def test_ride_forms():

@@ -5,7 +5,7 @@ from hypothesis import strategies as st
 from mcfunction_parser import ast
 from mcfunction_parser.commands import scoreboard
 from mcfunction_parser.parse import parse_command
-from parser_helpers import LOC, parse_err, parse_ok
+from tests.parser.parser_helpers import LOC, parse_err, parse_ok
 
 
 def test_players_set_holds_any_int():

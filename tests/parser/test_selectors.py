@@ -2,7 +2,7 @@ import pytest
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte
-from parser_helpers import parse_err, parse_ok
+from tests.parser.parser_helpers import parse_err, parse_ok
 
 
 def _sel(text: str) -> ast.Selector:

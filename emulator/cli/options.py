@@ -1,0 +1,139 @@
+"""Options shared by the commands that run packs (``dpemu run``, ``dpemu profile``): parsing of
+--set/--call/--watch/--until/--player and applying --set/--call in command-line order."""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import click
+
+from emulator.api import Emulator
+from emulator.world.semantics import INT_MAX, INT_MIN
+
+
+@dataclass(frozen=True)
+class Watch:
+    holder: str
+    objective: str
+
+    @property
+    def label(self) -> str:
+        return f"{self.holder} {self.objective}"
+
+
+@dataclass(frozen=True)
+class Until:
+    watch: Watch
+    lo: int | None
+    hi: int | None
+
+    def met(self, emu: Emulator) -> bool:
+        value = emu.score(self.watch.holder, self.watch.objective)
+        return value is not None and (self.lo is None or value >= self.lo) and (self.hi is None or value <= self.hi)
+
+
+class OrderedCommand(click.Command):
+    """Remembers the order in which --set and --call were given (click groups them per option)."""
+
+    def parse_args(self, ctx: click.Context, args: list[str]) -> list[str]:
+        _, _, order = self.make_parser(ctx).parse_args(args=list(args))
+        ctx.meta["dpemu.run.order"] = [p.name for p in order if p.name in ("set_", "call")]
+        return super().parse_args(ctx, args)
+
+
+def _int32(text: str, what: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise click.BadParameter(f"{what}: expected an integer, got {text!r}") from None
+    if not INT_MIN <= value <= INT_MAX:
+        raise click.BadParameter(f"{what}: {value} is outside the 32-bit range")
+    return value
+
+
+def parse_set(text: str) -> tuple[str, str, int]:
+    parts = text.split()
+    if len(parts) != 3:
+        raise click.BadParameter(f"--set {text!r}: expected \"HOLDER OBJECTIVE VALUE\"")
+    return parts[0], parts[1], _int32(parts[2], "--set value")
+
+
+def parse_watch(text: str) -> Watch:
+    parts = text.split()
+    if len(parts) != 2:
+        raise click.BadParameter(f"--watch {text!r}: expected \"HOLDER OBJECTIVE\"")
+    return Watch(*parts)
+
+
+def parse_until(text: str) -> Until:
+    parts = text.split()
+    if len(parts) != 3:
+        raise click.BadParameter(f"--until {text!r}: expected \"HOLDER OBJECTIVE RANGE\" (5, 1.., ..0, 1..9)")
+    rng = parts[2]
+    if ".." in rng:
+        lo_text, hi_text = rng.split("..", 1)
+        lo = _int32(lo_text, "--until range") if lo_text else None
+        hi = _int32(hi_text, "--until range") if hi_text else None
+        if lo is None and hi is None:
+            raise click.BadParameter("--until range: '..' needs a bound")
+    else:
+        lo = hi = _int32(rng, "--until range")
+    return Until(Watch(parts[0], parts[1]), lo, hi)
+
+
+def parse_player(text: str) -> tuple[str, tuple[float, ...], tuple[float, float]]:
+    """``NAME@X,Y,Z[,YAW,PITCH]``."""
+    name, _, numbers = text.partition("@")
+    try:
+        values = [float(v) for v in numbers.split(",")]
+    except ValueError:
+        values = []
+    if not name or len(values) not in (3, 5):
+        raise click.BadParameter(f"{text!r}: expected NAME@X,Y,Z or NAME@X,Y,Z,YAW,PITCH", param_hint="--player")
+    return name, tuple(values[:3]), tuple(values[3:]) or (0.0, 0.0)
+
+
+def parse_call(text: str) -> tuple[str, object]:
+    """``FN`` or ``FN {key: value}`` (macro arguments in SNBT, as after ``function``)."""
+    if " " not in text.strip():
+        return text.strip(), None
+    from mcfunction_parser.ast import FunctionCall
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+
+    cmd, diagnostics = parse_command(f"function {text.strip()}", Loc("--call", 1, 1))
+    errors = [d for d in diagnostics if d.severity == "error"]
+    if errors or not isinstance(cmd, FunctionCall) or cmd.is_tag or cmd.with_source is not None:
+        reason = errors[0].message if errors else "expected FN or \"FN {key: value}\""
+        raise click.BadParameter(f"--call {text!r}: {reason}")
+    return cmd.function, cmd.arguments
+
+
+def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[str, object]]) -> int:
+    """Start the world (``#minecraft:load`` runs first, as when a world loads, before any player
+    command), then apply --set and --call in command-line order. Returns the load's commands."""
+    load_commands = emu.start()
+    sets_iter, calls_iter = iter(sets), iter(calls)
+    for name in order:
+        if name == "set_":
+            holder, objective, value = next(sets_iter)
+            emu.set_score(holder, objective, value)
+        else:
+            function, arguments = next(calls_iter)
+            emu.call(function, arguments=arguments)
+    return load_commands
+
+
+def run_options(command):
+    """The arguments ``dpemu run`` and ``dpemu profile`` share: PACKS, --ticks, --call, --set, --until."""
+    decorators = [
+        click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False)),
+        click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run."),
+        click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
+                     help="Call a function (as the server) before ticking; macro arguments in SNBT."),
+        click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking."),
+        click.option("--until", metavar='"HOLDER OBJ RANGE"',
+                     help="Stop after the tick where the score is in RANGE."),
+    ]
+    for decorate in reversed(decorators):
+        command = decorate(command)
+    return command

@@ -1,0 +1,144 @@
+"""``dpemu run``: load packs, run ``#minecraft:load``, apply --set/--call in command-line order, tick,
+report."""
+from __future__ import annotations
+
+import csv
+import json
+import sys
+import time
+from contextlib import nullcontext
+
+import click
+
+from emulator.api import Emulator
+from emulator.cli.options import (
+    OrderedCommand, Until, Watch, apply_setup, parse_call, parse_player, parse_set, parse_until, parse_watch, run_options,
+)
+
+PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
+
+
+@click.command("run", cls=OrderedCommand)
+@run_options
+@click.option("--watch", multiple=True, metavar='"HOLDER OBJ"', help="Report this score (and per tick in --csv).")
+@click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
+@click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
+@click.option("--json", "json_out", metavar="FILE|-", help="Write the results as JSON.")
+@click.option("--csv", "csv_out", metavar="FILE", type=click.Path(dir_okay=False), help="Watched values per tick.")
+@click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")
+@click.option("--player", "players", multiple=True, metavar="NAME@X,Y,Z[,YAW,PITCH]",
+              help="Add a simulated player before anything runs.")
+@click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
+def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
+        shuffle) -> None:
+    """Emulate PACKS: run #minecraft:load, apply --set and --call in order, then run --ticks ticks."""
+    sets = [parse_set(s) for s in set_]
+    calls = [parse_call(c) for c in call]
+    watches = [parse_watch(w) for w in watch]
+    stop = parse_until(until) if until else None
+    if stop and stop.watch not in watches:
+        watches.append(stop.watch)
+    players = [parse_player(p) for p in players]
+    emu = Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle)
+    try:
+        emu.load(list(packs), mc_version)
+    except ValueError as error:  # an unknown --mc version
+        raise click.BadParameter(str(error), param_hint="--mc") from None
+    for name, pos, rotation in players:
+        emu.add_player(name, pos, rotation)
+    for diag in emu.load_diagnostics:
+        if diag.severity == "error":
+            click.echo(diag.format(), err=True)
+
+    started = time.perf_counter()
+    load_commands = apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+    rows = _tick(emu, ticks, watches, stop)
+    wall = time.perf_counter() - started
+
+    report = _report(emu, watches, stop, wall, load_commands)
+    _print_summary(report, emu, to_stderr=json_out == "-")
+    if json_out:
+        _write_json(json_out, report)
+    if csv_out:
+        with open(csv_out, "w", newline="") as handle:
+            writer = csv.writer(handle)
+            writer.writerow(["tick", *(w.label for w in watches)])
+            writer.writerows(rows)
+
+
+def _tick(emu: Emulator, ticks: int, watches: list[Watch], stop: Until | None) -> list[list]:
+    rows: list[list] = []
+    bar = click.progressbar(length=ticks, label="ticks", file=sys.stderr) if ticks >= PROGRESS_MIN_TICKS else None
+    with bar if bar is not None else nullcontext():
+        for _ in range(ticks):
+            emu.tick()
+            rows.append([emu.ticks, *(_value(emu, w) for w in watches)])
+            if bar is not None:
+                bar.update(1)
+            if stop and stop.met(emu):
+                break
+    return rows
+
+
+def _value(emu: Emulator, w: Watch):
+    value = emu.score(w.holder, w.objective)
+    return "" if value is None else value
+
+
+def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float, load_commands: int) -> dict:
+    per_tick = emu.commands_per_tick
+    limit = emu.state.gamerules.max_command_chain_length
+    outside = emu.runtime.commands_outside_ticks
+    return {
+        "ticks": emu.ticks,
+        "commands": sum(per_tick) + outside,
+        "load_commands": load_commands,
+        "setup_commands": outside - load_commands,
+        "commands_per_tick": per_tick,
+        "commands_per_tick_mean": (sum(per_tick) / len(per_tick)) if per_tick else 0.0,
+        "commands_per_tick_max": max(per_tick, default=0),
+        "max_root_cost": emu.max_root_cost,
+        "quota_headroom": limit - emu.max_root_cost,
+        "wall_time_s": round(wall, 6),
+        "watch": {w.label: emu.score(w.holder, w.objective) for w in watches},
+        "until_met": stop.met(emu) if stop else None,
+        "scores": emu.scores(),
+        "entities": emu.entities(),
+        "log": [entry.to_json() for entry in emu.log],
+        "overflows": [o.to_json() for o in emu.overflows],
+        "diagnostics": [d.to_json() for d in emu.diagnostics],
+        "load_diagnostics": [d.to_json() | {"severity": d.severity} for d in emu.load_diagnostics],
+    }
+
+
+def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:
+    """The human summary (on stderr when stdout carries the JSON)."""
+
+    def out(text: str) -> None:
+        click.echo(text, err=to_stderr)
+
+    out(f"ticks: {report['ticks']}   commands: {report['commands']} (load {report['load_commands']}, "
+        f"--set/--call {report['setup_commands']}, ticks {sum(report['commands_per_tick'])})   "
+        f"wall: {report['wall_time_s']:.3f} s")
+    out(f"commands/tick: mean {report['commands_per_tick_mean']:.1f}, max {report['commands_per_tick_max']}   "
+        f"quota headroom: {report['quota_headroom']} (costliest root {report['max_root_cost']})")
+    for label, value in report["watch"].items():
+        out(f"  {label} = {'unset' if value is None else value}")
+    if report["until_met"] is not None:
+        out(f"--until {'met' if report['until_met'] else 'not met'}")
+    if report["overflows"]:
+        out(f"overflows: {len(report['overflows'])} (first: {report['overflows'][0]['where']})")
+    shown = emu.diagnostics[:20]
+    for diag in shown:
+        click.echo(diag.format(), err=True)
+    if len(emu.diagnostics) > len(shown):
+        click.echo(f"... and {len(emu.diagnostics) - len(shown)} more diagnostics", err=True)
+
+
+def _write_json(target: str, report: dict) -> None:
+    text = json.dumps(report, indent=1)
+    if target == "-":
+        click.echo(text)
+    else:
+        with open(target, "w") as handle:
+            handle.write(text + "\n")

@@ -1,0 +1,111 @@
+"""The backend protocol: what the runtime needs from an executor of compiled or parsed functions.
+
+Two backends implement it: the numba VM (:class:`emulator.vm.backend.NumbaBackend`, driving
+:mod:`emulator.vm.loop`) and the plain-Python reference (:mod:`emulator.reference`). The runtime
+(:mod:`emulator.runtime.server`) owns the tick loop and the schedule queue's timing; it asks the backend
+to run one *root sequence* at a time. Both act on the same :class:`~emulator.world.state.WorldState`.
+
+Command cost — THE rule (both backends must count identically)
+==============================================================
+From the game's ExecutionContext / BuildContexts / ExecuteCommand / CallFunction (1.20.3+):
+
+Each root sequence starts with ``quota = gamerules.max_command_chain_length``. Work is a queue
+of *entries*; before each entry the game checks ``quota <= 0`` and, if so, drops the rest of the
+root (and logs "Command execution stopped due to limit (executed N commands)", N = the limit).
+Costs are charged as follows:
+
+1. ``CallFunction`` (entering a function: the root itself, ``function f``, each member of a
+   tag, each function of ``execute if function``): an entry; costs 1.
+2. A command line starts as one entry (BuildContexts). Inside it, each execute stage that has a
+   redirect/fork modifier (``as at positioned rotated facing anchored align in on summon``,
+   ``if|unless`` *followed by more stages*, ``store ...``) costs 1, once per stage, whatever the
+   number of contexts (0 included); these are charged without further checks, so the quota can go
+   negative. ``run`` costs nothing. If a stage leaves 0 contexts, later stages are still charged.
+   A stage's error (e.g. ``store ... score @s`` run by the server) fails the whole command, and
+   the later stages are not charged, unless the chain is forked by then (a ``fork`` stage at or
+   before it: ``if|unless ...``, ``as``, ``at``, ``positioned as``, ``rotated as``,
+   ``facing entity``, ``on``, ``summon``): then only that context is dropped.
+3. The final command then runs once per remaining context, each run its own entry costing 1
+   (ExecuteCommand). A condition that ends the chain (``execute if score ...`` without ``run``)
+   is such a final command: 1 per context.
+4. Commands with custom executors cost nothing themselves: ``function ...`` (only its
+   CallFunction entries cost), ``return N``, ``return fail``. ``return run CMD`` costs nothing
+   itself; CMD is a new entry costed by rules 2-3. ``execute ... if function F`` is a custom
+   modifier: the stage costs nothing, F's calls cost by rule 1, and the rest of the chain is a
+   new entry (checked) costed by rules 2-3. If the tag named by ``if function`` is empty, the
+   rest of the chain does not run at all.
+5. Failing commands cost what they were charged before failing (a failing ``scoreboard`` command
+   still costs 1 per context).
+
+So ``scoreboard players set #a o 1`` costs 1; ``execute as @a at @s run say hi`` with 3 players
+costs 2 + 3; ``function f`` where f has 4 plain commands costs 1 + 4; a root calling nothing
+but ``return 1`` costs 1 (its own CallFunction).
+
+Fork limit: a stage whose produced contexts would reach ``maxCommandForkCount`` (``>=``) fails
+the command ("Command execution would fork too many times").
+
+Where the quota stops a root, the backend calls :func:`report_quota_cut`, so the log and the
+diagnostic read the same in both backends.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Protocol
+
+from emulator.world.state import Context, Frame, WorldState
+
+if TYPE_CHECKING:
+    from mcfunction_parser.nbt import Compound
+
+
+@dataclass(frozen=True, slots=True)
+class RootResult:
+    """What running one root sequence did.
+
+    ``cost``: quota units consumed (the "commands executed" the runtime reports per tick; never
+    more than the quota plus one command's stage charges). ``result``: the function's return value
+    (None when it never returned; 0 for ``return fail``). ``cut``: the quota stopped it.
+    """
+
+    cost: int
+    result: int | None
+    cut: bool = False
+
+
+class Backend(Protocol):
+    """An executor of functions on a :class:`WorldState`."""
+
+    name: str
+
+    def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
+        """Prepare to run ``packs`` (a ``mcfunction_parser.pack.loader.LoadedPacks``) against ``state``.
+
+        With ``sanitize``, every arithmetic result that wraps int32 is appended to
+        ``state.overflows`` (the stored value stays the game's).
+        """
+
+    def run_root(self, function_id: str, context: Context | None = None, arguments: "Compound | None" = None) -> RootResult:
+        """Run one root sequence: call ``function_id`` (not a tag; the runtime expands tags) with
+        a fresh quota, as ``context`` (None: the server at world spawn), with macro ``arguments``.
+
+        Never raises for anything a pack can do: runtime problems become
+        ``state.diagnostics`` (with a function traceback) and the run continues as the game would.
+        An unknown ``function_id`` is a diagnostic and a zero-cost result.
+        """
+
+    def line_counts(self) -> dict[tuple[str, int], int]:
+        """Cost charged so far per ``(source path, line)``, cumulative over the run: the sum over
+        all lines equals the total cost minus the roots' own CallFunction charges (a root call is
+        on no line). May be ``{}`` if not tracked."""
+
+
+def quota_cut_message(limit: int) -> str:
+    """The game's log line when the quota stops a root."""
+    return f"Command execution stopped due to limit (executed {limit} commands)"
+
+
+def report_quota_cut(state: WorldState, limit: int, frames: tuple[Frame, ...]) -> None:
+    """Log the cut and record a diagnostic saying where (``frames[-1]``: the entry not run)."""
+    loc = frames[-1].loc if frames else None
+    state.emit("info", quota_cut_message(limit), loc)
+    state.error(quota_cut_message(limit), frames, severity="warning")

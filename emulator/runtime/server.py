@@ -1,0 +1,65 @@
+"""The tick loop: which root sequences run when, and what each tick cost.
+
+Each server tick (ServerFunctionManager.tick, then ServerLevel.tickTime):
+1. on the first tick after loading, every ``#minecraft:load`` member, each its own root;
+2. every ``#minecraft:tick`` member in order, each its own root;
+3. the game time advances by one, then every scheduled event due at the new time runs, by due
+   time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
+   run as the server at world spawn;
+4. the day time advances by one when ``doDaylightCycle`` is on.
+"""
+from __future__ import annotations
+
+from emulator.runtime.backend import Backend, RootResult
+from emulator.world.state import Context, WorldState
+from emulator.world.server_commands import advance_time
+
+LOAD_TAG = "minecraft:load"
+TICK_TAG = "minecraft:tick"
+
+
+class Runtime:
+    def __init__(self, backend: Backend, packs, state: WorldState) -> None:
+        self.backend = backend
+        self.packs = packs
+        self.state = state
+        self.loaded = False
+        self.commands_per_tick: list[int] = []
+        self.commands_outside_ticks = 0  # API calls made between ticks
+        self.max_root_cost = 0  # the costliest root so far (quota headroom = limit - this)
+
+    def members(self, tag: str) -> list[str]:
+        return self.packs.resolve_tag(tag) if tag in self.packs.tags else []
+
+    def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
+        result = self.backend.run_root(function_id, context, arguments)
+        self.max_root_cost = max(self.max_root_cost, result.cost)
+        return result
+
+    def call(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
+        """An API call between ticks: one root."""
+        result = self.run_root(function_id, context, arguments)
+        self.commands_outside_ticks += result.cost
+        return result
+
+    def tick(self) -> int:
+        """Run one server tick; returns its cost (commands executed)."""
+        cost = 0
+        if not self.loaded:
+            self.loaded = True
+            cost += self._run_all(self.members(LOAD_TAG))
+        cost += self._run_all(self.members(TICK_TAG))
+        state = self.state
+        state.gametime += 1
+        while (entry := state.schedule.pop_due(state.gametime)) is not None:
+            if entry.is_tag:
+                cost += self._run_all(self.members(entry.function))
+            else:
+                cost += self.run_root(entry.function).cost
+        advance_time(state)
+        self.commands_per_tick.append(cost)
+        state.tick += 1
+        return cost
+
+    def _run_all(self, functions: list[str]) -> int:
+        return sum(self.run_root(f).cost for f in functions)

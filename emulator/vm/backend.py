@@ -1,0 +1,472 @@
+"""The numba backend: compiles the packs, drives the VM loop and serves its requests.
+
+:meth:`NumbaBackend.run_root` starts the VM at the root stub and resumes it after each request
+(host command, macro instantiation, frame stack growth, runtime error, full overflow buffer).
+Implements :class:`emulator.runtime.backend.Backend`.
+"""
+from __future__ import annotations
+
+from collections import Counter
+
+import numpy as np
+
+from emulator.vm import loop as vm
+from emulator.commands import entities as world_entities
+from emulator.runtime.backend import RootResult, report_quota_cut
+from emulator.vm.compiler import Compiler
+from emulator.vm.entity_arrays import EntityMirror
+from emulator.vm.host import Host, StoreTarget, resolves_target
+from emulator.vm.program import Program
+from emulator.reference.failure import CommandFailure
+from emulator.runtime.macros import MacroExpander
+from emulator.world.semantics import wrap32
+from emulator.world.state import Context, Frame, Overflow, WorldState
+from emulator.world import nbt_ops
+from emulator.world.errors import CommandFailure as WorldFailure
+from mcfunction_parser import ast
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Compound
+
+# The game's ExecutionContext stops a root when its queue would exceed 10,000,000 entries; each
+# frame here holds at least one pending entry, so deeper stacks than this cannot happen.
+MAX_DEPTH = 10_000_000
+
+_ERROR_TEXT = {
+    vm.ERR_DIV_ZERO: "Cannot divide by zero",
+    vm.ERR_UNKNOWN_OBJECTIVE: "Unknown scoreboard objective '{}'",
+    vm.ERR_UNKNOWN_FUNCTION: "Unknown function {}",
+    vm.ERR_EMPTY_TAG: "No functions in tag {}",
+    vm.ERR_MACRO_ARGS: "Function {} needs macro arguments",
+    vm.ERR_FORK_LIMIT: "Maximum number of contexts ({}) reached",
+}
+_SANITIZER_OPS = {**{v: k for k, v in vm.OPK_BY_SYMBOL.items()}, vm.SAN_ADD_CMD: "add", vm.SAN_REMOVE_CMD: "remove"}
+
+
+class NumbaBackend:
+    name = "numba"
+
+    def __init__(self) -> None:
+        self.program: Program | None = None
+        self.counting = True  # per-instruction counters; bench/bench_vm.py turns them off to time them
+        self.max_depth = MAX_DEPTH
+
+    # ------------------------------------------------------------------ loading
+    def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
+        self.packs = packs
+        self.state = state
+        self.sanitize = sanitize
+        self.program = Program()
+        self.mirror = EntityMirror(state.scoreboard)
+        self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
+                                 self.mirror)
+        self.compiler.compile_all()
+        self.macros = MacroExpander(packs.version)
+        self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
+        self.host = Host(state, packs.functions, packs.tags, self._report_here,
+                         self._host_overflow if sanitize else None)
+        self.regs = vm.new_registers()
+        self.frames = vm.new_frames(256)
+        self.ovf = vm.new_overflow_buffer()
+        self.counts = np.zeros(0, dtype=np.int64)  # cost charged per instruction
+        self.totals = np.zeros(0, dtype=np.int64)  # inclusive cost per function
+        self.active = np.zeros(0, dtype=np.int64)
+        self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
+        self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
+        self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
+        self.ctx_pos = np.zeros((16, 3), dtype=np.float64)  # per context: its position
+        self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
+        self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
+        self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
+        self.context_ids: dict[tuple, int] = {}
+        self.as_cache = np.full((vm.AS_CACHE_SIZE, 3), -1, dtype=np.int64)  # rows (context, slot, `as` context)
+        # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
+        # writes to what its stage resolved, whatever context the chain ends in
+        self.bindings: list[tuple] = []
+        self.store_targets: dict[object, StoreTarget] = {}  # key -> target; reset per root
+        self.fstack = vm.new_fork_stack()  # contexts waiting for the rest of their chain (see emulator.vm.loop)
+        self.coll = vm.new_fork_stack()  # contexts kept for their chain's final command
+        self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
+
+    # ------------------------------------------------------------------ running
+    def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
+        state = self.state
+        self.mirror.invalidate()  # the API may have changed entities between roots
+        self.contexts = []
+        self.context_ids = {}
+        self.as_cache[:, 0] = -1  # context indexes start again
+        self.bindings = []
+        self.store_targets = {}
+        self._context_index(context or Context(), ())
+        function = self.packs.functions.get(function_id)
+        if function is None:
+            state.error(f"Unknown function {function_id}")
+            return RootResult(0, None)
+        try:
+            fn = self._instance(function, arguments)
+        except CommandFailure as failure:
+            state.error(failure.message, (Frame(function_id, Loc(function.path, 1, 1)),))
+            return RootResult(0, None)
+        self.root_frame = Frame(function_id, Loc(function.path, max(function.lines, 1), 1))  # where a root ends
+        limit = state.gamerules.max_command_chain_length
+        r = self.regs
+        r[:] = 0
+        r[vm.R_PC] = Program.ROOT_PC
+        r[vm.R_QUOTA] = limit
+        r[vm.R_ALIVE] = 1
+        r[vm.R_CALLFN] = fn
+        r[vm.R_SANITIZE] = int(self.sanitize)
+        r[vm.R_COUNTING] = int(self.counting)
+        r[vm.R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
+        self.returned = False
+        cut = self._drive(limit)
+        self._flush_overflows()
+        result = None
+        if self.returned and r[vm.R_HAS]:
+            result = int(r[vm.R_VAL]) if r[vm.R_OK] else 0
+        return RootResult(int(limit - r[vm.R_QUOTA]), result, cut)
+
+    def _drive(self, limit: int) -> bool:
+        """Run the VM until the root is done; True when the quota (or the depth cap) cut it."""
+        sb = self.state.scoreboard
+        r = self.regs
+        mirror = self.mirror
+        while True:
+            code, starts, floats = self.program.arrays()
+            self._fit_counters(code.shape[0], starts.shape[0])
+            if mirror.stale or self.triggers.shape[0] != sb.alive.shape[0]:
+                self._load_entities()
+            sels, tests = mirror.selector_arrays()
+            status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
+                            self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
+                            self.ctx_entity, self.ctx_pos, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
+                            self.selbuf, self.logbuf, self.fstack, self.coll, self.as_cache)
+            if r[vm.R_EDIRTY]:
+                mirror.store()
+                r[vm.R_EDIRTY] = 0
+            log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
+            if r[vm.R_NLOG]:
+                self._write_log()
+            if status == vm.ST_DONE:
+                self.returned = True  # the root function came back (a cut may still be logged)
+                if r[vm.R_QUOTA] > 0:
+                    return False
+                # the queue checks the quota before polling, even when nothing is left
+                report_quota_cut(self.state, limit, (self.root_frame,))
+                return True
+            if status == vm.ST_CUT:
+                self._close_frames()
+                report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
+                return True
+            if status == vm.ST_HOST:
+                pc = int(r[vm.R_PC])
+                self._host_guarded(pc)
+                if self._may_change_entities(pc):
+                    mirror.invalidate()
+            elif status == vm.ST_FORK:
+                self._entity_contexts()
+            elif status == vm.ST_MACRO:
+                self._macro(int(r[vm.R_PC]))
+            elif status == vm.ST_GROWCOLL:
+                self.coll = _grown(self.coll)
+            elif status == vm.ST_REPEAT:
+                self._repeat()
+            elif status == vm.ST_ERROR:
+                self._runtime_error()
+            elif status == vm.ST_FLUSH:
+                if not r[vm.R_NOVF] and not log_full:  # one command reports more than the buffer holds
+                    self.ovf = vm.new_overflow_buffer(4 * self.ovf.shape[0])
+                self._flush_overflows()
+            elif status == vm.ST_GROW:
+                if not self._grow():
+                    self._close_frames()
+                    return True
+
+    def _write_log(self) -> None:
+        """The log lines OP_LOG queued, written by the host as a host op would (it never fails)."""
+        r = self.regs
+        n = int(r[vm.R_NLOG])
+        for index, ctx in self.logbuf[:n].tolist():
+            self.host.run_final(self.program.host_ops[index].node, self.contexts[ctx])
+        r[vm.R_NLOG] = 0
+
+    def _load_entities(self) -> None:
+        """Rebuild the entity arrays (and what else Python may have changed: trigger objectives)."""
+        sb = self.state.scoreboard
+        self.mirror.load(self.state)  # interns the entities' holders: may grow the scoreboard
+        need = 2 * self.mirror.order.shape[0] + 2
+        if self.selbuf.shape[0] < need:
+            self.selbuf = np.zeros(2 * need, dtype=np.int64)
+        self.triggers = np.zeros(sb.alive.shape[0], dtype=np.uint8)
+        self.triggers[:len(sb.criteria)] = [c == "trigger" for c in sb.criteria]
+
+    def _may_change_entities(self, pc: int) -> bool:
+        """A host op that may change entities or objectives: any final command or store; of the
+        stages, ``summon`` (the others only read them)."""
+        row = self.program.rows[pc]
+        return row[0] != vm.OP_HOSTSTAGE or isinstance(self.program.host_ops[row[1]].node, ast.ExSummon)
+
+    def _fit_counters(self, n_code: int, n_functions: int) -> None:
+        """Grow the per-instruction and per-function counters with the program (macro instances)."""
+        if self.counts.shape[0] < n_code:
+            self.counts = _extend(self.counts, n_code)
+        if self.totals.shape[0] < n_functions:
+            self.totals = _extend(self.totals, n_functions)
+            self.active = _extend(self.active, n_functions)
+
+    def _close_frames(self) -> None:
+        """A cut root never returns: credit its open frames' inclusive cost, as a return would."""
+        r = self.regs
+        quota = int(r[vm.R_QUOTA])
+        for i in range(int(r[vm.R_DEPTH]) - 1, -1, -1):
+            fn = int(self.frames[i, vm.F_FN])
+            self.active[fn] -= 1
+            if self.active[fn] == 0:
+                self.totals[fn] += int(self.frames[i, vm.F_QUOTA]) - quota
+
+    # ------------------------------------------------------------------ requests
+    def _host_guarded(self, pc: int) -> None:
+        """A bug in a host handler fails that one command with a diagnostic, never the run."""
+        try:
+            self._host(pc)
+        except Exception as error:  # noqa: BLE001 - the pack's run must go on
+            r = self.regs
+            self.state.error(f"internal error running this command: {type(error).__name__}: {error}",
+                             self.traceback(pc))
+            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = 1, 0, 0
+            r[vm.R_PC] = pc + 1
+
+    def _host(self, pc: int) -> None:
+        """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
+        opcode, index = self.program.rows[pc][0], self.program.rows[pc][1]
+        node = self.program.host_ops[index].node
+        r = self.regs
+        self._current_pc = pc
+        self.host_runs[pc] += 1
+        ctx = self.contexts[int(r[vm.R_CTX])]
+        r[vm.R_PC] = pc + 1
+        if opcode == vm.OP_HOST:
+            result = self.host.run_final(node, ctx)
+            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = int(result.has), int(result.ok), wrap32(result.value)
+        elif opcode == vm.OP_HOSTSTORE:
+            target = None
+            if resolves_target(node):
+                target = self.store_targets[dict(self.bindings[int(r[vm.R_CTX])])[id(node)]]
+            self.host.run_store(node, target, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
+        else:
+            self._stage(node, ctx)
+
+    def _context_index(self, ctx: Context, bindings: tuple) -> int:
+        """Intern a context with its store bindings (a loop re-running a stage must not grow the table)."""
+        key = (ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension, bindings)
+        index = self.context_ids.get(key)
+        if index is None:
+            index = self.context_ids[key] = len(self.contexts)
+            self.contexts.append(ctx)
+            self.bindings.append(bindings)
+            if index >= self.ctx_holder.shape[0]:
+                self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
+                self.ctx_entity = np.concatenate([self.ctx_entity, np.full(index + 1, -1, dtype=np.int64)])
+                self.ctx_pos = np.concatenate([self.ctx_pos, np.zeros((index + 1, 3))])
+            self.ctx_pos[index] = ctx.pos
+            entity = world_entities.executor(self.state, ctx)
+            self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
+            self.ctx_entity[index] = -1 if entity is None else entity.order
+            if entity is not None and entity.order not in self.mirror.entities:
+                self.mirror.invalidate()  # an executor the arrays do not hold yet (the API's as_=)
+        return index
+
+    def _bind(self, index: int, node, target: StoreTarget) -> tuple:
+        """Context ``index``'s bindings with ``node``'s store target replaced (a recursive chain
+        binds the same store again)."""
+        # holder names compare by value (a loop storing to the same holders reuses its context);
+        # an entity or block accessor by identity (kept alive in store_targets for this root)
+        key = target.value if isinstance(target.value, tuple) else id(target.value)
+        self.store_targets[key] = target
+        kept = tuple(b for b in self.bindings[index] if b[0] != id(node))
+        return kept + ((id(node), key),)
+
+    def _stage(self, node, ctx: Context) -> None:
+        """An execute stage run by the host: no context left, one, or a fork."""
+        r = self.regs
+        index = int(r[vm.R_CTX])
+        bindings = self.bindings[index]
+        if resolves_target(node):
+            target = self.host.run_store_stage(node, ctx)
+            made = None if target is None else [ctx]
+            if target is not None:
+                bindings = self._bind(index, node, target)
+        else:
+            made = self.host.run_stage(node, ctx)
+        if made is None:  # the stage failed: the command, or in a forked chain this context
+            r[vm.R_ALIVE] = 0
+            if not self.program.rows[int(r[vm.R_PC]) - 1][2]:
+                r[vm.R_PC] = r[vm.R_ABORT]
+        elif len(made) >= self.state.gamerules.max_command_fork_count:  # BuildContexts' fork limit
+            self._report_here(_ERROR_TEXT[vm.ERR_FORK_LIMIT].format(self.state.gamerules.max_command_fork_count),
+                              "error")
+            r[vm.R_ALIVE] = 0
+            r[vm.R_PC] = r[vm.R_ABORT]
+        elif not made:
+            r[vm.R_ALIVE] = 0
+        elif len(made) == 1:
+            if made[0] is not ctx or bindings is not self.bindings[index]:
+                r[vm.R_CTX] = self._context_index(made[0], bindings)
+        else:
+            self._fork([self._context_index(c, bindings) for c in made])
+
+    def _fork(self, contexts: list[int]) -> None:
+        """Run the rest of the chain for ``contexts[0]`` now, the others later (:func:`vm.fork_contexts`)."""
+        r = self.regs
+        made = np.array(contexts, dtype=np.int64)
+        while not vm.fork_contexts(r, self.fstack, self.coll, made, len(made), int(r[vm.R_DEPTH]), int(r[vm.R_PC])):
+            self.fstack = _grown(self.fstack)
+
+    def _entity_contexts(self) -> None:
+        """``execute as|at|positioned as|rotated as SEL`` run by the VM: a context per entity it found
+        (``selbuf[:R_NSEL]``)."""
+        r = self.regs
+        index = int(r[vm.R_CTX])
+        ctx, bindings = self.contexts[index], self.bindings[index]
+        kind = self.program.rows[int(r[vm.R_PC]) - 1][3]
+        made = []
+        for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist():
+            entity = self.mirror.entity(slot)
+            if kind:  # at, positioned as, rotated as: the entity may have moved since (no cache)
+                made.append(self._context_index(world_entities.entity_stage_context(kind, self.state, ctx, entity),
+                                                bindings))
+                continue
+            row = self.as_cache[vm.as_cache_row(index, slot)]
+            if row[0] != index or row[1] != slot:
+                row[:] = (index, slot, self._context_index(world_entities.context_as(self.state, ctx, entity), bindings))
+            made.append(int(row[2]))
+        if len(made) == 1:
+            r[vm.R_CTX] = made[0]
+        else:
+            self._fork(made)
+
+    def _repeat(self) -> None:
+        """``if function``: the isolated call's callback added this context once per return (each
+        context of a forked ``return`` in the function returns): the rest of the chain runs once per copy."""
+        r = self.regs
+        copies = int(r[vm.R_HAS])
+        r[vm.R_HAS] = 0
+        self._fork([int(r[vm.R_CTX])] * copies)
+
+    def _macro(self, pc: int) -> None:
+        call = self.program.macro_calls[self.program.rows[pc][1]]
+        r = self.regs
+        r[vm.R_PC] = pc + 1
+        function = self.packs.functions[call.function]
+        try:
+            fn = self._instance(function, self._arguments(call.command))
+        except CommandFailure as failure:
+            self.state.error(failure.message, self.traceback(pc))
+            fn = -1
+            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = 1, 0, 0
+        r[vm.R_CALLFN] = fn
+
+    def _instance(self, function: ast.Function, arguments) -> int:
+        """The function index to call: the function itself, or its compiled macro instance."""
+        if not function.is_macro:
+            return self.program.function_index[function.id]
+        commands = self.macros.instantiate(function, arguments)
+        # the expander caches one tuple per argument set and keeps it alive, so its id is a key
+        key = (function.id, id(commands))
+        fn = self.instances.get(key)
+        if fn is None:
+            instance_id = f"{function.id}#{len(self.instances)}"
+            fn = self.compiler.compile_function(instance_id, commands)
+            self.instances[key] = fn
+        return fn
+
+    def _arguments(self, cmd: ast.FunctionCall):
+        if cmd.with_source is None:
+            return cmd.arguments
+        if not isinstance(cmd.with_source, ast.StorageData):
+            raise CommandFailure("'function ... with entity|block' is not supported yet", report=True)
+        root = self.state.storage.get(cmd.with_source.id, Compound())
+        if cmd.with_path is None:
+            return root
+        try:
+            found = nbt_ops.get(root, cmd.with_path)
+        except WorldFailure as failure:  # e.g. nothing at the path
+            raise CommandFailure(failure.message, report=True) from None
+        if len(found) != 1 or not isinstance(found[0], dict):
+            raise CommandFailure(f"Expected a single compound at {cmd.with_path.text}", report=True)
+        return found[0]
+
+    def _runtime_error(self) -> None:
+        r = self.regs
+        code, arg, pc = int(r[vm.R_ERR]), int(r[vm.R_ERRARG]), int(r[vm.R_ERRPC])
+        if code == vm.ERR_UNKNOWN_OBJECTIVE:
+            operand = self.state.scoreboard.objectives[arg]
+        elif code in (vm.ERR_UNKNOWN_FUNCTION, vm.ERR_EMPTY_TAG, vm.ERR_MACRO_ARGS):
+            operand = self.program.names[arg]
+        else:
+            operand = arg
+        self.state.error(_ERROR_TEXT[code].format(operand), self.traceback(pc))
+
+    def _grow(self) -> bool:
+        depth = self.frames.shape[0]
+        if depth >= self.max_depth:
+            self.state.error(f"Command execution stopped due to command queue overflow (max {self.max_depth})",
+                             self.traceback(int(self.regs[vm.R_PC])))
+            return False
+        frames = vm.new_frames(min(self.max_depth, depth * 4))
+        frames[:depth] = self.frames
+        self.frames = frames
+        return True
+
+    def _flush_overflows(self) -> None:
+        n = int(self.regs[vm.R_NOVF])
+        for pc, kind, a, b, exact in self.ovf[:n].tolist():
+            self.state.overflows.append(Overflow(
+                self.state.tick, self.program.function_of(pc), self.program.locs[pc], _SANITIZER_OPS[kind],
+                a, b, exact, wrap32(exact)))
+        self.regs[vm.R_NOVF] = 0
+
+    # ------------------------------------------------------------------ reporting
+    def traceback(self, pc: int) -> tuple[Frame, ...]:
+        """Frames from the root to ``pc``: each function with the command it is running."""
+        depth = int(self.regs[vm.R_DEPTH])
+        frames = []
+        for i in range(depth):
+            fn = int(self.frames[i, vm.F_FN])
+            here = int(self.frames[i + 1, vm.F_CALLPC]) if i + 1 < depth else pc
+            loc = self.program.locs[here] if 0 <= here < len(self.program.locs) else None
+            frames.append(Frame(self.program.functions[fn], loc))
+        return tuple(f for f in frames if f.loc is not None)
+
+    def _host_overflow(self, op: str, a: int, b: int, exact: int) -> None:
+        pc = self._current_pc
+        self.state.overflows.append(Overflow(self.state.tick, self.program.function_of(pc), self.program.locs[pc],
+                                             op, a, b, exact, wrap32(exact)))
+
+    def _report_here(self, message: str, severity: str) -> None:
+        self.state.error(message, self.traceback(self._current_pc), severity)
+
+    def host_ops_run(self) -> list[tuple[str, ast.Command | ast.Subcommand, int]]:
+        """``(function, node, runs)`` of every host op Python ran since load (or since
+        ``host_runs.clear()``): what the VM could not do itself."""
+        return [(self.program.host_ops[self.program.rows[pc][1]].function,
+                 self.program.host_ops[self.program.rows[pc][1]].node, n) for pc, n in sorted(self.host_runs.items())]
+
+    def function_totals(self) -> dict[str, int]:
+        """Inclusive cost per function (callees included, outermost activations only)."""
+        return {self.program.functions[i]: int(c) for i, c in enumerate(self.totals) if c}
+
+    def line_counts(self) -> dict[tuple[str, int], int]:
+        out: Counter = Counter()
+        for pc in np.flatnonzero(self.counts):
+            loc = self.program.locs[pc]
+            if loc is not None:
+                out[(loc.path, loc.line)] += int(self.counts[pc])
+        return dict(out)
+
+
+def _grown(rows: np.ndarray) -> np.ndarray:
+    return np.concatenate([rows, np.zeros_like(rows)])
+
+
+def _extend(array: np.ndarray, size: int) -> np.ndarray:
+    return np.concatenate([array, np.zeros(size - array.shape[0], dtype=array.dtype)])

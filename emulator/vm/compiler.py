@@ -1,0 +1,443 @@
+"""AST -> bytecode for the numba VM.
+
+What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
+``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
+``@e @a @s`` with type, tag, scores, limit), ``tag SEL add|remove``, ``enable``; ``if|unless
+score`` on named holders and ``@s``, ``if|unless entity SEL``, ``as SEL``, ``store result|success
+score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``; ``if|unless function``,
+function calls and tags, every ``return`` form, and macro calls (instantiated by Python on first
+use). Everything else is a host op run by
+:mod:`emulator.vm.host`: a final command (``OP_HOST``: ``say``, ``schedule``, selectors ...), an
+execute stage (``OP_HOSTSTAGE``: ``as``, ``positioned``, ``if entity`` ...; it sets the
+context the rest of the chain runs in) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
+
+Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.loop`)::
+
+    scoreboard players add #a o 1      ADD h o 1                       (charges 1 itself)
+    function f                         CALL f                          (charges 1 itself)
+    execute if score #a o matches 1.. store result score #b o run function f
+                                       CMD ->end; IFMATCH; CHKOBJ; CALL f; STORE; end: ENDCMD
+    return run CMD                     CMD k ->none; ...CMD...; RETRES; none: RETNONE
+    execute as @e run return 1         CMD ->end; ASSTAGE sel; STAGESDONE; RETV 1; end: ENDCMD; RETPEND
+    execute as @e[tag=x] at @s run tp @s ~ ~1 ~
+                                       CMD ->end; ASSTAGE sel; ASSTAGE sel' at; STAGESDONE; TP sel' k 7; end: ENDCMD
+                                       (sel' is @s; floats[k:k+3] = 0, 1, 0; 7: all three relative)
+    execute as @e[distance=..2] run say hi
+                                       CMD ->end; HOSTSTAGE; STAGESDONE; HOST; end: ENDCMD
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+from emulator.vm import loop as vm
+from emulator.vm.program import HostOp, MacroCall, Program
+from emulator.world.state import Scoreboard
+from mcfunction_parser.ast import (
+    Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
+    Function, FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey, Return,
+    Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
+    StoreScore, Subcommand, Teleport, Tellraw, Vec3,
+)
+from emulator.world.semantics import INT_MAX, INT_MIN
+from emulator.world.source import world_coordinate
+from emulator.commands.entities import ENTITY_CONTEXT_STAGES
+
+_SET_OPS = {"set": vm.OP_SET, "add": vm.OP_ADD, "remove": vm.OP_REMOVE}
+
+
+class Compiler:
+    """Compiles functions into a :class:`Program`, interning names in ``scoreboard``.
+
+    ``functions``: id -> parsed function; ``resolve_tag``: tag id -> member function ids;
+    ``tags``: the ids of known tags (an unknown tag is a runtime failure, like the game).
+    """
+
+    def __init__(self, program: Program, scoreboard: Scoreboard, functions: dict[str, Function],
+                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, mirror=None) -> None:
+        self.program = program
+        self.mirror = mirror  # emulator.vm.entity_arrays.EntityMirror: selectors, tag bits (None: no entity forms)
+        self.sb = scoreboard
+        self.functions = functions
+        self.resolve_tag = resolve_tag
+        self.tags = tags
+        self.fn_id = ""  # the function being compiled
+        self.fn_index = -1
+        self.loc = None
+
+    # ------------------------------------------------------------------ functions
+    def compile_all(self) -> None:
+        for fid in self.functions:
+            self.program.intern_function(fid)
+        for fid, fn in self.functions.items():
+            if not fn.is_macro:
+                self.compile_function(fid, fn.commands)
+
+    def compile_function(self, fid: str, commands: tuple[Command, ...] | list[Command]) -> int:
+        """Compile a body under id ``fid`` (a macro instance gets its own id); returns its index."""
+        idx = self.program.intern_function(fid)
+        self.fn_id, self.fn_index = fid, idx
+        start = self.program.next_pc
+        for cmd in commands:
+            self.loc = cmd.loc
+            self.command(cmd)
+        self.emit(vm.OP_FEND)
+        self.program.set_start(idx, start)
+        return idx
+
+    def emit(self, op: int, *args: int) -> int:
+        return self.program.emit(op, *args, loc=self.loc, owner=self.fn_index)
+
+    # ------------------------------------------------------------------ commands
+    def command(self, cmd: Command) -> None:
+        if isinstance(cmd, Execute):
+            stages, final = flatten_execute(cmd)
+            self.chain(stages, final, returning=False)
+        elif isinstance(cmd, Return):
+            self.return_(cmd, [], in_chain=False)
+        elif isinstance(cmd, FunctionCall):
+            self.call(cmd, returning=False)
+        else:
+            self.final(cmd)
+
+    def final(self, cmd: Command) -> None:
+        """A command run once per context, charging 1 (rule 3)."""
+        if isinstance(cmd, ScoreSet) and self.vm_holders(cmd.targets):
+            h = self.holders(cmd.targets)
+            self.emit(_SET_OPS[cmd.action], h, self.objective(cmd.objective), cmd.value)
+        elif isinstance(cmd, ScoreReset) and self.vm_holders(cmd.targets):
+            h = self.holders(cmd.targets)
+            if cmd.objective is None:
+                self.emit(vm.OP_RESETALL, h)
+            else:
+                self.emit(vm.OP_RESET, h, self.objective(cmd.objective))
+        elif isinstance(cmd, ScoreGet) and _named(cmd.target):
+            self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
+        elif isinstance(cmd, ScoreOperation) and self.vm_holders(cmd.targets) and self.vm_holders(cmd.sources):
+            h, h2 = self.holders(cmd.targets), self.holders(cmd.sources, sources=True)
+            self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], h, self.objective(cmd.objective), h2,
+                      self.objective(cmd.source_objective))
+        elif isinstance(cmd, ScoreEnable) and self.vm_holders(cmd.targets):
+            h = self.holders(cmd.targets)
+            self.emit(vm.OP_ENABLE, h, self.objective(cmd.objective))
+        elif isinstance(cmd, TagCommand) and (tag := self.tag_operands(cmd)) is not None:
+            self.emit(vm.OP_TAG, tag[0], tag[1], int(cmd.action == "add"))
+        elif isinstance(cmd, Teleport) and (tp := self.teleport(cmd)) is not None:
+            self.emit(vm.OP_TP, *tp)
+        elif isinstance(cmd, DataGet) and (axis := _position_path(cmd.target, cmd.path)) is not None:
+            scale = -1 if cmd.scale is None else self.program.intern_float(cmd.scale)
+            self.emit(vm.OP_GETPOS, axis, scale)
+        elif isinstance(cmd, Tellraw) and (sel := self.selector(cmd.targets)) is not None:
+            self.host(vm.OP_LOG, cmd, sel)  # the host writes the line
+        else:
+            self.host(vm.OP_HOST, cmd)
+
+    def host(self, op: int, node: Command | Subcommand, *operands: int) -> None:
+        self.program.host_ops.append(HostOp(node, self.fn_id))
+        self.emit(op, len(self.program.host_ops) - 1, *operands)
+
+    # ------------------------------------------------------------------ execute chains
+
+    def chain(self, stages: list[Subcommand], final: Command | None, returning: bool,
+              outer_stores: tuple[StoreScore, ...] = ()) -> None:
+        """``CMD``, the stages, the final command, the stores, then the chain's end: ``ENDCMD``,
+        or for ``return run`` (``returning``) ``RETRES`` with the abort target ``RETNONE``."""
+        cmd_pc = self.emit(vm.OP_CMD, 0)
+        stores = list(outer_stores)
+        forked = False  # BuildContexts: after a fork, a stage's error fails only its context
+        for i, st in enumerate(stages):
+            last = final is None and i == len(stages) - 1
+            forked = forked or isinstance(st, _FORKS)
+            if isinstance(st, (IfScoreMatches, IfScore)) and not _vm_condition(st):
+                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
+            elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
+                self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
+            elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
+                self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
+            elif (axis := _position_store(st)) is not None and _context_kept(stages[i + 1:], final):
+                self.emit(vm.OP_POSSTAGE, 0, int(forked))
+                stores.append(_PositionStore(st, axis))
+            elif isinstance(st, IfScoreMatches):
+                lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
+                hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
+                self.emit(vm.OP_IFMATCH, self.holder(st.target), self.objective(st.objective), lo, hi, 0,
+                          int(st.negated), int(last))
+            elif isinstance(st, IfScore):
+                self.emit(vm.OP_IFSCORE, vm.CMP_BY_SYMBOL[st.op], self.holder(st.target), self.objective(st.objective),
+                          self.holder(st.source), self.objective(st.source_objective), int(st.negated), int(last))
+            elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
+                self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked))
+                stores.append(st)
+            elif isinstance(st, StoreScore) and _bare_self(st.targets) and _context_kept(stages[i + 1:], final):
+                self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked), 1)
+                stores.append(_SelfScoreStore(st))
+            elif isinstance(st, (StoreScore, StoreData, StoreBossbar)):
+                self.host(vm.OP_HOSTSTAGE, st, int(forked))  # resolves the store's target now, as the modifier does
+                stores.append(st)
+            elif isinstance(st, IfFunction):  # the calls, then the rest of the chain as a new entry
+                self.if_function(st)
+                self.emit(vm.OP_CONT)
+            else:  # a context modifier or a condition the VM does not evaluate
+                self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
+        collect = final is not None and not returning and any(isinstance(st, _MULTIPLY) for st in stages)
+        collect_pc = self.emit(vm.OP_STAGESDONE, 0) if collect else None
+        if isinstance(final, Return):
+            self.return_(final, stores, in_chain=True)
+            stores = []
+        elif isinstance(final, FunctionCall):
+            self.call(final, returning)
+        elif final is not None:
+            self.final(final)
+        self.stores(stores)
+        if returning:
+            self.emit(vm.OP_RETRES)
+            end = self.emit(vm.OP_RETNONE)
+        else:
+            end = self.emit(vm.OP_ENDCMD)
+            if isinstance(final, Return) and final.kind != "run":
+                self.emit(vm.OP_RETPEND)  # each context returned (or none did): now the function ends
+        self.program.patch(cmd_pc, 1, end)
+        if collect_pc is not None:
+            self.program.patch(collect_pc, 1, end)
+
+    def stores(self, stores: list) -> None:
+        """Apply the chain's stores to the result, in the order written (callbacks chain so)."""
+        for st in stores:
+            if isinstance(st, _SelfScoreStore):
+                self.emit(vm.OP_STORE, 0 if st.node.kind == "result" else 1, vm.HOLDER_SELF,
+                          self.objective(st.node.objective))
+            elif isinstance(st, _PositionStore):
+                self.emit(vm.OP_STOREPOS, st.axis, 0 if st.node.kind == "result" else 1,
+                          self.program.intern_float(st.node.scale))
+            elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
+                self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
+                          self.objective(st.objective))
+            else:
+                self.host(vm.OP_HOSTSTORE, st)
+
+    def if_function(self, st: IfFunction) -> None:
+        members = self.members(st.function, st.is_tag, abort=True)
+        if members is None:
+            return
+        if not members:  # an empty tag: the rest of the chain never runs
+            self.emit(vm.OP_STOP)
+            return
+        if any(self.functions[m].is_macro for m in members):
+            self.emit(vm.OP_FAIL, vm.ERR_MACRO_ARGS, self.name(st.function), 0, 1)
+            return
+        self.emit(vm.OP_IFFN_BEGIN)
+        steps = []
+        for m in members:
+            self.emit(vm.OP_CALL, self.program.intern_function(m))
+            steps.append(self.emit(vm.OP_IFFN_STEP, 0))
+        end = self.emit(vm.OP_IFFN_END, int(st.negated))
+        for pc in steps:
+            self.program.patch(pc, 1, end)
+
+    # ------------------------------------------------------------------ return
+    def return_(self, cmd: Return, stores: list[StoreScore], in_chain: bool) -> None:
+        if cmd.kind in ("value", "fail"):
+            ok, value = (1, cmd.value) if cmd.kind == "value" else (0, 0)
+            if stores:  # the return's callback feeds the chain's stores first
+                self.emit(vm.OP_RESULT, ok, value)
+                self.stores(stores)
+            if cmd.kind == "value":
+                self.emit(vm.OP_RETV, value, int(not in_chain))
+            else:
+                self.emit(vm.OP_RETFAIL, 0, int(not in_chain))
+            return
+        # return run CMD: a continuation entry in return mode; skipped if no context is left
+        gate = self.emit(vm.OP_JMPDEAD, 0) if in_chain else None
+        inner = cmd.command
+        stages, final = flatten_execute(inner) if isinstance(inner, Execute) else ([], inner)
+        self.chain(stages, final, returning=True, outer_stores=tuple(stores))
+        if gate is not None:
+            self.program.patch(gate, 1, self.program.next_pc)
+
+    # ------------------------------------------------------------------ calls
+    def call(self, cmd: FunctionCall, returning: bool) -> None:
+        members = self.members(cmd.function, cmd.is_tag, abort=False)
+        if members is None:
+            return
+        if not members:
+            self.emit(vm.OP_FAIL, vm.ERR_EMPTY_TAG, self.name("#" + cmd.function), 0, 0)
+            return
+        with_arguments = cmd.arguments is not None or cmd.with_source is not None
+        if not cmd.is_tag and (with_arguments or self.functions[members[0]].is_macro):
+            self.macro_call(cmd, members[0])
+            self.emit(vm.OP_CALLREG)
+            return
+        # a tag: each macro member is instantiated with the call's arguments (a plain one ignores
+        # them); one that cannot be fails the command and the later members are not queued
+        ends = []
+        if returning:
+            skips = []
+            for i, member in enumerate(members):
+                ends += self.member_call(member, cmd)
+                if i < len(members) - 1:
+                    skips.append(self.emit(vm.OP_RETIFHAS, 0))
+            for pc in skips + ends:
+                self.program.patch(pc, 1, self.program.next_pc)
+            return
+        if len(members) == 1:
+            ends += self.member_call(members[0], cmd)
+        else:
+            self.emit(vm.OP_TAGBEGIN)
+            for member in members:
+                ends += self.member_call(member, cmd)
+                self.emit(vm.OP_TAGACC)
+            self.emit(vm.OP_TAGEND)
+        for pc in ends:
+            self.program.patch(pc, 1, self.program.next_pc)
+
+    def member_call(self, member: str, cmd: FunctionCall) -> list[int]:
+        """Call one member of a tag; the pcs to patch with the call's end (after a failed instantiation)."""
+        if not self.functions[member].is_macro:
+            self.emit(vm.OP_CALL, self.program.intern_function(member))
+            return []
+        self.macro_call(cmd, member)
+        skip = self.emit(vm.OP_IFNOFN, 0)
+        self.emit(vm.OP_CALLREG)
+        return [skip]
+
+    def macro_call(self, cmd: FunctionCall, function: str) -> None:
+        self.program.macro_calls.append(MacroCall(cmd, function, self.fn_id))
+        self.emit(vm.OP_MACRO, len(self.program.macro_calls) - 1)
+
+    def members(self, function: str, is_tag: bool, abort: bool) -> list[str] | None:
+        """The functions a reference runs, or None after emitting the unknown-function failure."""
+        if is_tag:
+            if function in self.tags:
+                return self.resolve_tag(function)
+            self.emit(vm.OP_FAIL, vm.ERR_UNKNOWN_FUNCTION, self.name("#" + function), 0, int(abort))
+            return None
+        if function in self.functions:
+            return [function]
+        self.emit(vm.OP_FAIL, vm.ERR_UNKNOWN_FUNCTION, self.name(function), 0, int(abort))
+        return None
+
+    # ------------------------------------------------------------------ entities
+    def selector(self, target) -> int | None:
+        """The selector row of ``target`` when the VM evaluates it, else None."""
+        return None if self.mirror is None else self.mirror.selector(target)
+
+    def teleport(self, cmd: Teleport) -> tuple[int, int, int] | None:
+        """(selector, first of x y z in floats, relative-axis bits) of ``tp SEL X Y Z`` with world
+        coordinates and no rotation or facing; else None. Absolute integer x/z are centred (+0.5),
+        as Vec3Argument's ``WorldCoordinate.get`` does (emulator.world.source)."""
+        dest = cmd.destination
+        if (cmd.targets is None or not isinstance(dest, Vec3) or dest.is_local or cmd.rotation is not None
+                or cmd.facing is not None or cmd.facing_entity is not None):
+            return None
+        sel = self.selector(cmd.targets)
+        if sel is None:
+            return None
+        coords = (dest.x, dest.y, dest.z)
+        first = self.program.next_float
+        for axis, coord in enumerate(coords):
+            self.program.intern_float(world_coordinate(coord, 0.0, axis != 1) if coord.kind != "rel" else coord.value)
+        return sel, first, sum(1 << axis for axis, coord in enumerate(coords) if coord.kind == "rel")
+
+    def tag_operands(self, cmd: TagCommand) -> tuple[int, int] | None:
+        """(selector, tag bit) of ``tag SEL add|remove T`` when the VM can run it, else None."""
+        if cmd.action not in ("add", "remove") or (sel := self.selector(cmd.targets)) is None:
+            return None
+        bit = self.mirror.bit(cmd.name)
+        return None if bit is None else (sel, bit)
+
+    # ------------------------------------------------------------------ names
+    def holder(self, target) -> int:
+        """A name's holder id, or HOLDER_SELF for a bare ``@s`` (the VM reads the executor's)."""
+        if isinstance(target, Selector):
+            return vm.HOLDER_SELF
+        return self.sb.holder_id(target.name)
+
+    def holders(self, target, sources: bool = False) -> int | None:
+        """The holder operand of a name, ``@s`` or a selector the VM evaluates (its SELHOLDERS is
+        emitted now, so call this just before the op and only once it will be emitted); None for
+        the host."""
+        if _named(target):
+            return self.holder(target)
+        sel = self.selector(target)
+        if sel is None:
+            return None
+        self.emit(vm.OP_SELHOLDERS, sel, int(sources))
+        return vm.HOLDER_SELBUF
+
+    def vm_holders(self, target) -> bool:
+        return _named(target) or self.selector(target) is not None
+
+    def objective(self, name: str) -> int:
+        return self.sb.objective_id(name)
+
+    def name(self, text: str) -> int:
+        return self.program.intern_name(text)
+
+
+# Stages registered with ``fork`` in ExecuteCommand (the others are plain redirects)
+_FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)  # `summon` redirects
+# Stages that can make several contexts: their chains collect the contexts before the final command
+_MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
+
+
+class _PositionStore:
+    """A ``store ... entity @s Pos[axis] double S`` the VM runs (see :func:`_position_store`)."""
+
+    def __init__(self, node: StoreData, axis: int) -> None:
+        self.node = node
+        self.axis = axis
+
+
+class _SelfScoreStore:
+    """A ``store result|success score @s OBJ`` the VM runs (the chain keeps its executor)."""
+
+    def __init__(self, node: StoreScore) -> None:
+        self.node = node
+
+
+def _position_store(st) -> int | None:
+    """The axis of ``store result|success entity @s Pos[0|1|2] double S``, else None."""
+    if not (isinstance(st, StoreData) and st.type == "double"):
+        return None
+    return _position_path(st.target, st.path)
+
+
+def _position_path(target, path) -> int | None:
+    """The axis when ``target path`` is ``entity @s Pos[0|1|2]``, else None."""
+    if not (isinstance(target, EntityData) and _bare_self(target.target) and path is not None):
+        return None
+    nodes = path.nodes
+    if len(nodes) == 2 and nodes[0] == PathKey("Pos") and isinstance(nodes[1], PathIndex) and nodes[1].index in (0, 1, 2):
+        return nodes[1].index
+    return None
+
+
+def _context_kept(later: list[Subcommand], final) -> bool:
+    """No later stage (nor a ``return run`` chain) changes the executor: a store resolved at its
+    stage writes to the entity the chain ends with."""
+    return all(isinstance(st, (Condition, StoreScore, StoreData, StoreBossbar)) for st in later) and not (
+        isinstance(final, Return) and final.kind == "run")
+
+
+def _bare_self(target) -> bool:
+    return isinstance(target, Selector) and target.variable == "s" and not target.args
+
+
+def _named(holder) -> bool:
+    """A holder the VM resolves itself: a name, or a bare ``@s`` (through the context's holder)."""
+    return isinstance(holder, NameTarget) or _bare_self(holder)
+
+
+def _vm_condition(st: IfScore | IfScoreMatches) -> bool:
+    if isinstance(st, IfScore):
+        return _named(st.target) and _named(st.source)
+    return _named(st.target)
+
+
+def flatten_execute(cmd: Execute) -> tuple[list[Subcommand], Command | None]:
+    """``execute A run execute B run C`` -> stages A+B, final C (``run`` costs nothing)."""
+    stages: list[Subcommand] = []
+    final: Command | None = cmd
+    while isinstance(final, Execute):
+        stages.extend(final.subcommands)
+        final = final.run
+    return stages, final

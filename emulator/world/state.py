@@ -1,0 +1,482 @@
+"""The world state that both backends (numba VM and Python reference) act on.
+
+One :class:`WorldState` holds everything a run changes: the scoreboard, the schedule queue,
+gamerules, gametime, the log, runtime diagnostics, overflow reports and NBT storage.
+Backends mutate it in place; the runtime (:mod:`emulator.runtime.server`) owns the tick loop.
+
+Scoreboard layout (what the VM reads directly)
+- Holders and objectives are interned: a name gets a dense id once and keeps it for the run.
+  Interning never creates a score and never creates an objective.
+- ``values[h, o]`` is an ``int32`` matrix and ``present[h, o]`` a ``uint8`` mask (1 = the score
+  is set). An unset score has ``present == 0``; its ``values`` cell is meaningless.
+- ``locked[h, o]`` (``uint8``, same shape and growth as ``present``) is the trigger lock of the
+  score (Score.locked; 1 = locked). The game creates every score locked, so the invariant is
+  ``locked == 1`` wherever ``present == 0``: whoever clears ``present`` sets ``locked`` back to 1.
+  ``scoreboard players enable`` creates missing scores (0) and clears their ``locked``;
+  ``trigger`` fails unless the score is present and unlocked, then locks it again.
+- ``alive[o]`` (``uint8``) says whether objective ``o`` currently exists (``scoreboard objectives
+  add`` sets it, ``remove`` clears it and its column). Commands naming an objective that is not
+  alive fail ("Unknown scoreboard objective").
+- The arrays have spare capacity; interning past it reallocates them (``values``/``present``/
+  ``alive`` are then new arrays, so re-read the attributes after interning).
+
+Holder names are what the game uses: player and fake-player names (``#x``, ``$y``) as written,
+entities by their UUID string.
+"""
+from __future__ import annotations
+
+import heapq
+import itertools
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from emulator.world.blocks import BlockMap
+from emulator.world.bossbars import BossBars
+from emulator.world.entities import EntityStore
+from emulator.world.hash_order import OpenHashKeys
+from emulator.world.random_sequences import RandomSequences
+from mcfunction_parser.diagnostics import Loc
+
+# Criteria whose scores only the game sets (ObjectiveCriteria with readOnly=true).
+READ_ONLY_CRITERIA = frozenset({"health", "food", "air", "armor", "xp", "level"})
+
+_INITIAL_HOLDERS = 64
+_INITIAL_OBJECTIVES = 16
+
+
+class Scoreboard:
+    """Interned holders x objectives, int32 values plus a present mask."""
+
+    def __init__(self) -> None:
+        self.holders: list[str] = []
+        self.holder_ids: dict[str, int] = {}
+        self.objectives: list[str] = []
+        self.objective_ids: dict[str, int] = {}
+        self.criteria: list[str] = []
+        self.display_names: list[str | None] = []
+        self.values = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.int32)
+        self.present = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
+        self.locked = np.ones((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
+        self.alive = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
+        # the game's holder map (Scoreboard.playerScores) for the order of ``*``: see tracked_holders
+        self.tracked = OpenHashKeys(16, 0.5)
+        self._kept_empty: set[str] = set()  # tracked holders whose last score went with its objective
+
+    # ------------------------------------------------------------------ interning
+    def holder_id(self, name: str) -> int:
+        """The id of holder ``name``, interning it (and growing the arrays) if new."""
+        hid = self.holder_ids.get(name)
+        if hid is None:
+            hid = len(self.holders)
+            self.holders.append(name)
+            self.holder_ids[name] = hid
+            self._ensure_capacity(hid + 1, len(self.objectives))
+        return hid
+
+    def objective_id(self, name: str) -> int:
+        """The id of objective ``name``, interning it if new. Interning does not make it exist."""
+        oid = self.objective_ids.get(name)
+        if oid is None:
+            oid = len(self.objectives)
+            self.objectives.append(name)
+            self.objective_ids[name] = oid
+            self.criteria.append("dummy")
+            self.display_names.append(None)
+            self._ensure_capacity(len(self.holders), oid + 1)
+        return oid
+
+    def _ensure_capacity(self, n_holders: int, n_objectives: int) -> None:
+        cap_h, cap_o = self.values.shape
+        if n_holders <= cap_h and n_objectives <= cap_o:
+            return
+        new_h = max(cap_h, _grow(cap_h, n_holders))
+        new_o = max(cap_o, _grow(cap_o, n_objectives))
+        values = np.zeros((new_h, new_o), dtype=np.int32)
+        present = np.zeros((new_h, new_o), dtype=np.uint8)
+        values[:cap_h, :cap_o] = self.values
+        present[:cap_h, :cap_o] = self.present
+        locked = np.ones((new_h, new_o), dtype=np.uint8)
+        locked[:cap_h, :cap_o] = self.locked
+        alive = np.zeros(new_o, dtype=np.uint8)
+        alive[:cap_o] = self.alive
+        self.values, self.present, self.locked, self.alive = values, present, locked, alive
+
+    # ------------------------------------------------------------------ objectives
+    def exists(self, objective: str) -> bool:
+        oid = self.objective_ids.get(objective)
+        return oid is not None and bool(self.alive[oid])
+
+    def add_objective(self, name: str, criterion: str = "dummy", display_name: str | None = None) -> bool:
+        """``scoreboard objectives add``; False (command fails) when it already exists."""
+        oid = self.objective_id(name)
+        if self.alive[oid]:
+            return False
+        self.alive[oid] = 1
+        self.criteria[oid] = criterion
+        self.display_names[oid] = display_name
+        self.present[:, oid] = 0
+        self.locked[:, oid] = 1
+        return True
+
+    def remove_objective(self, name: str) -> bool:
+        """``scoreboard objectives remove``; drops every score; False when it does not exist."""
+        if not self.exists(name):
+            return False
+        oid = self.objective_ids[name]
+        n = len(self.holders)
+        had = np.flatnonzero(self.present[:n, oid])
+        self.alive[oid] = 0
+        self.present[:, oid] = 0
+        self.locked[:, oid] = 1
+        # Scoreboard.removeObjective empties PlayerScores but keeps the holders in the map
+        self._kept_empty.update(self.holders[h] for h in had if not self.present[h].any())
+        return True
+
+    def is_writable(self, objective: str) -> bool:
+        """False for read-only criteria (``health`` ...): set/add/operation on them fail."""
+        return self.criteria[self.objective_ids[objective]] not in READ_ONLY_CRITERIA
+
+    # ------------------------------------------------------------------ scores
+    def get(self, holder: str, objective: str) -> int | None:
+        """The score, or None when unset (or the holder/objective is unknown)."""
+        hid = self.holder_ids.get(holder)
+        oid = self.objective_ids.get(objective)
+        if hid is None or oid is None or not self.alive[oid] or not self.present[hid, oid]:
+            return None
+        return int(self.values[hid, oid])
+
+    def set(self, holder: str, objective: str, value: int) -> None:
+        """Set a score (value must already be a Java int). Creates the objective as ``dummy``
+        if it does not exist, so test harnesses can seed scores before ``#load`` runs."""
+        if not self.exists(objective):
+            self.add_objective(objective)
+        hid = self.holder_id(holder)
+        oid = self.objective_ids[objective]
+        self.values[hid, oid] = value
+        self.present[hid, oid] = 1
+        self.tracked.add(holder)  # getOrCreatePlayerInfo
+        self._kept_empty.discard(holder)
+
+    def reset(self, holder: str, objective: str | None = None) -> None:
+        """Unset one score, or every score of the holder when ``objective`` is None."""
+        hid = self.holder_ids.get(holder)
+        if hid is None:
+            return
+        if objective is None:
+            self.present[hid, :] = 0
+            self.locked[hid, :] = 1
+        elif objective in self.objective_ids:
+            oid = self.objective_ids[objective]
+            self.present[hid, oid] = 0
+            self.locked[hid, oid] = 1
+        # resetAllPlayerScores drops the holder; resetSinglePlayerScore once it has no score left
+        if objective is None or not self.present[hid].any():
+            self.tracked.remove(holder)
+            self._kept_empty.discard(holder)
+
+    def enable(self, holder: str, objective: str) -> bool:
+        """``scoreboard players enable`` for one holder: get-or-create the score (0) and unlock
+        it; True when it was locked (the command counts those and fails when there are none)."""
+        if self.get(holder, objective) is None:
+            self.set(holder, objective, 0)
+        cell = self.holder_ids[holder], self.objective_ids[objective]
+        was_locked = bool(self.locked[cell])
+        self.locked[cell] = 0
+        return was_locked
+
+    def is_unlocked(self, holder: str, objective: str) -> bool:
+        """True when the score exists and is unlocked: what ``trigger`` needs."""
+        if self.get(holder, objective) is None:
+            return False
+        return not self.locked[self.holder_ids[holder], self.objective_ids[objective]]
+
+    def lock(self, holder: str, objective: str) -> None:
+        self.locked[self.holder_ids[holder], self.objective_ids[objective]] = 1
+
+    def tracked_holders(self) -> list[str]:
+        """What ``*`` names (Scoreboard.getTrackedPlayers): the holders of the game's score map in
+        its hash order (:mod:`emulator.world.hash_order`), those whose scores went with a removed
+        objective included.
+
+        Python code changes scores through :meth:`set`/:meth:`reset`, which replay the map exactly.
+        The VM writes ``present`` directly, so the map is first brought up to date: holders the VM
+        emptied leave it, holders it gave a first score join it in interning order (in the game,
+        in the order of their first score; the two differ only for holders that collide in the
+        table and were created between two uses of ``*``)."""
+        n = len(self.holders)
+        rows = self.present[:n].any(axis=1)
+        for name in self.tracked.keys():
+            if not rows[self.holder_ids[name]] and name not in self._kept_empty:
+                self.tracked.remove(name)
+        for h in np.flatnonzero(rows):
+            self.tracked.add(self.holders[h])
+            self._kept_empty.discard(self.holders[h])
+        return self.tracked.keys()
+
+    def scores(self) -> dict[str, dict[str, int]]:
+        """``{objective: {holder: value}}`` for every set score of every existing objective."""
+        out: dict[str, dict[str, int]] = {}
+        n = len(self.holders)
+        for oid, name in enumerate(self.objectives):
+            if not self.alive[oid]:
+                continue
+            rows = np.flatnonzero(self.present[:n, oid])
+            out[name] = {self.holders[h]: int(self.values[h, oid]) for h in rows}
+        return out
+
+
+def _grow(capacity: int, needed: int) -> int:
+    while capacity < needed:
+        capacity *= 2
+    return capacity
+
+
+# ---------------------------------------------------------------------- execution context
+SERVER = -1  # executor index of the server (no entity)
+
+
+@dataclass(slots=True)
+class Context:
+    """One command source: who runs it and where.
+
+    ``executor`` is ``SERVER`` (-1) or the executing entity's ``Entity.order`` (looked up in
+    ``WorldState.executors``). ``pos`` is (x, y, z) doubles, ``rot`` (yaw, pitch) floats,
+    ``anchor`` ``"feet"``/``"eyes"``.
+    The server's default context is at world spawn (0, 0, 0 here) in the overworld.
+    """
+
+    executor: int = SERVER
+    pos: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    rot: tuple[float, float] = (0.0, 0.0)
+    anchor: str = "feet"
+    dimension: str = "minecraft:overworld"
+
+
+# ---------------------------------------------------------------------- schedule queue
+@dataclass(frozen=True, slots=True)
+class ScheduledEntry:
+    due: int  # gametime at which it runs
+    seq: int  # insertion order (TimerQueue's sequentialId)
+    function: str  # function or tag id, without '#'
+    is_tag: bool
+
+    @property
+    def name(self) -> str:
+        """The game's event name: the id, with '#' for a tag."""
+        return ("#" if self.is_tag else "") + self.function
+
+
+class ScheduleQueue:
+    """The game's TimerQueue: events keyed by (name, due time), run by due time then insertion.
+
+    Semantics (TimerQueue / ScheduleCommand, 1.21): ``replace`` removes every pending event of
+    that name first; ``append`` keeps them, but an event with the same name *and* the same due
+    time is not added twice.
+    """
+
+    def __init__(self) -> None:
+        self._heap: list[tuple[int, int, ScheduledEntry]] = []
+        self._live: dict[tuple[str, int], ScheduledEntry] = {}
+        self._seq = itertools.count(1)
+
+    def schedule(self, function_id: str, is_tag: bool, ticks: int, mode: str, gametime: int) -> int:
+        """Schedule ``function_id`` ``ticks`` (>= 1) after ``gametime``; returns the due time.
+
+        ``mode`` is ``"replace"`` or ``"append"``. (The command's own checks, such as ``0t``
+        being rejected, are the parser's and the backend's job.)
+        """
+        due = gametime + ticks
+        name = ("#" if is_tag else "") + function_id
+        if mode == "replace":
+            self.clear(function_id, is_tag)
+        if (name, due) not in self._live:
+            entry = ScheduledEntry(due, next(self._seq), function_id, is_tag)
+            self._live[(name, due)] = entry
+            heapq.heappush(self._heap, (due, entry.seq, entry))
+        return due
+
+    def clear(self, function_id: str, is_tag: bool) -> int:
+        """``schedule clear``: remove every pending event of that name; returns how many."""
+        name = ("#" if is_tag else "") + function_id
+        keys = [k for k in self._live if k[0] == name]
+        for k in keys:
+            del self._live[k]
+        return len(keys)
+
+    def pop_due(self, gametime: int) -> ScheduledEntry | None:
+        """The next event due at or before ``gametime`` (removed from the queue), else None.
+
+        Pop one at a time: an event run now may schedule or clear others.
+        """
+        while self._heap and self._heap[0][0] <= gametime:
+            _, _, entry = heapq.heappop(self._heap)
+            if self._live.get((entry.name, entry.due)) is entry:
+                del self._live[(entry.name, entry.due)]
+                return entry
+        return None
+
+    def pending(self) -> list[ScheduledEntry]:
+        """Pending events in run order."""
+        return sorted(self._live.values(), key=lambda e: (e.due, e.seq))
+
+
+# ---------------------------------------------------------------------- gamerules
+# Canonical key -> default. Aliases map other spellings (1.21.11 snake_case names) to it.
+GAMERULE_DEFAULTS: dict[str, str] = {
+    "maxCommandChainLength": "65536",
+    "maxCommandForkCount": "65536",
+    "commandModificationBlockLimit": "32768",
+    "functionCommandPermissionLevel": "2",
+    "sendCommandFeedback": "true",
+    "commandBlockOutput": "true",
+    "doDaylightCycle": "true",
+    "randomTickSpeed": "3",
+}
+GAMERULE_ALIASES: dict[str, str] = {
+    "max_command_sequence_length": "maxCommandChainLength",
+    "max_command_forks": "maxCommandForkCount",
+    "max_block_modifications": "commandModificationBlockLimit",
+    "send_command_feedback": "sendCommandFeedback",
+    "command_block_output": "commandBlockOutput",
+    "advance_time": "doDaylightCycle",
+    "random_tick_speed": "randomTickSpeed",
+}
+
+
+class Gamerules:
+    """Gamerule values as strings, looked up under either spelling (``minecraft:`` prefix ok)."""
+
+    def __init__(self) -> None:
+        self.values: dict[str, str] = dict(GAMERULE_DEFAULTS)
+
+    @staticmethod
+    def canonical(name: str) -> str:
+        name = name.removeprefix("minecraft:")
+        return GAMERULE_ALIASES.get(name, name)
+
+    def get(self, name: str) -> str | None:
+        return self.values.get(self.canonical(name))
+
+    def set(self, name: str, value: str) -> None:
+        self.values[self.canonical(name)] = value
+
+    def get_int(self, name: str) -> int:
+        return int(self.values[self.canonical(name)])
+
+    @property
+    def max_command_chain_length(self) -> int:
+        return self.get_int("maxCommandChainLength")
+
+    @property
+    def max_command_fork_count(self) -> int:
+        return self.get_int("maxCommandForkCount")
+
+
+# ---------------------------------------------------------------------- log, diagnostics, overflow
+@dataclass(frozen=True, slots=True)
+class LogEntry:
+    """One line of output: ``kind`` is ``"say"``, ``"tellraw"``, ``"chat"`` (a system message such
+    as ``random roll``'s), ``"info"`` (e.g. the quota cut
+    message "Command execution stopped due to limit") or ``"error"`` (a failed command's message)."""
+
+    tick: int
+    kind: str
+    text: str
+    loc: Loc | None = None
+    receivers: tuple[str, ...] = ()  # UUIDs (Java strings) of the players the message was sent to
+
+    def to_json(self) -> dict:
+        return {"tick": self.tick, "kind": self.kind, "text": self.text, "where": str(self.loc) if self.loc else None}
+
+
+@dataclass(frozen=True, slots=True)
+class Frame:
+    """One function on the call stack at the time of a runtime error; ``loc`` is the command
+    being run in it (for the innermost frame: the failing command)."""
+
+    function: str
+    loc: Loc
+
+
+@dataclass(frozen=True, slots=True)
+class RuntimeDiagnostic:
+    """A run-time problem (unknown function, stack overflow, quota cut, missing macro key,
+    division by zero ...). ``frames`` go from the root (outermost) to the failing command."""
+
+    tick: int
+    message: str
+    frames: tuple[Frame, ...] = ()
+    severity: str = "error"
+
+    def format(self) -> str:
+        where = str(self.frames[-1].loc) if self.frames else "<run>"
+        lines = [f"{where}: {self.severity}: {self.message} (tick {self.tick})"]
+        lines += [f"    in {f.function} at {f.loc}" for f in reversed(self.frames)]
+        return "\n".join(lines)
+
+    def to_json(self) -> dict:
+        return {
+            "tick": self.tick,
+            "severity": self.severity,
+            "message": self.message,
+            "traceback": [{"function": f.function, "where": str(f.loc)} for f in self.frames],
+        }
+
+
+@dataclass(frozen=True, slots=True)
+class Overflow:
+    """An arithmetic result that wrapped int32 (sanitizer): ``exact`` is the unwrapped value,
+    ``stored`` what the game stores. ``op`` is ``+= -= *= add remove`` ..."""
+
+    tick: int
+    function: str
+    loc: Loc
+    op: str
+    a: int
+    b: int
+    exact: int
+    stored: int
+
+    def to_json(self) -> dict:
+        return {
+            "tick": self.tick, "function": self.function, "where": str(self.loc), "op": self.op,
+            "a": self.a, "b": self.b, "exact": self.exact, "stored": self.stored,
+        }
+
+
+# ---------------------------------------------------------------------- the world
+@dataclass
+class WorldState:
+    """Everything a run mutates. ``tick`` counts server ticks run so far (the first tick is 0
+    while it runs); ``gametime`` is the world's game time (advanced once per tick, before the
+    scheduled functions of that tick run)."""
+
+    scoreboard: Scoreboard = field(default_factory=Scoreboard)
+    schedule: ScheduleQueue = field(default_factory=ScheduleQueue)
+    gamerules: Gamerules = field(default_factory=Gamerules)
+    gametime: int = 0
+    daytime: int = 0  # the overworld's day time (time set/add; advances with doDaylightCycle)
+    tick: int = 0
+    log: list[LogEntry] = field(default_factory=list)
+    diagnostics: list[RuntimeDiagnostic] = field(default_factory=list)
+    overflows: list[Overflow] = field(default_factory=list)
+    storage: dict = field(default_factory=dict)  # storage id -> nbt.Compound
+    # the world's entities (creation order, UUIDs, seeded RNG) and blocks: see emulator.commands.entities
+    entities: EntityStore = field(default_factory=EntityStore)
+    blocks: BlockMap = field(default_factory=BlockMap)
+    executors: dict = field(default_factory=dict)  # Context.executor id (Entity.order) -> Entity
+    selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
+    random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
+    bossbars: BossBars = field(default_factory=BossBars)
+    tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.vm.entity_arrays)
+
+    def emit(self, kind: str, text: str, loc: Loc | None = None, receivers: tuple[str, ...] = ()) -> None:
+        self.log.append(LogEntry(self.tick, kind, text, loc, receivers))
+
+    def broadcast(self, kind: str, text: str, loc: Loc | None = None) -> None:
+        """A message every player online receives (PlayerList.broadcastSystemMessage / broadcastChatMessage)."""
+        self.emit(kind, text, loc, tuple(p.uuid_string for p in self.entities.players()))
+
+    def error(self, message: str, frames: tuple[Frame, ...] = (), severity: str = "error") -> None:
+        self.diagnostics.append(RuntimeDiagnostic(self.tick, message, frames, severity))

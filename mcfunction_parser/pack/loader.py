@@ -1,0 +1,337 @@
+"""Loading data packs: pack.mcmeta, overlays, functions, function tags, advancement rewards and
+the ids of predicates.
+
+Several packs load together in order; a later pack overrides an earlier pack's function of the
+same id and its tag files merge on top (``replace`` honoured). All packs are read for one game
+version: ``mc_version`` when given, else the newest release any pack is written for (its
+``pack_format``, or its ``max_format`` when it has no ``pack_format``). That version's format
+decides the folder names (``function`` from 1.21, ``functions`` before; the other name is
+ignored by the game, and warned about here), which overlays apply (1.20.2+) and whether
+``filter.block`` hides earlier packs' files (1.19+). A pack is a folder or a .zip file.
+
+Nothing here raises on bad input: every problem is a :class:`Diagnostic`, and a problem in one
+file never stops the others.
+"""
+from __future__ import annotations
+
+import dataclasses
+import re
+import zipfile
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from mcfunction_parser.ast import Function, FunctionTag
+from mcfunction_parser.diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
+from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
+from mcfunction_parser.pack.text import PackPath, load_json, read_text, split_lines
+from mcfunction_parser.parse import parse_function
+from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
+from mcfunction_parser.pack.versions import (
+    FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, SINGULAR_FOLDERS_FORMAT, Format, Version, format_label,
+    pack_format_for_version, parse_mc_version, uses_singular_folders, version_for_pack_format,
+    version_label,
+)
+
+_NAMESPACE = re.compile(r"[a-z0-9_.-]+")
+_PATH = re.compile(r"[a-z0-9_./-]+")
+
+
+@dataclass
+class PackInfo:
+    """One loaded pack. ``supported`` is None when pack.mcmeta is missing or invalid."""
+
+    root: Path  # the folder or .zip file
+    pack_format: int | None
+    supported: FormatRange | None
+    description: str
+    overlays: list[str]  # overlay directories applied, in order
+    folder_style: str  # "function" (1.21+) or "functions"
+
+
+@dataclass
+class LoadedPacks:
+    packs: list[PackInfo]
+    version: Version  # the game version the functions were parsed for
+    functions: dict[str, Function]  # "ns:path" -> parsed function (macro lines kept as MacroLine)
+    tags: dict[str, FunctionTag]  # "ns:path" -> merged tag, nested tags not flattened
+    sources: dict[str, list[str]]  # file path -> lines (functions and tag files)
+    diagnostics: list[Diagnostic]
+    failed_tags: dict[str, FailedTag] = field(default_factory=dict)  # tags the game refuses to load
+    advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
+    predicates: set[str] = field(default_factory=set)  # ids of the predicate files
+    files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
+    # functions the game refuses whole because a line does not parse (ServerFunctionLibrary logs
+    # "Failed to load function" and leaves it out): parsed for ``dpemu check``, absent from
+    # ``functions``, so calling one fails as an unknown function and a tag requiring one fails
+    refused: dict[str, Function] = field(default_factory=dict)
+
+    @property
+    def format(self) -> Format:
+        return pack_format_for_version(self.version)
+
+    def resolve_tag(self, tag_id: str) -> list[str]:
+        """Function ids run by ``#tag_id``: flattened, ordered, deduplicated."""
+        return resolve_tag(self.tags, self.functions, tag_id)
+
+    @property
+    def errors(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == ERROR]
+
+    @property
+    def warnings(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == WARNING]
+
+    @property
+    def infos(self) -> list[Diagnostic]:
+        return [d for d in self.diagnostics if d.severity == INFO]
+
+
+@dataclass
+class _PackFiles:
+    """One pack's files after overlays: path relative to the pack -> the file providing it, and
+    that file's own path inside the pack (``overlay/data/...`` when an overlay provides it)."""
+
+    info: PackInfo
+    shown_root: str
+    files: dict[str, tuple[PackPath, str]]
+    target_label: str  # "1.21.4 (format 61)"
+
+    def shown(self, rel: str) -> str:
+        """How a path relative to the pack root appears in diagnostics."""
+        return rel if self.shown_root in ("", ".") else f"{self.shown_root.rstrip('/')}/{rel}"
+
+    def shown_file(self, rel: str) -> str:
+        """The shown path of the file providing ``rel`` (inside its overlay, if any)."""
+        return self.shown(self.files[rel][1])
+
+    def read(self, rel: str) -> PackPath:
+        return self.files[rel][0]
+
+
+def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> LoadedPacks:
+    """Load packs (folders or .zip files) in order; later ones override. ``mc_version``
+    ("1.21.4") overrides the packs' own version; an unknown or malformed one raises ValueError."""
+    diagnostics: list[Diagnostic] = []
+    opened = [(Path(p), str(p), _open_pack(Path(p), str(p), diagnostics)) for p in paths]
+    opened = [(path, shown, root) for path, shown, root in opened if root is not None]
+    metas = [read_pack_meta(root, shown, diagnostics) for _, shown, root in opened]
+    version = _target_version(mc_version, [m for m in metas if m is not None])
+    target = pack_format_for_version(version)
+    metas_read = sum((root / "pack.mcmeta").is_file() for _, _, root in opened)
+    result = LoadedPacks([], version, {}, {}, {}, diagnostics, files=metas_read)
+    packs = [_collect(path, root, shown, meta, target, version, diagnostics)
+             for (path, shown, root), meta in zip(opened, metas)]
+    result.packs = [p.info for p in packs]
+    if target >= FILTER_FORMAT:
+        _apply_filters(packs, metas)
+    _load_functions(packs, result)
+    _load_tags(packs, result)
+    _load_advancements(packs, result)
+    for pack in packs:
+        result.predicates.update(_resources(pack, ("predicate", "predicates"), ".json", diagnostics))
+    return result
+
+
+def _open_pack(path: Path, shown: str, diagnostics: list[Diagnostic]) -> PackPath | None:
+    """The pack's root: the folder itself, or the inside of a .zip file (as the game accepts)."""
+    if path.is_dir():
+        return path
+    if path.is_file() and zipfile.is_zipfile(path):
+        return zipfile.Path(path)
+    what = "is not a folder or a .zip file" if path.exists() else "does not exist"
+    diagnostics.append(Diagnostic(ERROR, f"pack {what}", shown))
+    return None
+
+
+def _target_version(mc_version: str | None, metas: list[PackMeta]) -> Version:
+    if mc_version is not None:
+        version = parse_mc_version(mc_version)
+        pack_format_for_version(version)  # raises ValueError for an unknown release
+        return version
+    wanted = [version_for_pack_format(_written_for(m)) for m in metas if m.supported is not None]
+    return max(wanted, default=LATEST_RELEASE)
+
+
+def _written_for(meta: PackMeta) -> Format:
+    return (meta.pack_format, 0) if meta.pack_format is not None else meta.supported.max
+
+
+def _collect(path: Path, root: PackPath, shown: str, meta: PackMeta | None, target: Format,
+             version: Version, diagnostics: list[Diagnostic]) -> _PackFiles:
+    """The pack's data files with the matching overlays laid over the base."""
+    label = f"{version_label(version)} (format {format_label(target)})"
+    if meta is not None and meta.supported is not None and target not in meta.supported:
+        diagnostics.append(Diagnostic(
+            WARNING, f"pack supports formats {_range_label(meta.supported)}, not {label}: the game "
+            "lists it as incompatible", f"{shown.rstrip('/')}/pack.mcmeta"))
+    files = _data_files(root, "")
+    applied = []
+    for overlay in meta.overlays if meta is not None and target >= OVERLAYS_FORMAT else []:
+        if target in overlay.formats:
+            files.update(_data_files(root / overlay.directory, f"{overlay.directory}/"))
+            applied.append(overlay.directory)
+    style = "function" if uses_singular_folders(target) else "functions"
+    info = PackInfo(path, meta.pack_format if meta else None, meta.supported if meta else None,
+                    meta.description if meta else "", applied, style)
+    return _PackFiles(info, shown, files, label)
+
+
+def _apply_filters(packs: list[_PackFiles], metas: list[PackMeta | None]) -> None:
+    """Each pack's ``filter.block`` hides matching files of the packs loaded before it."""
+    for index, meta in enumerate(metas):
+        if meta is None or meta.block is None:
+            continue
+        for earlier in packs[:index]:
+            for rel in [r for r in earlier.files if meta.block.blocks(*r.split("/", 2)[1:])]:
+                del earlier.files[rel]
+
+
+def _range_label(formats: FormatRange) -> str:
+    lo = format_label(formats.min)
+    hi = str(formats.max[0]) if formats.max[1] == ANY_MINOR else format_label(formats.max)
+    return lo if lo == hi else f"{lo}-{hi}"
+
+
+def _data_files(base: PackPath, prefix: str) -> dict[str, tuple[PackPath, str]]:
+    """``data/**`` files under ``base`` (the pack root or an overlay folder), keyed by path
+    relative to ``base``, with their path inside the pack (``prefix`` + key)."""
+    found: dict[str, tuple[PackPath, str]] = {}
+    stack = [(base / "data", "data")]
+    seen: set[Path] = set()  # folders already walked: a symbolic link loop is walked once
+    while stack:
+        folder, rel = stack.pop()
+        if not folder.is_dir():
+            continue
+        if isinstance(folder, Path):
+            if folder.resolve() in seen:
+                continue
+            seen.add(folder.resolve())
+        for child in folder.iterdir():
+            child_rel = f"{rel}/{child.name}"
+            if child.is_dir():
+                stack.append((child, child_rel))
+            elif child.is_file():
+                found[child_rel] = (child, prefix + child_rel)
+    return dict(sorted(found.items()))
+
+
+# ----------------------------------------------------------------------------- resources
+
+
+def _resources(pack: _PackFiles, folders: tuple[str, str], suffix: str,
+               diagnostics: list[Diagnostic]) -> dict[str, str]:
+    """``{resource id: relative file}`` for files in ``data/<ns>/<folder>/`` ending in ``suffix``.
+
+    ``folders`` is (1.21+ name, older name); files in the name the game ignores are warned about
+    once per folder and skipped; invalid names are warned about and skipped, as the game does.
+    """
+    read, ignored = folders if pack.info.folder_style == "function" else folders[::-1]
+    depth = read.count("/") + 1  # path segments of the folder name
+    found: dict[str, str] = {}
+    ignored_count: dict[str, int] = {}  # "data/<ns>" -> files in its ignored folder
+    for rel in pack.files:
+        parts = rel.split("/")
+        if len(parts) < 3 + depth or not rel.endswith(suffix):
+            continue
+        folder = "/".join(parts[2:2 + depth])
+        if folder == ignored:
+            ns_dir = f"data/{parts[1]}"
+            ignored_count[ns_dir] = ignored_count.get(ns_dir, 0) + 1
+        elif folder == read:
+            path = "/".join(parts[2 + depth:])[: -len(suffix)]
+            resource_id = _resource_id(parts[1], path, pack.shown_file(rel), diagnostics)
+            if resource_id is not None:
+                found[resource_id] = rel
+    # A pack declaring formats on both sides of the rename keeps both folders on purpose.
+    spans = pack.info.supported is not None and pack.info.supported.min < SINGULAR_FOLDERS_FORMAT \
+        <= pack.info.supported.max
+    for ns_dir, count in ignored_count.items():
+        diagnostics.append(Diagnostic(
+            INFO if spans else WARNING, f"{count} file(s) in '{ns_dir}/{ignored}/' ignored: "
+            f"{pack.target_label} reads '{ns_dir}/{read}/' instead", pack.shown(f"{ns_dir}/{ignored}")))
+    return found
+
+
+def _resource_id(namespace: str, path: str, shown: str, diagnostics: list[Diagnostic]) -> str | None:
+    if _NAMESPACE.fullmatch(namespace) and _PATH.fullmatch(path):
+        return f"{namespace}:{path}"
+    diagnostics.append(Diagnostic(
+        WARNING, f"ignored by the game: invalid resource location '{namespace}:{path}' "
+        "(allowed: a-z 0-9 _ . - and / in paths)", shown))
+    return None
+
+
+def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    chosen: dict[str, tuple[_PackFiles, str]] = {}
+    for pack in packs:
+        for fid, rel in _resources(pack, ("function", "functions"), ".mcfunction",
+                                   result.diagnostics).items():
+            if fid in chosen:
+                earlier = chosen[fid][0].shown_file(chosen[fid][1])
+                result.diagnostics.append(Diagnostic(
+                    INFO, f"function {fid} overrides {earlier} from an earlier pack",
+                    pack.shown_file(rel)))
+            chosen[fid] = (pack, rel)
+    for fid, (pack, rel) in chosen.items():
+        loaded = _load_function(pack, rel, fid, result)
+        if loaded is not None:
+            function, parses = loaded
+            (result.functions if parses else result.refused)[fid] = function
+
+
+def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> tuple[Function, bool] | None:
+    """The parsed function and whether every line parses (else the game refuses it), or None
+    when the file cannot be read."""
+    shown = pack.shown_file(rel)
+    text = read_text(pack.read(rel), shown, result.diagnostics, json_file=False)
+    result.files += 1
+    if text is None:
+        return None
+    lines = result.sources[shown] = split_lines(text)
+    try:
+        # re-joined with "\n": the parser sees the game's lines (which also end at a lone \r)
+        text = "".join(line + "\n" for line in lines)
+        function, diagnostics = parse_function(text, shown, fid, result.version)
+    except Exception as exc:  # a parser bug must not stop the other functions
+        result.diagnostics.append(Diagnostic(
+            ERROR, f"internal error while parsing this file: {type(exc).__name__}: {exc}", shown))
+        return None
+    result.diagnostics.extend(diagnostics)
+    parses = not any(d.severity == ERROR for d in diagnostics)
+    return dataclasses.replace(function, pack=str(pack.info.root)), parses
+
+
+def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    for pack in packs:
+        for tag_id, rel in _resources(pack, ("tags/function", "tags/functions"), ".json",
+                                      result.diagnostics).items():
+            shown = pack.shown_file(rel)
+            result.files += 1
+            parsed = read_tag_file(pack.read(rel), shown, result.diagnostics)
+            if parsed is None:
+                continue
+            doc, replace, entries = parsed
+            result.sources[shown] = split_lines(doc.text)
+            merge_tag(result.tags, tag_id, replace, entries)
+    result.failed_tags = validate_tags(result.tags, result.functions, result.sources,
+                                       result.diagnostics, result.refused)
+
+
+def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """Record ``rewards.function`` of every advancement (a later pack's file of the same id
+    replaces an earlier one): those functions are reachable."""
+    chosen: dict[str, tuple[_PackFiles, str]] = {}
+    for pack in packs:
+        for advancement_id, rel in _resources(pack, ("advancement", "advancements"), ".json",
+                                              result.diagnostics).items():
+            chosen[advancement_id] = (pack, rel)
+    for pack, rel in chosen.values():
+        result.files += 1
+        doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
+        rewards = doc.value.get("rewards") if doc is not None and isinstance(doc.value, dict) else None
+        reward = rewards.get("function") if isinstance(rewards, dict) else None
+        if isinstance(reward, str):
+            result.sources[doc.path] = split_lines(doc.text)
+            loc = doc.loc_at(max(doc.find_string(reward, doc.find_string("rewards")), 0))
+            result.advancement_rewards.setdefault(normalise_id(reward), []).append(loc)

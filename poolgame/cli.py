@@ -1,0 +1,101 @@
+"""``dpemu shot``: play one pool shot on the pool datapack and print where every ball went."""
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import click
+
+from poolgame.shot import BREAK, DEFAULT_PACK, Shot, ShotResult, missing_functions, new_table, play
+
+BALL_NAMES = {0: "cue"}
+
+
+def _tip(text: str) -> tuple[float, float]:
+    try:
+        x, y = (float(v) for v in text.split(","))
+    except ValueError:
+        raise click.BadParameter(f"{text!r}: expected X,Y (fractions of the ball radius, e.g. 0.2,-0.3)",
+                                 param_hint="--tip") from None
+    return x, y
+
+
+def _shot(break_: bool, angle, speed, tip, elevation) -> Shot:
+    aimed = [o for o, v in (("--angle", angle), ("--speed", speed), ("--tip", tip), ("--elevation", elevation))
+             if v is not None]
+    if break_:
+        if aimed:
+            raise click.UsageError(f"--break plays the break shot; it takes no {', '.join(aimed)}")
+        return BREAK
+    if speed is None:
+        raise click.UsageError("give --break, or a shot with at least --speed M/S")
+    tip_x, tip_y = _tip(tip) if tip is not None else (0.0, 0.0)
+    shot = Shot(angle or 0.0, speed, tip_x, tip_y, elevation or 0.0)
+    too_big = [k for k, v in shot.macro_arguments().items() if abs(v) >= 2 ** 31]
+    if too_big:
+        raise click.UsageError(f"{', '.join(too_big)}: far outside any shot the pack accepts")
+    return shot
+
+
+@click.command("shot")
+@click.argument("pack", required=False, type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.option("--break", "break_", is_flag=True, help="The break: full power from the head spot at the rack's apex.")
+@click.option("--angle", type=float, metavar="DEG", help="Aim, degrees counter-clockwise from the table's long axis (+x) towards +z.")
+@click.option("--speed", type=float, metavar="M/S", help="Cue speed (the pack accepts 0.001..6.5).")
+@click.option("--tip", metavar="X,Y", help="Tip offset right and up, fractions of the ball radius (X^2 + Y^2 <= 0.25).")
+@click.option("--elevation", type=float, metavar="DEG", help="Cue elevation, degrees (0..89).")
+@click.option("--max-ticks", default=2000, show_default=True, type=click.IntRange(min=1))
+@click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
+@click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
+@click.option("--json", "json_out", metavar="FILE|-", help="Write the outcome as JSON.")
+def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitize, json_out) -> None:
+    """Set up a table with the pool datapack PACK (default: the repository's datapack/), rack,
+    strike, and emulate until the table is at rest. Exit status 1 when the pack refuses the shot,
+    the table does not come to rest within --max-ticks, or the sanitizer finds a wrapped value."""
+    chosen = _shot(break_, angle, speed, tip, elevation)
+    pack = pack or DEFAULT_PACK
+    if not pack.is_dir():
+        raise click.UsageError(f"no pool datapack at {pack}: give the pack's folder as PACK")
+    emu = new_table(pack, backend, sanitize)
+    for diag in emu.load_diagnostics:
+        if diag.severity == "error":
+            click.echo(diag.format(), err=True)
+    missing = missing_functions(emu)
+    if missing:
+        click.echo(f"{pack}: not a pool datapack (no {', '.join(missing)})", err=True)
+        sys.exit(1)
+    result = play(emu, chosen, max_ticks)
+    _print(result, to_stderr=json_out == "-")
+    if json_out:
+        text = json.dumps(result.to_json(), indent=2)
+        if json_out == "-":
+            click.echo(text)
+        else:
+            Path(json_out).write_text(text + "\n")
+    sys.exit(1 if result.refused or not result.at_rest or result.overflows else 0)
+
+
+def _print(result: ShotResult, to_stderr: bool) -> None:
+    def out(line: str = "") -> None:
+        click.echo(line, err=to_stderr)
+
+    for message in result.refused:
+        out(message)
+    if result.refused:
+        return
+    out(f"{'ball':>4}  {'x mm':>8}  {'z mm':>8}  outcome")
+    for ball in result.balls:
+        if ball.pocketed:
+            outcome = f"pocketed at tick {ball.tick}"
+        else:
+            outcome = f"stopped at tick {ball.tick}" if ball.tick is not None else "did not move"
+        out(f"{BALL_NAMES.get(ball.id, ball.id):>4}  {ball.x_mm:8.1f}  {ball.z_mm:8.1f}  {outcome}")
+    rest = "table at rest" if result.at_rest else "table still moving (--max-ticks reached)"
+    out(f"{rest} after {result.ticks} ticks ({result.carried} in slow motion: a burst of events carried "
+        f"over); commands per tick mean {result.commands_mean:.0f}, max {result.commands_max}; {result.seconds:.2f} s")
+    for overflow in result.overflows:
+        out(f"{overflow.loc}: overflow: {overflow.a} {overflow.op} {overflow.b} = {overflow.exact}, "
+            f"stored {overflow.stored} (tick {overflow.tick})")
+    for diag in result.diagnostics:
+        out(diag.format())

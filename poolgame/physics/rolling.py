@@ -1,0 +1,22 @@
+"""Rolling (pool-models 1.2 with the rolling coefficient, errata): a straight line with constant
+deceleration mu_r g along v_hat; w = v throughout."""
+from __future__ import annotations
+
+import numpy as np
+
+from poolgame.physics.constants import ROLL_DECELERATION
+
+
+def roll_duration(v: np.ndarray) -> float:
+    return float(np.linalg.norm(v)) / ROLL_DECELERATION
+
+
+def roll_acceleration(v: np.ndarray) -> np.ndarray:
+    speed = float(np.linalg.norm(v))
+    return np.zeros(2) if speed == 0.0 else -ROLL_DECELERATION * v / speed
+
+
+def roll(r: np.ndarray, v: np.ndarray, t: float):
+    """State after rolling for t <= the roll duration: (r, v)."""
+    a = roll_acceleration(v)
+    return r + v * t + 0.5 * a * t * t, v + a * t

@@ -1,0 +1,176 @@
+"""One pool shot on the pool datapack in the emulator: set up a table, rack, strike through the
+pack's public API (``pool:api/shot``), tick until the table is at rest, and report where every
+ball went. ``dpemu shot`` (poolgame/cli.py) prints it; the datapack tests and the bench
+drive the same functions.
+"""
+from __future__ import annotations
+
+import math
+import random
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+from emulator.api import Emulator
+from emulator.world.text import plain_text
+
+DEFAULT_PACK = Path(__file__).resolve().parents[1] / "datapack"
+TABLE_CORNER = (0.0, 64.0, 0.0)   # where pool:table/setup runs (the playing area's corner)
+POCKETED = 3                      # pool.state of a ball that left play (pool:load's header)
+REQUIRED_FUNCTIONS = ("pool:table/setup", "pool:api/shot")
+LISTENER = "dpemu"                # the simulated player who watches (and reads the chat)
+
+
+@dataclass(frozen=True)
+class Shot:
+    """A cue shot in player units; ``macro_arguments`` turns it into pool:api/shot's integers."""
+
+    angle: float = 0.0            # degrees, counter-clockwise from the table's +x towards +z
+    speed: float = 6.5            # cue speed, m/s
+    tip_x: float = 0.0            # tip offset right of centre, fraction of the ball radius
+    tip_y: float = 0.0            # tip offset above centre, fraction of the ball radius
+    elevation: float = 0.0        # cue butt raised, degrees
+
+    def macro_arguments(self) -> dict[str, int]:
+        return {"angle": round(self.angle * 100), "speed": round(self.speed * 1000),
+                "tip_x": round(self.tip_x * 1000), "tip_y": round(self.tip_y * 1000),
+                "elevation": round(self.elevation * 100)}
+
+
+# The break: full power (the trigger's 100 %) from the head spot straight at the apex ball.
+BREAK = Shot(angle=0.0, speed=6.5)
+
+
+def random_shot(rng: random.Random, k: int) -> Shot:
+    """The k-th shot of the overflow sweep: every tenth the break, else any aim, speed up to full
+    power, a tip offset inside the miscue limit, a level or raised cue."""
+    if k % 10 == 0:
+        return BREAK
+    # radius 0.499: the tip's components are rounded to 1/1000, which must not pass the limit 0.5
+    r, phi = 0.499 * math.sqrt(rng.random()), rng.uniform(0, 2 * math.pi)
+    return Shot(angle=rng.uniform(-180, 180), speed=rng.uniform(0.05, 6.5), tip_x=round(r * math.cos(phi), 3),
+                tip_y=round(r * math.sin(phi), 3), elevation=rng.choice([0.0, rng.uniform(0, 30)]))
+
+
+@dataclass
+class BallOutcome:
+    id: int
+    x_mm: float                   # final centre, table frame (from the corner), millimetres
+    z_mm: float
+    pocketed: bool
+    tick: int | None              # pocketed or stopped at this tick (1 = the first after the strike); None: never moved
+
+
+@dataclass
+class ShotResult:
+    refused: list[str]            # the pack's chat messages when it refused the shot
+    at_rest: bool
+    ticks: int
+    commands_per_tick: list[int]
+    seconds: float                # wall time of the ticks after the strike
+    balls: list[BallOutcome] = field(default_factory=list)
+    overflows: list = field(default_factory=list)
+    diagnostics: list = field(default_factory=list)
+    carried: int = 0              # ticks that ended mid physics tick ($carry pool.game: slow motion)
+
+    @property
+    def commands_mean(self) -> float:
+        return sum(self.commands_per_tick) / len(self.commands_per_tick) if self.commands_per_tick else 0.0
+
+    @property
+    def commands_max(self) -> int:
+        return max(self.commands_per_tick, default=0)
+
+    def to_json(self) -> dict:
+        return {"refused": self.refused, "at_rest": self.at_rest, "ticks": self.ticks, "carried": self.carried,
+                "commands_per_tick": {"mean": self.commands_mean, "max": self.commands_max,
+                                      "each": self.commands_per_tick},
+                "seconds": self.seconds, "balls": [asdict(b) for b in self.balls],
+                "overflows": [o.to_json() for o in self.overflows],
+                "diagnostics": [d.to_json() for d in self.diagnostics]}
+
+
+def missing_functions(emu: Emulator) -> list[str]:
+    """The pool API functions the loaded packs lack (empty for a pool datapack)."""
+    return [f for f in REQUIRED_FUNCTIONS if f not in emu.packs.functions]
+
+
+def new_table(pack: str | Path = DEFAULT_PACK, backend: str = "numba", sanitize: bool = False) -> Emulator:
+    """An emulator with ``pack`` loaded, its load tick run, a racked table at TABLE_CORNER and a
+    player (LISTENER) watching."""
+    emu = Emulator(backend=backend, sanitize=sanitize)
+    emu.load(pack)
+    if missing_functions(emu):
+        return emu
+    return _set_up(emu)
+
+
+def reset_table(emu: Emulator) -> Emulator:
+    """A fresh world on ``emu``'s already loaded pack (no reparse, no recompile): its load tick run
+    and a racked table at TABLE_CORNER, as :func:`new_table` leaves it. Many shots on one emulator
+    start each from here, so that no score or entity of an earlier shot slows the next."""
+    emu.load_parsed(emu.packs)
+    return _set_up(emu)
+
+
+def _set_up(emu: Emulator) -> Emulator:
+    emu.tick()                                         # the load tick
+    emu.call("pool:table/setup", at=TABLE_CORNER)
+    # a player at the table, added after the balls: tellraw @a fails with nobody online (as in
+    # the game), and the pack's refusals are read from the chat
+    emu.add_player(LISTENER, TABLE_CORNER, gamemode="spectator")
+    return emu
+
+
+def ball_holders(emu: Emulator) -> dict[int, str]:
+    """Ball id -> its entity's score holder (UUID), found once by selector."""
+    return {e["scores"]["pool.id"]: e["uuid"] for e in emu.entities("@e[tag=pool.ball]")}
+
+
+def ball_states(emu: Emulator, holders: dict[int, str] | None = None) -> dict[int, tuple[int, int, int]]:
+    """Ball id -> (x um, z um, pool.state) from the balls' scores (``holders`` from
+    :func:`ball_holders` saves running a selector each time)."""
+    holders = holders if holders is not None else ball_holders(emu)
+    return {i: (emu.score(u, "pool.x"), emu.score(u, "pool.z"), emu.score(u, "pool.state"))
+            for i, u in holders.items()}
+
+
+def strike(emu: Emulator, shot: Shot) -> list[str]:
+    """Play ``shot`` through pool:api/shot; returns the refusal messages (empty when struck)."""
+    first = len(emu.log)
+    result = emu.call("pool:api/shot", arguments=shot.macro_arguments())
+    if result == 1:
+        return []
+    return [plain_text(entry.text) for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
+
+
+def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
+    """Strike and tick until ``$resting pool.game`` is 1 or ``max_ticks`` ran."""
+    refused = strike(emu, shot)
+    holders = ball_holders(emu)
+    start = ball_states(emu, holders)
+    if refused:
+        return ShotResult(refused, emu.score("$resting", "pool.game") == 1, 0, [], 0.0, _outcomes(start, {}), list(emu.overflows),
+                          list(emu.diagnostics))
+    last_change: dict[int, int] = {}
+    previous, first_tick = start, len(emu.commands_per_tick)
+    started = time.perf_counter()
+    at_rest, carried = False, 0
+    for tick in range(1, max_ticks + 1):
+        emu.tick()
+        carried += emu.score("$carry", "pool.game") == 1
+        now = ball_states(emu, holders)
+        last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
+        previous = now
+        if emu.score("$resting", "pool.game") == 1:
+            at_rest = True
+            break
+    seconds = time.perf_counter() - started
+    costs = emu.commands_per_tick[first_tick:]
+    return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(previous, last_change),
+                      list(emu.overflows), list(emu.diagnostics), carried)
+
+
+def _outcomes(states: dict[int, tuple[int, int, int]], last_change: dict[int, int]) -> list[BallOutcome]:
+    return [BallOutcome(i, x / 1000, z / 1000, state == POCKETED, last_change.get(i))
+            for i, (x, z, state) in sorted(states.items())]

@@ -1,0 +1,304 @@
+"""Datapack writing helpers and hypothesis strategies for random scoreboard programs.
+
+``write_pack`` turns ``{function id: text}`` into a 1.21 pack folder. ``programs()`` draws a
+:class:`Program`: several functions in namespace ``t`` that set, add, operate on, compare, store,
+return, say and call each other (``function``, ``execute if|unless function``, ``return run``),
+plus leaf functions reached through the tag ``#t:leaves``, a macro function ``t:mac`` (also in the
+tag ``#t:macs``) and one
+counted self-recursive loop. Calls only go to later functions, leaves, the macro or the loop, so
+every program ends.
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+from hypothesis import strategies as st
+
+INT_MIN, INT_MAX = -(2**31), 2**31 - 1
+
+HOLDERS = ("#a", "#b", "#c", "$d", "e")
+OBJECTIVES = ("o", "p")
+OPERATIONS = ("=", "+=", "-=", "*=", "/=", "%=", "<", ">", "><")
+COMPARISONS = ("<", "<=", "=", ">=", ">")
+INTERESTING = (INT_MIN, INT_MIN + 1, -65536, -7, -2, -1, 0, 1, 2, 3, 7, 46341, 65536, INT_MAX - 1, INT_MAX)
+
+
+def write_pack(root: Path, functions: dict[str, str], tags: dict[str, list[str]] | None = None,
+               pack_format: int = 48) -> Path:
+    """Write a pack: ``functions`` maps ``ns:path`` to the file text; ``tags`` maps a function
+    tag id to its values."""
+    root.mkdir(parents=True, exist_ok=True)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": pack_format, "description": "test"}}))
+    for fid, text in functions.items():
+        ns, path = fid.split(":", 1)
+        file = root / "data" / ns / "function" / f"{path}.mcfunction"
+        file.parent.mkdir(parents=True, exist_ok=True)
+        file.write_text(text if text.endswith("\n") else text + "\n")
+    for tid, values in (tags or {}).items():
+        ns, path = tid.split(":", 1)
+        file = root / "data" / ns / "tags" / "function" / f"{path}.json"
+        file.parent.mkdir(parents=True, exist_ok=True)
+        file.write_text(json.dumps({"values": values}))
+    return root
+
+
+@dataclass(frozen=True)
+class Program:
+    functions: dict[str, str]
+    tags: dict[str, list[str]]
+    entry: str = "t:f0"
+
+    def text(self) -> str:
+        tags = "".join(f"# tag {tid}: {values}\n" for tid, values in self.tags.items())
+        return tags + "\n".join(f"# {fid}\n{body}" for fid, body in self.functions.items())
+
+
+objectives = st.sampled_from(OBJECTIVES)
+ints = st.one_of(st.sampled_from(INTERESTING), st.integers(INT_MIN, INT_MAX), st.integers(-20, 20))
+non_negative = st.one_of(st.sampled_from((0, 1, 2, 7, 65536, INT_MAX)), st.integers(0, INT_MAX))
+
+# Stages that change the context but not the scores (``as @e`` with no entities: 0 contexts)
+MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
+# With entities: three markers summoned by t:f0, tagged m+a, m, n, an armor stand tagged m, and a
+# trigger objective t
+ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"]}',
+                'summon marker ~ ~1 ~5 {Tags:["n"]}', 'summon armor_stand ~1 ~ ~1 {Tags:["m"]}',
+                "scoreboard objectives add t trigger")
+# (the VM evaluates @e/@a/@s with type, tag, scores and limit itself; sort, distance ... go to the host)
+ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=marker,sort=nearest,limit=2]",
+                    "positioned as @e[tag=n]", "as @e[tag=m] at @s", "as @e[sort=furthest]",
+                    "as @e[tag=m,tag=!a]", "as @e[type=marker,scores={o=0..}]", "as @e[type=!marker]",
+                    "as @e[tag=m,limit=2]", "as @s[tag=m]", "as @e[scores={o=..3,p=-5..}]",
+                    "rotated as @e[type=armor_stand]", "positioned as @s")
+SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
+MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]")
+ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
+                   'summon marker ~ ~ ~ {Tags:["n"]}', "scoreboard players add @e[tag=m] o 3",
+                   "tag @e[tag=m,tag=!a] add a", "tag @e[scores={o=1..}] remove m", "tag @e[type=armor_stand] add n",
+                   "scoreboard players operation #a o < @e[tag=m] o", "scoreboard players reset @e[tag=a] o",
+                   "scoreboard players operation @e[tag=m] o += @e[tag=n] p", "scoreboard players enable @e[tag=m] t",
+                   "execute store result entity @s Pos[0] double 0.5 run scoreboard players get #a o",
+                   "execute store success entity @s Pos[1] double 2 if entity @e[tag=a]",
+                   "execute store result score #b o run data get entity @s Pos[0] 100",
+                   "execute store result score #c p run data get entity @s Pos[1]",
+                   "tp @s ~1 ~ ~-0.5", "tp @e[tag=n] 3 4.5 -2", "execute at @s run tp @e[tag=a] ~ ~1 ~",
+                   "tp @s 40000000 0 0", "execute at @e[tag=m] run tp @s ~ ~ ~0.25",
+                   "execute store result score @s o run scoreboard players add #a o 1",
+                   "execute store success score @s p if score @s o matches 1.. run scoreboard players get #a o",
+                   'tellraw @a {"text":"hi"}', 'execute store result score #t o run tellraw @a[tag=!x] "x"')
+
+
+@dataclass(frozen=True)
+class Vocabulary:
+    """What random programs are made of: which score holders (single: usable where the game
+    wants one), execute modifiers and extra commands."""
+
+    holders: st.SearchStrategy
+    single_holders: st.SearchStrategy
+    modifiers: tuple[str, ...]
+    extra_commands: tuple[str, ...]
+    setup: tuple[str, ...]
+
+
+def vocabulary(modifiers: bool, entities: bool) -> Vocabulary:
+    names = st.sampled_from(HOLDERS)
+    if not entities:
+        return Vocabulary(names, names, MODIFIERS if modifiers else (), (), ())
+    single = st.one_of(names, st.sampled_from(SINGLE_ENTITY_HOLDERS))
+    return Vocabulary(st.one_of(single, st.sampled_from(MULTI_ENTITY_HOLDERS)), single,
+                      (MODIFIERS if modifiers else ()) + ENTITY_MODIFIERS, ENTITY_COMMANDS, ENTITY_SETUP)
+
+
+@st.composite
+def ranges(draw) -> str:
+    lo = draw(st.one_of(st.none(), st.integers(-10, 10), st.sampled_from((INT_MIN, INT_MAX))))
+    hi = draw(st.one_of(st.none(), st.integers(-10, 10), st.sampled_from((INT_MIN, INT_MAX))))
+    if lo is None and hi is None:
+        return str(draw(st.integers(-5, 5)))
+    if lo is not None and hi is not None and lo > hi:
+        lo, hi = hi, lo
+    return f"{'' if lo is None else lo}..{'' if hi is None else hi}"
+
+
+@st.composite
+def score_commands(draw, vocab: Vocabulary) -> str:
+    """A scoreboard command that can run anywhere (no calls)."""
+    kind = draw(st.sampled_from(("set", "add", "remove", "operation", "operation", "operation", "reset", "get")))
+    h, o = draw(vocab.holders), draw(objectives)
+    if kind in ("set", "add", "remove", "reset") and draw(st.integers(0, 9)) == 0:
+        h = "*"  # every tracked holder; order-independent commands only (the game's order is a hash order)
+    if kind == "set":
+        return f"scoreboard players set {h} {o} {draw(ints)}"
+    if kind in ("add", "remove"):
+        return f"scoreboard players {kind} {h} {o} {draw(non_negative)}"
+    if kind == "reset":
+        return f"scoreboard players reset {h} {o}"
+    if kind == "get":
+        return f"scoreboard players get {draw(vocab.single_holders)} {o}"
+    source = draw(vocab.holders)
+    return f"scoreboard players operation {h} {o} {draw(st.sampled_from(OPERATIONS))} {source} {draw(objectives)}"
+
+
+@st.composite
+def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
+    word = draw(st.sampled_from(("if", "unless")))
+    kinds = ["matches", "compare"] + (["function"] if callees else []) + (["entity"] if vocab.setup else [])
+    kind = draw(st.sampled_from(kinds))
+    single = vocab.single_holders
+    if kind == "matches":
+        return f"{word} score {draw(single)} {draw(objectives)} matches {draw(ranges())}"
+    if kind == "compare":
+        return (f"{word} score {draw(single)} {draw(objectives)} {draw(st.sampled_from(COMPARISONS))} "
+                f"{draw(single)} {draw(objectives)}")
+    if kind == "entity":
+        targets = ('@s', '@e[tag=a]', '@e[tag=n]', '@e[tag=m,scores={o=1..}]', '@e[type=marker,limit=1]',
+                   '@s[tag=a]', '@e[tag=m,tag=!a]', '@e[type=!marker]')
+        return f"{word} entity {draw(st.sampled_from(targets))}"
+    return f"{word} function {draw(st.sampled_from(callees))}"
+
+
+@st.composite
+def stage_chains(draw, callees: list[str], vocab: Vocabulary) -> str:
+    """1 to 3 execute stages: conditions, plus the vocabulary's modifiers and stores if it has any."""
+    stage = conditions(callees, vocab)
+    if vocab.modifiers:
+        stores = st.builds(lambda kind, h, o: f"store {kind} score {h} {o}",
+                           st.sampled_from(("result", "success")), vocab.holders, objectives)
+        stage = st.one_of(stage, st.sampled_from(vocab.modifiers), stores)
+    return " ".join(draw(st.lists(stage, min_size=1, max_size=3)))
+
+
+@st.composite
+def macro_calls(draw, vocab: Vocabulary) -> str:
+    """``t:mac`` or the tag ``#t:macs`` (a plain member, then t:mac) with arguments; sometimes the
+    tag without them (its macro member cannot be instantiated: the call fails after the first)."""
+    holder = draw(vocab.single_holders)
+    target = draw(st.sampled_from(("t:mac", "t:mac", "#t:macs")))
+    if target == "#t:macs" and draw(st.integers(0, 3)) == 0:
+        return "function #t:macs"
+    return f'function {target} {{h:"{holder}", v:{draw(ints)}}}'
+
+
+@st.composite
+def commands(draw, callees: list[str], vocab: Vocabulary) -> str:
+    """One line of a function that may call ``callees`` (ids or ``#tags``) and the macro."""
+    simple = score_commands(vocab)
+    if vocab.extra_commands:
+        simple = st.one_of(simple, simple, st.sampled_from(vocab.extra_commands))
+    call = st.one_of(st.sampled_from(callees).map(lambda f: f"function {f}"), macro_calls(vocab)) if callees else simple
+    inner = st.one_of(simple, simple, call)
+    kind = draw(st.sampled_from(("score", "score", "score", "say", "call", "if", "store", "condition", "return")))
+    if kind == "score":
+        return draw(simple)
+    if kind == "say":
+        return f"say {draw(st.sampled_from(('a', 'b', 'c')))}"
+    if kind == "call":
+        return draw(call)
+    if kind == "if":
+        return f"execute {draw(stage_chains(callees, vocab))} run {draw(inner)}"
+    if kind == "store":
+        what = draw(st.sampled_from(("result", "success")))
+        return f"execute store {what} score {draw(vocab.holders)} {draw(objectives)} run {draw(inner)}"
+    if kind == "condition":
+        # `if function` must be followed by more (ExecuteCommand registers it with fork only)
+        return f"execute {draw(conditions([], vocab))}"
+    ret = draw(st.sampled_from(("value", "fail", "run")))
+    guard = f"execute {draw(stage_chains(callees, vocab))} run " if draw(st.booleans()) else ""
+    if ret == "value":
+        return f"{guard}return {draw(ints)}"
+    if ret == "fail":
+        return f"{guard}return fail"
+    return f"{guard}return run {draw(inner)}"
+
+
+@st.composite
+def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool = False,
+             entities: bool = False) -> Program:
+    """``modifiers``: execute chains may hold context modifiers (positioned, align, in, as @e ...)
+    and stores; ``entities``: three markers exist, selected, tagged, killed and used as holders."""
+    vocab = vocabulary(modifiers, entities)
+    count = draw(st.integers(1, max_functions))
+    names = [f"t:f{i}" for i in range(count)]
+    functions: dict[str, str] = {}
+    for leaf in ("t:leaf0", "t:leaf1"):
+        body = draw(st.lists(score_commands(vocab), min_size=1, max_size=3))
+        ending = draw(st.sampled_from(("", "return 1", "return -4", "return fail", "return 0")))
+        functions[leaf] = "\n".join(body + ([ending] if ending else []))
+    tags = {"t:leaves": draw(st.lists(st.sampled_from(("t:leaf0", "t:leaf1")), min_size=1, max_size=3)),
+            "t:macs": ["t:leaf1", "t:mac"]}
+    functions["t:mac"] = "$scoreboard players set $(h) o $(v)\n" + draw(
+        st.sampled_from(("$return $(v)", "$scoreboard players operation #a o += $(h) o", "return run say mac")))
+    for i, name in enumerate(names):
+        callees = names[i + 1:] + ["t:loop", "t:leaf0", "#t:leaves"]
+        lines = draw(st.lists(commands(callees, vocab), min_size=1, max_size=max_lines))
+        if i == 0:
+            lines = ["scoreboard objectives add o dummy", "scoreboard objectives add p dummy",
+                     f"scoreboard players set #n p {draw(st.integers(0, 6))}", *vocab.setup] + lines
+        functions[name] = "\n".join(lines)
+    loop_body = draw(st.lists(score_commands(vocab), min_size=0, max_size=3))
+    functions["t:loop"] = "\n".join(
+        ["scoreboard players remove #n p 1"] + loop_body + ["execute if score #n p matches 1.. run function t:loop"]
+    )
+    return Program(functions, tags)
+
+
+# ----------------------------------------------------------------------------- running
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What one root run left behind, in a form two backends can be compared on."""
+
+    scores: dict
+    result: int | None
+    cost: int
+    cut: bool
+    overflows: tuple
+    log: tuple
+    diagnostics: tuple
+    line_costs: dict  # {(file name, line): cost charged there}
+    entities: tuple = ()  # (uuid, type, pos, sorted tags) of every entity, in the store's order
+
+
+def make_backend(name: str):
+    """A fresh backend by name: ``python`` (the reference) or ``numba`` (the VM)."""
+    if name == "python":
+        from emulator.reference import ReferenceBackend
+
+        return ReferenceBackend()
+    from emulator.vm.backend import NumbaBackend
+
+    return NumbaBackend()
+
+
+def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, scores: dict | None = None,
+             limit: int | None = None) -> Outcome:
+    """Load ``pack`` and run ``entry`` as one root on a fresh world; ``scores`` seeds
+    ``{(holder, objective): value}`` first; ``limit`` sets maxCommandChainLength."""
+    from emulator.world.state import WorldState
+    from mcfunction_parser.pack.loader import load_packs
+
+    packs = load_packs([pack])
+    errors = [d.format() for d in packs.diagnostics if d.severity == "error"]
+    assert not errors, errors
+    state = WorldState()
+    if limit is not None:
+        state.gamerules.set("maxCommandChainLength", str(limit))
+    for (holder, objective), value in (scores or {}).items():
+        state.scoreboard.set(holder, objective, value)
+    backend = make_backend(backend_name)
+    backend.load(packs, state, sanitize=sanitize)
+    root = backend.run_root(entry)
+    return Outcome(
+        scores=state.scoreboard.scores(),
+        result=root.result,
+        cost=root.cost,
+        cut=root.cut,
+        overflows=tuple((o.function, o.loc.line, o.op, o.a, o.b, o.exact, o.stored) for o in state.overflows),
+        log=tuple((e.kind, e.text) for e in state.log),
+        diagnostics=tuple((d.message, tuple((f.function, f.loc.line) for f in d.frames)) for d in state.diagnostics),
+        line_costs={(Path(path).name, line): n for (path, line), n in backend.line_counts().items() if n},
+        entities=tuple((e.uuid_string, e.type, e.pos, tuple(sorted(e.tags))) for e in state.entities.entities),
+    )

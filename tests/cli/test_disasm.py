@@ -1,0 +1,40 @@
+"""``dpemu disasm``: instructions beside their source lines."""
+from __future__ import annotations
+
+from click.testing import CliRunner
+
+from emulator.cli import main
+from tests.backends.programs import write_pack
+
+
+def test_disasm_shows_source_and_decoded_operands(tmp_path):
+    pack = write_pack(tmp_path / "pack", {
+        "t:f": "# comment\nexecute if score #a o matches 1.. run scoreboard players operation #a o *= #b o\nfunction t:g",
+        "t:g": "say hi",
+    })
+    result = CliRunner().invoke(main, ["disasm", str(pack), "t:f"])
+    assert result.exit_code == 0, result.output
+    lines = result.output.splitlines()
+    assert lines[0].split("|")[0].strip() == "2"
+    assert "execute if score #a o matches 1.." in lines[0]
+    ops = [line.split()[2] for line in lines if line.startswith("      |")]
+    assert ops == ["CMD", "IFMATCH", "OPER*=", "ENDCMD", "CALL", "FEND"]
+    assert any("OPER*= #a o #b o" in line for line in lines)
+    assert any("CALL t:g" in line for line in lines)
+
+
+def test_disasm_host_ops(tmp_path):
+    pack = write_pack(tmp_path / "pack", {"t:f": "execute as @e[distance=..5] store result storage t:s v int 1 run say hi"})
+    result = CliRunner().invoke(main, ["disasm", str(pack), "t:f"])
+    assert result.exit_code == 0, result.output
+    ops = [line.split(None, 3)[2:] for line in result.output.splitlines() if line.startswith("      |")]
+    # host stages carry the forked flag: after `as`, a failing stage drops only its context
+    # after a stage that can fork, STAGESDONE collects each context before any runs the command
+    assert ops == [["CMD", "->8"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"], ["STAGESDONE", "->8"],
+                   ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
+
+
+def test_disasm_unknown_function(tmp_path):
+    pack = write_pack(tmp_path / "pack", {"t:f": "say hi"})
+    result = CliRunner().invoke(main, ["disasm", str(pack), "t:nope"])
+    assert result.exit_code == 2 and "no function t:nope" in result.output

@@ -1,0 +1,28 @@
+"""Fixtures shared by the suite: small packs written to a temporary folder."""
+import json
+from pathlib import Path
+
+import pytest
+
+
+def write_pack(root: Path, files: dict[str, str], tick: list[str] | None = None, load: list[str] | None = None) -> Path:
+    """A pack at ``root`` with ``files`` (path under data/ -> text) and optional tick/load tags."""
+    root.mkdir(parents=True, exist_ok=True)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "t"}}))
+    for rel, text in files.items():
+        path = root / "data" / rel
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+    for name, members in (("tick", tick), ("load", load)):
+        if members:
+            tag = root / "data/minecraft/tags/function" / f"{name}.json"
+            tag.parent.mkdir(parents=True, exist_ok=True)
+            tag.write_text(json.dumps({"values": members}))
+    return root
+
+
+@pytest.fixture
+def pack(tmp_path):
+    def make(files, **tags):
+        return write_pack(tmp_path / "pack", files, **tags)
+    return make

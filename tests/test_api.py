@@ -1,0 +1,103 @@
+"""The Emulator API: load, call, tick, run_until, scores, log, profile, diagnostics, backends."""
+from __future__ import annotations
+
+import pytest
+
+from emulator import Emulator
+from tests.vm.helpers import SETUP, emulator_for
+
+FUNCTIONS = {
+    "t:load": SETUP + "scoreboard players set #n o 0",
+    "t:tick": "scoreboard players add #n o 1\nfunction t:work",
+    "t:work": "scoreboard players operation #sq o = #n o\nscoreboard players operation #sq o *= #n o\n"
+              "execute if score #n o matches 2 run say two",
+    "t:answer": "return 42",
+}
+TAGS = {"minecraft:load": ["t:load"], "minecraft:tick": ["t:tick"]}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_tick_scores_log(tmp_path, backend):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS, backend=backend)
+    assert emu.tick(3) == sum(emu.commands_per_tick)
+    assert emu.score("#sq", "o") == 9
+    assert emu.score("#nobody", "o") is None
+    assert emu.scores() == {"o": {"#n": 3, "#sq": 9}}
+    assert [(e.tick, e.kind, e.text) for e in emu.log] == [(1, "say", "[Server] two")]
+    assert emu.call("t:answer") == 42
+
+
+def test_run_until(tmp_path):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS)
+    ran = emu.run_until(lambda e: e.score("#n", "o") == 5, max_ticks=100)
+    assert ran == 5 and emu.ticks == 5
+    assert emu.run_until(lambda e: False, max_ticks=3) == 3
+
+
+def test_set_score_and_call(tmp_path):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS)
+    emu.set_score("#n", "o", 6)
+    emu.call("t:work")
+    assert emu.score("#sq", "o") == 36
+    with pytest.raises(ValueError):
+        emu.set_score("#n", "o", 2**31)
+
+
+def test_profile_per_line_and_function(tmp_path):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS)
+    emu.tick(4)
+    profile = emu.profile
+    work = {line: c for (path, line), c in profile.lines.items() if path.endswith("work.mcfunction")}
+    assert work == {1: 4, 2: 4, 3: 4 + 1}  # the if stage each tick, `say` once
+    assert profile.functions_self["t:work"] == 13
+    # per tick: its add and its call of t:work (2), t:work's 3 lines; `say` once
+    assert profile.functions_total["t:tick"] == 4 * (2 + 3) + 1
+    assert profile.ticks == emu.commands_per_tick
+
+
+def test_call_tag_and_default_namespace(tmp_path):
+    emu = emulator_for(tmp_path, {**FUNCTIONS, "minecraft:hello": "return 7"}, TAGS)
+    emu.call("#minecraft:load")
+    assert emu.score("#n", "o") == 0
+    assert emu.call("hello") == 7
+
+
+def test_call_as_missing_entity_is_a_clear_error(tmp_path):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS)
+    with pytest.raises(ValueError, match="finds 0 entities"):
+        emu.call("t:work", as_="@e")
+
+
+def test_use_before_load():
+    with pytest.raises(RuntimeError, match="load"):
+        Emulator().tick()
+
+
+def test_unknown_backend():
+    with pytest.raises(ValueError, match="unknown backend"):
+        Emulator(backend="java")
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_start_runs_the_load_functions_once_before_any_tick(tmp_path, backend):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS, backend=backend)
+    assert emu.start() > 0 and emu.score("#n", "o") == 0
+    assert emu.start() == 0                      # loaded already: nothing runs again
+    emu.set_score("#n", "o", 10)
+    emu.tick()                                   # only #minecraft:tick: #n is not reset by t:load
+    assert emu.score("#n", "o") == 11 and emu.ticks == 1
+
+
+def test_players_earn_the_per_tick_statistics(tmp_path):
+    # Player.tick (server side): play_time, total_world_time, time_since_death, time_since_rest
+    # every tick; sneak_time while the sneak key is held; the criteria name statistics either way
+    functions = {**FUNCTIONS, "t:load": FUNCTIONS["t:load"] + "\nscoreboard objectives add play minecraft.custom:"
+                 "minecraft.play_time\nscoreboard objectives add rest custom:time_since_rest\n"
+                 "scoreboard objectives add sneak minecraft.custom:minecraft.sneak_time"}
+    emu = emulator_for(tmp_path, functions, TAGS)
+    emu.add_player("Steve")
+    emu.tick(3)
+    emu.state.entities.by_holder("Steve").sneaking = True
+    emu.run_until(lambda e: False, max_ticks=2)
+    assert (emu.score("Steve", "play"), emu.score("Steve", "rest"), emu.score("Steve", "sneak")) == (5, 5, 2)
+    assert emu.score("#n", "play") is None

@@ -1,0 +1,171 @@
+"""Selectors, tags, scores and positions of entities run inside the VM (emulator.vm.entity_arrays),
+pinned to the game's behaviour and checked against the reference backend.
+
+Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): commands/arguments/selector/EntitySelector.java
+(unsorted order, limit), server/commands/TagCommand.java (the count of changed entities; none
+fails), server/commands/ScoreboardCommand.java (set: value x targets; enableTrigger), server/
+commands/ExecuteCommand.java (if entity counts; store entity ... double), server/commands/data/
+DataCommands.java (data get ... scale: Mth.floor).
+"""
+from __future__ import annotations
+
+import pytest
+
+from emulator.vm import loop as vm
+from tests.vm.helpers import emulator_for
+
+SETUP = ("scoreboard objectives add o dummy\nscoreboard objectives add s dummy\n"
+         "scoreboard objectives add t trigger\n"
+         'summon marker 0 0 0 {Tags:["x","a"]}\nsummon marker 1 0 0 {Tags:["x"]}\n'
+         'summon armor_stand 2 0 0 {Tags:["x"]}\nsummon marker 3 0 0 {Tags:["y"]}\n')
+
+
+def _run_both(tmp_path, body: str, shuffle: int | None = None):
+    """Run t:main (SETUP first) on both backends; returns the two emulators after checking they agree."""
+    emus = []
+    for backend in ("numba", "python"):
+        emu = emulator_for(tmp_path / backend, {"t:main": SETUP + body}, backend=backend)
+        if shuffle is not None:
+            emu.shuffle = shuffle
+            emu.load_parsed(emu.packs)
+        emu.call("t:main")
+        emus.append(emu)
+    numba, python = emus
+    assert numba.scores() == python.scores()
+    assert numba.entities() == python.entities()
+    assert [e.text for e in numba.log] == [e.text for e in python.log]
+    return numba
+
+
+def _score(emu, selector: str, objective: str = "o") -> list:
+    return [e["scores"].get(objective) for e in emu.entities(selector)]
+
+
+def test_execute_as_filters_by_tag_type_and_scores(tmp_path):
+    emu = _run_both(tmp_path, "scoreboard players set @e[tag=x] s 1\nscoreboard players set @e[type=marker,tag=a] s 5\n"
+                              "execute as @e[tag=x,scores={s=0..2}] run scoreboard players add @s o 1\n"
+                              "execute as @e[type=!marker] run scoreboard players add @s o 10\n"
+                              "execute as @e[tag=x,tag=!a] run scoreboard players add @s o 100")
+    assert _score(emu, "@e") == [None, 101, 111, None]
+
+
+def test_limit_takes_the_first_in_creation_order_and_shuffle_permutes_it(tmp_path):
+    emu = _run_both(tmp_path, "tag @e[tag=x,limit=2] add l")
+    assert [("l" in e["tags"]) for e in emu.entities()] == [True, True, False, False]
+    for seed in range(4):  # the first two tagged x in the permuted order, whatever it is
+        shuffled = _run_both(tmp_path / f"shuffled{seed}", "tag @e[tag=x,limit=2] add l", shuffle=seed)
+        assert [("l" in e["tags"]) for e in shuffled.entities("@e[tag=x]")] == [True, True, False]
+
+
+def test_a_selector_that_finds_nothing_fails_the_command(tmp_path):
+    emu = _run_both(tmp_path, "execute store success score #tag o run tag @e[tag=none] add q\n"
+                              "execute store success score #set o run scoreboard players set @e[tag=none] o 1\n"
+                              "execute store result score #as o run execute as @e[tag=none] run say never")
+    # `as` finding nothing leaves no context: nothing runs, so its store never fires
+    assert [emu.score(h, "o") for h in ("#tag", "#set", "#as")] == [0, 0, None]
+
+
+def test_results_count_entities(tmp_path):
+    # if entity: the count; tag: the entities changed (none changed fails); set: value x targets
+    emu = _run_both(tmp_path, "execute store result score #if o if entity @e[tag=x]\n"
+                              "execute store result score #unless o unless entity @e[tag=none]\n"
+                              "execute store result score #tag o run tag @e[tag=x] add a\n"
+                              "execute store success score #again o run tag @e[tag=a,tag=!x] add a\n"
+                              "execute store result score #set o run scoreboard players set @e[tag=x] s 7\n"
+                              "execute store result score #reset o run scoreboard players reset @e[tag=x] s")
+    assert [emu.score(h, "o") for h in ("#if", "#unless", "#tag", "#again", "#set", "#reset")] == [3, 1, 2, 0, 21, 3]
+
+
+def test_operation_with_a_selector_on_either_side(tmp_path):
+    emu = _run_both(tmp_path, "scoreboard players set #m o 100\n"
+                              "execute as @e run scoreboard players operation @s s = @s o\n"
+                              "scoreboard players set @e[tag=x,limit=1] o 4\nscoreboard players set @e[tag=y] o -3\n"
+                              "scoreboard players operation #m o < @e[scores={o=..10}] o\n"
+                              "execute store result score #sum o run scoreboard players operation @e[tag=x] s += @e[tag=y] o")
+    assert emu.score("#m", "o") == -3
+    assert _score(emu, "@e[tag=x]", "s") == [-3, -3, -3]  # created as 0 (get-or-create), then += -3
+    assert emu.score("#sum", "o") == -9
+
+
+def test_enable_creates_and_unlocks_trigger_scores(tmp_path):
+    # enableTrigger: get-or-create, unlock; the count of scores unlocked; none unlocked or a
+    # non-trigger objective fails
+    emu = _run_both(tmp_path, "execute store result score #first o run scoreboard players enable @e[tag=x] t\n"
+                              "execute store success score #again o run scoreboard players enable @e[tag=x] t\n"
+                              "execute store success score #dummy o run scoreboard players enable @e[tag=x] s")
+    assert [emu.score(h, "o") for h in ("#first", "#again", "#dummy")] == [3, 0, 0]
+    assert _score(emu, "@e[tag=x]", "t") == [0, 0, 0]
+
+
+def test_store_and_read_positions(tmp_path):
+    # store ... double: (double)(result * scale), clamped as Entity.load clamps it; data get: Mth.floor
+    emu = _run_both(tmp_path, "scoreboard players set #p o -1234567\n"
+                              "execute as @e[tag=a] run execute store result entity @s Pos[0] double 0.001 run "
+                              "scoreboard players get #p o\n"
+                              "execute as @e[tag=a] store result score #x o run data get entity @s Pos[0] 10\n"
+                              "execute as @e[tag=a] store result score #floor o run data get entity @s Pos[0]\n"
+                              "execute as @e[tag=a] run execute store result entity @s Pos[1] double 100000 run "
+                              "scoreboard players set #big o 2000000000")
+    pos = emu.entities("@e[tag=a]")[0]["pos"]
+    assert pos == [-1234567 * 0.001, 2.0e7, 0.5]  # summoned at 0 0 0: integer x/z are centred (+0.5)
+    assert (emu.score("#x", "o"), emu.score("#floor", "o")) == (-12346, -1235)
+
+
+def test_host_commands_see_vm_changes_and_the_vm_sees_host_changes(tmp_path):
+    # tag (VM) -> kill with sort (host); summon (host) -> execute as (VM)
+    emu = _run_both(tmp_path, "tag @e[tag=x,tag=!a] add doomed\nkill @e[tag=doomed,sort=nearest,limit=1]\n"
+                              'summon marker 9 0 0 {Tags:["x"]}\nexecute as @e[tag=x] run scoreboard players add #n o 1')
+    assert emu.score("#n", "o") == 3
+    assert len(emu.entities()) == 4
+
+
+def test_the_forms_compile_to_vm_instructions(tmp_path):
+    emu = emulator_for(tmp_path, {"t:main": SETUP + "execute as @e[tag=x,scores={s=0..2}] run tag @s add b\n"
+                                              "execute if entity @e[type=marker] run scoreboard players enable @a t\n"
+                                              "execute store result entity @s Pos[0] double 0.5 run data get entity @s Pos[1]"})
+    emu.call("t:main")
+    ops = {row[0] for row in emu.backend.program.rows}
+    assert {vm.OP_ASSTAGE, vm.OP_TAG, vm.OP_IFENT, vm.OP_ENABLE, vm.OP_POSSTAGE, vm.OP_STOREPOS, vm.OP_GETPOS} <= ops
+    assert [type(node).__name__ for _, node, _ in emu.backend.host_ops_run()] == ["ObjectivesAdd"] * 3 + ["Summon"] * 4
+
+
+@pytest.mark.parametrize("selector", ["@e[sort=nearest]", "@e[distance=..2]", "@e[type=#minecraft:skeletons]",
+                                      "@e[tag=]", "@p", "@e[name=x]"])
+def test_other_selectors_stay_with_the_host(tmp_path, selector):
+    emu = emulator_for(tmp_path, {"t:main": SETUP + f"tag {selector} add z"})
+    emu.call("t:main")
+    assert [type(node).__name__ for _, node, _ in emu.backend.host_ops_run()][-1] == "TagCommand"
+
+
+def test_tellraw_needs_a_player(tmp_path):
+    # TellRawCommand: the targets are EntityArgument.getPlayers (none found fails the command and
+    # nothing is sent); the result is the number of players
+    body = ('execute store result score #none o run tellraw @a {"text":"nobody"}\n'
+            'execute store result score #one o run tellraw @a[tag=!none] {"text":"hi"}')
+    emu = _run_both(tmp_path, body)
+    assert (emu.score("#none", "o"), emu.score("#one", "o"), emu.log) == (0, 0, [])
+    emu.add_player("Steve")
+    emu.call("t:main")
+    assert (emu.score("#none", "o"), emu.score("#one", "o")) == (1, 1)
+    assert [e.text for e in emu.log] == ['{"text":"nobody"}', '{"text":"hi"}']
+
+
+def test_a_killed_entity_loses_its_scores(tmp_path):
+    # Scoreboard.entityRemoved -> resetAllPlayerScores: it leaves `*` and every objective
+    emu = _run_both(tmp_path, "scoreboard players set @e s 4\nkill @e[tag=a]\n"
+                              "execute store result score #n o run scoreboard players add * s 0")
+    assert emu.score("#n", "o") == 12
+    assert sum(len(holders) for holders in emu.scores().values()) == 4  # three entities' s, and #n
+
+
+def test_teleport_and_execute_at(tmp_path):
+    # TeleportCommand.teleportToPos: every target to the same point, integer x/z centred, `~`
+    # from the execution position; out of the spawnable bounds fails; `at` takes the entity's position
+    emu = _run_both(tmp_path, "tp @e[tag=x] 5 64 -3\n"
+                              "execute as @e[tag=a] at @s run tp @e[tag=y] ~1 ~0.5 ~\n"
+                              "execute store success score #far o run tp @e[tag=y] 30000000 0 0")
+    assert [e["pos"] for e in emu.entities()] == [[5.5, 64.0, -2.5]] * 3 + [[6.5, 64.5, -2.5]]
+    assert emu.score("#far", "o") == 0
+    ops = {row[0] for row in emu.backend.program.rows}
+    assert {vm.OP_TP, vm.OP_ASSTAGE} <= ops
+    assert {type(node).__name__ for _, node, _ in emu.backend.host_ops_run()} == {"ObjectivesAdd", "Summon"}
