@@ -8,7 +8,7 @@ import re
 from . import snbt
 from .ast import Coord, FloatRange, IntRange, NameTarget, Selector, Vec2, Vec3, Wildcard
 from .diagnostics import Loc
-from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, ParseError, Reader
+from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, ParseError, Reader, brief, integer_value
 
 # ----------------------------------------------------------------------------- resource locations
 
@@ -152,9 +152,9 @@ def _bound(r: Reader, is_int: bool):
         r.fail(f"invalid {'integer' if is_int else 'number'} '{token}' in range", start)
     r.pos = start + len(token)
     if is_int:
-        value = int(token)
+        value = integer_value(token)
         if not INT_MIN <= value <= INT_MAX:
-            r.fail(f"integer {token} is out of range for a 32-bit int", start)
+            r.fail(f"integer {brief(token)} is out of range for a 32-bit int", start)
         return value
     return float(token)
 

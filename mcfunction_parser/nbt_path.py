@@ -4,7 +4,7 @@ from __future__ import annotations
 import re
 
 from .ast import NbtPath, PathAll, PathFilter, PathIndex, PathKey, PathMatch
-from .reader import INT_MAX, INT_MIN, Reader
+from .reader import INT_MAX, INT_MIN, Reader, brief, integer_value
 from .snbt import compound
 
 # NbtPathArgument.isAllowedInUnquotedName: anything but space, quotes, brackets, braces and '.'
@@ -67,9 +67,9 @@ def _bracket(r: Reader):
         m = _INDEX.match(r.text, start)
         if m is None:
             r.fail(f"expected an index, '{{' or ']' in NBT path, got {r.found()}")
-        index = int(m.group())
+        index = integer_value(m.group())
         if not INT_MIN <= index <= INT_MAX:
-            r.fail(f"index {m.group()} is out of range for a 32-bit int", start)
+            r.fail(f"index {brief(m.group())} is out of range for a 32-bit int", start)
         r.pos = m.end()
         node = PathIndex(index)
     r.expect("]")

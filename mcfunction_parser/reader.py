@@ -45,7 +45,30 @@ class ParseError(Exception):
 
 def show(text: str) -> str:
     """How an offending token appears in a message."""
-    return f"'{text}'" if text else "end of command"
+    return f"'{brief(text)}'" if text else "end of command"
+
+
+_BRIEF = 40
+
+
+def brief(token: str) -> str:
+    """A token short enough for a message: a 1,000,000-digit literal shows its start and length."""
+    if len(token) <= _BRIEF:
+        return token
+    return f"{token[:_BRIEF // 2]}... ({len(token)} characters)"
+
+
+# Past this many digits a literal is out of every range the game has (a long has 19 digits), so it is
+# never converted: int() of a huge string is slow and, past sys.get_int_max_str_digits(), refused.
+_MAX_DIGITS = 64
+
+
+def integer_value(digits: str, base: int = 10) -> int:
+    """``int(digits, base)``, or a value past every NBT and argument range for a very long literal
+    (the callers' range checks then report it as out of range, at its column)."""
+    if len(digits) <= _MAX_DIGITS:
+        return int(digits, base)
+    return -(2 ** 256) if digits.lstrip().startswith("-") else 2 ** 256
 
 
 class Reader:
@@ -249,9 +272,9 @@ class Reader:
             self.fail(f"expected {what}, got {self.found()}")
         if not INT_TEXT.match(token):
             self.fail(f"invalid integer '{token}'", start)
-        value = int(token)
+        value = integer_value(token)
         if value < INT_MIN or value > INT_MAX:
-            self.fail(f"integer {token} is out of range for a 32-bit int", start)
+            self.fail(f"integer {brief(token)} is out of range for a 32-bit int", start)
         if value < lo:
             self.fail(f"{what} must be at least {lo}, got {value}", start)
         if value > hi:

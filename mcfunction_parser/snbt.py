@@ -19,7 +19,7 @@ import unicodedata
 
 from .nbt import (Byte, ByteArray, Compound, Double, Float, Int, IntArray, List, Long, LongArray, Short,
                   String)
-from .reader import UNQUOTED, Reader, show
+from .reader import UNQUOTED, Reader, integer_value, show
 
 _INTEGER = re.compile(r"[-+]?(?:0|[1-9][0-9]*)([bBsSlL]?)\Z")
 _DECIMAL = re.compile(r"[-+]?(?:[0-9]+\.|[0-9]*\.[0-9]+)(?:[eE][-+]?[0-9]+)?\Z")
@@ -68,7 +68,7 @@ def typed_primitive(token: str):
     m = _INTEGER.match(token)
     if m:
         kind, bits = _INT_TYPES[m.group(1).lower()]
-        value = int(token[:-1] if m.group(1) else token)
+        value = integer_value(token[:-1] if m.group(1) else token)
         if -(1 << (bits - 1)) <= value < (1 << (bits - 1)):
             return kind(value)
         return String(token)
@@ -104,7 +104,7 @@ def _new_number(r: Reader, token: str, start: int, array_type=None):
     digits, base = (hex_digits, 16) if hex_digits else (bin_digits, 2) if bin_digits else (dec_digits, 10)
     # decimal numbers are signed by default, hex and binary unsigned; 's' or 'u' before the type says so
     signed = suffix[:1] == "s" and len(suffix) == 2 or not suffix[:1] == "u" and base == 10
-    value = int(digits.replace("_", ""), base)
+    value = integer_value(digits.replace("_", ""), base)
     bits = _BITS[kind]
     if signed:
         value = -value if sign == "-" else value

@@ -7,7 +7,7 @@ from .. import ast
 from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, objective, objective_too_long, plain_holder,
                          score_holder, single_score_holder, text_component)
 from ..features import version_text
-from ..reader import INT_MAX, INT_MIN, Reader, show
+from ..reader import INT_MAX, INT_MIN, Reader, integer_value, show
 
 _SIMPLE_CRITERIA = frozenset((
     "dummy", "trigger", "deathCount", "playerKillCount", "totalKillCount", "health", "xp", "level",
@@ -133,7 +133,7 @@ def _fast_set(r: Reader, loc, action: str):
     m = _FAST_SET.match(r.text, r.pos)
     if m is None or objective_too_long(m.group(2), r.version):
         return None
-    value = int(m.group(3))
+    value = integer_value(m.group(3))
     if not (INT_MIN if action == "set" else 0) <= value <= INT_MAX:
         return None
     r.pos = r.end

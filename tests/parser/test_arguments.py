@@ -138,3 +138,26 @@ def test_integer_errors_name_the_token():
     assert "invalid integer '1.5'" in d.message
     assert "expected score" in parse_err("scoreboard players set @s x abc").message
     assert parse_ok("scoreboard players set @s x -0").value == 0
+
+
+HUGE = "9" * 1_000_000
+
+
+@pytest.mark.parametrize("text, col", [
+    (f"scoreboard players set #a o {HUGE}", 29),
+    (f"scoreboard players add #a o -{HUGE}", 29),
+    (f"execute if score #a o matches ..{HUGE} run say x", 33),
+    (f"data get storage t:a a[{HUGE}]", 24),
+])
+def test_a_huge_integer_literal_is_out_of_range_at_its_column(text, col):
+    # Brigadier's readInt fails on any literal past Integer.MAX_VALUE; a million digits is no
+    # different, and the message quotes the literal's start, not all of it.
+    error = parse_err(text)
+    assert "out of range" in error.message and error.col == col
+    assert len(error.message) < 200
+
+
+def test_a_huge_literal_in_snbt_is_not_a_number():
+    # TagParser.type: an integer out of range for its type reads as a string
+    cmd = parse_ok(f"data merge storage t:a {{a:{HUGE}}}")
+    assert type(cmd.nbt["a"]).__name__ == "String"
