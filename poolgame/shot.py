@@ -14,7 +14,17 @@ from pathlib import Path
 from emulator.api import Emulator
 from emulator.world.text import plain_text
 
-DEFAULT_PACK = Path(__file__).resolve().parents[1] / "datapack"
+
+
+def _default_pack() -> Path:
+    """The pool datapack: package data beside this module once installed (setup.py maps it), else
+    the source tree's top-level ``datapack/``."""
+    here = Path(__file__).resolve().parent
+    installed = here / "datapack"
+    return installed if installed.is_dir() else here.parent / "datapack"
+
+
+DEFAULT_PACK = _default_pack()
 TABLE_CORNER = (0.0, 64.0, 0.0)   # where pool:table/setup runs (the playing area's corner)
 POCKETED = 3                      # pool.state of a ball that left play (pool:load's header)
 REQUIRED_FUNCTIONS = ("pool:table/setup", "pool:api/shot")
