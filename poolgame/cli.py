@@ -7,17 +7,22 @@ from pathlib import Path
 
 import click
 
-from poolgame.shot import BREAK, DEFAULT_PACK, Shot, ShotResult, missing_functions, new_table, play
+from emulator.cli.params import FiniteFloat, OutputPath, write_output
+from poolgame.shot import BREAK, DEFAULT_PACK, Shot, ShotResult, in_player_units, missing_functions, new_table, play
 
 BALL_NAMES = {0: "cue"}
 
 
 def _tip(text: str) -> tuple[float, float]:
-    try:
-        x, y = (float(v) for v in text.split(","))
-    except ValueError:
+    parts = text.split(",")
+    if len(parts) != 2:
         raise click.BadParameter(f"{text!r}: expected X,Y (fractions of the ball radius, e.g. 0.2,-0.3)",
-                                 param_hint="--tip") from None
+                                 param_hint="--tip")
+    number = FiniteFloat()
+    try:
+        x, y = (number.convert(v, None, None) for v in parts)
+    except click.BadParameter as error:
+        raise click.BadParameter(f"{text!r}: {error.message}", param_hint="--tip") from None
     return x, y
 
 
@@ -41,14 +46,14 @@ def _shot(break_: bool, angle, speed, tip, elevation) -> Shot:
 @click.command("shot")
 @click.argument("pack", required=False, type=click.Path(exists=True, file_okay=False, path_type=Path))
 @click.option("--break", "break_", is_flag=True, help="The break: full power from the head spot at the rack's apex.")
-@click.option("--angle", type=float, metavar="DEG", help="Aim, degrees counter-clockwise from the table's long axis (+x) towards +z.")
-@click.option("--speed", type=float, metavar="M/S", help="Cue speed (the pack accepts 0.001..6.5).")
+@click.option("--angle", type=FiniteFloat(), metavar="DEG", help="Aim, degrees counter-clockwise from the table's long axis (+x) towards +z.")
+@click.option("--speed", type=FiniteFloat(), metavar="M/S", help="Cue speed (the pack accepts 0.001..6.5).")
 @click.option("--tip", metavar="X,Y", help="Tip offset right and up, fractions of the ball radius (X^2 + Y^2 <= 0.25).")
-@click.option("--elevation", type=float, metavar="DEG", help="Cue elevation, degrees (0..89).")
+@click.option("--elevation", type=FiniteFloat(), metavar="DEG", help="Cue elevation, degrees (0..89).")
 @click.option("--max-ticks", default=2000, show_default=True, type=click.IntRange(min=1))
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 @click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
-@click.option("--json", "json_out", metavar="FILE|-", help="Write the outcome as JSON.")
+@click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the outcome as JSON.")
 def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitize, json_out) -> None:
     """Set up a table with the pool datapack PACK (default: the repository's datapack/), rack,
     strike, and emulate until the table is at rest. Exit status 1 when the pack refuses the shot,
@@ -67,13 +72,10 @@ def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitiz
         sys.exit(1)
     result = play(emu, chosen, max_ticks)
     _print(result, to_stderr=json_out == "-")
-    if json_out:
-        text = json.dumps(result.to_json(), indent=2)
-        if json_out == "-":
-            click.echo(text)
-        else:
-            Path(json_out).write_text(text + "\n")
-    sys.exit(1 if result.refused or not result.at_rest or result.overflows else 0)
+    written = not json_out or write_output(json_out, json.dumps(result.to_json(), indent=2) + "\n")
+    if result.interrupted:
+        sys.exit(130)
+    sys.exit(1 if result.refused or not result.at_rest or result.overflows or not written else 0)
 
 
 def _print(result: ShotResult, to_stderr: bool) -> None:
@@ -81,17 +83,22 @@ def _print(result: ShotResult, to_stderr: bool) -> None:
         click.echo(line, err=to_stderr)
 
     for message in result.refused:
-        out(message)
+        out(in_player_units(message))
     if result.refused:
         return
     out(f"{'ball':>4}  {'x mm':>8}  {'z mm':>8}  outcome")
     for ball in result.balls:
         if ball.pocketed:
             outcome = f"pocketed at tick {ball.tick}"
+        elif ball.moving:
+            outcome = "still moving"
         else:
             outcome = f"stopped at tick {ball.tick}" if ball.tick is not None else "did not move"
         out(f"{BALL_NAMES.get(ball.id, ball.id):>4}  {ball.x_mm:8.1f}  {ball.z_mm:8.1f}  {outcome}")
-    rest = "table at rest" if result.at_rest else "table still moving (--max-ticks reached)"
+    if result.interrupted:
+        rest = "interrupted (Ctrl-C): table still moving"
+    else:
+        rest = "table at rest" if result.at_rest else "table still moving (--max-ticks reached)"
     out(f"{rest} after {result.ticks} ticks ({result.carried} in slow motion: a burst of events carried "
         f"over); commands per tick mean {result.commands_mean:.0f}, max {result.commands_max}; {result.seconds:.2f} s")
     for overflow in result.overflows:

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import math
 import random
+import re
 import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -26,9 +27,30 @@ def _default_pack() -> Path:
 
 DEFAULT_PACK = _default_pack()
 TABLE_CORNER = (0.0, 64.0, 0.0)   # where pool:table/setup runs (the playing area's corner)
-POCKETED = 3                      # pool.state of a ball that left play (pool:load's header)
+AT_REST, POCKETED = 0, 3          # pool.state of a ball at rest and of one that left play (pool:load's header)
 REQUIRED_FUNCTIONS = ("pool:table/setup", "pool:api/shot")
 LISTENER = "dpemu"                # the simulated player who watches (and reads the chat)
+
+
+# pool:api/shot's macro arguments in player units: the option that gives each, the factor from the
+# player's unit to the pack's, and the player's unit.
+PLAYER_UNITS = {
+    "angle": ("--angle", 100, "degrees"),
+    "speed": ("--speed", 1000, "m/s"),
+    "tip_x": ("--tip X", 1000, "ball radii"),
+    "tip_y": ("--tip Y", 1000, "ball radii"),
+    "elevation": ("--elevation", 100, "degrees"),
+}
+_RANGE_MESSAGE = re.compile(r"\b(angle|speed|tip_x|tip_y|elevation) must be (-?\d+)\.\.(-?\d+)(?: \([^)]*\))?")
+
+
+def in_player_units(message: str) -> str:
+    """A refusal of pool:api/shot ("speed must be 1..6500 (mm/s)") in the units the options take
+    ("--speed must be 0.001..6.5 m/s"); other text as it is."""
+    def player(m: re.Match) -> str:
+        option, factor, unit = PLAYER_UNITS[m.group(1)]
+        return f"{option} must be {int(m.group(2)) / factor:g}..{int(m.group(3)) / factor:g} {unit}"
+    return _RANGE_MESSAGE.sub(player, message)
 
 
 @dataclass(frozen=True)
@@ -42,9 +64,7 @@ class Shot:
     elevation: float = 0.0        # cue butt raised, degrees
 
     def macro_arguments(self) -> dict[str, int]:
-        return {"angle": round(self.angle * 100), "speed": round(self.speed * 1000),
-                "tip_x": round(self.tip_x * 1000), "tip_y": round(self.tip_y * 1000),
-                "elevation": round(self.elevation * 100)}
+        return {name: round(getattr(self, name) * factor) for name, (_, factor, _) in PLAYER_UNITS.items()}
 
 
 # The break: full power (the trigger's 100 %) from the head spot straight at the apex ball.
@@ -69,6 +89,7 @@ class BallOutcome:
     z_mm: float
     pocketed: bool
     tick: int | None              # pocketed or stopped at this tick (1 = the first after the strike); None: never moved
+    moving: bool = False          # still sliding or rolling when the ticks ran out
 
 
 @dataclass
@@ -82,6 +103,7 @@ class ShotResult:
     overflows: list = field(default_factory=list)
     diagnostics: list = field(default_factory=list)
     carried: int = 0              # ticks that ended mid physics tick ($carry pool.game: slow motion)
+    interrupted: bool = False     # Ctrl-C stopped the ticks; the rest is what was played until then
 
     @property
     def commands_mean(self) -> float:
@@ -165,22 +187,25 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
     last_change: dict[int, int] = {}
     previous, first_tick = start, len(emu.commands_per_tick)
     started = time.perf_counter()
-    at_rest, carried = False, 0
-    for tick in range(1, max_ticks + 1):
-        emu.tick()
-        carried += emu.score("$carry", "pool.game") == 1
-        now = ball_states(emu, holders)
-        last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
-        previous = now
-        if emu.score("$resting", "pool.game") == 1:
-            at_rest = True
-            break
+    at_rest, carried, interrupted = False, 0, False
+    try:
+        for tick in range(1, max_ticks + 1):
+            emu.tick()
+            carried += emu.score("$carry", "pool.game") == 1
+            now = ball_states(emu, holders)
+            last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
+            previous = now
+            if emu.score("$resting", "pool.game") == 1:
+                at_rest = True
+                break
+    except KeyboardInterrupt:  # the summary of the ticks played so far is still worth printing
+        interrupted = True
     seconds = time.perf_counter() - started
     costs = emu.commands_per_tick[first_tick:]
     return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(previous, last_change),
-                      list(emu.overflows), list(emu.diagnostics), carried)
+                      list(emu.overflows), list(emu.diagnostics), carried, interrupted)
 
 
 def _outcomes(states: dict[int, tuple[int, int, int]], last_change: dict[int, int]) -> list[BallOutcome]:
-    return [BallOutcome(i, x / 1000, z / 1000, state == POCKETED, last_change.get(i))
+    return [BallOutcome(i, x / 1000, z / 1000, state == POCKETED, last_change.get(i), state not in (AT_REST, POCKETED))
             for i, (x, z, state) in sorted(states.items())]

@@ -1,6 +1,8 @@
 """`dpemu shot`: a table set up, a shot struck through the pack's API, emulated to rest."""
 import json
 
+import pytest
+
 from click.testing import CliRunner
 
 from emulator.cli import main
@@ -25,10 +27,54 @@ def test_gentle_shot_moves_only_the_cue_ball_and_reports_it_as_json():
     assert report["commands_per_tick"]["max"] == max(report["commands_per_tick"]["each"])
 
 
-def test_shot_out_of_range_prints_the_packs_refusal():
+def test_shot_out_of_range_prints_the_packs_refusal_in_the_units_typed():
+    # the pack says "speed must be 1..6500 (mm/s)"; the option takes m/s
     result = run("--speed", "7")
     assert result.exit_code == 1
-    assert "shot refused: speed must be 1..6500" in result.output
+    assert "shot refused: --speed must be 0.001..6.5 m/s" in result.output
+    result = run("--speed", "1", "--elevation", "95")
+    assert "shot refused: --elevation must be 0..89 degrees" in result.output
+    result = run("--speed", "1", "--tip", "0,-0.7")
+    assert "shot refused: --tip Y must be -0.5..0.5 ball radii" in result.output
+
+
+def test_the_json_keeps_the_packs_own_refusal():
+    result = run("--speed", "7", "--json", "-")
+    assert json.loads(result.stdout)["refused"] == ["Pool: shot refused: speed must be 1..6500 (mm/s)"]
+
+
+@pytest.mark.parametrize("args, option", [
+    (("--speed", "nan"), "--speed"), (("--speed", "inf"), "--speed"), (("--speed", "1e400"), "--speed"),
+    (("--speed", "1", "--angle", "-inf"), "--angle"), (("--speed", "1", "--elevation", "nan"), "--elevation"),
+    (("--speed", "1", "--tip", "0.1,nan"), "--tip"), (("--speed", "1", "--tip", "0.1"), "--tip"),
+])
+def test_numbers_that_are_not_finite_are_usage_errors_naming_the_option(args, option):
+    result = run(*args)
+    assert result.exit_code == 2 and option in result.output and "Traceback" not in result.output
+
+
+def test_an_unwritable_json_path_is_refused_before_the_shot(tmp_path):
+    result = run("--break", "--json", str(tmp_path / "missing" / "out.json"))
+    assert result.exit_code == 2 and "does not exist" in result.output
+    assert "table at rest" not in result.output
+
+
+def test_a_json_write_that_fails_keeps_the_summary(tmp_path, monkeypatch):
+    out = tmp_path / "out.json"
+
+    def refuse(self, *args, **kwargs):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(type(out), "write_text", refuse)
+    result = run("--speed", "0.5", "--json", str(out))
+    assert result.exit_code == 1
+    assert "table at rest" in result.stdout and "could not write" in result.stderr
+
+
+def test_balls_still_rolling_at_max_ticks_are_not_called_stopped():
+    result = run("--break", "--max-ticks", "20")
+    assert result.exit_code == 1
+    assert "still moving" in result.output and "stopped at tick 20" not in result.output
 
 
 def test_break_takes_no_aim():

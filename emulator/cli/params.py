@@ -1,0 +1,67 @@
+"""Command-line values every subcommand validates the same way: finite numbers, and output paths
+checked before the work starts (a write that still fails is reported, and what was computed is kept)."""
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import click
+
+
+class FiniteFloat(click.ParamType):
+    """A float that is a number: ``nan``, ``inf`` and literals past the double range are refused."""
+
+    name = "number"
+
+    def convert(self, value, param, ctx):
+        if isinstance(value, float):
+            number = value
+        else:
+            try:
+                number = float(value)
+            except ValueError:
+                self.fail(f"{value!r} is not a number", param, ctx)
+        if not math.isfinite(number):
+            self.fail(f"{value!r} is not a finite number", param, ctx)
+        return number
+
+
+class OutputPath(click.ParamType):
+    """A file to write: its folder must exist and be writable, checked when the options are read;
+    ``-`` means standard output where ``stdout`` allows it."""
+
+    name = "file"
+
+    def __init__(self, stdout: bool = True) -> None:
+        self.stdout = stdout
+
+    def convert(self, value, param, ctx):
+        text = os.fspath(value)
+        if text == "-":
+            if self.stdout:
+                return text
+            self.fail("'-' (standard output) is not possible here: give a file name", param, ctx)
+        path = Path(text)
+        if path.is_dir():
+            self.fail(f"{text} is a folder, not a file", param, ctx)
+        folder = path.parent
+        if not folder.is_dir():
+            self.fail(f"{text}: the folder {folder} does not exist", param, ctx)
+        if not os.access(folder, os.W_OK) or (path.exists() and not os.access(path, os.W_OK)):
+            self.fail(f"{text}: not writable", param, ctx)
+        return text
+
+
+def write_output(path: str, text: str) -> bool:
+    """Write ``text`` to ``path`` (``-``: standard output); False, with the reason on stderr, when
+    the write fails."""
+    if path == "-":
+        click.echo(text)
+        return True
+    try:
+        Path(path).write_text(text)
+    except OSError as error:
+        click.echo(f"error: could not write {path}: {error.strerror or error}", err=True)
+        return False
+    return True
