@@ -7,7 +7,7 @@ from pathlib import Path
 
 import click
 
-from emulator.cli.params import FiniteFloat, OutputPath, write_output
+from emulator.cli.params import FiniteFloat, OutputPath, PackPath, write_output
 from poolgame.shot import BREAK, DEFAULT_PACK, Shot, ShotResult, in_player_units, missing_functions, new_table, play
 
 BALL_NAMES = {0: "cue"}
@@ -44,7 +44,7 @@ def _shot(break_: bool, angle, speed, tip, elevation) -> Shot:
 
 
 @click.command("shot")
-@click.argument("pack", required=False, type=click.Path(exists=True, file_okay=False, path_type=Path))
+@click.argument("pack", required=False, type=PackPath())
 @click.option("--break", "break_", is_flag=True, help="The break: full power from the head spot at the rack's apex.")
 @click.option("--angle", type=FiniteFloat(), metavar="DEG", help="Aim, degrees counter-clockwise from the table's long axis (+x) towards +z.")
 @click.option("--speed", type=FiniteFloat(), metavar="M/S", help="Cue speed (the pack accepts 0.001..6.5).")
@@ -55,13 +55,13 @@ def _shot(break_: bool, angle, speed, tip, elevation) -> Shot:
 @click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
 @click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the outcome as JSON.")
 def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitize, json_out) -> None:
-    """Set up a table with the pool datapack PACK (default: the repository's datapack/), rack,
+    """Set up a table with the pool datapack PACK (a folder or .zip file; default: the pool datapack that ships with dpemu), rack,
     strike, and emulate until the table is at rest. Exit status 1 when the pack refuses the shot,
     the table does not come to rest within --max-ticks, or the sanitizer finds a wrapped value."""
     chosen = _shot(break_, angle, speed, tip, elevation)
     pack = pack or DEFAULT_PACK
-    if not pack.is_dir():
-        raise click.UsageError(f"no pool datapack at {pack}: give the pack's folder as PACK")
+    if not pack.exists():
+        raise click.UsageError(f"no pool datapack at {pack}: give the pack's folder or .zip file as PACK")
     emu = new_table(pack, backend, sanitize)
     for diag in emu.load_diagnostics:
         if diag.severity == "error":

@@ -7,11 +7,11 @@ from __future__ import annotations
 
 import json
 import sys
-import zipfile
 from pathlib import Path
 
 import click
 
+from emulator.cli.params import PackPath
 from mcfunction_parser.check import check_packs
 from mcfunction_parser.diagnostics import ERROR
 from mcfunction_parser.pack.versions import pack_format_for_version, parse_mc_version
@@ -26,16 +26,8 @@ def _validate_version(ctx: click.Context, param: click.Parameter, value: str | N
     return value
 
 
-def _validate_packs(ctx: click.Context, param: click.Parameter, value: tuple[Path, ...]) -> tuple[Path, ...]:
-    for path in value:
-        if not path.is_dir() and not zipfile.is_zipfile(path):
-            raise click.BadParameter(f"'{path}' is neither a pack folder nor a .zip file")
-    return value
-
-
 @click.command()
-@click.argument("packs", nargs=-1, required=True, callback=_validate_packs,
-                type=click.Path(exists=True, path_type=Path))
+@click.argument("packs", nargs=-1, required=True, type=PackPath())
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
 @click.option("--mc", "mc_version", metavar="VERSION", callback=_validate_version,
               help="Game version to check for (e.g. 1.21.4); default: the packs' own.")

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import click
 
+from emulator.cli.params import PackPath
 from emulator.vm import loop as vm
 from emulator.vm.backend import NumbaBackend
 from emulator.vm.program import Program
@@ -81,8 +82,19 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
     return str(value)
 
 
+def _why_missing(packs, function_id: str) -> str:
+    """The load error of the function's own file, when it failed to load (the game drops a function
+    with a line it cannot parse)."""
+    namespace, path = function_id.split(":", 1)
+    for diag in packs.errors:
+        where = diag.path.replace("\\", "/")
+        if f"/{namespace}/" in where and where.endswith(f"/{path}.mcfunction"):
+            return f": it failed to load:\n{diag.format()}"
+    return ""
+
+
 @click.command("disasm")
-@click.argument("pack", type=click.Path(exists=True, file_okay=False))
+@click.argument("pack", type=PackPath())
 @click.argument("function")
 @click.option("--mc", "mc_version", metavar="VERSION", help="Game version (default: the pack's).")
 def disasm(pack: str, function: str, mc_version: str | None) -> None:
@@ -92,7 +104,8 @@ def disasm(pack: str, function: str, mc_version: str | None) -> None:
     packs = load_packs([pack], mc_version)
     function_id = function if ":" in function else f"minecraft:{function}"
     if function_id not in packs.functions:
-        raise click.BadParameter(f"no function {function_id} in {pack}", param_hint="FUNCTION")
+        raise click.BadParameter(f"no function {function_id} in {pack}{_why_missing(packs, function_id)}",
+                                 param_hint="FUNCTION")
     if packs.functions[function_id].is_macro:
         raise click.BadParameter(f"{function_id} is a macro function: it is compiled per argument set at run time",
                                  param_hint="FUNCTION")

@@ -7,6 +7,7 @@ from dataclasses import dataclass
 import click
 
 from emulator.api import Emulator
+from emulator.cli.params import PackPath
 from emulator.world.semantics import INT_MAX, INT_MIN
 
 
@@ -126,7 +127,7 @@ def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[s
 def run_options(command):
     """The arguments ``dpemu run`` and ``dpemu profile`` share: PACKS, --ticks, --call, --set, --until."""
     decorators = [
-        click.argument("packs", nargs=-1, required=True, type=click.Path(exists=True, file_okay=False)),
+        click.argument("packs", nargs=-1, required=True, type=PackPath()),
         click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run."),
         click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
                      help="Call a function (as the server) before ticking; macro arguments in SNBT."),

@@ -8,6 +8,8 @@ from pathlib import Path
 
 import click
 
+from mcfunction_parser.pack.loader import zip_problem
+
 
 class FiniteFloat(click.ParamType):
     """A float that is a number: ``nan``, ``inf`` and literals past the double range are refused."""
@@ -65,3 +67,21 @@ def write_output(path: str, text: str) -> bool:
         click.echo(f"error: could not write {path}: {error.strerror or error}", err=True)
         return False
     return True
+
+
+class PackPath(click.ParamType):
+    """A pack: a folder, or a .zip file that opens as one (a broken archive says so)."""
+
+    name = "pack"
+
+    def convert(self, value, param, ctx):
+        path = Path(value)
+        if path.is_dir():
+            return path
+        if not path.exists():
+            self.fail(f"'{path}' does not exist", param, ctx)
+        problem = zip_problem(path)
+        if problem:
+            self.fail(f"'{path}' {problem}", param, ctx)
+        return path
+

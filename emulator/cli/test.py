@@ -5,22 +5,25 @@ import sys
 
 import click
 
+from emulator.cli.params import OutputPath, write_output
 from emulator.testing import discover, run_suite
-from emulator.testing.discovery import DiscoveryError
+from emulator.testing.discovery import DiscoveryError, selected
 from emulator.testing.junit import junit_xml
 
 
 @click.command("test")
-@click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True))
+@click.argument("paths", nargs=-1, required=True, type=click.Path(exists=True))  # packs, folders, files
 @click.option("-k", "pattern", metavar="PATTERN", help="Only tests whose id contains PATTERN.")
-@click.option("--junit", "junit_file", metavar="FILE", type=click.Path(dir_okay=False), help="Write JUnit XML.")
+@click.option("--junit", "junit_file", metavar="FILE", type=OutputPath(stdout=False), help="Write JUnit XML.")
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 def test(paths, pattern, junit_file, backend) -> None:
-    """Run the test files in PATHS (packs, folders in a pack, or test files)."""
+    """Run the test files in PATHS (packs as folders or .zip files, folders in a pack, or test files)."""
     try:
         files = discover(list(paths))
     except DiscoveryError as error:
         raise click.UsageError(str(error)) from None
+    if files and not selected(files, pattern):
+        raise click.UsageError(f"-k {pattern!r} matches none of the {len(files)} tests under {', '.join(paths)}")
 
     def loaded(packs) -> None:
         for diag in packs.errors:
@@ -30,8 +33,6 @@ def test(paths, pattern, junit_file, backend) -> None:
     if not summary.results:
         click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
                    + ") under " + ", ".join(paths), err=True)
-    if junit_file:
-        with open(junit_file, "w", encoding="utf-8") as handle:
-            handle.write(junit_xml(summary))
+    written = not junit_file or write_output(junit_file, junit_xml(summary))
     click.echo(summary.line())
-    sys.exit(0 if summary.ok else 1)
+    sys.exit(0 if summary.ok and written else 1)

@@ -15,7 +15,7 @@ from emulator.api import Emulator
 from emulator.vm.host import Host, HostFailure
 from emulator.world.state import Context
 from emulator.testing import chat
-from emulator.testing.discovery import TestFile
+from emulator.testing.discovery import TestFile, selected
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
 from emulator.testing.results import FAILED, PASSED, Summary, TestResult
 from emulator.testing.testfile import ChatCheck, Check, Delay, Dummy, Fail, PerContext, Run, Succeed, TestCase, read_test
@@ -38,19 +38,20 @@ class _Verdict(Exception):
         self.status, self.message, self.line = status, message, line
 
 
-def shown_path(path: Path) -> str:
-    """A path as messages show it: relative to the working folder when inside it."""
-    rel = os.path.relpath(path)
-    return path.as_posix() if rel.startswith("..") else Path(rel).as_posix()
+def shown_path(path) -> str:
+    """A path as messages show it: relative to the working folder when inside it (``path`` may lie
+    inside a .zip pack: a zipfile.Path)."""
+    text = str(path)
+    rel = os.path.relpath(text)
+    return Path(text).as_posix() if rel.startswith("..") else Path(rel).as_posix()
 
 
 def load_suite(files: list[TestFile], pattern: str | None = None):
     """Parse each pack once and its test files; yield ``(packs, [TestCase])`` per pack with the
     generated functions added to ``packs.functions``."""
     by_pack: dict[Path, list[TestFile]] = {}
-    for tf in files:
-        if pattern is None or pattern.lower() in tf.id.lower():
-            by_pack.setdefault(tf.pack_root, []).append(tf)
+    for tf in selected(files, pattern):
+        by_pack.setdefault(tf.pack_root, []).append(tf)
     key = 0
     for root, pack_files in by_pack.items():
         packs = load_packs([root])

@@ -137,11 +137,23 @@ def _open_pack(path: Path, shown: str, diagnostics: list[Diagnostic]) -> PackPat
     """The pack's root: the folder itself, or the inside of a .zip file (as the game accepts)."""
     if path.is_dir():
         return path
-    if path.is_file() and zipfile.is_zipfile(path):
+    problem = zip_problem(path) if path.is_file() else "does not exist"
+    if problem is None:
         return zipfile.Path(path)
-    what = "is not a folder or a .zip file" if path.exists() else "does not exist"
-    diagnostics.append(Diagnostic(ERROR, f"pack {what}", shown))
+    diagnostics.append(Diagnostic(ERROR, f"pack {problem}", shown))
     return None
+
+
+def zip_problem(path: Path) -> str | None:
+    """Why the file ``path`` cannot be read as a .zip pack, or None when it can."""
+    if not zipfile.is_zipfile(path):
+        return "is a corrupt .zip archive" if path.suffix.lower() == ".zip" else "is not a folder or a .zip file"
+    try:
+        with zipfile.ZipFile(path) as archive:
+            broken = archive.testzip()
+    except (zipfile.BadZipFile, OSError) as error:
+        return f"is a corrupt .zip archive ({error})"
+    return f"is a corrupt .zip archive ({broken} is damaged)" if broken else None
 
 
 def _target_version(mc_version: str | None, metas: list[PackMeta]) -> Version:

@@ -69,7 +69,7 @@ def test_usage_errors_exit_2(tmp_path):
     a_file = tmp_path / "file.txt"
     a_file.write_text("x")
     not_a_pack = run(a_file)
-    assert not_a_pack.exit_code == 2 and "neither a pack folder nor a .zip file" in not_a_pack.output
+    assert not_a_pack.exit_code == 2 and "is not a folder or a .zip file" in not_a_pack.output
     root = pack(tmp_path / "p", CLEAN)
     bad_version = run(root, "--mc", "1.99")
     assert bad_version.exit_code == 2 and "unknown release 1.99" in bad_version.output

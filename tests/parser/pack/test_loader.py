@@ -1,5 +1,6 @@
 """Loading functions: folder names by game version, overlays, several packs, file decoding."""
 import time
+import zipfile
 
 from mcfunction_parser.pack.loader import load_packs
 from tests.parser.pack.packbuild import meta, write_pack
@@ -228,3 +229,14 @@ def test_symbolic_link_loop_is_walked_once(make_pack):
     root = make_pack(files={"data/a/function/x.mcfunction": "say x\n"})
     (root / "data/a/function/loop").symlink_to(root / "data/a/function", target_is_directory=True)
     assert list(load_packs([root]).functions) == ["a:x"]
+
+
+def test_a_truncated_zip_is_named_a_corrupt_archive(tmp_path):
+    good = tmp_path / "good.zip"
+    with zipfile.ZipFile(good, "w") as z:
+        z.writestr("pack.mcmeta", '{"pack": {"pack_format": 48, "description": ""}}')
+        z.writestr("data/a/function/x.mcfunction", "say hi\n" * 50)
+    broken = tmp_path / "broken.zip"
+    broken.write_bytes(good.read_bytes()[:120])
+    loaded = load_packs([broken])
+    assert loaded.packs == [] and loaded.errors[0].message == "pack is a corrupt .zip archive"
