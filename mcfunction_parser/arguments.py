@@ -159,7 +159,9 @@ def _bound(r: Reader, is_int: bool):
     return float(token)
 
 
-def _range(r: Reader, is_int: bool):
+def _range(r: Reader, is_int: bool, wraps: bool = False):
+    """MinMaxBounds.fromReader: ``lo``, ``lo..``, ``..hi`` or ``lo..hi``; ``wraps`` (rotations,
+    WrappedMinMaxBounds) lets the minimum be bigger than the maximum: the range goes round."""
     start = r.pos
     lo = _bound(r, is_int)
     if r.text.startswith("..", r.pos):
@@ -171,7 +173,7 @@ def _range(r: Reader, is_int: bool):
         if lo is None:
             r.fail(f"expected a value or range of values, got {r.found()}", start)
         hi = lo
-    if lo is not None and hi is not None and lo > hi:
+    if not wraps and lo is not None and hi is not None and lo > hi:
         r.fail(f"range minimum {lo} is bigger than its maximum {hi}", start)
     return lo, hi
 
@@ -200,6 +202,13 @@ def int_range(r: Reader) -> IntRange:
 
 def float_range(r: Reader) -> FloatRange:
     lo, hi = _range(r, False)
+    return FloatRange(lo, hi)
+
+
+def rotation_range(r: Reader) -> FloatRange:
+    """``x_rotation``/``y_rotation`` (WrappedMinMaxBounds.fromReader): ``135..-135`` is the half
+    turn through 180."""
+    lo, hi = _range(r, False, wraps=True)
     return FloatRange(lo, hi)
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import re
 
-from .arguments import float_range, int_range, is_uuid, json_span, resource_location
+from .arguments import float_range, int_range, is_uuid, json_span, resource_location, rotation_range
 from .ast import FloatRange, NameTarget, Selector, SelectorArg
 from .features import FEATURES
 from .reader import Reader, show
@@ -226,8 +226,8 @@ _PARSERS = {
     "name": Reader.string,
     "distance": _distance,
     "level": _level,
-    "x_rotation": float_range,
-    "y_rotation": float_range,
+    "x_rotation": rotation_range,
+    "y_rotation": rotation_range,
     "limit": _limit,
     "sort": _sort,
     "gamemode": _gamemode,

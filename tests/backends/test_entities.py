@@ -356,3 +356,16 @@ def test_position_store_shortcut_equals_the_full_round_trip(kind, axis, value, s
     assert nbt_ops.tags_equal(entity_nbt(fast), entity_nbt(slow))
     assert (fast.yaw, fast.pitch, fast.motion, fast.tags) == (slow.yaw, slow.pitch, slow.motion, slow.tags)
 
+
+
+# ---------------------------------------------------------------------- wrapped rotation ranges
+def test_a_rotation_range_whose_minimum_is_bigger_goes_round_through_180(tmp_path):
+    # WrappedMinMaxBounds.fromReader accepts 135..-135, and EntitySelector's rotation predicate
+    # matches f >= min || f <= max when min > max: the half turn through 180 degrees
+    functions = {"t:main": SETUP + "\n".join(
+        f"summon marker 0 0 0 {{Tags:[\"m\"],Rotation:[{yaw}f,0f]}}" for yaw in (180, -170, 140, 0, 90, -100)
+    ) + "\nexecute store result score #n v if entity @e[tag=m,y_rotation=135..-135]"
+        "\nexecute store result score #p v if entity @e[tag=m,x_rotation=80..-80]"}
+    emu = run_both(tmp_path, functions)
+    assert emu.score("#n", "v") == 3  # 180, -170, 140
+    assert emu.score("#p", "v") == 0  # every pitch is 0, outside 80..180 and -180..-80
