@@ -149,11 +149,11 @@ def zip_problem(path: Path) -> str | None:
     if not zipfile.is_zipfile(path):
         return "is a corrupt .zip archive" if path.suffix.lower() == ".zip" else "is not a folder or a .zip file"
     try:
-        with zipfile.ZipFile(path) as archive:
-            broken = archive.testzip()
+        with zipfile.ZipFile(path):  # reads the central directory; a damaged member fails when read
+            pass
     except (zipfile.BadZipFile, OSError) as error:
         return f"is a corrupt .zip archive ({error})"
-    return f"is a corrupt .zip archive ({broken} is damaged)" if broken else None
+    return None
 
 
 def _target_version(mc_version: str | None, metas: list[PackMeta]) -> Version:
@@ -208,6 +208,8 @@ def _range_label(formats: FormatRange) -> str:
 def _data_files(base: PackPath, prefix: str) -> dict[str, tuple[PackPath, str]]:
     """``data/**`` files under ``base`` (the pack root or an overlay folder), keyed by path
     relative to ``base``, with their path inside the pack (``prefix`` + key)."""
+    if isinstance(base, zipfile.Path):
+        return _zip_data_files(base, prefix)
     found: dict[str, tuple[PackPath, str]] = {}
     stack = [(base / "data", "data")]
     seen: set[Path] = set()  # folders already walked: a symbolic link loop is walked once
@@ -225,6 +227,15 @@ def _data_files(base: PackPath, prefix: str) -> dict[str, tuple[PackPath, str]]:
                 stack.append((child, child_rel))
             elif child.is_file():
                 found[child_rel] = (child, prefix + child_rel)
+    return dict(sorted(found.items()))
+
+
+def _zip_data_files(base: zipfile.Path, prefix: str) -> dict[str, tuple[PackPath, str]]:
+    """:func:`_data_files` inside a .zip: one pass over the archive's names (walking its folders
+    with zipfile.Path would list the whole archive once per folder)."""
+    start = base.at + "data/"
+    found = {name[len(base.at):]: (zipfile.Path(base.root, name), prefix + name[len(base.at):])
+             for name in base.root.namelist() if name.startswith(start) and not name.endswith("/")}
     return dict(sorted(found.items()))
 
 

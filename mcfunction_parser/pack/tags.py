@@ -182,19 +182,18 @@ def resolve_tag(tags: dict[str, FunctionTag], functions: Collection[str], tag_id
     """The functions a tag runs: nested tags flattened in order, duplicates and absent optional
     entries dropped. An unknown tag gives an empty list."""
     result: dict[str, None] = {}
-    visiting: set[str] = set()
+    seen: set[str] = set()  # a tag reached again adds nothing new: each is walked once
 
     def visit(current: str) -> None:
         tag = tags.get(current)
-        if tag is None or current in visiting:
+        if tag is None or current in seen:
             return
-        visiting.add(current)
+        seen.add(current)
         for entry in tag.entries:
             if entry.is_tag:
                 visit(entry.id)
             elif entry.id in functions:
                 result.setdefault(entry.id, None)
-        visiting.discard(current)
 
     visit(normalise_id(tag_id.removeprefix("#")))
     return list(result)

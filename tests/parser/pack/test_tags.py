@@ -4,11 +4,15 @@ Rules from minecraft.wiki "Tag" (JSON format): ``required`` defaults to true and
 required entry makes the tag fail to load; a circular reference causes a loading failure;
 ``replace`` drops lower-priority packs' entries.
 """
+from mcfunction_parser.ast import FunctionTag, TagEntry
+from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.pack.loader import load_packs
+from mcfunction_parser.pack.tags import resolve_tag
 from tests.parser.pack.packbuild import tag
 
 FN = "data/a/function/{}.mcfunction"
 TAG = "data/{}/tags/function/{}.json"
+LOC = Loc("t.json", 1, 1)
 
 
 def _functions(*names):
@@ -129,3 +133,30 @@ def test_large_tag_file_reports_each_entry_at_its_own_position(make_pack):
     loaded = load_packs([root])
     last = loaded.errors[-1]  # every entry is missing: one error per entry, at its own line
     assert len(loaded.errors) == 20000 and (last.line, last.col) == (20001, 3)
+
+
+def test_nested_tags_that_share_members_are_each_walked_once():
+    # a chain of diamonds: #d0 includes #d1 twice over (through #a1 and #b1), and so on; walked
+    # path by path this is 2**40 visits, the game's own resolution builds each tag once
+    # (TagLoader.build with its memo of resolved tags)
+    tags = {}
+    for level in range(40):
+        nxt = f"t:d{level + 1}"
+        tags[f"t:d{level}"] = FunctionTag(f"t:d{level}", [TagEntry(f"t:a{level + 1}", True, True, LOC),
+                                                           TagEntry(f"t:b{level + 1}", True, True, LOC)])
+        for side in "ab":
+            tags[f"t:{side}{level + 1}"] = FunctionTag(f"t:{side}{level + 1}", [TagEntry(nxt, True, True, LOC),
+                                                                                TagEntry(f"t:f{level}", False, True, LOC)])
+    tags["t:d40"] = FunctionTag("t:d40", [TagEntry("t:end", False, True, LOC)])
+
+    class Counting(dict):
+        lookups = 0
+
+        def get(self, key, default=None):
+            Counting.lookups += 1
+            return super().get(key, default)
+
+    functions = {f"t:f{level}" for level in range(40)} | {"t:end"}
+    members = resolve_tag(Counting(tags), functions, "t:d0")
+    assert members == ["t:end"] + [f"t:f{level}" for level in reversed(range(40))]
+    assert Counting.lookups <= 2 * len(tags)
