@@ -30,6 +30,7 @@ from pathlib import Path
 from . import ast
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.loader import LoadedPacks, load_packs
+from mcfunction_parser.pack.versions import RELEASE_FORMATS, Version, parse_mc_version, releases_label, version_label
 
 # Function references and objective definitions inside macro templates (unparsed until called).
 _MACRO_FUNCTION = re.compile(r"(?:^|\s)function\s+(#?[a-z0-9_.-]+:[a-z0-9_./-]+)(?=\s|$)")
@@ -42,6 +43,7 @@ class CheckResult:
     loaded: LoadedPacks
     diagnostics: list[Diagnostic]  # loader, parser and linter findings, by file and position
     seconds: float
+    checked: tuple[str, ...] = ()  # the releases checked, when more than the packs' own one
 
     @property
     def files(self) -> int:
@@ -68,9 +70,10 @@ class CheckResult:
 
     def summary(self) -> str:
         errors, warnings = len(self.of(ERROR)), len(self.of(WARNING))
+        releases = f" (checked for {releases_label([parse_mc_version(v) for v in self.checked])})" if self.checked else ""
         return (f"{_count(self.files, 'file')}, {_count(self.functions, 'function')}, "
                 f"{_count(self.commands, 'command')}: {_count(errors, 'error')}, "
-                f"{_count(warnings, 'warning')}")
+                f"{_count(warnings, 'warning')}{releases}")
 
     def to_json(self) -> dict:
         return {"files": self.files, "functions": self.functions, "commands": self.commands,
@@ -78,6 +81,7 @@ class CheckResult:
                 "errors": [d.to_json() for d in self.of(ERROR)],
                 "warnings": [d.to_json() for d in self.of(WARNING)],
                 "infos": [d.to_json() for d in self.of(INFO)],
+                "versions": list(self.checked) or [version_label(self.loaded.version)],
                 "seconds": round(self.seconds, 3)}
 
 
@@ -92,6 +96,59 @@ def check_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> C
     found = lint(loaded)
     diagnostics = sorted(loaded.diagnostics + found, key=_position)
     return CheckResult(loaded, diagnostics, time.perf_counter() - start)
+
+
+def check_releases(paths: Sequence[str | Path], releases: Sequence[Version] | None = None) -> CheckResult:
+    """Lint the packs once per data pack format among ``releases`` (each format's newest release
+    stands for it: the parser's rules follow the format) and merge the findings: one true in every
+    release as it is, one true in some tagged with those releases. ``releases`` None: the range
+    every pack declares (``supported_formats``, ``min_format``/``max_format``), else the packs' own
+    release as :func:`check_packs` picks it."""
+    if releases is None:
+        first = check_packs(paths)
+        releases = declared_releases(first.loaded)
+        if len({RELEASE_FORMATS[v] for v in releases}) < 2:
+            return first
+    by_format: dict = {}
+    for release in sorted(releases):
+        by_format[RELEASE_FORMATS[release]] = release
+    if len(by_format) == 1:
+        return check_packs(paths, version_label(max(releases)))
+    results = [(fmt, check_packs(paths, version_label(release))) for fmt, release in by_format.items()]
+    return _merged(results, releases)
+
+
+def declared_releases(loaded: LoadedPacks) -> list[Version]:
+    """The known releases whose format every loaded pack declares it supports (none declared: [])."""
+    ranges = [p.supported for p in loaded.packs if p.supported is not None]
+    if not ranges:
+        return []
+    return sorted(v for v, fmt in RELEASE_FORMATS.items() if all(fmt in r for r in ranges))
+
+
+# The part of a message that names the release it was checked for ("(pack targets 1.18.2)", "not
+# 1.20.4 (format 26)"): dropped when one finding stands for several releases.
+_CHECKED_RELEASE = re.compile(r" \(pack targets [0-9.]+\)|, not [0-9.]+ \(format [0-9.]+\)")
+
+
+def _merged(results: list, releases: Sequence[Version]) -> CheckResult:
+    """One result from per-format ones: the newest format's counts, every finding once."""
+    held: dict[tuple, tuple[Diagnostic, set]] = {}
+    for fmt, result in results:
+        for d in result.diagnostics:
+            d = dataclasses.replace(d, message=_CHECKED_RELEASE.sub("", d.message))
+            key = (d.severity, d.message, d.path, d.line, d.col)
+            held.setdefault(key, (d, set()))[1].add(fmt)
+    all_formats = {fmt for fmt, _ in results}
+    merged = []
+    for d, formats in held.values():
+        if formats != all_formats:
+            d = dataclasses.replace(d, versions=tuple(version_label(v) for v in sorted(releases)
+                                                      if RELEASE_FORMATS[v] in formats))
+        merged.append(d)
+    newest = results[-1][1]
+    return CheckResult(newest.loaded, sorted(merged, key=_position), sum(r.seconds for _, r in results),
+                       checked=tuple(version_label(v) for v in sorted(releases)))
 
 
 def _position(d: Diagnostic) -> tuple:

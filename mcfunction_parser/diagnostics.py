@@ -3,6 +3,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .pack.versions import parse_mc_version, releases_label
+
 ERROR = "error"
 WARNING = "warning"
 INFO = "info"
@@ -30,6 +32,7 @@ class Diagnostic:
     line: int | None = None
     col: int | None = None
     source_line: str | None = None
+    versions: tuple[str, ...] | None = None  # checked over several releases: those it holds in, when not all
 
     @classmethod
     def at(cls, severity: str, message: str, loc: Loc, source_line: str | None = None) -> "Diagnostic":
@@ -43,13 +46,18 @@ class Diagnostic:
             if self.col is not None:
                 where += f":{self.col}"
         text = f"{where}: {self.severity}: {self.message}"
+        if self.versions is not None:
+            text += f" (only in {releases_label([parse_mc_version(v) for v in self.versions])})"
         if self.source_line is not None and self.col is not None:
             shown, caret_col = _clip(self.source_line, self.col)
             text += f"\n    {shown}\n    {' ' * (caret_col - 1)}^"
         return text
 
     def to_json(self) -> dict:
-        return {"path": self.path, "line": self.line, "col": self.col, "message": self.message}
+        found = {"path": self.path, "line": self.line, "col": self.col, "message": self.message}
+        if self.versions is not None:
+            found["versions"] = list(self.versions)
+        return found
 
 
 def _clip(line: str, col: int, width: int = 120) -> tuple[str, int]:

@@ -12,30 +12,31 @@ from pathlib import Path
 import click
 
 from emulator.cli.params import PackPath
-from mcfunction_parser.check import check_packs
+from mcfunction_parser.check import check_releases
 from mcfunction_parser.diagnostics import ERROR
-from mcfunction_parser.pack.versions import pack_format_for_version, parse_mc_version
+from mcfunction_parser.pack.versions import parse_version_set
 
 
-def _validate_version(ctx: click.Context, param: click.Parameter, value: str | None) -> str | None:
-    if value is not None:
-        try:
-            pack_format_for_version(parse_mc_version(value))
-        except ValueError as exc:
-            raise click.BadParameter(str(exc)) from None
-    return value
+def _validate_versions(ctx: click.Context, param: click.Parameter, value: str | None) -> list | None:
+    if value is None:
+        return None
+    try:
+        return parse_version_set(value)
+    except ValueError as exc:
+        raise click.BadParameter(str(exc)) from None
 
 
 @click.command()
 @click.argument("packs", nargs=-1, required=True, type=PackPath())
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object instead of text.")
-@click.option("--mc", "mc_version", metavar="VERSION", callback=_validate_version,
-              help="Game version to check for (e.g. 1.21.4); default: the packs' own.")
-def check(packs: tuple[Path, ...], as_json: bool, mc_version: str | None) -> None:
+@click.option("--mc", "releases", metavar="VERSION[..VERSION|,VERSION...]", callback=_validate_versions,
+              help="Game versions to check for: 1.21.4, a range 1.16.5..1.21.11 or a list 1.20.4,1.21.4; "
+                   "default: the range the packs declare, else their own version.")
+def check(packs: tuple[Path, ...], as_json: bool, releases: list | None) -> None:
     """Check data packs (folders or .zip files, loaded in the order given, later ones
     override) and report problems."""
     try:
-        result = check_packs(packs, mc_version)
+        result = check_releases(packs, releases)
     except Exception as exc:  # a bug in dpemu must still end with a message, not a traceback
         click.echo(f"dpemu check: internal error: {type(exc).__name__}: {exc}", err=True)
         sys.exit(1)

@@ -97,3 +97,39 @@ def version_for_pack_format(fmt: int | Format) -> Version:
 def uses_singular_folders(fmt: Format) -> bool:
     """True when the game reading ``fmt`` looks for ``function``/``tags/function`` (not ``functions``)."""
     return fmt >= SINGULAR_FOLDERS_FORMAT
+
+
+def parse_version_set(text: str) -> list[Version]:
+    """``--mc``'s forms: one release (``1.21.4``), a range (``1.16.5..1.21.11``: every known release
+    between, inclusive) or a list (``1.20.4,1.21.4``); releases oldest first. Raises ValueError for
+    a malformed text, an unknown listed release or a range holding no release."""
+    if ".." in text:
+        lo_text, hi_text = text.split("..", 1)
+        lo, hi = parse_mc_version(lo_text), parse_mc_version(hi_text)
+        if lo > hi:
+            raise ValueError(f"'{text}': the first version comes after the second")
+        found = sorted(v for v in RELEASE_FORMATS if lo <= v <= hi)
+        if not found:
+            raise ValueError(f"'{text}': no known release in that range")
+        return found
+    versions = sorted({parse_mc_version(part) for part in text.split(",") if part.strip()})
+    if not versions:
+        raise ValueError(f"'{text}' is not a game version (expected e.g. 1.21.4)")
+    for version in versions:
+        pack_format_for_version(version)
+    return versions
+
+
+def releases_label(versions: list[Version]) -> str:
+    """Releases as runs of consecutive known releases: ``1.16.5, 1.18 – 1.19.2``."""
+    ordered = sorted(RELEASE_FORMATS)
+    wanted = set(versions)
+    runs: list[list[Version]] = []
+    for version in ordered:
+        if version in wanted:
+            if runs and ordered.index(version) == ordered.index(runs[-1][-1]) + 1:
+                runs[-1].append(version)
+            else:
+                runs.append([version])
+    return ", ".join(version_label(r[0]) if len(r) == 1 else f"{version_label(r[0])} – {version_label(r[-1])}"
+                     for r in runs)

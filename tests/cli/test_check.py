@@ -56,12 +56,13 @@ def test_json_output_is_one_object(tmp_path):
     result = run(root, "--json")
     assert result.exit_code == 1
     data = json.loads(result.output)
-    assert list(data) == ["files", "functions", "commands", "lines", "errors", "warnings", "infos", "seconds"]
+    assert list(data) == ["files", "functions", "commands", "lines", "errors", "warnings", "infos", "versions", "seconds"]
     assert (data["files"], data["functions"], data["commands"], data["lines"]) == (4, 2, 3, 3)
     assert data["errors"] == [{"path": f"{root}/data/a/function/extra.mcfunction", "line": 1, "col": 1,
                                "message": "unknown function a:nope"}]
     assert data["infos"][0]["message"].startswith("function a:extra is never referenced")
     assert isinstance(data["seconds"], float)
+    assert data["versions"] == ["1.21.4"]  # pack_format 61
 
 
 def test_usage_errors_exit_2(tmp_path):
@@ -123,3 +124,53 @@ def test_zip_pack(tmp_path):
             zf.writestr(rel, text)
     result = run(archive)
     assert result.exit_code == 0 and result.output.endswith("1 function, 2 commands: 0 errors, 0 warnings\n")
+
+
+# ---------------------------------------------------------------------- several releases
+GATED = {  # supports 1.17 - 1.20.1; `ride` exists from 1.19.4 (23w03a), the version-gated variant
+    "data/a/functions/load.mcfunction": "scoreboard objectives add o dummy\n",
+    "data/a/functions/v19/mount.mcfunction": "ride @s mount @e[type=minecraft:pig,limit=1]\n",
+    "data/minecraft/tags/functions/load.json": '{"values": ["a:load"]}',
+    "data/minecraft/tags/functions/tick.json": '{"values": ["a:v19/mount"]}',
+}
+
+
+def gated_pack(root: Path) -> Path:
+    root = pack(root, GATED)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {
+        "pack_format": 7, "description": "", "supported_formats": {"min_inclusive": 7, "max_inclusive": 15}}}))
+    return root
+
+
+def test_a_pack_declaring_a_range_is_checked_over_it_with_findings_tagged_by_release(tmp_path):
+    result = run(gated_pack(tmp_path / "p"))
+    assert result.exit_code == 1
+    errors = [line for line in result.output.splitlines() if ": error: " in line]
+    assert errors and all(line.endswith("(only in 1.17 – 1.19.3)") for line in errors), errors
+    assert "unknown command 'ride'" in errors[0] or "ride" in errors[0]
+    assert result.output.splitlines()[-1].endswith("(checked for 1.17 – 1.20.1)")
+
+
+def test_mc_takes_a_range_and_a_list_and_json_carries_the_releases(tmp_path):
+    root = gated_pack(tmp_path / "p")
+    report = json.loads(run(root, "--mc", "1.19.4,1.20.1", "--json").output)
+    assert report["errors"] == [] and report["versions"] == ["1.19.4", "1.20.1"]
+    report = json.loads(run(root, "--mc", "1.18..1.19.4", "--json").output)
+    assert report["errors"] and all(e["versions"] == ["1.18", "1.18.1", "1.18.2", "1.19", "1.19.1", "1.19.2", "1.19.3"]
+                                    for e in report["errors"])
+    assert report["versions"][0] == "1.18" and report["versions"][-1] == "1.19.4"
+
+
+def test_a_finding_true_in_every_release_is_not_tagged(tmp_path):
+    files = {**GATED, "data/a/functions/v19/mount.mcfunction": "scoreboard players sett x o 1\n"}
+    root = pack(tmp_path / "p", files)
+    result = run(root, "--mc", "1.17..1.20.1")
+    errors = [line for line in result.output.splitlines() if ": error: " in line]
+    assert errors and not any("only in" in line for line in errors)
+
+
+def test_bad_version_sets_are_usage_errors(tmp_path):
+    root = pack(tmp_path / "p", CLEAN)
+    for bad in ("1.21.4..1.20", "1.99", "1.20.1,x", "0.1..0.2"):
+        result = run(root, "--mc", bad)
+        assert result.exit_code == 2, (bad, result.output)

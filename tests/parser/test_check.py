@@ -167,7 +167,7 @@ def test_summary_and_json(tmp_path):
     result = check_packs([root])
     assert result.summary() == "3 files, 1 function, 2 commands: 1 error, 0 warnings"
     data = result.to_json()
-    assert set(data) == {"files", "functions", "commands", "lines", "errors", "warnings", "infos", "seconds"}
+    assert set(data) == {"files", "functions", "commands", "lines", "errors", "warnings", "infos", "versions", "seconds"}
     assert data["lines"] == 4 and data["errors"][0] == {
         "path": f"{root}/data/a/function/load.mcfunction", "line": 4, "col": 1,
         "message": "unknown function a:nope"}
