@@ -89,23 +89,30 @@ def _count(n: int, noun: str) -> str:
     return f"{n} {noun}{'' if n == 1 else 's'}"
 
 
-def check_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> CheckResult:
-    """Load the packs (in order) and lint them. ``mc_version`` as for :func:`load_packs`."""
+def check_packs(paths: Sequence[str | Path], mc_version: str | None = None,
+                with_packs: Sequence[str | Path] = ()) -> CheckResult:
+    """Load the packs (in order) and lint them. ``mc_version`` as for :func:`load_packs`.
+    ``with_packs``: packs expected beside them at run time (libraries, other modules), loaded
+    first; their own findings are not reported."""
     start = time.perf_counter()
-    loaded = load_packs(paths, mc_version)
+    loaded = load_packs([*with_packs, *paths], mc_version)
     found = lint(loaded)
     diagnostics = sorted(loaded.diagnostics + found, key=_position)
+    if with_packs:
+        beside = tuple(str(Path(p)).rstrip("/") + "/" for p in with_packs)
+        diagnostics = [d for d in diagnostics if not (d.path + "/").startswith(beside)]
     return CheckResult(loaded, diagnostics, time.perf_counter() - start)
 
 
-def check_releases(paths: Sequence[str | Path], releases: Sequence[Version] | None = None) -> CheckResult:
+def check_releases(paths: Sequence[str | Path], releases: Sequence[Version] | None = None,
+                   with_packs: Sequence[str | Path] = ()) -> CheckResult:
     """Lint the packs once per data pack format among ``releases`` (each format's newest release
     stands for it: the parser's rules follow the format) and merge the findings: one true in every
     release as it is, one true in some tagged with those releases. ``releases`` None: the range
     every pack declares (``supported_formats``, ``min_format``/``max_format``), else the packs' own
     release as :func:`check_packs` picks it."""
     if releases is None:
-        first = check_packs(paths)
+        first = check_packs(paths, with_packs=with_packs)
         releases = declared_releases(first.loaded)
         if len({RELEASE_FORMATS[v] for v in releases}) < 2:
             return first
@@ -113,8 +120,8 @@ def check_releases(paths: Sequence[str | Path], releases: Sequence[Version] | No
     for release in sorted(releases):
         by_format[RELEASE_FORMATS[release]] = release
     if len(by_format) == 1:
-        return check_packs(paths, version_label(max(releases)))
-    results = [(fmt, check_packs(paths, version_label(release))) for fmt, release in by_format.items()]
+        return check_packs(paths, version_label(max(releases)), with_packs)
+    results = [(fmt, check_packs(paths, version_label(release), with_packs)) for fmt, release in by_format.items()]
     return _merged(results, releases)
 
 
@@ -232,13 +239,14 @@ def _references(node: object) -> Iterator[tuple[str, bool, str]]:
 def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
     returning = {function.id for function, node in nodes
                  if isinstance(node, (ast.Return, ast.MacroLine))}  # a macro line may return too
+    defined = _namespaces(loaded)
     for _, node in nodes:
         for name, is_tag, how in _references(node):
             if how != "macro":
                 problem = _missing(loaded, name, is_tag)
                 if problem:
                     where = "" if how == "function" else f" ({how})"
-                    found.append(_at(loaded, ERROR, problem + where, node.loc))
+                    found.append(_reference_problem(loaded, problem + where, name, defined, node.loc))
         if isinstance(node, ast.FunctionCall) and not node.is_tag and node.with_source is None:
             _check_macro_arguments(loaded, node, found)
         elif isinstance(node, ast.IfFunction):
@@ -249,8 +257,26 @@ def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> N
     _check_game_tags(loaded, found)
     for function_id, locs in loaded.advancement_rewards.items():
         if function_id not in loaded.functions:
-            found.extend(_at(loaded, ERROR, f"unknown function {function_id} (advancement reward)", loc)
-                         for loc in locs)
+            found.extend(_reference_problem(loaded, f"unknown function {function_id} (advancement reward)",
+                                            function_id, defined, loc) for loc in locs)
+
+
+def _namespaces(loaded: LoadedPacks) -> set[str]:
+    """The namespaces the loaded packs define functions or function tags in."""
+    ids = [*loaded.functions, *loaded.refused, *loaded.tags, *loaded.failed_tags]
+    return {i.split(":", 1)[0] for i in ids}
+
+
+def _reference_problem(loaded: LoadedPacks, problem: str, name: str, defined: set[str], loc: Loc) -> Diagnostic:
+    """A reference to a function or tag that is not loaded. The game loads the function anyway and
+    fails the call when it runs (FunctionArgument.parse reads only the id; Result.create looks it
+    up): an error when the namespace is one the packs define (a typo, most likely), a warning when
+    no loaded pack defines the namespace (a pack expected beside this one: name it with --with)."""
+    namespace = name.split(":", 1)[0]
+    if namespace in defined:
+        return _at(loaded, ERROR, problem, loc)
+    return _at(loaded, WARNING, f"{problem}: no loaded pack defines the namespace '{namespace}' (the call "
+               "fails when it runs unless a pack beside this one defines it; name that pack with --with)", loc)
 
 
 def _is_macro(loaded: LoadedPacks, function_id: str) -> bool:

@@ -32,11 +32,14 @@ def _validate_versions(ctx: click.Context, param: click.Parameter, value: str | 
 @click.option("--mc", "releases", metavar="VERSION[..VERSION|,VERSION...]", callback=_validate_versions,
               help="Game versions to check for: 1.21.4, a range 1.16.5..1.21.11 or a list 1.20.4,1.21.4; "
                    "default: the range the packs declare, else their own version.")
-def check(packs: tuple[Path, ...], as_json: bool, releases: list | None) -> None:
+@click.option("--with", "with_packs", multiple=True, type=PackPath(), metavar="PACK",
+              help="A pack expected beside these at run time (a library, another module): loaded "
+                   "first, its own findings not reported. Repeatable.")
+def check(packs: tuple[Path, ...], as_json: bool, releases: list | None, with_packs: tuple[Path, ...]) -> None:
     """Check data packs (folders or .zip files, loaded in the order given, later ones
     override) and report problems."""
     try:
-        result = check_releases(packs, releases)
+        result = check_releases(packs, releases, with_packs)
     except Exception as exc:  # a bug in dpemu must still end with a message, not a traceback
         click.echo(f"dpemu check: internal error: {type(exc).__name__}: {exc}", err=True)
         sys.exit(1)

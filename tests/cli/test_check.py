@@ -87,9 +87,30 @@ def test_mc_option_changes_the_folders_read(tmp_path):
 
 def test_several_packs_in_order(tmp_path):
     lib = pack(tmp_path / "lib", {"data/lib/function/api.mcfunction": "say lib\n"})
-    game = pack(tmp_path / "game", {**CLEAN, "data/a/function/load.mcfunction": "function lib:api\n"})
+    game = pack(tmp_path / "game", {**CLEAN, "data/a/function/load.mcfunction": "function lib:api\nfunction a:typo\n"})
     assert run(game).exit_code == 1
-    assert run(lib, game).exit_code == 0
+    assert "unknown function lib:api" not in run(lib, game).output
+
+
+def test_a_call_into_a_namespace_no_loaded_pack_defines_is_a_warning_naming_it(tmp_path):
+    # FunctionArgument.parse only reads the id: the game loads the calling function and fails the
+    # call when it runs, so a library expected beside the pack is not a load error
+    lib = pack(tmp_path / "lib", {"data/lib/function/api.mcfunction": "say lib\n",
+                                  "data/lib/function/broken.mcfunction": "sayy\n"})
+    game = pack(tmp_path / "game", {**CLEAN, "data/a/function/load.mcfunction": "function lib:api\nfunction #lib:hooks\n"})
+    alone = run(game)
+    assert alone.exit_code == 0
+    assert "warning: unknown function lib:api: no loaded pack defines the namespace 'lib'" in alone.output
+    assert "unknown function tag #lib:hooks: no loaded pack defines the namespace 'lib'" in alone.output
+    beside = run(game, "--with", lib)
+    assert "lib:api" not in beside.output and "sayy" not in beside.output  # the library's own findings too
+    assert "unknown function tag #lib:hooks" in beside.output and beside.exit_code == 1  # lib is there now
+
+
+def test_a_typo_in_the_packs_own_namespace_stays_an_error(tmp_path):
+    game = pack(tmp_path / "game", {**CLEAN, "data/a/function/extra.mcfunction": "function a:nope\n"})
+    result = run(game)
+    assert result.exit_code == 1 and "error: unknown function a:nope" in result.output
 
 
 def test_empty_and_partial_packs_do_not_crash(tmp_path):
