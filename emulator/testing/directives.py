@@ -9,6 +9,10 @@ that start with ``#`` (a blank or indented line ends it); a name alone means ``t
 - ``@dummy [POS]``: spawn a dummy player as ``@s`` (default ``~0.5 ~ ~0.5``).
 - ``@batch NAME``: the batch (default ``packtestBatch``).
 - ``@beforebatch CMD`` / ``@afterbatch CMD``: a command run before / after the batch, one per batch.
+- ``@environment ID`` (PackTest 2, 1.21.5+): the test environment (default ``minecraft:default``;
+  see :mod:`emulator.testing.environments`).
+- ``@skyaccess [true|false]`` (PackTest 2): false (the default) puts a barrier ceiling over the
+  test as well as its walls and floor (TestInstanceBlockEntity.encaseStructure).
 """
 from __future__ import annotations
 
@@ -20,7 +24,8 @@ from mcfunction_parser.diagnostics import Diagnostic, Loc
 DEFAULT_TIMEOUT = 100
 DEFAULT_BATCH = "packtestBatch"
 DEFAULT_DUMMY_POS = "~0.5 ~ ~0.5"
-KNOWN = ("template", "timeout", "optional", "dummy", "batch", "beforebatch", "afterbatch")
+DEFAULT_ENVIRONMENT = "minecraft:default"
+KNOWN = ("template", "timeout", "optional", "dummy", "batch", "beforebatch", "afterbatch", "environment", "skyaccess")
 _DIRECTIVE = re.compile(r"#\s*@(\w+)(?:\s+(.+))?$")  # PackTestFunction.DIRECTIVE_PATTERN
 _RESOURCE = re.compile(r"(?:[a-z0-9_.-]+:)?[a-z0-9_./-]+")
 
@@ -34,6 +39,8 @@ class Directives:
     batch: str = DEFAULT_BATCH
     before_batch: tuple[str, Loc] | None = None
     after_batch: tuple[str, Loc] | None = None
+    environment: str = DEFAULT_ENVIRONMENT
+    sky_access: bool = False
     errors: list[Diagnostic] = field(default_factory=list)
 
 
@@ -58,10 +65,14 @@ def _apply(d: Directives, name: str, value: str, loc: Loc) -> str | None:
         if not value.isdigit() or int(value) <= 0:
             return f"@timeout: expected a positive number of ticks, got {value!r}"
         d.timeout = int(value)
-    elif name == "optional":
+    elif name in ("optional", "skyaccess"):
         if value.lower() not in ("", "true", "false"):
-            return f"@optional: expected true, false or nothing, got {value!r}"
-        d.optional = value.lower() != "false"
+            return f"@{name}: expected true, false or nothing, got {value!r}"
+        setattr(d, "optional" if name == "optional" else "sky_access", value.lower() != "false")
+    elif name == "environment":
+        if not _RESOURCE.fullmatch(value):
+            return f"@environment: expected a resource location, got {value!r}"
+        d.environment = value if ":" in value else "minecraft:" + value
     elif name == "dummy":
         d.dummy = value or DEFAULT_DUMMY_POS
     elif name == "batch":

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import xml.etree.ElementTree as ET
 
-from emulator.testing.results import FAILED, PASSED, SKIPPED, Summary
+from emulator.testing.results import FAILED, INCONCLUSIVE, PASSED, SKIPPED, Summary
 
 
 def junit_xml(summary: Summary, suite_name: str = "dpemu") -> str:
@@ -14,7 +14,7 @@ def junit_xml(summary: Summary, suite_name: str = "dpemu") -> str:
         "tests": str(len(results)),
         "failures": str(summary.count(FAILED)),
         "errors": "0",
-        "skipped": str(summary.count(SKIPPED)),
+        "skipped": str(summary.count(SKIPPED) + summary.count(INCONCLUSIVE)),
         "time": f"{sum(r.seconds for r in results):.3f}",
     })
     for r in results:
@@ -26,6 +26,8 @@ def junit_xml(summary: Summary, suite_name: str = "dpemu") -> str:
         if r.counts_as == FAILED:
             failure = ET.SubElement(case, "failure", {"message": r.message})
             failure.text = "\n".join([f"{r.where}: {r.message}", *r.details])
+        elif r.status == INCONCLUSIVE:
+            ET.SubElement(case, "skipped", {"message": f"inconclusive: {r.where}: {r.message}", "type": INCONCLUSIVE})
         elif r.status != PASSED:
             ET.SubElement(case, "skipped", {"message": f"{r.where}: {r.message}"})
     root = ET.Element("testsuites")

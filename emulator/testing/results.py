@@ -4,6 +4,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 PASSED, FAILED, SKIPPED = "passed", "failed", "skipped"
+# The test met something the emulator does not model: neither passed nor failed, with the reason.
+INCONCLUSIVE = "inconclusive"
 
 
 @dataclass
@@ -29,7 +31,7 @@ class TestResult:
 
     def report(self) -> str:
         """Lines for a terminal: the verdict, then where and why when it did not pass."""
-        label = {PASSED: "PASS", FAILED: "FAIL", SKIPPED: "SKIP"}[self.status]
+        label = {PASSED: "PASS", FAILED: "FAIL", SKIPPED: "SKIP", INCONCLUSIVE: "INCONCLUSIVE"}[self.status]
         if self.status == FAILED and self.optional:
             label = "FAIL (optional)"
         lines = [f"{label} {self.id}"]
@@ -52,5 +54,5 @@ class Summary:
 
     def line(self) -> str:
         text = f"{self.count(PASSED)} passed, {self.count(FAILED)} failed"
-        skipped = self.count(SKIPPED)
-        return text + (f", {skipped} skipped" if skipped else "")
+        skipped, inconclusive = self.count(SKIPPED), self.count(INCONCLUSIVE)
+        return text + (f", {skipped} skipped" if skipped else "") + (f", {inconclusive} inconclusive" if inconclusive else "")

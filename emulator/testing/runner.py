@@ -14,12 +14,15 @@ from emulator.commands import entities as world_entities
 from emulator.api import Emulator
 from emulator.vm.host import Host, HostFailure
 from emulator.world.state import Context
-from emulator.testing import chat
+from emulator.testing import chat, environments
 from emulator.testing.discovery import TestFile, selected
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
-from emulator.testing.results import FAILED, PASSED, Summary, TestResult
-from emulator.testing.testfile import ChatCheck, Check, Delay, Dummy, Fail, PerContext, Run, Succeed, TestCase, read_test
+from emulator.testing.results import FAILED, INCONCLUSIVE, PASSED, Summary, TestResult
+from emulator.testing.testfile import (
+    ChatCheck, Check, Delay, Dummy, Fail, InsideCheck, PerContext, Run, Succeed, TestCase, read_test,
+)
 from emulator.world import structures
+from emulator.world.blocks import BlockSpec
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.nbt import Compound, to_snbt
@@ -128,16 +131,20 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
     emu = fresh_world(packs, backend)
     if case.before_batch:
         emu.call(case.before_batch)
+    environment = None
     try:
-        if case.directives.template:
-            place_template(emu, packs, case.directives.template)
-        source = TestSource(emu, Dummies(emu.state))
+        environment = set_up_environment(emu, packs, case.directives.environment)
+        size = place_template(emu, packs, case.directives.template) if case.directives.template else (1, 1, 1)
+        encase(emu, packs.version, size, case.directives.sky_access)
+        source = TestSource(emu, Dummies(emu.state), size)
         source.dummy_entity = spawn_dummy(source, case)
         _run_steps(emu, source, case)
     except _Verdict as verdict:
         result.status, result.message, result.line = verdict.status, verdict.message, verdict.line
     except Exception as error:  # an emulator bug fails this test, not the suite
         result.status, result.message = FAILED, f"internal error: {type(error).__name__}: {error}"
+    for function in environment.teardown if environment else ():
+        emu.call(function)
     if case.after_batch:
         emu.call(case.after_batch)
     result.ticks = emu.ticks
@@ -147,8 +154,47 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
     return result
 
 
-def place_template(emu: Emulator, packs, template_id: str) -> None:
-    """The test's structure with its corner at the test source's block."""
+def set_up_environment(emu: Emulator, packs, environment_id: str):
+    """The test environment's rules and day time, then its setup functions (as the server, as
+    TestEnvironmentDefinition.Functions runs them). One that cannot be set up fails the test; one
+    the emulator does not model makes it inconclusive."""
+    try:
+        environment = environments.resolve(packs, environment_id)
+    except environments.EnvironmentError as error:
+        raise _Verdict(INCONCLUSIVE if error.unmodelled else FAILED, error.message) from None
+    for rule, value in environment.rules:
+        emu.state.gamerules.set(rule, value)
+    if environment.day_time is not None:
+        emu.state.daytime = environment.day_time
+    for function in environment.setup:
+        if function not in packs.functions:
+            raise _Verdict(FAILED, f"test environment {environment_id}: unknown setup function {function}")
+        emu.call(function)
+    return environment
+
+
+_BARRIER = BlockSpec("minecraft:barrier", False, (), None)
+_FLOORED_ENCASING = (1, 21, 5)  # TestInstanceBlockEntity (1.21.5+) adds a floor; StructureUtils before it
+
+
+def encase(emu: Emulator, version, size, sky_access: bool) -> None:
+    """Barriers round the test structure, as the game encases a test: walls one block outside it, a
+    ceiling unless the test has sky access, and from 1.21.5 a floor (TestInstanceBlockEntity.
+    processStructureBoundary; StructureUtils.encaseStructure before)."""
+    x0, y0, z0 = (int(c) for c in TestSource.ORIGIN)
+    low = (x0 - 1, y0 - 1 if version >= _FLOORED_ENCASING else y0, z0 - 1)
+    high = (x0 + size[0], y0 + size[1], z0 + size[2])
+    floor = version >= _FLOORED_ENCASING
+    for x in range(low[0], high[0] + 1):
+        for y in range(low[1], high[1] + 1):
+            for z in range(low[2], high[2] + 1):
+                wall = x in (low[0], high[0]) or z in (low[2], high[2]) or (floor and y == low[1])
+                if wall or (y == high[1] and not sky_access):
+                    emu.state.blocks.setblock((x, y, z), _BARRIER)
+
+
+def place_template(emu: Emulator, packs, template_id: str) -> tuple[int, int, int]:
+    """The test's structure with its corner at the test source's block; returns its size."""
     data = structures.find_template(packs, template_id)
     if data is None:
         missing = structures.template_file(packs, template_id)
@@ -158,6 +204,7 @@ def place_template(emu: Emulator, packs, template_id: str) -> None:
     except structures.StructureError as error:
         raise _Verdict(FAILED, f"Test structure {template_id}: {error}") from None
     structures.place(emu.state, template, tuple(int(c) for c in TestSource.ORIGIN))
+    return template.size
 
 
 class TestSource:
@@ -169,9 +216,14 @@ class TestSource:
 
     ORIGIN = (0.0, 1.0, 0.0)
 
-    def __init__(self, emu: Emulator, dummies: Dummies) -> None:
+    def __init__(self, emu: Emulator, dummies: Dummies, size=(1, 1, 1)) -> None:
         self.emu, self.dummies = emu, dummies
+        self.size = size  # of the test structure, whose corner is ORIGIN
         self.dummy_entity: Entity | None = None
+
+    def inside(self, entity: Entity) -> bool:
+        """GameTestHelper.getBounds().inflate(1).contains(position): half-open on the far side."""
+        return all(o - 1 <= p < o + s + 1 for p, o, s in zip(entity.pos, self.ORIGIN, self.size))
 
     @property
     def dummy(self) -> str | None:
@@ -249,10 +301,10 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
             continue
         if isinstance(step, Run):
             source.call(step.function)
-        elif isinstance(step, (Check, ChatCheck)) and step.mode == "assert":
+        elif isinstance(step, (Check, ChatCheck, InsideCheck)) and step.mode == "assert":
             if not _holds(source, step, chat_start):
                 raise _Verdict(FAILED, describe_failure(source, step, chat_start), step.loc.line)
-        elif isinstance(step, (Check, ChatCheck)):
+        elif isinstance(step, (Check, ChatCheck, InsideCheck)):
             while not _holds(source, step, chat_start):
                 _tick_or_time_out(emu, timeout, step, describe_failure(source, step, chat_start))
         elif isinstance(step, Delay):
@@ -318,7 +370,18 @@ def _act(source: TestSource, step: Dummy, ctx: Context) -> None:
 def _holds(source: TestSource, step, chat_start: int, ctx: Context | None = None) -> bool:
     if isinstance(step, ChatCheck):
         return chat.holds(source.emu, step, chat_start, ctx or source.context())
+    if isinstance(step, InsideCheck):
+        return bool(_found_inside(source, step, ctx)) != step.negated
     return source.call(step.function, ctx) == 1
+
+
+def _found_inside(source: TestSource, step: InsideCheck, ctx: Context | None) -> list[Entity]:
+    """PackTest's ``entity SELECTOR inside``: the entities found that stand inside the test's bounds."""
+    try:
+        found = world_entities.select(source.emu.state, step.target, ctx or source.context())
+    except world_entities.WorldCommandError as error:
+        raise _Verdict(FAILED, error.message, step.loc.line) from None
+    return [e for e in found if source.inside(e)]
 
 
 def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
@@ -334,6 +397,12 @@ def describe_failure(test: TestSource, check, chat_start: int = 0, ctx: Context 
     emu = test.emu
     if isinstance(check, ChatCheck):
         return chat.failure(emu, check, chat_start, ctx or test.context(), _sample)
+    if isinstance(check, InsideCheck):  # AssertCommand.assertEntityInside
+        if not check.negated:
+            return f"Expected {check.selector} inside test"
+        found = _found_inside(test, check, ctx)
+        more = f" and {len(found) - 1} more" if len(found) > 1 else ""
+        return f"Did not expect {check.selector} inside test, got {found[0].display_name}{more}"
     if check.per_context and _CONTEXT_BOUND.search(check.condition):  # the failing context is gone
         return f"{expect} {check.condition} (in every context of the execute prefix)"
     match = _SCORE_MATCHES.match(check.condition)

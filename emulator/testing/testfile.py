@@ -34,6 +34,7 @@ CONDITIONS = ("biome", "block", "blocks", "chat", "data", "dimension", "entity",
 _QUOTED = re.compile(r'"((?:[^"\\]|\\.)*)"|\'((?:[^\'\\]|\\.)*)\'')
 _TEST_COMMAND = re.compile(r"(assert|await|fail|succeed|dummy)(?=\s|$)")
 _EXECUTE_PREFIX = re.compile(r"(execute\s.*?)\s+run\s+(?=(?:assert|await|fail|succeed|dummy)(?:\s|$))")
+_INSIDE = re.compile(r"entity\s+(.+?)\s+inside")
 _TIME = re.compile(r"(\d+(?:\.\d+)?|\.\d+)([tsd]?)")
 _TIME_UNITS = {"": 1, "t": 1, "s": 20, "d": 24000}
 
@@ -68,6 +69,17 @@ class ChatCheck(Step):
     negated: bool
     pattern: str
     receivers: object = None  # the RECEIVERS target (ast), None: every player's messages
+
+
+@dataclass(frozen=True)
+class InsideCheck(Step):
+    """PackTest 2's ``entity SELECTOR inside``: an entity the selector finds stands inside the
+    test's bounds grown by one block (AssertCommand.assertEntityInside)."""
+
+    mode: str
+    negated: bool
+    selector: str  # as written, for the messages
+    target: object  # the parsed selector
 
 
 @dataclass(frozen=True)
@@ -267,6 +279,9 @@ def _plain_step(b: _Builder, number: int, line: str, text: str, col: int, gate, 
         rest_col += len(rest) - len(rest.lstrip())
         rest = rest.strip()
     kind = rest.split(" ", 1)[0]
+    inside = _INSIDE.fullmatch(rest)
+    if inside:
+        return _inside(b, loc, gate, word, negated, inside.group(1), number, rest_col + len("entity "))
     if prefix_text and word == "assert" and kind in CONDITIONS and kind != "chat":
         return _check_each(b, loc, prefix_text, negated, rest, number, rest_col)
     return _check(b, loc, gate, word, negated, rest, number, rest_col)
@@ -323,6 +338,14 @@ def _chat(b: _Builder, loc: Loc, gate, mode: str, negated: bool, text: str, numb
     except re.error:
         return _bad(b, f"Invalid pattern '{pattern}'", number, col)
     return ChatCheck(loc, gate, mode, negated, pattern, receivers)
+
+
+def _inside(b: _Builder, loc: Loc, gate, mode: str, negated: bool, selector: str, number: int, col: int):
+    try:
+        target = world_entities.parse_target(selector)
+    except ValueError as error:
+        return _bad(b, f"{mode} entity: {error}", number, col)
+    return InsideCheck(loc, gate, mode, negated, selector, target)
 
 
 def _delay(b: _Builder, loc: Loc, gate, text: str, number: int, col: int):

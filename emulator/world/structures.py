@@ -17,7 +17,6 @@ which is used), ``blocks`` (``{pos: [x, y, z], state: palette index, nbt?}``) an
 """
 from __future__ import annotations
 
-import zipfile
 from dataclasses import dataclass
 
 from emulator.world.blocks import BlockSpec
@@ -46,17 +45,7 @@ def template_file(packs, template_id: str) -> str:
 
 
 def find_template(packs, template_id: str) -> bytes | None:
-    name = template_file(packs, template_id)
-    for pack in reversed(packs.packs):
-        if pack.root.is_dir():
-            candidate = pack.root / name
-            if candidate.is_file():
-                return candidate.read_bytes()
-        elif zipfile.is_zipfile(pack.root):
-            with zipfile.ZipFile(pack.root) as archive:
-                if name in archive.namelist():
-                    return archive.read(name)
-    return None
+    return packs.read_file(template_file(packs, template_id))
 
 
 def read_template(data: bytes) -> Template:

@@ -70,6 +70,20 @@ class LoadedPacks:
     def format(self) -> Format:
         return pack_format_for_version(self.version)
 
+    def read_file(self, name: str) -> bytes | None:
+        """The bytes of ``name`` (a path inside a pack, e.g. ``data/ns/structure/x.nbt``) from the
+        last pack that has it, as the game's resource manager stacks packs; None when none has it."""
+        for pack in reversed(self.packs):
+            if pack.root.is_dir():
+                candidate = pack.root / name
+                if candidate.is_file():
+                    return candidate.read_bytes()
+            elif zipfile.is_zipfile(pack.root):
+                with zipfile.ZipFile(pack.root) as archive:
+                    if name in archive.namelist():
+                        return archive.read(name)
+        return None
+
     def resolve_tag(self, tag_id: str) -> list[str]:
         """Function ids run by ``#tag_id``: flattened, ordered, deduplicated."""
         return resolve_tag(self.tags, self.functions, tag_id)

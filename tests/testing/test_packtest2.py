@@ -1,0 +1,111 @@
+"""PackTest 2 on the game's test framework (1.21.5+): ``@environment`` with test environment files,
+``@skyaccess`` and the barriers round a test, ``assert|await entity ... inside`` (misode/packtest
+README and AssertCommand; TestEnvironmentDefinition; TestInstanceBlockEntity.encaseStructure)."""
+import json
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from emulator.testing import discover, run_suite
+from emulator.testing.junit import junit_xml
+from tests.conftest import write_pack
+
+NEW = 71  # 1.21.5: the first format of the game's own test framework
+
+
+def suite(tmp_path, files, pack_format=NEW, backend="numba"):
+    root = write_pack(tmp_path / "pack", files)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": pack_format, "description": "t"}}))
+    summary = run_suite(discover([root]), backend)
+    return summary, {r.id: r for r in summary.results}
+
+
+ENVIRONMENTS = {
+    "demo/test_environment/scored.json": json.dumps({"type": "minecraft:function", "setup": "demo:setup",
+                                                     "teardown": "demo:teardown"}),
+    "demo/test_environment/slow.json": json.dumps({"type": "game_rules", "int_rules": [
+        {"rule": "maxCommandChainLength", "value": 7}], "bool_rules": [{"rule": "doDaylightCycle", "value": False}]}),
+    "demo/test_environment/both.json": json.dumps({"type": "all_of", "definitions": [
+        "demo:scored", {"type": "time_of_day", "time": 13000}]}),
+    "demo/test_environment/rainy.json": json.dumps({"type": "weather", "weather": "rain"}),
+    "demo/function/setup.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set #env o 1",
+    "demo/function/teardown.mcfunction": "scoreboard players set #env o 2",
+}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_environment_functions_rules_and_time_apply_before_the_test(tmp_path, backend):
+    files = {**ENVIRONMENTS,
+             "demo/test/setup_ran.mcfunction": "# @environment demo:scored\nassert score #env o matches 1\n",
+             "demo/test/rules.mcfunction": "# @environment demo:slow\n"
+                                           "execute store result storage t:r v int 1 run gamerule maxCommandChainLength\n"
+                                           "assert data storage t:r {v:7}\n",
+             "demo/test/nested.mcfunction": "# @environment demo:both\nassert score #env o matches 1\n"
+                                            "execute store result score #t o run time query daytime\n"
+                                            "assert score #t o matches 13000\n",
+             "demo/test/default.mcfunction": "# @environment minecraft:default\nsucceed\n"}
+    summary, results = suite(tmp_path, files, backend=backend)
+    assert {k: r.status for k, r in results.items()} == {
+        "demo:setup_ran": "passed", "demo:rules": "passed", "demo:nested": "passed", "demo:default": "passed"}, \
+        [r.report() for r in results.values()]
+
+
+def test_an_unmodelled_environment_makes_the_test_inconclusive_and_an_unknown_one_fails(tmp_path):
+    files = {**ENVIRONMENTS,
+             "demo/test/wet.mcfunction": "# @environment demo:rainy\nsucceed\n",
+             "demo/test/nowhere.mcfunction": "# @environment demo:missing\nsucceed\n"}
+    summary, results = suite(tmp_path, files)
+    assert results["demo:wet"].status == "inconclusive"
+    assert "weather is not emulated" in results["demo:wet"].message
+    assert results["demo:nowhere"].status == "failed"
+    assert "Unknown test environment demo:missing" in results["demo:nowhere"].message
+    assert summary.line() == "0 passed, 1 failed, 1 inconclusive"
+    skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='wet']/skipped")
+    assert skipped is not None and skipped.get("type") == "inconclusive"
+
+
+def test_a_test_is_encased_in_barriers_with_a_ceiling_unless_it_has_sky_access(tmp_path):
+    # the default structure is 1x1x1 with its corner at the test origin
+    files = {
+        "demo/test/closed.mcfunction": "assert block ~1 ~ ~ barrier\nassert block ~ ~ ~-1 barrier\n"
+                                       "assert block ~ ~1 ~ barrier\nassert block ~ ~-1 ~ barrier\n"
+                                       "assert block ~ ~ ~ air\n",
+        "demo/test/open.mcfunction": "# @skyaccess\nassert block ~ ~1 ~ air\nassert block ~-1 ~1 ~ barrier\n",
+    }
+    _, results = suite(tmp_path, files)
+    assert results["demo:closed"].status == "passed", results["demo:closed"].report()
+    assert results["demo:open"].status == "passed", results["demo:open"].report()
+
+
+def test_before_1_21_5_the_encasing_has_no_floor(tmp_path):
+    # StructureUtils.encaseStructure: walls from the structure's lowest layer up, the ceiling
+    files = {"demo/test/old.mcfunction": "assert block ~ ~-1 ~ air\nassert block ~1 ~ ~ barrier\n"}
+    _, results = suite(tmp_path, files, pack_format=48)
+    assert results["demo:old"].status == "passed", results["demo:old"].report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_entity_inside_finds_only_entities_within_the_test_bounds(tmp_path, backend):
+    body = ('summon marker ~0.5 ~ ~0.5 {Tags:["near"]}\nsummon marker ~5 ~ ~ {Tags:["far"]}\n'
+            "summon marker ~1.9 ~ ~ {Tags:[\"edge\"]}\n")
+    files = {
+        "demo/test/inside.mcfunction": body + "assert entity @e[tag=near] inside\nassert not entity @e[tag=far] inside\n"
+                                              "assert entity @e[tag=far]\nassert entity @e[tag=edge] inside\n",
+        "demo/test/outside.mcfunction": body + "assert entity @e[tag=far] inside\n",
+        "demo/test/not_inside.mcfunction": body + "assert not entity @e[type=marker] inside\n",
+        "demo/test/awaits.mcfunction": "schedule function demo:later 3t\nawait entity @e[tag=later] inside\n",
+        "demo/function/later.mcfunction": 'summon marker 0.5 1 0.5 {Tags:["later"]}',
+    }
+    _, results = suite(tmp_path, files, backend=backend)
+    assert results["demo:inside"].status == "passed", results["demo:inside"].report()
+    assert results["demo:outside"].message == "Expected @e[tag=far] inside test"
+    assert results["demo:not_inside"].message == "Did not expect @e[type=marker] inside test, got Marker and 1 more"
+    assert results["demo:awaits"].status == "passed", results["demo:awaits"].report()
+
+
+def test_bad_directive_values_are_errors_of_the_test(tmp_path):
+    files = {"demo/test/a.mcfunction": "# @skyaccess maybe\nsucceed\n",
+             "demo/test/b.mcfunction": "# @environment Not A Location\nsucceed\n"}
+    _, results = suite(tmp_path, files)
+    assert results["demo:a"].status == "failed" and "@skyaccess: expected true, false or nothing" in results["demo:a"].message
+    assert results["demo:b"].status == "failed" and "@environment: expected a resource location" in results["demo:b"].message
