@@ -1,16 +1,15 @@
-"""Custom boss bars: ``bossbar`` and ``execute store result|success bossbar ID value|max``.
+"""Custom boss bars and the ``bossbar`` command (``execute store ... bossbar`` is
+:mod:`emulator.commands.stores`).
 
 Source (decompiled 1.21): server/commands/BossBarCommands.java (every subcommand, its result and its
 "Nothing changed" failures), server/bossevents/CustomBossEvent.java (value 0, max 100, white,
-progress, visible, no players), server/commands/ExecuteCommand.storeValue (the bossbar is looked up
-when the store stage runs; the callback sets value or max to the result, or to 1/0 for success).
-The name is kept as the text component written in the command (no text resolution).
+progress, visible, no players). The name is kept as the text component written in the command (no text resolution).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from emulator.world.errors import CommandFailure
+from emulator.commands.failure import CommandFailure
 from mcfunction_parser import ast
 from mcfunction_parser.pack.tags import normalise_id
 
@@ -94,14 +93,3 @@ def _set(bar: BossBar, cmd: ast.Bossbar, players: list[str]) -> int:
         raise CommandFailure(unchanged)
     setattr(bar, attribute, new)
     return new if returns_value else 0
-
-
-def store_target(bars: BossBars, sub: ast.StoreBossbar) -> BossBar:
-    """The bar an ``execute store ... bossbar ID value|max`` stage writes to (looked up now)."""
-    return bars.find(sub.bossbar)
-
-
-def store(bar: BossBar, sub: ast.StoreBossbar, success: bool, value: int) -> None:
-    """The store callback: the result (0 on failure) or 1/0 into the bar's value or max, unclamped."""
-    stored = (value if success else 0) if sub.kind == "result" else int(success)
-    setattr(bar, sub.field, stored)

@@ -55,7 +55,7 @@ from mcfunction_parser.nbt import (
 )
 from emulator.world.semantics import double_to_long, mth_floor
 from emulator.world import mth
-from emulator.world.errors import CommandFailure
+from emulator.commands.failure import CommandFailure
 from emulator.world.text import tag_as_string
 
 MAX_DEPTH = 512
