@@ -3,7 +3,7 @@
 Tags are the parser's NBT classes (``Compound`` dict, ``List`` list, ``Int``, ``Float`` ...).
 Operations mutate the root compound in place, like the game's storage accessor does; a caller
 that must not see partial changes on failure (the entity accessor) passes a copy and keeps it only
-on success. Failures raise :class:`emulator.world.errors.CommandFailure` with the game's message.
+on success. Failures raise :class:`emulator.commands.failure.CommandFailure` with the game's message.
 
 Public functions
 - ``tags_equal(a, b)``: ``Tag.equals`` (type-strict: ``1b`` differs from ``1``; float ``==``).
