@@ -19,5 +19,6 @@ Modules
 - :mod:`.stores`      ``execute store`` into scores, data and bossbars
 - :mod:`.entities`    entity arguments and contexts; ``summon kill tag tp ride``
 - :mod:`.blocks`      ``setblock``, ``fill``, ``if block(s)``
-- :mod:`.server`      ``say tellraw gamerule schedule time random trigger bossbar``
+- :mod:`.server`      ``say tellraw gamerule schedule time random trigger``
+- :mod:`.bossbar`     ``bossbar``
 """

@@ -220,9 +220,24 @@ def tp(env, cmd: ast.Teleport, ctx: Context) -> int:
 
 
 def ride(env, cmd: ast.Ride, ctx: Context) -> int:
-    riders = select(env.state, cmd.target, ctx)
-    vehicles = [] if cmd.vehicle is None else select(env.state, cmd.vehicle, ctx)
-    return relations.ride_command(cmd, riders, vehicles)
+    """RideCommand: ``ride TARGET mount VEHICLE`` / ``ride TARGET dismount``; 1 on success."""
+    rider = single(env.state, cmd.target, ctx)
+    vehicle = single(env.state, cmd.vehicle, ctx) if cmd.action == "mount" else None
+    current = relations.vehicle_of(rider)
+    if cmd.action == "dismount":
+        if current is None:
+            raise CommandFailure("commands.ride.not_riding", rider.display_name)
+        relations.stop_riding(rider)
+        return 1
+    if current is not None:
+        raise CommandFailure("commands.ride.already_riding", rider.display_name, current.display_name)
+    if vehicle.is_player:
+        raise CommandFailure("commands.ride.mount.failure.cant_ride_players")
+    if vehicle in relations.self_and_passengers(rider):
+        raise CommandFailure("commands.ride.mount.failure.loop")
+    if not relations.start_riding(rider, vehicle):
+        raise CommandFailure("commands.ride.mount.failure.generic", rider.display_name, vehicle.display_name)
+    return 1
 
 
 HANDLERS = {ast.Summon: summon, ast.Kill: kill, ast.TagCommand: tag, ast.Teleport: tp, ast.Ride: ride}

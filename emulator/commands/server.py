@@ -1,14 +1,13 @@
 """The server's other commands: ``say``, ``tellraw``, ``gamerule``, ``schedule``, ``time``,
-``random``, ``trigger`` and ``bossbar``.
+``random`` and ``trigger``.
 
 Sources (decompiled 1.21): server/commands/SayCommand.java, TellRawCommand.java,
 GameRuleCommand.java, ScheduleCommand.java, TimeCommand.java, RandomCommand.java (randomSample),
-TriggerCommand.java (getScore), BossBarCommands.java; the texts are the world library's
-(:mod:`emulator.world.text_components`), the boss bars its :mod:`emulator.world.bossbars`.
+TriggerCommand.java (getScore); the texts are the world library's (:mod:`emulator.world.text_components`).
 """
 from __future__ import annotations
 
-from emulator.world import bossbars, text_components
+from emulator.world import text_components
 from emulator.world.errors import MESSAGES
 from emulator.world.semantics import INT_MAX, INT_MIN, wrap32
 from mcfunction_parser import ast
@@ -159,13 +158,6 @@ def trigger(env, cmd: ast.Trigger, ctx) -> int:
     return value
 
 
-def bossbar(env, cmd: ast.Bossbar, ctx) -> int:
-    players = None
-    if cmd.targets is not None:  # EntityArgument.getOptionalPlayers: none found is not an error
-        players = [e.player_name for e in entities.select(env.state, cmd.targets, ctx) if e.is_player]
-    return bossbars.bossbar_command(env.state.bossbars, cmd, players)
-
-
 HANDLERS = {
     ast.Say: say,
     ast.Tellraw: tellraw,
@@ -175,5 +167,4 @@ HANDLERS = {
     ast.Time: time,
     ast.RandomCommand: random,
     ast.Trigger: trigger,
-    ast.Bossbar: bossbar,
 }
