@@ -1,16 +1,12 @@
-"""The reference backend: a plain-Python interpreter of the AST, the oracle the numba VM is
-checked against. Clarity over speed; it follows the game's execution model task by task and
-shares only value helpers (:mod:`emulator.world.semantics`, :mod:`emulator.world`) and the world state
-with the VM.
+"""The reference backend: a plain-Python interpreter of the AST, the oracle the numba VM's control
+flow is checked against. Clarity over speed; it follows the game's execution model task by task.
+What each command does is not here: both backends run :mod:`emulator.commands`.
 
 Modules
 - :mod:`.queue`       the command queue of one root (ExecutionContext): frames, quota, cost
 - :mod:`.engine`      function calls, execute chains, ``function``/``return``/``if function``
-- :mod:`.modifiers`   execute stages that change or filter the sources (as, positioned, store ...)
-- :mod:`.conditions`  ``if|unless`` tests, as a stage or as the final command
-- :mod:`.scoreboard`  ``scoreboard`` commands; :mod:`.data` storage data; :mod:`.commands` the rest
-- :mod:`.holders`     score holders and entity targets; :mod:`.macros` macro instantiation
-- :mod:`.source`      command sources and call traces; :mod:`.failure` command failures
+- :mod:`.source`      command sources (context, callback, activation) and call traces
+- :mod:`.adapter`     the interpreter as the commands' environment; stages and stores on sources
 """
 from __future__ import annotations
 

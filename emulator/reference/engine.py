@@ -16,30 +16,33 @@ from __future__ import annotations
 
 from collections import Counter
 
+from emulator.commands.data import macro_arguments
+from emulator.commands.failure import CommandFailure
+from emulator.commands.server import require_function
 from emulator.runtime.backend import RootResult, report_quota_cut
-from emulator.world.semantics import wrap32, wraps32
-from emulator.world.state import Context, Overflow, WorldState
+from emulator.runtime.macros import MacroExpander
+from emulator.world.semantics import wrap32
+from emulator.world.state import Context, WorldState
 from mcfunction_parser import ast
 
-from . import data, modifiers
-from .commands import run_command
-from .failure import CommandFailure
-from emulator.runtime.macros import MacroExpander
+from . import adapter
 from .queue import Action, CallFrame, ExecutionQueue, chain, schedule_each
 from .source import Activation, Source
 
 _CUSTOM_FINAL = (ast.FunctionCall, ast.Return)
+
+# Stages built with ``fork`` in ExecuteCommand.register (errors in one context don't stop others)
+FORKS = (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEntity, ast.ExOn, ast.Condition)
 
 
 class Interpreter:
     def __init__(self, packs, state: WorldState, sanitize: bool = False) -> None:
         self.packs = packs
         self.state = state
-        self.sanitize = sanitize
         self.macros = MacroExpander(packs.version)
+        self.env = adapter.ReferenceEnv(state, packs, sanitize)
         self.line_counts: Counter[tuple[str, int]] = Counter()
         self._stages: dict[int, tuple[ast.Command, tuple]] = {}
-        self._warned: set[tuple[str, int, int]] = set()
 
     # ------------------------------------------------------------------ roots
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
@@ -60,7 +63,7 @@ class Interpreter:
 
         limit = self.state.gamerules.max_command_chain_length
         queue = ExecutionQueue(limit, self.state.gamerules.max_command_fork_count, self._internal_error)
-        source = Source(context or Context(), None, None, self.state)
+        source = Source(context or Context(), None, None)
         top = CallFrame(0, None, 0)
         queue.queue_next(top, self._call_function(function, commands, source, on_result, False, None))
         stopped = queue.run()
@@ -97,7 +100,7 @@ class Interpreter:
         stages = self._stages_of(line)
         while index < len(stages) - 1:
             stage = stages[index]
-            forked = forked or isinstance(stage, modifiers.FORKS)
+            forked = forked or isinstance(stage, FORKS)
             if isinstance(stage, ast.IfFunction):
                 self._if_function(queue, frame, line, index, sources, forked, is_return)
                 return
@@ -110,14 +113,15 @@ class Interpreter:
             fork_limit = queue.fork_limit
             for source in sources:
                 try:
-                    out = modifiers.apply(self, stage, source)
+                    out = adapter.apply(self.env, stage, source, line.loc)
                 except CommandFailure as failure:
                     self._fail(failure, source, line)
                     if not forked:
                         return
                     continue
                 if len(produced) + len(out) >= fork_limit:
-                    self._fail(modifiers.fork_limit_reached(fork_limit), source, line)
+                    # BuildContexts.ERROR_FORK_LIMIT_REACHED: a stage would produce the limit or more
+                    self._fail(CommandFailure("command.forkLimit", fork_limit, report=True), source, line)
                     return
                 produced.extend(out)
             sources = produced
@@ -141,7 +145,7 @@ class Interpreter:
             queue.charge()
             self._count(line.loc)
             try:
-                value = run_command(self, command, source, line.loc)
+                value = adapter.run_command(self.env, command, source, line.loc)
             except CommandFailure as failure:
                 self._fail(failure, source, line)
                 if source.callback is not None:
@@ -242,8 +246,8 @@ class Interpreter:
         functions = self._functions(command.function, command.is_tag)
         if not functions:
             # FunctionCommand.ERROR_NO_FUNCTIONS; reported, as an empty tag is a pack mistake
-            raise CommandFailure(f"No functions in tag #{command.function}", report=True)
-        arguments = self._call_arguments(command)
+            raise CommandFailure("commands.function.scheduled.no_functions", f"#{command.function}", report=True)
+        arguments = self._call_arguments(command, source)
         sender = source.with_callback(None)
         if is_return:
             callback = chain(source.callback, frame.on_return)
@@ -263,43 +267,18 @@ class Interpreter:
         if report is not None:
             queue.queue_next(frame, report)
 
-    def _call_arguments(self, command: ast.FunctionCall):
+    def _call_arguments(self, command: ast.FunctionCall, source: Source):
         if command.with_source is None:
             return command.arguments
-        return data.macro_arguments(self, command.with_source, command.with_path)
+        return macro_arguments(self.env.at(source, command.loc), command.with_source, command.with_path, source.context)
 
     def _functions(self, name: str, is_tag: bool) -> list[ast.Function]:
+        require_function(self.env, name, is_tag)
         if not is_tag:
-            function = self.packs.functions.get(name)
-            if function is None:
-                raise CommandFailure(f"Unknown function {name}", report=True)
-            return [function]
-        if name not in self.packs.tags:
-            raise CommandFailure(f"Unknown function #{name}", report=True)
+            return [self.packs.functions[name]]
         return [self.packs.functions[f] for f in self.packs.resolve_tag(name) if f in self.packs.functions]
 
-    def require_function(self, name: str, is_tag: bool) -> None:
-        """For ``schedule``: the function or tag must exist."""
-        self._functions(name, is_tag)
-
     # ------------------------------------------------------------------ helpers
-    def arith(self, op: str, a: int, b: int, exact: int, source: Source, where) -> int:
-        """Wrap an exact result to int32; under the sanitizer, report a result that wrapped."""
-        stored = wrap32(exact)
-        if self.sanitize and wraps32(exact):
-            function = source.activation.function if source.activation else "<root>"
-            self.state.overflows.append(Overflow(self.state.tick, function, where, op, a, b, exact, stored))
-        return stored
-
-    def warn_once(self, node, message: str, source: Source) -> None:
-        """A warning for something the emulator skips, once per command or stage in the source."""
-        key = (node.loc.path, node.loc.line, node.loc.col)
-        if key in self._warned:
-            return
-        self._warned.add(key)
-        frames = source.activation.frames(node.loc) if source.activation else ()
-        self.state.error(message, frames, severity="warning")
-
     def _internal_error(self, action, exc: Exception) -> None:
         self.state.error(f"internal error in the reference backend: {type(exc).__name__}: {exc}", _where((None, action)))
 

@@ -43,13 +43,12 @@ class Source:
     context: Context
     callback: Callback
     activation: Activation
-    state: object = None  # the WorldState the entity commands act on (emulator.reference.entities)
 
     def with_callback(self, callback: Callback) -> "Source":
         return dataclasses.replace(self, callback=callback)
 
-    def with_context(self, **changes) -> "Source":
-        return dataclasses.replace(self, context=dataclasses.replace(self.context, **changes))
+    def in_context(self, context: Context) -> "Source":
+        return dataclasses.replace(self, context=context)
 
     def in_function(self, activation: Activation) -> "Source":
         return dataclasses.replace(self, activation=activation)

@@ -13,7 +13,8 @@ from emulator.world.semantics import double_to_float
 from mcfunction_parser import ast, nbt
 from mcfunction_parser.parse import parse_command
 
-from emulator.reference.failure import CommandFailure
+from emulator.commands.failure import CommandFailure
+from emulator.world.errors import MESSAGES
 
 
 def stringify(value) -> str:
@@ -55,12 +56,12 @@ class MacroExpander:
         if not function.is_macro:
             return function.commands
         if arguments is None:
-            raise _failure(function, f"Missing arguments to function {function.id}")
+            raise _failure(function, MESSAGES["commands.function.error.missing_arguments"].format(function.id))
         keys = parameters(function)
         values = []
         for key in keys:
             if key not in arguments:
-                raise _failure(function, f"Missing argument {key} to function {function.id}")
+                raise _failure(function, MESSAGES["commands.function.error.missing_argument"].format(function.id, key))
             values.append(stringify(arguments[key]))
         cache_key = (function.id, tuple(values))
         commands = self._cache.get(cache_key)
@@ -80,9 +81,10 @@ class MacroExpander:
         errors = [d for d in diagnostics if d.severity == "error"]
         if parsed is None or errors:
             reason = errors[0].message if errors else "not a command"
-            raise _failure(function, f"While instantiating macro {function.id}: Command '{text}' caused error: {reason}")
+            raise _failure(function, MESSAGES["commands.function.error.parse"].format(function.id, text, reason))
         return parsed
 
 
 def _failure(function: ast.Function, reason: str) -> CommandFailure:
-    return CommandFailure(f"Failed to instantiate function {function.id}: {reason}", report=True)
+    """FunctionCommand.ERROR_FUNCTION_INSTANTATION_FAILURE (reported: a pack mistake)."""
+    return CommandFailure("commands.function.instantiationFailure", function.id, reason, report=True)

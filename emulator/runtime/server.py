@@ -12,7 +12,6 @@ from __future__ import annotations
 
 from emulator.runtime.backend import Backend, RootResult
 from emulator.world.state import Context, WorldState
-from emulator.world.server_commands import advance_time
 
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"
@@ -56,7 +55,9 @@ class Runtime:
                 cost += self._run_all(self.members(entry.function))
             else:
                 cost += self.run_root(entry.function).cost
-        advance_time(state)
+        # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)
+        if state.gamerules.get("doDaylightCycle") == "true":
+            state.daytime += 1
         self.commands_per_tick.append(cost)
         state.tick += 1
         return cost

@@ -12,6 +12,7 @@ from __future__ import annotations
 import re
 
 from emulator.commands import entities as world_entities
+from emulator.commands.failure import CommandFailure
 from emulator.world.state import Context
 from emulator.testing.testfile import ChatCheck
 from emulator.world.text import plain_text
@@ -62,7 +63,7 @@ def failure(emu, check: ChatCheck, chat_start: int, ctx: Context, sample) -> str
 def _select(emu, target, ctx: Context) -> list:
     try:
         return world_entities.select(emu.state, target, ctx)
-    except world_entities.WorldCommandError:
+    except CommandFailure:  # a selector the world library cannot read
         return []
 
 

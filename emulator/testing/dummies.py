@@ -44,7 +44,7 @@ from emulator.world.state import Context
 from emulator.world import statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity
-from emulator.world.errors import CommandFailure
+from emulator.commands.failure import CommandFailure
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word, vec3
 from mcfunction_parser.diagnostics import Loc
@@ -196,7 +196,7 @@ class Dummies:
     def _select(self, target, ctx: Context) -> list[Entity]:
         try:
             return world_entities.select(self.state, target, ctx)
-        except world_entities.WorldCommandError as error:  # a selector the world library cannot read
+        except CommandFailure as error:  # a selector the world library cannot read
             raise (Unsupported if error.report else DummyFailure)(error.message) from None
 
     def _dummy(self, target, ctx: Context) -> Entity:

@@ -12,7 +12,9 @@ from pathlib import Path
 
 from emulator.commands import entities as world_entities
 from emulator.api import Emulator
-from emulator.vm.host import Host, HostFailure
+from emulator.commands import stages
+from emulator.commands.env import Env
+from emulator.commands.failure import CommandFailure
 from emulator.world.state import Context
 from emulator.testing import chat, environments
 from emulator.testing.discovery import TestFile, selected
@@ -241,10 +243,10 @@ class TestSource:
     def contexts(self, step: PerContext) -> list[Context]:
         """The contexts an execute prefix makes from the test source, each stage over all
         contexts before the next (ContextChain.executeAll): a condition through its generated
-        function, the other stages through the host; a stage that fails drops its context. One
+        function, the other stages through emulator.commands; a stage that fails drops its context. One
         the emulator cannot evaluate here fails the test saying so."""
         emu = self.emu
-        host = Host(emu.state, emu.packs.functions, emu.packs.tags, lambda message, severity: None)
+        env = Env(emu.state, emu.packs.functions, emu.packs.tags)
         contexts = [self.context()]
         for stage, condition in zip(step.stages, step.conditions):
             if condition is not None:
@@ -253,8 +255,8 @@ class TestSource:
             made = []
             for ctx in contexts:
                 try:
-                    made += host.stage(stage, ctx)
-                except HostFailure as failure:
+                    made += stages.stage(env, stage, ctx)
+                except CommandFailure as failure:
                     if failure.report:
                         raise _Verdict(FAILED, f"{failure.message} (in the execute prefix of a test command)",
                                        stage.loc.line) from None

@@ -17,12 +17,12 @@ from emulator.vm.compiler import Compiler
 from emulator.vm.entity_arrays import EntityMirror
 from emulator.vm.host import Host, StoreTarget, resolves_target
 from emulator.vm.program import Program
-from emulator.reference.failure import CommandFailure
+from emulator.commands.data import macro_arguments
+from emulator.commands.failure import CommandFailure
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
 from emulator.world.state import Context, Frame, Overflow, WorldState
-from emulator.world import nbt_ops
-from emulator.world.errors import CommandFailure as WorldFailure
+from emulator.world.errors import MESSAGES
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
@@ -31,13 +31,14 @@ from mcfunction_parser.nbt import Compound
 # frame here holds at least one pending entry, so deeper stacks than this cannot happen.
 MAX_DEPTH = 10_000_000
 
-_ERROR_TEXT = {
-    vm.ERR_DIV_ZERO: "Cannot divide by zero",
-    vm.ERR_UNKNOWN_OBJECTIVE: "Unknown scoreboard objective '{}'",
-    vm.ERR_UNKNOWN_FUNCTION: "Unknown function {}",
-    vm.ERR_EMPTY_TAG: "No functions in tag {}",
-    vm.ERR_MACRO_ARGS: "Function {} needs macro arguments",
-    vm.ERR_FORK_LIMIT: "Maximum number of contexts ({}) reached",
+_ERROR_TEXT = {  # the game's messages (emulator.world.errors) of the VM's runtime errors
+    vm.ERR_DIV_ZERO: MESSAGES["arguments.operation.div0"],
+    vm.ERR_UNKNOWN_OBJECTIVE: MESSAGES["arguments.objective.notFound"],
+    vm.ERR_UNKNOWN_FUNCTION: MESSAGES["arguments.function.unknown"],
+    vm.ERR_EMPTY_TAG: MESSAGES["commands.function.scheduled.no_functions"],
+    vm.ERR_MACRO_ARGS: MESSAGES["commands.function.instantiationFailure"].format(
+        "{0}", MESSAGES["commands.function.error.missing_arguments"]),
+    vm.ERR_FORK_LIMIT: MESSAGES["command.forkLimit"],
 }
 _SANITIZER_OPS = {**{v: k for k, v in vm.OPK_BY_SYMBOL.items()}, vm.SAN_ADD_CMD: "add", vm.SAN_REMOVE_CMD: "remove"}
 
@@ -382,18 +383,8 @@ class NumbaBackend:
     def _arguments(self, cmd: ast.FunctionCall):
         if cmd.with_source is None:
             return cmd.arguments
-        if not isinstance(cmd.with_source, ast.StorageData):
-            raise CommandFailure("'function ... with entity|block' is not supported yet", report=True)
-        root = self.state.storage.get(cmd.with_source.id, Compound())
-        if cmd.with_path is None:
-            return root
-        try:
-            found = nbt_ops.get(root, cmd.with_path)
-        except WorldFailure as failure:  # e.g. nothing at the path
-            raise CommandFailure(failure.message, report=True) from None
-        if len(found) != 1 or not isinstance(found[0], dict):
-            raise CommandFailure(f"Expected a single compound at {cmd.with_path.text}", report=True)
-        return found[0]
+        ctx = self.contexts[int(self.regs[vm.R_CTX])]
+        return macro_arguments(self.host, cmd.with_source, cmd.with_path, ctx)
 
     def _runtime_error(self) -> None:
         r = self.regs

@@ -1,17 +1,13 @@
-"""Custom boss bars: ``bossbar`` and ``execute store result|success bossbar ID value|max``.
+"""Custom boss bars (the ``bossbar`` command is :mod:`emulator.commands.bossbar`).
 
-Source (decompiled 1.21): server/commands/BossBarCommands.java (every subcommand, its result and its
-"Nothing changed" failures), server/bossevents/CustomBossEvent.java (value 0, max 100, white,
-progress, visible, no players), server/commands/ExecuteCommand.storeValue (the bossbar is looked up
-when the store stage runs; the callback sets value or max to the result, or to 1/0 for success).
-The name is kept as the text component written in the command (no text resolution).
+Source (decompiled 1.21): server/bossevents/CustomBossEvent.java (value 0, max 100, white,
+progress, visible, no players), CustomBossEvents. The name is kept as the text component written in the command (no text resolution).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from emulator.world.errors import CommandFailure
-from mcfunction_parser import ast
+from emulator.commands.failure import CommandFailure
 from mcfunction_parser.pack.tags import normalise_id
 
 
@@ -35,73 +31,3 @@ class BossBars(dict):
         if bar is None:
             raise CommandFailure("commands.bossbar.unknown", normalise_id(bar_id))
         return bar
-
-
-def bossbar_command(bars: BossBars, cmd: ast.Bossbar, players: list[str] | None = None) -> int:
-    """One ``bossbar`` command; ``players``: the names ``set players TARGETS`` found (resolved by
-    the backend; None or empty for nobody)."""
-    if cmd.action == "list":
-        return len(bars)
-    if cmd.action == "add":
-        bar_id = normalise_id(cmd.id)
-        if bar_id in bars:
-            raise CommandFailure("commands.bossbar.create.failed", bar_id)
-        bars[bar_id] = BossBar(cmd.text)
-        return len(bars)
-    bar = bars.find(cmd.id)
-    if cmd.action == "remove":
-        del bars[normalise_id(cmd.id)]
-        return len(bars)
-    if cmd.action == "get":
-        return _get(bar, cmd.field)
-    return _set(bar, cmd, players or [])
-
-
-def _get(bar: BossBar, what: str) -> int:
-    if what == "visible":
-        return int(bar.visible)
-    if what == "players":
-        return len(bar.players)
-    return getattr(bar, what)  # value, max
-
-
-# set FIELD: (attribute, the AST field holding the new value, the failure when unchanged,
-# whether the result is the new value (value, max) or 0)
-_SETTERS = {
-    "name": ("name", "text", "commands.bossbar.set.name.unchanged", False),
-    "color": ("color", "text", "commands.bossbar.set.color.unchanged", False),
-    "style": ("style", "text", "commands.bossbar.set.style.unchanged", False),
-    "value": ("value", "number", "commands.bossbar.set.value.unchanged", True),
-    "max": ("max", "number", "commands.bossbar.set.max.unchanged", True),
-}
-
-
-def _set(bar: BossBar, cmd: ast.Bossbar, players: list[str]) -> int:
-    if cmd.field == "players":  # CustomBossEvent.setPlayers: fails when the set is unchanged
-        wanted = list(dict.fromkeys(players))
-        if set(wanted) == set(bar.players):
-            raise CommandFailure("commands.bossbar.set.players.unchanged")
-        bar.players = wanted
-        return len(wanted)
-    if cmd.field == "visible":
-        if bar.visible == cmd.flag:
-            raise CommandFailure("commands.bossbar.set.visibility.unchanged." + ("visible" if cmd.flag else "hidden"))
-        bar.visible = cmd.flag
-        return 0
-    attribute, source, unchanged, returns_value = _SETTERS[cmd.field]
-    new = getattr(cmd, source)
-    if getattr(bar, attribute) == new:
-        raise CommandFailure(unchanged)
-    setattr(bar, attribute, new)
-    return new if returns_value else 0
-
-
-def store_target(bars: BossBars, sub: ast.StoreBossbar) -> BossBar:
-    """The bar an ``execute store ... bossbar ID value|max`` stage writes to (looked up now)."""
-    return bars.find(sub.bossbar)
-
-
-def store(bar: BossBar, sub: ast.StoreBossbar, success: bool, value: int) -> None:
-    """The store callback: the result (0 on failure) or 1/0 into the bar's value or max, unclamped."""
-    stored = (value if success else 0) if sub.kind == "result" else int(success)
-    setattr(bar, sub.field, stored)

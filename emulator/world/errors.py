@@ -1,10 +1,9 @@
-"""The failure every world operation raises, carrying the game's own message.
+"""The message texts of command failures, by key (one source of truth).
 
-A command that fails in the game throws a ``CommandSyntaxException`` whose text the player sees; the
-world library raises ``CommandFailure(message)`` at the same points, and the backends turn it into
-a failed command (result 0, ``store success`` 0) and a log line.
-
-``MESSAGES`` holds the game's en_us texts for the translation keys used here (one source of truth).
+``MESSAGES`` holds the game's en_us texts for the translation keys the emulator raises (the game's
+``CommandSyntaxException`` messages); ``EMULATOR_MESSAGES`` the emulator's own, keyed ``dpemu.*``,
+for what the game has no message for (a limit of the emulator, a command it cannot read).
+:class:`emulator.commands.failure.CommandFailure` is built from a key of either table.
 """
 from __future__ import annotations
 
@@ -62,14 +61,30 @@ MESSAGES = {
     "commands.bossbar.set.max.unchanged": "Nothing changed. That's already the max of this bossbar",
     "commands.bossbar.set.visibility.unchanged.hidden": "Nothing changed. The bossbar is already hidden",
     "commands.bossbar.set.visibility.unchanged.visible": "Nothing changed. The bossbar is already visible",
+    "arguments.objective.notFound": "Unknown scoreboard objective '{0}'",
+    "arguments.objective.readonly": "Scoreboard objective '{0}' is read-only",
+    "arguments.operation.div0": "Cannot divide by zero",
+    "argument.scoreHolder.empty": "No relevant score holders could be found",
+    "arguments.function.unknown": "Unknown function {0}",
+    "commands.scoreboard.objectives.add.duplicate": "An objective already exists by that name",
+    "commands.scoreboard.players.get.null": "Can't get value of {0} for {1}; none is set",
+    "commands.execute.conditional.fail": "Test failed",
+    "commands.execute.conditional.fail_count": "Test failed, count: {0}",
+    "commands.schedule.same_tick": "Can't schedule for current tick",
+    "commands.schedule.cleared.failure": "No schedules with id {0}",
+    "command.forkLimit": "Maximum number of contexts ({0}) reached",
+    "commands.function.instantiationFailure": "Failed to instantiate function {0}: {1}",
+    "commands.function.error.missing_arguments": "Missing arguments to function {0}",
+    "commands.function.error.missing_argument": "Missing argument {1} to function {0}",
+    "commands.function.error.parse": "While instantiating macro {0}: Command '{1}' caused error: {2}",
+    "commands.function.scheduled.no_functions": "Can't find any functions for name {0}",
 }
 
-
-class CommandFailure(Exception):
-    """A command failed the way the game's command would; ``key`` is the translation key."""
-
-    def __init__(self, key: str, *args) -> None:
-        self.key = key
-        self.args_ = args
-        self.message = MESSAGES[key].format(*args)
-        super().__init__(self.message)
+EMULATOR_MESSAGES = {
+    "dpemu.unsupported": "{0} is not supported yet",
+    "dpemu.selector.unsupported": "selector argument '{0}' is not supported",
+    "dpemu.block.invalid": "invalid block '{0}': {1}",
+    "dpemu.command.unreadable": "'{0}': {1}",
+    "dpemu.gamerule.unknown": "Unknown game rule '{0}'",
+    "dpemu.macro.not_compound": "Expected argument to be a compound, got {0}",
+}

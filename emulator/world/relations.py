@@ -7,7 +7,7 @@ gives no context), world/entity/EntityType.loadEntityRecursive (each ``Passenger
 loaded and starts riding its vehicle, forced), server/level/ServerLevel.tryAddFreshEntityWithPassengers
 (the vehicle is added first, then its passengers depth first), world/entity/Entity.startRiding
 (a vehicle that cannot accept passengers, the current vehicle, or a loop refuses), Marker
-(couldAcceptPassenger false), server/commands/RideCommand.
+(couldAcceptPassenger false); ``ride`` itself is :func:`emulator.commands.entities.ride`.
 ``owner`` follows the ``Owner`` UUID of tameable animals and horses (OwnableEntity); ``origin``
 follows ``Owner`` of projectiles, evoker fangs and area effect clouds and ``Thrower`` of items
 (TraceableEntity). ``controller``, ``attacker``, ``leasher`` and ``target`` need AI, combat or
@@ -16,8 +16,7 @@ leads, which the emulator does not model: they find nothing.
 from __future__ import annotations
 
 from emulator.world.entities import Entity, EntityStore
-from emulator.world.errors import CommandFailure
-from mcfunction_parser import ast
+from emulator.commands.failure import CommandFailure
 from mcfunction_parser.nbt import Compound, IntArray, List, String
 from mcfunction_parser.pack.tags import normalise_id
 
@@ -107,37 +106,8 @@ def related(store: EntityStore, entity: Entity | None, relation: str) -> list[En
     return []
 
 
-def ride_command(cmd: ast.Ride, riders: list[Entity], vehicles: list[Entity]) -> int:
-    """RideCommand: ``ride TARGET mount VEHICLE`` / ``ride TARGET dismount``; 1 on success.
-    ``riders``/``vehicles``: what the (single-entity) arguments found."""
-    rider = _single(riders)
-    vehicle = _single(vehicles) if cmd.action == "mount" else None
-    current = vehicle_of(rider)
-    if cmd.action == "dismount":
-        if current is None:
-            raise CommandFailure("commands.ride.not_riding", rider.display_name)
-        stop_riding(rider)
-        return 1
-    if current is not None:
-        raise CommandFailure("commands.ride.already_riding", rider.display_name, current.display_name)
-    if vehicle.is_player:
-        raise CommandFailure("commands.ride.mount.failure.cant_ride_players")
-    if vehicle is rider or vehicle in _self_and_passengers(rider):
-        raise CommandFailure("commands.ride.mount.failure.loop")
-    if not start_riding(rider, vehicle):
-        raise CommandFailure("commands.ride.mount.failure.generic", rider.display_name, vehicle.display_name)
-    return 1
-
-
-def _single(found: list[Entity]) -> Entity:
-    """EntityArgument.getEntity: nothing found fails (the parser allows one at most)."""
-    if not found:
-        raise CommandFailure("argument.entity.notfound.entity")
-    return found[0]
-
-
-def _self_and_passengers(entity: Entity) -> list[Entity]:
+def self_and_passengers(entity: Entity) -> list[Entity]:
     found = [entity]
     for p in passengers_of(entity):
-        found += _self_and_passengers(p)
+        found += self_and_passengers(p)
     return found

@@ -33,7 +33,7 @@ from typing import Callable
 from mcfunction_parser import ast
 from emulator.world import mth
 from emulator.world.entities import ENTITY_TYPE_TAGS, Entity, EntityStore, entity_nbt
-from emulator.world.errors import CommandFailure
+from emulator.commands.failure import CommandFailure
 from emulator.world.nbt_ops import compare_nbt
 from emulator.world.source import Source
 
@@ -47,10 +47,6 @@ NOT_LIVING = {"minecraft:marker", "minecraft:item_display", "minecraft:block_dis
 
 def _no_scores(holder: str, objective: str) -> None:
     return None
-
-
-class UnsupportedSelector(Exception):
-    """A selector argument this library does not model (``predicate``, ``advancements``)."""
 
 
 # (max results, players only, alive test, order) per selector variable.
@@ -137,7 +133,8 @@ class SelectorQuery:
         elif key == "team":
             self.tests.append(lambda e, v=value, n=neg: e.type not in NOT_LIVING and ((e.team or "") == v) != n)
         else:
-            raise UnsupportedSelector(key)
+            # an argument this library does not model (``predicate``, ``advancements``)
+            raise CommandFailure("dpemu.selector.unsupported", key, report=True)
 
     def _add_type(self, value: str, negated: bool) -> None:
         if value.startswith("#"):

@@ -284,7 +284,7 @@ class ScheduleQueue:
         """Schedule ``function_id`` ``ticks`` (>= 1) after ``gametime``; returns the due time.
 
         ``mode`` is ``"replace"`` or ``"append"``. (The command's own checks, such as ``0t``
-        being rejected, are the parser's and the backend's job.)
+        being rejected, are :func:`emulator.commands.server.schedule`'s.)
         """
         due = gametime + ticks
         name = ("#" if is_tag else "") + function_id

@@ -7,7 +7,7 @@ Public functions
   then keep the low 8/16 bits; float rounds to float32; double is stored as is.
 - ``store(root, path, type_name, value, scale)``: write it; returns how many tags changed. A path
   error is swallowed as the game's store callback does, so nothing stored is just 0.
-  (Into an entity or block through its accessor: :func:`emulator.world.data_commands.store_data`.)
+  (Into storage, an entity or a block through its accessor: :func:`emulator.commands.data.store`.)
 - ``data_get(root, path)``: ``data get PATH`` result: ``Mth.floor`` of a number, the size of a
   list/array/compound, the length of a string (in UTF-16 units, as Java counts).
 - ``data_get_scaled(root, path, scale)``: ``data get PATH SCALE``: ``Mth.floor(value * scale)``;
@@ -28,7 +28,7 @@ from emulator.world.semantics import (
     mth_floor,
 )
 from emulator.world import mth, nbt_ops
-from emulator.world.errors import CommandFailure
+from emulator.commands.failure import CommandFailure
 
 _CASTS = {
     "byte": lambda v: Byte(double_to_byte(v)),

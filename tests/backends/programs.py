@@ -4,8 +4,9 @@
 :class:`Program`: several functions in namespace ``t`` that set, add, operate on, compare, store,
 return, say and call each other (``function``, ``execute if|unless function``, ``return run``),
 plus leaf functions reached through the tag ``#t:leaves``, a macro function ``t:mac`` (also in the
-tag ``#t:macs``) and one
-counted self-recursive loop. Calls only go to later functions, leaves, the macro or the loop, so
+tag ``#t:macs``) and one counted self-recursive loop. Lines also schedule functions, set and query
+gamerules, read and write command storage, write and read a read-only (``health``) objective and
+log with ``say``/``tellraw``. Calls only go to later functions, leaves, the macro or the loop, so
 every program ends.
 """
 from __future__ import annotations
@@ -15,6 +16,8 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from hypothesis import strategies as st
+
+from mcfunction_parser.nbt import to_snbt
 
 INT_MIN, INT_MAX = -(2**31), 2**31 - 1
 
@@ -87,7 +90,32 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "tp @s 40000000 0 0", "execute at @e[tag=m] run tp @s ~ ~ ~0.25",
                    "execute store result score @s o run scoreboard players add #a o 1",
                    "execute store success score @s p if score @s o matches 1.. run scoreboard players get #a o",
-                   'tellraw @a {"text":"hi"}', 'execute store result score #t o run tellraw @a[tag=!x] "x"')
+                   'tellraw @a {"text":"hi"}', 'execute store result score #t o run tellraw @a[tag=!x] "x"',
+                   "data modify entity @s data.v set value 3", "execute store result score #d o run data get entity @s data.v",
+                   "execute store result entity @e[tag=n,limit=1] data.v int 2 run scoreboard players get #a o",
+                   'data merge entity @e[tag=a,limit=1] {Tags:["m","a","q"]}', "scoreboard players set @e[tag=m,sort=nearest] hp 3",
+                   "ride @e[tag=n,limit=1] mount @e[type=armor_stand,limit=1]", "ride @s dismount")
+
+
+# Server commands whose results and effects (schedules, gamerules, the log) are compared; `0t`
+# fails (ScheduleCommand), `gamerule nope` is reported
+SERVER_COMMANDS = ("say hi", 'tellraw @a "x"', "schedule function t:leaf0 1t", "schedule function t:leaf0 0t",
+                   "schedule function t:leaf1 3t append", "schedule function t:leaf1 3t append",
+                   "schedule function #t:leaves 2t replace", "schedule function t:leaf0 5t replace",
+                   "schedule clear t:leaf0", "schedule clear #t:leaves", "schedule clear t:nothing",
+                   "gamerule randomTickSpeed 7", "gamerule randomTickSpeed", "gamerule doDaylightCycle false",
+                   "gamerule doDaylightCycle", "gamerule nope")
+# Command storage t:s: data commands, `if data`, `data get` into scores
+STORAGE_COMMANDS = ("data merge storage t:s {a:1,l:[1,2]}", "data modify storage t:s l append value 3",
+                    "data remove storage t:s a", "data modify storage t:s v set from storage t:s l[0]",
+                    "data modify storage t:s l prepend from storage t:s n", "data get storage t:s l",
+                    "data get storage t:s missing", "data remove storage t:s l[0]", "data get storage t:s",
+                    "data modify storage t:s w set string storage t:s v")
+# The read-only objective hp (criterion health, created by t:f0): writes fail (reported; `*` and
+# selectors keep them on the VM's host side), reads and `execute store` work
+READ_ONLY_COMMANDS = ("scoreboard players set * hp 1", "scoreboard players add * hp 2",
+                      "scoreboard players operation * hp += #a o", "scoreboard players operation #a o += #b hp",
+                      "scoreboard players reset #b hp")
 
 
 @dataclass(frozen=True)
@@ -142,10 +170,32 @@ def score_commands(draw, vocab: Vocabulary) -> str:
 
 
 @st.composite
+def server_commands(draw, vocab: Vocabulary) -> str:
+    """A schedule, gamerule, storage, read-only objective or log line (no calls)."""
+    kind = draw(st.sampled_from(("server", "server", "server", "storage", "storage", "store", "read_only", "read_only")))
+    if kind == "server":
+        return draw(st.sampled_from(SERVER_COMMANDS))
+    if kind == "storage":
+        fixed = st.sampled_from(STORAGE_COMMANDS)
+        return draw(st.one_of(fixed, ints.map(lambda v: f"data modify storage t:s n set value {v}")))
+    if kind == "store":
+        what, into = draw(st.sampled_from((("result", "n int 1"), ("result", "d double 0.5"), ("success", "f byte 1"))))
+        inner = draw(score_commands(vocab))
+        return f"execute store {what} storage t:s {into} run {inner}"
+    if draw(st.booleans()):
+        return draw(st.sampled_from(READ_ONLY_COMMANDS))
+    h = draw(vocab.single_holders)
+    return draw(st.sampled_from((f"execute store result score {h} hp run scoreboard players get #a o",
+                                 f"scoreboard players get {h} hp", f"execute if score {h} hp matches 0..")))
+
+
+@st.composite
 def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
     word = draw(st.sampled_from(("if", "unless")))
-    kinds = ["matches", "compare"] + (["function"] if callees else []) + (["entity"] if vocab.setup else [])
+    kinds = ["matches", "compare", "data"] + (["function"] if callees else []) + (["entity"] if vocab.setup else [])
     kind = draw(st.sampled_from(kinds))
+    if kind == "data":
+        return f"{word} data storage t:s {draw(st.sampled_from(('a', 'l[]', 'l[{}]', 'n', 'missing')))}"
     single = vocab.single_holders
     if kind == "matches":
         return f"{word} score {draw(single)} {draw(objectives)} matches {draw(ranges())}"
@@ -184,7 +234,7 @@ def macro_calls(draw, vocab: Vocabulary) -> str:
 @st.composite
 def commands(draw, callees: list[str], vocab: Vocabulary) -> str:
     """One line of a function that may call ``callees`` (ids or ``#tags``) and the macro."""
-    simple = score_commands(vocab)
+    simple = st.one_of(score_commands(vocab), score_commands(vocab), score_commands(vocab), server_commands(vocab))
     if vocab.extra_commands:
         simple = st.one_of(simple, simple, st.sampled_from(vocab.extra_commands))
     call = st.one_of(st.sampled_from(callees).map(lambda f: f"function {f}"), macro_calls(vocab)) if callees else simple
@@ -235,6 +285,7 @@ def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool =
         lines = draw(st.lists(commands(callees, vocab), min_size=1, max_size=max_lines))
         if i == 0:
             lines = ["scoreboard objectives add o dummy", "scoreboard objectives add p dummy",
+                     "scoreboard objectives add hp health",
                      f"scoreboard players set #n p {draw(st.integers(0, 6))}", *vocab.setup] + lines
         functions[name] = "\n".join(lines)
     loop_body = draw(st.lists(score_commands(vocab), min_size=0, max_size=3))
@@ -260,6 +311,9 @@ class Outcome:
     diagnostics: tuple
     line_costs: dict  # {(file name, line): cost charged there}
     entities: tuple = ()  # (uuid, type, pos, sorted tags) of every entity, in the store's order
+    storage: dict = None  # {storage id: SNBT}
+    schedules: tuple = ()  # (name, due) of every pending schedule, in run order
+    gamerules: dict = None
 
 
 def make_backend(name: str):
@@ -301,4 +355,7 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
         diagnostics=tuple((d.message, tuple((f.function, f.loc.line) for f in d.frames)) for d in state.diagnostics),
         line_costs={(Path(path).name, line): n for (path, line), n in backend.line_counts().items() if n},
         entities=tuple((e.uuid_string, e.type, e.pos, tuple(sorted(e.tags))) for e in state.entities.entities),
+        storage={sid: to_snbt(root) for sid, root in state.storage.items()},
+        schedules=tuple((e.name, e.due) for e in state.schedule.pending()),
+        gamerules=dict(state.gamerules.values),
     )

@@ -12,9 +12,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from emulator.commands import entities as world_entities
 from emulator.api import Emulator
-from emulator.world import data_commands, nbt_ops, rotation
+from emulator.commands import data
+from emulator.world import nbt_ops, rotation, stores
 from emulator.world.entities import EntityStore, entity_nbt
 from emulator.world.stores import stored_tag
 from mcfunction_parser.diagnostics import Loc
@@ -349,9 +349,8 @@ def test_position_store_shortcut_equals_the_full_round_trip(kind, axis, value, s
     slow, fast = (s.summon(type_id, (1.5, 64.0, -2.25), nbt) for s in stores_)
     cmd, _ = parse_command(f"execute store result entity @s Pos[{axis}] double 1 run say x", Loc("t", 1, 1))
     sub = dataclasses.replace(cmd.subcommands[0], scale=scale)
-    data_commands.store_data(data_commands.EntityAccessor(slow), sub.path, "double", value, sub.scale)
-    state = world_entities.new_state()
-    world_entities.store(state, data_commands.EntityAccessor(fast), sub, True, value)
+    data.EntityAccessor(slow).change(lambda root: stores.store(root, sub.path, "double", value, sub.scale))
+    data.store(data.EntityAccessor(fast), sub, value)
     assert fast.pos == slow.pos
     assert nbt_ops.tags_equal(entity_nbt(fast), entity_nbt(slow))
     assert (fast.yaw, fast.pitch, fast.motion, fast.tags) == (slow.yaw, slow.pitch, slow.motion, slow.tags)

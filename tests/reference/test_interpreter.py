@@ -267,13 +267,13 @@ def test_fork_limit(tmp_path):
 
 
 def test_an_internal_error_is_a_diagnostic_and_the_run_goes_on(tmp_path, monkeypatch):
-    from emulator.reference import commands
+    from emulator.commands import dispatch
     from mcfunction_parser import ast
 
     def broken(*args):
         raise RuntimeError("boom")
 
-    monkeypatch.setitem(commands.HANDLERS, ast.Say, broken)
+    monkeypatch.setitem(dispatch.HANDLERS, ast.Say, broken)
     _, state, result = run(tmp_path, {"t:main": SETUP + "say x\nscoreboard players set #after o 1"})
     assert scores(state) == {"#after": 1}
     (diag,) = state.diagnostics
@@ -285,18 +285,20 @@ def test_context_modifiers_move_the_source(tmp_path):
     # positions and rotations come from the world library's game math; the checks here are the
     # ones with exact answers: centring of integer x/z, local coordinates at yaw 90 (facing -x),
     # align flooring, and the nether's coordinate scale of 8
-    from emulator.reference.modifiers import apply
-    from emulator.reference.source import Source
-    from emulator.world.state import Context
+    from emulator.commands.env import Env
+    from emulator.commands.stages import stage
+    from emulator.world.state import Context, WorldState
     from mcfunction_parser.diagnostics import Loc
     from mcfunction_parser.parse import parse_command
 
+    env = Env(WorldState(), {}, set())
+
     def where(text):
         command, _ = parse_command(f"execute {text} run say x", Loc("x", 1, 1))
-        source = Source(Context(pos=(8.0, 64.0, 16.0)), None, None)
+        context = Context(pos=(8.0, 64.0, 16.0))
         for sub in command.subcommands:
-            (source,) = apply(None, sub, source)
-        return source.context
+            (context,) = stage(env, sub, context)
+        return context
 
     assert where("positioned 1 2 3").pos == (1.5, 2.0, 3.5)
     assert where("rotated 90 0 positioned ^ ^ ^1").pos == (7.0, 64.0, 16.0)

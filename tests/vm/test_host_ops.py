@@ -60,14 +60,14 @@ def test_sanitizer_sees_host_arithmetic(tmp_path, backend):
 
 def _forking_positioned(emu, n: int) -> None:
     """Make ``positioned`` fork into ``n`` contexts, as ``as @e`` will once entities exist."""
-    stage = emu.backend.host.stage
+    stage = emu.backend.host.run_stage
 
     def fork(st, ctx):
         if type(st).__name__ == "ExPositioned":
             return [Context(pos=(float(i), 0.0, 0.0)) for i in range(n)]
         return stage(st, ctx)
 
-    emu.backend.host.stage = fork
+    emu.backend.host.run_stage = fork
 
 
 @pytest.mark.parametrize("body, cost, plain", [

@@ -15,8 +15,8 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
 from emulator.world import nbt_ops, rotation, teleport
 from emulator.world.entities import EntityStore, entity_nbt, load_nbt, modify_entity, uuid_string
-from emulator.world.errors import CommandFailure
-from emulator.world.selectors import UnsupportedSelector, select, select_one
+from emulator.commands.failure import CommandFailure
+from emulator.world.selectors import select, select_one
 from emulator.world.source import Source
 from tests.world.world_paths import path
 
@@ -225,8 +225,9 @@ def test_self_selector_and_single_entity(world):
     assert select(store, sel("s"), Source()) == []
     with pytest.raises(CommandFailure, match="No entity was found"):
         select_one(store, sel("e", tag="nope"), src)
-    with pytest.raises(UnsupportedSelector):
+    with pytest.raises(CommandFailure, match="selector argument 'predicate' is not supported") as unsupported:
         select(store, sel("e", predicate="my:p"), src)
+    assert unsupported.value.report
 
 
 def test_random_is_seeded(world):

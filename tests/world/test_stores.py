@@ -6,7 +6,7 @@ import pytest
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Long, String
 from emulator.world import stores
-from emulator.world.errors import CommandFailure
+from emulator.commands.failure import CommandFailure
 from tests.world.world_paths import path
 
 
@@ -52,11 +52,15 @@ def test_store_writes_the_cast_tag_and_swallows_path_errors():
 
 
 def test_store_into_entities():
-    from emulator.world.data_commands import EntityAccessor, store_data
+    from emulator.commands.data import EntityAccessor
     from emulator.world.entities import EntityStore
 
     def store_entity(entity, p, type_name, value, scale):
-        return store_data(EntityAccessor(entity), p, type_name, value, scale)
+        """ExecuteCommand.storeData through the entity's accessor: the tags changed, 0 on a failure."""
+        try:
+            return EntityAccessor(entity).change(lambda root: stores.store(root, p, type_name, value, scale))
+        except CommandFailure:
+            return 0
 
     store = EntityStore()
     marker = store.summon("minecraft:marker", (0.0, 0.0, 0.0))

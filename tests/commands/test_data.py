@@ -5,13 +5,15 @@ from __future__ import annotations
 
 import pytest
 
-from mcfunction_parser import ast
+from emulator.commands import conditions, stores
+from emulator.commands.dispatch import run_command
+from emulator.commands.entities import entity_context, new_state
+from emulator.commands.env import Env
+from emulator.commands.failure import CommandFailure
+from emulator.world.blocks import parse_block
+from emulator.world.state import Context
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.parse import parse_command
-from emulator.world import data_commands as dc
-from emulator.world.blocks import parse_block
-from emulator.world.errors import CommandFailure
-from emulator.world.source import Source
 
 
 def parsed(text: str):
@@ -20,33 +22,17 @@ def parsed(text: str):
     return cmd
 
 
-def run(world: dc.World, text: str) -> int:
-    """A small dispatcher over the data command nodes, as a backend would write it."""
-    cmd = parsed(text)
-    acc = dc.accessor(cmd.target, world)
-    if isinstance(cmd, ast.DataGet):
-        return dc.data_get(acc, cmd.path, cmd.scale)
-    if isinstance(cmd, ast.DataMerge):
-        return dc.data_merge(acc, cmd.nbt)
-    if isinstance(cmd, ast.DataRemove):
-        return dc.data_remove(acc, cmd.path)
-    source = cmd.source
-    if isinstance(source, ast.SourceValue):
-        values = [source.value]
-    elif isinstance(source, ast.SourceFrom):
-        values = dc.source_values(dc.accessor(source.source, world), source.path)
-    else:
-        values = dc.string_values(dc.accessor(source.source, world), source.path, source.start, source.end)
-    return dc.data_modify(acc, cmd.path, cmd.mode, cmd.index, values)
+def run(env: Env, text: str, ctx: Context | None = None) -> int:
+    return run_command(env, parsed(text), ctx or Context())
 
 
 @pytest.fixture
 def world():
-    w = dc.World()
-    w.entities.summon("minecraft:marker", (1.0, 2.0, 3.0))
-    w.blocks.setblock((0, 0, 0), parse_block("chest{Items:[]}"))
-    w.blocks.setblock((1, 0, 0), parse_block("stone"))
-    return w
+    env = Env(new_state(), {}, set())
+    env.state.entities.summon("minecraft:marker", (1.0, 2.0, 3.0))
+    env.state.blocks.setblock((0, 0, 0), parse_block("chest{Items:[]}"))
+    env.state.blocks.setblock((1, 0, 0), parse_block("stone"))
+    return env
 
 
 def test_storage_entity_and_block_round_trip(world):
@@ -55,9 +41,9 @@ def test_storage_entity_and_block_round_trip(world):
     assert run(world, "data modify entity @e[limit=1] data.x set from storage pool:s pos[0]") == 1
     assert run(world, "data get entity @e[limit=1] data.x") == 1
     assert run(world, "data modify block 0 0 0 Lock set string storage pool:s pos[1] 0 1") == 1
-    assert world.blocks.entity((0, 0, 0))["Lock"] == "2"
+    assert world.state.blocks.entity((0, 0, 0))["Lock"] == "2"
     assert run(world, "data merge entity @e[limit=1] {Tags:[\"ball\"]}") == 1
-    assert world.entities.entities[0].tags == {"ball"}
+    assert world.state.entities.entities[0].tags == {"ball"}
     assert run(world, "data get block 0 0 0") == 1
 
 
@@ -68,18 +54,18 @@ def test_accessor_failures(world):
         run(world, "data get entity @e[tag=missing,limit=1]")
     with pytest.raises(CommandFailure, match="Nothing changed"):
         run(world, "data merge entity @e[limit=1] {Air:300s}")
-    world.entities.add_player("Steve", (0, 0, 0))
-    world.source = Source(entity=world.entities.players()[0])
+    steve = world.state.entities.add_player("Steve", (0, 0, 0))
     with pytest.raises(CommandFailure, match="Unable to modify player data"):
-        run(world, "data modify entity @s Pos[0] set value 5d")
+        run(world, "data modify entity @s Pos[0] set value 5d", entity_context(world.state, steve))
 
 
 def test_if_data_and_store(world):
     cmd = parsed("execute if data entity @e[limit=1] Pos[] run say hi")
-    assert dc.if_data(dc.accessor(cmd.subcommands[0].source, world), cmd.subcommands[0].path) == 3
+    assert conditions.count(world, cmd.subcommands[0], Context()) == 3
     store = parsed("execute store result entity @e[limit=1] Pos[1] double 0.5 run say hi").subcommands[0]
-    assert dc.store_data(dc.accessor(store.target, world), store.path, store.type, 9, store.scale) == 1
-    assert world.entities.entities[0].pos == (1.0, 4.5, 3.0)
+    stores.store(world, store, stores.store_target(world, store, Context()), True, 9)
+    assert world.state.entities.entities[0].pos == (1.0, 4.5, 3.0)
     # BlockDataAccessor fails as soon as it is made (when the store stage runs) without a block entity.
     with pytest.raises(CommandFailure, match="not a block entity"):
-        dc.accessor(parsed("execute store result block 1 0 0 x int 1 run say hi").subcommands[0].target, world)
+        stores.store_target(world, parsed("execute store result block 1 0 0 x int 1 run say hi").subcommands[0],
+                            Context())

@@ -1,4 +1,4 @@
-"""Entity commands parsed by the project's parser and run on the world library.
+"""Entity commands parsed by the project's parser and run by :mod:`emulator.commands`.
 
 Sources (decompiled 1.21): server/commands/TeleportCommand.java, SummonCommand.java,
 commands/arguments/EntityArgument.java, java.util.UUID.fromString.
@@ -10,11 +10,14 @@ import pytest
 
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.parse import parse_command
+from dataclasses import replace
+
+from emulator.commands.dispatch import run_command
+from emulator.commands.entities import entity_context, new_state, parse_uuid, single
+from emulator.commands.env import Env
+from emulator.commands.failure import CommandFailure
 from emulator.world import rotation
-from emulator.world.commands import parse_uuid, resolve_entity, summon_command, teleport_command
-from emulator.world.entities import EntityStore
-from emulator.world.errors import CommandFailure
-from emulator.world.source import Source
+from emulator.world.state import Context
 
 F32 = np.float32
 
@@ -30,55 +33,63 @@ def test_parse_uuid_is_javas_from_string():
     assert parse_uuid("1-2-3-4-5") == (1, 0x20003, 0x40000, 5)  # short groups are allowed
 
 
+def run(env: Env, text: str, ctx: Context | None = None) -> int:
+    return run_command(env, parsed(text), ctx or Context())
+
+
+def summoned(env: Env, text: str, ctx: Context):
+    run(env, text, ctx)
+    return env.state.entities.entities[-1]
+
+
 def test_summon_then_teleport_forms():
-    store = EntityStore(1)
-    src = Source(pos=(10.0, 64.0, 10.0))
-    ball = summon_command(parsed('summon marker ~ ~ ~ {Tags:["ball"],Rotation:[370f,0f]}'), store, src)
+    env = Env(new_state(), {}, set())
+    here = Context(pos=(10.0, 64.0, 10.0))
+    ball = summoned(env, 'summon marker ~ ~ ~ {Tags:["ball"],Rotation:[370f,0f]}', here)
     assert ball.pos == (10.0, 64.0, 10.0) and ball.yaw == F32(10.0)
-    cue = summon_command(parsed("summon armor_stand 0 64 0"), store, src)
+    cue = summoned(env, "summon armor_stand 0 64 0", here)
     assert cue.pos == (0.5, 64.0, 0.5)  # integer x/z are centred
-    at_ball = Source(entity=ball).at(ball)
-    assert teleport_command(parsed("tp @s ^ ^ ^1"), store, at_ball) == 1
+    assert run(env, "tp @s ^ ^ ^1", entity_context(env.state, ball)) == 1
     assert ball.pos == pytest.approx((10.0 - float(np.sin(np.radians(10.0))), 64.0, 10.0 + float(np.cos(np.radians(10.0)))), abs=1e-4)
-    teleport_command(parsed("tp @e[tag=ball] ~ ~1 ~ facing entity @e[type=armor_stand,limit=1] eyes"), store, src)
+    run(env, "tp @e[tag=ball] ~ ~1 ~ facing entity @e[type=armor_stand,limit=1] eyes", here)
     assert ball.pos == (10.0, 65.0, 10.0)
     assert (ball.yaw, ball.pitch) == rotation.facing_rotation(ball.pos, cue.anchor("eyes"))
-    assert teleport_command(parsed("tp @e[tag=ball] @e[type=armor_stand,limit=1]"), store, src) == 1
+    assert run(env, "tp @e[tag=ball] @e[type=armor_stand,limit=1]", here) == 1
     assert ball.pos == cue.pos
-    teleport_command(parsed("tp 1 2 3"), store, Source(entity=ball, yaw=F32(45.0)))
+    run(env, "tp 1 2 3", replace(entity_context(env.state, ball), rot=(45.0, 0.0)))
     assert ball.pos == (1.5, 2.0, 3.5) and ball.yaw == F32(45.0)
 
 
 def test_entity_arguments_fail_like_the_game():
-    store = EntityStore()
+    env = Env(new_state(), {}, set())
+    store = env.state.entities
     store.summon("minecraft:marker", (0, 0, 0))
     store.summon("minecraft:marker", (0, 0, 0))
     with pytest.raises(CommandFailure, match="No entity was found"):
-        teleport_command(parsed("tp @e[tag=none] ~ ~ ~"), store, Source())
+        run(env, "tp @e[tag=none] ~ ~ ~")
     with pytest.raises(CommandFailure, match="An entity is required"):
-        teleport_command(parsed("tp 0 0 0"), store, Source())
+        run(env, "tp 0 0 0")
     steve = store.add_player("Steve", (5, 5, 5))
-    assert resolve_entity(parsed("tp Steve ~ ~ ~").targets, store, Source()) is steve
+    assert single(env.state, parsed("tp Steve ~ ~ ~").targets, Context()) is steve
     uuid_text = store.entities[0].uuid_string
-    assert resolve_entity(parsed(f"tp {uuid_text} ~ ~ ~").targets, store, Source()) is store.entities[0]
+    assert single(env.state, parsed(f"tp {uuid_text} ~ ~ ~").targets, Context()) is store.entities[0]
 
 
 def test_kill_and_tag_commands():
-    from emulator.world.commands import kill_command, tag_command
-
-    store = EntityStore()
+    env = Env(new_state(), {}, set())
+    store = env.state.entities
     a = store.summon("minecraft:marker", (0, 0, 0))
     b = store.summon("minecraft:marker", (0, 0, 0))
     steve = store.add_player("Steve", (0, 0, 0))
-    src = Source(entity=a)
-    assert tag_command(parsed("tag @e add ball"), store, src) == 3
+    as_a = entity_context(env.state, a)
+    assert run(env, "tag @e add ball", as_a) == 3
     with pytest.raises(CommandFailure, match="already has the tag"):
-        tag_command(parsed("tag @e add ball"), store, src)
-    assert tag_command(parsed("tag @s remove ball"), store, src) == 1
+        run(env, "tag @e add ball", as_a)
+    assert run(env, "tag @s remove ball", as_a) == 1
     with pytest.raises(CommandFailure, match="does not have this tag"):
-        tag_command(parsed("tag @s remove ball"), store, src)
-    assert tag_command(parsed("tag @e list"), store, src) == 1
-    assert kill_command(parsed("kill @e[tag=ball]"), store, src) == 2  # b and Steve
+        run(env, "tag @s remove ball", as_a)
+    assert run(env, "tag @e list", as_a) == 1
+    assert run(env, "kill @e[tag=ball]", as_a) == 2  # b and Steve
     assert store.entities == [a, steve] and not b.alive
-    assert kill_command(parsed("kill"), store, src) == 1
+    assert run(env, "kill", as_a) == 1
     assert store.entities == [steve]

@@ -1,0 +1,74 @@
+"""Block commands and conditions over the world's block map: ``setblock``, ``fill`` (``replace
+FILTER`` too), ``execute if block`` and ``execute if blocks``.
+
+The parser keeps ``setblock``/``fill`` as generic commands (their text); they are read here.
+Sources (decompiled 1.21): server/commands/SetBlockCommand.java, FillCommand.java,
+ExecuteCommand.java (checkRegions).
+"""
+from __future__ import annotations
+
+from emulator.world.blocks import BlockSpec, block_pos, parse_block
+from mcfunction_parser import ast
+from mcfunction_parser.arguments import vec3
+from mcfunction_parser.reader import ParseError, Reader
+
+from .entities import world_source
+from .failure import CommandFailure
+
+
+def block_argument(text: str) -> BlockSpec:
+    try:
+        return parse_block(text)
+    except ValueError as error:
+        raise CommandFailure("dpemu.block.invalid", text, error, report=True) from None
+
+
+def if_block(env, cond: ast.IfBlock, ctx) -> int:
+    """``if block POS BLOCK``: 1 when the block matches."""
+    pos = block_pos(world_source(env.state, ctx), cond.pos)
+    return int(env.state.blocks.test(pos, block_argument(cond.block)))
+
+
+def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
+    """``if blocks START END DESTINATION all|masked``: the matching block count, or 0."""
+    source = world_source(env.state, ctx)
+    found = env.state.blocks.compare_regions(block_pos(source, cond.start), block_pos(source, cond.end),
+                                             block_pos(source, cond.destination), cond.mode == "masked")
+    return found or 0
+
+
+def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``setblock POS BLOCK [MODE]`` / ``fill FROM TO BLOCK [MODE]`` (``replace FILTER`` too)."""
+    corners, words = _read(cmd)
+    spec, mode = block_argument(words[0]), (words[1] if len(words) > 1 else "replace")
+    source = world_source(env.state, ctx)
+    positions = [block_pos(source, corner) for corner in corners]
+    blocks = env.state.blocks
+    if cmd.name == "setblock":
+        return blocks.setblock(positions[0], spec, mode)
+    block_filter = None
+    if mode == "replace" and len(words) > 2:
+        kept = block_argument(words[2])
+        block_filter = lambda pos: blocks.test(pos, kept)  # noqa: E731 - FillCommand's filter
+    return blocks.fill(positions[0], positions[1], spec, mode, block_filter)
+
+
+def _read(cmd: ast.GenericCommand) -> tuple[list, list[str]]:
+    """The corner positions and the words after them (the block, a mode, a filter)."""
+    reader = Reader(cmd.text, cmd.loc, (1, 21, 0))
+    try:
+        reader.pos = len(cmd.name) + 1
+        corners = [vec3(reader, block=True)]
+        if cmd.name == "fill":
+            reader.pos += 1
+            corners.append(vec3(reader, block=True))
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error, report=True) from None
+    words = cmd.text[reader.pos:].split()
+    if not words:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected a block", report=True)
+    return corners, words
+
+
+# generic commands by name
+HANDLERS = {"setblock": block_command, "fill": block_command}

@@ -1,0 +1,81 @@
+"""``execute if|unless ...`` tests (ExecuteCommand.addConditionals, decompiled 1.21), as a stage or
+as the final command.
+
+:func:`count` is what a test finds: 0 or 1 for yes/no tests, a count for ``entity``, ``data`` and
+``blocks``. As a stage, a context passes when ``count > 0`` differs from ``negated``. As the final
+command (``execute if score ...`` without ``run``, :func:`as_command`): ``if`` passes with the
+count, ``unless`` with 1, and a failing test fails the command ("Test failed"; an ``unless`` of a
+counting test says the count, createNumericConditionalHandler / checkUnlessRegions).
+"""
+from __future__ import annotations
+
+from mcfunction_parser import ast
+
+from . import blocks, data, entities
+from .failure import CommandFailure
+from .holders import objective, single_holder
+
+_COMPARE = {
+    "<": lambda a, b: a < b,
+    "<=": lambda a, b: a <= b,
+    "=": lambda a, b: a == b,
+    ">=": lambda a, b: a >= b,
+    ">": lambda a, b: a > b,
+}
+_COUNTING = (ast.IfEntity, ast.IfData, ast.IfBlocks)
+
+
+def count(env, cond: ast.Condition, ctx) -> int:
+    """How many things the test found (0: it fails)."""
+    if isinstance(cond, ast.IfScore):
+        return int(_score_compare(env, cond, ctx))
+    if isinstance(cond, ast.IfScoreMatches):
+        return int(_score_matches(env, cond, ctx))
+    if isinstance(cond, ast.IfEntity):
+        return len(entities.select(env.state, cond.targets, ctx))
+    if isinstance(cond, ast.IfData):
+        return data.count_matching(env, cond, ctx)
+    if isinstance(cond, ast.IfBlock):
+        return blocks.if_block(env, cond, ctx)
+    if isinstance(cond, ast.IfBlocks):
+        return blocks.if_blocks(env, cond, ctx)
+    if isinstance(cond, ast.IfDimension):
+        return int(ctx.dimension == cond.dimension)
+    raise CommandFailure("dpemu.unsupported", f"'{type(cond).__name__}'", report=True)
+
+
+def passes(env, cond: ast.Condition, ctx) -> bool:
+    return (count(env, cond, ctx) > 0) != cond.negated
+
+
+def as_command(env, cond: ast.Condition, ctx) -> int:
+    """The test as the final command: its result, or a failure."""
+    found = count(env, cond, ctx)
+    if not cond.negated:
+        if found > 0:
+            return found
+        raise CommandFailure("commands.execute.conditional.fail")
+    if found == 0:
+        return 1
+    if isinstance(cond, _COUNTING):
+        raise CommandFailure("commands.execute.conditional.fail_count", found)
+    raise CommandFailure("commands.execute.conditional.fail")
+
+
+def _score_matches(env, cond: ast.IfScoreMatches, ctx) -> bool:
+    """ExecuteCommand.checkScore (range): the holder, then the objective; an unset score never matches."""
+    holder = single_holder(env, cond.target, ctx)
+    value = env.state.scoreboard.get(holder, objective(env, cond.objective))
+    return value is not None and cond.range.contains(value)
+
+
+def _score_compare(env, cond: ast.IfScore, ctx) -> bool:
+    """ExecuteCommand.checkScore: target, its objective, source, its objective (in that order);
+    false when either score is unset."""
+    target = single_holder(env, cond.target, ctx)
+    obj = objective(env, cond.objective)
+    source = single_holder(env, cond.source, ctx)
+    src_obj = objective(env, cond.source_objective)
+    a = env.state.scoreboard.get(target, obj)
+    b = env.state.scoreboard.get(source, src_obj)
+    return a is not None and b is not None and _COMPARE[cond.op](a, b)
