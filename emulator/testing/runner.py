@@ -381,7 +381,7 @@ def _found_inside(source: TestSource, step: InsideCheck, ctx: Context | None) ->
     """PackTest's ``entity SELECTOR inside``: the entities found that stand inside the test's bounds."""
     try:
         found = world_entities.select(source.emu.state, step.target, ctx or source.context())
-    except world_entities.WorldCommandError as error:
+    except CommandFailure as error:
         raise _Verdict(FAILED, error.message, step.loc.line) from None
     return [e for e in found if source.inside(e)]
 

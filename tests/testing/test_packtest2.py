@@ -109,3 +109,10 @@ def test_bad_directive_values_are_errors_of_the_test(tmp_path):
     _, results = suite(tmp_path, files)
     assert results["demo:a"].status == "failed" and "@skyaccess: expected true, false or nothing" in results["demo:a"].message
     assert results["demo:b"].status == "failed" and "@environment: expected a resource location" in results["demo:b"].message
+
+
+def test_an_entity_inside_check_whose_selector_fails_fails_the_test(tmp_path):
+    # @s without an executor: the selector finds nothing; a selector the world refuses fails
+    files = {"demo/test/bad.mcfunction": "assert entity @e[limit=0] inside\n"}
+    _, results = suite(tmp_path, files)
+    assert results["demo:bad"].status == "failed" and "Traceback" not in results["demo:bad"].message
