@@ -18,7 +18,8 @@ from pathlib import Path
 from emulator.commands import entities as world_entities
 from emulator.profile.data import Profile, Profiler
 from emulator.profile.stacks import CallStacks
-from emulator.runtime.backend import Backend, CallRecording, RootResult, Tracer, make_backend
+from emulator.runtime.backend import Backend, CallRecording, RootResult, Tracer
+from emulator.runtime.factory import make_backend
 from emulator.runtime.server import Runtime
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.world.state import Context

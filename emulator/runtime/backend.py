@@ -2,7 +2,7 @@
 
 Two backends implement it: the numba VM (:class:`emulator.vm.backend.NumbaBackend`, driving
 :mod:`emulator.vm.loop`) and the plain-Python reference (:mod:`emulator.reference`);
-:func:`make_backend` makes either by name, importing only the one asked for. The runtime
+:func:`emulator.runtime.factory.make_backend` makes either by name. The runtime
 (:mod:`emulator.runtime.server`) owns the tick loop and the schedule queue's timing; it asks the backend
 to run one *root sequence* at a time. Both act on the same :class:`~emulator.world.state.WorldState`.
 
@@ -107,20 +107,6 @@ class Backend(Protocol):
         """Cost charged so far per ``(source path, line)``, cumulative over the run: the sum over
         all lines equals the total cost minus the roots' own CallFunction charges (a root call is
         on no line). May be ``{}`` if not tracked."""
-
-
-def make_backend(name: str) -> Backend:
-    """A new backend by name: ``numba`` (the VM) or ``python`` (the reference). Imported here, when
-    asked for, so that a run on the reference backend never loads numba."""
-    if name == "numba":
-        from emulator.vm.backend import NumbaBackend
-
-        return NumbaBackend()
-    if name == "python":
-        from emulator.reference.recording import RecordingReferenceBackend
-
-        return RecordingReferenceBackend()
-    raise ValueError(f"unknown backend {name!r}: expected 'numba' or 'python'")
 
 
 # ---------------------------------------------------------------------- what the profiler reads

@@ -266,7 +266,7 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
              limit: int | None = None) -> Outcome:
     """Load ``pack`` and run ``entry`` as one root on a fresh world; ``scores`` seeds
     ``{(holder, objective): value}`` first; ``limit`` sets maxCommandChainLength."""
-    from emulator.runtime.backend import make_backend
+    from emulator.runtime.factory import make_backend
     from emulator.world.state import WorldState
     from mcfunction_parser.pack.loader import load_packs
 
