@@ -21,8 +21,8 @@ from emulator.profile.stacks import CallStacks
 from emulator.runtime.backend import Backend, CallRecording, RootResult, Tracer
 from emulator.runtime.factory import make_backend
 from emulator.runtime.server import Runtime
+from emulator.world.context import Context
 from emulator.world.semantics import INT_MAX, INT_MIN
-from emulator.world.state import Context
 from mcfunction_parser.diagnostics import Diagnostic
 
 

@@ -61,7 +61,9 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple, Protocol, runtime_checkable
 
-from emulator.world.state import Context, Frame, WorldState
+from emulator.world.context import Context
+from emulator.world.records import Frame
+from emulator.world.state import WorldState
 
 if TYPE_CHECKING:
     from mcfunction_parser import ast

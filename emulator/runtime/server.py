@@ -19,8 +19,9 @@ from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult
 from emulator.world import statistics
+from emulator.world.context import Context
 from emulator.world.server_commands import advance_time
-from emulator.world.state import Context, WorldState
+from emulator.world.state import WorldState
 
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"

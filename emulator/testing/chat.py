@@ -12,7 +12,7 @@ from __future__ import annotations
 import re
 
 from emulator.commands import entities as world_entities
-from emulator.world.state import Context
+from emulator.world.context import Context
 from emulator.testing.testfile import ChatCheck
 from emulator.world.text import plain_text
 

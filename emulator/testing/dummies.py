@@ -40,7 +40,7 @@ import uuid as uuid_lib
 from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
-from emulator.world.state import Context
+from emulator.world.context import Context
 from emulator.world import statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity

@@ -13,7 +13,7 @@ from pathlib import Path
 from emulator.commands import entities as world_entities
 from emulator.api import Emulator
 from emulator.vm.host import Host, HostFailure
-from emulator.world.state import Context
+from emulator.world.context import Context
 from emulator.testing import chat
 from emulator.testing.discovery import TestFile
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported

@@ -20,7 +20,9 @@ from emulator.vm.program import Program
 from emulator.reference.failure import CommandFailure
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
-from emulator.world.state import Context, Frame, Overflow, WorldState
+from emulator.world.context import Context
+from emulator.world.records import Frame, Overflow
+from emulator.world.state import WorldState
 from emulator.world import nbt_ops
 from emulator.world.errors import CommandFailure as WorldFailure
 from mcfunction_parser import ast

@@ -2,6 +2,9 @@
 
 Pure Python over plain values, callable from both backends (the numba VM's host side and the
 reference interpreter). Modules:
+- ``state``: the ``WorldState`` a run changes (scoreboard, schedule, gamerules, log ...);
+  ``context``: who runs a command and where; ``records``: log lines, runtime diagnostics and
+  overflow reports.
 - ``errors``: ``CommandFailure`` and the game's messages.
 - ``nbt_ops``: NBT paths, ``data get/merge/modify/remove``, partial NBT matching.
 - ``storage``: command storage (``data ... storage``) with the game's accessor semantics.

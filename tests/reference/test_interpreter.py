@@ -287,7 +287,7 @@ def test_context_modifiers_move_the_source(tmp_path):
     # align flooring, and the nether's coordinate scale of 8
     from emulator.reference.modifiers import apply
     from emulator.reference.source import Source
-    from emulator.world.state import Context
+    from emulator.world.context import Context
     from mcfunction_parser.diagnostics import Loc
     from mcfunction_parser.parse import parse_command
 
