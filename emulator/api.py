@@ -1,4 +1,5 @@
-"""The Python API: ``Emulator`` loads packs, calls functions, runs ticks and reports.
+"""The Python API: ``Emulator``, the front door over the runtime (:mod:`emulator.runtime.server`),
+which runs the ticks on a backend. It loads packs, calls functions, runs ticks and reports.
 
     emu = Emulator()                    # or Emulator(backend="python"), Emulator(sanitize=True)
     emu.load("path/to/pack")
@@ -6,6 +7,7 @@
     emu.call("pool:setup")
     emu.tick(20)
     emu.score("#ball", "x")             # None when unset
+    emu.profile                         # command counts per tick, root, function, line
 """
 from __future__ import annotations
 
@@ -13,37 +15,37 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from pathlib import Path
 
-from emulator.runtime.backend import Backend, RootResult
-from emulator.profile.data import Profile, fold
-from emulator.runtime.server import LOAD_TAG, Runtime
-from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.commands import entities as world_entities
-from emulator.world import statistics
-from emulator.world.state import Context
+from emulator.profile.data import Profile, Profiler
+from emulator.profile.stacks import CallStacks
+from emulator.runtime.backend import Backend, CallRecording, RootResult, Tracer
+from emulator.runtime.factory import make_backend
+from emulator.runtime.server import Runtime
+from emulator.world.context import Context
+from emulator.world.semantics import INT_MAX, INT_MIN
 from mcfunction_parser.diagnostics import Diagnostic
 
 
-def make_backend(name: str) -> Backend:
-    if name == "numba":
-        from emulator.vm.backend import NumbaBackend
-
-        return NumbaBackend()
-    if name == "python":
-        from emulator.reference import ReferenceBackend
-
-        return ReferenceBackend()
-    raise ValueError(f"unknown backend {name!r}: expected 'numba' or 'python'")
-
-
 class Emulator:
-    def __init__(self, backend: str = "numba", sanitize: bool = False, shuffle: int | None = None) -> None:
-        self.backend_name = backend
+    def __init__(self, backend: str | Backend = "numba", sanitize: bool = False, shuffle: int | None = None,
+                 stacks: bool = False, trace: Tracer | None = None) -> None:
+        """``backend``: ``"numba"`` (the VM), ``"python"`` (the reference) or a backend object
+        (:class:`emulator.runtime.backend.Backend`). ``stacks``: record the call stack of every
+        command (``profile.stacks``); ``trace``: report every call and command to this tracer
+        (e.g. :class:`emulator.profile.formats.TraceWriter`, the game's ``/debug function``
+        trace). Both need a backend that records calls: the python one."""
+        self.backend = make_backend(backend) if isinstance(backend, str) else backend
+        self.backend_name = self.backend.name
         self.sanitize = sanitize
         self.shuffle = shuffle  # seed permuting unsorted @e order (None: creation order)
-        self.backend = make_backend(backend)
+        self.records_calls = stacks or trace is not None
+        if self.records_calls and not isinstance(self.backend, CallRecording):
+            raise ValueError(f"the {self.backend_name} backend records no call stacks; the python backend does")
+        self.trace = trace
         self.state = world_entities.new_state(shuffle)
         self.packs = None
         self.runtime: Runtime | None = None
+        self.profiler: Profiler | None = None
 
     # ------------------------------------------------------------------ loading
     def load(self, paths: str | Path | Sequence[str | Path], mc_version: str | None = None):
@@ -57,11 +59,15 @@ class Emulator:
 
     def load_parsed(self, packs):
         """Start an empty world on packs already loaded by ``mcfunction_parser.load_packs`` (a test
-        runner parses a pack once and starts a fresh world per test); returns ``packs``."""
+        runner parses a pack once and starts a fresh world per test); returns ``packs``. The
+        profile starts again too."""
         self.packs = packs
         self.state = world_entities.new_state(self.shuffle)
-        self.backend.load(packs, self.state, self.sanitize)
-        self.runtime = Runtime(self.backend, packs, self.state)
+        stacks = CallStacks() if self.records_calls else None
+        if stacks is not None:
+            self.backend.record_calls(stacks, self.trace)
+        self.runtime = Runtime(self.backend, packs, self.state, self.sanitize)
+        self.profiler = Profiler(self.runtime, stacks)
         return packs
 
     @property
@@ -80,11 +86,7 @@ class Emulator:
         count outside the ticks; the next tick runs only ``#minecraft:tick`` and the schedule.
         Without this call the first tick runs the load functions. Returns the commands executed
         (0 when the load functions already ran)."""
-        runtime = self._runtime()
-        if runtime.loaded:
-            return 0
-        runtime.loaded = True
-        return sum(runtime.call(f).cost for f in runtime.members(LOAD_TAG))
+        return self._runtime().start()
 
     def call(self, function: str, as_=None, at: tuple[float, float, float] | None = None, arguments=None) -> int | None:
         """Run ``function`` (``ns:path``, ``path`` for ``minecraft:``, or ``#tag``: each member)
@@ -105,22 +107,16 @@ class Emulator:
         return runtime.call(name, context, arguments).result
 
     def tick(self, n: int = 1) -> int:
-        """Run ``n`` ticks; returns the commands executed."""
+        """Run ``n`` server ticks (:meth:`emulator.runtime.server.Runtime.tick`); returns the commands executed."""
         runtime = self._runtime()
-        return sum(self._tick(runtime) for _ in range(n))
-
-    def _tick(self, runtime: Runtime) -> int:
-        """One server tick: the functions and schedules, then the players' per-tick statistics."""
-        cost = runtime.tick()
-        statistics.tick_players(self.state)
-        return cost
+        return sum(runtime.tick() for _ in range(n))
 
     def run_until(self, predicate: Callable[["Emulator"], bool], max_ticks: int) -> int:
         """Tick until ``predicate(self)`` holds (checked after each tick) or ``max_ticks`` ran;
         returns the ticks run."""
         runtime = self._runtime()
         for n in range(1, max_ticks + 1):
-            self._tick(runtime)
+            runtime.tick()
             if predicate(self):
                 return n
         return max_ticks
@@ -185,14 +181,23 @@ class Emulator:
         return list(self.runtime.commands_per_tick) if self.runtime else []
 
     @property
+    def commands_outside_ticks(self) -> int:
+        """Commands run between ticks: the load functions when :meth:`start` ran them, and calls."""
+        return self.runtime.commands_outside_ticks if self.runtime else 0
+
+    @property
     def max_root_cost(self) -> int:
         return self.runtime.max_root_cost if self.runtime else 0
 
     @property
+    def quota(self) -> int:
+        """Each root's command budget now (the ``maxCommandChainLength`` gamerule)."""
+        return self.state.gamerules.max_command_chain_length
+
+    @property
     def profile(self) -> Profile:
-        paths = {f.path: fid for fid, f in self.packs.functions.items()} if self.packs else {}
-        totals = self.backend.function_totals() if hasattr(self.backend, "function_totals") else None
-        return fold(self.backend.line_counts() if self.packs else {}, paths, totals, self.commands_per_tick)
+        """Exact command counts of the run since :meth:`load` (:mod:`emulator.profile.data`)."""
+        return self.profiler.profile() if self.profiler else Profile(backend=self.backend_name)
 
 
 def _normalise(function: str) -> str:

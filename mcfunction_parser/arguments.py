@@ -1,54 +1,16 @@
-"""Argument types shared by commands: coordinates, ranges, resource locations, score holders,
-objectives, durations and JSON text spans."""
+"""Argument types shared by commands: coordinates, score holders, objectives, durations and text
+components (the values they build on, such as ranges and resource locations, are in
+:mod:`.primitives`)."""
 from __future__ import annotations
 
 import json
 import re
 
-from . import snbt
-from .ast import Coord, FloatRange, IntRange, NameTarget, Selector, Vec2, Vec3, Wildcard
+from . import selectors, snbt
+from .ast import Coord, NameTarget, Selector, Vec2, Vec3, Wildcard
 from .diagnostics import Loc
-from .reader import FLOAT_TEXT, INT_MAX, INT_MIN, INT_TEXT, UNQUOTED, WORD, ParseError, Reader, brief, integer_value
-
-# ----------------------------------------------------------------------------- resource locations
-
-# Characters Minecraft's ResourceLocation.read consumes; validity of each part is checked after.
-_RESLOC = re.compile(r"[0-9a-z_:/.\-]*")
-_RESLOC_STOP = frozenset(" ,]}=[{")
-
-
-def resource_location(r: Reader, what: str = "resource location") -> str:
-    """``ns:path`` or ``path`` (namespace ``minecraft``), normalised with its namespace."""
-    start = r.pos
-    text = r.text
-    m = _RESLOC.match(text, start)
-    end = m.end()
-    if end < r.end and text[end] not in _RESLOC_STOP:
-        r.fail(f"invalid character '{text[end]}' in {what} (allowed: a-z 0-9 _ - . / and one ':')", end)
-    token = m.group()
-    if not token:
-        r.fail(f"expected {what}, got {r.found()}")
-    r.pos = end
-    colon = token.find(":")
-    if colon < 0:
-        return "minecraft:" + token
-    namespace, path = token[:colon], token[colon + 1:]
-    if ":" in path:
-        r.fail(f"invalid {what} '{token}': more than one ':'", start + colon + 1 + path.index(":"))
-    if "/" in namespace:
-        r.fail(f"invalid {what} '{token}': '/' is not allowed in the namespace", start)
-    if not path:
-        r.fail(f"invalid {what} '{token}': empty path", start + colon + 1)
-    return token if namespace else "minecraft:" + path
-
-
-def resource_or_tag(r: Reader, what: str) -> tuple[str, bool]:
-    """``#ns:tag`` or ``ns:id``: (normalised id, is_tag)."""
-    if r.peek() == "#":
-        r.pos += 1
-        return resource_location(r, what + " tag"), True
-    return resource_location(r, what), False
-
+from .primitives import is_uuid, json_span
+from .reader import FLOAT_TEXT, INT_TEXT, UNQUOTED, WORD, ParseError, Reader
 
 # ----------------------------------------------------------------------------- coordinates
 
@@ -137,81 +99,6 @@ def vec2(r: Reader, integers: bool = False) -> Vec2:
     return Vec2(x, y, loc)
 
 
-# ----------------------------------------------------------------------------- ranges
-
-# MinMaxBounds reads digits, '-' and '.' unless the '.' starts '..'.
-_BOUND = re.compile(r"(?:[0-9\-]|\.(?!\.))*")
-
-
-def _bound(r: Reader, is_int: bool):
-    start = r.pos
-    token = _BOUND.match(r.text, start).group()
-    if not token:
-        return None
-    if not (INT_TEXT if is_int else FLOAT_TEXT).match(token):
-        r.fail(f"invalid {'integer' if is_int else 'number'} '{token}' in range", start)
-    r.pos = start + len(token)
-    if is_int:
-        value = integer_value(token)
-        if not INT_MIN <= value <= INT_MAX:
-            r.fail(f"integer {brief(token)} is out of range for a 32-bit int", start)
-        return value
-    return float(token)
-
-
-def _range(r: Reader, is_int: bool, wraps: bool = False):
-    """MinMaxBounds.fromReader: ``lo``, ``lo..``, ``..hi`` or ``lo..hi``; ``wraps`` (rotations,
-    WrappedMinMaxBounds) lets the minimum be bigger than the maximum: the range goes round."""
-    start = r.pos
-    lo = _bound(r, is_int)
-    if r.text.startswith("..", r.pos):
-        r.pos += 2
-        hi = _bound(r, is_int)
-        if lo is None and hi is None:
-            r.fail("expected a value or range of values, got '..'", start)
-    else:
-        if lo is None:
-            r.fail(f"expected a value or range of values, got {r.found()}", start)
-        hi = lo
-    if not wraps and lo is not None and hi is not None and lo > hi:
-        r.fail(f"range minimum {lo} is bigger than its maximum {hi}", start)
-    return lo, hi
-
-
-# A range token is read from these characters only, and ranges carry no location, so a
-# successfully parsed token's IntRange is shared by every later occurrence of the same text.
-_RANGE_TOKEN = re.compile(r"[0-9.\-]*")
-_INT_RANGES: dict[str, IntRange] = {}
-
-
-def int_range(r: Reader) -> IntRange:
-    start = r.pos
-    token = _RANGE_TOKEN.match(r.text, start).group()
-    cached = _INT_RANGES.get(token)
-    if cached is not None:
-        r.pos = start + len(token)
-        return cached
-    lo, hi = _range(r, True)
-    result = IntRange(lo, hi)
-    if r.pos == start + len(token):
-        if len(_INT_RANGES) >= _CACHE_MAX:
-            _INT_RANGES.clear()
-        _INT_RANGES[token] = result
-    return result
-
-
-def float_range(r: Reader) -> FloatRange:
-    lo, hi = _range(r, False)
-    return FloatRange(lo, hi)
-
-
-def rotation_range(r: Reader) -> FloatRange:
-    """``x_rotation``/``y_rotation`` (WrappedMinMaxBounds.fromReader): ``135..-135`` is the half
-    turn through 180."""
-    lo, hi = _range(r, False, wraps=True)
-    return FloatRange(lo, hi)
-
-
 # ----------------------------------------------------------------------------- names
 
 _OBJECTIVE_OLD_MAX = 16  # objective names were capped at 16 characters before 1.18 (21w37a)
@@ -276,15 +163,7 @@ def holder_from_word(word: str, loc: Loc):
     """A score holder written as a word: ``*`` or a name (UUIDs recognised)."""
     if word == "*":
         return Wildcard(loc)
-    return NameTarget(word, loc, "-" in word and _UUID.match(word) is not None)
-
-
-# java.util.UUID.fromString: five hyphen-separated hex groups
-_UUID = re.compile(r"[0-9a-fA-F]{1,8}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,12}\Z")
-
-
-def is_uuid(text: str) -> bool:
-    return _UUID.match(text) is not None
+    return NameTarget(word, loc, "-" in word and is_uuid(word))
 
 
 # ----------------------------------------------------------------------------- durations
@@ -312,11 +191,6 @@ def duration(r: Reader) -> int:
 
 # ----------------------------------------------------------------------------- JSON text
 
-_JSON_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|\'(?:[^\'\\]|\\.)*\'|[\[\]{}]|["\']')
-_JSON_PRIMITIVE = re.compile(r"[^ \[\]{},]+")
-_CLOSERS = {"[": "]", "{": "}"}
-
-
 SNBT_TEXT_COMPONENTS = (1, 21, 5)  # 25w02a: text components in commands are SNBT, not JSON
 
 
@@ -340,45 +214,3 @@ def text_component(r: Reader) -> str:
         pos = getattr(error, "pos", 0)
         r.fail(f"invalid JSON text: {getattr(error, 'msg', str(error))}", start + pos)
     return span
-
-
-def json_span(r: Reader, what: str = "JSON text") -> str:
-    """One JSON (or SNBT) value, checked for balanced brackets and quotes, returned as written."""
-    start = r.pos
-    text = r.text
-    c = r.peek()
-    if not c:
-        r.fail(f"expected {what}, got end of command")
-    if c in "[{":
-        stack = []
-        pos = start
-        while True:
-            m = _JSON_TOKEN.search(text, pos)
-            if m is None:
-                r.fail(f"unclosed '{stack[-1]}' in {what}", start)
-            tok = m.group()
-            if tok in ("[", "{"):
-                stack.append(tok)
-            elif tok in ("]", "}"):
-                if not stack or _CLOSERS[stack.pop()] != tok:
-                    r.fail(f"unbalanced '{tok}' in {what}", m.start())
-                if not stack:
-                    r.pos = m.end()
-                    return text[start:r.pos]
-            elif len(tok) == 1:
-                r.fail(f"unclosed quoted string in {what}", m.start())
-            pos = m.end()
-    if c == '"' or c == "'":
-        m = _JSON_TOKEN.match(text, start)
-        if m is None or len(m.group()) == 1:
-            r.fail(f"unclosed quoted string in {what}", start)
-        r.pos = m.end()
-        return m.group()
-    m = _JSON_PRIMITIVE.match(text, start)
-    if m is None:
-        r.fail(f"expected {what}, got {r.found()}")
-    r.pos = m.end()
-    return m.group()
-
-
-from . import selectors  # noqa: E402  (selectors imports this module's helpers)

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 import re
 
-from .arguments import float_range, int_range, is_uuid, json_span, resource_location, rotation_range
 from .ast import FloatRange, NameTarget, Selector, SelectorArg
 from .features import FEATURES
+from .primitives import float_range, int_range, is_uuid, json_span, resource_location, rotation_range
 from .reader import Reader, show
 from .snbt import compound
 

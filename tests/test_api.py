@@ -1,9 +1,14 @@
 """The Emulator API: load, call, tick, run_until, scores, log, profile, diagnostics, backends."""
 from __future__ import annotations
 
+import subprocess
+import sys
+
 import pytest
 
 from emulator import Emulator
+from emulator.reference import ReferenceBackend
+from tests.backends.programs import write_pack
 from tests.vm.helpers import SETUP, emulator_for
 
 FUNCTIONS = {
@@ -76,6 +81,40 @@ def test_use_before_load():
 def test_unknown_backend():
     with pytest.raises(ValueError, match="unknown backend"):
         Emulator(backend="java")
+
+
+def test_a_backend_object_runs_the_ticks(tmp_path):
+    backend = ReferenceBackend()
+    emu = Emulator(backend=backend)
+    emu.load(write_pack(tmp_path / "pack", FUNCTIONS, TAGS))
+    assert emu.backend is backend and emu.backend_name == "python"
+    emu.tick(2)
+    assert emu.score("#sq", "o") == 4
+
+
+def test_the_python_backend_imports_no_numba(tmp_path):
+    pack = write_pack(tmp_path / "pack", FUNCTIONS, TAGS)
+    script = ("import sys\nimport emulator\nemu = emulator.Emulator(backend='python')\n"
+              f"emu.load({str(pack)!r})\nemu.tick(2)\nassert emu.score('#sq', 'o') == 4\n"
+              "print(sorted(m for m in sys.modules if m.split('.')[0] == 'numba'))")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "[]"
+
+
+def test_profile_call_stacks_on_the_python_backend(tmp_path):
+    emu = emulator_for(tmp_path, FUNCTIONS, TAGS, backend="python", stacks=True)
+    emu.tick(2)
+    profile = emu.profile
+    assert sum(profile.stacks.values()) == sum(emu.commands_per_tick)
+    assert profile.stacks[("t:tick", "t:work")] == 2 * 3 + 1  # its lines each tick, `say` at #n 2
+    assert profile.calls == {"t:load": 1, "t:tick": 2, "t:work": 2}
+    assert profile.functions_total["t:tick"] == 2 * (2 + 3) + 1
+    assert profile.roots["t:tick"].runs == 2 and profile.roots["t:tick"].max_cost == 1 + 1 + 1 + 3 + 1
+
+
+def test_call_stacks_need_a_backend_that_records_them():
+    with pytest.raises(ValueError, match="numba backend records no call stacks"):
+        Emulator(backend="numba", stacks=True)
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])

@@ -4,6 +4,7 @@ zipped pack."""
 from __future__ import annotations
 
 import os
+import shutil
 import subprocess
 import sys
 import zipfile
@@ -22,7 +23,12 @@ def _run(args, cwd, timeout=600) -> subprocess.CompletedProcess:
 @pytest.fixture(scope="module")
 def wheel(tmp_path_factory) -> Path:
     work = tmp_path_factory.mktemp("dist")
-    built = _run([sys.executable, "-m", "build", "--wheel", "--outdir", str(work), str(ROOT)], cwd=work)
+    source = work / "source"  # a copy of the tracked files: building leaves build/ and egg-info behind
+    for name in subprocess.run(["git", "ls-files"], cwd=ROOT, capture_output=True, text=True, check=True).stdout.split():
+        if (ROOT / name).is_file():
+            (source / name).parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(ROOT / name, source / name)
+    built = _run([sys.executable, "-m", "build", "--wheel", "--outdir", str(work), str(source)], cwd=work)
     assert built.returncode == 0, built.stdout[-2000:] + built.stderr[-2000:]
     return next(work.glob("dpemu-*.whl"))
 

@@ -1,15 +1,16 @@
 """``dpemu profile``: run packs like ``dpemu run`` and report exact command counts: per tick, per
 root (quota headroom), per function (self, total, calls), per line (with the VM's instructions,
-i.e. each execute stage), the commands run host-side, and call stacks.
+i.e. each execute stage), the commands run host-side, and call stacks. The counts are the
+emulator's profile (:attr:`emulator.api.Emulator.profile`); this module only writes them out.
 
 Collapsed stacks and the ``/debug function`` trace need the call stack of every charge, which the
-reference backend records (:mod:`emulator.profile.stacks`); those formats run on it.
+reference backend records; those formats run on it.
 """
 from __future__ import annotations
 
 import json
 import sys
-from collections import Counter, defaultdict
+from collections import Counter
 from pathlib import Path
 
 import click
@@ -17,36 +18,9 @@ import click
 from emulator.profile import formats
 from emulator.api import Emulator
 from emulator.cli.options import OrderedCommand, apply_setup, parse_call, parse_set, parse_until, run_options
-from emulator.profile.stacks import StackBackend
+from emulator.profile.data import Profile, RootRuns
 
 STACK_FORMATS = ("collapsed", "trace")
-
-
-class RootLog:
-    """Records every root sequence the runtime runs: (function, cost, cut)."""
-
-    def __init__(self, runtime) -> None:
-        self.runs: list[tuple[str, int, bool]] = []
-        inner = runtime.run_root
-
-        def run_root(function_id, context=None, arguments=None):
-            result = inner(function_id, context, arguments)
-            self.runs.append((function_id, result.cost, result.cut))
-            return result
-
-        runtime.run_root = run_root
-
-    def summary(self, limit: int) -> list[dict]:
-        by_function: dict[str, list[tuple[int, bool]]] = defaultdict(list)
-        for function, cost, cut in self.runs:
-            by_function[function].append((cost, cut))
-        rows = []
-        for function, runs in by_function.items():
-            costs = [c for c, _ in runs]
-            rows.append({"function": function, "runs": len(runs), "max_cost": max(costs),
-                         "mean_cost": sum(costs) / len(costs), "headroom": limit - max(costs),
-                         "cut": sum(cut for _, cut in runs)})
-        return sorted(rows, key=lambda r: -r["max_cost"])
 
 
 @click.command("profile", cls=OrderedCommand)
@@ -70,16 +44,14 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     stop = parse_until(until) if until else None
     trace = formats.TraceWriter() if fmt == "trace" else None
     emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace)
-    roots = RootLog(emu.runtime)
     load_commands = emu.start()
-    if hasattr(emu.backend, "host_runs"):
-        emu.backend.host_runs.clear()  # list what --set/--call and the ticks hand to Python, not the load's setup
+    loaded = emu.profile  # the host ops listed are those after the load's setup
     apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
     for _ in range(ticks):
         emu.tick()
         if stop and stop.met(emu):
             break
-    report = build_report(emu, roots, load_commands)
+    report = build_report(emu.profile, emu.packs.sources, loaded, load_commands)
     text = {"table": lambda: formats.write_table(report, top), "json": lambda: formats.write_json(report),
             "collapsed": lambda: formats.write_collapsed(report), "trace": lambda: trace.text()}[fmt]()
     if output:
@@ -92,9 +64,7 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
 
 def _loaded(packs, mc_version: str | None, stacks: bool, trace) -> Emulator:
     """An emulator with ``packs`` loaded: the numba VM, or the reference backend recording stacks."""
-    emu = Emulator(backend="python" if stacks else "numba")
-    if stacks:
-        emu.backend = StackBackend(trace)
+    emu = Emulator(backend="python", stacks=True, trace=trace) if stacks else Emulator(backend="numba")
     try:
         emu.load(list(packs), mc_version)
     except ValueError as error:
@@ -128,64 +98,45 @@ def _read_baseline(path: str) -> dict:
 
 
 # ---------------------------------------------------------------------- the report
-def build_report(emu: Emulator, roots: RootLog, load_commands: int = 0) -> dict:
-    """The profile; ``load_commands`` of the commands outside ticks were the load functions' (the
-    rest were --set/--call's)."""
-    runtime = emu.runtime
-    series = emu.commands_per_tick
-    limit = emu.state.gamerules.max_command_chain_length
-    prof = emu.profile
-    sources = emu.packs.sources
-    backend = emu.backend
-    if isinstance(backend, StackBackend):
-        stacks = dict(backend.stacks)
-        calls = dict(backend.calls)
-        totals = _totals_from_stacks(stacks, backend.root_calls)
-        instructions: dict = {}
-        host = None  # the reference backend runs everything in Python: no VM/host split
-    else:
-        stacks = None
-        calls = _vm_calls(backend, roots)
-        totals = prof.functions_total
-        instructions = _vm_instructions(backend)
-        host = _vm_host(backend, sources)
-    names = set(prof.functions_self) | set(totals) | set(calls)
-    functions = [{"function": f, "self": prof.functions_self.get(f, 0), "total": totals.get(f),
-                  "calls": calls.get(f)} for f in names]
+def build_report(prof: Profile, sources: dict, loaded: Profile, load_commands: int = 0) -> dict:
+    """The report the formats write (:mod:`emulator.profile.formats`) from the profile ``prof``;
+    ``loaded`` is the profile when the load's setup had run (its ``load_commands`` of the commands
+    outside ticks were the load functions', the rest were --set/--call's)."""
+    series = prof.ticks
+    ops = _vm_ops() if prof.host is not None else {}  # the VM's opcode names (numba backend only)
+    ids = set(prof.functions_self) | set(prof.functions_total) | set(prof.calls)
+    functions = [{"function": f, "self": prof.functions_self.get(f, 0), "total": prof.functions_total.get(f),
+                  "calls": prof.calls.get(f)} for f in ids]
     functions.sort(key=lambda f: (-(f["total"] if f["total"] is not None else f["self"]), f["function"]))
     report = {
-        "backend": emu.backend_name,
-        "limit": limit,
-        "commands": sum(series) + runtime.commands_outside_ticks,
-        "outside_ticks": {"load": load_commands, "setup": runtime.commands_outside_ticks - load_commands},
+        "backend": prof.backend,
+        "limit": prof.limit,
+        "commands": sum(series) + prof.outside_ticks,
+        "outside_ticks": {"load": load_commands, "setup": prof.outside_ticks - load_commands},
         "ticks": {"count": len(series), "mean": sum(series) / len(series) if series else 0.0,
                   "max": max(series, default=0), "series": series},
-        "roots": roots.summary(limit),
+        "roots": _roots(prof.roots, prof.limit),
         "functions": functions,
         "lines": [{"path": path, "line": line, "commands": count, "source": _source(sources, path, line),
-                   "instructions": instructions.get((path, line), [])}
+                   "instructions": _vm_instructions(prof.instructions.get((path, line), []), ops)}
                   for (path, line), count in sorted(prof.lines.items(), key=lambda kv: (-kv[1], kv[0]))],
-        "host": host,
+        # the python backend runs everything in Python: no VM/host split
+        "host": None if prof.host is None else _vm_host(prof.host, loaded.host, sources, ops),
     }
-    if stacks is not None:
-        report["stacks"] = {";".join(stack): count for stack, count in sorted(stacks.items())}
+    if prof.stacks is not None:
+        report["stacks"] = {";".join(stack): count for stack, count in sorted(prof.stacks.items())}
     return report
+
+
+def _roots(roots: dict[str, RootRuns], limit: int) -> list[dict]:
+    rows = [{"function": function, "runs": r.runs, "max_cost": r.max_cost, "mean_cost": r.cost / r.runs,
+             "headroom": limit - r.max_cost, "cut": r.cuts} for function, r in roots.items()]
+    return sorted(rows, key=lambda r: -r["max_cost"])
 
 
 def _source(sources: dict, path: str, line: int) -> str:
     lines = sources.get(path) or []
     return lines[line - 1].strip() if 0 < line <= len(lines) else ""
-
-
-def _totals_from_stacks(stacks: dict, root_calls: Counter) -> dict[str, int]:
-    """Inclusive cost as the VM counts it (emulator.profile.data): every charge counts once for
-    each distinct function on its stack, except a root's own call, which is on no line."""
-    totals: Counter = Counter()
-    for stack, count in stacks.items():
-        for function in set(stack):
-            totals[function] += count
-    totals.subtract(root_calls)
-    return {f: c for f, c in totals.items() if c}
 
 
 def _vm_ops() -> dict[int, str]:
@@ -195,55 +146,23 @@ def _vm_ops() -> dict[int, str]:
             if name.startswith("OP_") and isinstance(value, int)}
 
 
-def _vm_instructions(backend) -> dict[tuple[str, int], list[dict]]:
-    """Per source line, the cost charged at each VM instruction (an execute stage, the final
-    command, a call), in code order."""
-    import numpy as np
-
-    rows = backend.program.rows
-    names = _vm_ops()
-    out: dict[tuple[str, int], list[dict]] = defaultdict(list)
-    for pc in np.flatnonzero(backend.counts):
-        loc = backend.program.locs[pc]
-        if loc is not None:
-            out[(loc.path, loc.line)].append({"op": names.get(rows[pc][0], str(rows[pc][0])),
-                                              "count": int(backend.counts[pc])})
-    return dict(out)
-
-
-def _vm_calls(backend, roots: RootLog) -> dict[str, int]:
-    """Calls per function: the cost at each ``function`` instruction (1 per call) plus root runs."""
-    import numpy as np
-
-    from emulator.vm import loop as vm
-    from emulator.profile.data import base_function
-
-    rows = backend.program.rows
-    calls: Counter = Counter(function for function, cost, _ in roots.runs if cost)
-    for pc in np.flatnonzero(backend.counts):
-        if rows[pc][0] == vm.OP_CALL:
-            calls[base_function(backend.program.functions[rows[pc][1]])] += int(backend.counts[pc])
-    return dict(calls)
+def _vm_instructions(counts: list[tuple[int, int]], names: dict[int, str]) -> list[dict]:
+    """The cost charged at each VM instruction of a line (an execute stage, the final command, a
+    call), in code order."""
+    return [{"op": names.get(op, str(op)), "count": count} for op, count in counts]
 
 
 # what each host opcode hands to Python, as the profile names it
 HOST_KINDS = {"host": "command", "hoststage": "stage", "hoststore": "store"}
 
 
-def _vm_host(backend, sources: dict) -> list[dict]:
-    """The host ops Python ran after the load (final commands, execute stages, stores) with how
-    often each ran, macro instances of a line counted together. Read from the backend's record of
-    the ops it served, not from the VM's charged counts: a store is never charged, so the counts
-    would hide a host-run store."""
-    from emulator.profile.data import base_function
-
-    code = backend.program.rows
-    names = _vm_ops()
-    runs: Counter = Counter()
-    for pc, count in backend.host_runs.items():
-        host_op = backend.program.host_ops[code[pc][1]]
-        loc = host_op.node.loc
-        runs[(base_function(host_op.function), loc.path, loc.line, HOST_KINDS[names[code[pc][0]]])] += count
-    rows = [{"function": function, "path": path, "line": line, "op": op, "command": _source(sources, path, line),
-             "count": count} for (function, path, line, op), count in runs.items()]
+def _vm_host(runs: dict, loaded: dict, sources: dict, names: dict[int, str]) -> list[dict]:
+    """The host ops Python ran after ``loaded`` (final commands, execute stages, stores) with how
+    often each ran. Read from the backend's record of the ops it served, not from the VM's charged
+    counts: a store is never charged, so the counts would hide a host-run store."""
+    after = Counter(runs)
+    after.subtract(loaded)
+    rows = [{"function": function, "path": path, "line": line, "op": HOST_KINDS[names[op]],
+             "command": _source(sources, path, line), "count": count}
+            for (function, path, line, op), count in after.items() if count > 0]
     return sorted(rows, key=lambda r: (-r["count"], r["path"], r["line"]))

@@ -87,8 +87,7 @@ def _value(emu: Emulator, w: Watch):
 
 def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float, load_commands: int) -> dict:
     per_tick = emu.commands_per_tick
-    limit = emu.state.gamerules.max_command_chain_length
-    outside = emu.runtime.commands_outside_ticks
+    outside = emu.commands_outside_ticks
     return {
         "ticks": emu.ticks,
         "commands": sum(per_tick) + outside,
@@ -98,7 +97,7 @@ def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float
         "commands_per_tick_mean": (sum(per_tick) / len(per_tick)) if per_tick else 0.0,
         "commands_per_tick_max": max(per_tick, default=0),
         "max_root_cost": emu.max_root_cost,
-        "quota_headroom": limit - emu.max_root_cost,
+        "quota_headroom": emu.quota - emu.max_root_cost,
         "wall_time_s": round(wall, 6),
         "watch": {w.label: emu.score(w.holder, w.objective) for w in watches},
         "until_met": stop.met(emu) if stop else None,

@@ -13,7 +13,7 @@ from mcfunction_parser.arguments import vec3
 from mcfunction_parser.reader import ParseError, Reader
 
 from .entities import world_source
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 
 
 def block_argument(text: str) -> BlockSpec:

@@ -10,7 +10,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.pack.tags import normalise_id
 
 from . import entities
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 
 
 def bossbar(env, cmd: ast.Bossbar, ctx) -> int:

@@ -12,7 +12,7 @@ from __future__ import annotations
 from mcfunction_parser import ast
 
 from . import blocks, data, entities
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from .holders import objective, single_holder
 
 _COMPARE = {

@@ -25,7 +25,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound
 
 from . import entities
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 
 
 class DataAccessor(ABC):

@@ -1,5 +1,5 @@
 """The final command of a chain, run once for one context: :func:`run_command` returns its int
-result or raises :class:`~emulator.commands.failure.CommandFailure`.
+result or raises :class:`~emulator.world.errors.CommandFailure`.
 
 ``function`` and ``return`` are control flow (each backend queues their work itself). A command
 the emulator does not model (``particle``, ``playsound`` ...) succeeds with result 1 and no

@@ -37,7 +37,7 @@ from mcfunction_parser.arguments import holder_from_word
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.reader import ParseError, Reader
 
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 
 # The stages that make one context per entity from the entity alone, by the VM's kind number
 # (OP_ASSTAGE's operand): as, at, positioned as, rotated as

@@ -11,7 +11,7 @@ from __future__ import annotations
 from mcfunction_parser import ast
 
 from . import entities
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 
 
 def holder_names(env, holder, ctx) -> list[str]:

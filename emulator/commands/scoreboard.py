@@ -13,7 +13,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.arguments import score_holder
 from mcfunction_parser.reader import ParseError, Reader
 
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from .holders import holder_names, objective, single_holder, writable_objective
 
 

@@ -14,7 +14,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.pack.tags import normalise_id  # ResourceLocation.toString (the MD5 seed hashes it)
 
 from . import entities
-from .failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from .holders import objective
 
 DAY_TICKS = 24000

@@ -1,22 +1,67 @@
-"""Folding execution counters into a profile: per source line, per function (self and total),
-per tick.
+"""A run's profile: exact command counts per tick, root, function, source line, VM instruction and
+host op, and the call stacks, read from the runtime's root listeners and what the backend counts
+(:mod:`emulator.runtime.backend`: ``line_counts``, :class:`InstructionCounts`, :class:`CallRecording`).
 
 ``self`` of a function is the cost charged by its own commands (a ``function`` call's own charge
 belongs to the calling line; a root's own call is on no line); ``total`` adds its callees,
-counted once per outermost activation (numba backend only). Macro instances (``ns:f#3``) fold into their function.
+counted once per outermost activation (the numba backend counts it, the python backend when it
+records call stacks). Macro instances (``ns:f#3``) fold into their function.
 """
 from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
 
+from emulator.profile.stacks import CallStacks
+from emulator.runtime.backend import InstructionCounts, RootResult
+from emulator.runtime.server import Runtime
+
+
+@dataclass
+class RootRuns:
+    """One function's runs as a root sequence."""
+
+    runs: int = 0
+    called: int = 0  # runs that made the root's own call (charged 1, on no line)
+    cost: int = 0
+    max_cost: int = 0
+    cuts: int = 0
+
+
+class RootStats:
+    """A root listener (:attr:`emulator.runtime.server.Runtime.root_listeners`): the runs per function."""
+
+    def __init__(self) -> None:
+        self.by_function: dict[str, RootRuns] = {}
+
+    def __call__(self, function_id: str, result: RootResult) -> None:
+        runs = self.by_function.setdefault(function_id, RootRuns())
+        runs.runs += 1
+        runs.called += result.cost > 0
+        runs.cost += result.cost
+        runs.max_cost = max(runs.max_cost, result.cost)
+        runs.cuts += result.cut
+
+    def calls(self) -> Counter:
+        return Counter({f: r.called for f, r in self.by_function.items() if r.called})
+
 
 @dataclass
 class Profile:
     lines: dict[tuple[str, int], int] = field(default_factory=dict)  # (path, line) -> commands
     functions_self: dict[str, int] = field(default_factory=dict)
-    functions_total: dict[str, int] = field(default_factory=dict)
+    functions_total: dict[str, int] = field(default_factory=dict)  # {} when not counted
     ticks: list[int] = field(default_factory=list)  # commands per tick
+    backend: str = ""
+    limit: int = 0  # each root's quota (maxCommandChainLength)
+    outside_ticks: int = 0  # commands run between ticks (the load when started, calls)
+    roots: dict[str, RootRuns] = field(default_factory=dict)
+    calls: dict[str, int] = field(default_factory=dict)  # calls per function, roots included; {} when not counted
+    # (path, line) -> (opcode, commands) per VM instruction there, in code order
+    instructions: dict[tuple[str, int], list[tuple[int, int]]] = field(default_factory=dict)
+    # (function, path, line, opcode) -> runs of each host op; None when the backend runs every command in Python
+    host: dict[tuple[str, str, int, int], int] | None = None
+    stacks: dict[tuple[str, ...], int] | None = None  # commands per call stack (root first), when recorded
 
     def top_lines(self, n: int = 20) -> list[tuple[tuple[str, int], int]]:
         return sorted(self.lines.items(), key=lambda kv: -kv[1])[:n]
@@ -36,14 +81,53 @@ def base_function(function_id: str) -> str:
     return function_id.split("#", 1)[0]
 
 
-def fold(line_counts: dict[tuple[str, int], int], function_paths: dict[str, str],
-         totals: dict[str, int] | None = None, ticks: list[int] | None = None) -> Profile:
-    """Build a :class:`Profile` from per-line counts; ``function_paths`` maps a source path to its
-    function id, ``totals`` (function -> inclusive cost) when the backend tracks them."""
-    functions_self: Counter = Counter()
-    for (path, _line), count in line_counts.items():
-        functions_self[function_paths.get(path, path)] += count
-    folded_totals: Counter = Counter()
-    for function, cost in (totals or {}).items():
-        folded_totals[base_function(function)] += cost
-    return Profile(dict(line_counts), dict(functions_self), dict(folded_totals), list(ticks or []))
+class Profiler:
+    """The profile of everything ``runtime`` runs from now on: it listens to the roots and reads
+    the backend's counters; ``stacks`` is the recorder the backend reports its calls to (if any)."""
+
+    def __init__(self, runtime: Runtime, stacks: CallStacks | None = None) -> None:
+        self.runtime = runtime
+        self.stacks = stacks
+        self.roots = RootStats()
+        runtime.root_listeners.append(self.roots)
+
+    def profile(self) -> Profile:
+        runtime, backend, roots = self.runtime, self.runtime.backend, self.roots
+        lines = backend.line_counts()
+        profile = Profile(lines, _self_costs(lines, runtime.packs), ticks=list(runtime.commands_per_tick),
+                          backend=backend.name, limit=runtime.state.gamerules.max_command_chain_length,
+                          outside_ticks=runtime.commands_outside_ticks, roots=dict(roots.by_function))
+        if isinstance(backend, InstructionCounts):
+            profile.functions_total = _folded(backend.function_totals())
+            profile.calls = dict(_folded(backend.call_counts()) + roots.calls())
+            profile.instructions = backend.instruction_counts()
+            profile.host = _host_runs(backend)
+        elif self.stacks is not None:
+            profile.functions_total = self.stacks.totals(roots.calls())
+            profile.calls = dict(self.stacks.calls + roots.calls())
+            profile.stacks = dict(self.stacks.stacks)
+        return profile
+
+
+def _self_costs(lines: dict[tuple[str, int], int], packs) -> dict[str, int]:
+    function_of = {f.path: fid for fid, f in packs.functions.items()}
+    costs: Counter = Counter()
+    for (path, _line), count in lines.items():
+        costs[function_of.get(path, path)] += count
+    return dict(costs)
+
+
+def _folded(counts: dict[str, int]) -> Counter:
+    out: Counter = Counter()
+    for function, count in counts.items():
+        out[base_function(function)] += count
+    return out
+
+
+def _host_runs(backend: InstructionCounts) -> dict[tuple[str, str, int, int], int]:
+    """Runs per host op, the instances of a macro line counted together."""
+    out: Counter = Counter()
+    for run in backend.host_ops_run():
+        loc = run.node.loc
+        out[(base_function(run.function), loc.path, loc.line, run.opcode)] += run.runs
+    return dict(out)

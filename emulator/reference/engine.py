@@ -17,7 +17,7 @@ from __future__ import annotations
 from collections import Counter
 
 from emulator.commands.data import macro_arguments
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.commands.server import require_function
 from emulator.runtime.backend import RootResult, report_quota_cut
 from emulator.runtime.macros import MacroExpander

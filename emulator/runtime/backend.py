@@ -1,9 +1,18 @@
 """The backend protocol: what the runtime needs from an executor of compiled or parsed functions.
 
 Two backends implement it: the numba VM (:class:`emulator.vm.backend.NumbaBackend`, driving
-:mod:`emulator.vm.loop`) and the plain-Python reference (:mod:`emulator.reference`). The runtime
+:mod:`emulator.vm.loop`) and the plain-Python reference (:mod:`emulator.reference`);
+:func:`emulator.runtime.factory.make_backend` makes either by name. The runtime
 (:mod:`emulator.runtime.server`) owns the tick loop and the schedule queue's timing; it asks the backend
 to run one *root sequence* at a time. Both act on the same :class:`~emulator.world.state.WorldState`.
+
+Beyond the protocol, a backend may offer what the profiler (:mod:`emulator.profile`) reads:
+
+- :class:`CallRecording`: ``record_calls(recorder, tracer)`` reports every call and every quota
+  unit with its call stack to a :class:`CallRecorder`, and each command to a :class:`Tracer` (the
+  game's ``/debug function`` events). The reference backend records them.
+- :class:`InstructionCounts`: cost per instruction and function, calls, and the host ops Python
+  ran for the VM. The numba backend counts them.
 
 Command cost — THE rule (both backends must count identically)
 ==============================================================
@@ -50,11 +59,14 @@ diagnostic read the same in both backends.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Protocol
+from typing import TYPE_CHECKING, NamedTuple, Protocol, runtime_checkable
 
-from emulator.world.state import Context, Frame, WorldState
+from emulator.world.context import Context
+from emulator.world.records import Frame
+from emulator.world.state import WorldState
 
 if TYPE_CHECKING:
+    from mcfunction_parser import ast
     from mcfunction_parser.nbt import Compound
 
 
@@ -97,6 +109,67 @@ class Backend(Protocol):
         """Cost charged so far per ``(source path, line)``, cumulative over the run: the sum over
         all lines equals the total cost minus the roots' own CallFunction charges (a root call is
         on no line). May be ``{}`` if not tracked."""
+
+
+# ---------------------------------------------------------------------- what the profiler reads
+class CallRecorder(Protocol):
+    """Told of each function call a command makes and of each quota unit, as it is charged."""
+
+    def call(self, function_id: str) -> None:
+        """A command (``function``, ``execute if function``) called ``function_id``; a root's own
+        call is not one (the runtime's root listeners see the roots)."""
+
+    def charge(self, stack: tuple[str, ...]) -> None:
+        """One quota unit, charged in ``stack`` (the functions from the root to the one whose
+        command was charged; a root's own call is charged as ``(root,)``)."""
+
+
+class Tracer(Protocol):
+    """The game's ``/debug function`` events (DebugCommand.Tracer); ``depth`` is the call depth."""
+
+    def root(self, function_id: str) -> None: ...
+
+    def call(self, depth: int, function_id: str, size: int) -> None: ...
+
+    def command(self, depth: int, text: str) -> None: ...
+
+    def result(self, depth: int, text: str, value: int) -> None: ...
+
+    def error(self, message: str) -> None: ...
+
+
+@runtime_checkable
+class CallRecording(Protocol):
+    def record_calls(self, recorder: CallRecorder, tracer: Tracer | None = None) -> None:
+        """Report to ``recorder`` (and each command to ``tracer``) from the next :meth:`Backend.load` on."""
+
+
+class HostRun(NamedTuple):
+    """A host op Python ran for the VM: the function (a macro instance's own id), the node, the
+    opcode that handed it over (a final command, an execute stage or a store) and the runs."""
+
+    function: str
+    node: "ast.Command | ast.Subcommand"
+    opcode: int
+    runs: int
+
+
+@runtime_checkable
+class InstructionCounts(Protocol):
+    """What a bytecode backend counts, cumulative since load (function ids are the compiled
+    ones: a macro instance is ``ns:f#N``)."""
+
+    def function_totals(self) -> dict[str, int]:
+        """Inclusive cost per function (callees included, outermost activations only)."""
+
+    def call_counts(self) -> dict[str, int]:
+        """Calls per function made by commands (roots not included)."""
+
+    def instruction_counts(self) -> dict[tuple[str, int], list[tuple[int, int]]]:
+        """Per ``(source path, line)``, ``(opcode, cost charged)`` of each instruction there, in code order."""
+
+    def host_ops_run(self) -> list[HostRun]:
+        """Every host op Python ran, in code order."""
 
 
 def quota_cut_message(limit: int) -> str:

@@ -13,7 +13,7 @@ from emulator.world.semantics import double_to_float
 from mcfunction_parser import ast, nbt
 from mcfunction_parser.parse import parse_command
 
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.errors import MESSAGES
 
 

@@ -1,24 +1,39 @@
-"""The tick loop: which root sequences run when, and what each tick cost.
+"""The server: which root sequences run when, what each tick cost, and who is told of each root.
 
-Each server tick (ServerFunctionManager.tick, then ServerLevel.tickTime):
-1. on the first tick after loading, every ``#minecraft:load`` member, each its own root;
+The world loads (:meth:`Runtime.start`): every ``#minecraft:load`` member runs once, each its own
+root, before any tick. Each server tick (ServerFunctionManager.tick, then ServerLevel.tickTime):
+1. on the first tick after loading, every ``#minecraft:load`` member (unless :meth:`Runtime.start`
+   ran them), each its own root;
 2. every ``#minecraft:tick`` member in order, each its own root;
 3. the game time advances by one, then every scheduled event due at the new time runs, by due
    time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
    run as the server at world spawn;
-4. the day time advances by one when ``doDaylightCycle`` is on.
+4. the day time advances by one when ``doDaylightCycle`` is on;
+5. every player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`).
+
+Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs, with its result.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from emulator.runtime.backend import Backend, RootResult
-from emulator.world.state import Context, WorldState
+from emulator.world import statistics
+from emulator.world.context import Context
+from emulator.world.state import WorldState
 
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"
 
+# told of each root sequence run: (function id, its result)
+RootListener = Callable[[str, RootResult], None]
+
 
 class Runtime:
-    def __init__(self, backend: Backend, packs, state: WorldState) -> None:
+    """``packs`` running on ``backend`` against ``state`` (the backend is loaded here)."""
+
+    def __init__(self, backend: Backend, packs, state: WorldState, sanitize: bool = False) -> None:
+        backend.load(packs, state, sanitize)
         self.backend = backend
         self.packs = packs
         self.state = state
@@ -26,6 +41,7 @@ class Runtime:
         self.commands_per_tick: list[int] = []
         self.commands_outside_ticks = 0  # API calls made between ticks
         self.max_root_cost = 0  # the costliest root so far (quota headroom = limit - this)
+        self.root_listeners: list[RootListener] = []
 
     def members(self, tag: str) -> list[str]:
         return self.packs.resolve_tag(tag) if tag in self.packs.tags else []
@@ -33,6 +49,8 @@ class Runtime:
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
         result = self.backend.run_root(function_id, context, arguments)
         self.max_root_cost = max(self.max_root_cost, result.cost)
+        for listener in self.root_listeners:
+            listener(function_id, result)
         return result
 
     def call(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
@@ -40,6 +58,15 @@ class Runtime:
         result = self.run_root(function_id, context, arguments)
         self.commands_outside_ticks += result.cost
         return result
+
+    def start(self) -> int:
+        """The world loads: run the ``#minecraft:load`` members now, outside the ticks (the first
+        tick then runs only ``#minecraft:tick`` and the schedule). Returns their cost (0 when the
+        load functions already ran)."""
+        if self.loaded:
+            return 0
+        self.loaded = True
+        return sum(self.call(f).cost for f in self.members(LOAD_TAG))
 
     def tick(self) -> int:
         """Run one server tick; returns its cost (commands executed)."""
@@ -58,6 +85,7 @@ class Runtime:
         # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)
         if state.gamerules.get("doDaylightCycle") == "true":
             state.daytime += 1
+        statistics.tick_players(state)
         self.commands_per_tick.append(cost)
         state.tick += 1
         return cost

@@ -12,8 +12,8 @@ from __future__ import annotations
 import re
 
 from emulator.commands import entities as world_entities
-from emulator.commands.failure import CommandFailure
-from emulator.world.state import Context
+from emulator.world.errors import CommandFailure
+from emulator.world.context import Context
 from emulator.testing.testfile import ChatCheck
 from emulator.world.text import plain_text
 

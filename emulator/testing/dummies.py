@@ -40,11 +40,11 @@ import uuid as uuid_lib
 from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
-from emulator.world.state import Context
+from emulator.world.context import Context
 from emulator.world import statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word, vec3
 from mcfunction_parser.diagnostics import Loc

@@ -14,8 +14,8 @@ from emulator.commands import entities as world_entities
 from emulator.api import Emulator
 from emulator.commands import stages
 from emulator.commands.env import Env
-from emulator.commands.failure import CommandFailure
-from emulator.world.state import Context
+from emulator.world.errors import CommandFailure
+from emulator.world.context import Context
 from emulator.testing import chat, environments
 from emulator.testing.discovery import TestFile, selected
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported

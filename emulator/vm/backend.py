@@ -2,7 +2,7 @@
 
 :meth:`NumbaBackend.run_root` starts the VM at the root stub and resumes it after each request
 (host command, macro instantiation, frame stack growth, runtime error, full overflow buffer).
-Implements :class:`emulator.runtime.backend.Backend`.
+Implements :class:`emulator.runtime.backend.Backend` and its :class:`~emulator.runtime.backend.InstructionCounts`.
 """
 from __future__ import annotations
 
@@ -12,16 +12,18 @@ import numpy as np
 
 from emulator.vm import loop as vm
 from emulator.commands import entities as world_entities
-from emulator.runtime.backend import RootResult, report_quota_cut
+from emulator.runtime.backend import HostRun, RootResult, report_quota_cut
 from emulator.vm.compiler import Compiler
 from emulator.vm.entity_arrays import EntityMirror
 from emulator.vm.host import Host, StoreTarget, resolves_target
 from emulator.vm.program import Program
 from emulator.commands.data import macro_arguments
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
-from emulator.world.state import Context, Frame, Overflow, WorldState
+from emulator.world.context import Context
+from emulator.world.records import Frame, Overflow
+from emulator.world.state import WorldState
 from emulator.world.errors import MESSAGES
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
@@ -436,23 +438,47 @@ class NumbaBackend:
     def _report_here(self, message: str, severity: str) -> None:
         self.state.error(message, self.traceback(self._current_pc), severity)
 
-    def host_ops_run(self) -> list[tuple[str, ast.Command | ast.Subcommand, int]]:
-        """``(function, node, runs)`` of every host op Python ran since load (or since
-        ``host_runs.clear()``): what the VM could not do itself."""
-        return [(self.program.host_ops[self.program.rows[pc][1]].function,
-                 self.program.host_ops[self.program.rows[pc][1]].node, n) for pc, n in sorted(self.host_runs.items())]
+    def host_ops_run(self) -> list[HostRun]:
+        """Every host op Python ran since load (or since ``host_runs.clear()``), in code order:
+        what the VM could not do itself."""
+        rows, host_ops = self.program.rows, self.program.host_ops
+        return [HostRun(host_ops[rows[pc][1]].function, host_ops[rows[pc][1]].node, rows[pc][0], n)
+                for pc, n in sorted(self.host_runs.items())]
 
     def function_totals(self) -> dict[str, int]:
         """Inclusive cost per function (callees included, outermost activations only)."""
         return {self.program.functions[i]: int(c) for i, c in enumerate(self.totals) if c}
 
+    def call_counts(self) -> dict[str, int]:
+        """Calls per function made by commands: the cost charged at each call instruction (1 per call)."""
+        rows = self.program.rows
+        out: Counter = Counter()
+        for pc in self._charged():
+            if rows[pc][0] == vm.OP_CALL:
+                out[self.program.functions[rows[pc][1]]] += int(self.counts[pc])
+        return dict(out)
+
+    def instruction_counts(self) -> dict[tuple[str, int], list[tuple[int, int]]]:
+        """Per source line, ``(opcode, cost)`` of each instruction there that was charged (an
+        execute stage, the final command, a call), in code order."""
+        out: dict[tuple[str, int], list[tuple[int, int]]] = {}
+        for pc in self._charged():
+            loc = self.program.locs[pc]
+            if loc is not None:
+                out.setdefault((loc.path, loc.line), []).append((self.program.rows[pc][0], int(self.counts[pc])))
+        return out
+
     def line_counts(self) -> dict[tuple[str, int], int]:
         out: Counter = Counter()
-        for pc in np.flatnonzero(self.counts):
+        for pc in self._charged():
             loc = self.program.locs[pc]
             if loc is not None:
                 out[(loc.path, loc.line)] += int(self.counts[pc])
         return dict(out)
+
+    def _charged(self) -> list[int]:
+        """The pcs of the instructions charged so far, in code order."""
+        return np.flatnonzero(self.counts).tolist()
 
 
 def _grown(rows: np.ndarray) -> np.ndarray:

@@ -11,7 +11,7 @@ The VM stops at a host op and the numba backend calls one of (the VM has charged
   score holders, an entity, a block, a bossbar): the target, resolved now, as ExecuteCommand does;
 - :meth:`Host.run_store`: a ``store`` into storage, or into the target its stage resolved.
 
-A :class:`~emulator.commands.failure.CommandFailure` fails the command (or the stage) and the run
+A :class:`~emulator.world.errors.CommandFailure` fails the command (or the stage) and the run
 goes on; a reported one is a diagnostic at the current instruction.
 """
 from __future__ import annotations
@@ -22,7 +22,7 @@ from typing import Callable
 from emulator.commands import stages, stores
 from emulator.commands.dispatch import run_command
 from emulator.commands.env import Env
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.semantics import wrap32
 from emulator.world.state import Context, WorldState
 from mcfunction_parser import ast

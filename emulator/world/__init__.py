@@ -1,6 +1,9 @@
 """The world library: what datapack commands act on (the world's state) and the game's rules for
 it, in pure Python over plain values. The commands that run on it are :mod:`emulator.commands`.
 Modules:
+- ``state``: the ``WorldState`` a run changes (scoreboard, schedule, gamerules, log ...);
+  ``context``: who runs a command and where; ``records``: log lines, runtime diagnostics and
+  overflow reports.
 - ``errors``: the message texts of command failures (the game's, by translation key).
 - ``nbt_ops``: NBT paths, ``data get/merge/modify/remove``, partial NBT matching.
 - ``storage``: command storage (``data ... storage``) with the game's accessor semantics.

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from mcfunction_parser.pack.tags import normalise_id
 
 

@@ -42,7 +42,7 @@ import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, rotation
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.text import plain_text
 from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 

@@ -3,7 +3,8 @@
 ``MESSAGES`` holds the game's en_us texts for the translation keys the emulator raises (the game's
 ``CommandSyntaxException`` messages); ``EMULATOR_MESSAGES`` the emulator's own, keyed ``dpemu.*``,
 for what the game has no message for (a limit of the emulator, a command it cannot read).
-:class:`emulator.commands.failure.CommandFailure` is built from a key of either table.
+:class:`CommandFailure`, the one failure of a command on both backends (the game's
+``CommandSyntaxException``), is built from a key of either table.
 """
 from __future__ import annotations
 
@@ -88,3 +89,21 @@ EMULATOR_MESSAGES = {
     "dpemu.gamerule.unknown": "Unknown game rule '{0}'",
     "dpemu.macro.not_compound": "Expected argument to be a compound, got {0}",
 }
+
+
+class CommandFailure(Exception):
+    """The one failure of a command: the message of ``key`` (a key of :data:`MESSAGES`, or the
+    emulator's own ``dpemu.*`` of :data:`EMULATOR_MESSAGES`) filled with ``args``.
+
+    A failing command fails (result 0, ``store success`` 0) and the run goes on. ``report``: also
+    record a runtime diagnostic at the command (with the function traceback). Failures that
+    datapacks rely on routinely (a test that fails, ``objectives add`` of an existing objective,
+    ``get`` of an unset score) are silent, as in the game; failures that point at a pack bug
+    (division by zero, an unknown objective or function) or at a limit of the emulator (an
+    unsupported stage) are reported."""
+
+    def __init__(self, key: str, *args, report: bool = False) -> None:
+        self.key = key
+        self.message = (MESSAGES.get(key) or EMULATOR_MESSAGES[key]).format(*args)
+        self.report = report
+        super().__init__(self.message)

@@ -3,7 +3,7 @@
 Tags are the parser's NBT classes (``Compound`` dict, ``List`` list, ``Int``, ``Float`` ...).
 Operations mutate the root compound in place, like the game's storage accessor does; a caller
 that must not see partial changes on failure (the entity accessor) passes a copy and keeps it only
-on success. Failures raise :class:`emulator.commands.failure.CommandFailure` with the game's message.
+on success. Failures raise :class:`emulator.world.errors.CommandFailure` with the game's message.
 
 Public functions
 - ``tags_equal(a, b)``: ``Tag.equals`` (type-strict: ``1b`` differs from ``1``; float ``==``).
@@ -55,7 +55,7 @@ from mcfunction_parser.nbt import (
 )
 from emulator.world.semantics import double_to_long, mth_floor
 from emulator.world import mth
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.text import tag_as_string
 
 MAX_DEPTH = 512

@@ -16,7 +16,7 @@ leads, which the emulator does not model: they find nothing.
 from __future__ import annotations
 
 from emulator.world.entities import Entity, EntityStore
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from mcfunction_parser.nbt import Compound, IntArray, List, String
 from mcfunction_parser.pack.tags import normalise_id
 

@@ -33,7 +33,7 @@ from typing import Callable
 from mcfunction_parser import ast
 from emulator.world import mth
 from emulator.world.entities import ENTITY_TYPE_TAGS, Entity, EntityStore, entity_nbt
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.nbt_ops import compare_nbt
 from emulator.world.source import Source
 

@@ -1,8 +1,9 @@
 """The world state that both backends (numba VM and Python reference) act on.
 
 One :class:`WorldState` holds everything a run changes: the scoreboard, the schedule queue,
-gamerules, gametime, the log, runtime diagnostics, overflow reports and NBT storage.
-Backends mutate it in place; the runtime (:mod:`emulator.runtime.server`) owns the tick loop.
+gamerules, gametime, the log, runtime diagnostics, overflow reports (:mod:`emulator.world.records`)
+and NBT storage. Backends mutate it in place; the runtime (:mod:`emulator.runtime.server`) owns the
+tick loop. Commands run in a :class:`~emulator.world.context.Context`.
 
 Scoreboard layout (what the VM reads directly)
 - Holders and objectives are interned: a name gets a dense id once and keeps it for the run.
@@ -33,9 +34,13 @@ import numpy as np
 
 from emulator.world.blocks import BlockMap
 from emulator.world.bossbars import BossBars
+# re-exported for the modules that still import them from here (the reference backend, the VM's
+# host, emulator/commands/entities.py)
+from emulator.world.context import SERVER, Context  # noqa: F401
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
 from emulator.world.random_sequences import RandomSequences
+from emulator.world.records import Frame, LogEntry, Overflow, RuntimeDiagnostic
 from mcfunction_parser.diagnostics import Loc
 
 # Criteria whose scores only the game sets (ObjectiveCriteria with readOnly=true).
@@ -232,27 +237,6 @@ def _grow(capacity: int, needed: int) -> int:
     return capacity
 
 
-# ---------------------------------------------------------------------- execution context
-SERVER = -1  # executor index of the server (no entity)
-
-
-@dataclass(slots=True)
-class Context:
-    """One command source: who runs it and where.
-
-    ``executor`` is ``SERVER`` (-1) or the executing entity's ``Entity.order`` (looked up in
-    ``WorldState.executors``). ``pos`` is (x, y, z) doubles, ``rot`` (yaw, pitch) floats,
-    ``anchor`` ``"feet"``/``"eyes"``.
-    The server's default context is at world spawn (0, 0, 0 here) in the overworld.
-    """
-
-    executor: int = SERVER
-    pos: tuple[float, float, float] = (0.0, 0.0, 0.0)
-    rot: tuple[float, float] = (0.0, 0.0)
-    anchor: str = "feet"
-    dimension: str = "minecraft:overworld"
-
-
 # ---------------------------------------------------------------------- schedule queue
 @dataclass(frozen=True, slots=True)
 class ScheduledEntry:
@@ -371,78 +355,6 @@ class Gamerules:
     @property
     def max_command_fork_count(self) -> int:
         return self.get_int("maxCommandForkCount")
-
-
-# ---------------------------------------------------------------------- log, diagnostics, overflow
-@dataclass(frozen=True, slots=True)
-class LogEntry:
-    """One line of output: ``kind`` is ``"say"``, ``"tellraw"``, ``"chat"`` (a system message such
-    as ``random roll``'s), ``"info"`` (e.g. the quota cut
-    message "Command execution stopped due to limit") or ``"error"`` (a failed command's message)."""
-
-    tick: int
-    kind: str
-    text: str
-    loc: Loc | None = None
-    receivers: tuple[str, ...] = ()  # UUIDs (Java strings) of the players the message was sent to
-
-    def to_json(self) -> dict:
-        return {"tick": self.tick, "kind": self.kind, "text": self.text, "where": str(self.loc) if self.loc else None}
-
-
-@dataclass(frozen=True, slots=True)
-class Frame:
-    """One function on the call stack at the time of a runtime error; ``loc`` is the command
-    being run in it (for the innermost frame: the failing command)."""
-
-    function: str
-    loc: Loc
-
-
-@dataclass(frozen=True, slots=True)
-class RuntimeDiagnostic:
-    """A run-time problem (unknown function, stack overflow, quota cut, missing macro key,
-    division by zero ...). ``frames`` go from the root (outermost) to the failing command."""
-
-    tick: int
-    message: str
-    frames: tuple[Frame, ...] = ()
-    severity: str = "error"
-
-    def format(self) -> str:
-        where = str(self.frames[-1].loc) if self.frames else "<run>"
-        lines = [f"{where}: {self.severity}: {self.message} (tick {self.tick})"]
-        lines += [f"    in {f.function} at {f.loc}" for f in reversed(self.frames)]
-        return "\n".join(lines)
-
-    def to_json(self) -> dict:
-        return {
-            "tick": self.tick,
-            "severity": self.severity,
-            "message": self.message,
-            "traceback": [{"function": f.function, "where": str(f.loc)} for f in self.frames],
-        }
-
-
-@dataclass(frozen=True, slots=True)
-class Overflow:
-    """An arithmetic result that wrapped int32 (sanitizer): ``exact`` is the unwrapped value,
-    ``stored`` what the game stores. ``op`` is ``+= -= *= add remove`` ..."""
-
-    tick: int
-    function: str
-    loc: Loc
-    op: str
-    a: int
-    b: int
-    exact: int
-    stored: int
-
-    def to_json(self) -> dict:
-        return {
-            "tick": self.tick, "function": self.function, "where": str(self.loc), "op": self.op,
-            "a": self.a, "b": self.b, "exact": self.exact, "stored": self.stored,
-        }
 
 
 # ---------------------------------------------------------------------- the world

@@ -28,7 +28,7 @@ from emulator.world.semantics import (
     mth_floor,
 )
 from emulator.world import mth, nbt_ops
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 
 _CASTS = {
     "byte": lambda v: Byte(double_to_byte(v)),

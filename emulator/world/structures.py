@@ -20,7 +20,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from emulator.world.blocks import BlockSpec
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.nbt_binary import NbtFormatError, read_nbt
 from mcfunction_parser.nbt import Compound, Double, Int, List, String
 from mcfunction_parser.pack.versions import uses_singular_folders

@@ -29,7 +29,7 @@ import numpy as np
 from mcfunction_parser import ast
 from emulator.world import rotation
 from emulator.world.entities import in_spawnable_bounds
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.source import Source
 
 

@@ -24,7 +24,7 @@ from typing import Callable
 from emulator.world.state import WorldState
 from emulator.world import nbt_ops
 from emulator.world.entities import Entity, entity_nbt
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.text import tag_as_string
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc

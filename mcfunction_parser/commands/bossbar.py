@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 from .. import ast
-from ..arguments import resource_location, text_component
+from ..arguments import text_component
+from ..primitives import resource_location
 from ..reader import Reader
 from ..selectors import target
 

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 from .. import ast
-from ..arguments import resource_location, vec2, vec3
+from ..arguments import vec2, vec3
+from ..primitives import resource_location
 from ..reader import ParseError, Reader
 from ..selectors import target
 from ..snbt import compound

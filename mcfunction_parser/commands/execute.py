@@ -8,10 +8,10 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, float_range, int_range, json_span, objective,
-                         objective_too_long, plain_holder, resource_location, resource_or_tag, score_holder,
+from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, objective, objective_too_long, plain_holder, score_holder,
                          single_score_holder, vec2, vec3)
 from ..nbt_path import nbt_path
+from ..primitives import float_range, int_range, json_span, resource_location, resource_or_tag
 from ..reader import Reader, show
 from ..snbt import compound
 from ..selectors import target

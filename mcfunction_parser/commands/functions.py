@@ -2,8 +2,9 @@
 from __future__ import annotations
 
 from .. import ast
-from ..arguments import duration, resource_or_tag
+from ..arguments import duration
 from ..nbt_path import nbt_path
+from ..primitives import resource_or_tag
 from ..reader import Reader
 from ..snbt import compound
 from .data_targets import data_target

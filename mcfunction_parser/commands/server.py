@@ -4,8 +4,9 @@ from __future__ import annotations
 import re
 
 from .. import ast
-from ..arguments import duration, int_range, objective, resource_location
+from ..arguments import duration, objective
 from ..features import gamerule_type, version_text
+from ..primitives import int_range, resource_location
 from ..reader import Reader, show
 
 _RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")

@@ -316,21 +316,11 @@ class Outcome:
     gamerules: dict = None
 
 
-def make_backend(name: str):
-    """A fresh backend by name: ``python`` (the reference) or ``numba`` (the VM)."""
-    if name == "python":
-        from emulator.reference import ReferenceBackend
-
-        return ReferenceBackend()
-    from emulator.vm.backend import NumbaBackend
-
-    return NumbaBackend()
-
-
 def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, scores: dict | None = None,
              limit: int | None = None) -> Outcome:
     """Load ``pack`` and run ``entry`` as one root on a fresh world; ``scores`` seeds
     ``{(holder, objective): value}`` first; ``limit`` sets maxCommandChainLength."""
+    from emulator.runtime.factory import make_backend
     from emulator.world.state import WorldState
     from mcfunction_parser.pack.loader import load_packs
 

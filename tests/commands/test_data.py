@@ -9,7 +9,7 @@ from emulator.commands import conditions, stores
 from emulator.commands.dispatch import run_command
 from emulator.commands.entities import entity_context, new_state
 from emulator.commands.env import Env
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.blocks import parse_block
 from emulator.world.state import Context
 from mcfunction_parser.diagnostics import Loc

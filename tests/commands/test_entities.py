@@ -15,7 +15,7 @@ from dataclasses import replace
 from emulator.commands.dispatch import run_command
 from emulator.commands.entities import entity_context, new_state, parse_uuid, single
 from emulator.commands.env import Env
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world import rotation
 from emulator.world.state import Context
 

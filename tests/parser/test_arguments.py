@@ -2,7 +2,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from mcfunction_parser import arguments
+from mcfunction_parser import arguments, primitives
 from mcfunction_parser.ast import Coord
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.reader import ParseError, Reader
@@ -57,7 +57,7 @@ def test_int_range_cache_agrees_with_the_general_path(text, tail):
     def general():
         r = reader(text + tail)
         try:
-            lo, hi = arguments._range(r, True)
+            lo, hi = primitives._range(r, True)
             return (lo, hi), r.pos
         except ParseError as error:
             return error.message, error.pos
@@ -65,7 +65,7 @@ def test_int_range_cache_agrees_with_the_general_path(text, tail):
     def cached():
         r = reader(text + tail)
         try:
-            rng = arguments.int_range(r)
+            rng = primitives.int_range(r)
             return (rng.lo, rng.hi), r.pos
         except ParseError as error:
             return error.message, error.pos
@@ -85,13 +85,13 @@ def test_coordinates():
 
 @pytest.mark.parametrize("text,lo,hi", [("1..5", 1, 5), ("..0", None, 0), ("3", 3, 3), ("-5..", -5, None)])
 def test_int_ranges(text, lo, hi):
-    rng = arguments.int_range(reader(text))
+    rng = primitives.int_range(reader(text))
     assert (rng.lo, rng.hi) == (lo, hi)
 
 
 @pytest.mark.parametrize("text,lo,hi", [("1.5..", 1.5, None), ("..-.5", None, -0.5), ("0.1..2", 0.1, 2.0)])
 def test_float_ranges(text, lo, hi):
-    rng = arguments.float_range(reader(text))
+    rng = primitives.float_range(reader(text))
     assert (rng.lo, rng.hi) == (lo, hi)
 
 
@@ -99,30 +99,30 @@ def test_float_ranges(text, lo, hi):
                                           ("1.5", "invalid integer")])
 def test_range_errors(text, message):
     with pytest.raises(ParseError, match=message):
-        arguments.int_range(reader(text))
+        primitives.int_range(reader(text))
 
 
 @pytest.mark.parametrize("text,expected", [("foo", "minecraft:foo"), ("a:b/c", "a:b/c"), (":x", "minecraft:x"),
                                            ("a.b-c_d:e/f.g", "a.b-c_d:e/f.g")])
 def test_resource_locations(text, expected):
-    assert arguments.resource_location(reader(text)) == expected
+    assert primitives.resource_location(reader(text)) == expected
 
 
 @pytest.mark.parametrize("text,message", [("Foo", "invalid character 'F'"), ("a:b:c", "more than one"),
                                           ("a/b:c", "namespace"), ("a:", "empty path")])
 def test_resource_location_errors(text, message):
     with pytest.raises(ParseError, match=message):
-        arguments.resource_location(reader(text))
+        primitives.resource_location(reader(text))
 
 
 def test_json_spans():
     r = reader('{"a":"]}","b":[1,{"c":2}]} rest')
-    assert arguments.json_span(r) == '{"a":"]}","b":[1,{"c":2}]}' and r.pos == r.text.index(" rest")
-    assert arguments.json_span(reader('"a \\" b"')) == '"a \\" b"'
+    assert primitives.json_span(r) == '{"a":"]}","b":[1,{"c":2}]}' and r.pos == r.text.index(" rest")
+    assert primitives.json_span(reader('"a \\" b"')) == '"a \\" b"'
     with pytest.raises(ParseError, match="unbalanced"):
-        arguments.json_span(reader('{"a":[1}'))
+        primitives.json_span(reader('{"a":[1}'))
     with pytest.raises(ParseError, match="unclosed quoted"):
-        arguments.json_span(reader('{"a:1}'))
+        primitives.json_span(reader('{"a:1}'))
 
 
 def test_durations():

@@ -287,7 +287,8 @@ def test_context_modifiers_move_the_source(tmp_path):
     # align flooring, and the nether's coordinate scale of 8
     from emulator.commands.env import Env
     from emulator.commands.stages import stage
-    from emulator.world.state import Context, WorldState
+    from emulator.world.context import Context
+    from emulator.world.state import WorldState
     from mcfunction_parser.diagnostics import Loc
     from mcfunction_parser.parse import parse_command
 

@@ -71,3 +71,18 @@ def test_schedule_clear_and_scheduled_tag(tmp_path):
     emu = emulator_for(tmp_path, functions, tags={"minecraft:load": ["t:load"], "t:both": ["t:a", "t:b"]})
     emu.tick(2)
     assert (emu.score("#a", "o"), emu.score("#b", "o"), emu.score("#gone", "o")) == (1, 1, None)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_root_listeners_hear_every_root(tmp_path, backend):
+    functions = {"t:load": SETUP, "t:tick": "scoreboard players add #n o 1", "t:later": "return 3",
+                 "t:soon": "schedule function t:later 1t"}
+    emu = emulator_for(tmp_path, functions, tags={"minecraft:load": ["t:load"], "minecraft:tick": ["t:tick"]},
+                       backend=backend)
+    heard = []
+    emu.runtime.root_listeners.append(lambda function, result: heard.append((function, result.cost, result.result)))
+    emu.start()
+    emu.call("t:soon")
+    emu.tick(2)
+    assert heard == [("t:load", 2, None), ("t:soon", 2, None), ("t:tick", 2, None), ("t:later", 1, 3),
+                     ("t:tick", 2, None)]

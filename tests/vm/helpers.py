@@ -10,9 +10,9 @@ SETUP = "scoreboard objectives add o dummy\n"
 
 
 def emulator_for(tmp_path: Path, functions: dict[str, str], tags: dict[str, list[str]] | None = None,
-                 sanitize: bool = False, backend: str = "numba") -> Emulator:
+                 sanitize: bool = False, backend: str = "numba", stacks: bool = False) -> Emulator:
     pack = write_pack(tmp_path / "pack", functions, tags)
-    emu = Emulator(backend=backend, sanitize=sanitize)
+    emu = Emulator(backend=backend, sanitize=sanitize, stacks=stacks)
     emu.load(pack)
     assert not emu.load_diagnostics, [d.format() for d in emu.load_diagnostics]
     return emu

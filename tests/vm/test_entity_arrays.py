@@ -126,7 +126,7 @@ def test_the_forms_compile_to_vm_instructions(tmp_path):
     emu.call("t:main")
     ops = {row[0] for row in emu.backend.program.rows}
     assert {vm.OP_ASSTAGE, vm.OP_TAG, vm.OP_IFENT, vm.OP_ENABLE, vm.OP_POSSTAGE, vm.OP_STOREPOS, vm.OP_GETPOS} <= ops
-    assert [type(node).__name__ for _, node, _ in emu.backend.host_ops_run()] == ["ObjectivesAdd"] * 3 + ["Summon"] * 4
+    assert [type(run.node).__name__ for run in emu.backend.host_ops_run()] == ["ObjectivesAdd"] * 3 + ["Summon"] * 4
 
 
 @pytest.mark.parametrize("selector", ["@e[sort=nearest]", "@e[distance=..2]", "@e[type=#minecraft:skeletons]",
@@ -134,7 +134,7 @@ def test_the_forms_compile_to_vm_instructions(tmp_path):
 def test_other_selectors_stay_with_the_host(tmp_path, selector):
     emu = emulator_for(tmp_path, {"t:main": SETUP + f"tag {selector} add z"})
     emu.call("t:main")
-    assert [type(node).__name__ for _, node, _ in emu.backend.host_ops_run()][-1] == "TagCommand"
+    assert [type(run.node).__name__ for run in emu.backend.host_ops_run()][-1] == "TagCommand"
 
 
 def test_tellraw_needs_a_player(tmp_path):
@@ -168,4 +168,4 @@ def test_teleport_and_execute_at(tmp_path):
     assert emu.score("#far", "o") == 0
     ops = {row[0] for row in emu.backend.program.rows}
     assert {vm.OP_TP, vm.OP_ASSTAGE} <= ops
-    assert {type(node).__name__ for _, node, _ in emu.backend.host_ops_run()} == {"ObjectivesAdd", "Summon"}
+    assert {type(run.node).__name__ for run in emu.backend.host_ops_run()} == {"ObjectivesAdd", "Summon"}

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import pytest
 
-from emulator.world.state import Context
+from emulator.world.context import Context
 from mcfunction_parser.nbt import Int
 from tests.vm.helpers import run_main
 

@@ -10,7 +10,7 @@ def test_break_runs_without_host_ops():
     result = play(emu, BREAK)
     assert result.at_rest
     assert any(ball.pocketed for ball in result.balls)  # the pocket path ran too
-    ran = [(function, type(node).__name__, n) for function, node, n in emu.backend.host_ops_run()]
+    ran = [(run.function, type(run.node).__name__, run.runs) for run in emu.backend.host_ops_run()]
     assert ran == []
 
 

@@ -13,7 +13,7 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import String
 from emulator.world import nbt_ops
 from emulator.world.blocks import BlockMap, BlockState, block_pos, parse_block
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.source import Source
 from tests.world.world_paths import path
 

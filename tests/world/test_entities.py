@@ -15,7 +15,7 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
 from emulator.world import nbt_ops, rotation, teleport
 from emulator.world.entities import EntityStore, entity_nbt, load_nbt, modify_entity, uuid_string
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from emulator.world.selectors import select, select_one
 from emulator.world.source import Source
 from tests.world.world_paths import path

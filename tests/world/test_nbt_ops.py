@@ -10,7 +10,7 @@ from mcfunction_parser.nbt import (
     Byte, ByteArray, Compound, Double, Float, Int, IntArray, List, Long, String,
 )
 from emulator.world import nbt_ops
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from tests.world.world_paths import path
 
 

@@ -6,7 +6,7 @@ import pytest
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Long, String
 from emulator.world import stores
-from emulator.commands.failure import CommandFailure
+from emulator.world.errors import CommandFailure
 from tests.world.world_paths import path
 
 
