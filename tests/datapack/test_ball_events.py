@@ -1,4 +1,4 @@
-"""Cushion rebound, ball-ball collision and cue strike in mcfunction (pool:ball/...) against the
+"""Cushion rebound, ball-ball collision and cue strike in mcfunction (pool:physics/resolve/..., pool:cue/strike) against the
 float reference, with DESIGN.md section 6's thresholds. Run on the emulator (numba, sanitizer on)
 with @s a simulated player."""
 import math
@@ -40,7 +40,7 @@ def test_cushion_matches_reference(normal, v, wy):
     board = board_with(x=100000, z=100000, vx=int(v_xz[0]), vz=int(v_xz[1]), wx=0, wz=0, wy=wy)
     board.set_score("#nx", "pool.tmp", normal[0])
     board.set_score("#nz", "pool.tmp", normal[1])
-    board.call("pool:ball/cushion/rebound", as_=A)
+    board.call("pool:physics/resolve/cushion/rebound", as_=A)
     v_ref, wy_ref = cushion.rebound(v_xz / UM_PER_TICK, wy / UM_PER_TICK, n)
     mine = vector(board, "vx", "vz")
     assert np.abs(mine - v_ref * UM_PER_TICK).max() <= 2
@@ -56,7 +56,7 @@ def collide_on_board(r_a, v_a, r_b, v_b):
     board = board_with(x=r_a[0], z=r_a[1], vx=v_a[0], vz=v_a[1])
     for name, value in zip(("x", "z", "vx", "vz"), (*r_b, *v_b)):
         board.set_score(f"#b.{name}", "pool.tmp", value)
-    board.call("pool:ball/collide/resolve", as_=A)
+    board.call("pool:physics/resolve/ball_ball/collide", as_=A)
     v_b1 = np.array([board.score("#b.vx", "pool.tmp"), board.score("#b.vz", "pool.tmp")])
     return board, vector(board, "vx", "vz"), v_b1
 
@@ -115,7 +115,7 @@ def test_cue_strike_matches_reference(angle, speed, tip_x, tip_y, elevation):
     for name, value in zip(("angle", "speed", "tip_x", "tip_y", "elevation"),
                            (angle, speed, tip_x, tip_y, elevation)):
         board.set_score(f"$shot.{name}", "pool.game", value)
-    board.call("pool:ball/cue/strike", as_=A)
+    board.call("pool:cue/strike", as_=A)
     v, w, wy = strike(Shot(math.radians(angle / 100), speed / 1000, tip_x / 1000, tip_y / 1000,
                            math.radians(elevation / 100)))
     v, w, wy = v * UM_PER_TICK, w * UM_PER_TICK, wy * UM_PER_TICK
@@ -128,12 +128,12 @@ def test_cue_strike_matches_reference(angle, speed, tip_x, tip_y, elevation):
 
 
 def touch_shift(v_a, gap):
-    """pool:physics/resolve/touch for a at (600000, 600000) with velocity v_a and b at rest 2R + gap
+    """pool:physics/resolve/ball_ball/touch for a at (600000, 600000) with velocity v_a and b at rest 2R + gap
     along +x: a's displacement (um)."""
     board = board_with(x=600000, z=600000, vx=v_a[0], vz=v_a[1])
     for name, value in zip(("x", "z", "vx", "vz"), (600000 + 57150 + gap, 600000, 0, 0)):
         board.set_score(f"#b.{name}", "pool.tmp", value)
-    board.call("pool:physics/resolve/touch", as_=A)
+    board.call("pool:physics/resolve/ball_ball/touch", as_=A)
     return vector(board, "x", "z") - 600000
 
 

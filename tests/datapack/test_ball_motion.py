@@ -1,4 +1,4 @@
-"""The per-ball models in mcfunction (pool:ball/...) against the float reference
+"""The per-ball models in mcfunction (pool:physics/motion/...) against the float reference
 (poolgame.physics), scored by the thresholds of DESIGN.md section 6.
 
 Ball functions work on @s: they run on the emulator (numba, sanitizer on) with @s a simulated
@@ -21,7 +21,7 @@ def board_with_ball(x, z, vx, vz, wx=0, wz=0, wy=0):
     board.add_player(BALL)
     for name, value in zip(STATE, (x, z, vx, vz, wx, wz, wy)):
         board.set_score(BALL, f"pool.{name}", value)
-    board.call("pool:ball/phase/start", as_=BALL)
+    board.call("pool:physics/motion/start", as_=BALL)
     board.set_score("#step", "pool.tmp", 10000)
     return board
 
@@ -40,7 +40,7 @@ def run_shot(start, max_ticks):
     board, ref = board_with_ball(*start), reference_ball(*start)
     mine, theirs = [], []
     while len(mine) < max_ticks and (read(board, "state") != 0 or ref.state != AT_REST):
-        board.call("pool:ball/advance", as_=BALL)
+        board.call("pool:physics/motion/advance", as_=BALL)
         advance_through(ref, 1 / 20)
         mine.append([read(board, "x"), read(board, "z")])
         theirs.append(ref.r * 1e6)
@@ -63,7 +63,7 @@ def test_slide_to_roll_transition(start):
     advance_through(ref, ref.phase_duration())
     ticks = 0
     while read(board, "state") == 1:
-        board.call("pool:ball/advance", as_=BALL)
+        board.call("pool:physics/motion/advance", as_=BALL)
         ticks += 1
     assert abs(ticks - math.ceil(tau_ticks)) <= 1
     # the rolling velocity is the closed form v0 - (2/7) u0, snapped, whatever the tick split
@@ -93,7 +93,7 @@ def test_integer_energy_never_rises(start):
     board = board_with_ball(*start)
     energies = [integer_energy(board)]
     while read(board, "state") != 0:
-        board.call("pool:ball/advance", as_=BALL)
+        board.call("pool:physics/motion/advance", as_=BALL)
         energies.append(integer_energy(board))
     assert all(b <= a for a, b in zip(energies, energies[1:]))
 
@@ -106,7 +106,7 @@ def test_mirror_symmetry_is_exact(start):
     mirror = board_with_ball(x, -z, vx, -vz, wx, -wz, -wy)
     for _ in range(200):
         for b in (board, mirror):
-            b.call("pool:ball/advance", as_=BALL)
+            b.call("pool:physics/motion/advance", as_=BALL)
         assert [read(mirror, n) for n in STATE] == [
             read(board, "x"), -read(board, "z"), read(board, "vx"), -read(board, "vz"),
             read(board, "wx"), -read(board, "wz"), -read(board, "wy")]
@@ -114,8 +114,8 @@ def test_mirror_symmetry_is_exact(start):
 
 def test_side_spin_decays_at_the_errata_rate_and_stops():
     board = board_with_ball(0, 0, 0, 0, 0, 0, 10000)
-    board.call("pool:ball/advance", as_=BALL)
+    board.call("pool:physics/motion/advance", as_=BALL)
     assert read(board, "wy") == 10000 - 779          # 2.5 * 0.0127 * 9.81 m/s^2 per tick
     for _ in range(20):
-        board.call("pool:ball/advance", as_=BALL)
+        board.call("pool:physics/motion/advance", as_=BALL)
     assert read(board, "wy") == 0

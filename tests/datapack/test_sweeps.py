@@ -1,4 +1,4 @@
-"""Swept (continuous) collision tests of the event loop, on the emulator's both backends: pool:physics/sweep/..."""
+"""Swept (continuous) collision tests of the event loop, on the emulator's both backends: pool:physics/detect/sweep/..."""
 import math
 import random
 
@@ -9,7 +9,7 @@ from poolgame.physics.constants import CORNER_OPENING, SIDE_OPENING_HALF
 from tests.datapack.pool_world import BACKENDS, PoolWorld
 
 TWO_R = 57150
-CONTACT = TWO_R + 20   # $contact: the sweep reports contacts 20 um early (pool:physics/sweep/pair)
+CONTACT = TWO_R + 20   # $contact: the sweep reports contacts 20 um early (pool:physics/detect/sweep/pair)
 NO_EVENT = 10001
 
 
@@ -59,7 +59,7 @@ def test_pair_sweep_finds_the_first_contact(board):
     for a0, a1, b0, b1 in chords():
         set_chord(board, "a", a0, a1)
         set_chord(board, "b", b0, b1)
-        board.call("pool:physics/sweep/pair")
+        board.call("pool:physics/detect/sweep/pair")
         f = board.score("#f", "pool.tmp")
         expected = exact_contact_fraction(a0, a1, b0, b1)
         if expected is None:
@@ -87,7 +87,7 @@ def test_pair_sweep_finds_the_first_contact(board):
 ])
 def test_rail_sweep(board, start, end, rail, pocket):
     set_chord(board, "a", start, end)
-    board.call("pool:physics/sweep/rails")
+    board.call("pool:physics/detect/sweep/rails")
     assert board.score("#rail", "pool.tmp") == rail
     assert board.score("#pocket", "pool.tmp") == pocket
     if rail:

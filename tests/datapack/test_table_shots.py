@@ -128,7 +128,7 @@ def test_ball_sent_into_a_corner_is_pocketed_and_reported():
     assert board.score("$pocketed", "pool.game") == 1
     assert board.score("$last_pocketed", "pool.game") == 0
     assert any("pocketed" in m for m in board.messages)
-    # its display sits in the ball return (pool:ball/display/tray): 60 mm x the pocketing order
+    # its display sits in the ball return (pool:physics/display/tray): 60 mm x the pocketing order
     # along x, 120 mm outside the z = 0 cushion line, both from the table corner
     (entity,) = board.emu.entities(f"@e[tag=pool.ball,scores={{pool.id=0}}]")
     assert entity["pos"][0] == pytest.approx(TABLE_CORNER[0] + 0.060)
@@ -325,7 +325,7 @@ def moving_table(balls):
     for i, (_, (vx, vz)) in enumerate(balls):
         for name, value in dict(state=1, vx=vx, vz=vz, wx=0, wz=0, wy=0).items():
             board.set_score(board.ball(i), f"pool.{name}", value)
-        board.call("pool:ball/phase/start", as_=f"@e[tag=pool.ball,scores={{pool.id={i}}}]")
+        board.call("pool:physics/motion/start", as_=f"@e[tag=pool.ball,scores={{pool.id={i}}}]")
     board.set_score("$resting", "pool.game", 0)
     return board
 
@@ -347,11 +347,11 @@ def test_a_push_that_carries_a_ball_into_a_third_is_undone_too():
     # shortfall (55 um) away from A carries it 43 um into C, so the pushed balls are looked at again
     start = [(1000000, 635000), (1000000 + TWO_R - 100, 635000), (1000000 + 2 * TWO_R - 100 + 12, 635000)]
     board = table(start)
-    board.call("pool:physics/find/self", as_=board.ball(0))
-    board.call("pool:physics/find/touching", as_=board.ball(1))
+    board.call("pool:physics/detect/pair/self", as_=board.ball(0))
+    board.call("pool:physics/detect/pair/touching", as_=board.ball(1))
     for name, value in (("#work", 0), ("#finishing", 0)):
         board.set_score(name, "pool.tmp", value)
-    board.call("pool:physics/finish")
+    board.call("pool:physics/events/finish")
     p = positions(board, 3)
     gaps = [np.linalg.norm(p[i + 1] - p[i]) - TWO_R for i in range(2)]
     assert all(0 <= g <= 12 for g in gaps), gaps

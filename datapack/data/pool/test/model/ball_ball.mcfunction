@@ -1,5 +1,5 @@
 # @timeout 10
-# Ball-ball collision (pool:ball/collide/resolve, through the tick's swept events): head on, the
+# Ball-ball collision (pool:physics/resolve/ball_ball/collide, through the tick's swept events): head on, the
 # cue ball stops and the object ball takes its speed; hit at a 45 degree cut, the two leave at
 # right angles with the speed split evenly.
 # Expected values from the float reference (emulator/physics): strike(Shot(0, 1.5)) gives

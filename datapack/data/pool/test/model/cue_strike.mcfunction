@@ -1,4 +1,4 @@
-# Cue strike (pool:ball/cue/strike through pool:api/shot, errata 5.x): the tip offset gives spin
+# Cue strike (pool:cue/strike through pool:api/shot, errata 5.x): the tip offset gives spin
 # (above centre: follow, to the side: side spin), a raised cue bends the spin axis (masse).
 # Expected values from the float reference (emulator/physics): strike(Shot(angle, speed, tip_x,
 # tip_y, elevation)) in um/tick. Tolerances (DESIGN.md section 6): ball speed 0.1 %, spin 0.5 %

@@ -1,5 +1,5 @@
 # @timeout 20
-# Cushion rebound (pool:ball/cushion/rebound, errata 4.x: Coulomb friction with a stick limit):
+# Cushion rebound (pool:physics/resolve/cushion/rebound, errata 4.x: Coulomb friction with a stick limit):
 # the normal speed comes back times e = 0.85, friction trims the speed along the rail and turns
 # it into side spin; through the tick loop, a ball rolling into the foot rail comes back.
 # Expected values from the float reference (emulator/physics): cushion.rebound(v = (-150000, 60000)
@@ -17,7 +17,7 @@ scoreboard players set @e[tag=pool.ball,scores={pool.id=0}] pool.vz 60000
 scoreboard players set @e[tag=pool.ball,scores={pool.id=0}] pool.wy 4000
 scoreboard players set #nx pool.tmp 1
 scoreboard players set #nz pool.tmp 0
-execute as @e[tag=pool.ball,scores={pool.id=0}] run function pool:ball/cushion/rebound
+execute as @e[tag=pool.ball,scores={pool.id=0}] run function pool:physics/resolve/cushion/rebound
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vx matches 127498..127502
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vz matches 41712..41716
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.wy matches -41716..-41712

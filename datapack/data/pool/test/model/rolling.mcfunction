@@ -1,5 +1,5 @@
 # @timeout 120
-# Rolling (pool:ball/roll/*): a ball struck at the natural-roll height (tip 2/5 R above centre)
+# Rolling (pool:physics/motion/roll/*): a ball struck at the natural-roll height (tip 2/5 R above centre)
 # rolls at once and loses mu_r g = 245.25 um/tick every tick along a straight line until it stops.
 # Expected values from the float reference (emulator/physics): strike(Shot(0, 0.4, 0, 0.4)) gives
 # v = w = 23531.9 um/tick along +x; after 20 ticks 18626.9 um/tick at x = 721587 um; it stops after

@@ -1,5 +1,5 @@
 # @timeout 40
-# Side-spin decay (pool:ball/spin/advance): side spin wy = R omega_y loses (5/2) mu_sp g = 778.67
+# Side-spin decay (pool:physics/motion/spin/advance): side spin wy = R omega_y loses (5/2) mu_sp g = 778.67
 # um/tick every tick (errata) until it is gone, whatever the ball's phase; it does not bend the path.
 # Expected values from the float reference (emulator/physics): strike(Shot(0, 0.3, 0.3, 0)) gives
 # v = 19674.4 um/tick along +x and wy = 14755.8 um/tick; the spin lasts 14755.8 / 778.67 = 18.95

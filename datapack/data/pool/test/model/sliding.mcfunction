@@ -1,5 +1,5 @@
 # @timeout 20
-# Sliding (pool:ball/slide/*): a centre-hit ball slides, cloth friction takes mu_s g = 4905 um/tick
+# Sliding (pool:physics/motion/slide/*): a centre-hit ball slides, cloth friction takes mu_s g = 4905 um/tick
 # off its speed every tick, and in the tick where the slip ends it snaps to rolling at (5 v0 + 2 w0)/7.
 # Expected values from the float reference (emulator/physics): strike(Shot(0, 1.5)) gives
 # v0 = 115400.3 um/tick, w0 = 0; the slide lasts 2 v0 / (7 mu_s g) = 6.72 ticks, then the ball rolls

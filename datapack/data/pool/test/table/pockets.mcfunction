@@ -1,6 +1,6 @@
 # @timeout 10
 # @dummy
-# Pockets (pool:physics/sweep/pocket, pool:physics/resolve/pocket): a ball sent into a corner
+# Pockets (pool:physics/detect/sweep/pocket, pool:physics/resolve/pocket): a ball sent into a corner
 # pocket leaves play (pool.state 3), $pocketed counts it, $last_pocketed names it, the players are
 # told. The dummy player is there to receive the chat message, as in the game.
 # Expected from the float reference (emulator/physics): strike(Shot(-135 degrees, 2.0)) from

@@ -21,7 +21,7 @@ scoreboard players operation $shot.speed pool.game = #in.speed pool.tmp
 scoreboard players operation $shot.tip_x pool.game = #in.tip_x pool.tmp
 scoreboard players operation $shot.tip_y pool.game = #in.tip_y pool.tmp
 scoreboard players operation $shot.elevation pool.game = #in.elevation pool.tmp
-execute as @e[tag=pool.ball,scores={pool.id=0,pool.state=0..2},limit=1] run function pool:ball/cue/strike
+execute as @e[tag=pool.ball,scores={pool.id=0,pool.state=0..2},limit=1] run function pool:cue/strike
 tag @e[tag=pool.ball] remove pool.settled
 scoreboard players set $resting pool.game 0
 return 1

@@ -13,4 +13,4 @@ execute if score #event_rail pool.tmp matches 3 run scoreboard players operation
 execute if score #event_rail pool.tmp matches 4 run scoreboard players set #nz pool.tmp -1
 execute if score #event_rail pool.tmp matches 4 run scoreboard players operation @s pool.z = $W pool.const
 execute if score #event_rail pool.tmp matches 4 run scoreboard players operation @s pool.z -= $R pool.const
-function pool:ball/cushion/rebound
+function pool:physics/resolve/cushion/rebound
