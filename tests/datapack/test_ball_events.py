@@ -38,8 +38,8 @@ def test_cushion_matches_reference(normal, v, wy):
     t_hat = cushion.tangent(n)
     v_xz = -abs(v[0]) * n + v[1] * t_hat
     board = board_with(x=100000, z=100000, vx=int(v_xz[0]), vz=int(v_xz[1]), wx=0, wz=0, wy=wy)
-    board.set_score("#nx", "pool.tmp", normal[0])
-    board.set_score("#nz", "pool.tmp", normal[1])
+    board.set_score("#cushion.nx", "pool.tmp", normal[0])
+    board.set_score("#cushion.nz", "pool.tmp", normal[1])
     board.call("pool:physics/resolve/cushion/rebound", as_=A)
     v_ref, wy_ref = cushion.rebound(v_xz / UM_PER_TICK, wy / UM_PER_TICK, n)
     mine = vector(board, "vx", "vz")
@@ -55,9 +55,9 @@ def test_cushion_matches_reference(normal, v, wy):
 def collide_on_board(r_a, v_a, r_b, v_b):
     board = board_with(x=r_a[0], z=r_a[1], vx=v_a[0], vz=v_a[1])
     for name, value in zip(("x", "z", "vx", "vz"), (*r_b, *v_b)):
-        board.set_score(f"#b.{name}", "pool.tmp", value)
+        board.set_score(f"#ball_ball.b.{name}", "pool.tmp", value)
     board.call("pool:physics/resolve/ball_ball/collide", as_=A)
-    v_b1 = np.array([board.score("#b.vx", "pool.tmp"), board.score("#b.vz", "pool.tmp")])
+    v_b1 = np.array([board.score("#ball_ball.b.vx", "pool.tmp"), board.score("#ball_ball.b.vz", "pool.tmp")])
     return board, vector(board, "vx", "vz"), v_b1
 
 
@@ -75,7 +75,7 @@ def test_ball_ball_conserves_momentum_exactly_and_energy_closely(phi, v_a, v_b):
     r_b = (500000 + round(57150 * math.cos(math.radians(phi))),
            500000 + round(57150 * math.sin(math.radians(phi))))
     board, v_a1, v_b1 = collide_on_board((500000, 500000), v_a, r_b, v_b)
-    assert board.score("#hit", "pool.tmp") == 1
+    assert board.score("#ball_ball.hit", "pool.tmp") == 1
     assert list(v_a1 + v_b1) == [v_a[0] + v_b[0], v_a[1] + v_b[1]]
     ke0 = np.dot(v_a, v_a) + np.dot(v_b, v_b)
     assert abs(v_a1 @ v_a1 + v_b1 @ v_b1 - ke0) / ke0 <= 1e-3
@@ -95,7 +95,7 @@ def test_cut_at_45_degrees_splits_the_energy():
 
 def test_separating_balls_are_left_alone():
     board, v_a1, v_b1 = collide_on_board((500000, 500000), (-1000, 0), (557150, 500000), (0, 0))
-    assert board.score("#hit", "pool.tmp") == 0
+    assert board.score("#ball_ball.hit", "pool.tmp") == 0
     assert list(v_a1) == [-1000, 0] and list(v_b1) == [0, 0]
 
 
@@ -132,7 +132,7 @@ def touch_shift(v_a, gap):
     along +x: a's displacement (um)."""
     board = board_with(x=600000, z=600000, vx=v_a[0], vz=v_a[1])
     for name, value in zip(("x", "z", "vx", "vz"), (600000 + 57150 + gap, 600000, 0, 0)):
-        board.set_score(f"#b.{name}", "pool.tmp", value)
+        board.set_score(f"#ball_ball.b.{name}", "pool.tmp", value)
     board.call("pool:physics/resolve/ball_ball/touch", as_=A)
     return vector(board, "x", "z") - 600000
 

@@ -22,7 +22,7 @@ def board_with_ball(x, z, vx, vz, wx=0, wz=0, wy=0):
     for name, value in zip(STATE, (x, z, vx, vz, wx, wz, wy)):
         board.set_score(BALL, f"pool.{name}", value)
     board.call("pool:physics/motion/start", as_=BALL)
-    board.set_score("#step", "pool.tmp", 10000)
+    board.set_score("#motion.step", "pool.tmp", 10000)
     return board
 
 

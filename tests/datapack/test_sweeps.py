@@ -20,7 +20,7 @@ def board(request):
 
 def set_chord(board, who, start, end):
     for name, value in zip(("bx", "bz", "ex", "ez"), (*start, *end)):
-        board.set_score(f"#{who}.{name}", "pool.tmp", int(value))
+        board.set_score(f"#sweep.{who}.{name}", "pool.tmp", int(value))
 
 
 def exact_contact_fraction(a0, a1, b0, b1):
@@ -60,7 +60,7 @@ def test_pair_sweep_finds_the_first_contact(board):
         set_chord(board, "a", a0, a1)
         set_chord(board, "b", b0, b1)
         board.call("pool:physics/detect/sweep/pair")
-        f = board.score("#f", "pool.tmp")
+        f = board.score("#sweep.f", "pool.tmp")
         expected = exact_contact_fraction(a0, a1, b0, b1)
         if expected is None:
             assert f == NO_EVENT, (a0, a1, b0, b1)
@@ -88,11 +88,11 @@ def test_pair_sweep_finds_the_first_contact(board):
 def test_rail_sweep(board, start, end, rail, pocket):
     set_chord(board, "a", start, end)
     board.call("pool:physics/detect/sweep/rails")
-    assert board.score("#rail", "pool.tmp") == rail
-    assert board.score("#pocket", "pool.tmp") == pocket
+    assert board.score("#sweep.rail", "pool.tmp") == rail
+    assert board.score("#sweep.pocket", "pool.tmp") == pocket
     if rail:
         axis, line = [(0, 28575), (0, 2540000 - 28575), (1, 28575), (1, 1270000 - 28575)][rail - 1]
-        f = board.score("#rf", "pool.tmp") / 10000
+        f = board.score("#sweep.rf", "pool.tmp") / 10000
         crossing = start[axis] + f * (end[axis] - start[axis])
         assert abs(crossing - line) <= 1 + abs(end[axis] - start[axis]) / 10000
 

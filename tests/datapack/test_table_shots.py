@@ -338,8 +338,8 @@ def test_events_of_one_tick_are_resolved_earliest_first():
                           ((900000, 28575 + 70000), (0, -200000))])
     board.tick()
     times = [board.ball_score(i, "pool.bt") for i in range(2)]     # each ball's event time
-    assert board.score("#events", "pool.tmp") == 2 and 0 < times[0] < times[1]
-    assert board.score("#now", "pool.tmp") == times[1]             # the last event resolved is the latest
+    assert board.score("#events.count", "pool.tmp") == 2 and 0 < times[0] < times[1]
+    assert board.score("#events.now", "pool.tmp") == times[1]             # the last event resolved is the latest
 
 
 def test_a_push_that_carries_a_ball_into_a_third_is_undone_too():
@@ -349,7 +349,7 @@ def test_a_push_that_carries_a_ball_into_a_third_is_undone_too():
     board = table(start)
     board.call("pool:physics/detect/pair/self", as_=board.ball(0))
     board.call("pool:physics/detect/pair/touching", as_=board.ball(1))
-    for name, value in (("#work", 0), ("#finishing", 0)):
+    for name, value in (("#cost.work", 0), ("#events.finishing", 0)):
         board.set_score(name, "pool.tmp", value)
     board.call("pool:physics/events/finish")
     p = positions(board, 3)

@@ -1,7 +1,7 @@
 # @timeout 10
-# Ball-ball collision (pool:physics/resolve/ball_ball/collide, through the tick's swept events): head on, the
-# cue ball stops and the object ball takes its speed; hit at a 45 degree cut, the two leave at
-# right angles with the speed split evenly.
+# Ball-ball collision (pool:physics/resolve/ball_ball/collide, through the tick's swept events):
+# head on, the cue ball stops and the object ball takes its speed; hit at a 45 degree cut, the two
+# leave at right angles with the speed split evenly.
 # Expected values from the float reference (emulator/physics): strike(Shot(0, 1.5)) gives
 # v0 = 115400.3 um/tick; simulate_ticks one tick later: head on (object ball 2R + 1 mm ahead), cue
 # ball at rest, object ball vx = 110495.3 um/tick at x = 1170098 um; for the cut (object ball at

@@ -1,7 +1,7 @@
 # @timeout 20
-# Cushion rebound (pool:physics/resolve/cushion/rebound, errata 4.x: Coulomb friction with a stick limit):
-# the normal speed comes back times e = 0.85, friction trims the speed along the rail and turns
-# it into side spin; through the tick loop, a ball rolling into the foot rail comes back.
+# Cushion rebound (pool:physics/resolve/cushion/rebound, errata 4.x: Coulomb friction with a stick
+# limit): the normal speed comes back times e = 0.85, friction trims the speed along the rail and
+# turns it into side spin; through the tick loop, a ball rolling into the foot rail comes back.
 # Expected values from the float reference (emulator/physics): cushion.rebound(v = (-150000, 60000)
 # um/tick, wy = 4000, n = (1, 0)) gives v = (127500, 41714.3), wy = -41714.3; tolerance 2 um/tick
 # (DESIGN.md section 6: normal-speed ratio 1e-3, angle 0.25 degree). strike(Shot(0, 1.0, 0, 0.4))
@@ -15,8 +15,8 @@ function pool:table/rack/ball {id:0, x:100000, z:635000, item:"minecraft:white_c
 scoreboard players set @e[tag=pool.ball,scores={pool.id=0}] pool.vx -150000
 scoreboard players set @e[tag=pool.ball,scores={pool.id=0}] pool.vz 60000
 scoreboard players set @e[tag=pool.ball,scores={pool.id=0}] pool.wy 4000
-scoreboard players set #nx pool.tmp 1
-scoreboard players set #nz pool.tmp 0
+scoreboard players set #cushion.nx pool.tmp 1
+scoreboard players set #cushion.nz pool.tmp 0
 execute as @e[tag=pool.ball,scores={pool.id=0}] run function pool:physics/resolve/cushion/rebound
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vx matches 127498..127502
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vz matches 41712..41716

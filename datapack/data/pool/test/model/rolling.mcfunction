@@ -1,6 +1,7 @@
 # @timeout 120
-# Rolling (pool:physics/motion/roll/*): a ball struck at the natural-roll height (tip 2/5 R above centre)
-# rolls at once and loses mu_r g = 245.25 um/tick every tick along a straight line until it stops.
+# Rolling (pool:physics/motion/roll/*): a ball struck at the natural-roll height (tip 2/5 R above
+# centre) rolls at once and loses mu_r g = 245.25 um/tick every tick along a straight line until it
+# stops.
 # Expected values from the float reference (emulator/physics): strike(Shot(0, 0.4, 0, 0.4)) gives
 # v = w = 23531.9 um/tick along +x; after 20 ticks 18626.9 um/tick at x = 721587 um; it stops after
 # 95.95 ticks at x = 1428946 um. Tolerances: the cue strike's 0.1 % (24 um/tick) plus 2 um/tick for

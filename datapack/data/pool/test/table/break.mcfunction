@@ -16,8 +16,8 @@ assert not entity @e[tag=pool.ball,scores={pool.state=0,pool.x=..28574}]
 assert not entity @e[tag=pool.ball,scores={pool.state=0,pool.x=2511426..}]
 assert not entity @e[tag=pool.ball,scores={pool.state=0,pool.z=..28574}]
 assert not entity @e[tag=pool.ball,scores={pool.state=0,pool.z=1241426..}]
-execute store result score #balls pool.test if entity @e[tag=pool.ball]
-assert score #balls pool.test matches 16
-execute store result score #pocketed pool.test if entity @e[tag=pool.ball,scores={pool.state=3}]
-assert score #pocketed pool.test = $pocketed pool.game
+execute store result score #break.balls pool.test if entity @e[tag=pool.ball]
+assert score #break.balls pool.test matches 16
+execute store result score #break.pocketed pool.test if entity @e[tag=pool.ball,scores={pool.state=3}]
+assert score #break.pocketed pool.test = $pocketed pool.game
 assert chat "^Pool: the table is at rest$"

@@ -1,6 +1,7 @@
 # pool:physics/detect/rail_event — the rail crossing of @s is its earliest event so far.
-# Reads: #t #pocket #rail pool.tmp. Writes: #best #kind #event_rail pool.tmp.
-scoreboard players operation #best pool.tmp = #t pool.tmp
-scoreboard players set #kind pool.tmp 2
-execute if score #pocket pool.tmp matches 1 run scoreboard players set #kind pool.tmp 3
-scoreboard players operation #event_rail pool.tmp = #rail pool.tmp
+# Reads: #detect.t #sweep.pocket #sweep.rail pool.tmp. Writes: #detect.best #detect.kind
+# #detect.rail pool.tmp.
+scoreboard players operation #detect.best pool.tmp = #detect.t pool.tmp
+scoreboard players set #detect.kind pool.tmp 2
+execute if score #sweep.pocket pool.tmp matches 1 run scoreboard players set #detect.kind pool.tmp 3
+scoreboard players operation #detect.rail pool.tmp = #sweep.rail pool.tmp

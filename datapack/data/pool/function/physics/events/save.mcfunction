@@ -1,4 +1,5 @@
-# pool:physics/events/save — copy @s's changing state into the saved objectives (pool.b*), at time #now.
+# pool:physics/events/save — copy @s's changing state into the saved objectives (pool.b*), at time
+# #events.now.
 # The phase constants (ax az rx rz dx dz x0 z0) change only when a phase starts, which
 # pool:physics/motion/advance redoes identically after a restore.
 scoreboard players operation @s pool.bx = @s pool.x
@@ -12,4 +13,4 @@ scoreboard players operation @s pool.btau = @s pool.tau
 scoreboard players operation @s pool.bs = @s pool.s
 scoreboard players operation @s pool.bspd = @s pool.spd
 scoreboard players operation @s pool.bstate = @s pool.state
-scoreboard players operation @s pool.bt = #now pool.tmp
+scoreboard players operation @s pool.bt = #events.now pool.tmp

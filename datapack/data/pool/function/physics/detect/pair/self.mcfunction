@@ -1,8 +1,9 @@
 # pool:physics/detect/pair/self — @s becomes the first ball of the pair tests (tag pool.self): its
-# pool.id and chord box into #a.*. Writes: tag pool.self, #a.id #a.lx #a.hx #a.lz #a.hz pool.tmp.
+# pool.id and chord box into #pair.a.*. Writes: tag pool.self, #pair.a.id #pair.a.lx #pair.a.hx
+# #pair.a.lz #pair.a.hz pool.tmp.
 tag @s add pool.self
-scoreboard players operation #a.id pool.tmp = @s pool.id
-scoreboard players operation #a.lx pool.tmp = @s pool.lx
-scoreboard players operation #a.hx pool.tmp = @s pool.hx
-scoreboard players operation #a.lz pool.tmp = @s pool.lz
-scoreboard players operation #a.hz pool.tmp = @s pool.hz
+scoreboard players operation #pair.a.id pool.tmp = @s pool.id
+scoreboard players operation #pair.a.lx pool.tmp = @s pool.lx
+scoreboard players operation #pair.a.hx pool.tmp = @s pool.hx
+scoreboard players operation #pair.a.lz pool.tmp = @s pool.lz
+scoreboard players operation #pair.a.hz pool.tmp = @s pool.hz

@@ -1,7 +1,7 @@
 # pool:physics/motion/roll/start — begin rolling along @s's velocity (w = v), or come to rest.
 # Reads: @s pool.vx pool.vz pool.x pool.z. Writes: @s pool.state (2 rolling, 0 at rest),
 # pool.spd (|v| in 0.01 um/tick), pool.dx pool.dz (v / |v| x 100000), pool.s (0), pool.x0 pool.z0,
-# pool.wx pool.wz; temporaries #l #e pool.tmp and the math library's.
+# pool.wx pool.wz; temporaries #roll.l #roll.e pool.tmp and the math library's.
 # The direction needs 1e-5 (1e-4 rad would put a ball 1 mm off after 10 m), so |v| is refined
 # from normalize's unit vector u: |v| = (v . u) / |u| with |u| = 1 + e/2, e = |u|^2 - 1.
 scoreboard players operation $x pool.math = @s pool.vx
@@ -15,26 +15,26 @@ scoreboard players operation $a pool.math = @s pool.vx
 scoreboard players operation $a pool.math *= #100 pool.const
 scoreboard players operation $b pool.math = $ux pool.math
 function pool:math/mul_unit
-scoreboard players operation #l pool.tmp = $out pool.math
+scoreboard players operation #roll.l pool.tmp = $out pool.math
 scoreboard players operation $a pool.math = @s pool.vz
 scoreboard players operation $a pool.math *= #100 pool.const
 scoreboard players operation $b pool.math = $uz pool.math
 function pool:math/mul_unit
-scoreboard players operation #l pool.tmp += $out pool.math
-scoreboard players operation #e pool.tmp = $ux pool.math
-scoreboard players operation #e pool.tmp *= $ux pool.math
+scoreboard players operation #roll.l pool.tmp += $out pool.math
+scoreboard players operation #roll.e pool.tmp = $ux pool.math
+scoreboard players operation #roll.e pool.tmp *= $ux pool.math
 scoreboard players operation $b pool.math = $uz pool.math
 scoreboard players operation $b pool.math *= $uz pool.math
-scoreboard players operation #e pool.tmp += $b pool.math
-scoreboard players operation #e pool.tmp -= #100000000 pool.const
-scoreboard players operation $a pool.math = #l pool.tmp
-scoreboard players operation $b pool.math = #e pool.tmp
+scoreboard players operation #roll.e pool.tmp += $b pool.math
+scoreboard players operation #roll.e pool.tmp -= #100000000 pool.const
+scoreboard players operation $a pool.math = #roll.l pool.tmp
+scoreboard players operation $b pool.math = #roll.e pool.tmp
 function pool:math/mul_unit
 scoreboard players operation $a pool.math = $out pool.math
 scoreboard players operation $b pool.math = #20000 pool.const
 function pool:math/div_round
-scoreboard players operation #l pool.tmp -= $out pool.math
-scoreboard players operation @s pool.spd = #l pool.tmp
+scoreboard players operation #roll.l pool.tmp -= $out pool.math
+scoreboard players operation @s pool.spd = #roll.l pool.tmp
 # direction d = 10^7 v / spd = 10000 (1000 v) / spd
 scoreboard players operation $b pool.math = @s pool.spd
 scoreboard players operation $a pool.math = @s pool.vx

@@ -1,4 +1,5 @@
-# pool:physics/motion/roll/stop — @s comes to rest: no velocity, no rolling spin (side spin may remain).
+# pool:physics/motion/roll/stop — @s comes to rest: no velocity, no rolling spin (side spin may
+# remain).
 # Writes: @s pool.state (0) pool.vx pool.vz pool.wx pool.wz pool.spd.
 scoreboard players set @s pool.state 0
 scoreboard players set @s pool.vx 0

@@ -12,29 +12,29 @@ scoreboard players operation $b pool.math = $uz pool.math
 function pool:math/mul_unit
 scoreboard players operation @s pool.az = $out pool.math
 # tau = |u| * 20000 / (7 * 4905) = |u| * 4000 / 6867 in 1/10000 tick, as (q*4000) + (r*4000)/6867
-scoreboard players set #c pool.tmp 6867
-scoreboard players set #k pool.tmp 4000
+scoreboard players set #slide.den pool.tmp 6867
+scoreboard players set #slide.num pool.tmp 4000
 scoreboard players operation @s pool.tau = $len pool.math
-scoreboard players operation @s pool.tau /= #c pool.tmp
-scoreboard players operation @s pool.tau *= #k pool.tmp
-scoreboard players operation #r pool.tmp = $len pool.math
-scoreboard players operation #r pool.tmp %= #c pool.tmp
-scoreboard players operation #r pool.tmp *= #k pool.tmp
-scoreboard players operation #r pool.tmp /= #c pool.tmp
-scoreboard players operation @s pool.tau += #r pool.tmp
+scoreboard players operation @s pool.tau /= #slide.den pool.tmp
+scoreboard players operation @s pool.tau *= #slide.num pool.tmp
+scoreboard players operation #slide.r pool.tmp = $len pool.math
+scoreboard players operation #slide.r pool.tmp %= #slide.den pool.tmp
+scoreboard players operation #slide.r pool.tmp *= #slide.num pool.tmp
+scoreboard players operation #slide.r pool.tmp /= #slide.den pool.tmp
+scoreboard players operation @s pool.tau += #slide.r pool.tmp
 # rolling velocity v - (2/7)(v - w) = (5 v + 2 w) / 7
 scoreboard players operation $a pool.math = @s pool.vx
 scoreboard players operation $a pool.math *= #5 pool.const
-scoreboard players operation #r pool.tmp = @s pool.wx
-scoreboard players operation #r pool.tmp *= #2 pool.const
-scoreboard players operation $a pool.math += #r pool.tmp
+scoreboard players operation #slide.r pool.tmp = @s pool.wx
+scoreboard players operation #slide.r pool.tmp *= #2 pool.const
+scoreboard players operation $a pool.math += #slide.r pool.tmp
 scoreboard players operation $b pool.math = #7 pool.const
 function pool:math/div_round
 scoreboard players operation @s pool.rx = $out pool.math
 scoreboard players operation $a pool.math = @s pool.vz
 scoreboard players operation $a pool.math *= #5 pool.const
-scoreboard players operation #r pool.tmp = @s pool.wz
-scoreboard players operation #r pool.tmp *= #2 pool.const
-scoreboard players operation $a pool.math += #r pool.tmp
+scoreboard players operation #slide.r pool.tmp = @s pool.wz
+scoreboard players operation #slide.r pool.tmp *= #2 pool.const
+scoreboard players operation $a pool.math += #slide.r pool.tmp
 function pool:math/div_round
 scoreboard players operation @s pool.rz = $out pool.math

@@ -1,6 +1,7 @@
-# pool:physics/motion/slide/whole_tick — pool:physics/motion/slide/advance for a whole tick (#f = 10000, at most
-# @s pool.tau): its formulas with f = 10000, the same integers (v f / 10000 = v, a f^2 / 20000
-# rounds as a / 2, (5/2) a f / 10000 as 5 a / 2): r += v + a/2, v += a, w -= 5a/2, tau -= 10000.
+# pool:physics/motion/slide/whole_tick — pool:physics/motion/slide/advance for a whole tick
+# (#motion.f = 10000, at most @s pool.tau): its formulas with f = 10000, the same integers (v f /
+# 10000 = v, a f^2 / 20000 rounds as a / 2, (5/2) a f / 10000 as 5 a / 2): r += v + a/2, v += a, w
+# -= 5a/2, tau -= 10000.
 # Reads/writes: as pool:physics/motion/slide/advance.
 scoreboard players operation $a pool.math = @s pool.ax
 scoreboard players operation $b pool.math = #2 pool.const
