@@ -1,8 +1,10 @@
 """The issue's command budget (5000 per tick with 16 balls moving) on the emulator's counters,
-and the carry-over that keeps it (pool:physics/step): a game tick does only the physics work
+and the carry-over that keeps it (pool:physics/events/*): a game tick does only the physics work
 that fits in $budget pool.const, the rest of the physics tick goes on in the next game tick.
 Command counts are deterministic, so they are asserted exactly against the budget."""
-from poolgame.shot import BREAK, new_table, play, reset_table
+from poolgame.shot import BREAK, new_table, play
+from tests.datapack.pool_world import play as play_to_rest
+from tests.datapack.pool_world import shoot, table
 
 BUDGET = 5000
 
@@ -36,15 +38,14 @@ def test_carry_over_splits_the_work_without_changing_the_physics():
     assert tight.commands_max <= 2500 + 1200        # the last step admitted may pass $budget a little
 
 
-def test_displays_hold_still_while_a_tick_is_carried_over():
-    emu = reset_table(new_table())
-    emu.set_score("$budget", "pool.const", 2500)
-    emu.call("pool:api/shot", arguments=BREAK.macro_arguments())
-    carried = 0
-    for _ in range(60):
-        before = [e["pos"] for e in emu.entities("@e[tag=pool.ball]")]
-        emu.tick()
-        if emu.score("$carry", "pool.game") == 1:
-            carried += 1
-            assert [e["pos"] for e in emu.entities("@e[tag=pool.ball]")] == before
-    assert carried >= 5
+def test_idle_tick_costs_at_most_50_commands():
+    board = table([(635000, 635000), (1905000, 640000)])
+    board.add_player("Steve")                      # the controls run for every player
+    assert board.tick() <= 50
+
+
+def test_command_cost_per_tick_of_one_rolling_ball():
+    board = table([(635000, 635000)])
+    shoot(board, angle=1000, speed=1500)
+    costs = play_to_rest(board)
+    assert max(costs) <= 5000 and sum(costs) / len(costs) <= 500

@@ -9,9 +9,8 @@ import numpy as np
 import pytest
 
 from poolgame.physics.ball import AT_REST, Ball, advance_through
-from tests.datapack.pool_world import PoolWorld
+from tests.datapack.pool_world import UM_PER_TICK, PoolWorld
 
-UM_PER_TICK = 1e6 / 20   # um/tick per m/s
 BALL = "ball"    # a simulated player stands in for the ball entity (@s)
 STATE = ("x", "z", "vx", "vz", "wx", "wz", "wy")
 

@@ -1,4 +1,5 @@
-"""Swept (continuous) collision tests of the event loop, on the emulator's both backends: pool:physics/detect/sweep/..."""
+"""Swept (continuous) collision tests of the event search (pool:physics/detect/sweep/*) on the
+emulator's both backends, and a ball at 10 m/s that does not tunnel through another."""
 import math
 import random
 
@@ -6,9 +7,8 @@ import numpy as np
 import pytest
 
 from poolgame.physics.constants import CORNER_OPENING, SIDE_OPENING_HALF
-from tests.datapack.pool_world import BACKENDS, PoolWorld
+from tests.datapack.pool_world import BACKENDS, TWO_R, PoolWorld, shoot, table
 
-TWO_R = 57150
 CONTACT = TWO_R + 20   # $contact: the sweep reports contacts 20 um early (pool:physics/detect/sweep/pair)
 NO_EVENT = 10001
 
@@ -99,3 +99,13 @@ def test_rail_sweep(board, start, end, rail, pocket):
 
 def test_pocket_openings_match_the_reference_constants():
     assert CORNER_OPENING * 1e6 == 90000 and SIDE_OPENING_HALF * 1e6 == 65000
+
+
+def test_no_tunnelling_at_ten_metres_per_second():
+    # cue speed 6.5 m/s gives the ball ~10 m/s: 0.5 m per tick, the object ball 7 diameters away
+    board = table([(635000, 635000), (1035000, 635000)])
+    shoot(board, angle=0, speed=6500)
+    assert board.ball_score(0, "pool.vx") >= 490000
+    board.tick()
+    assert board.ball_score(1, "pool.vx") > 400000          # hit within the first tick
+    assert board.ball_score(1, "pool.x") - board.ball_score(0, "pool.x") >= TWO_R
