@@ -22,7 +22,7 @@ def test_the_suite_covers_every_phase_every_model_and_the_controls():
     assert {"pool:physics/motion/sliding", "pool:physics/motion/rolling", "pool:physics/motion/side_spin",
             "pool:physics/resolve/ball_ball", "pool:physics/resolve/cushion", "pool:physics/resolve/pocket",
             "pool:cue/strike", "pool:physics/events/at_rest", "pool:physics/break",
-            "pool:controls/trigger"} <= {case.id for case in CASES}
+            "pool:controls/trigger", "pool:unload"} <= {case.id for case in CASES}
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])
