@@ -1,4 +1,7 @@
 # pool:physics/events/restore — copy the saved objectives (pool.b*) back into @s's state.
+# Reads: @s pool.bx pool.bz pool.bvx pool.bvz pool.bwx pool.bwz pool.bwy pool.btau pool.bs pool.bspd
+# pool.bstate. Writes: @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.wy pool.tau pool.s
+# pool.spd pool.state.
 scoreboard players operation @s pool.x = @s pool.bx
 scoreboard players operation @s pool.z = @s pool.bz
 scoreboard players operation @s pool.vx = @s pool.bvx

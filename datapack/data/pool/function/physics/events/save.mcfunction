@@ -1,5 +1,7 @@
 # pool:physics/events/save — copy @s's changing state into the saved objectives (pool.b*), at time
 # #events.now.
+# Reads: #events.now pool.tmp, @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.wy pool.tau
+# pool.s pool.spd pool.state. Writes: @s pool.bx ... pool.bstate, pool.bt (the time).
 # The phase constants (ax az rx rz dx dz x0 z0) change only when a phase starts, which
 # pool:physics/motion/advance redoes identically after a restore.
 scoreboard players operation @s pool.bx = @s pool.x
