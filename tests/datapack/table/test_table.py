@@ -15,12 +15,19 @@ def test_setup_racks_sixteen_balls_apart_at_the_corner():
     assert board.score("$resting", "pool.game") == 1
 
 
-def test_pocketed_cue_ball_is_refused_then_spotted_again():
-    board = table([(300000, 300000), (1905000, 635000)])
+def scratched(other_ball):
+    """A table on which the cue ball went into the corner pocket at (0, 0), another ball at rest at
+    ``other_ball`` (um)."""
+    board = table([(300000, 300000), other_ball])
     board.listen()
     shoot(board, angle=-13500, speed=2000)
     play(board)
     assert board.ball_score(0, "pool.state") == 3
+    return board
+
+
+def test_pocketed_cue_ball_is_refused_then_spotted_again():
+    board = scratched((1905000, 635000))
     shoot(board, angle=0)
     assert any("not on the table" in m for m in board.messages)
     board.call("pool:table/spot_cue")
@@ -33,10 +40,7 @@ def test_pocketed_cue_ball_is_refused_then_spotted_again():
 
 
 def test_cue_ball_is_not_spotted_onto_another_ball():
-    board = table([(300000, 300000), (650000, 640000)])
-    board.listen()
-    shoot(board, angle=-13500, speed=2000)
-    play(board)
+    board = scratched((650000, 640000))
     board.call("pool:table/spot_cue")
     assert board.ball_score(0, "pool.state") == 3
     assert any("head spot is taken" in m for m in board.messages)
