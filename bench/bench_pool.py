@@ -44,7 +44,7 @@ def shot_costs(shot: Shot) -> tuple[list[int], list[int]]:
     costs, quiet = [], []
     while emu.score("$resting", "pool.game") == 0 and len(costs) < 2000:
         costs.append(emu.tick())
-        if emu.score("#events", "pool.tmp") == 0:
+        if emu.score("#events.count", "pool.tmp") == 0:
             quiet.append(costs[-1])
     return costs, quiet
 

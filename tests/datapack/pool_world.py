@@ -2,9 +2,13 @@
 int32 wrap and every runtime diagnostic fails the test that caused it.
 
 Ball functions run on @s: the unit tests bind @s to a simulated player (its name is its score
-holder); the table tests place real ball entities with the pack's own pool:table/rack/ball.
+holder, `board_with`); the table tests place real ball entities with the pack's own
+pool:table/rack/ball (`table`) or rack them with pool:table/setup (`racked_table`), strike
+through pool:api/shot (`shoot`) and tick (`play`).
 """
 from __future__ import annotations
+
+import numpy as np
 
 from emulator import Emulator
 from poolgame.shot import TABLE_CORNER
@@ -13,6 +17,9 @@ from tests.datapack.pack_paths import PACK
 
 BACKENDS = ("numba", "python")
 BALL_ITEM = "minecraft:white_concrete"
+UM_PER_TICK = 1e6 / 20   # um/tick per m/s
+TWO_R = 57150            # um
+A = "ball_a"             # a simulated player standing in for a ball entity (@s)
 
 
 class PoolWorld:
@@ -76,3 +83,64 @@ class PoolWorld:
 
     def ball_score(self, i: int, objective: str) -> int | None:
         return self.score(self.ball(i), objective)
+
+
+# ---------------------------------------------------------------------- one ball on a simulated player
+def board_with(holder=A, **scores):
+    """A world with the simulated player ``holder`` holding ``pool.<name>`` = value for each score."""
+    board = PoolWorld()
+    board.add_player(holder)
+    for name, value in scores.items():
+        board.set_score(holder, f"pool.{name}", value)
+    return board
+
+
+def vector(board, x, z, holder=A):
+    return np.array([board.score(holder, f"pool.{x}"), board.score(holder, f"pool.{z}")], float)
+
+
+# ---------------------------------------------------------------------- tables of real balls
+def table(positions):
+    board = PoolWorld()
+    board.place_balls(positions)
+    return board
+
+
+def racked_table():
+    """The pack's own pool:table/setup at the table corner: 16 balls, cue ball (id 0) first."""
+    board = PoolWorld()
+    board.call("pool:table/setup")
+    return board
+
+
+def shoot(board, angle=0, speed=2000, tip_x=0, tip_y=0, elevation=0):
+    board.call("pool:api/shot", arguments=dict(angle=angle, speed=speed, tip_x=tip_x,
+                                                 tip_y=tip_y, elevation=elevation))
+
+
+def play(board, max_ticks=2000):
+    """Tick until the table rests; returns the commands run per tick."""
+    costs = []
+    while board.score("$resting", "pool.game") == 0 and len(costs) < max_ticks:
+        costs.append(board.tick())
+    return costs
+
+
+def positions(board, n):
+    return np.array([[board.ball_score(i, "pool.x"), board.ball_score(i, "pool.z")] for i in range(n)], float)
+
+
+def complete(board):
+    """The balls' scores hold one moment: no physics tick is carried over to the next game tick
+    ($carry pool.game, pool:physics/step: mid-computation, balls are at different times)."""
+    return board.score("$carry", "pool.game") != 1
+
+
+def assert_on_table_and_apart(board, n):
+    assert complete(board)
+    in_play = [i for i in range(n) if board.ball_score(i, "pool.state") != 3]
+    p = positions(board, n)
+    for k, i in enumerate(in_play):
+        assert 28575 <= p[i][0] <= 2540000 - 28575 and 28575 <= p[i][1] <= 1270000 - 28575, i
+        for j in in_play[k + 1:]:
+            assert np.linalg.norm(p[i] - p[j]) >= TWO_R - 2, (i, j)

@@ -2,6 +2,7 @@
 metadata, tags and function references are consistent."""
 import json
 import re
+from pathlib import Path
 
 import pytest
 from mecha import Mecha
@@ -83,3 +84,12 @@ def test_load_creates_every_objective_used():
             used |= {item.split("=")[0] for item in scores.split(",")}
     assert "pool.x" in used and "pool.power" in used
     assert used - created == set()
+
+
+def test_the_pytest_folders_are_function_folders():
+    # tests/datapack mirrors data/pool/function (datapack/README.md, "Layout"); pack-wide tests sit at the top
+    here = Path(__file__).parent
+    folders = {p.parent.relative_to(here).as_posix() for p in here.rglob("test_*.py")} - {"."}
+    functions = PACK / "data" / "pool" / "function"
+    assert {"math", "physics/motion", "physics/detect", "physics/resolve", "physics/events"} <= folders
+    assert all((functions / folder).is_dir() for folder in folders), folders

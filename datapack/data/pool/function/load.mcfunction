@@ -55,7 +55,8 @@ scoreboard objectives add pool.cx dummy
 scoreboard objectives add pool.cz dummy
 scoreboard objectives add pool.ct dummy
 # the earliest event found for a ball as the first of a pair: absolute time in the tick
-# (1/10000 tick, 20000 = none), kind (1 ball, 2 cushion, 3 pocket), rail, partner's pool.id
+# (1/10000 tick, 20000 = none), kind (1 ball, 2 cushion, 3 pocket), rail (read with kinds 2 and 3),
+# partner's pool.id (read with kind 1)
 scoreboard objectives add pool.nt dummy
 scoreboard objectives add pool.nk dummy
 scoreboard objectives add pool.nr dummy
@@ -93,7 +94,8 @@ scoreboard players set #100000000 pool.const 100000000
 # ball radius R = 28.575 mm; 2R = 57150 um
 scoreboard players set $R pool.const 28575
 scoreboard players set $2R pool.const 57150
-# centre distance at which the swept test reports a contact: 2R + 20 um (see pool:physics/sweep/pair)
+# centre distance at which the swept test reports a contact: 2R + 20 um (see
+# pool:physics/detect/sweep/pair)
 scoreboard players set $contact pool.const 57170
 # playing area 2.54 m x 1.27 m
 scoreboard players set $L pool.const 2540000
@@ -105,8 +107,9 @@ scoreboard players set $side_open pool.const 65000
 scoreboard players set $mu_s_g pool.const 4905
 # rolling resistance mu_r g = 0.01 * 9.81 m/s^2 = 24525 (0.01 um/tick^2)
 scoreboard players set $mu_r_g pool.const 24525
-# a whole tick of rolling (pool:ball/roll/whole_tick): the distance lost, mu_r g / 2 rounded as
-# pool:math/div_round rounds it, and the speed 2 mu_r g from which the ball cannot stop within it
+# a whole tick of rolling (pool:physics/motion/roll/whole_tick): the distance lost, mu_r g / 2
+# rounded as pool:math/div_round rounds it, and the speed 2 mu_r g from which the ball cannot stop
+# within it
 scoreboard players operation $mu_r_g_half pool.const = $mu_r_g pool.const
 scoreboard players add $mu_r_g_half pool.const 1
 scoreboard players operation $mu_r_g_half pool.const /= #2 pool.const
@@ -119,10 +122,10 @@ scoreboard players set $e_cushion pool.const 8500
 scoreboard players set $mu_cushion pool.const 2000
 
 # commands a game tick may spend on the table's physics, as pool:physics/step estimates them
-# (#work): the issue's budget is 5000 per tick; the rest of a physics tick carries over
+# (#cost.work): the issue's budget is 5000 per tick; the rest of a physics tick carries over
 scoreboard players set $budget pool.const 4400
-# pool:physics/sweep/unit remembers its last result: forget it, the reloaded math may differ
-scoreboard players reset #unit.x pool.tmp
+# pool:physics/detect/sweep/unit remembers its last result: forget it, the reloaded math may differ
+scoreboard players reset #sweep.unit.x pool.tmp
 
 # Game state (public): $resting pool.game is 1 when no ball moves; $pocketed counts pocketed balls
 # and $last_pocketed holds the number of the last one; the table corner $origin.x/y/z is in mm;

@@ -5,9 +5,10 @@
 # centre in per mille of the radius, with tip_x^2 + tip_y^2 <= 500^2 (the miscue limit);
 # elevation: cue butt raised, centidegrees 0..8900. All integers. A shot out of range, or while
 # balls move, is refused with a message and changes nothing.
-$scoreboard players set #in.angle pool.tmp $(angle)
-$scoreboard players set #in.speed pool.tmp $(speed)
-$scoreboard players set #in.tip_x pool.tmp $(tip_x)
-$scoreboard players set #in.tip_y pool.tmp $(tip_y)
-$scoreboard players set #in.elevation pool.tmp $(elevation)
+# Reads: the macro arguments. Writes: #api.* pool.tmp; through pool:api/shot/apply.
+$scoreboard players set #api.angle pool.tmp $(angle)
+$scoreboard players set #api.speed pool.tmp $(speed)
+$scoreboard players set #api.tip_x pool.tmp $(tip_x)
+$scoreboard players set #api.tip_y pool.tmp $(tip_y)
+$scoreboard players set #api.elevation pool.tmp $(elevation)
 return run function pool:api/shot/apply

@@ -1,8 +1,10 @@
-# pool:math/sincos/octant_upper — #s = sin r, #c = cos r for 4500 < r < 9000 via the complement.
-# Reads: #r pool.math. Writes: #s #c pool.math; temporaries of pool:math/sincos/octant.
-scoreboard players operation #r pool.math *= #-1 pool.const
-scoreboard players add #r pool.math 9000
+# pool:math/sincos/octant_upper — #sincos.s = sin r, #sincos.c = cos r for 4500 < r < 9000 via the
+# complement.
+# Reads: #sincos.r pool.math. Writes: #sincos.s #sincos.c pool.math; temporaries of
+# pool:math/sincos/octant.
+scoreboard players operation #sincos.r pool.math *= #-1 pool.const
+scoreboard players add #sincos.r pool.math 9000
 function pool:math/sincos/octant
-scoreboard players operation #r pool.math = #s pool.math
-scoreboard players operation #s pool.math = #c pool.math
-scoreboard players operation #c pool.math = #r pool.math
+scoreboard players operation #sincos.r pool.math = #sincos.s pool.math
+scoreboard players operation #sincos.s pool.math = #sincos.c pool.math
+scoreboard players operation #sincos.c pool.math = #sincos.r pool.math

@@ -4,7 +4,7 @@ $summon item_display ~ ~ ~ {Tags:["pool.ball","pool.new"],teleport_duration:1,it
 $scoreboard players set @e[tag=pool.new] pool.id $(id)
 $scoreboard players set @e[tag=pool.new] pool.x $(x)
 $scoreboard players set @e[tag=pool.new] pool.z $(z)
-execute as @e[tag=pool.new] run function pool:ball/roll/stop
+execute as @e[tag=pool.new] run function pool:physics/motion/roll/stop
 scoreboard players set @e[tag=pool.new] pool.wy 0
-execute as @e[tag=pool.new] run function pool:ball/display/place
+execute as @e[tag=pool.new] run function pool:physics/display/place
 tag @e[tag=pool.new] remove pool.new

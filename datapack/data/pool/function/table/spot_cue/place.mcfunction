@@ -3,6 +3,6 @@
 tag @s remove pool.settled
 scoreboard players set @s pool.x 635000
 scoreboard players set @s pool.z 635000
-function pool:ball/roll/stop
+function pool:physics/motion/roll/stop
 scoreboard players set @s pool.wy 0
-function pool:ball/display/place
+function pool:physics/display/place

@@ -1,7 +1,0 @@
-# pool:ball/advance — move @s forward by #step pool.tmp (1/10000 tick) under its current phase,
-# crossing the end of sliding (the snap) or of rolling; side spin decays meanwhile.
-# Reads: #step pool.tmp; @s ball scores. Writes: @s ball scores; temporary #f #rest pool.tmp.
-scoreboard players operation #f pool.tmp = #step pool.tmp
-function pool:ball/spin/advance
-execute if score @s pool.state matches 1 run return run function pool:ball/slide/advance_split
-execute if score @s pool.state matches 2 run function pool:ball/roll/advance

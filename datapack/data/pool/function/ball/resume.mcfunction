@@ -1,4 +1,0 @@
-# pool:ball/resume — after its event @s goes on from #now: save that state and mark it dirty.
-# Reads: #now pool.tmp. Writes: @s saved scores, tag pool.dirty.
-function pool:ball/save
-tag @s add pool.dirty

@@ -1,7 +1,0 @@
-# pool:ball/roll/whole_tick — pool:ball/roll/advance for a whole tick (#f = 10000) of a ball too
-# fast to stop within it (spd >= $roll_tick_min): its formulas with f = 10000, the same integers.
-# Reads/writes: as pool:ball/roll/advance.
-scoreboard players operation @s pool.s += @s pool.spd
-scoreboard players operation @s pool.s -= $mu_r_g_half pool.const
-scoreboard players operation @s pool.spd -= $mu_r_g pool.const
-function pool:ball/roll/place

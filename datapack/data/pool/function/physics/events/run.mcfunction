@@ -1,0 +1,31 @@
+# pool:physics/events/run — resolve the earliest event (time #events.te, on the moving balls tagged
+# by pool:physics/events/take) when its estimated cost still fits in this game tick's $budget, else
+# carry the physics tick over: its balls are rewound to #events.te, resolved, and go on from there.
+# Reads/writes: #events.te #events.kind #events.partner #events.now #cost.work #events.same
+# pool.tmp, $carry pool.game, the event's balls; tags pool.event pool.event_b, pool.settled (removed
+# from the event's balls).
+execute if score #events.kind pool.tmp matches 1 as @e[tag=pool.ball] if score @s pool.id = #events.partner pool.tmp run tag @s add pool.event_b
+# the resolution and restarts about 900 commands, plus each ball's rewind from its saved time
+scoreboard players set #cost.next pool.tmp 900
+execute as @e[tag=pool.event] run function pool:physics/events/cost/rewind
+execute as @e[tag=pool.event_b] run function pool:physics/events/cost/rewind
+scoreboard players operation #cost.next pool.tmp += #cost.work pool.tmp
+execute if score #cost.next pool.tmp > $budget pool.const run return run scoreboard players set $carry pool.game 1
+scoreboard players operation #cost.work pool.tmp = #cost.next pool.tmp
+# the searches of this sub-step are used up (a game tick that carried the event over skips them)
+tag @e[tag=pool.found] remove pool.found
+tag @e[tag=pool.fresh] remove pool.fresh
+tag @e[tag=pool.event] remove pool.settled
+tag @e[tag=pool.event_b] remove pool.settled
+execute as @e[tag=pool.event] run function pool:physics/events/rewind
+execute as @e[tag=pool.event_b] run function pool:physics/events/rewind
+execute as @e[tag=pool.event,limit=1] run function pool:physics/resolve
+# events at one same instant, one after another (#events.same): a guard against a pair found again
+# and again
+execute if score #events.te pool.tmp = #events.now pool.tmp run scoreboard players add #events.same pool.tmp 1
+execute unless score #events.te pool.tmp = #events.now pool.tmp run scoreboard players set #events.same pool.tmp 0
+scoreboard players operation #events.now pool.tmp = #events.te pool.tmp
+execute as @e[tag=pool.event] run function pool:physics/events/resume
+execute as @e[tag=pool.event_b] run function pool:physics/events/resume
+function pool:physics/detect/mark_stale
+scoreboard players add #events.count pool.tmp 1

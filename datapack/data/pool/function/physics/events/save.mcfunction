@@ -1,0 +1,18 @@
+# pool:physics/events/save — copy @s's changing state into the saved objectives (pool.b*), at time
+# #events.now.
+# Reads: #events.now pool.tmp, @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.wy pool.tau
+# pool.s pool.spd pool.state. Writes: @s pool.bx ... pool.bstate, pool.bt (the time).
+# The phase constants (ax az rx rz dx dz x0 z0) change only when a phase starts, which
+# pool:physics/motion/advance redoes identically after a restore.
+scoreboard players operation @s pool.bx = @s pool.x
+scoreboard players operation @s pool.bz = @s pool.z
+scoreboard players operation @s pool.bvx = @s pool.vx
+scoreboard players operation @s pool.bvz = @s pool.vz
+scoreboard players operation @s pool.bwx = @s pool.wx
+scoreboard players operation @s pool.bwz = @s pool.wz
+scoreboard players operation @s pool.bwy = @s pool.wy
+scoreboard players operation @s pool.btau = @s pool.tau
+scoreboard players operation @s pool.bs = @s pool.s
+scoreboard players operation @s pool.bspd = @s pool.spd
+scoreboard players operation @s pool.bstate = @s pool.state
+scoreboard players operation @s pool.bt = #events.now pool.tmp

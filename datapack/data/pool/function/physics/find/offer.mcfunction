@@ -1,9 +1,0 @@
-# pool:physics/find/offer — the contact of ball @s (which keeps its chord) with the ball tagged
-# pool.self (a new chord) becomes @s's stored event if it is earlier than the one @s has.
-# Reads: @s pool.nt, #a.id pool.tmp. Writes: @s pool.nt pool.nk pool.np; through
-# pool:physics/find/contact.
-execute unless function pool:physics/find/contact run return 0
-execute if score #t pool.tmp >= @s pool.nt run return 0
-scoreboard players operation @s pool.nt = #t pool.tmp
-scoreboard players set @s pool.nk 1
-scoreboard players operation @s pool.np = #a.id pool.tmp

@@ -1,6 +1,0 @@
-# pool:physics/separate/pushed — start a pass over the balls that the last pass pushed: they are
-# tagged pool.again (pool:physics/separate/passes goes through them).
-# Writes: tags pool.again, pool.shifted (removed); #passes pool.tmp.
-tag @e[tag=pool.shifted,scores={pool.state=0..2}] add pool.again
-tag @e[tag=pool.shifted] remove pool.shifted
-scoreboard players add #passes pool.tmp 1

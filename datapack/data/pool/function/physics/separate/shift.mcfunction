@@ -1,9 +1,0 @@
-# pool:physics/separate/shift — move @s by (#sx, #sz) um, its rolling line (x0, z0) with it.
-# Reads: #sx #sz pool.tmp. Writes: @s pool.x pool.z pool.x0 pool.z0; tag pool.settled removed,
-# tag pool.shifted (pool:physics/separate/pushed looks at it again).
-tag @s remove pool.settled
-tag @s add pool.shifted
-scoreboard players operation @s pool.x += #sx pool.tmp
-scoreboard players operation @s pool.z += #sz pool.tmp
-scoreboard players operation @s pool.x0 += #sx pool.tmp
-scoreboard players operation @s pool.z0 += #sz pool.tmp
