@@ -55,6 +55,8 @@ def parse_set(text: str) -> tuple[str, str, int]:
     parts = text.split()
     if len(parts) != 3:
         raise click.BadParameter(f"--set {text!r}: expected \"HOLDER OBJECTIVE VALUE\"")
+    if parts[0].startswith("@") or parts[0] == "*":
+        raise click.BadParameter(f"--set {text!r}: HOLDER is a name (a player, #fake or $fake), not a selector")
     return parts[0], parts[1], _int32(parts[2], "--set value")
 
 
@@ -117,6 +119,9 @@ def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[s
     for name in order:
         if name == "set_":
             holder, objective, value = next(sets_iter)
+            if objective not in emu.state.scoreboard.objectives:
+                raise click.UsageError(f"--set {holder} {objective} {value}: no objective {objective!r} "
+                                       "(the packs' load did not create it)")
             emu.set_score(holder, objective, value)
         else:
             function, arguments = next(calls_iter)
@@ -124,11 +129,27 @@ def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[s
     return load_commands
 
 
+def load_or_usage_error(emu: Emulator, packs, mc_version: str | None) -> Emulator:
+    """``emu`` with ``packs`` loaded; an unknown --mc is a usage error. The load's errors and
+    warnings are printed (a pack the version ignores says so), its infos are not."""
+    try:
+        emu.load(list(packs), mc_version)
+    except ValueError as error:
+        raise click.BadParameter(str(error), param_hint="--mc") from None
+    for diag in emu.load_diagnostics:
+        if diag.severity != "info":
+            click.echo(diag.format(), err=True)
+    return emu
+
+
+_MAX_TICKS = 2**31 - 1  # the game counts ticks in a long; a run this long is a typo, not a plan
+
+
 def run_options(command):
     """The arguments ``dpemu run`` and ``dpemu profile`` share: PACKS, --ticks, --call, --set, --until."""
     decorators = [
         click.argument("packs", nargs=-1, required=True, type=PackPath()),
-        click.option("--ticks", default=1, show_default=True, type=click.IntRange(min=0), help="Ticks to run."),
+        click.option("--ticks", default=1, show_default=True, type=click.IntRange(0, _MAX_TICKS), help="Ticks to run."),
         click.option("--call", multiple=True, metavar='FN|"FN {ARGS}"',
                      help="Call a function (as the server) before ticking; macro arguments in SNBT."),
         click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking."),

@@ -3,17 +3,20 @@ report."""
 from __future__ import annotations
 
 import csv
+import io
 import json
 import sys
 import time
-from contextlib import nullcontext
 
 import click
 
 from emulator.api import Emulator
 from emulator.cli.options import (
-    OrderedCommand, Until, Watch, apply_setup, parse_call, parse_player, parse_set, parse_until, parse_watch, run_options,
+    OrderedCommand, Until, Watch, apply_setup, load_or_usage_error, parse_call, parse_player, parse_set, parse_until,
+    parse_watch, run_options,
 )
+from emulator.cli.outcome import exit_status, fail_option, has_errors, interruptible, progress
+from emulator.cli.params import OutputPath, write_output
 
 PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
 
@@ -23,14 +26,15 @@ PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
 @click.option("--watch", multiple=True, metavar='"HOLDER OBJ"', help="Report this score (and per tick in --csv).")
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 @click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
-@click.option("--json", "json_out", metavar="FILE|-", help="Write the results as JSON.")
-@click.option("--csv", "csv_out", metavar="FILE", type=click.Path(dir_okay=False), help="Watched values per tick.")
+@click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the results as JSON.")
+@click.option("--csv", "csv_out", type=OutputPath(), metavar="FILE|-", help="Watched values per tick.")
 @click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")
 @click.option("--player", "players", multiple=True, metavar="NAME@X,Y,Z[,YAW,PITCH]",
               help="Add a simulated player before anything runs.")
 @click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
+@fail_option
 def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
-        shuffle) -> None:
+        shuffle, no_fail) -> None:
     """Emulate PACKS: run #minecraft:load, apply --set and --call in order, then run --ticks ticks."""
     sets = [parse_set(s) for s in set_]
     calls = [parse_call(c) for c in call]
@@ -39,45 +43,43 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
     if stop and stop.watch not in watches:
         watches.append(stop.watch)
     players = [parse_player(p) for p in players]
-    emu = Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle)
-    try:
-        emu.load(list(packs), mc_version)
-    except ValueError as error:  # an unknown --mc version
-        raise click.BadParameter(str(error), param_hint="--mc") from None
+    emu = load_or_usage_error(Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle), packs, mc_version)
     for name, pos, rotation in players:
         emu.add_player(name, pos, rotation)
-    for diag in emu.load_diagnostics:
-        if diag.severity == "error":
-            click.echo(diag.format(), err=True)
 
     started = time.perf_counter()
-    load_commands = apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
-    rows = _tick(emu, ticks, watches, stop)
+    rows: list[list] = []
+    load_commands = 0
+    with interruptible() as stopped:
+        load_commands = apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+        _tick(emu, ticks, watches, stop, rows)
     wall = time.perf_counter() - started
 
     report = _report(emu, watches, stop, wall, load_commands)
-    _print_summary(report, emu, to_stderr=json_out == "-")
-    if json_out:
-        _write_json(json_out, report)
-    if csv_out:
-        with open(csv_out, "w", newline="") as handle:
-            writer = csv.writer(handle)
-            writer.writerow(["tick", *(w.label for w in watches)])
-            writer.writerows(rows)
+    _print_summary(report, emu, to_stderr="-" in (json_out, csv_out))
+    outputs = ((json_out, lambda: json.dumps(report, indent=1) + "\n"), (csv_out, lambda: _csv(watches, rows)))
+    written = all([write_output(path, text()) for path, text in outputs if path])
+    problems = has_errors(emu.load_diagnostics) or has_errors(emu.diagnostics) or bool(emu.overflows)
+    sys.exit(exit_status(problems, no_fail, written, stopped[0]))
 
 
-def _tick(emu: Emulator, ticks: int, watches: list[Watch], stop: Until | None) -> list[list]:
-    rows: list[list] = []
-    bar = click.progressbar(length=ticks, label="ticks", file=sys.stderr) if ticks >= PROGRESS_MIN_TICKS else None
-    with bar if bar is not None else nullcontext():
+def _tick(emu: Emulator, ticks: int, watches: list[Watch], stop: Until | None, rows: list[list]) -> None:
+    """Run the ticks, a row of watched values after each (kept in ``rows`` even if interrupted)."""
+    with progress(ticks, "ticks", PROGRESS_MIN_TICKS) as bar:
         for _ in range(ticks):
             emu.tick()
             rows.append([emu.ticks, *(_value(emu, w) for w in watches)])
-            if bar is not None:
-                bar.update(1)
+            bar.update(1)
             if stop and stop.met(emu):
                 break
-    return rows
+
+
+def _csv(watches: list[Watch], rows: list[list]) -> str:
+    out = io.StringIO()
+    writer = csv.writer(out, lineterminator="\n")
+    writer.writerow(["tick", *(w.label for w in watches)])
+    writer.writerows(rows)
+    return out.getvalue()
 
 
 def _value(emu: Emulator, w: Watch):
@@ -132,12 +134,3 @@ def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:
         click.echo(diag.format(), err=True)
     if len(emu.diagnostics) > len(shown):
         click.echo(f"... and {len(emu.diagnostics) - len(shown)} more diagnostics", err=True)
-
-
-def _write_json(target: str, report: dict) -> None:
-    text = json.dumps(report, indent=1)
-    if target == "-":
-        click.echo(text)
-    else:
-        with open(target, "w") as handle:
-            handle.write(text + "\n")

@@ -109,7 +109,8 @@ def test_bad_arguments_are_clean_errors(pack, args, message):
 def test_runtime_errors_are_reported_not_raised(pack, tmp_path):
     out = tmp_path / "r.json"
     result = invoke(pack, "--ticks", "1", "--call", "t:missing", "--json", str(out))
-    assert result.exit_code == 0
+    assert result.exit_code == 1  # the run had an error (README: exit codes)
+    assert invoke(pack, "--ticks", "1", "--call", "t:missing", "--no-fail-on-diagnostics").exit_code == 0
     report = json.loads(out.read_text())
     assert report["diagnostics"][0]["message"] == "Unknown function t:missing"
     assert report["scores"]["o"]["#n"] == 10
