@@ -188,25 +188,19 @@ def _totals_from_stacks(stacks: dict, root_calls: Counter) -> dict[str, int]:
     return {f: c for f, c in totals.items() if c}
 
 
-def _vm_ops() -> dict[int, str]:
-    from emulator.vm import loop as vm
-
-    return {value: name[3:].lower() for name, value in vars(vm).items()
-            if name.startswith("OP_") and isinstance(value, int)}
-
-
 def _vm_instructions(backend) -> dict[tuple[str, int], list[dict]]:
     """Per source line, the cost charged at each VM instruction (an execute stage, the final
     command, a call), in code order."""
     import numpy as np
 
+    from emulator.vm.opcodes import BY_CODE
+
     rows = backend.program.rows
-    names = _vm_ops()
     out: dict[tuple[str, int], list[dict]] = defaultdict(list)
     for pc in np.flatnonzero(backend.counts):
         loc = backend.program.locs[pc]
         if loc is not None:
-            out[(loc.path, loc.line)].append({"op": names.get(rows[pc][0], str(rows[pc][0])),
+            out[(loc.path, loc.line)].append({"op": BY_CODE[rows[pc][0]].name,
                                               "count": int(backend.counts[pc])})
     return dict(out)
 
@@ -227,7 +221,7 @@ def _vm_calls(backend, roots: RootLog) -> dict[str, int]:
 
 
 # what each host opcode hands to Python, as the profile names it
-HOST_KINDS = {"host": "command", "hoststage": "stage", "hoststore": "store"}
+HOST_KINDS = {"HOST": "command", "HOSTSTAGE": "stage", "HOSTSTORE": "store"}
 
 
 def _vm_host(backend, sources: dict) -> list[dict]:
@@ -236,14 +230,14 @@ def _vm_host(backend, sources: dict) -> list[dict]:
     the ops it served, not from the VM's charged counts: a store is never charged, so the counts
     would hide a host-run store."""
     from emulator.profile.data import base_function
+    from emulator.vm.opcodes import BY_CODE
 
     code = backend.program.rows
-    names = _vm_ops()
     runs: Counter = Counter()
     for pc, count in backend.host_runs.items():
         host_op = backend.program.host_ops[code[pc][1]]
         loc = host_op.node.loc
-        runs[(base_function(host_op.function), loc.path, loc.line, HOST_KINDS[names[code[pc][0]]])] += count
+        runs[(base_function(host_op.function), loc.path, loc.line, HOST_KINDS[BY_CODE[code[pc][0]].name])] += count
     rows = [{"function": function, "path": path, "line": line, "op": op, "command": _source(sources, path, line),
              "count": count} for (function, path, line, op), count in runs.items()]
     return sorted(rows, key=lambda r: (-r["count"], r["path"], r["line"]))

@@ -16,6 +16,7 @@ from emulator.runtime.backend import RootResult, report_quota_cut
 from emulator.vm.compiler import Compiler
 from emulator.vm.entity_arrays import EntityMirror
 from emulator.vm.host import Host, StoreTarget, resolves_target
+from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import Program
 from emulator.reference.failure import CommandFailure
 from emulator.runtime.macros import MacroExpander
@@ -39,7 +40,8 @@ _ERROR_TEXT = {
     vm.ERR_MACRO_ARGS: "Function {} needs macro arguments",
     vm.ERR_FORK_LIMIT: "Maximum number of contexts ({}) reached",
 }
-_SANITIZER_OPS = {**{v: k for k, v in vm.OPK_BY_SYMBOL.items()}, vm.SAN_ADD_CMD: "add", vm.SAN_REMOVE_CMD: "remove"}
+_SANITIZER_OPS = {**{k: symbol for symbol, k in OPERATION_KINDS.items()}, vm.SAN_ADD_CMD: "add",
+                  vm.SAN_REMOVE_CMD: "remove"}
 
 
 class NumbaBackend:

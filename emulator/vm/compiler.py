@@ -11,7 +11,7 @@ use). Everything else is a host op run by
 execute stage (``OP_HOSTSTAGE``: ``as``, ``positioned``, ``if entity`` ...; it sets the
 context the rest of the chain runs in) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
 
-Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.loop`)::
+Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.opcodes`)::
 
     scoreboard players add #a o 1      ADD h o 1                       (charges 1 itself)
     function f                         CALL f                          (charges 1 itself)
@@ -30,6 +30,7 @@ from __future__ import annotations
 from typing import Callable
 
 from emulator.vm import loop as vm
+from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import HostOp, MacroCall, Program
 from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
@@ -114,7 +115,7 @@ class Compiler:
             self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
         elif isinstance(cmd, ScoreOperation) and self.vm_holders(cmd.targets) and self.vm_holders(cmd.sources):
             h, h2 = self.holders(cmd.targets), self.holders(cmd.sources, sources=True)
-            self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], h, self.objective(cmd.objective), h2,
+            self.emit(vm.FIRST_OPERATION + OPERATION_KINDS[cmd.op], h, self.objective(cmd.objective), h2,
                       self.objective(cmd.source_objective))
         elif isinstance(cmd, ScoreEnable) and self.vm_holders(cmd.targets):
             h = self.holders(cmd.targets)
