@@ -15,7 +15,7 @@ the one documented in :mod:`emulator.runtime.backend`.
 Machine state lives in arrays owned by Python so the loop can return (for a host command, a macro
 instantiation, contexts to make, a full frame stack, a runtime error, a full buffer) and resume:
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
-scoreboard ``values``/``present``/``locked``/``alive``, the per-instruction ``counts``, the
+scoreboard ``values``/``present``/``locked``/``alive``/``writable``, the per-instruction ``counts``, the
 sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, per context its executor's holder,
 slot and position (``ctx_holder``, ``ctx_entity``, ``ctx_pos``), and the entities
 (:mod:`emulator.vm.entity_arrays`: ``ent``, ``epos``, ``edirty``, ``eorder``, with the selector
@@ -347,9 +347,9 @@ def _clamp_pos(v, limit):
 
 
 @njit(cache=True, error_model="numpy")
-def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, trig, counts, totals, active, ovf,
-        ctx_holder, ctx_entity, ctx_pos, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack, coll,
-        as_cache):
+def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
+        active, ovf, ctx_holder, ctx_entity, ctx_pos, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack,
+        coll, as_cache):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -409,7 +409,9 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 ok = 0
                 val = 0
                 pc += 1
-                if alive_obj[o] == 0 or alive_obj[o2] == 0:
+                if writable[o] == 0 or alive_obj[o2] == 0:  # o unknown or read-only, or o2 unknown
+                    if alive_obj[o] and writable[o] == 0:  # ObjectiveArgument.getWritableObjective: read-only
+                        continue
                     err = ERR_UNKNOWN_OBJECTIVE
                     errarg = o if alive_obj[o] == 0 else o2
                     status = ST_ERROR
@@ -463,7 +465,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             val = 0
             pc += 1
             # the game's argument order: targets, target objective, sources, source objective
-            if nt == 0 or (alive_obj[o] != 0 and ns == 0):
+            if nt == 0 or (alive_obj[o] != 0 and (writable[o] == 0 or ns == 0)):  # (read-only)
                 continue
             if alive_obj[o] == 0 or alive_obj[o2] == 0:
                 err = ERR_UNKNOWN_OBJECTIVE
@@ -534,7 +536,9 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             pc += 1
             if n == 0:  # "No entity was found"
                 continue
-            if alive_obj[o] == 0:
+            if writable[o] == 0:
+                if alive_obj[o]:  # ObjectiveArgument.getWritableObjective: read-only
+                    continue
                 err = ERR_UNKNOWN_OBJECTIVE
                 errarg = o
                 status = ST_ERROR

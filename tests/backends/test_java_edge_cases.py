@@ -12,6 +12,7 @@ import math
 import pytest
 
 from emulator.world.semantics import INT_MAX, INT_MIN, double_to_int, double_to_long, mth_floor
+from emulator.world.state import READ_ONLY_CRITERIA
 from tests.backends.programs import run_root, write_pack
 
 SETUP = "scoreboard objectives add o dummy\n"
@@ -363,3 +364,36 @@ COST_CASES = [
 def test_cost_edge_case(tmp_path, backend, case_id, body, cost):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
     assert run_root(backend, pack, "t:main").cost == cost
+
+
+# ScoreboardCommand's set/add/remove and operation's target read their objective with
+# ObjectiveArgument.getWritableObjective, which throws "Scoreboard objective '%s' is read-only" for
+# a read-only criterion (ObjectiveCriteria.isReadOnly: health, food, air, armor, xp, level): the
+# command fails and writes nothing, on a name, @s or a selector alike. The other objective
+# arguments use getObjective: an operation's source, `store ... score` and `reset` accept them.
+READ_ONLY_BODY = (
+    "execute store result score #b ro run scoreboard players set #x o 5\n"
+    "execute store success score #set o run scoreboard players set #b ro 9\n"
+    "execute store success score #add o run scoreboard players add #b ro 3\n"
+    "execute store success score #remove o run scoreboard players remove #b ro 1\n"
+    "execute store success score #op o run scoreboard players operation #b ro += #x o\n"
+    'summon marker 0 0 0 {Tags:["m"]}\n'
+    "execute as @e[tag=m] store success score #self o run scoreboard players add @s ro 1\n"
+    "execute store success score #sel o run scoreboard players set @e[tag=m] ro 1\n"
+    "execute store success score #many o run scoreboard players operation @e[tag=m] ro = #x o\n"
+    "scoreboard players operation #c o += #b ro\n"
+    "execute store success score #reset o run scoreboard players reset #gone ro\n"
+)
+
+
+@pytest.mark.parametrize("criterion", sorted(READ_ONLY_CRITERIA))
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_read_only_objectives_refuse_writes(tmp_path, backend, criterion):
+    pack = write_pack(tmp_path / "pack", {"t:main": f"{SETUP}scoreboard objectives add ro {criterion}\n"
+                                                    + READ_ONLY_BODY})
+    outcome = run_root(backend, pack, "t:main")
+    assert outcome.scores["ro"] == {"#b": 5}
+    failed = ("#set", "#add", "#remove", "#op", "#self", "#sel", "#many")
+    assert {h: outcome.scores["o"].get(h) for h in (*failed, "#c", "#x", "#reset")} == {
+        **dict.fromkeys(failed, 0), "#c": 5, "#x": 5, "#reset": 1}
+    assert outcome.diagnostics == ()
