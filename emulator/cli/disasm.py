@@ -58,6 +58,8 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
         return _COMPARISON_NAMES[value]
     if kind == "n":
         return program.names[value]
+    if kind == "l":
+        return program.dimensions[value]
     if kind == "p":
         return f"->{value}"
     if kind == "x":

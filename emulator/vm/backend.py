@@ -22,7 +22,7 @@ from emulator.reference.failure import CommandFailure
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
 from emulator.world.state import Context, Frame, Overflow, WorldState
-from emulator.world import nbt_ops
+from emulator.world import modifiers, nbt_ops
 from emulator.world.errors import CommandFailure as WorldFailure
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
@@ -76,6 +76,7 @@ class NumbaBackend:
         self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
         self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
         self.ctx_pos = np.zeros((16, 3), dtype=np.float64)  # per context: its position
+        self.ctx_dim = np.zeros(16, dtype=np.int64)  # per context: its dimension (Program.intern_dimension)
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
@@ -140,7 +141,7 @@ class NumbaBackend:
             sels, tests = mirror.selector_arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             sb.writable, self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
-                            self.ctx_entity, self.ctx_pos, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
+                            self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
                             self.selbuf, self.logbuf, self.fstack, self.coll, self.as_cache)
             if r[vm.R_EDIRTY]:
                 mirror.store()
@@ -269,7 +270,9 @@ class NumbaBackend:
                 self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
                 self.ctx_entity = np.concatenate([self.ctx_entity, np.full(index + 1, -1, dtype=np.int64)])
                 self.ctx_pos = np.concatenate([self.ctx_pos, np.zeros((index + 1, 3))])
+                self.ctx_dim = np.concatenate([self.ctx_dim, np.zeros(index + 1, dtype=np.int64)])
             self.ctx_pos[index] = ctx.pos
+            self.ctx_dim[index] = self.program.intern_dimension(ctx.dimension)
             entity = world_entities.executor(self.state, ctx)
             self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
             self.ctx_entity[index] = -1 if entity is None else entity.order
@@ -297,6 +300,8 @@ class NumbaBackend:
             made = None if target is None else [ctx]
             if target is not None:
                 bindings = self._bind(index, node, target)
+        elif isinstance(node, modifiers.MODIFIERS):
+            made = [modifiers.modified(node, ctx, world_entities.executor(self.state, ctx))]
         else:
             made = self.host.run_stage(node, ctx)
         if made is None:  # the stage failed: the command, or in a forked chain this context

@@ -17,7 +17,7 @@ instantiation, contexts to make, a full frame stack, a runtime error, a full buf
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
 scoreboard ``values``/``present``/``locked``/``alive``/``writable``, the per-instruction ``counts``, the
 sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, per context its executor's holder,
-slot and position (``ctx_holder``, ``ctx_entity``, ``ctx_pos``), and the entities
+slot, position and dimension (``ctx_holder``, ``ctx_entity``, ``ctx_pos``, ``ctx_dim``), and the entities
 (:mod:`emulator.vm.entity_arrays`: ``ent``, ``epos``, ``edirty``, ``eorder``, with the selector
 tables ``sels``/``tests`` and the scratch ``selbuf`` for what a selector finds). Registers that
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
@@ -95,50 +95,52 @@ OP_SELHOLDERS = 17  # a: selector, b: 0 targets / 1 sources. The holders of the 
 OP_IFSCORE = 18  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 19  # a h, b o, c lo, d hi, f negated, g final
 OP_IFENT = 20  # a: selector, f negated, g final. `if|unless entity SEL`
-OP_CHKOBJ = 21  # a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or (c)
+OP_IFDIM = 21  # a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the context's dimension
+# (ctx_dim) is D
+OP_CHKOBJ = 22  # a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or (c)
 # without an executor ("No entity was found": the command, or in a forked chain this context)
-OP_STORE = 22  # a: 0 result / 1 success, b h (a name or @s), c o
-OP_CALL = 23  # a: function id
-OP_CALLREG = 24  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
-OP_FEND = 25  # end of a function body: return without a result
-OP_RETV = 26  # a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain every
+OP_STORE = 23  # a: 0 result / 1 success, b h (a name or @s), c o
+OP_CALL = 24  # a: function id
+OP_CALLREG = 25  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
+OP_FEND = 26  # end of a function body: return without a result
+OP_RETV = 27  # a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain every
 # context returns (BuildContexts runs the custom command for each one): RETV counts the returns in R_NRET and goes on;
 # the chain's RETPEND then ends the function
-OP_RETFAIL = 27  # b: as RETV. `return fail`
-OP_RETRES = 28  # end of `return run CMD`: return CMD's result (fail if it had none)
-OP_RETNONE = 29  # abort target of `return run`: end the function without a result
-OP_RETPEND = 30  # after a forked chain ending in `return N|fail`: return, if some context did
-OP_RETIFHAS = 31  # a: pc after the calls. `return run function #tag`: a member that returned skips the later members
+OP_RETFAIL = 28  # b: as RETV. `return fail`
+OP_RETRES = 29  # end of `return run CMD`: return CMD's result (fail if it had none)
+OP_RETNONE = 30  # abort target of `return run`: end the function without a result
+OP_RETPEND = 31  # after a forked chain ending in `return N|fail`: return, if some context did
+OP_RETIFHAS = 32  # a: pc after the calls. `return run function #tag`: a member that returned skips the later members
 # (the discard drops them); the chain's stores and RETRES follow
-OP_IFFN_STEP = 32  # a: pc after the calls. A returned member ends the isolated call
-OP_IFNOFN = 33  # a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no context) skips
+OP_IFFN_STEP = 33  # a: pc after the calls. A returned member ends the isolated call
+OP_IFNOFN = 34  # a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no context) skips
 # the rest of the call (the command fails)
-OP_TAGBEGIN = 34  # acc_any = 0, acc_sum = 0
-OP_TAGACC = 35  # add the last call's result to the accumulator
-OP_TAGEND = 36  # the tag's result: the sum, if any member returned
-OP_IFFN_BEGIN = 37  # has = 0
-OP_IFFN_END = 38  # a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that returned
+OP_TAGBEGIN = 35  # acc_any = 0, acc_sum = 0
+OP_TAGACC = 36  # add the last call's result to the accumulator
+OP_TAGEND = 37  # the tag's result: the sum, if any member returned
+OP_IFFN_BEGIN = 38  # has = 0
+OP_IFFN_END = 39  # a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that returned
 # in several contexts passes the context once per return (ST_REPEAT)
-OP_FAIL = 39  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
-OP_RESULT = 40  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
-OP_JMPDEAD = 41  # a: target. `run return run ...` with no context left: skip it
-OP_STOP = 42  # abort the chain without an error (`if function` on an empty tag)
-OP_STOREPOS = 43  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
-OP_MACRO = 44  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
-OP_HOSTSTAGE = 45  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
-OP_HOSTSTORE = 46  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 47  # a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as,
+OP_FAIL = 40  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
+OP_RESULT = 41  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
+OP_JMPDEAD = 42  # a: target. `run return run ...` with no context left: skip it
+OP_STOP = 43  # abort the chain without an error (`if function` on an empty tag)
+OP_STOREPOS = 44  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
+OP_MACRO = 45  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
+OP_HOSTSTAGE = 46  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
+OP_HOSTSTORE = 47  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_ASSTAGE = 48  # a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as,
 # rotated as). One context per entity found: `as` contexts made earlier in the root come from as_cache, the others
 # from Python (ST_FORK)
-OP_POSSTAGE = 48  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
+OP_POSSTAGE = 49  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
 FIRST_LINE, LAST_LINE = 8, 16
-FIRST_CONDITION, LAST_CONDITION = 18, 20
-FIRST_CALL, LAST_CALL = 23, 24
-FIRST_RETURN, LAST_RETURN = 25, 30
-FIRST_RETURNED, LAST_RETURNED = 31, 32
-FIRST_OPERATION, LAST_OPERATION = 49, 57
+FIRST_CONDITION, LAST_CONDITION = 18, 21
+FIRST_CALL, LAST_CALL = 24, 25
+FIRST_RETURN, LAST_RETURN = 26, 31
+FIRST_RETURNED, LAST_RETURNED = 32, 33
+FIRST_OPERATION, LAST_OPERATION = 50, 58
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -348,8 +350,8 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True, error_model="numpy")
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
-        active, ovf, ctx_holder, ctx_entity, ctx_pos, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf, fstack,
-        coll, as_cache):
+        active, ovf, ctx_holder, ctx_entity, ctx_pos, ctx_dim, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf,
+        fstack, coll, as_cache):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -595,6 +597,9 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                             selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
+            elif op == OP_IFDIM:  # ExecuteCommand: the dimension is the source's level
+                passed = (ctx_dim[ctx] == code[pc, 1]) != (code[pc, 6] != 0)
+                fval = 1 if passed else 0
             else:
                 h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
                 o = code[pc, 2] if op == OP_IFMATCH else code[pc, 3]

@@ -9,7 +9,7 @@ disassembler decodes the operands by ``operands``.
 
 - ``name``: what the disassembler and the profiler print.
 - ``operands``: the kind of each slot a..g in order: h holder, o objective, i int, p pc, f function,
-  c comparison, n name, x host op, m macro call, b flag, s selector, d float, _ unused.
+  c comparison, n name, l dimension, x host op, m macro call, b flag, s selector, d float, _ unused.
 - ``cost``: how the instruction charges the quota (the rule in :mod:`emulator.runtime.backend`):
   ``entry`` a command run per context: skipped without one, cut without quota, then charged 1;
   ``stage`` an execute stage: charged once per chain, contexts or not (not again when a fork
@@ -98,6 +98,8 @@ _ROWS = [
         ("IFSCORE", "choho" + "bb", CONDITION, "a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final"),
         ("IFMATCH", "hoii_bb", CONDITION, "a h, b o, c lo, d hi, f negated, g final"),
         ("IFENT", "s____bb", CONDITION, "a: selector, f negated, g final. `if|unless entity SEL`"),
+        ("IFDIM", "l____bb", CONDITION, "a: dimension (Program.dimensions), f negated, g final. `if|unless "
+                                        "dimension D`: the context's dimension (ctx_dim) is D"),
     ]),
     *_single("CHKOBJ", "obb", STAGE, "a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o "
                                      "does not exist, or (c) without an executor (\"No entity was found\": the "

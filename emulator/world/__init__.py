@@ -12,6 +12,7 @@ reference interpreter). Modules:
   holds the JVM's own tables behind ``Mth.atan2``.
 - ``rotation``: directions, local coordinates ``^``, ``facing``, rotation wrapping.
 - ``source``: the execution context (position, rotation, executor, anchor) and coordinate arguments.
+- ``modifiers``: the ``execute`` stages that only move, turn, anchor or re-dimension a context.
 - ``entities``: entity types, the entity store, entity NBT view and loading; ``display`` holds the
   render fields display entities save and how loading reads them.
 - ``selectors``: ``@s @e @a @p @r @n`` with their arguments.
