@@ -41,6 +41,8 @@ MACROS = {
     # Python empties a full buffer, then the instruction runs again
     "FLUSH_IF": "if {0}:\n    status = ST_FLUSH\n    break",
     "FAIL": "err = {0}\nerrarg = {1}\nstatus = ST_ERROR\nbreak",
+    # the command ran (its callbacks hear this result)
+    "RESULT": "has = 1\nok = {0}\nval = {1}",
     # BuildContexts: a stage reaching the fork limit fails the command
     "FORK_LIMIT": "alive = 0\npc = abort\nFAIL(ERR_FORK_LIMIT, forklimit)",
 }
