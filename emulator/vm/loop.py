@@ -29,9 +29,12 @@ selector's holders from OP_SELHOLDERS, emitted just before them.
 The same holds for an ``inline="always"`` helper taking an array when the inlined body branches
 (numba then keeps a reference count increment and decrement per use: the charge preamble
 ``quota -= 1; counts[pc] += 1`` as such a helper halved the loop's speed), so the charge is
-written out in each op; the shared helpers take scalars or run straight-line code. The scoreboard
-ops take a lean path for one target and one source (a name or ``@s``), and the dispatch chain
-tests the hottest opcodes first (operations, set/add/remove, a chain's CMD/IF*/ENDCMD, calls).
+written out in each op (the template's ``CHARGE()``); the shared helpers take scalars or run
+straight-line code. The scoreboard ops take a lean path for one target and one source (a name or
+``@s``), whose objective test reads ``writable`` for the target (a read-only objective fails there,
+at no cost to the writable case), and the dispatch chain (the template's ``case FAMILY:`` lines,
+one branch per family of the opcode table) tests the hottest opcodes first (operations,
+set/add/remove, a chain's CMD/IF*/ENDCMD, calls).
 ``run`` uses numba's ``numpy`` error model: the divisions check their divisor themselves, and
 without the Python model's ZeroDivisionError paths the loop is smaller and a few % faster.
 The generated code is sensitive to the loop's shape (measured with ``bench_vm.py --baseline``): one
