@@ -4,9 +4,9 @@
 
 The template is the module's source with three additions:
 
-- the line ``# @opcodes``: the ``OP_*`` constants, the ranges of the families served by one branch
-  (``FIRST_X``, ``LAST_X``) and the operation kinds ``OPK_*``, as literals (numba's cache would not notice a
-  constant imported from another module change);
+- the line ``# @opcodes``: the ``OP_*`` constants, the ranges of the families served by one
+  branch (``FIRST_X``, ``LAST_X``) and the operation kinds ``OPK_*``, as literals (numba's cache
+  would not notice a constant imported from another module change);
 - ``case FAMILY:`` lines: the dispatch chain, ``if`` / ``elif`` testing the family's opcode (``op ==
   OP_X``) or range; the chain's last case becomes its ``else``;
 - macro lines ``NAME(ARGS)`` (:data:`MACROS`): statements the opcodes repeat, written out where they
@@ -46,7 +46,7 @@ MACROS = {
     # BuildContexts: a stage reaching the fork limit fails the command
     "FORK_LIMIT": "alive = 0\npc = abort\nFAIL(ERR_FORK_LIMIT, forklimit)",
 }
-_MACRO = re.compile(r"^(\s*)([A-Z_]+)\((.*)\)(\s*#.*)?$")
+_MACRO = re.compile(r"^(\s*)([A-Z_]+)\((.*)\)$")
 _CASE = re.compile(r"^(\s*)case (\w+):(\s*#.*)?$")
 
 
@@ -57,7 +57,7 @@ def render() -> str:
     out = []
     for i, line in enumerate(lines):
         if line.strip() == "# @opcodes":
-            out += constants()
+            out += _constants()
         elif i in cases:
             out.append(_dispatch(line, first=i == cases[0], last=i == cases[-1]))
         else:
@@ -66,7 +66,7 @@ def render() -> str:
     return HEADER + "\n".join(out) + "\n"
 
 
-def constants() -> list[str]:
+def _constants() -> list[str]:
     ops = [op for op in opcodes.TABLE if op.family != "operation"]
     out = [_commented(f"{op.constant} = {op.code}", op.doc) for op in ops]
     out.append("# the families served by one branch each: their ranges")
@@ -89,7 +89,8 @@ def _dispatch(line: str, first: bool, last: bool) -> str:
     comment = comment or ""
     if last:
         members = [op for op in opcodes.TABLE if op.family == family]
-        assert len(members) == 1, f"the chain's last case ({family}) must be one opcode"
+        if len(members) != 1:
+            raise ValueError(f"the chain's last case ({family}) must be one opcode")
         return f"{indent}else:{comment or '  # ' + members[0].constant}"
     return f"{indent}{'if' if first else 'elif'} {_test(family)}:{comment}"
 
@@ -105,24 +106,26 @@ def _test(family: str) -> str:
 
 
 def _check_cases(cases: list[str]) -> None:
-    families = list(opcodes.families())
-    missing = set(families) - set(cases)
-    assert not missing, f"families without a case: {sorted(missing)}"
-    assert len(cases) == len(set(cases)), "a family has two cases"
+    missing = set(opcodes.families()) - set(cases)
+    if missing or len(cases) != len(set(cases)):
+        raise ValueError(f"every family needs one case: missing {sorted(missing)}, cases {cases}")
 
 
 def _expand(line: str) -> list[str]:
-    m = _MACRO.match(line)
+    """The line with its macro written out (a trailing comment goes on the first line)."""
+    code, hash_, comment = line.partition("  #")
+    m = _MACRO.match(code)
     if m is None or m.group(2) not in MACROS:
         return [line]
-    indent, name, args, comment = m.groups()
-    call = ast.parse(f"f({args})", mode="eval").body
-    values = [ast.get_source_segment(f"f({args})", a) for a in call.args]
+    indent, name, args = m.groups()
+    call = f"f({args})"
+    values = [ast.get_source_segment(call, a) for a in ast.parse(call, mode="eval").body.args]
     body = MACROS[name].format(*values).splitlines()
-    if comment:
-        body[0] += comment
+    body[0] += hash_ + comment
     return [expanded for inner in body for expanded in _expand(indent + inner)]
 
 
 if __name__ == "__main__":
-    OUTPUT.write_text(render())
+    text = render()
+    if OUTPUT.read_text() != text:  # an unchanged file keeps its time stamp, and numba its cache
+        OUTPUT.write_text(text)
