@@ -4,9 +4,10 @@
 
 The template is the module's source with three additions:
 
-- the line ``# @opcodes``: the ``OP_*`` constants, the ranges of the families served by one
-  branch (``FIRST_X``, ``LAST_X``) and the operation kinds ``OPK_*``, as literals (numba's cache
-  would not notice a constant imported from another module change);
+- the line ``# @opcodes``: the ``OP_*`` constants (commented with their cost and doc), the ranges
+  of the families served by one branch (``FIRST_X``, ``LAST_X``) and the operation kinds
+  ``OPK_*``, as literals (numba's cache would not notice a constant imported from another module
+  change);
 - ``case FAMILY:`` lines: the dispatch chain, ``if`` / ``elif`` testing the family's opcode (``op ==
   OP_X``) or range; the chain's last case becomes its ``else``;
 - macro lines ``NAME(ARGS)`` (:data:`MACROS`): statements the opcodes repeat, written out where they
@@ -68,7 +69,7 @@ def render() -> str:
 
 def _constants() -> list[str]:
     ops = [op for op in opcodes.TABLE if op.family != "operation"]
-    out = [_commented(f"{op.constant} = {op.code}", op.doc) for op in ops]
+    out = [_commented(f"{op.constant} = {op.code}", f"[{op.cost}] {op.doc}") for op in ops]
     out.append("# the families served by one branch each: their ranges")
     out += [f"FIRST_{family.upper()}, LAST_{family.upper()} = {first}, {last}"
             for family, (first, last) in opcodes.families().items() if first != last]

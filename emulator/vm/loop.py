@@ -70,72 +70,72 @@ WIDTH = 8
 HOLDER_SELF = -2
 HOLDER_SELBUF = -3
 
-OP_HALT = 0  # root finished: return ST_DONE
-OP_CMD = 1  # a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
-OP_ENDCMD = 2  # alive = 1 (after a chain with conditions)
-OP_CONT = 3  # a continuation entry (after `if function`): the entry check
-OP_STAGESDONE = 4  # a: the chain's ENDCMD. After a fork, Python keeps this context for the final command
-OP_SET = 5  # a: holders, b: objective, c: value
-OP_ADD = 6  # a holders, b o, c value
-OP_REMOVE = 7  # a holders, b o, c value
-OP_RESET = 8  # a holders, b o
-OP_RESETALL = 9  # a holders
-OP_GET = 10  # a h (a name or @s), b o
-OP_ENABLE = 11  # a: holders, b: objective. `scoreboard players enable`
-OP_TAG = 12  # a: selector, b: tag bit, c: 1 add / 0 remove. `tag SEL add|remove T` (fails when nothing changes)
-OP_HOST = 13  # a: host op index. A final command run by Python (charged here, per context)
-OP_LOG = 14  # a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
+OP_HALT = 0  # [free] root finished: return ST_DONE
+OP_CMD = 1  # [check] a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
+OP_ENDCMD = 2  # [free] alive = 1 (after a chain with conditions)
+OP_CONT = 3  # [check] a continuation entry (after `if function`): the entry check
+OP_STAGESDONE = 4  # [free] a: the chain's ENDCMD. After a fork, Python keeps this context for the final command
+OP_SET = 5  # [entry] a: holders, b: objective, c: value
+OP_ADD = 6  # [entry] a holders, b o, c value
+OP_REMOVE = 7  # [entry] a holders, b o, c value
+OP_RESET = 8  # [entry] a holders, b o
+OP_RESETALL = 9  # [entry] a holders
+OP_GET = 10  # [entry] a h (a name or @s), b o
+OP_ENABLE = 11  # [entry] a: holders, b: objective. `scoreboard players enable`
+OP_TAG = 12  # [entry] a: selector, b: tag bit, c: 1 add / 0 remove. `tag SEL add|remove T` (fails when nothing changes)
+OP_HOST = 13  # [entry] a: host op index. A final command run by Python (charged here, per context)
+OP_LOG = 14  # [entry] a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
 # EntityArgument.getPlayers), else its result is the count. The line is queued in logbuf (op, context) either way: the
 # host's tellraw decides what is written, when the VM returns (before Python serves anything else, so the log keeps
 # its order)
-OP_GETPOS = 15  # a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
-OP_TP = 16  # a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) axes. `tp SEL X Y Z`:
-# every target to the same position (the execution position plus the relative parts), each keeping its rotation;
+OP_GETPOS = 15  # [entry] a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
+OP_TP = 16  # [entry] a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) axes. `tp SEL X
+# Y Z`: every target to the same position (the execution position plus the relative parts), each keeping its rotation;
 # outside the spawnable bounds the command fails
-OP_SELHOLDERS = 17  # a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next op's
-# HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A separate
-# op keeps calls out of the scoreboard ops (a call costs them ~20 %)
-OP_IFSCORE = 18  # a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
-OP_IFMATCH = 19  # a h, b o, c lo, d hi, f negated, g final
-OP_IFENT = 20  # a: selector, f negated, g final. `if|unless entity SEL`
-OP_IFDIM = 21  # a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the context's dimension
-# (ctx_dim) is D
-OP_CHKOBJ = 22  # a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or (c)
-# without an executor ("No entity was found": the command, or in a forked chain this context)
-OP_STORE = 23  # a: 0 result / 1 success, b h (a name or @s), c o
-OP_CALL = 24  # a: function id
-OP_CALLREG = 25  # call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
-OP_FEND = 26  # end of a function body: return without a result
-OP_RETV = 27  # a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain every
-# context returns (BuildContexts runs the custom command for each one): RETV counts the returns in R_NRET and goes on;
-# the chain's RETPEND then ends the function
-OP_RETFAIL = 28  # b: as RETV. `return fail`
-OP_RETRES = 29  # end of `return run CMD`: return CMD's result (fail if it had none)
-OP_RETNONE = 30  # abort target of `return run`: end the function without a result
-OP_RETPEND = 31  # after a forked chain ending in `return N|fail`: return, if some context did
-OP_RETIFHAS = 32  # a: pc after the calls. `return run function #tag`: a member that returned skips the later members
-# (the discard drops them); the chain's stores and RETRES follow
-OP_IFFN_STEP = 33  # a: pc after the calls. A returned member ends the isolated call
-OP_IFNOFN = 34  # a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no context) skips
-# the rest of the call (the command fails)
-OP_TAGBEGIN = 35  # acc_any = 0, acc_sum = 0
-OP_TAGACC = 36  # add the last call's result to the accumulator
-OP_TAGEND = 37  # the tag's result: the sum, if any member returned
-OP_IFFN_BEGIN = 38  # has = 0
-OP_IFFN_END = 39  # a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that returned
-# in several contexts passes the context once per return (ST_REPEAT)
-OP_FAIL = 40  # a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
-OP_RESULT = 41  # a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
-OP_JMPDEAD = 42  # a: target. `run return run ...` with no context left: skip it
-OP_STOP = 43  # abort the chain without an error (`if function` on an empty tag)
-OP_STOREPOS = 44  # a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
-OP_MACRO = 45  # a: macro call index. Python instantiates, sets regs[R_CALLFN]
-OP_HOSTSTAGE = 46  # a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
-OP_HOSTSTORE = 47  # a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 48  # a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as,
-# rotated as). One context per entity found: `as` contexts made earlier in the root come from as_cache, the others
+OP_SELHOLDERS = 17  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
+# op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
+# separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
+OP_IFSCORE = 18  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
+OP_IFMATCH = 19  # [condition] a h, b o, c lo, d hi, f negated, g final
+OP_IFENT = 20  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
+OP_IFDIM = 21  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
+# context's dimension (ctx_dim) is D
+OP_CHKOBJ = 22  # [stage] a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or
+# (c) without an executor ("No entity was found": the command, or in a forked chain this context)
+OP_STORE = 23  # [free] a: 0 result / 1 success, b h (a name or @s), c o
+OP_CALL = 24  # [entry] a: function id
+OP_CALLREG = 25  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
+OP_FEND = 26  # [free] end of a function body: return without a result
+OP_RETV = 27  # [check] a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain
+# every context returns (BuildContexts runs the custom command for each one): RETV counts the returns in R_NRET and
+# goes on; the chain's RETPEND then ends the function
+OP_RETFAIL = 28  # [check] b: as RETV. `return fail`
+OP_RETRES = 29  # [check] end of `return run CMD`: return CMD's result (fail if it had none)
+OP_RETNONE = 30  # [free] abort target of `return run`: end the function without a result
+OP_RETPEND = 31  # [free] after a forked chain ending in `return N|fail`: return, if some context did
+OP_RETIFHAS = 32  # [free] a: pc after the calls. `return run function #tag`: a member that returned skips the later
+# members (the discard drops them); the chain's stores and RETRES follow
+OP_IFFN_STEP = 33  # [free] a: pc after the calls. A returned member ends the isolated call
+OP_IFNOFN = 34  # [free] a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no
+# context) skips the rest of the call (the command fails)
+OP_TAGBEGIN = 35  # [free] acc_any = 0, acc_sum = 0
+OP_TAGACC = 36  # [free] add the last call's result to the accumulator
+OP_TAGEND = 37  # [check] the tag's result: the sum, if any member returned
+OP_IFFN_BEGIN = 38  # [free] has = 0
+OP_IFFN_END = 39  # [free] a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that
+# returned in several contexts passes the context once per return (ST_REPEAT)
+OP_FAIL = 40  # [operand] a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
+OP_RESULT = 41  # [free] a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
+OP_JMPDEAD = 42  # [free] a: target. `run return run ...` with no context left: skip it
+OP_STOP = 43  # [free] abort the chain without an error (`if function` on an empty tag)
+OP_STOREPOS = 44  # [free] a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
+OP_MACRO = 45  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
+OP_HOSTSTAGE = 46  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
+OP_HOSTSTORE = 47  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_ASSTAGE = 48  # [stage] a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned
+# as, rotated as). One context per entity found: `as` contexts made earlier in the root come from as_cache, the others
 # from Python (ST_FORK)
-OP_POSSTAGE = 49  # b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
+OP_POSSTAGE = 49  # [stage] b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
 FIRST_LINE, LAST_LINE = 8, 16

@@ -25,7 +25,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 ENTRY, STAGE, CONDITION, CHECK, OPERAND, FREE = "entry", "stage", "condition", "check", "operand", "free"
-COSTS = (ENTRY, STAGE, CONDITION, CHECK, OPERAND, FREE)
 CHARGED = (ENTRY, STAGE, CONDITION, OPERAND)  # the costs that may charge the quota
 
 # `scoreboard players operation`: one opcode each, numbered by kind (OPK_*) from the family's first
