@@ -39,7 +39,9 @@ set/add/remove, a chain's CMD/IF*/ENDCMD, calls).
 without the Python model's ZeroDivisionError paths the loop is smaller and a few % faster.
 The generated code is sensitive to the loop's shape (measured with ``bench_vm.py --baseline``): one
 entry-rule test before the dispatch for every line command cost 7 %, one branch for the four
-execute stages 30 % (register allocation), so only the cold line commands share a branch.
+execute stages 30 % (register allocation), so only the cold line commands share a branch. The
+generated loop (range tests per family, the statements written out from the template) measured
+0.999x the hand-written one it replaced.
 
 Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
 table). When a stage makes several (Python makes the contexts: a host stage, ``as SEL``, ``if
