@@ -1,10 +1,11 @@
 """The VM's opcode table: one row per opcode, the one place its number, name, operands, cost and
 family are written.
 
-Read by :mod:`emulator.vm.generate`, which writes the ``OP_*`` constants and the family ranges into
-:mod:`emulator.vm.loop` (numba's on-disk cache does not notice a constant changed in another module,
-so the jitted loop reads them as literals of its own module) and the dispatch tests from the families;
-the compiler emits those constants; ``dpemu disasm`` and ``dpemu profile`` print ``name``, and the
+Opcodes are numbered in table order. Read by :mod:`emulator.vm.generate`, which writes the ``OP_*``
+constants and the family ranges into :mod:`emulator.vm.loop` (numba's on-disk cache does not notice
+a constant changed in another module, so the jitted loop reads them as literals of its own module)
+and the dispatch tests from the families; the compiler emits those constants (an operation's by
+:data:`OPERATION_KINDS`); ``dpemu disasm`` and ``dpemu profile`` print ``name``, and the
 disassembler decodes the operands by ``operands``.
 
 - ``name``: what the disassembler and the profiler print.
@@ -55,7 +56,7 @@ def _single(*row) -> list[tuple]:
     return _family(row[0].lower(), [row])
 
 
-# (family, name, operands, cost, doc), numbered in this order
+# (family, name, operands, cost, doc)
 _ROWS = [
     *_single("HALT", "", FREE, "root finished: return ST_DONE"),
     *_single("CMD", "p", CHECK, "a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself"),
