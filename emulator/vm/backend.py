@@ -140,9 +140,10 @@ class NumbaBackend:
                 self._load_entities()
             sels, tests = mirror.selector_arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
-                            sb.writable, self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
-                            self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
-                            self.selbuf, self.logbuf, self.fstack, self.coll, self.as_cache)
+                            sb.writable, self.triggers, self.counts, self.totals, self.active, self.ovf,
+                            self.ctx_holder, self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, tests, mirror.ent,
+                            mirror.pos, mirror.dirty, mirror.order, self.selbuf, self.logbuf, self.fstack, self.coll,
+                            self.as_cache)
             if r[vm.R_EDIRTY]:
                 mirror.store()
                 r[vm.R_EDIRTY] = 0

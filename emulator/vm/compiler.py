@@ -36,8 +36,8 @@ from emulator.vm.program import HostOp, MacroCall, Program
 from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
-    Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey, Return,
-    Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
+    Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey,
+    Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
     StoreScore, Subcommand, Teleport, Tellraw, Vec3,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN

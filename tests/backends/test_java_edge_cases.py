@@ -246,7 +246,8 @@ CASES = [
      "execute in minecraft:the_nether unless dimension minecraft:the_nether run scoreboard players set #unless o 1\n"
      "execute unless dimension minecraft:the_nether run scoreboard players set #here o 1\n"
      'summon marker 0 0 0 {Tags:["m"]}\n'
-     "execute as @e[tag=m] in minecraft:the_nether if dimension minecraft:overworld run scoreboard players set #as o 1\n"
+     "execute as @e[tag=m] in minecraft:the_nether if dimension minecraft:overworld run "
+     "scoreboard players set #as o 1\n"
      "execute store result score #final o in minecraft:the_nether if dimension minecraft:the_nether\n"
      "execute store result score #fails o in minecraft:the_nether if dimension minecraft:overworld",
      {("#if", "o"): 1, ("#unless", "o"): None, ("#here", "o"): 1, ("#as", "o"): None, ("#final", "o"): 1,
