@@ -140,10 +140,10 @@ def _source(sources: dict, path: str, line: int) -> str:
 
 
 def _vm_ops() -> dict[int, str]:
-    from emulator.vm import loop as vm
+    """The VM's instruction names by opcode, as ``dpemu disasm`` prints them (the opcode table)."""
+    from emulator.vm.opcodes import BY_CODE
 
-    return {value: name[3:].lower() for name, value in vars(vm).items()
-            if name.startswith("OP_") and isinstance(value, int)}
+    return {code: op.name for code, op in BY_CODE.items()}
 
 
 def _vm_instructions(counts: list[tuple[int, int]], names: dict[int, str]) -> list[dict]:
@@ -153,7 +153,7 @@ def _vm_instructions(counts: list[tuple[int, int]], names: dict[int, str]) -> li
 
 
 # what each host opcode hands to Python, as the profile names it
-HOST_KINDS = {"host": "command", "hoststage": "stage", "hoststore": "store"}
+HOST_KINDS = {"HOST": "command", "HOSTSTAGE": "stage", "HOSTSTORE": "store"}
 
 
 def _vm_host(runs: dict, loaded: dict, sources: dict, names: dict[int, str]) -> list[dict]:

@@ -6,7 +6,8 @@ The report they write is a plain dict built by :mod:`emulator.cli.profile`::
     {"backend", "limit", "commands", "ticks": {"count", "mean", "max", "series"},
      "roots": [{"function", "runs", "max_cost", "mean_cost", "headroom", "cut"}],
      "functions": [{"function", "self", "total", "calls"}],
-     "lines": [{"path", "line", "commands", "source", "instructions": [{"op", "count"}]}],
+     "lines": [{"path", "line", "commands", "source", "instructions": [{"op", "count"}]}] (op: the
+         VM instruction's name in emulator.vm.opcodes, as ``dpemu disasm`` prints it),
      "host": [{"function", "path", "line", "op", "command", "count"}] (None on the python backend):
          every host op Python ran, op being "command" (a final command), "stage" (an execute
          stage) or "store" (an execute store), count the times it ran,

@@ -16,15 +16,15 @@ from emulator.runtime.backend import HostRun, RootResult, report_quota_cut
 from emulator.vm.compiler import Compiler
 from emulator.vm.entity_arrays import EntityMirror
 from emulator.vm.host import Host, StoreTarget, resolves_target
+from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import Program
 from emulator.commands.data import macro_arguments
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import MESSAGES, CommandFailure
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
 from emulator.world.context import Context
 from emulator.world.records import Frame, Overflow
 from emulator.world.state import WorldState
-from emulator.world.errors import MESSAGES
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
@@ -41,8 +41,10 @@ _ERROR_TEXT = {  # the game's messages (emulator.world.errors) of the VM's runti
     vm.ERR_MACRO_ARGS: MESSAGES["commands.function.instantiationFailure"].format(
         "{0}", MESSAGES["commands.function.error.missing_arguments"]),
     vm.ERR_FORK_LIMIT: MESSAGES["command.forkLimit"],
+    vm.ERR_READ_ONLY: MESSAGES["arguments.objective.readonly"],
 }
-_SANITIZER_OPS = {**{v: k for k, v in vm.OPK_BY_SYMBOL.items()}, vm.SAN_ADD_CMD: "add", vm.SAN_REMOVE_CMD: "remove"}
+_SANITIZER_OPS = {**{k: symbol for symbol, k in OPERATION_KINDS.items()}, vm.SAN_ADD_CMD: "add",
+                  vm.SAN_REMOVE_CMD: "remove"}
 
 
 class NumbaBackend:
@@ -77,6 +79,7 @@ class NumbaBackend:
         self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
         self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
         self.ctx_pos = np.zeros((16, 3), dtype=np.float64)  # per context: its position
+        self.ctx_dim = np.zeros(16, dtype=np.int64)  # per context: its dimension (Program.intern_dimension)
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
@@ -140,9 +143,10 @@ class NumbaBackend:
                 self._load_entities()
             sels, tests = mirror.selector_arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
-                            self.triggers, self.counts, self.totals, self.active, self.ovf, self.ctx_holder,
-                            self.ctx_entity, self.ctx_pos, sels, tests, mirror.ent, mirror.pos, mirror.dirty, mirror.order,
-                            self.selbuf, self.logbuf, self.fstack, self.coll, self.as_cache)
+                            sb.writable, self.triggers, self.counts, self.totals, self.active, self.ovf,
+                            self.ctx_holder, self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, tests, mirror.ent,
+                            mirror.pos, mirror.dirty, mirror.order, self.selbuf, self.logbuf, self.fstack, self.coll,
+                            self.as_cache)
             if r[vm.R_EDIRTY]:
                 mirror.store()
                 r[vm.R_EDIRTY] = 0
@@ -270,7 +274,9 @@ class NumbaBackend:
                 self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
                 self.ctx_entity = np.concatenate([self.ctx_entity, np.full(index + 1, -1, dtype=np.int64)])
                 self.ctx_pos = np.concatenate([self.ctx_pos, np.zeros((index + 1, 3))])
+                self.ctx_dim = np.concatenate([self.ctx_dim, np.zeros(index + 1, dtype=np.int64)])
             self.ctx_pos[index] = ctx.pos
+            self.ctx_dim[index] = self.program.intern_dimension(ctx.dimension)
             entity = world_entities.executor(self.state, ctx)
             self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
             self.ctx_entity[index] = -1 if entity is None else entity.order
@@ -391,7 +397,7 @@ class NumbaBackend:
     def _runtime_error(self) -> None:
         r = self.regs
         code, arg, pc = int(r[vm.R_ERR]), int(r[vm.R_ERRARG]), int(r[vm.R_ERRPC])
-        if code == vm.ERR_UNKNOWN_OBJECTIVE:
+        if code in (vm.ERR_UNKNOWN_OBJECTIVE, vm.ERR_READ_ONLY):
             operand = self.state.scoreboard.objectives[arg]
         elif code in (vm.ERR_UNKNOWN_FUNCTION, vm.ERR_EMPTY_TAG, vm.ERR_MACRO_ARGS):
             operand = self.program.names[arg]

@@ -3,15 +3,15 @@
 What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
 ``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
 ``@e @a @s`` with type, tag, scores, limit), ``tag SEL add|remove``, ``enable``; ``if|unless
-score`` on named holders and ``@s``, ``if|unless entity SEL``, ``as SEL``, ``store result|success
-score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``; ``if|unless function``,
-function calls and tags, every ``return`` form, and macro calls (instantiated by Python on first
-use). Everything else is a host op run by
-:mod:`emulator.vm.host`: a final command (``OP_HOST``: ``say``, ``schedule``, selectors ...), an
-execute stage (``OP_HOSTSTAGE``: ``as``, ``positioned``, ``if entity`` ...; it sets the
-context the rest of the chain runs in) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
+score`` on named holders and ``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as SEL``,
+``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
+``if|unless function``, function calls and tags, every ``return`` form, and macro calls
+(instantiated by Python on first use). Everything else is a host op run by Python: a final command
+(``OP_HOST``: ``say``, ``schedule``, selectors ...), an execute stage (``OP_HOSTSTAGE``: ``as``,
+``positioned``, ``in``, ``if entity`` ...; it sets the context the rest of the chain runs in, through
+:mod:`emulator.vm.host` and :mod:`emulator.commands.stages`) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
 
-Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.loop`)::
+Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.opcodes`)::
 
     scoreboard players add #a o 1      ADD h o 1                       (charges 1 itself)
     function f                         CALL f                          (charges 1 itself)
@@ -30,12 +30,13 @@ from __future__ import annotations
 from typing import Callable
 
 from emulator.vm import loop as vm
+from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import HostOp, MacroCall, Program
 from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
-    Function, FunctionCall, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey, Return,
-    Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
+    Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey,
+    Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
     StoreScore, Subcommand, Teleport, Tellraw, Vec3,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN
@@ -114,7 +115,7 @@ class Compiler:
             self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
         elif isinstance(cmd, ScoreOperation) and self.vm_holders(cmd.targets) and self.vm_holders(cmd.sources):
             h, h2 = self.holders(cmd.targets), self.holders(cmd.sources, sources=True)
-            self.emit(vm.OP_OPER_BASE + vm.OPK_BY_SYMBOL[cmd.op], h, self.objective(cmd.objective), h2,
+            self.emit(vm.FIRST_OPERATION + OPERATION_KINDS[cmd.op], h, self.objective(cmd.objective), h2,
                       self.objective(cmd.source_objective))
         elif isinstance(cmd, ScoreEnable) and self.vm_holders(cmd.targets):
             h = self.holders(cmd.targets)
@@ -151,6 +152,9 @@ class Compiler:
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
             elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
+            elif isinstance(st, IfDimension):
+                self.emit(vm.OP_IFDIM, self.program.intern_dimension(st.dimension), 0, 0, 0, 0, int(st.negated),
+                          int(last))
             elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
             elif (axis := _position_store(st)) is not None and _context_kept(stages[i + 1:], final):

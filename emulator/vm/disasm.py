@@ -1,23 +1,13 @@
 """The VM's bytecode as text: a function's instructions (``pc OP operands``) beside its source
-lines, what ``dpemu disasm`` prints."""
+lines, what ``dpemu disasm`` prints. Names and operand kinds come from the opcode table
+(:mod:`emulator.vm.opcodes`)."""
 from __future__ import annotations
 
 from emulator.vm import loop as vm
+from emulator.vm import opcodes
 from emulator.vm.program import Program
 from emulator.world.state import Scoreboard
 
-# operand kinds per opcode, in slot order: h holder, o objective, i int, p pc, f function,
-# c comparison, n name, x host op, m macro call, b flag, s selector, d float
-_OPERANDS_OPERATION = "hoho"
-_OPERANDS = {
-    vm.OP_CMD: "p", vm.OP_STAGESDONE: "p", vm.OP_SET: "hoi", vm.OP_ADD: "hoi", vm.OP_REMOVE: "hoi",
-    vm.OP_RESET: "ho", vm.OP_RESETALL: "h", vm.OP_GET: "ho",
-    vm.OP_IFSCORE: "choho" + "bb", vm.OP_IFMATCH: "hoii_bb", vm.OP_CHKOBJ: "obb", vm.OP_STORE: "bho",
-    vm.OP_CALL: "f", vm.OP_RETV: "ib", vm.OP_RETFAIL: "_b", vm.OP_IFFN_STEP: "p", vm.OP_RETIFHAS: "p", vm.OP_IFNOFN: "p", vm.OP_IFFN_END: "b", vm.OP_FAIL: "inbb",
-    vm.OP_RESULT: "bi", vm.OP_JMPDEAD: "p", vm.OP_HOST: "x", vm.OP_HOSTSTAGE: "xb", vm.OP_HOSTSTORE: "x",
-    vm.OP_MACRO: "m", vm.OP_TAG: "sib", vm.OP_IFENT: "s_____b", vm.OP_ENABLE: "ho", vm.OP_SELHOLDERS: "sb", vm.OP_ASSTAGE: "sbb", vm.OP_TP: "sdi",
-    vm.OP_POSSTAGE: "_b", vm.OP_STOREPOS: "ibd", vm.OP_GETPOS: "i", vm.OP_LOG: "xs",
-}
 _COMPARISON_NAMES = {v: k for k, v in vm.CMP_BY_SYMBOL.items()}
 
 
@@ -43,10 +33,9 @@ def disassemble(program: Program, scoreboard: Scoreboard, function_index: int, s
 
 def _instruction(program: Program, scoreboard: Scoreboard, pc: int) -> str:
     row = program.rows[pc]
-    op = row[0]
-    parts = [vm.OP_NAMES.get(op, str(op))]
-    kinds = _OPERANDS_OPERATION if op >= vm.OP_OPER_BASE else _OPERANDS.get(op, "")
-    for kind, value in zip(kinds, row[1:]):
+    op = opcodes.BY_CODE[row[0]]
+    parts = [op.name]
+    for kind, value in zip(op.operands, row[1:]):
         parts.append(_operand(program, scoreboard, kind, value))
     return " ".join(p for p in parts if p)
 
@@ -68,6 +57,8 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
         return _COMPARISON_NAMES[value]
     if kind == "n":
         return program.names[value]
+    if kind == "l":
+        return program.dimensions[value]
     if kind == "p":
         return f"->{value}"
     if kind == "x":

@@ -17,9 +17,11 @@ Scoreboard layout (what the VM reads directly)
   ``trigger`` fails unless the score is present and unlocked, then locks it again.
 - ``alive[o]`` (``uint8``) says whether objective ``o`` currently exists (``scoreboard objectives
   add`` sets it, ``remove`` clears it and its column). Commands naming an objective that is not
-  alive fail ("Unknown scoreboard objective").
+  alive fail ("Unknown scoreboard objective"). ``writable[o]`` (``uint8``, same growth) is 1 when
+  ``o`` exists and its criterion is not read-only (what ``set``/``add``/``remove``/``operation``
+  may write): the VM reads it in the same test as ``alive``.
 - The arrays have spare capacity; interning past it reallocates them (``values``/``present``/
-  ``alive`` are then new arrays, so re-read the attributes after interning).
+  ``alive``/``writable`` are then new arrays, so re-read the attributes after interning).
 
 Holder names are what the game uses: player and fake-player names (``#x``, ``$y``) as written,
 entities by their UUID string.
@@ -64,6 +66,7 @@ class Scoreboard:
         self.present = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
         self.locked = np.ones((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
         self.alive = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
+        self.writable = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
         # the game's holder map (Scoreboard.playerScores) for the order of ``*``: see tracked_holders
         self.tracked = OpenHashKeys(16, 0.5)
         self._kept_empty: set[str] = set()  # tracked holders whose last score went with its objective
@@ -105,7 +108,9 @@ class Scoreboard:
         locked[:cap_h, :cap_o] = self.locked
         alive = np.zeros(new_o, dtype=np.uint8)
         alive[:cap_o] = self.alive
-        self.values, self.present, self.locked, self.alive = values, present, locked, alive
+        writable = np.zeros(new_o, dtype=np.uint8)
+        writable[:cap_o] = self.writable
+        self.values, self.present, self.locked, self.alive, self.writable = values, present, locked, alive, writable
 
     # ------------------------------------------------------------------ objectives
     def exists(self, objective: str) -> bool:
@@ -118,6 +123,7 @@ class Scoreboard:
         if self.alive[oid]:
             return False
         self.alive[oid] = 1
+        self.writable[oid] = criterion not in READ_ONLY_CRITERIA
         self.criteria[oid] = criterion
         self.display_names[oid] = display_name
         self.present[:, oid] = 0
@@ -132,6 +138,7 @@ class Scoreboard:
         n = len(self.holders)
         had = np.flatnonzero(self.present[:n, oid])
         self.alive[oid] = 0
+        self.writable[oid] = 0
         self.present[:, oid] = 0
         self.locked[:, oid] = 1
         # Scoreboard.removeObjective empties PlayerScores but keeps the holders in the map

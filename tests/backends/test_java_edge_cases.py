@@ -9,12 +9,17 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
 import pytest
 
+from emulator.api import Emulator
+from emulator.world import rotation
 from emulator.world.semantics import INT_MAX, INT_MIN, double_to_int, double_to_long, mth_floor
+from emulator.world.state import READ_ONLY_CRITERIA
 from tests.backends.programs import run_root, write_pack
 
 SETUP = "scoreboard objectives add o dummy\n"
+F32 = np.float32
 
 
 BACKENDS = ["python", "numba"]
@@ -233,6 +238,29 @@ CASES = [
      {("#a", "o"): 0, ("#b", "o"): 0, ("#c", "o"): 4, ("#d", "o"): 0, ("#n", "o"): 1}, ...),
     ("display_wildcard", "scoreboard players set #a o 1\nscoreboard players set #b o 2\n"
      "execute store result score #w o run scoreboard players display numberformat * o", {("#w", "o"): 2}, ...),
+    # ExecuteCommand's `dimension` condition: DimensionArgument.getDimension(...) == the source's level;
+    # `in` is CommandSourceStack.withLevel: x and z times DimensionType.getTeleportationScale (the
+    # overworld's coordinateScale over the nether's: 1 / 8), and back; the same dimension changes nothing
+    ("in_if_dimension", "execute in minecraft:the_nether if dimension minecraft:the_nether run "
+     "scoreboard players set #if o 1\n"
+     "execute in minecraft:the_nether unless dimension minecraft:the_nether run scoreboard players set #unless o 1\n"
+     "execute unless dimension minecraft:the_nether run scoreboard players set #here o 1\n"
+     'summon marker 0 0 0 {Tags:["m"]}\n'
+     "execute as @e[tag=m] in minecraft:the_nether if dimension minecraft:overworld run "
+     "scoreboard players set #as o 1\n"
+     "execute store result score #final o in minecraft:the_nether if dimension minecraft:the_nether\n"
+     "execute store result score #fails o in minecraft:the_nether if dimension minecraft:overworld",
+     {("#if", "o"): 1, ("#unless", "o"): None, ("#here", "o"): 1, ("#as", "o"): None, ("#final", "o"): 1,
+      ("#fails", "o"): 0}, ...),
+    ("in_scales_x_and_z", "execute positioned 16 64 -8 in minecraft:the_nether run summon marker ~ ~ ~ {Tags:[\"n\"]}\n"
+     "execute positioned 1 2 3 in minecraft:the_nether in minecraft:overworld in minecraft:overworld run "
+     "summon marker ~ ~ ~ {Tags:[\"back\"]}\n"
+     "execute store result score #x o run data get entity @e[tag=n,limit=1] Pos[0] 10000\n"
+     "execute store result score #y o run data get entity @e[tag=n,limit=1] Pos[1]\n"
+     "execute store result score #z o run data get entity @e[tag=n,limit=1] Pos[2] 10000\n"
+     "execute store result score #bx o run data get entity @e[tag=back,limit=1] Pos[0] 10\n"
+     "execute store result score #bz o run data get entity @e[tag=back,limit=1] Pos[2] 10",
+     {("#x", "o"): 20625, ("#y", "o"): 64, ("#z", "o"): -9375, ("#bx", "o"): 15, ("#bz", "o"): 35}, ...),
     ("display_unknown_objective", "execute store success score #s o run scoreboard players display name #a nope",
      {("#s", "o"): 0, ("#a", "o"): None}, ...),
 ]
@@ -363,3 +391,74 @@ COST_CASES = [
 def test_cost_edge_case(tmp_path, backend, case_id, body, cost):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + body, **HELPERS})
     assert run_root(backend, pack, "t:main").cost == cost
+
+
+# ScoreboardCommand's set/add/remove and operation's target read their objective with
+# ObjectiveArgument.getWritableObjective, which throws "Scoreboard objective '%s' is read-only" for
+# a read-only criterion (ObjectiveCriteria.isReadOnly: health, food, air, armor, xp, level): the
+# command fails and writes nothing, on a name, @s or a selector alike. The other objective
+# arguments use getObjective: an operation's source, `store ... score` and `reset` accept them.
+READ_ONLY_BODY = (
+    "execute store result score #b ro run scoreboard players set #x o 5\n"
+    "execute store success score #set o run scoreboard players set #b ro 9\n"
+    "execute store success score #add o run scoreboard players add #b ro 3\n"
+    "execute store success score #remove o run scoreboard players remove #b ro 1\n"
+    "execute store success score #op o run scoreboard players operation #b ro += #x o\n"
+    'summon marker 0 0 0 {Tags:["m"]}\n'
+    "execute as @e[tag=m] store success score #self o run scoreboard players add @s ro 1\n"
+    "execute store success score #sel o run scoreboard players set @e[tag=m] ro 1\n"
+    "execute store success score #many o run scoreboard players operation @e[tag=m] ro = #x o\n"
+    "scoreboard players operation #c o += #b ro\n"
+    "execute store success score #reset o run scoreboard players reset #gone ro\n"
+)
+
+
+@pytest.mark.parametrize("criterion", sorted(READ_ONLY_CRITERIA))
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_read_only_objectives_refuse_writes(tmp_path, backend, criterion):
+    pack = write_pack(tmp_path / "pack", {"t:main": f"{SETUP}scoreboard objectives add ro {criterion}\n"
+                                                    + READ_ONLY_BODY})
+    outcome = run_root(backend, pack, "t:main")
+    assert outcome.scores["ro"] == {"#b": 5}
+    failed = ("#set", "#add", "#remove", "#op", "#self", "#sel", "#many")
+    assert {h: outcome.scores["o"].get(h) for h in (*failed, "#c", "#x", "#reset")} == {
+        **dict.fromkeys(failed, 0), "#c": 5, "#x": 5, "#reset": 1}
+    # reported, as an unknown objective is (such a write can never succeed): test_command_semantics
+    assert [message for message, _ in outcome.diagnostics] == ["Scoreboard objective 'ro' is read-only"] * len(failed)
+
+
+# LocalCoordinates.getPosition and `facing X Y Z` (FacingCommand's lookAt from the source) start
+# from source.getAnchor().apply(source): EntityAnchorArgument.Anchor.EYES adds the executing
+# entity's eye height (EntityType's eyeHeight: player 1.62F, armor stand 1.7775F) to the position;
+# without an entity the position is kept. `positioned` then goes back to the feet.
+ANCHOR_BODY = (
+    'execute as @e[tag=a] at @s anchored eyes positioned ^ ^ ^ run summon marker ~ ~ ~ {Tags:["eyes"]}\n'
+    'execute as @e[tag=a] at @s anchored eyes positioned ^ ^ ^1 positioned ^ ^ ^1 run summon marker ~ ~ ~ '
+    '{Tags:["ahead"]}\n'
+    'summon marker 0 0 0 {Tags:["looks"]}\n'
+    "execute as @e[tag=a] at @s anchored eyes facing 0 64 4 run tp @e[tag=looks] ~ ~ ~ ~ ~\n"
+    'execute anchored eyes positioned ^ ^ ^1 run summon marker ~ ~ ~ {Tags:["server"]}\n'
+)
+
+
+@pytest.mark.parametrize("executor, eye_height", [("player", 1.62), ("armor_stand", 1.7775)])
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_anchored_eyes(tmp_path, backend, executor, eye_height):
+    setup = "tag Steve add a\n" if executor == "player" else 'summon armor_stand 0 64 0 {Tags:["a"]}\n'
+    emu = Emulator(backend=backend)
+    emu.load(write_pack(tmp_path / "pack", {"t:main": setup + ANCHOR_BODY}))
+    emu.add_player("Steve", (0.5, 64.0, 0.5))
+    emu.call("t:main")
+    eyes = (0.5, 64.0 + float(np.float32(eye_height)), 0.5)
+
+    def pos(tag):
+        [entity] = emu.entities(f"@e[tag={tag}]")
+        return tuple(entity["pos"])
+
+    assert pos("eyes") == eyes
+    step = rotation.local_to_world(eyes, F32(0), F32(0), 0.0, 0.0, 1.0)  # the second ^ from the (raised) feet
+    assert pos("ahead") == rotation.local_to_world(step, F32(0), F32(0), 0.0, 0.0, 1.0)
+    [looks] = emu.entities("@e[tag=looks]")
+    assert tuple(looks["rotation"]) == tuple(float(v) for v in rotation.facing_rotation(eyes, (0.5, 64.0, 4.5)))
+    assert pos("server") == rotation.local_to_world((0.0, 0.0, 0.0), F32(0), F32(0), 0.0, 0.0, 1.0)
+    assert emu.diagnostics == []

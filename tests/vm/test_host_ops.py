@@ -58,12 +58,12 @@ def test_sanitizer_sees_host_arithmetic(tmp_path, backend):
         ("t:main", 4, "add", 2147483647, 1, 2147483648)]
 
 
-def _forking_positioned(emu, n: int) -> None:
-    """Make ``positioned`` fork into ``n`` contexts, as ``as @e`` will once entities exist."""
+def _forking_summon(emu, n: int) -> None:
+    """Make the host's ``summon`` stage (a redirect, as ``positioned`` is) give ``n`` contexts."""
     stage = emu.backend.host.run_stage
 
     def fork(st, ctx):
-        if type(st).__name__ == "ExPositioned":
+        if type(st).__name__ == "ExSummon":
             return [Context(pos=(float(i), 0.0, 0.0)) for i in range(n)]
         return stage(st, ctx)
 
@@ -71,16 +71,16 @@ def _forking_positioned(emu, n: int) -> None:
 
 
 @pytest.mark.parametrize("body, cost, plain", [
-    ("execute positioned 0 0 0 run function t:plain", 1 + 1 + 3 * (1 + 1), 3),
-    ("execute positioned 0 0 0 positioned 0 0 0 run function t:plain", 1 + 2 + 9 * (1 + 1), 9),
-    ("execute positioned 0 0 0 if score #one o matches 1 run scoreboard players add #plain o 1", 1 + 2 + 3, 3),
-    ("execute positioned 0 0 0 unless score #one o matches 1 run scoreboard players add #plain o 1", 1 + 2, None),
+    ("execute summon marker run function t:plain", 1 + 1 + 3 * (1 + 1), 3),
+    ("execute summon marker summon marker run function t:plain", 1 + 2 + 9 * (1 + 1), 9),
+    ("execute summon marker if score #one o matches 1 run scoreboard players add #plain o 1", 1 + 2 + 3, 3),
+    ("execute summon marker unless score #one o matches 1 run scoreboard players add #plain o 1", 1 + 2, None),
 ])
 def test_forked_chains_run_per_context(tmp_path, backend, body, cost, plain):
     if backend == "python":
         pytest.skip("the fork is simulated by patching the VM's host")
     emu, _ = run_main(tmp_path, "scoreboard players set #one o 1", {**HELPERS, "t:f": body}, backend=backend)
-    _forking_positioned(emu, 3)
+    _forking_summon(emu, 3)
     result = emu.runtime.call("t:f")
     # stages are charged once; each context runs the rest (a call and its add, or the add)
     assert (result.cost, emu.score("#plain", "o")) == (cost, plain)
@@ -90,10 +90,10 @@ def test_forked_chains_run_per_context(tmp_path, backend, body, cost, plain):
 def test_return_in_a_forked_chain_ends_the_function(tmp_path, backend):
     if backend == "python":
         pytest.skip("the fork is simulated by patching the VM's host")
-    emu, _ = run_main(tmp_path, "", {**HELPERS, "t:f": "execute positioned 0 0 0 run function t:plain\n"
-                                                       "execute positioned 0 0 0 run return 7\nsay never"},
+    emu, _ = run_main(tmp_path, "", {**HELPERS, "t:f": "execute summon marker run function t:plain\n"
+                                                       "execute summon marker run return 7\nsay never"},
                       backend=backend)
-    _forking_positioned(emu, 2)
+    _forking_summon(emu, 2)
     assert emu.call("t:f") == 7
     assert emu.score("#plain", "o") == 2 and emu.log == []
 

@@ -1,0 +1,169 @@
+"""The VM's opcode table: one row per opcode, the one place its number, name, operands, cost and
+family are written.
+
+Opcodes are numbered in table order. Read by :mod:`emulator.vm.generate`, which writes the ``OP_*``
+constants and the family ranges into :mod:`emulator.vm.loop` (numba's on-disk cache does not notice
+a constant changed in another module, so the jitted loop reads them as literals of its own module)
+and the dispatch tests from the families; the compiler emits those constants (an operation's by
+:data:`OPERATION_KINDS`); ``dpemu disasm`` and ``dpemu profile`` print ``name``, and the
+disassembler decodes the operands by ``operands``.
+
+- ``name``: what the disassembler and the profiler print.
+- ``operands``: the kind of each slot a..g in order: h holder, o objective, i int, p pc, f function,
+  c comparison, n name, l dimension, x host op, m macro call, b flag, s selector, d float, _ unused.
+- ``cost``: how the instruction charges the quota (the rule in :mod:`emulator.runtime.backend`):
+  ``entry`` a command run per context: skipped without one, cut without quota, then charged 1;
+  ``stage`` an execute stage: charged once per chain, contexts or not (not again when a fork
+  re-enters the chain); ``condition`` a stage, or an entry when it ends the chain; ``check`` an
+  entry that costs nothing (cut without quota, never charged); ``operand`` charged when an operand
+  says so; ``free`` neither checks nor charges.
+- ``family``: the dispatch branch that serves it. A family of several opcodes is served by one
+  branch testing its range of numbers, so its opcodes are numbered consecutively and nothing else
+  lies in that range.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+ENTRY, STAGE, CONDITION, CHECK, OPERAND, FREE = "entry", "stage", "condition", "check", "operand", "free"
+CHARGED = (ENTRY, STAGE, CONDITION, OPERAND)  # the costs that may charge the quota
+
+# `scoreboard players operation`: one opcode each, numbered by kind (OPK_*) from the family's first
+OPERATIONS = (("ASSIGN", "="), ("ADD", "+="), ("SUB", "-="), ("MUL", "*="), ("DIV", "/="), ("MOD", "%="),
+              ("MIN", "<"), ("MAX", ">"), ("SWAP", "><"))
+
+
+@dataclass(frozen=True)
+class Opcode:
+    code: int
+    name: str
+    operands: str
+    cost: str
+    family: str
+    doc: str
+
+    @property
+    def constant(self) -> str:
+        """Its constant in :mod:`emulator.vm.loop` (the operations have none: FIRST_OPERATION + OPK_*)."""
+        return "OP_" + self.name
+
+
+def _family(name: str, rows) -> list[tuple]:
+    return [(name, *row) for row in rows]
+
+
+def _single(*row) -> list[tuple]:
+    return _family(row[0].lower(), [row])
+
+
+# (family, name, operands, cost, doc)
+_ROWS = [
+    *_single("HALT", "", FREE, "root finished: return ST_DONE"),
+    *_single("CMD", "p", CHECK, "a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself"),
+    *_single("ENDCMD", "", FREE, "alive = 1 (after a chain with conditions)"),
+    *_single("CONT", "", CHECK, "a continuation entry (after `if function`): the entry check"),
+    *_single("STAGESDONE", "p", FREE, "a: the chain's ENDCMD. After a fork, Python keeps this context for the final "
+                                      "command"),
+    *_family("score", [
+        ("SET", "hoi", ENTRY, "a: holders, b: objective, c: value"),
+        ("ADD", "hoi", ENTRY, "a holders, b o, c value"),
+        ("REMOVE", "hoi", ENTRY, "a holders, b o, c value"),
+    ]),
+    # the cold commands of a line of their own, served by one branch of the dispatch (one entry
+    # rule: skipped without a context, the root cut without quota, then charged)
+    *_family("line", [
+        ("RESET", "ho", ENTRY, "a holders, b o"),
+        ("RESETALL", "h", ENTRY, "a holders"),
+        ("GET", "ho", ENTRY, "a h (a name or @s), b o"),
+        ("ENABLE", "ho", ENTRY, "a: holders, b: objective. `scoreboard players enable`"),
+        ("TAG", "sib", ENTRY, "a: selector, b: tag bit, c: 1 add / 0 remove. `tag SEL add|remove T` (fails when "
+                              "nothing changes)"),
+        ("HOST", "x", ENTRY, "a: host op index. A final command run by Python (charged here, per context)"),
+        ("LOG", "xs", ENTRY, "a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player "
+                             "(TellRawCommand: EntityArgument.getPlayers), else its result is the count. The line is "
+                             "queued in logbuf (op, context) either way: the host's tellraw decides what is written, "
+                             "when the VM returns (before Python serves anything else, so the log keeps its order)"),
+        ("GETPOS", "i", ENTRY, "a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: "
+                               "Mth.floor"),
+        ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) "
+                             "axes. `tp SEL X Y Z`: every target to the same position (the execution position plus "
+                             "the relative parts), each keeping its rotation; outside the spawnable bounds the "
+                             "command fails"),
+    ]),
+    *_single("SELHOLDERS", "sb", FREE, "a: selector, b: 0 targets / 1 sources. The holders of the selector's "
+                                       "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "
+                                       "sources from the buffer's middle (R_NSEL2 of them). A separate op keeps calls "
+                                       "out of the scoreboard ops (a call costs them ~20 %)"),
+    *_family("condition", [
+        ("IFSCORE", "choho" + "bb", CONDITION, "a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final"),
+        ("IFMATCH", "hoii_bb", CONDITION, "a h, b o, c lo, d hi, f negated, g final"),
+        ("IFENT", "s____bb", CONDITION, "a: selector, f negated, g final. `if|unless entity SEL`"),
+        ("IFDIM", "l____bb", CONDITION, "a: dimension (Program.dimensions), f negated, g final. `if|unless "
+                                        "dimension D`: the context's dimension (ctx_dim) is D"),
+    ]),
+    *_single("CHKOBJ", "obb", STAGE, "a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o "
+                                     "does not exist, or (c) without an executor (\"No entity was found\": the "
+                                     "command, or in a forked chain this context)"),
+    *_single("STORE", "bho", FREE, "a: 0 result / 1 success, b h (a name or @s), c o"),
+    *_family("call", [
+        ("CALL", "f", ENTRY, "a: function id"),
+        ("CALLREG", "", ENTRY, "call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1"),
+    ]),
+    *_family("return", [
+        ("FEND", "", FREE, "end of a function body: return without a result"),
+        ("RETV", "ib", CHECK, "a: value, b: 1 when the return is its own command line (an entry). `return N`. In a "
+                              "forked chain every context returns (BuildContexts runs the custom command for each "
+                              "one): RETV counts the returns in R_NRET and goes on; the chain's RETPEND then ends "
+                              "the function"),
+        ("RETFAIL", "_b", CHECK, "b: as RETV. `return fail`"),
+        ("RETRES", "", CHECK, "end of `return run CMD`: return CMD's result (fail if it had none)"),
+        ("RETNONE", "", FREE, "abort target of `return run`: end the function without a result"),
+        ("RETPEND", "", FREE, "after a forked chain ending in `return N|fail`: return, if some context did"),
+    ]),
+    *_family("returned", [
+        ("RETIFHAS", "p", FREE, "a: pc after the calls. `return run function #tag`: a member that returned skips "
+                                "the later members (the discard drops them); the chain's stores and RETRES follow"),
+        ("IFFN_STEP", "p", FREE, "a: pc after the calls. A returned member ends the isolated call"),
+    ]),
+    *_single("IFNOFN", "p", FREE, "a: target. After OP_MACRO in a tag call: a member that could not be "
+                                  "instantiated (or no context) skips the rest of the call (the command fails)"),
+    *_single("TAGBEGIN", "", FREE, "acc_any = 0, acc_sum = 0"),
+    *_single("TAGACC", "", FREE, "add the last call's result to the accumulator"),
+    *_single("TAGEND", "", CHECK, "the tag's result: the sum, if any member returned"),
+    *_single("IFFN_BEGIN", "", FREE, "has = 0"),
+    *_single("IFFN_END", "b", FREE, "a: negated. alive &= (value != 0) != negated; no return counts as value 0. A "
+                                    "function that returned in several contexts passes the context once per return "
+                                    "(ST_REPEAT)"),
+    *_single("FAIL", "inbb", OPERAND, "a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command "
+                                      "fails"),
+    *_single("RESULT", "bi", FREE, "a: ok, b: value. The result of `return N|fail` ending a chain, for its stores"),
+    *_single("JMPDEAD", "p", FREE, "a: target. `run return run ...` with no context left: skip it"),
+    *_single("STOP", "", FREE, "abort the chain without an error (`if function` on an empty tag)"),
+    *_single("STOREPOS", "ibd", FREE, "a: axis, b: 0 result / 1 success, c: scale (index into floats). "
+                                      "Pos[a] = (double)(v * S)"),
+    *_single("MACRO", "m", FREE, "a: macro call index. Python instantiates, sets regs[R_CALLFN]"),
+    *_single("HOSTSTAGE", "xb", STAGE, "a: host op index, b forked. An execute stage run by Python: sets alive, "
+                                       "R_CTX"),
+    *_single("HOSTSTORE", "x", FREE, "a: host op index. `store ... storage|entity|block|bossbar`, after the result"),
+    *_single("ASSTAGE", "sbb", STAGE, "a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: "
+                                      "as, at, positioned as, rotated as). One context per entity found: `as` "
+                                      "contexts made earlier in the root come from as_cache, the others from Python "
+                                      "(ST_FORK)"),
+    *_single("POSSTAGE", "_b", STAGE, "b forked. The `store ... entity @s Pos[i] double S` stage: fails without an "
+                                      "executor"),
+    *_family("operation", [(f"OPER{symbol}", "hoho", ENTRY, f"a h1, b o1, c h2, d o2. `{symbol}`")
+                           for _, symbol in OPERATIONS]),
+]
+TABLE = tuple(Opcode(code, name, operands, cost, family, doc)
+              for code, (family, name, operands, cost, doc) in enumerate(_ROWS))
+BY_CODE = {op.code: op for op in TABLE}
+OPERATION_KINDS = {symbol: k for k, (_, symbol) in enumerate(OPERATIONS)}
+
+
+def families() -> dict[str, tuple[int, int]]:
+    """Each family's range of numbers (first, last), in numbering order."""
+    ranges: dict[str, tuple[int, int]] = {}
+    for op in TABLE:
+        first, _ = ranges.get(op.family, (op.code, op.code))
+        ranges[op.family] = (first, op.code)
+    return ranges
