@@ -7,6 +7,7 @@ from pathlib import Path
 
 import click
 
+from emulator.cli.outcome import CLEAN, PROBLEMS, exit_status, fail_option, has_errors, progress
 from emulator.cli.params import FiniteFloat, OutputPath, PackPath, write_output
 from poolgame.shot import BREAK, DEFAULT_PACK, Shot, ShotResult, in_player_units, missing_functions, new_table, play
 
@@ -54,10 +55,12 @@ def _shot(break_: bool, angle, speed, tip, elevation) -> Shot:
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 @click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
 @click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the outcome as JSON.")
-def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitize, json_out) -> None:
-    """Set up a table with the pool datapack PACK (a folder or .zip file; default: the pool datapack that ships with dpemu), rack,
-    strike, and emulate until the table is at rest. Exit status 1 when the pack refuses the shot,
-    the table does not come to rest within --max-ticks, or the sanitizer finds a wrapped value."""
+@fail_option
+def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitize, json_out, no_fail) -> None:
+    """Set up a table with the pool datapack PACK (a folder or .zip file; default: the pool
+    datapack that ships with dpemu), rack, strike, and emulate until the table is at rest. Exit
+    status 1 when the pack refuses the shot, the table does not come to rest within --max-ticks,
+    the run had errors or the sanitizer finds a wrapped value."""
     chosen = _shot(break_, angle, speed, tip, elevation)
     pack = pack or DEFAULT_PACK
     if not pack.exists():
@@ -70,12 +73,14 @@ def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitiz
     if missing:
         click.echo(f"{pack}: not a pool datapack (no {', '.join(missing)})", err=True)
         sys.exit(1)
-    result = play(emu, chosen, max_ticks)
+    with progress(max_ticks, "ticks", 200) as bar:
+        result = play(emu, chosen, max_ticks, on_tick=lambda: bar.update(1))
     _print(result, to_stderr=json_out == "-")
     written = not json_out or write_output(json_out, json.dumps(result.to_json(), indent=2) + "\n")
-    if result.interrupted:
-        sys.exit(130)
-    sys.exit(1 if result.refused or not result.at_rest or result.overflows or not written else 0)
+    problems = has_errors(emu.load_diagnostics) or has_errors(result.diagnostics) or bool(result.overflows)
+    unfinished = bool(result.refused) or not result.at_rest
+    status = exit_status(problems, no_fail, written, result.interrupted)
+    sys.exit(status or (PROBLEMS if unfinished else CLEAN))
 
 
 def _print(result: ShotResult, to_stderr: bool) -> None:

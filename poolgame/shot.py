@@ -176,8 +176,9 @@ def strike(emu: Emulator, shot: Shot) -> list[str]:
     return [plain_text(entry.text) for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
 
 
-def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
-    """Strike and tick until ``$resting pool.game`` is 1 or ``max_ticks`` ran."""
+def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None) -> ShotResult:
+    """Strike and tick until ``$resting pool.game`` is 1 or ``max_ticks`` ran (``on_tick`` hears
+    each tick: a progress bar)."""
     refused = strike(emu, shot)
     holders = ball_holders(emu)
     start = ball_states(emu, holders)
@@ -191,6 +192,8 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000) -> ShotResult:
     try:
         for tick in range(1, max_ticks + 1):
             emu.tick()
+            if on_tick is not None:
+                on_tick()
             carried += emu.score("$carry", "pool.game") == 1
             now = ball_states(emu, holders)
             last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})

@@ -17,7 +17,11 @@ import click
 
 from emulator.profile import formats
 from emulator.api import Emulator
-from emulator.cli.options import OrderedCommand, apply_setup, parse_call, parse_set, parse_until, run_options
+from emulator.cli.options import (
+    OrderedCommand, apply_setup, load_or_usage_error, parse_call, parse_set, parse_until, run_options,
+)
+from emulator.cli.outcome import exit_status, fail_option, has_errors, interruptible, progress
+from emulator.cli.params import OutputPath, write_output
 from emulator.profile.data import Profile, RootRuns
 
 STACK_FORMATS = ("collapsed", "trace")
@@ -30,11 +34,13 @@ STACK_FORMATS = ("collapsed", "trace")
 @click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")
 @click.option("--format", "fmt", type=click.Choice(formats.FORMATS), default="table", show_default=True)
 @click.option("--top", default=20, show_default=True, type=click.IntRange(min=1), help="Rows per table section.")
-@click.option("-o", "--output", metavar="FILE", type=click.Path(dir_okay=False), help="Write here instead of stdout.")
+@click.option("-o", "--output", metavar="FILE", type=OutputPath(), help="Write here instead of stdout.")
 @click.option("--baseline", metavar="FILE", help="A JSON profile to compare with: exit 1 when a function grew.")
 @click.option("--threshold", default=formats.DEFAULT_THRESHOLD, show_default=True, type=click.FloatRange(min=0),
               metavar="PCT", help="Allowed growth per function with --baseline, in percent.")
-def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, output, baseline, threshold) -> None:
+@fail_option
+def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, output, baseline, threshold,
+            no_fail) -> None:
     """Profile PACKS: run #minecraft:load, apply --set and --call in order, run --ticks ticks, report
     command counts."""
     if fmt in STACK_FORMATS and backend == "numba":
@@ -46,42 +52,39 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace)
     load_commands = emu.start()
     loaded = emu.profile  # the host ops listed are those after the load's setup
-    apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
-    for _ in range(ticks):
-        emu.tick()
-        if stop and stop.met(emu):
-            break
+    with interruptible() as stopped:
+        apply_setup(emu, click.get_current_context().meta.get("dpemu.run.order", []), sets, calls)
+        with progress(ticks, "ticks", 200) as bar:
+            for _ in range(ticks):
+                emu.tick()
+                bar.update(1)
+                if stop and stop.met(emu):
+                    break
     report = build_report(emu.profile, emu.packs.sources, loaded, load_commands)
     text = {"table": lambda: formats.write_table(report, top), "json": lambda: formats.write_json(report),
             "collapsed": lambda: formats.write_collapsed(report), "trace": lambda: trace.text()}[fmt]()
-    if output:
-        Path(output).write_text(text)
-    else:
-        click.echo(text, nl=False)
-    if saved is not None:
-        _check_baseline(saved, report, threshold, baseline)
+    written = write_output(output or "-", text if output else text.rstrip("\n"))
+    for diag in emu.diagnostics:
+        click.echo(diag.format(), err=True)
+    grew = _check_baseline(saved, report, threshold, baseline) if saved is not None else False
+    problems = has_errors(emu.load_diagnostics) or has_errors(emu.diagnostics)
+    sys.exit(exit_status(problems, no_fail, written, stopped[0]) or (1 if grew else 0))
 
 
 def _loaded(packs, mc_version: str | None, stacks: bool, trace) -> Emulator:
     """An emulator with ``packs`` loaded: the numba VM, or the reference backend recording stacks."""
     emu = Emulator(backend="python", stacks=True, trace=trace) if stacks else Emulator(backend="numba")
-    try:
-        emu.load(list(packs), mc_version)
-    except ValueError as error:
-        raise click.BadParameter(str(error), param_hint="--mc") from None
-    for diag in emu.load_diagnostics:
-        if diag.severity == "error":
-            click.echo(diag.format(), err=True)
-    return emu
+    return load_or_usage_error(emu, packs, mc_version)
 
 
-def _check_baseline(saved: dict, report: dict, threshold: float, path: str) -> None:
+def _check_baseline(saved: dict, report: dict, threshold: float, path: str) -> bool:
+    """Print the functions that grew past ``threshold`` over the saved profile; True if any did."""
     grown = formats.compare(saved, report, threshold)
     for line in grown:
         click.echo(f"regression: {line}", err=True)
-    if grown:
-        sys.exit(1)
-    click.echo(f"no function grew more than {threshold:g}% over {path}", err=True)
+    if not grown:
+        click.echo(f"no function grew more than {threshold:g}% over {path}", err=True)
+    return bool(grown)
 
 
 def _read_baseline(path: str) -> dict:

@@ -5,8 +5,9 @@ import sys
 
 import click
 
+from emulator.cli.outcome import exit_status, interruptible
 from emulator.cli.params import OutputPath, write_output
-from emulator.testing import discover, run_suite
+from emulator.testing import Summary, discover, run_suite
 from emulator.testing.discovery import DiscoveryError, selected
 from emulator.testing.junit import junit_xml
 
@@ -29,10 +30,16 @@ def test(paths, pattern, junit_file, backend) -> None:
         for diag in packs.errors:
             click.echo(diag.format(), err=True)
 
-    summary = run_suite(files, backend, pattern, on_result=lambda r: click.echo(r.report()), on_load=loaded)
-    if not summary.results:
+    summary = Summary()
+    with interruptible() as stopped:
+        def reported(result) -> None:  # each test's line as it ends is the progress
+            summary.results.append(result)
+            click.echo(result.report())
+
+        run_suite(files, backend, pattern, on_result=reported, on_load=loaded)
+    if not summary.results and not stopped[0]:
         click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
                    + ") under " + ", ".join(paths), err=True)
     written = not junit_file or write_output(junit_file, junit_xml(summary))
     click.echo(summary.line())
-    sys.exit(0 if summary.ok and written else 1)
+    sys.exit(exit_status(not summary.ok, written=written, interrupted=stopped[0]))

@@ -45,7 +45,11 @@ class RuntimeDiagnostic:
     def format(self) -> str:
         where = str(self.frames[-1].loc) if self.frames else "<run>"
         lines = [f"{where}: {self.severity}: {self.message} (tick {self.tick})"]
-        lines += [f"    in {f.function} at {f.loc}" for f in reversed(self.frames)]
+        for item in folded(tuple(reversed(self.frames))):
+            if isinstance(item, Frame):
+                lines.append(f"    in {item.function} at {item.loc}")
+            else:
+                lines.append(f"    ... {item.count:,} more frames of {' -> '.join(item.functions)}")
         return "\n".join(lines)
 
     def to_json(self) -> dict:
@@ -53,8 +57,57 @@ class RuntimeDiagnostic:
             "tick": self.tick,
             "severity": self.severity,
             "message": self.message,
-            "traceback": [{"function": f.function, "where": str(f.loc)} for f in self.frames],
+            "traceback": [{"function": i.function, "where": str(i.loc)} if isinstance(i, Frame)
+                          else {"folded": i.count, "functions": list(i.functions)}
+                          for i in folded(tuple(reversed(self.frames)))],
         }
+
+
+@dataclass(frozen=True, slots=True)
+class Folded:
+    """``count`` frames left out of a traceback: a cycle of ``functions`` calling each other again."""
+
+    count: int
+    functions: tuple[str, ...]
+
+
+_LONGEST_CYCLE = 4  # calls that repeat with a longer period are shown as they are
+
+
+def folded(frames: tuple[Frame, ...]) -> list:
+    """``frames`` (innermost first) with each run of a repeating cycle (a function calling itself,
+    or two to four calling each other) kept once at each end and the repeats between replaced by
+    one :class:`Folded`: a 32,768-deep recursion prints three lines, not 32,768."""
+    out: list = []
+    i = 0
+    while i < len(frames):
+        period, repeats = _cycle_at(frames, i)
+        if repeats < 3:
+            out.append(frames[i])
+            i += 1
+            continue
+        out.extend(frames[i:i + period])
+        hidden = (repeats - 2) * period
+        out.append(Folded(hidden, tuple(f.function for f in frames[i:i + period])))
+        last = i + (repeats - 1) * period
+        out.extend(frames[last:last + period])
+        i = last + period
+    return out
+
+
+def _cycle_at(frames: tuple[Frame, ...], start: int) -> tuple[int, int]:
+    """(period, times) of the repeating block starting at ``start`` that covers most frames."""
+    best = (1, 1)
+    for period in range(1, _LONGEST_CYCLE + 1):
+        block = frames[start:start + period]
+        if len(block) < period:
+            break
+        times = 1
+        while frames[start + times * period:start + (times + 1) * period] == block:
+            times += 1
+        if times * period > best[0] * best[1]:
+            best = (period, times)
+    return best
 
 
 @dataclass(frozen=True, slots=True)

@@ -43,7 +43,7 @@ def profile(*args):
 def report(root, *args):
     result = profile(root, "--format", "json", *args)
     assert result.exit_code == 0, result.output
-    return json.loads(result.output)
+    return json.loads(result.stdout)  # diagnostics go to stderr
 
 
 @pytest.mark.parametrize("args", [(), ("--call", "demo:main")])

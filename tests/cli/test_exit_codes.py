@@ -1,0 +1,147 @@
+"""The whole program as a user runs it (a subprocess): one exit-code rule for every subcommand
+(README: 0 clean, 1 the pack or the run had errors, 2 usage errors, 130 interrupted), the first
+line of output saying what happened, and never a traceback."""
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from tests.backends.programs import write_pack
+
+ROOT = Path(__file__).resolve().parents[2]
+LOAD = {"minecraft:load": ["t:load"]}
+BASE = {"t:load": "scoreboard objectives add o dummy", "t:ok": "scoreboard players set #a o 1"}
+
+
+def dpemu(*args, timeout=300) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "emulator", *map(str, args)], capture_output=True, text=True,
+                          timeout=timeout, cwd=ROOT)
+
+
+def first_line(text: str) -> str:
+    return text.strip().splitlines()[0] if text.strip() else ""
+
+
+def no_traceback(done: subprocess.CompletedProcess) -> None:
+    assert "Traceback" not in done.stderr + done.stdout
+
+
+@pytest.fixture
+def pack(tmp_path):
+    def make(functions=None, tags=LOAD):
+        return write_pack(tmp_path / "pack", {**BASE, **(functions or {})}, tags)
+    return make
+
+
+def test_a_clean_run_exits_0(pack):
+    done = dpemu("run", pack(), "--call", "t:ok", "--backend", "python")
+    assert done.returncode == 0 and first_line(done.stdout).startswith("ticks: 1")
+    no_traceback(done)
+
+
+@pytest.mark.parametrize("functions, call, first", [
+    ({"t:div": "scoreboard players set #z o 0\nscoreboard players operation #a o /= #z o"}, "t:div",
+     "div.mcfunction:2:1: error: Cannot divide by zero"),
+    ({}, "t:nowhere", "error: Unknown function t:nowhere"),
+    ({"t:bad": "scoreboard players sett #a o 1"}, "t:ok", "bad.mcfunction:1:20: error"),
+])
+def test_errors_of_the_pack_or_the_run_exit_1(pack, functions, call, first):
+    done = dpemu("run", pack(functions), "--call", call, "--backend", "python")
+    assert done.returncode == 1, done.stderr
+    assert first in first_line(done.stderr)
+    no_traceback(done)
+    allowed = dpemu("run", pack(functions), "--call", call, "--backend", "python", "--no-fail-on-diagnostics")
+    assert allowed.returncode == 0
+
+
+def test_a_missing_pack_mcmeta_and_a_broken_tag_exit_1(pack):
+    root = pack()
+    (root / "data/minecraft/tags/function/load.json").write_text('{"values": ["t:load", "t:missing"]}')
+    done = dpemu("run", root, "--backend", "python")
+    assert done.returncode == 1 and "function tag #minecraft:load fails to load" in first_line(done.stderr)
+    (root / "pack.mcmeta").unlink()
+    done = dpemu("run", root, "--backend", "python")
+    assert done.returncode == 1 and "pack.mcmeta" in first_line(done.stderr)
+    no_traceback(done)
+
+
+def test_a_wrapped_value_under_the_sanitizer_exits_1(pack):
+    root = pack({"t:wrap": "scoreboard players set #m o 2147483647\nscoreboard players add #m o 1"})
+    done = dpemu("run", root, "--call", "t:wrap", "--sanitize", "--backend", "python")
+    assert done.returncode == 1 and "overflows: 1" in done.stdout
+    assert dpemu("run", root, "--call", "t:wrap", "--backend", "python").returncode == 0
+
+
+def test_profile_prints_the_runs_diagnostics_and_exits_1(pack):
+    done = dpemu("profile", pack(), "--call", "t:nowhere", "--backend", "python")
+    assert done.returncode == 1 and "Unknown function t:nowhere" in done.stderr
+    no_traceback(done)
+
+
+@pytest.mark.parametrize("command", [
+    ["run", "{pack}", "--json", "{missing}/r.json"], ["run", "{pack}", "--csv", "{missing}/r.csv"],
+    ["profile", "{pack}", "-o", "{missing}/p.txt"], ["test", "{pack}", "--junit", "{missing}/j.xml"],
+    ["shot", "--break", "--json", "{missing}/s.json"],
+])
+def test_an_output_in_a_missing_folder_is_a_usage_error_before_any_work(pack, tmp_path, command):
+    args = [a.format(pack=pack(), missing=tmp_path / "no" / "such") for a in command]
+    done = dpemu(*args)
+    assert done.returncode == 2 and "does not exist" in done.stderr
+    assert done.stdout == ""  # nothing ran
+    no_traceback(done)
+
+
+@pytest.mark.parametrize("args, option", [
+    (["--ticks", "99999999999999999999"], "--ticks"), (["--set", "@e o 1"], "--set"),
+    (["--set", "#a nowhere 1"], "--set"), (["--ticks", "-1"], "--ticks"),
+])
+def test_bad_numbers_and_holders_are_usage_errors(pack, args, option):
+    done = dpemu("run", pack(), "--backend", "python", *args)
+    assert done.returncode == 2 and option in done.stderr
+    no_traceback(done)
+
+
+def test_csv_dash_is_standard_output_and_no_progress_label_leaks_into_logs(pack):
+    done = dpemu("run", pack(), "--backend", "python", "--ticks", "300", "--watch", "#a o", "--call", "t:ok",
+                 "--csv", "-")
+    assert done.returncode == 0
+    assert "tick,#a o" in done.stdout and "300,1" in done.stdout
+    assert all(line.strip() != "ticks" and "%" not in line for line in done.stderr.splitlines())  # no bar
+    assert not (ROOT / "-").exists()
+
+
+def test_a_self_calling_function_prints_a_folded_traceback(pack):
+    done = dpemu("run", pack({"t:loop": "function t:loop"}), "--call", "t:loop", "--backend", "python", "--json", "-")
+    assert done.returncode == 0  # the quota cut is the game's warning, not an error
+    assert len(done.stderr.splitlines()) < 20 and "more frames of t:loop" in done.stderr
+    report = json.loads(done.stdout)
+    assert len(done.stdout) < 50_000
+    assert {"folded": 65534, "functions": ["t:loop"]} in report["diagnostics"][0]["traceback"]
+
+
+def test_a_version_the_pack_does_not_support_is_said(tmp_path):
+    done = dpemu("run", ROOT / "datapack", "--mc", "1.20.4", "--backend", "python")
+    assert "pack supports formats 48-94, not 1.20.4" in done.stderr
+
+
+def test_ctrl_c_prints_what_ran_and_exits_130(pack):
+    root = pack({"t:tick": "scoreboard players add #n o 1"}, {**LOAD, "minecraft:tick": ["t:tick"]})
+    process = subprocess.Popen([sys.executable, "-m", "emulator", "run", str(root), "--backend", "python",
+                                "--ticks", "100000000", "--watch", "#n o"], cwd=ROOT,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(4)
+    process.send_signal(signal.SIGINT)
+    out, err = process.communicate(timeout=120)
+    assert process.returncode == 130, err
+    assert "interrupted" in err and first_line(out).startswith("ticks: ")
+    assert "Traceback" not in err and "Aborted" not in err
+    ticks = int(first_line(out).split()[1])
+    watched = int(out.split("#n o = ")[1].split()[0])
+    assert 0 < ticks < 100000000 and watched in (ticks, ticks + 1)  # the tick Ctrl-C cut may be half done
