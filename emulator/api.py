@@ -131,6 +131,11 @@ class Emulator:
             raise ValueError(f"score {value} is outside the 32-bit range")
         self.state.scoreboard.set(holder, objective, int(value))
 
+    def objectives(self) -> list[str]:
+        """The objectives that exist now, in creation order."""
+        board = self.state.scoreboard
+        return [name for name in board.objectives if board.exists(name)]
+
     def scores(self) -> dict[str, dict[str, int]]:
         return self.state.scoreboard.scores()
 

@@ -140,3 +140,12 @@ def test_players_earn_the_per_tick_statistics(tmp_path):
     emu.run_until(lambda e: False, max_ticks=2)
     assert (emu.score("Steve", "play"), emu.score("Steve", "rest"), emu.score("Steve", "sneak")) == (5, 5, 2)
     assert emu.score("#n", "play") is None
+
+
+def test_objectives_lists_the_ones_that_exist_now(tmp_path):
+    pack = write_pack(tmp_path / "pack", {"t:main": "scoreboard objectives add a dummy\nscoreboard objectives add b dummy\n"
+                                                    "scoreboard objectives remove a"})
+    emu = Emulator(backend="python")
+    emu.load(pack)
+    emu.call("t:main")
+    assert emu.objectives() == ["b"]

@@ -119,7 +119,7 @@ def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[s
     for name in order:
         if name == "set_":
             holder, objective, value = next(sets_iter)
-            if objective not in emu.state.scoreboard.objectives:
+            if objective not in emu.objectives():
                 raise click.UsageError(f"--set {holder} {objective} {value}: no objective {objective!r} "
                                        "(the packs' load did not create it)")
             emu.set_score(holder, objective, value)
