@@ -17,7 +17,8 @@ from emulator.testing.junit import junit_xml
 @click.option("-k", "pattern", metavar="PATTERN", help="Only tests whose id contains PATTERN.")
 @click.option("--junit", "junit_file", metavar="FILE", type=OutputPath(stdout=False), help="Write JUnit XML.")
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
-def test(paths, pattern, junit_file, backend) -> None:
+@click.option("--strict", is_flag=True, help="A runtime error during a test (unknown function, division by zero ...) fails it.")
+def test(paths, pattern, junit_file, backend, strict) -> None:
     """Run the test files in PATHS (packs as folders or .zip files, folders in a pack, or test files)."""
     try:
         files = discover(list(paths))
@@ -36,7 +37,7 @@ def test(paths, pattern, junit_file, backend) -> None:
             summary.results.append(result)
             click.echo(result.report())
 
-        run_suite(files, backend, pattern, on_result=reported, on_load=loaded)
+        run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict)
     if not summary.results and not stopped[0]:
         click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
                    + ") under " + ", ".join(paths), err=True)

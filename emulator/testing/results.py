@@ -37,7 +37,7 @@ class TestResult:
         lines = [f"{label} {self.id}"]
         if self.status != PASSED:
             lines.append(f"  {self.where}: {self.message}")
-            lines.extend("  " + d.replace("\n", "\n  ") for d in self.details)
+        lines.extend("  " + d.replace("\n", "\n  ") for d in self.details)  # a passed test's runtime errors too
         return "\n".join(lines)
 
 

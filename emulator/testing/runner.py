@@ -95,14 +95,15 @@ def _in_batches(cases: list[TestCase]) -> list[TestCase]:
 
 
 def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None = None,
-              on_result: Callable[[TestResult], None] | None = None, on_load=None) -> Summary:
-    """Run every test in ``files`` (those whose id contains ``pattern``, case-insensitively)."""
+              on_result: Callable[[TestResult], None] | None = None, on_load=None, strict: bool = False) -> Summary:
+    """Run every test in ``files`` (those whose id contains ``pattern``, case-insensitively);
+    ``strict``: a runtime error during a test fails it."""
     summary = Summary()
     for packs, cases in load_suite(files, pattern):
         if on_load is not None:
             on_load(packs)
         for case in cases:
-            result = run_case(case, packs, backend)
+            result = run_case(case, packs, backend, strict)
             summary.results.append(result)
             if on_result is not None:
                 on_result(result)
@@ -122,7 +123,7 @@ def run_load(emu: Emulator) -> Emulator:
     return emu
 
 
-def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
+def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False) -> TestResult:
     result = TestResult(case.id, case.path, PASSED, optional=case.directives.optional)
     if case.errors:
         first = case.errors[0]
@@ -151,8 +152,12 @@ def run_case(case: TestCase, packs, backend: str = "numba") -> TestResult:
         emu.call(case.after_batch)
     result.ticks = emu.ticks
     result.seconds = time.perf_counter() - started
-    if result.status != PASSED:
-        result.details = list(dict.fromkeys(d.format() for d in emu.diagnostics))
+    errors = [d for d in emu.diagnostics if d.severity == "error"]
+    if result.status == PASSED and errors and strict:
+        result.status, result.message = FAILED, f"{len(errors)} runtime error(s) during the test (--strict)"
+    # shown with the test: every diagnostic when it did not pass, the runtime errors when it did
+    shown = emu.diagnostics if result.status != PASSED else errors
+    result.details = list(dict.fromkeys(d.format() for d in shown))
     return result
 
 

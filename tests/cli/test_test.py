@@ -52,3 +52,12 @@ def test_no_tests_found_is_said(pack):
     result = CliRunner().invoke(main, ["test", str(pack({"demo/function/f.mcfunction": "say hi\n"}))])
     assert result.exit_code == 0 and "no test files (data/<ns>/test/**.mcfunction) under" in result.output
     assert result.output.splitlines()[-1] == "0 passed, 0 failed"
+
+
+def test_runtime_errors_show_with_the_test_and_fail_it_under_strict(pack):
+    root = pack({"demo/test/div.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set #z o 0\n"
+                                             "scoreboard players operation #a o /= #z o\nassert score #z o matches 0\n"})
+    relaxed = CliRunner().invoke(main, ["test", str(root)])
+    assert relaxed.exit_code == 0 and "PASS demo:div" in relaxed.output and "Cannot divide by zero" in relaxed.output
+    strict = CliRunner().invoke(main, ["test", str(root), "--strict"])
+    assert strict.exit_code == 1 and "1 runtime error(s) during the test (--strict)" in strict.output
