@@ -24,6 +24,7 @@ from emulator.runtime.server import Runtime
 from emulator.world.context import Context
 from emulator.world.semantics import INT_MAX, INT_MIN
 from mcfunction_parser.diagnostics import Diagnostic
+from mcfunction_parser.nbt import Byte
 
 
 class Emulator:
@@ -141,11 +142,13 @@ class Emulator:
 
     # ------------------------------------------------------------------ entities
     def add_player(self, name: str, pos=(0.0, 0.0, 0.0), rotation=(0.0, 0.0), gamemode: str = "survival",
-                   level: int = 0) -> str:
-        """Put a simulated player in the world (after :meth:`load`); returns its UUID string.
-        ``rotation`` is (yaw, pitch) in degrees."""
+                   level: int = 0, on_ground: bool = True) -> str:
+        """Put a simulated player in the world (after :meth:`load`, at any tick); returns its UUID
+        string. ``rotation`` is (yaw, pitch) in degrees. The world has no terrain, so ``on_ground``
+        says whether the player stands (``OnGround:1b``, as a player on a floor does) or is in the air."""
         player = self.state.entities.add_player(name, tuple(float(c) for c in pos), rotation[0], rotation[1],
                                                 gamemode, level)
+        player.data["OnGround"] = Byte(1 if on_ground else 0)
         return player.uuid_string
 
     def entities(self, selector: str = "@e") -> list[dict]:

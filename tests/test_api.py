@@ -149,3 +149,20 @@ def test_objectives_lists_the_ones_that_exist_now(tmp_path):
     emu.load(pack)
     emu.call("t:main")
     assert emu.objectives() == ["b"]
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_an_added_player_stands_on_the_ground_unless_told_otherwise(tmp_path, backend):
+    # packs place things where a player stands (@s[nbt={OnGround:1b}]); the world has no terrain,
+    # so the player's footing is the API's to say
+    pack = write_pack(tmp_path / "pack", {"t:main": "scoreboard objectives add o dummy\n"
+                                                    "execute as @a[nbt={OnGround:1b}] run scoreboard players add #ground o 1\n"
+                                                    "execute as @a[nbt={OnGround:0b}] run scoreboard players add #air o 1"})
+    emu = Emulator(backend=backend)
+    emu.load(pack)
+    emu.start()
+    emu.add_player("Steve", (0, 64, 0))
+    emu.tick()  # a join after the load
+    emu.add_player("Alex", (0, 80, 0), on_ground=False)
+    emu.call("t:main")
+    assert (emu.score("#ground", "o"), emu.score("#air", "o")) == (1, 1)
