@@ -4,28 +4,35 @@ What each command does is not here: both backends run :mod:`emulator.commands`.
 
 Modules
 - :mod:`.queue`       the command queue of one root (ExecutionContext): frames, quota, cost
-- :mod:`.engine`      function calls, execute chains, ``function``/``return``/``if function``
+- :mod:`.engine`      function calls, execute chains, ``function``/``return``/``if function``,
+                      and the call recording (calls, charges in their call stacks, the trace)
 - :mod:`.source`      command sources (context, callback, activation) and call traces
 - :mod:`.adapter`     the interpreter as the commands' environment; stages and stores on sources
 """
 from __future__ import annotations
 
-from emulator.runtime.backend import RootResult
+from emulator.runtime.backend import CallRecorder, RootResult, Tracer
 from emulator.world.state import Context, WorldState
 
 from .engine import Interpreter
 
 
 class ReferenceBackend:
-    """Implements :class:`emulator.runtime.backend.Backend`."""
+    """Implements :class:`emulator.runtime.backend.Backend` and
+    :class:`~emulator.runtime.backend.CallRecording`."""
 
     name = "python"
 
     def __init__(self) -> None:
         self._interpreter: Interpreter | None = None
+        self._recorder: CallRecorder | None = None
+        self._tracer: Tracer | None = None
+
+    def record_calls(self, recorder: CallRecorder, tracer: Tracer | None = None) -> None:
+        self._recorder, self._tracer = recorder, tracer
 
     def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
-        self._interpreter = Interpreter(packs, state, sanitize)
+        self._interpreter = Interpreter(packs, state, sanitize, self._recorder, self._tracer)
 
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
         if self._interpreter is None:

@@ -10,7 +10,11 @@ returns and command costs agree with it by construction:
 - ``_isolated_call``      IsolatedCall      (``execute if function``: a frame of its own)
 - ``_run_function_command`` / ``_return``   the custom executors of ``function`` and ``return``
 
-See :mod:`emulator.runtime.backend` for the cost rule both backends share.
+See :mod:`emulator.runtime.backend` for the cost rule both backends share. Given a
+:class:`~emulator.runtime.backend.CallRecorder` and a :class:`~emulator.runtime.backend.Tracer`,
+the interpreter tells them what happens where the game would: each call (charged on the caller's
+line), each quota unit with the call stack it is charged in, and to the tracer each root, command,
+result and error. Without them each of those points costs one ``is None`` test.
 """
 from __future__ import annotations
 
@@ -19,7 +23,7 @@ from collections import Counter
 from emulator.commands.data import macro_arguments
 from emulator.world.errors import CommandFailure
 from emulator.commands.server import require_function
-from emulator.runtime.backend import RootResult, report_quota_cut
+from emulator.runtime.backend import CallRecorder, RootResult, Tracer, report_quota_cut
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
 from emulator.world.state import Context, WorldState
@@ -36,17 +40,22 @@ FORKS = (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs, ast.ExFacingEn
 
 
 class Interpreter:
-    def __init__(self, packs, state: WorldState, sanitize: bool = False) -> None:
+    def __init__(self, packs, state: WorldState, sanitize: bool = False, recorder: CallRecorder | None = None,
+                 tracer: Tracer | None = None) -> None:
         self.packs = packs
         self.state = state
         self.macros = MacroExpander(packs.version)
         self.env = adapter.ReferenceEnv(state, packs, sanitize)
         self.line_counts: Counter[tuple[str, int]] = Counter()
         self._stages: dict[int, tuple[ast.Command, tuple]] = {}
+        self.recorder = recorder
+        self.tracer = tracer
 
     # ------------------------------------------------------------------ roots
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
         """``ExecutionContext.queueInitialFunctionCall`` then ``runCommandQueue``."""
+        if self.tracer is not None:
+            self.tracer.root(function_id)
         function = self.packs.functions.get(function_id)
         if function is None:
             self.state.error(f"Unknown function {function_id}")
@@ -77,9 +86,9 @@ class Interpreter:
     def _call_function(self, function: ast.Function, commands, source: Source, result_callback,
                        return_parent: bool, call_loc) -> Action:
         def call(queue: ExecutionQueue, frame: CallFrame) -> None:
-            queue.charge()
-            if call_loc is not None:  # a root call is on no line
-                self._count(call_loc)
+            self._charge_call(queue, function.id, source.activation, call_loc)
+            if self.tracer is not None:
+                self.tracer.call(frame.depth, function.id, len(commands))
             depth = frame.depth + 1
             new_frame = CallFrame(depth, result_callback, frame.discard_depth if return_parent else depth)
             bound = source.in_function(Activation(function.id, source.activation, call_loc))
@@ -90,25 +99,27 @@ class Interpreter:
 
     def _unbound(self, command: ast.Command, source: Source):
         def build(queue: ExecutionQueue, frame: CallFrame) -> None:
-            self._build_contexts(queue, frame, command, 0, [source], False, False)
+            if self.tracer is not None:
+                self.tracer.command(frame.depth, self._command_text(command.loc))
+            self._build_contexts(queue, frame, command, 0, [source], False, False, source.activation)
 
         build.entry = (source.activation.function, source.activation, command.loc)
         return build
 
     def _build_contexts(self, queue, frame, line: ast.Command, index: int, sources: list[Source],
-                        forked: bool, is_return: bool) -> None:
+                        forked: bool, is_return: bool, activation: Activation) -> None:
+        """The chain of ``line`` (run in ``activation``) from stage ``index`` on, for ``sources``."""
         stages = self._stages_of(line)
         while index < len(stages) - 1:
             stage = stages[index]
             forked = forked or isinstance(stage, FORKS)
             if isinstance(stage, ast.IfFunction):
-                self._if_function(queue, frame, line, index, sources, forked, is_return)
+                self._if_function(queue, frame, line, index, sources, forked, is_return, activation)
                 return
             if isinstance(stage, ast.Return):
-                self._return_run(queue, frame, line, index, sources, forked)
+                self._return_run(queue, frame, line, index, sources, forked, activation)
                 return
-            queue.charge()
-            self._count(line.loc)
+            self._charge(queue, line.loc, activation)
             produced: list[Source] = []
             fork_limit = queue.fork_limit
             for source in sources:
@@ -142,8 +153,7 @@ class Interpreter:
 
     def _execute_command(self, line: ast.Command, command, source: Source):
         def execute(queue: ExecutionQueue, frame: CallFrame) -> None:
-            queue.charge()
-            self._count(line.loc)
+            self._charge(queue, line.loc, source.activation)
             try:
                 value = adapter.run_command(self.env, command, source, line.loc)
             except CommandFailure as failure:
@@ -153,12 +163,14 @@ class Interpreter:
                 return
             if source.callback is not None:
                 source.callback(True, value)
+            if self.tracer is not None:  # the game traces a result only when the command did not throw
+                self.tracer.result(frame.depth, self._command_text(line.loc), value)
 
         execute.entry = (source.activation.function, source.activation, line.loc)
         return execute
 
     # ------------------------------------------------------------------ custom stages
-    def _return_run(self, queue, frame, line, index, sources, forked) -> None:
+    def _return_run(self, queue, frame, line, index, sources, forked, activation) -> None:
         """ReturnFromCommandCustomModifier: discard the rest of the function, run the rest of the
         chain as a new entry whose result is the function's return."""
         if not sources:
@@ -166,12 +178,12 @@ class Interpreter:
         queue.discard(frame)
 
         def rest(q: ExecutionQueue, f: CallFrame) -> None:
-            self._build_contexts(q, f, line, index + 1, sources, forked, True)
+            self._build_contexts(q, f, line, index + 1, sources, forked, True, activation)
 
         rest.entry = (sources[0].activation.function, sources[0].activation, line.loc)
         queue.queue_next(frame, rest)
 
-    def _if_function(self, queue, frame, line, index, sources, forked, is_return) -> None:
+    def _if_function(self, queue, frame, line, index, sources, forked, is_return, activation) -> None:
         """ExecuteCommand.scheduleFunctionConditionsAndTest: each source calls the functions in a
         frame of its own; the sources whose result passes the check go on to the rest of the chain.
         A function that never returns reaches FallthroughTask: result 0, so ``if`` fails and
@@ -196,7 +208,7 @@ class Interpreter:
             queue.queue_next(frame, self._isolated_call(instances, source, stage.negated, passed, line.loc))
 
         def rest(q: ExecutionQueue, f: CallFrame) -> None:
-            self._build_contexts(q, f, line, index + 1, passed, forked, is_return)
+            self._build_contexts(q, f, line, index + 1, passed, forked, is_return, activation)
 
         rest.entry = (origin.activation.function, origin.activation, line.loc) if origin else None
         queue.queue_next(frame, rest)
@@ -283,12 +295,37 @@ class Interpreter:
         self.state.error(f"internal error in the reference backend: {type(exc).__name__}: {exc}", _where((None, action)))
 
     def _fail(self, failure: CommandFailure, source: Source | None, line: ast.Command) -> None:
+        if self.tracer is not None:
+            self.tracer.error(failure.message)
         if failure.report:
             frames = source.activation.frames(line.loc) if source and source.activation else ()
             self.state.error(failure.message, frames)
 
-    def _count(self, loc) -> None:
+    def _charge_call(self, queue: ExecutionQueue, function_id: str, caller: Activation | None, call_loc) -> None:
+        """CallFunction's unit: on the caller's line, or, for a root's own call, on no line and in
+        the root's stack."""
+        if call_loc is None:
+            queue.charge()
+            if self.recorder is not None:
+                self.recorder.charge((function_id,))
+            return
+        if self.recorder is not None:
+            self.recorder.call(function_id)
+        self._charge(queue, call_loc, caller)
+
+    def _charge(self, queue: ExecutionQueue, loc, activation: Activation) -> None:
+        """One quota unit, on ``loc``'s line, in ``activation``'s call stack."""
+        queue.charge()
         self.line_counts[(loc.path, loc.line)] += 1
+        if self.recorder is not None:
+            self.recorder.charge(activation.stack())
+
+    def _command_text(self, loc) -> str:
+        """The command at ``loc`` as the trace shows it: its source line from its column on."""
+        lines = self.packs.sources.get(loc.path)
+        if not lines or not 0 < loc.line <= len(lines):
+            return "?"
+        return lines[loc.line - 1][loc.col - 1:].strip()
 
     def _stages_of(self, command: ast.Command) -> tuple:
         cached = self._stages.get(id(command))

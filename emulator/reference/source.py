@@ -2,7 +2,8 @@
 
 A :class:`Source` is who runs a command and where (:class:`emulator.world.state.Context`), the callback
 its result goes to (``execute store`` chains callbacks), and the :class:`Activation` it runs in,
-which only serves diagnostics: the function traceback of a runtime error.
+which serves diagnostics (the function traceback of a runtime error) and the call stack each quota
+unit is charged in (:class:`emulator.runtime.backend.CallRecorder`).
 """
 from __future__ import annotations
 
@@ -35,6 +36,15 @@ class Activation:
             if at is not None:
                 out.append(Frame(here.function, at))
             here, at = here.parent, here.call_loc
+        return tuple(reversed(out))
+
+    def stack(self) -> tuple[str, ...]:
+        """The functions from the root to this one."""
+        out: list[str] = []
+        here = self
+        while here is not None:
+            out.append(here.function)
+            here = here.parent
         return tuple(reversed(out))
 
 

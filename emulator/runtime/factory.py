@@ -12,7 +12,7 @@ def make_backend(name: str) -> Backend:
 
         return NumbaBackend()
     if name == "python":
-        from emulator.reference.recording import RecordingReferenceBackend
+        from emulator.reference import ReferenceBackend
 
-        return RecordingReferenceBackend()
+        return ReferenceBackend()
     raise ValueError(f"unknown backend {name!r}: expected 'numba' or 'python'")

@@ -142,6 +142,19 @@ def test_collapsed_stacks_add_up_to_the_command_count(demo):
     assert all(" " not in stack for stack in stacks)
 
 
+def test_a_stage_after_if_function_is_charged_in_its_own_function(pack):
+    # f's line 2 calls f again; the inner f's condition fails, so it returns nothing, the outer
+    # ``if function`` passes no source, and the outer ``as`` stage is charged in the outer f
+    root = pack({"demo/function/main.mcfunction": "scoreboard objectives add o dummy\nfunction demo:f\n",
+                 "demo/function/f.mcfunction": "scoreboard players add #n o 1\n"
+                                               "execute if score #n o matches ..1 if function demo:f as @e run say x\n"})
+    result = profile(root, "--ticks", 0, "--call", "demo:main", "--format", "collapsed")
+    assert result.exit_code == 0, result.output
+    # main: its call, 2 commands; the outer f: add, condition, the call of f, ``as``; the inner f:
+    # add, condition, ``as``
+    assert parse_collapsed(result.output) == {"demo:main": 3, "demo:main;demo:f": 4, "demo:main;demo:f;demo:f": 3}
+
+
 def test_collapsed_needs_the_python_backend(demo):
     result = profile(demo, "--format", "collapsed", "--backend", "numba")
     assert result.exit_code == 2 and "only --backend python" in result.output
