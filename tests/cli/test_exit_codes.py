@@ -145,3 +145,52 @@ def test_ctrl_c_prints_what_ran_and_exits_130(pack):
     ticks = int(first_line(out).split()[1])
     watched = int(out.split("#n o = ")[1].split()[0])
     assert 0 < ticks < 100000000 and watched in (ticks, ticks + 1)  # the tick Ctrl-C cut may be half done
+
+
+def _zipped(folder: Path, archive: Path) -> Path:
+    import zipfile
+
+    with zipfile.ZipFile(archive, "w") as z:
+        for path in folder.rglob("*"):
+            if path.is_file():
+                z.write(path, path.relative_to(folder).as_posix())
+    return archive
+
+
+@pytest.mark.parametrize("args, status, first", [
+    (["shot", "--speed", "nan"], 2, "Usage: dpemu shot"),
+    (["shot", "--speed", "1", "--tip", "0.1,inf"], 2, "Usage: dpemu shot"),
+    (["shot", "--break", "--max-ticks", "20"], 1, "ball"),
+    (["shot", "--speed", "7"], 1, "Pool: shot refused: --speed must be 0.001..6.5 m/s"),
+])
+def test_shot_as_a_process(args, status, first):
+    done = dpemu(*args)
+    assert done.returncode == status, done.stderr
+    assert first_line(done.stdout or done.stderr).startswith(first)
+    if "--max-ticks" in args:
+        assert "still moving" in done.stdout
+    no_traceback(done)
+
+
+def test_zipped_and_broken_packs_as_a_process(pack, tmp_path):
+    archive = _zipped(pack({"t:bad": "scoreboard players sett #a o 1"}), tmp_path / "p.zip")
+    run = dpemu("run", archive, "--call", "t:ok", "--watch", "#a o", "--backend", "python")
+    assert run.returncode == 1 and "#a o = 1" in run.stdout  # the broken function is a load error
+    assert "bad.mcfunction:1:20: error" in first_line(run.stderr)
+    disasm = dpemu("disasm", archive, "t:bad")
+    assert disasm.returncode == 2 and "failed to load" in disasm.stderr
+    broken = tmp_path / "broken.zip"
+    broken.write_bytes(archive.read_bytes()[:100])
+    for command in ("run", "check", "test", "profile"):
+        done = dpemu(command, broken)
+        assert done.returncode == 2 and "is a corrupt .zip archive" in done.stderr, command
+        no_traceback(done)
+
+
+def test_a_huge_literal_is_a_parse_error_at_its_column_as_a_process(pack):
+    root = pack({"t:big": "scoreboard players set #a o " + "9" * 1_000_000})
+    done = dpemu("check", root)
+    assert done.returncode == 1
+    assert "big.mcfunction:1:29: error: integer 99999999999999999999... (1000000 characters) is out of range" \
+        in first_line(done.stdout)
+    no_traceback(done)
