@@ -11,6 +11,7 @@ from emulator.world.blocks import BlockSpec, block_pos, parse_block
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
 from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.snbt import compound as parse_compound
 
 from .entities import world_source
 from emulator.world.errors import CommandFailure
@@ -64,10 +65,33 @@ def _read(cmd: ast.GenericCommand) -> tuple[list, list[str]]:
             corners.append(vec3(reader, block=True))
     except ParseError as error:
         raise CommandFailure("dpemu.command.unreadable", cmd.name, error, report=True) from None
-    words = cmd.text[reader.pos:].split()
+    words = []
+    try:
+        reader.skip_ws()
+        while reader.more():
+            words.append(_word(reader))
+            reader.skip_ws()
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error, report=True) from None
     if not words:
         raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected a block", report=True)
     return corners, words
+
+
+def _word(reader: Reader) -> str:
+    """One argument: a word, or a block whose ``[states]`` and ``{nbt}`` may hold spaces and
+    quoted strings (BlockStateParser reads the NBT with the SNBT parser, not up to a space)."""
+    start, text = reader.pos, reader.text
+    while reader.pos < reader.end and not text[reader.pos].isspace() and text[reader.pos] not in "[{":
+        reader.pos += 1
+    if reader.pos < reader.end and text[reader.pos] == "[":
+        close = text.find("]", reader.pos)
+        if close < 0:
+            reader.fail("expected ']' to close the block states", reader.pos)
+        reader.pos = close + 1
+    if reader.pos < reader.end and text[reader.pos] == "{":
+        parse_compound(reader)
+    return text[start:reader.pos]
 
 
 # generic commands by name

@@ -368,3 +368,15 @@ def test_a_rotation_range_whose_minimum_is_bigger_goes_round_through_180(tmp_pat
     emu = run_both(tmp_path, functions)
     assert emu.score("#n", "v") == 3  # 180, -170, 140
     assert emu.score("#p", "v") == 0  # every pitch is 0, outside 80..180 and -180..-80
+
+
+def test_block_nbt_with_a_quoted_space_is_read_whole(tmp_path):
+    # BlockStateParser reads a block's {nbt} with the SNBT parser: a quoted string may hold spaces
+    functions = {"t:main": SETUP + 'setblock 0 64 0 chest{CustomName:"a b"}\n'
+                 'execute store success score #found v if block 0 64 0 chest{CustomName:"a b"}\n'
+                 'execute store success score #other v if block 0 64 0 chest{CustomName:"a c"}\n'
+                 'fill 1 64 0 2 64 0 barrel{CustomName:"x y"} replace air\n'
+                 'execute store success score #filled v if block 2 64 0 barrel{CustomName:"x y"}'}
+    emu = run_both(tmp_path, functions)
+    assert (emu.score("#found", "v"), emu.score("#other", "v"), emu.score("#filled", "v")) == (1, 0, 1)
+    assert emu.diagnostics == []
