@@ -1,5 +1,6 @@
 """Fixtures shared by the suite: small packs written to a temporary folder."""
 import json
+import zipfile
 from pathlib import Path
 
 import pytest
@@ -26,3 +27,12 @@ def pack(tmp_path):
     def make(files, **tags):
         return write_pack(tmp_path / "pack", files, **tags)
     return make
+
+
+def zip_folder(folder: Path, archive: Path) -> Path:
+    """``folder``'s files in a .zip at ``archive`` (a pack as players download it)."""
+    with zipfile.ZipFile(archive, "w") as z:
+        for path in folder.rglob("*"):
+            if path.is_file():
+                z.write(path, path.relative_to(folder).as_posix())
+    return archive

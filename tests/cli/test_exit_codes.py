@@ -14,6 +14,7 @@ from pathlib import Path
 import pytest
 
 from tests.backends.programs import write_pack
+from tests.conftest import zip_folder
 
 ROOT = Path(__file__).resolve().parents[2]
 LOAD = {"minecraft:load": ["t:load"]}
@@ -147,16 +148,6 @@ def test_ctrl_c_prints_what_ran_and_exits_130(pack):
     assert 0 < ticks < 100000000 and watched in (ticks, ticks + 1)  # the tick Ctrl-C cut may be half done
 
 
-def _zipped(folder: Path, archive: Path) -> Path:
-    import zipfile
-
-    with zipfile.ZipFile(archive, "w") as z:
-        for path in folder.rglob("*"):
-            if path.is_file():
-                z.write(path, path.relative_to(folder).as_posix())
-    return archive
-
-
 @pytest.mark.parametrize("args, status, first", [
     (["shot", "--speed", "nan"], 2, "Usage: dpemu shot"),
     (["shot", "--speed", "1", "--tip", "0.1,inf"], 2, "Usage: dpemu shot"),
@@ -173,7 +164,7 @@ def test_shot_as_a_process(args, status, first):
 
 
 def test_zipped_and_broken_packs_as_a_process(pack, tmp_path):
-    archive = _zipped(pack({"t:bad": "scoreboard players sett #a o 1"}), tmp_path / "p.zip")
+    archive = zip_folder(pack({"t:bad": "scoreboard players sett #a o 1"}), tmp_path / "p.zip")
     run = dpemu("run", archive, "--call", "t:ok", "--watch", "#a o", "--backend", "python")
     assert run.returncode == 1 and "#a o = 1" in run.stdout  # the broken function is a load error
     assert "bad.mcfunction:1:20: error" in first_line(run.stderr)

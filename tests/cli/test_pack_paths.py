@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import subprocess
 import sys
-import zipfile
 from pathlib import Path
 
 import pytest
@@ -12,6 +11,7 @@ from click.testing import CliRunner
 
 from emulator.cli import main
 from tests.backends.programs import write_pack
+from tests.conftest import zip_folder
 
 FUNCTIONS = {
     "t:load": "scoreboard objectives add o dummy",
@@ -22,14 +22,6 @@ FUNCTIONS = {
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def _zip(folder: Path, archive: Path) -> Path:
-    with zipfile.ZipFile(archive, "w") as z:
-        for path in folder.rglob("*"):
-            if path.is_file():
-                z.write(path, path.relative_to(folder).as_posix())
-    return archive
-
-
 @pytest.fixture
 def zipped(tmp_path) -> Path:
     folder = write_pack(tmp_path / "pack", FUNCTIONS, {"minecraft:load": ["t:load"]})
@@ -37,35 +29,35 @@ def zipped(tmp_path) -> Path:
     source = folder / "data/t/function/test/five.mcfunction"
     (folder / "data/t/test").mkdir(parents=True)
     source.rename(folder / "data/t/test/five.mcfunction")
-    return _zip(folder, tmp_path / "pack.zip")
+    return zip_folder(folder, tmp_path / "pack.zip")
 
 
 def invoke(*args):
     return CliRunner().invoke(main, [str(a) for a in args], catch_exceptions=False)
 
 
-def test_run_takes_a_zip(zipped):
+def test_run_takes_azip_folder(zipped):
     result = invoke("run", zipped, "--call", "t:main", "--watch", "#a o")
     assert result.exit_code in (0, 1) and "#a o = 5" in result.output
 
 
-def test_profile_takes_a_zip(zipped):
+def test_profile_takes_azip_folder(zipped):
     result = invoke("profile", zipped, "--call", "t:main")
     assert "t:main" in result.output
 
 
-def test_disasm_takes_a_zip(zipped):
+def test_disasm_takes_azip_folder(zipped):
     result = invoke("disasm", zipped, "t:main")
     assert result.exit_code == 0 and "scoreboard players set #a o 5" in result.output
 
 
-def test_test_takes_a_zip(zipped):
+def test_test_takes_azip_folder(zipped):
     result = invoke("test", zipped)
     assert result.exit_code == 0 and result.output.strip().splitlines()[-1] == "1 passed, 0 failed"
 
 
 def test_shot_takes_a_zipped_pool_pack(tmp_path):
-    archive = _zip(ROOT / "datapack", tmp_path / "pool.zip")
+    archive = zip_folder(ROOT / "datapack", tmp_path / "pool.zip")
     result = invoke("shot", archive, "--speed", "0.5")
     assert result.exit_code == 0 and "table at rest" in result.output
 
