@@ -9,9 +9,17 @@ import click
 
 from emulator.cli.outcome import CLEAN, PROBLEMS, exit_status, fail_option, has_errors, progress
 from emulator.cli.params import FiniteFloat, OutputPath, PackPath, write_output
-from poolgame.shot import BREAK, DEFAULT_PACK, Shot, ShotResult, in_player_units, missing_functions, new_table, play
+
 
 BALL_NAMES = {0: "cue"}
+
+
+def _game():
+    """The shot driver (poolgame.shot), imported when a shot is played: ``dpemu --help`` lists this
+    command without loading the emulator."""
+    from poolgame import shot as game
+
+    return game
 
 
 def _tip(text: str) -> tuple[float, float]:
@@ -27,17 +35,17 @@ def _tip(text: str) -> tuple[float, float]:
     return x, y
 
 
-def _shot(break_: bool, angle, speed, tip, elevation) -> Shot:
+def _shot(break_: bool, angle, speed, tip, elevation):
     aimed = [o for o, v in (("--angle", angle), ("--speed", speed), ("--tip", tip), ("--elevation", elevation))
              if v is not None]
     if break_:
         if aimed:
             raise click.UsageError(f"--break plays the break shot; it takes no {', '.join(aimed)}")
-        return BREAK
+        return _game().BREAK
     if speed is None:
         raise click.UsageError("give --break, or a shot with at least --speed M/S")
     tip_x, tip_y = _tip(tip) if tip is not None else (0.0, 0.0)
-    shot = Shot(angle or 0.0, speed, tip_x, tip_y, elevation or 0.0)
+    shot = _game().Shot(angle or 0.0, speed, tip_x, tip_y, elevation or 0.0)
     too_big = [k for k, v in shot.macro_arguments().items() if abs(v) >= 2 ** 31]
     if too_big:
         raise click.UsageError(f"{', '.join(too_big)}: far outside any shot the pack accepts")
@@ -61,20 +69,21 @@ def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitiz
     datapack that ships with dpemu), rack, strike, and emulate until the table is at rest. Exit
     status 1 when the pack refuses the shot, the table does not come to rest within --max-ticks,
     the run had errors or the sanitizer finds a wrapped value."""
+    game = _game()
     chosen = _shot(break_, angle, speed, tip, elevation)
-    pack = pack or DEFAULT_PACK
+    pack = pack or game.DEFAULT_PACK
     if not pack.exists():
         raise click.UsageError(f"no pool datapack at {pack}: give the pack's folder or .zip file as PACK")
-    emu = new_table(pack, backend, sanitize)
+    emu = game.new_table(pack, backend, sanitize)
     for diag in emu.load_diagnostics:
         if diag.severity == "error":
             click.echo(diag.format(), err=True)
-    missing = missing_functions(emu)
+    missing = game.missing_functions(emu)
     if missing:
         click.echo(f"{pack}: not a pool datapack (no {', '.join(missing)})", err=True)
         sys.exit(1)
     with progress(max_ticks, "ticks", 200) as bar:
-        result = play(emu, chosen, max_ticks, on_tick=lambda: bar.update(1))
+        result = game.play(emu, chosen, max_ticks, on_tick=lambda: bar.update(1))
     _print(result, to_stderr=json_out == "-")
     written = not json_out or write_output(json_out, json.dumps(result.to_json(), indent=2) + "\n")
     problems = has_errors(emu.load_diagnostics) or has_errors(result.diagnostics) or bool(result.overflows)
@@ -83,12 +92,12 @@ def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitiz
     sys.exit(status or (PROBLEMS if unfinished else CLEAN))
 
 
-def _print(result: ShotResult, to_stderr: bool) -> None:
+def _print(result, to_stderr: bool) -> None:
     def out(line: str = "") -> None:
         click.echo(line, err=to_stderr)
 
     for message in result.refused:
-        out(in_player_units(message))
+        out(_game().in_player_units(message))
     if result.refused:
         return
     out(f"{'ball':>4}  {'x mm':>8}  {'z mm':>8}  outcome")

@@ -10,13 +10,14 @@ from importlib.metadata import entry_points
 
 import click
 
-# subcommand -> "module:attribute"
+# subcommand -> ("module:attribute", the one-line help ``dpemu --help`` lists without importing it);
+# tests/cli/test_main.py checks each line against the command's own help
 _BUILTIN = {
-    "check": "emulator.cli.check:check",
-    "run": "emulator.cli.run:run",
-    "disasm": "emulator.cli.disasm:disasm",
-    "test": "emulator.cli.test:test",
-    "profile": "emulator.cli.profile:profile",
+    "check": ("emulator.cli.check:check", "Check data packs (folders or .zip files) and report problems."),
+    "disasm": ("emulator.cli.disasm:disasm", "Print FUNCTION's bytecode beside its source lines."),
+    "profile": ("emulator.cli.profile:profile", "Profile PACKS: report exact command counts."),
+    "run": ("emulator.cli.run:run", "Emulate PACKS tick by tick."),
+    "test": ("emulator.cli.test:test", "Run PackTest-format test files."),
 }
 
 
@@ -25,10 +26,11 @@ def _plugins() -> dict[str, str]:
 
 
 class _LazyGroup(click.Group):
-    """Imports a subcommand's module only when that subcommand (or the full help) is asked for."""
+    """Imports a subcommand's module only when that subcommand runs (``--help`` lists the built-in
+    ones from their one-line help, the plugins' by loading them)."""
 
     def _targets(self) -> dict[str, str]:
-        return {**_plugins(), **_BUILTIN}
+        return {**_plugins(), **{name: target for name, (target, _) in _BUILTIN.items()}}
 
     def list_commands(self, ctx: click.Context) -> list[str]:
         return sorted(self._targets())
@@ -39,6 +41,14 @@ class _LazyGroup(click.Group):
             return None
         module, attribute = target.split(":")
         return getattr(importlib.import_module(module), attribute)
+
+    def format_commands(self, ctx: click.Context, formatter: click.HelpFormatter) -> None:
+        rows = []
+        for name in self.list_commands(ctx):
+            line = _BUILTIN[name][1] if name in _BUILTIN else self.get_command(ctx, name).get_short_help_str()
+            rows.append((name, line))
+        with formatter.section("Commands"):
+            formatter.write_dl(rows)
 
 
 @click.group(cls=_LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})

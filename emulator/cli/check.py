@@ -36,8 +36,9 @@ def _validate_versions(ctx: click.Context, param: click.Parameter, value: str | 
               help="A pack expected beside these at run time (a library, another module): loaded "
                    "first, its own findings not reported. Repeatable.")
 def check(packs: tuple[Path, ...], as_json: bool, releases: list | None, with_packs: tuple[Path, ...]) -> None:
-    """Check data packs (folders or .zip files, loaded in the order given, later ones
-    override) and report problems."""
+    """Check data packs (folders or .zip files) and report problems.
+
+    Packs load in the order given; later ones override earlier ones."""
     try:
         result = check_releases(packs, releases, with_packs)
     except Exception as exc:  # a bug in dpemu must still end with a message, not a traceback

@@ -8,8 +8,6 @@ from pathlib import Path
 
 import click
 
-from mcfunction_parser.pack.loader import zip_problem
-
 
 class FiniteFloat(click.ParamType):
     """A float that is a number: ``nan``, ``inf`` and literals past the double range are refused."""
@@ -80,6 +78,8 @@ class PackPath(click.ParamType):
             return path
         if not path.exists():
             self.fail(f"'{path}' does not exist", param, ctx)
+        from mcfunction_parser.pack.loader import zip_problem  # the parser, only when a pack is named
+
         problem = zip_problem(path)
         if problem:
             self.fail(f"'{path}' {problem}", param, ctx)

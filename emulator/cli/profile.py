@@ -41,8 +41,9 @@ STACK_FORMATS = ("collapsed", "trace")
 @fail_option
 def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, output, baseline, threshold,
             no_fail) -> None:
-    """Profile PACKS: run #minecraft:load, apply --set and --call in order, run --ticks ticks, report
-    command counts."""
+    """Profile PACKS: report exact command counts.
+
+    Runs #minecraft:load, applies --set and --call in order, then runs --ticks ticks."""
     if fmt in STACK_FORMATS and backend == "numba":
         raise click.UsageError(f"--format {fmt} needs call stacks, which only --backend python records")
     saved = _read_baseline(baseline) if baseline else None

@@ -35,7 +35,9 @@ PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
 @fail_option
 def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
         shuffle, no_fail) -> None:
-    """Emulate PACKS: run #minecraft:load, apply --set and --call in order, then run --ticks ticks."""
+    """Emulate PACKS tick by tick.
+
+    Runs #minecraft:load, applies --set and --call in order, then runs --ticks ticks."""
     sets = [parse_set(s) for s in set_]
     calls = [parse_call(c) for c in call]
     watches = [parse_watch(w) for w in watch]

@@ -19,7 +19,9 @@ from emulator.testing.junit import junit_xml
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 @click.option("--strict", is_flag=True, help="A runtime error during a test (unknown function, division by zero ...) fails it.")
 def test(paths, pattern, junit_file, backend, strict) -> None:
-    """Run the test files in PATHS (packs as folders or .zip files, folders in a pack, or test files)."""
+    """Run PackTest-format test files.
+
+    PATHS: packs as folders or .zip files, folders in a pack, or test files."""
     try:
         files = discover(list(paths))
     except DiscoveryError as error:

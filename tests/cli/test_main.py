@@ -1,11 +1,13 @@
 """``dpemu``: the subcommands --help lists, and what neither --help nor a python-backend run imports."""
 from __future__ import annotations
 
+import importlib
 import subprocess
 import sys
 
 import pytest
 
+from emulator.cli import _BUILTIN
 from tests.backends.programs import write_pack
 
 # runs dpemu with the arguments after it, then prints the numba modules loaded
@@ -21,6 +23,22 @@ def test_help_lists_every_subcommand_without_importing_numba():
     out = dpemu("--help")
     assert all(name in out for name in ("check", "disasm", "profile", "run", "shot", "test"))
     assert "numba modules: []" in out
+
+
+def test_help_loads_neither_the_emulator_nor_the_parser():
+    script = ("import sys\nfrom emulator.cli import main\ntry:\n    main(['--help'])\nexcept SystemExit:\n    pass\n"
+              "print(sorted(m for m in sys.modules if m.split('.')[0] in ('mcfunction_parser', 'numpy')"
+              " or m in ('emulator.api', 'poolgame.shot')))")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, check=True)
+    assert done.stdout.strip().splitlines()[-1] == "[]"
+
+
+@pytest.mark.parametrize("name", sorted(_BUILTIN))
+def test_the_listed_help_is_the_commands_own_first_line(name):
+    target, line = _BUILTIN[name]
+    module, attribute = target.split(":")
+    command = getattr(importlib.import_module(module), attribute)
+    assert " ".join(command.help.split("\n\n")[0].split()) == line
 
 
 @pytest.mark.parametrize("command", ["run", "profile"])
