@@ -139,12 +139,13 @@ class Compiler:
     # ------------------------------------------------------------------ execute chains
 
     def chain(self, stages: list[Subcommand], final: Command | None, returning: bool,
-              outer_stores: tuple[StoreScore, ...] = ()) -> None:
+              outer_stores: tuple[StoreScore, ...] = (), forked: bool = False) -> None:
         """``CMD``, the stages, the final command, the stores, then the chain's end: ``ENDCMD``,
-        or for ``return run`` (``returning``) ``RETRES`` with the abort target ``RETNONE``."""
+        or for ``return run`` (``returning``) ``RETRES`` with the abort target ``RETNONE``.
+        ``forked``: the chain continues one that forked (``return run``'s rest keeps its
+        ChainModifiers: a stage's error there fails only its context too)."""
         cmd_pc = self.emit(vm.OP_CMD, 0)
         stores = list(outer_stores)
-        forked = False  # BuildContexts: after a fork, a stage's error fails only its context
         for i, st in enumerate(stages):
             last = final is None and i == len(stages) - 1
             forked = forked or isinstance(st, _FORKS)
@@ -185,7 +186,7 @@ class Compiler:
         collect = final is not None and not returning and any(isinstance(st, _MULTIPLY) for st in stages)
         collect_pc = self.emit(vm.OP_STAGESDONE, 0) if collect else None
         if isinstance(final, Return):
-            self.return_(final, stores, in_chain=True)
+            self.return_(final, stores, in_chain=True, forked=forked)
             stores = []
         elif isinstance(final, FunctionCall):
             self.call(final, returning)
@@ -238,7 +239,7 @@ class Compiler:
             self.program.patch(pc, 1, end)
 
     # ------------------------------------------------------------------ return
-    def return_(self, cmd: Return, stores: list[StoreScore], in_chain: bool) -> None:
+    def return_(self, cmd: Return, stores: list[StoreScore], in_chain: bool, forked: bool = False) -> None:
         if cmd.kind in ("value", "fail"):
             ok, value = (1, cmd.value) if cmd.kind == "value" else (0, 0)
             if stores:  # the return's callback feeds the chain's stores first
@@ -253,7 +254,7 @@ class Compiler:
         gate = self.emit(vm.OP_JMPDEAD, 0) if in_chain else None
         inner = cmd.command
         stages, final = flatten_execute(inner) if isinstance(inner, Execute) else ([], inner)
-        self.chain(stages, final, returning=True, outer_stores=tuple(stores))
+        self.chain(stages, final, returning=True, outer_stores=tuple(stores), forked=forked)
         if gate is not None:
             self.program.patch(gate, 1, self.program.next_pc)
 

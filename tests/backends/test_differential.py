@@ -36,11 +36,6 @@ KNOWN_VM_GAPS: dict[str, re.Pattern] = {
     # instantiates each member just before calling it: the same scores and result, but a quota
     # cut (or a log line) in an earlier member comes before the failure instead of after it.
     "tag call whose macro member fails": re.compile(r"function #t:macs$", re.M),
-    # Older than the VM's entity forms (the host store stage behaved the same): a guarded `return
-    # run` whose inner store stage fails without an executor ends the function without a result
-    # in the VM; the reference returns 0
-    "guarded return run of a failing store stage": re.compile(
-        r"^execute .* run return run execute store \w+ entity @s", re.M),
 }
 
 

@@ -6,6 +6,8 @@ from __future__ import annotations
 import pytest
 
 from mcfunction_parser.nbt import Compound, Int
+from emulator import Emulator
+from tests.backends.programs import write_pack
 from tests.vm.helpers import SETUP, emulator_for, run_main
 
 HELPERS = {
@@ -152,3 +154,19 @@ def test_stack_overflow_stops_the_root_cleanly(tmp_path):
     assert len(diag.frames) == 1000 and diag.frames[-1].loc.line == 2
     emu.call("t:main")  # the next root runs normally
     assert len(emu.diagnostics) == 1
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+@pytest.mark.parametrize("prefix", ["execute rotated as @e[type=armor_stand]", "execute if score #g o matches 1"])
+def test_return_run_keeps_the_fork_of_its_chain(tmp_path, backend, prefix):
+    # ReturnCommand's rest runs as a BuildContexts.Continuation with the chain's ChainModifiers:
+    # after a fork (as, at, if ...) the store stage's error (@s is the server) drops only its
+    # context, none is left, and FallthroughTask makes the function return failure (0)
+    pack = write_pack(tmp_path / "pack", {"t:main": "scoreboard objectives add o dummy\nscoreboard players set #g o 1\n"
+                                                    "summon armor_stand ~ ~ ~\n"
+                                                    f"{prefix} run return run execute store result score @s o "
+                                                    "run scoreboard players add #a o 1"})
+    emu = Emulator(backend=backend)
+    emu.load(pack)
+    emu.start()
+    assert emu.runtime.call("t:main").result == 0
