@@ -30,6 +30,7 @@ from pathlib import Path
 from . import ast
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.loader import LoadedPacks, load_packs
+from mcfunction_parser.parse import paused_gc
 from mcfunction_parser.pack.versions import RELEASE_FORMATS, Version, parse_mc_version, releases_label, version_label
 
 # Function references and objective definitions inside macro templates (unparsed until called).
@@ -95,9 +96,10 @@ def check_packs(paths: Sequence[str | Path], mc_version: str | None = None,
     ``with_packs``: packs expected beside them at run time (libraries, other modules), loaded
     first; their own findings are not reported."""
     start = time.perf_counter()
-    loaded = load_packs([*with_packs, *paths], mc_version)
-    found = lint(loaded)
-    diagnostics = sorted(loaded.diagnostics + found, key=_position)
+    with paused_gc():  # the packs' ASTs hold no reference cycles
+        loaded = load_packs([*with_packs, *paths], mc_version)
+        found = lint(loaded)
+        diagnostics = sorted(loaded.diagnostics + found, key=_position)
     if with_packs:
         beside = tuple(str(Path(p)).rstrip("/") + "/" for p in with_packs)
         diagnostics = [d for d in diagnostics if not (d.path + "/").startswith(beside)]
