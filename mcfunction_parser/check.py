@@ -97,7 +97,7 @@ def check_packs(paths: Sequence[str | Path], mc_version: str | None = None,
     ``with_packs``: packs expected beside them at run time (libraries, other modules), loaded
     first; their own findings are not reported."""
     start = time.perf_counter()
-    with paused_gc():  # the packs' ASTs hold no reference cycles
+    with paused_gc(kept=True):  # the packs' ASTs hold no reference cycles
         loaded = load_packs([*with_packs, *paths], mc_version)
         found = lint(loaded)
         diagnostics = sorted(loaded.diagnostics + found, key=_position)
