@@ -191,7 +191,7 @@ def test_arbitrary_bytes_never_crash(tmp_path_factory, function, tag_file, meta)
 
 
 def test_generated_corpus_checks_without_errors(tmp_path):
-    sys.path.insert(0, str(Path(__file__).parents[1] / "bench"))
+    sys.path.insert(0, str(Path(__file__).parents[2] / "bench"))
     corpus = pytest.importorskip("corpus")
     lines = corpus.write_corpus(tmp_path / "corpus", lines=40000)
     first = check_packs([tmp_path / "corpus"])
