@@ -23,13 +23,15 @@ import dataclasses
 import functools
 import re
 import time
-from collections.abc import Iterator, Sequence
-from dataclasses import dataclass
+import typing
+from collections.abc import Callable, Iterator, Sequence
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from . import ast
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.loader import LoadedPacks, load_packs
+from mcfunction_parser.parse import paused_gc
 from mcfunction_parser.pack.versions import RELEASE_FORMATS, Version, parse_mc_version, releases_label, version_label
 
 # Function references and objective definitions inside macro templates (unparsed until called).
@@ -95,9 +97,10 @@ def check_packs(paths: Sequence[str | Path], mc_version: str | None = None,
     ``with_packs``: packs expected beside them at run time (libraries, other modules), loaded
     first; their own findings are not reported."""
     start = time.perf_counter()
-    loaded = load_packs([*with_packs, *paths], mc_version)
-    found = lint(loaded)
-    diagnostics = sorted(loaded.diagnostics + found, key=_position)
+    with paused_gc(kept=True):  # the packs' ASTs hold no reference cycles
+        loaded = load_packs([*with_packs, *paths], mc_version)
+        found = lint(loaded)
+        diagnostics = sorted(loaded.diagnostics + found, key=_position)
     if with_packs:
         beside = tuple(str(Path(p)).rstrip("/") + "/" for p in with_packs)
         diagnostics = [d for d in diagnostics if not (d.path + "/").startswith(beside)]
@@ -165,11 +168,11 @@ def _position(d: Diagnostic) -> tuple:
 def lint(loaded: LoadedPacks) -> list[Diagnostic]:
     """The whole-pack rules above, as new diagnostics."""
     found: list[Diagnostic] = []
-    nodes = _nodes(loaded)
-    _check_calls(loaded, nodes, found)
-    _check_predicates(loaded, nodes, found)
-    _check_objectives(loaded, nodes, found)
-    _check_unreferenced(loaded, nodes, found)
+    facts = _gather(loaded)
+    _check_calls(loaded, facts, found)
+    _check_predicates(loaded, facts, found)
+    _check_objectives(loaded, facts, found)
+    _check_unreferenced(loaded, facts, found)
     return found
 
 
@@ -202,15 +205,121 @@ def _child_fields(cls: type) -> tuple[str, ...]:
     return tuple(f.name for f in dataclasses.fields(cls) if f.name != "loc" and str(f.type) not in plain)
 
 
-def _nodes(loaded: LoadedPacks) -> list[tuple[ast.Function, object]]:
-    """(function, node) for every node of every loaded function."""
-    result = []
+# ----------------------------------------------------------------------------- what the rules read
+
+
+@dataclass
+class _Facts:
+    """What the rules read from the functions' ASTs, gathered in one walk, in the order of
+    :func:`walk` (function by function, each node before the nodes inside it)."""
+
+    calls: list[tuple[ast.Function, object]] = field(default_factory=list)  # nodes naming functions
+    returning: set[str] = field(default_factory=set)  # functions with a return or a macro line
+    predicates: list[tuple[str, Loc]] = field(default_factory=list)  # predicate named, where
+    created: set[str] = field(default_factory=set)  # objectives added (by macro lines too)
+    uses: dict[str, list[Loc]] = field(default_factory=dict)  # objective -> where used, in order
+
+    def use(self, objective: str, loc: Loc) -> None:
+        self.uses.setdefault(objective, []).append(loc)
+
+
+def _gather(loaded: LoadedPacks) -> _Facts:
+    facts = _Facts()
     for function in [*loaded.functions.values(), *loaded.refused.values()]:  # refused ones too
-        nodes: list[object] = []
         for command in function.commands:
-            walk(command, nodes)
-        result.extend((function, node) for node in nodes)
-    return result
+            _visit(command, function, facts)
+    return facts
+
+
+def _visit(node: object, function: ast.Function, facts: _Facts) -> None:
+    """Record what ``node`` and the nodes inside it tell the rules."""
+    record, fields = _plan(type(node))
+    if record is not None:
+        record(node, function, facts)
+    for name in fields:
+        value = getattr(node, name)
+        if type(value) is tuple:
+            for item in value:
+                _visit(item, function, facts)
+        elif value is not None:
+            _visit(value, function, facts)
+
+
+@functools.cache
+def _plan(cls: type) -> tuple[Callable | None, tuple[str, ...]]:
+    """What :func:`_visit` records of a node class, and the fields it looks inside: those whose
+    declared type may hold a node the rules read (``Vec3``, ``NbtPath``, names... never do)."""
+    hints = typing.get_type_hints(cls)
+    return _record_for(cls), tuple(f.name for f in dataclasses.fields(cls) if _may_hold_facts(hints[f.name]))
+
+
+def _may_hold_facts(hint: object) -> bool:
+    if isinstance(hint, type):
+        return dataclasses.is_dataclass(hint) and _holds_facts(hint)
+    return any(_may_hold_facts(arg) for arg in typing.get_args(hint))  # unions, tuple[X, ...]
+
+
+@functools.cache
+def _holds_facts(cls: type) -> bool:
+    if issubclass(cls, (ast.Command, ast.Subcommand)):  # any command may be, or hold, any other
+        return True
+    hints = typing.get_type_hints(cls)
+    return _record_for(cls) is not None or any(_may_hold_facts(hints[f.name]) for f in dataclasses.fields(cls))
+
+
+def _record_for(cls: type) -> Callable | None:
+    for base in cls.__mro__:
+        if base in _RECORDS:
+            return _RECORDS[base]
+    objectives = tuple(f.name for f in dataclasses.fields(cls) if f.name in ("objective", "source_objective"))
+    return _objective_uses(objectives) if objectives else None
+
+
+def _record_call(node: object, function: ast.Function, facts: _Facts) -> None:
+    facts.calls.append((function, node))
+
+
+def _record_macro_line(node: ast.MacroLine, function: ast.Function, facts: _Facts) -> None:
+    facts.calls.append((function, node))
+    facts.returning.add(function.id)  # a macro line may return too
+    facts.created.update(m.group(1) for m in _MACRO_OBJECTIVE_ADD.finditer(node.template))
+
+
+def _record_return(node: ast.Return, function: ast.Function, facts: _Facts) -> None:
+    facts.returning.add(function.id)
+
+
+def _record_if_predicate(node: ast.IfPredicate, function: ast.Function, facts: _Facts) -> None:
+    facts.predicates.append((node.predicate, node.loc))
+
+
+def _record_selector_arg(node: ast.SelectorArg, function: ast.Function, facts: _Facts) -> None:
+    if node.key == "predicate":
+        facts.predicates.append((node.value, node.loc))
+    elif node.key == "scores":
+        for objective, _ in node.value:
+            facts.use(objective, node.loc)
+
+
+def _record_objective_add(node: ast.ObjectivesAdd, function: ast.Function, facts: _Facts) -> None:
+    facts.created.add(node.objective)
+
+
+def _objective_uses(names: tuple[str, ...]) -> Callable:
+    """The record of a node class whose fields ``names`` name objectives it uses."""
+    def record(node: object, function: ast.Function, facts: _Facts) -> None:
+        for name in names:
+            objective = getattr(node, name)
+            if isinstance(objective, str):
+                facts.use(objective, node.loc)
+    return record
+
+
+_RECORDS: dict[type, Callable] = {
+    ast.FunctionCall: _record_call, ast.Schedule: _record_call, ast.IfFunction: _record_call,
+    ast.MacroLine: _record_macro_line, ast.Return: _record_return, ast.IfPredicate: _record_if_predicate,
+    ast.SelectorArg: _record_selector_arg, ast.ObjectivesAdd: _record_objective_add,
+}
 
 
 def _at(loaded: LoadedPacks, severity: str, message: str, loc: Loc) -> Diagnostic:
@@ -236,11 +345,9 @@ def _references(node: object) -> Iterator[tuple[str, bool, str]]:
             yield name.removeprefix("#"), name.startswith("#"), "macro"
 
 
-def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
-    returning = {function.id for function, node in nodes
-                 if isinstance(node, (ast.Return, ast.MacroLine))}  # a macro line may return too
+def _check_calls(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
     defined = _namespaces(loaded)
-    for _, node in nodes:
+    for _, node in facts.calls:
         for name, is_tag, how in _references(node):
             if how != "macro":
                 problem = _missing(loaded, name, is_tag)
@@ -250,7 +357,7 @@ def _check_calls(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> N
         if isinstance(node, ast.FunctionCall) and not node.is_tag and node.with_source is None:
             _check_macro_arguments(loaded, node, found)
         elif isinstance(node, ast.IfFunction):
-            _check_condition_returns(loaded, node, returning, found)
+            _check_condition_returns(loaded, node, facts.returning, found)
         elif isinstance(node, ast.Schedule) and not node.is_tag and _is_macro(loaded, node.function):
             found.append(_at(loaded, ERROR, f"function {node.function} is a macro function: a "
                              "scheduled call has no arguments and fails", node.loc))
@@ -336,54 +443,28 @@ def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:
     return f"unknown function tag #{name}"
 
 
-def _check_predicates(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
+def _check_predicates(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
     """``execute if predicate ID`` and ``@e[predicate=ID]`` need a predicate file (the vanilla
     pack defines none); inline ``{...}`` predicates (1.20.5+) are not looked up."""
-    for _, node in nodes:
-        if isinstance(node, ast.IfPredicate):
-            name = node.predicate
-        elif isinstance(node, ast.SelectorArg) and node.key == "predicate":
-            name = node.value
-        else:
-            continue
+    for name, loc in facts.predicates:
         if _RESOURCE_LOCATION.fullmatch(name) and name not in loaded.predicates:
-            found.append(_at(loaded, ERROR, f"unknown predicate {name}", node.loc))
+            found.append(_at(loaded, ERROR, f"unknown predicate {name}", loc))
 
 
-def _check_objectives(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
-    created: set[str] = set()
-    uses: dict[str, list[Loc]] = {}
-    for _, node in nodes:
-        if isinstance(node, ast.ObjectivesAdd):
-            created.add(node.objective)
-        elif isinstance(node, ast.MacroLine):
-            created.update(m.group(1) for m in _MACRO_OBJECTIVE_ADD.finditer(node.template))
-        else:
-            for objective in _objectives_used(node):
-                uses.setdefault(objective, []).append(node.loc)
-    for objective, locs in uses.items():
-        if objective not in created:
+def _check_objectives(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
+    for objective, locs in facts.uses.items():
+        if objective not in facts.created:
             more = f" ({len(locs)} uses)" if len(locs) > 1 else ""
             found.append(_at(loaded, WARNING, f"objective '{objective}' is used but never created by "
                              f"'scoreboard objectives add' in the loaded packs{more}", locs[0]))
 
 
-def _objectives_used(node: object) -> Iterator[str]:
-    for name in ("objective", "source_objective"):
-        value = getattr(node, name, None)
-        if isinstance(value, str):
-            yield value
-    if isinstance(node, ast.SelectorArg) and node.key == "scores":
-        for objective, _ in node.value:
-            yield objective
-
-
-def _check_unreferenced(loaded: LoadedPacks, nodes: list, found: list[Diagnostic]) -> None:
+def _check_unreferenced(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
     referenced = set(loaded.advancement_rewards)
     tags = [*loaded.tags.values(), *(failed.tag for failed in loaded.failed_tags.values())]
     for tag in tags:
         referenced.update(e.id for e in tag.entries if not e.is_tag)
-    for function, node in nodes:
+    for function, node in facts.calls:
         for name, is_tag, _ in _references(node):
             if not is_tag and name != function.id:
                 referenced.add(name)

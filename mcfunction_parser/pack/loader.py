@@ -25,7 +25,7 @@ from mcfunction_parser.ast import Function, FunctionTag
 from mcfunction_parser.diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
 from mcfunction_parser.pack.text import PackPath, load_json, read_text, split_lines
-from mcfunction_parser.parse import parse_function
+from mcfunction_parser.parse import parse_lines
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from mcfunction_parser.pack.versions import (
     FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, SINGULAR_FOLDERS_FORMAT, Format, Version, format_label,
@@ -325,11 +325,9 @@ def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) ->
     result.files += 1
     if text is None:
         return None
-    lines = result.sources[shown] = split_lines(text)
+    lines = result.sources[shown] = split_lines(text)  # the game's lines (a lone \r ends one too)
     try:
-        # re-joined with "\n": the parser sees the game's lines (which also end at a lone \r)
-        text = "".join(line + "\n" for line in lines)
-        function, diagnostics = parse_function(text, shown, fid, result.version)
+        function, diagnostics = parse_lines(lines, shown, fid, result.version)
     except Exception as exc:  # a parser bug must not stop the other functions
         result.diagnostics.append(Diagnostic(
             ERROR, f"internal error while parsing this file: {type(exc).__name__}: {exc}", shown))

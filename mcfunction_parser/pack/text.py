@@ -31,7 +31,7 @@ _JSON_STRING = re.compile(r'"(?:[^"\\\r\n]|\\.)*"')
 
 def split_lines(text: str) -> list[str]:
     """Lines without their terminators; a final terminator does not start an extra line."""
-    lines = _LINE_BREAK.split(text)
+    lines = _LINE_BREAK.split(text) if "\r" in text else text.split("\n")  # split() is ~10x faster
     if len(lines) > 1 and lines[-1] == "":
         lines.pop()
     return lines

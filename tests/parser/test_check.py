@@ -1,4 +1,5 @@
 """The linter behind ``dpemu check``: parser errors surface, plus the whole-pack rules."""
+import gc
 import json
 import re
 import sys
@@ -7,7 +8,10 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from mcfunction_parser.check import check_packs
+from mcfunction_parser import ast, check
+from mcfunction_parser.check import check_packs, walk
+from mcfunction_parser.pack.loader import load_packs
+from tests.datapack.pack_paths import PACK
 
 META = json.dumps({"pack": {"pack_format": 61, "description": "t"}})
 
@@ -191,7 +195,7 @@ def test_arbitrary_bytes_never_crash(tmp_path_factory, function, tag_file, meta)
 
 
 def test_generated_corpus_checks_without_errors(tmp_path):
-    sys.path.insert(0, str(Path(__file__).parents[1] / "bench"))
+    sys.path.insert(0, str(Path(__file__).parents[2] / "bench"))
     corpus = pytest.importorskip("corpus")
     lines = corpus.write_corpus(tmp_path / "corpus", lines=40000)
     first = check_packs([tmp_path / "corpus"])
@@ -235,3 +239,63 @@ def test_predicates_must_exist_unless_inline(tmp_path):
         "data/a/predicates/old_folder.json": "{}"})
     errors = [(e.line, e.message) for e in check_packs([root]).of("error")]
     assert errors == [(2, "unknown predicate a:unknown"), (3, "unknown predicate a:missing")]
+
+
+def _generic_facts(loaded):
+    """What the rules read, found the slow way: every node of every function (check.walk)."""
+    calls, predicates, uses, created, returning = [], [], {}, set(), set()
+    for function in [*loaded.functions.values(), *loaded.refused.values()]:
+        nodes = []
+        for command in function.commands:
+            walk(command, nodes)
+        for node in nodes:
+            if isinstance(node, (ast.FunctionCall, ast.Schedule, ast.IfFunction, ast.MacroLine)):
+                calls.append((function, node))
+            if isinstance(node, (ast.Return, ast.MacroLine)):
+                returning.add(function.id)
+            if isinstance(node, ast.IfPredicate):
+                predicates.append((node.predicate, node.loc))
+            if isinstance(node, ast.SelectorArg) and node.key == "predicate":
+                predicates.append((node.value, node.loc))
+            if isinstance(node, ast.ObjectivesAdd):
+                created.add(node.objective)
+                continue
+            if isinstance(node, ast.MacroLine):
+                created.update(re.findall(r"(?:^|\s)scoreboard\s+objectives\s+add\s+(\S+)", node.template))
+            for name in ("objective", "source_objective"):
+                if isinstance(getattr(node, name, None), str):
+                    uses.setdefault(getattr(node, name), []).append(node.loc)
+            if isinstance(node, ast.SelectorArg) and node.key == "scores":
+                for objective, _ in node.value:
+                    uses.setdefault(objective, []).append(node.loc)
+    return calls, predicates, uses, created, returning
+
+
+def test_the_rules_walk_finds_what_walking_every_node_finds(tmp_path):
+    """The linter looks only inside fields whose declared type can hold a node its rules read;
+    on the generated corpus (every command family, each selector given a score and a predicate
+    to find) and the pool pack it finds the same nodes, in the same order, as the walk over
+    every node."""
+    sys.path.insert(0, str(Path(__file__).parents[2] / "bench"))
+    corpus = pytest.importorskip("corpus")
+    corpus.write_corpus(tmp_path / "corpus", lines=20000)
+    for path in (tmp_path / "corpus").rglob("*.mcfunction"):
+        path.write_text(re.sub(r"@([aeprsn])(\[)?", lambda m: f"@{m[1]}[scores={{o=1}},predicate=a:p"
+                               + ("," if m[2] else "]"), path.read_text()))
+    loaded = load_packs([tmp_path / "corpus", PACK])
+    facts = check._gather(loaded)
+    calls, predicates, uses, created, returning = _generic_facts(loaded)
+    assert len(calls) > 1000 and len(predicates) > 100 and len(uses) >= 10 and returning
+    assert [(f.id, n) for f, n in facts.calls] == [(f.id, n) for f, n in calls]
+    assert facts.predicates == predicates
+    assert facts.uses == uses and list(facts.uses) == list(uses)
+    assert (facts.created, facts.returning) == (created, returning)
+
+
+def test_checked_packs_leave_the_youngest_collector_generation(tmp_path):
+    """After a check the collector's next young collection does not walk the loaded ASTs."""
+    root = write(tmp_path / "p", {**LOAD, fn("load"): "scoreboard objectives add o dummy\n" * 50})
+    result = check_packs([root])
+    young = {id(o) for o in gc.get_objects(generation=0)}
+    commands = result.loaded.functions["a:load"].commands
+    assert len(commands) == 50 and not any(id(c) in young for c in commands)
