@@ -11,6 +11,7 @@ from pathlib import Path
 
 import click
 
+from emulator.cli.outcome import INTERRUPTED, Passes
 from emulator.cli.params import PackPath
 from mcfunction_parser.check import check_releases
 from mcfunction_parser.diagnostics import ERROR
@@ -39,11 +40,17 @@ def check(packs: tuple[Path, ...], as_json: bool, releases: list | None, with_pa
     """Check data packs (folders or .zip files) and report problems.
 
     Packs load in the order given; later ones override earlier ones."""
+    bar = Passes("parsing")
     try:
-        result = check_releases(packs, releases, with_packs)
+        result = check_releases(packs, releases, with_packs, on_function=bar)
+    except KeyboardInterrupt:
+        bar.close()
+        click.echo("\ninterrupted: nothing was checked to the end", err=True)
+        sys.exit(INTERRUPTED)
     except Exception as exc:  # a bug in dpemu must still end with a message, not a traceback
         click.echo(f"dpemu check: internal error: {type(exc).__name__}: {exc}", err=True)
         sys.exit(1)
+    bar.close()
     if as_json:
         click.echo(json.dumps(result.to_json(), ensure_ascii=False))
     else:

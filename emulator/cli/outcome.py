@@ -54,6 +54,31 @@ def progress(length: int, label: str, minimum: int = 1):
         yield bar
 
 
+class Passes:
+    """A progress bar per pass over a job that reports ``(done, total)`` (``dpemu check`` parses
+    every function once per release it checks); nothing when standard error is not a terminal."""
+
+    def __init__(self, label: str, minimum: int = 200) -> None:
+        self.label, self.minimum = label, minimum
+        self._bar = None
+        self.shown = sys.stderr.isatty()
+
+    def __call__(self, done: int, total: int) -> None:
+        if not self.shown or total < self.minimum:
+            return
+        if done == 1:
+            self.close()
+            self._bar = click.progressbar(length=total, label=self.label, file=sys.stderr)
+            self._bar.__enter__()
+        if self._bar is not None:
+            self._bar.update(1)
+
+    def close(self) -> None:
+        if self._bar is not None:
+            self._bar.__exit__(None, None, None)
+            self._bar = None
+
+
 @contextmanager
 def interruptible():
     """Ctrl-C ends the work cleanly: the body's ``stopped[0]`` becomes True and the caller goes on

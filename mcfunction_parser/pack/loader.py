@@ -123,9 +123,10 @@ class _PackFiles:
         return self.files[rel][0]
 
 
-def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> LoadedPacks:
+def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, on_function=None) -> LoadedPacks:
     """Load packs (folders or .zip files) in order; later ones override. ``mc_version``
-    ("1.21.4") overrides the packs' own version; an unknown or malformed one raises ValueError."""
+    ("1.21.4") overrides the packs' own version; an unknown or malformed one raises ValueError.
+    ``on_function(done, total)`` hears each function file parsed (a progress bar)."""
     diagnostics: list[Diagnostic] = []
     opened = [(Path(p), str(p), _open_pack(Path(p), str(p), diagnostics)) for p in paths]
     opened = [(path, shown, root) for path, shown, root in opened if root is not None]
@@ -139,7 +140,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None) -> Lo
     result.packs = [p.info for p in packs]
     if target >= FILTER_FORMAT:
         _apply_filters(packs, metas)
-    _load_functions(packs, result)
+    _load_functions(packs, result, on_function)
     _load_tags(packs, result)
     _load_advancements(packs, result)
     for pack in packs:
@@ -299,7 +300,7 @@ def _resource_id(namespace: str, path: str, shown: str, diagnostics: list[Diagno
     return None
 
 
-def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
+def _load_functions(packs: list[_PackFiles], result: LoadedPacks, on_function=None) -> None:
     chosen: dict[str, tuple[_PackFiles, str]] = {}
     for pack in packs:
         for fid, rel in _resources(pack, ("function", "functions"), ".mcfunction",
@@ -310,8 +311,10 @@ def _load_functions(packs: list[_PackFiles], result: LoadedPacks) -> None:
                     INFO, f"function {fid} overrides {earlier} from an earlier pack",
                     pack.shown_file(rel)))
             chosen[fid] = (pack, rel)
-    for fid, (pack, rel) in chosen.items():
+    for done, (fid, (pack, rel)) in enumerate(chosen.items(), 1):
         loaded = _load_function(pack, rel, fid, result)
+        if on_function is not None:
+            on_function(done, len(chosen))
         if loaded is not None:
             function, parses = loaded
             (result.functions if parses else result.refused)[fid] = function

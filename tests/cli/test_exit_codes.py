@@ -185,3 +185,18 @@ def test_a_huge_literal_is_a_parse_error_at_its_column_as_a_process(pack):
     assert "big.mcfunction:1:29: error: integer 99999999999999999999... (1000000 characters) is out of range" \
         in first_line(done.stdout)
     no_traceback(done)
+
+
+def test_ctrl_c_during_a_check_exits_130_without_a_traceback(tmp_path):
+    # a pack big enough to be still parsing when the signal arrives
+    functions = {f"t:f{i}": "\n".join(f"scoreboard players set #a{j} o {j}" for j in range(400)) for i in range(3000)}
+    root = write_pack(tmp_path / "big", functions, {})
+    process = subprocess.Popen([sys.executable, "-m", "emulator", "check", str(root)], cwd=ROOT,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    time.sleep(2)
+    process.send_signal(signal.SIGINT)
+    out, err = process.communicate(timeout=120)
+    if process.returncode == 0:  # the check finished before the signal: nothing to judge
+        pytest.skip("the check ended before Ctrl-C")
+    assert process.returncode == 130 and "interrupted" in err
+    assert "Traceback" not in err and "Aborted" not in err

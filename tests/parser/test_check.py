@@ -9,8 +9,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from mcfunction_parser import ast, check
-from mcfunction_parser.check import check_packs, walk
+from mcfunction_parser.check import check_packs, check_releases, walk
 from mcfunction_parser.pack.loader import load_packs
+from mcfunction_parser.pack.versions import parse_mc_version
 from tests.datapack.pack_paths import PACK
 
 META = json.dumps({"pack": {"pack_format": 61, "description": "t"}})
@@ -299,3 +300,11 @@ def test_checked_packs_leave_the_youngest_collector_generation(tmp_path):
     young = {id(o) for o in gc.get_objects(generation=0)}
     commands = result.loaded.functions["a:load"].commands
     assert len(commands) == 50 and not any(id(c) in young for c in commands)
+
+
+def test_the_progress_callback_hears_every_function_once_per_release(tmp_path):
+    root = write(tmp_path / "p", {**LOAD, fn("a"): "say a\n", fn("b"): "say b\n"})
+    heard = []
+    check_releases([root], [parse_mc_version("1.21"), parse_mc_version("1.21.4")],
+                   on_function=lambda done, total: heard.append((done, total)))
+    assert heard == [(1, 2), (2, 2)] * 2  # a:a and a:b, for each of the two formats
