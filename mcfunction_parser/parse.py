@@ -31,11 +31,12 @@ def parse_function(source: str, path: str, function_id: str,
 
 
 def parse_lines(physical: list[str], path: str, function_id: str,
-                version: tuple[int, int, int] = DEFAULT_VERSION) -> tuple[Function, list[Diagnostic]]:
+                version: tuple[int, int, int] = DEFAULT_VERSION, pack: str = "") -> tuple[Function, list[Diagnostic]]:
     """:func:`parse_function` of a file already split into its lines (without their terminators,
-    as the pack loader keeps them for diagnostics); ``physical`` is not modified."""
+    as the pack loader keeps them for diagnostics); ``physical`` is not modified. ``pack``: the
+    root of the pack the file is in (``Function.pack``)."""
     with paused_gc():
-        return _parse_lines(physical, path, function_id, version)
+        return _parse_lines(physical, path, function_id, version, pack)
 
 
 @contextlib.contextmanager
@@ -62,7 +63,7 @@ def paused_gc(kept: bool = False):
 
 
 def _parse_lines(physical: list[str], path: str, function_id: str,
-                 version: tuple[int, int, int]) -> tuple[Function, list[Diagnostic]]:
+                 version: tuple[int, int, int], pack: str) -> tuple[Function, list[Diagnostic]]:
     commands: list[Command] = []
     diagnostics: list[Diagnostic] = []
     if physical and physical[0].startswith(_BOM):
@@ -97,7 +98,7 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
         cmd = _parse(reader, diagnostics, physical)
         if cmd is not None:
             commands.append(cmd)
-    function = Function(function_id, path, tuple(commands), len(physical), is_macro)
+    function = Function(function_id, path, tuple(commands), len(physical), is_macro, pack)
     return function, diagnostics
 
 

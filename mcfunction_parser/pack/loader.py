@@ -14,7 +14,6 @@ file never stops the others.
 """
 from __future__ import annotations
 
-import dataclasses
 import re
 import zipfile
 from collections.abc import Sequence
@@ -24,8 +23,8 @@ from pathlib import Path
 from mcfunction_parser.ast import Function, FunctionTag
 from mcfunction_parser.diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
+from mcfunction_parser.pack.parallel import FunctionFile, parse_files
 from mcfunction_parser.pack.text import PackPath, load_json, read_text, split_lines
-from mcfunction_parser.parse import parse_lines
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from mcfunction_parser.pack.versions import (
     FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, SINGULAR_FOLDERS_FORMAT, Format, Version, format_label,
@@ -123,9 +122,12 @@ class _PackFiles:
         return self.files[rel][0]
 
 
-def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, on_function=None) -> LoadedPacks:
+def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, workers: int | None = None,
+               on_function=None) -> LoadedPacks:
     """Load packs (folders or .zip files) in order; later ones override. ``mc_version``
     ("1.21.4") overrides the packs' own version; an unknown or malformed one raises ValueError.
+    ``workers``: processes parsing functions beside this one (0: none; None: one per other core
+    when there are many lines; see pack.parallel), the result the same either way.
     ``on_function(done, total)`` hears each function file parsed (a progress bar)."""
     diagnostics: list[Diagnostic] = []
     opened = [(Path(p), str(p), _open_pack(Path(p), str(p), diagnostics)) for p in paths]
@@ -140,7 +142,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, on_fu
     result.packs = [p.info for p in packs]
     if target >= FILTER_FORMAT:
         _apply_filters(packs, metas)
-    _load_functions(packs, result, on_function)
+    _load_functions(packs, result, workers, on_function)
     _load_tags(packs, result)
     _load_advancements(packs, result)
     for pack in packs:
@@ -300,7 +302,7 @@ def _resource_id(namespace: str, path: str, shown: str, diagnostics: list[Diagno
     return None
 
 
-def _load_functions(packs: list[_PackFiles], result: LoadedPacks, on_function=None) -> None:
+def _load_functions(packs: list[_PackFiles], result: LoadedPacks, workers: int | None, on_function=None) -> None:
     chosen: dict[str, tuple[_PackFiles, str]] = {}
     for pack in packs:
         for fid, rel in _resources(pack, ("function", "functions"), ".mcfunction",
@@ -311,33 +313,36 @@ def _load_functions(packs: list[_PackFiles], result: LoadedPacks, on_function=No
                     INFO, f"function {fid} overrides {earlier} from an earlier pack",
                     pack.shown_file(rel)))
             chosen[fid] = (pack, rel)
-    for done, (fid, (pack, rel)) in enumerate(chosen.items(), 1):
-        loaded = _load_function(pack, rel, fid, result)
+    files = [_read_function(pack, rel, fid, result) for fid, (pack, rel) in chosen.items()]
+    readable = [file for file, _ in files if file is not None]
+    parsed = iter(parse_files(readable, result.version, workers))
+    done = 0
+    for file, read_problems in files:
+        result.diagnostics.extend(read_problems)
+        if file is None:
+            continue
+        function, diagnostics = next(parsed)
+        done += 1
         if on_function is not None:
-            on_function(done, len(chosen))
-        if loaded is not None:
-            function, parses = loaded
-            (result.functions if parses else result.refused)[fid] = function
+            on_function(done, len(readable))
+        result.diagnostics.extend(diagnostics)
+        if function is not None:
+            parses = not any(d.severity == ERROR for d in diagnostics)  # else the game refuses it
+            (result.functions if parses else result.refused)[function.id] = function
 
 
-def _load_function(pack: _PackFiles, rel: str, fid: str, result: LoadedPacks) -> tuple[Function, bool] | None:
-    """The parsed function and whether every line parses (else the game refuses it), or None
-    when the file cannot be read."""
+def _read_function(pack: _PackFiles, rel: str, fid: str,
+                   result: LoadedPacks) -> tuple[FunctionFile | None, list[Diagnostic]]:
+    """The file to parse (None when it cannot be read) and the problems reading it; its lines
+    are kept in ``result.sources``."""
     shown = pack.shown_file(rel)
-    text = read_text(pack.read(rel), shown, result.diagnostics, json_file=False)
+    problems: list[Diagnostic] = []
+    text = read_text(pack.read(rel), shown, problems, json_file=False)
     result.files += 1
     if text is None:
-        return None
+        return None, problems
     lines = result.sources[shown] = split_lines(text)  # the game's lines (a lone \r ends one too)
-    try:
-        function, diagnostics = parse_lines(lines, shown, fid, result.version)
-    except Exception as exc:  # a parser bug must not stop the other functions
-        result.diagnostics.append(Diagnostic(
-            ERROR, f"internal error while parsing this file: {type(exc).__name__}: {exc}", shown))
-        return None
-    result.diagnostics.extend(diagnostics)
-    parses = not any(d.severity == ERROR for d in diagnostics)
-    return dataclasses.replace(function, pack=str(pack.info.root)), parses
+    return (lines, shown, fid, str(pack.info.root)), problems
 
 
 def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:

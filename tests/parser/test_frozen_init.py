@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import dataclasses
 import inspect
+import pickle
 
 import pytest
 
@@ -73,3 +74,15 @@ def test_ast_nodes_are_still_frozen_and_equal_by_value():
         node.value = 4
     with pytest.raises(dataclasses.FrozenInstanceError):
         loc.col = 1
+
+
+def test_patched_classes_pickle_as_their_fields():
+    loc = diagnostics.Loc("f", 1, 2)
+    selector = ast.Selector("e", (ast.SelectorArg("tag", "a", False, loc),), loc)
+    node = ast.Execute(loc, (ast.ExAs(loc, selector),), ast.Say(loc, "hi"))
+    assert node.__reduce__() == (ast.Execute, (loc, node.subcommands, node.run))
+    copy = pickle.loads(pickle.dumps(node))
+    assert copy == node and copy.run.loc is copy.loc  # one object pickled once stays one
+    speed_up_inits(globals())
+    assert pickle.loads(pickle.dumps(_Child(1, c=(2,)))) == _Child(1, "b", (2,))
+    assert _WithFactory.__reduce__ is object.__reduce__  # no fast __init__: pickled as before
