@@ -31,7 +31,8 @@ from emulator.world import relations, teleport
 from emulator.world.entities import ENTITY_TYPES, Entity, EntityStore, add_tag, remove_tag
 from emulator.world.selectors import SelectorQuery
 from emulator.world.source import Source
-from emulator.world.state import SERVER, Context, WorldState
+from emulator.world.context import Context, SERVER
+from emulator.world.state import WorldState
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word
 from mcfunction_parser.diagnostics import Loc

@@ -13,7 +13,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from emulator.world import relations
-from emulator.world.state import Context
+from emulator.world.context import Context
 from mcfunction_parser import ast
 
 from . import conditions, entities

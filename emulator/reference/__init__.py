@@ -12,7 +12,8 @@ Modules
 from __future__ import annotations
 
 from emulator.runtime.backend import CallRecorder, RootResult, Tracer
-from emulator.world.state import Context, WorldState
+from emulator.world.context import Context
+from emulator.world.state import WorldState
 
 from .engine import Interpreter
 

@@ -12,7 +12,7 @@ from __future__ import annotations
 from emulator.commands import dispatch, stages, stores
 from emulator.commands.env import Env
 from emulator.world.semantics import wrap32
-from emulator.world.state import Overflow
+from emulator.world.records import Overflow
 from mcfunction_parser import ast
 
 from .queue import chain

@@ -26,7 +26,8 @@ from emulator.commands.server import require_function
 from emulator.runtime.backend import CallRecorder, RootResult, Tracer, report_quota_cut
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
-from emulator.world.state import Context, WorldState
+from emulator.world.context import Context
+from emulator.world.state import WorldState
 from mcfunction_parser import ast
 
 from . import adapter

@@ -10,7 +10,8 @@ from __future__ import annotations
 import dataclasses
 from dataclasses import dataclass
 
-from emulator.world.state import Context, Frame
+from emulator.world.context import Context
+from emulator.world.records import Frame
 from mcfunction_parser.diagnostics import Loc
 
 from .queue import Callback

@@ -24,7 +24,8 @@ from emulator.commands.dispatch import run_command
 from emulator.commands.env import Env
 from emulator.world.errors import CommandFailure
 from emulator.world.semantics import wrap32
-from emulator.world.state import Context, WorldState
+from emulator.world.context import Context
+from emulator.world.state import WorldState
 from mcfunction_parser import ast
 
 

@@ -36,9 +36,6 @@ import numpy as np
 
 from emulator.world.blocks import BlockMap
 from emulator.world.bossbars import BossBars
-# re-exported for the modules that still import them from here (the reference backend, the VM's
-# host, emulator/commands/entities.py)
-from emulator.world.context import SERVER, Context  # noqa: F401
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
 from emulator.world.random_sequences import RandomSequences

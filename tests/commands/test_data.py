@@ -11,7 +11,7 @@ from emulator.commands.entities import entity_context, new_state
 from emulator.commands.env import Env
 from emulator.world.errors import CommandFailure
 from emulator.world.blocks import parse_block
-from emulator.world.state import Context
+from emulator.world.context import Context
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.parse import parse_command
 

@@ -17,7 +17,7 @@ from emulator.commands.entities import entity_context, new_state, parse_uuid, si
 from emulator.commands.env import Env
 from emulator.world.errors import CommandFailure
 from emulator.world import rotation
-from emulator.world.state import Context
+from emulator.world.context import Context
 
 F32 = np.float32
 
