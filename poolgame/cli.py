@@ -63,14 +63,26 @@ def _shot(break_: bool, angle, speed, tip, elevation):
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 @click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
 @click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the outcome as JSON.")
+@click.option("--trajectory", is_flag=True, help="The JSON gains every ball's position after each physics tick and the events.")
+@click.option("--plot", "plot_out", type=OutputPath(stdout=False), metavar="FILE.png",
+              help="Draw the table, the balls' paths and the events (needs matplotlib: dpemu[plot]).")
 @fail_option
-def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitize, json_out, no_fail) -> None:
+def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitize, json_out, trajectory, plot_out,
+         no_fail) -> None:
     """Set up a table with the pool datapack PACK (a folder or .zip file; default: the pool
     datapack that ships with dpemu), rack, strike, and emulate until the table is at rest. Exit
     status 1 when the pack refuses the shot, the table does not come to rest within --max-ticks,
     the run had errors or the sanitizer finds a wrapped value."""
     game = _game()
     chosen = _shot(break_, angle, speed, tip, elevation)
+    if trajectory and not json_out:
+        raise click.UsageError("--trajectory adds to the JSON: give --json FILE|- too")
+    if plot_out:
+        from poolgame.plots import MissingMatplotlib, pyplot
+        try:
+            pyplot()
+        except MissingMatplotlib as error:
+            raise click.UsageError(str(error)) from None
     pack = pack or game.DEFAULT_PACK
     if not pack.exists():
         raise click.UsageError(f"no pool datapack at {pack}: give the pack's folder or .zip file as PACK")
@@ -83,13 +95,28 @@ def shot(pack, break_, angle, speed, tip, elevation, max_ticks, backend, sanitiz
         click.echo(f"{pack}: not a pool datapack (no {', '.join(missing)})", err=True)
         sys.exit(1)
     with progress(max_ticks, "ticks", 200) as bar:
-        result = game.play(emu, chosen, max_ticks, on_tick=lambda: bar.update(1))
+        result = game.play(emu, chosen, max_ticks, on_tick=lambda: bar.update(1), record=bool(trajectory or plot_out))
     _print(result, to_stderr=json_out == "-")
-    written = not json_out or write_output(json_out, json.dumps(result.to_json(), indent=2) + "\n")
+    written = not json_out or write_output(json_out, json.dumps(result.to_json(trajectory), indent=2) + "\n")
+    if plot_out and result.trajectory is not None:
+        written = _plot(plot_out, chosen, result) and written
     problems = has_errors(emu.load_diagnostics) or has_errors(result.diagnostics) or bool(result.overflows)
     unfinished = bool(result.refused) or not result.at_rest
     status = exit_status(problems, no_fail, written, result.interrupted)
     sys.exit(status or (PROBLEMS if unfinished else CLEAN))
+
+
+def _plot(path: str, chosen, result) -> bool:
+    from poolgame.plots import shot_picture
+    t = result.trajectory
+    title = (f"angle {chosen.angle:g} deg, cue {chosen.speed:g} m/s, tip {chosen.tip_x:g},{chosen.tip_y:g}, "
+             f"elevation {chosen.elevation:g} deg: {result.ticks} ticks")
+    try:
+        shot_picture(path, t.ids, t.positions_mm(), [e.to_json(t.ids) for e in t.events], title)
+    except OSError as error:
+        click.echo(f"error: could not write {path}: {error.strerror or error}", err=True)
+        return False
+    return True
 
 
 def _print(result, to_stderr: bool) -> None:

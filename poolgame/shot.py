@@ -14,7 +14,7 @@ from pathlib import Path
 
 from emulator.api import Emulator
 from emulator.world.text import plain_text
-
+from poolgame.trajectory import Trajectory
 
 
 def _default_pack() -> Path:
@@ -104,6 +104,7 @@ class ShotResult:
     diagnostics: list = field(default_factory=list)
     carried: int = 0              # ticks that ended mid physics tick ($carry pool.game: slow motion)
     interrupted: bool = False     # Ctrl-C stopped the ticks; the rest is what was played until then
+    trajectory: Trajectory | None = None   # with play(record=True)
 
     @property
     def commands_mean(self) -> float:
@@ -113,13 +114,14 @@ class ShotResult:
     def commands_max(self) -> int:
         return max(self.commands_per_tick, default=0)
 
-    def to_json(self) -> dict:
-        return {"refused": self.refused, "at_rest": self.at_rest, "ticks": self.ticks, "carried": self.carried,
+    def to_json(self, trajectory: bool = False) -> dict:
+        extra = {"trajectory": self.trajectory.to_json()} if trajectory and self.trajectory is not None else {}
+        return {**extra, "refused": self.refused, "at_rest": self.at_rest, "ticks": self.ticks, "carried": self.carried,
                 "commands_per_tick": {"mean": self.commands_mean, "max": self.commands_max,
                                       "each": self.commands_per_tick},
                 "seconds": self.seconds, "balls": [asdict(b) for b in self.balls],
                 "overflows": [o.to_json() for o in self.overflows],
-                "diagnostics": [d.to_json() for d in self.diagnostics]}
+                "diagnostics": [d.to_json() for d in self.diagnostics], "interrupted": self.interrupted}
 
 
 def missing_functions(emu: Emulator) -> list[str]:
@@ -127,31 +129,46 @@ def missing_functions(emu: Emulator) -> list[str]:
     return [f for f in REQUIRED_FUNCTIONS if f not in emu.packs.functions]
 
 
-def new_table(pack: str | Path = DEFAULT_PACK, backend: str = "numba", sanitize: bool = False) -> Emulator:
-    """An emulator with ``pack`` loaded, its load tick run, a racked table at TABLE_CORNER and a
-    player (LISTENER) watching."""
+def new_table(pack: str | Path = DEFAULT_PACK, backend: str = "numba", sanitize: bool = False,
+              balls: dict[int, tuple[int, int]] | None = None) -> Emulator:
+    """An emulator with ``pack`` loaded, its load tick run, a racked table at TABLE_CORNER (or only
+    ``balls``: id -> (x, z) um at rest) and a player (LISTENER) watching."""
     emu = Emulator(backend=backend, sanitize=sanitize)
     emu.load(pack)
     if missing_functions(emu):
         return emu
-    return _set_up(emu)
+    return _set_up(emu, balls)
 
 
-def reset_table(emu: Emulator) -> Emulator:
+def reset_table(emu: Emulator, balls: dict[int, tuple[int, int]] | None = None) -> Emulator:
     """A fresh world on ``emu``'s already loaded pack (no reparse, no recompile): its load tick run
-    and a racked table at TABLE_CORNER, as :func:`new_table` leaves it. Many shots on one emulator
+    and a table at TABLE_CORNER, as :func:`new_table` leaves it. Many shots on one emulator
     start each from here, so that no score or entity of an earlier shot slows the next."""
     emu.load_parsed(emu.packs)
-    return _set_up(emu)
+    return _set_up(emu, balls)
 
 
-def _set_up(emu: Emulator) -> Emulator:
+def _set_up(emu: Emulator, balls: dict[int, tuple[int, int]] | None = None) -> Emulator:
     emu.tick()                                         # the load tick
-    emu.call("pool:table/setup", at=TABLE_CORNER)
+    if balls is None:
+        emu.call("pool:table/setup", at=TABLE_CORNER)
+    else:
+        _place(emu, balls)
     # a player at the table, added after the balls: tellraw @a fails with nobody online (as in
     # the game), and the pack's refusals are read from the chat
     emu.add_player(LISTENER, TABLE_CORNER, gamemode="spectator")
     return emu
+
+
+def _place(emu: Emulator, balls: dict[int, tuple[int, int]]) -> None:
+    """Balls at rest where given (as pool:table/rack places them) on an empty table at TABLE_CORNER."""
+    for axis, value in zip("xyz", TABLE_CORNER):
+        emu.set_score(f"$origin.{axis}", "pool.game", round(value * 1000))
+    for i, (x, z) in balls.items():
+        item = "minecraft:white_concrete" if i == 0 else "minecraft:yellow_concrete"
+        emu.call("pool:table/rack/ball", at=TABLE_CORNER, arguments={"id": i, "x": x, "z": z, "item": item})
+    emu.set_score("$resting", "pool.game", 1)
+    emu.set_score("$pocketed", "pool.game", 0)
 
 
 def ball_holders(emu: Emulator) -> dict[int, str]:
@@ -176,25 +193,33 @@ def strike(emu: Emulator, shot: Shot) -> list[str]:
     return [plain_text(entry.text) for entry in emu.log[first:] if entry.kind == "tellraw"] or ["the pack refused the shot"]
 
 
-def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None) -> ShotResult:
+def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None, record: bool = False) -> ShotResult:
     """Strike and tick until ``$resting pool.game`` is 1 or ``max_ticks`` ran (``on_tick`` hears
-    each tick: a progress bar)."""
+    each tick: a progress bar). ``record`` keeps every ball's state after each complete physics
+    tick and the events the pack resolved (``ShotResult.trajectory``)."""
     refused = strike(emu, shot)
     holders = ball_holders(emu)
     start = ball_states(emu, holders)
+    trajectory = Trajectory(emu, holders) if record and not refused else None
     if refused:
         return ShotResult(refused, emu.score("$resting", "pool.game") == 1, 0, [], 0.0, _outcomes(start, {}), list(emu.overflows),
                           list(emu.diagnostics))
     last_change: dict[int, int] = {}
     previous, first_tick = start, len(emu.commands_per_tick)
     started = time.perf_counter()
-    at_rest, carried, interrupted = False, 0, False
+    at_rest, carried, interrupted, count = False, 0, False, 0
     try:
         for tick in range(1, max_ticks + 1):
             emu.tick()
             if on_tick is not None:
                 on_tick()
-            carried += emu.score("$carry", "pool.game") == 1
+            carry = emu.score("$carry", "pool.game") == 1
+            carried += carry
+            if trajectory is not None:
+                count += emu.score("#events.count", "pool.tmp") or 0
+                if not carry:
+                    trajectory.observe(emu, count)
+                    count = 0
             now = ball_states(emu, holders)
             last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
             previous = now
@@ -206,7 +231,7 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None) -> Shot
     seconds = time.perf_counter() - started
     costs = emu.commands_per_tick[first_tick:]
     return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(previous, last_change),
-                      list(emu.overflows), list(emu.diagnostics), carried, interrupted)
+                      list(emu.overflows), list(emu.diagnostics), carried, interrupted, trajectory)
 
 
 def _outcomes(states: dict[int, tuple[int, int, int]], last_change: dict[int, int]) -> list[BallOutcome]:

@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from poolgame.physics import rolling, sliding, spin
-from poolgame.physics.constants import BALL_MASS
+from poolgame.physics.constants import BALL_MASS, EXACT, Constants
 
 SLIDING, ROLLING, AT_REST, POCKETED = "sliding", "rolling", "at rest", "pocketed"
 # below this slip or speed (m/s) a phase is over: round-off, not motion
@@ -22,6 +22,8 @@ class Ball:
     w: np.ndarray = field(default_factory=lambda: np.zeros(2))
     wy: float = 0.0
     pocketed: bool = False
+    k: Constants = EXACT          # the constants this ball moves with
+
 
     def __post_init__(self) -> None:
         self.r = np.asarray(self.r, float)
@@ -29,30 +31,31 @@ class Ball:
         self.w = np.asarray(self.w, float)
 
     def copy(self) -> "Ball":
-        return Ball(self.r.copy(), self.v.copy(), self.w.copy(), self.wy, self.pocketed)
+        return Ball(self.r.copy(), self.v.copy(), self.w.copy(), self.wy, self.pocketed, self.k)
 
     @property
     def state(self) -> str:
         if self.pocketed:
             return POCKETED
-        if np.linalg.norm(self.v - self.w) > EPSILON:
+        v, w = self.v, self.w
+        if math.hypot(v[0] - w[0], v[1] - w[1]) > EPSILON:
             return SLIDING
-        return ROLLING if np.linalg.norm(self.v) > EPSILON else AT_REST
+        return ROLLING if math.hypot(v[0], v[1]) > EPSILON else AT_REST
 
     def phase_duration(self) -> float:
         state = self.state
         if state == SLIDING:
-            return sliding.slide_duration(self.v, self.w)
+            return sliding.slide_duration(self.v, self.w, self.k.slide_deceleration)
         if state == ROLLING:
-            return rolling.roll_duration(self.v)
+            return rolling.roll_duration(self.v, self.k.roll_deceleration)
         return math.inf
 
     def acceleration(self) -> np.ndarray:
         state = self.state
         if state == SLIDING:
-            return sliding.slide_accelerations(self.v, self.w)[0]
+            return sliding.slide_accelerations(self.v, self.w, self.k.slide_deceleration)[0]
         if state == ROLLING:
-            return rolling.roll_acceleration(self.v)
+            return rolling.roll_acceleration(self.v, self.k.roll_deceleration)
         return np.zeros(2)
 
     def kinetic_energy(self) -> float:
@@ -63,18 +66,19 @@ class Ball:
 def advance(ball: Ball, dt: float) -> None:
     """Move ``ball`` forward by ``dt`` (at most its phase duration; the end of a phase snaps to the
     closed-form state that follows it)."""
-    ball.wy = spin.decay_side_spin(ball.wy, dt)
+    k = ball.k
+    ball.wy = spin.decay_side_spin(ball.wy, dt, k.spin_deceleration)
     state = ball.state
     duration = ball.phase_duration()
     if state == SLIDING:
         if dt >= duration:
             v_roll = sliding.rolling_velocity(ball.v, ball.w)
-            ball.r = sliding.slide(ball.r, ball.v, ball.w, duration)[0]
+            ball.r = sliding.slide(ball.r, ball.v, ball.w, duration, k.slide_deceleration)[0]
             ball.v, ball.w = v_roll, v_roll.copy()
         else:
-            ball.r, ball.v, ball.w = sliding.slide(ball.r, ball.v, ball.w, dt)
+            ball.r, ball.v, ball.w = sliding.slide(ball.r, ball.v, ball.w, dt, k.slide_deceleration)
     elif state == ROLLING:
-        ball.r, ball.v = rolling.roll(ball.r, ball.v, min(dt, duration))
+        ball.r, ball.v = rolling.roll(ball.r, ball.v, min(dt, duration), k.roll_deceleration)
         if dt >= duration:
             ball.v = np.zeros(2)
         ball.w = ball.v.copy()
@@ -87,4 +91,4 @@ def advance_through(ball: Ball, dt: float) -> None:
         advance(ball, step)
         dt -= step
     if dt > 0.0:
-        ball.wy = spin.decay_side_spin(ball.wy, dt)
+        ball.wy = spin.decay_side_spin(ball.wy, dt, ball.k.spin_deceleration)

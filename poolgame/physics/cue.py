@@ -17,8 +17,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from poolgame.physics.constants import (BALL_INERTIA, BALL_MASS, BALL_RADIUS, CUE_INERTIA,
-                                        CUE_MASS, CUE_TIP_TO_CENTRE)
+from poolgame.physics.constants import (BALL_INERTIA, BALL_MASS, BALL_RADIUS, CUE_LENGTH,
+                                        CUE_TIP_TO_CENTRE, EXACT, Constants)
 
 
 @dataclass(frozen=True)
@@ -44,8 +44,9 @@ def cue_frame(shot: Shot):
     return d, right, np.cross(right, d)
 
 
-def strike(shot: Shot, mu0: float | None = None):
-    """Ball state after the strike: (v, w, wy) with v, w 2-D in m/s, wy = R omega_y in m/s."""
+def strike(shot: Shot, mu0: float | None = None, k: Constants = EXACT):
+    """Ball state after the strike: (v, w, wy) with v, w 2-D in m/s, wy = R omega_y in m/s; the cue's
+    mass is m_b / ``k.mass_ratio``."""
     if shot.tip_x**2 + shot.tip_y**2 >= 1.0:
         raise ValueError("the tip offset must lie inside the ball")
     d, right, up = cue_frame(shot)
@@ -54,8 +55,10 @@ def strike(shot: Shot, mu0: float | None = None):
     n = cos_t * d - shot.tip_x * right - shot.tip_y * up
     t = (d - cos_t * n) / sin_t if sin_t > 0.0 else np.zeros(3)
     mu = math.tan(math.asin(sin_t)) if mu0 is None else mu0 * sin_t
-    denominator = ((1 + mu * mu) / (2 * CUE_MASS) + (1 + mu * mu) / (2 * BALL_MASS)
-                   + CUE_TIP_TO_CENTRE**2 * (mu * cos_t - sin_t) ** 2 / (2 * CUE_INERTIA)
+    cue_mass = BALL_MASS / k.mass_ratio
+    cue_inertia = cue_mass * CUE_LENGTH**2 / 12
+    denominator = ((1 + mu * mu) / (2 * cue_mass) + (1 + mu * mu) / (2 * BALL_MASS)
+                   + CUE_TIP_TO_CENTRE**2 * (mu * cos_t - sin_t) ** 2 / (2 * cue_inertia)
                    + BALL_RADIUS**2 * mu * mu / (2 * BALL_INERTIA))
     j = shot.speed * (cos_t + mu * sin_t) / denominator
     v = j / BALL_MASS * (n + mu * t)

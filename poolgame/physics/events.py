@@ -41,6 +41,10 @@ def ball_ball_time(a: Ball, b: Ball, horizon: float) -> float:
     c = b.r - a.r
     bv = b.v - a.v
     half_a = 0.5 * (b.acceleration() - a.acceleration())
+    # the gap cannot close by more than |bv| h + |half_a| h^2 within the horizon: no root to look for
+    reach = math.hypot(*bv) * horizon + math.hypot(*half_a) * horizon * horizon
+    if math.hypot(*c) - 2 * BALL_RADIUS > reach + TOLERANCE:
+        return math.inf
     quartic = [half_a @ half_a, 2 * half_a @ bv, bv @ bv + 2 * half_a @ c, 2 * bv @ c,
                c @ c - (2 * BALL_RADIUS) ** 2]
 
@@ -55,4 +59,6 @@ def rail_time(ball: Ball, rail: Rail, horizon: float) -> float:
     distance = rail.distance(ball.r)
     speed = float(rail.normal @ ball.v)
     half_a = 0.5 * float(rail.normal @ ball.acceleration())
+    if distance > (abs(speed) + abs(half_a) * horizon) * horizon + TOLERANCE:
+        return math.inf
     return _earliest_root([half_a, speed, distance], lambda t: speed + 2 * half_a * t, horizon)

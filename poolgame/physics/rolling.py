@@ -7,16 +7,16 @@ import numpy as np
 from poolgame.physics.constants import ROLL_DECELERATION
 
 
-def roll_duration(v: np.ndarray) -> float:
-    return float(np.linalg.norm(v)) / ROLL_DECELERATION
+def roll_duration(v: np.ndarray, deceleration: float = ROLL_DECELERATION) -> float:
+    return float(np.linalg.norm(v)) / deceleration
 
 
-def roll_acceleration(v: np.ndarray) -> np.ndarray:
+def roll_acceleration(v: np.ndarray, deceleration: float = ROLL_DECELERATION) -> np.ndarray:
     speed = float(np.linalg.norm(v))
-    return np.zeros(2) if speed == 0.0 else -ROLL_DECELERATION * v / speed
+    return np.zeros(2) if speed == 0.0 else -deceleration * v / speed
 
 
-def roll(r: np.ndarray, v: np.ndarray, t: float):
+def roll(r: np.ndarray, v: np.ndarray, t: float, deceleration: float = ROLL_DECELERATION):
     """State after rolling for t <= the roll duration: (r, v)."""
-    a = roll_acceleration(v)
+    a = roll_acceleration(v, deceleration)
     return r + v * t + 0.5 * a * t * t, v + a * t

@@ -58,12 +58,15 @@ def _resolve(balls: list[Ball], time: float, what: tuple) -> Event:
         ball.w[:] = 0.0
         ball.wy = 0.0
         return Event(time, "pocket", (what[1],), rail.name)
-    ball.v, ball.wy = cushion.rebound(ball.v, ball.wy, rail.normal)
+    ball.v, ball.wy = cushion.rebound(ball.v, ball.wy, rail.normal, ball.k.cushion_restitution,
+                                      ball.k.cushion_friction)
     return Event(time, "cushion", (what[1],), rail.name)
 
 
-def simulate(balls: list[Ball], duration: float) -> list[Event]:
-    """Run ``duration`` seconds (or until every ball rests), mutating ``balls``; returns events."""
+def simulate(balls: list[Ball], duration: float, on_event=None) -> list[Event]:
+    """Run ``duration`` seconds (or until every ball rests), mutating ``balls``; returns events.
+    ``on_event(event, before)`` hears each event after its resolution, with copies of the balls
+    just before it."""
     events: list[Event] = []
     clock = 0.0
     while clock < duration and any(b.state not in (AT_REST, POCKETED) for b in balls):
@@ -74,7 +77,10 @@ def simulate(balls: list[Ball], duration: float) -> list[Event]:
             advance(ball, dt)
         clock += dt
         if what[0] != "end":
+            before = [b.copy() for b in balls] if on_event is not None else None
             events.append(_resolve(balls, clock, what))
+            if on_event is not None:
+                on_event(events[-1], before)
     return events
 
 

@@ -11,8 +11,8 @@ def slip(v: np.ndarray, w: np.ndarray) -> np.ndarray:
     return v - w
 
 
-def slide_duration(v: np.ndarray, w: np.ndarray) -> float:
-    return 2.0 * float(np.linalg.norm(slip(v, w))) / (7.0 * SLIDE_DECELERATION)
+def slide_duration(v: np.ndarray, w: np.ndarray, deceleration: float = SLIDE_DECELERATION) -> float:
+    return 2.0 * float(np.linalg.norm(slip(v, w))) / (7.0 * deceleration)
 
 
 def rolling_velocity(v: np.ndarray, w: np.ndarray) -> np.ndarray:
@@ -20,17 +20,18 @@ def rolling_velocity(v: np.ndarray, w: np.ndarray) -> np.ndarray:
     return v - (2.0 / 7.0) * slip(v, w)
 
 
-def slide_accelerations(v: np.ndarray, w: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def slide_accelerations(v: np.ndarray, w: np.ndarray,
+                        deceleration: float = SLIDE_DECELERATION) -> tuple[np.ndarray, np.ndarray]:
     """(dv/dt, dw/dt) = (-mu_s g u_hat, +(5/2) mu_s g u_hat)."""
     u = slip(v, w)
     norm = float(np.linalg.norm(u))
     if norm == 0.0:
         return np.zeros(2), np.zeros(2)
     u_hat = u / norm
-    return -SLIDE_DECELERATION * u_hat, 2.5 * SLIDE_DECELERATION * u_hat
+    return -deceleration * u_hat, 2.5 * deceleration * u_hat
 
 
-def slide(r: np.ndarray, v: np.ndarray, w: np.ndarray, t: float):
+def slide(r: np.ndarray, v: np.ndarray, w: np.ndarray, t: float, deceleration: float = SLIDE_DECELERATION):
     """State after sliding for t <= tau: (r, v, w)."""
-    a_v, a_w = slide_accelerations(v, w)
+    a_v, a_w = slide_accelerations(v, w, deceleration)
     return r + v * t + 0.5 * a_v * t * t, v + a_v * t, w + a_w * t

@@ -7,5 +7,5 @@ import math
 from poolgame.physics.constants import SPIN_DECELERATION
 
 
-def decay_side_spin(wy: float, t: float) -> float:
-    return math.copysign(max(abs(wy) - SPIN_DECELERATION * t, 0.0), wy)
+def decay_side_spin(wy: float, t: float, deceleration: float = SPIN_DECELERATION) -> float:
+    return math.copysign(max(abs(wy) - deceleration * t, 0.0), wy)

@@ -88,3 +88,28 @@ def test_a_pack_without_the_pool_api_is_named(tmp_path):
     result = run(str(tmp_path), "--speed", "1")
     assert result.exit_code == 1
     assert "not a pool datapack" in result.output
+
+
+def test_trajectory_adds_positions_and_events_to_the_json():
+    result = run("--angle", "90", "--speed", "0.8", "--json", "-", "--trajectory")
+    trajectory = json.loads(result.stdout)["trajectory"]
+    assert trajectory["ids"] == list(range(16))
+    assert len(trajectory["positions_mm"]) > 10 and trajectory["positions_mm"][0][0] == [635.0, 635.0]
+    assert all(e["kind"] in ("ball", "cushion", "pocket") for e in trajectory["events"])
+
+
+def test_trajectory_without_json_is_a_usage_error():
+    assert run("--break", "--trajectory").exit_code == 2
+
+
+def test_plot_draws_the_table(tmp_path):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "shot.png"
+    result = run("--angle", "20", "--speed", "2", "--plot", str(out))
+    assert result.exit_code == 0, result.output
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and out.stat().st_size > 20_000
+
+
+def test_plot_into_a_missing_folder_is_refused_before_the_shot(tmp_path):
+    result = run("--break", "--plot", str(tmp_path / "missing" / "b.png"))
+    assert result.exit_code == 2 and "table at rest" not in result.output
