@@ -108,16 +108,23 @@ def _outline(plt):
 
 
 # ---------------------------------------------------------------------------- dpemu score
+def _grid(plt, count: int, cols: int, width: float, height: float):
+    """A figure of ``count`` panels in rows of ``cols``; the unused panels hidden."""
+    rows = math.ceil(count / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(width, height * rows), squeeze=False)
+    for ax in list(axes.flat)[count:]:
+        ax.axis("off")
+    return fig, list(axes.flat)[:count]
+
+
 def score_paths(path, results, limit: int = 6) -> None:
     """The integer paths (solid) and the float's (seeded dashed, end-to-end dotted) of a few cases."""
     plt = pyplot()
     shown = [r for r in results if r.paths is not None][:limit]
     if not shown:
         return
-    cols = 2
-    rows = math.ceil(len(shown) / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(14, 3.9 * rows), squeeze=False)
-    for ax, result in zip(axes.flat, shown):
+    fig, axes = _grid(plt, len(shown), 2, 14, 3.9)
+    for ax, result in zip(axes, shown):
         draw_table(ax)
         p = result.paths
         for j, ball in enumerate(p["ids"]):
@@ -132,8 +139,6 @@ def score_paths(path, results, limit: int = 6) -> None:
                             linestyle=style, linewidth=0.9, zorder=3)
             draw_ball(ax, ball, *track[-1])
         ax.set_title(result.name, fontsize=9)
-    for ax in list(axes.flat)[len(shown):]:
-        ax.axis("off")
     fig.suptitle("integer paths (thick) with the float reference: seeded (dashed), end-to-end (dotted)", fontsize=11)
     fig.savefig(path, dpi=110, bbox_inches="tight", facecolor="white")
     plt.close(fig)
@@ -145,10 +150,8 @@ def histograms(path, rows) -> None:
     rows = [r for r in rows if r.values]
     if not rows:
         return
-    cols = 4
-    lines = math.ceil(len(rows) / cols)
-    fig, axes = plt.subplots(lines, cols, figsize=(16, 3.0 * lines), squeeze=False)
-    for ax, row in zip(axes.flat, rows):
+    fig, axes = _grid(plt, len(rows), 4, 16, 3.0)
+    for ax, row in zip(axes, rows):
         values = np.asarray(row.values, float)
         values = values[np.isfinite(values)]
         ax.hist(values, bins=30, color="#2f7d4f" if row.passed else "#b03030")
@@ -158,8 +161,6 @@ def histograms(path, rows) -> None:
                 ax.axvline(limit, color="red", linewidth=1)
         ax.set_title(f"{m.text}\n({m.mode}, {m.unit})", fontsize=8)
         ax.tick_params(labelsize=7)
-    for ax in list(axes.flat)[len(rows):]:
-        ax.axis("off")
     fig.tight_layout()
     fig.savefig(path, dpi=100, facecolor="white")
     plt.close(fig)

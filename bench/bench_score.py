@@ -1,0 +1,72 @@
+"""dpemu score at scale: many random shots as independent worlds of one compiled program, over local
+processes (poolgame.score.sweep), and the full score sweep.
+
+1. shots: N random full shots from the rack (poolgame.shot.random_shot: any aim, up to full power,
+   any tip within the miscue limit, every tenth the break), each played to rest on a fresh world
+   (numba VM, overflow sanitizer on, every complete tick recorded), split over --workers
+   processes forked after the pack is compiled; the wall time beside the target, 1,000 shots in
+   60 s on two cores.
+2. score (with --score): every model with --cases random cases each, seeded and end to end: the
+   rows, as `dpemu score` prints them, and the wall time.
+
+Usage: python bench/bench_score.py [--shots 1000] [--workers 2] [--seed 1] [--score] [--cases 50]
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import random
+import time
+
+from poolgame.score import MODELS, report
+from poolgame.score.cases import Case, cases, rounded
+from poolgame.score.run import open_pack
+from poolgame.score.sweep import sweep
+from poolgame.shot import DEFAULT_PACK, random_shot
+
+TARGET_SHOTS, TARGET_SECONDS = 1000, 60.0
+
+
+def shots_bench(n: int, workers: int, seed: int) -> None:
+    rng = random.Random(seed)
+    work = [Case(f"random {k}", "shots", shot=rounded(random_shot(rng, k))) for k in range(n)]
+    started = time.perf_counter()
+    results, _ = sweep(work, str(DEFAULT_PACK), modes=(), workers=workers)
+    seconds = time.perf_counter() - started
+    unfinished = sum(r.unfinished for r in results)
+    wrapped = sum(sum(r.samples.get("overflow", [])) for r in results)
+    rate = n / seconds
+    print(f"random full shots: {n} in {seconds:.1f} s on {workers} process(es) = {rate:.1f} shots/s "
+          f"({unfinished} not at rest, {wrapped:.0f} wrapped values)")
+    print(f"{'':<20} {'measured':>12} {'target':>12}")
+    print(f"{'1,000 shots':<20} {TARGET_SHOTS / rate:>10.1f} s {TARGET_SECONDS:>10.0f} s  "
+          f"{'ok' if TARGET_SHOTS / rate <= TARGET_SECONDS else 'SLOWER'} ({TARGET_SECONDS * rate / TARGET_SHOTS:.2f}x the target rate)")
+
+
+def score_bench(n: int, workers: int, seed: int) -> None:
+    work = cases(MODELS, n, seed)
+    started = time.perf_counter()
+    results, _ = sweep(work, str(DEFAULT_PACK), ("seeded", "end-to-end"), workers)
+    table = report.rows_of(results, MODELS, ("seeded", "end-to-end"))
+    print(report.text(table, results, False))
+    print(f"score sweep: {len(work)} cases in {time.perf_counter() - started:.0f} s on {workers} process(es)")
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--shots", type=int, default=TARGET_SHOTS)
+    parser.add_argument("--workers", type=int, default=min(2, os.cpu_count() or 1))
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--score", action="store_true", help="also run the full score sweep")
+    parser.add_argument("--cases", type=int, default=50, help="random cases per model in the score sweep")
+    args = parser.parse_args()
+    problem = open_pack(str(DEFAULT_PACK))          # compiled once, before the workers fork
+    if problem:
+        raise SystemExit(problem)
+    shots_bench(args.shots, args.workers, args.seed)
+    if args.score:
+        score_bench(args.cases, args.workers, args.seed)
+
+
+if __name__ == "__main__":
+    main()
