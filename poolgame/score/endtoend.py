@@ -77,8 +77,8 @@ def score(trajectory: Trajectory, shot, k: Constants, samples: dict, constants: 
         for i in np.flatnonzero(in_play[tick]):
             error = float(np.linalg.norm(ints[tick, i] - floats[tick, i]))
             samples["e2e_trajectory"].append(error / (2.0 + EPSILON * path[tick, i]))
-    if last == n and n and trajectory.ticks[-1][0, PHASE] == 0:
-        cue = trajectory.ids.index(0)
+    cue = trajectory.ids.index(0)
+    if last == n and n and trajectory.ticks[-1][cue, PHASE] == 0:
         error = float(np.linalg.norm(ints[-1, cue] - floats[-1, cue]))
         samples["e2e_stop"].append(error / (1.0 + (0.0005 + EPSILON) * path[-1, cue]))
     if first_int is not None and first_float is not None:

@@ -30,8 +30,9 @@ AT_REST_PHASE, SLIDING_PHASE = 0, 1
 class _Segment:
     """A ball's float path from one seed (the strike or an event) to the next."""
 
-    def __init__(self, seed, t_seed: float, tick: int, rolling) -> None:
-        self.seed, self.t_seed, self.tick = seed, t_seed, tick
+    def __init__(self, seed, t_seed: float, first_tick: int, rolling) -> None:
+        self.seed, self.t_seed = seed, t_seed
+        self.first_tick = first_tick      # the complete tick of errors[0] and phases[0]
         self.rolling = rolling            # the pack's rolling velocity of a slide started here (um/tick)
         self.errors: list[float] = []     # mm, at each complete tick
         self.path = [seed.r.copy()]
@@ -50,7 +51,7 @@ def score(trajectory: Trajectory, k: Constants, samples: dict) -> dict:
         by_tick[event.tick].append(event)
     # the rolling velocity the strike set is still there after tick 1 unless the ball met something
     hit_at_once = {e.ball for e in by_tick.get(1, [])}
-    segments = [_Segment(ball_from(trajectory.start[i], k), 0.0, 0,
+    segments = [_Segment(ball_from(trajectory.start[i], k), 0.0, 1,
                          None if i in hit_at_once or not n else trajectory.rolling[0][i]) for i in range(balls)]
     floats = np.full((n, balls, 2), np.nan)
     for tick in range(1, n + 1):
@@ -77,12 +78,13 @@ def score(trajectory: Trajectory, k: Constants, samples: dict) -> dict:
 
 
 def _close(segment: _Segment, samples: dict, stopped: bool, final=None) -> None:
-    if segment.errors and np.any(segment.seed.v) or segment.errors and np.any(segment.seed.w):
+    moving = bool(np.any(segment.seed.v) or np.any(segment.seed.w))
+    if segment.errors and moving:
         errors = np.array(segment.errors)
         samples["trajectory_rms"].append(float(np.sqrt(np.mean(errors ** 2))))
         samples["trajectory_max"].append(float(errors.max()))
     _slide_to_roll(segment, samples)
-    if stopped and final is not None and (np.any(segment.seed.v) or np.any(segment.seed.w)):
+    if stopped and final is not None and moving:
         rest = moved(segment.seed, 1e3)
         path = sum(np.linalg.norm(b - a) for a, b in zip(segment.path, segment.path[1:]))
         path += float(np.linalg.norm(rest.r - segment.path[-1]))
@@ -98,9 +100,9 @@ def _slide_to_roll(segment: _Segment, samples: dict) -> None:
         v_roll = sliding.rolling_velocity(seed.v, seed.w) / UM_PER_TICK
         samples["roll_velocity"].extend(float(abs(a - b)) for a, b in zip(segment.rolling, v_roll))
     ends = segment.t_seed + seed.phase_duration()
-    float_tick = math.ceil(ends * TICKS_PER_SECOND - 1e-9)
-    ended = [segment.tick + 1 + j for j, phase in enumerate(segment.phases) if phase != SLIDING_PHASE]
-    if ended and float_tick <= segment.tick + len(segment.phases):
+    float_tick = math.ceil(ends * TICKS_PER_SECOND - 1e-9)      # the tick in which the slide ends
+    ended = [segment.first_tick + j for j, phase in enumerate(segment.phases) if phase != SLIDING_PHASE]
+    if ended and float_tick < segment.first_tick + len(segment.phases):
         samples["transition_tick"].append(float(abs(ended[0] - float_tick)))
 
 
