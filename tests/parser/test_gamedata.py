@@ -1,0 +1,70 @@
+"""The game data module: which release's data answers for a release, and the missing-data error."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from mcfunction_parser import gamedata
+from mcfunction_parser.pack.versions import RELEASE_FORMATS
+
+
+def test_every_known_release_has_a_command_tree():
+    for version in RELEASE_FORMATS:
+        assert gamedata.tree_release(version) >= version
+        assert "execute" in gamedata.command_tree(version)["children"]
+
+
+def test_a_release_uses_its_own_tree_or_the_oldest_after_it():
+    assert gamedata.tree_release((1, 20, 3)) == (1, 20, 3)
+    assert gamedata.tree_release((1, 20, 4)) == (1, 20, 6)
+    assert gamedata.tree_release((1, 21, 0)) == (1, 21, 11)
+    assert gamedata.tree_release((1, 13, 0)) == (1, 16, 5)
+
+
+def test_trees_follow_the_releases():
+    # `return run` came back in 23w41a (1.20.3); 1.20.2 has only `return <value>`
+    assert set(gamedata.command_tree((1, 20, 2))["children"]["return"]["children"]) == {"value"}
+    assert "run" in gamedata.command_tree((1, 20, 3))["children"]["return"]["children"]
+    assert "transfer" in gamedata.command_tree((1, 20, 5))["children"]
+
+
+def test_a_release_after_every_tree_is_a_clear_error(tmp_path, monkeypatch):
+    monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
+    with pytest.raises(gamedata.GameDataMissing) as error:
+        gamedata.tree_release((26, 1, 0))
+    message = str(error.value)
+    assert "Minecraft 26.1" in message and "--reports" in message and str(tmp_path / "26.1") in message
+
+
+def test_the_games_own_reports_are_read_for_any_release(tmp_path, monkeypatch):
+    monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
+    folder = tmp_path / "26.9"
+    folder.mkdir()
+    tree = {"type": "root", "children": {"say": {"type": "literal"}}}
+    (folder / "commands.json").write_text(json.dumps(tree))
+    (folder / "registries.json").write_text(json.dumps(
+        {"minecraft:item": {"entries": {"minecraft:stone": {"protocol_id": 1}}}}))
+    (folder / "blocks.json").write_text(json.dumps(
+        {"minecraft:lever": {"properties": {"powered": ["true", "false"]}, "states": []}}))
+    assert gamedata.tree_release((26, 9, 0)) == (26, 9, 0)
+    assert gamedata.command_tree((26, 9, 0)) == tree
+    assert gamedata.registry("item", (26, 9, 0)) == {"stone"}
+    assert gamedata.registry_release((26, 9, 0)) == ((26, 9, 0), True)
+    assert gamedata.block_states("minecraft:lever", (26, 9, 0)) == {"powered": ("true", "false")}
+
+
+def test_registries_and_block_states():
+    assert "diamond" in gamedata.registry("item", (1, 21, 4))
+    assert "zombie" in gamedata.registry("entity_type", (1, 13, 0))
+    assert "warden" not in gamedata.registry("entity_type", (1, 18, 2))  # 1.19
+    assert "warden" in gamedata.registry("entity_type", (1, 19, 0))
+    assert "unluck" in gamedata.registry("mob_effect", (1, 16, 5))
+    assert "max_health" in gamedata.registry("attribute", (1, 21, 4))  # renamed from generic.* in 1.21.2
+    assert "generic.max_health" in gamedata.registry("attribute", (1, 21, 1))
+    assert gamedata.block_states("oak_stairs", (1, 20, 0))["half"] == ("top", "bottom")
+    assert gamedata.block_states("stone", (1, 20, 0)) == {}
+    assert gamedata.block_states("no_such_block", (1, 20, 0)) is None
+    # newer releases than the newest registry data fall back to it, flagged as not exact
+    assert gamedata.registry_release((1, 21, 11)) == ((1, 21, 4), False)
+    assert gamedata.registry_release((1, 21, 4)) == ((1, 21, 4), True)
