@@ -1,7 +1,8 @@
 """The linter behind ``dpemu check``: loader and parser diagnostics plus whole-pack rules.
 
-Rules added here (the parser already reports syntax, unknown commands, literal ranges and
-version problems per command):
+Rules added here (the parser already reports syntax, unknown commands, literal ranges,
+arguments against the game's command tree and version problems per command):
+- no command tree for the target release (error, once: see :mod:`.gamedata`);
 - a ``function``, ``schedule function``, ``execute if function`` or advancement reward naming a
   function or function tag that is not loaded (error; a tag the game refused to load is named as
   such);
@@ -28,7 +29,7 @@ from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from . import ast
+from . import ast, gamedata
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.loader import LoadedPacks, load_packs
 from mcfunction_parser.parse import paused_gc
@@ -172,6 +173,7 @@ def _position(d: Diagnostic) -> tuple:
 def lint(loaded: LoadedPacks) -> list[Diagnostic]:
     """The whole-pack rules above, as new diagnostics."""
     found: list[Diagnostic] = []
+    _check_game_data(loaded, found)
     facts = _gather(loaded)
     _check_calls(loaded, facts, found)
     _check_predicates(loaded, facts, found)
@@ -333,6 +335,15 @@ def _at(loaded: LoadedPacks, severity: str, message: str, loc: Loc) -> Diagnosti
 
 
 # ----------------------------------------------------------------------------- rules
+
+
+def _check_game_data(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
+    """No command tree for the release: the commands without a parser of their own went unchecked."""
+    try:
+        gamedata.tree_release(loaded.version)
+    except gamedata.GameDataMissing as missing:
+        path = str(loaded.packs[-1].root) if loaded.packs else ""
+        found.append(Diagnostic(ERROR, f"command arguments not checked: {missing}", path))
 
 
 def _references(node: object) -> Iterator[tuple[str, bool, str]]:

@@ -16,6 +16,13 @@ _MESSAGE_SELECTOR_OLD = re.compile(r"@[spaer]")  # before @n existed
 def say(r: Reader, loc) -> ast.Command:
     r.space("message")
     start = r.pos
+    message(r)
+    return ast.Say(loc, r.text[start:])
+
+
+def message(r: Reader) -> None:
+    """A MessageArgument: the rest of the command, its selectors parsed."""
+    start = r.pos
     text = r.text
     pattern = _MESSAGE_SELECTOR if r.version >= AT_N else _MESSAGE_SELECTOR_OLD
     for m in pattern.finditer(text, start):
@@ -24,7 +31,6 @@ def say(r: Reader, loc) -> ast.Command:
         r.pos = m.start()
         selector(r)
     r.pos = r.end
-    return ast.Say(loc, text[start:])
 
 
 def tellraw(r: Reader, loc) -> ast.Command:

@@ -1,9 +1,10 @@
 """Dispatch on a command's first word; every command family registers its parsers here."""
 from __future__ import annotations
 
-from ..ast import Command, GenericCommand
+from ..ast import Command
 from ..features import COMMANDS, command_problem, permission_warning
 from ..reader import Reader
+from .tree import tree_command
 
 # name -> parser(reader positioned after the name, loc of the name) -> Command
 REGISTRY: dict = {}
@@ -13,7 +14,7 @@ _TABLES: dict = {}  # version -> its table, built on first use (after every fami
 
 
 def _build_table(version: tuple[int, int, int]) -> dict:
-    """The commands of ``version``: name -> (parser, or None for a generic command; warning or None)."""
+    """The commands of ``version``: name -> (parser, or None for one the command tree checks; warning or None)."""
     table = _TABLES[version] = {name: (REGISTRY.get(name), permission_warning(name))
                                 for name in COMMANDS if command_problem(name, version) is None}
     return table
@@ -37,5 +38,4 @@ def command(r: Reader) -> Command:
         r.warnings.append((warning, start))
     if parser is not None:
         return parser(r, loc)
-    r.pos = r.end
-    return GenericCommand(loc, name, r.text[start:])
+    return tree_command(r, loc, name)

@@ -21,7 +21,7 @@ BELOW_NAME_RENAMED = (1, 20, 2)
 OPERATIONS = frozenset(("=", "+=", "-=", "*=", "/=", "%=", "<", ">", "><"))
 
 
-def _criterion(r: Reader) -> str:
+def criterion(r: Reader) -> str:
     start = r.pos
     word = r.word()
     if word in _SIMPLE_CRITERIA or _STAT_CRITERION.match(word):
@@ -32,7 +32,7 @@ def _criterion(r: Reader) -> str:
     r.fail(f"unknown criterion {show(word)}", start)
 
 
-def _display_slot(r: Reader) -> str:
+def display_slot(r: Reader) -> str:
     start = r.pos
     word = r.word()
     if word in ("list", "sidebar"):
@@ -53,10 +53,10 @@ def _obj_add(r, loc, action):
     r.space("objective name")
     name = objective(r)
     r.space("criterion")
-    criterion = _criterion(r)
+    chosen = criterion(r)
     display = text_component(r) if r.optional_space() else None
     r.finish()
-    return ast.ObjectivesAdd(loc, name, criterion, display)
+    return ast.ObjectivesAdd(loc, name, chosen, display)
 
 
 def _obj_remove(r, loc, action):
@@ -91,7 +91,7 @@ def _obj_modify(r, loc, action):
 
 def _obj_setdisplay(r, loc, action):
     r.space("display slot")
-    slot = _display_slot(r)
+    slot = display_slot(r)
     name = objective(r) if r.optional_space() else None
     r.finish()
     return ast.ObjectivesSetdisplay(loc, slot, name)

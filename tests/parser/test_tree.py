@@ -1,0 +1,97 @@
+"""Commands without a parser of their own, checked against the game's command tree and registries
+of the target release (mcfunction_parser/commands/tree.py, game_objects.py)."""
+from __future__ import annotations
+
+import pytest
+
+from mcfunction_parser import ast, gamedata
+from mcfunction_parser.check import check_packs
+from mcfunction_parser.commands import tree
+from tests.parser.parser_helpers import parse_err, parse_ok
+from tests.parser.test_check import fn, write
+
+V21 = (1, 21, 4)
+
+
+@pytest.mark.parametrize("text,col,words", [
+    # the examples of issue 14: each an error with the caret under the wrong argument
+    ("give @s diamond 1 2 3", 19, "expected end of command, got '2'"),
+    ("gamemode flying", 10, "expected game mode"),
+    ("setblock ~ ~ ~ stone[facing=north", 22, "has no state 'facing'"),
+    ("setblock ~ ~ ~ oak_stairs[facing=up]", 34, "does not accept 'up'"),
+    ("setblock ~ ~ ~ oak_stairs[facing=north", 39, "expected ',' or ']'"),
+    ("give @s diamond -1", 17, "at least 1"),
+    ("effect give @s speedy", 16, "unknown effect 'minecraft:speedy'"),
+    ("give @s mymod:thing", 9, "unknown item"),  # items are a static registry
+    ("weather rain -5", 14, "time"),
+    ("team modify red color pink", 23, "expected color"),
+    ("gamemode", 9, "incomplete command: expected <gamemode>"),
+    ("xp add @s five", 11, "expected integer"),
+    ("item replace entity @s weapon.left with stone", 24, "unknown slot 'weapon.left'"),
+])
+def test_tree_errors_point_at_the_argument(text, col, words):
+    error = parse_err(text, V21)
+    assert words in error.message and error.col == col, (error.message, error.col)
+
+
+@pytest.mark.parametrize("text", [
+    "give @s diamond 64",
+    "gamemode creative @a",
+    "setblock ~ ~ ~ oak_stairs[facing=north, half=top]{}",
+    "fill ~ ~ ~ ~1 ~1 ~1 air replace #minecraft:logs",
+    "effect give @s minecraft:speed infinite 1 true",
+    "particle dust{color:[1.0,0.0,0.0],scale:1} ~ ~ ~ 0 0 0 0 1 force @a",
+    "tell @a hi @s",  # a redirect: tell -> msg
+    "xp add @s 5 levels",
+    "item replace entity @s weapon.mainhand with diamond_sword[enchantments={sharpness:1},!food]",
+    "clear @s #minecraft:logs[damage=1|count~{min:1}] 3",
+    "playsound minecraft:block.note_block.pling master @a ~ ~ ~ 1 2",
+    "team modify red color red",
+    "attribute @s max_health base set 20",  # renamed from generic.max_health in 1.21.2
+    "loot give @s loot minecraft:chests/simple_dungeon",
+    "spreadplayers 0 0 1 10 false @a",
+    "title @a times 10 20 10",
+    "enchant @s mypack:custom",  # enchantments are data-driven from 1.21
+])
+def test_valid_commands_pass(text):
+    assert isinstance(parse_ok(text, V21), ast.GenericCommand)
+
+
+def test_commands_after_run_are_checked_too():
+    parse_ok("execute if entity @s run give @s stone", V21)
+    assert parse_err("execute if entity @s run gamemode flying", V21).col == 35
+
+
+def test_arguments_follow_the_release():
+    # item stacks took {nbt} before 1.20.5 and [components] after
+    parse_ok("give @s diamond_sword{Damage:5}", (1, 20, 4))
+    parse_err("give @s diamond_sword{Damage:5}", V21)
+    # particles took their options as words before 1.20.5
+    parse_ok("particle dust 1 0 0 1 ~ ~ ~ 0 0 0 0 1", (1, 20, 4))
+    parse_err("particle dust 1 0 0 1 ~ ~ ~ 0 0 0 0 1", V21)
+    # attribute ids: generic.* until 1.21.1
+    parse_ok("attribute @s generic.max_health base set 20", (1, 21, 1))
+    assert "unknown attribute" in parse_err("attribute @s generic.max_health base set 20", V21).message
+
+
+def test_ids_unknown_to_older_registry_data_are_warnings():
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+    # 1.21.11 is newer than the newest registries shipped (1.21.4): a new id may exist there
+    cmd, diags = parse_command("give @s no_such_item", Loc("t", 1, 1), (1, 21, 11))
+    assert cmd is not None and [d.severity for d in diags] == ["warning"]
+    assert "not in the 1.21.4 registry" in diags[0].message
+
+
+def test_a_missing_command_tree_is_one_clear_error(tmp_path, monkeypatch):
+    shipped = gamedata._index()
+    trimmed = {**shipped, "commands": {v: f for v, f in shipped["commands"].items() if v < (1, 21, 0)}}
+    monkeypatch.setattr(gamedata, "_index", lambda: trimmed)
+    monkeypatch.setattr(tree, "_TREES", {})
+    monkeypatch.setattr(tree, "_VALID", {})
+    monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path / "none"))
+    root = write(tmp_path / "p", {fn("f"): "give @s diamond 1 2 3\ngive @s diamond\n"})
+    result = check_packs([root], "1.21.4")
+    errors = [d for d in result.diagnostics if d.severity == "error"]
+    assert len(errors) == 1 and "no command tree for Minecraft 1.21.4" in errors[0].message
+    assert "--reports" in errors[0].message
