@@ -60,11 +60,13 @@ def _try_position(r: Reader):
 
 def teleport(r: Reader, loc) -> ast.Command:
     r.space("entity or position")
+    first_start = r.pos
     pos = _try_position(r)
     if pos is not None:
-        r.finish()
-        return ast.Teleport(loc, None, pos)
-    first_start = r.pos
+        if r.pos >= r.end or first_start < r.end and r.text[first_start] in "~^":
+            r.finish()
+            return ast.Teleport(loc, None, pos)
+        r.pos = first_start  # more follows: `tp -1 ~ ~ ~` moves the player named -1 (the targets branch)
     who = target(r)
     if not r.optional_space():
         r.pos = first_start

@@ -8,6 +8,7 @@ from ..arguments import duration, objective
 from ..features import gamerule_type, version_text
 from ..primitives import int_range, resource_location
 from ..reader import Reader, show
+from .tree import root_for
 
 _RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")
 TIME_NAMES = {"day": 1000, "noon": 6000, "night": 13000, "midnight": 18000}
@@ -27,7 +28,7 @@ def gamerule(r: Reader, loc) -> ast.Command:
     value = None
     if r.optional_space():
         if kind == "int":
-            value = str(r.integer(what="game rule value"))
+            value = str(r.integer(**_int_bounds(rule, r.version), what="game rule value"))
         elif kind == "bool":
             value = "true" if r.boolean() else "false"
         elif r.rest_word() in ("true", "false"):
@@ -36,6 +37,15 @@ def gamerule(r: Reader, loc) -> ast.Command:
             value = str(r.integer(what="game rule value (true, false or an integer)"))
     r.finish()
     return ast.Gamerule(loc, rule, value)
+
+
+def _int_bounds(rule: str, version) -> dict:
+    """The bounds the release's command tree gives an integer rule's value (1.21.11: min and max)."""
+    root = root_for(version)
+    node = root["children"]["gamerule"].get("children", {}).get(rule) if root is not None else None
+    value = (node or {}).get("children", {}).get("value", {})
+    props = value.get("properties") or {} if value.get("parser") == "brigadier:integer" else {}
+    return {name: props[key] for name, key in (("lo", "min"), ("hi", "max")) if key in props}
 
 
 def _sequence(r: Reader) -> str | None:

@@ -115,13 +115,19 @@ def _rest(r: Reader, node: dict, root: dict) -> None:
 
 
 def _argument(r: Reader, node: dict) -> None:
-    if r.pos >= r.end or r.text[r.pos] == " ":
+    parser = node["parser"]
+    if (r.pos >= r.end or r.text[r.pos] == " ") and not _takes_all(node):
         r.fail(f"expected an argument, got {r.found()}")
-    reader = ARGUMENTS.get(node["parser"])
+    reader = ARGUMENTS.get(parser)
     if reader is None:  # a parser this table doesn't know yet: one word
         r.word()
         return
     reader(r, node.get("properties") or {})
+
+
+def _takes_all(node: dict) -> bool:
+    """Arguments that read the rest of the command as it is, a leading space included."""
+    return node["parser"] == "minecraft:message" or (node.get("properties") or {}).get("type") == "greedy"
 
 
 # ----------------------------------------------------------------------------- argument types
@@ -145,7 +151,7 @@ def _long(r: Reader, props: dict) -> None:
 
 def _string(r: Reader, props: dict) -> None:
     kind = props.get("type", "word")
-    if kind == "greedy":
+    if kind == "greedy":  # StringArgumentType.greedyString: the rest, spaces and all
         r.pos = r.end
     elif kind == "phrase":
         r.string()
@@ -166,7 +172,8 @@ def _entity(r: Reader, props: dict) -> None:
 
 
 def _game_profile(r: Reader, props: dict) -> None:
-    target(r) if r.peek() == "@" else r.word()
+    """GameProfileArgument: a selector of players only (ERROR_ONLY_PLAYERS_ALLOWED), or a name."""
+    target(r, players=True) if r.peek() == "@" else r.word()
 
 
 def _score_holder(r: Reader, props: dict) -> None:

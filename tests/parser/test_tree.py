@@ -95,3 +95,22 @@ def test_a_missing_command_tree_is_one_clear_error(tmp_path, monkeypatch):
     errors = [d for d in result.diagnostics if d.severity == "error"]
     assert len(errors) == 1 and "no command tree for Minecraft 1.21.4" in errors[0].message
     assert "--reports" in errors[0].message
+
+
+def test_teleport_tries_the_targets_branch_too():
+    # Brigadier tries `teleport <location>` and `teleport <targets> <location>`: "-1" is a player name
+    cmd = parse_ok("tp -1 ~ ~1 ~", V21)
+    assert cmd.targets is not None and cmd.targets.name == "-1"
+    assert parse_err("tp ~ ~ ~ extra", V21).col == 10
+
+
+def test_game_profiles_take_players_only():
+    # GameProfileArgument.parse: ERROR_ONLY_PLAYERS_ALLOWED
+    assert "only players" in parse_err("op @e", V21).message
+    parse_ok("op @a", V21)
+
+
+def test_integer_game_rules_take_the_trees_bounds():
+    # 1.21.11's tree gives max_entity_cramming a minimum of 0
+    assert "at least 0" in parse_err("gamerule max_entity_cramming -1", (1, 21, 11)).message
+    parse_ok("gamerule maxEntityCramming -1", (1, 20, 4))
