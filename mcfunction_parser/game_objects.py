@@ -63,12 +63,21 @@ def registry_id(r: Reader, registry: str) -> str:
     return rid
 
 
+def _another(r: Reader, where: str) -> bool:
+    """After an entry of a ``[...]`` list: True past a ',' (another entry follows), False past the ']'."""
+    c = r.peek()
+    if c == "," or c == "]":
+        r.pos += 1
+        return c == ","
+    r.fail(f"expected ',' or ']' {where}, got {r.found()}")
+
+
 # ----------------------------------------------------------------------------- blocks
 
 _STATE_NAME = re.compile(r"[ ]*([0-9A-Za-z_\-.+]*)[ ]*")
 
 
-def _block_states(r: Reader, block: str | None, block_start: int) -> None:
+def _block_states(r: Reader, block: str | None) -> None:
     """``[name=value,...]`` (BlockStateParser.readProperties), checked against ``block``'s states."""
     states = None
     if block is not None and block.startswith("minecraft:") and _known("block", r.version):
@@ -103,13 +112,8 @@ def _block_states(r: Reader, block: str | None, block_start: int) -> None:
             r.fail(f"block {block} does not accept '{value}' for its '{name}' state "
                    f"({', '.join(states[name])})", value_pos)
         r.pos = m.end()
-        if r.peek() == ",":
-            r.pos += 1
-            continue
-        if r.peek() == "]":
-            r.pos += 1
+        if not _another(r, "to close the block states"):
             return
-        r.fail(f"expected ',' or ']' to close the block states, got {r.found()}")
 
 
 def block(r: Reader, tags: bool) -> str:
@@ -120,7 +124,7 @@ def block(r: Reader, tags: bool) -> str:
     if not is_tag:
         check_id(r, "block", rid, start)
     if r.peek() == "[":
-        _block_states(r, None if is_tag else rid, start)
+        _block_states(r, None if is_tag else rid)
     if r.peek() == "{":
         snbt.compound(r)
     return r.text[start:r.pos]
@@ -166,13 +170,8 @@ def _components(r: Reader, predicate: bool) -> None:
             r.pos += 1
             r.skip_ws()
             _component_test(r, predicate)
-        if r.peek() == ",":
-            r.pos += 1
-            continue
-        if r.peek() == "]":
-            r.pos += 1
+        if not _another(r, "in the item components"):
             return
-        r.fail(f"expected ',' or ']' in the item components, got {r.found()}")
 
 
 def item(r: Reader, predicate: bool) -> str:
@@ -180,9 +179,8 @@ def item(r: Reader, predicate: bool) -> str:
     ``[components]`` (1.20.5+) or ``{nbt}`` (before), returned as written."""
     start = r.pos
     components = r.version >= ITEM_COMPONENTS
-    if predicate and components and r.peek() == "*":
+    if predicate and components and r.peek() == "*":  # any item
         r.pos += 1
-        is_tag = True
     else:
         rid, is_tag = resource_or_tag(r, "item") if predicate else (resource_location(r, "item"), False)
         if not is_tag:
