@@ -450,9 +450,11 @@ class IfDimension(Condition):
 
 @dataclass(frozen=True, slots=True)
 class IfItems(Condition):
-    """``if items entity|block ...``; kept as text after ``items``."""
+    """``if items entity|block SOURCE SLOTS PREDICATE``: ``source`` an :class:`ItemTarget`."""
 
-    text: str
+    source: "ItemTarget"
+    slots: "SlotArgument"
+    predicate: "ItemPredicate"
 
 
 @dataclass(frozen=True, slots=True)
@@ -728,6 +730,127 @@ class FunctionTag:
 
     id: str
     entries: list[TagEntry] = field(default_factory=list)
+
+
+# ----------------------------------------------------------------------------- items
+
+
+@dataclass(frozen=True, slots=True)
+class ItemArgument:
+    """An item to create (ItemArgument): ``id[component=value,!component]`` from 1.20.5, ``id{tag}``
+    before. ``components`` are (namespaced component id, SNBT value) in the order written;
+    ``removed`` the ``!component`` ids; ``tag`` the older NBT form (None when absent)."""
+
+    loc: Loc
+    id: str
+    components: tuple[tuple[str, Any], ...] = ()
+    removed: tuple[str, ...] = ()
+    tag: Compound | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ComponentTest:
+    """One test inside an item predicate's brackets: ``component`` (exists), ``component=value``
+    (the component equals the value), ``predicate~value`` (a sub-predicate) or ``count=RANGE``;
+    ``negated`` for a leading ``!``."""
+
+    name: str
+    kind: str  # "exists", "=", "~"
+    value: Any = None
+    negated: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class ItemPredicate:
+    """ItemPredicateArgument: ``id``, ``#tag`` or ``*`` (``id`` None), then ``[...]`` tests (from
+    1.20.5: a tuple of any-of groups, all of which must pass) or ``{nbt}`` (older: a partial match
+    of the stack's ``tag``)."""
+
+    loc: Loc
+    id: str | None
+    is_tag: bool = False
+    tests: tuple[tuple[ComponentTest, ...], ...] = ()
+    tag: Compound | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class SlotArgument:
+    """A slot name (SlotArgument / SlotsArgument) and the slot ids it names (several for a range
+    such as ``container.*``)."""
+
+    name: str
+    ids: tuple[int, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class ItemTarget:
+    """Where items go or come from: ``entity TARGETS`` or ``block POS``."""
+
+    kind: str  # "entity" or "block"
+    target: Target | Vec3  # a selector/name for entities, a position for blocks
+
+
+@dataclass(frozen=True, slots=True)
+class ResourceOrInline:
+    """ResourceOrIdArgument: a loot table / item modifier / predicate id, or (from 1.20.5) an
+    inline definition written as SNBT; ``inline`` holds it converted to JSON values."""
+
+    id: str | None
+    inline: Any = None
+    text: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class Give(Command):
+    targets: Target
+    item: ItemArgument
+    count: int = 1
+
+
+@dataclass(frozen=True, slots=True)
+class Clear(Command):
+    targets: Target | None = None  # None: the executor
+    item: ItemPredicate | None = None
+    max_count: int | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ItemReplace(Command):
+    """``item replace TARGET SLOT with ITEM [COUNT]`` (``item`` set) or ``... from SOURCE SLOT
+    [MODIFIER]`` (``source`` set)."""
+
+    target: ItemTarget
+    slot: SlotArgument
+    item: ItemArgument | None = None
+    count: int | None = None
+    source: ItemTarget | None = None
+    source_slot: SlotArgument | None = None
+    modifier: ResourceOrInline | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class ItemModify(Command):
+    target: ItemTarget
+    slot: SlotArgument
+    modifier: ResourceOrInline
+
+
+@dataclass(frozen=True, slots=True)
+class Loot(Command):
+    """``loot TARGET SOURCE``. ``action`` is give|insert|spawn|replace; ``destination`` the
+    players (give), a position (insert, spawn) or an :class:`ItemTarget` (replace) with ``slot``
+    and ``count``. ``source`` is fish|loot|kill|mine with ``table``, ``pos`` (fish, mine), ``tool``
+    (an :class:`ItemArgument`, ``"mainhand"``/``"offhand"`` or None) and ``entity`` (kill)."""
+
+    action: str
+    destination: Target | Vec3 | ItemTarget
+    source: str
+    slot: SlotArgument | None = None
+    count: int | None = None
+    table: ResourceOrInline | None = None
+    pos: Vec3 | None = None
+    tool: ItemArgument | str | None = None
+    entity: Target | None = None
 
 
 from .frozen_init import speed_up_inits  # noqa: E402

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import blocks, data, entities
+from . import blocks, data, entities, items
 from emulator.world.errors import CommandFailure
 from .holders import objective, single_holder
 
@@ -22,7 +22,7 @@ _COMPARE = {
     ">=": lambda a, b: a >= b,
     ">": lambda a, b: a > b,
 }
-_COUNTING = (ast.IfEntity, ast.IfData, ast.IfBlocks)
+_COUNTING = (ast.IfEntity, ast.IfData, ast.IfBlocks, ast.IfItems)
 
 
 def count(env, cond: ast.Condition, ctx) -> int:
@@ -39,6 +39,8 @@ def count(env, cond: ast.Condition, ctx) -> int:
         return blocks.if_block(env, cond, ctx)
     if isinstance(cond, ast.IfBlocks):
         return blocks.if_blocks(env, cond, ctx)
+    if isinstance(cond, ast.IfItems):
+        return items.count_items(env, cond, ctx)
     if isinstance(cond, ast.IfDimension):
         return int(ctx.dimension == cond.dimension)
     raise CommandFailure("dpemu.unsupported", f"'{type(cond).__name__}'", report=True)

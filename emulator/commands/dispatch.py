@@ -9,9 +9,10 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import blocks, bossbar, conditions, data, entities, scoreboard, server
+from . import blocks, bossbar, conditions, data, entities, items, scoreboard, server
 
-HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS}
+HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
+            **items.HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

@@ -20,6 +20,7 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult
 from emulator.world import statistics
 from emulator.world.context import Context
+from emulator.world.resources import Resources
 from emulator.world.state import WorldState
 
 LOAD_TAG = "minecraft:load"
@@ -33,6 +34,7 @@ class Runtime:
     """``packs`` running on ``backend`` against ``state`` (the backend is loaded here)."""
 
     def __init__(self, backend: Backend, packs, state: WorldState, sanitize: bool = False) -> None:
+        state.resources = Resources.from_packs(packs)
         backend.load(packs, state, sanitize)
         self.backend = backend
         self.packs = packs

@@ -32,6 +32,7 @@ from mcfunction_parser.nbt import Compound, Int, String
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure
+from emulator.world.inventories import default_block_entity
 from emulator.world.nbt_ops import compare_nbt, copy_tag, tags_equal
 from emulator.world.source import Source
 
@@ -151,8 +152,12 @@ class BlockMap:
         else:
             self.states[pos] = state
         self.entities.pop(pos, None)
+        nbt = default_block_entity(state.id)
         if spec.nbt is not None:
-            self.entities[pos] = copy_tag(spec.nbt)
+            nbt = nbt or Compound()
+            nbt.update(copy_tag(spec.nbt))
+        if nbt is not None:
+            self.entities[pos] = nbt
         return True
 
     def setblock(self, pos, spec: BlockSpec, mode: str = "replace") -> int:

@@ -43,6 +43,7 @@ import numpy as np
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, rotation
 from emulator.world.errors import CommandFailure
+from emulator.world.inventories import player_defaults, selected_item
 from emulator.world.text import plain_text
 from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 
@@ -271,6 +272,8 @@ def entity_nbt(entity: Entity) -> Compound:
     riders = List(_passenger_nbt(p) for p in entity.passengers if p.alive and not p.is_player)
     if riders:
         nbt["Passengers"] = riders
+    if entity.is_player and (held := selected_item(entity.data)) is not None:
+        nbt["SelectedItem"] = held  # NbtPredicate.getEntityTagForPredicate, what data and nbt= read
     return nbt
 
 
@@ -384,6 +387,8 @@ def _base_data(type_id: str) -> Compound:
     data.update((key, Compound()) for key in TYPE_COMPOUNDS.get(type_id, ()))
     if type_id in display.DISPLAY_TYPES:
         data.update(display.default_fields(type_id))
+    if type_id == "minecraft:player":
+        data.update(player_defaults())
     return data
 
 

@@ -79,6 +79,18 @@ MESSAGES = {
     "commands.function.error.missing_argument": "Missing argument {1} to function {0}",
     "commands.function.error.parse": "While instantiating macro {0}: Command '{1}' caused error: {2}",
     "commands.function.scheduled.no_functions": "Can't find any functions for name {0}",
+    "commands.item.target.not_a_container": "Target position {0}, {1}, {2} is not a container",
+    "commands.item.source.not_a_container": "Source position {0}, {1}, {2} is not a container",
+    "commands.item.target.no_such_slot": "The target does not have slot {0}",
+    "commands.item.source.no_such_slot": "The source does not have slot {0}",
+    "commands.item.target.no_changes": "No targets accepted item into slot {0}",
+    "commands.item.target.no_changed.known_item": "No targets accepted item {0} into slot {1}",
+    "commands.give.failed.toomanyitems": "Can't give more than {0} of {1}",
+    "clear.failed.single": "No items were found on player {0}",
+    "clear.failed.multiple": "No items were found on {0} players",
+    "commands.drop.no_held_items": "Entity can't hold any items",
+    "commands.drop.no_loot_table": "Entity {0} has no loot table",
+    "arguments.item.overstacked": "{0} can only stack up to {1}",
 }
 
 EMULATOR_MESSAGES = {
@@ -88,6 +100,9 @@ EMULATOR_MESSAGES = {
     "dpemu.command.unreadable": "'{0}': {1}",
     "dpemu.gamerule.unknown": "Unknown game rule '{0}'",
     "dpemu.macro.not_compound": "Expected argument to be a compound, got {0}",
+    "dpemu.loot.unknown_table": "Unknown loot table {0}",
+    "dpemu.loot.unknown_modifier": "Unknown item modifier {0}",
+    "dpemu.loot.not_modelled": "{0}: '{1}' is not modelled by the emulator",
 }
 
 

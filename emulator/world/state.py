@@ -40,6 +40,7 @@ from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
 from emulator.world.random_sequences import RandomSequences
 from emulator.world.records import Frame, LogEntry, Overflow, RuntimeDiagnostic
+from emulator.world.resources import Resources
 from mcfunction_parser.diagnostics import Loc
 
 # Criteria whose scores only the game sets (ObjectiveCriteria with readOnly=true).
@@ -386,6 +387,7 @@ class WorldState:
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     bossbars: BossBars = field(default_factory=BossBars)
     tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.vm.entity_arrays)
+    resources: Resources = field(default_factory=Resources)  # loot tables, item modifiers, item tags, version
 
     def emit(self, kind: str, text: str, loc: Loc | None = None, receivers: tuple[str, ...] = ()) -> None:
         self.log.append(LogEntry(self.tick, kind, text, loc, receivers))

@@ -1,10 +1,10 @@
 """Command parsers, one module per command family; :func:`command` dispatches on the first word."""
 from __future__ import annotations
 
-from . import bossbar, chat, data, entities, execute, functions, scoreboard, server
+from . import bossbar, chat, data, entities, execute, functions, items, scoreboard, server
 from .dispatch import REGISTRY, command
 
-for _family in (bossbar, chat, data, entities, execute, functions, scoreboard, server):
+for _family in (bossbar, chat, data, entities, execute, functions, items, scoreboard, server):
     REGISTRY.update(_family.PARSERS)
 
 __all__ = ["command", "REGISTRY"]

@@ -15,7 +15,9 @@ from ..primitives import float_range, int_range, json_span, resource_location, r
 from ..reader import Reader, show
 from ..snbt import compound
 from ..selectors import target
+from ..items import item_predicate, slot
 from .data_targets import data_target
+from .items import item_target
 from .dispatch import command
 
 _ANCHORS = ("eyes", "feet")
@@ -181,50 +183,12 @@ def _if_dimension(r, loc, negated):
 
 
 def _if_items(r, loc, negated):
-    # ``items entity|block SOURCE SLOTS ITEM_PREDICATE`` up to the next subcommand boundary is
-    # hard to find without an item-predicate grammar, so the source and slots are parsed and
-    # the predicate is kept up to the next space outside brackets.
-    start = r.pos
-    kind = r.literal(("entity", "block"), "items source")
-    r.space("source")
-    if kind == "entity":
-        target(r)
-    else:
-        vec3(r, block=True)
-    r.space("slot")
-    r.word()
+    """``items entity|block SOURCE SLOTS ITEM_PREDICATE`` (SlotsArgument: ranges allowed)."""
+    source = item_target(r, "items source")
+    r.space("slots")
+    slots = slot(r, ranges=True)
     r.space("item predicate")
-    _item_predicate(r)
-    return ast.IfItems(loc, negated, r.text[start:r.pos])
-
-
-def _item_predicate(r: Reader) -> None:
-    if r.peek() == "#":
-        r.pos += 1
-    if r.peek() == "*":
-        r.pos += 1
-    else:
-        resource_location(r, "item")
-    if r.peek() == "[":
-        depth = 0
-        text = r.text
-        pos = r.pos
-        while pos < r.end:
-            c = text[pos]
-            if c in "[{":
-                depth += 1
-            elif c in "]}":
-                depth -= 1
-                if depth == 0:
-                    r.pos = pos + 1
-                    return
-            elif c in "\"'":
-                r.pos = pos
-                r.quoted()
-                pos = r.pos
-                continue
-            pos += 1
-        r.fail("unclosed '[' in item predicate")
+    return ast.IfItems(loc, negated, source, slots, item_predicate(r))
 
 
 def _if_stopwatch(r, loc, negated):

@@ -24,7 +24,8 @@ from mcfunction_parser.ast import Function, FunctionTag
 from mcfunction_parser.diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
 from mcfunction_parser.pack.parallel import FunctionFile, parse_files
-from mcfunction_parser.pack.text import PackPath, load_json, read_text, split_lines
+from mcfunction_parser.pack import loot
+from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from mcfunction_parser.pack.versions import (
     FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, SINGULAR_FOLDERS_FORMAT, Format, Version, format_label,
@@ -59,6 +60,9 @@ class LoadedPacks:
     failed_tags: dict[str, FailedTag] = field(default_factory=dict)  # tags the game refuses to load
     advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
     predicates: set[str] = field(default_factory=set)  # ids of the predicate files
+    loot_tables: dict[str, JsonDocument] = field(default_factory=dict)  # id -> its file (checked: pack.loot)
+    item_modifiers: dict[str, JsonDocument] = field(default_factory=dict)
+    item_tags: dict[str, FunctionTag] = field(default_factory=dict)  # merged like function tags
     files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
     # functions the game refuses whole because a line does not parse (ServerFunctionLibrary logs
     # "Failed to load function" and leaves it out): parsed for ``dpemu check``, absent from
@@ -147,6 +151,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     _load_advancements(packs, result)
     for pack in packs:
         result.predicates.update(_resources(pack, ("predicate", "predicates"), ".json", diagnostics))
+    _load_loot(packs, result)
     return result
 
 
@@ -359,6 +364,28 @@ def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
             merge_tag(result.tags, tag_id, replace, entries)
     result.failed_tags = validate_tags(result.tags, result.functions, result.sources,
                                        result.diagnostics, result.refused)
+
+
+def _load_loot(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """Loot tables and item modifiers (a later pack's file replaces an earlier one), each checked
+    (:mod:`mcfunction_parser.pack.loot`); item tags merged as function tags are."""
+    for folders, found, check in ((("loot_table", "loot_tables"), result.loot_tables, loot.check_loot_table),
+                                  (("item_modifier", "item_modifiers"), result.item_modifiers, loot.check_modifier)):
+        chosen = {rid: (pack, rel) for pack in packs
+                  for rid, rel in _resources(pack, folders, ".json", result.diagnostics).items()}
+        for rid, (pack, rel) in chosen.items():
+            result.files += 1
+            doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
+            if doc is not None:
+                result.sources[doc.path] = split_lines(doc.text)
+                if check(doc, result.version, result.diagnostics):  # else the game does not load it
+                    found[rid] = doc
+    for pack in packs:
+        for tag_id, rel in _resources(pack, ("tags/item", "tags/items"), ".json", result.diagnostics).items():
+            result.files += 1
+            parsed = read_tag_file(pack.read(rel), pack.shown_file(rel), result.diagnostics)
+            if parsed is not None:
+                merge_tag(result.item_tags, tag_id, parsed[1], parsed[2])
 
 
 def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:

@@ -66,7 +66,8 @@ def test_conditions():
     assert subs[8].biome == "#minecraft:is_forest"
     assert isinstance(subs[9], ast.IfLoaded)
     assert subs[10].dimension == "minecraft:overworld"
-    assert subs[11].text == "entity @s weapon.* minecraft:stick[count=1]"
+    assert (subs[11].source.kind, subs[11].slots) == ("entity", ast.SlotArgument("weapon.*", (98, 99)))
+    assert subs[11].predicate.id == "minecraft:stick" and subs[11].predicate.tests[0][0].name == "minecraft:count"
 
 
 def test_store():

@@ -1,0 +1,320 @@
+"""``give``, ``clear``, ``item replace|modify``, ``loot`` and ``execute if items``, on the
+inventories of :mod:`emulator.world.inventories` with the loot of :mod:`emulator.world.loot`.
+
+Sources (decompiled 1.21): server/commands/GiveCommand.java, ClearInventoryCommands.java,
+ItemCommands.java, LootCommand.java, ExecuteCommand.java (countItems), world/entity/item/ItemEntity.java.
+"""
+from __future__ import annotations
+
+from emulator.world import inventories, loot
+from emulator.world.blocks import block_pos
+from emulator.world.entities import Entity
+from emulator.world.errors import CommandFailure
+from emulator.world.items import ItemStack, create, matches, to_nbt
+from emulator.world.loot_context import LootContext
+from mcfunction_parser import ast
+from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short
+
+from . import entities
+from .entities import executor, world_source
+
+
+def _version(env):
+    return env.state.resources.version
+
+
+def _test(env, predicate: ast.ItemPredicate | None):
+    if predicate is None:
+        return lambda stack: True
+    tags = env.state.resources.item_tag
+    return lambda stack: matches(predicate, stack, tags)
+
+
+def _name(stack: ItemStack) -> str:
+    return f"[{stack.id.split(':', 1)[-1].replace('_', ' ').title()}]"
+
+
+def _players(env, target, ctx) -> list[Entity]:
+    found = entities.found(env.state, target, ctx)
+    if any(not e.is_player for e in found):
+        raise CommandFailure("argument.entity.notfound.player")
+    return found
+
+
+def _drop(env, pos, stack: ItemStack, nbt: Compound | None = None) -> Entity:
+    """An item entity with ItemEntity's random motion (the emulator's seeded random source)."""
+    rng = env.state.resources.random
+    data = Compound(Item=to_nbt(stack, _version(env)), PickupDelay=Short(10), Age=Short(0), Health=Short(5))
+    data["Motion"] = List([Double(rng.random() * 0.2 - 0.1), Double(0.2), Double(rng.random() * 0.2 - 0.1)])
+    data.update(nbt or {})
+    return env.state.entities.summon("minecraft:item", pos, data)
+
+
+# ---------------------------------------------------------------------- give / clear
+def give(env, cmd: ast.Give, ctx) -> int:
+    """GiveCommand: stacks of at most the maximum size into each player's inventory; what does not
+    fit is dropped at the player (no pickup delay, owned by the player). The result is the number
+    of players."""
+    players = _players(env, cmd.targets, ctx)
+    sample = create(cmd.item, 1)
+    limit = sample.max_stack_size * 100
+    if cmd.count > limit:
+        raise CommandFailure("commands.give.failed.toomanyitems", limit, _name(sample))
+    for player in players:
+        inventory = inventories.player_inventory(player, _version(env))
+        remaining = cmd.count
+        while remaining > 0:
+            size = min(sample.max_stack_size, remaining)
+            remaining -= size
+            left = inventory.add(create(cmd.item, size))
+            if not left.is_empty:
+                x, y, z = player.pos
+                _drop(env, (x, y + float(player.eye_height) - 0.3, z), left,
+                      Compound(PickupDelay=Short(0), Owner=IntArray(Int(v) for v in player.uuid)))
+    return len(players)
+
+
+def clear(env, cmd: ast.Clear, ctx) -> int:
+    """ClearInventoryCommands: the count removed (or with a maximum of 0, counted); nothing found fails."""
+    if cmd.targets is None:
+        player = executor(env.state, ctx)
+        if player is None or not player.is_player:
+            raise CommandFailure("permissions.requires.player")
+        players = [player]
+    else:
+        players = _players(env, cmd.targets, ctx)
+    test = _test(env, cmd.item)
+    max_count = -1 if cmd.max_count is None else cmd.max_count
+    total = sum(inventories.player_inventory(p, _version(env)).clear_or_count(test, max_count) for p in players)
+    if total == 0:
+        if len(players) == 1:
+            raise CommandFailure("clear.failed.single", players[0].display_name)
+        raise CommandFailure("clear.failed.multiple", len(players))
+    return total
+
+
+# ---------------------------------------------------------------------- item
+def _container(env, pos_arg, ctx, source: bool) -> inventories.Container:
+    pos = block_pos(world_source(env.state, ctx), pos_arg)
+    found = inventories.container(env.state.blocks, pos, _version(env))
+    if found is None:
+        raise CommandFailure("commands.item.source.not_a_container" if source else
+                             "commands.item.target.not_a_container", *pos)
+    return found
+
+
+def _read_slot(env, where: ast.ItemTarget, slot: int, ctx) -> ItemStack:
+    """ItemCommands.getEntityItem / getBlockItem: a copy of the source slot."""
+    if where.kind == "block":
+        access = _container(env, where.target, ctx, source=True).slot(slot)
+    else:
+        access = inventories.entity_slot(entities.single(env.state, where.target, ctx), slot, _version(env))
+    if access is None:
+        raise CommandFailure("commands.item.source.no_such_slot", slot)
+    return access.get()
+
+
+def _modify_with(env, modifier: ast.ResourceOrInline, ctx):
+    """ItemCommands.applyModifier: the modifier run in a command context, then limitSize."""
+    value = modifier.inline
+    if value is None:
+        value = env.state.resources.item_modifiers.get(modifier.id)
+        if value is None:
+            raise CommandFailure("dpemu.loot.unknown_modifier", modifier.id, report=True)
+
+    def apply(stack: ItemStack) -> ItemStack:
+        result = loot.apply_modifier(value, stack.copy(), loot_context(env, ctx))
+        result.count = min(result.count, result.max_stack_size)
+        return result
+    return apply
+
+
+def item_replace(env, cmd: ast.ItemReplace, ctx) -> int:
+    slot = cmd.slot.ids[0]
+    if cmd.item is not None:
+        stack = create(cmd.item, 1 if cmd.count is None else cmd.count)
+        if cmd.count is not None and cmd.count > stack.max_stack_size:
+            raise CommandFailure("arguments.item.overstacked", stack.id, stack.max_stack_size)
+    else:
+        stack = _read_slot(env, cmd.source, cmd.source_slot.ids[0], ctx)
+        if cmd.modifier is not None:
+            stack = _modify_with(env, cmd.modifier, ctx)(stack)
+    if cmd.target.kind == "block":
+        access = _container(env, cmd.target.target, ctx, source=False).slot(slot)
+        if access is None:
+            raise CommandFailure("commands.item.target.no_such_slot", slot)
+        access.set(stack)
+        return 1
+    accepted = 0
+    for entity in entities.found(env.state, cmd.target.target, ctx):
+        access = inventories.entity_slot(entity, slot, _version(env))
+        accepted += access is not None and access.set(stack.copy())
+    if accepted == 0:
+        raise CommandFailure("commands.item.target.no_changed.known_item", _name(stack), slot)
+    return accepted
+
+
+def item_modify(env, cmd: ast.ItemModify, ctx) -> int:
+    slot = cmd.slot.ids[0]
+    apply = _modify_with(env, cmd.modifier, ctx)
+    if cmd.target.kind == "block":
+        access = _container(env, cmd.target.target, ctx, source=False).slot(slot)
+        if access is None:
+            raise CommandFailure("commands.item.target.no_such_slot", slot)
+        access.set(apply(access.get()))
+        return 1
+    accepted = 0
+    for entity in entities.found(env.state, cmd.target.target, ctx):
+        access = inventories.entity_slot(entity, slot, _version(env))
+        if access is not None:
+            accepted += access.set(apply(access.get()))
+    if accepted == 0:
+        raise CommandFailure("commands.item.target.no_changes", slot)
+    return accepted
+
+
+# ---------------------------------------------------------------------- execute if items
+def count_items(env, cond: ast.IfItems, ctx) -> int:
+    """ExecuteCommand.countItems: the summed counts of the matching stacks in the slots."""
+    test = _test(env, cond.predicate)
+    if cond.source.kind == "block":
+        holder = _container(env, cond.source.target, ctx, source=True)
+        accesses = [holder.slot(s) for s in cond.slots.ids]
+    else:
+        accesses = [inventories.entity_slot(e, s, _version(env))
+                    for e in entities.found(env.state, cond.source.target, ctx) for s in cond.slots.ids]
+    stacks = [a.get() for a in accesses if a is not None]
+    return sum(s.count for s in stacks if not s.is_empty and test(s))
+
+
+# ---------------------------------------------------------------------- loot
+def loot_context(env, ctx, **parts) -> LootContext:
+    state = env.state
+    return LootContext(state.resources.random, state.resources, this=executor(state, ctx), origin=ctx.pos,
+                       daytime=state.daytime, scores=state.scoreboard.get,
+                       storage=lambda sid: state.storage.get(sid, Compound()), **parts)
+
+
+def _table(env, ref: ast.ResourceOrInline) -> dict:
+    if ref.inline is not None:
+        return ref.inline
+    table = env.state.resources.loot_tables.get(ref.id)
+    if table is None:
+        raise CommandFailure("dpemu.loot.unknown_table", ref.id, report=True)
+    return table
+
+
+def _vanilla_table(env, table_id: str) -> dict:
+    """A vanilla entity or block loot table: only when a loaded pack defines it (the game's own
+    tables are not shipped), else the command fails saying so."""
+    table = env.state.resources.loot_tables.get(table_id)
+    if table is None:
+        raise CommandFailure("dpemu.loot.not_modelled", "the game's own loot table", table_id, report=True)
+    return table
+
+
+def _tool(env, tool, ctx) -> ItemStack | None:
+    if tool is None:
+        return ItemStack("minecraft:air", 0)
+    if isinstance(tool, ast.ItemArgument):
+        return create(tool, 1)
+    holder = executor(env.state, ctx)
+    if holder is None:
+        raise CommandFailure("permissions.requires.entity")
+    access = inventories.entity_slot(holder, inventories.MAINHAND if tool == "mainhand" else inventories.OFFHAND,
+                                     _version(env))
+    if access is None:
+        raise CommandFailure("commands.drop.no_held_items")
+    return access.get()
+
+
+def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
+    source = world_source(env.state, ctx)
+    if cmd.source == "loot":
+        return loot.roll_table(_table(env, cmd.table), loot_context(env, ctx))
+    if cmd.source == "fish":
+        lctx = loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx))
+        lctx.origin = source.position_of(cmd.pos, centre=False)
+        return loot.roll_table(_table(env, cmd.table), lctx)
+    if cmd.source == "kill":
+        victim = entities.single(env.state, cmd.entity, ctx)
+        table_id = victim.data.get("DeathLootTable") or "minecraft:entities/" + victim.type.split(":", 1)[-1]
+        lctx = loot_context(env, ctx, killer=executor(env.state, ctx))
+        lctx.this, lctx.origin = victim, victim.pos
+        return loot.roll_table(_vanilla_table(env, str(table_id)), lctx)
+    pos = block_pos(source, cmd.pos)
+    block = env.state.blocks.get(pos)
+    table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
+    if block.is_air:
+        return []
+    return loot.roll_table(_vanilla_table(env, table_id),
+                           loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), block_entity=env.state.blocks.entity(pos)))
+
+
+def loot_command(env, cmd: ast.Loot, ctx) -> int:
+    """LootCommand: the items of the source handed to the target; the result counts what went in."""
+    items = _loot_items(env, cmd, ctx)
+    source = world_source(env.state, ctx)
+    if cmd.action == "spawn":
+        pos = source.position_of(cmd.destination)
+        for stack in items:
+            _drop(env, pos, stack)
+        return len(items)
+    if cmd.action == "give":
+        players = _players(env, cmd.destination, ctx)
+        given = 0
+        for stack in items:
+            for player in players:
+                left = inventories.player_inventory(player, _version(env)).add(stack.copy())
+                given += left.count < stack.count
+        return given
+    if cmd.action == "insert":
+        holder = _container(env, cmd.destination, ctx, source=False)
+        return sum(_distribute(holder, stack.copy()) for stack in items)
+    return _replace(env, cmd, items, ctx)
+
+
+def _distribute(holder: inventories.Container, stack: ItemStack) -> bool:
+    """LootCommand.distributeToContainer: into the first empty slot, or onto matching stacks."""
+    changed = False
+    for index in range(holder.size):
+        if stack.is_empty:
+            break
+        access = holder.slot(index)
+        there = access.get()
+        if there.is_empty:
+            access.set(stack)
+            return True
+        if there.same_item_same_components(stack) and there.count < there.max_stack_size:
+            moved = min(stack.count, stack.max_stack_size - there.count)
+            stack.count -= moved
+            there.count += moved
+            access.set(there)
+            changed = True
+    return changed
+
+
+def _replace(env, cmd: ast.Loot, items: list[ItemStack], ctx) -> int:
+    """LootCommand.blockReplace / entityReplace: slot, slot+1 ... each gets the next item (or empty)."""
+    first = cmd.slot.ids[0]
+    span = len(items) if cmd.count is None else cmd.count
+    fill = [items[j] if j < len(items) else ItemStack("minecraft:air", 0) for j in range(span)]
+    if cmd.destination.kind == "block":
+        holder = _container(env, cmd.destination.target, ctx, source=False)
+        if holder.slot(first) is None:
+            raise CommandFailure("commands.item.target.no_such_slot", first)
+        placed = 0
+        for j, stack in enumerate(fill):
+            access = holder.slot(first + j)
+            placed += access is not None and access.set(stack.copy())
+        return placed
+    placed = 0
+    for entity in entities.found(env.state, cmd.destination.target, ctx):
+        for j, stack in enumerate(fill):
+            access = inventories.entity_slot(entity, first + j, _version(env))
+            placed += access is not None and access.set(stack.copy())
+    return placed
+
+
+HANDLERS = {ast.Give: give, ast.Clear: clear, ast.ItemReplace: item_replace, ast.ItemModify: item_modify,
+            ast.Loot: loot_command}

@@ -1,0 +1,336 @@
+"""Inventories: the slots of entities and container blocks, kept in the NBT the game saves.
+
+The items live where the game saves them, so ``data get``, ``nbt=`` and ``data modify`` (on
+blocks, and on non-player entities) see and change the same items the item commands do:
+- players: ``Inventory`` (``Slot`` 0-35; before 1.21.5 also 100-103 armor and -106 offhand),
+  ``EnderItems``, and from 1.21.5 ``equipment`` {head, chest, legs, feet, offhand, body}; the
+  held item is the ``Inventory`` entry of ``SelectedItemSlot``, shown as ``SelectedItem``
+  (:func:`selected_item`); the cursor and the 2x2 crafting grid are not saved (kept here);
+- other living entities (mobs, armor stands): ``equipment`` {mainhand, offhand, head, chest,
+  legs, feet, body} from 1.21.5, ``HandItems`` [main, off], ``ArmorItems`` [feet, legs, chest,
+  head] and ``body_armor_item`` before;
+- item entities and item frames: ``Item``; item displays: ``item``; container minecarts and
+  chest boats: ``Items``;
+- container block entities (:data:`CONTAINER_SIZES`): ``Items`` entries with ``Slot``.
+
+API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 armor feet..head,
+105 body, 200-226 ender chest, 499 cursor, 500-503 crafting)
+- ``entity_slot(entity, slot, version)``: a :class:`SlotAccess` (``get()`` an
+  :class:`~emulator.world.items.ItemStack`, ``set(stack)`` True when accepted) or None when the
+  entity has no such slot (Entity.getSlot returning SlotAccess.NULL).
+- ``container(blocks, pos, version)``: the block's :class:`Container` (``size``, ``slot(i)``) or
+  None when the block is no container.
+- ``player_inventory(player, version)``: :class:`PlayerInventory`: ``add(stack)`` (Inventory.add:
+  fills matching stacks, the selected slot and offhand first, then free slots; returns what did not
+  fit), ``clear_or_count(test, max_count)`` (ClearInventoryCommands), ``selected`` (the held slot).
+- ``selected_item(data)``: the held stack's NBT for ``SelectedItem`` (None when empty).
+- ``default_block_entity(block_id)``: the block entity a container gets when placed (``Items: []``).
+
+Sources (decompiled 1.21): world/entity/player/Player.java and Inventory.java (getSlot, add,
+getSlotWithRemainingSpace, save), world/entity/LivingEntity.java (getSlot), world/entity/Mob.java
+(HandItems/ArmorItems), world/ContainerHelper.java, world/entity/SlotAccess.java,
+advancements/critereon/NbtPredicate.java (SelectedItem); 1.21.5 equipment from the minecraft.wiki
+"Entity format" page.
+"""
+from __future__ import annotations
+
+import weakref
+from collections.abc import Callable
+
+from mcfunction_parser.nbt import Byte, Compound, Int, List
+from emulator.world.items import EMPTY, ItemStack, from_nbt, to_nbt
+from emulator.world.nbt_ops import copy_tag
+
+EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a-25w04a: equipment compound, player armor leaves Inventory
+MAINHAND, OFFHAND, BODY, CURSOR = 98, 99, 105, 499
+ARMOR_SLOTS = {"feet": 100, "legs": 101, "chest": 102, "head": 103}
+ARMOR = {100: "feet", 101: "legs", 102: "chest", 103: "head"}
+PLAYER_INVENTORY_SIZE, ENDER_SIZE = 36, 27
+_OLD_PLAYER_SLOTS = {OFFHAND: -106, 100: 100, 101: 101, 102: 102, 103: 103}
+_NOT_LIVING = frozenset("minecraft:" + n for n in (
+    "marker item item_frame glow_item_frame item_display block_display text_display interaction "
+    "area_effect_cloud falling_block tnt arrow spectral_arrow trident snowball egg ender_pearl "
+    "potion experience_bottle experience_orb fireball small_fireball dragon_fireball wither_skull "
+    "wind_charge breeze_wind_charge firework_rocket fishing_bobber eye_of_ender evoker_fangs "
+    "leash_knot painting lightning_bolt shulker_bullet llama_spit end_crystal "
+    "boat chest_boat minecart chest_minecart hopper_minecart furnace_minecart tnt_minecart "
+    "spawner_minecart command_block_minecart").split()) | frozenset(
+    f"minecraft:{w}_{k}" for w in "oak spruce birch jungle acacia dark_oak mangrove cherry pale_oak bamboo".split()
+    for k in ("boat", "chest_boat", "raft", "chest_raft"))
+_SINGLE_ITEM = {"minecraft:item": "Item", "minecraft:item_frame": "Item", "minecraft:glow_item_frame": "Item",
+                "minecraft:item_display": "item"}
+_ENTITY_CONTAINERS = {"minecraft:chest_minecart": 27, "minecraft:hopper_minecart": 5}
+
+_COLOURS = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown "
+            "green red black").split()
+CONTAINER_SIZES = {
+    **{f"minecraft:{n}": 27 for n in ("chest", "trapped_chest", "barrel", "shulker_box")},
+    **{f"minecraft:{c}_shulker_box": 27 for c in _COLOURS},
+    "minecraft:hopper": 5, "minecraft:dispenser": 9, "minecraft:dropper": 9, "minecraft:crafter": 9,
+    "minecraft:furnace": 3, "minecraft:smoker": 3, "minecraft:blast_furnace": 3, "minecraft:brewing_stand": 5,
+    "minecraft:chiseled_bookshelf": 6,
+}
+
+
+def _new_layout(version) -> bool:
+    return tuple(version) >= EQUIPMENT_VERSION
+
+
+class SlotAccess:
+    """One slot: ``get()`` the stack (a copy), ``set(stack)`` True when the slot took it."""
+
+    def __init__(self, get: Callable[[], ItemStack], put: Callable[[ItemStack], None]) -> None:
+        self._get, self._put = get, put
+
+    def get(self) -> ItemStack:
+        return self._get()
+
+    def set(self, stack: ItemStack) -> bool:
+        self._put(stack)
+        return True
+
+
+def _slot_byte(entry) -> int | None:
+    slot = entry.get("Slot") if isinstance(entry, Compound) else None
+    return int(slot) if isinstance(slot, int) else None
+
+
+def _list_slot(holder: Compound, key: str, slot: int, version) -> SlotAccess:
+    """An entry with ``Slot`` ``slot`` of the list ``holder[key]`` (ContainerHelper's save form)."""
+
+    def get() -> ItemStack:
+        entries = holder.get(key)
+        for entry in entries if isinstance(entries, List) else ():
+            if _slot_byte(entry) == slot:
+                return from_nbt(entry)
+        return EMPTY.copy()
+
+    def put(stack: ItemStack) -> None:
+        entries = holder.get(key)
+        kept = [e for e in entries if _slot_byte(e) != slot] if isinstance(entries, List) else []
+        if not stack.is_empty:
+            entry = Compound(Slot=Byte(slot))
+            entry.update(to_nbt(stack, version))
+            kept.append(entry)
+        kept.sort(key=lambda e: (_slot_byte(e) or 0) & 0xFF)  # saved in slot order (offhand -106 last)
+        holder[key] = List(kept)
+
+    return SlotAccess(get, put)
+
+
+def _key_slot(holder_of: Callable[[bool], Compound | None], key: str, version) -> SlotAccess:
+    """A single item under ``key`` of a compound (``Item``, ``equipment.head`` ...); empty removes it."""
+
+    def get() -> ItemStack:
+        holder = holder_of(False)
+        return from_nbt(holder.get(key)) if holder is not None else EMPTY.copy()
+
+    def put(stack: ItemStack) -> None:
+        holder = holder_of(True)
+        if stack.is_empty:
+            holder.pop(key, None)
+        else:
+            holder[key] = to_nbt(stack, version)
+
+    return SlotAccess(get, put)
+
+
+def _index_slot(data: Compound, key: str, index: int, size: int, version) -> SlotAccess:
+    """Element ``index`` of a fixed-size list (``HandItems``, ``ArmorItems``; ``{}`` when empty)."""
+
+    def get() -> ItemStack:
+        entries = data.get(key)
+        return from_nbt(entries[index]) if isinstance(entries, List) and index < len(entries) else EMPTY.copy()
+
+    def put(stack: ItemStack) -> None:
+        entries = data.get(key)
+        entries = List(entries) if isinstance(entries, List) and len(entries) == size else List(Compound() for _ in range(size))
+        entries[index] = Compound() if stack.is_empty else to_nbt(stack, version)
+        data[key] = entries
+
+    return SlotAccess(get, put)
+
+
+def _sub_compound(data: Compound, key: str) -> Callable[[bool], Compound | None]:
+    def holder(create: bool) -> Compound | None:
+        found = data.get(key)
+        if isinstance(found, Compound):
+            return found
+        if create:
+            data[key] = Compound()
+            return data[key]
+        return None
+    return holder
+
+
+# the cursor and crafting grid of each player (not saved in its NBT)
+_UNSAVED: "weakref.WeakKeyDictionary[object, dict[int, ItemStack]]" = weakref.WeakKeyDictionary()
+
+
+def _unsaved_slot(entity, slot: int) -> SlotAccess:
+    slots = _UNSAVED.setdefault(entity, {})
+    return SlotAccess(lambda: slots.get(slot, EMPTY).copy(), lambda stack: slots.__setitem__(slot, stack.copy()))
+
+
+def player_defaults() -> Compound:
+    """What a new player saves of its inventories (Player.addAdditionalSaveData): empty lists."""
+    return Compound(Inventory=List(), EnderItems=List(), SelectedItemSlot=Int(0))
+
+
+def selected_slot(data: Compound) -> int:
+    selected = data.get("SelectedItemSlot")
+    return int(selected) if isinstance(selected, int) and 0 <= int(selected) < 9 else 0
+
+
+def selected_item(data: Compound) -> Compound | None:
+    """NbtPredicate.getEntityTagForPredicate: the held stack as ``SelectedItem`` (None when empty)."""
+    stack = _list_slot(data, "Inventory", selected_slot(data), (1, 21, 0)).get()
+    if stack.is_empty:
+        return None
+    entries = data.get("Inventory")
+    entry = next(e for e in entries if _slot_byte(e) == selected_slot(data))
+    return Compound((k, copy_tag(v)) for k, v in entry.items() if k != "Slot")
+
+
+def _equipment_slot(data: Compound, slot: int, version, player: bool) -> SlotAccess | None:
+    names = {MAINHAND: "mainhand", OFFHAND: "offhand", BODY: "body", **ARMOR}
+    if slot not in names:
+        return None
+    if _new_layout(version):
+        return _key_slot(_sub_compound(data, "equipment"), names[slot], version)
+    if player:
+        return _list_slot(data, "Inventory", _OLD_PLAYER_SLOTS[slot], version) if slot in _OLD_PLAYER_SLOTS else None
+    if slot in (MAINHAND, OFFHAND):
+        return _index_slot(data, "HandItems", slot - MAINHAND, 2, version)
+    if slot == BODY:
+        return _key_slot(lambda create: data, "body_armor_item", version)
+    return _index_slot(data, "ArmorItems", slot - 100, 4, version)
+
+
+def entity_slot(entity, slot: int, version) -> SlotAccess | None:
+    """Entity.getSlot: the slot's access, or None (SlotAccess.NULL) when the entity has none."""
+    data = entity.data
+    if entity.is_player:
+        if 0 <= slot < PLAYER_INVENTORY_SIZE:
+            return _list_slot(data, "Inventory", slot, version)
+        if 200 <= slot < 200 + ENDER_SIZE:
+            return _list_slot(data, "EnderItems", slot - 200, version)
+        if slot == MAINHAND:
+            return _list_slot(data, "Inventory", selected_slot(data), version)
+        if slot == CURSOR or 500 <= slot < 504:
+            return _unsaved_slot(entity, slot)
+        return _equipment_slot(data, slot, version, player=True)
+    if entity.type in _SINGLE_ITEM:
+        return _key_slot(lambda create: data, _SINGLE_ITEM[entity.type], version) if slot == 0 else None
+    if entity.type in _ENTITY_CONTAINERS:
+        return _list_slot(data, "Items", slot, version) if 0 <= slot < _ENTITY_CONTAINERS[entity.type] else None
+    if entity.type in _NOT_LIVING:
+        return None
+    return _equipment_slot(data, slot, version, player=False)
+
+
+# ---------------------------------------------------------------------- containers
+class Container:
+    """A container block entity's slots (``Items`` with ``Slot``); ``size`` slots."""
+
+    def __init__(self, nbt: Compound, size: int, version) -> None:
+        self.nbt, self.size, self.version = nbt, size, version
+
+    def slot(self, index: int) -> SlotAccess | None:
+        return _list_slot(self.nbt, "Items", index, self.version) if 0 <= index < self.size else None
+
+
+def container(blocks, pos, version) -> Container | None:
+    """The container at ``pos`` (ItemCommands.getContainer), None when the block is none."""
+    size = CONTAINER_SIZES.get(blocks.get(pos).id)
+    nbt = blocks.entity(pos)
+    return None if size is None or nbt is None else Container(nbt, size, version)
+
+
+def default_block_entity(block_id: str) -> Compound | None:
+    """What a container saves when placed empty (ContainerHelper.saveAllItems always writes Items)."""
+    return Compound(Items=List()) if block_id in CONTAINER_SIZES else None
+
+
+# ---------------------------------------------------------------------- the player's inventory
+class PlayerInventory:
+    """Inventory's indices: 0-35 items, 36-39 armor (feet..head), 40 offhand."""
+
+    def __init__(self, player, version) -> None:
+        self.player, self.version = player, version
+
+    def _access(self, index: int) -> SlotAccess:
+        if index < PLAYER_INVENTORY_SIZE:
+            return entity_slot(self.player, index, self.version)
+        slot = OFFHAND if index == 40 else 100 + index - 36
+        return entity_slot(self.player, slot, self.version)
+
+    @property
+    def selected(self) -> int:
+        return selected_slot(self.player.data)
+
+    def _has_room(self, index: int, stack: ItemStack) -> bool:
+        there = self._access(index).get()
+        return (not there.is_empty and there.same_item_same_components(stack) and there.max_stack_size > 1
+                and there.count < there.max_stack_size)
+
+    def _slot_with_room(self, stack: ItemStack) -> int:
+        for index in (self.selected, 40, *range(PLAYER_INVENTORY_SIZE)):
+            if self._has_room(index, stack):
+                return index
+        return -1
+
+    def _free_slot(self) -> int:
+        return next((i for i in range(PLAYER_INVENTORY_SIZE) if self._access(i).get().is_empty), -1)
+
+    def add(self, stack: ItemStack) -> ItemStack:
+        """Inventory.add: what is left of ``stack`` (empty when all of it fit)."""
+        stack = stack.copy()
+        if stack.is_damaged():
+            free = self._free_slot()
+            if free >= 0:
+                self._access(free).set(stack)
+                return EMPTY.copy()
+            return stack
+        while not stack.is_empty:
+            index = self._slot_with_room(stack)
+            if index < 0:
+                index = self._free_slot()
+            if index < 0:
+                break
+            access = self._access(index)
+            there = access.get()
+            if there.is_empty:
+                there = ItemStack(stack.id, 0, copy_tag(stack.patch), copy_tag(stack.tag))
+            moved = min(stack.count, stack.max_stack_size - there.count)
+            if moved <= 0:
+                break
+            there.count += moved
+            stack.count -= moved
+            access.set(there)
+        return stack if not stack.is_empty else EMPTY.copy()
+
+    def clear_or_count(self, test: Callable[[ItemStack], bool], max_count: int) -> int:
+        """Inventory.clearOrCountMatchingItems then the crafting grid and the cursor: with
+        ``max_count`` 0 only counts; -1 removes every match; returns the count."""
+        total = 0
+        accesses = [self._access(i) for i in range(41)]
+        accesses += [entity_slot(self.player, s, self.version) for s in (500, 501, 502, 503, CURSOR)]
+        for access in accesses:
+            stack = access.get()
+            if stack.is_empty or not test(stack):
+                continue
+            if max_count == 0:
+                total += stack.count
+                continue
+            take = stack.count if max_count < 0 else min(max_count - total, stack.count)
+            total += take
+            stack.count -= take
+            access.set(stack)
+            if max_count > 0 and total >= max_count:
+                break
+        return total
+
+
+def player_inventory(player, version) -> PlayerInventory:
+    return PlayerInventory(player, version)

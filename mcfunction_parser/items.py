@@ -1,0 +1,264 @@
+"""Item arguments: items to create, item predicates, slot names and the data component table.
+
+- ``item_argument(r)``: ItemArgument / ItemParser: ``id[component=value,!component,...]`` (1.20.5+)
+  or ``id{tag}`` (older releases).
+- ``item_predicate(r)``: ItemPredicateArgument: ``id``, ``#tag`` or ``*`` (``*`` from 1.20.5) then
+  ``[test,test|test,!test]`` where a test is ``component``, ``component=value``,
+  ``predicate~value`` or ``count=RANGE`` (1.20.5+), or ``{nbt}`` (older).
+- ``slot(r, ranges=False)``: SlotArgument (one slot) or, with ``ranges``, SlotsArgument
+  (``container.*``, ``armor.*`` ...): the name and the slot ids it stands for (SlotRanges).
+- ``COMPONENTS``: data component ids with the releases that have them (DataComponents);
+  ``SUB_PREDICATES``: the ``~`` predicates (ItemSubPredicates).
+
+Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): commands/arguments/item/ItemParser.java,
+ItemPredicateArgument.java, ComponentPredicateParser.java, world/inventory/SlotRanges.java,
+core/component/DataComponents.java, advancements/critereon/ItemSubPredicates.java; the component
+history from the minecraft.wiki "Data component format" page.
+"""
+from __future__ import annotations
+
+import re
+
+from . import ast
+from .primitives import int_range, resource_location
+from .reader import Reader
+from .snbt import compound, value
+
+Version = tuple[int, int, int]
+_COMPONENT_ID = re.compile(r"[0-9a-z_:/.\-]*")
+COMPONENTS_VERSION: Version = (1, 20, 5)  # 24w09a: components replace the item's tag
+KNOWN_UNTIL: Version = (1, 21, 5)  # the table is complete up to this release
+
+_BASE = (
+    "custom_data max_stack_size max_damage damage unbreakable custom_name item_name lore rarity "
+    "enchantments can_place_on can_break attribute_modifiers custom_model_data repair_cost "
+    "creative_slot_lock enchantment_glint_override intangible_projectile food tool stored_enchantments "
+    "dyed_color map_color map_id map_decorations map_post_processing charged_projectiles bundle_contents "
+    "potion_contents suspicious_stew_effects writable_book_content written_book_content trim "
+    "debug_stick_state entity_data bucket_entity_data block_entity_data instrument "
+    "ominous_bottle_amplifier recipes lodestone_tracker firework_explosion fireworks profile "
+    "note_block_sound banner_patterns base_color pot_decorations container block_state bees lock "
+    "container_loot"
+)
+# component -> (first release, first release without it)
+COMPONENTS: dict[str, tuple[Version, Version | None]] = {
+    **{f"minecraft:{name}": ((1, 20, 5), None) for name in _BASE.split()},
+    "minecraft:hide_additional_tooltip": ((1, 20, 5), (1, 21, 5)),
+    "minecraft:hide_tooltip": ((1, 20, 5), (1, 21, 5)),
+    "minecraft:fire_resistant": ((1, 20, 5), (1, 21, 2)),
+    "minecraft:jukebox_playable": ((1, 21, 0), None),
+    **{f"minecraft:{name}": ((1, 21, 2), None) for name in (
+        "item_model consumable use_remainder use_cooldown damage_resistant enchantable equippable "
+        "repairable glider tooltip_style death_protection").split()},
+    **{f"minecraft:{name}": ((1, 21, 5), None) for name in (
+        "weapon blocks_attacks tooltip_display break_sound provides_banner_patterns provides_trim_material "
+        "potion_duration_scale villager/variant wolf/variant wolf/collar wolf/sound_variant fox/variant "
+        "salmon/size parrot/variant tropical_fish/pattern tropical_fish/base_color "
+        "tropical_fish/pattern_color mooshroom/variant rabbit/variant pig/variant cow/variant "
+        "chicken/variant frog/variant horse/variant painting/variant llama/variant axolotl/variant "
+        "cat/variant cat/collar sheep/color shulker/color").split()},
+}
+SUB_PREDICATES = frozenset(f"minecraft:{name}" for name in (
+    "damage enchantments stored_enchantments potion_contents custom_data container bundle_contents "
+    "firework_explosion fireworks writable_book_content written_book_content attribute_modifiers trim "
+    "jukebox_playable").split())
+
+
+def component_problem(name: str, version: Version) -> tuple[str, str] | None:
+    """(severity, message) when ``name`` is not a data component of ``version``."""
+    span = COMPONENTS.get(name)
+    if span is not None and span[0] <= version and (span[1] is None or version < span[1]):
+        return None
+    if span is not None:
+        return "error", f"component '{name}' does not exist in this version"
+    if version > KNOWN_UNTIL:  # later releases added components this table does not list
+        return "warning", f"unknown component '{name}' (not a component up to 1.21.5)"
+    return "error", f"unknown component '{name}'"
+
+
+# ----------------------------------------------------------------------------- slots
+
+def _slot_table() -> dict[str, tuple[tuple[int, ...], Version, Version | None]]:
+    """SlotRanges: name -> (slot ids, since, until). Ranges (``.*``) and the slots added with them
+    exist from 1.20.5 (24w10a); the older slot names are SlotArgument's (1.17)."""
+    new = (1, 20, 5)
+    table: dict = {}
+
+    def add(name, ids, since=(1, 13, 0), until=None):
+        table[name] = (tuple(ids), since, until)
+
+    def add_range(prefix, start, size):
+        for i in range(size):
+            add(f"{prefix}{i}", [start + i])
+        add(prefix + "*", range(start, start + size), new)
+
+    add("contents", [0], new)
+    add_range("container.", 0, 54)
+    add_range("hotbar.", 0, 9)
+    add_range("inventory.", 9, 27)
+    add_range("enderchest.", 200, 27)
+    add_range("villager.", 300, 8)
+    add_range("horse.", 500, 15)
+    add("weapon", [98])
+    add("weapon.mainhand", [98])
+    add("weapon.offhand", [99])
+    add("weapon.*", [98, 99], new)
+    for name, slot in (("head", 103), ("chest", 102), ("legs", 101), ("feet", 100)):
+        add(f"armor.{name}", [slot])
+    add("armor.body", [105], new)
+    add("armor.*", [103, 102, 101, 100, 105], new)
+    add("horse.saddle", [400])
+    add("horse.armor", [401], until=new)
+    add("horse.chest", [499])
+    add("player.cursor", [499], new)
+    for i in range(4):
+        add(f"player.crafting.{i}", [500 + i], new)
+    add("player.crafting.*", range(500, 504), new)
+    add("saddle", [400], (1, 21, 5))
+    return table
+
+
+SLOTS = _slot_table()
+
+
+def slot(r: Reader, ranges: bool = False) -> ast.SlotArgument:
+    """A slot name (SlotArgument), or with ``ranges`` a slot range name (SlotsArgument)."""
+    start = r.pos
+    name = r.word()
+    entry = SLOTS.get(name)
+    if (entry is None or not entry[1] <= r.version or (entry[2] is not None and r.version >= entry[2])
+            or (len(entry[0]) > 1 and not ranges) or (name.endswith(".*") and not ranges)):
+        r.fail(f"Unknown slot '{name}'" if name else f"expected a slot, got {r.found()}", start)
+    return ast.SlotArgument(name, entry[0])
+
+
+# ----------------------------------------------------------------------------- items
+
+def item_argument(r: Reader) -> ast.ItemArgument:
+    """``id[components]`` (1.20.5+) or ``id{tag}``; unknown or repeated components fail."""
+    loc = r.loc()
+    item_id = resource_location(r, "item")
+    if r.version < COMPONENTS_VERSION:
+        tag = compound(r) if r.peek() == "{" else None
+        return ast.ItemArgument(loc, item_id, tag=tag)
+    components: list = []
+    removed: list[str] = []
+    if r.peek() == "[":
+        r.pos += 1
+        r.skip_ws()
+        seen: set[str] = set()
+        while r.peek() != "]":
+            negated = r.peek() == "!"
+            if negated:
+                r.pos += 1
+            start = r.pos
+            name = _component_id(r)
+            _check_component(r, name, start)
+            if name in seen:
+                r.fail(f"component '{name}' given twice", start)
+            seen.add(name)
+            r.skip_ws()
+            if negated:
+                removed.append(name)
+            else:
+                r.expect("=")
+                r.skip_ws()
+                components.append((name, value(r)))
+            r.skip_ws()
+            if r.peek() == ",":
+                r.pos += 1
+                r.skip_ws()
+            elif r.peek() != "]":
+                r.fail(f"expected ',' or ']' in the item's components, got {r.found()}")
+        r.pos += 1
+    return ast.ItemArgument(loc, item_id, tuple(components), tuple(removed))
+
+
+def _component_id(r: Reader) -> str:
+    """A component id inside brackets (ends at ``= ~ , ] |`` or a space)."""
+    start = r.pos
+    m = _COMPONENT_ID.match(r.text, start)
+    if not m.group():
+        r.fail(f"expected a component, got {r.found()}")
+    r.pos = m.end()
+    name = m.group()
+    if name.count(":") > 1:
+        r.fail(f"invalid component id '{name}'", start)
+    return name if ":" in name else "minecraft:" + name
+
+
+def _check_component(r: Reader, name: str, start: int, sub_predicate: bool = False) -> None:
+    if sub_predicate:
+        if name not in SUB_PREDICATES:
+            r.fail(f"unknown item sub-predicate '{name}'", start)
+        return
+    problem = component_problem(name, r.version)
+    if problem is None:
+        return
+    severity, message = problem
+    if severity == "error":
+        r.fail(message, start)
+    r.warnings.append((message, start))
+
+
+def item_predicate(r: Reader) -> ast.ItemPredicate:
+    """``id|#tag|*`` then ``[tests]`` (1.20.5+) or ``{nbt}`` (older)."""
+    loc = r.loc()
+    is_tag = r.peek() == "#"
+    if is_tag:
+        r.pos += 1
+        item_id = resource_location(r, "item tag")
+    elif r.peek() == "*" and r.version >= COMPONENTS_VERSION:
+        r.pos += 1
+        item_id = None
+    else:
+        item_id = resource_location(r, "item")
+    if r.version < COMPONENTS_VERSION:
+        tag = compound(r) if r.peek() == "{" else None
+        return ast.ItemPredicate(loc, item_id, is_tag, tag=tag)
+    groups: list = []
+    if r.peek() == "[":
+        r.pos += 1
+        r.skip_ws()
+        while r.peek() != "]":
+            groups.append(_any_of(r))
+            r.skip_ws()
+            if r.peek() == ",":
+                r.pos += 1
+                r.skip_ws()
+            elif r.peek() != "]":
+                r.fail(f"expected ',' or ']' in the item predicate, got {r.found()}")
+        r.pos += 1
+    return ast.ItemPredicate(loc, item_id, is_tag, tuple(groups))
+
+
+def _any_of(r: Reader) -> tuple[ast.ComponentTest, ...]:
+    tests = [_test(r)]
+    r.skip_ws()
+    while r.peek() == "|":
+        r.pos += 1
+        r.skip_ws()
+        tests.append(_test(r))
+        r.skip_ws()
+    return tuple(tests)
+
+
+def _test(r: Reader) -> ast.ComponentTest:
+    negated = r.peek() == "!"
+    if negated:
+        r.pos += 1
+    start = r.pos
+    name = _component_id(r)
+    r.skip_ws()
+    op = r.peek()
+    if name == "minecraft:count" and op == "=":  # the pseudo-component count=RANGE
+        r.pos += 1
+        r.skip_ws()
+        return ast.ComponentTest(name, "=", int_range(r), negated)
+    if op in ("=", "~"):
+        _check_component(r, name, start, sub_predicate=op == "~")
+        r.pos += 1
+        r.skip_ws()
+        return ast.ComponentTest(name, op, value(r), negated)
+    _check_component(r, name, start)
+    return ast.ComponentTest(name, "exists", None, negated)

@@ -1,0 +1,226 @@
+"""Checking loot tables and item modifiers as the game decodes them: the entry, function, condition
+and number provider types, the shape of pools and entries. Each problem is a diagnostic at the
+string it is about (its line and column in the file).
+
+- ``check_loot_table(doc, version, diagnostics)`` / ``check_modifier(...)``: True when the file
+  would load (no error found). The game refuses a file that does not decode, so the loader keeps
+  only those that pass.
+- ``ENTRY_TYPES``, ``FUNCTION_TYPES``, ``CONDITION_TYPES``, ``NUMBER_TYPES``: type name ->
+  (first release, first release without it).
+
+Sources: decompiled 1.21 world/level/storage/loot/entries/LootPoolEntries.java,
+functions/LootItemFunctions.java, predicates/LootItemConditions.java,
+providers/number/NumberProviders.java; renames and additions from the minecraft.wiki "Loot table",
+"Item modifier" and "Predicate" pages (history sections).
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from mcfunction_parser.diagnostics import ERROR, Diagnostic
+from mcfunction_parser.pack.text import JsonDocument
+
+Version = tuple[int, int, int]
+_ALWAYS = ((1, 13, 0), None)
+_COMPONENTS = ((1, 20, 5), None)
+_V121 = ((1, 21, 0), None)
+
+
+def _table(names: str, span=_ALWAYS) -> dict[str, tuple[Version, Version | None]]:
+    return {f"minecraft:{name}": span for name in names.split()}
+
+
+ENTRY_TYPES = _table("item tag loot_table dynamic empty alternatives group sequence")
+FUNCTION_TYPES = {
+    **_table("set_count enchant_with_levels enchant_randomly set_damage set_attributes set_name "
+             "exploration_map set_stew_effect copy_name set_contents limit_count apply_bonus set_loot_table "
+             "explosion_decay set_lore fill_player_head copy_state set_banner_pattern set_potion "
+             "furnace_smelt set_enchantments set_instrument reference sequence filtered"),
+    **_table("set_nbt copy_nbt", ((1, 13, 0), (1, 20, 5))),
+    **_table("looting_enchant", ((1, 13, 0), (1, 21, 0))),
+    **_table("set_custom_data set_components copy_components copy_custom_data toggle_tooltips "
+             "set_fireworks set_firework_explosion set_book_cover set_written_book_pages "
+             "set_writable_book_pages set_custom_model_data set_ominous_bottle_amplifier", _COMPONENTS),
+    **_table("enchanted_count_increase", _V121),
+    **_table("set_item modify_contents", ((1, 21, 2), None)),
+    **_table("discard set_random_dyes set_random_potion", ((1, 21, 5), None)),
+}
+CONDITION_TYPES = {
+    **_table("inverted random_chance entity_properties killed_by_player entity_scores "
+             "block_state_property match_tool table_bonus survives_explosion damage_source_properties "
+             "location_check weather_check reference time_check value_check"),
+    **_table("alternative", ((1, 13, 0), (1, 20, 0))),
+    **_table("any_of all_of", ((1, 20, 0), None)),
+    **_table("random_chance_with_looting", ((1, 13, 0), (1, 21, 0))),
+    **_table("random_chance_with_enchanted_bonus enchantment_active_check", _V121),
+}
+NUMBER_TYPES = _table("constant uniform binomial score storage enchantment_level")
+
+
+def known(table: dict, name: str, version: Version) -> bool:
+    span = table.get(name)
+    return span is not None and span[0] <= version and (span[1] is None or version < span[1])
+
+
+def _typed(value: str) -> str:
+    return value if ":" in value else "minecraft:" + value
+
+
+class _Checker:
+    def __init__(self, doc: JsonDocument, version: Version, diagnostics: list[Diagnostic]) -> None:
+        self.doc, self.version, self.diagnostics = doc, version, diagnostics
+        self.cursor = -1
+        self.ok = True
+
+    def report(self, severity: str, message: str, token: str | None) -> None:
+        offset = self.doc.find_string(token, self.cursor) if token is not None else -1
+        if offset >= 0:
+            self.cursor = offset
+        self.diagnostics.append(self.doc.diagnostic(severity, message, offset if offset >= 0 else self.cursor))
+        self.ok = self.ok and severity != ERROR
+
+    def advance(self, token: str) -> None:
+        offset = self.doc.find_string(token, self.cursor)
+        if offset >= 0:
+            self.cursor = offset
+
+    def type_of(self, node: dict, key: str, table: dict, what: str) -> str | None:
+        raw = node.get(key)
+        if not isinstance(raw, str):
+            self.report(ERROR, f'{what}: expected "{key}" naming its type', key)
+            return None
+        name = _typed(raw)
+        self.advance(raw)
+        if name not in table:
+            self.report(ERROR, f"unknown {what} type '{raw}'", raw)
+            return None
+        if not known(table, name, self.version):
+            self.report(ERROR, f"{what} type '{raw}' does not exist in this version", raw)
+            return None
+        return name
+
+    # ------------------------------------------------------------------ parts
+    def table(self, root: Any) -> None:
+        if not isinstance(root, dict):
+            self.report(ERROR, "a loot table must be a JSON object", None)
+            return
+        pools = root.get("pools", [])
+        if not isinstance(pools, list):
+            self.report(ERROR, '"pools" must be a list', "pools")
+            return
+        for pool in pools:
+            self.pool(pool)
+        self.functions(root.get("functions", []))
+
+    def pool(self, pool: Any) -> None:
+        if not isinstance(pool, dict):
+            self.report(ERROR, "a pool must be a JSON object", "pools")
+            return
+        if "rolls" not in pool:
+            self.report(ERROR, 'a pool needs "rolls"', "pools")
+        else:
+            self.number(pool["rolls"])
+        if "bonus_rolls" in pool:
+            self.number(pool["bonus_rolls"])
+        self.conditions(pool.get("conditions", []))
+        self.functions(pool.get("functions", []))
+        entries = pool.get("entries")
+        if not isinstance(entries, list):
+            self.report(ERROR, 'a pool needs an "entries" list', "entries")
+            return
+        for entry in entries:
+            self.entry(entry)
+
+    def entry(self, entry: Any) -> None:
+        if not isinstance(entry, dict):
+            self.report(ERROR, "an entry must be a JSON object", "entries")
+            return
+        kind = self.type_of(entry, "type", ENTRY_TYPES, "loot entry")
+        self.conditions(entry.get("conditions", []))
+        if kind in ("minecraft:item", "minecraft:tag", "minecraft:dynamic") and not isinstance(entry.get("name"), str):
+            self.report(ERROR, f"a {kind.split(':')[1]} entry needs a \"name\"", kind.split(":")[1])
+        if kind == "minecraft:loot_table" and not isinstance(entry.get("value", entry.get("name")), (str, dict)):
+            self.report(ERROR, 'a loot_table entry needs a "value"', "loot_table")
+        if kind == "minecraft:loot_table" and isinstance(entry.get("value"), dict):
+            self.table(entry["value"])
+        if kind in ("minecraft:alternatives", "minecraft:group", "minecraft:sequence"):
+            children = entry.get("children", [])
+            if not isinstance(children, list):
+                self.report(ERROR, '"children" must be a list', "children")
+            else:
+                for child in children:
+                    self.entry(child)
+        self.functions(entry.get("functions", []))
+
+    def functions(self, functions: Any) -> None:
+        if not isinstance(functions, list):
+            self.report(ERROR, '"functions" must be a list', "functions")
+            return
+        for function in functions:
+            self.function(function)
+
+    def function(self, function: Any) -> None:
+        if isinstance(function, list):  # an inline sequence
+            self.functions(function)
+            return
+        if not isinstance(function, dict):
+            self.report(ERROR, "an item function must be a JSON object", "function")
+            return
+        kind = self.type_of(function, "function", FUNCTION_TYPES, "item function")
+        self.conditions(function.get("conditions", []))
+        for key in ("count", "damage", "levels"):
+            if kind in ("minecraft:set_count", "minecraft:set_damage", "minecraft:enchant_with_levels") and key in function:
+                self.number(function[key])
+        if kind in ("minecraft:sequence",):
+            self.functions(function.get("functions", []))
+        if kind == "minecraft:filtered":
+            for key in ("modifier", "on_pass", "on_fail"):
+                if key in function:
+                    self.function(function[key])
+
+    def conditions(self, conditions: Any) -> None:
+        if not isinstance(conditions, list):
+            self.report(ERROR, '"conditions" must be a list', "conditions")
+            return
+        for condition in conditions:
+            self.condition(condition)
+
+    def condition(self, condition: Any) -> None:
+        if isinstance(condition, list):  # an inline all_of
+            self.conditions(condition)
+            return
+        if not isinstance(condition, dict):
+            self.report(ERROR, "a condition must be a JSON object", "condition")
+            return
+        kind = self.type_of(condition, "condition", CONDITION_TYPES, "condition")
+        if kind == "minecraft:inverted":
+            self.condition(condition.get("term"))
+        elif kind in ("minecraft:any_of", "minecraft:all_of", "minecraft:alternative"):
+            self.conditions(condition.get("terms", []))
+
+    def number(self, value: Any) -> None:
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return
+        if not isinstance(value, dict):
+            self.report(ERROR, "expected a number or a number provider", None)
+            return
+        if "type" not in value and ("min" in value or "max" in value):
+            value = {"type": "uniform", **value}  # the old uniform shorthand
+        kind = self.type_of(value, "type", NUMBER_TYPES, "number provider")
+        for key in ("min", "max", "n", "p", "value"):
+            if kind is not None and key in value and kind != "minecraft:constant":
+                self.number(value[key])
+
+
+def check_loot_table(doc: JsonDocument, version: Version, diagnostics: list[Diagnostic]) -> bool:
+    checker = _Checker(doc, version, diagnostics)
+    checker.table(doc.value)
+    return checker.ok
+
+
+def check_modifier(doc: JsonDocument, version: Version, diagnostics: list[Diagnostic]) -> bool:
+    """An item modifier: one function or a list of them (an inline sequence)."""
+    checker = _Checker(doc, version, diagnostics)
+    checker.function(doc.value)
+    return checker.ok
+

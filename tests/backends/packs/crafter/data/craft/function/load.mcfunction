@@ -1,0 +1,2 @@
+scoreboard objectives add craft.rank dummy
+scoreboard objectives add craft.found dummy

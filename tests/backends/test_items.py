@@ -1,0 +1,147 @@
+"""Items, inventories, loot tables and item modifiers run identically on both backends, as the
+game runs them (each rule's source named); the crafter pack (tests/backends/packs/crafter) is a
+library-style use: a barrel read with ``execute if items``, loot tables with conditions, item
+modifiers, item tags, ``assert items`` in PackTest files."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from emulator.api import Emulator
+from emulator.testing import discover, run_suite
+from emulator.world.entities import entity_nbt
+from mcfunction_parser.nbt import to_snbt
+from tests.backends.programs import write_pack
+from tests.backends.test_entities import run_both
+
+CRAFTER = Path(__file__).parent / "packs" / "crafter"
+STEVE = [("Steve", (0.0, 64.0, 0.0), (0.0, 0.0))]
+SETUP = "scoreboard objectives add v dummy\n"
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_the_crafter_pack_passes_its_own_suite(backend):
+    summary = run_suite(discover([CRAFTER]), backend, strict=True)
+    assert [(r.id, r.status, r.message) for r in summary.results] == [
+        ("craft:crafter", "passed", ""), ("craft:reward", "passed", "")]
+
+
+def _scores(emu):
+    return emu.scores().get("v", {})
+
+
+def _player(emu):
+    return emu.state.entities.players()[0]
+
+
+def test_give_stacks_and_drops_what_does_not_fit(tmp_path):
+    # GiveCommand: stacks of the maximum size; Inventory.add; leftovers dropped with no pickup delay
+    emu = run_both(tmp_path, {"t:main": SETUP + "give Steve ender_pearl 600\n"
+                              "execute store result score #n v if items entity Steve container.* ender_pearl\n"
+                              "execute store result score #drops v if entity @e[type=item]\n"
+                              "execute store result score #r v run give Steve stone 6401\n"}, players=STEVE)
+    assert _scores(emu) == {"#n": 576, "#drops": 2, "#r": 0}  # 36 x 16 kept, 24 in two items; 64 x 100 max
+    assert {int(e["PickupDelay"]) for e in (entity_nbt(x) for x in emu.state.entities.entities
+                                            if x.type == "minecraft:item")} == {0}
+
+
+def test_clear_results_and_query(tmp_path):
+    # ClearInventoryCommands: the count removed; maxCount 0 only counts; nothing found fails
+    emu = run_both(tmp_path, {"t:main": SETUP + "give Steve stone 10\ngive Steve dirt[custom_data={k:1b}] 3\n"
+                              "execute store result score #q v run clear Steve stone 0\n"
+                              "execute store result score #c v run clear Steve *[custom_data~{k:1b}] 2\n"
+                              "execute store success score #none v run clear Steve diamond\n"
+                              "execute store result score #all v run clear Steve\n"}, players=STEVE)
+    assert _scores(emu) == {"#q": 10, "#c": 2, "#none": 0, "#all": 11}
+
+
+def test_item_replace_slots_and_failures(tmp_path):
+    # ItemCommands: a slot the entity lacks (SlotAccess.NULL) fails; a block that is no container fails
+    emu = run_both(tmp_path, {"t:main": SETUP + 'summon armor_stand 0 64 0 {Tags:["s"]}\nsummon marker 0 64 0 {Tags:["m"]}\n'
+                              "execute store result score #a v run item replace entity @e[tag=s] armor.head with diamond_helmet\n"
+                              "execute store success score #m v run item replace entity @e[tag=m] weapon with stick\n"
+                              "execute store success score #b v run item replace block 5 5 5 container.0 with stick\n"
+                              "setblock 5 5 5 hopper\n"
+                              "execute store success score #slot v run item replace block 5 5 5 container.5 with stick\n"
+                              "item replace entity Steve hotbar.0 with stone 3\n"
+                              "item replace entity Steve player.cursor from entity Steve weapon.mainhand\n"
+                              "execute store result score #cur v if items entity Steve player.cursor stone\n"
+                              "execute store result score #h v if items entity @e[tag=s] armor.* *\n"}, players=STEVE)
+    assert _scores(emu) == {"#a": 1, "#m": 0, "#b": 0, "#slot": 0, "#cur": 3, "#h": 1}
+    stand = next(e for e in emu.state.entities.entities if "s" in e.tags)
+    assert entity_nbt(stand)["ArmorItems"][3]["id"] == "minecraft:diamond_helmet"
+
+
+def test_data_views_and_writes(tmp_path):
+    # EntityDataAccessor reads NbtPredicate.getEntityTagForPredicate (SelectedItem for players);
+    # data modify block ... Items changes the container the item commands read
+    emu = run_both(tmp_path, {"t:main": SETUP + "setblock 0 0 0 chest\n"
+                              'data modify block 0 0 0 Items append value {Slot:4b,id:"minecraft:apple",count:7}\n'
+                              "execute store result score #apple v if items block 0 0 0 container.4 apple\n"
+                              "item replace entity Steve weapon.mainhand from block 0 0 0 container.4\n"
+                              "execute store result score #sel v run data get entity Steve SelectedItem.count\n"
+                              'execute store result score #nbt v if entity @a[nbt={SelectedItem:{id:"minecraft:apple"}}]\n'
+                              'summon item 0 64 0 {Item:{id:"minecraft:stick",count:2},Tags:["i"]}\n'
+                              "execute store result score #ent v if items entity @e[tag=i] contents stick\n"}, players=STEVE)
+    assert _scores(emu) == {"#apple": 7, "#sel": 7, "#nbt": 1, "#ent": 2}
+
+
+def test_loot_targets(tmp_path):
+    # LootCommand: spawn drops item entities, replace fills slot after slot, insert distributes
+    table = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "stone", "functions": [
+        {"function": "set_count", "count": 70}]}]}]}
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + "loot spawn 0 64 0 loot t:stone\n"
+                                          "execute store result score #e v if entity @e[type=item]\n"
+                                          "setblock 0 0 0 barrel\n"
+                                          "execute store result score #r v run loot replace block 0 0 0 container.3 loot t:stone\n"
+                                          "execute store result score #i v if items block 0 0 0 container.4 stone\n"
+                                          "execute store result score #n v run loot insert 0 0 0 loot t:stone\n"
+                                          "execute store result score #all v if items block 0 0 0 container.* stone\n"
+                                          "execute store result score #g v run loot give Steve loot t:stone\n"})
+    (pack / "data/t/loot_table").mkdir(parents=True)
+    (pack / "data/t/loot_table/stone.json").write_text(json.dumps(table))
+    results = []
+    for backend in ("python", "numba"):
+        emu = Emulator(backend=backend)
+        emu.load(pack)
+        emu.add_player("Steve", (0.0, 64.0, 0.0))
+        emu.call("t:main")
+        results.append((_scores(emu), emu.entities(), [d.format() for d in emu.diagnostics]))
+    assert results[0] == results[1]
+    assert results[0][0] == {"#e": 2, "#r": 2, "#i": 6, "#n": 2, "#all": 140, "#g": 2}
+
+
+def test_bad_loot_input(tmp_path):
+    # an unknown loot table or modifier id fails the command with a diagnostic; a function type
+    # the emulator does not model is named, never a silent empty drop
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + "loot give Steve loot t:missing\n"
+                                          "execute store success score #s v run loot give Steve loot t:smelt\n"
+                                          "item modify entity Steve weapon t:nothing\n"})
+    (pack / "data/t/loot_table").mkdir(parents=True)
+    (pack / "data/t/loot_table/smelt.json").write_text(json.dumps({"pools": [{"rolls": 1, "entries": [
+        {"type": "item", "name": "beef", "functions": [{"function": "furnace_smelt"}]}]}]}))
+    for backend in ("python", "numba"):
+        emu = Emulator(backend=backend)
+        emu.load(pack)
+        emu.add_player("Steve", (0.0, 64.0, 0.0))
+        emu.call("t:main")
+        messages = [d.message for d in emu.diagnostics]
+        assert messages == ["Unknown loot table t:missing", "item function: 'minecraft:furnace_smelt' is not "
+                            "modelled by the emulator", "Unknown item modifier t:nothing"]
+        assert _scores(emu) == {"#s": 0}
+
+
+def test_equipment_layout_of_1_21_5(tmp_path):
+    # from 1.21.5 (pack format 71) equipment is one compound for players and mobs alike
+    pack = write_pack(tmp_path / "pack", {"t:main": "summon zombie 0 64 0\n"
+                                          "item replace entity @e[type=zombie] armor.head with iron_helmet\n"
+                                          "item replace entity Steve weapon.offhand with shield\n"}, pack_format=71)
+    emu = Emulator(backend="python")
+    emu.load(pack)
+    emu.add_player("Steve", (0.0, 64.0, 0.0))
+    emu.call("t:main")
+    zombie = next(e for e in emu.state.entities.entities if e.type == "minecraft:zombie")
+    assert to_snbt(entity_nbt(zombie)["equipment"]) == '{head:{id:"minecraft:iron_helmet",count:1}}'
+    assert entity_nbt(_player(emu))["equipment"]["offhand"]["id"] == "minecraft:shield"

@@ -1,0 +1,52 @@
+"""Loot tables and item modifiers as the loader reads them: checked as the game decodes them, a
+problem reported at its line and column, a file that does not decode left out (the game skips
+it), the rest of the pack loaded."""
+from __future__ import annotations
+
+import json
+
+from mcfunction_parser import load_packs
+from tests.conftest import write_pack
+
+GOOD = {"pools": [{"rolls": 1, "entries": [{"type": "minecraft:item", "name": "minecraft:stone"}]}]}
+
+
+def test_valid_files_load_with_their_folder_names(tmp_path):
+    root = write_pack(tmp_path / "p", {"a/loot_table/x.json": json.dumps(GOOD),
+                                       "a/item_modifier/m.json": json.dumps([{"function": "set_count", "count": 2}]),
+                                       "a/tags/item/t.json": json.dumps({"values": ["stone"]})})
+    packs = load_packs([root])
+    assert packs.errors == [] and set(packs.loot_tables) == {"a:x"} and set(packs.item_modifiers) == {"a:m"}
+    assert [e.id for e in packs.item_tags["a:t"].entries] == ["minecraft:stone"]
+
+
+def test_older_packs_read_the_plural_folders(tmp_path):
+    root = write_pack(tmp_path / "p", {"a/loot_tables/x.json": json.dumps(GOOD), "a/loot_table/y.json": json.dumps(GOOD)})
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 26, "description": ""}}))
+    packs = load_packs([root])
+    assert set(packs.loot_tables) == {"a:x"}
+    assert any("ignored" in w.message for w in packs.warnings)
+
+
+def test_problems_name_the_place_and_the_file_is_left_out(tmp_path):
+    text = ('{\n  "pools": [\n    {"rolls": 1, "entries": [\n      {"type": "minecraft:item", "name": "stone",\n'
+            '       "functions": [{"function": "minecraft:set_colour"}]}]}\n  ]\n}\n')
+    root = write_pack(tmp_path / "p", {"a/loot_table/bad.json": text, "a/loot_table/good.json": json.dumps(GOOD),
+                                       "a/loot_table/broken.json": '{"pools": [}',
+                                       "a/item_modifier/m.json": '{"function": "set_count", "count": {"type": "gaussian"}}',
+                                       "a/function/f.mcfunction": "say hi\n"})
+    packs = load_packs([root])
+    found = sorted((e.path.rsplit("/", 1)[-1], e.line, e.col, e.message) for e in packs.errors)
+    assert found == [
+        ("bad.json", 5, 35, "unknown item function type 'minecraft:set_colour'"),
+        ("broken.json", 1, 12, "invalid JSON: Expecting value"),
+        ("m.json", 1, 45, "unknown number provider type 'gaussian'"),
+    ]
+    assert set(packs.loot_tables) == {"a:good"} and "a:f" in packs.functions
+
+
+def test_types_are_checked_for_the_version(tmp_path):
+    # LootItemFunctions: set_nbt was replaced by set_custom_data/set_components in 1.20.5
+    root = write_pack(tmp_path / "p", {"a/item_modifier/m.json": json.dumps({"function": "set_nbt", "tag": "{}"})})
+    assert [e.message for e in load_packs([root]).errors] == ["item function type 'set_nbt' does not exist in this version"]
+    assert load_packs([root], mc_version="1.20.4").errors == []

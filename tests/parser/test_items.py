@@ -1,0 +1,95 @@
+"""Item arguments, item predicates, slots and the item commands (give, clear, item, loot, if items)."""
+from __future__ import annotations
+
+import pytest
+
+from mcfunction_parser import ast
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.parse import parse_command
+
+V121, V1204, V1215 = (1, 21, 0), (1, 20, 4), (1, 21, 5)
+
+
+def parse(text, version=V121):
+    cmd, diagnostics = parse_command(text, Loc("f", 1, 1), version)
+    return cmd, [(d.col, d.message) for d in diagnostics]
+
+
+def test_item_argument_with_components_and_removals():
+    # ItemParser (1.20.5+): id[component=SNBT,!component]
+    cmd, problems = parse("give @s minecraft:diamond_sword[damage=5,!food,custom_name='\"x\"'] 3")
+    assert problems == [] and isinstance(cmd, ast.Give) and cmd.count == 3
+    assert cmd.item.id == "minecraft:diamond_sword"
+    assert cmd.item.components == (("minecraft:damage", 5), ("minecraft:custom_name", '"x"'))
+    assert cmd.item.removed == ("minecraft:food",)
+
+
+@pytest.mark.parametrize("text,col,message", [
+    ("give @s stone[bogus=1]", 15, "unknown component 'minecraft:bogus'"),
+    ("give @s stone[damage=1,damage=2]", 24, "component 'minecraft:damage' given twice"),
+    ("give @s stone[fire_resistant={}]", 15, None),  # exists in 1.21.0 (replaced in 1.21.2)
+    ("give @s stone 0", 15, "count"),
+    ("item replace entity @s container.* with stone", 24, "Unknown slot 'container.*'"),  # SlotArgument: one slot
+    ("item replace entity @s hotbar.9 with stone", 24, "Unknown slot 'hotbar.9'"),
+    ("item replace entity @s weapon with stone 100", 42, "count"),  # 1..99
+    ("clear @e stone", 7, "only players"),
+])
+def test_bad_item_input_fails_at_its_column(text, col, message):
+    cmd, problems = parse(text)
+    if message is None:
+        assert problems == []
+        return
+    assert cmd is None and problems[0][0] == col and message in problems[0][1]
+
+
+def test_component_existence_is_gated_by_version():
+    # minecraft.wiki "Data component format": fire_resistant became damage_resistant in 1.21.2,
+    # hide_tooltip gave way to tooltip_display in 1.21.5
+    assert "does not exist in this version" in parse("give @s stone[fire_resistant={}]", (1, 21, 4))[1][0][1]
+    assert parse("give @s stone[damage_resistant={types:'#minecraft:is_fire'}]", (1, 21, 4))[1] == []
+    assert "does not exist" in parse("give @s stone[hide_tooltip={}]", V1215)[1][0][1]
+    assert parse("give @s stone[tooltip_display={}]", V1215)[1] == []
+
+
+def test_older_releases_read_the_nbt_form():
+    cmd, problems = parse("give @s stone{display:{Name:'\"a\"'}} 2", V1204)
+    assert problems == [] and cmd.item.tag == {"display": {"Name": '"a"'}} and cmd.item.components == ()
+    cmd, _ = parse("clear @s stone{a:1b} 0", V1204)
+    assert cmd.item.tag == {"a": 1} and cmd.max_count == 0
+
+
+def test_item_predicates():
+    # ItemPredicateArgument: #tag or *, tests joined by ',' (all) and '|' (any), '!' negates, '~' sub-predicates
+    cmd, problems = parse("clear @s #ns:t[!damage,custom_data~{a:1b}|count=2..] 0")
+    assert problems == []
+    predicate = cmd.item
+    assert predicate.is_tag and predicate.id == "ns:t"
+    assert predicate.tests[0] == (ast.ComponentTest("minecraft:damage", "exists", None, True),)
+    assert [t.kind for t in predicate.tests[1]] == ["~", "="]
+    assert predicate.tests[1][1].value == ast.IntRange(2, None)
+    assert parse("clear @s *")[0].item.id is None
+    assert "unknown item sub-predicate" in parse("clear @s *[food~{}]")[1][0][1]
+
+
+def test_slot_ranges_only_where_the_version_has_them():
+    # SlotsArgument (execute if items, 1.20.5+) takes ranges; SlotRanges ids: armor.* is head..feet, body
+    cmd, problems = parse("execute if items entity @s armor.* * run say x")
+    condition = cmd.subcommands[0]
+    assert problems == [] and condition.slots == ast.SlotArgument("armor.*", (103, 102, 101, 100, 105))
+    assert parse("item replace entity @s player.cursor with stone")[0].slot.ids == (499,)
+    assert "Unknown slot" in parse("item replace entity @s horse.armor with stone")[1][0][1]
+    assert parse("item replace entity @s horse.armor with stone", (1, 20, 4))[1] == []
+
+
+def test_item_and_loot_command_forms():
+    cmd, _ = parse("item replace block ~ ~ ~ container.0 from entity @s hotbar.2 ns:mod")
+    assert (cmd.source.kind, cmd.source_slot.ids, cmd.modifier.id) == ("entity", (2,), "ns:mod")
+    cmd, _ = parse('item modify entity @s armor.head {function:"set_count",count:2}')
+    assert cmd.modifier.inline == {"function": "set_count", "count": 2}
+    cmd, _ = parse("loot replace block 1 2 3 container.0 2 mine ~ ~ ~ mainhand")
+    assert (cmd.action, cmd.count, cmd.source, cmd.tool) == ("replace", 2, "mine", "mainhand")
+    cmd, _ = parse("loot insert 0 0 0 fish ns:f ~ ~ ~ stick")
+    assert cmd.table.id == "ns:f" and cmd.tool.id == "minecraft:stick"
+    cmd, _ = parse("loot spawn ~ ~ ~ kill @e[limit=1]")
+    assert cmd.source == "kill" and cmd.entity is not None
+    assert "only one entity" in parse("loot spawn ~ ~ ~ kill @e")[1][0][1]
