@@ -143,35 +143,45 @@ def item_argument(r: Reader) -> ast.ItemArgument:
         return ast.ItemArgument(loc, item_id, tag=tag)
     components: list = []
     removed: list[str] = []
-    if r.peek() == "[":
-        r.pos += 1
+    seen: set[str] = set()
+
+    def one() -> None:
+        negated = r.peek() == "!"
+        if negated:
+            r.pos += 1
+        start = r.pos
+        name = _component_id(r)
+        _check_component(r, name, start)
+        if name in seen:
+            r.fail(f"component '{name}' given twice", start)
+        seen.add(name)
         r.skip_ws()
-        seen: set[str] = set()
-        while r.peek() != "]":
-            negated = r.peek() == "!"
-            if negated:
-                r.pos += 1
-            start = r.pos
-            name = _component_id(r)
-            _check_component(r, name, start)
-            if name in seen:
-                r.fail(f"component '{name}' given twice", start)
-            seen.add(name)
-            r.skip_ws()
-            if negated:
-                removed.append(name)
-            else:
-                r.expect("=")
-                r.skip_ws()
-                components.append((name, value(r)))
-            r.skip_ws()
-            if r.peek() == ",":
-                r.pos += 1
-                r.skip_ws()
-            elif r.peek() != "]":
-                r.fail(f"expected ',' or ']' in the item's components, got {r.found()}")
-        r.pos += 1
+        if negated:
+            removed.append(name)
+            return
+        r.expect("=")
+        r.skip_ws()
+        components.append((name, value(r)))
+
+    _bracketed(r, one, "the item's components")
     return ast.ItemArgument(loc, item_id, tuple(components), tuple(removed))
+
+
+def _bracketed(r: Reader, one, what: str) -> None:
+    """``[one, one, ...]`` when the cursor is at ``[`` (whitespace allowed around each)."""
+    if r.peek() != "[":
+        return
+    r.pos += 1
+    r.skip_ws()
+    while r.peek() != "]":
+        one()
+        r.skip_ws()
+        if r.peek() == ",":
+            r.pos += 1
+            r.skip_ws()
+        elif r.peek() != "]":
+            r.fail(f"expected ',' or ']' in {what}, got {r.found()}")
+    r.pos += 1
 
 
 def _component_id(r: Reader) -> str:
@@ -217,18 +227,7 @@ def item_predicate(r: Reader) -> ast.ItemPredicate:
         tag = compound(r) if r.peek() == "{" else None
         return ast.ItemPredicate(loc, item_id, is_tag, tag=tag)
     groups: list = []
-    if r.peek() == "[":
-        r.pos += 1
-        r.skip_ws()
-        while r.peek() != "]":
-            groups.append(_any_of(r))
-            r.skip_ws()
-            if r.peek() == ",":
-                r.pos += 1
-                r.skip_ws()
-            elif r.peek() != "]":
-                r.fail(f"expected ',' or ']' in the item predicate, got {r.found()}")
-        r.pos += 1
+    _bracketed(r, lambda: groups.append(_any_of(r)), "the item predicate")
     return ast.ItemPredicate(loc, item_id, is_tag, tuple(groups))
 
 
