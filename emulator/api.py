@@ -64,6 +64,7 @@ class Emulator:
         profile starts again too."""
         self.packs = packs
         self.state = world_entities.new_state(self.shuffle)
+        self.state.version = packs.version
         stacks = CallStacks() if self.records_calls else None
         if stacks is not None:
             self.backend.record_calls(stacks, self.trace)

@@ -10,17 +10,17 @@ from emulator.world import inventories, loot
 from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
-from emulator.world.items import ItemStack, create, matches, to_nbt
+from emulator.world.items import ItemStack, create, matches
 from emulator.world.loot_context import LootContext
 from mcfunction_parser import ast
-from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short
+from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 
 from . import entities
 from .entities import executor, world_source
 
 
 def _version(env):
-    return env.state.resources.version
+    return env.state.version
 
 
 def _test(env, predicate: ast.ItemPredicate | None):
@@ -42,12 +42,7 @@ def _players(env, target, ctx) -> list[Entity]:
 
 
 def _drop(env, pos, stack: ItemStack, nbt: Compound | None = None) -> Entity:
-    """An item entity with ItemEntity's random motion (the emulator's seeded random source)."""
-    rng = env.state.resources.random
-    data = Compound(Item=to_nbt(stack, _version(env)), PickupDelay=Short(10), Age=Short(0), Health=Short(5))
-    data["Motion"] = List([Double(rng.random() * 0.2 - 0.1), Double(0.2), Double(rng.random() * 0.2 - 0.1)])
-    data.update(nbt or {})
-    return env.state.entities.summon("minecraft:item", pos, data)
+    return inventories.drop_item(env.state.entities, pos, stack, _version(env), env.state.resources.random, nbt)
 
 
 # ---------------------------------------------------------------------- give / clear
@@ -190,7 +185,7 @@ def count_items(env, cond: ast.IfItems, ctx) -> int:
 # ---------------------------------------------------------------------- loot
 def loot_context(env, ctx, **parts) -> LootContext:
     state = env.state
-    return LootContext(state.resources.random, state.resources, this=executor(state, ctx), origin=ctx.pos,
+    return LootContext(state.resources.random, state.resources, state.version, this=executor(state, ctx), origin=ctx.pos,
                        daytime=state.daytime, scores=state.scoreboard.get,
                        storage=lambda sid: state.storage.get(sid, Compound()), **parts)
 
@@ -238,9 +233,11 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
         return loot.roll_table(_table(env, cmd.table), lctx)
     if cmd.source == "kill":
         victim = entities.single(env.state, cmd.entity, ctx)
+        if victim.type in inventories.NOT_LIVING:  # only living entities have a loot table
+            raise CommandFailure("commands.drop.no_loot_table", victim.display_name)
         table_id = victim.data.get("DeathLootTable") or "minecraft:entities/" + victim.type.split(":", 1)[-1]
         lctx = loot_context(env, ctx, killer=executor(env.state, ctx))
-        lctx.this, lctx.origin = victim, victim.pos
+        lctx.this = victim
         return loot.roll_table(_vanilla_table(env, str(table_id)), lctx)
     pos = block_pos(source, cmd.pos)
     block = env.state.blocks.get(pos)

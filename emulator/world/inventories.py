@@ -25,6 +25,8 @@ API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 ar
   fit), ``clear_or_count(test, max_count)`` (ClearInventoryCommands), ``selected`` (the held slot).
 - ``selected_item(data)``: the held stack's NBT for ``SelectedItem`` (None when empty).
 - ``default_block_entity(block_id)``: the block entity a container gets when placed (``Items: []``).
+- ``drop_item(store, pos, stack, version, rng, extra)``: an item entity (what ``give`` drops, ``loot
+  spawn`` makes, a player would drop).
 
 Sources (decompiled 1.21): world/entity/player/Player.java and Inventory.java (getSlot, add,
 getSlotWithRemainingSpace, save), world/entity/LivingEntity.java (getSlot), world/entity/Mob.java
@@ -37,7 +39,8 @@ from __future__ import annotations
 import weakref
 from collections.abc import Callable
 
-from mcfunction_parser.nbt import Byte, Compound, Int, List
+from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, Short
+from emulator.world.errors import CommandFailure
 from emulator.world.items import EMPTY, ItemStack, from_nbt, to_nbt
 from emulator.world.nbt_ops import copy_tag
 
@@ -47,7 +50,7 @@ ARMOR_SLOTS = {"feet": 100, "legs": 101, "chest": 102, "head": 103}
 ARMOR = {100: "feet", 101: "legs", 102: "chest", 103: "head"}
 PLAYER_INVENTORY_SIZE, ENDER_SIZE = 36, 27
 _OLD_PLAYER_SLOTS = {OFFHAND: -106, 100: 100, 101: 101, 102: 102, 103: 103}
-_NOT_LIVING = frozenset("minecraft:" + n for n in (
+NOT_LIVING = frozenset("minecraft:" + n for n in (
     "marker item item_frame glow_item_frame item_display block_display text_display interaction "
     "area_effect_cloud falling_block tnt arrow spectral_arrow trident snowball egg ender_pearl "
     "potion experience_bottle experience_orb fireball small_fireball dragon_fireball wither_skull "
@@ -59,7 +62,14 @@ _NOT_LIVING = frozenset("minecraft:" + n for n in (
     for k in ("boat", "chest_boat", "raft", "chest_raft"))
 _SINGLE_ITEM = {"minecraft:item": "Item", "minecraft:item_frame": "Item", "minecraft:glow_item_frame": "Item",
                 "minecraft:item_display": "item"}
-_ENTITY_CONTAINERS = {"minecraft:chest_minecart": 27, "minecraft:hopper_minecart": 5}
+_ENTITY_CONTAINERS = {"minecraft:chest_minecart": 27, "minecraft:hopper_minecart": 5, "minecraft:chest_boat": 27,
+                      **{f"minecraft:{w}_chest_boat": 27 for w in "oak spruce birch jungle acacia dark_oak mangrove "
+                         "cherry pale_oak".split()}, "minecraft:bamboo_chest_raft": 27}
+# slots of entities whose own inventories are not modelled (said so when used): villagers' 300-307,
+# horses' saddle 400, chest 499 and 500-514
+_UNMODELLED = {**{f"minecraft:{n}": range(300, 308) for n in ("villager", "wandering_trader")},
+               **{f"minecraft:{n}": range(400, 515) for n in (
+                   "horse donkey mule llama trader_llama camel skeleton_horse zombie_horse").split()}}
 
 _COLOURS = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown "
             "green red black").split()
@@ -198,8 +208,10 @@ def _equipment_slot(data: Compound, slot: int, version, player: bool) -> SlotAcc
         return None
     if _new_layout(version):
         return _key_slot(_sub_compound(data, "equipment"), names[slot], version)
-    if player:
-        return _list_slot(data, "Inventory", _OLD_PLAYER_SLOTS[slot], version) if slot in _OLD_PLAYER_SLOTS else None
+    if player:  # Player.setItemSlot ignores the body slot before 1.21.5, and the set still succeeds
+        if slot == BODY:
+            return SlotAccess(EMPTY.copy, lambda stack: None)
+        return _list_slot(data, "Inventory", _OLD_PLAYER_SLOTS[slot], version)
     if slot in (MAINHAND, OFFHAND):
         return _index_slot(data, "HandItems", slot - MAINHAND, 2, version)
     if slot == BODY:
@@ -224,8 +236,10 @@ def entity_slot(entity, slot: int, version) -> SlotAccess | None:
         return _key_slot(lambda create: data, _SINGLE_ITEM[entity.type], version) if slot == 0 else None
     if entity.type in _ENTITY_CONTAINERS:
         return _list_slot(data, "Items", slot, version) if 0 <= slot < _ENTITY_CONTAINERS[entity.type] else None
-    if entity.type in _NOT_LIVING:
+    if entity.type in NOT_LIVING:
         return None
+    if slot in _UNMODELLED.get(entity.type, ()):
+        raise CommandFailure("dpemu.unsupported", f"slot {slot} of {entity.type}", report=True)
     return _equipment_slot(data, slot, version, player=False)
 
 
@@ -334,3 +348,12 @@ class PlayerInventory:
 
 def player_inventory(player, version) -> PlayerInventory:
     return PlayerInventory(player, version)
+
+
+def drop_item(store, pos, stack: ItemStack, version, rng, extra: Compound | None = None):
+    """An item entity holding ``stack`` at ``pos`` (ItemEntity's constructor: a pickup delay of 10,
+    random motion drawn from ``rng``); ``extra`` NBT overrides (``PickupDelay``, ``Owner`` ...)."""
+    data = Compound(Item=to_nbt(stack, version), PickupDelay=Short(10), Age=Short(0), Health=Short(5))
+    data["Motion"] = List([Double(rng.random() * 0.2 - 0.1), Double(0.2), Double(rng.random() * 0.2 - 0.1)])
+    data.update(extra or {})
+    return store.summon("minecraft:item", pos, data)

@@ -248,7 +248,7 @@ def _set_custom_data(f, stack, ctx):
 
 def _text(value, ctx: LootContext):
     """A text component as an item stores it: JSON text before 1.21.5, an NBT value from then."""
-    if tuple(ctx.resources.version) >= (1, 21, 5):
+    if tuple(ctx.version) >= (1, 21, 5):
         return to_tag(value)
     return String(json.dumps(value, separators=(",", ":"), ensure_ascii=False))
 
@@ -358,9 +358,9 @@ def _set_contents(f, stack, ctx):
         for chosen, item in choices:
             made.extend(_create(chosen, item, ctx))
     if component == "minecraft:container":
-        value = List(Compound(slot=Int(i), item=to_nbt(s, ctx.resources.version)) for i, s in enumerate(made[:27]))
+        value = List(Compound(slot=Int(i), item=to_nbt(s, ctx.version)) for i, s in enumerate(made[:27]))
     elif component in ("minecraft:bundle_contents", "minecraft:charged_projectiles"):
-        value = List(to_nbt(s, ctx.resources.version) for s in made)
+        value = List(to_nbt(s, ctx.version) for s in made)
     else:
         raise not_modelled("set_contents component", component)
     set_component(stack, component, value)
@@ -384,7 +384,7 @@ def _set_enchantments(f, stack, ctx):
             levels[name] = Int(min(level, 255))
         else:
             levels.pop(name, None)
-    _put_enchantments(stack, levels, ctx.resources.version)
+    _put_enchantments(stack, levels, ctx.version)
     return stack
 
 
@@ -399,7 +399,7 @@ def _enchant_randomly(f, stack, ctx):
         raise not_modelled("enchantment", name)
     levels = enchantment_levels(stack)
     levels[name] = Int(1 + ctx.random.randrange(MAX_LEVELS[name]))
-    _put_enchantments(stack, levels, ctx.resources.version)
+    _put_enchantments(stack, levels, ctx.version)
     return stack
 
 
@@ -407,7 +407,7 @@ def _enchanted_count_increase(f, stack, ctx):
     """EnchantedCountIncreaseFunction / LootingEnchantFunction: count + level x number, limited."""
     weapon = None
     if ctx.killer is not None:
-        access = entity_slot(ctx.killer, MAINHAND, ctx.resources.version)
+        access = entity_slot(ctx.killer, MAINHAND, ctx.version)
         weapon = access.get() if access is not None else None
     level = enchantment_level(weapon, f.get("enchantment", "minecraft:looting"))
     if level == 0:

@@ -37,6 +37,7 @@ def not_modelled(kind: str, name: str) -> CommandFailure:
 class LootContext:
     random: random.Random
     resources: Any  # emulator.world.resources.Resources
+    version: tuple[int, int, int] = (1, 21, 11)  # the release (item NBT and text forms follow it)
     this: Any = None
     killer: Any = None
     tool: ItemStack | None = None

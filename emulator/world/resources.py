@@ -1,9 +1,8 @@
 """The data-driven resources of the loaded packs that commands read: loot tables, item modifiers
-and item tags, and the game version the packs run as (which decides the NBT layout of items).
+and item tags.
 
 ``Resources.from_packs(packs)`` takes them from :func:`mcfunction_parser.load_packs`' result
-(only files that decoded: the game skips the others); ``Resources()`` is an empty world at the
-newest release. ``random`` is the seeded source loot rolls and dropped items draw from (seed 0;
+(only files that decoded: the game skips the others); ``Resources()`` is an empty world. ``random`` is the seeded source loot rolls and dropped items draw from (seed 0;
 not the game's own random sequence). ``item_tag(tag_id)`` is the one place an item tag is resolved: the packs' own
 ``tags/item`` files (nested tags flattened, ``replace`` honoured); the game's vanilla item tags
 are not shipped, so a vanilla tag a pack does not define is empty.
@@ -15,7 +14,6 @@ from dataclasses import dataclass, field
 
 from mcfunction_parser.ast import FunctionTag
 from mcfunction_parser.pack.tags import resolve_tag
-from mcfunction_parser.pack.versions import LATEST_RELEASE
 
 
 class _AnyItem:
@@ -27,7 +25,6 @@ class _AnyItem:
 
 @dataclass
 class Resources:
-    version: tuple[int, int, int] = LATEST_RELEASE
     loot_tables: dict = field(default_factory=dict)  # id -> JSON value
     item_modifiers: dict = field(default_factory=dict)
     item_tags: dict[str, FunctionTag] = field(default_factory=dict)
@@ -38,7 +35,7 @@ class Resources:
     @classmethod
     def from_packs(cls, packs) -> "Resources":
         tables, modifiers = getattr(packs, "loot_tables", {}), getattr(packs, "item_modifiers", {})
-        found = cls(tuple(getattr(packs, "version", LATEST_RELEASE)), {k: d.value for k, d in tables.items()},
+        found = cls({k: d.value for k, d in tables.items()},
                     {k: d.value for k, d in modifiers.items()}, dict(getattr(packs, "item_tags", {})))
         for kind, docs in (("loot_table", tables), ("item_modifier", modifiers)):
             found.paths.update((f"{kind} {k}", d.path) for k, d in docs.items())

@@ -387,7 +387,8 @@ class WorldState:
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     bossbars: BossBars = field(default_factory=BossBars)
     tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.vm.entity_arrays)
-    resources: Resources = field(default_factory=Resources)  # loot tables, item modifiers, item tags, version
+    version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)
+    resources: Resources = field(default_factory=Resources)  # loot tables, item modifiers, item tags
 
     def emit(self, kind: str, text: str, loc: Loc | None = None, receivers: tuple[str, ...] = ()) -> None:
         self.log.append(LogEntry(self.tick, kind, text, loc, receivers))

@@ -145,3 +145,26 @@ def test_equipment_layout_of_1_21_5(tmp_path):
     zombie = next(e for e in emu.state.entities.entities if e.type == "minecraft:zombie")
     assert to_snbt(entity_nbt(zombie)["equipment"]) == '{head:{id:"minecraft:iron_helmet",count:1}}'
     assert entity_nbt(_player(emu))["equipment"]["offhand"]["id"] == "minecraft:shield"
+
+
+def test_kill_loot_uses_the_entity_table_and_its_killer(tmp_path):
+    # LootCommand.dropKillLoot: the entity's loot table (DeathLootTable), the executor as the killer;
+    # an entity that is not living has none; a vanilla table no pack defines is not shipped
+    drops = {"pools": [{"rolls": 1, "conditions": [{"condition": "killed_by_player"}],
+                        "entries": [{"type": "item", "name": "rotten_flesh"}]}]}
+    pack = write_pack(tmp_path / "pack", {
+        "t:main": SETUP + 'summon zombie 0 64 0 {DeathLootTable:"t:zdrops",Tags:["z"]}\nsummon marker 0 64 0\n'
+        "execute store result score #server v run loot give Steve kill @e[tag=z,limit=1]\n"
+        "execute as Steve store result score #player v run loot give Steve kill @e[tag=z,limit=1]\n"
+        "execute store success score #marker v run loot give Steve kill @e[type=marker,limit=1]\n"
+        "summon cow 0 64 0\nloot give Steve kill @e[type=cow,limit=1]\n"})
+    (pack / "data/t/loot_table").mkdir(parents=True)
+    (pack / "data/t/loot_table/zdrops.json").write_text(json.dumps(drops))
+    for backend in ("python", "numba"):
+        emu = Emulator(backend=backend)
+        emu.load(pack)
+        emu.add_player("Steve", (0.0, 64.0, 0.0))
+        emu.call("t:main")
+        assert _scores(emu) == {"#server": 0, "#player": 1, "#marker": 0}
+        assert [d.message for d in emu.diagnostics] == [
+            "the game's own loot table: 'minecraft:entities/cow' is not modelled by the emulator"]

@@ -135,7 +135,7 @@ def test_equipment_is_saved_where_the_version_saves_it(version, where):
 
 # ---------------------------------------------------------------------- loot
 def context(seed=0, version=V121, **tables):
-    return LootContext(random.Random(seed), Resources(version=version, loot_tables=tables))
+    return LootContext(random.Random(seed), Resources(loot_tables=tables), version)
 
 
 def roll(table, seed=0, **tables):
