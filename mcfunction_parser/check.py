@@ -177,6 +177,7 @@ def lint(loaded: LoadedPacks) -> list[Diagnostic]:
     facts = _gather(loaded)
     _check_calls(loaded, facts, found)
     _check_predicates(loaded, facts, found)
+    _check_resources(loaded, facts, found)
     _check_objectives(loaded, facts, found)
     _check_unreferenced(loaded, facts, found)
     return found
@@ -224,6 +225,7 @@ class _Facts:
     predicates: list[tuple[str, Loc]] = field(default_factory=list)  # predicate named, where
     created: set[str] = field(default_factory=set)  # objectives added (by macro lines too)
     uses: dict[str, list[Loc]] = field(default_factory=dict)  # objective -> where used, in order
+    resources: list[tuple[str, str, Loc]] = field(default_factory=list)  # (loot_table|item_modifier, id, where)
 
     def use(self, objective: str, loc: Loc) -> None:
         self.uses.setdefault(objective, []).append(loc)
@@ -321,10 +323,20 @@ def _objective_uses(names: tuple[str, ...]) -> Callable:
     return record
 
 
+def _record_resources(node: ast.Command, function: ast.Function, facts: _Facts) -> None:
+    """Loot tables and item modifiers named by id (inline ones are checked where they are read)."""
+    if isinstance(node, ast.Loot) and node.table is not None and node.table.id is not None:
+        facts.resources.append(("loot table", node.table.id, node.loc))
+    modifier = getattr(node, "modifier", None)
+    if modifier is not None and modifier.id is not None:
+        facts.resources.append(("item modifier", modifier.id, node.loc))
+
+
 _RECORDS: dict[type, Callable] = {
     ast.FunctionCall: _record_call, ast.Schedule: _record_call, ast.IfFunction: _record_call,
     ast.MacroLine: _record_macro_line, ast.Return: _record_return, ast.IfPredicate: _record_if_predicate,
     ast.SelectorArg: _record_selector_arg, ast.ObjectivesAdd: _record_objective_add,
+    ast.Loot: _record_resources, ast.ItemModify: _record_resources, ast.ItemReplace: _record_resources,
 }
 
 
@@ -464,6 +476,16 @@ def _check_predicates(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic
     for name, loc in facts.predicates:
         if _RESOURCE_LOCATION.fullmatch(name) and name not in loaded.predicates:
             found.append(_at(loaded, ERROR, f"unknown predicate {name}", loc))
+
+
+def _check_resources(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
+    """A loot table or item modifier named in a namespace the loaded packs define must be loaded
+    (the command fails when it runs); the game's own (``minecraft:``) tables are not shipped here."""
+    namespaces = {fid.split(":", 1)[0] for fid in loaded.functions} - {"minecraft"}
+    loaded_ids = {"loot table": loaded.loot_tables, "item modifier": loaded.item_modifiers}
+    for kind, name, loc in facts.resources:
+        if name.split(":", 1)[0] in namespaces and name not in loaded_ids[kind]:
+            found.append(_at(loaded, ERROR, f"unknown {kind} {name}", loc))
 
 
 def _check_objectives(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:

@@ -6,7 +6,9 @@ ItemCommands.java, LootCommand.java, ExecuteCommand.java (countItems), world/ent
 """
 from __future__ import annotations
 
-from emulator.world import inventories, loot
+import json
+
+from emulator.world import inventories, loot, text_components
 from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
@@ -61,7 +63,8 @@ def give(env, cmd: ast.Give, ctx) -> int:
         while remaining > 0:
             size = min(sample.max_stack_size, remaining)
             remaining -= size
-            left = inventory.add(create(cmd.item, size))
+            left = create(cmd.item, size)
+            inventory.add(left)  # GiveCommand drops whatever is left of the stack
             if not left.is_empty:
                 x, y, z = player.pos
                 _drop(env, (x, y + float(player.eye_height) - 0.3, z), left,
@@ -187,7 +190,15 @@ def loot_context(env, ctx, **parts) -> LootContext:
     state = env.state
     return LootContext(state.resources.random, state.resources, state.version, this=executor(state, ctx), origin=ctx.pos,
                        daytime=state.daytime, scores=state.scoreboard.get,
-                       storage=lambda sid: state.storage.get(sid, Compound()), **parts)
+                       storage=lambda sid: state.storage.get(sid, Compound()),
+                       resolve_text=lambda component, entity: _resolved(env, component, entity), **parts)
+
+
+def _resolved(env, component, entity: Entity):
+    """ComponentUtils.updateForEntity as ``entity`` (selectors from its position, ``@s`` itself)."""
+    entity_ctx = entities.entity_context(env.state, entity)
+    select = text_components.finder(entities.parse_target, lambda t: entities.select(env.state, t, entity_ctx))
+    return json.loads(text_components.resolved_text(json.dumps(component), env.state, select, entity))
 
 
 def _table(env, ref: ast.ResourceOrInline) -> dict:
@@ -262,8 +273,7 @@ def loot_command(env, cmd: ast.Loot, ctx) -> int:
         given = 0
         for stack in items:
             for player in players:
-                left = inventories.player_inventory(player, _version(env)).add(stack.copy())
-                given += left.count < stack.count
+                given += inventories.player_inventory(player, _version(env)).add(stack.copy())
         return given
     if cmd.action == "insert":
         holder = _container(env, cmd.destination, ctx, source=False)

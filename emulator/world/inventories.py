@@ -21,8 +21,8 @@ API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 ar
 - ``container(blocks, pos, version)``: the block's :class:`Container` (``size``, ``slot(i)``) or
   None when the block is no container.
 - ``player_inventory(player, version)``: :class:`PlayerInventory`: ``add(stack)`` (Inventory.add:
-  fills matching stacks, the selected slot and offhand first, then free slots; returns what did not
-  fit), ``clear_or_count(test, max_count)`` (ClearInventoryCommands), ``selected`` (the held slot).
+  fills matching stacks, the selected slot and offhand first, then free slots; ``stack`` keeps
+  what did not fit; the game's boolean), ``clear_or_count(test, max_count)`` (ClearInventoryCommands), ``selected`` (the held slot).
 - ``selected_item(data)``: the held stack's NBT for ``SelectedItem`` (None when empty).
 - ``default_block_entity(block_id)``: the block entity a container gets when placed (``Items: []``).
 - ``drop_item(store, pos, stack, version, rng, extra)``: an item entity (what ``give`` drops, ``loot
@@ -297,32 +297,46 @@ class PlayerInventory:
     def _free_slot(self) -> int:
         return next((i for i in range(PLAYER_INVENTORY_SIZE) if self._access(i).get().is_empty), -1)
 
-    def add(self, stack: ItemStack) -> ItemStack:
-        """Inventory.add: what is left of ``stack`` (empty when all of it fit)."""
-        stack = stack.copy()
+    def add(self, stack: ItemStack) -> bool:
+        """Inventory.add: moves what fits out of ``stack`` (its count drops to what is left). True
+        as the game answers: when the last pass moved something (or the player has infinite
+        materials, whose inventory takes everything); a damaged item only into a free slot."""
+        if stack.is_empty:
+            return False
+        creative = self.player.gamemode == "creative"
         if stack.is_damaged():
             free = self._free_slot()
             if free >= 0:
-                self._access(free).set(stack)
-                return EMPTY.copy()
-            return stack
-        while not stack.is_empty:
-            index = self._slot_with_room(stack)
-            if index < 0:
-                index = self._free_slot()
-            if index < 0:
+                self._access(free).set(stack.copy())
+            elif not creative:
+                return False
+            stack.count = 0
+            return True
+        while True:
+            before = stack.count
+            self._add_resource(stack)
+            if stack.is_empty or stack.count >= before:
                 break
-            access = self._access(index)
-            there = access.get()
-            if there.is_empty:
-                there = ItemStack(stack.id, 0, copy_tag(stack.patch), copy_tag(stack.tag))
-            moved = min(stack.count, stack.max_stack_size - there.count)
-            if moved <= 0:
-                break
-            there.count += moved
-            stack.count -= moved
-            access.set(there)
-        return stack if not stack.is_empty else EMPTY.copy()
+        if stack.count == before and creative:
+            stack.count = 0
+            return True
+        return stack.count < before
+
+    def _add_resource(self, stack: ItemStack) -> None:
+        """Inventory.addResource: onto the first stack with room, else into the first free slot."""
+        index = self._slot_with_room(stack)
+        if index < 0:
+            index = self._free_slot()
+        if index < 0:
+            return
+        access = self._access(index)
+        there = access.get()
+        if there.is_empty:
+            there = ItemStack(stack.id, 0, copy_tag(stack.patch), copy_tag(stack.tag))
+        moved = max(0, min(stack.count, stack.max_stack_size - there.count))
+        there.count += moved
+        stack.count -= moved
+        access.set(there)
 
     def clear_or_count(self, test: Callable[[ItemStack], bool], max_count: int) -> int:
         """Inventory.clearOrCountMatchingItems then the crafting grid and the cursor: with

@@ -254,9 +254,16 @@ def _text(value, ctx: LootContext):
 
 
 def _set_name(f, stack, ctx):
+    """SetNameFunction: with ``entity``, the name is resolved as that entity (its scores, NBT and
+    selectors from its position); without it, kept as written."""
     target = _id(f.get("target", "custom_name"))
-    if "name" in f:
-        set_component(stack, target, _text(f["name"], ctx))
+    if "name" not in f:
+        return stack
+    name = f["name"]
+    entity = ctx.entity(f["entity"]) if "entity" in f else None
+    if entity is not None and ctx.resolve_text is not None:
+        name = ctx.resolve_text(name, entity)
+    set_component(stack, target, _text(name, ctx))
     return stack
 
 

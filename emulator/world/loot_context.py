@@ -46,6 +46,8 @@ class LootContext:
     explosion_radius: float | None = None
     daytime: int = 0
     scores: Callable[[str, str], int | None] = lambda holder, objective: None
+    # a text component resolved for an entity (ComponentUtils.updateForEntity); None: kept as written
+    resolve_text: Callable[[Any, Any], Any] | None = None
     storage: Callable[[str], Compound] = lambda storage_id: Compound()
     depth: int = 0
     visited: list = field(default_factory=list)

@@ -168,3 +168,24 @@ def test_kill_loot_uses_the_entity_table_and_its_killer(tmp_path):
         assert _scores(emu) == {"#server": 0, "#player": 1, "#marker": 0}
         assert [d.message for d in emu.diagnostics] == [
             "the game's own loot table: 'minecraft:entities/cow' is not modelled by the emulator"]
+
+
+def test_set_name_resolved_as_the_entity(tmp_path):
+    # SetNameFunction with "entity": ComponentUtils.updateForEntity as that entity (the command's
+    # executor is "this"; run as the server there is none and the name stays as written); the library idiom
+    # of an inline table into an item display's contents, read back through its NBT
+    emu = run_both(tmp_path, {"t:main": SETUP + "scoreboard players set #x v 42\n"
+                              'data modify storage t:s msg set value "hello"\n'
+                              "summon item_display -30000000 0 1600 {UUID:[I;181,0,0,3]}\n"
+                              'execute as Steve run loot replace entity B5-0-0-0-3 contents loot {pools:[{rolls:1,'
+                              'entries:[{type:"item",name:"egg",functions:[{function:"set_name",entity:"this",name:['
+                              '{storage:"t:s",nbt:"msg"},'
+                              '{score:{name:"#x",objective:"v"}}]}]}]}]}\n'
+                              'data modify storage t:s name set from entity B5-0-0-0-3 item.components."minecraft:custom_name"\n'
+                              'loot replace entity B5-0-0-0-3 contents loot {pools:[{rolls:1,entries:[{type:"item",'
+                              'name:"egg",functions:[{function:"set_name",name:{score:{name:"#x",objective:"v"}}}]}]}]}\n'
+                              'data modify storage t:s raw set from entity B5-0-0-0-3 item.components."minecraft:custom_name"\n'},
+                   players=STEVE)
+    storage = emu.state.storage["t:s"]
+    assert json.loads(storage["name"]) == [{"text": "hello"}, {"text": "42"}]
+    assert json.loads(storage["raw"]) == {"score": {"name": "#x", "objective": "v"}}  # no entity: as written

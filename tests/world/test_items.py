@@ -89,8 +89,8 @@ def test_inventory_add_fills_matching_stacks_then_free_slots():
     inv = inventories.player_inventory(player, V121)
     inventories.entity_slot(player, 4, V121).set(items.ItemStack("minecraft:stone", 60))
     inventories.entity_slot(player, 1, V121).set(items.ItemStack("minecraft:stone", 10))
-    left = inv.add(items.ItemStack("minecraft:stone", 70))
-    assert left.is_empty
+    stack = items.ItemStack("minecraft:stone", 70)
+    assert inv.add(stack) and stack.is_empty
     counts = {s: inventories.entity_slot(player, s, V121).get().count for s in range(4)}
     assert inventories.entity_slot(player, 4, V121).get().count == 64
     assert counts == {0: 12, 1: 64, 2: 0, 3: 0}
@@ -102,6 +102,9 @@ def test_clear_counts_with_zero_and_removes_up_to_the_maximum():
     player = _player()
     inv = inventories.player_inventory(player, V121)
     inv.add(items.ItemStack("minecraft:stone", 100))
+    full = items.ItemStack("minecraft:dirt", 64 * 40)
+    # the last pass moved nothing, so Inventory.add answers false though 34 stacks went in
+    assert not inv.add(full) and full.count == 64 * 6
     is_stone = lambda s: s.id == "minecraft:stone"  # noqa: E731
     assert inv.clear_or_count(is_stone, 0) == 100
     assert inv.clear_or_count(is_stone, 70) == 70
@@ -228,3 +231,13 @@ def test_the_same_seed_gives_the_same_loot():
     table = {"pools": [{"rolls": {"min": 1, "max": 5}, "entries": [{"type": "item", "name": "a"},
                                                                   {"type": "item", "name": "b"}]}]}
     assert roll(table, 7) == roll(table, 7)
+
+
+def test_a_creative_inventory_takes_everything():
+    # Inventory.add: hasInfiniteMaterials() sets the count to 0 and answers true when nothing fit
+    player = _player()
+    player.gamemode = "creative"
+    inv = inventories.player_inventory(player, V121)
+    assert inv.add(items.ItemStack("minecraft:dirt", 64 * 36))
+    extra = items.ItemStack("minecraft:stone", 5)
+    assert inv.add(extra) and extra.is_empty

@@ -50,3 +50,13 @@ def test_types_are_checked_for_the_version(tmp_path):
     root = write_pack(tmp_path / "p", {"a/item_modifier/m.json": json.dumps({"function": "set_nbt", "tag": "{}"})})
     assert [e.message for e in load_packs([root]).errors] == ["item function type 'set_nbt' does not exist in this version"]
     assert load_packs([root], mc_version="1.20.4").errors == []
+
+
+def test_check_names_loot_tables_and_modifiers_that_are_not_loaded(tmp_path):
+    from mcfunction_parser.check import check_packs
+    root = write_pack(tmp_path / "p", {"a/loot_table/x.json": json.dumps(GOOD),
+                                       "a/function/f.mcfunction": "loot give @a loot a:x\nloot give @a loot a:y\n"
+                                       "item modify entity @s weapon a:m\nloot give @a loot minecraft:chests/x\n"
+                                       "loot give @a loot other:z\n"})
+    errors = [(e.line, e.message) for e in check_packs([root]).of("error")]
+    assert errors == [(2, "unknown loot table a:y"), (3, "unknown item modifier a:m")]
