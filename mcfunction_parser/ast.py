@@ -751,7 +751,8 @@ class ItemArgument:
 @dataclass(frozen=True, slots=True)
 class ComponentTest:
     """One test inside an item predicate's brackets: ``component`` (exists), ``component=value``
-    (the component equals the value), ``predicate~value`` (a sub-predicate) or ``count=RANGE``;
+    (the component equals the value), ``predicate~value`` (a sub-predicate); ``count`` with either
+    takes an int or ``{min, max}``;
     ``negated`` for a leading ``!``."""
 
     name: str

@@ -4,7 +4,8 @@
   or ``id{tag}`` (older releases).
 - ``item_predicate(r)``: ItemPredicateArgument: ``id``, ``#tag`` or ``*`` (``*`` from 1.20.5) then
   ``[test,test|test,!test]`` where a test is ``component``, ``component=value``,
-  ``predicate~value`` or ``count=RANGE`` (1.20.5+), or ``{nbt}`` (older).
+  ``predicate~value`` or ``count=N`` / ``count={min,max}`` (1.20.5+), or ``{nbt}`` (older). Item
+  ids are checked against the release's item registry (:func:`.game_objects.check_id`).
 - ``slot(r, ranges=False)``: SlotArgument (one slot) or, with ``ranges``, SlotsArgument
   (``container.*``, ``armor.*`` ...): the name and the slot ids it stands for (SlotRanges).
 - ``COMPONENTS``: data component ids with the releases that have them (DataComponents);
@@ -20,7 +21,8 @@ from __future__ import annotations
 import re
 
 from . import ast
-from .primitives import int_range, resource_location
+from .game_objects import check_id
+from .primitives import resource_location
 from .reader import Reader
 from .snbt import compound, value
 
@@ -128,7 +130,7 @@ def slot(r: Reader, ranges: bool = False) -> ast.SlotArgument:
     entry = SLOTS.get(name)
     if (entry is None or not entry[1] <= r.version or (entry[2] is not None and r.version >= entry[2])
             or (len(entry[0]) > 1 and not ranges) or (name.endswith(".*") and not ranges)):
-        r.fail(f"Unknown slot '{name}'" if name else f"expected a slot, got {r.found()}", start)
+        r.fail(f"unknown slot '{name}'" if name else f"expected a slot, got {r.found()}", start)
     return ast.SlotArgument(name, entry[0])
 
 
@@ -136,8 +138,9 @@ def slot(r: Reader, ranges: bool = False) -> ast.SlotArgument:
 
 def item_argument(r: Reader) -> ast.ItemArgument:
     """``id[components]`` (1.20.5+) or ``id{tag}``; unknown or repeated components fail."""
-    loc = r.loc()
+    loc, start = r.loc(), r.pos
     item_id = resource_location(r, "item")
+    check_id(r, "item", item_id, start)
     if r.version < COMPONENTS_VERSION:
         tag = compound(r) if r.peek() == "{" else None
         return ast.ItemArgument(loc, item_id, tag=tag)
@@ -222,7 +225,9 @@ def item_predicate(r: Reader) -> ast.ItemPredicate:
         r.pos += 1
         item_id = None
     else:
+        start = r.pos
         item_id = resource_location(r, "item")
+        check_id(r, "item", item_id, start)
     if r.version < COMPONENTS_VERSION:
         tag = compound(r) if r.peek() == "{" else None
         return ast.ItemPredicate(loc, item_id, is_tag, tag=tag)
@@ -250,12 +255,9 @@ def _test(r: Reader) -> ast.ComponentTest:
     name = _component_id(r)
     r.skip_ws()
     op = r.peek()
-    if name == "minecraft:count" and op == "=":  # the pseudo-component count=RANGE
-        r.pos += 1
-        r.skip_ws()
-        return ast.ComponentTest(name, "=", int_range(r), negated)
     if op in ("=", "~"):
-        _check_component(r, name, start, sub_predicate=op == "~")
+        if name != "minecraft:count":  # count= and count~ are pseudo ones: an int or {min, max}
+            _check_component(r, name, start, sub_predicate=op == "~")
         r.pos += 1
         r.skip_ws()
         return ast.ComponentTest(name, op, value(r), negated)

@@ -12,7 +12,7 @@ Public API
 - ``to_nbt(stack, version)`` / ``from_nbt(tag)``: ``{id, count, components}`` from 1.20.5,
   ``{id, Count:1b, tag}`` before (ItemStack.save / ItemStack.parse, both forms are read).
 - ``matches(predicate, stack, item_tags)``: ItemPredicateArgument: id / ``#tag`` / ``*``, the
-  component tests (``component``, ``component=value``, ``count=RANGE``, ``custom_data~{...}``,
+  component tests (``component``, ``component=value``, ``count=N|{min,max}``, ``custom_data~{...}``,
   ``damage~{...}``), or the older ``{nbt}`` partial match of the ``tag``. A ``~`` sub-predicate
   the emulator does not model raises ``CommandFailure`` (reported), never a silent false.
 - ``DEFAULTS``: the defaults modelled: ``max_stack_size`` (1, 16 or 64), ``max_damage`` and
@@ -209,8 +209,9 @@ def matches(predicate: ast.ItemPredicate, stack: ItemStack, item_tags) -> bool:
 
 
 def _test(test: ast.ComponentTest, stack: ItemStack) -> bool:
-    if test.name == "minecraft:count" and test.kind == "=":
-        return test.value.contains(stack.count)
+    if test.name == "minecraft:count" and test.kind != "exists":  # MinMaxBounds.Ints: N or {min, max}
+        bounds = _bounds(test.value)
+        return bounds is not None and _within(bounds, stack.count)
     if test.kind == "exists":
         return stack.component(test.name) is not None
     if test.kind == "=":

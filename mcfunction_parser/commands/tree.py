@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from .. import game_objects as objects
-from .. import gamedata, snbt
+from .. import gamedata, items, snbt
 from ..arguments import duration, objective, score_holder, single_score_holder, text_component, vec2, vec3
 from ..ast import GenericCommand
 from ..nbt_path import nbt_path
@@ -215,30 +215,6 @@ def _hex_color(r: Reader, props: dict) -> None:
 _COLORS = ("black", "dark_blue", "dark_green", "dark_aqua", "dark_red", "dark_purple", "gold", "gray",
            "dark_gray", "blue", "green", "aqua", "red", "light_purple", "yellow", "white", "reset")
 _EQUIPMENT = ("mainhand", "offhand", "head", "chest", "legs", "feet", "body", "saddle")
-_SLOT_RANGES = {"container": 54, "hotbar": 9, "inventory": 27, "enderchest": 27, "villager": 8, "horse": 15,
-                "player.crafting": 4}
-_SLOT_WORDS = frozenset(("weapon", "player.cursor", "contents", "horse.saddle", "horse.chest", "armor.body",
-                         "saddle", "horse.armor")) | {f"weapon.{hand}" for hand in ("mainhand", "offhand")} | {
-    f"armor.{part}" for part in ("head", "chest", "legs", "feet", "body")}
-
-
-def _slot(r: Reader, props: dict, many: bool = False) -> None:
-    """SlotArgument (``container.5``, ``weapon.mainhand``); SlotsArgument also takes ``prefix.*``."""
-    start = r.pos
-    word = UNQUOTED.match(r.text, start).group()
-    r.pos += len(word)
-    if many and r.peek() == "*" and word.endswith("."):
-        r.pos += 1
-        if word[:-1] in _SLOT_RANGES or word[:-1] in ("armor", "weapon", "horse", "player"):
-            return
-    if word in _SLOT_WORDS:
-        return
-    prefix, _, index = word.rpartition(".")
-    if prefix in _SLOT_RANGES and index.isdigit() and int(index) < _SLOT_RANGES[prefix]:
-        return
-    r.fail(f"unknown slot {show(word)}", start)
-
-
 def _registry_resource(r: Reader, props: dict) -> None:
     objects.registry_id(r, props.get("registry", "").removeprefix("minecraft:"))
 
@@ -330,8 +306,8 @@ ARGUMENTS = {
     "minecraft:int_range": lambda r, p: int_range(r),
     "minecraft:item_enchantment": lambda r, p: objects.registry_id(r, "enchantment"),
     "minecraft:item_predicate": lambda r, p: objects.item(r, True),
-    "minecraft:item_slot": _slot,
-    "minecraft:item_slots": lambda r, p: _slot(r, p, many=True),
+    "minecraft:item_slot": lambda r, p: items.slot(r),
+    "minecraft:item_slots": lambda r, p: items.slot(r, ranges=True),
     "minecraft:item_stack": lambda r, p: objects.item(r, False),
     "minecraft:loot_modifier": _id_or_inline,
     "minecraft:loot_predicate": _id_or_inline,

@@ -29,8 +29,8 @@ def test_item_argument_with_components_and_removals():
     ("give @s stone[damage=1,damage=2]", 24, "component 'minecraft:damage' given twice"),
     ("give @s stone[fire_resistant={}]", 15, None),  # exists in 1.21.0 (replaced in 1.21.2)
     ("give @s stone 0", 15, "count"),
-    ("item replace entity @s container.* with stone", 24, "Unknown slot 'container.*'"),  # SlotArgument: one slot
-    ("item replace entity @s hotbar.9 with stone", 24, "Unknown slot 'hotbar.9'"),
+    ("item replace entity @s container.* with stone", 24, "unknown slot 'container.*'"),  # SlotArgument: one slot
+    ("item replace entity @s hotbar.9 with stone", 24, "unknown slot 'hotbar.9'"),
     ("item replace entity @s weapon with stone 100", 42, "count"),  # 1..99
     ("clear @e stone", 7, "only players"),
 ])
@@ -59,16 +59,24 @@ def test_older_releases_read_the_nbt_form():
 
 
 def test_item_predicates():
-    # ItemPredicateArgument: #tag or *, tests joined by ',' (all) and '|' (any), '!' negates, '~' sub-predicates
-    cmd, problems = parse("clear @s #ns:t[!damage,custom_data~{a:1b}|count=2..] 0")
+    # ItemPredicateArgument: #tag or *, tests joined by ',' (all) and '|' (any), '!' negates, '~' sub-predicates,
+    # count= / count~ the pseudo component and predicate (PSEUDO_COMPONENTS, PSEUDO_PREDICATES)
+    cmd, problems = parse("clear @s #ns:t[!damage,custom_data~{a:1b}|count={min:2}] 0")
     assert problems == []
     predicate = cmd.item
     assert predicate.is_tag and predicate.id == "ns:t"
     assert predicate.tests[0] == (ast.ComponentTest("minecraft:damage", "exists", None, True),)
     assert [t.kind for t in predicate.tests[1]] == ["~", "="]
-    assert predicate.tests[1][1].value == ast.IntRange(2, None)
+    assert predicate.tests[1][1].value == {"min": 2}  # count: the pseudo component, MinMaxBounds.Ints
     assert parse("clear @s *")[0].item.id is None
     assert "unknown item sub-predicate" in parse("clear @s *[food~{}]")[1][0][1]
+
+
+def test_item_ids_are_checked_against_the_registry():
+    # ItemParser.readItem / ItemPredicateArgument.forElementType: an unknown item fails the command
+    assert parse("give @s mymod:thing")[1] == [(9, "unknown item 'mymod:thing'")]
+    assert parse("clear @s diamondd")[1] == [(10, "unknown item 'minecraft:diamondd'")]
+    assert parse("clear @s #mymod:things")[1] == []  # tags are the packs' to define
 
 
 def test_slot_ranges_only_where_the_version_has_them():
@@ -77,7 +85,7 @@ def test_slot_ranges_only_where_the_version_has_them():
     condition = cmd.subcommands[0]
     assert problems == [] and condition.slots == ast.SlotArgument("armor.*", (103, 102, 101, 100, 105))
     assert parse("item replace entity @s player.cursor with stone")[0].slot.ids == (499,)
-    assert "Unknown slot" in parse("item replace entity @s horse.armor with stone")[1][0][1]
+    assert "unknown slot" in parse("item replace entity @s horse.armor with stone")[1][0][1]
     assert parse("item replace entity @s horse.armor with stone", (1, 20, 4))[1] == []
 
 

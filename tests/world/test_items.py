@@ -61,7 +61,7 @@ def test_nbt_forms_by_version():
     ("minecraft:diamond_sword", True), ("*", True), ("stone", False),
     ("*[damage=3]", True), ("*[damage=4]", False), ("*[!damage]", False), ("*[custom_name]", False),
     ("*[custom_data~{a:1b}]", True), ("*[custom_data~{a:2b}]", False), ("*[damage~{durability:1558}]", True),
-    ("*[count=2..]", False), ("*[count=1]", True), ("*[custom_name|damage=3]", True),
+    ("*[count={min:2}]", False), ("*[count=1]", True), ("*[count~{max:1}]", True), ("*[custom_name|damage=3]", True),
     ("#t:blades", True), ("#t:other", False),
 ])
 def test_item_predicates(text, expected):
