@@ -23,7 +23,7 @@ from corpus import NAMESPACE, write_corpus  # noqa: E402
 
 TARGET_SECONDS, TARGET_GB = 20.0, 2.0
 
-_CHECK = """
+CHECK_SCRIPT = """
 import json, resource, sys, time
 from mcfunction_parser.check import check_releases
 packs = sys.argv[1:]
@@ -35,7 +35,7 @@ print(json.dumps({"seconds": seconds, "peak": peak, "commands": result.commands,
                   "errors": len(result.of("error"))}))
 """
 
-_MECHA = """
+MECHA_SCRIPT = """
 import json, sys, time
 from pathlib import Path
 from mecha import DiagnosticError, Mecha
@@ -68,7 +68,7 @@ def write_packs(root: Path, packs: int, lines: int) -> list[Path]:
     return made
 
 
-def _child(script: str, args: list[str]) -> dict:
+def run_child(script: str, args: list[str]) -> dict:
     done = subprocess.run([sys.executable, "-c", script, *args], capture_output=True, text=True, check=True)
     return json.loads(done.stdout.strip().splitlines()[-1])
 
@@ -81,14 +81,14 @@ def main() -> None:
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as tmp:
         packs = [str(p) for p in write_packs(Path(tmp), args.packs, args.lines)]
-        ours = _child(_CHECK, packs)
+        ours = run_child(CHECK_SCRIPT, packs)
         print(f"| figure | measured | target |\n|---|---|---|")
         print(f"| dpemu check, {args.packs} packs, {ours['lines']:,} lines, {ours['commands']:,} commands | "
               f"{ours['seconds']:.1f} s | <= {TARGET_SECONDS:.0f} s |")
         print(f"| peak memory of that check | {ours['peak'] / 2**30:.2f} GB | <= {TARGET_GB:.0f} GB |")
         print(f"| dpemu check lines/s | {ours['lines'] / ours['seconds']:,.0f} | |")
         if args.mecha_packs:
-            theirs = _child(_MECHA, packs[: args.mecha_packs])
+            theirs = run_child(MECHA_SCRIPT, packs[: args.mecha_packs])
             rate = theirs["lines"] / theirs["seconds"]
             print(f"| mecha lines/s ({args.mecha_packs} of the packs) | {rate:,.0f} | |")
             print(f"| mecha, all {args.packs} packs (projected from its lines/s) | {ours['lines'] / rate:.0f} s | |")

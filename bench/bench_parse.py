@@ -22,11 +22,11 @@ from corpus import write_corpus  # noqa: E402
 from mcfunction_parser.parse import parse_function  # noqa: E402
 
 
-def _load(root: Path) -> list[tuple[str, str]]:
+def load_sources(root: Path) -> list[tuple[str, str]]:
     return [(str(p), p.read_text()) for p in sorted(root.rglob("*.mcfunction"))]
 
 
-def _ours(sources) -> int:
+def parse_ours(sources) -> int:
     errors = 0
     for path, text in sources:
         _, diagnostics = parse_function(text, path, "bench:f", (1, 21, 0))
@@ -34,7 +34,7 @@ def _ours(sources) -> int:
     return errors
 
 
-def _mecha(sources) -> int:
+def parse_mecha(sources) -> int:
     from mecha import DiagnosticError, Mecha
 
     mc = Mecha(version="1.21")
@@ -49,7 +49,7 @@ def _mecha(sources) -> int:
     return errors
 
 
-def _best(fn, sources, repeat: int) -> tuple[float, float, int]:
+def best_of(fn, sources, repeat: int) -> tuple[float, float, int]:
     """(best CPU seconds, best wall seconds, fn's result) over ``repeat`` runs."""
     cpu = wall = float("inf")
     result = 0
@@ -75,17 +75,17 @@ def main() -> None:
     parser.add_argument("--pack", type=Path, help="parse this pack's .mcfunction files instead")
     args = parser.parse_args()
     if args.pack:
-        sources = _load(args.pack)
+        sources = load_sources(args.pack)
     else:
         with tempfile.TemporaryDirectory() as tmp:
             write_corpus(tmp, args.lines, args.seed)
-            sources = _load(Path(tmp))
+            sources = load_sources(Path(tmp))
     lines = sum(text.count("\n") for _, text in sources)
-    ours, ours_wall, errors = _best(_ours, sources, args.repeat)
+    ours, ours_wall, errors = best_of(parse_ours, sources, args.repeat)
     print(_line("dpemu", lines, ours, ours_wall) + f", {errors} diagnostics")
     if args.no_mecha:
         return
-    theirs, theirs_wall, failures = _best(_mecha, sources, max(1, args.repeat // 2))
+    theirs, theirs_wall, failures = best_of(parse_mecha, sources, max(1, args.repeat // 2))
     print(_line("mecha", lines, theirs, theirs_wall) + f", {failures} files rejected"
           " (mecha's 1.21 tree is 1.21.11, which renamed the corpus' 1.21.0 game rules)")
     print(f"ratio: dpemu is {theirs / ours:.1f}x mecha's speed in CPU time ({theirs_wall / ours_wall:.1f}x in wall time)")

@@ -27,7 +27,17 @@ import textwrap
 import time
 from pathlib import Path
 
+import numpy as np
+from numba import njit
+
 BODY_OPS = 1000
+# the loop body cycles through these; values stay small (every product is reduced mod #d), so the
+# sanitizer path reports nothing. hand_loop below does the same updates in plain numba.
+BODY_CYCLE = ("scoreboard players operation #a o += #b o", "scoreboard players operation #a o %= #d o",
+              "scoreboard players operation #b o *= #c o", "scoreboard players operation #b o %= #d o",
+              "scoreboard players add #a o 7",
+              "execute if score #a o matches 0.. run scoreboard players remove #b o 3")
+SETUP_SCORES = {"#a": 1, "#b": 3, "#c": 5, "#d": 1000003}
 HOST_OPS = 2000
 ENTITIES = 16
 
@@ -36,15 +46,10 @@ def write_pack(root: Path) -> Path:
     functions = root / "data" / "b" / "function"
     functions.mkdir(parents=True)
     (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "bench"}}))
-    # values stay small (every product is reduced mod #d), so the sanitizer path reports nothing
-    ops = ["scoreboard players operation #a o += #b o", "scoreboard players operation #a o %= #d o",
-           "scoreboard players operation #b o *= #c o", "scoreboard players operation #b o %= #d o",
-           "scoreboard players add #a o 7", "execute if score #a o matches 0.. run scoreboard players remove #b o 3"]
-    body = "\n".join(ops[i % len(ops)] for i in range(BODY_OPS))
+    body = "\n".join(BODY_CYCLE[i % len(BODY_CYCLE)] for i in range(BODY_OPS))
     (functions / "setup.mcfunction").write_text(
         "scoreboard objectives add o dummy\ngamerule maxCommandChainLength 2147483647\n"
-        "scoreboard players set #a o 1\nscoreboard players set #b o 3\nscoreboard players set #c o 5\n"
-        "scoreboard players set #d o 1000003\n")
+        + "".join(f"scoreboard players set {holder} o {value}\n" for holder, value in SETUP_SCORES.items()))
     (functions / "body.mcfunction").write_text(body + "\n")
     (functions / "loop.mcfunction").write_text(
         "function b:body\nscoreboard players remove #i o 1\nexecute if score #i o matches 1.. run function b:loop\n")
@@ -80,6 +85,63 @@ def timed_loop(pack: Path, backend: str, iterations: int, sanitize: bool = False
         result = emu.runtime.call(loop)
         best = min(best, time.perf_counter() - start)
     return best, result.cost
+
+
+@njit(cache=True)
+def _hand_loop(s, cycles, rest):
+    """The scoreboard loop's updates written by hand over an int32 array (``s[0..4]``: #a #b #c #d
+    #i): ``cycles`` times BODY_CYCLE, then its first ``rest`` commands, per iteration; the practical
+    limit of a VM running that program. int32 stores wrap as Java's int arithmetic does, and ``%``
+    with a positive divisor is the game's floorMod."""
+    while True:
+        for _ in range(cycles):
+            s[0] = s[0] + s[1]
+            s[0] = s[0] % s[3]
+            s[1] = s[1] * s[2]
+            s[1] = s[1] % s[3]
+            s[0] = s[0] + 7
+            if s[0] >= 0:
+                s[1] = s[1] - 3
+        if rest > 0:
+            s[0] = s[0] + s[1]
+        if rest > 1:
+            s[0] = s[0] % s[3]
+        if rest > 2:
+            s[1] = s[1] * s[2]
+        if rest > 3:
+            s[1] = s[1] % s[3]
+        if rest > 4:
+            s[0] = s[0] + 7
+        s[4] = s[4] - 1
+        if s[4] < 1:
+            return
+
+
+def hand_loop(iterations: int, repeats: int = 3) -> tuple[float, dict[str, int]]:
+    """(best seconds, final #a #b) of the hand-written loop running ``iterations`` times, after a
+    warm-up; the same updates as ``timed_loop(pack, ..., iterations)``."""
+    start_values = [SETUP_SCORES["#a"], SETUP_SCORES["#b"], SETUP_SCORES["#c"], SETUP_SCORES["#d"], 1]
+    cycles, rest = divmod(BODY_OPS, len(BODY_CYCLE))
+    _hand_loop(np.array(start_values, dtype=np.int32), cycles, rest)
+    best, s = float("inf"), None
+    for _ in range(repeats):
+        s = np.array(start_values[:4] + [iterations], dtype=np.int32)
+        start = time.perf_counter()
+        _hand_loop(s, cycles, rest)
+        best = min(best, time.perf_counter() - start)
+    return best, {"#a": int(s[0]), "#b": int(s[1])}
+
+
+def loop_scores(pack: Path, backend: str, iterations: int) -> dict[str, int]:
+    """#a and #b after the setup and one run of the loop ``iterations`` times (hand_loop's check)."""
+    from emulator import Emulator
+
+    emu = Emulator(backend=backend)
+    emu.load(pack)
+    emu.call("b:setup")
+    emu.set_score("#i", "o", iterations)
+    emu.call("b:loop")
+    return {holder: emu.score(holder, "o") for holder in ("#a", "#b")}
 
 
 def host_round_trip(pack: Path) -> float:

@@ -1,0 +1,413 @@
+"""Every benchmark figure in one run, as a markdown table, each figure beside its target.
+
+Usage: ``python bench/run.py [--quick] [--json FILE]`` (run with the project's venv python). The
+ratios are measured side by side in this one run (the machine may be shared: the ratio of two
+figures taken a few seconds apart is steadier than either figure). ``--quick`` runs fewer
+iterations, ticks and shots and skips the slowest rows (a smoke test: the figures are noisier);
+``--json FILE`` also writes the rows as JSON. Figures that miss their target say so.
+
+The rows reuse the other bench modules: the VM programs and the hand-written numba loop
+(``bench_vm``), the pool shots (``bench_pool``, ``poolgame.shot``), the parser corpus
+(``corpus``, ``bench_parse``), the collection-scale check (``bench_check_scale``), and the
+physics pack ``bench/physics`` written in the shape of third-party physics packs. The
+third-party emulator ``mcemu`` (PyPI) runs in a venv of its own under ``bench/.venv-mcemu``,
+made on first use; it is never a dependency of dpemu.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+import tempfile
+import time
+from dataclasses import asdict, dataclass
+from pathlib import Path
+
+BENCH = Path(__file__).resolve().parent
+sys.path.insert(0, str(BENCH))
+
+import bench_check_scale  # noqa: E402
+import bench_parse  # noqa: E402
+import bench_pool  # noqa: E402
+import bench_vm  # noqa: E402
+from corpus import write_corpus  # noqa: E402
+
+PHYSICS_PACK = BENCH / "physics"
+PHYSICS_BODIES = 256
+MCEMU_VENV = BENCH / ".venv-mcemu"
+DPEMU = Path(sys.executable).with_name("dpemu")
+
+
+@dataclass
+class Row:
+    figure: str
+    measured: str               # as printed
+    target: str                 # as printed; "" when the issue sets none
+    met: bool | None = None     # None: no target, or not measured
+    value: float | None = None  # the number behind ``measured`` (JSON)
+
+
+def _ratio_row(figure: str, ours: float, theirs: float, at_least: float) -> Row:
+    ratio = ours / theirs
+    return Row(figure, f"{ratio:,.2f}x" if ratio < 10 else f"{ratio:,.0f}x", f">= {at_least:,g}x",
+               ratio >= at_least, ratio)
+
+
+def _rate(rate: float, unit: str = "commands/s") -> str:
+    return f"{rate:,.0f} {unit}"
+
+
+# ---------------------------------------------------------------------------------- the VM's loops
+def vm_rows(quick: bool) -> list[Row]:
+    vm_iterations, ref_iterations = (5_000, 20) if quick else (50_000, 100)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        pack = bench_vm.write_pack(Path(tmp) / "pack")
+        vm_seconds, vm_commands = bench_vm.timed_loop(pack, "numba", vm_iterations)
+        hand_seconds, hand_scores = bench_vm.hand_loop(vm_iterations)
+        same = bench_vm.loop_scores(pack, "numba", vm_iterations) == hand_scores
+        vm_rate = vm_commands / vm_seconds
+        rows.append(Row("scoreboard loop, VM (1,000 operations per call, counters on)", _rate(vm_rate), "",
+                        value=vm_rate))
+        row = _ratio_row("VM / hand-written numba loop (the same array updates)", hand_seconds, vm_seconds, 0.3)
+        if not same:
+            row.measured += " (the two disagree on the final scores)"
+            row.met = False
+        rows.append(row)
+        ref_seconds, ref_commands = bench_vm.timed_loop(pack, "python", ref_iterations, repeats=1)
+        rows.append(_ratio_row("VM / reference backend, scoreboard loop", vm_rate, ref_commands / ref_seconds, 200))
+        entity = {}
+        for backend, iterations in (("numba", vm_iterations // 10), ("python", ref_iterations * 10)):
+            seconds, commands = bench_vm.timed_loop(pack, backend, iterations, loop="b:eloop",
+                                                    setup=("b:setup", "b:esetup"),
+                                                    repeats=3 if backend == "numba" else 1)
+            entity[backend] = commands / seconds
+        rows.append(_ratio_row(f"VM / reference backend, entity loop ({bench_vm.ENTITIES} markers, selectors, forks)",
+                               entity["numba"], entity["python"], 50))
+        host_us = bench_vm.host_round_trip(pack)
+        rows.append(Row("host round trip (`time query gametime`: VM exit, Python, resume)", f"{host_us:.2f} us",
+                        "<= 1 us + the command's work", None, host_us))
+        rows.append(mcemu_row(pack, vm_rate, quick))
+    return rows
+
+
+# the scoreboard loop in mcemu: its own process and venv; prints seconds and the final scores
+_MCEMU = """
+import contextlib, io, json, sys, time
+from mcemu import Emulator
+emu = Emulator()
+with contextlib.redirect_stdout(io.StringIO()):
+    emu.load_datapack(sys.argv[1])
+    emu.execute_function("b:setup")
+    emu.execute_command("scoreboard players set #i o " + sys.argv[2])
+    start = time.perf_counter()
+    emu.execute_function("b:loop")
+    seconds = time.perf_counter() - start
+scores = emu.world.scoreboards["o"]
+print(json.dumps({"seconds": seconds, "#a": scores["#a"], "#b": scores["#b"]}))
+"""
+
+
+def _mcemu_python() -> tuple[Path | None, str]:
+    """The bench venv's python with mcemu installed (made on first use), or None and why not."""
+    python = MCEMU_VENV / "bin" / "python"
+    if python.exists() and subprocess.run([python, "-c", "import mcemu"], capture_output=True).returncode == 0:
+        return python, ""
+    made = subprocess.run([sys.executable, "-m", "venv", MCEMU_VENV], capture_output=True, text=True)
+    if made.returncode != 0:
+        return None, "could not make its venv: " + made.stderr.strip().splitlines()[-1:][0]
+    installed = subprocess.run([python, "-m", "pip", "install", "-q", "mcemu"], capture_output=True, text=True)
+    if installed.returncode != 0:
+        lines = [line for line in installed.stderr.splitlines() if "ERROR" in line] or ["pip failed"]
+        return None, "pip install mcemu failed: " + lines[0]
+    return python, ""
+
+
+def mcemu_row(pack: Path, vm_rate: float, quick: bool) -> Row:
+    figure = "VM / mcemu (third-party Python emulator), scoreboard loop"
+    python, why = _mcemu_python()
+    if python is None:
+        return Row(figure, f"skipped: {why}", ">= 5,000x")
+    iterations = 2 if quick else 5  # mcemu recurses in Python for each function call
+    done = subprocess.run([python, "-c", _MCEMU, str(pack), str(iterations)], capture_output=True, text=True)
+    if done.returncode != 0:
+        return Row(figure, "skipped: mcemu failed: " + (done.stderr.strip().splitlines() or ["?"])[-1], ">= 5,000x")
+    theirs = json.loads(done.stdout.strip().splitlines()[-1])
+    commands = bench_vm.timed_loop(pack, "python", iterations, repeats=1)[1]  # the same run, as dpemu counts it
+    row = _ratio_row(figure, vm_rate, commands / theirs["seconds"], 5000)
+    if {h: theirs[h] for h in ("#a", "#b")} != bench_vm.loop_scores(pack, "python", iterations):
+        row.measured += " (mcemu's final scores differ)"
+    return row
+
+
+# -------------------------------------------------------------------------------- the physics pack
+def physics_run(backend: str, ticks: int):
+    """(emulator, commands, seconds, host ops) of ``ticks`` ticks of the physics pack after its setup."""
+    from emulator import Emulator
+
+    emu = Emulator(backend=backend)
+    emu.load(PHYSICS_PACK)
+    emu.start()
+    emu.call("phys:setup/world", arguments={"bodies": PHYSICS_BODIES})
+    host_before = _host_ops(emu)
+    start = time.perf_counter()
+    commands = emu.tick(ticks)
+    seconds = time.perf_counter() - start
+    return emu, commands, seconds, _host_ops(emu) - host_before
+
+
+def _host_ops(emu) -> int:
+    host = emu.profile.host
+    return sum(host.values()) if host is not None else 0
+
+
+def physics_rows(quick: bool) -> list[Row]:
+    ticks = 2 if quick else 11  # the quicksort runs on tick 1
+    vm, vm_commands, vm_seconds, host = physics_run("numba", ticks)
+    ref, ref_commands, ref_seconds, _ = physics_run("python", ticks)
+    ratio = _ratio_row(f"VM / reference backend, physics pack ({PHYSICS_BODIES} bodies, {ticks} ticks, "
+                       f"{vm_commands / ticks:,.0f} commands per tick)",
+                       vm_commands / vm_seconds, ref_commands / ref_seconds, 20)
+    if vm.scores() != ref.scores() or vm_commands != ref_commands:
+        ratio.measured += " (the backends disagree)"
+        ratio.met = False
+    share = host / vm_commands * 100
+    return [Row("physics pack, VM", _rate(vm_commands / vm_seconds), "", value=vm_commands / vm_seconds),
+            ratio,
+            Row("physics pack, host ops / commands", f"{share:.2f} % ({host:,} of {vm_commands:,})", "<= 0.5 %",
+                share <= 0.5, share)]
+
+
+# ------------------------------------------------------------------------------------ the pool pack
+def pool_rows(quick: bool) -> list[Row]:
+    from poolgame.shot import BREAK, new_table, play
+
+    emu = new_table()
+    host_before = _host_ops(emu)
+    result = play(emu, BREAK)
+    host = _host_ops(emu) - host_before
+    commands = sum(result.commands_per_tick)
+    rows = [Row("pool break: ticks/s", f"{result.ticks / result.seconds:,.0f} ({result.ticks} ticks in "
+                f"{result.seconds:.2f} s)", "", value=result.ticks / result.seconds),
+            Row("pool break: commands/s", _rate(commands / result.seconds), "", value=commands / result.seconds),
+            Row("pool break: commands per tick, mean / max", f"{result.commands_mean:,.0f} / {result.commands_max:,}",
+                "max <= 5,000", result.commands_max <= bench_pool.BUDGET_MOVING, result.commands_max),
+            Row("pool break: host ops", f"{host:,}", "0", host == 0, host)]
+    shots = 4 if quick else 20
+    for jobs in (1, 2):
+        started = time.perf_counter()
+        results = bench_pool.overflow_sweep(shots, seed=1, jobs=jobs)
+        seconds = time.perf_counter() - started
+        trouble = sum(r.overflows + r.diagnostics + (not r.at_rest) for r in results)
+        rows.append(Row(f"batch: random shots/s, {jobs} worker process{'es' if jobs > 1 else ''} ({shots} shots)",
+                        f"{shots / seconds:.2f}" + (f" ({trouble} wrapped values, errors or unrested)" if trouble else ""),
+                        "", value=shots / seconds))
+    return rows
+
+
+# ---------------------------------------------------------------------------------------- the parser
+def parser_rows(quick: bool) -> list[Row]:
+    with tempfile.TemporaryDirectory() as tmp:
+        write_corpus(tmp, 40_000, 0)
+        sources = bench_parse.load_sources(Path(tmp))
+    lines = sum(text.count("\n") for _, text in sources)
+    ours, _, _ = bench_parse.best_of(bench_parse.parse_ours, sources, 1 if quick else 3)
+    subset = sources[: max(1, len(sources) // 8)] if quick else sources  # mecha is ~60x slower
+    subset_lines = sum(text.count("\n") for _, text in subset)
+    theirs, _, _ = bench_parse.best_of(bench_parse.parse_mecha, subset, 1)
+    rows = [Row(f"parser: lines/s on {lines:,} lines (CPU time)", _rate(lines / ours, "lines/s"), "",
+                value=lines / ours)]
+    row = _ratio_row("parser / mecha" + (f" (mecha on {subset_lines:,} of the lines)" if quick else ""),
+                     lines / ours, subset_lines / theirs, 60)
+    rows.append(row)
+    return rows
+
+
+# ------------------------------------------------------------------------------ processes: time, RSS
+@dataclass
+class Process:
+    """One whole process, as measured: wall and CPU (user + system) seconds, peak RSS in bytes."""
+    wall: float
+    cpu: float
+    peak: int
+    status: int
+    last: str  # standard error's last line
+
+    def seconds(self) -> str:
+        return f"{self.cpu:.2f} s (wall {self.wall:.2f} s)"
+
+
+def measure_process(argv: list, env: dict | None = None) -> Process:
+    with tempfile.TemporaryFile() as err:
+        started = time.perf_counter()
+        process = subprocess.Popen([str(a) for a in argv], stdout=subprocess.DEVNULL, stderr=err,
+                                   env={**os.environ, **(env or {})})
+        _, status, usage = os.wait4(process.pid, 0)
+        seconds = time.perf_counter() - started
+        process.returncode = os.waitstatus_to_exitcode(status)
+        err.seek(0)
+        last = (err.read().decode(errors="replace").strip().splitlines() or [""])[-1]
+    return Process(seconds, usage.ru_utime + usage.ru_stime, usage.ru_maxrss * 1024, process.returncode, last)
+
+
+def imports_numba(argv: list) -> bool:
+    """Whether ``python -m emulator ARGV`` imports numba (``-X importtime`` lists every module)."""
+    done = subprocess.run([sys.executable, "-X", "importtime", "-m", "emulator", *map(str, argv)],
+                          capture_output=True, text=True)
+    return any(line.rsplit("|", 1)[-1].strip() == "numba" for line in done.stderr.splitlines())
+
+
+def _trivial_pack(root: Path) -> Path:
+    functions = root / "data" / "t" / "function"
+    functions.mkdir(parents=True)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "trivial"}}))
+    (functions / "a.mcfunction").write_text("scoreboard objectives add o dummy\nscoreboard players set #a o 1\n")
+    return root
+
+
+def startup_rows(quick: bool) -> list[Row]:
+    """Whole processes; the verdicts read their CPU time (user + system), which a shared machine
+    disturbs far less than the wall time printed beside it."""
+    with tempfile.TemporaryDirectory() as tmp:
+        pack = _trivial_pack(Path(tmp) / "pack")
+        run = [DPEMU, "run", pack, "--call", "t:a", "--ticks", "1"]
+        rows = [_no_numba_row("start-up: `dpemu --help`", ["--help"]),
+                _no_numba_row("start-up: `dpemu run` of a trivial pack, `--backend python`",
+                              ["run", pack, "--call", "t:a", "--backend", "python"])]
+        empty = measure_process(run, {"NUMBA_CACHE_DIR": str(Path(tmp) / "numba-cache")})
+        rows.append(_seconds_row("start-up: `dpemu run` of a trivial pack, empty numba cache", empty, 3.0,
+                                 f", {empty.peak / 2**20:,.0f} MB"))
+        measure_process(run)  # the default cache, warm from here on
+        rows.append(_seconds_row("start-up: `dpemu run` of a trivial pack, warm cache", measure_process(run), 0.3))
+        shot = [DPEMU, "shot", "--break"]
+        if quick:
+            rows.append(Row("start-up: `dpemu shot --break`, empty numba cache", "skipped (--quick)", ""))
+        else:
+            cold = measure_process(shot, {"NUMBA_CACHE_DIR": str(Path(tmp) / "shot-cache")})
+            rows.append(_seconds_row("start-up: `dpemu shot --break`, empty numba cache (whole process)", cold, None))
+        warm = measure_process(shot)
+        rows.append(_seconds_row("start-up: `dpemu shot --break`, warm cache (whole process)", warm, None))
+        rows.append(Row("memory: peak RSS of `dpemu shot --break`", f"{warm.peak / 2**20:,.0f} MB", "",
+                        value=warm.peak))
+    return rows
+
+
+def _no_numba_row(figure: str, argv: list) -> Row:
+    measured = measure_process([DPEMU, *argv])
+    numba = imports_numba(argv)
+    return Row(figure, measured.seconds() + (", imports numba" if numba else ", no numba"), "no numba",
+               not numba and measured.status == 0, measured.cpu)
+
+
+def _seconds_row(figure: str, measured: Process, at_most: float | None, extra: str = "") -> Row:
+    target = f"<= {at_most:g} s" if at_most else ""
+    if measured.status != 0:
+        return Row(figure, f"failed (exit {measured.status}: {measured.last})", target, False)
+    return Row(figure, measured.seconds() + extra, target, measured.cpu <= at_most if at_most else None,
+               measured.cpu)
+
+
+# ------------------------------------------------------------------------------------------ memory
+_ENTITIES = """
+import json, resource, sys, time
+from emulator import Emulator
+emu = Emulator()
+emu.load(sys.argv[1])
+start = time.perf_counter()
+emu.call("e:spawn")
+print(json.dumps({"seconds": time.perf_counter() - start, "entities": len(emu.entities("@e")),
+                  "peak": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024}))
+"""
+
+
+def memory_rows(quick: bool) -> list[Row]:
+    rows = []
+    packs, lines = (10, 10_000) if quick else (100, 10_000)
+    with tempfile.TemporaryDirectory() as tmp:
+        made = [str(p) for p in bench_check_scale.write_packs(Path(tmp) / "check", packs, lines)]
+        check = bench_check_scale.run_child(bench_check_scale.CHECK_SCRIPT, made)
+        rows.append(Row(f"memory: peak RSS of `dpemu check`, {packs} packs, {check['commands']:,} commands",
+                        f"{check['peak'] / 2**30:.2f} GB in {check['seconds']:.1f} s",
+                        f"<= {bench_check_scale.TARGET_GB:g} GB, <= {bench_check_scale.TARGET_SECONDS:g} s",
+                        check["peak"] <= bench_check_scale.TARGET_GB * 2**30
+                        and check["seconds"] <= bench_check_scale.TARGET_SECONDS, check["peak"]))
+        rows.append(entities_row(Path(tmp) / "entities", 30 if quick else 120))
+    return rows
+
+
+def entities_row(root: Path, timeout: float, count: int = 4096) -> Row:
+    functions = root / "data" / "e" / "function"
+    functions.mkdir(parents=True)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "entities"}}))
+    (functions / "spawn.mcfunction").write_text('summon marker 0 64 0 {Tags:["x","y"]}\n' * count)
+    figure = f"memory: peak RSS with {count:,} entities (VM, summoned by one function)"
+    try:
+        done = subprocess.run([sys.executable, "-c", _ENTITIES, str(root)], capture_output=True, text=True,
+                              timeout=timeout)
+    except subprocess.TimeoutExpired:
+        return Row(figure, f"not measured: summoning them took over {timeout:g} s", "")
+    if done.returncode != 0:
+        return Row(figure, "failed: " + (done.stderr.strip().splitlines() or ["?"])[-1], "", False)
+    found = json.loads(done.stdout.strip().splitlines()[-1])
+    return Row(figure, f"{found['peak'] / 2**20:,.0f} MB (summoned in {found['seconds']:.1f} s)", "",
+               value=found["peak"])
+
+
+# ----------------------------------------------------------------------------------------- the table
+SECTIONS = {"vm": vm_rows, "physics": physics_rows, "pool": pool_rows, "parser": parser_rows,
+            "startup": startup_rows, "memory": memory_rows}
+
+
+def machine() -> str:
+    cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
+                if line.startswith("model name")), platform.processor()) if Path("/proc/cpuinfo").exists() \
+        else platform.processor()
+    memory = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") / 2**30
+    import numba
+
+    return (f"{cpu}, {os.cpu_count()} cores, {memory:.0f} GB; {platform.system()} {platform.release()}; "
+            f"Python {platform.python_version()}, numba {numba.__version__}"
+            + ("; NUMBA_BOUNDSCHECK=1" if os.environ.get("NUMBA_BOUNDSCHECK") == "1" else ""))
+
+
+def _status(row: Row) -> str:
+    return {True: "yes", False: "**no**", None: ""}[row.met]
+
+
+def table(rows: list[Row]) -> str:
+    lines = ["| figure | measured | target | met |", "|---|---|---|---|"]
+    lines += [f"| {r.figure} | {r.measured} | {r.target} | {_status(r)} |" for r in rows]
+    return "\n".join(lines)
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help="fewer iterations, a smoke test")
+    parser.add_argument("--json", type=Path, metavar="FILE", help="also write the rows as JSON")
+    parser.add_argument("--only", choices=sorted(SECTIONS), action="append", help="measure only these sections")
+    args = parser.parse_args()
+    started = time.perf_counter()
+    rows, failed = [], False
+    for name in args.only or SECTIONS:
+        section = SECTIONS[name]
+        print(f"measuring {name}...", file=sys.stderr, flush=True)
+        try:
+            rows += section(args.quick)
+        except Exception as error:  # one broken section still leaves the others' figures
+            rows.append(Row(f"{name} section", f"failed: {type(error).__name__}: {error}", "", False))
+            failed = True
+    header = (f"Measured {time.strftime('%Y-%m-%d %H:%M UTC', time.gmtime())} on {machine()}"
+              f"{' (--quick)' if args.quick else ''}, in {time.perf_counter() - started:.0f} s. Ratios are of rates "
+              "measured side by side in this run; start-up verdicts read the process's CPU time.")
+    print(header + "\n\n" + table(rows))
+    if args.json:
+        args.json.write_text(json.dumps({"header": header, "quick": args.quick,
+                                         "rows": [asdict(r) for r in rows]}, indent=1) + "\n")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
