@@ -87,11 +87,33 @@ def vm_rows(quick: bool) -> list[Row]:
             entity[backend] = commands / seconds
         rows.append(_ratio_row(f"VM / reference backend, entity loop ({bench_vm.ENTITIES} markers, selectors, forks)",
                                entity["numba"], entity["python"], 50))
+        with tempfile.TemporaryDirectory() as small:
+            tick_us = {backend: tick_overhead(_trivial_pack(Path(small) / backend), backend, 2_000 if quick else 20_000)
+                       for backend in ("numba", "python")}
+        rows.append(Row("tick overhead: a tick running one command, VM (reference backend)",
+                        f"{tick_us['numba']:.1f} us ({tick_us['python']:.1f} us)", "<= 2 us",
+                        tick_us["numba"] <= 2, tick_us["numba"]))
         host_us = bench_vm.host_round_trip(pack)
         rows.append(Row("host round trip (`time query gametime`: VM exit, Python, resume)", f"{host_us:.2f} us",
                         "<= 1 us + the command's work", None, host_us))
         rows.append(mcemu_row(pack, vm_rate, quick))
     return rows
+
+
+def tick_overhead(pack: Path, backend: str, ticks: int) -> float:
+    """Microseconds per tick of ``pack``, whose tick runs one command; the best of 3 runs."""
+    from emulator import Emulator
+
+    emu = Emulator(backend=backend)
+    emu.load(pack)
+    emu.call("t:a")
+    emu.tick(10)  # the load tick, and the VM's code loaded
+    best = float("inf")
+    for _ in range(3):
+        start = time.perf_counter()
+        emu.tick(ticks)
+        best = min(best, time.perf_counter() - start)
+    return best / ticks * 1e6
 
 
 # the scoreboard loop in mcemu: its own process and venv; prints seconds and the final scores
@@ -265,6 +287,10 @@ def _trivial_pack(root: Path) -> Path:
     functions.mkdir(parents=True)
     (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "trivial"}}))
     (functions / "a.mcfunction").write_text("scoreboard objectives add o dummy\nscoreboard players set #a o 1\n")
+    (functions / "tick.mcfunction").write_text("scoreboard players add #a o 1\n")
+    tags = root / "data" / "minecraft" / "tags" / "function"
+    tags.mkdir(parents=True)
+    (tags / "tick.json").write_text(json.dumps({"values": ["t:tick"]}))
     return root
 
 
