@@ -27,14 +27,19 @@ from poolgame.shot import DEFAULT_PACK, random_shot
 TARGET_SHOTS, TARGET_SECONDS = 1000, 60.0
 
 
-def shots_bench(n: int, workers: int, seed: int) -> None:
+def random_shots(n: int, workers: int, seed: int) -> tuple[float, int, float]:
+    """(wall seconds, shots not at rest, wrapped values) of ``n`` random full shots over ``workers``
+    processes (the pack compiled before: call open_pack first)."""
     rng = random.Random(seed)
     work = [Case(f"random {k}", "shots", shot=rounded(random_shot(rng, k))) for k in range(n)]
     started = time.perf_counter()
     results, _ = sweep(work, str(DEFAULT_PACK), modes=(), workers=workers)
     seconds = time.perf_counter() - started
-    unfinished = sum(r.unfinished for r in results)
-    wrapped = sum(sum(r.samples.get("overflow", [])) for r in results)
+    return seconds, sum(r.unfinished for r in results), sum(sum(r.samples.get("overflow", [])) for r in results)
+
+
+def shots_bench(n: int, workers: int, seed: int) -> None:
+    seconds, unfinished, wrapped = random_shots(n, workers, seed)
     rate = n / seconds
     print(f"random full shots: {n} in {seconds:.1f} s on {workers} process(es) = {rate:.1f} shots/s "
           f"({unfinished} not at rest, {wrapped:.0f} wrapped values)")
