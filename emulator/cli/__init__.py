@@ -6,7 +6,6 @@ pool game adds ``shot``), so the generic tool never imports them.
 from __future__ import annotations
 
 import importlib
-from importlib.metadata import entry_points
 
 import click
 
@@ -22,6 +21,10 @@ _BUILTIN = {
 
 
 def _plugins() -> dict[str, str]:
+    """The installed packages' subcommands (reading every package's metadata: only when a name is
+    not built in, or for the list)."""
+    from importlib.metadata import entry_points
+
     return {ep.name: ep.value for ep in entry_points(group="dpemu.commands")}
 
 
@@ -36,7 +39,7 @@ class _LazyGroup(click.Group):
         return sorted(self._targets())
 
     def get_command(self, ctx: click.Context, name: str) -> click.Command | None:
-        target = self._targets().get(name)
+        target = _BUILTIN[name][0] if name in _BUILTIN else _plugins().get(name)
         if target is None:
             return None
         module, attribute = target.split(":")

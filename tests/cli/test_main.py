@@ -1,4 +1,5 @@
-"""``dpemu``: the subcommands --help lists, and what neither --help nor a python-backend run imports."""
+"""``dpemu``: the subcommands --help lists, and what neither --help nor a python-backend run imports
+(start-up time: bench/run.py measures it)."""
 from __future__ import annotations
 
 import importlib
@@ -46,3 +47,14 @@ def test_the_python_backend_imports_no_numba(tmp_path, command):
     pack = write_pack(tmp_path / "pack", {"t:tick": "scoreboard objectives add o dummy\nsay hi"},
                       {"minecraft:tick": ["t:tick"]})
     assert "numba modules: []" in dpemu(command, str(pack), "--backend", "python", "--ticks", "2")
+
+
+def test_a_built_in_subcommand_reads_no_package_metadata(tmp_path):
+    # the installed packages' entry points (importlib.metadata reading every package) are looked up
+    # only to list the subcommands or to find one another package adds
+    pack = write_pack(tmp_path / "pack", {"t:a": "scoreboard objectives add o dummy"})
+    script = SCRIPT.replace("m.split('.')[0] == 'numba'", "m == 'importlib.metadata'")
+    script = script.replace("numba modules", "metadata")
+    done = subprocess.run([sys.executable, "-c", script, "run", str(pack), "--call", "t:a", "--backend", "python"],
+                          capture_output=True, text=True, check=True)
+    assert "metadata: []" in done.stdout
