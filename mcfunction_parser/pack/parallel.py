@@ -20,8 +20,7 @@ import os
 import pickle
 import tempfile
 from collections.abc import Sequence
-from concurrent.futures import Future, ProcessPoolExecutor
-from concurrent.futures.process import BrokenProcessPool
+from typing import TYPE_CHECKING
 
 from mcfunction_parser.ast import Function
 from mcfunction_parser.diagnostics import ERROR, Diagnostic
@@ -30,6 +29,9 @@ from mcfunction_parser.pack.versions import Version
 
 FunctionFile = tuple[list[str], str, str, str]  # (lines, shown path, function id, pack root)
 Parsed = tuple[Function | None, list[Diagnostic]]
+
+if TYPE_CHECKING:  # the process pool is imported when a large input needs it (start-up time)
+    from concurrent.futures import Future, ProcessPoolExecutor
 
 PARALLEL_MIN_LINES = 100_000  # below this, starting a worker costs about what it saves
 BATCHES, MIN_BATCH_LINES = 100, 5_000  # about this many batches, of at least this many lines:
@@ -81,6 +83,8 @@ def _batches(files: Sequence[FunctionFile], size: int) -> list[list[FunctionFile
 
 def _shared(batches: list[list[FunctionFile]], version: Version, workers: int) -> list[list[Parsed]]:
     """Each batch's results, from worker processes when they start."""
+    from concurrent.futures import ProcessPoolExecutor
+
     try:
         # the workers only build and pickle ASTs, which hold no reference cycles
         pool = ProcessPoolExecutor(workers, initializer=gc.disable)
@@ -96,6 +100,8 @@ def _shared(batches: list[list[FunctionFile]], version: Version, workers: int) -
 def _share(pool: ProcessPoolExecutor, batches: list[list[FunctionFile]], version: Version,
            folder: str) -> list[list[Parsed]]:
     """The workers parse the batches from the front, this process from the back."""
+    from concurrent.futures.process import BrokenProcessPool
+
     try:
         futures = [pool.submit(_parse_to_file, batch, version, folder) for batch in batches]
     except (OSError, BrokenProcessPool):  # no worker could start

@@ -1,4 +1,5 @@
 """Parsing in worker processes gives what parsing in this one gives: the same check, to the byte."""
+import concurrent.futures
 import json
 import random
 import shutil
@@ -103,7 +104,7 @@ def test_without_worker_processes_everything_is_parsed_here(packs, shares, monke
 
     def unavailable(*args, **kwargs):
         raise OSError("no processes here")
-    monkeypatch.setattr(parallel, "ProcessPoolExecutor", unavailable)
+    monkeypatch.setattr(concurrent.futures, "ProcessPoolExecutor", unavailable)  # imported when needed
     assert checked(packs, 1)[:2] == serial and shares["worker"] == 0 and shares["here"] > 1
 
 
