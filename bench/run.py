@@ -90,7 +90,7 @@ def vm_rows(quick: bool) -> list[Row]:
         rows.append(_ratio_row(f"VM / reference backend, entity loop ({bench_vm.ENTITIES} markers, selectors, forks)",
                                entity["numba"], entity["python"], 50))
         with tempfile.TemporaryDirectory() as small:
-            tick_us = {backend: tick_overhead(_trivial_pack(Path(small) / backend), backend, 2_000 if quick else 20_000)
+            tick_us = {backend: tick_overhead(_trivial_pack(Path(small) / backend), backend, 1_000 if quick else 5_000)
                        for backend in ("numba", "python")}
         rows.append(Row("tick overhead: a tick running one command, VM (reference backend)",
                         f"{tick_us['numba']:.1f} us ({tick_us['python']:.1f} us)", "<= 2 us",
@@ -368,7 +368,7 @@ def memory_rows(quick: bool) -> list[Row]:
                         f"<= {bench_check_scale.TARGET_GB:g} GB, <= {bench_check_scale.TARGET_SECONDS:g} s",
                         check["peak"] <= bench_check_scale.TARGET_GB * 2**30
                         and check["seconds"] <= bench_check_scale.TARGET_SECONDS, check["peak"]))
-        rows.append(entities_row(Path(tmp) / "entities", 30 if quick else 120))
+        rows.append(entities_row(Path(tmp) / "entities", 30 if quick else 60))
     return rows
 
 
