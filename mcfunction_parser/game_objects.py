@@ -10,11 +10,12 @@ is newer than the data) it is a warning saying so.
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from . import gamedata, snbt
 from .features import version_text
 from .primitives import resource_location, resource_or_tag
-from .reader import Reader, show
+from .reader import Reader
 
 # registries no data pack can add to: an id in any namespace must be in them
 STATIC = frozenset(("block", "item", "entity_type", "particle_type", "mob_effect", "attribute"))
@@ -27,6 +28,7 @@ _DATA_NAMES = {"block": "block", "item": "item", "entity_type": "entity type", "
                "attribute": "attribute"}
 
 
+@lru_cache(maxsize=None)
 def _known(registry: str, version) -> tuple[frozenset[str], bool] | None:
     try:
         release, exact = gamedata.registry_release(version)

@@ -10,6 +10,7 @@ import re
 
 from .ast import FloatRange, NameTarget, Selector, SelectorArg
 from .features import FEATURES
+from .game_objects import registry_id
 from .primitives import float_range, int_range, is_uuid, json_span, resource_location, rotation_range
 from .reader import Reader, show
 from .snbt import compound
@@ -188,7 +189,7 @@ def _type(r: Reader) -> str:
     if r.peek() == "#":
         r.pos += 1
         return "#" + resource_location(r, "entity type tag")
-    return resource_location(r, "entity type")
+    return registry_id(r, "entity_type")  # EntitySelectorOptions: ERROR_ENTITY_TYPE_INVALID
 
 
 def _scores(r: Reader):

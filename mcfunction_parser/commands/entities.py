@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from .. import ast
 from ..arguments import vec2, vec3
-from ..primitives import resource_location
+from ..game_objects import registry_id
 from ..reader import ParseError, Reader
 from ..selectors import target
 from ..snbt import compound
@@ -26,7 +26,7 @@ def tag(r: Reader, loc) -> ast.Command:
 
 def summon(r: Reader, loc) -> ast.Command:
     r.space("entity type")
-    kind = resource_location(r, "entity type")
+    kind = registry_id(r, "entity_type")
     pos = nbt = None
     if r.optional_space():
         pos = vec3(r)

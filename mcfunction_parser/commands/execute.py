@@ -10,10 +10,10 @@ import re
 from .. import ast
 from ..arguments import (PLAIN_HOLDER, PLAIN_OBJECTIVE, objective, objective_too_long, plain_holder, score_holder,
                          single_score_holder, vec2, vec3)
+from ..game_objects import block, registry_id
 from ..nbt_path import nbt_path
 from ..primitives import float_range, int_range, json_span, resource_location, resource_or_tag
 from ..reader import Reader, show
-from ..snbt import compound
 from ..selectors import target
 from ..items import item_predicate, slot
 from .data_targets import data_target
@@ -27,25 +27,6 @@ _COMPARISONS = ("<", "<=", "=", ">=", ">")
 _SCORE_TESTS = frozenset(_COMPARISONS + ("matches",))
 STORE_TYPES = ("byte", "short", "int", "long", "float", "double")
 _AXES = re.compile(r"[xyz]{1,3}")
-
-
-# BlockStateParser: [name=value,...] with optional whitespace; names and values are Brigadier strings
-_STATE = r"[ ]*[0-9A-Za-z_\-.+]+[ ]*=[ ]*[0-9A-Za-z_\-.+]+[ ]*"
-_BLOCK_STATES = re.compile(rf"\[(?:{_STATE}(?:,{_STATE})*)?[ ]*\]")
-
-
-def block_predicate(r: Reader) -> str:
-    """A block id or #tag with optional ``[states]`` and ``{nbt}``, returned as written."""
-    start = r.pos
-    resource_or_tag(r, "block")
-    if r.peek() == "[":
-        m = _BLOCK_STATES.match(r.text, r.pos)
-        if m is None:
-            r.fail("invalid block states: expected [name=value,...]")
-        r.pos = m.end()
-    if r.peek() == "{":
-        compound(r)
-    return r.text[start:r.pos]
 
 
 def _as(r, loc):
@@ -109,7 +90,7 @@ def _on(r, loc):
 
 def _summon(r, loc):
     r.require("execute summon", r.pos - 7)
-    return ast.ExSummon(loc, resource_location(r, "entity type"))
+    return ast.ExSummon(loc, registry_id(r, "entity_type"))
 
 
 # ----------------------------------------------------------------------------- conditions
@@ -144,7 +125,7 @@ def _if_data(r, loc, negated):
 def _if_block(r, loc, negated):
     pos = vec3(r, block=True)
     r.space("block")
-    return ast.IfBlock(loc, negated, pos, block_predicate(r))
+    return ast.IfBlock(loc, negated, pos, block(r, tags=True))
 
 
 def _if_blocks(r, loc, negated):

@@ -168,5 +168,6 @@ def test_if_score_holders_must_be_single():
 def test_block_states_are_checked():
     assert parse_ok("execute if block ~ ~ ~ minecraft:oak_stairs[ facing = east , half=top ]").subcommands[0].block \
         == "minecraft:oak_stairs[ facing = east , half=top ]"
-    assert "block states" in parse_err("execute if block ~ ~ ~ stone[slab[type=top] run say x").message
-    assert "block states" in parse_err("execute if block ~ ~ ~ stone[facing] run say x").message
+    assert "state" in parse_err("execute if block ~ ~ ~ stone[slab[type=top] run say x").message
+    assert "state" in parse_err("execute if block ~ ~ ~ stone[facing] run say x").message
+    assert "expected '='" in parse_err("execute if block ~ ~ ~ oak_stairs[facing] run say x").message
