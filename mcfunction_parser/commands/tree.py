@@ -14,6 +14,7 @@ from .. import game_objects as objects
 from .. import gamedata, items, snbt
 from ..arguments import duration, objective, score_holder, single_score_holder, text_component, vec2, vec3
 from ..ast import GenericCommand
+from ..features import version_text
 from ..nbt_path import nbt_path
 from ..primitives import float_range, int_range, is_uuid, resource_location, resource_or_tag
 from ..reader import UNQUOTED, WORD, ParseError, Reader, show
@@ -49,7 +50,7 @@ def tree_command(r: Reader, loc, name: str) -> GenericCommand:
         node = root["children"].get(name) if root is not None else None
         before = len(r.warnings)
         if node is not None:
-            _rest(r, _target(root, node), root)
+            _walk(r, root, node)
         known = tuple((message, pos - start) for message, pos in r.warnings[before:])
         del r.warnings[before:]
         if len(_VALID) >= _VALID_MAX:
@@ -58,6 +59,26 @@ def tree_command(r: Reader, loc, name: str) -> GenericCommand:
     r.warnings.extend((message, pos + start) for message, pos in known)
     r.pos = r.end
     return GenericCommand(loc, name, text)
+
+
+def _walk(r: Reader, root: dict, node: dict) -> None:
+    """The walk; against another minor release's tree (1.13 – 1.15 use 1.16.5's), a problem is a
+    warning: the syntax may have changed between them (1.13's ``locate Village``)."""
+    stand_in = _stand_in(r.version)
+    if stand_in is None:
+        _rest(r, _target(root, node), root)
+        return
+    try:
+        _rest(r, _target(root, node), root)
+    except ParseError as error:
+        r.warnings.append((f"{error.message} (checked against the {version_text(stand_in)} command tree: "
+                           f"dpemu has none for {version_text(r.version)})", error.pos))
+
+
+def _stand_in(version) -> tuple | None:
+    """The release whose tree checks ``version`` when it is of another minor release, else None."""
+    release = gamedata.tree_release(version)
+    return release if release[:2] != version[:2] else None
 
 
 def _target(root: dict, node: dict) -> dict:

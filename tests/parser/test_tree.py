@@ -114,3 +114,13 @@ def test_integer_game_rules_take_the_trees_bounds():
     # 1.21.11's tree gives max_entity_cramming a minimum of 0
     assert "at least 0" in parse_err("gamerule max_entity_cramming -1", (1, 21, 11)).message
     parse_ok("gamerule maxEntityCramming -1", (1, 20, 4))
+
+
+def test_another_minor_releases_tree_only_warns():
+    # 1.13 – 1.15 are checked with the 1.16.5 tree, where locate's structures were renamed
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+    cmd, diags = parse_command("locate Village", Loc("t", 1, 1), (1, 13, 2))
+    assert cmd is not None and [d.severity for d in diags] == ["warning"]
+    assert "checked against the 1.16.5 command tree" in diags[0].message
+    assert "locate" in parse_err("locate Village", (1, 16, 5)).source_line
