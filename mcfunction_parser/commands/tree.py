@@ -17,7 +17,7 @@ from ..ast import GenericCommand
 from ..features import version_text
 from ..nbt_path import nbt_path
 from ..primitives import float_range, int_range, is_uuid, resource_location, resource_or_tag
-from ..reader import UNQUOTED, WORD, ParseError, Reader, show
+from ..reader import WORD, ParseError, Reader, show
 from ..selectors import target
 from .chat import message
 from .scoreboard import OPERATIONS, criterion, display_slot
