@@ -83,6 +83,7 @@ scoreboard players set #7 pool.const 7
 scoreboard players set #10 pool.const 10
 scoreboard players set #100 pool.const 100
 scoreboard players set #1000 pool.const 1000
+scoreboard players set #2000 pool.const 2000
 scoreboard players set #10000 pool.const 10000
 scoreboard players set #20000 pool.const 20000
 scoreboard players set #32767 pool.const 32767

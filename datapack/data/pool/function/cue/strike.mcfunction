@@ -8,14 +8,19 @@
 # $shot.tip_x $shot.tip_y (per mille of R, a^2 + b^2 <= 0.25) on pool.game.
 # Writes: @s pool.vx pool.vz pool.wx pool.wz pool.wy and the phase scores;
 # temporaries #cue.ca #cue.sa #cue.ce #cue.se #cue.v #cue.p pool.tmp and the math library's.
+# cos(e) is x 100000 (pool:math/cos_1e5: 1745 at 89 degrees, where x 10000 would be 0.3 % off); the
+# spin factors P are kept in 1e-8 (per mille x 100000) up to the product with V
+# (pool:cue/spin_component), so that a tip of 1 per mille still gets its spin to 0.1 %.
 scoreboard players operation $a pool.math = $shot.angle pool.game
 function pool:math/sincos
 scoreboard players operation #cue.ca pool.tmp = $cos pool.math
 scoreboard players operation #cue.sa pool.tmp = $sin pool.math
 scoreboard players operation $a pool.math = $shot.elevation pool.game
 function pool:math/sincos
-scoreboard players operation #cue.ce pool.tmp = $cos pool.math
 scoreboard players operation #cue.se pool.tmp = $sin pool.math
+scoreboard players operation $a pool.math = $shot.elevation pool.game
+function pool:math/cos_1e5
+scoreboard players operation #cue.ce pool.tmp = $out pool.math
 # D = 10^6 (1 + m_b/m_s) + (5/2)(a^2 + b^2) with m_b/m_s = 0.170/0.567 = 0.299824
 scoreboard players operation $b pool.math = $shot.tip_x pool.game
 scoreboard players operation $b pool.math *= $shot.tip_x pool.game
@@ -33,7 +38,7 @@ scoreboard players operation #cue.v pool.tmp = $out pool.math
 # velocity
 scoreboard players operation $a pool.math = #cue.v pool.tmp
 scoreboard players operation $b pool.math = #cue.ce pool.tmp
-function pool:math/mul_unit
+function pool:math/mul_1e5
 scoreboard players operation $a pool.math = $out pool.math
 scoreboard players operation $b pool.math = #cue.ca pool.tmp
 function pool:math/mul_unit
@@ -41,7 +46,7 @@ scoreboard players operation @s pool.vx = $out pool.math
 scoreboard players operation $b pool.math = #cue.sa pool.tmp
 function pool:math/mul_unit
 scoreboard players operation @s pool.vz = $out pool.math
-# spin: each factor P in 1e-7 (per mille x 1e4), rounded to 1e-4 before V P / 1e4
+# spin: each factor P in 1e-8 (per mille x 100000)
 scoreboard players operation $a pool.math = #cue.se pool.tmp
 scoreboard players operation $b pool.math = #cue.sa pool.tmp
 function pool:math/mul_unit
@@ -51,6 +56,7 @@ scoreboard players operation #cue.p pool.tmp *= #-1 pool.const
 scoreboard players operation $a pool.math = $shot.tip_y pool.game
 scoreboard players operation $a pool.math *= #cue.ca pool.tmp
 scoreboard players operation #cue.p pool.tmp += $a pool.math
+scoreboard players operation #cue.p pool.tmp *= #10 pool.const
 function pool:cue/spin_component
 scoreboard players operation @s pool.wx = $out pool.math
 scoreboard players operation $a pool.math = #cue.se pool.tmp
@@ -61,6 +67,7 @@ scoreboard players operation #cue.p pool.tmp *= $shot.tip_x pool.game
 scoreboard players operation $a pool.math = $shot.tip_y pool.game
 scoreboard players operation $a pool.math *= #cue.sa pool.tmp
 scoreboard players operation #cue.p pool.tmp += $a pool.math
+scoreboard players operation #cue.p pool.tmp *= #10 pool.const
 function pool:cue/spin_component
 scoreboard players operation @s pool.wz = $out pool.math
 scoreboard players operation #cue.p pool.tmp = $shot.tip_x pool.game

@@ -35,3 +35,22 @@ assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vz matches 153911
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.wx matches -42672..-41441
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.wz matches -616..616
 assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.wy matches 114933..116165
+
+# 0 degrees, 6.5 m/s, cue raised 89 degrees: v = (8727.4, 0); cos 89 degrees = 0.0174524 must
+# keep 5 digits (0.0175 would make the ball 0.27 % fast)
+kill @e[tag=pool.ball]
+scoreboard players set $resting pool.game 1
+function pool:table/rack/ball {id:0, x:635000, z:635000, item:"minecraft:white_concrete"}
+function pool:api/shot {angle:0, speed:6500, tip_x:0, tip_y:0, elevation:8900}
+assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vx matches 8719..8736
+assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.vz matches 0
+
+# 30 degrees, 2 m/s, a tiny tip offset 0.003 R right, 0.002 R below: w = (-666.2, -384.7),
+# wy = 1154.0, each within 0.5 % (the spin factors must not be rounded to 1e-4 before the product)
+kill @e[tag=pool.ball]
+scoreboard players set $resting pool.game 1
+function pool:table/rack/ball {id:0, x:635000, z:635000, item:"minecraft:white_concrete"}
+function pool:api/shot {angle:3000, speed:2000, tip_x:3, tip_y:-2, elevation:0}
+assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.wx matches -669..-663
+assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.wz matches -386..-383
+assert score @e[tag=pool.ball,scores={pool.id=0},limit=1] pool.wy matches 1149..1159
