@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from poolgame.physics.ball import AT_REST, Ball, advance_through
-from tests.datapack.pool_world import UM_PER_TICK, PoolWorld
+from tests.datapack.pool_world import BACKENDS, UM_PER_TICK, PoolWorld
 
 BALL = "ball"    # a simulated player stands in for the ball entity (@s)
 STATE = ("x", "z", "vx", "vz", "wx", "wz", "wy")
@@ -118,3 +118,29 @@ def test_side_spin_decays_at_the_errata_rate_and_stops():
     for _ in range(20):
         board.call("pool:physics/motion/advance", as_=BALL)
     assert read(board, "wy") == 0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_rolling_phase_longer_than_21_m_does_not_wrap(backend):
+    # pool.s counts a rolling phase in 0.01 um: 2^31 of them is 21.47 m. No table is that long, but
+    # nothing else bounds a phase: the event loop's save (pool:physics/events/save, every tick) moves
+    # the line's start up to the ball past 10 m. The sanitizer (PoolWorld) fails the test on a wrap.
+    start = (0, 600000, 480000, 140000, 480000, 140000)          # 10 m/s, rolling
+    board, ref = PoolWorld(backend), reference_ball(*start)
+    board.add_player(BALL)
+    for name, value in zip(STATE, (*start, 0)):
+        board.set_score(BALL, f"pool.{name}", value)
+    board.call("pool:physics/motion/start", as_=BALL)
+    assert read(board, "state") == 2
+    path = 0.0
+    for _ in range(60):                                           # 30 m
+        board.call("pool:physics/events/save", as_=BALL)
+        board.set_score("#motion.step", "pool.tmp", 10000)
+        board.call("pool:physics/motion/advance", as_=BALL)
+        before = ref.r.copy()
+        advance_through(ref, 1 / 20)
+        path += np.linalg.norm(ref.r - before) * 1e6
+        assert read(board, "s") < 2 ** 31 - 10 ** 8
+        error = np.linalg.norm([read(board, "x") - ref.r[0] * 1e6, read(board, "z") - ref.r[1] * 1e6])
+        assert error <= 1000 + 0.0005 * path, (path, error)
+    assert path > 2.5e7

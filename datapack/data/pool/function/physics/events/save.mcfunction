@@ -3,7 +3,9 @@
 # Reads: #events.now pool.tmp, @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.wy pool.tau
 # pool.s pool.spd pool.state. Writes: @s pool.bx ... pool.bstate, pool.bt (the time).
 # The phase constants (ax az rx rz dx dz x0 z0) change only when a phase starts, which
-# pool:physics/motion/advance redoes identically after a restore.
+# pool:physics/motion/advance redoes identically after a restore; a rolling phase past 10 m moves
+# its start up to the ball first (pool:physics/motion/roll/rebase: pool.s must stay below 2^31).
+execute if score @s pool.state matches 2 if score @s pool.s matches 1000000000.. run function pool:physics/motion/roll/rebase
 scoreboard players operation @s pool.bx = @s pool.x
 scoreboard players operation @s pool.bz = @s pool.z
 scoreboard players operation @s pool.bvx = @s pool.vx
