@@ -100,8 +100,8 @@ def vector(board, x, z, holder=A):
 
 
 # ---------------------------------------------------------------------- tables of real balls
-def table(positions):
-    board = PoolWorld()
+def table(positions, backend="numba"):
+    board = PoolWorld(backend)
     board.place_balls(positions)
     return board
 

@@ -82,6 +82,7 @@ scoreboard players set #5 pool.const 5
 scoreboard players set #7 pool.const 7
 scoreboard players set #10 pool.const 10
 scoreboard players set #100 pool.const 100
+scoreboard players set #256 pool.const 256
 scoreboard players set #1000 pool.const 1000
 scoreboard players set #2000 pool.const 2000
 scoreboard players set #10000 pool.const 10000

@@ -1,16 +1,20 @@
 # pool:physics/events/run — resolve the earliest event (time #events.te, on the moving balls tagged
-# by pool:physics/events/take) when its estimated cost still fits in this game tick's $budget, else
-# carry the physics tick over: its balls are rewound to #events.te, resolved, and go on from there.
+# by pool:physics/events/take) when its estimated cost still fits in this game tick's $budget (or it
+# is the game tick's first work), else carry the physics tick over: its balls are rewound to
+# #events.te, resolved, and go on from there.
 # Reads/writes: #events.te #events.kind #events.partner #events.now #cost.work #events.same
 # pool.tmp, $carry pool.game, the event's balls; tags pool.event pool.event_b, pool.settled (removed
 # from the event's balls).
 execute if score #events.kind pool.tmp matches 1 as @e[tag=pool.ball] if score @s pool.id = #events.partner pool.tmp run tag @s add pool.event_b
-# the resolution and restarts about 900 commands, plus each ball's rewind from its saved time
+# the resolution and restarts about 900 commands (1300 with a ball-ball contact's Newton steps, up
+# to 1700 for four), plus each ball's rewind from its saved time
 scoreboard players set #cost.next pool.tmp 900
+execute if score #events.kind pool.tmp matches 1 run scoreboard players set #cost.next pool.tmp 1300
 execute as @e[tag=pool.event] run function pool:physics/events/cost/rewind
 execute as @e[tag=pool.event_b] run function pool:physics/events/cost/rewind
 scoreboard players operation #cost.next pool.tmp += #cost.work pool.tmp
-execute if score #cost.next pool.tmp > $budget pool.const run return run scoreboard players set $carry pool.game 1
+# (the first work of a game tick always runs, so that a small $budget slows the table, never stops it)
+execute if score #cost.work pool.tmp matches 1.. if score #cost.next pool.tmp > $budget pool.const run return run scoreboard players set $carry pool.game 1
 scoreboard players operation #cost.work pool.tmp = #cost.next pool.tmp
 # the searches of this sub-step are used up (a game tick that carried the event over skips them)
 tag @e[tag=pool.found] remove pool.found

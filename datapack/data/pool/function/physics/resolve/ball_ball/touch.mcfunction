@@ -1,47 +1,26 @@
-# pool:physics/resolve/ball_ball/touch — bring @s (a) and b (#ball_ball.b.*) to touching, |r_b -
-# r_a| = 2R + 10 um (between 2R and the sweep's $contact), by moving both along their velocities by
-# the same small time g / c (g = gap, c = closing speed): the sweep's chords miss the curved sliding
-# path by up to 0.6 mm, which would tilt the contact normal.
+# pool:physics/resolve/ball_ball/touch — bring @s (a) and b (#ball_ball.b.*) to touching, |r_b - r_a|
+# = 2R + 1 um (0.5 to 1.5 um after rounding: near a tangent every um of gap turns the contact normal,
+# 0.06 degrees at 89 degrees), by moving both along their velocities by the same time: the sweep's chords miss the curved sliding paths by up to 0.6 mm, so the balls can meet
+# there a little apart or overlapping, which would tilt the contact normal. The time solves
+# |r_b - r_a| = 2R + 1 for straight paths by Newton's method (pool:physics/resolve/ball_ball/touch/step):
+# the distance is convex in time, so from a gap the steps close it from one side, and from an
+# overlap the first step lands on that side; a nearly tangent pair may move a few mm, which is how
+# far along its path the contact really was. When the paths miss on straight lines (the gap
+# stops shrinking), the pair stops approaching or a step would move a ball more than 30 mm, both
+# balls go back to where they were.
 # Reads/writes: @s pool.x pool.z, #ball_ball.b.x #ball_ball.b.z pool.tmp; reads @s pool.vx pool.vz,
 # #ball_ball.b.vx #ball_ball.b.vz.
-# Temporaries #ball_ball.g #ball_ball.c pool.tmp and the math library's.
-scoreboard players operation $x pool.math = #ball_ball.b.x pool.tmp
-scoreboard players operation $x pool.math -= @s pool.x
-scoreboard players operation $z pool.math = #ball_ball.b.z pool.tmp
-scoreboard players operation $z pool.math -= @s pool.z
-function pool:math/normalize
-scoreboard players operation #ball_ball.g pool.tmp = $len pool.math
-scoreboard players operation #ball_ball.g pool.tmp -= $2R pool.const
-scoreboard players remove #ball_ball.g pool.tmp 10
-scoreboard players operation $a pool.math = @s pool.vx
-scoreboard players operation $a pool.math -= #ball_ball.b.vx pool.tmp
-scoreboard players operation $b pool.math = $ux pool.math
-function pool:math/mul_unit
-scoreboard players operation #ball_ball.c pool.tmp = $out pool.math
-scoreboard players operation $a pool.math = @s pool.vz
-scoreboard players operation $a pool.math -= #ball_ball.b.vz pool.tmp
-scoreboard players operation $b pool.math = $uz pool.math
-function pool:math/mul_unit
-scoreboard players operation #ball_ball.c pool.tmp += $out pool.math
-execute if score #ball_ball.c pool.tmp matches ..0 run return 0
-execute unless score #ball_ball.g pool.tmp matches -2000..2000 run return 0
-# a nearly tangent closing speed would carry both balls far along their paths (time g / c) into
-# other balls: shift only when each moves at most 8 |g|
-execute if function pool:physics/resolve/ball_ball/too_tangent run return 0
-scoreboard players operation $b pool.math = #ball_ball.c pool.tmp
-scoreboard players operation $a pool.math = @s pool.vx
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation @s pool.x += $out pool.math
-scoreboard players operation $a pool.math = @s pool.vz
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation @s pool.z += $out pool.math
-scoreboard players operation $a pool.math = #ball_ball.b.vx pool.tmp
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation #ball_ball.b.x pool.tmp += $out pool.math
-scoreboard players operation $a pool.math = #ball_ball.b.vz pool.tmp
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation #ball_ball.b.z pool.tmp += $out pool.math
+# Temporaries #ball_ball.a0x #ball_ball.a0z #ball_ball.b0x #ball_ball.b0z #ball_ball.last
+# #ball_ball.steps #ball_ball.g #ball_ball.c pool.tmp, those of touch/step and the math library's.
+scoreboard players operation #ball_ball.a0x pool.tmp = @s pool.x
+scoreboard players operation #ball_ball.a0z pool.tmp = @s pool.z
+scoreboard players operation #ball_ball.b0x pool.tmp = #ball_ball.b.x pool.tmp
+scoreboard players operation #ball_ball.b0z pool.tmp = #ball_ball.b.z pool.tmp
+scoreboard players set #ball_ball.last pool.tmp 2001
+scoreboard players set #ball_ball.steps pool.tmp 0
+function pool:physics/resolve/ball_ball/touch/step
+execute unless score #ball_ball.steps pool.tmp matches -1 run return 0
+scoreboard players operation @s pool.x = #ball_ball.a0x pool.tmp
+scoreboard players operation @s pool.z = #ball_ball.a0z pool.tmp
+scoreboard players operation #ball_ball.b.x pool.tmp = #ball_ball.b0x pool.tmp
+scoreboard players operation #ball_ball.b.z pool.tmp = #ball_ball.b0z pool.tmp
