@@ -4,7 +4,7 @@
 # step, until g = 0 (or |g| = 1 twice, or four moves). #ball_ball.steps becomes -1 when touch must
 # put the balls back: |g| did not shrink (or is more than 2 mm), c <= 0, or a move of more than 30 mm.
 # Reads/writes: @s pool.x pool.z, #ball_ball.b.x #ball_ball.b.z #ball_ball.last #ball_ball.steps
-# pool.tmp; reads the velocities. Writes: #ball_ball.g #ball_ball.c #ball_ball.ag #ball_ball.sx
+# #cost.work pool.tmp; reads the velocities. Writes: #ball_ball.g #ball_ball.c #ball_ball.ag #ball_ball.sx
 # #ball_ball.sz #ball_ball.tx #ball_ball.tz pool.tmp and the math library's temporaries.
 function pool:physics/resolve/ball_ball/touch/gap
 scoreboard players operation $a pool.math = @s pool.vx
@@ -25,6 +25,8 @@ execute if score #ball_ball.c pool.tmp matches ..0 run return run scoreboard pla
 execute if score #ball_ball.ag pool.tmp >= #ball_ball.last pool.tmp run return run scoreboard players set #ball_ball.steps pool.tmp -1
 execute if score #ball_ball.steps pool.tmp matches 4.. run return 0
 scoreboard players add #ball_ball.steps pool.tmp 1
+# the event's estimate (pool:physics/events/run) covers one move; each further one is charged
+execute if score #ball_ball.steps pool.tmp matches 2.. run scoreboard players add #cost.work pool.tmp 250
 scoreboard players operation #ball_ball.last pool.tmp = #ball_ball.ag pool.tmp
 # the moves v g / c (|v g| <= 2^31: |v| <= 10^6 um/tick, |g| <= 2000 um)
 scoreboard players operation $b pool.math = #ball_ball.c pool.tmp
