@@ -67,9 +67,13 @@ class PoolWorld:
 
     def place_balls(self, positions) -> None:
         """Ball i at rest at positions[i] (um, table frame), the table corner at TABLE_CORNER."""
+        self.place_balls_with_ids([(i, x, z) for i, (x, z) in enumerate(positions)])
+
+    def place_balls_with_ids(self, placed) -> None:
+        """Balls at rest, summoned in the order given: (id, x, z) each (um, table frame)."""
         for axis, value in zip("xyz", TABLE_CORNER):
             self.set_score(f"$origin.{axis}", "pool.game", round(value * 1000))
-        for i, (x, z) in enumerate(positions):
+        for i, x, z in placed:
             self.call("pool:table/rack/ball", arguments={"id": i, "x": x, "z": z, "item": BALL_ITEM})
         self.set_score("$resting", "pool.game", 1)
         self.set_score("$pocketed", "pool.game", 0)
