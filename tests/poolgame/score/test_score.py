@@ -14,11 +14,8 @@ from poolgame.shot import DEFAULT_PACK
 
 PACK = str(DEFAULT_PACK)
 KNOWN_DEFECTS = {
-    "contact": "physics/resolve/ball_ball/too_tangent estimates the speed as |vx +- vz|: near-tangent hits "
-               "resolve inside 2R (80 deg cut aimed at 37 deg)",
-    "object_direction": "the same near-tangent overlap tilts the contact normal by up to 0.4 deg",
-    "cue_speed": "cue/strike stores cos(89 deg) as 175/10^4: balls 0.3 % fast at 89 deg elevation",
-    "cue_spin": "cue/strike rounds the spin factors to 1e-4 before multiplying: 1-8 % for tips of 1-5 per mille",
+    "object_direction": "resolve/ball_ball/touch moves a pair to its contact along straight lines: at an 89 deg cut "
+                        "of a slow sliding cue ball the path's curve over those mm leaves the normal 0.26 deg off",
     "symmetry": "simultaneous contacts of the break resolve in entity order: mirror partners part",
 }
 
