@@ -1,10 +1,12 @@
 """dpemu score on the command line: the table, its JSON, the pictures, and bad input (exit 2)."""
 import json
+import shutil
 
 import pytest
 from click.testing import CliRunner
 
 from emulator.cli import main
+from poolgame.shot import DEFAULT_PACK
 
 
 def run(*args):
@@ -22,9 +24,17 @@ def test_one_model_prints_its_rows_and_the_json_holds_them(tmp_path):
     assert all(r["mode"] == "seeded" for r in report["rows"])
 
 
-def test_a_failing_row_exits_1():
-    # the cue strike at 89 degrees of elevation is 0.3 % fast (a known defect of the pack)
-    result = run("--model", "cue", "--shots", "1", "--workers", "1")
+def test_a_failing_row_exits_1(tmp_path):
+    # a copy of the pool pack whose cushions apply only half of the normal speed's change
+    # (v_n' = -e v_n / 2): the normal-speed ratio is 0.425 where the model says 0.85
+    pack = tmp_path / "pool"
+    shutil.copytree(DEFAULT_PACK, pack)
+    rebound = pack / "data/pool/function/physics/resolve/cushion/rebound.mcfunction"
+    text = rebound.read_text()
+    flip = "scoreboard players operation #cushion.vn pool.tmp *= #-1 pool.const\n"
+    assert text.count(flip) == 1
+    rebound.write_text(text.replace(flip, flip + "scoreboard players operation #cushion.vn pool.tmp /= #2 pool.const\n"))
+    result = run(str(pack), "--model", "cushion", "--shots", "1", "--mode", "seeded", "--workers", "1")
     assert "FAIL" in result.output and result.exit_code == 1
 
 
