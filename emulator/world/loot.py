@@ -16,7 +16,8 @@ set_damage, limit_count, set_components, set_custom_data, set_name, set_lore, co
 copy_custom_data, copy_components (block_entity), set_contents, set_enchantments,
 enchant_randomly, enchanted_count_increase/looting_enchant, apply_bonus, explosion_decay,
 set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered, sequence,
-reference. Anything else (an entry, function, condition or number provider type) raises a reported
+reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
+before 1.21.4), set_stew_effect. Anything else (an entry, function, condition or number provider type) raises a reported
 ``CommandFailure`` naming it: the command fails with a diagnostic, never an empty drop in silence.
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/level/storage/loot/LootTable.java,
@@ -31,7 +32,7 @@ import json
 import math
 from typing import Callable
 
-from mcfunction_parser.nbt import Compound, Int, List, String
+from mcfunction_parser.nbt import Compound, Int, IntArray, List, String
 from emulator.world import nbt_ops
 from emulator.world.entities import entity_nbt
 from emulator.world.errors import CommandFailure
@@ -475,6 +476,46 @@ def _set_nbt(f, stack, ctx):
     return stack
 
 
+def _fill_player_head(f, stack, ctx):
+    """FillPlayerHeadFunction: a player head gets the player's profile."""
+    entity = ctx.entity(f.get("entity", "this"))
+    if stack.id == "minecraft:player_head" and entity is not None and entity.is_player:
+        set_component(stack, "minecraft:profile", Compound(name=String(entity.player_name),
+                                                            id=IntArray(Int(v) for v in entity.uuid)))
+    return stack
+
+
+def _set_ominous_bottle_amplifier(f, stack, ctx):
+    set_component(stack, "minecraft:ominous_bottle_amplifier", Int(min(max(integer(f["amplifier"], ctx), 0), 4)))
+    return stack
+
+
+def _set_custom_model_data(f, stack, ctx):
+    if "value" not in f:  # 1.21.4: floats/flags/strings/colors list operations
+        raise not_modelled("set_custom_model_data form", "floats/flags/strings/colors")
+    set_component(stack, "minecraft:custom_model_data", Int(integer(f["value"], ctx)))
+    return stack
+
+
+_INSTANT_EFFECTS = {"minecraft:instant_health", "minecraft:instant_damage", "minecraft:saturation"}
+
+
+def _set_stew_effect(f, stack, ctx):
+    """SetStewEffectFunction: one of the effects at random, its duration in seconds (ticks for
+    instant effects) added to the stew's effects."""
+    effects = f.get("effects", [])
+    if stack.id != "minecraft:suspicious_stew" or not effects:
+        return stack
+    chosen = effects[ctx.random.randrange(len(effects))]
+    effect = _id(chosen["type"])
+    duration = integer(chosen.get("duration", 160), ctx) * (1 if effect in _INSTANT_EFFECTS else 20)
+    current = stack.component("minecraft:suspicious_stew_effects")
+    value = List(current) if isinstance(current, list) else List()
+    value.append(Compound(id=String(effect), duration=Int(duration)))
+    set_component(stack, "minecraft:suspicious_stew_effects", value)
+    return stack
+
+
 def _filtered(f, stack, ctx):
     passed = item_matches(f.get("item_filter", {}), stack, ctx)
     branch = f.get("modifier") if passed else None
@@ -507,4 +548,6 @@ FUNCTIONS: dict[str, Callable] = {f"minecraft:{k}": v for k, v in {
     "enchant_randomly": _enchant_randomly, "enchanted_count_increase": _enchanted_count_increase,
     "looting_enchant": _enchanted_count_increase, "apply_bonus": _apply_bonus, "explosion_decay": _explosion_decay,
     "set_item": _set_item, "set_potion": _set_potion, "set_loot_table": _set_loot_table, "set_nbt": _set_nbt,
-    "filtered": _filtered, "sequence": _sequence, "reference": _reference}.items()}
+    "filtered": _filtered, "sequence": _sequence, "reference": _reference, "fill_player_head": _fill_player_head,
+    "set_ominous_bottle_amplifier": _set_ominous_bottle_amplifier, "set_custom_model_data": _set_custom_model_data,
+    "set_stew_effect": _set_stew_effect}.items()}

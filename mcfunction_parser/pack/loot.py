@@ -17,7 +17,9 @@ from __future__ import annotations
 
 from typing import Any
 
-from mcfunction_parser.diagnostics import ERROR, Diagnostic
+from mcfunction_parser import gamedata
+from mcfunction_parser.diagnostics import ERROR, WARNING, Diagnostic
+from mcfunction_parser.items import component_problem
 from mcfunction_parser.pack.text import JsonDocument
 
 Version = tuple[int, int, int]
@@ -139,6 +141,8 @@ class _Checker:
         self.conditions(entry.get("conditions", []))
         if kind in ("minecraft:item", "minecraft:tag", "minecraft:dynamic") and not isinstance(entry.get("name"), str):
             self.report(ERROR, f"a {kind.split(':')[1]} entry needs a \"name\"", kind.split(":")[1])
+        elif kind == "minecraft:item":
+            self.item(entry["name"])
         if kind == "minecraft:loot_table" and not isinstance(entry.get("value", entry.get("name")), (str, dict)):
             self.report(ERROR, 'a loot_table entry needs a "value"', "loot_table")
         if kind == "minecraft:loot_table" and isinstance(entry.get("value"), dict):
@@ -168,6 +172,11 @@ class _Checker:
             return
         kind = self.type_of(function, "function", FUNCTION_TYPES, "item function")
         self.conditions(function.get("conditions", []))
+        if kind == "minecraft:set_components" and isinstance(function.get("components"), dict):
+            for name in function["components"]:
+                self.component(name)
+        if kind == "minecraft:set_item" and isinstance(function.get("item"), str):
+            self.item(function["item"])
         for key in ("count", "damage", "levels"):
             if kind in ("minecraft:set_count", "minecraft:set_damage", "minecraft:enchant_with_levels") and key in function:
                 self.number(function[key])
@@ -177,6 +186,27 @@ class _Checker:
             for key in ("modifier", "on_pass", "on_fail"):
                 if key in function:
                     self.function(function[key])
+
+    def item(self, name: str) -> None:
+        """An item id in the release's item registry (an error against that release's own data,
+        a warning against older data)."""
+        self.advance(name)
+        rid = _typed(name)
+        try:
+            release, exact = gamedata.registry_release(self.version)
+        except gamedata.GameDataMissing:
+            return
+        known = gamedata.registry("item", release)
+        if known and rid.startswith("minecraft:") and rid[10:] not in known:
+            self.report(ERROR if exact else WARNING, f"unknown item '{name}'", name)
+        elif known and not rid.startswith("minecraft:"):
+            self.report(ERROR if exact else WARNING, f"unknown item '{name}'", name)
+
+    def component(self, name: str) -> None:
+        plain = name.removeprefix("!")
+        problem = component_problem(_typed(plain), self.version)
+        if problem is not None:
+            self.report(ERROR if problem[0] == "error" else WARNING, problem[1], name)
 
     def conditions(self, conditions: Any) -> None:
         if not isinstance(conditions, list):

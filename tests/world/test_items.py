@@ -241,3 +241,21 @@ def test_a_creative_inventory_takes_everything():
     assert inv.add(items.ItemStack("minecraft:dirt", 64 * 36))
     extra = items.ItemStack("minecraft:stone", 5)
     assert inv.add(extra) and extra.is_empty
+
+
+def test_small_functions():
+    # FillPlayerHeadFunction, SetOminousBottleAmplifierFunction (clamped 0-4), SetStewEffectFunction
+    # (seconds x 20, ticks for instant effects), SetCustomModelDataFunction (its int form)
+    ctx = context()
+    ctx.this = _player()
+    head = loot.apply_modifier({"function": "fill_player_head", "entity": "this"},
+                               items.ItemStack("minecraft:player_head"), ctx)
+    assert head.component("minecraft:profile")["name"] == "Steve"
+    bottle = loot.apply_modifier({"function": "set_ominous_bottle_amplifier", "amplifier": 9},
+                                 items.ItemStack("minecraft:ominous_bottle"), ctx)
+    assert bottle.component("minecraft:ominous_bottle_amplifier") == 4
+    stew = loot.apply_modifier({"function": "set_stew_effect", "effects": [{"type": "saturation", "duration": 7}]},
+                               items.ItemStack("minecraft:suspicious_stew"), ctx)
+    assert to_snbt(stew.component("minecraft:suspicious_stew_effects")) == '[{id:"minecraft:saturation",duration:7}]'
+    model = loot.apply_modifier({"function": "set_custom_model_data", "value": 3}, items.ItemStack("minecraft:stick"), ctx)
+    assert model.component("minecraft:custom_model_data") == 3

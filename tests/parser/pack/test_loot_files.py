@@ -60,3 +60,17 @@ def test_check_names_loot_tables_and_modifiers_that_are_not_loaded(tmp_path):
                                        "loot give @a loot other:z\n"})
     errors = [(e.line, e.message) for e in check_packs([root]).of("error")]
     assert errors == [(2, "unknown loot table a:y"), (3, "unknown item modifier a:m")]
+
+
+def test_item_ids_and_components_are_checked(tmp_path):
+    # items are a static registry: an unknown id in a loot table fails to decode, as does a
+    # component the release does not have (set_components)
+    table = {"pools": [{"rolls": 1, "entries": [
+        {"type": "item", "name": "minecraft:diamondd"},
+        {"type": "item", "name": "stone", "functions": [{"function": "set_components",
+                                                         "components": {"minecraft:bogus": 1, "!food": {}}}]}]}]}
+    root = write_pack(tmp_path / "p", {"a/loot_table/x.json": json.dumps(table, indent=1)})
+    packs = load_packs([root], mc_version="1.21.4")
+    assert sorted((e.line, e.message) for e in packs.errors) == [
+        (8, "unknown item 'minecraft:diamondd'"), (17, "unknown component 'minecraft:bogus'")]
+    assert packs.loot_tables == {}
