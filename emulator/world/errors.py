@@ -91,6 +91,7 @@ MESSAGES = {
     "commands.drop.no_held_items": "Entity can't hold any items",
     "commands.drop.no_loot_table": "Entity {0} has no loot table",
     "arguments.item.overstacked": "{0} can only stack up to {1}",
+    "arguments.item.tag.unknown": "Unknown item tag '{0}'",
 }
 
 EMULATOR_MESSAGES = {

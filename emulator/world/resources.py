@@ -5,7 +5,7 @@ and item tags.
 (only files that decoded: the game skips the others); ``Resources()`` is an empty world. ``random`` is the seeded source loot rolls and dropped items draw from (seed 0;
 not the game's own random sequence). ``item_tag(tag_id)`` is the one place an item tag is resolved: the packs' own
 ``tags/item`` files (nested tags flattened, ``replace`` honoured); the game's vanilla item tags
-are not shipped, so a vanilla tag a pack does not define is empty.
+are not shipped, so using one no pack defines fails the command saying so (never a silent miss).
 """
 from __future__ import annotations
 
@@ -14,6 +14,7 @@ from dataclasses import dataclass, field
 
 from mcfunction_parser.ast import FunctionTag
 from mcfunction_parser.pack.tags import resolve_tag
+from emulator.world.errors import CommandFailure
 
 
 class _AnyItem:
@@ -42,7 +43,13 @@ class Resources:
         return found
 
     def item_tag(self, tag_id: str) -> frozenset[str]:
+        """The tag's items. A tag no pack defines fails the command with a diagnostic: the game's
+        own tags are not shipped, and the game refuses a function naming an unknown tag."""
         tag_id = tag_id.removeprefix("#")
+        if tag_id not in self.item_tags:
+            if tag_id.startswith("minecraft:"):
+                raise CommandFailure("dpemu.unsupported", f"the game's item tag #{tag_id}", report=True)
+            raise CommandFailure("arguments.item.tag.unknown", tag_id, report=True)
         members = self._resolved.get(tag_id)
         if members is None:
             members = self._resolved[tag_id] = frozenset(resolve_tag(self.item_tags, _AnyItem(), tag_id))

@@ -189,3 +189,12 @@ def test_set_name_resolved_as_the_entity(tmp_path):
     storage = emu.state.storage["t:s"]
     assert json.loads(storage["name"]) == [{"text": "hello"}, {"text": "42"}]
     assert json.loads(storage["raw"]) == {"score": {"name": "#x", "objective": "v"}}  # no entity: as written
+
+
+def test_item_tags_no_pack_defines_are_said_to_be_missing(tmp_path):
+    # the game's own tags are not shipped: a test on one fails with a diagnostic, never a silent miss
+    emu = run_both(tmp_path, {"t:main": SETUP + "give Steve oak_log\n"
+                              "execute store success score #logs v if items entity Steve container.* #minecraft:logs\n"},
+                   players=STEVE)
+    assert _scores(emu) == {"#logs": 0}
+    assert [d.message for d in emu.diagnostics] == ["the game's item tag #minecraft:logs is not supported yet"]
