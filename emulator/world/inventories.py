@@ -11,7 +11,8 @@ blocks, and on non-player entities) see and change the same items the item comma
   head] and ``body_armor_item`` before;
 - item entities and item frames: ``Item``; item displays: ``item``; container minecarts and
   chest boats: ``Items``;
-- container block entities (:data:`CONTAINER_SIZES`): ``Items`` entries with ``Slot``.
+- container block entities (:data:`CONTAINER_SIZES`): ``Items`` entries with ``Slot``; the
+  decorated pot's ``item`` and the jukebox's ``RecordItem`` (:data:`SINGLE_ITEM_BLOCKS`).
 
 API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 armor feet..head,
 105 body, 200-226 ender chest, 499 cursor, 500-503 crafting)
@@ -80,6 +81,8 @@ CONTAINER_SIZES = {
     "minecraft:furnace": 3, "minecraft:smoker": 3, "minecraft:blast_furnace": 3, "minecraft:brewing_stand": 5,
     "minecraft:chiseled_bookshelf": 6,
 }
+# ContainerSingleItem block entities: one slot, saved under a key of its own
+SINGLE_ITEM_BLOCKS = {"minecraft:decorated_pot": "item", "minecraft:jukebox": "RecordItem"}
 
 
 def _new_layout(version) -> bool:
@@ -245,24 +248,37 @@ def entity_slot(entity, slot: int, version) -> SlotAccess | None:
 
 # ---------------------------------------------------------------------- containers
 class Container:
-    """A container block entity's slots (``Items`` with ``Slot``); ``size`` slots."""
+    """A container block entity's slots: ``Items`` with ``Slot`` (``size`` slots), or for a
+    single-item container (``key``: the decorated pot's ``item``, the jukebox's ``RecordItem``) one."""
 
-    def __init__(self, nbt: Compound, size: int, version) -> None:
-        self.nbt, self.size, self.version = nbt, size, version
+    def __init__(self, nbt: Compound, size: int, version, key: str | None = None) -> None:
+        self.nbt, self.size, self.version, self.key = nbt, size, version, key
 
     def slot(self, index: int) -> SlotAccess | None:
-        return _list_slot(self.nbt, "Items", index, self.version) if 0 <= index < self.size else None
+        if not 0 <= index < self.size:
+            return None
+        if self.key is not None:
+            return _key_slot(lambda create: self.nbt, self.key, self.version)
+        return _list_slot(self.nbt, "Items", index, self.version)
 
 
 def container(blocks, pos, version) -> Container | None:
     """The container at ``pos`` (ItemCommands.getContainer), None when the block is none."""
-    size = CONTAINER_SIZES.get(blocks.get(pos).id)
+    block_id = blocks.get(pos).id
     nbt = blocks.entity(pos)
-    return None if size is None or nbt is None else Container(nbt, size, version)
+    if nbt is None:
+        return None
+    if block_id in SINGLE_ITEM_BLOCKS:
+        return Container(nbt, 1, version, SINGLE_ITEM_BLOCKS[block_id])
+    size = CONTAINER_SIZES.get(block_id)
+    return None if size is None else Container(nbt, size, version)
 
 
 def default_block_entity(block_id: str) -> Compound | None:
-    """What a container saves when placed empty (ContainerHelper.saveAllItems always writes Items)."""
+    """What a container saves when placed empty (ContainerHelper.saveAllItems always writes Items;
+    a single-item container writes its item only when it has one)."""
+    if block_id in SINGLE_ITEM_BLOCKS:
+        return Compound()
     return Compound(Items=List()) if block_id in CONTAINER_SIZES else None
 
 

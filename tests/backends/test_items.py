@@ -198,3 +198,15 @@ def test_item_tags_no_pack_defines_are_said_to_be_missing(tmp_path):
                    players=STEVE)
     assert _scores(emu) == {"#logs": 0}
     assert [d.message for d in emu.diagnostics] == ["the game's item tag #minecraft:logs is not supported yet"]
+
+
+def test_single_item_containers(tmp_path):
+    # DecoratedPotBlockEntity is a ContainerSingleItem saved under "item": the library idiom of
+    # rolling an inline table into a pot far away and reading its custom data back
+    emu = run_both(tmp_path, {"t:main": SETUP + "setblock -30000000 0 1606 decorated_pot\n"
+                              'loot replace block -30000000 0 1606 contents loot {pools:[{rolls:1,entries:[{type:"item",'
+                              'name:"cod",functions:[{function:"set_custom_data",tag:{v:42}}]}]}]}\n'
+                              "execute store result score #v v run data get block -30000000 0 1606 "
+                              'item.components."minecraft:custom_data".v\n'
+                              "execute store success score #s v run item replace block -30000000 0 1606 container.1 with cod\n"})
+    assert _scores(emu) == {"#v": 42, "#s": 0}
