@@ -14,6 +14,9 @@ blocks, and on non-player entities) see and change the same items the item comma
 - container block entities (:data:`CONTAINER_SIZES`): ``Items`` entries with ``Slot``; the
   decorated pot's ``item`` and the jukebox's ``RecordItem`` (:data:`SINGLE_ITEM_BLOCKS`).
 
+A player's hands and armor are reached as slots of the player: ``entity_slot(player, MAINHAND,
+state.version)`` is the held stack (what ``dummy use item`` or ``drop`` act on).
+
 API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 armor feet..head,
 105 body, 200-226 ender chest, 499 cursor, 500-503 crafting)
 - ``entity_slot(entity, slot, version)``: a :class:`SlotAccess` (``get()`` an
@@ -23,7 +26,9 @@ API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 ar
   None when the block is no container.
 - ``player_inventory(player, version)``: :class:`PlayerInventory`: ``add(stack)`` (Inventory.add:
   fills matching stacks, the selected slot and offhand first, then free slots; ``stack`` keeps
-  what did not fit; the game's boolean), ``clear_or_count(test, max_count)`` (ClearInventoryCommands), ``selected`` (the held slot).
+  what did not fit; the game's boolean), ``clear_or_count(test, max_count)``
+  (ClearInventoryCommands), ``selected`` (the held slot).
+- ``MAINHAND``, ``OFFHAND``, ``BODY``, ``CURSOR``, ``ARMOR_SLOTS``: slot ids by name.
 - ``selected_item(data)``: the held stack's NBT for ``SelectedItem`` (None when empty).
 - ``default_block_entity(block_id)``: the block entity a container gets when placed (``Items: []``).
 - ``drop_item(store, pos, stack, version, rng, extra)``: an item entity (what ``give`` drops, ``loot
