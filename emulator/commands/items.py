@@ -256,7 +256,8 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
     if block.is_air:
         return []
     return loot.roll_table(_vanilla_table(env, table_id),
-                           loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), block_entity=env.state.blocks.entity(pos)))
+                           loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), block_entity=env.state.blocks.entity(pos),
+                                        block_state=block))
 
 
 def loot_command(env, cmd: ast.Loot, ctx) -> int:

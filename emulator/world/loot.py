@@ -17,7 +17,7 @@ copy_custom_data, copy_components (block_entity), set_contents, set_enchantments
 enchant_randomly, enchanted_count_increase/looting_enchant, apply_bonus, explosion_decay,
 set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered, sequence,
 reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
-before 1.21.4), set_stew_effect. Anything else (an entry, function, condition or number provider type) raises a reported
+before 1.21.4), set_stew_effect, copy_state. Anything else (an entry, function, condition or number provider type) raises a reported
 ``CommandFailure`` naming it: the command fails with a diagnostic, never an empty drop in silence.
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/level/storage/loot/LootTable.java,
@@ -516,6 +516,20 @@ def _set_stew_effect(f, stack, ctx):
     return stack
 
 
+def _copy_state(f, stack, ctx):
+    """CopyBlockState: the named properties of the mined block into the block_state component."""
+    if ctx.block_state is None or ctx.block_state.id != _id(f.get("block", "")):
+        return stack
+    found = dict(ctx.block_state.properties)
+    current = stack.component("minecraft:block_state")
+    state = Compound(current) if isinstance(current, Compound) else Compound()
+    for name in f.get("properties", []):
+        if name in found:
+            state[name] = String(found[name])
+    set_component(stack, "minecraft:block_state", state)
+    return stack
+
+
 def _filtered(f, stack, ctx):
     passed = item_matches(f.get("item_filter", {}), stack, ctx)
     branch = f.get("modifier") if passed else None
@@ -550,4 +564,4 @@ FUNCTIONS: dict[str, Callable] = {f"minecraft:{k}": v for k, v in {
     "set_item": _set_item, "set_potion": _set_potion, "set_loot_table": _set_loot_table, "set_nbt": _set_nbt,
     "filtered": _filtered, "sequence": _sequence, "reference": _reference, "fill_player_head": _fill_player_head,
     "set_ominous_bottle_amplifier": _set_ominous_bottle_amplifier, "set_custom_model_data": _set_custom_model_data,
-    "set_stew_effect": _set_stew_effect}.items()}
+    "set_stew_effect": _set_stew_effect, "copy_state": _copy_state}.items()}

@@ -7,7 +7,8 @@ reported ``CommandFailure`` naming it, never a silent pass or fail.
 
 Modelled here: inverted, any_of, all_of, alternative, random_chance, random_chance_with_looting /
 random_chance_with_enchanted_bonus (no enchantment level: the unenchanted chance), killed_by_player,
-entity_scores, value_check, time_check, survives_explosion, match_tool, table_bonus.
+entity_scores, value_check, time_check, survives_explosion, match_tool, table_bonus,
+block_state_property (the mined block).
 ``item_matches(predicate, stack, ctx)``: the JSON item predicate (``items``, ``count``,
 ``components``, ``predicates`` with custom_data and damage) of match_tool and filtered.
 
@@ -78,6 +79,25 @@ def _match_tool(c, ctx):
     return ctx.tool is not None and item_matches(c.get("predicate", {}), ctx.tool, ctx)
 
 
+def _block_state_property(c, ctx):
+    """LootItemBlockStatePropertyCondition: the mined block is that block, with those properties
+    (a value, or {min, max} compared as numbers)."""
+    state = ctx.block_state
+    if state is None or state.id != namespaced(c.get("block", "")):
+        return False
+    found = dict(state.properties)
+    for name, wanted in c.get("properties", {}).items():
+        value = found.get(name)
+        if value is None:
+            return False
+        if isinstance(wanted, dict):
+            if not value.lstrip("-").isdigit() or not _in_range(int(value), wanted, ctx):
+                return False
+        elif str(wanted).lower() != value:
+            return False
+    return True
+
+
 CONDITIONS: dict[str, Callable[[dict, LootContext], bool]] = {f"minecraft:{k}": v for k, v in {
     "inverted": lambda c, ctx: not holds(c["term"], ctx),
     "any_of": lambda c, ctx: any(holds(t, ctx) for t in c.get("terms", [])),
@@ -93,6 +113,7 @@ CONDITIONS: dict[str, Callable[[dict, LootContext], bool]] = {f"minecraft:{k}": 
     "survives_explosion": lambda c, ctx: ctx.explosion_radius is None or ctx.random.random() <= 1.0 / ctx.explosion_radius,
     "match_tool": _match_tool,
     "table_bonus": _table_bonus,
+    "block_state_property": _block_state_property,
 }.items()}
 
 

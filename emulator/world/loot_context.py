@@ -43,6 +43,7 @@ class LootContext:
     tool: ItemStack | None = None
     origin: tuple[float, float, float] | None = None
     block_entity: Compound | None = None
+    block_state: Any = None  # the mined block (emulator.world.blocks.BlockState)
     explosion_radius: float | None = None
     daytime: int = 0
     scores: Callable[[str, str], int | None] = lambda holder, objective: None

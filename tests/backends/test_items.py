@@ -210,3 +210,30 @@ def test_single_item_containers(tmp_path):
                               'item.components."minecraft:custom_data".v\n'
                               "execute store success score #s v run item replace block -30000000 0 1606 container.1 with cod\n"})
     assert _scores(emu) == {"#v": 42, "#s": 0}
+
+
+def test_mine_reads_the_block_and_its_state(tmp_path):
+    # LootCommand.dropBlockLoot: the block's table (here a pack's own blocks/ table), the block state
+    # for block_state_property and copy_state, the tool for match_tool
+    table = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "oak_slab",
+                                                 "conditions": [{"condition": "block_state_property", "block": "oak_slab",
+                                                                 "properties": {"type": "double"}}],
+                                                 "functions": [{"function": "set_count", "count": 2},
+                                                               {"function": "copy_state", "block": "oak_slab",
+                                                                "properties": ["type"]}]}]},
+                       {"rolls": 1, "conditions": [{"condition": "match_tool", "predicate": {"items": "minecraft:shears"}}],
+                        "entries": [{"type": "item", "name": "stick"}]}]}
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + "setblock 0 0 0 oak_slab[type=double]\nsetblock 1 0 0 oak_slab\n"
+                                          "execute store result score #d v run loot give Steve mine 0 0 0 shears\n"
+                                          "execute store result score #s v run loot give Steve mine 1 0 0\n"
+                                          "execute store result score #n v if items entity Steve container.* oak_slab\n"})
+    (pack / "data/minecraft/loot_table/blocks").mkdir(parents=True)
+    (pack / "data/minecraft/loot_table/blocks/oak_slab.json").write_text(json.dumps(table))
+    for backend in ("python", "numba"):
+        emu = Emulator(backend=backend)
+        emu.load(pack)
+        emu.add_player("Steve", (0.0, 64.0, 0.0))
+        emu.call("t:main")
+        assert _scores(emu) == {"#d": 2, "#s": 0, "#n": 2}
+        slab = entity_nbt(_player(emu))["Inventory"][0]
+        assert to_snbt(slab["components"]) == '{"minecraft:block_state":{type:"double"}}'
