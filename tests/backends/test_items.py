@@ -28,6 +28,16 @@ def test_the_crafter_pack_passes_its_own_suite(backend):
         ("craft:crafter", "passed", ""), ("craft:reward", "passed", "")]
 
 
+def _on_both(pack):
+    """Each backend's emulator on ``pack`` after ``t:main`` ran with Steve online."""
+    for backend in ("python", "numba"):
+        emu = Emulator(backend=backend)
+        emu.load(pack)
+        emu.add_player("Steve", (0.0, 64.0, 0.0))
+        emu.call("t:main")
+        yield emu
+
+
 def _scores(emu):
     return emu.scores().get("v", {})
 
@@ -103,11 +113,7 @@ def test_loot_targets(tmp_path):
     (pack / "data/t/loot_table").mkdir(parents=True)
     (pack / "data/t/loot_table/stone.json").write_text(json.dumps(table))
     results = []
-    for backend in ("python", "numba"):
-        emu = Emulator(backend=backend)
-        emu.load(pack)
-        emu.add_player("Steve", (0.0, 64.0, 0.0))
-        emu.call("t:main")
+    for emu in _on_both(pack):
         results.append((_scores(emu), emu.entities(), [d.format() for d in emu.diagnostics]))
     assert results[0] == results[1]
     assert results[0][0] == {"#e": 2, "#r": 2, "#i": 6, "#n": 2, "#all": 140, "#g": 2}
@@ -122,11 +128,7 @@ def test_bad_loot_input(tmp_path):
     (pack / "data/t/loot_table").mkdir(parents=True)
     (pack / "data/t/loot_table/smelt.json").write_text(json.dumps({"pools": [{"rolls": 1, "entries": [
         {"type": "item", "name": "beef", "functions": [{"function": "furnace_smelt"}]}]}]}))
-    for backend in ("python", "numba"):
-        emu = Emulator(backend=backend)
-        emu.load(pack)
-        emu.add_player("Steve", (0.0, 64.0, 0.0))
-        emu.call("t:main")
+    for emu in _on_both(pack):
         messages = [d.message for d in emu.diagnostics]
         assert messages == ["Unknown loot table t:missing", "item function: 'minecraft:furnace_smelt' is not "
                             "modelled by the emulator", "Unknown item modifier t:nothing"]
@@ -160,11 +162,7 @@ def test_kill_loot_uses_the_entity_table_and_its_killer(tmp_path):
         "summon cow 0 64 0\nloot give Steve kill @e[type=cow,limit=1]\n"})
     (pack / "data/t/loot_table").mkdir(parents=True)
     (pack / "data/t/loot_table/zdrops.json").write_text(json.dumps(drops))
-    for backend in ("python", "numba"):
-        emu = Emulator(backend=backend)
-        emu.load(pack)
-        emu.add_player("Steve", (0.0, 64.0, 0.0))
-        emu.call("t:main")
+    for emu in _on_both(pack):
         assert _scores(emu) == {"#server": 0, "#player": 1, "#marker": 0}
         assert [d.message for d in emu.diagnostics] == [
             "the game's own loot table: 'minecraft:entities/cow' is not modelled by the emulator"]
@@ -229,11 +227,7 @@ def test_mine_reads_the_block_and_its_state(tmp_path):
                                           "execute store result score #n v if items entity Steve container.* oak_slab\n"})
     (pack / "data/minecraft/loot_table/blocks").mkdir(parents=True)
     (pack / "data/minecraft/loot_table/blocks/oak_slab.json").write_text(json.dumps(table))
-    for backend in ("python", "numba"):
-        emu = Emulator(backend=backend)
-        emu.load(pack)
-        emu.add_player("Steve", (0.0, 64.0, 0.0))
-        emu.call("t:main")
+    for emu in _on_both(pack):
         assert _scores(emu) == {"#d": 2, "#s": 0, "#n": 2}
         slab = entity_nbt(_player(emu))["Inventory"][0]
         assert to_snbt(slab["components"]) == '{"minecraft:block_state":{type:"double"}}'
