@@ -127,6 +127,10 @@ class Emulator:
     def score(self, holder: str, objective: str) -> int | None:
         return self.state.scoreboard.get(holder, objective)
 
+    def score_block(self, holders, objectives):
+        """Many scores at once: a numpy int64 array [holder, objective], 0 where unset."""
+        return self.state.scoreboard.block(holders, objectives)
+
     def set_score(self, holder: str, objective: str, value: int) -> None:
         """Set a score (creating the objective as ``dummy`` if needed); value must be an int32."""
         if not INT_MIN <= value <= INT_MAX:

@@ -180,8 +180,8 @@ def ball_states(emu: Emulator, holders: dict[int, str] | None = None) -> dict[in
     """Ball id -> (x um, z um, pool.state) from the balls' scores (``holders`` from
     :func:`ball_holders` saves running a selector each time)."""
     holders = holders if holders is not None else ball_holders(emu)
-    return {i: (emu.score(u, "pool.x"), emu.score(u, "pool.z"), emu.score(u, "pool.state"))
-            for i, u in holders.items()}
+    block = emu.score_block(list(holders.values()), ["pool.x", "pool.z", "pool.state"])
+    return {i: tuple(int(v) for v in row) for i, row in zip(holders, block)}
 
 
 def strike(emu: Emulator, shot: Shot) -> list[str]:

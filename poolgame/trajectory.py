@@ -63,7 +63,7 @@ class Trajectory:
         self._saved = self._read(emu, ("bt", *SAVED))
 
     def _read(self, emu, names) -> np.ndarray:
-        return np.array([[emu.score(h, f"pool.{n}") or 0 for n in names] for h in self._holders], np.int64)
+        return emu.score_block(self._holders, [f"pool.{n}" for n in names])
 
     def observe(self, emu, count: int) -> None:
         """Read the balls after a complete physics tick in which the pack resolved ``count`` events."""

@@ -156,6 +156,16 @@ class Scoreboard:
             return None
         return int(self.values[hid, oid])
 
+    def block(self, holders, objectives) -> np.ndarray:
+        """The scores of many holders on many objectives at once, int64 [holder, objective]; 0
+        where unset (the holder or objective unknown, or no score)."""
+        hids = np.array([self.holder_ids.get(h, -1) for h in holders], np.int64)
+        oids = np.array([self.objective_ids.get(o, -1) for o in objectives], np.int64)
+        known = np.outer(hids >= 0, (oids >= 0) & (self.alive[np.maximum(oids, 0)] != 0))
+        rows, cols = np.maximum(hids, 0), np.maximum(oids, 0)
+        known &= self.present[np.ix_(rows, cols)] != 0
+        return np.where(known, self.values[np.ix_(rows, cols)], 0).astype(np.int64)
+
     def set(self, holder: str, objective: str, value: int) -> None:
         """Set a score (value must already be a Java int). Creates the objective as ``dummy``
         if it does not exist, so test harnesses can seed scores before ``#load`` runs."""

@@ -1,0 +1,16 @@
+"""Scoreboard.block (Emulator.score_block): many scores in one read, 0 where a score is unset."""
+from emulator.world.state import Scoreboard
+
+
+def test_block_reads_each_score_and_zero_where_none_is_set():
+    board = Scoreboard()
+    board.add_objective("a")
+    board.add_objective("b")
+    board.set("x", "a", 5)
+    board.set("y", "b", -7)
+    board.add_objective("gone")
+    board.set("x", "gone", 9)
+    board.remove_objective("gone")
+    block = board.block(["x", "y", "nobody"], ["a", "b", "gone", "unknown"])
+    assert block.tolist() == [[5, 0, 0, 0], [0, -7, 0, 0], [0, 0, 0, 0]]
+    assert [[board.get(h, o) or 0 for o in ("a", "b", "gone", "unknown")] for h in ("x", "y", "nobody")] == block.tolist()
