@@ -5,6 +5,7 @@ same function, :func:`poolgame.score.run.score_case`."""
 from __future__ import annotations
 
 import multiprocessing
+import signal
 from functools import partial
 
 from poolgame.score.run import CaseResult, score_case
@@ -36,8 +37,14 @@ def _results(work, cases, workers: int, scheduler: str | None):
     elif workers <= 1 or len(cases) <= 1:
         yield from map(work, cases)
     else:
-        with multiprocessing.get_context("fork").Pool(min(workers, len(cases))) as pool:
+        with multiprocessing.get_context("fork").Pool(min(workers, len(cases)), _ignore_interrupt) as pool:
             yield from pool.imap(work, cases, chunksize=1)
+
+
+def _ignore_interrupt() -> None:
+    """Ctrl-C reaches every process of the terminal's group: the workers leave it to this one, which
+    stops the pool and reports what finished."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 def _dask(work, cases, scheduler: str):
