@@ -10,9 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from poolgame.score import MODELS  # noqa: F401  (the models rows belong to)
-
-MODES = ("seeded", "end-to-end")
+MODES = ("seeded", "end-to-end")        # the modes rows belong to (their models: poolgame.score.MODELS)
 
 
 @dataclass(frozen=True)

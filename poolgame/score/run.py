@@ -7,8 +7,6 @@ from collections import defaultdict
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import numpy as np
-
 from poolgame.score import direct, endtoend, seeded
 from poolgame.score.cases import W, Case, mirror
 from poolgame.score.constants import NotPoolPack, pack_constants
