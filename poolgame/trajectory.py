@@ -53,6 +53,7 @@ class Trajectory:
 
     def __init__(self, emu, holders: dict[int, str]) -> None:
         self.ids = sorted(holders)
+        self.summoned = list(holders)               # ball ids in entity (summon) order
         self._holders = [holders[i] for i in self.ids]
         self._rails = tuple(emu.score(name, "pool.const") for name in ("$R", "$L", "$W"))
         self.start = self._read(emu, STATE)

@@ -89,7 +89,10 @@ def _table_case(emu, k, case: Case, modes, samples, result: CaseResult, paths: b
     if "end-to-end" in modes:
         e2e_paths = endtoend.score(trajectory, case.shot, k, samples)
     if case.mirrored and "seeded" in modes:
-        balls = None if case.balls is None else {i: (x, W - z) for i, (x, z) in case.balls.items()}
+        # datapack/README.md, simultaneous events: taken in entity order, so the mirrored table is
+        # summoned in the same order as the original (ball 9 where ball 2 was, 2 where 9 was)
+        start = {i: trajectory.start[trajectory.ids.index(i)] for i in trajectory.summoned}
+        balls = {i: (int(s[X]), W - int(s[Z])) for i, s in start.items()}
         mirrored, overflows = _play(emu, balls, mirror(case.shot))
         samples["overflow"].append(float(overflows))
         if mirrored.trajectory is not None:

@@ -16,7 +16,6 @@ PACK = str(DEFAULT_PACK)
 KNOWN_DEFECTS = {
     "object_direction": "resolve/ball_ball/touch moves a pair to its contact along straight lines: at an 89 deg cut "
                         "of a slow sliding cue ball the path's curve over those mm leaves the normal 0.26 deg off",
-    "symmetry": "simultaneous contacts of the break resolve in entity order: mirror partners part",
 }
 
 
