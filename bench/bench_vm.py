@@ -7,9 +7,11 @@
 - the first call in a new process with a warm numba cache (subprocess), minus a second call;
 - the host round trip: a function of host commands (``time query gametime``), per command;
 - an entity-heavy loop: 16 markers, ``execute as @e[tag=x,scores={s=0..2}] run scoreboard players
-  add @s s 1`` and a selector ``set`` per iteration, on the VM (selectors, forks) and on the reference.
+  add @s s 1`` and a selector ``set`` per iteration, on the VM (selectors, forks) and on the reference;
+- the entity store at scale (``--markers N``, 4,096 by default): summoning N markers, then
+  ``execute as @e[tag=x] at @s run tp @s ^ ^ ^1`` over them, on both backends (seconds and ratio).
 
-Usage: python bench/bench_vm.py [--quick] [--baseline DIR]
+Usage: python bench/bench_vm.py [--quick] [--baseline DIR] [--markers N] [--only-store]
 
 ``--baseline DIR`` (an export of an older commit, e.g. ``git archive REV | tar -x -C DIR``) only
 compares the scoreboard loop (counters on): this tree and DIR's emulator, each in a fresh process,
@@ -57,6 +59,10 @@ def write_pack(root: Path) -> Path:
     (functions / "esetup.mcfunction").write_text(
         "scoreboard objectives add s dummy\n" + 'summon marker 0 0 0 {Tags:["x"]}\n' * ENTITIES
         + "scoreboard players set @e[tag=x] s 0\n")
+    (functions / "summon.mcfunction").write_text('summon marker 0 0 0 {Tags:["x"]}\n')
+    (functions / "summon_n.mcfunction").write_text(
+        "function b:summon\nscoreboard players remove #n o 1\nexecute if score #n o matches 1.. run function b:summon_n\n")
+    (functions / "walk.mcfunction").write_text("execute as @e[tag=x] at @s run tp @s ^ ^ ^1\n")
     (functions / "eloop.mcfunction").write_text(
         "execute as @e[tag=x,scores={s=0..2}] run scoreboard players add @s s 1\n"
         "scoreboard players set @e[tag=x,scores={s=3..}] s 0\n"
@@ -157,6 +163,33 @@ def host_round_trip(pack: Path) -> float:
     return (time.perf_counter() - start) / HOST_OPS * 1e6
 
 
+def entity_store(pack: Path, backend: str, markers: int) -> tuple[float, float, int]:
+    """(seconds to summon ``markers`` markers in one root, seconds of one ``walk`` over them, its commands)."""
+    from emulator import Emulator
+
+    emu = Emulator(backend=backend)
+    emu.load(pack)
+    emu.call("b:setup")
+    emu.set_score("#n", "o", 1)
+    emu.call("b:summon_n")  # warm-up (compilation, cache)
+    emu.call("b:walk")
+    emu.set_score("#n", "o", markers - 1)
+    start = time.perf_counter()
+    emu.runtime.call("b:summon_n")
+    summoned = time.perf_counter() - start
+    start = time.perf_counter()
+    result = emu.runtime.call("b:walk")
+    return summoned, time.perf_counter() - start, result.cost
+
+
+def store_rows(pack: Path, markers: int) -> None:
+    rows = {backend: entity_store(pack, backend, markers) for backend in ("numba", "python")}
+    (vs, vw, vn), (rs, rw, rn) = rows["numba"], rows["python"]
+    print(f"summon {markers:,} markers: VM {vs:.3f} s, reference {rs:.3f} s; VM / reference speed {rs / vs:.2f}x")
+    print(f"execute as @e[tag=x] at @s run tp @s ^ ^ ^1 over {markers:,} markers: VM {vn / vw:,.0f} commands/s, "
+          f"reference {rn / rw:,.0f} commands/s; VM / reference speed {(vn / vw) / (rn / rw):.2f}x")
+
+
 def first_call_overhead(pack: Path) -> tuple[float, float]:
     """(first call, second call) seconds in a fresh process, after a run that warmed the cache.
     The first call pays for loading the VM's machine code from numba's cache."""
@@ -213,6 +246,11 @@ def main() -> None:
         compare_with(Path(sys.argv[sys.argv.index("--baseline") + 1]).resolve(), 3 if quick else 5,
                      5_000 if quick else 50_000)
         return
+    markers = int(sys.argv[sys.argv.index("--markers") + 1]) if "--markers" in sys.argv else 4096
+    if "--only-store" in sys.argv:
+        with tempfile.TemporaryDirectory() as tmp:
+            store_rows(write_pack(Path(tmp) / "pack"), markers)
+        return
     vm_iterations = 5_000 if quick else 50_000
     ref_iterations = 20 if quick else 100
     with tempfile.TemporaryDirectory() as tmp:
@@ -236,6 +274,7 @@ def main() -> None:
             entity_rows.append((f"entities, {'VM' if backend == 'numba' else 'reference'}", n, t, n / t))
         host_us = host_round_trip(pack)
         first, second = first_call_overhead(pack)
+        store_rows(pack, markers)
 
     print(f"{'run':<22}{'commands':>14}{'seconds':>10}{'commands/s':>16}")
     for name, n, t, rate in rows:

@@ -14,8 +14,8 @@ entity object).
 - ``HANDLERS``: ``summon kill tag tp ride``, each ``(env, cmd, ctx) -> int``.
 - ``new_state(shuffle)``, ``parse_target(text)``, ``describe(state, entity)``: the API's side.
 
-The numba VM keeps entities as arrays (:mod:`emulator.vm.entity_arrays`): it reloads them after any
-host op that may change entities, so nothing here needs to notify it.
+Entities live in the store's arrays (:mod:`emulator.world.entity_table`), which the numba VM reads
+and writes itself: what a command changes here, the VM sees, with nothing to notify.
 
 Sources (decompiled 1.21): commands/arguments/EntityArgument.java, server/commands/TeleportCommand.java,
 SummonCommand.java, KillCommand.java, TagCommand.java, RideCommand.java, java.util.UUID.fromString.
@@ -55,9 +55,7 @@ class ShuffledEntityStore(EntityStore):
         self.shuffle_rng = random.Random(shuffle_seed)
 
     def _add(self, entity: Entity) -> Entity:
-        super()._add(entity)
-        self.entities.insert(self.shuffle_rng.randint(0, len(self.entities) - 1), self.entities.pop())
-        return entity
+        return self._insert(entity, self.shuffle_rng.randint(0, len(self.entities)))
 
 
 # ---------------------------------------------------------------------- contexts
@@ -250,6 +248,7 @@ def new_state(shuffle: int | None = None) -> WorldState:
     state = WorldState()
     if shuffle is not None:
         state.entities = ShuffledEntityStore(shuffle_seed=shuffle)
+        state.entities.bind_scoreboard(state.scoreboard)
     return state
 
 

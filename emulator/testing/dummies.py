@@ -180,7 +180,6 @@ class Dummies:
         player.data["OnGround"] = Byte(1)
         player.data["SelectedItemSlot"] = Int(0)
         self.spawns[player.uuid] = tuple(pos)
-        self._changed()
         return player
 
     def run(self, command: DummyCommand, ctx: Context) -> None:
@@ -214,21 +213,16 @@ class Dummies:
             raise DummyFailure("Only one entity is allowed, but the provided selector allows more than one")
         return found[0]
 
-    def _changed(self) -> None:
-        self.state.tags_version += 1  # the set of entities changed (the VM mirrors entity tags)
-
     # ---------------------------------------------------------------- actions
     def _leave(self, dummy: Entity, command, ctx) -> None:
         statistics.award(self.state, dummy, statistics.stat_name("custom", "leave_game"))
         self.state.entities.kill(dummy)
-        self._changed()
 
     def _respawn(self, dummy: Entity, command, ctx) -> None:
         tags, spawn = set(dummy.tags), self.spawns.pop(dummy.uuid)
         self.state.entities.kill(dummy)
         reborn = self.spawn(dummy.player_name, spawn)
         reborn.tags = tags  # PlayerList.respawn copies the tags to the new player
-        self._changed()
 
     def _jump(self, dummy: Entity, command, ctx) -> None:
         if not dummy.data.get("OnGround"):

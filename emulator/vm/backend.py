@@ -14,7 +14,7 @@ from emulator.vm import loop as vm
 from emulator.commands import entities as world_entities
 from emulator.runtime.backend import HostRun, RootResult, report_quota_cut
 from emulator.vm.compiler import Compiler
-from emulator.vm.entity_arrays import EntityMirror
+from emulator.vm.entity_arrays import SelectorTables
 from emulator.vm.host import Host, StoreTarget, resolves_target
 from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import Program
@@ -61,9 +61,9 @@ class NumbaBackend:
         self.state = state
         self.sanitize = sanitize
         self.program = Program()
-        self.mirror = EntityMirror(state.scoreboard)
+        self.selectors = SelectorTables(state.scoreboard, state.entities.table)
         self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
-                                 self.mirror)
+                                 self.selectors)
         self.compiler.compile_all()
         self.macros = MacroExpander(packs.version)
         self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
@@ -82,7 +82,6 @@ class NumbaBackend:
         self.ctx_dim = np.zeros(16, dtype=np.int64)  # per context: its dimension (Program.intern_dimension)
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
-        self.triggers = np.zeros(0, dtype=np.uint8)  # per objective: 1 for a trigger objective
         self.context_ids: dict[tuple, int] = {}
         self.as_cache = np.full((vm.AS_CACHE_SIZE, 3), -1, dtype=np.int64)  # rows (context, slot, `as` context)
         # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
@@ -96,7 +95,6 @@ class NumbaBackend:
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
-        self.mirror.invalidate()  # the API may have changed entities between roots
         self.contexts = []
         self.context_ids = {}
         self.as_cache[:, 0] = -1  # context indexes start again
@@ -135,21 +133,18 @@ class NumbaBackend:
         """Run the VM until the root is done; True when the quota (or the depth cap) cut it."""
         sb = self.state.scoreboard
         r = self.regs
-        mirror = self.mirror
+        table = self.state.entities.table
         while True:
             code, starts, floats = self.program.arrays()
             self._fit_counters(code.shape[0], starts.shape[0])
-            if mirror.stale or self.triggers.shape[0] != sb.alive.shape[0]:
-                self._load_entities()
-            sels, tests = mirror.selector_arrays()
+            if self.selbuf.shape[0] < 2 * table.count + 2:
+                self.selbuf = np.zeros(4 * table.count + 4, dtype=np.int64)
+            sels, tests = self.selectors.arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
-                            sb.writable, self.triggers, self.counts, self.totals, self.active, self.ovf,
-                            self.ctx_holder, self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, tests, mirror.ent,
-                            mirror.pos, mirror.dirty, mirror.order, self.selbuf, self.logbuf, self.fstack, self.coll,
-                            self.as_cache)
-            if r[vm.R_EDIRTY]:
-                mirror.store()
-                r[vm.R_EDIRTY] = 0
+                            sb.writable, sb.trigger, self.counts, self.totals, self.active, self.ovf,
+                            self.ctx_holder, self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, tests, table.ints,
+                            table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack,
+                            self.coll, self.as_cache)
             log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
             if r[vm.R_NLOG]:
                 self._write_log()
@@ -167,8 +162,6 @@ class NumbaBackend:
             if status == vm.ST_HOST:
                 pc = int(r[vm.R_PC])
                 self._host_guarded(pc)
-                if self._may_change_entities(pc):
-                    mirror.invalidate()
             elif status == vm.ST_FORK:
                 self._entity_contexts()
             elif status == vm.ST_MACRO:
@@ -195,22 +188,6 @@ class NumbaBackend:
         for index, ctx in self.logbuf[:n].tolist():
             self.host.run_final(self.program.host_ops[index].node, self.contexts[ctx])
         r[vm.R_NLOG] = 0
-
-    def _load_entities(self) -> None:
-        """Rebuild the entity arrays (and what else Python may have changed: trigger objectives)."""
-        sb = self.state.scoreboard
-        self.mirror.load(self.state)  # interns the entities' holders: may grow the scoreboard
-        need = 2 * self.mirror.order.shape[0] + 2
-        if self.selbuf.shape[0] < need:
-            self.selbuf = np.zeros(2 * need, dtype=np.int64)
-        self.triggers = np.zeros(sb.alive.shape[0], dtype=np.uint8)
-        self.triggers[:len(sb.criteria)] = [c == "trigger" for c in sb.criteria]
-
-    def _may_change_entities(self, pc: int) -> bool:
-        """A host op that may change entities or objectives: any final command or store; of the
-        stages, ``summon`` (the others only read them)."""
-        row = self.program.rows[pc]
-        return row[0] != vm.OP_HOSTSTAGE or isinstance(self.program.host_ops[row[1]].node, ast.ExSummon)
 
     def _fit_counters(self, n_code: int, n_functions: int) -> None:
         """Grow the per-instruction and per-function counters with the program (macro instances)."""
@@ -280,8 +257,6 @@ class NumbaBackend:
             entity = world_entities.executor(self.state, ctx)
             self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
             self.ctx_entity[index] = -1 if entity is None else entity.order
-            if entity is not None and entity.order not in self.mirror.entities:
-                self.mirror.invalidate()  # an executor the arrays do not hold yet (the API's as_=)
         return index
 
     def _bind(self, index: int, node, target: StoreTarget) -> tuple:
@@ -339,7 +314,7 @@ class NumbaBackend:
         kind = self.program.rows[int(r[vm.R_PC]) - 1][3]
         made = []
         for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist():
-            entity = self.mirror.entity(slot)
+            entity = self.state.entities.table.handles[slot]
             if kind:  # at, positioned as, rotated as: the entity may have moved since (no cache)
                 made.append(self._context_index(world_entities.entity_stage_context(kind, self.state, ctx, entity),
                                                 bindings))

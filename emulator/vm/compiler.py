@@ -2,7 +2,7 @@
 
 What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
 ``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
-``@e @a @s`` with type, tag, scores, limit), ``tag SEL add|remove``, ``enable``; ``if|unless
+``@e @a @s`` with type, any number of tags, scores, limit), ``tag SEL add|remove``, ``enable``; ``if|unless
 score`` on named holders and ``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as SEL``,
 ``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
 ``if|unless function``, function calls and tags, every ``return`` form, and macro calls
@@ -54,9 +54,9 @@ class Compiler:
     """
 
     def __init__(self, program: Program, scoreboard: Scoreboard, functions: dict[str, Function],
-                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, mirror=None) -> None:
+                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, selectors=None) -> None:
         self.program = program
-        self.mirror = mirror  # emulator.vm.entity_arrays.EntityMirror: selectors, tag bits (None: no entity forms)
+        self.selectors = selectors  # emulator.vm.entity_arrays.SelectorTables (None: no entity forms)
         self.sb = scoreboard
         self.functions = functions
         self.resolve_tag = resolve_tag
@@ -323,7 +323,7 @@ class Compiler:
     # ------------------------------------------------------------------ entities
     def selector(self, target) -> int | None:
         """The selector row of ``target`` when the VM evaluates it, else None."""
-        return None if self.mirror is None else self.mirror.selector(target)
+        return None if self.selectors is None else self.selectors.selector(target)
 
     def teleport(self, cmd: Teleport) -> tuple[int, int, int] | None:
         """(selector, first of x y z in floats, relative-axis bits) of ``tp SEL X Y Z`` with world
@@ -343,11 +343,10 @@ class Compiler:
         return sel, first, sum(1 << axis for axis, coord in enumerate(coords) if coord.kind == "rel")
 
     def tag_operands(self, cmd: TagCommand) -> tuple[int, int] | None:
-        """(selector, tag bit) of ``tag SEL add|remove T`` when the VM can run it, else None."""
+        """(selector, tag number) of ``tag SEL add|remove T`` when the VM can run it, else None."""
         if cmd.action not in ("add", "remove") or (sel := self.selector(cmd.targets)) is None:
             return None
-        bit = self.mirror.bit(cmd.name)
-        return None if bit is None else (sel, bit)
+        return sel, self.selectors.tag_id(cmd.name)
 
     # ------------------------------------------------------------------ names
     def holder(self, target) -> int:

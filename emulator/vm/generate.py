@@ -2,12 +2,14 @@
 (:mod:`emulator.vm.opcodes`), as CPython generates its interpreter's cases:
 ``python -m emulator.vm.generate`` (a test checks the committed file is up to date).
 
-The template is the module's source with three additions:
+The template is the module's source with four additions:
 
 - the line ``# @opcodes``: the ``OP_*`` constants (commented with their cost and doc), the ranges
   of the families served by one branch (``FIRST_X``, ``LAST_X``) and the operation kinds
   ``OPK_*``, as literals (numba's cache would not notice a constant imported from another module
   change);
+- the line ``# @entity_layout``: the column numbers of the world's entity arrays
+  (:data:`emulator.world.entity_table.LAYOUT`), as literals for the same reason;
 - ``case FAMILY:`` lines: the dispatch chain, ``if`` / ``elif`` testing the family's opcode (``op ==
   OP_X``) or range; the chain's last case becomes its ``else``;
 - macro lines ``NAME(ARGS)`` (:data:`MACROS`): statements the opcodes repeat, written out where they
@@ -22,6 +24,7 @@ import textwrap
 from pathlib import Path
 
 from emulator.vm import opcodes
+from emulator.world import entity_table
 
 HERE = Path(__file__).resolve().parent
 TEMPLATE = HERE / "loop.py.in"
@@ -59,6 +62,8 @@ def render() -> str:
     for i, line in enumerate(lines):
         if line.strip() == "# @opcodes":
             out += _constants()
+        elif line.strip() == "# @entity_layout":
+            out += [f"{name} = {value}" for name, value in entity_table.LAYOUT.items()]
         elif i in cases:
             out.append(_dispatch(line, first=i == cases[0], last=i == cases[-1]))
         else:

@@ -17,9 +17,10 @@ instantiation, contexts to make, a full frame stack, a runtime error, a full buf
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
 scoreboard ``values``/``present``/``locked``/``alive``/``writable``, the per-instruction ``counts``, the
 sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, per context its executor's holder,
-slot, position and dimension (``ctx_holder``, ``ctx_entity``, ``ctx_pos``, ``ctx_dim``), and the entities
-(:mod:`emulator.vm.entity_arrays`: ``ent``, ``epos``, ``edirty``, ``eorder``, with the selector
-tables ``sels``/``tests`` and the scratch ``selbuf`` for what a selector finds). Registers that
+slot, position and dimension (``ctx_holder``, ``ctx_entity``, ``ctx_pos``, ``ctx_dim``), and the entities:
+the world's own arrays (:mod:`emulator.world.entity_table`: ``eints``, ``efloats``, ``etags``, the
+living slots ``eorder``), read and written in place, with the selector tables ``sels``/``tests``
+(:mod:`emulator.vm.entity_arrays`) and the scratch ``selbuf`` for what a selector finds. Registers that
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
 the fork loop flag) are saved in the frame and restored on return.
 
@@ -58,10 +59,13 @@ re-entered pass), so a stage that fails the command leaves the later stages unch
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit
+from numba.extending import overload
 
-from emulator.world import semantics
+from emulator.world import mth, semantics
 
 WIDTH = 8
 
@@ -84,7 +88,8 @@ OP_RESET = 8  # [entry] a holders, b o
 OP_RESETALL = 9  # [entry] a holders
 OP_GET = 10  # [entry] a h (a name or @s), b o
 OP_ENABLE = 11  # [entry] a: holders, b: objective. `scoreboard players enable`
-OP_TAG = 12  # [entry] a: selector, b: tag bit, c: 1 add / 0 remove. `tag SEL add|remove T` (fails when nothing changes)
+OP_TAG = 12  # [entry] a: selector, b: tag number (bit b & 63 of word b >> 6), c: 1 add / 0 remove. `tag SEL add|remove
+# T` (fails when nothing changes; an entity holds at most MAX_TAGS)
 OP_HOST = 13  # [entry] a: host op index. A final command run by Python (charged here, per context)
 OP_LOG = 14  # [entry] a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
 # EntityArgument.getPlayers), else its result is the count. The line is queued in logbuf (op, context) either way: the
@@ -92,8 +97,8 @@ OP_LOG = 14  # [entry] a: host op index, b: selector. `tellraw SEL`: fails when 
 # its order)
 OP_GETPOS = 15  # [entry] a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
 OP_TP = 16  # [entry] a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) axes. `tp SEL X
-# Y Z`: every target to the same position (the execution position plus the relative parts), each keeping its rotation;
-# outside the spawnable bounds the command fails
+# Y Z`: every target to the same position (the execution position plus the relative parts), each keeping its rotation
+# (wrapped, the pitch clamped) and losing its vertical motion; outside the spawnable bounds the command fails
 OP_SELHOLDERS = 17  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
 # op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
 # separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
@@ -157,9 +162,9 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG, R_EDIRTY = range(15, 24)
-R_NFORK, R_NCOLL, R_NSEL2 = range(24, 27)  # rows used in fstack and coll; SELHOLDERS' source count
-N_REGS = 27  # R_EDIRTY: 1 once the VM marked an entity dirty (Python writes them back, clears it)
+R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG = range(15, 23)
+R_NFORK, R_NCOLL, R_NSEL2 = range(23, 26)  # rows used in fstack and coll; SELHOLDERS' source count
+N_REGS = 26
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
 F_WIDTH = 11
@@ -175,18 +180,29 @@ ERR_DIV_ZERO, ERR_UNKNOWN_OBJECTIVE, ERR_UNKNOWN_FUNCTION, ERR_EMPTY_TAG, ERR_MA
 
 OVF_WIDTH = 5  # pc, op kind, a, b, exact
 
-# ---------------------------------------------------------------- entities (emulator.vm.entity_arrays)
-# ent[slot]: type id, tag bits, score holder id; slot = Entity.order. dirty[slot]: what the VM changed
-ENT_WIDTH = 3
-E_TYPE, E_TAGS, E_HOLDER = range(ENT_WIDTH)
-DIRTY_TAGS, DIRTY_POS, DIRTY_TP = 1, 2, 4  # DIRTY_TP: Python applies the rest of a teleport
+# ---------------------------------------------------------------- entities (emulator.world.entity_table)
+EI_TYPE = 0
+EI_HOLDER = 1
+EI_ALIVE = 2
+EI_WIDTH = 3
+EF_X = 0
+EF_Y = 1
+EF_Z = 2
+EF_MX = 3
+EF_MY = 4
+EF_MZ = 5
+EF_YAW = 6
+EF_PITCH = 7
+EF_WIDTH = 8
 PLAYER_TYPE = 0
-# selector rows: kind (@e/@a/@s), required and forbidden tag bits, limit, its tests (first, count);
-# a test row: [TEST_SCORE, objective, lo, hi] or [TEST_TYPE, type id, negated, 0]
-SEL_WIDTH = 6
-S_KIND, S_REQUIRED, S_FORBIDDEN, S_LIMIT, S_TESTS, S_NTESTS = range(SEL_WIDTH)
+MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
+# selector rows (emulator.vm.entity_arrays): kind (@e/@a/@s), limit, its tests (first, count);
+# a test row: [TEST_SCORE, objective, lo, hi], [TEST_TYPE, type id, negated, 0], [TEST_TAG, tag, negated, 0]
+# or [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all)
+SEL_WIDTH = 4
+S_KIND, S_LIMIT, S_TESTS, S_NTESTS = range(SEL_WIDTH)
 KIND_E, KIND_A, KIND_S = range(3)
-TEST_SCORE, TEST_TYPE = range(2)
+TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS = range(4)
 POS_LIMIT_XZ, POS_LIMIT_Y = 3.0000512e7, 2.0e7  # Entity.load clamps positions to these
 
 
@@ -248,32 +264,52 @@ def _report(ovf, novf, pc, kind, a, b, exact):
 
 
 @njit(cache=True)
-def _matches(sel, slot, sels, tests, ent, values, present, alive_obj):
-    """EntitySelector's predicate for one entity (tags, @a's player test, type and score tests)."""
-    tags = ent[slot, E_TAGS]
-    if (tags & sels[sel, S_REQUIRED]) != sels[sel, S_REQUIRED] or (tags & sels[sel, S_FORBIDDEN]) != 0:
-        return False
-    if sels[sel, S_KIND] == KIND_A and ent[slot, E_TYPE] != PLAYER_TYPE:
+def _matches(sel, slot, sels, tests, eints, etags, values, present, alive_obj):
+    """EntitySelector's predicate for one entity (@a's player test, tag, type and score tests)."""
+    if sels[sel, S_KIND] == KIND_A and eints[slot, EI_TYPE] != PLAYER_TYPE:
         return False
     first = sels[sel, S_TESTS]
     for t in range(first, first + sels[sel, S_NTESTS]):
-        if tests[t, 0] == TEST_TYPE:
-            if (ent[slot, E_TYPE] == tests[t, 1]) == (tests[t, 2] != 0):
+        kind = tests[t, 0]
+        if kind == TEST_TAG:
+            tag = tests[t, 1]
+            if ((etags[slot, tag >> 6] >> (tag & 63)) & 1 != 0) == (tests[t, 2] != 0):
+                return False
+        elif kind == TEST_TYPE:
+            if (eints[slot, EI_TYPE] == tests[t, 1]) == (tests[t, 2] != 0):
+                return False
+        elif kind == TEST_NOTAGS:
+            none = True
+            for w in range(etags.shape[1]):
+                if etags[slot, w] != 0:
+                    none = False
+            if none == (tests[t, 1] != 0):
                 return False
         else:
             o = tests[t, 1]
-            h = ent[slot, E_HOLDER]
+            h = eints[slot, EI_HOLDER]
             if alive_obj[o] == 0 or present[h, o] == 0 or values[h, o] < tests[t, 2] or values[h, o] > tests[t, 3]:
                 return False
     return True
 
 
 @njit(cache=True)
-def _select(sel, self_slot, sels, tests, ent, order, values, present, alive_obj, out, off):
+def _tag_count(etags, slot):
+    """The number of tags entity ``slot`` has (its bitset's population count)."""
+    n = 0
+    for w in range(etags.shape[1]):
+        word = etags[slot, w]
+        for b in range(64):
+            n += (word >> b) & 1
+    return n
+
+
+@njit(cache=True)
+def _select(sel, self_slot, sels, tests, eints, etags, order, values, present, alive_obj, out, off):
     """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server), written to
     ``out[off:]`` in the game's order (unsorted: the store's order, cut at the limit); their count."""
     if sels[sel, S_KIND] == KIND_S:
-        if self_slot >= 0 and _matches(sel, self_slot, sels, tests, ent, values, present, alive_obj):
+        if self_slot >= 0 and _matches(sel, self_slot, sels, tests, eints, etags, values, present, alive_obj):
             out[off] = self_slot
             return 1
         return 0
@@ -281,7 +317,7 @@ def _select(sel, self_slot, sels, tests, ent, order, values, present, alive_obj,
     limit = sels[sel, S_LIMIT]
     for i in range(order.shape[0]):
         slot = order[i]
-        if _matches(sel, slot, sels, tests, ent, values, present, alive_obj):
+        if _matches(sel, slot, sels, tests, eints, etags, values, present, alive_obj):
             out[off + n] = slot
             n += 1
             if n >= limit:
@@ -346,6 +382,17 @@ def _in_spawnable_bounds(x, y, z):
     return -3.0e7 <= fx < 3.0e7 and -3.0e7 <= fz < 3.0e7 and -2.0e7 <= fy < 2.0e7
 
 
+@overload(math.fmod)
+def _fmod(a, b):
+    """``math.fmod`` for jitted code (the C ``fmod`` either way), so mth's own functions compile."""
+    return lambda a, b: np.fmod(a, b)
+
+
+overload(mth.java_float_rem)(lambda a, b: mth.java_float_rem)  # called by wrap_degrees_f
+_wrap_degrees_f = njit(cache=True)(mth.wrap_degrees_f)
+_clamp_f = njit(cache=True)(mth.clamp_f)
+
+
 @njit(cache=True, inline="always")
 def _clamp_pos(v, limit):
     """``max(-limit, min(v, limit))`` as Python evaluates it (the host's clamp; NaN gives -limit)."""
@@ -355,8 +402,8 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True, error_model="numpy")
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
-        active, ovf, ctx_holder, ctx_entity, ctx_pos, ctx_dim, sels, tests, ent, epos, edirty, eorder, selbuf, logbuf,
-        fstack, coll, as_cache):
+        active, ovf, ctx_holder, ctx_entity, ctx_pos, ctx_dim, sels, tests, eints, efloats, etags, eorder, selbuf,
+        logbuf, fstack, coll, as_cache):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -616,7 +663,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 if counting:
                     counts[pc] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj,
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj,
                             selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
@@ -866,21 +913,24 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 ok = 1
                 val = n
             elif op == OP_TAG:
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
-                m = np.int64(1) << code[pc, 2]
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj,
+                            selbuf, 0)
+                w = code[pc, 2] >> 6
+                m = np.int64(1) << (code[pc, 2] & 63)
+                many = etags.shape[1] * 64 > MAX_TAGS  # else no entity can reach the limit
                 changed = 0
                 for i in range(n):
                     e = selbuf[i]
-                    had = (ent[e, E_TAGS] & m) != 0
+                    had = (etags[e, w] & m) != 0
                     if code[pc, 3] != 0 and not had:
-                        ent[e, E_TAGS] |= m
+                        if many and _tag_count(etags, e) >= MAX_TAGS:
+                            continue
+                        etags[e, w] |= m
                     elif code[pc, 3] == 0 and had:
-                        ent[e, E_TAGS] &= ~m
+                        etags[e, w] &= ~m
                     else:
                         continue
                     changed += 1
-                    edirty[e] |= DIRTY_TAGS
-                    regs[R_EDIRTY] = 1
                 has = 1
                 ok = 1 if changed else 0
                 val = changed
@@ -889,7 +939,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_HOST
                 break
             elif op == OP_TP:
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj, selbuf, 0)
                 k = code[pc, 2]
                 x = floats[k] + ctx_pos[ctx, 0] if code[pc, 3] & 1 else floats[k]  # WorldCoordinate.get: value + base
                 y = floats[k + 1] + ctx_pos[ctx, 1] if code[pc, 3] & 2 else floats[k + 1]
@@ -900,13 +950,18 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc += 1
                 if n == 0 or not _in_spawnable_bounds(x, y, z):  # "No entity was found", "Invalid position"
                     continue
-                for i in range(n):
+                for i in range(n):  # teleport.apply: the position, its own rotation wrapped, no vertical motion
                     e = selbuf[i]
-                    epos[e, 0] = x
-                    epos[e, 1] = y
-                    epos[e, 2] = z
-                    edirty[e] |= DIRTY_TP
-                regs[R_EDIRTY] = 1
+                    efloats[e, EF_X] = x
+                    efloats[e, EF_Y] = y
+                    efloats[e, EF_Z] = z
+                    yaw = _wrap_degrees_f(np.float32(efloats[e, EF_YAW]))  # rotation.teleport_rotation
+                    pitch = _clamp_f(_wrap_degrees_f(np.float32(efloats[e, EF_PITCH])), -90.0, 90.0)
+                    if np.isfinite(yaw):
+                        efloats[e, EF_YAW] = yaw
+                    if np.isfinite(pitch):
+                        efloats[e, EF_PITCH] = pitch
+                    efloats[e, EF_MY] = 0.0
                 ok = 1
                 val = n
             elif op == OP_GETPOS:
@@ -915,14 +970,14 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 ok = 0
                 val = 0
                 if e >= 0:  # else "No entity was found"
-                    x = epos[e, code[pc, 1]]
+                    x = efloats[e, EF_X + code[pc, 1]]
                     if code[pc, 2] >= 0:
                         x = x * floats[code[pc, 2]]
                     ok = 1
                     val = _mth_floor(x)
                 pc += 1
             else:  # OP_LOG
-                n = _select(code[pc, 2], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 2], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj, selbuf, 0)
                 has = 1
                 ok = 1 if n else 0
                 val = n
@@ -933,10 +988,10 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_SELHOLDERS:
             if alive:
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj,
+                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj,
                             selbuf, off)
                 for i in range(off, off + n):
-                    selbuf[i] = ent[selbuf[i], E_HOLDER]
+                    selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
             pc += 1
         elif op == OP_ASSTAGE:
@@ -947,7 +1002,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             if alive == 0:
                 pc += 1
                 continue
-            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, ent, eorder, values, present, alive_obj, selbuf, 0)
+            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj, selbuf, 0)
             pc += 1
             if n == 0:
                 alive = 0
@@ -997,13 +1052,11 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             pc += 1
         elif op == OP_STOREPOS:
             e = ctx_entity[ctx]
-            if alive and has and e >= 0 and ent[e, E_TYPE] != PLAYER_TYPE:  # a player's data cannot be modified
+            if alive and has and e >= 0 and eints[e, EI_TYPE] != PLAYER_TYPE:  # a player's data cannot be modified
                 stored = (val if ok else 0) if code[pc, 2] == 0 else ok
                 axis = code[pc, 1]
-                epos[e, axis] = _clamp_pos(np.float64(stored) * floats[code[pc, 3]],
-                                           POS_LIMIT_Y if axis == 1 else POS_LIMIT_XZ)
-                edirty[e] |= DIRTY_POS
-                regs[R_EDIRTY] = 1
+                efloats[e, EF_X + axis] = _clamp_pos(np.float64(stored) * floats[code[pc, 3]],
+                                                     POS_LIMIT_Y if axis == 1 else POS_LIMIT_XZ)
             pc += 1
         elif op == OP_STORE:
             if alive and has:

@@ -76,8 +76,8 @@ _ROWS = [
         ("RESETALL", "h", ENTRY, "a holders"),
         ("GET", "ho", ENTRY, "a h (a name or @s), b o"),
         ("ENABLE", "ho", ENTRY, "a: holders, b: objective. `scoreboard players enable`"),
-        ("TAG", "sib", ENTRY, "a: selector, b: tag bit, c: 1 add / 0 remove. `tag SEL add|remove T` (fails when "
-                              "nothing changes)"),
+        ("TAG", "sib", ENTRY, "a: selector, b: tag number (bit b & 63 of word b >> 6), c: 1 add / 0 remove. `tag "
+                              "SEL add|remove T` (fails when nothing changes; an entity holds at most MAX_TAGS)"),
         ("HOST", "x", ENTRY, "a: host op index. A final command run by Python (charged here, per context)"),
         ("LOG", "xs", ENTRY, "a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player "
                              "(TellRawCommand: EntityArgument.getPlayers), else its result is the count. The line is "
@@ -87,8 +87,8 @@ _ROWS = [
                                "Mth.floor"),
         ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) "
                              "axes. `tp SEL X Y Z`: every target to the same position (the execution position plus "
-                             "the relative parts), each keeping its rotation; outside the spawnable bounds the "
-                             "command fails"),
+                             "the relative parts), each keeping its rotation (wrapped, the pitch clamped) and losing "
+                             "its vertical motion; outside the spawnable bounds the command fails"),
     ]),
     *_single("SELHOLDERS", "sb", FREE, "a: selector, b: 0 targets / 1 sources. The holders of the selector's "
                                        "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "

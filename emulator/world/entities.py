@@ -35,13 +35,15 @@ from __future__ import annotations
 import functools
 import math
 import random
-from dataclasses import dataclass, field
+from collections.abc import MutableSet
+from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, rotation
+from emulator.world.entity_table import EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EntityTable, TagSet
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import player_defaults, selected_item
 from emulator.world.text import plain_text
@@ -169,29 +171,135 @@ def insecure_uuid(rng: random.Random) -> tuple[int, int, int, int]:
     return tuple(_signed32(x) for x in (most >> 32, most, least >> 32, least))
 
 
-@dataclass(eq=False)
 class Entity:
-    uuid: tuple[int, int, int, int]
-    type: str
-    pos: tuple[float, float, float]
-    yaw: np.float32 = F32(0.0)
-    pitch: np.float32 = F32(0.0)
-    motion: tuple[float, float, float] = (0.0, 0.0, 0.0)
-    tags: set[str] = field(default_factory=set)
-    custom_name: str | None = None
-    data: Compound = field(default_factory=Compound)
-    order: int = 0
-    alive: bool = True
-    player_name: str | None = None
-    gamemode: str = "survival"
-    level: int = 0
-    team: str | None = None
-    # a player's inputs (not saved in its NBT; predicates' flags and sneak_time read them)
-    sneaking: bool = False
-    sprinting: bool = False
-    # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
-    vehicle: "Entity | None" = field(default=None, repr=False)
-    passengers: list = field(default_factory=list, repr=False)
+    """One entity: a handle on its row of the store's :class:`EntityTable` (``pos``, ``yaw``,
+    ``pitch``, ``motion``, ``tags``, ``alive`` read and write the arrays; the other fields are its
+    own). Until the store adds it, the entity keeps those values itself."""
+
+    __slots__ = ("_uuid", "type", "custom_name", "data", "order", "player_name", "gamemode", "level", "team",
+                 "sneaking", "sprinting", "vehicle", "passengers", "_table", "_own")
+
+    def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
+                 yaw=F32(0.0), pitch=F32(0.0), motion=(0.0, 0.0, 0.0), tags: set[str] | None = None,
+                 custom_name: str | None = None, data: Compound | None = None, order: int = 0, alive: bool = True,
+                 player_name: str | None = None, gamemode: str = "survival", level: int = 0,
+                 team: str | None = None) -> None:
+        self._uuid = uuid
+        self.type = type
+        self.custom_name = custom_name
+        self.data = Compound() if data is None else data
+        self.order = order
+        self.player_name = player_name
+        self.gamemode = gamemode
+        self.level = level
+        self.team = team
+        # a player's inputs (not saved in its NBT; predicates' flags and sneak_time read them)
+        self.sneaking = False
+        self.sprinting = False
+        # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
+        self.vehicle: Entity | None = None
+        self.passengers: list = []
+        self._table: EntityTable | None = None
+        # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive]
+        self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive]
+
+    def attach(self, table: EntityTable) -> None:
+        """Move the entity's fields into a new row of ``table`` (its slot becomes ``order``)."""
+        pos, yaw, pitch, motion, tags, alive = self._own
+        self.order = slot = table.new_slot(self, self.type, self.score_holder)
+        table.floats[slot, EF_X:EF_Z + 1] = pos
+        table.floats[slot, EF_MX:EF_MZ + 1] = motion
+        table.floats[slot, EF_YAW] = yaw
+        table.floats[slot, EF_PITCH] = pitch
+        table.ints[slot, EI_ALIVE] = int(alive)
+        self._table = table
+        self._own = TagSet(table, slot)
+        self._own.replace(tags)
+        table.index_uuid(self, None, self._uuid)
+
+    @property
+    def uuid(self) -> tuple[int, int, int, int]:
+        return self._uuid
+
+    @uuid.setter
+    def uuid(self, value) -> None:
+        old, self._uuid = self._uuid, tuple(value)
+        if self._table is not None:
+            self._table.index_uuid(self, old, self._uuid)
+
+    @property
+    def pos(self) -> tuple[float, float, float]:
+        if self._table is None:
+            return self._own[0]
+        return tuple(self._table.floats[self.order, EF_X:EF_Z + 1].tolist())
+
+    @pos.setter
+    def pos(self, value) -> None:
+        if self._table is None:
+            self._own[0] = tuple(value)
+        else:
+            self._table.floats[self.order, EF_X:EF_Z + 1] = value
+
+    @property
+    def motion(self) -> tuple[float, float, float]:
+        if self._table is None:
+            return self._own[3]
+        return tuple(self._table.floats[self.order, EF_MX:EF_MZ + 1].tolist())
+
+    @motion.setter
+    def motion(self, value) -> None:
+        if self._table is None:
+            self._own[3] = tuple(value)
+        else:
+            self._table.floats[self.order, EF_MX:EF_MZ + 1] = value
+
+    @property
+    def yaw(self) -> np.float32:
+        return self._own[1] if self._table is None else F32(self._table.floats[self.order, EF_YAW])
+
+    @yaw.setter
+    def yaw(self, value) -> None:
+        if self._table is None:
+            self._own[1] = F32(value)
+        else:
+            self._table.floats[self.order, EF_YAW] = F32(value)
+
+    @property
+    def pitch(self) -> np.float32:
+        return self._own[2] if self._table is None else F32(self._table.floats[self.order, EF_PITCH])
+
+    @pitch.setter
+    def pitch(self, value) -> None:
+        if self._table is None:
+            self._own[2] = F32(value)
+        else:
+            self._table.floats[self.order, EF_PITCH] = F32(value)
+
+    @property
+    def tags(self) -> MutableSet:
+        """The tag names (a view on the bitset once stored)."""
+        return self._own[4] if self._table is None else self._own
+
+    @tags.setter
+    def tags(self, names) -> None:
+        if self._table is None:
+            self._own[4] = set(names)
+        else:
+            self._own.replace(list(names))
+
+    @property
+    def alive(self) -> bool:
+        return self._own[5] if self._table is None else bool(self._table.ints[self.order, EI_ALIVE])
+
+    @alive.setter
+    def alive(self, value: bool) -> None:
+        if self._table is None:
+            self._own[5] = bool(value)
+        else:
+            self._table.ints[self.order, EI_ALIVE] = int(value)
+
+    def __repr__(self) -> str:
+        return f"Entity({self.type}, {self.uuid_string}, pos={self.pos})"
 
     @property
     def is_player(self) -> bool:
@@ -393,17 +501,25 @@ def _base_data(type_id: str) -> Compound:
 
 
 class EntityStore:
-    """Every entity of the world in creation order (the order unsorted ``@e`` visits)."""
+    """Every entity of the world: its :class:`EntityTable` (``table``), and the living ones in the
+    order unsorted ``@e`` visits them (``entities``, creation order; ``table.order`` the same as slots)."""
 
     def __init__(self, seed: int = 0) -> None:
         self.rng = random.Random(seed)
         self.entities: list[Entity] = []
-        self._next_order = 0
+        self.table = EntityTable()
+
+    def bind_scoreboard(self, scoreboard) -> None:
+        """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
+        self.table.intern_holder = scoreboard.holder_id
 
     def _add(self, entity: Entity) -> Entity:
-        entity.order = self._next_order
-        self._next_order += 1
-        self.entities.append(entity)
+        return self._insert(entity, len(self.entities))
+
+    def _insert(self, entity: Entity, index: int) -> Entity:
+        entity.attach(self.table)
+        self.entities.insert(index, entity)
+        self.table.insert(index, entity.order)
         return entity
 
     def summon(self, type_id: str, pos, nbt: Compound | None = None, yaw=0.0, pitch=0.0) -> Entity:
@@ -434,11 +550,17 @@ class EntityStore:
 
     def kill(self, entity: Entity) -> None:
         entity.alive = False
-        self.entities.remove(entity)
+        index = self.entities.index(entity)
+        del self.entities[index]
+        self.table.remove(index)
+        self.table.index_uuid(entity, entity.uuid, None)
 
     def by_uuid(self, uuid) -> Entity | None:
-        uuid = tuple(uuid)
-        return next((e for e in self.entities if e.uuid == uuid), None)
+        """The first living entity with that UUID, in the store's order."""
+        found = self.table.uuids.get(tuple(uuid))
+        if not found:
+            return None
+        return found[0] if len(found) == 1 else min(found, key=self.entities.index)
 
     def by_holder(self, name: str) -> Entity | None:
         """The entity whose score holder name is ``name`` (player name or UUID string)."""

@@ -19,7 +19,8 @@ Scoreboard layout (what the VM reads directly)
   add`` sets it, ``remove`` clears it and its column). Commands naming an objective that is not
   alive fail ("Unknown scoreboard objective"). ``writable[o]`` (``uint8``, same growth) is 1 when
   ``o`` exists and its criterion is not read-only (what ``set``/``add``/``remove``/``operation``
-  may write): the VM reads it in the same test as ``alive``.
+  may write): the VM reads it in the same test as ``alive``. ``trigger[o]`` is 1 when ``o``'s
+  criterion is ``trigger`` (what ``enable`` needs).
 - The arrays have spare capacity; interning past it reallocates them (``values``/``present``/
   ``alive``/``writable`` are then new arrays, so re-read the attributes after interning).
 
@@ -65,6 +66,7 @@ class Scoreboard:
         self.locked = np.ones((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
         self.alive = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
         self.writable = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
+        self.trigger = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
         # the game's holder map (Scoreboard.playerScores) for the order of ``*``: see tracked_holders
         self.tracked = OpenHashKeys(16, 0.5)
         self._kept_empty: set[str] = set()  # tracked holders whose last score went with its objective
@@ -108,7 +110,10 @@ class Scoreboard:
         alive[:cap_o] = self.alive
         writable = np.zeros(new_o, dtype=np.uint8)
         writable[:cap_o] = self.writable
-        self.values, self.present, self.locked, self.alive, self.writable = values, present, locked, alive, writable
+        trigger = np.zeros(new_o, dtype=np.uint8)
+        trigger[:cap_o] = self.trigger
+        self.values, self.present, self.locked, self.alive = values, present, locked, alive
+        self.writable, self.trigger = writable, trigger
 
     # ------------------------------------------------------------------ objectives
     def exists(self, objective: str) -> bool:
@@ -122,6 +127,7 @@ class Scoreboard:
             return False
         self.alive[oid] = 1
         self.writable[oid] = criterion not in READ_ONLY_CRITERIA
+        self.trigger[oid] = criterion == "trigger"
         self.criteria[oid] = criterion
         self.display_names[oid] = display_name
         self.present[:, oid] = 0
@@ -396,9 +402,11 @@ class WorldState:
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     bossbars: BossBars = field(default_factory=BossBars)
-    tags_version: int = 0  # bumped when a command may have changed entity tags (emulator.vm.entity_arrays)
     version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)
     resources: Resources = field(default_factory=Resources)  # loot tables, item modifiers, item tags
+
+    def __post_init__(self) -> None:
+        self.entities.bind_scoreboard(self.scoreboard)
 
     def emit(self, kind: str, text: str, loc: Loc | None = None, receivers: tuple[str, ...] = ()) -> None:
         self.log.append(LogEntry(self.tick, kind, text, loc, receivers))

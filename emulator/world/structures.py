@@ -134,5 +134,3 @@ def place(state, template: Template, origin: tuple[int, int, int]) -> None:
             state.entities.summon(str(nbt["id"]), (ox + x, oy + y, oz + z), data)
         except CommandFailure:
             pass  # createEntityIgnoreException: an entity that cannot be created is left out
-    if template.entities:
-        state.tags_version += 1  # new entities (the VM mirrors entity tags)

@@ -1,0 +1,177 @@
+"""The entity table: the state of every entity that packs touch each tick, as arrays that the numba
+VM reads and writes in place and that :class:`emulator.world.entities.Entity` reads and writes
+through views (one copy, nothing mirrored or rebuilt).
+
+Rows are *slots*: an entity's creation index (``Entity.order``); a killed entity keeps its slot (a
+context made for it still reaches it, as the game's source keeps its entity object).
+
+- ``ints`` (int64 ``[slots, EI_WIDTH]``): ``EI_TYPE`` (interned type id, the player is
+  ``PLAYER_TYPE``), ``EI_HOLDER`` (its score holder's id in the scoreboard, -1 without one),
+  ``EI_ALIVE`` (1 until killed);
+- ``floats`` (float64 ``[slots, EF_WIDTH]``): position ``EF_X..EF_Z``, motion ``EF_MX..EF_MZ``,
+  rotation ``EF_YAW``/``EF_PITCH`` (float32 values, exact in a double);
+- ``tags`` (int64 ``[slots, words]``): a bitset per entity over the interned tag names (tag ``t`` is
+  bit ``t & 63`` of word ``t >> 6``); interning a tag past the last word adds one, so there is no
+  limit on the tags of an entity or of a pack;
+- ``order[:count]``: the living entities' slots in the order unsorted ``@e`` visits them.
+
+The column numbers are literals of :mod:`emulator.vm.loop` too, written there from here by
+:mod:`emulator.vm.generate` (numba's cache does not see a constant of another module change).
+"""
+from __future__ import annotations
+
+from collections.abc import MutableSet
+from typing import Callable, Iterable
+
+import numpy as np
+
+EI_TYPE, EI_HOLDER, EI_ALIVE = range(3)
+EI_WIDTH = 3
+EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH = range(8)
+EF_WIDTH = 8
+PLAYER_TYPE = 0
+LAYOUT = {name: value for name, value in globals().items() if name.startswith(("EI_", "EF_")) or name == "PLAYER_TYPE"}
+
+_MASK64 = 0xFFFFFFFFFFFFFFFF
+
+
+def _bit(tag: int) -> np.int64:
+    return np.int64(1) << np.int64(tag & 63)
+
+
+class EntityTable:
+    """The arrays, the interned tag and type names, and the slot -> entity handles."""
+
+    def __init__(self, capacity: int = 16) -> None:
+        self.ints = np.zeros((capacity, EI_WIDTH), dtype=np.int64)
+        self.floats = np.zeros((capacity, EF_WIDTH), dtype=np.float64)
+        self.tags = np.zeros((capacity, 1), dtype=np.int64)
+        self.order = np.zeros(capacity, dtype=np.int64)
+        self.size = 0  # slots used
+        self.count = 0  # living entities, order[:count]
+        self.handles: list = []  # slot -> Entity
+        self.tag_ids: dict[str, int] = {}
+        self.tag_names: list[str] = []
+        self.type_ids: dict[str, int] = {"minecraft:player": PLAYER_TYPE}
+        self.uuids: dict[tuple, list] = {}  # UUID -> the living entities that have it
+        self.intern_holder: Callable[[str], int] | None = None  # the scoreboard's holder_id
+
+    # ------------------------------------------------------------------ names
+    def tag_id(self, name: str) -> int:
+        """The tag's number, interning it (a new bitset word when the last one is full)."""
+        index = self.tag_ids.get(name)
+        if index is None:
+            index = self.tag_ids[name] = len(self.tag_names)
+            self.tag_names.append(name)
+            if index >> 6 >= self.tags.shape[1]:
+                self.tags = np.concatenate([self.tags, np.zeros_like(self.tags)], axis=1)
+        return index
+
+    def type_id(self, name: str) -> int:
+        index = self.type_ids.get(name)
+        if index is None:
+            index = self.type_ids[name] = len(self.type_ids)
+        return index
+
+    # ------------------------------------------------------------------ rows
+    def new_slot(self, entity, type_name: str, holder: str) -> int:
+        """A row for ``entity`` (not yet in the iteration order: see :meth:`insert`)."""
+        slot = self.size
+        if slot >= self.ints.shape[0]:
+            self._grow(2 * self.ints.shape[0])
+        self.size += 1
+        self.handles.append(entity)
+        self.ints[slot, EI_TYPE] = self.type_id(type_name)
+        self.ints[slot, EI_HOLDER] = -1 if self.intern_holder is None else self.intern_holder(holder)
+        self.ints[slot, EI_ALIVE] = 1
+        return slot
+
+    def _grow(self, capacity: int) -> None:
+        def grown(array: np.ndarray) -> np.ndarray:
+            out = np.zeros((capacity,) + array.shape[1:], dtype=array.dtype)
+            out[:array.shape[0]] = array
+            return out
+        self.ints, self.floats, self.tags, self.order = (grown(a) for a in (self.ints, self.floats, self.tags, self.order))
+
+    def insert(self, index: int, slot: int) -> None:
+        """Put ``slot`` at ``index`` of the iteration order."""
+        n = self.count
+        self.order[index + 1:n + 1] = self.order[index:n].copy()
+        self.order[index] = slot
+        self.count = n + 1
+
+    def remove(self, index: int) -> None:
+        """Take the entity at ``index`` out of the iteration order."""
+        n = self.count
+        self.order[index:n - 1] = self.order[index + 1:n].copy()
+        self.count = n - 1
+
+    def index_uuid(self, entity, old: tuple | None, new: tuple | None) -> None:
+        """Keep :attr:`uuids` up to date: ``entity``'s UUID went from ``old`` to ``new`` (None: not living)."""
+        if old is not None and entity in self.uuids.get(old, ()):
+            self.uuids[old].remove(entity)
+            if not self.uuids[old]:
+                del self.uuids[old]
+        if new is not None and self.ints[entity.order, EI_ALIVE]:
+            self.uuids.setdefault(new, []).append(entity)
+
+    def living(self) -> np.ndarray:
+        return self.order[:self.count]
+
+    # ------------------------------------------------------------------ tags of one slot
+    def has_tag(self, slot: int, name: str) -> bool:
+        index = self.tag_ids.get(name)
+        return index is not None and bool(self.tags[slot, index >> 6] & _bit(index))
+
+    def set_tag(self, slot: int, name: str, on: bool) -> None:
+        index = self.tag_id(name)
+        if on:
+            self.tags[slot, index >> 6] |= _bit(index)
+        else:
+            self.tags[slot, index >> 6] &= ~_bit(index)
+
+    def tag_numbers(self, slot: int) -> Iterable[int]:
+        for w, word in enumerate(self.tags[slot].tolist()):
+            word &= _MASK64
+            while word:
+                low = word & -word
+                yield (w << 6) + low.bit_length() - 1
+                word ^= low
+
+    def tag_count(self, slot: int) -> int:
+        return sum((word & _MASK64).bit_count() for word in self.tags[slot].tolist())
+
+
+class TagSet(MutableSet):
+    """An entity's tags: a set of names viewing its bitset row (iterated in interning order)."""
+
+    __slots__ = ("table", "slot")
+
+    def __init__(self, table: EntityTable, slot: int) -> None:
+        self.table = table
+        self.slot = slot
+
+    def __contains__(self, name) -> bool:
+        return self.table.has_tag(self.slot, name)
+
+    def __iter__(self):
+        names = self.table.tag_names
+        return (names[t] for t in self.table.tag_numbers(self.slot))
+
+    def __len__(self) -> int:
+        return self.table.tag_count(self.slot)
+
+    def add(self, name: str) -> None:
+        self.table.set_tag(self.slot, name, True)
+
+    def discard(self, name: str) -> None:
+        if name in self.table.tag_ids:
+            self.table.set_tag(self.slot, name, False)
+
+    def replace(self, names: Iterable[str]) -> None:
+        self.table.tags[self.slot] = 0
+        for name in names:
+            self.add(name)
+
+    def __repr__(self) -> str:
+        return f"TagSet({sorted(self)!r})"
