@@ -171,6 +171,31 @@ def insecure_uuid(rng: random.Random) -> tuple[int, int, int, int]:
     return tuple(_signed32(x) for x in (most >> 32, most, least >> 32, least))
 
 
+class _Column:
+    """An entity field kept in the table's ``floats`` (``width`` 3: a tuple of doubles, 1: a float32),
+    or in the entity's ``_own[own]`` until the store adds it."""
+
+    def __init__(self, own: int, column: int, width: int) -> None:
+        self.own, self.column, self.width = own, column, width
+
+    def __get__(self, entity, owner=None):
+        if entity is None:
+            return self
+        table = entity._table
+        if table is None:
+            return entity._own[self.own]
+        if self.width == 1:
+            return F32(table.floats[entity.order, self.column])
+        return tuple(table.floats[entity.order, self.column:self.column + 3].tolist())
+
+    def __set__(self, entity, value) -> None:
+        value = F32(value) if self.width == 1 else tuple(value)
+        if entity._table is None:
+            entity._own[self.own] = value
+        else:
+            entity._table.floats[entity.order, self.column:self.column + self.width] = value
+
+
 class Entity:
     """One entity: a handle on its row of the store's :class:`EntityTable` (``pos``, ``yaw``,
     ``pitch``, ``motion``, ``tags``, ``alive`` read and write the arrays; the other fields are its
@@ -227,53 +252,10 @@ class Entity:
         if self._table is not None:
             self._table.index_uuid(self, old, self._uuid)
 
-    @property
-    def pos(self) -> tuple[float, float, float]:
-        if self._table is None:
-            return self._own[0]
-        return tuple(self._table.floats[self.order, EF_X:EF_Z + 1].tolist())
-
-    @pos.setter
-    def pos(self, value) -> None:
-        if self._table is None:
-            self._own[0] = tuple(value)
-        else:
-            self._table.floats[self.order, EF_X:EF_Z + 1] = value
-
-    @property
-    def motion(self) -> tuple[float, float, float]:
-        if self._table is None:
-            return self._own[3]
-        return tuple(self._table.floats[self.order, EF_MX:EF_MZ + 1].tolist())
-
-    @motion.setter
-    def motion(self, value) -> None:
-        if self._table is None:
-            self._own[3] = tuple(value)
-        else:
-            self._table.floats[self.order, EF_MX:EF_MZ + 1] = value
-
-    @property
-    def yaw(self) -> np.float32:
-        return self._own[1] if self._table is None else F32(self._table.floats[self.order, EF_YAW])
-
-    @yaw.setter
-    def yaw(self, value) -> None:
-        if self._table is None:
-            self._own[1] = F32(value)
-        else:
-            self._table.floats[self.order, EF_YAW] = F32(value)
-
-    @property
-    def pitch(self) -> np.float32:
-        return self._own[2] if self._table is None else F32(self._table.floats[self.order, EF_PITCH])
-
-    @pitch.setter
-    def pitch(self, value) -> None:
-        if self._table is None:
-            self._own[2] = F32(value)
-        else:
-            self._table.floats[self.order, EF_PITCH] = F32(value)
+    pos = _Column(0, EF_X, 3)  # tuple of 3 doubles
+    yaw = _Column(1, EF_YAW, 1)  # float32
+    pitch = _Column(2, EF_PITCH, 1)
+    motion = _Column(3, EF_MX, 3)
 
     @property
     def tags(self) -> MutableSet:
