@@ -202,7 +202,7 @@ class Entity:
     own). Until the store adds it, the entity keeps those values itself."""
 
     __slots__ = ("_uuid", "type", "custom_name", "data", "order", "player_name", "gamemode", "level", "team",
-                 "sneaking", "sprinting", "vehicle", "passengers", "_table", "_own")
+                 "sneaking", "sprinting", "vehicle", "passengers", "_table", "_own", "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
                  yaw=F32(0.0), pitch=F32(0.0), motion=(0.0, 0.0, 0.0), tags: set[str] | None = None,
