@@ -139,12 +139,12 @@ class NumbaBackend:
             self._fit_counters(code.shape[0], starts.shape[0])
             if self.selbuf.shape[0] < 2 * table.count + 2:
                 self.selbuf = np.zeros(4 * table.count + 4, dtype=np.int64)
-            sels, tests = self.selectors.arrays()
+            sels, sfloats, tests = self.selectors.arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             sb.writable, sb.trigger, self.counts, self.totals, self.active, self.ovf,
-                            self.ctx_holder, self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, tests, table.ints,
-                            table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack,
-                            self.coll, self.as_cache)
+                            self.ctx_holder, self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, sfloats, tests,
+                            table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf,
+                            self.fstack, self.coll, self.as_cache)
             log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
             if r[vm.R_NLOG]:
                 self._write_log()

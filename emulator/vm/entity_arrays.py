@@ -5,22 +5,36 @@ and writes in place: nothing is copied, rebuilt or written back. This module com
 into the VM's tables, interning their tag and type names in that table and their objectives in
 the scoreboard.
 
-Selectors the VM evaluates (:meth:`SelectorTables.selector`): ``@e``, ``@a``, ``@s`` with ``type``
-(``!`` too, no ``#`` tags), ``tag`` (any number, ``!``, the empty ``tag=``), ``scores``, and for
-``@e``/``@a`` ``limit`` with ``sort=arbitrary``. A selector row is ``[kind, limit, first test,
-test count]``; its tests are rows of ``tests`` (``TEST_*`` in :mod:`emulator.vm.loop`). Every other
-selector stays with the host (returns None).
+Selectors the VM evaluates (:meth:`SelectorTables.selector`): ``@e @a @s @p @n`` with ``type``
+(``!``, and the vanilla ``#`` tags of :data:`~emulator.world.entities.ENTITY_TYPE_TAGS`), ``tag``
+(any number, ``!``, the empty ``tag=``), ``scores``, ``x y z``, ``dx dy dz`` volumes,
+``distance``, ``limit`` and ``sort=arbitrary|nearest|furthest``. A selector row and its floats are
+laid out as :mod:`emulator.vm.loop` describes (``S_*``, ``SF_*``); its tests are rows of ``tests``
+(``TEST_*``). Every other selector (``@r``, ``sort=random``, ``name``, ``nbt``, rotations,
+``gamemode``, ``level``, ``team``, ``predicate``) stays with the host (returns None).
 """
 from __future__ import annotations
+
+import math
 
 import numpy as np
 
 from mcfunction_parser import ast
+from emulator.world.entities import ENTITY_TYPE_TAGS
 from emulator.world.entity_table import EntityTable
 from emulator.world.semantics import INT_MAX, INT_MIN
-from emulator.vm.loop import KIND_A, KIND_E, KIND_S, SEL_WIDTH, TEST_NOTAGS, TEST_SCORE, TEST_TAG, TEST_TYPE
+from emulator.vm.loop import (
+    KIND_E, KIND_S, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, SEL_WIDTH, SF_BOX, SF_DHI,
+    SF_DLO, SF_ORIGIN, SF_WIDTH, SORT_ARBITRARY, SORT_FURTHEST, SORT_NEAREST, TEST_MEMBER, TEST_NOTAGS, TEST_SCORE,
+    TEST_TAG, TEST_TYPE, TEST_TYPES,
+)
 
-_KINDS = {"e": KIND_E, "a": KIND_A, "s": KIND_S}
+# (limit, players only, sort) per selector variable (selectors._VARIABLES); @r sorts randomly: host
+_VARIABLES = {"a": (INT_MAX, True, SORT_ARBITRARY), "e": (INT_MAX, False, SORT_ARBITRARY),
+              "n": (1, False, SORT_NEAREST), "p": (1, True, SORT_NEAREST), "s": (1, False, SORT_ARBITRARY)}
+_SORTS = {"arbitrary": SORT_ARBITRARY, "nearest": SORT_NEAREST, "furthest": SORT_FURTHEST}
+_AXES = {"x": 0, "y": 1, "z": 2}
+_DELTAS = {"dx": 0, "dy": 1, "dz": 2}
 
 
 class SelectorTables:
@@ -28,6 +42,7 @@ class SelectorTables:
         self.scoreboard = scoreboard  # objectives of `scores=` are interned here
         self.table = table  # tag and type names are interned here
         self.sel_rows: list[list[int]] = []
+        self.float_rows: list[list[float]] = []
         self.test_rows: list[list[int]] = []
         self._selector_ids: dict[tuple, int] = {}
         self._arrays: tuple | None = None
@@ -37,40 +52,93 @@ class SelectorTables:
 
     def selector(self, target) -> int | None:
         """The selector table row of ``target`` when the VM can evaluate it, else None."""
-        if not isinstance(target, ast.Selector) or target.variable not in _KINDS:
+        if not isinstance(target, ast.Selector) or target.variable not in _VARIABLES:
             return None
-        kind = _KINDS[target.variable]
-        tests, limit = [], INT_MAX
+        row = [0] * SEL_WIDTH
+        row[S_LIMIT], row[S_PLAYERS], row[S_SORT] = _VARIABLES[target.variable]
+        row[S_KIND] = KIND_S if target.variable == "s" else KIND_E
+        floats = [math.nan] * 3 + [0.0] * (SF_WIDTH - 3)
+        deltas, distance, tests = {}, None, []
         for arg in target.args:
-            if arg.key == "tag":
-                if arg.value:
-                    tests.append((TEST_TAG, self.tag_id(arg.value), int(arg.negated), 0))
-                else:
-                    tests.append((TEST_NOTAGS, int(arg.negated), 0, 0))
-            elif arg.key == "type" and not arg.value.startswith("#"):
-                tests.append((TEST_TYPE, self.table.type_id(arg.value), int(arg.negated), 0))
-            elif arg.key == "scores":
-                for objective, bounds in arg.value:
-                    lo = INT_MIN if bounds.lo is None else max(INT_MIN, bounds.lo)
-                    hi = INT_MAX if bounds.hi is None else min(INT_MAX, bounds.hi)
-                    tests.append((TEST_SCORE, self.scoreboard.objective_id(objective), lo, hi))
-            elif arg.key == "limit" and kind != KIND_S:
-                limit = int(arg.value)
-            elif not (arg.key == "sort" and arg.value == "arbitrary"):
+            tested = self._test(arg, tests)
+            if tested is None:
                 return None
-        key = (kind, limit, tuple(tests))
+            if tested:
+                continue
+            key, value = arg.key, arg.value
+            if key in _AXES:
+                floats[SF_ORIGIN + _AXES[key]] = float(value)
+            elif key in _DELTAS:
+                deltas[_DELTAS[key]] = float(value)
+            elif key == "distance":
+                distance = value
+            elif key == "limit":
+                row[S_LIMIT] = int(value)
+            elif key == "sort" and value in _SORTS:
+                row[S_SORT] = _SORTS[value]
+            else:
+                return None
+        if row[S_KIND] == KIND_S:
+            row[S_LIMIT], row[S_SORT] = 1, SORT_ARBITRARY
+        self._box(row, floats, deltas, distance)
+        key = (tuple(row), tuple(floats), tuple(tests))
         index = self._selector_ids.get(key)
         if index is None:
             index = self._selector_ids[key] = len(self.sel_rows)
-            self.sel_rows.append([kind, limit, len(self.test_rows), len(tests)])
+            row[S_TESTS], row[S_NTESTS] = len(self.test_rows), len(tests)
+            self.sel_rows.append(row)
+            self.float_rows.append(floats)
             self.test_rows.extend(list(t) for t in tests)
             self._arrays = None
         return index
 
-    def arrays(self) -> tuple[np.ndarray, np.ndarray]:
-        """``(selectors int64[n, SEL_WIDTH], tests int64[m, 4])`` for the VM."""
+    def _test(self, arg: ast.SelectorArg, tests: list) -> bool | None:
+        """Append the test rows of a tag, type or scores argument: True; False for another
+        argument; None for one the VM does not evaluate (``type=#tag`` of a tag it does not know)."""
+        if arg.key == "tag":
+            if arg.value:
+                tests.append((TEST_TAG, self.tag_id(arg.value), int(arg.negated), 0))
+            else:
+                tests.append((TEST_NOTAGS, int(arg.negated), 0, 0))
+        elif arg.key == "type" and arg.value.startswith("#"):
+            members = sorted(ENTITY_TYPE_TAGS.get(arg.value[1:], ()))
+            tests.append((TEST_TYPES, len(members), int(arg.negated), 0))
+            tests.extend((TEST_MEMBER, self.table.type_id(m), 0, 0) for m in members)
+        elif arg.key == "type":
+            tests.append((TEST_TYPE, self.table.type_id(arg.value), int(arg.negated), 0))
+        elif arg.key == "scores":
+            for objective, bounds in arg.value:
+                lo = INT_MIN if bounds.lo is None else max(INT_MIN, bounds.lo)
+                hi = INT_MAX if bounds.hi is None else min(INT_MAX, bounds.hi)
+                tests.append((TEST_SCORE, self.scoreboard.objective_id(objective), lo, hi))
+        else:
+            return False
+        return True
+
+    @staticmethod
+    def _box(row: list[int], floats: list[float], deltas: dict[int, float], distance) -> None:
+        """The box and distance tests as ``SelectorQuery.run`` builds them: a ``dx/dy/dz`` box from
+        the origin corner, else ``distance=..R``'s box ``[-R, R + 1]``; squared distance bounds."""
+        if deltas:
+            d = [deltas.get(i, 0.0) for i in range(3)]
+            lows = [v if v < 0 else 0.0 for v in d]
+            highs = [(0.0 if v < 0 else v) + 1.0 for v in d]
+            row[S_BOX] = 1
+            floats[SF_BOX:SF_BOX + 6] = lows + highs
+        elif distance is not None and distance.hi is not None:
+            r = distance.hi
+            row[S_BOX] = 1
+            floats[SF_BOX:SF_BOX + 6] = [-r, -r, -r, r + 1.0, r + 1.0, r + 1.0]
+        if distance is not None:
+            row[S_DIST] = 1
+            floats[SF_DLO] = -math.inf if distance.lo is None else distance.lo * distance.lo
+            floats[SF_DHI] = math.inf if distance.hi is None else distance.hi * distance.hi
+
+    def arrays(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(selectors int64[n, SEL_WIDTH], their floats float64[n, SF_WIDTH], tests int64[m, 4])`` for the VM."""
         if self._arrays is None:
             sels = np.array(self.sel_rows or [[0] * SEL_WIDTH], dtype=np.int64).reshape(-1, SEL_WIDTH)
+            floats = np.array(self.float_rows or [[0.0] * SF_WIDTH], dtype=np.float64).reshape(-1, SF_WIDTH)
             tests = np.array(self.test_rows or [[0] * 4], dtype=np.int64).reshape(-1, 4)
-            self._arrays = (sels, tests)
+            self._arrays = (sels, floats, tests)
         return self._arrays

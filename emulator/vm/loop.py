@@ -193,16 +193,24 @@ EF_MY = 4
 EF_MZ = 5
 EF_YAW = 6
 EF_PITCH = 7
-EF_WIDTH = 8
+EF_HALF = 8
+EF_HEIGHT = 9
+EF_WIDTH = 10
 PLAYER_TYPE = 0
 MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
-# selector rows (emulator.vm.entity_arrays): kind (@e/@a/@s), limit, its tests (first, count);
-# a test row: [TEST_SCORE, objective, lo, hi], [TEST_TYPE, type id, negated, 0], [TEST_TAG, tag, negated, 0]
-# or [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all)
-SEL_WIDTH = 4
-S_KIND, S_LIMIT, S_TESTS, S_NTESTS = range(SEL_WIDTH)
-KIND_E, KIND_A, KIND_S = range(3)
-TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS = range(4)
+# selector rows (emulator.vm.entity_arrays): kind (every entity, or @s), limit, its tests (first,
+# count), sort (SORT_*), players only, a box test, a distance test; its floats (sfloats): the
+# origin (NaN: the context's position), the box's low and high corners from the origin, the
+# squared distance bounds. A test row: [TEST_SCORE, objective, lo, hi], [TEST_TYPE, type id, negated, 0],
+# [TEST_TAG, tag, negated, 0], [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all), or [TEST_TYPES,
+# count, negated, 0] followed by `count` rows [TEST_MEMBER, type id, 0, 0] (`type=#tag`)
+SEL_WIDTH = 8
+S_KIND, S_LIMIT, S_TESTS, S_NTESTS, S_SORT, S_PLAYERS, S_BOX, S_DIST = range(SEL_WIDTH)
+SF_WIDTH = 11
+SF_ORIGIN, SF_BOX, SF_DLO, SF_DHI = 0, 3, 9, 10
+KIND_E, KIND_S = range(2)
+SORT_ARBITRARY, SORT_NEAREST, SORT_FURTHEST = range(3)
+TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS, TEST_TYPES, TEST_MEMBER = range(6)
 POS_LIMIT_XZ, POS_LIMIT_Y = 3.0000512e7, 2.0e7  # Entity.load clamps positions to these
 
 
@@ -264,12 +272,15 @@ def _report(ovf, novf, pc, kind, a, b, exact):
 
 
 @njit(cache=True)
-def _matches(sel, slot, sels, tests, eints, etags, values, present, alive_obj):
-    """EntitySelector's predicate for one entity (@a's player test, tag, type and score tests)."""
-    if sels[sel, S_KIND] == KIND_A and eints[slot, EI_TYPE] != PLAYER_TYPE:
+def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values, present, alive_obj):
+    """EntitySelector's predicate for one entity (``selectors.SelectorQuery``'s tests): players
+    only, tag, type and score tests, the box (the hitbox intersects it, strictly) and the distance
+    (squared, to the feet) from the origin ``(ox, oy, oz)``."""
+    if sels[sel, S_PLAYERS] and eints[slot, EI_TYPE] != PLAYER_TYPE:
         return False
-    first = sels[sel, S_TESTS]
-    for t in range(first, first + sels[sel, S_NTESTS]):
+    t = sels[sel, S_TESTS]
+    end = t + sels[sel, S_NTESTS]
+    while t < end:
         kind = tests[t, 0]
         if kind == TEST_TAG:
             tag = tests[t, 1]
@@ -278,6 +289,14 @@ def _matches(sel, slot, sels, tests, eints, etags, values, present, alive_obj):
         elif kind == TEST_TYPE:
             if (eints[slot, EI_TYPE] == tests[t, 1]) == (tests[t, 2] != 0):
                 return False
+        elif kind == TEST_TYPES:
+            member = False
+            for m in range(t + 1, t + 1 + tests[t, 1]):
+                if eints[slot, EI_TYPE] == tests[m, 1]:
+                    member = True
+            if member == (tests[t, 2] != 0):
+                return False
+            t += tests[t, 1]
         elif kind == TEST_NOTAGS:
             none = True
             for w in range(etags.shape[1]):
@@ -290,6 +309,23 @@ def _matches(sel, slot, sels, tests, eints, etags, values, present, alive_obj):
             h = eints[slot, EI_HOLDER]
             if alive_obj[o] == 0 or present[h, o] == 0 or values[h, o] < tests[t, 2] or values[h, o] > tests[t, 3]:
                 return False
+        t += 1
+    x = efloats[slot, EF_X]
+    y = efloats[slot, EF_Y]
+    z = efloats[slot, EF_Z]
+    if sels[sel, S_BOX]:
+        half = efloats[slot, EF_HALF]
+        if not (sfloats[sel, SF_BOX] + ox < x + half and sfloats[sel, SF_BOX + 3] + ox > x - half
+                and sfloats[sel, SF_BOX + 1] + oy < y + efloats[slot, EF_HEIGHT] and sfloats[sel, SF_BOX + 4] + oy > y
+                and sfloats[sel, SF_BOX + 2] + oz < z + half and sfloats[sel, SF_BOX + 5] + oz > z - half):
+            return False
+    if sels[sel, S_DIST]:
+        dx = x - ox
+        dy = y - oy
+        dz = z - oz
+        d2 = dx * dx + dy * dy + dz * dz
+        if not (sfloats[sel, SF_DLO] <= d2 <= sfloats[sel, SF_DHI]):
+            return False
     return True
 
 
@@ -305,24 +341,42 @@ def _tag_count(etags, slot):
 
 
 @njit(cache=True)
-def _select(sel, self_slot, sels, tests, eints, etags, order, values, present, alive_obj, out, off):
-    """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server), written to
-    ``out[off:]`` in the game's order (unsorted: the store's order, cut at the limit); their count."""
+def _select(sel, self_slot, pos, sels, sfloats, tests, eints, efloats, etags, order, values, present, alive_obj, out,
+            off):
+    """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server; ``pos``:
+    the context's position), written to ``out[off:]`` in the game's order (unsorted: the store's
+    order, cut at the limit; sorted by distance: stable, then cut); their count."""
+    ox = pos[0] if np.isnan(sfloats[sel, SF_ORIGIN]) else sfloats[sel, SF_ORIGIN]
+    oy = pos[1] if np.isnan(sfloats[sel, SF_ORIGIN + 1]) else sfloats[sel, SF_ORIGIN + 1]
+    oz = pos[2] if np.isnan(sfloats[sel, SF_ORIGIN + 2]) else sfloats[sel, SF_ORIGIN + 2]
     if sels[sel, S_KIND] == KIND_S:
-        if self_slot >= 0 and _matches(sel, self_slot, sels, tests, eints, etags, values, present, alive_obj):
+        if self_slot >= 0 and _matches(sel, self_slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values,
+                                       present, alive_obj):
             out[off] = self_slot
             return 1
         return 0
     n = 0
     limit = sels[sel, S_LIMIT]
+    sort = sels[sel, S_SORT]
     for i in range(order.shape[0]):
         slot = order[i]
-        if _matches(sel, slot, sels, tests, eints, etags, values, present, alive_obj):
+        if _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values, present, alive_obj):
             out[off + n] = slot
             n += 1
-            if n >= limit:
+            if sort == SORT_ARBITRARY and n >= limit:
                 break
-    return n
+    if sort != SORT_ARBITRARY and n > 1:  # List.sort: stable, by the squared distance (negated: furthest)
+        keys = np.empty(n)
+        for i in range(n):
+            e = out[off + i]
+            dx = efloats[e, EF_X] - ox
+            dy = efloats[e, EF_Y] - oy
+            dz = efloats[e, EF_Z] - oz
+            d2 = dx * dx + dy * dy + dz * dz
+            keys[i] = d2 if sort == SORT_NEAREST else -d2
+        ranked = out[off:off + n][np.argsort(keys, kind="mergesort")]
+        out[off:off + n] = ranked
+    return n if n < limit else limit
 
 
 @njit(cache=True)
@@ -402,8 +456,8 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True, error_model="numpy")
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
-        active, ovf, ctx_holder, ctx_entity, ctx_pos, ctx_dim, sels, tests, eints, efloats, etags, eorder, selbuf,
-        logbuf, fstack, coll, as_cache):
+        active, ovf, ctx_holder, ctx_entity, ctx_pos, ctx_dim, sels, sfloats, tests, eints, efloats, etags, eorder,
+        selbuf, logbuf, fstack, coll, as_cache):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -663,8 +717,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 if counting:
                     counts[pc] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj,
-                            selbuf, 0)
+                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                            eorder, values, present, alive_obj, selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
             elif op == OP_IFDIM:  # ExecuteCommand: the dimension is the source's level
@@ -913,8 +967,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 ok = 1
                 val = n
             elif op == OP_TAG:
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj,
-                            selbuf, 0)
+                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                            eorder, values, present, alive_obj, selbuf, 0)
                 w = code[pc, 2] >> 6
                 m = np.int64(1) << (code[pc, 2] & 63)
                 many = etags.shape[1] * 64 > MAX_TAGS  # else no entity can reach the limit
@@ -939,7 +993,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_HOST
                 break
             elif op == OP_TP:
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                            eorder, values, present, alive_obj, selbuf, 0)
                 k = code[pc, 2]
                 x = floats[k] + ctx_pos[ctx, 0] if code[pc, 3] & 1 else floats[k]  # WorldCoordinate.get: value + base
                 y = floats[k + 1] + ctx_pos[ctx, 1] if code[pc, 3] & 2 else floats[k + 1]
@@ -977,7 +1032,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     val = _mth_floor(x)
                 pc += 1
             else:  # OP_LOG
-                n = _select(code[pc, 2], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 2], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                            eorder, values, present, alive_obj, selbuf, 0)
                 has = 1
                 ok = 1 if n else 0
                 val = n
@@ -988,8 +1044,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_SELHOLDERS:
             if alive:
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
-                n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj,
-                            selbuf, off)
+                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                            eorder, values, present, alive_obj, selbuf, off)
                 for i in range(off, off + n):
                     selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
@@ -1002,7 +1058,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             if alive == 0:
                 pc += 1
                 continue
-            n = _select(code[pc, 1], ctx_entity[ctx], sels, tests, eints, etags, eorder, values, present, alive_obj, selbuf, 0)
+            n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                        eorder, values, present, alive_obj, selbuf, 0)
             pc += 1
             if n == 0:
                 alive = 0

@@ -43,7 +43,9 @@ import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, rotation
-from emulator.world.entity_table import EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EntityTable, TagSet
+from emulator.world.entity_table import (
+    EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EntityTable, TagSet,
+)
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import player_defaults, selected_item
 from emulator.world.text import plain_text
@@ -237,6 +239,7 @@ class Entity:
         table.floats[slot, EF_YAW] = yaw
         table.floats[slot, EF_PITCH] = pitch
         table.ints[slot, EI_ALIVE] = int(alive)
+        table.floats[slot, EF_HALF:EF_HEIGHT + 1] = self.box_extent()
         self._table = table
         self._own = TagSet(table, slot)
         self._own.replace(tags)
@@ -318,11 +321,19 @@ class Entity:
     def eye_height(self) -> np.float32:
         return entity_type(self.type).eye_height * self._scale()
 
+    def box_extent(self) -> tuple[float, float]:
+        """The hitbox's half width and height (``width / 2.0F`` and the height are floats, widened
+        to double); the table keeps a copy for the VM (refreshed by ``load_nbt``)."""
+        return _box_extent(self.type, float(self._scale()) if self.type == "minecraft:armor_stand" else 1.0)
+
+    def refresh_box(self) -> None:
+        if self._table is not None:
+            self._table.floats[self.order, EF_HALF:EF_HEIGHT + 1] = self.box_extent()
+
     @property
     def bounding_box(self) -> tuple[float, float, float, float, float, float]:
-        """``EntityDimensions.makeBoundingBox``: half the width around x/z, the height up from y
-        (``width / 2.0F`` and the height are floats, widened to double)."""
-        half, height = _box_extent(self.type, float(self._scale()) if self.type == "minecraft:armor_stand" else 1.0)
+        """``EntityDimensions.makeBoundingBox``: half the width around x/z, the height up from y."""
+        half, height = self.box_extent()
         x, y, z = self.pos
         return (x - half, y, z - half, x + half, y + height, z + half)
 
@@ -455,6 +466,7 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     dropped = set(_MODELLED) | set(FLAG_FIELDS) | (set(display.NOT_SAVED) if entity.type in display.DISPLAY_TYPES else set())
     data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in data and k not in dropped)
     entity.data = data
+    entity.refresh_box()  # an armor stand's Marker or Small changes its size
 
 
 def modify_entity(entity: Entity, change: Callable[[Compound], object]):

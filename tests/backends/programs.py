@@ -69,12 +69,16 @@ MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0",
 ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"]}',
                 'summon marker ~ ~1 ~5 {Tags:["n"]}', 'summon armor_stand ~1 ~ ~1 {Tags:["m"]}',
                 "scoreboard objectives add t trigger")
-# (the VM evaluates @e/@a/@s with type, tag, scores and limit itself; sort, distance ... go to the host)
+# (the VM evaluates @e/@a/@s/@p/@n with type, #type, tag, scores, x/y/z, volumes, distance, limit and
+# sort nearest/furthest itself; random sorts, names, rotations ... go to the host)
 ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=marker,sort=nearest,limit=2]",
                     "positioned as @e[tag=n]", "as @e[tag=m] at @s", "as @e[sort=furthest]",
                     "as @e[tag=m,tag=!a]", "as @e[type=marker,scores={o=0..}]", "as @e[type=!marker]",
                     "as @e[tag=m,limit=2]", "as @s[tag=m]", "as @e[scores={o=..3,p=-5..}]",
-                    "rotated as @e[type=armor_stand]", "positioned as @s")
+                    "rotated as @e[type=armor_stand]", "positioned as @s", "as @e[distance=..2.5]",
+                    "at @e[distance=1..,sort=nearest,limit=2]", "as @e[x=0,y=0,z=0,dx=2,dy=1,dz=5]",
+                    "as @e[dx=-1,dy=0,dz=1,tag=m]", "as @n[tag=m]", "as @e[type=!#minecraft:skeletons,tag=]",
+                    "as @e[tag=w69]", "positioned ^1 ^ ^2", "rotated 30 10", "as @e[tag=!] at @s")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]")
 ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
@@ -94,7 +98,14 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "data modify entity @s data.v set value 3", "execute store result score #d o run data get entity @s data.v",
                    "execute store result entity @e[tag=n,limit=1] data.v int 2 run scoreboard players get #a o",
                    'data merge entity @e[tag=a,limit=1] {Tags:["m","a","q"]}', "scoreboard players set @e[tag=m,sort=nearest] hp 3",
-                   "ride @e[tag=n,limit=1] mount @e[type=armor_stand,limit=1]", "ride @s dismount")
+                   "ride @e[tag=n,limit=1] mount @e[type=armor_stand,limit=1]", "ride @s dismount",
+                   "tag @e[distance=..3] add q", "tag @e[dx=1,dy=1,dz=1,tag=!a] remove m",
+                   "scoreboard players add @n[tag=m] o 1", "tag @e[sort=furthest,limit=1] add far",
+                   "execute as @e[tag=m] run function t:wide", "tag @e[tag=w5,tag=!w68] remove w69",
+                   "tp @s ^ ^ ^1", "tp @s ^0.5 ^-1 ^", "execute as @e[tag=n] at @s run tp @s ^ ^ ^-0.25",
+                   "tp @e[x=0,y=0,z=0,distance=..4] ~ ~0.5 ~")
+# t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
+WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
 
 # Server commands whose results and effects (schedules, gamerules, the log) are compared; `0t`
@@ -204,7 +215,8 @@ def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
                 f"{draw(single)} {draw(objectives)}")
     if kind == "entity":
         targets = ('@s', '@e[tag=a]', '@e[tag=n]', '@e[tag=m,scores={o=1..}]', '@e[type=marker,limit=1]',
-                   '@s[tag=a]', '@e[tag=m,tag=!a]', '@e[type=!marker]')
+                   '@s[tag=a]', '@e[tag=m,tag=!a]', '@e[type=!marker]', '@e[distance=..1.5]',
+                   '@e[dx=2,dy=0,dz=2,tag=m]', '@n[tag=w69]', '@e[type=#minecraft:skeletons]')
         return f"{word} entity {draw(st.sampled_from(targets))}"
     return f"{word} function {draw(st.sampled_from(callees))}"
 
@@ -288,6 +300,8 @@ def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool =
                      "scoreboard objectives add hp health",
                      f"scoreboard players set #n p {draw(st.integers(0, 6))}", *vocab.setup] + lines
         functions[name] = "\n".join(lines)
+    if entities:
+        functions["t:wide"] = WIDE_TAGS
     loop_body = draw(st.lists(score_commands(vocab), min_size=0, max_size=3))
     functions["t:loop"] = "\n".join(
         ["scoreboard players remove #n p 1"] + loop_body + ["execute if score #n p matches 1.. run function t:loop"]

@@ -129,8 +129,8 @@ def test_the_forms_compile_to_vm_instructions(tmp_path):
     assert [type(run.node).__name__ for run in emu.backend.host_ops_run()] == ["ObjectivesAdd"] * 3 + ["Summon"] * 4
 
 
-@pytest.mark.parametrize("selector", ["@e[sort=nearest]", "@e[distance=..2]", "@e[type=#minecraft:skeletons]",
-                                      "@p", "@e[name=x]"])
+@pytest.mark.parametrize("selector", ["@e[sort=random]", "@r", "@e[name=x]", "@e[x_rotation=0..10]",
+                                      "@e[nbt={}]", "@a[gamemode=creative]"])
 def test_other_selectors_stay_with_the_host(tmp_path, selector):
     emu = emulator_for(tmp_path, {"t:main": SETUP + f"tag {selector} add z"})
     emu.call("t:main")
@@ -192,3 +192,39 @@ def test_an_entity_holds_at_most_1024_tags_in_the_vm(tmp_path):
     emu = _run_both(tmp_path, adds + "execute store result score #last o run tag @e[tag=x] add last")
     assert len(emu.entities("@e[tag=a]")[0]["tags"]) == 1024
     assert emu.score("#last", "o") == 2  # the two other x entities
+
+
+# Positions: 0.5 0 0.5 (marker, x a), 1.5 0 0.5 (marker, x), 2.5 0 0.5 (armor stand 0.5 x 1.975, x),
+# 3.5 0 0.5 (marker, y). EntitySelector / EntitySelectorParser / EntitySelectorOptions (1.21)
+@pytest.mark.parametrize("selector, found", [
+    ("@e[distance=..1.5]", 1),  # squared distance to the feet, inclusive, from the context (0 0 0)
+    ("@e[distance=1..2]", 1),
+    ("@e[x=3,y=0,z=0,distance=..1]", 2),  # the armor stand at 0.5 and the marker at 0.5 horizontally
+    ("@e[x=2,y=0,z=0,dx=0,dy=0,dz=0]", 1),  # the box [2, 3] x [0, 1] x [0, 1]: only the armor stand's hitbox
+    ("@e[x=1.6,y=0,z=0,dx=0.5,dy=0,dz=0]", 1),  # [1.6, 2.6]: the armor stand's hitbox, not the marker at 1.5
+    ("@e[x=2.8,y=-1,z=0,dx=-1,dy=0.5,dz=1]", 2),  # a negative extent: [1.8, 3.8] x [-1, 0.5] x [0, 2]
+    ("@e[type=#minecraft:skeletons]", 0),
+    ("@e[type=!#minecraft:skeletons,tag=x]", 3),
+    ("@e[sort=nearest,limit=2,x=3,y=0,z=0]", 2),
+    ("@n[tag=x]", 1),
+    ("@p", 0),
+])
+def test_position_selectors_run_in_the_vm(tmp_path, selector, found):
+    emu = _run_both(tmp_path, f"execute store result score #n o if entity {selector}\n"
+                              f"execute as {selector} run scoreboard players add @s s 1\n"
+                              f"tag {selector} add found")
+    assert emu.score("#n", "o") == found
+    assert {type(run.node).__name__ for run in emu.backend.host_ops_run()} == {"ObjectivesAdd", "Summon"}
+
+
+def test_sorted_selectors_keep_the_game_order(tmp_path):
+    # sort=nearest|furthest: List.sort (stable) by squared distance, then the limit; @n is nearest, limit 1
+    emu = _run_both(tmp_path, "summon marker 2 0 0 {Tags:[\"x\"]}\n"
+                              "execute positioned 2 0 0 as @e[sort=nearest,limit=3] run scoreboard players add #near o 1\n"
+                              "execute positioned 2 0 0 run tag @e[sort=furthest,limit=2] add far\n"
+                              "execute positioned 2 0 0 run tag @n[tag=x,tag=!far] add near\n"
+                              "scoreboard players set @e[sort=furthest,x=0,y=0,z=0,tag=x] s 5")
+    # from (2.5, 0, 0.5) (positioned centres integers): squared distances 4, 1, 0, 1, 0; ties keep the store's order
+    assert [("far" in e["tags"], "near" in e["tags"]) for e in emu.entities()] == [
+        (True, False), (True, False), (False, True), (False, False), (False, False)]
+    assert emu.score("#near", "o") == 3
