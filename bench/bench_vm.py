@@ -164,7 +164,7 @@ def host_round_trip(pack: Path) -> float:
 
 
 def entity_store(pack: Path, backend: str, markers: int) -> tuple[float, float, int]:
-    """(seconds to summon ``markers`` markers in one root, seconds of one ``walk`` over them, its commands)."""
+    """(seconds to summon ``markers`` markers in one root, seconds of a ``walk`` over them, its commands)."""
     from emulator import Emulator
 
     emu = Emulator(backend=backend)
@@ -177,9 +177,12 @@ def entity_store(pack: Path, backend: str, markers: int) -> tuple[float, float, 
     start = time.perf_counter()
     emu.runtime.call("b:summon_n")
     summoned = time.perf_counter() - start
-    start = time.perf_counter()
-    result = emu.runtime.call("b:walk")
-    return summoned, time.perf_counter() - start, result.cost
+    best = float("inf")
+    for _ in range(3):  # the best of three walks (the machine is shared)
+        start = time.perf_counter()
+        result = emu.runtime.call("b:walk")
+        best = min(best, time.perf_counter() - start)
+    return summoned, best, result.cost
 
 
 def store_rows(pack: Path, markers: int) -> None:

@@ -2,9 +2,9 @@
 :class:`~emulator.world.state.WorldState`.
 
 A :class:`~emulator.world.state.Context` names its executor by an integer id: the entity's
-creation index (``Entity.order``), registered in ``state.executors`` when a context is made for
-it, so ``@s`` keeps reaching an entity even after it was killed (as the game's source keeps its
-entity object).
+creation index (``Entity.order``, its slot in the store's table, which keeps killed entities), so
+``@s`` keeps reaching an entity even after it was killed (as the game's source keeps its entity
+object).
 
 - ``select(state, target, ctx)``: EntityArgument.getOptionalEntities: what a selector, player name
   or UUID finds (maybe none); ``found`` (EntityArgument.getEntities: none fails) and ``single``
@@ -60,13 +60,7 @@ class ShuffledEntityStore(EntityStore):
 
 # ---------------------------------------------------------------------- contexts
 def executor(state: WorldState, ctx: Context) -> Entity | None:
-    return None if ctx.executor == SERVER else state.executors.get(ctx.executor)
-
-
-def register(state: WorldState, entity: Entity) -> int:
-    """The executor id of ``entity`` (its creation index), registered for later lookups."""
-    state.executors[entity.order] = entity
-    return entity.order
+    return None if ctx.executor == SERVER else state.entities.table.handles[ctx.executor]
 
 
 def world_source(state: WorldState, ctx: Context) -> Source:
@@ -76,7 +70,7 @@ def world_source(state: WorldState, ctx: Context) -> Source:
 
 
 def context_as(state: WorldState, ctx: Context, entity: Entity) -> Context:
-    return replace(ctx, executor=register(state, entity))
+    return replace(ctx, executor=entity.order)
 
 
 def context_at(ctx: Context, entity: Entity) -> Context:
@@ -97,7 +91,7 @@ def entity_stage_context(kind: int, state: WorldState, ctx: Context, entity: Ent
 
 def entity_context(state: WorldState, entity: Entity, anchor: str = "feet") -> Context:
     """A context run by ``entity`` at its position and rotation (``Emulator.call(as_=...)``)."""
-    return Context(register(state, entity), entity.pos, (float(entity.yaw), float(entity.pitch)), anchor)
+    return Context(entity.order, entity.pos, (float(entity.yaw), float(entity.pitch)), anchor)
 
 
 # ---------------------------------------------------------------------- entity arguments

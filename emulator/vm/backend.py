@@ -75,18 +75,19 @@ class NumbaBackend:
         self.counts = np.zeros(0, dtype=np.int64)  # cost charged per instruction
         self.totals = np.zeros(0, dtype=np.int64)  # inclusive cost per function
         self.active = np.zeros(0, dtype=np.int64)
-        self.contexts: list[Context] = []  # R_CTX indexes this; reset per root
-        self.ctx_holder = np.full(16, -1, dtype=np.int64)  # per context: the executor's holder id (@s), -1: server
-        self.ctx_entity = np.full(16, -1, dtype=np.int64)  # per context: the executor's Entity.order, -1: server
-        self.ctx_pos = np.zeros((16, 3), dtype=np.float64)  # per context: its position
-        self.ctx_dim = np.zeros(16, dtype=np.int64)  # per context: its dimension (Program.intern_dimension)
+        # the contexts (R_CTX indexes them; reset per root): their arrays (vm.CI_*, vm.CF_*), rows the VM
+        # and Python add, and the Context objects Python made or asked for
+        self.cints = np.zeros((16, vm.CI_WIDTH), dtype=np.int64)
+        self.cfloats = np.zeros((16, vm.CF_WIDTH), dtype=np.float64)
+        self.contexts: dict[int, Context] = {}
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.context_ids: dict[tuple, int] = {}
-        self.as_cache = np.full((vm.AS_CACHE_SIZE, 3), -1, dtype=np.int64)  # rows (context, slot, `as` context)
-        # per context: the store targets its chain resolved, ((id(store node), key), ...): a store
-        # writes to what its stage resolved, whatever context the chain ends in
-        self.bindings: list[tuple] = []
+        self.as_cache = np.full((vm.AS_CACHE_SIZE, 4), -1, dtype=np.int64)  # rows (context, slot, kind, made)
+        # the store targets a context's chain resolved, ((id(store node), key), ...), by CI_BIND: a
+        # store writes to what its stage resolved, whatever context the chain ends in
+        self.binding_sets: list[tuple] = [()]
+        self.binding_ids: dict[tuple, int] = {(): 0}
         self.store_targets: dict[object, StoreTarget] = {}  # key -> target; reset per root
         self.fstack = vm.new_fork_stack()  # contexts waiting for the rest of their chain (see emulator.vm.loop)
         self.coll = vm.new_fork_stack()  # contexts kept for their chain's final command
@@ -95,10 +96,11 @@ class NumbaBackend:
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
-        self.contexts = []
+        r = self.regs
+        r[:] = 0
+        self.contexts = {}
         self.context_ids = {}
         self.as_cache[:, 0] = -1  # context indexes start again
-        self.bindings = []
         self.store_targets = {}
         self._context_index(context or Context(), ())
         function = self.packs.functions.get(function_id)
@@ -112,8 +114,6 @@ class NumbaBackend:
             return RootResult(0, None)
         self.root_frame = Frame(function_id, Loc(function.path, max(function.lines, 1), 1))  # where a root ends
         limit = state.gamerules.max_command_chain_length
-        r = self.regs
-        r[:] = 0
         r[vm.R_PC] = Program.ROOT_PC
         r[vm.R_QUOTA] = limit
         r[vm.R_ALIVE] = 1
@@ -142,8 +142,7 @@ class NumbaBackend:
             sels, sfloats, tests = self.selectors.arrays()
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             sb.writable, sb.trigger, self.counts, self.totals, self.active, self.ovf,
-                            self.ctx_holder, self.ctx_entity, self.ctx_pos, self.ctx_dim, sels, sfloats, tests,
-                            table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf,
+                            self.cints, self.cfloats, sels, sfloats, tests, table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf,
                             self.fstack, self.coll, self.as_cache)
             log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
             if r[vm.R_NLOG]:
@@ -162,8 +161,9 @@ class NumbaBackend:
             if status == vm.ST_HOST:
                 pc = int(r[vm.R_PC])
                 self._host_guarded(pc)
-            elif status == vm.ST_FORK:
-                self._entity_contexts()
+            elif status == vm.ST_GROWCTX:
+                self._grow_contexts(2 * self.cints.shape[0])
+                self.fstack = _grown(self.fstack)
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_GROWCOLL:
@@ -186,7 +186,7 @@ class NumbaBackend:
         r = self.regs
         n = int(r[vm.R_NLOG])
         for index, ctx in self.logbuf[:n].tolist():
-            self.host.run_final(self.program.host_ops[index].node, self.contexts[ctx])
+            self.host.run_final(self.program.host_ops[index].node, self.context(ctx))
         r[vm.R_NLOG] = 0
 
     def _fit_counters(self, n_code: int, n_functions: int) -> None:
@@ -226,7 +226,7 @@ class NumbaBackend:
         r = self.regs
         self._current_pc = pc
         self.host_runs[pc] += 1
-        ctx = self.contexts[int(r[vm.R_CTX])]
+        ctx = self.context(int(r[vm.R_CTX]))
         r[vm.R_PC] = pc + 1
         if opcode == vm.OP_HOST:
             result = self.host.run_final(node, ctx)
@@ -234,30 +234,50 @@ class NumbaBackend:
         elif opcode == vm.OP_HOSTSTORE:
             target = None
             if resolves_target(node):
-                target = self.store_targets[dict(self.bindings[int(r[vm.R_CTX])])[id(node)]]
+                target = self.store_targets[dict(self.bindings(int(r[vm.R_CTX])))[id(node)]]
             self.host.run_store(node, target, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
         else:
             self._stage(node, ctx)
 
     def _context_index(self, ctx: Context, bindings: tuple) -> int:
-        """Intern a context with its store bindings (a loop re-running a stage must not grow the table)."""
+        """Intern a context Python made, with its store bindings (a loop re-running a stage must not
+        grow the table): its row in the context arrays."""
         key = (ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension, bindings)
         index = self.context_ids.get(key)
         if index is None:
-            index = self.context_ids[key] = len(self.contexts)
-            self.contexts.append(ctx)
-            self.bindings.append(bindings)
-            if index >= self.ctx_holder.shape[0]:
-                self.ctx_holder = np.concatenate([self.ctx_holder, np.full(index + 1, -1, dtype=np.int64)])
-                self.ctx_entity = np.concatenate([self.ctx_entity, np.full(index + 1, -1, dtype=np.int64)])
-                self.ctx_pos = np.concatenate([self.ctx_pos, np.zeros((index + 1, 3))])
-                self.ctx_dim = np.concatenate([self.ctx_dim, np.zeros(index + 1, dtype=np.int64)])
-            self.ctx_pos[index] = ctx.pos
-            self.ctx_dim[index] = self.program.intern_dimension(ctx.dimension)
+            r = self.regs
+            index = self.context_ids[key] = int(r[vm.R_NCTX])
+            r[vm.R_NCTX] = index + 1
+            if index >= self.cints.shape[0]:
+                self._grow_contexts(2 * self.cints.shape[0])
+            self.contexts[index] = ctx
             entity = world_entities.executor(self.state, ctx)
-            self.ctx_holder[index] = -1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder)
-            self.ctx_entity[index] = -1 if entity is None else entity.order
+            bind = self.binding_ids.get(bindings)
+            if bind is None:
+                bind = self.binding_ids[bindings] = len(self.binding_sets)
+                self.binding_sets.append(bindings)
+            self.cints[index] = (-1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder),
+                                 -1 if entity is None else entity.order, self.program.intern_dimension(ctx.dimension),
+                                 vm.ANCHOR_EYES if ctx.anchor == "eyes" else vm.ANCHOR_FEET, bind)
+            self.cfloats[index] = (*ctx.pos, *ctx.rot)
         return index
+
+    def context(self, index: int) -> Context:
+        """Context ``index`` as a :class:`Context` (made from its row when the VM made it)."""
+        ctx = self.contexts.get(index)
+        if ctx is None:
+            ints, floats = self.cints[index].tolist(), self.cfloats[index].tolist()
+            ctx = self.contexts[index] = Context(
+                ints[vm.CI_ENTITY], tuple(floats[vm.CF_X:vm.CF_Z + 1]), (floats[vm.CF_YAW], floats[vm.CF_PITCH]),
+                "eyes" if ints[vm.CI_ANCHOR] == vm.ANCHOR_EYES else "feet", self.program.dimensions[ints[vm.CI_DIM]])
+        return ctx
+
+    def bindings(self, index: int) -> tuple:
+        return self.binding_sets[int(self.cints[index, vm.CI_BIND])]
+
+    def _grow_contexts(self, size: int) -> None:
+        self.cints = _extend(self.cints, size)
+        self.cfloats = _extend(self.cfloats, size)
 
     def _bind(self, index: int, node, target: StoreTarget) -> tuple:
         """Context ``index``'s bindings with ``node``'s store target replaced (a recursive chain
@@ -266,14 +286,14 @@ class NumbaBackend:
         # an entity or block accessor by identity (kept alive in store_targets for this root)
         key = target.value if isinstance(target.value, tuple) else id(target.value)
         self.store_targets[key] = target
-        kept = tuple(b for b in self.bindings[index] if b[0] != id(node))
+        kept = tuple(b for b in self.bindings(index) if b[0] != id(node))
         return kept + ((id(node), key),)
 
     def _stage(self, node, ctx: Context) -> None:
         """An execute stage run by the host: no context left, one, or a fork."""
         r = self.regs
         index = int(r[vm.R_CTX])
-        bindings = self.bindings[index]
+        bindings = self.bindings(index)
         if resolves_target(node):
             target = self.host.run_store_stage(node, ctx)
             made = None if target is None else [ctx]
@@ -293,7 +313,7 @@ class NumbaBackend:
         elif not made:
             r[vm.R_ALIVE] = 0
         elif len(made) == 1:
-            if made[0] is not ctx or bindings is not self.bindings[index]:
+            if made[0] is not ctx or bindings is not self.bindings(index):
                 r[vm.R_CTX] = self._context_index(made[0], bindings)
         else:
             self._fork([self._context_index(c, bindings) for c in made])
@@ -304,29 +324,6 @@ class NumbaBackend:
         made = np.array(contexts, dtype=np.int64)
         while not vm.fork_contexts(r, self.fstack, self.coll, made, len(made), int(r[vm.R_DEPTH]), int(r[vm.R_PC])):
             self.fstack = _grown(self.fstack)
-
-    def _entity_contexts(self) -> None:
-        """``execute as|at|positioned as|rotated as SEL`` run by the VM: a context per entity it found
-        (``selbuf[:R_NSEL]``)."""
-        r = self.regs
-        index = int(r[vm.R_CTX])
-        ctx, bindings = self.contexts[index], self.bindings[index]
-        kind = self.program.rows[int(r[vm.R_PC]) - 1][3]
-        made = []
-        for slot in self.selbuf[:int(r[vm.R_NSEL])].tolist():
-            entity = self.state.entities.table.handles[slot]
-            if kind:  # at, positioned as, rotated as: the entity may have moved since (no cache)
-                made.append(self._context_index(world_entities.entity_stage_context(kind, self.state, ctx, entity),
-                                                bindings))
-                continue
-            row = self.as_cache[vm.as_cache_row(index, slot)]
-            if row[0] != index or row[1] != slot:
-                row[:] = (index, slot, self._context_index(world_entities.context_as(self.state, ctx, entity), bindings))
-            made.append(int(row[2]))
-        if len(made) == 1:
-            r[vm.R_CTX] = made[0]
-        else:
-            self._fork(made)
 
     def _repeat(self) -> None:
         """``if function``: the isolated call's callback added this context once per return (each
@@ -366,7 +363,7 @@ class NumbaBackend:
     def _arguments(self, cmd: ast.FunctionCall):
         if cmd.with_source is None:
             return cmd.arguments
-        ctx = self.contexts[int(self.regs[vm.R_CTX])]
+        ctx = self.context(int(self.regs[vm.R_CTX]))
         return macro_arguments(self.host, cmd.with_source, cmd.with_path, ctx)
 
     def _runtime_error(self) -> None:
@@ -467,4 +464,4 @@ def _grown(rows: np.ndarray) -> np.ndarray:
 
 
 def _extend(array: np.ndarray, size: int) -> np.ndarray:
-    return np.concatenate([array, np.zeros(size - array.shape[0], dtype=array.dtype)])
+    return np.concatenate([array, np.zeros((size - array.shape[0],) + array.shape[1:], dtype=array.dtype)])

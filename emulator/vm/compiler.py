@@ -34,10 +34,10 @@ from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import HostOp, MacroCall, Program
 from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositionedAs, ExRotatedAs,
-    Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget, PathIndex, PathKey,
-    Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet, StoreBossbar, StoreData,
-    StoreScore, Subcommand, Teleport, Tellraw, Vec3,
+    Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositioned, ExPositionedAs,
+    ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
+    PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
+    StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec3,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.world.source import world_coordinate
@@ -158,6 +158,8 @@ class Compiler:
                           int(last))
             elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
+            elif isinstance(st, ExPositioned) and not last:
+                self.emit(vm.OP_POSITIONED, *self.coordinates(st.pos))
             elif (axis := _position_store(st)) is not None and _context_kept(stages[i + 1:], final):
                 self.emit(vm.OP_POSSTAGE, 0, int(forked))
                 stores.append(_PositionStore(st, axis))
@@ -326,21 +328,31 @@ class Compiler:
         return None if self.selectors is None else self.selectors.selector(target)
 
     def teleport(self, cmd: Teleport) -> tuple[int, int, int] | None:
-        """(selector, first of x y z in floats, relative-axis bits) of ``tp SEL X Y Z`` with world
-        coordinates and no rotation or facing; else None. Absolute integer x/z are centred (+0.5),
-        as Vec3Argument's ``WorldCoordinate.get`` does (emulator.world.source)."""
+        """(selector, first of x y z in floats, flags) of ``tp [SEL] X Y Z`` with world or local
+        coordinates and no rotation or facing; else None. Flags: the relative (``~``) axes' bits,
+        ``TP_LOCAL`` for ``^``, ``TP_SELF`` without targets (the executor, turned to the execution
+        rotation). Absolute integer x/z are centred (+0.5), as Vec3Argument's ``WorldCoordinate.get``
+        does (emulator.world.source)."""
         dest = cmd.destination
-        if (cmd.targets is None or not isinstance(dest, Vec3) or dest.is_local or cmd.rotation is not None
-                or cmd.facing is not None or cmd.facing_entity is not None):
+        if (not isinstance(dest, Vec3) or cmd.rotation is not None or cmd.facing is not None
+                or cmd.facing_entity is not None):
             return None
-        sel = self.selector(cmd.targets)
+        sel = self.selector(Selector("s", (), dest.loc) if cmd.targets is None else cmd.targets)
         if sel is None:
             return None
-        coords = (dest.x, dest.y, dest.z)
+        first, flags = self.coordinates(dest)
+        return sel, first, flags | (vm.TP_SELF if cmd.targets is None else 0)
+
+    def coordinates(self, vec: Vec3) -> tuple[int, int]:
+        """(first of x y z in floats, flags) of a position argument for OP_TP and OP_POSITIONED: the
+        relative axes' bits, or TP_LOCAL."""
+        coords = (vec.x, vec.y, vec.z)
         first = self.program.next_float
         for axis, coord in enumerate(coords):
-            self.program.intern_float(world_coordinate(coord, 0.0, axis != 1) if coord.kind != "rel" else coord.value)
-        return sel, first, sum(1 << axis for axis, coord in enumerate(coords) if coord.kind == "rel")
+            world = coord.kind == "abs"
+            self.program.intern_float(world_coordinate(coord, 0.0, axis != 1) if world else coord.value)
+        flags = vm.TP_LOCAL if vec.is_local else sum(1 << axis for axis, c in enumerate(coords) if c.kind == "rel")
+        return first, flags
 
     def tag_operands(self, cmd: TagCommand) -> tuple[int, int] | None:
         """(selector, tag number) of ``tag SEL add|remove T`` when the VM can run it, else None."""

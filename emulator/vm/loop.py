@@ -16,8 +16,9 @@ Machine state lives in arrays owned by Python so the loop can return (for a host
 instantiation, contexts to make, a full frame stack, a runtime error, a full buffer) and resume:
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
 scoreboard ``values``/``present``/``locked``/``alive``/``writable``, the per-instruction ``counts``, the
-sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, per context its executor's holder,
-slot, position and dimension (``ctx_holder``, ``ctx_entity``, ``ctx_pos``, ``ctx_dim``), and the entities:
+sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, the contexts (``cints``: per context its
+executor's holder and slot, dimension, anchor and store bindings, ``CI_*``; ``cfloats``: its position
+and rotation, ``CF_*``; the first ``R_NCTX`` rows are used), and the entities:
 the world's own arrays (:mod:`emulator.world.entity_table`: ``eints``, ``efloats``, ``etags``, the
 living slots ``eorder``), read and written in place, with the selector tables ``sels``/``tests``
 (:mod:`emulator.vm.entity_arrays`) and the scratch ``selbuf`` for what a selector finds. Registers that
@@ -44,10 +45,10 @@ execute stages 30 % (register allocation), so only the cold line commands share 
 generated loop (range tests per family, the statements written out from the template) measured
 0.999x the hand-written one it replaced.
 
-Forks: the VM runs a chain for one context (``R_CTX``, an index into the backend's context
-table). When a stage makes several (Python makes the contexts: a host stage, ``as SEL``, ``if
-function`` returning several times), Python sets ``R_LOOP`` and pushes the others on the fork
-stack ``fstack`` (rows ``[depth, resume pc, context]``, the next one on top). The chain's
+Forks: the VM runs a chain for one context (``R_CTX``, a row of ``cints``/``cfloats``). When a
+stage makes several (the VM for ``as|at|positioned as|rotated as SEL``, Python for a host stage or
+``if function`` returning several times), :func:`fork_contexts` sets ``R_LOOP`` and pushes the
+others on the fork stack ``fstack`` (rows ``[depth, resume pc, context]``, the next one on top). The chain's
 ``STAGESDONE`` (after the last stage) keeps the context in ``coll`` (rows ``[depth, context,
 final pc]``; the frame's ``F_CHEAD`` is the first not yet run) and jumps to the chain's ``ENDCMD``,
 which re-enters the chain after the forking stage with the next context of its depth; once every
@@ -65,12 +66,12 @@ import numpy as np
 from numba import njit
 from numba.extending import overload
 
-from emulator.world import mth, semantics
+from emulator.world import mth, rotation, semantics
 
 WIDTH = 8
 
 # ---------------------------------------------------------------- opcodes
-# Holder operands: >= 0 a holder id; HOLDER_SELF the executor (`@s`): ctx_holder[ctx] is its holder
+# Holder operands: >= 0 a holder id; HOLDER_SELF the executor (`@s`): cints[ctx, CI_HOLDER] is its holder
 # id, -1 for the server (the command fails, or a condition stage drops the context: "No entity was
 # found"); HOLDER_SELBUF the holders the SELHOLDERS just before found (see entity_arrays)
 HOLDER_SELF = -2
@@ -96,9 +97,10 @@ OP_LOG = 14  # [entry] a: host op index, b: selector. `tellraw SEL`: fails when 
 # host's tellraw decides what is written, when the VM returns (before Python serves anything else, so the log keeps
 # its order)
 OP_GETPOS = 15  # [entry] a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
-OP_TP = 16  # [entry] a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) axes. `tp SEL X
-# Y Z`: every target to the same position (the execution position plus the relative parts), each keeping its rotation
-# (wrapped, the pitch clamped) and losing its vertical motion; outside the spawnable bounds the command fails
+OP_TP = 16  # [entry] a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` axes' bits,
+# TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the execution position plus the relative
+# parts, or ^ from its anchor), each keeping its rotation (TP_SELF: the execution rotation; wrapped, the pitch
+# clamped) and losing its vertical motion; outside the spawnable bounds the command fails
 OP_SELHOLDERS = 17  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
 # op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
 # separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
@@ -140,9 +142,12 @@ OP_MACRO = 45  # [free] a: macro call index. Python instantiates, sets regs[R_CA
 OP_HOSTSTAGE = 46  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 47  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
 OP_ASSTAGE = 48  # [stage] a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned
-# as, rotated as). One context per entity found: `as` contexts made earlier in the root come from as_cache, the others
-# from Python (ST_FORK)
-OP_POSSTAGE = 49  # [stage] b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
+# as, rotated as). One context per entity found, made by the VM (or one it made earlier in the root that still holds:
+# as_cache); ST_GROWCTX when the context table or the fork stack is full
+OP_POSITIONED = 49  # [stage] a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, TP_LOCAL).
+# `positioned X Y Z`: the context at that position, anchored at the feet (made by the VM, or one it made before from
+# the same context and pc)
+OP_POSSTAGE = 50  # [stage] b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
 FIRST_LINE, LAST_LINE = 8, 16
@@ -150,7 +155,7 @@ FIRST_CONDITION, LAST_CONDITION = 18, 21
 FIRST_CALL, LAST_CALL = 24, 25
 FIRST_RETURN, LAST_RETURN = 26, 31
 FIRST_RETURNED, LAST_RETURNED = 32, 33
-FIRST_OPERATION, LAST_OPERATION = 50, 58
+FIRST_OPERATION, LAST_OPERATION = 51, 59
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -163,13 +168,22 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
 R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG = range(15, 23)
-R_NFORK, R_NCOLL, R_NSEL2 = range(23, 26)  # rows used in fstack and coll; SELHOLDERS' source count
-N_REGS = 26
+R_NFORK, R_NCOLL, R_NSEL2, R_NCTX = range(23, 27)  # rows used in fstack and coll; SELHOLDERS' source count; contexts
+N_REGS = 27
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
 F_WIDTH = 11
 
-ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_GROWCOLL, ST_REPEAT, ST_FORK = range(10)
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_GROWCOLL, ST_REPEAT, ST_GROWCTX = range(10)
+
+# contexts: cints[ctx] = executor's holder id (-1: the server), executor's slot (-1), dimension
+# (Program.dimensions), anchor (ANCHOR_*), store bindings (the backend's binding sets);
+# cfloats[ctx] = x, y, z, yaw, pitch (float32 values)
+CI_HOLDER, CI_ENTITY, CI_DIM, CI_ANCHOR, CI_BIND = range(5)
+CI_WIDTH = 5
+CF_X, CF_Y, CF_Z, CF_YAW, CF_PITCH = range(5)
+CF_WIDTH = 5
+ANCHOR_FEET, ANCHOR_EYES = range(2)
 
 # R_LOOP: no fork in this command; forked, first pass; re-entered for a later context (its stages
 # were charged on the first pass); a kept context running the final command (a `return run`
@@ -195,7 +209,8 @@ EF_YAW = 6
 EF_PITCH = 7
 EF_HALF = 8
 EF_HEIGHT = 9
-EF_WIDTH = 10
+EF_EYE = 10
+EF_WIDTH = 11
 PLAYER_TYPE = 0
 MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
 # selector rows (emulator.vm.entity_arrays): kind (every entity, or @s), limit, its tests (first,
@@ -212,6 +227,9 @@ KIND_E, KIND_S = range(2)
 SORT_ARBITRARY, SORT_NEAREST, SORT_FURTHEST = range(3)
 TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS, TEST_TYPES, TEST_MEMBER = range(6)
 POS_LIMIT_XZ, POS_LIMIT_Y = 3.0000512e7, 2.0e7  # Entity.load clamps positions to these
+# OP_TP's flags besides the relative axes (1, 2, 4): local coordinates; `tp POS` (the executor,
+# turned to the execution rotation)
+TP_LOCAL, TP_SELF = 8, 16
 
 
 @njit(cache=True, inline="always")
@@ -409,12 +427,51 @@ def fork_contexts(regs, fstack, coll, contexts, n, depth, resume):
     return True
 
 
-AS_CACHE_SIZE = 4096  # (context, entity slot) -> the `as` context: a direct-mapped cache, per root
+# (context, entity slot, stage kind) -> the context that stage made there: a direct-mapped cache, per
+# root, so that a loop re-running a stage does not grow the context table
+AS_CACHE_SIZE = 4096
 
 
 @njit(cache=True, inline="always")
-def as_cache_row(ctx, slot):
-    return (ctx * 7919 + slot) & (AS_CACHE_SIZE - 1)
+def as_cache_row(ctx, slot, kind):
+    return (ctx * 7919 + slot * 4 + kind) & (AS_CACHE_SIZE - 1)
+
+
+@njit(cache=True)
+def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_cache):
+    """The context stage ``kind`` (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as,
+    rotated as) makes from context ``ctx`` for entity ``slot`` (entity_stage_context): one made
+    before in this root if it still holds (the entity may have moved since), else a new row
+    ``nctx``. Returns (the context, the rows used)."""
+    row = as_cache_row(ctx, slot, kind)
+    made = as_cache[row, 3]
+    if as_cache[row, 0] == ctx and as_cache[row, 1] == slot and as_cache[row, 2] == kind:
+        same = True
+        if kind == 1 or kind == 2:
+            for axis in range(3):
+                if cfloats[made, CF_X + axis] != efloats[slot, EF_X + axis]:
+                    same = False
+        if kind == 1 or kind == 3:
+            if cfloats[made, CF_YAW] != efloats[slot, EF_YAW] or cfloats[made, CF_PITCH] != efloats[slot, EF_PITCH]:
+                same = False
+        if same:
+            return made, nctx
+    cints[nctx] = cints[ctx]
+    cfloats[nctx] = cfloats[ctx]
+    if kind == 0:  # as: the executor
+        cints[nctx, CI_ENTITY] = slot
+        cints[nctx, CI_HOLDER] = eints[slot, EI_HOLDER]
+    if kind == 1 or kind == 2:  # at, positioned as: the position
+        for axis in range(3):
+            cfloats[nctx, CF_X + axis] = efloats[slot, EF_X + axis]
+    if kind == 1 or kind == 3:  # at, rotated as: the rotation
+        cfloats[nctx, CF_YAW] = efloats[slot, EF_YAW]
+        cfloats[nctx, CF_PITCH] = efloats[slot, EF_PITCH]
+    as_cache[row, 0] = ctx
+    as_cache[row, 1] = slot
+    as_cache[row, 2] = kind
+    as_cache[row, 3] = nctx
+    return nctx, nctx + 1
 
 
 _double_to_int = njit(cache=True)(semantics.double_to_int)  # Java's (int) of a double
@@ -442,9 +499,59 @@ def _fmod(a, b):
     return lambda a, b: np.fmod(a, b)
 
 
-overload(mth.java_float_rem)(lambda a, b: mth.java_float_rem)  # called by wrap_degrees_f
+def _jittable(fn):
+    """Let jitted code call the plain function ``fn`` (numba compiles its source where it is called):
+    the world's float math has one source, run by both backends."""
+    names = ", ".join(fn.__code__.co_varnames[:fn.__code__.co_argcount])
+    typing = eval(f"lambda {names}: fn", {"fn": fn})  # the typing function needs fn's own signature
+    typing.__annotations__ = dict(fn.__annotations__)
+    overload(fn)(typing)
+
+
+for _fn in (semantics.double_to_int, mth.java_float_rem, mth._table_index, mth.sin_of, mth.cos_of):
+    _jittable(_fn)
 _wrap_degrees_f = njit(cache=True)(mth.wrap_degrees_f)
 _clamp_f = njit(cache=True)(mth.clamp_f)
+_local_offset = njit(cache=True)(rotation.local_offset)
+
+
+@njit(cache=True)
+def _destination(flags, k, ctx, floats, cints, cfloats, efloats):
+    """``Source.position_of`` in context ``ctx`` of the coordinates ``floats[k:k + 3]`` (flags: the
+    relative axes' bits, or TP_LOCAL): world coordinates add the relative parts to the position
+    (``WorldCoordinate.get``), local ones go from the anchor (``LocalCoordinates.getPosition``)."""
+    if flags & TP_LOCAL:
+        e = cints[ctx, CI_ENTITY]
+        up = efloats[e, EF_EYE] if cints[ctx, CI_ANCHOR] == ANCHOR_EYES and e >= 0 else 0.0
+        return _local_offset(cfloats[ctx, CF_X], cfloats[ctx, CF_Y] + up, cfloats[ctx, CF_Z],
+                             np.float32(cfloats[ctx, CF_YAW]), np.float32(cfloats[ctx, CF_PITCH]),
+                             floats[k], floats[k + 1], floats[k + 2])
+    x = floats[k] + cfloats[ctx, CF_X] if flags & 1 else floats[k]
+    y = floats[k + 1] + cfloats[ctx, CF_Y] if flags & 2 else floats[k + 1]
+    z = floats[k + 2] + cfloats[ctx, CF_Z] if flags & 4 else floats[k + 2]
+    return x, y, z
+
+
+@njit(cache=True)
+def _positioned_context(ctx, pc, x, y, z, cints, cfloats, nctx, as_cache):
+    """``positioned X Y Z`` at ``pc`` from context ``ctx``: the context at (x, y, z), anchored at the
+    feet; the one made there before in this root if it is the same. Returns (it, the rows used)."""
+    row = as_cache_row(ctx, -1 - pc, 0)
+    made = as_cache[row, 3]
+    if (as_cache[row, 0] == ctx and as_cache[row, 1] == -1 - pc and cfloats[made, CF_X] == x
+            and cfloats[made, CF_Y] == y and cfloats[made, CF_Z] == z):
+        return made, nctx
+    cints[nctx] = cints[ctx]
+    cfloats[nctx] = cfloats[ctx]
+    cfloats[nctx, CF_X] = x
+    cfloats[nctx, CF_Y] = y
+    cfloats[nctx, CF_Z] = z
+    cints[nctx, CI_ANCHOR] = ANCHOR_FEET
+    as_cache[row, 0] = ctx
+    as_cache[row, 1] = -1 - pc
+    as_cache[row, 2] = 0
+    as_cache[row, 3] = nctx
+    return nctx, nctx + 1
 
 
 @njit(cache=True, inline="always")
@@ -456,8 +563,8 @@ def _clamp_pos(v, limit):
 
 @njit(cache=True, error_model="numpy")
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
-        active, ovf, ctx_holder, ctx_entity, ctx_pos, ctx_dim, sels, sfloats, tests, eints, efloats, etags, eorder,
-        selbuf, logbuf, fstack, coll, as_cache):
+        active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf, logbuf, fstack, coll,
+        as_cache):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -502,10 +609,10 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             o2 = code[pc, 4]
             h = code[pc, 1]
             if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
+                h = cints[ctx, CI_HOLDER]
             h2 = code[pc, 3]
             if h2 == HOLDER_SELF:
-                h2 = ctx_holder[ctx]
+                h2 = cints[ctx, CI_HOLDER]
             if h >= 0 and h2 >= 0:  # one target, one source (names or @s): the common case, kept lean
                 if sanitize and novf >= ovf.shape[0]:
                     status = ST_FLUSH
@@ -641,7 +748,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 break
             h = code[pc, 1]
             if h == HOLDER_SELF:
-                h = ctx_holder[ctx]
+                h = cints[ctx, CI_HOLDER]
             if h >= 0:  # a name, or @s run by an entity
                 n = 1
             else:
@@ -717,12 +824,12 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 if counting:
                     counts[pc] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
-                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
                             eorder, values, present, alive_obj, selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
             elif op == OP_IFDIM:  # ExecuteCommand: the dimension is the source's level
-                passed = (ctx_dim[ctx] == code[pc, 1]) != (code[pc, 6] != 0)
+                passed = (cints[ctx, CI_DIM] == code[pc, 1]) != (code[pc, 6] != 0)
                 fval = 1 if passed else 0
             else:
                 h = code[pc, 1] if op == OP_IFMATCH else code[pc, 2]
@@ -743,8 +850,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     status = ST_ERROR
                     break
                 if h == HOLDER_SELF:
-                    h = ctx_holder[ctx]
-                if op == OP_IFSCORE and code[pc, 4] == HOLDER_SELF and ctx_holder[ctx] < 0:
+                    h = cints[ctx, CI_HOLDER]
+                if op == OP_IFSCORE and code[pc, 4] == HOLDER_SELF and cints[ctx, CI_HOLDER] < 0:
                     h = -1
                 if h < 0:  # @s run by the server: a final test fails, a stage (a fork) drops the context
                     if final:
@@ -763,7 +870,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     else:
                         h2 = code[pc, 4]
                         if h2 == HOLDER_SELF:
-                            h2 = ctx_holder[ctx]
+                            h2 = cints[ctx, CI_HOLDER]
                         o2 = code[pc, 5]
                         if present[h2, o2]:
                             b = values[h2, o2]
@@ -917,7 +1024,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             if op == OP_GET or op == OP_RESET or op == OP_RESETALL or op == OP_ENABLE:
                 h = code[pc, 1]
                 if h == HOLDER_SELF:
-                    h = ctx_holder[ctx]
+                    h = cints[ctx, CI_HOLDER]
                 if h >= 0:
                     selbuf[0] = h
                     n = 1
@@ -967,7 +1074,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 ok = 1
                 val = n
             elif op == OP_TAG:
-                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
                             eorder, values, present, alive_obj, selbuf, 0)
                 w = code[pc, 2] >> 6
                 m = np.int64(1) << (code[pc, 2] & 63)
@@ -993,12 +1100,10 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_HOST
                 break
             elif op == OP_TP:
-                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
                             eorder, values, present, alive_obj, selbuf, 0)
-                k = code[pc, 2]
-                x = floats[k] + ctx_pos[ctx, 0] if code[pc, 3] & 1 else floats[k]  # WorldCoordinate.get: value + base
-                y = floats[k + 1] + ctx_pos[ctx, 1] if code[pc, 3] & 2 else floats[k + 1]
-                z = floats[k + 2] + ctx_pos[ctx, 2] if code[pc, 3] & 4 else floats[k + 2]
+                flags = code[pc, 3]
+                x, y, z = _destination(flags, code[pc, 2], ctx, floats, cints, cfloats, efloats)
                 has = 1
                 ok = 0
                 val = 0
@@ -1010,8 +1115,12 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     efloats[e, EF_X] = x
                     efloats[e, EF_Y] = y
                     efloats[e, EF_Z] = z
-                    yaw = _wrap_degrees_f(np.float32(efloats[e, EF_YAW]))  # rotation.teleport_rotation
-                    pitch = _clamp_f(_wrap_degrees_f(np.float32(efloats[e, EF_PITCH])), -90.0, 90.0)
+                    if flags & TP_SELF:  # `tp POS`: turned to the execution rotation
+                        yaw, pitch = np.float32(cfloats[ctx, CF_YAW]), np.float32(cfloats[ctx, CF_PITCH])
+                    else:
+                        yaw, pitch = np.float32(efloats[e, EF_YAW]), np.float32(efloats[e, EF_PITCH])
+                    yaw = _wrap_degrees_f(yaw)  # rotation.teleport_rotation
+                    pitch = _clamp_f(_wrap_degrees_f(pitch), -90.0, 90.0)
                     if np.isfinite(yaw):
                         efloats[e, EF_YAW] = yaw
                     if np.isfinite(pitch):
@@ -1020,7 +1129,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 ok = 1
                 val = n
             elif op == OP_GETPOS:
-                e = ctx_entity[ctx]
+                e = cints[ctx, CI_ENTITY]
                 has = 1
                 ok = 0
                 val = 0
@@ -1032,7 +1141,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     val = _mth_floor(x)
                 pc += 1
             else:  # OP_LOG
-                n = _select(code[pc, 2], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                n = _select(code[pc, 2], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
                             eorder, values, present, alive_obj, selbuf, 0)
                 has = 1
                 ok = 1 if n else 0
@@ -1044,13 +1153,20 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_SELHOLDERS:
             if alive:
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
-                n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
                             eorder, values, present, alive_obj, selbuf, off)
                 for i in range(off, off + n):
                     selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
             pc += 1
         elif op == OP_ASSTAGE:
+            n = 0
+            if alive:
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
+                            eorder, values, present, alive_obj, selbuf, 0)
+                if 0 < n < forklimit and (regs[R_NCTX] + n > cints.shape[0] or regs[R_NFORK] + n > fstack.shape[0]):
+                    status = ST_GROWCTX  # Python makes room, then the stage runs again
+                    break
             if loop != LOOP_REENTERED:
                 quota -= 1
                 if counting:
@@ -1058,8 +1174,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             if alive == 0:
                 pc += 1
                 continue
-            n = _select(code[pc, 1], ctx_entity[ctx], ctx_pos[ctx], sels, sfloats, tests, eints, efloats, etags,
-                        eorder, values, present, alive_obj, selbuf, 0)
             pc += 1
             if n == 0:
                 alive = 0
@@ -1071,18 +1185,11 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_ERROR
                 break
             else:
-                cached = code[pc - 1, 3] == 0 and regs[R_NFORK] + n <= fstack.shape[0]
-                for i in range(n if cached else 0):  # `as`: contexts made before for these entities?
-                    row = as_cache_row(ctx, selbuf[i])
-                    if as_cache[row, 0] != ctx or as_cache[row, 1] != selbuf[i]:
-                        cached = False
-                        break
-                if not cached:  # Python makes the contexts of selbuf[:n] (and forks if several)
-                    regs[R_NSEL] = n
-                    status = ST_FORK
-                    break
-                for i in range(n):
-                    selbuf[i] = as_cache[as_cache_row(ctx, selbuf[i]), 2]
+                nctx = regs[R_NCTX]
+                for i in range(n):  # one context per entity, made here (entity_stage_context)
+                    selbuf[i], nctx = _entity_context(code[pc - 1, 3], ctx, selbuf[i], cints, cfloats, nctx, eints,
+                                                      efloats, as_cache)
+                regs[R_NCTX] = nctx
                 if n == 1:
                     ctx = selbuf[0]
                     continue
@@ -1090,12 +1197,33 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 fork_contexts(regs, fstack, coll, selbuf, n, depth, pc)  # room checked above
                 loop = regs[R_LOOP]
                 ctx = regs[R_CTX]
+        elif op == OP_POSITIONED:
+            if alive and regs[R_NCTX] >= cints.shape[0]:
+                status = ST_GROWCTX  # Python makes room, then the stage runs again
+                break
+            if loop != LOOP_REENTERED:
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            if alive == 0:
+                pc += 1
+                continue
+            x, y, z = _destination(code[pc, 2], code[pc, 1], ctx, floats, cints, cfloats, efloats)
+            ctx, regs[R_NCTX] = _positioned_context(ctx, pc, x, y, z, cints, cfloats, regs[R_NCTX], as_cache)
+            if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
+                alive = 0
+                pc = abort
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                status = ST_ERROR
+                break
+            pc += 1
         elif op == OP_POSSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1
                 if counting:
                     counts[pc] += 1
-            if alive and ctx_entity[ctx] < 0:  # "No entity was found": the command, or this context, fails
+            if alive and cints[ctx, CI_ENTITY] < 0:  # "No entity was found": the command, or this context, fails
                 alive = 0
                 pc = pc + 1 if code[pc, 2] else abort
                 continue
@@ -1108,7 +1236,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 break
             pc += 1
         elif op == OP_STOREPOS:
-            e = ctx_entity[ctx]
+            e = cints[ctx, CI_ENTITY]
             if alive and has and e >= 0 and eints[e, EI_TYPE] != PLAYER_TYPE:  # a player's data cannot be modified
                 stored = (val if ok else 0) if code[pc, 2] == 0 else ok
                 axis = code[pc, 1]
@@ -1119,7 +1247,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
             if alive and has:
                 h = code[pc, 2]
                 if h == HOLDER_SELF:  # the chain's stage checked there is an executor
-                    h = ctx_holder[ctx]
+                    h = cints[ctx, CI_HOLDER]
                 o = code[pc, 3]
                 v = (val if ok else 0) if code[pc, 1] == 0 else ok
                 values[h, o] = v
@@ -1137,7 +1265,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc = pc + 1 if code[pc, 2] else abort  # in a forked chain only this context fails
                 status = ST_ERROR
                 break
-            if alive and code[pc, 3] and ctx_holder[ctx] < 0:
+            if alive and code[pc, 3] and cints[ctx, CI_HOLDER] < 0:
                 alive = 0
                 pc = pc + 1 if code[pc, 2] else abort
                 continue

@@ -85,10 +85,11 @@ _ROWS = [
                              "when the VM returns (before Python serves anything else, so the log keeps its order)"),
         ("GETPOS", "i", ENTRY, "a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: "
                                "Mth.floor"),
-        ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z follow), c: bits of the relative (`~`) "
-                             "axes. `tp SEL X Y Z`: every target to the same position (the execution position plus "
-                             "the relative parts), each keeping its rotation (wrapped, the pitch clamped) and losing "
-                             "its vertical motion; outside the spawnable bounds the command fails"),
+        ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` "
+                             "axes' bits, TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the "
+                             "execution position plus the relative parts, or ^ from its anchor), each keeping its "
+                             "rotation (TP_SELF: the execution rotation; wrapped, the pitch clamped) and losing its "
+                             "vertical motion; outside the spawnable bounds the command fails"),
     ]),
     *_single("SELHOLDERS", "sb", FREE, "a: selector, b: 0 targets / 1 sources. The holders of the selector's "
                                        "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "
@@ -146,9 +147,12 @@ _ROWS = [
                                        "R_CTX"),
     *_single("HOSTSTORE", "x", FREE, "a: host op index. `store ... storage|entity|block|bossbar`, after the result"),
     *_single("ASSTAGE", "sbb", STAGE, "a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: "
-                                      "as, at, positioned as, rotated as). One context per entity found: `as` "
-                                      "contexts made earlier in the root come from as_cache, the others from Python "
-                                      "(ST_FORK)"),
+                                      "as, at, positioned as, rotated as). One context per entity found, made by "
+                                      "the VM (or one it made earlier in the root that still holds: as_cache); "
+                                      "ST_GROWCTX when the context table or the fork stack is full"),
+    *_single("POSITIONED", "di", STAGE, "a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, "
+                                        "TP_LOCAL). `positioned X Y Z`: the context at that position, anchored at the "
+                                        "feet (made by the VM, or one it made before from the same context and pc)"),
     *_single("POSSTAGE", "_b", STAGE, "b forked. The `store ... entity @s Pos[i] double S` stage: fails without an "
                                       "executor"),
     *_family("operation", [(f"OPER{symbol}", "hoho", ENTRY, f"a h1, b o1, c h2, d o2. `{symbol}`")

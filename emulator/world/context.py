@@ -11,8 +11,8 @@ SERVER = -1  # executor index of the server (no entity)
 class Context:
     """One command source: who runs it and where.
 
-    ``executor`` is ``SERVER`` (-1) or the executing entity's ``Entity.order`` (looked up in
-    ``WorldState.executors``). ``pos`` is (x, y, z) doubles, ``rot`` (yaw, pitch) floats,
+    ``executor`` is ``SERVER`` (-1) or the executing entity's ``Entity.order`` (its slot in the
+    entity table, ``state.entities.table.handles``). ``pos`` is (x, y, z) doubles, ``rot`` (yaw, pitch) floats,
     ``anchor`` ``"feet"``/``"eyes"``.
     The server's default context is at world spawn (0, 0, 0 here) in the overworld.
     """

@@ -44,7 +44,7 @@ import numpy as np
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, rotation
 from emulator.world.entity_table import (
-    EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EntityTable, TagSet,
+    EF_EYE, EF_HALF, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import player_defaults, selected_item
@@ -239,7 +239,7 @@ class Entity:
         table.floats[slot, EF_YAW] = yaw
         table.floats[slot, EF_PITCH] = pitch
         table.ints[slot, EI_ALIVE] = int(alive)
-        table.floats[slot, EF_HALF:EF_HEIGHT + 1] = self.box_extent()
+        table.floats[slot, EF_HALF:EF_EYE + 1] = self.sizes()
         self._table = table
         self._own = TagSet(table, slot)
         self._own.replace(tags)
@@ -323,12 +323,16 @@ class Entity:
 
     def box_extent(self) -> tuple[float, float]:
         """The hitbox's half width and height (``width / 2.0F`` and the height are floats, widened
-        to double); the table keeps a copy for the VM (refreshed by ``load_nbt``)."""
+        to double)."""
         return _box_extent(self.type, float(self._scale()) if self.type == "minecraft:armor_stand" else 1.0)
 
-    def refresh_box(self) -> None:
+    def sizes(self) -> tuple[float, float, float]:
+        """The hitbox's half width and height and the eye height: the table's copy for the VM."""
+        return (*self.box_extent(), float(self.eye_height))
+
+    def refresh_sizes(self) -> None:
         if self._table is not None:
-            self._table.floats[self.order, EF_HALF:EF_HEIGHT + 1] = self.box_extent()
+            self._table.floats[self.order, EF_HALF:EF_EYE + 1] = self.sizes()
 
     @property
     def bounding_box(self) -> tuple[float, float, float, float, float, float]:
@@ -466,7 +470,7 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     dropped = set(_MODELLED) | set(FLAG_FIELDS) | (set(display.NOT_SAVED) if entity.type in display.DISPLAY_TYPES else set())
     data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in data and k not in dropped)
     entity.data = data
-    entity.refresh_box()  # an armor stand's Marker or Small changes its size
+    entity.refresh_sizes()  # an armor stand's Marker or Small changes its size
 
 
 def modify_entity(entity: Entity, change: Callable[[Compound], object]):

@@ -10,7 +10,8 @@ context made for it still reaches it, as the game's source keeps its entity obje
   ``EI_ALIVE`` (1 until killed);
 - ``floats`` (float64 ``[slots, EF_WIDTH]``): position ``EF_X..EF_Z``, motion ``EF_MX..EF_MZ``,
   rotation ``EF_YAW``/``EF_PITCH`` (float32 values, exact in a double), the hitbox's half width and
-  height ``EF_HALF``/``EF_HEIGHT`` (``Entity.box_extent``, kept by ``attach`` and ``load_nbt``);
+  height and the eye height ``EF_HALF``/``EF_HEIGHT``/``EF_EYE`` (``Entity.sizes``, kept by ``attach``
+  and ``load_nbt``);
 - ``tags`` (int64 ``[slots, words]``): a bitset per entity over the interned tag names (tag ``t`` is
   bit ``t & 63`` of word ``t >> 6``); interning a tag past the last word adds one, so there is no
   limit on the tags of an entity or of a pack;
@@ -28,8 +29,8 @@ import numpy as np
 
 EI_TYPE, EI_HOLDER, EI_ALIVE = range(3)
 EI_WIDTH = 3
-EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH, EF_HALF, EF_HEIGHT = range(10)
-EF_WIDTH = 10
+EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH, EF_HALF, EF_HEIGHT, EF_EYE = range(11)
+EF_WIDTH = 11
 PLAYER_TYPE = 0
 LAYOUT = {name: value for name, value in globals().items() if name.startswith(("EI_", "EF_")) or name == "PLAYER_TYPE"}
 

@@ -7,7 +7,8 @@ game exactly. Doubles are Python floats (IEEE double, like Java's strict arithme
 Public functions (plain scalars in, plain scalars out):
 - ``f32(x)``: Java's ``(float)`` cast of a double (round to nearest float32).
 - ``sin(x)`` / ``cos(x)``: the 65536-entry float sine table, indexed by
-  ``(int)(x * 10430.378F) & 0xFFFF`` (cos adds ``16384.0F`` before the cast).
+  ``(int)(x * 10430.378F) & 0xFFFF`` (cos adds ``16384.0F`` before the cast); ``sin_of``/``cos_of``
+  the same of a float32, in the form numba compiles (the VM's jitted rotations use them).
 - ``atan2(y, x)``: the game's table-based ``Mth.atan2`` (double in, double out); it differs from
   ``math.atan2`` by about 1e-6 and is what ``facing`` and ``lookAt`` use (its two tables are the
   JVM's own values, see ``atan_tables``).
@@ -62,22 +63,32 @@ def _table_index(x: np.float32) -> int:
 _SAFE = F32(1e30)
 
 
+def sin_of(x: np.float32) -> np.float32:
+    """``Mth.sin(float)`` of a float32 (the table lookup; numba compiles it as is)."""
+    return SIN_TABLE[_table_index(x * SIN_SCALE)]
+
+
+def cos_of(x: np.float32) -> np.float32:
+    """``Mth.cos(float)`` of a float32: the table shifted by a quarter turn, the shift added in float."""
+    return SIN_TABLE[_table_index(x * SIN_SCALE + QUARTER_TURN)]
+
+
 def sin(x) -> np.float32:
     """``Mth.sin(float)``."""
     x = f32(x)
     if -_SAFE < x < _SAFE:
-        return SIN_TABLE[_table_index(x * SIN_SCALE)]
+        return sin_of(x)
     with np.errstate(over="ignore", invalid="ignore"):
-        return SIN_TABLE[_table_index(x * SIN_SCALE)]
+        return sin_of(x)
 
 
 def cos(x) -> np.float32:
-    """``Mth.cos(float)``: the table shifted by a quarter turn, the shift added in float."""
+    """``Mth.cos(float)``."""
     x = f32(x)
     if -_SAFE < x < _SAFE:
-        return SIN_TABLE[_table_index(x * SIN_SCALE + QUARTER_TURN)]
+        return cos_of(x)
     with np.errstate(over="ignore", invalid="ignore"):
-        return SIN_TABLE[_table_index(x * SIN_SCALE + QUARTER_TURN)]
+        return cos_of(x)
 
 
 def java_float_rem(a, b) -> np.float32:

@@ -32,6 +32,7 @@ from emulator.world import mth
 F32 = np.float32
 _RIGHT_ANGLE = F32(90.0)
 _RAD_TO_DEG_D = float(mth.RAD_TO_DEG)  # 57.2957763671875
+_HUGE = F32(1e30)  # below this, the sine table's index cannot overflow float32
 
 
 def direction_from_rotation(yaw, pitch) -> tuple[float, float, float]:
@@ -52,29 +53,36 @@ def view_vector(yaw, pitch) -> tuple[float, float, float]:
     return float(sin_yaw * cos_pitch), float(-sin_pitch), float(cos_yaw * cos_pitch)
 
 
-def _cross(a, b):
-    return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
-
-
 def local_to_world(origin, yaw, pitch, left: float, up: float, forwards: float) -> tuple[float, float, float]:
-    """``^left ^up ^forwards`` relative to ``origin`` facing ``(yaw, pitch)``.
-
-    The basis vectors are float products widened to double; the rest is double arithmetic,
-    summed in the game's order (forwards, then up, then left).
-    """
+    """``^left ^up ^forwards`` relative to ``origin`` facing ``(yaw, pitch)``."""
+    x, y, z = origin
     yaw, pitch = F32(yaw), F32(pitch)
+    if -_HUGE < yaw < _HUGE and -_HUGE < pitch < _HUGE:
+        return local_offset(x, y, z, yaw, pitch, left, up, forwards)
+    with np.errstate(over="ignore", invalid="ignore"):  # the sine table's index overflows, as in Java
+        return local_offset(x, y, z, yaw, pitch, left, up, forwards)
+
+
+def local_offset(x: float, y: float, z: float, yaw: np.float32, pitch: np.float32, left: float, up: float,
+                 forwards: float) -> tuple[float, float, float]:
+    """``LocalCoordinates.getPosition`` from ``(x, y, z)`` (scalars only: the numba VM compiles this
+    function as is). The basis vectors are float products widened to double; the rest is double
+    arithmetic, summed in the game's order (forwards, then up, then left)."""
     yaw_rad = (yaw + _RIGHT_ANGLE) * mth.DEG_TO_RAD
-    cos_yaw, sin_yaw = mth.cos(yaw_rad), mth.sin(yaw_rad)
-    cos_pitch, sin_pitch = mth.cos(-pitch * mth.DEG_TO_RAD), mth.sin(-pitch * mth.DEG_TO_RAD)
+    cos_yaw, sin_yaw = mth.cos_of(yaw_rad), mth.sin_of(yaw_rad)
+    pitch_rad = -pitch * mth.DEG_TO_RAD
+    cos_pitch, sin_pitch = mth.cos_of(pitch_rad), mth.sin_of(pitch_rad)
     up_rad = (-pitch + _RIGHT_ANGLE) * mth.DEG_TO_RAD
-    cos_up, sin_up = mth.cos(up_rad), mth.sin(up_rad)
-    forward_axis = (float(cos_yaw * cos_pitch), float(sin_pitch), float(sin_yaw * cos_pitch))
-    up_axis = (float(cos_yaw * cos_up), float(sin_up), float(sin_yaw * cos_up))
-    left_axis = tuple(c * -1.0 for c in _cross(forward_axis, up_axis))
-    return tuple(
-        o + (f * forwards + u * up + l * left)
-        for o, f, u, l in zip(origin, forward_axis, up_axis, left_axis)
-    )
+    cos_up, sin_up = mth.cos_of(up_rad), mth.sin_of(up_rad)
+    # np.float64, not float(): numba's float() of a float32 stays a float32
+    fx, fy, fz = np.float64(cos_yaw * cos_pitch), np.float64(sin_pitch), np.float64(sin_yaw * cos_pitch)
+    ux, uy, uz = np.float64(cos_yaw * cos_up), np.float64(sin_up), np.float64(sin_yaw * cos_up)
+    # the left axis: the cross product forwards x up, times -1.0
+    lx = (fy * uz - fz * uy) * -1.0
+    ly = (fz * ux - fx * uz) * -1.0
+    lz = (fx * uy - fy * ux) * -1.0
+    return (float(x + (fx * forwards + ux * up + lx * left)), float(y + (fy * forwards + uy * up + ly * left)),
+            float(z + (fz * forwards + uz * up + lz * left)))
 
 
 def facing_rotation(origin, target, float_horizontal: bool = False) -> tuple[np.float32, np.float32]:

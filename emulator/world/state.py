@@ -398,7 +398,6 @@ class WorldState:
     # the world's entities (creation order, UUIDs, seeded RNG) and blocks: see emulator.commands.entities
     entities: EntityStore = field(default_factory=EntityStore)
     blocks: BlockMap = field(default_factory=BlockMap)
-    executors: dict = field(default_factory=dict)  # Context.executor id (Entity.order) -> Entity
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     bossbars: BossBars = field(default_factory=BossBars)
