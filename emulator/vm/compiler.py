@@ -2,13 +2,15 @@
 
 What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
 ``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
-``@e @a @s`` with type, any number of tags, scores, limit), ``tag SEL add|remove``, ``enable``; ``if|unless
-score`` on named holders and ``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as SEL``,
+``@e @a @s @p @n`` with type, any number of tags, scores, positions, volumes, distance, limit and
+sort by distance), ``tag SEL add|remove``, ``enable``; ``if|unless score`` on named holders and
+``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as SEL``
+and ``positioned X Y Z`` (the VM makes their contexts), ``tp [SEL] X Y Z`` (``~`` and ``^`` too),
 ``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
 ``if|unless function``, function calls and tags, every ``return`` form, and macro calls
 (instantiated by Python on first use). Everything else is a host op run by Python: a final command
-(``OP_HOST``: ``say``, ``schedule``, selectors ...), an execute stage (``OP_HOSTSTAGE``: ``as``,
-``positioned``, ``in``, ``if entity`` ...; it sets the context the rest of the chain runs in, through
+(``OP_HOST``: ``say``, ``schedule``, selectors ...), an execute stage (``OP_HOSTSTAGE``: ``in``,
+``rotated``, ``facing``, ``if data`` ...; it sets the context the rest of the chain runs in, through
 :mod:`emulator.vm.host` and :mod:`emulator.commands.stages`) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
 
 Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.opcodes`)::
@@ -22,7 +24,7 @@ Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod
     execute as @e[tag=x] at @s run tp @s ~ ~1 ~
                                        CMD ->end; ASSTAGE sel; ASSTAGE sel' at; STAGESDONE; TP sel' k 7; end: ENDCMD
                                        (sel' is @s; floats[k:k+3] = 0, 1, 0; 7: all three relative)
-    execute as @e[distance=..2] run say hi
+    execute as @e[name=x] run say hi
                                        CMD ->end; HOSTSTAGE; STAGESDONE; HOST; end: ENDCMD
 """
 from __future__ import annotations
