@@ -270,17 +270,30 @@ class Process:
         return f"{self.cpu:.2f} s (wall {self.wall:.2f} s)"
 
 
+# Forks and runs a command, then prints its wall and CPU seconds, peak RSS and status. Run in a
+# process of its own: Linux counts in a child's peak RSS the memory of the process it was forked
+# from (exec keeps the old image's high-water mark), so this one must stay small.
+_LAUNCH = """
+import json, os, sys, time
+start = time.perf_counter()
+pid = os.fork()
+if pid == 0:
+    os.execvp(sys.argv[1], sys.argv[1:])
+_, status, usage = os.wait4(pid, 0)
+print(json.dumps([time.perf_counter() - start, usage.ru_utime + usage.ru_stime, usage.ru_maxrss * 1024,
+                  os.waitstatus_to_exitcode(status)]))
+"""
+
+
 def measure_process(argv: list, env: dict | None = None) -> Process:
-    with tempfile.TemporaryFile() as err:
-        started = time.perf_counter()
-        process = subprocess.Popen([str(a) for a in argv], stdout=subprocess.DEVNULL, stderr=err,
-                                   env={**os.environ, **(env or {})})
-        _, status, usage = os.wait4(process.pid, 0)
-        seconds = time.perf_counter() - started
-        process.returncode = os.waitstatus_to_exitcode(status)
-        err.seek(0)
-        last = (err.read().decode(errors="replace").strip().splitlines() or [""])[-1]
-    return Process(seconds, usage.ru_utime + usage.ru_stime, usage.ru_maxrss * 1024, process.returncode, last)
+    done = subprocess.run([sys.executable, "-c", _LAUNCH, *map(str, argv)], capture_output=True, text=True,
+                          env={**os.environ, **(env or {})})
+    lines = done.stdout.strip().splitlines()
+    last = (done.stderr.strip().splitlines() or [""])[-1]
+    if done.returncode != 0 or not lines:
+        return Process(0.0, 0.0, 0, done.returncode or 1, last)
+    wall, cpu, peak, status = json.loads(lines[-1])
+    return Process(wall, cpu, peak, status, last)
 
 
 def imports_numba(argv: list) -> bool:
@@ -346,14 +359,14 @@ def _seconds_row(figure: str, measured: Process, at_most: float | None, extra: s
 
 # ------------------------------------------------------------------------------------------ memory
 _ENTITIES = """
-import json, resource, sys, time
+import json, sys, time
 from emulator import Emulator
 emu = Emulator()
 emu.load(sys.argv[1])
 start = time.perf_counter()
 emu.call("e:spawn")
-print(json.dumps({"seconds": time.perf_counter() - start, "entities": len(emu.entities("@e")),
-                  "peak": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024}))
+peak = next(int(line.split()[1]) * 1024 for line in open("/proc/self/status") if line.startswith("VmHWM"))
+print(json.dumps({"seconds": time.perf_counter() - start, "entities": len(emu.entities("@e")), "peak": peak}))
 """
 
 
