@@ -29,7 +29,7 @@ from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from mcfunction_parser.pack.versions import (
     FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, SINGULAR_FOLDERS_FORMAT, Format, Version, format_label,
-    pack_format_for_version, parse_mc_version, uses_singular_folders, version_for_pack_format,
+    newer_than_known, pack_format_for_version, parse_mc_version, uses_singular_folders, version_for_pack_format,
     version_label,
 )
 
@@ -195,7 +195,11 @@ def _collect(path: Path, root: PackPath, shown: str, meta: PackMeta | None, targ
              version: Version, diagnostics: list[Diagnostic]) -> _PackFiles:
     """The pack's data files with the matching overlays laid over the base."""
     label = f"{version_label(version)} (format {format_label(target)})"
-    if meta is not None and meta.supported is not None and target not in meta.supported:
+    if meta is not None and meta.supported is not None and newer_than_known(meta.supported.min):
+        diagnostics.append(Diagnostic(
+            WARNING, f"pack format {format_label(meta.supported.min)} is newer than every release dpemu knows: "
+            f"it runs as the newest, {label}", f"{shown.rstrip('/')}/pack.mcmeta"))
+    elif meta is not None and meta.supported is not None and target not in meta.supported:
         diagnostics.append(Diagnostic(
             WARNING, f"pack supports formats {_range_label(meta.supported)}, not {label}: the game "
             "lists it as incompatible", f"{shown.rstrip('/')}/pack.mcmeta"))

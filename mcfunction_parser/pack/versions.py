@@ -4,6 +4,14 @@ A data pack format is ``(major, minor)``; before 1.21.9 every format was a plain
 as ``(n, 0)``. Numbers from minecraft.wiki "Pack format" (data pack table) and "Pack.mcmeta";
 1.21.9 introduced ``min_format``/``max_format`` and the minor part (1.21.9 reads 88.0, 1.21.11
 reads 94.1).
+
+After 1.21.11 releases are numbered by year and drop (26.1 is the first drop of 2026); a version
+is still ``(major, minor, patch)``, so 26.1.2 is ``(26, 1, 2)`` and sorts after every 1.x release.
+26.1 – 26.1.2 read 101.1 and 26.2 reads 107.1: the ``pack_version`` of the game jars'
+version.json (26.1.2: data_major 101, data_minor 1, world version 4790; 26.2: data_major 107,
+data_minor 1, world version 4903) as quoted by several independent projects, and "101.1 (26.1)"
+in two data pack references; 26.1.1 lies between two releases reading 101.1 and formats never
+decrease. 26.3 is not listed: no source at hand gives its release format.
 """
 from __future__ import annotations
 
@@ -34,6 +42,8 @@ _FORMAT_RELEASES: tuple[tuple[Format, str], ...] = (
     ((81, 0), "1.21.7 1.21.8"),
     ((88, 0), "1.21.9 1.21.10"),
     ((94, 1), "1.21.11"),
+    ((101, 1), "26.1 26.1.1 26.1.2"),
+    ((107, 1), "26.2"),
 )
 
 # First format whose packs keep functions in data/<ns>/function and tags/function (1.21).
@@ -84,6 +94,13 @@ def pack_format_for_version(version: Version) -> Format:
     except KeyError:
         known = f"{version_label(min(RELEASE_FORMATS))} ... {version_label(LATEST_RELEASE)}"
         raise ValueError(f"unknown release {version_label(version)} (known: {known})") from None
+
+
+def newer_than_known(fmt: int | Format) -> bool:
+    """True when ``fmt`` is newer than the format of every known release (a pack made for a game
+    this table does not know yet)."""
+    wanted = (fmt, 0) if isinstance(fmt, int) else tuple(fmt)
+    return wanted > RELEASE_FORMATS[LATEST_RELEASE]
 
 
 def version_for_pack_format(fmt: int | Format) -> Version:

@@ -98,3 +98,17 @@ def test_missing_pack_mcmeta_points_at_a_nested_pack(tmp_path):
     write_pack(tmp_path / "outer" / "inner", {}, {"pack": {"pack_format": 61, "description": ""}})
     [error] = load_packs([tmp_path / "outer"]).errors
     assert error.message.endswith("(found one inside 'inner/': check that folder instead)")
+
+
+def test_format_newer_than_every_known_release_warns_once_and_runs_as_the_newest(make_pack):
+    root = make_pack(meta_json={"pack": {"description": "", "min_format": [120, 0], "max_format": 130}})
+    loaded = load_packs([root])
+    [warning] = loaded.warnings  # not also "the game lists it as incompatible"
+    assert warning.message == ("pack format 120 is newer than every release dpemu knows: it runs as the "
+                               "newest, 26.2 (format 107.1)")
+    assert loaded.version == (26, 2, 0) and not loaded.errors
+
+
+def test_26_1_pack_runs_as_26_1_2(make_pack):
+    loaded = load_packs([make_pack(meta_json={"pack": {"description": "", "min_format": [101, 1], "max_format": [101, 1]}})])
+    assert loaded.version == (26, 1, 2) and not loaded.warnings

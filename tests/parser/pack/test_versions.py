@@ -3,12 +3,13 @@ import pytest
 
 from mcfunction_parser.pack.versions import (
     LATEST_RELEASE, RELEASE_FORMATS, format_label, pack_format_for_version, parse_mc_version,
-    uses_singular_folders, version_for_pack_format, version_label,
+    newer_than_known, uses_singular_folders, version_for_pack_format, version_label,
 )
 
 
 @pytest.mark.parametrize("text, version", [("1.21.4", (1, 21, 4)), ("1.21", (1, 21, 0)),
-                                           (" 1.16.5 ", (1, 16, 5)), ("1.21.11", (1, 21, 11))])
+                                           (" 1.16.5 ", (1, 16, 5)), ("1.21.11", (1, 21, 11)),
+                                           ("26.1", (26, 1, 0)), ("26.1.2", (26, 1, 2))])
 def test_parse_mc_version(text, version):
     assert parse_mc_version(text) == version
 
@@ -26,7 +27,7 @@ def test_parse_mc_version_rejects_malformed(text):
     ("1.20.1", (15, 0)), ("1.20.2", (18, 0)), ("1.20.4", (26, 0)), ("1.20.6", (41, 0)),
     ("1.21", (48, 0)), ("1.21.1", (48, 0)), ("1.21.3", (57, 0)), ("1.21.4", (61, 0)),
     ("1.21.5", (71, 0)), ("1.21.6", (80, 0)), ("1.21.8", (81, 0)), ("1.21.10", (88, 0)),
-    ("1.21.11", (94, 1)),
+    ("1.21.11", (94, 1)), ("26.1", (101, 1)), ("26.1.1", (101, 1)), ("26.1.2", (101, 1)), ("26.2", (107, 1)),
 ])
 def test_release_formats(version, fmt):
     assert pack_format_for_version(parse_mc_version(version)) == fmt
@@ -40,7 +41,9 @@ def test_unknown_release_is_an_error():
 @pytest.mark.parametrize("fmt, version", [
     (48, "1.21.1"), (61, "1.21.4"), (6, "1.16.5"), ((94, 1), "1.21.11"),
     (50, "1.21.1"),  # a snapshot-only format: the newest release before it
-    (200, "1.21.11"),  # newer than every release: the latest
+    ((101, 0), "1.21.11"),  # 26.1's pre-release format: the newest release before it
+    ((101, 1), "26.1.2"), ((107, 1), "26.2"),
+    (200, "26.2"),  # newer than every release: the latest
     (1, "1.13"),
 ])
 def test_version_for_pack_format(fmt, version):
@@ -50,7 +53,17 @@ def test_version_for_pack_format(fmt, version):
 def test_formats_never_decrease_with_releases():
     ordered = [RELEASE_FORMATS[v] for v in sorted(RELEASE_FORMATS)]
     assert ordered == sorted(ordered)
-    assert LATEST_RELEASE == (1, 21, 11)
+    assert LATEST_RELEASE == (26, 2, 0)
+
+
+def test_year_numbered_releases_sort_after_1_x():
+    assert sorted(RELEASE_FORMATS)[-5:] == [(1, 21, 11), (26, 1, 0), (26, 1, 1), (26, 1, 2), (26, 2, 0)]
+    assert version_label((26, 1, 0)) == "26.1" and version_label((26, 1, 2)) == "26.1.2"
+
+
+@pytest.mark.parametrize("fmt, newer", [((107, 1), False), ((107, 2), True), (108, True), (94, False)])
+def test_newer_than_known(fmt, newer):
+    assert newer_than_known(fmt) is newer
 
 
 def test_folder_rename_at_1_21():
