@@ -19,6 +19,7 @@ Modules
 - :mod:`.stores`      ``execute store`` into scores, data and bossbars
 - :mod:`.entities`    entity arguments and contexts; ``summon kill tag tp ride``
 - :mod:`.blocks`      ``setblock``, ``fill``, ``if block(s)``
+- :mod:`.living`      ``xp``, ``effect``, ``attribute``, ``damage``
 - :mod:`.server`      ``say tellraw gamerule schedule time random trigger``
 - :mod:`.bossbar`     ``bossbar``
 """

@@ -9,10 +9,12 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import blocks, bossbar, conditions, data, entities, items, scoreboard, server
+from . import blocks, bossbar, conditions, data, entities, items, living, scoreboard, server
 
 HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
             **items.HANDLERS}
+# the commands the parser keeps as text, by name
+GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:
@@ -20,7 +22,7 @@ def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:
         return conditions.as_command(env, cmd, ctx)
     handler = HANDLERS.get(type(cmd))
     if handler is None and isinstance(cmd, ast.GenericCommand):
-        handler = blocks.HANDLERS.get(cmd.name)
+        handler = GENERIC_HANDLERS.get(cmd.name)
     if handler is None:
         return _not_modelled(env, cmd)
     return handler(env, cmd, ctx)

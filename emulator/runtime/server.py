@@ -9,7 +9,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
    run as the server at world spawn;
 4. the day time advances by one when ``doDaylightCycle`` is on;
-5. every player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`).
+5. every living entity's effects count down (:func:`emulator.world.living.tick_living`) and every
+   player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`).
 
 Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs, with its result.
 """
@@ -18,7 +19,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult
-from emulator.world import statistics
+from emulator.world import living, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
@@ -87,6 +88,7 @@ class Runtime:
         # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)
         if state.gamerules.get("doDaylightCycle") == "true":
             state.daytime += 1
+        living.tick_living(state)
         statistics.tick_players(state)
         self.commands_per_tick.append(cost)
         state.tick += 1

@@ -42,7 +42,7 @@ from typing import Callable
 import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
-from emulator.world import display, rotation
+from emulator.world import display, living, rotation
 from emulator.world.entity_table import (
     EF_EYE, EF_HALF, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EntityTable, TagSet,
 )
@@ -495,6 +495,7 @@ def _base_data(type_id: str) -> Compound:
         data.update(display.default_fields(type_id))
     if type_id == "minecraft:player":
         data.update(player_defaults())
+    data.update(living.base_fields(type_id))
     return data
 
 

@@ -92,6 +92,16 @@ MESSAGES = {
     "commands.drop.no_loot_table": "Entity {0} has no loot table",
     "arguments.item.overstacked": "{0} can only stack up to {1}",
     "arguments.item.tag.unknown": "Unknown item tag '{0}'",
+    "argument.player.entities": "Only players may be affected by this command, but the provided selector includes entities",
+    "commands.experience.set.points.invalid": "Cannot set experience points above the maximum points for the player's current level",
+    "commands.effect.give.failed": "Unable to apply this effect (target is either immune to effects, or has something stronger)",
+    "commands.effect.clear.everything.failed": "Target has no effects to remove",
+    "commands.effect.clear.specific.failed": "Target doesn't have the requested effect",
+    "commands.attribute.failed.entity": "{0} is not a valid entity for this command",
+    "commands.attribute.failed.no_attribute": "Entity {0} has no attribute {1}",
+    "commands.attribute.failed.no_modifier": "Attribute {0} for entity {1} has no modifier {2}",
+    "commands.attribute.failed.modifier_already_present": "Modifier {0} is already present on attribute {1} for entity {2}",
+    "commands.damage.invulnerable": "Target is invulnerable to the given damage type",
 }
 
 EMULATOR_MESSAGES = {

@@ -1,0 +1,212 @@
+"""The living-entity commands: ``xp``/``experience``, ``effect``, ``attribute``, ``damage``, on the
+state :mod:`emulator.world.living` keeps in the entities' NBT.
+
+The parser keeps these commands as text; each is read once per source line (cached) into its
+arguments, then run per context. Results are the game's: ``xp add|set`` the players changed,
+``xp query`` the value, ``effect`` the entities changed, ``attribute ... get [SCALE]`` the value
+times the scale cast to int, ``damage`` 1.
+
+Sources (decompiled 1.21): server/commands/ExperienceCommand.java, EffectCommands.java,
+AttributeCommand.java, DamageCommand.java.
+"""
+from __future__ import annotations
+
+from functools import lru_cache
+
+from emulator.world import living
+from emulator.world.errors import CommandFailure
+from emulator.world.semantics import double_to_int
+from mcfunction_parser import ast, selectors
+from mcfunction_parser.arguments import holder_from_word
+from mcfunction_parser.reader import ParseError, Reader
+
+from .entities import _executor_required, found, single
+
+
+@lru_cache(maxsize=4096)
+def _arguments(cmd: ast.GenericCommand) -> tuple[list, object]:
+    """The command's words after its name, with an entity argument read as a selector (brackets may
+    hold spaces): ``(words, target)``; the target's place in ``words`` holds None."""
+    reader = Reader(cmd.text, cmd.loc, (26, 2, 0))
+    reader.pos = len(cmd.name)
+    words, target = [], None
+    try:
+        reader.skip_ws()
+        while reader.more():
+            if reader.peek() == "@" and target is None:
+                target = selectors.selector(reader)
+                words.append(None)
+            else:
+                start = reader.pos
+                while reader.more() and not reader.peek().isspace():
+                    reader.pos += 1
+                words.append(cmd.text[start:reader.pos])
+            reader.skip_ws()
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error.message, report=True) from None
+    return words, target
+
+
+def _target(cmd, words: list, index: int, target):
+    if index >= len(words):
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected an entity", report=True)
+    return target if words[index] is None else holder_from_word(words[index], cmd.loc)
+
+
+def _number(cmd, words: list, index: int, kind=float, default=None):
+    if index >= len(words):
+        if default is not None:
+            return default
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected a number", report=True)
+    try:
+        return kind(words[index])
+    except ValueError:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, f"expected a number, got '{words[index]}'",
+                             report=True) from None
+
+
+def _players(env, target, ctx) -> list:
+    """EntityArgument.getPlayers: every entity found must be a player."""
+    entities = found(env.state, target, ctx)
+    if any(not e.is_player for e in entities):
+        raise CommandFailure("argument.player.entities")
+    return entities
+
+
+def _resource(word: str) -> str:
+    return word if ":" in word else f"minecraft:{word}"
+
+
+# ---------------------------------------------------------------------- xp
+def experience(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``xp add|set TARGETS AMOUNT [points|levels]``, ``xp query TARGET points|levels``."""
+    words, target = _arguments(cmd)
+    action = words[0] if words else ""
+    who = _target(cmd, words, 1, target)
+    if action == "query":
+        [player] = [single(env.state, who, ctx)]
+        if not player.is_player:
+            raise CommandFailure("argument.player.entities")
+        unit = words[2] if len(words) > 2 else ""
+        return living.query_levels(player) if unit == "levels" else living.query_points(player)
+    amount = _number(cmd, words, 2, int)
+    unit = words[3] if len(words) > 3 else "points"
+    players = _players(env, who, ctx)
+    if action == "add":
+        for player in players:
+            (living.add_levels if unit == "levels" else living.add_points)(player, amount)
+        return len(players)
+    changed = 0
+    for player in players:
+        if unit == "levels":
+            living.set_levels(player, amount)
+            changed += 1
+        else:
+            changed += living.set_points(player, amount)
+    if not changed:
+        raise CommandFailure("commands.experience.set.points.invalid")
+    return changed
+
+
+# ---------------------------------------------------------------------- effect
+def effect(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``effect give TARGETS EFFECT [SECONDS|infinite] [AMPLIFIER] [HIDE_PARTICLES]`` and ``effect clear
+    [TARGETS] [EFFECT]`` (no targets: the executor)."""
+    words, target = _arguments(cmd)
+    if words and words[0] == "clear":
+        return _clear(env, cmd, words, target, ctx)
+    effect_id = _resource(words[2]) if len(words) > 2 else ""
+    instant = effect_id in living.INSTANT
+    seconds = words[3] if len(words) > 3 else None
+    if seconds == "infinite":
+        duration = living.INFINITE
+    else:
+        duration = _number(cmd, words, 3, int, 0) * 20 if seconds is not None else (1 if instant else 600)
+    amplifier = _number(cmd, words, 4, int, 0)
+    visible = not (len(words) > 5 and words[5] == "true")
+    changed = sum(living.give_effect(env.state, e, effect_id, duration, amplifier, visible)
+                  for e in found(env.state, _target(cmd, words, 1, target), ctx) if living.is_living(e.type))
+    if not changed:
+        raise CommandFailure("commands.effect.give.failed")
+    return changed
+
+
+def _clear(env, cmd, words, target, ctx) -> int:
+    if len(words) > 1:
+        entities = found(env.state, _target(cmd, words, 1, target), ctx)
+    else:
+        entities = [_executor_required(env.state, ctx)]
+    effect_id = _resource(words[2]) if len(words) > 2 else None
+    changed = sum(living.clear_effects(e, effect_id) for e in entities if living.is_living(e.type))
+    if not changed:
+        raise CommandFailure("commands.effect.clear.specific.failed" if effect_id else
+                             "commands.effect.clear.everything.failed")
+    return changed
+
+
+# ---------------------------------------------------------------------- attribute
+def _attribute_name(name: str) -> str:
+    return name.replace("_", " ").title()
+
+
+def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``attribute TARGET ATTRIBUTE get [SCALE] | base get [SCALE] | base set VALUE | base reset |
+    modifier add ID VALUE OPERATION | modifier remove ID | modifier value get ID [SCALE]``."""
+    words, target = _arguments(cmd)
+    entity = single(env.state, _target(cmd, words, 0, target), ctx)
+    name = living.attribute_id(words[1]) if len(words) > 1 else ""
+    if not living.is_living(entity.type):
+        raise CommandFailure("commands.attribute.failed.entity", entity.display_name)
+    if name not in living.DEFAULTS or not living.has_attribute(entity.type, name):
+        raise CommandFailure("commands.attribute.failed.no_attribute", entity.display_name, _attribute_name(name))
+    action = tuple(words[2:4])
+    if action[:1] == ("get",):
+        return double_to_int(living.attribute_value(entity, name) * _number(cmd, words, 3, float, 1.0))
+    if action == ("base", "get"):
+        return double_to_int(living.base_value(entity, name) * _number(cmd, words, 4, float, 1.0))
+    if action == ("base", "set"):
+        living.set_base(entity, name, _number(cmd, words, 4))
+        return 1
+    if action == ("base", "reset"):
+        living.reset_base(entity, name)
+        return 1
+    modifier_id = _resource(words[4]) if len(words) > 4 else ""
+    if action == ("modifier", "add"):
+        if not living.add_modifier(entity, name, modifier_id, _number(cmd, words, 5), words[6] if len(words) > 6 else ""):
+            raise CommandFailure("commands.attribute.failed.modifier_already_present", modifier_id,
+                                 _attribute_name(name), entity.display_name)
+        return 1
+    if action == ("modifier", "remove"):
+        if not living.remove_modifier(entity, name, modifier_id):
+            raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name),
+                                 entity.display_name, modifier_id)
+        return 1
+    if action == ("modifier", "value") and len(words) > 4 and words[4] == "get":
+        modifier_id = _resource(words[5]) if len(words) > 5 else ""
+        value = living.modifier_value(entity, name, modifier_id)
+        if value is None:
+            raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name),
+                                 entity.display_name, modifier_id)
+        return double_to_int(value * _number(cmd, words, 6, float, 1.0))
+    raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected get, base or modifier", report=True)
+
+
+# ---------------------------------------------------------------------- damage
+BYPASSES_INVULNERABILITY = {"minecraft:out_of_world", "minecraft:generic_kill"}
+
+
+def damage(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``damage TARGET AMOUNT [TYPE] [at POS | by ENTITY [from CAUSE]]``: the target is hurt (no
+    knockback, no AI); the source position and attacker are not modelled (a pack cannot observe
+    them without AI)."""
+    words, target = _arguments(cmd)
+    entity = single(env.state, _target(cmd, words, 0, target), ctx)
+    amount = _number(cmd, words, 1)
+    damage_type = _resource(words[2]) if len(words) > 2 and words[2] not in ("at", "by") else "minecraft:generic"
+    if not living.is_living(entity.type) or not living.hurt(env.state, entity, amount,
+                                                            damage_type in BYPASSES_INVULNERABILITY):
+        raise CommandFailure("commands.damage.invulnerable")
+    return 1
+
+
+HANDLERS = {"xp": experience, "experience": experience, "effect": effect, "attribute": attribute, "damage": damage}

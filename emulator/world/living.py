@@ -1,0 +1,442 @@
+"""Living entities' state: health, attributes, status effects, experience and hunger, kept in the
+entity's NBT fields as the game saves them (``Health``, ``attributes``, ``active_effects``,
+``XpLevel``/``XpP``/``XpTotal``/``Score``, ``foodLevel`` ...), so ``data get``, ``nbt=`` and
+``data merge`` on a mob see and change the same values the commands use.
+
+- ``is_living(type_id)``: a LivingEntity (mobs, players, armor stands); ``base_fields(type_id)``:
+  the fields such an entity saves from its spawn (the player's hunger and experience too).
+- Attributes (AttributeInstance, RangedAttribute): ``attribute_value``, ``base_value``,
+  ``set_base``, ``reset_base``, ``add_modifier``, ``remove_modifier``, ``modifier_value``; vanilla
+  defaults for the common attributes (``DEFAULTS``, per type ``TYPE_BASES``). An instance appears in
+  the ``attributes`` list when a command first reads or changes it (the game's AttributeMap creates
+  instances on demand).
+- Health and damage (LivingEntity.hurtServer/actuallyHurt, no AI): ``health``, ``hurt``; a mob at 0
+  health dies (it is removed at once: its 20-tick death animation is not modelled).
+- Effects (LivingEntity.addEffect, MobEffectInstance.update/tick): ``give_effect``, ``clear_effects``;
+  ``tick_living(state)`` counts every effect down once per tick and drops the expired ones.
+- Experience (Player.giveExperiencePoints/giveExperienceLevels/setExperiencePoints):
+  ``add_points``, ``add_levels``, ``set_points``, ``set_levels``, ``query_points``, ``xp_needed``.
+
+Sources (decompiled 1.21): world/entity/LivingEntity.java, world/entity/player/Player.java,
+world/entity/ai/attributes/{Attributes,AttributeInstance,RangedAttribute,DefaultAttributes}.java,
+world/effect/MobEffectInstance.java, world/food/FoodData.java, server/commands/AttributeCommand.java,
+ExperienceCommand.java, EffectCommands.java, DamageCommand.java.
+"""
+from __future__ import annotations
+
+import math
+import weakref
+
+import numpy as np
+
+from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
+from emulator.world.nbt_ops import is_numeric, numeric_value
+from emulator.world.semantics import wrap32
+
+F32 = np.float32
+INFINITE = -1  # MobEffectInstance.INFINITE_DURATION
+
+# Entities that are not LivingEntity (the rest of the types a pack summons are).
+NOT_LIVING = frozenset(f"minecraft:{n}" for n in (
+    "marker", "item_display", "block_display", "text_display", "interaction", "item", "experience_orb",
+    "area_effect_cloud", "arrow", "spectral_arrow", "trident", "snowball", "egg", "ender_pearl", "potion",
+    "experience_bottle", "fireball", "small_fireball", "dragon_fireball", "wither_skull", "wind_charge",
+    "breeze_wind_charge", "shulker_bullet", "llama_spit", "firework_rocket", "fishing_bobber", "eye_of_ender",
+    "falling_block", "tnt", "end_crystal", "evoker_fangs", "lightning_bolt", "painting", "item_frame",
+    "glow_item_frame", "leash_knot", "boat", "chest_boat", "minecart", "chest_minecart", "furnace_minecart",
+    "hopper_minecart", "tnt_minecart", "spawner_minecart", "command_block_minecart", "oak_boat", "spruce_boat",
+    "birch_boat", "jungle_boat", "acacia_boat", "dark_oak_boat", "mangrove_boat", "cherry_boat", "pale_oak_boat",
+    "bamboo_raft", "oak_chest_boat", "ominous_item_spawner"))
+
+# Attributes.java: (default value, min, max) of the registered attributes (1.21.2+ ids).
+DEFAULTS: dict[str, tuple[float, float, float]] = {
+    "armor": (0.0, 0.0, 30.0), "armor_toughness": (0.0, 0.0, 20.0), "attack_damage": (2.0, 0.0, 2048.0),
+    "attack_knockback": (0.0, 0.0, 5.0), "attack_speed": (4.0, 0.0, 1024.0), "block_break_speed": (1.0, 0.0, 1024.0),
+    "block_interaction_range": (4.5, 0.0, 64.0), "burning_time": (1.0, 0.0, 1024.0),
+    "entity_interaction_range": (3.0, 0.0, 64.0), "explosion_knockback_resistance": (0.0, 0.0, 1.0),
+    "fall_damage_multiplier": (1.0, 0.0, 100.0), "flying_speed": (0.4, 0.0, 1024.0),
+    "follow_range": (32.0, 0.0, 2048.0), "gravity": (0.08, -1.0, 1.0), "jump_strength": (0.42, 0.0, 32.0),
+    "knockback_resistance": (0.0, 0.0, 1.0), "luck": (0.0, -1024.0, 1024.0), "max_absorption": (0.0, 0.0, 2048.0),
+    "max_health": (20.0, 1.0, 1024.0), "mining_efficiency": (0.0, 0.0, 1024.0),
+    "movement_efficiency": (0.0, 0.0, 1.0), "movement_speed": (0.7, 0.0, 1024.0), "oxygen_bonus": (0.0, 0.0, 1024.0),
+    "safe_fall_distance": (3.0, -1024.0, 1024.0), "scale": (1.0, 0.0625, 16.0), "sneaking_speed": (0.3, 0.0, 1.0),
+    "spawn_reinforcements": (0.0, 0.0, 1.0), "step_height": (0.6, 0.0, 10.0),
+    "submerged_mining_speed": (0.2, 0.0, 20.0), "sweeping_damage_ratio": (0.0, 0.0, 1.0),
+    "tempt_range": (10.0, 0.0, 2048.0), "water_movement_efficiency": (0.0, 0.0, 1.0),
+}
+# LivingEntity.createLivingAttributes: what every living entity has.
+_LIVING = ("max_health", "knockback_resistance", "movement_speed", "armor", "armor_toughness", "max_absorption",
+           "step_height", "scale", "gravity", "safe_fall_distance", "fall_damage_multiplier", "jump_strength",
+           "oxygen_bonus", "burning_time", "explosion_knockback_resistance", "water_movement_efficiency",
+           "movement_efficiency", "attack_knockback")
+# Player.createAttributes and the mobs' createAttributes (DefaultAttributes): bases that differ
+# from the registry default, and the extra attributes each type has.
+_PLAYER = {"attack_damage": 1.0, "movement_speed": 0.1, "attack_speed": 4.0, "luck": 0.0,
+           "block_interaction_range": 4.5, "entity_interaction_range": 3.0, "block_break_speed": 1.0,
+           "submerged_mining_speed": 0.2, "sneaking_speed": 0.3, "mining_efficiency": 0.0,
+           "sweeping_damage_ratio": 0.0}
+_MOB = {"follow_range": 16.0}
+TYPE_BASES: dict[str, dict[str, float]] = {
+    "minecraft:player": _PLAYER,
+    "minecraft:zombie": {**_MOB, "follow_range": 35.0, "movement_speed": 0.23, "attack_damage": 3.0, "armor": 2.0,
+                         "spawn_reinforcements": 0.0},
+    "minecraft:husk": {**_MOB, "follow_range": 35.0, "movement_speed": 0.23, "attack_damage": 3.0, "armor": 2.0,
+                       "spawn_reinforcements": 0.0},
+    "minecraft:skeleton": {**_MOB, "movement_speed": 0.25}, "minecraft:creeper": {**_MOB, "movement_speed": 0.25},
+    "minecraft:spider": {**_MOB, "max_health": 16.0, "movement_speed": 0.3},
+    "minecraft:cow": {**_MOB, "max_health": 10.0, "movement_speed": 0.2},
+    "minecraft:pig": {**_MOB, "max_health": 10.0, "movement_speed": 0.25},
+    "minecraft:sheep": {**_MOB, "max_health": 8.0, "movement_speed": 0.23},
+    "minecraft:chicken": {**_MOB, "max_health": 4.0, "movement_speed": 0.25},
+    "minecraft:villager": {**_MOB, "movement_speed": 0.5, "follow_range": 48.0},
+    "minecraft:iron_golem": {**_MOB, "max_health": 100.0, "movement_speed": 0.25, "knockback_resistance": 1.0,
+                             "attack_damage": 15.0, "step_height": 1.0},
+    "minecraft:armor_stand": {},
+}
+
+
+def is_living(type_id: str) -> bool:
+    return type_id not in NOT_LIVING
+
+
+def attribute_id(text: str) -> str:
+    """``minecraft:max_health``, ``max_health`` and the pre-1.21.2 ``generic.max_health`` name one
+    attribute: its short id."""
+    name = text.split(":", 1)[-1]
+    for prefix in ("generic.", "player.", "zombie."):
+        if name.startswith(prefix):
+            return name[len(prefix):]
+    return name
+
+
+def has_attribute(type_id: str, name: str) -> bool:
+    return is_living(type_id) and (name in _LIVING or name in TYPE_BASES.get(type_id, _MOB))
+
+
+def default_base(type_id: str, name: str) -> float:
+    return TYPE_BASES.get(type_id, _MOB).get(name, DEFAULTS[name][0])
+
+
+def base_fields(type_id: str) -> Compound:
+    """What a living entity saves from its spawn: Health at its max health, no effects, the
+    player's hunger (FoodData) and experience."""
+    if not is_living(type_id):
+        return Compound()
+    data = Compound(Health=Float(default_base(type_id, "max_health")), HurtTime=Int(0), DeathTime=Int(0),
+                    AbsorptionAmount=Float(0.0))
+    if type_id == "minecraft:player":
+        data.update(foodLevel=Int(20), foodSaturationLevel=Float(5.0), foodExhaustionLevel=Float(0.0),
+                    foodTickTimer=Int(0), XpLevel=Int(0), XpP=Float(0.0), XpTotal=Int(0), XpSeed=Int(0), Score=Int(0))
+    return data
+
+
+# ---------------------------------------------------------------------- attributes
+def _instances(entity) -> List:
+    found = entity.data.get("attributes")
+    if not isinstance(found, List):
+        found = entity.data["attributes"] = List()
+    return found
+
+
+def _instance(entity, name: str) -> Compound:
+    """The entity's instance of the attribute (created at its default base on first use)."""
+    full = f"minecraft:{name}"
+    for inst in _instances(entity):
+        if isinstance(inst, Compound) and str(inst.get("id", "")) in (full, name):
+            return inst
+    inst = Compound(id=String(full), base=Double(default_base(entity.type, name)))
+    _instances(entity).append(inst)
+    return inst
+
+
+def _number(tag, default: float = 0.0) -> float:
+    return float(numeric_value(tag)) if is_numeric(tag) else default
+
+
+def base_value(entity, name: str) -> float:
+    return _number(_instance(entity, name).get("base"), default_base(entity.type, name))
+
+
+def set_base(entity, name: str, value: float) -> None:
+    _instance(entity, name)["base"] = Double(value)
+    _sync_health(entity)
+
+
+def reset_base(entity, name: str) -> None:
+    set_base(entity, name, default_base(entity.type, name))
+
+
+def _modifiers(entity, name: str) -> List:
+    inst = _instance(entity, name)
+    if not isinstance(inst.get("modifiers"), List):
+        inst["modifiers"] = List()
+    return inst["modifiers"]
+
+
+def _find_modifier(entity, name: str, modifier_id: str) -> Compound | None:
+    return next((m for m in _modifiers(entity, name) if str(m.get("id", "")) == modifier_id), None)
+
+
+def add_modifier(entity, name: str, modifier_id: str, amount: float, operation: str) -> bool:
+    """False when a modifier of that id is already on the attribute."""
+    if _find_modifier(entity, name, modifier_id) is not None:
+        return False
+    _modifiers(entity, name).append(Compound(id=String(modifier_id), amount=Double(amount),
+                                             operation=String(operation)))
+    _sync_health(entity)
+    return True
+
+
+def remove_modifier(entity, name: str, modifier_id: str) -> bool:
+    modifiers = _modifiers(entity, name)
+    found = _find_modifier(entity, name, modifier_id)
+    if found is None:
+        return False
+    modifiers.remove(found)
+    _sync_health(entity)
+    return True
+
+
+def modifier_value(entity, name: str, modifier_id: str) -> float | None:
+    found = _find_modifier(entity, name, modifier_id)
+    return None if found is None else _number(found.get("amount"))
+
+
+def attribute_value(entity, name: str) -> float:
+    """AttributeInstance.calculateValue: the base plus add_value modifiers, then each
+    add_multiplied_base adds base x amount, each add_multiplied_total multiplies by 1 + amount;
+    clamped to the attribute's range (RangedAttribute.sanitizeValue: NaN reads the minimum)."""
+    base = base_value(entity, name)
+    modifiers = [(str(m.get("operation", "")), _number(m.get("amount"))) for m in _modifiers(entity, name)]
+    base += sum(a for op, a in modifiers if op == "add_value")
+    value = base + sum(base * a for op, a in modifiers if op == "add_multiplied_base")
+    for op, a in modifiers:
+        if op == "add_multiplied_total":
+            value *= 1.0 + a
+    _, lo, hi = DEFAULTS[name]
+    return lo if math.isnan(value) else min(max(value, lo), hi)
+
+
+# ---------------------------------------------------------------------- health and damage
+# LivingEntity.invulnerableTime and lastHurt (not saved): per entity, while they run
+_HURT: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+def health(entity) -> float:
+    return _number(entity.data.get("Health"), default_base(entity.type, "max_health"))
+
+
+def _set_health(entity, value: float) -> None:
+    """LivingEntity.setHealth: clamped to [0, max health], stored as a float."""
+    entity.data["Health"] = Float(float(F32(min(max(value, 0.0), attribute_value(entity, "max_health")))))
+
+
+def _sync_health(entity) -> None:
+    """A lower max health lowers the health with it (LivingEntity.getHealth stays <= getMaxHealth)."""
+    if is_living(entity.type) and health(entity) > attribute_value(entity, "max_health"):
+        _set_health(entity, health(entity))
+
+
+def heal(entity, amount: float) -> None:
+    if health(entity) > 0:
+        _set_health(entity, health(entity) + amount)
+
+
+def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False) -> bool:
+    """LivingEntity.hurtServer without AI or armour items: refused for invulnerable entities,
+    creative and spectator players (unless the type bypasses invulnerability) and the dead; within
+    the 10 ticks after a hurt only the excess over the last hurt applies. Returns whether it hurt.
+    Armour points reduce the damage as CombatRules.getDamageAfterAbsorb does."""
+    invulnerable = entity.data.get("Invulnerable") or (entity.is_player and entity.gamemode in ("creative", "spectator"))
+    if (invulnerable and not bypasses_invulnerability) or health(entity) <= 0:
+        return False
+    timers = _HURT.setdefault(entity, [0, 0.0])  # invulnerableTime, lastHurt
+    if timers[0] > 10 and not bypasses_invulnerability:
+        if amount <= timers[1]:
+            return False
+        dealt, timers[1] = amount - timers[1], amount
+    else:
+        dealt, timers[0], timers[1] = amount, 20, amount
+        entity.data["HurtTime"] = Int(10)
+    dealt = _after_armour(entity, dealt, bypasses_invulnerability)
+    _set_health(entity, health(entity) - dealt)
+    if health(entity) <= 0 and not entity.is_player:
+        state.entities.kill(entity)
+    return True
+
+
+def _after_armour(entity, amount: float, bypass: bool) -> float:
+    """CombatRules.getDamageAfterAbsorb (float math) with the entity's armour attributes."""
+    if bypass:
+        return amount
+    armour, toughness = F32(attribute_value(entity, "armor")), F32(attribute_value(entity, "armor_toughness"))
+    if armour <= 0:
+        return amount
+    damage = F32(amount)
+    strength = F32(2.0) + toughness / F32(4.0)
+    reduced = min(max(armour - damage / strength, armour * F32(0.2)), F32(20.0))
+    return float(damage * (F32(1.0) - reduced / F32(25.0)))
+
+
+# ---------------------------------------------------------------------- effects
+INSTANT = {"minecraft:instant_health", "minecraft:instant_damage", "minecraft:saturation"}
+
+
+def effects(entity) -> List:
+    found = entity.data.get("active_effects")
+    if not isinstance(found, List):
+        found = entity.data["active_effects"] = List()
+    return found
+
+
+def _effect(entity, effect_id: str) -> Compound | None:
+    return next((e for e in effects(entity) if str(e.get("id", "")) == effect_id), None)
+
+
+def _longer(a: int, b: int) -> bool:
+    """Duration ``a`` outlasts ``b`` (infinite outlasts everything)."""
+    return b != INFINITE and (a == INFINITE or a > b)
+
+
+def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, visible: bool) -> bool:
+    """LivingEntity.addEffect: a new effect, or MobEffectInstance.update of the one there (a higher
+    amplifier replaces it, the same amplifier with a longer duration extends it, a change of
+    particles shows); False when nothing changed. Instant effects act at once and are not kept."""
+    if effect_id in INSTANT:
+        if effect_id == "minecraft:instant_health":
+            heal(entity, float(4 << amplifier))
+        elif effect_id == "minecraft:instant_damage":
+            hurt(state, entity, float(6 << amplifier))
+        return True
+    current = _effect(entity, effect_id)
+    if current is None:
+        effects(entity).append(Compound(id=String(effect_id), amplifier=Byte(amplifier), duration=Int(duration),
+                                        ambient=Byte(0), show_particles=Byte(int(visible)), show_icon=Byte(1)))
+        return True
+    old_amp, old_duration = int(_number(current.get("amplifier"))), int(_number(current.get("duration")))
+    changed = False
+    if amplifier > old_amp or (amplifier == old_amp and _longer(duration, old_duration)):
+        current["amplifier"], current["duration"] = Byte(amplifier), Int(duration)
+        changed = True
+    if bool(_number(current.get("show_particles"), 1)) != visible:
+        current["show_particles"] = Byte(int(visible))
+        changed = True
+    return changed
+
+
+def clear_effects(entity, effect_id: str | None = None) -> bool:
+    """Remove every effect, or the one given; False when there was none to remove."""
+    kept = List(e for e in effects(entity) if effect_id is not None and str(e.get("id", "")) != effect_id)
+    removed = len(effects(entity)) != len(kept)
+    entity.data["active_effects"] = kept
+    _drop_if_empty(entity)
+    return removed
+
+
+def _drop_if_empty(entity) -> None:
+    """LivingEntity.addAdditionalSaveData writes ``active_effects`` only when there is one."""
+    if not entity.data.get("active_effects", True):
+        del entity.data["active_effects"]
+
+
+def tick_living(state) -> None:
+    """Each living entity's tick, as far as a pack can see it: every effect's duration counts down
+    (MobEffectInstance.tickServer) and an expired one is removed; hurt timers run out."""
+    for entity in state.entities.living():
+        found = entity.data.get("active_effects")
+        if isinstance(found, List) and found:
+            for effect in list(found):
+                duration = int(_number(effect.get("duration")))
+                if duration == INFINITE:
+                    continue
+                if duration <= 1:
+                    found.remove(effect)
+                else:
+                    effect["duration"] = Int(duration - 1)
+            _drop_if_empty(entity)
+        hurt_time = entity.data.get("HurtTime")
+        if is_numeric(hurt_time) and numeric_value(hurt_time) > 0:
+            entity.data["HurtTime"] = Int(int(numeric_value(hurt_time)) - 1)
+        timers = _HURT.get(entity)
+        if timers is not None:
+            timers[0] -= 1
+            if timers[0] <= 0:
+                del _HURT[entity]
+
+
+# ---------------------------------------------------------------------- experience
+def xp_needed(level: int) -> int:
+    """Player.getXpNeededForNextLevel."""
+    if level >= 30:
+        return 112 + (level - 30) * 9
+    return 37 + (level - 15) * 5 if level >= 15 else 7 + level * 2
+
+
+def _xp(player) -> tuple[int, np.float32, int]:
+    data = player.data
+    return int(_number(data.get("XpLevel"))), F32(_number(data.get("XpP"))), int(_number(data.get("XpTotal")))
+
+
+def _store_xp(player, level: int, progress, total: int) -> None:
+    player.data.update(XpLevel=Int(level), XpP=Float(float(F32(progress))), XpTotal=Int(total))
+
+
+def add_levels(player, amount: int) -> None:
+    """Player.giveExperienceLevels: below 0 the level, progress and total reset to 0."""
+    level, progress, total = _xp(player)
+    level = wrap32(level + amount)
+    if level < 0:
+        level, progress, total = 0, F32(0.0), 0
+    _store_xp(player, level, progress, total)
+
+
+def add_points(player, amount: int) -> None:
+    """Player.giveExperiencePoints: the score and total grow, the progress moves by
+    amount / needed (float), carrying whole levels up or down."""
+    level, progress, total = _xp(player)
+    player.data["Score"] = Int(wrap32(int(_number(player.data.get("Score"))) + amount))
+    progress = F32(progress + F32(amount) / F32(xp_needed(level)))
+    total = min(max(total + amount, 0), 2**31 - 1)
+    _store_xp(player, level, progress, total)
+    while progress < 0:
+        points = F32(progress * F32(xp_needed(level)))
+        if level > 0:
+            add_levels(player, -1)
+            level = _xp(player)[0]
+            progress = F32(F32(1.0) + points / F32(xp_needed(level)))
+        else:
+            add_levels(player, -1)
+            level, progress = 0, F32(0.0)
+        _store_xp(player, level, progress, _xp(player)[2])
+    while progress >= 1:
+        progress = F32((progress - F32(1.0)) * F32(xp_needed(level)))
+        add_levels(player, 1)
+        level = _xp(player)[0]
+        progress = F32(progress / F32(xp_needed(level)))
+        _store_xp(player, level, progress, _xp(player)[2])
+
+
+def set_levels(player, amount: int) -> None:
+    """Player.setExperienceLevels (ExperienceCommand's ``set ... levels``)."""
+    level, progress, total = _xp(player)
+    _store_xp(player, amount, progress, total)
+
+
+def set_points(player, amount: int) -> bool:
+    """ExperienceCommand's ``set ... points``: refused at or above the points of the current
+    level; else Player.setExperiencePoints (progress = amount / needed, at most (needed - 1) / needed)."""
+    level, _, total = _xp(player)
+    needed = F32(xp_needed(level))
+    if amount >= needed:
+        return False
+    _store_xp(player, level, min(max(F32(amount) / needed, F32(0.0)), (needed - F32(1.0)) / needed), total)
+    return True
+
+
+def query_points(player) -> int:
+    """``xp query ... points``: Mth.floor(progress x needed)."""
+    level, progress, _ = _xp(player)
+    return math.floor(F32(progress * F32(xp_needed(level))))
+
+
+def query_levels(player) -> int:
+    return _xp(player)[0]

@@ -1,0 +1,180 @@
+"""``xp``, ``effect``, ``attribute`` and ``damage`` run by :mod:`emulator.commands.living` on the
+state :mod:`emulator.world.living` keeps in the entities' NBT.
+
+Sources (decompiled 1.21): server/commands/ExperienceCommand.java, EffectCommands.java,
+AttributeCommand.java, DamageCommand.java; world/entity/player/Player.java
+(giveExperiencePoints, getXpNeededForNextLevel), world/entity/ai/attributes/AttributeInstance.java
+(calculateValue), world/damagesource/CombatRules.java (getDamageAfterAbsorb).
+"""
+from __future__ import annotations
+
+import pytest
+
+from emulator.commands.dispatch import run_command
+from emulator.commands.entities import entity_context, new_state
+from emulator.commands.env import Env
+from emulator.world import living
+from emulator.world.context import Context
+from emulator.world.errors import CommandFailure
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Byte, Compound
+from mcfunction_parser.parse import parse_command
+
+
+@pytest.fixture
+def env():
+    return Env(new_state(), {}, set())
+
+
+def run(env, text: str, ctx: Context | None = None) -> int:
+    cmd, diagnostics = parse_command(text, Loc("t.mcfunction", 1, 1), (1, 21, 4))
+    assert not diagnostics, diagnostics
+    return run_command(env, cmd, ctx or Context())
+
+
+def player(env, name="Steve"):
+    entity = env.state.entities.add_player(name, (0.0, 0.0, 0.0))
+    return entity, entity_context(env.state, entity)
+
+
+# ---------------------------------------------------------------------- xp
+def test_points_carry_into_levels_as_the_game_counts_them(env):
+    steve, ctx = player(env)
+    # level 0 needs 7 points, level 1 needs 9: 10 points are level 1 and 3 of 9
+    assert run(env, "xp add @s 10 points", ctx) == 1
+    assert run(env, "xp query @s levels", ctx) == 1 and run(env, "xp query @s points", ctx) == 3
+    assert steve.data["XpTotal"] == 10 and steve.data["Score"] == 10
+    assert float(steve.data["XpP"]) == pytest.approx(3 / 9, rel=1e-6)
+
+
+def test_negative_points_take_levels_back_and_stop_at_zero(env):
+    steve, ctx = player(env)
+    run(env, "xp add @s 3 levels", ctx)
+    # -12 points at level 3 (13 to the next): back through level 2 (11 points) to level 1 with
+    # 8 of 9 in exact arithmetic; the game's float steps leave 7.9999 there, which query floors to 7
+    run(env, "xp add @s -12 points", ctx)
+    assert run(env, "xp query @s levels", ctx) == 1 and run(env, "xp query @s points", ctx) == 7
+    run(env, "xp add @s -100 levels", ctx)
+    assert (steve.data["XpLevel"], float(steve.data["XpP"]), steve.data["XpTotal"]) == (0, 0.0, 0)
+
+
+def test_set_points_is_refused_at_the_levels_maximum(env):
+    _, ctx = player(env)
+    with pytest.raises(CommandFailure, match="Cannot set experience points above the maximum"):
+        run(env, "xp set @s 7 points", ctx)  # level 0 holds 0..6
+    assert run(env, "xp set @s 6 points", ctx) == 1 and run(env, "xp query @s points", ctx) == 6
+    assert run(env, "experience set @s 30 levels", ctx) == 1 and run(env, "xp query @s levels", ctx) == 30
+
+
+def test_xp_on_a_non_player_fails(env):
+    env.state.entities.summon("minecraft:pig", (0, 0, 0))
+    with pytest.raises(CommandFailure, match="Only players may be affected"):
+        run(env, "xp add @e 1")
+
+
+# ---------------------------------------------------------------------- effect
+def test_effect_counts_down_and_ends(env):
+    steve, ctx = player(env)
+    assert run(env, "effect give @s minecraft:speed 2 1 true", ctx) == 1
+    [speed] = steve.data["active_effects"]
+    assert (speed["duration"], speed["amplifier"], speed["show_particles"]) == (40, 1, 0)
+    for _ in range(39):
+        living.tick_living(env.state)
+    assert steve.data["active_effects"][0]["duration"] == 1
+    living.tick_living(env.state)
+    assert "active_effects" not in steve.data  # saved only while there is one
+
+
+def test_weaker_or_shorter_effect_changes_nothing(env):
+    _, ctx = player(env)
+    run(env, "effect give @s speed 10 2", ctx)
+    with pytest.raises(CommandFailure, match="something stronger"):
+        run(env, "effect give @s speed 5 2", ctx)
+    with pytest.raises(CommandFailure, match="something stronger"):
+        run(env, "effect give @s speed 60 1", ctx)
+    assert run(env, "effect give @s speed infinite 2", ctx) == 1
+
+
+def test_effect_clear(env):
+    steve, ctx = player(env)
+    with pytest.raises(CommandFailure, match="no effects to remove"):
+        run(env, "effect clear @s", ctx)
+    run(env, "effect give @s speed", ctx)
+    assert steve.data["active_effects"][0]["duration"] == 600  # 30 s by default
+    with pytest.raises(CommandFailure, match="doesn't have the requested effect"):
+        run(env, "effect clear @s minecraft:glowing", ctx)
+    assert run(env, "effect clear", ctx) == 1  # no targets: the executor
+
+
+def test_effects_skip_entities_that_are_not_living(env):
+    env.state.entities.summon("minecraft:marker", (0, 0, 0))
+    with pytest.raises(CommandFailure, match="Unable to apply this effect"):
+        run(env, "effect give @e speed")
+
+
+# ---------------------------------------------------------------------- attribute
+def test_attribute_defaults_modifiers_and_scale(env):
+    _, ctx = player(env)
+    assert run(env, "attribute @s minecraft:movement_speed get 1000", ctx) == 100  # player base 0.1
+    assert run(env, "attribute @s minecraft:generic.max_health base get", ctx) == 20  # the pre-1.21.2 name
+    run(env, "attribute @s movement_speed modifier add t:a 0.05 add_value", ctx)
+    run(env, "attribute @s movement_speed modifier add t:b 1 add_multiplied_base", ctx)
+    run(env, "attribute @s movement_speed modifier add t:c 0.5 add_multiplied_total", ctx)
+    # (0.1 + 0.05) + 0.15 x 1, then x 1.5
+    assert run(env, "attribute @s movement_speed get 1000", ctx) == 450
+    assert run(env, "attribute @s movement_speed modifier value get t:b 10", ctx) == 10
+    with pytest.raises(CommandFailure, match="already present"):
+        run(env, "attribute @s movement_speed modifier add t:a 1 add_value", ctx)
+    assert run(env, "attribute @s movement_speed modifier remove t:a", ctx) == 1
+    with pytest.raises(CommandFailure, match="has no modifier t:a"):
+        run(env, "attribute @s movement_speed modifier remove t:a", ctx)
+
+
+def test_attribute_range_and_reset(env):
+    steve, ctx = player(env)
+    run(env, "attribute @s max_health base set 5000", ctx)
+    assert run(env, "attribute @s max_health get", ctx) == 1024  # RangedAttribute's maximum
+    assert run(env, "attribute @s max_health base get", ctx) == 5000
+    run(env, "attribute @s max_health base set 4", ctx)
+    assert float(steve.data["Health"]) == 4.0  # the health follows a lower maximum
+    run(env, "attribute @s max_health base reset", ctx)
+    assert run(env, "attribute @s max_health base get", ctx) == 20
+
+
+def test_attribute_refusals(env):
+    env.state.entities.summon("minecraft:marker", (0, 0, 0), None)
+    with pytest.raises(CommandFailure, match="is not a valid entity"):
+        run(env, "attribute @e[type=marker,limit=1] max_health get")
+    env.state.entities.summon("minecraft:pig", (0, 0, 0))
+    with pytest.raises(CommandFailure, match="has no attribute"):
+        run(env, "attribute @e[type=pig,limit=1] luck get")  # players have luck, mobs do not
+
+
+# ---------------------------------------------------------------------- damage
+def test_damage_lowers_health_and_respects_the_hurt_cooldown(env):
+    pig = env.state.entities.summon("minecraft:pig", (0, 0, 0))
+    assert float(pig.data["Health"]) == 10.0
+    assert run(env, "damage @e[type=pig,limit=1] 3") == 1
+    assert float(pig.data["Health"]) == 7.0 and pig.data["HurtTime"] == 10
+    with pytest.raises(CommandFailure, match="invulnerable"):
+        run(env, "damage @e[type=pig,limit=1] 2")  # within the cooldown, not more than the last hurt
+    run(env, "damage @e[type=pig,limit=1] 5")  # only the excess over 3 applies
+    assert float(pig.data["Health"]) == 5.0
+    run(env, "damage @e[type=pig,limit=1] 100 minecraft:out_of_world")
+    assert not pig.alive  # a mob at 0 health dies
+
+
+def test_creative_players_and_invulnerable_mobs_take_no_damage(env):
+    steve, ctx = player(env)
+    steve.gamemode = "creative"
+    with pytest.raises(CommandFailure, match="invulnerable"):
+        run(env, "damage @s 1", ctx)
+    env.state.entities.summon("minecraft:cow", (0, 0, 0), Compound(Invulnerable=Byte(1)))
+    with pytest.raises(CommandFailure, match="invulnerable"):
+        run(env, "damage @e[type=cow,limit=1] 1")
+
+
+def test_armour_absorbs_damage(env):
+    zombie = env.state.entities.summon("minecraft:zombie", (0, 0, 0))  # 2 armour points
+    run(env, "damage @e[type=zombie,limit=1] 5")
+    assert float(zombie.data["Health"]) == pytest.approx(20 - 5 * (1 - 0.4 / 25), rel=1e-6)
