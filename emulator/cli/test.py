@@ -18,7 +18,11 @@ from emulator.testing.junit import junit_xml
 @click.option("--junit", "junit_file", metavar="FILE", type=OutputPath(stdout=False), help="Write JUnit XML.")
 @click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
 @click.option("--strict", is_flag=True, help="A runtime error during a test (unknown function, division by zero ...) fails it.")
-def test(paths, pattern, junit_file, backend, strict) -> None:
+@click.option("--with", "with_packs", multiple=True, metavar="PACK", type=click.Path(exists=True),
+              help="A pack loaded beneath each pack under test (a library, another module it needs); repeatable.")
+@click.option("--together", is_flag=True,
+              help="Load every pack under test into one world and run all their tests there, as a collection's CI does.")
+def test(paths, pattern, junit_file, backend, strict, with_packs, together) -> None:
     """Run PackTest-format test files.
 
     PATHS: packs as folders or .zip files, folders in a pack, or test files."""
@@ -29,9 +33,14 @@ def test(paths, pattern, junit_file, backend, strict) -> None:
     if files and not selected(files, pattern):
         raise click.UsageError(f"-k {pattern!r} matches none of the {len(files)} tests under {', '.join(paths)}")
 
-    def loaded(packs) -> None:
-        for diag in packs.errors:
-            click.echo(diag.format(), err=True)
+    shown: set[str] = set()
+
+    def loaded(packs) -> None:  # the load's errors and pack.mcmeta warnings, each once
+        for diag in [*packs.errors, *(w for w in packs.warnings if w.path.endswith("pack.mcmeta"))]:
+            text = diag.format()
+            if text not in shown:
+                shown.add(text)
+                click.echo(text, err=True)
 
     summary = Summary()
     with interruptible() as stopped:
@@ -39,7 +48,8 @@ def test(paths, pattern, junit_file, backend, strict) -> None:
             summary.results.append(result)
             click.echo(result.report())
 
-        run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict)
+        run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict,
+                  with_packs=with_packs, together=together)
     if not summary.results and not stopped[0]:
         click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
                    + ") under " + ", ".join(paths), err=True)

@@ -51,15 +51,25 @@ def shown_path(path) -> str:
     return Path(text).as_posix() if rel.startswith("..") else Path(rel).as_posix()
 
 
-def load_suite(files: list[TestFile], pattern: str | None = None):
+def load_suite(files: list[TestFile], pattern: str | None = None, with_packs=(), together: bool = False):
     """Parse each pack once and its test files; yield ``(packs, [TestCase])`` per pack with the
-    generated functions added to ``packs.functions``."""
+    generated functions added to ``packs.functions``.
+
+    ``with_packs`` (libraries, the other modules a pack needs) load first, beneath each pack under
+    test, as a CI server loads them. ``together``: every pack under test loads into one world with
+    them (in the order given, as a collection's CI runs all its modules' tests on one server), and
+    every test runs there."""
     by_pack: dict[Path, list[TestFile]] = {}
     for tf in selected(files, pattern):
         by_pack.setdefault(tf.pack_root, []).append(tf)
+    extra = [Path(p).resolve() for p in with_packs]
+    if together and by_pack:
+        roots = [r for r in by_pack if r not in extra]
+        by_pack = {tuple(roots): [tf for group in by_pack.values() for tf in group]}
     key = 0
     for root, pack_files in by_pack.items():
-        packs = load_packs([root])
+        under_test = list(root) if isinstance(root, tuple) else [root]
+        packs = load_packs([*extra, *(r for r in under_test if r not in extra)])
         cases = []
         for tf in pack_files:
             cases.append(read_test(tf.id, tf.path, shown_path(tf.path), f"t{key}", packs.version))
@@ -95,11 +105,13 @@ def _in_batches(cases: list[TestCase]) -> list[TestCase]:
 
 
 def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None = None,
-              on_result: Callable[[TestResult], None] | None = None, on_load=None, strict: bool = False) -> Summary:
+              on_result: Callable[[TestResult], None] | None = None, on_load=None, strict: bool = False,
+              with_packs=(), together: bool = False) -> Summary:
     """Run every test in ``files`` (those whose id contains ``pattern``, case-insensitively);
-    ``strict``: a runtime error during a test fails it."""
+    ``strict``: a runtime error during a test fails it; ``with_packs`` and ``together`` as
+    :func:`load_suite`."""
     summary = Summary()
-    for packs, cases in load_suite(files, pattern):
+    for packs, cases in load_suite(files, pattern, with_packs, together):
         if on_load is not None:
             on_load(packs)
         for case in cases:

@@ -61,3 +61,39 @@ def test_runtime_errors_show_with_the_test_and_fail_it_under_strict(pack):
     assert relaxed.exit_code == 0 and "PASS demo:div" in relaxed.output and "Cannot divide by zero" in relaxed.output
     strict = CliRunner().invoke(main, ["test", str(root), "--strict"])
     assert strict.exit_code == 1 and "1 runtime error(s) during the test (--strict)" in strict.output
+
+
+def test_with_loads_a_library_beneath_each_pack_under_test(tmp_path):
+    from tests.conftest import write_pack
+    lib = write_pack(tmp_path / "lib", {"lib/function/double.mcfunction": "scoreboard players operation $x o += $x o\n"},
+                     load=["lib:init"])
+    (lib / "data/lib/function/init.mcfunction").write_text("scoreboard objectives add o dummy\n")
+    app = write_pack(tmp_path / "app", {"app/test/uses_lib.mcfunction":
+                                        "scoreboard players set $x o 21\nfunction lib:double\nassert score $x o matches 42\n"})
+    alone = CliRunner().invoke(main, ["test", str(app)])
+    assert alone.exit_code == 1  # without the library the call finds nothing
+    both = CliRunner().invoke(main, ["test", str(app), "--with", str(lib)])
+    assert both.exit_code == 0, both.output
+    assert both.output.splitlines()[-1] == "1 passed, 0 failed"
+
+
+def test_together_runs_every_modules_tests_in_one_world(tmp_path):
+    from tests.conftest import write_pack
+    a = write_pack(tmp_path / "a", {"a/function/init.mcfunction": "scoreboard objectives add shared dummy\n",
+                                    "a/test/sees_b.mcfunction": "assert score $b shared matches 2\n"}, load=["a:init"])
+    b = write_pack(tmp_path / "b", {"b/function/init.mcfunction": "scoreboard players set $b shared 2\n",
+                                    "b/test/sees_a.mcfunction": "assert score $b shared matches 2\n"}, load=["b:init"])
+    apart = CliRunner().invoke(main, ["test", str(a), str(b)])
+    assert apart.output.splitlines()[-1] == "0 passed, 2 failed"  # each pack alone lacks the other's half
+    together = CliRunner().invoke(main, ["test", str(a), str(b), "--together"])
+    assert together.exit_code == 0, together.output
+    assert together.output.splitlines()[-1] == "2 passed, 0 failed"
+
+
+def test_a_librarys_load_error_is_printed_once(tmp_path):
+    from tests.conftest import write_pack
+    lib = write_pack(tmp_path / "lib", {"lib/function/bad.mcfunction": "scoreboard players frobnicate\n"})
+    apps = [write_pack(tmp_path / name, {f"{name}/test/t.mcfunction": "succeed\n"}) for name in ("one", "two")]
+    result = CliRunner().invoke(main, ["test", *map(str, apps), "--with", str(lib)])
+    errors = [line for line in result.output.splitlines() if "bad.mcfunction" in line and "error" in line]
+    assert len(errors) == 1, result.output

@@ -72,3 +72,19 @@ def test_mcfunction_files_are_collected_only_when_asked(pack, tmp_path):
     ini = subprocess.run(base + ["-c", str(tmp_path / "pytest.ini"), str(tmp_path / "test_nothing.py")],
                          capture_output=True, text=True, cwd=tmp_path)
     assert "2 passed" in ini.stdout, ini.stdout + ini.stderr
+
+
+def test_mcfunction_items_run_under_xdist(pack, tmp_path):
+    """``pytest -n 2``: every worker collects the same items in the same order, so xdist spreads
+    the mcfunction tests over the workers (and, through remote workers, over machines)."""
+    pytest.importorskip("xdist")
+    root = pack(TESTS, load=["demo:init"])
+    (tmp_path / "test_nothing.py").write_text("def test_py():\n    pass\n")
+    command = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-o", "addopts=", "-n", "2",
+               "--rootdir", str(tmp_path), str(tmp_path / "test_nothing.py"), "--mcfunction-tests", str(root),
+               "--dpemu-backend", "python", "-rf"]
+    run = subprocess.run(command, capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 1, run.stdout + run.stderr
+    assert "created: 2/2 workers" in run.stdout
+    assert "1 failed, 2 passed" in run.stdout, run.stdout
+    assert "FAILED pack/data/demo/test/bad.mcfunction::demo:bad" in run.stdout
