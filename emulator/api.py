@@ -21,10 +21,10 @@ from emulator.profile.stacks import CallStacks
 from emulator.runtime.backend import Backend, CallRecording, RootResult, Tracer
 from emulator.runtime.factory import make_backend
 from emulator.runtime.server import Runtime
+from emulator.world import players
 from emulator.world.context import Context
 from emulator.world.semantics import INT_MAX, INT_MIN
 from mcfunction_parser.diagnostics import Diagnostic
-from mcfunction_parser.nbt import Byte
 
 
 class Emulator:
@@ -148,13 +148,26 @@ class Emulator:
     # ------------------------------------------------------------------ entities
     def add_player(self, name: str, pos=(0.0, 0.0, 0.0), rotation=(0.0, 0.0), gamemode: str = "survival",
                    level: int = 0, on_ground: bool = True) -> str:
-        """Put a simulated player in the world (after :meth:`load`, at any tick); returns its UUID
-        string. ``rotation`` is (yaw, pitch) in degrees. The world has no terrain, so ``on_ground``
-        says whether the player stands (``OnGround:1b``, as a player on a floor does) or is in the air."""
-        player = self.state.entities.add_player(name, tuple(float(c) for c in pos), rotation[0], rotation[1],
-                                                gamemode, level)
-        player.data["OnGround"] = Byte(1 if on_ground else 0)
-        return player.uuid_string
+        """A simulated player joins (after :meth:`load`, at any tick; a player of that name already
+        online leaves first, as the server disconnects it); returns its UUID string, the offline-mode
+        UUID of its name. ``rotation`` is (yaw, pitch) in degrees. The world has no terrain, so
+        ``on_ground`` says whether the player stands (``OnGround:1b``, as a player on a floor does) or
+        is in the air. See :mod:`emulator.world.players`."""
+        return players.join(self.state, name, pos, rotation, gamemode, level, on_ground).uuid_string
+
+    def remove_player(self, name: str) -> None:
+        """The player leaves the game (``minecraft.custom:minecraft.leave_game`` + 1; its scores stay)."""
+        players.leave(self.state, self._player(name))
+
+    def place_player(self, name: str, pos=None, rotation=None, on_ground: bool | None = None) -> None:
+        """Move a player (a dummy too), turn it, or stand it on the ground / lift it into the air."""
+        players.place(self._player(name), pos, rotation, on_ground)
+
+    def _player(self, name: str):
+        player = players.online(self.state, name)
+        if player is None:
+            raise ValueError(f"no player named {name!r} is online")
+        return player
 
     def entities(self, selector: str = "@e") -> list[dict]:
         """What ``selector`` (a selector, player name or UUID) finds, run as the server at world

@@ -2,6 +2,8 @@
 --set/--call/--watch/--until/--player and applying --set/--call in command-line order."""
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass
 
 import click
@@ -83,16 +85,20 @@ def parse_until(text: str) -> Until:
     return Until(Watch(parts[0], parts[1]), lo, hi)
 
 
-def parse_player(text: str) -> tuple[str, tuple[float, ...], tuple[float, float]]:
-    """``NAME@X,Y,Z[,YAW,PITCH]``."""
+def parse_player(text: str) -> tuple[str, tuple[float, ...], tuple[float, float], bool]:
+    """``NAME@X,Y,Z[,YAW,PITCH][,air]``: the name, position, rotation and whether it stands on the
+    ground (``air``: it is in the air)."""
     name, _, numbers = text.partition("@")
+    parts = numbers.split(",")
+    on_ground = parts[-1].strip() != "air"
     try:
-        values = [float(v) for v in numbers.split(",")]
+        values = [float(v) for v in parts[: len(parts) - (not on_ground)]]
     except ValueError:
         values = []
-    if not name or len(values) not in (3, 5):
-        raise click.BadParameter(f"{text!r}: expected NAME@X,Y,Z or NAME@X,Y,Z,YAW,PITCH", param_hint="--player")
-    return name, tuple(values[:3]), tuple(values[3:]) or (0.0, 0.0)
+    if not name or len(values) not in (3, 5) or not all(map(math.isfinite, values)):
+        raise click.BadParameter(f"{text!r}: expected NAME@X,Y,Z or NAME@X,Y,Z,YAW,PITCH (finite numbers), "
+                                 "then ,air for a player in the air", param_hint="--player")
+    return name, tuple(values[:3]), tuple(values[3:]) or (0.0, 0.0), on_ground
 
 
 def parse_call(text: str) -> tuple[str, object]:

@@ -29,8 +29,8 @@ PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
 @click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the results as JSON.")
 @click.option("--csv", "csv_out", type=OutputPath(), metavar="FILE|-", help="Watched values per tick.")
 @click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")
-@click.option("--player", "players", multiple=True, metavar="NAME@X,Y,Z[,YAW,PITCH]",
-              help="Add a simulated player before anything runs.")
+@click.option("--player", "players", multiple=True, metavar="NAME@X,Y,Z[,YAW,PITCH][,air]",
+              help="Add a simulated player before anything runs, on the ground (,air: in the air).")
 @click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
 @fail_option
 def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
@@ -46,8 +46,8 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
         watches.append(stop.watch)
     players = [parse_player(p) for p in players]
     emu = load_or_usage_error(Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle), packs, mc_version)
-    for name, pos, rotation in players:
-        emu.add_player(name, pos, rotation)
+    for name, pos, rotation, on_ground in players:
+        emu.add_player(name, pos, rotation, on_ground=on_ground)
 
     started = time.perf_counter()
     rows: list[list] = []

@@ -7,11 +7,12 @@ Dummy.java, PackTestExecutor.java; the game's Player and Interaction classes).
                    | drop [all] | swap | use item | use block <pos> [<direction>]
 
 Modelled:
-- ``spawn``: a survival player named as written (a plain name; ``@s`` has none) at the test
-  source's position, with the offline-mode UUID the game gives it (``UUIDUtil.
-  createOfflinePlayerUUID``), standing on the ground (PackTest's own ``setOnGround(true)`` for the
+- ``spawn``: a survival player named as written (a plain name; ``@s`` has none) joins at the test
+  source's position (emulator.world.players.join: the offline-mode UUID the game gives it),
+  standing on the ground (PackTest's own ``setOnGround(true)`` for the
   ``@dummy`` one; the emulator has no entity physics to land it).
-- ``leave``: ``minecraft.custom:minecraft.leave_game`` + 1, then the player is gone (scores stay).
+- ``leave``: emulator.world.players.leave: ``minecraft.custom:minecraft.leave_game`` + 1, then the
+  player is gone (scores stay).
 - ``respawn``: a new player entity with the same name, UUID and tags at the dummy's first spawn
   position, rotation 0 0 (PackTest's PlayerListMixin), sneak/sprint released, slot 1.
 - ``jump``: only from the ground; ``minecraft.custom:minecraft.jump`` + 1. The jump's motion is not
@@ -35,20 +36,18 @@ command: the test goes on, and the message is kept as a runtime diagnostic.
 """
 from __future__ import annotations
 
-import hashlib
-import uuid as uuid_lib
 from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import statistics
+from emulator.world import players, statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word, vec3
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
+from mcfunction_parser.nbt import Compound, Int, IntArray, Long
 from mcfunction_parser.reader import Reader
 
 ACTIONS = ("spawn", "leave", "respawn", "jump", "swap", "sneak", "sprint", "drop", "selectslot", "use", "attack",
@@ -156,12 +155,6 @@ def _entity(r: Reader):
 
 
 # ---------------------------------------------------------------------- running
-def offline_uuid(name: str) -> tuple[int, int, int, int]:
-    """``UUIDUtil.createOfflinePlayerUUID``: ``UUID.nameUUIDFromBytes("OfflinePlayer:" + name)``."""
-    value = uuid_lib.UUID(bytes=hashlib.md5(f"OfflinePlayer:{name}".encode()).digest(), version=3).int
-    return tuple(((value >> shift) + 2**31) % 2**32 - 2**31 for shift in (96, 64, 32, 0))  # int[4]
-
-
 class Dummies:
     """The dummies of one test world: which players are dummies, and where each first spawned."""
 
@@ -175,9 +168,7 @@ class Dummies:
             if player.player_name == name:
                 kind = "is already logged on" if player.uuid in self.spawns else "is already a player"
                 raise DummyFailure(f"Dummy {name} {kind}")
-        player = self.state.entities.add_player(name, tuple(float(c) for c in pos))
-        player.uuid = offline_uuid(name)
-        player.data["OnGround"] = Byte(1)
+        player = players.join(self.state, name, pos)
         player.data["SelectedItemSlot"] = Int(0)
         self.spawns[player.uuid] = tuple(pos)
         return player
@@ -215,8 +206,7 @@ class Dummies:
 
     # ---------------------------------------------------------------- actions
     def _leave(self, dummy: Entity, command, ctx) -> None:
-        statistics.award(self.state, dummy, statistics.stat_name("custom", "leave_game"))
-        self.state.entities.kill(dummy)
+        players.leave(self.state, dummy)
 
     def _respawn(self, dummy: Entity, command, ctx) -> None:
         tags, spawn = set(dummy.tags), self.spawns.pop(dummy.uuid)

@@ -5,7 +5,7 @@ PackTestExecutor.java, the game's Player.tick/jumpFromGround, Interaction and Pl
 import pytest
 
 from emulator.testing import discover, run_suite
-from emulator.testing.dummies import offline_uuid
+from emulator.world.players import offline_uuid
 from emulator.world.statistics import canonical_criterion
 from emulator.world.entities import uuid_string
 
