@@ -6,7 +6,8 @@ component, player, 0); the result is the number of receivers), network/chat/Comp
 (updateForEntity resolves every contents part and keeps the style and the ``extra`` siblings),
 contents/ScoreContents (a selector name must find exactly one entity, ``*`` is the receiver; an
 unset score or unknown objective reads as empty), contents/SelectorContents (the display names
-joined with ", "), contents/NbtContents (``storage``/``entity`` values as text, joined with ", ").
+joined with ", "), contents/NbtContents (``storage``/``entity`` values as text, joined with ", ";
+with ``interpret: true`` each value read as a component and resolved in turn).
 
 The log keeps one line per command: the component as written when nothing in it needs resolving,
 else the resolved component as compact JSON (``*`` in a score name resolved for the first
@@ -131,14 +132,17 @@ def _resolve(component, resolver: "_Resolver"):
     if not isinstance(component, dict):
         return component
     out = {k: v for k, v in component.items() if k not in _CONTENT_KEYS}  # the style stays
+    interpreted = []
     if "score" in component:
         out["text"] = resolver.score(component["score"])
     elif "selector" in component:
         out["text"] = ", ".join(e.display_name for e in resolver.select(str(component["selector"])))
+    elif "nbt" in component and component.get("interpret") in (True, 1):
+        out["text"], interpreted = "", resolver.interpreted(component)  # the values come first
     elif "nbt" in component:
         out["text"] = resolver.nbt(component)
-    if "extra" in component:
-        out["extra"] = _resolve(component["extra"], resolver)
+    if "extra" in component or interpreted:
+        out["extra"] = interpreted + _resolve(component.get("extra", []), resolver)
     return out
 
 
@@ -161,22 +165,45 @@ class _Resolver:
         value = self.state.scoreboard.get(holder, str(score.get("objective", "")))
         return "" if value is None else str(value)
 
-    def nbt(self, component: dict) -> str:
-        """NbtContents: the values at the path in the storage or the entities, as text."""
+    def _values(self, component: dict) -> list:
+        """NbtContents: the values at the path in the storage or the entities."""
         try:
             path = nbt_path(Reader(str(component["nbt"]), Loc("<text>", 1, 1), (1, 21, 0)))
         except ParseError:
-            return ""
+            return []
         if "storage" in component:
             roots = [self.state.storage.get(str(component["storage"]), Compound())]
         elif "entity" in component:
             roots = [entity_nbt(e) for e in self.select(str(component["entity"]))]
         else:
-            return ""  # block entities are not modelled
+            return []  # block entities are not modelled
         values = []
         for root in roots:
             try:
                 values += nbt_ops.get(root, path)
             except CommandFailure:
                 continue
-        return ", ".join(tag_as_string(v) for v in values)
+        return values
+
+    def nbt(self, component: dict) -> str:
+        """The values as text, joined with ", "."""
+        return ", ".join(tag_as_string(v) for v in self._values(component))
+
+    def interpreted(self, component: dict) -> list:
+        """``interpret: true``: each value read as a text component, resolved in turn, joined with
+        the separator (default ", "). Before 1.21.5 a value's string is parsed as JSON (a value that
+        is not a component reads as nothing); from 1.21.5 the tag itself is the component
+        (ComponentSerialization.CODEC over NbtOps: a string tag is plain text)."""
+        parts = []
+        for value in self._values(component):
+            if self.state.version >= (1, 21, 5):
+                read = _plain_value(value)
+            else:
+                try:
+                    read = json.loads(tag_as_string(value))
+                except ValueError:
+                    continue
+            if parts:
+                parts.append(component.get("separator", ", "))
+            parts.append(_resolve(read, self))
+        return parts

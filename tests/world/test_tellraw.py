@@ -83,3 +83,33 @@ def test_each_player_gets_the_text_resolved_for_them(tmp_path, backend):
     emu.call("t:main")
     assert [(plain(e.text), [uuid[r] for r in e.receivers]) for e in emu.log] == [
         ("you have 11", ["Alex"]), ("you have 4", ["Steve", "Sam"]), ("plain", ["Alex", "Steve"])]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_nbt_interpret_reads_each_value_as_a_component(tmp_path, backend):
+    """NbtContents.resolve with interpret: before 1.21.5 each value's string is parsed as JSON and
+    resolved in turn (a score inside it too); the values join with the separator."""
+    emu = emulator(tmp_path, backend, {"t:main": "\n".join([
+        "scoreboard players set Alex o 7",
+        'data modify storage t:s names set value [\'{"text":"a"}\',\'{"score":{"name":"Alex","objective":"o"}}\']',
+        'tellraw @a {"nbt":"names[]","storage":"t:s","interpret":true,"separator":"+"}',
+        'tellraw @a {"nbt":"names[]","storage":"t:s"}',
+    ])})
+    emu.add_player("Alex")
+    emu.call("t:main")
+    assert [plain(e.text) for e in emu.log][0] == "a+7"
+    assert plain(emu.log[1].text) == '{"text":"a"}, {"score":{"name":"Alex","objective":"o"}}'
+
+
+def test_nbt_interpret_takes_the_tag_itself_from_1_21_5(tmp_path):
+    """From 1.21.5 ComponentSerialization.CODEC reads the tag: a compound is a component, a string
+    tag is plain text (not parsed as JSON)."""
+    emu = emulator(tmp_path, "python", {"t:main": "\n".join([
+        "data modify storage t:s v set value [{text:\"x\",extra:[\"y\"]}, {text:\"w\"}]",
+        "data modify storage t:s s set value '{\"text\":\"z\"}'",
+        'tellraw @a [{"nbt":"v[]","storage":"t:s","interpret":true},{"nbt":"s","storage":"t:s","interpret":true}]',
+    ])})
+    emu.state.version = (1, 21, 5)
+    emu.add_player("Alex")
+    emu.call("t:main")
+    assert plain(emu.log[0].text) == 'xy, w{"text":"z"}'
