@@ -11,9 +11,10 @@ value, numbers are converted to the saved type, ``teleport_duration`` is clamped
 - ``read_fields(type_id, nbt, previous)``: the fields after loading ``nbt`` over ``previous``.
 - ``NOT_SAVED``: fields a display reads but does not save.
 
-Limitations: ``transformation`` is read in its decomposed form with quaternion rotations; the
-16-number matrix form and axis-angle rotations keep the previous value. Item and block contents
-(``item``, ``block_state``, ``text``) are kept as given.
+``transformation`` is read in its decomposed form (quaternion or ``{angle, axis}`` rotations) or as
+16 numbers, a row-major matrix decomposed as the game decomposes it (:mod:`emulator.world.matrix`);
+it is saved decomposed. Item and block contents (``item``, ``block_state``, ``text``) are kept as
+given.
 
 Source: decompiled 1.21 world/entity/Display.java (defineSynchedData, readAdditionalSaveData,
 addAdditionalSaveData) and com/mojang/math/Transformation.java (EXTENDED_CODEC).
@@ -21,7 +22,7 @@ addAdditionalSaveData) and com/mojang/math/Transformation.java (EXTENDED_CODEC).
 from __future__ import annotations
 
 from mcfunction_parser.nbt import Compound, Float, Int, List, String
-from emulator.world import mth
+from emulator.world import matrix, mth
 from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 
 DISPLAY_TYPES = ("minecraft:item_display", "minecraft:block_display", "minecraft:text_display")
@@ -49,16 +50,37 @@ def default_fields(type_id: str) -> Compound:
     return fields
 
 
+def _numbers(value, size: int) -> list | None:
+    if isinstance(value, List) and len(value) == size and all(is_numeric(v) for v in value):
+        return [numeric_value(v) for v in value]
+    return None
+
+
+def _part(key: str, value, size: int) -> list | None:
+    """A part of the decomposed form: a numeric list of the right size, or a rotation written as
+    ``{angle, axis: [x, y, z]}`` (ExtraCodecs.AXISANGLE4F)."""
+    numbers = _numbers(value, size)
+    if numbers is None and key.endswith("rotation") and isinstance(value, Compound) and is_numeric(value.get("angle")):
+        axis = _numbers(value.get("axis"), 3)
+        if axis is not None:
+            return list(matrix.axis_angle(numeric_value(value["angle"]), axis))
+    return numbers
+
+
 def _transformation(value, previous: Compound) -> Compound:
-    """The decomposed form with every part a numeric list of the right size, else the previous one."""
+    """Transformation.EXTENDED_CODEC: the decomposed form, else 16 numbers (a row-major matrix the
+    game decomposes, emulator.world.matrix); anything else keeps the previous value."""
+    matrix_values = _numbers(value, 16)
+    if matrix_values is not None:
+        return Compound((key, _floats(part)) for (key, _), part in zip(_TRANSFORM, matrix.decompose(matrix_values)))
     if not isinstance(value, Compound):
         return copy_tag(previous)
     parts = Compound()
     for key, default in _TRANSFORM:
-        part = value.get(key)
-        if not isinstance(part, List) or len(part) != len(default) or not all(is_numeric(v) for v in part):
+        part = _part(key, value.get(key), len(default))
+        if part is None:
             return copy_tag(previous)
-        parts[key] = _floats(numeric_value(v) for v in part)
+        parts[key] = _floats(part)
     return parts
 
 
