@@ -23,12 +23,17 @@ Modelled:
 - ``selectslot N``: ``SelectedItemSlot`` (N - 1) in the player's NBT.
 - ``attack``/``use entity`` on an ``interaction`` entity: its ``attack``/``interaction`` NBT
   ``{player: UUID, timestamp: game time}`` (Interaction.skipAttackInteraction / interact).
+- ``attack`` on a living entity: Player.attack with an empty hand (emulator.world.living.attack):
+  the damage grows with the ticks since the dummy joined or last attacked, the target's
+  ``Health`` and ``HurtTime``, ``damage_dealt`` and the kill statistics. A target that is not
+  living is not attackable: nothing happens, as in the game. Knockback and the
+  ``player_hurt_entity`` advancement trigger are not modelled.
 - ``mine``: a creative player removes the block; a survival player mining air succeeds without
   effect; adventure and spectator players fail ("failed to mine block").
 
 Not modelled, so a test using them fails with the reason: held items (``drop``, ``swap``, ``use
-item``, ``use block``; the emulator has no player inventories), attacking or using any other entity
-(damage, health, mob interactions), and a survival player mining a block (its drops come from loot
+item``, ``use block``; the emulator has no player inventories), using any other entity (mob
+interactions), and a survival player mining a block (its drops come from loot
 tables and ``minecraft.mined`` needs the right tool, neither modelled).
 
 As in PackTest, an action the game refuses (``Dummy X is not on the ground`` ...) is a failed
@@ -40,7 +45,7 @@ from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import players, statistics
+from emulator.world import living, players, statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
@@ -235,7 +240,11 @@ class Dummies:
         dummy.data["SelectedItemSlot"] = Int(command.slot - 1)
 
     def _attack(self, dummy: Entity, command, ctx) -> None:
-        self._record(dummy, self._entity(command.entity, ctx), "attack", "attacking")
+        target = self._entity(command.entity, ctx)
+        if target.type == "minecraft:interaction":
+            self._record(dummy, target, "attack", "attacking")
+        else:
+            living.attack(self.state, dummy, target)
 
     def _use_entity(self, dummy: Entity, command, ctx) -> None:
         self._record(dummy, self._entity(command.entity, ctx), "interaction", "using an item on")

@@ -14,6 +14,7 @@ entity's NBT fields as the game saves them (``Health``, ``attributes``, ``active
   health dies (it is removed at once: its 20-tick death animation is not modelled).
 - Effects (LivingEntity.addEffect, MobEffectInstance.update/tick): ``give_effect``, ``clear_effects``;
   ``tick_living(state)`` counts every effect down once per tick and drops the expired ones.
+- A player's attack (Player.attack, no items): ``attack``; ``reset_attack_strength`` when it joins.
 - Experience (Player.giveExperiencePoints/giveExperienceLevels/setExperiencePoints):
   ``add_points``, ``add_levels``, ``set_points``, ``set_levels``, ``query_points``, ``xp_needed``.
 
@@ -30,6 +31,7 @@ import weakref
 import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
+from emulator.world import statistics
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.semantics import wrap32
 
@@ -440,3 +442,39 @@ def query_points(player) -> int:
 
 def query_levels(player) -> int:
     return _xp(player)[0]
+
+
+# ---------------------------------------------------------------------- a player's attack
+# Player.attackStrengthTicker: the game time it was last reset (join, attack), per player
+_SWUNG: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def reset_attack_strength(state, player) -> None:
+    _SWUNG[player] = state.gametime
+
+
+def attack(state, player, target) -> bool:
+    """Player.attack without items, knockback or critical hits (a player standing on the ground):
+    the attack damage attribute times 0.2 + 0.8 x strength², the strength
+    (getAttackStrengthScale(0.5)) growing with the ticks since the last attack or join over
+    20 / attack_speed; ``minecraft.custom:minecraft.damage_dealt`` counts the health taken x 10
+    (rounded), a kill counts ``killed:<type>``, ``mob_kills`` or ``player_kills`` and
+    ``totalKillCount``. A target that is not living is not attackable: nothing happens.
+    Returns whether the target was hurt."""
+    if not is_living(target.type) or target is player:
+        return False
+    ticker = state.gametime - _SWUNG.get(player, state.gametime)
+    delay = F32(1.0 / attribute_value(player, "attack_speed") * 20.0)
+    strength = min(max(F32((F32(ticker) + F32(0.5)) / delay), F32(0.0)), F32(1.0))
+    damage = F32(attribute_value(player, "attack_damage")) * (F32(0.2) + strength * strength * F32(0.8))
+    reset_attack_strength(state, player)
+    before = F32(health(target))
+    if not hurt(state, target, float(damage)):
+        return False
+    dealt = before - F32(health(target))
+    statistics.award(state, player, statistics.stat_name("custom", "damage_dealt"), math.floor(dealt * F32(10.0) + F32(0.5)))
+    if health(target) <= 0:
+        statistics.award(state, player, statistics.stat_name("killed", target.type))
+        statistics.award(state, player, statistics.stat_name("custom", "player_kills" if target.is_player else "mob_kills"))
+        statistics.award(state, player, "totalKillCount")
+    return True

@@ -91,7 +91,6 @@ def test_spawn_refuses_a_name_in_use_or_no_name(pack):
     ("use block ~ ~ ~ up", "player inventories (held items) are not modelled"),
     ("drop all", "player inventories (held items) are not modelled"),
     ("swap", "player inventories (held items) are not modelled"),
-    ("attack @e[type=pig,limit=1]", "attacking minecraft:pig is not modelled"),
     ("use entity @e[type=pig,limit=1]", "using an item on minecraft:pig is not modelled"),
     ("mine ~ ~-1 ~", "a survival player mining minecraft:stone drops its loot"),
 ])
@@ -99,6 +98,35 @@ def test_actions_the_emulator_cannot_model_fail_the_test(pack, action, reason):
     result = run(pack, f"# @dummy\nsummon pig ~3 ~ ~\nsetblock ~ ~-1 ~ stone\ndummy @s {action}\nsucceed\n")
     assert (result.status, result.line) == ("failed", 4)
     assert result.message.startswith(f"dummy @s {action}: not modelled: {reason}")
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_attack_hurts_a_mob_with_the_strength_of_the_swing(pack, backend):
+    """Player.attack with an empty hand: attack_damage 1 x (0.2 + 0.8 x strength²), the strength
+    (ticks since the last attack or join + 0.5) / 5 ticks at attack speed 4 (getAttackStrengthScale);
+    damage_dealt counts the health taken x 10, rounded; the kill counts killed:pig."""
+    result = run(pack, (
+        "scoreboard objectives add dealt minecraft.custom:minecraft.damage_dealt\n"
+        "scoreboard objectives add pigs minecraft.killed:minecraft.pig\n"
+        "scoreboard objectives add t dummy\n"
+        "dummy Alex spawn\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],Health:1.2f}\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"            # at once: 0.2 + 0.8 x 0.1² = 0.208
+        "assert score Alex dealt matches 2\n"
+        "assert data entity @e[tag=p,limit=1] {HurtTime:10}\n"
+        "execute store result score #h t run data get entity @e[tag=p,limit=1] Health 1000\n"
+        "assert score #h t matches 992\n"
+        "await delay 20\n"                                 # full strength, past the hurt cooldown
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert not entity @e[tag=p]\n"
+        "assert score Alex pigs matches 1\n"
+        "assert score Alex dealt matches 12\n"), backend)
+    assert result.status == "passed", result.report()
+
+
+def test_attacking_what_is_not_living_does_nothing(pack):
+    assert run(pack, "# @dummy\nsummon marker ~1 ~ ~\ndummy @s attack @e[type=marker,limit=1]\n"
+                     "assert entity @e[type=marker]\n").status == "passed"
 
 
 def test_mining_air_succeeds_without_effect(pack):
