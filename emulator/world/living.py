@@ -374,11 +374,13 @@ def xp_needed(level: int) -> int:
 
 
 def _xp(player) -> tuple[int, np.float32, int]:
+    """The level (the entity's ``level``, what ``level=`` selects), progress and total."""
     data = player.data
-    return int(_number(data.get("XpLevel"))), F32(_number(data.get("XpP"))), int(_number(data.get("XpTotal")))
+    return player.level, F32(_number(data.get("XpP"))), int(_number(data.get("XpTotal")))
 
 
 def _store_xp(player, level: int, progress, total: int) -> None:
+    player.level = level
     player.data.update(XpLevel=Int(level), XpP=Float(float(F32(progress))), XpTotal=Int(total))
 
 

@@ -24,7 +24,7 @@ import uuid as uuid_lib
 import numpy as np
 
 from emulator.world import living, statistics
-from mcfunction_parser.nbt import Byte
+from mcfunction_parser.nbt import Byte, Int
 
 
 def offline_uuid(name: str) -> tuple[int, int, int, int]:
@@ -46,6 +46,7 @@ def join(state, name: str, pos, rotation=(0.0, 0.0), gamemode: str = "survival",
     player = state.entities.add_player(name, tuple(float(c) for c in pos), rotation[0], rotation[1], gamemode, level)
     player.uuid = offline_uuid(name)
     player.data["OnGround"] = Byte(1 if on_ground else 0)
+    player.data["XpLevel"] = Int(level)
     living.reset_attack_strength(state, player)
     state.tags_version += 1  # the set of entities changed (the VM mirrors entity tags)
     return player
