@@ -24,7 +24,7 @@ options/EntitySelectorOptions.java):
   (wrapped to -1), so ``x_rotation=10..`` also matches pitches below 0, as in the game.
 - ``tag=`` (empty) matches entities without tags; ``name`` compares the display name; ``nbt`` is a
   partial match on the entity NBT; ``gamemode``/``level`` only ever match players; ``team`` only
-  living entities (every type here except markers, displays, interactions and items).
+  living entities (emulator.world.living.NOT_LIVING lists the others).
 """
 from __future__ import annotations
 
@@ -33,16 +33,12 @@ from typing import Callable
 from mcfunction_parser import ast
 from emulator.world import mth
 from emulator.world.entities import ENTITY_TYPE_TAGS, Entity, EntityStore, entity_nbt
+from emulator.world.living import NOT_LIVING
 from emulator.world.errors import CommandFailure
 from emulator.world.nbt_ops import compare_nbt
 from emulator.world.source import Source
 
 UNLIMITED = 2**31 - 1
-NOT_LIVING = {"minecraft:marker", "minecraft:item_display", "minecraft:block_display",
-              "minecraft:text_display", "minecraft:interaction", "minecraft:item",
-              "minecraft:area_effect_cloud", "minecraft:item_frame", "minecraft:falling_block",
-              "minecraft:tnt", "minecraft:arrow", "minecraft:snowball", "minecraft:boat",
-              "minecraft:minecart"}
 
 
 def _no_scores(holder: str, objective: str) -> None:
