@@ -369,7 +369,7 @@ def tick_living(state) -> None:
 def xp_needed(level: int) -> int:
     """Player.getXpNeededForNextLevel."""
     if level >= 30:
-        return 112 + (level - 30) * 9
+        return wrap32(112 + (level - 30) * 9)  # int arithmetic: wraps for huge levels
     return 37 + (level - 15) * 5 if level >= 15 else 7 + level * 2
 
 
@@ -429,9 +429,9 @@ def set_points(player, amount: int) -> bool:
     """ExperienceCommand's ``set ... points``: refused at or above the points of the current
     level; else Player.setExperiencePoints (progress = amount / needed, at most (needed - 1) / needed)."""
     level, _, total = _xp(player)
-    needed = F32(xp_needed(level))
-    if amount >= needed:
+    if amount >= xp_needed(level):  # compared as ints
         return False
+    needed = F32(xp_needed(level))
     _store_xp(player, level, min(max(F32(amount) / needed, F32(0.0)), (needed - F32(1.0)) / needed), total)
     return True
 

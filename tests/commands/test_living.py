@@ -178,3 +178,12 @@ def test_armour_absorbs_damage(env):
     zombie = env.state.entities.summon("minecraft:zombie", (0, 0, 0))  # 2 armour points
     run(env, "damage @e[type=zombie,limit=1] 5")
     assert float(zombie.data["Health"]) == pytest.approx(20 - 5 * (1 - 0.4 / 25), rel=1e-6)
+
+
+def test_set_points_compares_as_ints_at_huge_levels(env):
+    """A library's trick for a full bar: at level 111111129 the level holds 1000000003 points, so
+    ``xp set 1000000000 points`` is allowed (int compare) and the float progress reads 1.0f."""
+    steve, ctx = player(env)
+    run(env, "xp set @s 111111129 levels", ctx)
+    assert run(env, "xp set @s 1000000000 points", ctx) == 1
+    assert float(steve.data["XpP"]) == 1.0
