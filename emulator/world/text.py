@@ -19,7 +19,10 @@ from decimal import ROUND_HALF_EVEN, Decimal
 
 import numpy as np
 
-from mcfunction_parser.nbt import Double, Float, to_snbt
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Compound, Double, Float, List, to_snbt
+from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.snbt import value as snbt_value
 
 
 def _java_text(value: float, shortest: str, reads_back) -> str:
@@ -72,14 +75,38 @@ def tag_as_string(tag) -> str:
     return to_snbt(tag)
 
 
-def plain_text(text: str) -> str:
-    """The plain text of a text component as written (a JSON string, list or ``{"text": ...}``
-    with its extras; a ``translate`` key stands for its translation), else the text as written."""
+def read_component(text: str):
+    """A text component as written: JSON, else SNBT (1.21.5+ commands write components as SNBT),
+    as plain Python values (dicts, lists, strings, numbers); None when it is neither."""
     try:
-        value = json.loads(text)
+        return json.loads(text)
     except ValueError:
-        return text
-    return _plain(value)
+        pass
+    reader = Reader(text, Loc("<text>", 1, 1), (1, 21, 5))
+    try:
+        value = snbt_value(reader)
+    except ParseError:
+        return None
+    return plain_value(value) if not text[reader.pos:].strip() else None
+
+
+def plain_value(tag):
+    """An NBT tag as the plain Python value a JSON component would have."""
+    if isinstance(tag, Compound):
+        return {k: plain_value(v) for k, v in tag.items()}
+    if isinstance(tag, List):
+        return [plain_value(v) for v in tag]
+    if isinstance(tag, str):
+        return str(tag)
+    return int(tag) if isinstance(tag, int) else float(tag)
+
+
+def plain_text(text: str) -> str:
+    """The plain text of a text component as written (a string, list or ``{"text": ...}`` with its
+    extras, in JSON or SNBT; a ``translate`` key stands for its translation), else the text as
+    written."""
+    value = read_component(text)
+    return text if value is None else _plain(value)
 
 
 def _plain(value) -> str:

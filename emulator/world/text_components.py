@@ -26,14 +26,13 @@ from emulator.world.state import WorldState
 from emulator.world import nbt_ops
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import CommandFailure
-from emulator.world.text import tag_as_string
+from emulator.world.text import plain_value, read_component, tag_as_string
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Compound, List
+from mcfunction_parser.nbt import Compound
 from mcfunction_parser.nbt_path import nbt_path
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.selectors import selector
-from mcfunction_parser.snbt import value as snbt_value
 
 _MESSAGE_SELECTOR = re.compile(r"@[spaern]")
 _RESOLVED = ("score", "selector", "nbt")
@@ -90,32 +89,11 @@ def tellraw_command(state: WorldState, cmd: ast.Tellraw, receivers: list[Entity]
 
 
 def resolved_text(text: str, state: WorldState, select: Select, receiver: Entity) -> str:
-    component = _read(text)
+    component = read_component(text)
     if component is None or not _needs_resolving(component):
         return text
     resolved = _resolve(component, _Resolver(state, select, receiver))
     return json.dumps(resolved, ensure_ascii=False, separators=(",", ":"))
-
-
-def _read(text: str):
-    try:
-        return json.loads(text)
-    except ValueError:
-        pass
-    try:
-        return _plain_value(snbt_value(Reader(text, Loc("<text>", 1, 1), (1, 21, 5))))
-    except ParseError:
-        return None
-
-
-def _plain_value(tag):
-    if isinstance(tag, Compound):
-        return {k: _plain_value(v) for k, v in tag.items()}
-    if isinstance(tag, List):
-        return [_plain_value(v) for v in tag]
-    if isinstance(tag, str):
-        return str(tag)
-    return int(tag) if isinstance(tag, int) else float(tag)
 
 
 def _needs_resolving(component) -> bool:
@@ -197,7 +175,7 @@ class _Resolver:
         parts = []
         for value in self._values(component):
             if self.state.version >= (1, 21, 5):
-                read = _plain_value(value)
+                read = plain_value(value)
             else:
                 try:
                     read = json.loads(tag_as_string(value))

@@ -113,3 +113,14 @@ def test_nbt_interpret_takes_the_tag_itself_from_1_21_5(tmp_path):
     emu.add_player("Alex")
     emu.call("t:main")
     assert plain(emu.log[0].text) == 'xy, w{"text":"z"}'
+
+
+@pytest.mark.parametrize("text, plain", [
+    ('{"text":"a","extra":[{"text":"b"}]}', "ab"),  # JSON
+    ('{text: "No log entries…", color: "gray"}', "No log entries…"),  # SNBT, as 1.21.5+ commands write it
+    ("['x', {text: 'y'}]", "xy"),
+    ("just words", "just words"),
+])
+def test_plain_text_reads_json_and_snbt_components(text, plain):
+    from emulator.world.text import plain_text
+    assert plain_text(text) == plain
