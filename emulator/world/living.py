@@ -304,10 +304,7 @@ def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, vi
     amplifier replaces it, the same amplifier with a longer duration extends it, a change of
     particles shows); False when nothing changed. Instant effects act at once and are not kept."""
     if effect_id in INSTANT:
-        if effect_id == "minecraft:instant_health":
-            heal(entity, float(4 << amplifier))
-        elif effect_id == "minecraft:instant_damage":
-            hurt(state, entity, float(6 << amplifier))
+        _instant(state, entity, effect_id, amplifier)
         return True
     current = _effect(entity, effect_id)
     if current is None:
@@ -323,6 +320,24 @@ def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, vi
         current["show_particles"] = Byte(int(visible))
         changed = True
     return changed
+
+
+UNDEAD = frozenset(f"minecraft:{n}" for n in (
+    "zombie", "husk", "drowned", "zombie_villager", "zombified_piglin", "zoglin", "zombie_horse", "skeleton",
+    "stray", "wither_skeleton", "bogged", "skeleton_horse", "phantom", "wither"))
+
+
+def _instant(state, entity, effect_id: str, amplifier: int) -> None:
+    """HealOrHarmMobEffect.applyInstantenousEffect: heal ``max(4 << amplifier, 0)`` or hurt
+    ``6 << amplifier`` (Java int shifts: the distance is taken mod 32 and the result wraps, so
+    amplifier 255 heals nothing); the undead take them the other way round."""
+    heals = (effect_id == "minecraft:instant_health") != (entity.type in UNDEAD)
+    if effect_id == "minecraft:saturation":
+        return  # food only (players' hunger is not modelled)
+    if heals:
+        heal(entity, float(max(wrap32(4 << (amplifier & 31)), 0)))
+    elif wrap32(6 << (amplifier & 31)) > 0:
+        hurt(state, entity, float(wrap32(6 << (amplifier & 31))))
 
 
 def clear_effects(entity, effect_id: str | None = None) -> bool:

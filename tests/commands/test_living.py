@@ -17,7 +17,7 @@ from emulator.world import living
 from emulator.world.context import Context
 from emulator.world.errors import CommandFailure
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Byte, Compound
+from mcfunction_parser.nbt import Byte, Compound, Float
 from mcfunction_parser.parse import parse_command
 
 
@@ -187,3 +187,16 @@ def test_set_points_compares_as_ints_at_huge_levels(env):
     run(env, "xp set @s 111111129 levels", ctx)
     assert run(env, "xp set @s 1000000000 points", ctx) == 1
     assert float(steve.data["XpP"]) == 1.0
+
+
+def test_instant_effects_shift_as_java_ints(env):
+    """HealOrHarmMobEffect: heal max(4 << amplifier, 0) with Java's int shift (distance mod 32):
+    amplifier 255 heals nothing, 28 heals 2^30; instant damage heals the undead."""
+    pig = env.state.entities.summon("minecraft:pig", (0, 0, 0), Compound(Health=Float(2.0)))
+    run(env, "effect give @e[type=pig] minecraft:instant_health 1 255")
+    assert float(pig.data["Health"]) == 2.0
+    run(env, "effect give @e[type=pig] minecraft:instant_health 1 28")
+    assert float(pig.data["Health"]) == 10.0  # up to its max health
+    zombie = env.state.entities.summon("minecraft:zombie", (0, 0, 0), Compound(Health=Float(5.0)))
+    run(env, "effect give @e[type=zombie] minecraft:instant_damage 1 0")
+    assert float(zombie.data["Health"]) == 9.0  # healed by 4 << 0, as instant health would
