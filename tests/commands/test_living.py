@@ -66,10 +66,15 @@ def test_set_points_is_refused_at_the_levels_maximum(env):
     assert run(env, "experience set @s 30 levels", ctx) == 1 and run(env, "xp query @s levels", ctx) == 30
 
 
-def test_xp_on_a_non_player_fails(env):
-    env.state.entities.summon("minecraft:pig", (0, 0, 0))
-    with pytest.raises(CommandFailure, match="Only players may be affected"):
-        run(env, "xp add @e 1")
+@pytest.mark.parametrize("entity, command, refusal", [
+    ("minecraft:pig", "xp add @e 1", "Only players may be affected"),
+    ("minecraft:marker", "effect give @e speed", "Unable to apply this effect"),  # not living
+    ("minecraft:marker", "attribute @e[limit=1] max_health get", "is not a valid entity"),
+])
+def test_commands_refuse_entities_they_cannot_act_on(env, entity, command, refusal):
+    env.state.entities.summon(entity, (0, 0, 0))
+    with pytest.raises(CommandFailure, match=refusal):
+        run(env, command)
 
 
 # ---------------------------------------------------------------------- effect
@@ -106,12 +111,6 @@ def test_effect_clear(env):
     assert run(env, "effect clear", ctx) == 1  # no targets: the executor
 
 
-def test_effects_skip_entities_that_are_not_living(env):
-    env.state.entities.summon("minecraft:marker", (0, 0, 0))
-    with pytest.raises(CommandFailure, match="Unable to apply this effect"):
-        run(env, "effect give @e speed")
-
-
 # ---------------------------------------------------------------------- attribute
 def test_attribute_defaults_modifiers_and_scale(env):
     _, ctx = player(env)
@@ -141,10 +140,7 @@ def test_attribute_range_and_reset(env):
     assert run(env, "attribute @s max_health base get", ctx) == 20
 
 
-def test_attribute_refusals(env):
-    env.state.entities.summon("minecraft:marker", (0, 0, 0), None)
-    with pytest.raises(CommandFailure, match="is not a valid entity"):
-        run(env, "attribute @e[type=marker,limit=1] max_health get")
+def test_attribute_a_mob_does_not_have(env):
     env.state.entities.summon("minecraft:pig", (0, 0, 0))
     with pytest.raises(CommandFailure, match="has no attribute"):
         run(env, "attribute @e[type=pig,limit=1] luck get")  # players have luck, mobs do not
