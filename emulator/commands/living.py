@@ -65,14 +65,6 @@ def _number(cmd, words: list, index: int, kind=float, default=None):
                              report=True) from None
 
 
-def _players(env, target, ctx) -> list:
-    """EntityArgument.getPlayers: every entity found must be a player."""
-    entities = found(env.state, target, ctx)
-    if any(not e.is_player for e in entities):
-        raise CommandFailure("argument.player.entities")
-    return entities
-
-
 def _resource(word: str) -> str:
     return word if ":" in word else f"minecraft:{word}"
 
@@ -84,14 +76,12 @@ def experience(env, cmd: ast.GenericCommand, ctx) -> int:
     action = words[0] if words else ""
     who = _target(cmd, words, 1, target)
     if action == "query":
-        [player] = [single(env.state, who, ctx)]
-        if not player.is_player:
-            raise CommandFailure("argument.player.entities")
+        player = single(env.state, who, ctx)  # the parser admits players only (EntityArgument.player)
         unit = words[2] if len(words) > 2 else ""
         return living.query_levels(player) if unit == "levels" else living.query_points(player)
     amount = _number(cmd, words, 2, int)
     unit = words[3] if len(words) > 3 else "points"
-    players = _players(env, who, ctx)
+    players = found(env.state, who, ctx)  # players only: the parser refuses other selectors
     if action == "add":
         for player in players:
             (living.add_levels if unit == "levels" else living.add_points)(player, amount)

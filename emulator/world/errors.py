@@ -92,7 +92,6 @@ MESSAGES = {
     "commands.drop.no_loot_table": "Entity {0} has no loot table",
     "arguments.item.overstacked": "{0} can only stack up to {1}",
     "arguments.item.tag.unknown": "Unknown item tag '{0}'",
-    "argument.player.entities": "Only players may be affected by this command, but the provided selector includes entities",
     "commands.experience.set.points.invalid": "Cannot set experience points above the maximum points for the player's current level",
     "commands.effect.give.failed": "Unable to apply this effect (target is either immune to effects, or has something stronger)",
     "commands.effect.clear.everything.failed": "Target has no effects to remove",

@@ -32,11 +32,11 @@ SUITE = {
         "assert data entity @s active_effects[{id:\"minecraft:glowing\",duration:-1}]\n"),
     "demo/test/attribute/modifier.mcfunction": (
         "# @dummy\n"
-        "attribute @s minecraft:attack_damage modifier add demo:boost 3 add_value\n"
-        "execute store result score #d t run attribute @s minecraft:attack_damage get\n"
+        "attribute @s minecraft:generic.attack_damage modifier add demo:boost 3 add_value\n"
+        "execute store result score #d t run attribute @s minecraft:generic.attack_damage get\n"
         "assert score #d t matches 4\n"
-        "attribute @s minecraft:attack_damage modifier remove demo:boost\n"
-        "execute store result score #d t run attribute @s minecraft:attack_damage get 10\n"
+        "attribute @s minecraft:generic.attack_damage modifier remove demo:boost\n"
+        "execute store result score #d t run attribute @s minecraft:generic.attack_damage get 10\n"
         "assert score #d t matches 10\n"),
     "demo/test/damage/cow.mcfunction": (
         "summon cow ~1 ~ ~ {Tags:[\"target\"]}\n"
