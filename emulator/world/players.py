@@ -48,14 +48,12 @@ def join(state, name: str, pos, rotation=(0.0, 0.0), gamemode: str = "survival",
     player.data["OnGround"] = Byte(1 if on_ground else 0)
     player.data["XpLevel"] = Int(level)
     living.reset_attack_strength(state, player)
-    state.tags_version += 1  # the set of entities changed (the VM mirrors entity tags)
     return player
 
 
 def leave(state, player) -> None:
     statistics.award(state, player, statistics.stat_name("custom", "leave_game"))
     state.entities.kill(player)
-    state.tags_version += 1
 
 
 def place(player, pos=None, rotation=None, on_ground: bool | None = None) -> None:
