@@ -10,6 +10,7 @@ from emulator.cli.params import OutputPath, write_output
 from emulator.testing import Summary, discover, run_suite
 from emulator.testing.discovery import DiscoveryError, selected
 from emulator.testing.junit import junit_xml
+from mcfunction_parser.gamedata.vanilla_tags import GameJarError
 
 
 @click.command("test")
@@ -22,7 +23,11 @@ from emulator.testing.junit import junit_xml
               help="A pack loaded beneath each pack under test (a library, another module it needs); repeatable.")
 @click.option("--together", is_flag=True,
               help="Load every pack under test into one world and run all their tests there, as a collection's CI does.")
-def test(paths, pattern, junit_file, backend, strict, with_packs, together) -> None:
+@click.option("--allow-unmodelled", is_flag=True,
+              help="A test meeting something the emulator does not model passes or fails as it ran (default: inconclusive).")
+@click.option("--game-jar", type=click.Path(exists=True, dir_okay=False), metavar="JAR",
+              help="The game's jar: its vanilla tags (#minecraft:...) load under the packs'.")
+def test(paths, pattern, junit_file, backend, strict, with_packs, together, allow_unmodelled, game_jar) -> None:
     """Run PackTest-format test files.
 
     PATHS: packs as folders or .zip files, folders in a pack, or test files."""
@@ -48,8 +53,12 @@ def test(paths, pattern, junit_file, backend, strict, with_packs, together) -> N
             summary.results.append(result)
             click.echo(result.report())
 
-        run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict,
-                  with_packs=with_packs, together=together)
+        try:
+            run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict,
+                      with_packs=with_packs, together=together, allow_unmodelled=allow_unmodelled,
+                      game_jar=game_jar)
+        except GameJarError as error:
+            raise click.UsageError(str(error)) from None
     if not summary.results and not stopped[0]:
         click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
                    + ") under " + ", ".join(paths), err=True)

@@ -24,10 +24,22 @@ def block_argument(text: str) -> BlockSpec:
         raise CommandFailure("dpemu.block.invalid", text, error, report=True) from None
 
 
+def block_tag_test(env):
+    """Membership in the world's block tags; an unknown pack tag fails the command
+    (BlockPredicateArgument: "Unknown block tag")."""
+    resources = env.state.resources
+
+    def in_tag(tag_id: str, block_id: str) -> bool:
+        if resources.tag("block", tag_id) is None and (resources.vanilla_tags or not tag_id.startswith("minecraft:")):
+            raise CommandFailure("arguments.block.tag.unknown", tag_id, report=True)
+        return resources.in_tag("block", tag_id, block_id)
+    return in_tag
+
+
 def if_block(env, cond: ast.IfBlock, ctx) -> int:
     """``if block POS BLOCK``: 1 when the block matches."""
     pos = block_pos(world_source(env.state, ctx), cond.pos)
-    return int(env.state.blocks.test(pos, block_argument(cond.block)))
+    return int(env.state.blocks.test(pos, block_argument(cond.block), block_tag_test(env)))
 
 
 def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
@@ -50,7 +62,8 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     block_filter = None
     if mode == "replace" and len(words) > 2:
         kept = block_argument(words[2])
-        block_filter = lambda pos: blocks.test(pos, kept)  # noqa: E731 - FillCommand's filter
+        in_tag = block_tag_test(env)
+        block_filter = lambda pos: blocks.test(pos, kept, in_tag)  # noqa: E731 - FillCommand's filter
     return blocks.fill(positions[0], positions[1], spec, mode, block_filter)
 
 

@@ -11,8 +11,12 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
+from emulator.world import predicates
+from mcfunction_parser.pack import conditions as pack_conditions
+
 from . import blocks, data, entities, items
-from emulator.world.errors import CommandFailure
+from .entities import executor
+from emulator.world.errors import CommandFailure, Unmodelled
 from .holders import objective, single_holder
 
 _COMPARE = {
@@ -43,7 +47,36 @@ def count(env, cond: ast.Condition, ctx) -> int:
         return items.count_items(env, cond, ctx)
     if isinstance(cond, ast.IfDimension):
         return int(ctx.dimension == cond.dimension)
-    raise CommandFailure("dpemu.unsupported", f"'{type(cond).__name__}'", report=True)
+    if isinstance(cond, ast.IfPredicate):
+        return int(if_predicate(env, cond.predicate, ctx))
+    raise Unmodelled(f"the condition '{type(cond).__name__}'")
+
+
+def if_predicate(env, predicate: str, ctx) -> bool:
+    """ExecuteCommand.checkCustomPredicate: the predicate (an id, or inline ``{...}``) with the
+    COMMAND parameters: the context's position as origin and its entity as ``this``. An unknown id
+    fails the command (ResourceOrIdArgument since 1.20.5, ResourceLocationArgument before)."""
+    state = env.state
+    version = state.version
+    if predicate[:1] in "{[":
+        try:
+            value = predicates.parse_inline(predicate)
+        except ValueError as error:
+            raise CommandFailure("argument.resource_or_id.failed_to_parse", error, report=True) from None
+        problem = pack_conditions.problem(value, version)
+        if problem:
+            raise CommandFailure("argument.resource_or_id.failed_to_parse", problem[0], report=True)
+    else:
+        value = state.resources.predicates.get(predicate)
+        if value is None:
+            if version >= (1, 20, 5):
+                raise CommandFailure("argument.resource_or_id.no_such_element", predicate, "minecraft:predicate",
+                                     report=True)
+            raise CommandFailure("predicate.unknown", predicate, report=True)
+    loot = predicates.LootContext(state, ctx.pos, this=executor(state, ctx), dimension=ctx.dimension)
+    if predicate[:1] not in "{[":
+        loot.visited.add(predicate)  # ConditionReference: a predicate reaching itself is false
+    return predicates.test(value, loot)
 
 
 def passes(env, cond: ast.Condition, ctx) -> bool:

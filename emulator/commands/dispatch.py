@@ -2,14 +2,23 @@
 result or raises :class:`~emulator.world.errors.CommandFailure`.
 
 ``function`` and ``return`` are control flow (each backend queues their work itself). A command
-the emulator does not model (``particle``, ``playsound`` ...) succeeds with result 1 and no
-effect, with a warning once per command in the source.
+the emulator does not model succeeds with result 1 and no effect, with a warning once per command
+in the source. Commands whose effect no pack can read back (:data:`NO_OBSERVABLE_EFFECT`: sounds,
+particles, titles, chat to players) stop there; any other is *unmodelled*: a test that runs one is
+inconclusive, since its pass or failure may hang on the missing effect.
 """
 from __future__ import annotations
 
 from mcfunction_parser import ast
 
 from . import blocks, bossbar, conditions, data, entities, items, living, scoreboard, server
+
+# Commands that only show or play something to players: no world state a pack can test changes
+# (their result, the number of players reached, is the one thing left unmodelled).
+NO_OBSERVABLE_EFFECT = frozenset({
+    "particle", "playsound", "stopsound", "title", "me", "msg", "tell", "w", "teammsg", "tm", "help",
+    "debug", "perf", "jfr", "save-all", "save-off", "save-on",
+})
 
 HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
             **items.HANDLERS}
@@ -29,5 +38,9 @@ def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:
 
 
 def _not_modelled(env, cmd: ast.Command) -> int:
-    env.warn(cmd, f"'{getattr(cmd, 'name', type(cmd).__name__)}' is not emulated: it succeeds without effect")
+    name = getattr(cmd, "name", type(cmd).__name__)
+    if name in NO_OBSERVABLE_EFFECT:
+        env.warn(cmd, f"'{name}' is not emulated: it succeeds without effect (none a pack can read back)")
+    else:
+        env.unmodelled(cmd, f"'{name}' is not emulated: it succeeds without effect")
     return 1

@@ -29,7 +29,8 @@ import numpy as np
 
 from emulator.world import relations, teleport
 from emulator.world.entities import ENTITY_TYPES, Entity, EntityStore, add_tag, remove_tag
-from emulator.world.selectors import SelectorQuery
+from emulator.world import predicates
+from emulator.world.selectors import SelectorQuery, SelectorWorld
 from emulator.world.source import Source
 from emulator.world.context import Context, SERVER
 from emulator.world.state import WorldState
@@ -116,8 +117,18 @@ def _query(state: WorldState, selector: ast.Selector) -> SelectorQuery:
     """A selector's tests are built once per AST node (nodes are immutable and live for the run)."""
     query = state.selector_cache.get(id(selector))
     if query is None or query[0] is not selector:
-        query = state.selector_cache[id(selector)] = (selector, SelectorQuery(selector))
+        query = state.selector_cache[id(selector)] = (selector, SelectorQuery(selector, selector_world(state)))
     return query[1]
+
+
+def selector_world(state: WorldState) -> SelectorWorld:
+    """The world's entity type tags and predicates, as selectors read them (``predicate=``:
+    EntitySelectorOptions, the entity as ``this`` at its own position)."""
+    resources = state.resources
+
+    def predicate(predicate_id: str, entity: Entity) -> bool:
+        return predicates.test_predicate(predicate_id, predicates.LootContext(state, entity.pos, this=entity))
+    return SelectorWorld(lambda tag, type_id: resources.in_tag("entity_type", tag, type_id), predicate)
 
 
 def select(state: WorldState, target, ctx: Context) -> list[Entity]:

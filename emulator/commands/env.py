@@ -8,8 +8,9 @@ backend:
   and ``function`` name them);
 - ``env.arith(op, a, b, exact)``: the int32 a score arithmetic stores (Java's wrapping), with a
   result that wrapped reported to the overflow sanitizer (:meth:`Env.overflow`);
-- ``env.warn(node, message)``: a warning for something the emulator does not model, once per
-  command or stage in the source (:meth:`Env.warning`).
+- ``env.warn(node, message)``: a warning, once per command or stage in the source
+  (:meth:`Env.warning`); ``env.unmodelled(node, message)``: the same for something the emulator
+  does not model whose effect a pack could observe (a test meeting one is inconclusive).
 
 A backend subclasses :class:`Env` to say where overflows and warnings go (the numba VM's host
 side at its current instruction, the reference interpreter at its current source). The base
@@ -36,14 +37,18 @@ class Env:
             self.overflow(op, a, b, exact)
         return wrap32(exact)
 
-    def warn(self, node, message: str) -> None:
+    def warn(self, node, message: str, unmodelled: bool = False) -> None:
         key = (node.loc.path, node.loc.line, node.loc.col)
         if key not in self._warned:
             self._warned.add(key)
-            self.warning(node, message)
+            self.warning(node, message, unmodelled)
+
+    def unmodelled(self, node, message: str) -> None:
+        """Something the emulator does not model met at ``node`` (its result may be wrong)."""
+        self.warn(node, message, unmodelled=True)
 
     def overflow(self, op: str, a: int, b: int, exact: int) -> None:
         """An arithmetic result that wrapped (the sanitizer's report; nothing by default)."""
 
-    def warning(self, node, message: str) -> None:
+    def warning(self, node, message: str, unmodelled: bool = False) -> None:
         """A warning's first occurrence (nothing by default)."""

@@ -39,9 +39,9 @@ class ReferenceEnv(Env):
             function = activation.function if activation else "<root>"
             self.state.overflows.append(Overflow(self.state.tick, function, self.where, op, a, b, exact, wrap32(exact)))
 
-    def warning(self, node, message: str) -> None:
+    def warning(self, node, message: str, unmodelled: bool = False) -> None:
         activation = self.source.activation if self.source else None
-        self.state.error(message, activation.frames(node.loc) if activation else (), severity="warning")
+        self.state.error(message, activation.frames(node.loc) if activation else (), "warning", unmodelled)
 
 
 def run_command(env: ReferenceEnv, cmd: ast.Command | ast.Condition, source: Source, where) -> int:

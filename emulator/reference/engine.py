@@ -300,7 +300,7 @@ class Interpreter:
             self.tracer.error(failure.message)
         if failure.report:
             frames = source.activation.frames(line.loc) if source and source.activation else ()
-            self.state.error(failure.message, frames)
+            self.state.error(failure.message, frames, unmodelled=failure.unmodelled)
 
     def _charge_call(self, queue: ExecutionQueue, function_id: str, caller: Activation | None, call_loc) -> None:
         """CallFunction's unit: on the caller's line, or, for a root's own call, on no line and in

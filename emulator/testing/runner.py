@@ -51,14 +51,14 @@ def shown_path(path) -> str:
     return Path(text).as_posix() if rel.startswith("..") else Path(rel).as_posix()
 
 
-def load_suite(files: list[TestFile], pattern: str | None = None, with_packs=(), together: bool = False):
+def load_suite(files: list[TestFile], pattern: str | None = None, with_packs=(), together: bool = False, game_jar=None):
     """Parse each pack once and its test files; yield ``(packs, [TestCase])`` per pack with the
     generated functions added to ``packs.functions``.
 
     ``with_packs`` (libraries, the other modules a pack needs) load first, beneath each pack under
     test, as a CI server loads them. ``together``: every pack under test loads into one world with
     them (in the order given, as a collection's CI runs all its modules' tests on one server), and
-    every test runs there."""
+    every test runs there. ``game_jar``: the game's jar (vanilla tags)."""
     by_pack: dict[Path, list[TestFile]] = {}
     for tf in selected(files, pattern):
         by_pack.setdefault(tf.pack_root, []).append(tf)
@@ -69,7 +69,7 @@ def load_suite(files: list[TestFile], pattern: str | None = None, with_packs=(),
     key = 0
     for root, pack_files in by_pack.items():
         under_test = list(root) if isinstance(root, tuple) else [root]
-        packs = load_packs([*extra, *(r for r in under_test if r not in extra)])
+        packs = load_packs([*extra, *(r for r in under_test if r not in extra)], game_jar=game_jar)
         cases = []
         for tf in pack_files:
             cases.append(read_test(tf.id, tf.path, shown_path(tf.path), f"t{key}", packs.version))
@@ -106,16 +106,17 @@ def _in_batches(cases: list[TestCase]) -> list[TestCase]:
 
 def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None = None,
               on_result: Callable[[TestResult], None] | None = None, on_load=None, strict: bool = False,
-              with_packs=(), together: bool = False) -> Summary:
+              with_packs=(), together: bool = False, allow_unmodelled: bool = False, game_jar=None) -> Summary:
     """Run every test in ``files`` (those whose id contains ``pattern``, case-insensitively);
     ``strict``: a runtime error during a test fails it; ``with_packs`` and ``together`` as
-    :func:`load_suite`."""
+    :func:`load_suite`; ``allow_unmodelled``: a test that met something the emulator does not
+    model passes or fails as it ran (else it is inconclusive)."""
     summary = Summary()
-    for packs, cases in load_suite(files, pattern, with_packs, together):
+    for packs, cases in load_suite(files, pattern, with_packs, together, game_jar):
         if on_load is not None:
             on_load(packs)
         for case in cases:
-            result = run_case(case, packs, backend, strict)
+            result = run_case(case, packs, backend, strict, allow_unmodelled)
             summary.results.append(result)
             if on_result is not None:
                 on_result(result)
@@ -135,7 +136,8 @@ def run_load(emu: Emulator) -> Emulator:
     return emu
 
 
-def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False) -> TestResult:
+def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False,
+             allow_unmodelled: bool = False) -> TestResult:
     result = TestResult(case.id, case.path, PASSED, optional=case.directives.optional)
     if case.errors:
         first = case.errors[0]
@@ -165,7 +167,15 @@ def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False
     result.ticks = emu.ticks
     result.seconds = time.perf_counter() - started
     errors = [d for d in emu.diagnostics if d.severity == "error"]
-    if result.status == PASSED and errors and strict:
+    unmodelled = [d for d in emu.diagnostics if d.unmodelled]
+    if result.status in (PASSED, FAILED) and unmodelled and not allow_unmodelled:
+        # what the test saw may hang on the missing behaviour: neither a pass nor a failure
+        first = unmodelled[0]
+        where = f"{first.frames[-1].loc}: " if first.frames else ""
+        verdict = f"the test {'passed' if result.status == PASSED else 'failed (' + result.message + ')'}"
+        result.status, result.message = INCONCLUSIVE, f"{where}{first.message}; {verdict}"
+        result.line = first.frames[-1].loc.line if first.frames else result.line
+    elif result.status == PASSED and errors and strict:
         result.status, result.message = FAILED, f"{len(errors)} runtime error(s) during the test (--strict)"
     # shown with the test: every diagnostic when it did not pass, the runtime errors when it did
     shown = emu.diagnostics if result.status != PASSED else errors

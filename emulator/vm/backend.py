@@ -61,7 +61,7 @@ class NumbaBackend:
         self.state = state
         self.sanitize = sanitize
         self.program = Program()
-        self.selectors = SelectorTables(state.scoreboard, state.entities.table)
+        self.selectors = SelectorTables(state.scoreboard, state.entities.table, state.resources)
         self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
                                  self.selectors)
         self.compiler.compile_all()
@@ -413,8 +413,8 @@ class NumbaBackend:
         self.state.overflows.append(Overflow(self.state.tick, self.program.function_of(pc), self.program.locs[pc],
                                              op, a, b, exact, wrap32(exact)))
 
-    def _report_here(self, message: str, severity: str) -> None:
-        self.state.error(message, self.traceback(self._current_pc), severity)
+    def _report_here(self, message: str, severity: str, unmodelled: bool = False) -> None:
+        self.state.error(message, self.traceback(self._current_pc), severity, unmodelled)
 
     def host_ops_run(self) -> list[HostRun]:
         """Every host op Python ran since load (or since ``host_runs.clear()``), in code order:

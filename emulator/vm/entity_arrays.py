@@ -6,7 +6,7 @@ into the VM's tables, interning their tag and type names in that table and their
 the scoreboard.
 
 Selectors the VM evaluates (:meth:`SelectorTables.selector`): ``@e @a @s @p @n`` with ``type``
-(``!``, and the vanilla ``#`` tags of :data:`~emulator.world.entities.ENTITY_TYPE_TAGS`), ``tag``
+(``!``, and ``#`` tags the world's resources resolve fully), ``tag``
 (any number, ``!``, the empty ``tag=``), ``scores``, ``x y z``, ``dx dy dz`` volumes,
 ``distance``, ``limit`` and ``sort=arbitrary|nearest|furthest``. A selector row and its floats are
 laid out as :mod:`emulator.vm.loop` describes (``S_*``, ``SF_*``); its tests are rows of ``tests``
@@ -20,7 +20,7 @@ import math
 import numpy as np
 
 from mcfunction_parser import ast
-from emulator.world.entities import ENTITY_TYPE_TAGS
+from emulator.world.resources import Resources
 from emulator.world.entity_table import EntityTable
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.vm.loop import (
@@ -38,9 +38,10 @@ _DELTAS = {"dx": 0, "dy": 1, "dz": 2}
 
 
 class SelectorTables:
-    def __init__(self, scoreboard, table: EntityTable) -> None:
+    def __init__(self, scoreboard, table: EntityTable, resources: Resources | None = None) -> None:
         self.scoreboard = scoreboard  # objectives of `scores=` are interned here
         self.table = table  # tag and type names are interned here
+        self.resources = resources or Resources()  # entity type tags (the packs' and the game's)
         self.sel_rows: list[list[int]] = []
         self.float_rows: list[list[float]] = []
         self.test_rows: list[list[int]] = []
@@ -101,7 +102,10 @@ class SelectorTables:
             else:
                 tests.append((TEST_NOTAGS, int(arg.negated), 0, 0))
         elif arg.key == "type" and arg.value.startswith("#"):
-            members = sorted(ENTITY_TYPE_TAGS.get(arg.value[1:], ()))
+            tag = self.resources.tag("entity_type", arg.value[1:])
+            if tag is None or tag.unknown:
+                return None  # the host evaluates it (an unknown tag, or one holding unknown vanilla tags)
+            members = sorted(tag.members)
             tests.append((TEST_TYPES, len(members), int(arg.negated), 0))
             tests.extend((TEST_MEMBER, self.table.type_id(m), 0, 0) for m in members)
         elif arg.key == "type":

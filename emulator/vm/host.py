@@ -55,7 +55,7 @@ class Host(Env):
     """Runs host ops against ``state``; ``report(message, severity)`` records a diagnostic at the
     current instruction, ``overflow(op, a, b, exact)`` a wrapped result under the sanitizer."""
 
-    def __init__(self, state: WorldState, functions: dict, tags, report: Callable[[str, str], None],
+    def __init__(self, state: WorldState, functions: dict, tags, report: Callable[[str, str, bool], None],
                  overflow: Callable[[str, int, int, int], None] | None = None) -> None:
         super().__init__(state, functions, tags)
         self.report = report
@@ -65,8 +65,8 @@ class Host(Env):
         if self._overflow is not None:
             self._overflow(op, a, b, exact)
 
-    def warning(self, node, message: str) -> None:
-        self.report(message, "warning")
+    def warning(self, node, message: str, unmodelled: bool = False) -> None:
+        self.report(message, "warning", unmodelled)
 
     def run_final(self, cmd: ast.Command | ast.Condition, ctx: Context) -> HostResult:
         """A command (or a condition ending an execute chain) run once for ``ctx``."""
@@ -103,4 +103,4 @@ class Host(Env):
 
     def _failed(self, failure: CommandFailure) -> None:
         if failure.report:
-            self.report(failure.message, "error")
+            self.report(failure.message, "error", failure.unmodelled)

@@ -11,7 +11,7 @@ Public API
   position but without centring, then floored.
 - ``BlockMap``: ``get(pos)``, ``entity(pos)`` (block entity compound or None),
   ``setblock(pos, spec, mode="replace")``, ``fill(start, end, spec, mode="replace", filter=None)``,
-  ``test(pos, spec, block_tags=None)`` (``execute if block``),
+  ``test(pos, spec, in_tag=None)`` (``execute if block``),
   ``compare_regions(start, end, destination, masked)`` (``execute if blocks``: the count or None),
   ``block_nbt(pos)`` and ``modify_block(pos, change)`` (the ``data`` block accessor).
 Failures raise ``CommandFailure`` with the game's messages.
@@ -190,11 +190,12 @@ class BlockMap:
             raise CommandFailure("commands.fill.failed")
         return count
 
-    def test(self, pos, spec: BlockSpec, block_tags: dict[str, set[str]] | None = None) -> bool:
-        """``execute if block``: id or tag, every written property equal, NBT a partial match."""
+    def test(self, pos, spec: BlockSpec, in_tag: Callable[[str, str], bool] | None = None) -> bool:
+        """``execute if block``: id or tag (``in_tag(tag_id, block_id)``), every written property
+        equal, NBT a partial match."""
         state = self.get(pos)
         if spec.is_tag:
-            if state.id not in (block_tags or {}).get(spec.id, set()):
+            if in_tag is None or not in_tag(spec.id, state.id):
                 return False
         elif state.id != spec.id:
             return False

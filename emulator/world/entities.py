@@ -3,7 +3,7 @@
 Public API
 - ``EntityType(id, width, height, eye_height)`` and ``entity_type(id)``: sizes from the game's
   ``EntityType`` table for the types datapacks commonly use (unknown ids get the game's builder
-  default 0.6 x 1.8, eyes at 0.85 x height). ``ENTITY_TYPE_TAGS``: a few vanilla entity type tags.
+  default 0.6 x 1.8, eyes at 0.85 x height).
 - ``Entity``: ``uuid`` (4 signed ints), ``type``, ``pos`` (3 doubles), ``yaw``/``pitch`` (float32),
   ``motion``, ``tags`` (set), ``custom_name`` (text as stored), ``data`` (every other NBT field),
   ``order`` (creation index), ``alive``; players also have ``player_name``, ``gamemode``, ``level``.
@@ -110,24 +110,6 @@ ENTITY_TYPES = {
         _type("minecart", 0.98, 0.7),
     )
 }
-
-# A few vanilla entity type tags (data/minecraft/tags/entity_type in 1.21).
-ENTITY_TYPE_TAGS = {
-    "minecraft:skeletons": {"minecraft:skeleton", "minecraft:stray", "minecraft:wither_skeleton",
-                            "minecraft:skeleton_horse", "minecraft:bogged"},
-    "minecraft:zombies": {"minecraft:zombie_horse", "minecraft:zombie", "minecraft:zombie_villager",
-                          "minecraft:zombified_piglin", "minecraft:zoglin", "minecraft:drowned",
-                          "minecraft:husk"},
-    "minecraft:arrows": {"minecraft:arrow", "minecraft:spectral_arrow"},
-    "minecraft:raiders": {"minecraft:evoker", "minecraft:pillager", "minecraft:ravager",
-                          "minecraft:vindicator", "minecraft:illusioner", "minecraft:witch"},
-    "minecraft:impact_projectiles": {"minecraft:arrow", "minecraft:spectral_arrow", "minecraft:firework_rocket",
-                                     "minecraft:snowball", "minecraft:fireball", "minecraft:small_fireball",
-                                     "minecraft:egg", "minecraft:trident", "minecraft:dragon_fireball",
-                                     "minecraft:wither_skull", "minecraft:wind_charge",
-                                     "minecraft:breeze_wind_charge"},
-}
-
 
 def entity_type(type_id: str) -> EntityType:
     """The type's size; an id outside the table gets the game builder's default size."""

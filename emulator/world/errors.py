@@ -63,6 +63,10 @@ MESSAGES = {
     "commands.bossbar.set.visibility.unchanged.hidden": "Nothing changed. The bossbar is already hidden",
     "commands.bossbar.set.visibility.unchanged.visible": "Nothing changed. The bossbar is already visible",
     "arguments.objective.notFound": "Unknown scoreboard objective '{0}'",
+    "arguments.block.tag.unknown": "Unknown block tag '{0}'",
+    "predicate.unknown": "Unknown predicate: {0}",
+    "argument.resource_or_id.no_such_element": "Can't find element '{0}' in registry '{1}'",
+    "argument.resource_or_id.failed_to_parse": "Failed to parse structure: {0}",
     "arguments.objective.readonly": "Scoreboard objective '{0}' is read-only",
     "arguments.operation.div0": "Cannot divide by zero",
     "argument.scoreHolder.empty": "No relevant score holders could be found",
@@ -105,6 +109,7 @@ MESSAGES = {
 
 EMULATOR_MESSAGES = {
     "dpemu.unsupported": "{0} is not supported yet",
+    "dpemu.unmodelled": "not modelled: {0}",
     "dpemu.selector.unsupported": "selector argument '{0}' is not supported",
     "dpemu.block.invalid": "invalid block '{0}': {1}",
     "dpemu.command.unreadable": "'{0}': {1}",
@@ -127,8 +132,20 @@ class CommandFailure(Exception):
     (division by zero, an unknown objective or function) or at a limit of the emulator (an
     unsupported stage) are reported."""
 
+    unmodelled = False  # the emulator does not model what failed (see :class:`Unmodelled`)
+
     def __init__(self, key: str, *args, report: bool = False) -> None:
         self.key = key
         self.message = (MESSAGES.get(key) or EMULATOR_MESSAGES[key]).format(*args)
         self.report = report
         super().__init__(self.message)
+
+
+class Unmodelled(CommandFailure):
+    """The command needs something the emulator does not model (a predicate condition, an
+    unknown vanilla tag ...): it fails, reported, and a test that meets it is inconclusive."""
+
+    unmodelled = True
+
+    def __init__(self, reason: str) -> None:
+        super().__init__("dpemu.unmodelled", reason, report=True)

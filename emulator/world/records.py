@@ -41,6 +41,8 @@ class RuntimeDiagnostic:
     message: str
     frames: tuple[Frame, ...] = ()
     severity: str = "error"
+    # something the emulator does not model was met (a test seeing one is inconclusive)
+    unmodelled: bool = False
 
     def format(self) -> str:
         where = str(self.frames[-1].loc) if self.frames else "<run>"
@@ -57,6 +59,7 @@ class RuntimeDiagnostic:
             "tick": self.tick,
             "severity": self.severity,
             "message": self.message,
+            "unmodelled": self.unmodelled,
             "traceback": [{"function": i.function, "where": str(i.loc)} if isinstance(i, Frame)
                           else {"folded": i.count, "functions": list(i.functions)}
                           for i in folded(tuple(reversed(self.frames)))],

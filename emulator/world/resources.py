@@ -1,56 +1,77 @@
-"""The data-driven resources of the loaded packs that commands read: loot tables, item modifiers
-and item tags.
+"""The packs' data-driven resources a running world reads (the game's ReloadableServerResources):
+loot tables, item modifiers, predicates, advancements and registry tags, from :class:`LoadedPacks`.
 
-``Resources.from_packs(packs)`` takes them from :func:`mcfunction_parser.load_packs`' result
-(only files that decoded: the game skips the others); ``Resources()`` is an empty world. ``random`` is the seeded source loot rolls and dropped items draw from (seed 0;
-not the game's own random sequence). ``item_tag(tag_id)`` is the one place an item tag is resolved: the packs' own
-``tags/item`` files (nested tags flattened, ``replace`` honoured); the game's vanilla item tags
-are not shipped, so using one no pack defines fails the command saying so (never a silent miss).
+- ``Resources.from_packs(packs)`` (only files that load: the game skips the others);
+  ``Resources()`` is an empty world's (only the built-in vanilla tags,
+  :data:`mcfunction_parser.gamedata.vanilla_tags.BUILTIN_TAGS`).
+- ``random``: the seeded source loot rolls and dropped items draw from (seed 0; not the game's own
+  random sequence).
+- ``tag(registry, tag_id)``: the flattened :class:`RegistryTag`, or None when no such tag loaded.
+- ``in_tag(registry, tag_id, value)``: membership; ``item_tag(tag_id)``: an item tag's members.
+  A ``#minecraft:`` tag the emulator does not know (no game jar given) raises
+  :class:`~emulator.world.errors.Unmodelled` unless ``value`` is among its known members, never a
+  silent "no".
 """
 from __future__ import annotations
 
 import random
 from dataclasses import dataclass, field
+from typing import Any
 
-from mcfunction_parser.ast import FunctionTag
-from mcfunction_parser.pack.tags import resolve_tag
-from emulator.world.errors import CommandFailure
-
-
-class _AnyItem:
-    """Every item id exists (the item registry is not modelled)."""
-
-    def __contains__(self, item_id) -> bool:
-        return True
+from emulator.world.errors import CommandFailure, Unmodelled
+from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS
+from mcfunction_parser.pack.registry_tags import RegistryTag
 
 
 @dataclass
 class Resources:
     loot_tables: dict = field(default_factory=dict)  # id -> JSON value
     item_modifiers: dict = field(default_factory=dict)
-    item_tags: dict[str, FunctionTag] = field(default_factory=dict)
     paths: dict[str, str] = field(default_factory=dict)  # "loot_table ns:id" -> the file, for messages
+    predicates: dict[str, Any] = field(default_factory=dict)  # id -> JSON value
+    advancements: dict[str, Any] = field(default_factory=dict)
+    tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)  # registry -> tag id -> tag
+    vanilla_tags: bool = False  # the game's own tags were loaded (from a game jar)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # loot rolls, dropped items
-    _resolved: dict[str, frozenset[str]] = field(default_factory=dict, repr=False)
 
     @classmethod
     def from_packs(cls, packs) -> "Resources":
-        tables, modifiers = getattr(packs, "loot_tables", {}), getattr(packs, "item_modifiers", {})
-        found = cls({k: d.value for k, d in tables.items()},
-                    {k: d.value for k, d in modifiers.items()}, dict(getattr(packs, "item_tags", {})))
+        tables, modifiers = packs.loot_tables, packs.item_modifiers
+        found = cls({k: d.value for k, d in tables.items()}, {k: d.value for k, d in modifiers.items()},
+                    predicates=dict(packs.predicates), advancements=dict(packs.advancements),
+                    tags={registry: dict(tags) for registry, tags in packs.registry_tags.items()},
+                    vanilla_tags=packs.vanilla_tags)
         for kind, docs in (("loot_table", tables), ("item_modifier", modifiers)):
             found.paths.update((f"{kind} {k}", d.path) for k, d in docs.items())
         return found
 
+    def tag(self, registry: str, tag_id: str) -> RegistryTag | None:
+        found = self.tags.get(registry, {}).get(tag_id)
+        if found is None and not self.vanilla_tags and tag_id in BUILTIN_TAGS.get(registry, {}):
+            return RegistryTag(BUILTIN_TAGS[registry][tag_id])
+        return found
+
+    def in_tag(self, registry: str, tag_id: str, value: str) -> bool:
+        tag = self.tag(registry, tag_id)
+        if tag is not None and value in tag.members:
+            return True
+        self._known(registry, tag_id, tag)
+        return False
+
     def item_tag(self, tag_id: str) -> frozenset[str]:
-        """The tag's items. A tag no pack defines fails the command with a diagnostic: the game's
-        own tags are not shipped, and the game refuses a function naming an unknown tag."""
+        """The members of item tag ``tag_id`` (``#`` optional). A tag no pack defines fails the
+        command, as the game refuses a function naming an unknown tag (a vanilla one the emulator
+        does not know is not modelled)."""
         tag_id = tag_id.removeprefix("#")
-        if tag_id not in self.item_tags:
-            if tag_id.startswith("minecraft:"):
-                raise CommandFailure("dpemu.unsupported", f"the game's item tag #{tag_id}", report=True)
+        tag = self.tag("item", tag_id)
+        self._known("item", tag_id, tag)
+        if tag is None:
             raise CommandFailure("arguments.item.tag.unknown", tag_id, report=True)
-        members = self._resolved.get(tag_id)
-        if members is None:
-            members = self._resolved[tag_id] = frozenset(resolve_tag(self.item_tags, _AnyItem(), tag_id))
-        return members
+        return tag.members
+
+    def _known(self, registry: str, tag_id: str, tag: RegistryTag | None) -> None:
+        unknown = tag.unknown if tag is not None else (
+            (tag_id,) if tag_id.startswith("minecraft:") and not self.vanilla_tags else ())
+        if unknown:
+            raise Unmodelled(f"the vanilla {registry} tag #{unknown[0]} is not known without the game's data "
+                             "(pass --game-jar)")

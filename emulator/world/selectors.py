@@ -1,13 +1,13 @@
 """Target selectors (``@s @e @a @p @r @n`` with arguments) over an :class:`EntityStore`.
 
-``select(store, selector, source, scores=None, type_tags=None) -> list[Entity]``
+``select(store, selector, source, scores=None, world=None) -> list[Entity]``
 - ``selector``: a :class:`mcfunction_parser.ast.Selector`; ``source``: a :class:`Source`.
 - ``scores(holder, objective) -> int | None``: the score lookup for ``scores=`` (None: no score or
   no objective, which fails the entry as in the game).
-- ``type_tags``: entity type tags by id (``minecraft:skeletons`` ...), the pack's own tags merged
-  over :data:`ENTITY_TYPE_TAGS`.
+- ``world``: a :class:`SelectorWorld`: membership in entity type tags (``type=#...``) and the
+  predicate test (``predicate=...``); without it only the built-in vanilla tags are known.
 ``select_one(...)``: the single-entity form (fails "No entity was found" / "Only one entity ...").
-``SelectorQuery(selector, type_tags).run(store, source, scores)``: the same with the selector's
+``SelectorQuery(selector, world).run(store, source, scores)``: the same with the selector's
 tests built once, for callers that run one selector many times.
 
 Semantics (decompiled 1.21 commands/arguments/selector/EntitySelector.java, EntitySelectorParser.java,
@@ -22,6 +22,8 @@ options/EntitySelectorOptions.java):
 - ``distance`` compares squared distances to the entity's feet (inclusive).
 - ``x_rotation``/``y_rotation``: wrapped bounds, a missing min is 0 and a missing max is 359
   (wrapped to -1), so ``x_rotation=10..`` also matches pitches below 0, as in the game.
+- ``predicate=ID``: the loaded predicate with the entity as ``this`` and its position as origin;
+  an unknown id matches nothing (EntitySelectorOptions).
 - ``tag=`` (empty) matches entities without tags; ``name`` compares the display name; ``nbt`` is a
   partial match on the entity NBT; ``gamemode``/``level`` only ever match players; ``team`` only
   living entities (emulator.world.living.NOT_LIVING lists the others).
@@ -32,9 +34,15 @@ from typing import Callable
 
 from mcfunction_parser import ast
 from emulator.world import mth
+<<<<<<< HEAD
 from emulator.world.entities import ENTITY_TYPE_TAGS, Entity, EntityStore, entity_nbt
 from emulator.world.living import NOT_LIVING
 from emulator.world.errors import CommandFailure
+=======
+from emulator.world.entities import Entity, EntityStore, entity_nbt
+from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.resources import Resources
+>>>>>>> 429a59c (Predicates, registry tags and no silent gaps)
 from emulator.world.nbt_ops import compare_nbt
 from emulator.world.source import Source
 
@@ -43,6 +51,20 @@ UNLIMITED = 2**31 - 1
 
 def _no_scores(holder: str, objective: str) -> None:
     return None
+
+
+class SelectorWorld:
+    """What a selector reads from the world beyond the entities: type tags and predicates."""
+
+    def __init__(self, in_type_tag: Callable[[str, str], bool],
+                 predicate: Callable[[str, Entity], bool] | None = None) -> None:
+        self.in_type_tag = in_type_tag
+        self.predicate = predicate
+
+
+def _builtin_world() -> SelectorWorld:
+    resources = Resources()
+    return SelectorWorld(lambda tag, type_id: resources.in_tag("entity_type", tag, type_id))
 
 
 # (max results, players only, alive test, order) per selector variable.
@@ -87,12 +109,11 @@ def _intersects(box, other) -> bool:
 class SelectorQuery:
     """A selector compiled once (its tests built), run against any store and source."""
 
-    def __init__(self, selector: ast.Selector, type_tags: dict[str, set[str]] | None = None) -> None:
+    def __init__(self, selector: ast.Selector, world: SelectorWorld | None = None) -> None:
         self.limit, self.players_only, alive, self.order = _VARIABLES[selector.variable]
         self.current = selector.variable == "s"
         self.tests: list[Callable[[Entity], bool]] = [lambda e: e.alive] if alive else []
-        self.type_tags = dict(ENTITY_TYPE_TAGS)
-        self.type_tags.update(type_tags or {})
+        self.world = world or _builtin_world()
         self.scores: Callable[[str, str], int | None] = _no_scores
         self.coords: dict[str, float] = {}
         self.distance: ast.FloatRange | None = None
@@ -128,14 +149,16 @@ class SelectorQuery:
             self.tests.append(lambda e, v=value: e.is_player and v.contains(e.level))
         elif key == "team":
             self.tests.append(lambda e, v=value, n=neg: e.type not in NOT_LIVING and ((e.team or "") == v) != n)
+        elif key == "predicate" and self.world.predicate is not None:
+            test = self.world.predicate
+            self.tests.append(lambda e, v=value, n=neg: test(v, e) != n)
         else:
-            # an argument this library does not model (``predicate``, ``advancements``)
-            raise CommandFailure("dpemu.selector.unsupported", key, report=True)
+            raise Unmodelled(f"selector argument '{key}'")
 
     def _add_type(self, value: str, negated: bool) -> None:
         if value.startswith("#"):
-            members = self.type_tags.get(value[1:], set())
-            self.tests.append(lambda e: (e.type in members) != negated)
+            in_tag = self.world.in_type_tag
+            self.tests.append(lambda e: in_tag(value[1:], e.type) != negated)
             return
         if value == "minecraft:player" and not negated:
             self.players_only = True
@@ -184,8 +207,8 @@ class SelectorQuery:
 
 def select(store: EntityStore, selector: ast.Selector, source: Source,
            scores: Callable[[str, str], int | None] | None = None,
-           type_tags: dict[str, set[str]] | None = None) -> list[Entity]:
-    return SelectorQuery(selector, type_tags).run(store, source, scores)
+           world: SelectorWorld | None = None) -> list[Entity]:
+    return SelectorQuery(selector, world).run(store, source, scores)
 
 
 def select_one(store: EntityStore, selector: ast.Selector, source: Source, **options) -> Entity:

@@ -31,6 +31,7 @@ from __future__ import annotations
 
 import heapq
 import itertools
+import random
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -401,8 +402,9 @@ class WorldState:
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     bossbars: BossBars = field(default_factory=BossBars)
+    random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
     version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)
-    resources: Resources = field(default_factory=Resources)  # loot tables, item modifiers, item tags
+    resources: Resources = field(default_factory=Resources)  # loot, predicates, tags, advancements
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)
@@ -414,5 +416,6 @@ class WorldState:
         """A message every player online receives (PlayerList.broadcastSystemMessage / broadcastChatMessage)."""
         self.emit(kind, text, loc, tuple(p.uuid_string for p in self.entities.players()))
 
-    def error(self, message: str, frames: tuple[Frame, ...] = (), severity: str = "error") -> None:
-        self.diagnostics.append(RuntimeDiagnostic(self.tick, message, frames, severity))
+    def error(self, message: str, frames: tuple[Frame, ...] = (), severity: str = "error",
+              unmodelled: bool = False) -> None:
+        self.diagnostics.append(RuntimeDiagnostic(self.tick, message, frames, severity, unmodelled))

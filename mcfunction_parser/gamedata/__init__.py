@@ -8,6 +8,8 @@
     registry_release(version)      -> (release of that data, exact: is it this very release)
     block_states(block, version)   -> {property: (values...)} of a block id, None if unknown
 
+The game's registry *tags* are :mod:`.vanilla_tags` (read from the user's game jar).
+
 Sources, in order:
 
 1. ``$DPEMU_GAMEDATA/<release>/`` (default ``~/.local/share/dpemu/gamedata/<release>/``): the

@@ -1,5 +1,5 @@
-"""Loading data packs: pack.mcmeta, overlays, functions, function tags, advancement rewards and
-the ids of predicates.
+"""Loading data packs: pack.mcmeta, overlays, functions, function tags, registry tags (with the
+game's own from its jar, :mod:`mcfunction_parser.gamedata`), predicates and advancements.
 
 Several packs load together in order; a later pack overrides an earlier pack's function of the
 same id and its tag files merge on top (``replace`` honoured). All packs are read for one game
@@ -19,13 +19,17 @@ import zipfile
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
-from mcfunction_parser.ast import Function, FunctionTag
+from mcfunction_parser.ast import Function, FunctionTag, TagEntry
 from mcfunction_parser.diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
 from mcfunction_parser.pack.parallel import FunctionFile, parse_files
 from mcfunction_parser.pack import loot
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
+from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS, open_game_jar
+from mcfunction_parser.pack import advancements, conditions, registry_tags
+from mcfunction_parser.pack.registry_tags import RegistryTag
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from mcfunction_parser.pack.versions import (
     FILTER_FORMAT, LATEST_RELEASE, OVERLAYS_FORMAT, SINGULAR_FOLDERS_FORMAT, Format, Version, format_label,
@@ -59,10 +63,13 @@ class LoadedPacks:
     diagnostics: list[Diagnostic]
     failed_tags: dict[str, FailedTag] = field(default_factory=dict)  # tags the game refuses to load
     advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
-    predicates: set[str] = field(default_factory=set)  # ids of the predicate files
+    predicates: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
+    advancements: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
+    # registry -> tag id -> flattened tag: the game's own (from a game jar) merged under the packs'
+    registry_tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)
+    vanilla_tags: bool = False  # the game's own tags were read from a game jar
     loot_tables: dict[str, JsonDocument] = field(default_factory=dict)  # id -> its file (checked: pack.loot)
     item_modifiers: dict[str, JsonDocument] = field(default_factory=dict)
-    item_tags: dict[str, FunctionTag] = field(default_factory=dict)  # merged like function tags
     files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
     # functions the game refuses whole because a line does not parse (ServerFunctionLibrary logs
     # "Failed to load function" and leaves it out): parsed for ``dpemu check``, absent from
@@ -127,12 +134,13 @@ class _PackFiles:
 
 
 def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, workers: int | None = None,
-               on_function=None) -> LoadedPacks:
+               on_function=None, game_jar: str | Path | None = None) -> LoadedPacks:
     """Load packs (folders or .zip files) in order; later ones override. ``mc_version``
     ("1.21.4") overrides the packs' own version; an unknown or malformed one raises ValueError.
     ``workers``: processes parsing functions beside this one (0: none; None: one per other core
     when there are many lines; see pack.parallel), the result the same either way.
-    ``on_function(done, total)`` hears each function file parsed (a progress bar)."""
+    ``on_function(done, total)`` hears each function file parsed (a progress bar). ``game_jar``: the
+    game's jar, whose vanilla tags load under the packs' (an unreadable one raises GameJarError)."""
     diagnostics: list[Diagnostic] = []
     opened = [(Path(p), str(p), _open_pack(Path(p), str(p), diagnostics)) for p in paths]
     opened = [(path, shown, root) for path, shown, root in opened if root is not None]
@@ -148,9 +156,9 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
         _apply_filters(packs, metas)
     _load_functions(packs, result, workers, on_function)
     _load_tags(packs, result)
+    _load_registry_tags(packs, result, game_jar)
+    _load_predicates(packs, result)
     _load_advancements(packs, result)
-    for pack in packs:
-        result.predicates.update(_resources(pack, ("predicate", "predicates"), ".json", diagnostics))
     _load_loot(packs, result)
     return result
 
@@ -372,40 +380,101 @@ def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
 
 def _load_loot(packs: list[_PackFiles], result: LoadedPacks) -> None:
     """Loot tables and item modifiers (a later pack's file replaces an earlier one), each checked
-    (:mod:`mcfunction_parser.pack.loot`); item tags merged as function tags are."""
+    (:mod:`mcfunction_parser.pack.loot`); one the game does not load is left out."""
     for folders, found, check in ((("loot_table", "loot_tables"), result.loot_tables, loot.check_loot_table),
                                   (("item_modifier", "item_modifiers"), result.item_modifiers, loot.check_modifier)):
-        chosen = {rid: (pack, rel) for pack in packs
-                  for rid, rel in _resources(pack, folders, ".json", result.diagnostics).items()}
-        for rid, (pack, rel) in chosen.items():
-            result.files += 1
-            doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
-            if doc is not None:
-                result.sources[doc.path] = split_lines(doc.text)
-                if check(doc, result.version, result.diagnostics):  # else the game does not load it
-                    found[rid] = doc
+        for rid, doc in _chosen_json(packs, folders, result):
+            if check(doc, result.version, result.diagnostics):
+                found[rid] = doc
+
+
+def _load_registry_tags(packs: list[_PackFiles], result: LoadedPacks, game_jar) -> None:
+    """Every registry's tags: the game's own first (from its jar), then each pack on top."""
+    merged: dict[str, dict[str, FunctionTag]] = {}
+    singular = uses_singular_folders(result.format)
+    if game_jar is not None:
+        root = open_game_jar(game_jar)
+        for path in _jar_tag_files(root):
+            parts = path.at.split("/", 3)  # data/<ns>/tags/<rest>
+            split = registry_tags.split_tag_path(parts[3])
+            if split is None:
+                continue
+            registry = registry_tags.registry_for_folder(split[0], True)[0]  # the jar's own names
+            registry_tags.read_registry_tag(merged, registry, f"{parts[1]}:{split[1]}", path,
+                                            f"{game_jar}!/{path.at}", {}, result.diagnostics)
+        result.vanilla_tags = True
+    else:  # the few vanilla tags the emulator knows without the game's data
+        for registry, tags in BUILTIN_TAGS.items():
+            for tag_id, members in tags.items():
+                entries = [TagEntry(member, False, True, Loc("<built-in>", 1, 1)) for member in sorted(members)]
+                merge_tag(merged.setdefault(registry, {}), tag_id, False, entries)
     for pack in packs:
-        for tag_id, rel in _resources(pack, ("tags/item", "tags/items"), ".json", result.diagnostics).items():
-            result.files += 1
-            parsed = read_tag_file(pack.read(rel), pack.shown_file(rel), result.diagnostics)
-            if parsed is not None:
-                merge_tag(result.item_tags, tag_id, parsed[1], parsed[2])
+        ignored_count: dict[str, tuple[int, str]] = {}
+        for rel in pack.files:
+            parts = rel.split("/", 3)
+            if len(parts) < 4 or parts[2] != "tags":
+                continue
+            split = registry_tags.split_tag_path(parts[3])
+            if split is None:
+                continue
+            folder, path = split
+            registry, instead = registry_tags.registry_for_folder(folder, singular)
+            if instead is not None:
+                key = f"data/{parts[1]}/tags/{folder}"
+                ignored_count[key] = (ignored_count.get(key, (0, ""))[0] + 1, f"data/{parts[1]}/tags/{instead}")
+                continue
+            tag_id = _resource_id(parts[1], path, pack.shown_file(rel), result.diagnostics)
+            if tag_id is not None:
+                result.files += 1
+                registry_tags.read_registry_tag(merged, registry, tag_id, pack.read(rel), pack.shown_file(rel),
+                                                result.sources, result.diagnostics)
+        for folder, (count, instead) in ignored_count.items():
+            result.diagnostics.append(Diagnostic(
+                WARNING, f"{count} file(s) in '{folder}/' ignored: {pack.target_label} reads '{instead}/' instead",
+                pack.shown(folder)))
+    result.registry_tags = registry_tags.flatten(merged, result.vanilla_tags, result.sources, result.diagnostics)
+
+
+def _jar_tag_files(root):
+    """The jar's tag files (``data/<ns>/tags/...``), in name order."""
+    archive = root.root
+    return [zipfile.Path(archive, name) for name in sorted(archive.namelist())
+            if name.startswith("data/") and name.endswith(".json") and name.count("/") >= 4
+            and name.split("/")[2] == "tags"]
+
+
+def _chosen_json(packs: list[_PackFiles], folders: tuple[str, str], result: LoadedPacks):
+    """``(id, document)`` of each JSON resource in ``folders`` (a later pack's file of the same id
+    replaces an earlier one); invalid JSON is an error with its line and column, and left out."""
+    chosen: dict[str, tuple[_PackFiles, str]] = {}
+    for pack in packs:
+        for resource_id, rel in _resources(pack, folders, ".json", result.diagnostics).items():
+            chosen[resource_id] = (pack, rel)
+    for resource_id, (pack, rel) in chosen.items():
+        result.files += 1
+        doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
+        if doc is not None:
+            result.sources[doc.path] = split_lines(doc.text)
+            yield resource_id, doc
+
+
+def _load_predicates(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """Predicate files the game loads; one it refuses (unknown condition type, missing field) is an
+    error and does not exist at run time, as in the game."""
+    for predicate_id, doc in _chosen_json(packs, ("predicate", "predicates"), result):
+        if conditions.validate(doc, result.version, f"predicate {predicate_id}", result.diagnostics):
+            result.predicates[predicate_id] = doc.value
 
 
 def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
-    """Record ``rewards.function`` of every advancement (a later pack's file of the same id
-    replaces an earlier one): those functions are reachable."""
-    chosen: dict[str, tuple[_PackFiles, str]] = {}
-    for pack in packs:
-        for advancement_id, rel in _resources(pack, ("advancement", "advancements"), ".json",
-                                              result.diagnostics).items():
-            chosen[advancement_id] = (pack, rel)
-    for pack, rel in chosen.values():
-        result.files += 1
-        doc = load_json(pack.read(rel), pack.shown_file(rel), result.diagnostics)
-        rewards = doc.value.get("rewards") if doc is not None and isinstance(doc.value, dict) else None
+    """Advancements the game loads (their criteria checked by :mod:`.advancements`), and the
+    ``rewards.function`` of each: those functions are reachable."""
+    for advancement_id, doc in _chosen_json(packs, ("advancement", "advancements"), result):
+        if not advancements.validate(doc, result.version, f"advancement {advancement_id}", result.diagnostics):
+            continue
+        result.advancements[advancement_id] = doc.value
+        rewards = doc.value.get("rewards")
         reward = rewards.get("function") if isinstance(rewards, dict) else None
         if isinstance(reward, str):
-            result.sources[doc.path] = split_lines(doc.text)
             loc = doc.loc_at(max(doc.find_string(reward, doc.find_string("rewards")), 0))
             result.advancement_rewards.setdefault(normalise_id(reward), []).append(loc)

@@ -37,16 +37,17 @@ def normalise_id(text: str) -> str:
     return text if ":" in text else f"minecraft:{text}"
 
 
-def read_tag_file(path: PackPath, shown: str, diagnostics: list[Diagnostic]
+def read_tag_file(path: PackPath, shown: str, diagnostics: list[Diagnostic], kind: str = "function tag"
                   ) -> tuple[JsonDocument, bool, list[TagEntry]] | None:
-    """Parse one tag file: (document, replace flag, entries); None if unusable (diagnosed)."""
+    """Parse one tag file: (document, replace flag, entries); None if unusable (diagnosed).
+    ``kind`` names the tag in messages (``function tag``, ``block tag`` ...)."""
     doc = load_json(path, shown, diagnostics)
     if doc is None:
         return None
     root = doc.value
     if not isinstance(root, dict) or not isinstance(root.get("values"), list):
         diagnostics.append(doc.diagnostic(
-            ERROR, 'invalid function tag: expected an object with a "values" list',
+            ERROR, f'invalid {kind}: expected an object with a "values" list',
             doc.find_string("values")))
         return None
     replace = root.get("replace", False)

@@ -142,7 +142,7 @@ def test_unreferenced_functions_are_infos(tmp_path):
         fn("load"): "function a:called\nschedule function a:later 1s\n",
         fn("called"): "say c\n", fn("later"): "say l\n", fn("reward"): "say r\n",
         fn("orphan"): "say o\n", fn("recursive"): "function a:recursive\n",
-        "data/a/advancement/adv.json": '{"criteria": {}, "rewards": {"function": "a:reward"}}'})
+        "data/a/advancement/adv.json": '{"criteria": {"t": {"trigger": "tick"}}, "rewards": {"function": "a:reward"}}'})
     result = check_packs([root])
     assert sorted(messages(result, "info")) == [
         f"function a:{name} is never referenced (no tag, function, schedule or advancement reward "
@@ -220,9 +220,9 @@ def test_generated_corpus_checks_without_errors(tmp_path):
 
 
 def test_advancement_rewards_must_exist_and_later_packs_replace_advancements(tmp_path):
-    first = write(tmp_path / "first", {"data/a/advancement/adv.json": '{"rewards": {"function": "a:old"}}',
-                                       fn("old"): "say old\n"})
-    second = write(tmp_path / "second", {"data/a/advancement/adv.json": '{"criteria": {},\n'
+    first = write(tmp_path / "first", {"data/a/advancement/adv.json": '{"criteria": {"t": {"trigger": "tick"}},'
+                                       ' "rewards": {"function": "a:old"}}', fn("old"): "say old\n"})
+    second = write(tmp_path / "second", {"data/a/advancement/adv.json": '{"criteria": {"t": {"trigger": "tick"}},\n'
                                          ' "rewards": {"function": "a:gone"}}'})
     result = check_packs([first, second])
     [error] = result.of("error")

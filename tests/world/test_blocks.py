@@ -66,8 +66,8 @@ def test_if_block_predicates():
     assert not world.test((0, 0, 0), parse_block("chest[facing=west]"))
     assert world.test((0, 0, 0), parse_block('chest{Lock:"k"}'))
     assert not world.test((0, 0, 0), parse_block('chest{Lock:"z"}'))
-    assert not world.test((0, 0, 0), parse_block("#my:boxes"), {})
-    assert world.test((0, 0, 0), parse_block("#my:boxes"), {"my:boxes": {"minecraft:chest"}})
+    assert not world.test((0, 0, 0), parse_block("#my:boxes"))
+    assert world.test((0, 0, 0), parse_block("#my:boxes"), lambda tag, block: (tag, block) == ("my:boxes", "minecraft:chest"))
 
 
 def test_if_blocks_counts_or_fails():

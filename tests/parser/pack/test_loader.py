@@ -133,7 +133,9 @@ def test_one_megabyte_line(make_pack):
 
 
 def test_advancement_rewards_are_recorded(make_pack):
-    root = make_pack(files={"data/a/advancement/got.json": '{"criteria": {},\n "rewards": {"function": "a:reward"}}',
+    # Advancement.CODEC: "Advancement criteria cannot be empty"
+    root = make_pack(files={"data/a/advancement/got.json": '{"criteria": {"t": {"trigger": "minecraft:tick"}},\n'
+                                                            ' "rewards": {"function": "a:reward"}}',
                             "data/a/advancements/old.json": '{"rewards": {"function": "a:old"}}'})
     loaded = load_packs([root])
     [loc] = loaded.advancement_rewards["a:reward"]

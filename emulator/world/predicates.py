@@ -1,0 +1,632 @@
+"""Predicates: loot item conditions and the entity, location, block and item predicates inside them,
+evaluated against a :class:`LootContext`. Used by ``execute if predicate``, ``@e[predicate=...]``,
+PackTest's ``assert predicate``, loot tables and advancement criteria.
+
+API (small on purpose; loot tables call it with their own context)
+- ``LootContext(state, origin=None, this=None, ...)``: the game's LootContext parameters:
+  ``origin`` (x, y, z), the entities ``this``/``attacker``/``direct_attacker``/``attacking_player``,
+  ``tool`` (an item stack as its NBT compound: ``{id, count, components}``), ``block_state``
+  (:class:`~emulator.world.blocks.BlockState`), ``explosion_radius``, ``damage_source``;
+  ``dimension``; ``random`` (default: the level's, ``state.random``).
+- ``test(condition, ctx) -> bool``: one condition (a dict) or a list of them (all must hold).
+- ``test_predicate(predicate_id, ctx) -> bool``: a loaded predicate file by id (``reference``'s
+  semantics: an unknown id is false).
+- ``entity_matches(predicate, ctx, entity)``, ``location_matches(predicate, ctx, pos)``,
+  ``item_matches(predicate, ctx, stack)``, ``block_matches(predicate, ctx, pos)``: the sub-predicates.
+- ``number(provider, ctx)``, ``in_range(range, value, ctx)``: number providers and the int/float
+  ranges (``MinMaxBounds``, ``IntRange``).
+Anything a condition reads that the emulator does not model raises
+:class:`~emulator.world.errors.Unmodelled` with the reason: never a silent true or false.
+
+Sources (decompiled 1.21, net/minecraft/world/level/storage/loot/predicates/*, advancements/critereon/*):
+- AllOfCondition / AnyOfCondition: Util.allOf (empty: true) / Util.anyOf (empty: false);
+  InvertedLootItemCondition; ConditionReference (unknown id or a loop: false, logged).
+- LootItemEntityPropertyCondition: the entity of the target and the origin; no predicate: true;
+  EntityPredicate.matches: a missing entity fails; ``distance`` needs an origin.
+- EntityPredicate (type, distance, location/stepping_on/movement_affected_by, effects, nbt, flags,
+  equipment, type_specific, vehicle, passenger, targeted_entity, team, periodic_tick, slots).
+- DistancePredicate: float differences, x/y/z on their absolute values, horizontal/absolute on
+  squared lengths. LocationPredicate: position on the exact doubles, then the block at
+  BlockPos.containing. LocationCheck: origin + offset. ExecuteCommand.checkCustomPredicate: the
+  COMMAND parameter set (origin, this entity), the level's random.
+- EntityScoresCondition, ValueCheckCondition, TimeCheck (day time, ``period`` modulo),
+  WeatherCheck, LootItemRandomChanceCondition (nextFloat() < chance), LootItemKilledByPlayerCondition,
+  ExplosionCondition (no radius: true), MatchTool, LootItemBlockStatePropertyCondition,
+  StatePropertiesPredicate (exact value or min/max on the property's value).
+"""
+from __future__ import annotations
+
+import math
+import random as _random
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from emulator.world.entities import Entity, entity_nbt
+from emulator.world.errors import Unmodelled
+from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, String
+from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser import snbt
+
+F32 = np.float32
+_TARGETS = {"this": "this", "attacker": "attacker", "killer": "attacker", "direct_attacker": "direct_attacker",
+            "direct_killer": "direct_attacker", "attacking_player": "attacking_player",
+            "killer_player": "attacking_player"}
+
+
+@dataclass
+class LootContext:
+    state: Any  # emulator.world.state.WorldState
+    origin: tuple[float, float, float] | None = None
+    this: Entity | None = None
+    attacker: Entity | None = None
+    direct_attacker: Entity | None = None
+    attacking_player: Entity | None = None
+    tool: Compound | None = None
+    block_state: Any = None
+    explosion_radius: float | None = None
+    damage_source: Any = None
+    dimension: str = "minecraft:overworld"
+    random: _random.Random | None = None
+    visited: set[str] = field(default_factory=set)  # predicates being evaluated (reference loops)
+
+    @property
+    def rng(self) -> _random.Random:
+        return self.random or self.state.random
+
+    def entity(self, target: str) -> Entity | None:
+        return getattr(self, _TARGETS[target])
+
+
+def _kind(value: dict) -> str:
+    kind = value.get("condition") or value.get("type") or ""
+    return str(kind).removeprefix("minecraft:")
+
+
+# ---------------------------------------------------------------------- conditions
+def test(condition, ctx: LootContext) -> bool:
+    """One loot condition, or a list of them (all must hold, in order)."""
+    if isinstance(condition, list):
+        return all(test(c, ctx) for c in condition)
+    kind = _kind(condition)
+    handler = _CONDITIONS.get(kind)
+    if handler is None:
+        raise Unmodelled(f"predicate condition '{condition.get('condition')}'")
+    return handler(condition, ctx)
+
+
+def test_predicate(predicate_id: str, ctx: LootContext) -> bool:
+    """A loaded predicate by id; unknown ids and reference loops are false (ConditionReference)."""
+    predicate = ctx.state.resources.predicates.get(predicate_id)
+    if predicate is None or predicate_id in ctx.visited:
+        return False
+    ctx.visited.add(predicate_id)
+    try:
+        return test(predicate, ctx)
+    finally:
+        ctx.visited.discard(predicate_id)
+
+
+def _entity_properties(c: dict, ctx: LootContext) -> bool:
+    predicate = c.get("predicate")
+    if predicate is None:
+        return True
+    entity = ctx.entity(c["entity"])
+    return entity_matches(predicate, ctx, entity)
+
+
+def _entity_scores(c: dict, ctx: LootContext) -> bool:
+    entity = ctx.entity(c["entity"])
+    if entity is None:
+        return False
+    board = ctx.state.scoreboard
+    for objective, bounds in c.get("scores", {}).items():
+        if not board.exists(objective):
+            return False
+        value = board.get(entity.score_holder, objective)
+        if value is None or not in_range(bounds, value, ctx):
+            return False
+    return True
+
+
+def _random_chance(c: dict, ctx: LootContext) -> bool:
+    return ctx.rng.random() < number(c["chance"], ctx)
+
+
+def _enchanted_bonus(c: dict, ctx: LootContext) -> bool:
+    """LootItemRandomChanceWithEnchantedBonusCondition: the attacker's enchantment level picks the
+    chance; without an attacker the level is 0 (``unenchanted_chance``)."""
+    if ctx.attacker is not None:
+        raise Unmodelled("enchantment levels of an attacker's equipment (random_chance_with_enchanted_bonus)")
+    if "unenchanted_chance" in c:
+        return ctx.rng.random() < float(c["unenchanted_chance"])
+    return ctx.rng.random() < float(c.get("chance", 0.0))  # random_chance_with_looting: level 0
+
+
+def _value_check(c: dict, ctx: LootContext) -> bool:
+    return in_range(c["range"], int(number(c["value"], ctx)), ctx)
+
+
+def _time_check(c: dict, ctx: LootContext) -> bool:
+    time = ctx.state.daytime
+    if c.get("period") is not None:
+        time %= int(c["period"])
+    return in_range(c["value"], _int32(time), ctx)
+
+
+def _weather_check(c: dict, ctx: LootContext) -> bool:
+    """The world's weather is always clear here (``weather`` is not modelled: it is reported)."""
+    return all(c.get(key) in (None, False) for key in ("raining", "thundering"))
+
+
+def _location_check(c: dict, ctx: LootContext) -> bool:
+    if ctx.origin is None:
+        return False
+    ox, oy, oz = ctx.origin
+    pos = (ox + int(c.get("offsetX", 0)), oy + int(c.get("offsetY", 0)), oz + int(c.get("offsetZ", 0)))
+    return location_matches(c.get("predicate", {}), ctx, pos)
+
+
+def _block_state_property(c: dict, ctx: LootContext) -> bool:
+    state = ctx.block_state
+    if state is None or state.id != _id(c["block"]):
+        return False
+    return _state_matches(c.get("properties"), dict(state.properties), state.id)
+
+
+def _match_tool(c: dict, ctx: LootContext) -> bool:
+    if ctx.tool is None:
+        return False
+    return "predicate" not in c or item_matches(c["predicate"], ctx, ctx.tool)
+
+
+def _needs_parameter(parameter: str, what: str, absent: bool):
+    """Conditions on a parameter the emulator never provides (a damage source, an explosion):
+    their value without it, else not modelled."""
+    def check(c: dict, ctx: LootContext) -> bool:
+        if getattr(ctx, parameter) is None:
+            return absent
+        raise Unmodelled(what)
+    return check
+
+
+def _table_bonus(c: dict, ctx: LootContext) -> bool:
+    if ctx.tool is not None:
+        raise Unmodelled("enchantment levels of the tool (table_bonus)")
+    chances = c["chances"]
+    return ctx.rng.random() < float(chances[0]) if chances else False
+
+
+_CONDITIONS = {
+    "inverted": lambda c, ctx: not test(c["term"], ctx),
+    "all_of": lambda c, ctx: all(test(t, ctx) for t in c["terms"]),
+    "any_of": lambda c, ctx: any(test(t, ctx) for t in c["terms"]),
+    "alternatives": lambda c, ctx: any(test(t, ctx) for t in c["terms"]),
+    "reference": lambda c, ctx: test_predicate(_id(c["name"]), ctx),
+    "entity_properties": _entity_properties,
+    "entity_scores": _entity_scores,
+    "random_chance": _random_chance,
+    "random_chance_with_enchanted_bonus": _enchanted_bonus,
+    "random_chance_with_looting": _enchanted_bonus,
+    "value_check": _value_check,
+    "time_check": _time_check,
+    "weather_check": _weather_check,
+    "location_check": _location_check,
+    "block_state_property": _block_state_property,
+    "match_tool": _match_tool,
+    "killed_by_player": lambda c, ctx: ctx.attacking_player is not None,
+    "survives_explosion": _needs_parameter("explosion_radius", "explosions (survives_explosion)", True),
+    "damage_source_properties": _needs_parameter("damage_source", "damage sources (damage_source_properties)", False),
+    "table_bonus": _table_bonus,
+}
+
+
+# ---------------------------------------------------------------------- numbers and ranges
+def number(provider, ctx: LootContext) -> float:
+    """A NumberProvider: a constant, ``constant``, ``uniform``, ``binomial`` or ``score``."""
+    if isinstance(provider, (int, float)) and not isinstance(provider, bool):
+        return provider
+    if not isinstance(provider, dict):
+        raise Unmodelled(f"number provider {provider!r}")
+    kind = _kind(provider) or "constant"
+    if kind == "constant":
+        return provider["value"]
+    if kind == "uniform":  # UniformGenerator.getFloat: Mth.randomBetween(random, min, max)
+        lo, hi = number(provider["min"], ctx), number(provider["max"], ctx)
+        return lo + ctx.rng.random() * (hi - lo)
+    if kind == "binomial":
+        n, p = int(number(provider["n"], ctx)), number(provider["p"], ctx)
+        return sum(ctx.rng.random() < p for _ in range(n))
+    if kind == "score":
+        return _score_provider(provider, ctx)
+    raise Unmodelled(f"number provider type '{provider.get('type')}'")
+
+
+def _score_provider(provider: dict, ctx: LootContext) -> float:
+    """ScoreboardValue: the score of a fixed name or a context entity, times ``scale``; no score: 0."""
+    target = provider.get("target")
+    if isinstance(target, str):
+        target = {"type": "context", "target": target}
+    if _kind(target) == "fixed":
+        holder = target["name"]
+    else:
+        entity = ctx.entity(target["target"])
+        if entity is None:
+            return 0
+        holder = entity.score_holder
+    board = ctx.state.scoreboard
+    value = board.get(holder, provider["score"]) if board.exists(provider["score"]) else None
+    return 0 if value is None else value * float(provider.get("scale", 1.0))
+
+
+def in_range(bounds, value: float, ctx: LootContext | None = None) -> bool:
+    """MinMaxBounds / IntRange: an exact number or ``{min, max}`` (inclusive, each optional; an
+    IntRange's bounds may be number providers)."""
+    if isinstance(bounds, (int, float)) and not isinstance(bounds, bool):
+        return value == bounds
+    if not isinstance(bounds, dict):
+        return False
+    lo, hi = bounds.get("min"), bounds.get("max")
+    if isinstance(lo, dict):
+        lo = number(lo, ctx)
+    if isinstance(hi, dict):
+        hi = number(hi, ctx)
+    return (lo is None or value >= lo) and (hi is None or value <= hi)
+
+
+def _range_sq(bounds, value_sq: float) -> bool:
+    """MinMaxBounds.Doubles.matchesSqr: the bounds squared against a squared length."""
+    if isinstance(bounds, (int, float)):
+        bounds = {"min": bounds, "max": bounds}
+    lo, hi = bounds.get("min"), bounds.get("max")
+    return (lo is None or value_sq >= lo * lo) and (hi is None or value_sq <= hi * hi)
+
+
+def _int32(value: int) -> int:
+    return ((value + 2**31) & 0xFFFFFFFF) - 2**31
+
+
+def _id(text: str) -> str:
+    return text if ":" in text else "minecraft:" + text
+
+
+# ---------------------------------------------------------------------- entities
+def entity_matches(predicate, ctx: LootContext, entity: Entity | None) -> bool:
+    """EntityPredicate.matches(level, ctx.origin, entity); a list is a ContextAwarePredicate of
+    loot conditions run with the entity as ``this`` at its position."""
+    if isinstance(predicate, list):
+        inner = LootContext(ctx.state, entity.pos if entity else None, this=entity, dimension=ctx.dimension,
+                            random=ctx.random, visited=ctx.visited)
+        return entity is not None and test(predicate, inner)
+    if entity is None:
+        return False
+    for key, value in predicate.items():
+        check = _ENTITY_FIELDS.get(key)
+        if check is None:
+            if key in _ENTITY_UNMODELLED:
+                raise Unmodelled(f"entity predicate field '{key}'")
+            continue  # the codec ignores unknown fields
+        if not check(value, ctx, entity):
+            return False
+    return True
+
+
+def _type_matches(value, ctx: LootContext, entity: Entity) -> bool:
+    return _holder_set(value, "entity_type", entity.type, ctx)
+
+
+def _holder_set(value, registry: str, member: str, ctx: LootContext) -> bool:
+    """A HolderSet: an id, ``#tag`` or a list of ids."""
+    if isinstance(value, list):
+        return member in {_id(v) for v in value}
+    if isinstance(value, str) and value.startswith("#"):
+        return ctx.state.resources.in_tag(registry, _id(value[1:]), member)
+    return member == _id(str(value))
+
+
+def _distance(value: dict, ctx: LootContext, entity: Entity) -> bool:
+    if ctx.origin is None:
+        return False
+    dx, dy, dz = (float(F32(a - b)) for a, b in zip(ctx.origin, entity.pos))
+    for axis, d in (("x", dx), ("y", dy), ("z", dz)):
+        if axis in value and not in_range(value[axis], abs(d)):
+            return False
+    if "horizontal" in value and not _range_sq(value["horizontal"], dx * dx + dz * dz):
+        return False
+    return "absolute" not in value or _range_sq(value["absolute"], dx * dx + dy * dy + dz * dz)
+
+
+def _nbt(value, ctx: LootContext, entity: Entity) -> bool:
+    """NbtPredicate: the entity's saved NBT (a player's with its SelectedItem), a partial match."""
+    return compare_nbt(_parse_snbt(value), entity_nbt(entity))
+
+
+def _parse_snbt(value) -> Compound:
+    if isinstance(value, dict):
+        return json_to_nbt(value)
+    reader = Reader(str(value), Loc("<predicate>", 1, 1), (1, 21, 0))
+    try:
+        return snbt.compound(reader)
+    except ParseError as error:
+        raise Unmodelled(f"NBT {value!r} does not parse: {error.message}") from None
+
+
+def nbt_to_json(value):
+    """An SNBT value (an inline predicate) as the JSON the codecs read: numbers, strings, lists and
+    objects (a byte stays a number: the codecs read 1b as true)."""
+    if isinstance(value, dict):
+        return {str(k): nbt_to_json(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [nbt_to_json(v) for v in value]
+    if isinstance(value, str):
+        return str(value)
+    return float(value) if isinstance(value, float) else int(value)
+
+
+def parse_inline(text: str):
+    """An inline predicate (``execute if predicate {...}``, 1.20.5+): SNBT read as JSON.
+    Raises ValueError when it does not parse."""
+    reader = Reader(text, Loc("<predicate>", 1, 1), (1, 21, 0))
+    try:
+        value = snbt.value(reader)
+    except ParseError as error:
+        raise ValueError(error.message) from None
+    return nbt_to_json(value)
+
+
+def json_to_nbt(value):
+    """A JSON value as the codecs read it into NBT (JsonOps -> NbtOps): booleans are bytes,
+    integers ints, other numbers doubles."""
+    if isinstance(value, bool):
+        return Byte(int(value))
+    if isinstance(value, int):
+        return Int(value)
+    if isinstance(value, float):
+        return Double(value)
+    if isinstance(value, str):
+        return String(value)
+    if isinstance(value, list):
+        return List(json_to_nbt(v) for v in value)
+    return Compound((k, json_to_nbt(v)) for k, v in value.items())
+
+
+def _flags(value: dict, ctx: LootContext, entity: Entity) -> bool:
+    """EntityFlagsPredicate: each given flag must equal the entity's."""
+    for flag, wanted in value.items():
+        read = _FLAGS.get(flag)
+        if read is None:
+            raise Unmodelled(f"entity flag '{flag}'")
+        if read(entity) != bool(wanted):
+            return False
+    return True
+
+
+def _number_field(entity: Entity, key: str) -> float:
+    tag = entity.data.get(key)
+    return numeric_value(tag) if is_numeric(tag) else 0.0
+
+
+_FLAGS = {
+    "is_on_fire": lambda e: _number_field(e, "Fire") > 0 or bool(_number_field(e, "HasVisualFire")),
+    "is_sneaking": lambda e: e.sneaking,
+    "is_sprinting": lambda e: e.sprinting,
+    "is_on_ground": lambda e: bool(_number_field(e, "OnGround")),
+    "is_baby": lambda e: _number_field(e, "Age") < 0 or bool(_number_field(e, "IsBaby")),
+}
+
+
+def _effects(value: dict, ctx: LootContext, entity: Entity) -> bool:
+    """MobEffectsPredicate over the entity's ``active_effects`` (as ``effect give`` saves them)."""
+    active = {}
+    for effect in entity.data.get("active_effects", []):
+        if isinstance(effect, dict) and "id" in effect:
+            active[_id(str(effect["id"]))] = effect
+    for effect_id, wanted in value.items():
+        found = active.get(_id(effect_id))
+        if found is None:
+            return False
+        for key, field_name in (("amplifier", "amplifier"), ("duration", "duration")):
+            if key in wanted and not in_range(wanted[key], numeric_value(found.get(field_name, Int(0)))):
+                return False
+        for key, field_name in (("ambient", "ambient"), ("visible", "show_particles")):
+            if key in wanted and bool(numeric_value(found.get(field_name, Byte(0)))) != bool(wanted[key]):
+                return False
+    return True
+
+
+def _location_field(key: str):
+    """``location`` (the entity's position), ``stepping_on`` (EntityPredicate.LocationWrapper:
+    getOnPos, 0.2 below the feet) and ``movement_affected_by`` (0.500001 below)."""
+    drop = {"location": 0.0, "stepping_on": 0.2, "movement_affected_by": 0.500001}[key]
+
+    def check(value: dict, ctx: LootContext, entity: Entity) -> bool:
+        x, y, z = entity.pos
+        return location_matches(value, ctx, (x, y - drop, z))
+    return check
+
+
+def _team(value, ctx: LootContext, entity: Entity) -> bool:
+    return entity.team is not None and entity.team == value
+
+
+def _vehicle(value, ctx: LootContext, entity: Entity) -> bool:
+    return entity_matches(value, ctx, entity.vehicle)
+
+
+def _passenger(value, ctx: LootContext, entity: Entity) -> bool:
+    return any(entity_matches(value, ctx, p) for p in entity.passengers)
+
+
+def _type_specific(value: dict, ctx: LootContext, entity: Entity) -> bool:
+    kind = _kind(value)
+    if kind == "player":
+        return _player(value, ctx, entity)
+    if kind == "slime":  # SlimePredicate: a slime or magma cube whose Size + 1 is in range
+        if entity.type not in ("minecraft:slime", "minecraft:magma_cube"):
+            return False
+        return in_range(value.get("size", {}), int(_number_field(entity, "Size")) + 1)
+    raise Unmodelled(f"type_specific predicate '{value.get('type')}'")
+
+
+def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
+    """PlayerPredicate: the entity must be a player; gamemode and level are modelled."""
+    if not entity.is_player:
+        return False
+    for key, wanted in value.items():
+        if key == "type":
+            continue
+        if key == "gamemode":
+            modes = wanted if isinstance(wanted, list) else [wanted]
+            if entity.gamemode not in modes:
+                return False
+        elif key == "level":
+            if not in_range(wanted, entity.level):
+                return False
+        else:
+            raise Unmodelled(f"player predicate field '{key}'")
+    return True
+
+
+_ENTITY_FIELDS = {
+    "type": _type_matches,
+    "distance": _distance,
+    "nbt": _nbt,
+    "flags": _flags,
+    "effects": _effects,
+    "location": _location_field("location"),
+    "stepping_on": _location_field("stepping_on"),
+    "movement_affected_by": _location_field("movement_affected_by"),
+    "team": _team,
+    "vehicle": _vehicle,
+    "passenger": _passenger,
+    "type_specific": _type_specific,
+    "player": lambda v, ctx, e: _player(v, ctx, e),  # before 1.19: a top-level player predicate
+}
+_ENTITY_UNMODELLED = {"equipment", "targeted_entity", "periodic_tick", "slots", "movement", "fishing_hook",
+                      "lightning_bolt", "catType", "components", "predicates"}
+
+
+# ---------------------------------------------------------------------- locations and blocks
+def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
+    """LocationPredicate.matches at exact ``pos``: position ranges, dimension, then the block and
+    fluid at BlockPos.containing(pos)."""
+    position = predicate.get("position", {})
+    for axis, value in zip("xyz", pos):
+        if axis in position and not in_range(position[axis], value):
+            return False
+    if "dimension" in predicate and _id(predicate["dimension"]) != ctx.dimension:
+        return False
+    block_pos = tuple(math.floor(v) for v in pos)
+    if "block" in predicate and not block_matches(predicate["block"], ctx, block_pos):
+        return False
+    if "fluid" in predicate and not _fluid_matches(predicate["fluid"], ctx, block_pos):
+        return False
+    for key in ("biomes", "biome", "structures", "structure", "feature", "smokey", "light", "can_see_sky"):
+        if key in predicate:
+            raise Unmodelled(f"location predicate field '{key}'")
+    return True
+
+
+def block_matches(predicate: dict, ctx: LootContext, pos) -> bool:
+    """BlockPredicate: ``blocks`` (id, list or #tag; ``block``/``tag`` before 1.20.5), ``state``,
+    ``nbt`` (the block entity's, partial)."""
+    blocks = ctx.state.blocks
+    state = blocks.get(pos)
+    wanted = predicate.get("blocks", predicate.get("block"))
+    if "tag" in predicate:
+        wanted = "#" + predicate["tag"]
+    if wanted is not None and not _holder_set(wanted, "block", state.id, ctx):
+        return False
+    if "state" in predicate and not _state_matches(predicate["state"], dict(state.properties), state.id):
+        return False
+    if "nbt" in predicate:
+        return compare_nbt(_parse_snbt(predicate["nbt"]), blocks.block_nbt(pos, quiet=True))
+    return True
+
+
+def _state_matches(wanted: dict | None, properties: dict[str, str], block_id: str) -> bool:
+    """StatePropertiesPredicate: each property equal to a value, or within ``{min, max}``. A property
+    the placed state does not list is a default the emulator does not know."""
+    for name, value in (wanted or {}).items():
+        if name not in properties:
+            raise Unmodelled(f"the default value of {block_id}'s '{name}' state (block states as placed only)")
+        actual = properties[name]
+        if isinstance(value, dict):
+            if not _property_in_range(actual, value):
+                return False
+        elif actual != _property_text(value):
+            return False
+    return True
+
+
+def _property_text(value) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    return str(value)
+
+
+def _property_in_range(actual: str, bounds: dict) -> bool:
+    lo, hi = bounds.get("min"), bounds.get("max")
+    try:
+        number_value = int(actual)
+        return (lo is None or number_value >= int(lo)) and (hi is None or number_value <= int(hi))
+    except (TypeError, ValueError):
+        return (lo is None or actual >= _property_text(lo)) and (hi is None or actual <= _property_text(hi))
+
+
+def _fluid_matches(predicate: dict, ctx: LootContext, pos) -> bool:
+    """FluidPredicate on the block's fluid: water and lava blocks (level 0: the source, else
+    flowing), a waterlogged block's water; every other block holds none (minecraft:empty)."""
+    state = ctx.state.blocks.get(pos)
+    properties = dict(state.properties)
+    fluid, fluid_props = "minecraft:empty", {}
+    if state.id in ("minecraft:water", "minecraft:lava"):
+        level = int(properties.get("level", "0"))
+        name = state.id.split(":")[1]
+        fluid = state.id if level == 0 else f"minecraft:flowing_{name}"
+        fluid_props = {"falling": "true" if level >= 8 else "false"} | ({"level": str(8 - level % 8)} if level else {})
+    elif properties.get("waterlogged") == "true":
+        fluid = "minecraft:water"
+    wanted = predicate.get("fluids", predicate.get("fluid"))
+    if "tag" in predicate:
+        wanted = "#" + predicate["tag"]
+    if wanted is not None and not _holder_set(wanted, "fluid", fluid, ctx):
+        return False
+    return "state" not in predicate or _state_matches(predicate["state"], fluid_props, fluid)
+
+
+# ---------------------------------------------------------------------- items
+def item_matches(predicate: dict, ctx: LootContext, stack: Compound | None) -> bool:
+    """ItemPredicate on a stack's NBT (``{id, count, components}``): ``items`` (id, list or #tag),
+    ``count``, ``components`` (each exactly equal), ``predicates`` (``custom_data``: a partial NBT
+    match); before 1.20.5 ``items``/``tag``/``nbt``."""
+    if stack is None or str(stack.get("id", "minecraft:air")) == "minecraft:air":
+        return False
+    item_id = str(stack["id"])
+    wanted = predicate.get("items")
+    if "tag" in predicate:
+        wanted = "#" + predicate["tag"]
+    if wanted is not None and not _holder_set(wanted, "item", item_id, ctx):
+        return False
+    count = int(numeric_value(stack.get("count", stack.get("Count", Int(1)))))
+    if "count" in predicate and not in_range(predicate["count"], count):
+        return False
+    components = stack.get("components", Compound())
+    for name, value in predicate.get("components", {}).items():
+        found = components.get(_id(name))
+        if found is None or not compare_nbt(json_to_nbt(value), found, partial_lists=False):
+            return False
+    for name, value in predicate.get("predicates", {}).items():
+        if _id(name) != "minecraft:custom_data":
+            raise Unmodelled(f"item sub-predicate '{name}'")
+        if not compare_nbt(_parse_snbt(value), components.get("minecraft:custom_data")):
+            return False
+    if "nbt" in predicate and not compare_nbt(_parse_snbt(predicate["nbt"]), stack.get("tag")):
+        return False
+    for key in ("durability", "enchantments", "stored_enchantments", "potion"):
+        if key in predicate:
+            raise Unmodelled(f"item predicate field '{key}'")
+    return True

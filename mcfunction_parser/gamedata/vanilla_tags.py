@@ -1,0 +1,61 @@
+"""The game's vanilla registry tags: the ``data/minecraft/tags/<registry>/`` files of its built-in
+data pack, which every world loads first, under the packs.
+
+Source: the game jar the user already has (``--game-jar PATH``). Both jars carry the files: the
+client jar at its root, the server jar (a bundler since 1.18) inside the nested
+``META-INF/versions/<v>/server-<v>.jar``; either is read as a zip, without Java. Tags change with
+every release and no maintained Python package ships them (PrismarineJS's minecraft-data has
+registries and block states but no tags), so the user's own jar of the targeted release is the
+faithful source; nothing is bundled beyond :data:`BUILTIN_TAGS`.
+
+Without a jar, :data:`BUILTIN_TAGS` holds a few vanilla entity type tags (copied from the 1.21
+jar's ``data/minecraft/tags/entity_type``); any other ``#minecraft:`` tag is unknown to the
+emulator, and a command reading one says it is not modelled instead of matching nothing.
+"""
+from __future__ import annotations
+
+import io
+import zipfile
+from pathlib import Path
+
+BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
+    "entity_type": {
+        "minecraft:skeletons": frozenset({
+            "minecraft:skeleton", "minecraft:stray", "minecraft:wither_skeleton", "minecraft:skeleton_horse",
+            "minecraft:bogged"}),
+        "minecraft:zombies": frozenset({
+            "minecraft:zombie_horse", "minecraft:zombie", "minecraft:zombie_villager",
+            "minecraft:zombified_piglin", "minecraft:zoglin", "minecraft:drowned", "minecraft:husk"}),
+        "minecraft:arrows": frozenset({"minecraft:arrow", "minecraft:spectral_arrow"}),
+        "minecraft:raiders": frozenset({
+            "minecraft:evoker", "minecraft:pillager", "minecraft:ravager", "minecraft:vindicator",
+            "minecraft:illusioner", "minecraft:witch"}),
+        "minecraft:impact_projectiles": frozenset({
+            "minecraft:arrow", "minecraft:spectral_arrow", "minecraft:firework_rocket", "minecraft:snowball",
+            "minecraft:fireball", "minecraft:small_fireball", "minecraft:egg", "minecraft:trident",
+            "minecraft:dragon_fireball", "minecraft:wither_skull", "minecraft:wind_charge",
+            "minecraft:breeze_wind_charge"}),
+    },
+}
+
+
+class GameJarError(Exception):
+    """The file is not a readable game jar."""
+
+
+def open_game_jar(path: str | Path) -> zipfile.Path:
+    """The root of the jar's data (a zip path holding ``data/minecraft/tags/...``): the jar itself,
+    or the server jar nested in a bundler jar. Raises :class:`GameJarError` when it is neither."""
+    try:
+        archive = zipfile.ZipFile(path)
+        names = archive.namelist()
+    except (OSError, zipfile.BadZipFile) as error:
+        raise GameJarError(f"{path}: not a readable game jar ({error})") from None
+    if any(n.startswith("data/minecraft/tags/") for n in names):
+        return zipfile.Path(archive)
+    nested = [n for n in names if n.startswith("META-INF/versions/") and n.endswith(".jar")]
+    if nested:
+        inner = zipfile.ZipFile(io.BytesIO(archive.read(nested[0])))
+        if any(n.startswith("data/minecraft/tags/") for n in inner.namelist()):
+            return zipfile.Path(inner)
+    raise GameJarError(f"{path}: no data/minecraft/tags in this jar (give the game's client or server jar)")

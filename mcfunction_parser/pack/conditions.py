@@ -1,0 +1,122 @@
+"""Predicate JSON (loot item conditions) as the game loads it: which condition types exist in which
+release, and the structural checks that make the game refuse a predicate file.
+
+A predicate file (``data/<ns>/predicate/<path>.json``; ``predicates/`` before 1.21) holds one
+condition object or a list of them (all must hold). Each condition names its type in
+``condition``; the game's codec refuses a file whose type is unknown in that release or whose
+required fields are missing or of the wrong kind ("Couldn't parse element ..."), and such a
+predicate does not exist at run time. Sources: LootItemConditions (decompiled 1.21, the registry
+of types), minecraft.wiki "Predicate" (History: ``alternatives`` became ``any_of`` and ``all_of``
+came in 1.20.5; ``random_chance_with_looting`` became ``random_chance_with_enchanted_bonus`` and
+``enchantment_active_check`` came in 1.21).
+"""
+from __future__ import annotations
+
+from typing import Any
+
+from mcfunction_parser.diagnostics import ERROR, Diagnostic
+from mcfunction_parser.pack.text import JsonDocument
+
+Version = tuple[int, int, int]
+OLDEST = (1, 13, 0)
+
+# type -> (first release, first release without it)
+CONDITION_TYPES: dict[str, tuple[Version, Version | None]] = {
+    "inverted": (OLDEST, None),
+    "alternatives": (OLDEST, (1, 20, 5)),
+    "any_of": ((1, 20, 5), None),
+    "all_of": ((1, 20, 5), None),
+    "random_chance": (OLDEST, None),
+    "random_chance_with_looting": (OLDEST, (1, 21, 0)),
+    "random_chance_with_enchanted_bonus": ((1, 21, 0), None),
+    "entity_properties": (OLDEST, None),
+    "killed_by_player": (OLDEST, None),
+    "entity_scores": (OLDEST, None),
+    "block_state_property": ((1, 14, 0), None),
+    "match_tool": ((1, 14, 0), None),
+    "table_bonus": ((1, 14, 0), None),
+    "survives_explosion": (OLDEST, None),
+    "damage_source_properties": (OLDEST, None),
+    "location_check": ((1, 14, 0), None),
+    "weather_check": ((1, 14, 0), None),
+    "reference": ((1, 15, 0), None),
+    "time_check": ((1, 16, 0), None),
+    "value_check": ((1, 17, 0), None),
+    "enchantment_active_check": ((1, 21, 0), None),
+}
+
+# fields the codec requires, per type (a missing one refuses the file)
+_REQUIRED = {
+    "inverted": ("term",), "alternatives": ("terms",), "any_of": ("terms",), "all_of": ("terms",),
+    "random_chance": ("chance",), "entity_properties": ("entity",), "entity_scores": ("entity", "scores"),
+    "block_state_property": ("block",), "reference": ("name",), "time_check": ("value",),
+    "value_check": ("value", "range"), "table_bonus": ("enchantment", "chances"),
+    "random_chance_with_enchanted_bonus": ("enchantment", "enchanted_chance"),
+    "random_chance_with_looting": ("chance", "looting_multiplier"), "enchantment_active_check": ("active",),
+}
+ENTITY_TARGETS = {"this", "attacker", "direct_attacker", "attacking_player",  # 1.21 names
+                  "killer", "direct_killer", "killer_player"}  # before 1.21
+
+
+def condition_type(condition: Any) -> str:
+    """The condition's type without the ``minecraft:`` namespace ('' when absent)."""
+    kind = condition.get("condition") if isinstance(condition, dict) else None
+    return kind.removeprefix("minecraft:") if isinstance(kind, str) else ""
+
+
+def known_type(kind: str, version: Version) -> bool:
+    span = CONDITION_TYPES.get(kind)
+    return span is not None and span[0] <= version and (span[1] is None or version < span[1])
+
+
+def problem(value: Any, version: Version) -> tuple[str, str] | None:
+    """Why the game refuses this predicate (a condition or a list of them): (message, the JSON
+    string to point at), or None when it loads."""
+    if isinstance(value, list):
+        for item in value:
+            found = problem(item, version)
+            if found:
+                return found
+        return None
+    if not isinstance(value, dict):
+        return "a predicate must be a condition object or a list of them", ""
+    raw = value.get("condition")
+    if not isinstance(raw, str):
+        return 'a condition needs "condition": its type (e.g. "minecraft:entity_properties")', ""
+    kind = condition_type(value)
+    if not known_type(kind, version):
+        when = CONDITION_TYPES.get(kind)
+        hint = ""
+        if when is not None:
+            hint = f" (it exists from {'.'.join(map(str, when[0]))}" + (
+                f" until {'.'.join(map(str, when[1]))})" if when[1] else ")")
+        return f"unknown predicate condition type '{raw}' in this release{hint}", raw
+    for field in _REQUIRED.get(kind, ()):
+        if field not in value:
+            return f"condition '{raw}' needs the field \"{field}\"", raw
+    if kind in ("entity_properties", "entity_scores") and value["entity"] not in ENTITY_TARGETS:
+        return f"unknown entity target {value['entity']!r} (expected one of: {', '.join(sorted(ENTITY_TARGETS))})", \
+            str(value["entity"])
+    if kind == "inverted":
+        return problem(value["term"], version)
+    if kind in ("alternatives", "any_of", "all_of"):
+        if not isinstance(value["terms"], list):
+            return f'"terms" of \'{raw}\' must be a list', "terms"
+        return problem(value["terms"], version)
+    return None
+
+
+def validate(doc: JsonDocument, version: Version, what: str, diagnostics: list[Diagnostic]) -> bool:
+    """Check a predicate file (``what`` names it in the message)."""
+    return report(doc, problem(doc.value, version), what, diagnostics)
+
+
+def report(doc: JsonDocument, found: tuple[str, str] | None, what: str, diagnostics: list[Diagnostic]) -> bool:
+    """True when ``found`` is None; else an error at the offending JSON string (the file's start
+    when none is found) saying ``what`` fails to load."""
+    if found is None:
+        return True
+    message, token = found
+    offset = doc.find_string(token) if token else -1
+    diagnostics.append(doc.diagnostic(ERROR, f"{what} fails to load: {message}", offset))
+    return False

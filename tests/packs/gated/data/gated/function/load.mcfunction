@@ -1,0 +1,2 @@
+scoreboard objectives add gated.ticks dummy
+scoreboard objectives add gated.hp dummy

@@ -1,0 +1,97 @@
+"""Registry tags, predicates and advancements as the loader reads them (TagLoader, the predicate and
+advancement codecs; minecraft.wiki "Tag", "Predicate", "Advancement definition")."""
+import io
+import json
+import zipfile
+
+import pytest
+
+from mcfunction_parser.gamedata.vanilla_tags import GameJarError
+from mcfunction_parser.pack.loader import load_packs
+from tests.parser.pack.packbuild import meta, tag, write_pack
+
+
+def test_registry_tags_merge_nest_and_fail_like_the_game(tmp_path):
+    lib = write_pack(tmp_path / "lib", {"data/a/tags/block/soft.json": tag("minecraft:sand"),
+                                        "data/a/tags/item/gone.json": tag("minecraft:stick")}, meta(48))
+    pack = write_pack(tmp_path / "pack", {
+        "data/a/tags/block/soft.json": tag("minecraft:gravel"),               # appends
+        "data/a/tags/item/gone.json": tag("minecraft:apple", replace=True),   # replaces
+        "data/a/tags/block/outer.json": tag("#a:soft", {"id": "#a:none", "required": False}),
+        "data/a/tags/block/broken.json": tag("#a:none"),                      # a required tag missing
+        "data/a/tags/block/uses_broken.json": tag("#a:broken"),
+        "data/a/tags/blocks/old.json": tag("minecraft:stone"),                # 1.21 reads block/
+        "data/a/tags/worldgen/biome/warm.json": tag("minecraft:desert"),
+    }, meta(48))
+    loaded = load_packs([lib, pack])
+    tags = loaded.registry_tags
+    assert tags["block"]["a:soft"].members == {"minecraft:sand", "minecraft:gravel"}
+    assert tags["item"]["a:gone"].members == {"minecraft:apple"}
+    assert tags["block"]["a:outer"].members == {"minecraft:sand", "minecraft:gravel"}
+    assert "a:broken" not in tags["block"] and "a:uses_broken" not in tags["block"]
+    assert tags["worldgen/biome"]["a:warm"].members == {"minecraft:desert"}
+    messages = [d.message for d in loaded.diagnostics]
+    assert "block tag #a:broken fails to load: #a:none does not exist" in messages
+    assert any("'data/a/tags/blocks/' ignored" in m and "reads 'data/a/tags/block/'" in m for m in messages)
+    # before 1.21 (format 41) the plural folder is the one read
+    old = load_packs([pack], mc_version="1.20.6")
+    assert old.registry_tags["block"]["a:old"].members == {"minecraft:stone"}
+
+
+def test_unknown_vanilla_tags_are_kept_unknown_without_a_jar(tmp_path):
+    pack = write_pack(tmp_path / "p", {"data/a/tags/block/logs.json": tag("#minecraft:logs", "minecraft:dirt")}, meta(48))
+    loaded = load_packs([pack])
+    assert loaded.registry_tags["block"]["a:logs"].unknown == ("minecraft:logs",)
+    assert loaded.errors == []
+
+
+def test_game_jar_tags_load_under_the_packs(tmp_path):
+    jar = tmp_path / "client.jar"
+    with zipfile.ZipFile(jar, "w") as archive:
+        archive.writestr("data/minecraft/tags/block/logs.json", tag("minecraft:oak_log", "#minecraft:birch"))
+        archive.writestr("data/minecraft/tags/block/birch.json", tag("minecraft:birch_log"))
+    server = tmp_path / "server.jar"  # a bundler: the real server jar nested inside
+    with zipfile.ZipFile(server, "w") as archive:
+        archive.writestr("META-INF/versions/1.21/server-1.21.jar", jar.read_bytes())
+    pack = write_pack(tmp_path / "p", {"data/minecraft/tags/block/logs.json": tag("minecraft:dirt")}, meta(48))
+    for given in (jar, server):
+        loaded = load_packs([pack], game_jar=given)
+        assert loaded.vanilla_tags
+        assert loaded.registry_tags["block"]["minecraft:logs"].members == {
+            "minecraft:oak_log", "minecraft:birch_log", "minecraft:dirt"}
+    with pytest.raises(GameJarError):
+        load_packs([pack], game_jar=pack / "pack.mcmeta")
+
+
+def test_predicates_that_fail_to_load_are_errors_with_their_position(tmp_path):
+    pack = write_pack(tmp_path / "p", {
+        "data/a/predicate/ok.json": json.dumps({"condition": "minecraft:any_of", "terms": []}),
+        "data/a/predicate/bad_type.json": '{\n  "condition": "minecraft:nope"\n}',
+        "data/a/predicate/old_type.json": json.dumps({"condition": "alternatives", "terms": []}),
+        "data/a/predicate/missing.json": json.dumps({"condition": "minecraft:entity_scores", "entity": "this"}),
+        "data/a/predicate/syntax.json": '{"condition": ',
+    }, meta(48))
+    loaded = load_packs([pack])
+    assert set(loaded.predicates) == {"a:ok"}
+    found = {d.path.rsplit("/", 1)[1]: d for d in loaded.errors}
+    assert (found["bad_type.json"].line, found["bad_type.json"].col) == (2, 16)
+    assert "unknown predicate condition type 'minecraft:nope'" in found["bad_type.json"].message
+    assert "until 1.20.5" in found["old_type.json"].message  # alternatives became any_of
+    assert 'needs the field "scores"' in found["missing.json"].message
+    assert "invalid JSON" in found["syntax.json"].message
+
+
+def test_advancements_load_with_their_criteria(tmp_path):
+    good = {"criteria": {"t": {"trigger": "minecraft:tick"}}, "rewards": {"function": "a:r"}}
+    pack = write_pack(tmp_path / "p", {
+        "data/a/advancement/good.json": json.dumps(good),
+        "data/a/advancement/bad.json": json.dumps({"criteria": {"x": {"trigger": "minecraft:flying"}}}),
+        "data/a/advancement/req.json": json.dumps({"criteria": {"x": {"trigger": "minecraft:impossible"}},
+                                                   "requirements": [["y"]]}),
+    }, meta(48))
+    loaded = load_packs([pack])
+    assert set(loaded.advancements) == {"a:good"}
+    messages = sorted(d.message for d in loaded.errors)
+    assert messages == ["advancement a:bad fails to load: unknown criterion trigger 'minecraft:flying'",
+                        "advancement a:req fails to load: requirements name 'y', which is not a criterion"]
+    assert list(loaded.advancement_rewards) == ["a:r"]

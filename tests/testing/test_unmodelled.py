@@ -1,0 +1,52 @@
+"""No silent gaps: a test that runs something the emulator does not model (a command with effects a
+pack can read back, a predicate condition, an unknown vanilla tag) is inconclusive with the reason,
+counted apart; ``--allow-unmodelled`` turns it back into pass/fail. Commands whose only effect is
+shown to players (particle, playsound) keep the test conclusive."""
+import json
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from emulator.testing import discover, run_suite
+from emulator.testing.junit import junit_xml
+from tests.conftest import write_pack
+
+FILES = {
+    "demo/test/weather.mcfunction": "weather rain\nsucceed\n",
+    "demo/test/weather_fails.mcfunction": "weather rain\nfail \"boom\"\n",
+    "demo/test/sounds.mcfunction": "particle flame ~ ~ ~\nplaysound minecraft:block.note_block.harp master @a\nsucceed\n",
+    "demo/test/vanilla_tag.mcfunction": "summon pig ~ ~ ~\nassert entity @e[type=#minecraft:logs]\n",
+    "demo/test/condition.mcfunction": "# @dummy ~ ~ ~\nassert predicate demo:equipped\n",
+    "demo/predicate/equipped.json": json.dumps({"condition": "minecraft:entity_properties", "entity": "this",
+                                                "predicate": {"equipment": {"head": {}}}}),
+}
+
+
+def run(tmp_path, backend="numba", **options):
+    root = write_pack(tmp_path / "pack", FILES)
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 48, "description": "t"}}))
+    summary = run_suite(discover([root]), backend, **options)
+    return summary, {r.id: r for r in summary.results}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_unmodelled_effects_make_tests_inconclusive_with_the_reason(tmp_path, backend):
+    summary, results = run(tmp_path, backend)
+    status = {k: r.status for k, r in results.items()}
+    assert status == {"demo:weather": "inconclusive", "demo:weather_fails": "inconclusive",
+                      "demo:sounds": "passed", "demo:vanilla_tag": "inconclusive", "demo:condition": "inconclusive"}
+    assert "'weather' is not emulated" in results["demo:weather"].message
+    assert results["demo:weather"].message.endswith("the test passed")
+    assert "failed (boom)" in results["demo:weather_fails"].message
+    assert "#minecraft:logs is not known" in results["demo:vanilla_tag"].message
+    assert "entity predicate field 'equipment'" in results["demo:condition"].message
+    assert summary.line() == "1 passed, 0 failed, 4 inconclusive"
+    skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='weather']/skipped")
+    assert skipped is not None and skipped.get("type") == "inconclusive"
+
+
+def test_allow_unmodelled_gives_pass_and_fail_back(tmp_path):
+    summary, results = run(tmp_path, "python", allow_unmodelled=True)
+    assert results["demo:weather"].status == "passed"
+    assert results["demo:weather_fails"].status == "failed"
+    assert results["demo:condition"].status == "failed"  # the command failed as not modelled
