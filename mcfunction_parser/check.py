@@ -31,6 +31,7 @@ from pathlib import Path
 
 from . import ast, gamedata
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
+from mcfunction_parser.pack import conditions
 from mcfunction_parser.pack.loader import LoadedPacks, load_packs
 from mcfunction_parser.parse import paused_gc
 from mcfunction_parser.pack.versions import RELEASE_FORMATS, Version, parse_mc_version, releases_label, version_label
@@ -472,9 +473,16 @@ def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:
 
 def _check_predicates(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
     """``execute if predicate ID`` and ``@e[predicate=ID]`` need a predicate file (the vanilla
-    pack defines none); inline ``{...}`` predicates (1.20.5+) are not looked up."""
+    pack defines none); an inline ``{...}`` predicate (1.20.5+) must be one the game loads."""
     for name, loc in facts.predicates:
-        if _RESOURCE_LOCATION.fullmatch(name) and name not in loaded.predicates:
+        if name[:1] in "{[":
+            try:
+                problem = conditions.problem(conditions.parse_inline(name), loaded.version)
+            except ValueError as error:
+                problem = (f"does not parse: {error}", "")
+            if problem:
+                found.append(_at(loaded, ERROR, f"inline predicate: {problem[0]}", loc))
+        elif _RESOURCE_LOCATION.fullmatch(name) and name not in loaded.predicates:
             found.append(_at(loaded, ERROR, f"unknown predicate {name}", loc))
 
 

@@ -60,7 +60,7 @@ def if_predicate(env, predicate: str, ctx) -> bool:
     version = state.version
     if predicate[:1] in "{[":
         try:
-            value = predicates.parse_inline(predicate)
+            value = pack_conditions.parse_inline(predicate)
         except ValueError as error:
             raise CommandFailure("argument.resource_or_id.failed_to_parse", error, report=True) from None
         problem = pack_conditions.problem(value, version)

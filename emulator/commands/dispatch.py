@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import blocks, bossbar, conditions, data, entities, items, living, scoreboard, server
+from . import advancements, blocks, bossbar, conditions, data, entities, items, living, scoreboard, server
 
 # Commands that only show or play something to players: no world state a pack can test changes
 # (their result, the number of players reached, is the one thing left unmodelled).
@@ -23,7 +23,7 @@ NO_OBSERVABLE_EFFECT = frozenset({
 HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
             **items.HANDLERS}
 # the commands the parser keeps as text, by name
-GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS}
+GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

@@ -29,7 +29,7 @@ import numpy as np
 
 from emulator.world import relations, teleport
 from emulator.world.entities import ENTITY_TYPES, Entity, EntityStore, add_tag, remove_tag
-from emulator.world import predicates
+from emulator.world import advancement_progress, predicates
 from emulator.world.selectors import SelectorQuery, SelectorWorld
 from emulator.world.source import Source
 from emulator.world.context import Context, SERVER
@@ -128,7 +128,9 @@ def selector_world(state: WorldState) -> SelectorWorld:
 
     def predicate(predicate_id: str, entity: Entity) -> bool:
         return predicates.test_predicate(predicate_id, predicates.LootContext(state, entity.pos, this=entity))
-    return SelectorWorld(lambda tag, type_id: resources.in_tag("entity_type", tag, type_id), predicate)
+    def advancements(text: str, entity: Entity) -> bool:
+        return advancement_progress.matches(state, entity, advancement_progress.parse_selector_value(text))
+    return SelectorWorld(lambda tag, type_id: resources.in_tag("entity_type", tag, type_id), predicate, advancements)
 
 
 def select(state: WorldState, target, ctx: Context) -> list[Entity]:

@@ -10,7 +10,11 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    run as the server at world spawn;
 4. the day time advances by one when ``doDaylightCycle`` is on;
 5. every living entity's effects count down (:func:`emulator.world.living.tick_living`) and every
-   player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`).
+   player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
+6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
+   tick_players`), and the rewards earned run, each its own root as the player.
+An advancement reward earned inside a root (``advancement grant``) runs as its own root when that
+root ends (the game runs it right after the command; the command warns of it).
 
 Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs, with its result.
 """
@@ -19,7 +23,8 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult
-from emulator.world import living, statistics
+from emulator.commands.entities import entity_context
+from emulator.world import advancements, living, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
@@ -36,6 +41,7 @@ class Runtime:
 
     def __init__(self, backend: Backend, packs, state: WorldState, sanitize: bool = False) -> None:
         state.resources = Resources.from_packs(packs)
+        advancements.warn_unobserved(state)
         backend.load(packs, state, sanitize)
         self.backend = backend
         self.packs = packs
@@ -45,6 +51,7 @@ class Runtime:
         self.commands_outside_ticks = 0  # API calls made between ticks
         self.max_root_cost = 0  # the costliest root so far (quota headroom = limit - this)
         self.root_listeners: list[RootListener] = []
+        self.rewards_cost = 0  # commands advancement rewards ran (counted in their tick)
 
     def members(self, tag: str) -> list[str]:
         return self.packs.resolve_tag(tag) if tag in self.packs.tags else []
@@ -54,12 +61,26 @@ class Runtime:
         self.max_root_cost = max(self.max_root_cost, result.cost)
         for listener in self.root_listeners:
             listener(function_id, result)
+        self.rewards_cost += self._run_rewards()
         return result
+
+    def _run_rewards(self) -> int:
+        """Advancement rewards earned so far, each its own root as the player (AdvancementRewards:
+        the function runs as the player at its position); a missing function is an error."""
+        cost = 0
+        while self.state.pending_rewards:
+            function, player = self.state.pending_rewards.pop(0)
+            if function not in self.packs.functions:
+                self.state.error(f"advancement reward function {function} does not exist")
+                continue
+            cost += self.run_root(function, entity_context(self.state, player)).cost
+        return cost
 
     def call(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
         """An API call between ticks: one root."""
+        before = self.rewards_cost
         result = self.run_root(function_id, context, arguments)
-        self.commands_outside_ticks += result.cost
+        self.commands_outside_ticks += result.cost + self.rewards_cost - before
         return result
 
     def start(self) -> int:
@@ -74,6 +95,7 @@ class Runtime:
     def tick(self) -> int:
         """Run one server tick; returns its cost (commands executed)."""
         cost = 0
+        self.rewards_cost = 0
         if not self.loaded:
             self.loaded = True
             cost += self._run_all(self.members(LOAD_TAG))
@@ -90,6 +112,9 @@ class Runtime:
             state.daytime += 1
         living.tick_living(state)
         statistics.tick_players(state)
+        advancements.tick_players(state)
+        self.rewards_cost += self._run_rewards()
+        cost += self.rewards_cost
         self.commands_per_tick.append(cost)
         state.tick += 1
         return cost

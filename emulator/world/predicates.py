@@ -43,6 +43,7 @@ from typing import Any
 
 import numpy as np
 
+from emulator.world import advancement_progress
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
@@ -354,29 +355,6 @@ def _parse_snbt(value) -> Compound:
         raise Unmodelled(f"NBT {value!r} does not parse: {error.message}") from None
 
 
-def nbt_to_json(value):
-    """An SNBT value (an inline predicate) as the JSON the codecs read: numbers, strings, lists and
-    objects (a byte stays a number: the codecs read 1b as true)."""
-    if isinstance(value, dict):
-        return {str(k): nbt_to_json(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [nbt_to_json(v) for v in value]
-    if isinstance(value, str):
-        return str(value)
-    return float(value) if isinstance(value, float) else int(value)
-
-
-def parse_inline(text: str):
-    """An inline predicate (``execute if predicate {...}``, 1.20.5+): SNBT read as JSON.
-    Raises ValueError when it does not parse."""
-    reader = Reader(text, Loc("<predicate>", 1, 1), (1, 21, 0))
-    try:
-        value = snbt.value(reader)
-    except ParseError as error:
-        raise ValueError(error.message) from None
-    return nbt_to_json(value)
-
-
 def json_to_nbt(value):
     """A JSON value as the codecs read it into NBT (JsonOps -> NbtOps): booleans are bytes,
     integers ints, other numbers doubles."""
@@ -472,7 +450,7 @@ def _type_specific(value: dict, ctx: LootContext, entity: Entity) -> bool:
 
 
 def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
-    """PlayerPredicate: the entity must be a player; gamemode and level are modelled."""
+    """PlayerPredicate: the entity must be a player; gamemode, level and advancements are modelled."""
     if not entity.is_player:
         return False
     for key, wanted in value.items():
@@ -484,6 +462,9 @@ def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
                 return False
         elif key == "level":
             if not in_range(wanted, entity.level):
+                return False
+        elif key == "advancements":
+            if not advancement_progress.matches(ctx.state, entity, wanted):
                 return False
         else:
             raise Unmodelled(f"player predicate field '{key}'")

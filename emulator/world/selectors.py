@@ -22,6 +22,7 @@ options/EntitySelectorOptions.java):
 - ``distance`` compares squared distances to the entity's feet (inclusive).
 - ``x_rotation``/``y_rotation``: wrapped bounds, a missing min is 0 and a missing max is 359
   (wrapped to -1), so ``x_rotation=10..`` also matches pitches below 0, as in the game.
+- ``advancements={id=bool,id={criterion=bool}}``: players' advancement progress.
 - ``predicate=ID``: the loaded predicate with the entity as ``this`` and its position as origin;
   an unknown id matches nothing (EntitySelectorOptions).
 - ``tag=`` (empty) matches entities without tags; ``name`` compares the display name; ``nbt`` is a
@@ -34,15 +35,10 @@ from typing import Callable
 
 from mcfunction_parser import ast
 from emulator.world import mth
-<<<<<<< HEAD
-from emulator.world.entities import ENTITY_TYPE_TAGS, Entity, EntityStore, entity_nbt
-from emulator.world.living import NOT_LIVING
-from emulator.world.errors import CommandFailure
-=======
 from emulator.world.entities import Entity, EntityStore, entity_nbt
+from emulator.world.living import NOT_LIVING
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.resources import Resources
->>>>>>> 429a59c (Predicates, registry tags and no silent gaps)
 from emulator.world.nbt_ops import compare_nbt
 from emulator.world.source import Source
 
@@ -57,9 +53,11 @@ class SelectorWorld:
     """What a selector reads from the world beyond the entities: type tags and predicates."""
 
     def __init__(self, in_type_tag: Callable[[str, str], bool],
-                 predicate: Callable[[str, Entity], bool] | None = None) -> None:
+                 predicate: Callable[[str, Entity], bool] | None = None,
+                 advancements: Callable[[str, Entity], bool] | None = None) -> None:
         self.in_type_tag = in_type_tag
         self.predicate = predicate
+        self.advancements = advancements  # (the selector's raw {...} text, entity)
 
 
 def _builtin_world() -> SelectorWorld:
@@ -152,6 +150,9 @@ class SelectorQuery:
         elif key == "predicate" and self.world.predicate is not None:
             test = self.world.predicate
             self.tests.append(lambda e, v=value, n=neg: test(v, e) != n)
+        elif key == "advancements" and self.world.advancements is not None:
+            done = self.world.advancements
+            self.tests.append(lambda e, v=value: done(v, e))
         else:
             raise Unmodelled(f"selector argument '{key}'")
 

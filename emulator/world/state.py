@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from emulator.world.blocks import BlockMap
+from emulator.world.advancement_progress import Progress
 from emulator.world.bossbars import BossBars
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
@@ -402,6 +403,8 @@ class WorldState:
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     bossbars: BossBars = field(default_factory=BossBars)
+    advancement_progress: Progress = field(default_factory=Progress)  # each player's criteria
+    pending_rewards: list = field(default_factory=list)  # (reward function, player) the runtime runs next
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
     version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)
     resources: Resources = field(default_factory=Resources)  # loot, predicates, tags, advancements

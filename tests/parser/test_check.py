@@ -308,3 +308,11 @@ def test_the_progress_callback_hears_every_function_once_per_release(tmp_path):
     check_releases([root], [parse_mc_version("1.21"), parse_mc_version("1.21.4")],
                    on_function=lambda done, total: heard.append((done, total)))
     assert heard == [(1, 2), (2, 2)] * 2  # a:a and a:b, for each of the two formats
+
+
+def test_inline_predicates_are_checked_as_the_game_loads_them(tmp_path):
+    # ExecuteCommand's inline predicate (1.20.5+) goes through the condition codec when the function loads
+    pack = write(tmp_path / "p", {fn("f"): 'execute if predicate {condition:"minecraft:nope"} run say a\n'
+                                           'execute if predicate {condition:"minecraft:random_chance",chance:0.5f} run say b\n'})
+    [error] = check_packs([pack]).of("error")
+    assert error.line == 1 and "inline predicate: unknown predicate condition type 'minecraft:nope'" in error.message

@@ -11,6 +11,7 @@ from emulator.world.errors import Unmodelled
 from emulator.world.predicates import LootContext, test as holds
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
+from mcfunction_parser.pack.conditions import parse_inline
 from mcfunction_parser.nbt import Byte, Compound, Int, List, String
 
 
@@ -148,5 +149,5 @@ def test_flags_effects_and_unmodelled_fields(state):
 
 def test_inline_predicates_read_snbt():
     # 1.20.5+ inline predicates: SNBT read through the condition codec
-    value = predicates.parse_inline('{condition:"minecraft:random_chance",chance:0.5f}')
+    value = parse_inline('{condition:"minecraft:random_chance",chance:0.5f}')
     assert value == {"condition": "minecraft:random_chance", "chance": pytest.approx(0.5)}

@@ -1,0 +1,96 @@
+"""Advancement progress: what each player obtained, when an advancement is done, and reading it
+(``@a[advancements={...}]``, the player predicate's ``advancements``). Granting, triggers and
+rewards are :mod:`emulator.world.advancements`.
+
+- ``Progress`` (``state.advancement_progress``): per player UUID, per advancement, the criteria
+  obtained; ``of(player, advancement_id)``.
+- ``is_done(state, player, advancement_id)``: AdvancementProgress.isDone (every requirement group
+  has an obtained criterion; no requirements: never done; AdvancementRequirements.test).
+- ``matches(state, player, wanted)``: ``id=bool`` (done or not) or ``id={criterion=bool}``; an
+  unknown advancement or a non-player never matches (EntitySelectorOptions ``advancements``).
+  Progress waiting on a trigger the emulator does not observe (:data:`OBSERVED`) raises Unmodelled.
+- ``parse_selector_value(text)``: the selector's ``{id=true,id2={crit=false}}``.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from emulator.world.entities import Entity
+from emulator.world.errors import Unmodelled
+from mcfunction_parser.pack.advancements import criteria, requirements
+
+OBSERVED = frozenset({"impossible", "tick", "location"})  # the triggers that fire in the emulator
+
+
+def full_id(text) -> str | None:
+    if not isinstance(text, str):
+        return None
+    return text if ":" in text else "minecraft:" + text
+
+
+@dataclass
+class Progress:
+    obtained: dict[str, dict[str, set[str]]] = field(default_factory=dict)  # player UUID -> advancement -> criteria
+    first_tick: dict[str, int] = field(default_factory=dict)  # player UUID -> the tick it first ticked
+
+    def of(self, player: Entity, advancement_id: str) -> set[str]:
+        return self.obtained.setdefault(player.uuid_string, {}).setdefault(advancement_id, set())
+
+
+def short_trigger(trigger: str) -> str:
+    return trigger.removeprefix("minecraft:")
+
+
+def is_done(state, player: Entity, advancement_id: str) -> bool:
+    """AdvancementProgress.isDone: every requirement group has an obtained criterion."""
+    advancement = state.resources.advancements[advancement_id]
+    groups = requirements(advancement)
+    got = state.advancement_progress.of(player, advancement_id)
+    return bool(groups) and all(any(name in got for name in group) for group in groups)
+
+
+def matches(state, player: Entity, wanted: dict) -> bool:
+    """``advancements={id=bool, id={criterion=bool}}`` for one entity (non-players never match)."""
+    if not player.is_player:
+        return False
+    advancements = state.resources.advancements
+    for advancement_id, expected in wanted.items():
+        advancement_id = full_id(advancement_id)
+        if advancement_id not in advancements:
+            return False  # EntitySelectorOptions: an unknown advancement matches nothing
+        _readable(state, player, advancement_id)
+        got = state.advancement_progress.of(player, advancement_id)
+        if isinstance(expected, dict):
+            if any((name in got) != bool(done) for name, done in expected.items()):
+                return False
+        elif is_done(state, player, advancement_id) != bool(expected):
+            return False
+    return True
+
+
+def _readable(state, player: Entity, advancement_id: str) -> None:
+    """Progress waiting on a trigger the emulator does not observe is unknown here."""
+    got = state.advancement_progress.of(player, advancement_id)
+    for name, criterion in criteria(state.resources.advancements[advancement_id]).items():
+        if name not in got and short_trigger(criterion["trigger"]) not in OBSERVED:
+            raise Unmodelled(f"advancement {advancement_id}: criterion '{name}' waits for the trigger "
+                             f"{criterion['trigger']}, which the emulator does not observe")
+
+
+def parse_selector_value(text: str) -> dict:
+    """The ``advancements={...}`` selector value: ``{id=true,id2={crit=false}}``."""
+    body = text.strip()[1:-1]
+    out: dict = {}
+    depth, start, parts = 0, 0, []
+    for i, char in enumerate(body):
+        depth += char == "{"
+        depth -= char == "}"
+        if char == "," and depth == 0:
+            parts.append(body[start:i])
+            start = i + 1
+    parts.append(body[start:])
+    for part in filter(str.strip, parts):
+        key, _, value = part.partition("=")
+        value = value.strip()
+        out[key.strip()] = parse_selector_value(value) if value.startswith("{") else value == "true"
+    return out

@@ -1,0 +1,4 @@
+# @dummy ~ ~ ~
+assert not score @s rewards.low matches 1..
+tp @s ~ -20 ~
+await score @s rewards.low matches 1
