@@ -17,7 +17,7 @@ def test_valid_files_load_with_their_folder_names(tmp_path):
                                        "a/tags/item/t.json": json.dumps({"values": ["stone"]})})
     packs = load_packs([root])
     assert packs.errors == [] and set(packs.loot_tables) == {"a:x"} and set(packs.item_modifiers) == {"a:m"}
-    assert [e.id for e in packs.item_tags["a:t"].entries] == ["minecraft:stone"]
+    assert packs.registry_tags["item"]["a:t"].members == {"minecraft:stone"}
 
 
 def test_older_packs_read_the_plural_folders(tmp_path):
