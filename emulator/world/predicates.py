@@ -46,9 +46,10 @@ import numpy as np
 from emulator.world import advancement_progress
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
+from emulator.world.loot_context import to_tag as json_to_nbt
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, String
+from mcfunction_parser.nbt import Byte, Compound, Int
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser import snbt
 
@@ -353,22 +354,6 @@ def _parse_snbt(value) -> Compound:
         return snbt.compound(reader)
     except ParseError as error:
         raise Unmodelled(f"NBT {value!r} does not parse: {error.message}") from None
-
-
-def json_to_nbt(value):
-    """A JSON value as the codecs read it into NBT (JsonOps -> NbtOps): booleans are bytes,
-    integers ints, other numbers doubles."""
-    if isinstance(value, bool):
-        return Byte(int(value))
-    if isinstance(value, int):
-        return Int(value)
-    if isinstance(value, float):
-        return Double(value)
-    if isinstance(value, str):
-        return String(value)
-    if isinstance(value, list):
-        return List(json_to_nbt(v) for v in value)
-    return Compound((k, json_to_nbt(v)) for k, v in value.items())
 
 
 def _flags(value: dict, ctx: LootContext, entity: Entity) -> bool:
