@@ -14,7 +14,9 @@ from tests.conftest import write_pack
 FILES = {
     "demo/test/weather.mcfunction": "weather rain\nsucceed\n",
     "demo/test/weather_fails.mcfunction": "weather rain\nfail \"boom\"\n",
-    "demo/test/sounds.mcfunction": "particle flame ~ ~ ~\nplaysound minecraft:block.note_block.harp master @a\nsucceed\n",
+    "demo/test/sounds.mcfunction": "particle flame ~ ~ ~\nplaysound minecraft:block.note_block.harp master @a\n"
+                                   "forceload add 0 0\nsucceed\n",
+    "demo/test/forceload_query.mcfunction": "forceload query 0 0\nsucceed\n",
     "demo/test/vanilla_tag.mcfunction": "summon pig ~ ~ ~\nassert entity @e[type=#minecraft:logs]\n",
     "demo/test/condition.mcfunction": "# @dummy ~ ~ ~\nassert predicate demo:equipped\n",
     "demo/predicate/equipped.json": json.dumps({"condition": "minecraft:entity_properties", "entity": "this",
@@ -34,13 +36,14 @@ def test_unmodelled_effects_make_tests_inconclusive_with_the_reason(tmp_path, ba
     summary, results = run(tmp_path, backend)
     status = {k: r.status for k, r in results.items()}
     assert status == {"demo:weather": "inconclusive", "demo:weather_fails": "inconclusive",
-                      "demo:sounds": "passed", "demo:vanilla_tag": "inconclusive", "demo:condition": "inconclusive"}
+                      "demo:sounds": "passed", "demo:vanilla_tag": "inconclusive", "demo:condition": "inconclusive",
+                      "demo:forceload_query": "inconclusive"}
     assert "'weather' is not emulated" in results["demo:weather"].message
     assert results["demo:weather"].message.endswith("the test passed")
     assert "failed (boom)" in results["demo:weather_fails"].message
     assert "#minecraft:logs is not known" in results["demo:vanilla_tag"].message
     assert "entity predicate field 'equipment'" in results["demo:condition"].message
-    assert summary.line() == "1 passed, 0 failed, 4 inconclusive"
+    assert summary.line() == "1 passed, 0 failed, 5 inconclusive"
     skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='weather']/skipped")
     assert skipped is not None and skipped.get("type") == "inconclusive"
 
