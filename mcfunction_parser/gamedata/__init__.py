@@ -22,8 +22,8 @@ Sources, in order:
 A release without its own tree uses the oldest tree at or after it (1.13 – 1.16.4 the 1.16.5
 tree, 1.21 – 1.21.10 the 1.21.11 one; the commands a release lacks are gated by
 :mod:`..features` before the tree is asked). A release without registries uses the newest ones
-before it, flagged not exact. A release after every tree raises :class:`GameDataMissing`, whose
-message names the release and how to provide its data.
+before it, flagged not exact. A release after every tree (26.x) is checked against the newest one,
+its findings warnings (:func:`newer_than_shipped` says so, with how to provide its own reports).
 """
 from __future__ import annotations
 
@@ -89,13 +89,21 @@ def _user_report(version: Version, name: str):
 # ----------------------------------------------------------------------------- command trees
 
 def tree_release(version: Version) -> Version:
-    """The release whose command tree checks ``version``: its own, or the oldest one after it."""
+    """The release whose command tree checks ``version``: its own, the oldest one after it, or for a
+    release newer than every shipped tree the newest one (a stand-in: see :func:`newer_than_shipped`)."""
     if _user_report(version, "commands.json") is not None:
         return version
-    later = [release for release in _index()["commands"] if release >= version]
-    if not later:
-        raise GameDataMissing(_how_to_get(version, "command tree"))
-    return min(later)
+    shipped = _index()["commands"]
+    later = [release for release in shipped if release >= version]
+    return min(later) if later else max(shipped)
+
+
+def newer_than_shipped(version: Version) -> str | None:
+    """For a release newer than every tree dpemu ships and without its own reports: what that means
+    and how to get the exact tree; None otherwise."""
+    if _user_report(version, "commands.json") is not None or version <= max(_index()["commands"]):
+        return None
+    return _how_to_get(version, "command tree")
 
 
 def command_tree(version: Version) -> dict:
