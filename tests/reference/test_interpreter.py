@@ -3,7 +3,6 @@ sanitizer and runtime diagnostics. Costs are hand-computed from the rule in emul
 (ExecutionContext, BuildContexts, ExecuteCommand, CallFunction of the decompiled 1.21 sources)."""
 from __future__ import annotations
 
-import time
 
 import pytest
 
@@ -118,11 +117,9 @@ def test_recursion_100000_deep(tmp_path):
     state.gamerules.set("maxCommandChainLength", "1000000")
     state.scoreboard.set("#n", "o", 100_000)
     body = "scoreboard players remove #n o 1\nexecute if score #n o matches 1.. run function t:main\nscoreboard players add #back o 1"
-    start = time.perf_counter()
     _, state, result = run(tmp_path, {"t:main": body}, state=state)
     assert scores(state)["#n"] == 0 and scores(state)["#back"] == 100_000
     assert result.cost == 100_000 * 4 and not result.cut
-    assert time.perf_counter() - start < 60
 
 
 # ----------------------------------------------------------------------------- macros
