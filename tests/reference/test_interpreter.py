@@ -3,7 +3,6 @@ sanitizer and runtime diagnostics. Costs are hand-computed from the rule in emul
 (ExecutionContext, BuildContexts, ExecuteCommand, CallFunction of the decompiled 1.21 sources)."""
 from __future__ import annotations
 
-
 import pytest
 
 from emulator.reference import ReferenceBackend
