@@ -9,7 +9,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
    run as the server at world spawn;
 4. the day time advances by one when ``doDaylightCycle`` is on;
-5. every living entity's effects count down (:func:`emulator.world.living.tick_living`) and every
+5. every living entity's effects count down (:func:`emulator.world.living.tick_living`), a player
+   using an item goes on using it (:func:`emulator.world.player_actions.tick_using`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`), and the rewards earned run, each its own root as the player.
@@ -24,7 +25,7 @@ from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult
 from emulator.commands.entities import entity_context
-from emulator.world import advancements, living, statistics
+from emulator.world import advancements, living, player_actions, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
@@ -111,6 +112,7 @@ class Runtime:
         if state.gamerules.get("doDaylightCycle") == "true":
             state.daytime += 1
         living.tick_living(state)
+        player_actions.tick_using(state)
         statistics.tick_players(state)
         advancements.tick_players(state)
         self.rewards_cost += self._run_rewards()

@@ -30,11 +30,12 @@ Modelled:
   ``player_hurt_entity`` advancement trigger are not modelled.
 - ``mine``: a creative player removes the block; a survival player mining air succeeds without
   effect; adventure and spectator players fail ("failed to mine block").
+- ``drop [all]``, ``swap``, ``use item``: emulator.world.player_actions (the item entity with its
+  ``Thrower``, the hands' stacks, the items whose use is modelled, using an item over ticks).
 
-Not modelled, so a test using them fails with the reason: held items (``drop``, ``swap``, ``use
-item``, ``use block``; the emulator has no player inventories), using any other entity (mob
-interactions), and a survival player mining a block (its drops come from loot
-tables and ``minecraft.mined`` needs the right tool, neither modelled).
+Not modelled, so a test using them is inconclusive with the reason: ``use block``, using any other
+entity (mob interactions), an item whose use is not modelled, and a survival player mining a
+block (its drops come from loot tables and ``minecraft.mined`` needs the right tool).
 
 As in PackTest, an action the game refuses (``Dummy X is not on the ground`` ...) is a failed
 command: the test goes on, and the message is kept as a runtime diagnostic.
@@ -45,10 +46,10 @@ from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import living, players, statistics
+from emulator.world import living, player_actions, players, statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word, vec3
 from mcfunction_parser.diagnostics import Loc
@@ -186,7 +187,10 @@ class Dummies:
             self.spawn(command.target.name, ctx.pos)
             return
         dummy = self._dummy(command.target, ctx)
-        getattr(self, "_" + command.action.replace(" ", "_"))(dummy, command, ctx)
+        try:
+            getattr(self, "_" + command.action.replace(" ", "_"))(dummy, command, ctx)
+        except Unmodelled as error:
+            raise Unsupported(error.message.removeprefix("not modelled: ")) from None
 
     def _select(self, target, ctx: Context) -> list[Entity]:
         try:
@@ -269,8 +273,21 @@ class Dummies:
             raise Unsupported(f"a survival player mining {self.state.blocks.get(pos)} drops its loot and counts "
                               f"minecraft.mined only with the right tool, which the emulator does not model")
 
+    def _drop(self, dummy: Entity, command, ctx) -> None:
+        if player_actions.drop_selected(self.state, dummy, bool(command.flag)) is None:
+            raise DummyFailure(f"Dummy {dummy.player_name} is not holding an item in their mainhand")
+
+    def _swap(self, dummy: Entity, command, ctx) -> None:
+        player_actions.swap_hands(self.state, dummy)
+
+    def _use_item(self, dummy: Entity, command, ctx) -> None:
+        """DummyCommand.useItem: the main hand, then the offhand, until one consumes the action."""
+        for hand in (player_actions.MAIN, player_actions.OFF):
+            if player_actions.use_item(self.state, dummy, hand) == "consume":
+                return
+        raise DummyFailure(f"Dummy {dummy.player_name} cannot use that item")
+
     def _unsupported(self, dummy: Entity, command, ctx) -> None:
         raise Unsupported(NO_INVENTORY)
 
-    _drop = _swap = _use_item = _use_block = _unsupported
-
+    _use_block = _unsupported

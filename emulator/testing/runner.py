@@ -393,6 +393,9 @@ def _act(source: TestSource, step: Dummy, ctx: Context) -> None:
     except DummyFailure as refused:
         source.emu.state.error(f"{step.loc.path}:{step.loc.line}: {step.command.text}: {refused}")
     except Unsupported as reason:
+        # the test cannot go on as the game would: inconclusive (failed under --allow-unmodelled)
+        source.emu.state.error(f"{step.loc.path}:{step.loc.line}: {step.command.text}: not modelled: {reason}",
+                               unmodelled=True)
         raise _Verdict(FAILED, f"{step.command.text}: not modelled: {reason}", step.loc.line) from None
 
 

@@ -19,7 +19,8 @@ from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from mcfunction_parser.pack.advancements import criteria, requirements
 
-OBSERVED = frozenset({"impossible", "tick", "location"})  # the triggers that fire in the emulator
+# the triggers that fire in the emulator (the player actions fire the last ones: emulator.world.player_actions)
+OBSERVED = frozenset({"impossible", "tick", "location", "using_item", "consume_item"})
 
 
 def full_id(text) -> str | None:

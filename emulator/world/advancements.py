@@ -8,6 +8,10 @@ observes, and the rewards a completed advancement earns.
 - ``related(resources, advancement_id, mode)``: the advancements ``only|from|until|through`` name.
 - ``tick_players(state)``: the triggers a server tick fires for every player: ``tick`` each tick,
   ``location`` every 20 ticks of the player (counted from its first tick here).
+- ``trigger(state, player, trigger, test=None)``: SimpleCriterionTrigger.trigger: every criterion of
+  that trigger the player has not obtained, whose ``player`` predicate holds and whose other
+  conditions ``test(conditions, ctx)`` accepts, is awarded (the actions' triggers: ``using_item``,
+  ``player_hurt_entity`` ...).
 
 Sources (decompiled 1.21): server/PlayerAdvancements.java (award: rewards when the advancement
 becomes done; revoke), advancements/AdvancementProgress.java and AdvancementRequirements.java
@@ -105,6 +109,20 @@ def tick_players(state) -> None:
                 if short_trigger(criterion["trigger"]) in fired and name not in state.advancement_progress.of(
                         player, advancement_id) and _player_matches(state, player, criterion):
                     award(state, player, advancement_id, name)
+
+
+def trigger(state, player: Entity, trigger_name: str, test=None) -> None:
+    """SimpleCriterionTrigger.trigger for one player: ``test(conditions, ctx)`` checks the
+    trigger's own conditions (the player as ``this`` at its position in ``ctx``)."""
+    for advancement_id, advancement in state.resources.advancements.items():
+        got = state.advancement_progress.of(player, advancement_id)
+        for name, criterion in criteria(advancement).items():
+            if short_trigger(criterion["trigger"]) != trigger_name or name in got:
+                continue
+            ctx = predicates.LootContext(state, player.pos, this=player)
+            if _player_matches(state, player, criterion) and (
+                    test is None or test(criterion.get("conditions") or {}, ctx)):
+                award(state, player, advancement_id, name)
 
 
 def _player_matches(state, player: Entity, criterion: dict) -> bool:

@@ -87,17 +87,14 @@ def test_spawn_refuses_a_name_in_use_or_no_name(pack):
 
 
 @pytest.mark.parametrize("action, reason", [
-    ("use item", "player inventories (held items) are not modelled"),
     ("use block ~ ~ ~ up", "player inventories (held items) are not modelled"),
-    ("drop all", "player inventories (held items) are not modelled"),
-    ("swap", "player inventories (held items) are not modelled"),
     ("use entity @e[type=pig,limit=1]", "using an item on minecraft:pig is not modelled"),
     ("mine ~ ~-1 ~", "a survival player mining minecraft:stone drops its loot"),
 ])
-def test_actions_the_emulator_cannot_model_fail_the_test(pack, action, reason):
+def test_actions_the_emulator_cannot_model_make_the_test_inconclusive(pack, action, reason):
     result = run(pack, f"# @dummy\nsummon pig ~3 ~ ~\nsetblock ~ ~-1 ~ stone\ndummy @s {action}\nsucceed\n")
-    assert (result.status, result.line) == ("failed", 4)
-    assert result.message.startswith(f"dummy @s {action}: not modelled: {reason}")
+    assert (result.status, result.line) == ("inconclusive", 4)
+    assert f"dummy @s {action}: not modelled: {reason}" in result.message
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])

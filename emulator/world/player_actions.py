@@ -1,0 +1,257 @@
+"""What a player does with its hands, as the server carries it out: dropping the held stack,
+swapping hands, using the held item (and the ticks of using it), with what a datapack observes of
+each (the item entity, the inventory NBT, statistics, the ``using_item``/``consume_item`` criteria).
+
+- ``drop_selected(state, player, whole)``: ServerPlayer.drop(boolean): one item (or the whole
+  stack) out of the selected hotbar slot as an item entity thrown by the player; None when the hand
+  is empty.
+- ``swap_hands(state, player)``: the main hand and offhand stacks trade places.
+- ``use_item(state, player, hand)``: ServerPlayerGameMode.useItem -> Item.use for the items whose
+  use is modelled (:data:`USES`); returns ``"consume"``, ``"pass"`` or ``"fail"`` (InteractionResult:
+  only ``consume`` is an action the client's use stops at). Any other item raises Unmodelled.
+- ``tick_using(state)``: each player using an item (LivingEntity.updatingUsingItem): the
+  ``using_item`` trigger every tick, and when its use duration ends the item is consumed.
+- ``is_using(player)``.
+
+Sources (decompiled 1.21.x): server/level/ServerPlayer.java (drop, updateUsingItem),
+world/entity/player/Player.java and LivingEntity.java (createItemStackToDrop, startUsingItem,
+updatingUsingItem, completeUsingItem), world/entity/player/Inventory.java (removeFromSelected),
+server/level/ServerPlayerGameMode.java (useItem), world/item/FoodOnAStickItem.java,
+KnowledgeBookItem.java, Item.java (use), world/item/component/Consumable.java (startConsuming,
+onConsume, consumeTicks), world/food/FoodData.java (eat), world/food/FoodProperties.java.
+"""
+from __future__ import annotations
+
+import math
+import weakref
+from dataclasses import dataclass
+
+import numpy as np
+
+from emulator.world import advancements, inventories, mth, predicates, statistics
+from emulator.world.errors import Unmodelled
+from emulator.world.items import ItemStack, to_nbt
+from emulator.world.nbt_ops import is_numeric, numeric_value
+from mcfunction_parser.nbt import Compound, Double, Float, Int, IntArray, List, Short
+
+F32 = np.float32
+THROWN_PICKUP_DELAY = 40  # Player.createItemStackToDrop: setPickUpDelay(40)
+CONSUMABLE_VERSION = (1, 21, 2)  # the consumable component; before it, the food component made an item edible
+FOOD_VERSION = (1, 20, 5)
+DEFAULT_CONSUME_SECONDS = 1.6  # Consumable / FoodProperties DEFAULT_EAT_SECONDS
+MAIN, OFF = "main_hand", "off_hand"
+
+
+# ---------------------------------------------------------------------- drop and swap
+def drop_selected(state, player, whole: bool):
+    """ServerPlayer.drop(boolean): Inventory.removeFromSelected (one item, or the stack), thrown
+    from the eyes (minus 0.3) with a pickup delay of 40 and the player as ``Thrower``; awards
+    ``minecraft.dropped:<item>`` (the count) and ``minecraft.custom:minecraft.drop``."""
+    version = state.version
+    access = inventories.entity_slot(player, inventories.MAINHAND, version)
+    held = access.get()
+    if held.is_empty:
+        return None
+    taken = held.copy()
+    taken.count = held.count if whole else 1
+    held.count -= taken.count
+    access.set(held)
+    x, y, z = player.pos
+    entity = inventories.drop_item(state.entities, (x, y + float(player.eye_height) - float(F32(0.3)), z), taken,
+                                   version, state.resources.random, Compound(
+                                       PickupDelay=Short(THROWN_PICKUP_DELAY),
+                                       Thrower=IntArray(Int(v) for v in player.uuid),
+                                       Motion=_throw_motion(player, state.resources.random)))
+    statistics.award(state, player, statistics.stat_name("dropped", taken.id), taken.count)
+    statistics.award(state, player, statistics.stat_name("custom", "drop"))
+    return entity
+
+
+def _throw_motion(player, rng) -> List:
+    """createItemStackToDrop's motion: 0.3 along the look direction, a little random spread (drawn
+    from the emulator's random, not the player's own: the game's values differ)."""
+    pitch, yaw = F32(player.pitch) * F32(math.pi / 180), F32(player.yaw) * F32(math.pi / 180)
+    sin_p, cos_p, sin_y, cos_y = mth.sin(pitch), mth.cos(pitch), mth.sin(yaw), mth.cos(yaw)
+    angle, spread = F32(rng.random()) * F32(math.pi * 2), F32(0.02) * F32(rng.random())
+    return List([Double(float(-sin_y * cos_p * F32(0.3)) + math.cos(angle) * float(spread)),
+                 Double(float(-sin_p * F32(0.3) + F32(0.1) + (F32(rng.random()) - F32(rng.random())) * F32(0.1))),
+                 Double(float(cos_y * cos_p * F32(0.3)) + math.sin(angle) * float(spread))])
+
+
+def swap_hands(state, player) -> None:
+    """PackTest's swap (setItemInHand both ways): main hand and offhand trade their stacks."""
+    main, off = (inventories.entity_slot(player, s, state.version) for s in (inventories.MAINHAND, inventories.OFFHAND))
+    held, other = main.get(), off.get()
+    off.set(held)
+    main.set(other)
+
+
+# ---------------------------------------------------------------------- using items
+@dataclass
+class _Using:
+    hand: str
+    item: str  # the used item's id (LivingEntity.useItem; ItemStack.isSameItem compares the item only)
+    remaining: int  # useItemRemaining
+
+
+_USING: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def is_using(player) -> bool:
+    return player in _USING
+
+
+def hand_slot(hand: str) -> int:
+    return inventories.MAINHAND if hand == MAIN else inventories.OFFHAND
+
+
+def use_item(state, player, hand: str) -> str:
+    """ServerPlayerGameMode.useItem with the stack in ``hand``: a spectator passes; else Item.use."""
+    if player.gamemode == "spectator":
+        return "pass"
+    stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
+    if stack.is_empty:
+        return "pass"  # Items.AIR: Item.use passes
+    consumable = _consumable(state, stack)
+    if consumable is not None:
+        return _start_consuming(state, player, hand, stack, consumable)
+    use = USES.get(stack.id)
+    if use is None:
+        raise Unmodelled(f"using {stack.id} (its right-click behaviour is not modelled: only "
+                         f"{', '.join(sorted(USES))} and items with a consumable or food component)")
+    return use(state, player, hand, stack)
+
+
+def _food_on_a_stick(state, player, hand, stack: ItemStack) -> str:
+    """FoodOnAStickItem.use: not riding what it steers, it counts ``minecraft.used`` and passes."""
+    if player.vehicle is not None:
+        raise Unmodelled(f"using {stack.id} while riding (steering a pig or strider)")
+    statistics.award(state, player, statistics.stat_name("used", stack.id))
+    return "pass"
+
+
+def _knowledge_book(state, player, hand, stack: ItemStack) -> str:
+    """KnowledgeBookItem.use: the book is consumed (not in creative); with no recipes it fails."""
+    recipes = stack.component("minecraft:recipes") or (stack.tag or {}).get("Recipes")
+    if recipes:
+        raise Unmodelled("a knowledge book's recipes (the emulator has no recipe book)")
+    _consume_one(state, player, hand)
+    return "fail"
+
+
+USES = {"minecraft:carrot_on_a_stick": _food_on_a_stick, "minecraft:warped_fungus_on_a_stick": _food_on_a_stick,
+        "minecraft:knowledge_book": _knowledge_book}
+
+
+@dataclass(frozen=True)
+class _Consumable:
+    ticks: int
+    food: Compound | None  # nutrition, saturation, can_always_eat
+    effects: object  # on_consume_effects (1.21.2+)
+
+
+def _consumable(state, stack: ItemStack) -> _Consumable | None:
+    """The stack's consumable (1.21.2+) or, from 1.20.5 to 1.21.1, food component, as the game reads
+    them; vanilla foods' own defaults are not known here (they raise Unmodelled in use_item)."""
+    version = tuple(state.version)
+    food = stack.component("minecraft:food")
+    food = food if isinstance(food, Compound) else None
+    if version >= CONSUMABLE_VERSION:
+        found = stack.component("minecraft:consumable")
+        if not isinstance(found, Compound):
+            return None
+        return _Consumable(_ticks(found.get("consume_seconds")), food, found.get("on_consume_effects"))
+    if version >= FOOD_VERSION and food is not None:
+        return _Consumable(_ticks(food.get("eat_seconds")), food, food.get("effects"))
+    return None
+
+
+def _ticks(seconds) -> int:
+    """Consumable.consumeTicks: (int) (seconds * 20)."""
+    value = float(numeric_value(seconds)) if is_numeric(seconds) else DEFAULT_CONSUME_SECONDS
+    return int(F32(value) * F32(20.0))
+
+
+def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: _Consumable) -> str:
+    """Consumable.startConsuming: a food the player cannot eat fails; a duration starts using the
+    item, none consumes it at once."""
+    if consumable.food is not None and not _can_eat(player, consumable.food):
+        return "fail"
+    if consumable.ticks > 0:
+        _USING[player] = _Using(hand, stack.id, consumable.ticks)
+        return "consume"
+    _finish(state, player, hand, consumable)
+    return "consume"
+
+
+def _can_eat(player, food: Compound) -> bool:
+    """Player.canEat: invulnerable (creative), food that can always be eaten, or hunger below 20."""
+    always = food.get("can_always_eat")
+    return (player.gamemode == "creative" or (is_numeric(always) and bool(numeric_value(always)))
+            or int(numeric_value(player.data.get("foodLevel", Int(20)))) < 20)
+
+
+def tick_using(state) -> None:
+    """LivingEntity.updatingUsingItem for each player using an item: stops when the hand no longer
+    holds that item; else ``using_item`` fires (ServerPlayer.updateUsingItem) and, when the duration
+    runs out, the item is consumed (completeUsingItem)."""
+    for player, using in list(_USING.items()):
+        if not player.alive:
+            del _USING[player]
+            continue
+        stack = inventories.entity_slot(player, hand_slot(using.hand), state.version).get()
+        if stack.is_empty or stack.id != using.item:
+            del _USING[player]
+            continue
+        advancements.trigger(state, player, "using_item", _item_test(state, stack))
+        using.remaining -= 1
+        if using.remaining == 0:
+            del _USING[player]
+            consumable = _consumable(state, stack)
+            if consumable is not None:
+                _finish(state, player, using.hand, consumable)
+
+
+def _finish(state, player, hand: str, consumable: _Consumable) -> None:
+    """Consumable.onConsume: ``minecraft.used:<item>`` and ``consume_item`` with the stack before it
+    shrinks, the food eaten, then one item consumed (not in creative)."""
+    stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
+    if consumable.effects:
+        raise Unmodelled(f"the consume effects of {stack.id}")
+    statistics.award(state, player, statistics.stat_name("used", stack.id))
+    advancements.trigger(state, player, "consume_item", _item_test(state, stack))
+    if consumable.food is not None:
+        _eat(player, consumable.food)
+    if stack.component("minecraft:use_remainder") is not None:
+        raise Unmodelled(f"the use remainder of {stack.id}")
+    _consume_one(state, player, hand)
+
+
+def _eat(player, food: Compound) -> None:
+    """FoodData.eat(nutrition, saturation): food level clamped to 0..20, saturation to 0..food level."""
+    nutrition = int(numeric_value(food.get("nutrition", Int(0))))
+    saturation = F32(numeric_value(food.get("saturation", Float(0.0))))
+    level = min(max(nutrition + int(numeric_value(player.data.get("foodLevel", Int(20)))), 0), 20)
+    current = F32(numeric_value(player.data.get("foodSaturationLevel", Float(5.0))))
+    player.data["foodLevel"] = Int(level)
+    player.data["foodSaturationLevel"] = Float(float(min(max(saturation + current, F32(0.0)), F32(level))))
+
+
+def _consume_one(state, player, hand: str) -> None:
+    """ItemStack.consume(1, entity): shrinks unless the player has infinite materials (creative)."""
+    if player.gamemode == "creative":
+        return
+    access = inventories.entity_slot(player, hand_slot(hand), state.version)
+    stack = access.get()
+    stack.count -= 1
+    access.set(stack)
+
+
+def _item_test(state, stack: ItemStack):
+    """The ``item`` condition of the using_item / consume_item criteria (an ItemPredicate)."""
+    nbt = to_nbt(stack, state.version)
+
+    def test(conditions: dict, ctx) -> bool:
+        wanted = conditions.get("item")
+        return wanted is None or predicates.item_matches(wanted, ctx, nbt)
+    return test
