@@ -199,4 +199,29 @@ def damage(env, cmd: ast.GenericCommand, ctx) -> int:
     return 1
 
 
-HANDLERS = {"xp": experience, "experience": experience, "effect": effect, "attribute": attribute, "damage": damage}
+# ---------------------------------------------------------------------- gamemode
+GAME_MODES = ("survival", "creative", "adventure", "spectator")
+
+
+def gamemode(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``gamemode MODE [TARGETS]`` (GameModeCommand.setMode): the players whose mode changed; a
+    player already in that mode does not count, and the command does not fail for it. Without
+    targets, the executor (a player)."""
+    words, target = _arguments(cmd)
+    mode = words[0] if words else ""
+    if mode not in GAME_MODES:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, f"unknown game mode '{mode}'", report=True)
+    if len(words) > 1:
+        players = found(env.state, _target(cmd, words, 1, target), ctx)  # players only by parse
+    else:
+        player = _executor_required(env.state, ctx)
+        if not player.is_player:
+            raise CommandFailure("permissions.requires.player")
+        players = [player]
+    changed = [p for p in players if p.gamemode != mode]
+    for player in changed:
+        player.gamemode = mode
+    return len(changed)
+
+
+HANDLERS = {"gamemode": gamemode, "xp": experience, "experience": experience, "effect": effect, "attribute": attribute, "damage": damage}

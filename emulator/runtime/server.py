@@ -7,10 +7,12 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
 2. every ``#minecraft:tick`` member in order, each its own root;
 3. the game time advances by one, then every scheduled event due at the new time runs, by due
    time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
-   run as the server at world spawn;
+   run as the server at world spawn; then the blocks' scheduled ticks due
+   (:class:`emulator.world.block_ticks.BlockTicks`);
 4. the day time advances by one when ``doDaylightCycle`` is on;
 5. every living entity's effects count down (:func:`emulator.world.living.tick_living`), a player
-   using an item goes on using it (:func:`emulator.world.player_actions.tick_using`) and every
+   using an item goes on using it (:func:`emulator.world.player_actions.tick_using`), an open
+   container out of reach closes (:func:`emulator.world.block_use.tick_menus`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`), and the rewards earned run, each its own root as the player.
@@ -25,7 +27,7 @@ from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult
 from emulator.commands.entities import entity_context
-from emulator.world import advancements, living, player_actions, statistics
+from emulator.world import advancements, block_use, living, player_actions, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
@@ -108,11 +110,13 @@ class Runtime:
                 cost += self._run_all(self.members(entry.function))
             else:
                 cost += self.run_root(entry.function).cost
+        state.block_ticks.run_due(state)
         # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)
         if state.gamerules.get("doDaylightCycle") == "true":
             state.daytime += 1
         living.tick_living(state)
         player_actions.tick_using(state)
+        block_use.tick_menus(state)
         statistics.tick_players(state)
         advancements.tick_players(state)
         self.rewards_cost += self._run_rewards()

@@ -28,14 +28,14 @@ Modelled:
   ``Health`` and ``HurtTime``, ``damage_dealt`` and the kill statistics. A target that is not
   living is not attackable: nothing happens, as in the game. Knockback and the
   ``player_hurt_entity`` advancement trigger are not modelled.
-- ``mine``: a creative player removes the block; a survival player mining air succeeds without
-  effect; adventure and spectator players fail ("failed to mine block").
+- ``mine``: emulator.world.block_breaking (ServerPlayerGameMode.destroyBlock).
 - ``drop [all]``, ``swap``, ``use item``: emulator.world.player_actions (the item entity with its
-  ``Thrower``, the hands' stacks, the items whose use is modelled, using an item over ticks).
+  ``Thrower``, the hands' stacks, the items whose use is modelled, using an item over ticks);
+  ``use block``: emulator.world.block_use (each hand in turn until one consumes the action).
 
-Not modelled, so a test using them is inconclusive with the reason: ``use block``, using any other
-entity (mob interactions), an item whose use is not modelled, and a survival player mining a
-block (its drops come from loot tables and ``minecraft.mined`` needs the right tool).
+Not modelled, so a test using them is inconclusive with the reason: using any other entity (mob
+interactions), and what the world modules say they do not model (an item's use, a block's
+interaction, mining with a tool ...).
 
 As in PackTest, an action the game refuses (``Dummy X is not on the ground`` ...) is a failed
 command: the test goes on, and the message is kept as a runtime diagnostic.
@@ -46,7 +46,7 @@ from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import living, player_actions, players, statistics
+from emulator.world import block_breaking, block_use, living, player_actions, players, statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure, Unmodelled
@@ -59,7 +59,6 @@ from mcfunction_parser.reader import Reader
 ACTIONS = ("spawn", "leave", "respawn", "jump", "swap", "sneak", "sprint", "drop", "selectslot", "use", "attack",
            "mine")
 DIRECTIONS = ("down", "up", "north", "south", "west", "east")
-NO_INVENTORY = "player inventories (held items) are not modelled by the emulator"
 
 
 @dataclass(frozen=True)
@@ -72,6 +71,7 @@ class DummyCommand:
     slot: int | None = None
     entity: object = None  # attack / use entity
     pos: ast.Vec3 | None = None  # use block / use entity / mine
+    face: str = "up"  # use block's direction as written (checked when it runs, as PackTest does)
     text: str = ""  # the line as written, for messages
 
 
@@ -133,11 +133,7 @@ def _use(r: Reader, command: DummyCommand) -> DummyCommand:
     if what == "block":
         r.space("a position")
         command = replace(command, action="use block", pos=vec3(r))
-        if r.optional_space():
-            direction = _word(r)
-            if direction not in DIRECTIONS:
-                r.fail(f"dummy use block: unknown direction {direction!r}", r.pos - len(direction))
-        return command
+        return replace(command, face=_word(r)) if r.optional_space() else command
     if what == "entity":
         r.space("an entity")
         command = replace(command, action="use entity", entity=_entity(r))
@@ -215,10 +211,12 @@ class Dummies:
 
     # ---------------------------------------------------------------- actions
     def _leave(self, dummy: Entity, command, ctx) -> None:
+        block_use.close_menu(self.state, dummy)
         players.leave(self.state, dummy)
 
     def _respawn(self, dummy: Entity, command, ctx) -> None:
         tags, spawn = set(dummy.tags), self.spawns.pop(dummy.uuid)
+        block_use.close_menu(self.state, dummy)
         self.state.entities.kill(dummy)
         reborn = self.spawn(dummy.player_name, spawn)
         reborn.tags = tags  # PlayerList.respawn copies the tags to the new player
@@ -262,16 +260,8 @@ class Dummies:
 
     def _mine(self, dummy: Entity, command, ctx) -> None:
         pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)
-        if dummy.gamemode in ("adventure", "spectator"):
+        if not block_breaking.destroy_block(self.state, dummy, pos):
             raise DummyFailure(f"Dummy {dummy.player_name} failed to mine block")
-        if dummy.gamemode == "creative":
-            try:
-                self.state.blocks.setblock(pos, parse_block("minecraft:air"))
-            except CommandFailure:
-                pass  # it was air already
-        elif not self.state.blocks.get(pos).is_air:
-            raise Unsupported(f"a survival player mining {self.state.blocks.get(pos)} drops its loot and counts "
-                              f"minecraft.mined only with the right tool, which the emulator does not model")
 
     def _drop(self, dummy: Entity, command, ctx) -> None:
         if player_actions.drop_selected(self.state, dummy, bool(command.flag)) is None:
@@ -287,7 +277,12 @@ class Dummies:
                 return
         raise DummyFailure(f"Dummy {dummy.player_name} cannot use that item")
 
-    def _unsupported(self, dummy: Entity, command, ctx) -> None:
-        raise Unsupported(NO_INVENTORY)
-
-    _use_block = _unsupported
+    def _use_block(self, dummy: Entity, command, ctx) -> None:
+        """DummyCommand.useBlock: each hand in turn, until one consumes the action."""
+        if command.face not in DIRECTIONS:
+            raise DummyFailure("Not a valid direction")
+        pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)
+        for hand in (player_actions.MAIN, player_actions.OFF):
+            if block_use.use_item_on(self.state, dummy, hand, pos, command.face) == "consume":
+                return
+        raise DummyFailure(f"Dummy {dummy.player_name} cannot interact with that block")

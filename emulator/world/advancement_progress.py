@@ -20,7 +20,8 @@ from emulator.world.errors import Unmodelled
 from mcfunction_parser.pack.advancements import criteria, requirements
 
 # the triggers that fire in the emulator (the player actions fire the last ones: emulator.world.player_actions)
-OBSERVED = frozenset({"impossible", "tick", "location", "using_item", "consume_item"})
+OBSERVED = frozenset({"impossible", "tick", "location", "using_item", "consume_item", "default_block_use",
+                      "item_used_on_block"})
 
 
 def full_id(text) -> str | None:

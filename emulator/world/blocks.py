@@ -160,6 +160,11 @@ class BlockMap:
             self.entities[pos] = nbt
         return True
 
+    def set_state(self, pos, state: BlockState) -> None:
+        """Level.setBlock of another state of the same block: its block entity stays (a lever pulled,
+        a barrel opened)."""
+        self.states[tuple(pos)] = state
+
     def setblock(self, pos, spec: BlockSpec, mode: str = "replace") -> int:
         """``setblock POS BLOCK [replace|keep|destroy]``: 1, or fails "Could not set the block"."""
         if mode == "keep" and not self.get(pos).is_air:

@@ -41,6 +41,7 @@ from emulator.world.advancement_progress import Progress
 from emulator.world.bossbars import BossBars
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
+from emulator.world.block_ticks import BlockTicks
 from emulator.world.random_sequences import RandomSequences
 from emulator.world.records import Frame, LogEntry, Overflow, RuntimeDiagnostic
 from emulator.world.resources import Resources
@@ -400,6 +401,7 @@ class WorldState:
     # the world's entities (creation order, UUIDs, seeded RNG) and blocks: see emulator.commands.entities
     entities: EntityStore = field(default_factory=EntityStore)
     blocks: BlockMap = field(default_factory=BlockMap)
+    block_ticks: BlockTicks = field(default_factory=BlockTicks)  # blocks' scheduled ticks (a button springing back)
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
     bossbars: BossBars = field(default_factory=BossBars)

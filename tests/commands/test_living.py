@@ -195,3 +195,18 @@ def test_instant_effects_shift_as_java_ints(env):
     zombie = env.state.entities.summon("minecraft:zombie", (0, 0, 0), Compound(Health=Float(5.0)))
     run(env, "effect give @e[type=zombie] minecraft:instant_damage 1 0")
     assert float(zombie.data["Health"]) == 9.0  # healed by 4 << 0, as instant health would
+
+
+# ---------------------------------------------------------------------- gamemode
+def test_gamemode_counts_the_players_it_changed(env):
+    """GameModeCommand.setMode: ServerPlayer.setGameMode is false for the mode a player has, which
+    is not counted and does not fail the command; no target: the executor."""
+    steve, ctx = player(env)
+    alex, _ = player(env, "Alex")
+    assert run(env, "gamemode creative", ctx) == 1
+    assert (steve.gamemode, alex.gamemode) == ("creative", "survival")
+    assert run(env, "gamemode creative @a") == 1
+    assert run(env, "gamemode creative @a") == 0
+    assert run(env, "execute if entity @a[gamemode=creative,name=Alex]") == 1
+    with pytest.raises(CommandFailure):
+        run(env, "gamemode survival")  # the server is no player

@@ -1,0 +1,139 @@
+"""A player breaking a block (ServerPlayerGameMode.destroyBlock: PackTest's ``dummy mine`` breaks it
+at once, without the mining time), with what a datapack observes: the block gone, in survival the
+block's loot dropped as item entities, ``minecraft.mined:<block>`` and the food exhaustion.
+
+- ``destroy_block(state, player, pos) -> bool``: False when the game refuses (adventure and
+  spectator players, operator blocks such as command blocks, a creative player holding a sword).
+  Survival drops come from the block's loot table (``blocks/<id>``), which only a loaded pack can
+  supply here: without it, or for a block whose need of the right tool is not known here
+  (:data:`HAND_HARVESTABLE` / :data:`NEEDS_TOOL`), or with a tool (its durability and correctness
+  need the game's tool data), the break raises Unmodelled.
+
+Sources (decompiled 1.21.x): server/level/ServerPlayerGameMode.java (destroyBlock), world/level/
+block/Block.java (playerDestroy: BLOCK_MINED, causeFoodExhaustion(0.005), dropResources; popResource:
+the item at the block's centre +-0.25, minus half the item's height, pickup delay 10),
+world/entity/player/Player.java (hasCorrectToolForDrops, blockActionRestricted), world/level/block/
+GameMasterBlock implementers, world/food/FoodData.java (addExhaustion: capped at 40).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from emulator.world import inventories, loot, statistics
+from emulator.world.blocks import BlockState, parse_block
+from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.loot_context import LootContext
+from mcfunction_parser.nbt import Compound, Double, Float, List, Short
+
+F32 = np.float32
+MINING_EXHAUSTION = F32(0.005)  # Block.playerDestroy
+ITEM_HALF_HEIGHT = 0.125  # EntityType.ITEM's height (0.25) / 2
+OPERATOR_BLOCKS = frozenset("minecraft:" + n for n in (
+    "command_block chain_command_block repeating_command_block structure_block jigsaw test_block "
+    "test_instance_block").split())
+_WOODS = "oak spruce birch jungle acacia dark_oak mangrove cherry pale_oak bamboo crimson warped".split()
+_COLOURS = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown "
+            "green red black").split()
+# blocks whose drops need no tool (Block.Properties without requiresCorrectToolForDrops)
+HAND_HARVESTABLE = frozenset("minecraft:" + n for n in (
+    "dirt coarse_dirt rooted_dirt grass_block podzol mycelium sand red_sand gravel clay soul_sand soul_soil "
+    "crafting_table chest trapped_chest barrel note_block jukebox bookshelf pumpkin carved_pumpkin jack_o_lantern "
+    "melon hay_block glass tinted_glass glowstone sponge wet_sponge torch lever ladder scaffolding "
+    "dried_kelp_block target honey_block slime_block").split()) | frozenset(
+    f"minecraft:{w}_{k}" for w in _WOODS for k in (
+        "planks", "log", "wood", "stripped_log", "stripped_wood", "slab", "stairs", "fence", "fence_gate", "door",
+        "trapdoor", "button", "pressure_plate", "sign", "leaves", "sapling")) | frozenset(
+    f"minecraft:{c}_{k}" for c in _COLOURS for k in ("wool", "carpet", "stained_glass", "bed", "concrete_powder"))
+# blocks that drop nothing unless mined with the right tool (requiresCorrectToolForDrops)
+NEEDS_TOOL = frozenset("minecraft:" + n for n in (
+    "stone cobblestone mossy_cobblestone stone_bricks smooth_stone granite diorite andesite deepslate "
+    "cobbled_deepslate tuff calcite blackstone basalt netherrack end_stone obsidian crying_obsidian bricks "
+    "sandstone red_sandstone terracotta iron_block gold_block diamond_block emerald_block lapis_block "
+    "redstone_block coal_block netherite_block copper_block furnace smoker blast_furnace dispenser dropper "
+    "observer hopper anvil cauldron iron_bars iron_door iron_trapdoor chain lantern bell brewing_stand "
+    "enchanting_table ender_chest spawner stonecutter grindstone lodestone respawn_anchor").split()) | frozenset(
+    f"minecraft:{c}_{k}" for c in _COLOURS for k in ("concrete", "terracotta", "glazed_terracotta"))
+
+
+def destroy_block(state, player, pos) -> bool:
+    """ServerPlayerGameMode.destroyBlock for the player at ``pos``."""
+    pos = tuple(pos)
+    block = state.blocks.get(pos)
+    held = inventories.entity_slot(player, inventories.MAINHAND, state.version).get()
+    if player.gamemode == "creative" and held.id.endswith(("_sword", "trident", "mace")):
+        return False  # Item.canDestroyBlock: weapons do not break blocks in creative
+    if block.id in OPERATOR_BLOCKS and player.gamemode != "creative":
+        return False  # Player.canUseGameMasterBlocks: an operator in creative
+    if player.gamemode in ("adventure", "spectator"):
+        return False  # Player.blockActionRestricted (adventure's can_break is not modelled: refused)
+    if block.is_air:
+        return True  # Level.removeBlock changes nothing: nothing to drop
+    if any(key in ("half", "part") for key, _ in block.properties):
+        raise Unmodelled(f"breaking {block.id}: its other half (Block.playerWillDestroy)")
+    if player.gamemode == "creative":
+        _remove(state, pos, block)
+        return True
+    harvest = _can_harvest(block, held)
+    drops = _drops(state, player, pos, block, held) if harvest else []
+    _remove(state, pos, block)
+    if harvest:
+        statistics.award(state, player, statistics.stat_name("mined", block.id))
+        _exhaust(player, MINING_EXHAUSTION)
+        if state.gamerules.get("doTileDrops") != "false":
+            for stack in drops:
+                _pop(state, pos, stack)
+    return True
+
+
+def _can_harvest(block: BlockState, held) -> bool:
+    """Player.hasCorrectToolForDrops, for an empty hand or an item that is no tool."""
+    if held.component("minecraft:max_damage") is not None or held.component("minecraft:tool") is not None:
+        raise Unmodelled(f"mining {block.id} with {held.id} (tool speed, correctness and durability)")
+    if block.id in HAND_HARVESTABLE:
+        return True
+    if block.id in NEEDS_TOOL:
+        return False
+    raise Unmodelled(f"mining {block.id} in survival (whether it needs the right tool for drops)")
+
+
+def _drops(state, player, pos, block: BlockState, held) -> list:
+    """Block.dropResources: the block's loot table with the tool, the block and its entity."""
+    if block.id.endswith("_ore") or "sculk" in block.id or block.id == "minecraft:spawner":
+        raise Unmodelled(f"the experience {block.id} drops when mined")
+    held_items = inventories.container(state.blocks, pos, state.version)
+    if held_items is not None and any(not held_items.slot(i).get().is_empty for i in range(held_items.size)):
+        raise Unmodelled(f"the contents {block.id} spills when mined")
+    table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
+    table = state.resources.loot_tables.get(table_id)
+    if table is None:
+        raise Unmodelled(f"the game's own loot table {table_id} (only a pack's own is loaded)")
+    ctx = LootContext(state.resources.random, state.resources, state.version, this=player,
+                      origin=(pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), tool=held, block_state=block,
+                      block_entity=state.blocks.entity(pos), daytime=state.daytime, scores=state.scoreboard.get,
+                      storage=lambda sid: state.storage.get(sid, Compound()))
+    try:
+        return loot.roll_table(table, ctx)
+    except CommandFailure as error:
+        raise Unmodelled(error.message) from None
+
+
+def _remove(state, pos, block: BlockState) -> None:
+    """Level.removeBlock: air, or water where the block was waterlogged."""
+    water = dict(block.properties).get("waterlogged") == "true"
+    state.blocks.setblock(pos, parse_block("minecraft:water" if water else "minecraft:air"))
+
+
+def _exhaust(player, amount) -> None:
+    """FoodData.addExhaustion: min(exhaustion + amount, 40)."""
+    current = F32(float(player.data.get("foodExhaustionLevel", Float(0.0))))
+    player.data["foodExhaustionLevel"] = Float(float(min(current + amount, F32(40.0))))
+
+
+def _pop(state, pos, stack) -> None:
+    """Block.popResource: an item entity about the block's centre (pickup delay 10)."""
+    rng = state.resources.random
+    x, y, z = (pos[0] + 0.5 + rng.uniform(-0.25, 0.25), pos[1] + 0.5 + rng.uniform(-0.25, 0.25) - ITEM_HALF_HEIGHT,
+               pos[2] + 0.5 + rng.uniform(-0.25, 0.25))
+    inventories.drop_item(state.entities, (x, y, z), stack, state.version, rng,
+                          Compound(PickupDelay=Short(10), Motion=List([Double(rng.random() * 0.2 - 0.1), Double(0.2),
+                                                                        Double(rng.random() * 0.2 - 0.1)])))

@@ -1,0 +1,282 @@
+"""A player using a block (right-clicking it with a hand), as ServerPlayerGameMode.useItemOn carries
+it out, with what a datapack observes: the block's new state (levers, buttons that spring back,
+note blocks, doors, trapdoors, fence gates, a barrel's ``open``), the statistics of opening
+containers and workstations, and the ``default_block_use`` / ``item_used_on_block`` criteria.
+
+- ``use_item_on(state, player, hand, pos, face)``: returns ``"consume"``, ``"pass"`` or ``"fail"``;
+  a block or held item whose use is not modelled raises Unmodelled.
+- ``tick_menus(state)``: a player's open container closes when it is out of reach or gone
+  (Player.tick: containerMenu.stillValid), and the barrel it opened closes with it.
+- ``close_menu(state, player)``: the player's open container closes (it leaves, dies, respawns).
+
+The flow (ServerPlayerGameMode.useItemOn, 1.20.5+): a spectator only opens menus; unless the
+player sneaks holding something, the block reacts to the item (BlockState.useItemOn; every block
+modelled here passes on to the empty-hand use), then, for the main hand, to the hand
+(useWithoutItem): if that consumes the action, ``default_block_use`` fires. Otherwise the held
+item is used on the block (ItemStack.useOn: placing blocks, spawn eggs ... not modelled). Before
+1.20.5 the block's use (BlockState.use) fires ``item_used_on_block`` with the held stack.
+
+Sources (decompiled 1.21.x): server/level/ServerPlayerGameMode.java (useItemOn),
+world/level/block/{ChestBlock,EnderChestBlock,BarrelBlock,ShulkerBoxBlock,HopperBlock,
+DispenserBlock,AbstractFurnaceBlock,BrewingStandBlock,CraftingTableBlock,AnvilBlock,...}.java
+(useWithoutItem, the statistic each awards), LeverBlock.pull, ButtonBlock (press, the ticks it
+stays pressed: BlockSetType / ButtonBlock constructor), NoteBlock.useWithoutItem/useItemOn,
+DoorBlock, TrapDoorBlock, FenceGateBlock (useWithoutItem), BarrelBlockEntity.startOpen/stopOpen
+(ContainerOpenersCounter), world/Container.stillValidBlockEntity, core/Direction.fromYRot,
+advancements/critereon/ItemUsedOnLocationTrigger.java and DefaultBlockInteractionTrigger.java.
+"""
+from __future__ import annotations
+
+import math
+import weakref
+
+from emulator.world import advancements, inventories, predicates, statistics
+from emulator.world.blocks import BlockState
+from emulator.world.living import attribute_value
+from emulator.world.player_actions import MAIN, hand_slot
+from emulator.world.errors import Unmodelled
+from emulator.world.items import to_nbt
+from mcfunction_parser.nbt import Compound, String
+
+DEFAULT_BLOCK_USE_VERSION = (1, 20, 5)  # useWithoutItem and its own trigger (24w13a)
+MENU_REACH = 4.0  # Container.stillValidBlockEntity's buffer over the block interaction range
+
+_COLOURS = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown "
+            "green red black").split()
+_WOODS = "oak spruce birch jungle acacia dark_oak mangrove cherry pale_oak bamboo crimson warped".split()
+# the statistic a container or workstation awards when its menu opens (None: it has none)
+MENUS = {
+    "minecraft:chest": "open_chest", "minecraft:trapped_chest": "trigger_trapped_chest",
+    "minecraft:ender_chest": "open_enderchest", "minecraft:barrel": "open_barrel",
+    "minecraft:shulker_box": "open_shulker_box", **{f"minecraft:{c}_shulker_box": "open_shulker_box" for c in _COLOURS},
+    "minecraft:hopper": "inspect_hopper", "minecraft:dispenser": "inspect_dispenser",
+    "minecraft:dropper": "inspect_dropper", "minecraft:furnace": "interact_with_furnace",
+    "minecraft:smoker": "interact_with_smoker", "minecraft:blast_furnace": "interact_with_blast_furnace",
+    "minecraft:brewing_stand": "interact_with_brewingstand", "minecraft:crafting_table": "interact_with_crafting_table",
+    "minecraft:anvil": "interact_with_anvil", "minecraft:chipped_anvil": "interact_with_anvil",
+    "minecraft:damaged_anvil": "interact_with_anvil", "minecraft:grindstone": "interact_with_grindstone",
+    "minecraft:stonecutter": "interact_with_stonecutter", "minecraft:loom": "interact_with_loom",
+    "minecraft:cartography_table": "interact_with_cartography_table",
+    "minecraft:smithing_table": "interact_with_smithing_table", "minecraft:enchanting_table": None,
+}
+# containers that do not open with a solid block above (ChestBlock.isChestBlockedAt,
+# EnderChestBlock) or in front of their lid (ShulkerBoxBlock.canOpen)
+_BLOCKED_ABOVE = {"minecraft:chest", "minecraft:trapped_chest", "minecraft:ender_chest"}
+# buttons: the ticks they stay pressed (ButtonBlock: stone 20, wood 30)
+BUTTONS = {**{f"minecraft:{w}_button": 30 for w in _WOODS}, "minecraft:stone_button": 20,
+           "minecraft:polished_blackstone_button": 20}
+_HAND_OPENED = {"door", "trapdoor"}  # every type but iron (BlockSetType.canOpenByHand)
+_DIRECTIONS = ("south", "west", "north", "east")  # Direction.from2DDataValue
+_OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
+            "east": (1, 0, 0)}
+
+_MENU: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()  # player -> the container block it has open
+
+
+def use_item_on(state, player, hand: str, pos, face: str) -> str:
+    """ServerPlayerGameMode.useItemOn with the stack in ``hand`` on the block at ``pos``."""
+    pos = tuple(pos)
+    block = state.blocks.get(pos)
+    stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
+    if player.gamemode == "spectator":
+        return _open_menu(state, player, pos, block, award=False) if block.id in MENUS else "pass"
+    holding = any(not inventories.entity_slot(player, s, state.version).get().is_empty
+                  for s in (inventories.MAINHAND, inventories.OFFHAND))
+    if not (player.sneaking and holding):
+        if _item_on_block_passes(block, stack, face) and hand == MAIN:
+            result = _use_without_item(state, player, pos, block)
+            if result == "consume":
+                if tuple(state.version) >= DEFAULT_BLOCK_USE_VERSION:
+                    advancements.trigger(state, player, "default_block_use", _location_test(state, player, pos, None))
+                else:
+                    advancements.trigger(state, player, "item_used_on_block", _location_test(state, player, pos, stack))
+                return result
+    if stack.is_empty:
+        return "pass"
+    raise Unmodelled(f"using {stack.id} on {block.id} (items used on blocks: placing blocks, spawn eggs, tools ...)")
+
+
+def _item_on_block_passes(block: BlockState, stack, face: str) -> bool:
+    """BlockBehaviour.useItemOn: TRY_WITH_EMPTY_HAND for the blocks modelled here, except a note block
+    clicked on top with a head (NoteBlock.useItemOn: the head is placed instead)."""
+    if block.id == "minecraft:note_block" and face == "up" and stack.id.endswith(("_head", "_skull")):
+        return False
+    return True
+
+
+def _use_without_item(state, player, pos, block: BlockState) -> str:
+    """BlockBehaviour.useWithoutItem of the modelled blocks (BlockState.use before 1.20.5)."""
+    name = block.id.removeprefix("minecraft:")
+    if block.is_air or block.id in PLAIN:
+        return "pass"
+    if block.id in MENUS:
+        return _open_menu(state, player, pos, block, award=True)
+    if block.id == "minecraft:lever":
+        _set(state, pos, block, powered=_flip(block, "powered"))
+        return "consume"
+    if block.id in BUTTONS:
+        return _press(state, pos, block)
+    if block.id == "minecraft:note_block":
+        note = int(_property(block, "note", "0"))
+        _set(state, pos, block, note=str((note + 1) % 25))
+        statistics.award(state, player, statistics.stat_name("custom", "tune_noteblock"))
+        return "consume"
+    kind = name.rsplit("_", 1)[-1]
+    if kind in _HAND_OPENED and not name.startswith("iron_"):
+        return _open_door(state, pos, block) if kind == "door" else _toggle(state, pos, block)
+    if name.endswith("fence_gate"):
+        return _fence_gate(state, player, pos, block)
+    if kind in _HAND_OPENED:
+        return "pass"  # iron doors and trapdoors open by redstone only
+    raise Unmodelled(f"using the block {block.id} (its interaction is not modelled)")
+
+
+def _property(block: BlockState, key: str, default: str) -> str:
+    return dict(block.properties).get(key, default)
+
+
+def _flip(block: BlockState, key: str) -> str:
+    return "false" if _property(block, key, "false") == "true" else "true"
+
+
+def _set(state, pos, block: BlockState, **changes: str) -> BlockState:
+    properties = dict(block.properties)
+    properties.update(changes)
+    new = BlockState(block.id, tuple(sorted(properties.items())))
+    state.blocks.set_state(pos, new)
+    return new
+
+
+def _toggle(state, pos, block: BlockState) -> str:
+    """TrapDoorBlock.toggle: OPEN cycles."""
+    _set(state, pos, block, open=_flip(block, "open"))
+    return "consume"
+
+
+def _open_door(state, pos, block: BlockState) -> str:
+    """DoorBlock.useWithoutItem: OPEN cycles; the other half follows (DoorBlock.updateShape copies
+    the state to the half above or below)."""
+    half = dict(block.properties).get("half")
+    if half is None:
+        raise Unmodelled(f"using a {block.id} placed without its 'half' property")
+    opened = _flip(block, "open")
+    _set(state, pos, block, open=opened)
+    other = (pos[0], pos[1] + (1 if half == "lower" else -1), pos[2])
+    partner = state.blocks.get(other)
+    if partner.id == block.id and _property(partner, "half", "") != half:
+        _set(state, other, partner, open=opened)
+    return "consume"
+
+
+def _fence_gate(state, player, pos, block: BlockState) -> str:
+    """FenceGateBlock.useWithoutItem: an open gate closes; a closed one opens, turning to face the way
+    the player looks when it faced the player."""
+    if _property(block, "open", "false") == "true":
+        _set(state, pos, block, open="false")
+        return "consume"
+    looking = _DIRECTIONS[math.floor(float(player.yaw) / 90.0 + 0.5) & 3]
+    opposite = {"south": "north", "north": "south", "west": "east", "east": "west"}[looking]
+    facing = _property(block, "facing", "north")
+    _set(state, pos, block, open="true", facing=looking if facing == opposite else facing)
+    return "consume"
+
+
+def _press(state, pos, block: BlockState) -> str:
+    """ButtonBlock.useWithoutItem: a pressed button consumes the use; else it is pressed and springs
+    back after its ticks (ButtonBlock.tick -> checkPressed, no arrows here)."""
+    if _property(block, "powered", "false") == "true":
+        return "consume"
+    _set(state, pos, block, powered="true")
+
+    def release(state, pos) -> None:
+        current = state.blocks.get(pos)
+        _set(state, pos, current, powered="false")
+    state.block_ticks.schedule(pos, block.id, BUTTONS[block.id], state.gametime, release)
+    return "consume"
+
+
+# ---------------------------------------------------------------------- containers
+def _open_menu(state, player, pos, block: BlockState, award: bool) -> str:
+    """The block's menu opens (Player.openMenu): the player's open container closes first; a chest
+    under a block or a shulker box with its lid blocked does not open (the use still succeeds); a
+    locked container or one with a loot table to unpack is not modelled."""
+    nbt = state.blocks.entity(pos) or Compound()
+    if nbt.get("lock") or nbt.get("Lock"):
+        raise Unmodelled(f"opening the locked {block.id}")
+    if "LootTable" in nbt:
+        raise Unmodelled(f"opening {block.id}: unpacking its loot table when opened")
+    if block.id in _BLOCKED_ABOVE and _property(block, "type", "single") != "single":
+        raise Unmodelled(f"opening a double {block.id}")
+    blocker = _blocker(block, pos)
+    if blocker is not None and not state.blocks.get(blocker).is_air:
+        raise Unmodelled(f"opening {block.id} under {state.blocks.get(blocker).id} (whether it blocks the lid)")
+    close_menu(state, player)
+    if block.id == "minecraft:barrel":
+        _set(state, pos, block, open="true")  # BarrelBlockEntity.startOpen -> updateBlockState
+    _MENU[player] = pos
+    if award and MENUS[block.id] is not None:
+        statistics.award(state, player, statistics.stat_name("custom", MENUS[block.id]))
+    return "consume"
+
+
+def _blocker(block: BlockState, pos):
+    if block.id in _BLOCKED_ABOVE:
+        return (pos[0], pos[1] + 1, pos[2])
+    if block.id.endswith("shulker_box"):
+        dx, dy, dz = _OFFSETS[_property(block, "facing", "up")]
+        return (pos[0] + dx, pos[1] + dy, pos[2] + dz)
+    return None
+
+
+def close_menu(state, player) -> None:
+    """AbstractContainerMenu.removed -> Container.stopOpen: a barrel with no viewer left closes."""
+    pos = _MENU.pop(player, None)
+    if pos is None:
+        return
+    block = state.blocks.get(pos)
+    if block.id == "minecraft:barrel" and not any(p == pos for p in _MENU.values()):
+        _set(state, pos, block, open="false")
+
+
+def tick_menus(state) -> None:
+    """Player.tick: a menu no longer valid closes (the block is gone, or the player's eyes are out of
+    the block interaction range + 4 of the block's box: Player.canInteractWithBlock)."""
+    for player, pos in list(_MENU.items()):
+        if not player.alive or state.blocks.get(pos).id not in MENUS or not _within_reach(player, pos):
+            close_menu(state, player)
+
+
+def _within_reach(player, pos) -> bool:
+    eye = player.anchor("eyes")
+    gap = [max(lo - c, 0.0, c - (lo + 1)) for c, lo in zip(eye, pos)]
+    reach = attribute_value(player, "block_interaction_range") + MENU_REACH
+    return sum(g * g for g in gap) < reach * reach
+
+
+# ---------------------------------------------------------------------- criteria
+def _location_test(state, player, pos, stack):
+    """The ``location`` of ItemUsedOnLocationTrigger / DefaultBlockInteractionTrigger: loot
+    conditions with the block's centre as origin, the player as ``this``, the block state and (for
+    items) the tool; before 1.20 a location predicate and an ``item`` predicate."""
+    origin = (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5)
+    tool = to_nbt(stack, state.version) if stack is not None and not stack.is_empty else None
+
+    def test(conditions: dict, _ctx) -> bool:
+        ctx = predicates.LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos))
+        location = conditions.get("location")
+        if isinstance(location, list):
+            ok = predicates.test(location, ctx)
+        else:
+            ok = location is None or predicates.location_matches(location, ctx, origin)
+        item = conditions.get("item")
+        return ok and (item is None or predicates.item_matches(item, ctx, tool))
+    return test
+
+
+# blocks without a use of their own (plain Block): a click on them goes on to the held item
+PLAIN = frozenset("minecraft:" + n for n in (
+    "stone granite diorite andesite cobblestone dirt coarse_dirt grass_block sand red_sand gravel bedrock glass "
+    "obsidian smooth_stone stone_bricks deepslate netherrack end_stone bricks sandstone barrier iron_block "
+    "gold_block diamond_block emerald_block lapis_block coal_block netherite_block").split()) | frozenset(
+    f"minecraft:{c}_{k}" for c in _COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
+    f"minecraft:{w}_planks" for w in _WOODS)
