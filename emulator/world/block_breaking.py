@@ -21,6 +21,7 @@ import numpy as np
 
 from emulator.world import inventories, loot, statistics
 from emulator.world.blocks import BlockState, parse_block
+from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.loot_context import LootContext
 from mcfunction_parser.nbt import Compound, Double, Float, List, Short
@@ -31,19 +32,16 @@ ITEM_HALF_HEIGHT = 0.125  # EntityType.ITEM's height (0.25) / 2
 OPERATOR_BLOCKS = frozenset("minecraft:" + n for n in (
     "command_block chain_command_block repeating_command_block structure_block jigsaw test_block "
     "test_instance_block").split())
-_WOODS = "oak spruce birch jungle acacia dark_oak mangrove cherry pale_oak bamboo crimson warped".split()
-_COLOURS = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown "
-            "green red black").split()
 # blocks whose drops need no tool (Block.Properties without requiresCorrectToolForDrops)
 HAND_HARVESTABLE = frozenset("minecraft:" + n for n in (
     "dirt coarse_dirt rooted_dirt grass_block podzol mycelium sand red_sand gravel clay soul_sand soul_soil "
     "crafting_table chest trapped_chest barrel note_block jukebox bookshelf pumpkin carved_pumpkin jack_o_lantern "
     "melon hay_block glass tinted_glass glowstone sponge wet_sponge torch lever ladder scaffolding "
     "dried_kelp_block target honey_block slime_block").split()) | frozenset(
-    f"minecraft:{w}_{k}" for w in _WOODS for k in (
+    f"minecraft:{w}_{k}" for w in WOODS for k in (
         "planks", "log", "wood", "stripped_log", "stripped_wood", "slab", "stairs", "fence", "fence_gate", "door",
         "trapdoor", "button", "pressure_plate", "sign", "leaves", "sapling")) | frozenset(
-    f"minecraft:{c}_{k}" for c in _COLOURS for k in ("wool", "carpet", "stained_glass", "bed", "concrete_powder"))
+    f"minecraft:{c}_{k}" for c in COLOURS for k in ("wool", "carpet", "stained_glass", "bed", "concrete_powder"))
 # blocks that drop nothing unless mined with the right tool (requiresCorrectToolForDrops)
 NEEDS_TOOL = frozenset("minecraft:" + n for n in (
     "stone cobblestone mossy_cobblestone stone_bricks smooth_stone granite diorite andesite deepslate "
@@ -52,7 +50,7 @@ NEEDS_TOOL = frozenset("minecraft:" + n for n in (
     "redstone_block coal_block netherite_block copper_block furnace smoker blast_furnace dispenser dropper "
     "observer hopper anvil cauldron iron_bars iron_door iron_trapdoor chain lantern bell brewing_stand "
     "enchanting_table ender_chest spawner stonecutter grindstone lodestone respawn_anchor").split()) | frozenset(
-    f"minecraft:{c}_{k}" for c in _COLOURS for k in ("concrete", "terracotta", "glazed_terracotta"))
+    f"minecraft:{c}_{k}" for c in COLOURS for k in ("concrete", "terracotta", "glazed_terracotta"))
 
 
 def destroy_block(state, player, pos) -> bool:

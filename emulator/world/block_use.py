@@ -34,6 +34,7 @@ from emulator.world import advancements, inventories, predicates, statistics
 from emulator.world.blocks import BlockState
 from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
+from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import Unmodelled
 from emulator.world.items import to_nbt
 from mcfunction_parser.nbt import Compound, String
@@ -41,14 +42,11 @@ from mcfunction_parser.nbt import Compound, String
 DEFAULT_BLOCK_USE_VERSION = (1, 20, 5)  # useWithoutItem and its own trigger (24w13a)
 MENU_REACH = 4.0  # Container.stillValidBlockEntity's buffer over the block interaction range
 
-_COLOURS = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown "
-            "green red black").split()
-_WOODS = "oak spruce birch jungle acacia dark_oak mangrove cherry pale_oak bamboo crimson warped".split()
 # the statistic a container or workstation awards when its menu opens (None: it has none)
 MENUS = {
     "minecraft:chest": "open_chest", "minecraft:trapped_chest": "trigger_trapped_chest",
     "minecraft:ender_chest": "open_enderchest", "minecraft:barrel": "open_barrel",
-    "minecraft:shulker_box": "open_shulker_box", **{f"minecraft:{c}_shulker_box": "open_shulker_box" for c in _COLOURS},
+    "minecraft:shulker_box": "open_shulker_box", **{f"minecraft:{c}_shulker_box": "open_shulker_box" for c in COLOURS},
     "minecraft:hopper": "inspect_hopper", "minecraft:dispenser": "inspect_dispenser",
     "minecraft:dropper": "inspect_dropper", "minecraft:furnace": "interact_with_furnace",
     "minecraft:smoker": "interact_with_smoker", "minecraft:blast_furnace": "interact_with_blast_furnace",
@@ -63,7 +61,7 @@ MENUS = {
 # EnderChestBlock) or in front of their lid (ShulkerBoxBlock.canOpen)
 _BLOCKED_ABOVE = {"minecraft:chest", "minecraft:trapped_chest", "minecraft:ender_chest"}
 # buttons: the ticks they stay pressed (ButtonBlock: stone 20, wood 30)
-BUTTONS = {**{f"minecraft:{w}_button": 30 for w in _WOODS}, "minecraft:stone_button": 20,
+BUTTONS = {**{f"minecraft:{w}_button": 30 for w in WOODS}, "minecraft:stone_button": 20,
            "minecraft:polished_blackstone_button": 20}
 _HAND_OPENED = {"door", "trapdoor"}  # every type but iron (BlockSetType.canOpenByHand)
 _DIRECTIONS = ("south", "west", "north", "east")  # Direction.from2DDataValue
@@ -278,5 +276,5 @@ PLAIN = frozenset("minecraft:" + n for n in (
     "stone granite diorite andesite cobblestone dirt coarse_dirt grass_block sand red_sand gravel bedrock glass "
     "obsidian smooth_stone stone_bricks deepslate netherrack end_stone bricks sandstone barrier iron_block "
     "gold_block diamond_block emerald_block lapis_block coal_block netherite_block").split()) | frozenset(
-    f"minecraft:{c}_{k}" for c in _COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
-    f"minecraft:{w}_planks" for w in _WOODS)
+    f"minecraft:{c}_{k}" for c in COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
+    f"minecraft:{w}_planks" for w in WOODS)

@@ -46,6 +46,7 @@ import weakref
 from collections.abc import Callable
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, Short
+from emulator.world.id_families import COLOURS
 from emulator.world.errors import CommandFailure
 from emulator.world.items import EMPTY, ItemStack, from_nbt, to_nbt
 from emulator.world.nbt_ops import copy_tag
@@ -77,11 +78,9 @@ _UNMODELLED = {**{f"minecraft:{n}": range(300, 308) for n in ("villager", "wande
                **{f"minecraft:{n}": range(400, 515) for n in (
                    "horse donkey mule llama trader_llama camel skeleton_horse zombie_horse").split()}}
 
-_COLOURS = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown "
-            "green red black").split()
 CONTAINER_SIZES = {
     **{f"minecraft:{n}": 27 for n in ("chest", "trapped_chest", "barrel", "shulker_box")},
-    **{f"minecraft:{c}_shulker_box": 27 for c in _COLOURS},
+    **{f"minecraft:{c}_shulker_box": 27 for c in COLOURS},
     "minecraft:hopper": 5, "minecraft:dispenser": 9, "minecraft:dropper": 9, "minecraft:crafter": 9,
     "minecraft:furnace": 3, "minecraft:smoker": 3, "minecraft:blast_furnace": 3, "minecraft:brewing_stand": 5,
     "minecraft:chiseled_bookshelf": 6,
