@@ -147,13 +147,16 @@ class Emulator:
 
     # ------------------------------------------------------------------ entities
     def add_player(self, name: str, pos=(0.0, 0.0, 0.0), rotation=(0.0, 0.0), gamemode: str = "survival",
-                   level: int = 0, on_ground: bool = True) -> str:
+                   level: int = 0, on_ground: bool = True, dimension: str = "minecraft:overworld") -> str:
         """A simulated player joins (after :meth:`load`, at any tick; a player of that name already
         online leaves first, as the server disconnects it); returns its UUID string, the offline-mode
         UUID of its name. ``rotation`` is (yaw, pitch) in degrees. The world has no terrain, so
         ``on_ground`` says whether the player stands (``OnGround:1b``, as a player on a floor does) or
-        is in the air. See :mod:`emulator.world.players`."""
-        return players.join(self.state, name, pos, rotation, gamemode, level, on_ground).uuid_string
+        is in the air; ``dimension`` is the level it joins in (the packs' own dimensions once loaded).
+        See :mod:`emulator.world.players`."""
+        if dimension not in self.state.entities.table.levels.ids:
+            raise ValueError(f"no dimension {dimension!r} (the vanilla ones and the packs' data/<ns>/dimension/)")
+        return players.join(self.state, name, pos, rotation, gamemode, level, on_ground, dimension).uuid_string
 
     def remove_player(self, name: str) -> None:
         """The player leaves the game (``minecraft.custom:minecraft.leave_game`` + 1; its scores stay)."""
@@ -171,7 +174,7 @@ class Emulator:
 
     def entities(self, selector: str = "@e") -> list[dict]:
         """What ``selector`` (a selector, player name or UUID) finds, run as the server at world
-        spawn: one dict per entity (uuid, type, tags, pos, rotation, scores)."""
+        spawn: one dict per entity (uuid, type, name, tags, pos, rotation, dimension, scores)."""
         return [world_entities.describe(self.state, e) for e in self._select(selector)]
 
     def _select(self, text: str):

@@ -39,14 +39,15 @@ def block_tag_test(env):
 def if_block(env, cond: ast.IfBlock, ctx) -> int:
     """``if block POS BLOCK``: 1 when the block matches."""
     pos = block_pos(world_source(env.state, ctx), cond.pos)
-    return int(env.state.blocks.test(pos, block_argument(cond.block), block_tag_test(env)))
+    return int(env.state.blocks_in(ctx.dimension).test(pos, block_argument(cond.block), block_tag_test(env)))
 
 
 def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
     """``if blocks START END DESTINATION all|masked``: the matching block count, or 0."""
     source = world_source(env.state, ctx)
-    found = env.state.blocks.compare_regions(block_pos(source, cond.start), block_pos(source, cond.end),
-                                             block_pos(source, cond.destination), cond.mode == "masked")
+    found = env.state.blocks_in(ctx.dimension).compare_regions(
+        block_pos(source, cond.start), block_pos(source, cond.end), block_pos(source, cond.destination),
+        cond.mode == "masked")
     return found or 0
 
 
@@ -56,7 +57,7 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     spec, mode = block_argument(words[0]), (words[1] if len(words) > 1 else "replace")
     source = world_source(env.state, ctx)
     positions = [block_pos(source, corner) for corner in corners]
-    blocks = env.state.blocks
+    blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
         return blocks.setblock(positions[0], spec, mode)
     block_filter = None

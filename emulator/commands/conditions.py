@@ -46,7 +46,8 @@ def count(env, cond: ast.Condition, ctx) -> int:
     if isinstance(cond, ast.IfItems):
         return items.count_items(env, cond, ctx)
     if isinstance(cond, ast.IfDimension):
-        return int(ctx.dimension == cond.dimension)
+        env.state.entities.table.levels.level_id(cond.dimension)  # DimensionArgument.getDimension: an unknown one fails
+        return int(cond.dimension == ctx.dimension)
     if isinstance(cond, ast.IfPredicate):
         return int(if_predicate(env, cond.predicate, ctx))
     raise Unmodelled(f"the condition '{type(cond).__name__}'")

@@ -81,7 +81,7 @@ def accessor(env, target: ast.DataTarget, ctx) -> DataAccessor:
         return StorageAccessor(CommandStorage(state.storage), target.id)
     if isinstance(target, ast.EntityData):
         return EntityAccessor(entities.single(state, target.target, ctx))
-    return BlockAccessor(state.blocks, block_pos(entities.world_source(state, ctx), target.pos))
+    return BlockAccessor(state.blocks_in(ctx.dimension), block_pos(entities.world_source(state, ctx), target.pos))
 
 
 # ---------------------------------------------------------------------- commands

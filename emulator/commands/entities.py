@@ -55,8 +55,8 @@ class ShuffledEntityStore(EntityStore):
         super().__init__(seed)
         self.shuffle_rng = random.Random(shuffle_seed)
 
-    def _add(self, entity: Entity) -> Entity:
-        return self._insert(entity, self.shuffle_rng.randint(0, len(self.entities)))
+    def _place(self, start: int, end: int) -> int:
+        return self.shuffle_rng.randint(start, end)
 
 
 # ---------------------------------------------------------------------- contexts
@@ -67,7 +67,7 @@ def executor(state: WorldState, ctx: Context) -> Entity | None:
 def world_source(state: WorldState, ctx: Context) -> Source:
     """The world library's view of a context (its executor, float32 rotation and local-coordinate math)."""
     return Source(pos=ctx.pos, yaw=np.float32(ctx.rot[0]), pitch=np.float32(ctx.rot[1]), entity=executor(state, ctx),
-                  anchor=ctx.anchor)
+                  anchor=ctx.anchor, dimension=ctx.dimension)
 
 
 def context_as(state: WorldState, ctx: Context, entity: Entity) -> Context:
@@ -75,8 +75,8 @@ def context_as(state: WorldState, ctx: Context, entity: Entity) -> Context:
 
 
 def context_at(ctx: Context, entity: Entity) -> Context:
-    """``execute at``: the entity's position and rotation (the executor stays)."""
-    return replace(ctx, pos=entity.pos, rot=(float(entity.yaw), float(entity.pitch)))
+    """``execute at``: the entity's level, position and rotation (the executor stays)."""
+    return replace(ctx, pos=entity.pos, rot=(float(entity.yaw), float(entity.pitch)), dimension=entity.dimension)
 
 
 def entity_stage_context(kind: int, state: WorldState, ctx: Context, entity: Entity) -> Context:
@@ -92,7 +92,7 @@ def entity_stage_context(kind: int, state: WorldState, ctx: Context, entity: Ent
 
 def entity_context(state: WorldState, entity: Entity, anchor: str = "feet") -> Context:
     """A context run by ``entity`` at its position and rotation (``Emulator.call(as_=...)``)."""
-    return Context(entity.order, entity.pos, (float(entity.yaw), float(entity.pitch)), anchor)
+    return Context(entity.order, entity.pos, (float(entity.yaw), float(entity.pitch)), anchor, entity.dimension)
 
 
 # ---------------------------------------------------------------------- entity arguments
@@ -123,11 +123,12 @@ def _query(state: WorldState, selector: ast.Selector) -> SelectorQuery:
 
 def selector_world(state: WorldState) -> SelectorWorld:
     """The world's entity type tags and predicates, as selectors read them (``predicate=``:
-    EntitySelectorOptions, the entity as ``this`` at its own position)."""
+    EntitySelectorOptions, the entity as ``this`` at its own position, in its own level)."""
     resources = state.resources
 
     def predicate(predicate_id: str, entity: Entity) -> bool:
-        return predicates.test_predicate(predicate_id, predicates.LootContext(state, entity.pos, this=entity))
+        where = predicates.LootContext(state, entity.pos, this=entity, dimension=entity.dimension)
+        return predicates.test_predicate(predicate_id, where)
     def advancements(text: str, entity: Entity) -> bool:
         return advancement_progress.matches(state, entity, advancement_progress.parse_selector_value(text))
     return SelectorWorld(lambda tag, type_id: resources.in_tag("entity_type", tag, type_id), predicate, advancements)
@@ -177,7 +178,7 @@ def summon(env, cmd: ast.Summon, ctx: Context) -> int:
         env.warn(cmd, f"unknown entity type '{cmd.entity_type}': summoned with the default size 0.6 x 1.8")
     source = world_source(env.state, ctx)
     pos = source.pos if cmd.pos is None else source.position_of(cmd.pos)
-    relations.summon_with_passengers(env.state.entities, cmd.entity_type, pos, cmd.nbt)
+    relations.summon_with_passengers(env.state.entities, cmd.entity_type, pos, cmd.nbt, ctx.dimension)
     return 1
 
 
@@ -213,16 +214,18 @@ def tp(env, cmd: ast.Teleport, ctx: Context) -> int:
     if cmd.targets is None:
         entity = _executor_required(state, ctx)
         if isinstance(cmd.destination, ast.Vec3):
-            teleport.apply(entity, teleport.to_position_self(source, cmd.destination))
+            teleport.apply(entity, teleport.to_position_self(source, cmd.destination), state.entities)
         else:
-            teleport.apply(entity, teleport.to_entity(single(state, cmd.destination, ctx)))
+            teleport.apply(entity, teleport.to_entity(single(state, cmd.destination, ctx)), state.entities)
         return 1
     targets = found(state, cmd.targets, ctx)
     if not isinstance(cmd.destination, ast.Vec3):
-        return teleport.teleport(source, targets, destination_entity=single(state, cmd.destination, ctx))
+        return teleport.teleport(source, targets, destination_entity=single(state, cmd.destination, ctx),
+                                 store=state.entities)
     facing_entity = None if cmd.facing_entity is None else single(state, cmd.facing_entity, ctx)
     return teleport.teleport(source, targets, cmd.destination, rotation_arg=cmd.rotation, facing=cmd.facing,
-                             facing_entity=facing_entity, facing_anchor=cmd.facing_anchor or "feet")
+                             facing_entity=facing_entity, facing_anchor=cmd.facing_anchor or "feet",
+                             store=state.entities)
 
 
 def ride(env, cmd: ast.Ride, ctx: Context) -> int:
@@ -278,4 +281,4 @@ def describe(state: WorldState, entity: Entity) -> dict:
               if (value := holders.get(holder)) is not None}
     return {"uuid": entity.uuid_string, "type": entity.type, "name": entity.player_name,
             "tags": sorted(entity.tags), "pos": list(entity.pos),
-            "rotation": [float(entity.yaw), float(entity.pitch)], "scores": scores}
+            "rotation": [float(entity.yaw), float(entity.pitch)], "dimension": entity.dimension, "scores": scores}

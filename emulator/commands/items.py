@@ -43,8 +43,9 @@ def _players(env, target, ctx) -> list[Entity]:
     return found
 
 
-def _drop(env, pos, stack: ItemStack, nbt: Compound | None = None) -> Entity:
-    return inventories.drop_item(env.state.entities, pos, stack, _version(env), env.state.resources.random, nbt)
+def _drop(env, pos, stack: ItemStack, dimension: str, nbt: Compound | None = None) -> Entity:
+    return inventories.drop_item(env.state.entities, pos, stack, _version(env), env.state.resources.random, nbt,
+                                 dimension)
 
 
 # ---------------------------------------------------------------------- give / clear
@@ -67,7 +68,7 @@ def give(env, cmd: ast.Give, ctx) -> int:
             inventory.add(left)  # GiveCommand drops whatever is left of the stack
             if not left.is_empty:
                 x, y, z = player.pos
-                _drop(env, (x, y + float(player.eye_height) - 0.3, z), left,
+                _drop(env, (x, y + float(player.eye_height) - 0.3, z), left, player.dimension,
                       Compound(PickupDelay=Short(0), Owner=IntArray(Int(v) for v in player.uuid)))
     return len(players)
 
@@ -94,7 +95,7 @@ def clear(env, cmd: ast.Clear, ctx) -> int:
 # ---------------------------------------------------------------------- item
 def _container(env, pos_arg, ctx, source: bool) -> inventories.Container:
     pos = block_pos(world_source(env.state, ctx), pos_arg)
-    found = inventories.container(env.state.blocks, pos, _version(env))
+    found = inventories.container(env.state.blocks_in(ctx.dimension), pos, _version(env))
     if found is None:
         raise CommandFailure("commands.item.source.not_a_container" if source else
                              "commands.item.target.not_a_container", *pos)
@@ -251,12 +252,13 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
         lctx.this = victim
         return loot.roll_table(_vanilla_table(env, str(table_id)), lctx)
     pos = block_pos(source, cmd.pos)
-    block = env.state.blocks.get(pos)
+    blocks = env.state.blocks_in(ctx.dimension)
+    block = blocks.get(pos)
     table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
     if block.is_air:
         return []
     return loot.roll_table(_vanilla_table(env, table_id),
-                           loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), block_entity=env.state.blocks.entity(pos),
+                           loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), block_entity=blocks.entity(pos),
                                         block_state=block))
 
 
@@ -267,7 +269,7 @@ def loot_command(env, cmd: ast.Loot, ctx) -> int:
     if cmd.action == "spawn":
         pos = source.position_of(cmd.destination)
         for stack in items:
-            _drop(env, pos, stack)
+            _drop(env, pos, stack, ctx.dimension)
         return len(items)
     if cmd.action == "give":
         players = _players(env, cmd.destination, ctx)

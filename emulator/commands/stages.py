@@ -6,7 +6,8 @@ entity, in the game's order); whether a failure stops the whole command or only 
 
 Positions and rotations use the world library's game math (:mod:`emulator.world.source`), with
 the executor for the eye anchor; ``in`` scales x/z by the dimensions' coordinate scale
-(CommandSourceStack.withLevel).
+(CommandSourceStack.withLevel) and fails for a dimension the server does not have; ``at`` takes
+the entity's level, ``positioned as`` does not.
 """
 from __future__ import annotations
 
@@ -18,10 +19,6 @@ from mcfunction_parser import ast
 
 from . import conditions, entities
 from .entities import context_as, executor, world_source
-
-# DimensionType.coordinateScale of the vanilla dimensions
-_COORDINATE_SCALE = {"minecraft:the_nether": 8.0}
-
 
 def stage(env, st: ast.Subcommand, ctx: Context) -> list[Context]:
     """The contexts ``st`` makes from ``ctx``."""
@@ -58,7 +55,7 @@ def _on(env, st: ast.ExOn, ctx: Context) -> list[Context]:
 
 
 def _summon(env, st: ast.ExSummon, ctx: Context) -> list[Context]:
-    return [context_as(env.state, ctx, env.state.entities.summon(st.entity_type, ctx.pos))]
+    return [context_as(env.state, ctx, env.state.entities.summon(st.entity_type, ctx.pos, dimension=ctx.dimension))]
 
 
 _BY_ENTITY = {
@@ -99,9 +96,9 @@ def _aligned(env, st: ast.ExAlign, ctx: Context) -> Context:
 
 def _in_dimension(env, st: ast.ExIn, ctx: Context) -> Context:
     """CommandSourceStack.withLevel: x and z scale by the ratio of coordinate scales."""
+    scale = env.state.entities.table.levels.teleportation_scale(ctx.dimension, st.dimension)
     if st.dimension == ctx.dimension:
         return ctx
-    scale = _COORDINATE_SCALE.get(ctx.dimension, 1.0) / _COORDINATE_SCALE.get(st.dimension, 1.0)
     x, y, z = ctx.pos
     return replace(ctx, dimension=st.dimension, pos=(x * scale, y, z * scale))
 

@@ -30,6 +30,7 @@ from emulator.commands.entities import entity_context
 from emulator.world import advancements, block_use, living, player_actions, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
+from emulator.world.dimensions import Levels
 from emulator.world.state import WorldState
 
 LOAD_TAG = "minecraft:load"
@@ -44,6 +45,7 @@ class Runtime:
 
     def __init__(self, backend: Backend, packs, state: WorldState, sanitize: bool = False) -> None:
         state.resources = Resources.from_packs(packs)
+        state.entities.table.levels = Levels.from_packs(packs.dimensions, packs.dimension_types)
         advancements.warn_unobserved(state)
         backend.load(packs, state, sanitize)
         self.backend = backend

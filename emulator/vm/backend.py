@@ -60,7 +60,7 @@ class NumbaBackend:
         self.packs = packs
         self.state = state
         self.sanitize = sanitize
-        self.program = Program()
+        self.program = Program(levels=state.entities.table.levels)
         self.selectors = SelectorTables(state.scoreboard, state.entities.table, state.resources)
         self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
                                  self.selectors)
@@ -257,7 +257,7 @@ class NumbaBackend:
                 bind = self.binding_ids[bindings] = len(self.binding_sets)
                 self.binding_sets.append(bindings)
             self.cints[index] = (-1 if entity is None else self.state.scoreboard.holder_id(entity.score_holder),
-                                 -1 if entity is None else entity.order, self.program.intern_dimension(ctx.dimension),
+                                 -1 if entity is None else entity.order, self.program.levels.ids[ctx.dimension],
                                  vm.ANCHOR_EYES if ctx.anchor == "eyes" else vm.ANCHOR_FEET, bind)
             self.cfloats[index] = (*ctx.pos, *ctx.rot)
         return index
@@ -269,7 +269,7 @@ class NumbaBackend:
             ints, floats = self.cints[index].tolist(), self.cfloats[index].tolist()
             ctx = self.contexts[index] = Context(
                 ints[vm.CI_ENTITY], tuple(floats[vm.CF_X:vm.CF_Z + 1]), (floats[vm.CF_YAW], floats[vm.CF_PITCH]),
-                "eyes" if ints[vm.CI_ANCHOR] == vm.ANCHOR_EYES else "feet", self.program.dimensions[ints[vm.CI_DIM]])
+                "eyes" if ints[vm.CI_ANCHOR] == vm.ANCHOR_EYES else "feet", self.program.levels.names[ints[vm.CI_DIM]])
         return ctx
 
     def bindings(self, index: int) -> tuple:

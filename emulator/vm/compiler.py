@@ -126,6 +126,7 @@ class Compiler:
             self.emit(vm.OP_TAG, tag[0], tag[1], int(cmd.action == "add"))
         elif isinstance(cmd, Teleport) and (tp := self.teleport(cmd)) is not None:
             self.emit(vm.OP_TP, *tp)
+            self.host(vm.OP_HOST, cmd)  # a target going to another level
         elif isinstance(cmd, DataGet) and (axis := _position_path(cmd.target, cmd.path)) is not None:
             scale = -1 if cmd.scale is None else self.program.intern_float(cmd.scale)
             self.emit(vm.OP_GETPOS, axis, scale)
@@ -155,9 +156,8 @@ class Compiler:
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
             elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
-            elif isinstance(st, IfDimension):
-                self.emit(vm.OP_IFDIM, self.program.intern_dimension(st.dimension), 0, 0, 0, 0, int(st.negated),
-                          int(last))
+            elif isinstance(st, IfDimension) and st.dimension in self.program.levels.ids:  # else it fails: host
+                self.emit(vm.OP_IFDIM, self.program.levels.ids[st.dimension], 0, 0, 0, 0, int(st.negated), int(last))
             elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
             elif isinstance(st, ExPositioned) and not last:

@@ -58,7 +58,7 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
     if kind == "n":
         return program.names[value]
     if kind == "l":
-        return program.dimensions[value]
+        return program.levels.names[value]
     if kind == "p":
         return f"->{value}"
     if kind == "x":

@@ -8,7 +8,8 @@ the scoreboard.
 Selectors the VM evaluates (:meth:`SelectorTables.selector`): ``@e @a @s @p @n`` with ``type``
 (``!``, and ``#`` tags the world's resources resolve fully), ``tag``
 (any number, ``!``, the empty ``tag=``), ``scores``, ``x y z``, ``dx dy dz`` volumes,
-``distance``, ``limit`` and ``sort=arbitrary|nearest|furthest``. A selector row and its floats are
+``distance``, ``limit`` and ``sort=arbitrary|nearest|furthest``, each limited to the context's level
+or searching every level as ``selectors.SelectorQuery`` does. A selector row and its floats are
 laid out as :mod:`emulator.vm.loop` describes (``S_*``, ``SF_*``); its tests are rows of ``tests``
 (``TEST_*``). Every other selector (``@r``, ``sort=random``, ``name``, ``nbt``, rotations,
 ``gamemode``, ``level``, ``team``, ``predicate``) stays with the host (returns None).
@@ -22,9 +23,10 @@ import numpy as np
 from mcfunction_parser import ast
 from emulator.world.resources import Resources
 from emulator.world.entity_table import EntityTable
+from emulator.world.selectors import WORLD_LIMITING as _WORLD_LIMITING
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.vm.loop import (
-    KIND_E, KIND_S, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, SEL_WIDTH, SF_BOX, SF_DHI,
+    KIND_E, KIND_S, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, S_WORLD, SEL_WIDTH, SF_BOX, SF_DHI,
     SF_DLO, SF_ORIGIN, SF_WIDTH, SORT_ARBITRARY, SORT_FURTHEST, SORT_NEAREST, TEST_MEMBER, TEST_NOTAGS, TEST_SCORE,
     TEST_TAG, TEST_TYPE, TEST_TYPES,
 )
@@ -61,12 +63,16 @@ class SelectorTables:
         floats = [math.nan] * 3 + [0.0] * (SF_WIDTH - 3)
         deltas, distance, tests = {}, None, []
         for arg in target.args:
+            if arg.key == "type" and arg.value == "minecraft:player" and not arg.negated:
+                row[S_PLAYERS] = 1  # a selector of players only searches the player list
             tested = self._test(arg, tests)
             if tested is None:
                 return None
             if tested:
                 continue
             key, value = arg.key, arg.value
+            if key in _WORLD_LIMITING:
+                row[S_WORLD] = 1
             if key in _AXES:
                 floats[SF_ORIGIN + _AXES[key]] = float(value)
             elif key in _DELTAS:
@@ -80,7 +86,7 @@ class SelectorTables:
             else:
                 return None
         if row[S_KIND] == KIND_S:
-            row[S_LIMIT], row[S_SORT] = 1, SORT_ARBITRARY
+            row[S_LIMIT], row[S_SORT], row[S_WORLD] = 1, SORT_ARBITRARY, 0
         self._box(row, floats, deltas, distance)
         key = (tuple(row), tuple(floats), tuple(tests))
         index = self._selector_ids.get(key)

@@ -100,7 +100,9 @@ OP_GETPOS = 15  # [entry] a: axis, b: scale (index into floats, -1 none). `data 
 OP_TP = 16  # [entry] a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` axes' bits,
 # TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the execution position plus the relative
 # parts, or ^ from its anchor), each keeping its rotation (TP_SELF: the execution rotation; wrapped, the pitch
-# clamped) and losing its vertical motion; outside the spawnable bounds the command fails
+# clamped) and losing its vertical motion; outside the spawnable bounds the command fails. Always followed by the
+# command's HOST, which runs it instead when a target goes to another level (the context's: the host moves it in the
+# order); TP skips it otherwise
 OP_SELHOLDERS = 17  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
 # op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
 # separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
@@ -198,7 +200,9 @@ OVF_WIDTH = 5  # pc, op kind, a, b, exact
 EI_TYPE = 0
 EI_HOLDER = 1
 EI_ALIVE = 2
-EI_WIDTH = 3
+EI_DIM = 3
+EI_JOIN = 4
+EI_WIDTH = 5
 EF_X = 0
 EF_Y = 1
 EF_Z = 2
@@ -214,13 +218,15 @@ EF_WIDTH = 11
 PLAYER_TYPE = 0
 MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
 # selector rows (emulator.vm.entity_arrays): kind (every entity, or @s), limit, its tests (first,
-# count), sort (SORT_*), players only, a box test, a distance test; its floats (sfloats): the
+# count), sort (SORT_*), players only, a box test, a distance test, limited to the context's level
+# (the entities' EI_DIM; else every level: entities in eorder, which is grouped by level, players
+# in the order they joined, EI_JOIN); its floats (sfloats): the
 # origin (NaN: the context's position), the box's low and high corners from the origin, the
 # squared distance bounds. A test row: [TEST_SCORE, objective, lo, hi], [TEST_TYPE, type id, negated, 0],
 # [TEST_TAG, tag, negated, 0], [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all), or [TEST_TYPES,
 # count, negated, 0] followed by `count` rows [TEST_MEMBER, type id, 0, 0] (`type=#tag`)
-SEL_WIDTH = 8
-S_KIND, S_LIMIT, S_TESTS, S_NTESTS, S_SORT, S_PLAYERS, S_BOX, S_DIST = range(SEL_WIDTH)
+SEL_WIDTH = 9
+S_KIND, S_LIMIT, S_TESTS, S_NTESTS, S_SORT, S_PLAYERS, S_BOX, S_DIST, S_WORLD = range(SEL_WIDTH)
 SF_WIDTH = 11
 SF_ORIGIN, SF_BOX, SF_DLO, SF_DHI = 0, 3, 9, 10
 KIND_E, KIND_S = range(2)
@@ -359,11 +365,12 @@ def _tag_count(etags, slot):
 
 
 @njit(cache=True)
-def _select(sel, self_slot, pos, sels, sfloats, tests, eints, efloats, etags, order, values, present, alive_obj, out,
-            off):
-    """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server; ``pos``:
-    the context's position), written to ``out[off:]`` in the game's order (unsorted: the store's
-    order, cut at the limit; sorted by distance: stable, then cut); their count."""
+def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etags, order, values, present, alive_obj,
+            out, off):
+    """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server; ``pos``
+    and ``dim``: the context's position and level), written to ``out[off:]`` in the game's order
+    (unsorted: the store's order, or for players not limited to a level the order they joined, cut
+    at the limit; sorted by distance: stable, then cut); their count."""
     ox = pos[0] if np.isnan(sfloats[sel, SF_ORIGIN]) else sfloats[sel, SF_ORIGIN]
     oy = pos[1] if np.isnan(sfloats[sel, SF_ORIGIN + 1]) else sfloats[sel, SF_ORIGIN + 1]
     oz = pos[2] if np.isnan(sfloats[sel, SF_ORIGIN + 2]) else sfloats[sel, SF_ORIGIN + 2]
@@ -376,13 +383,22 @@ def _select(sel, self_slot, pos, sels, sfloats, tests, eints, efloats, etags, or
     n = 0
     limit = sels[sel, S_LIMIT]
     sort = sels[sel, S_SORT]
+    world = sels[sel, S_WORLD]
+    joined = sels[sel, S_PLAYERS] and not world  # the player list: cut at the limit once in its order
     for i in range(order.shape[0]):
         slot = order[i]
+        if world and eints[slot, EI_DIM] != dim:
+            continue
         if _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values, present, alive_obj):
             out[off + n] = slot
             n += 1
-            if sort == SORT_ARBITRARY and n >= limit:
+            if sort == SORT_ARBITRARY and n >= limit and not joined:
                 break
+    if joined and n > 1:
+        keys = np.empty(n, dtype=np.int64)
+        for i in range(n):
+            keys[i] = eints[out[off + i], EI_JOIN]
+        out[off:off + n] = out[off:off + n][np.argsort(keys, kind="mergesort")]
     if sort != SORT_ARBITRARY and n > 1:  # List.sort: stable, by the squared distance (negated: furthest)
         keys = np.empty(n)
         for i in range(n):
@@ -454,6 +470,8 @@ def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_ca
         if kind == 1 or kind == 3:
             if cfloats[made, CF_YAW] != efloats[slot, EF_YAW] or cfloats[made, CF_PITCH] != efloats[slot, EF_PITCH]:
                 same = False
+        if kind == 1 and cints[made, CI_DIM] != eints[slot, EI_DIM]:
+            same = False
         if same:
             return made, nctx
     cints[nctx] = cints[ctx]
@@ -467,6 +485,8 @@ def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_ca
     if kind == 1 or kind == 3:  # at, rotated as: the rotation
         cfloats[nctx, CF_YAW] = efloats[slot, EF_YAW]
         cfloats[nctx, CF_PITCH] = efloats[slot, EF_PITCH]
+    if kind == 1:  # at: the level
+        cints[nctx, CI_DIM] = eints[slot, EI_DIM]
     as_cache[row, 0] = ctx
     as_cache[row, 1] = slot
     as_cache[row, 2] = kind
@@ -824,8 +844,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 if counting:
                     counts[pc] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
-                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
-                            eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
             elif op == OP_IFDIM:  # ExecuteCommand: the dimension is the source's level
@@ -1074,8 +1094,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 ok = 1
                 val = n
             elif op == OP_TAG:
-                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
-                            eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
                 w = code[pc, 2] >> 6
                 m = np.int64(1) << (code[pc, 2] & 63)
                 many = etags.shape[1] * 64 > MAX_TAGS  # else no entity can reach the limit
@@ -1100,14 +1120,21 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_HOST
                 break
             elif op == OP_TP:
-                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
-                            eorder, values, present, alive_obj, selbuf, 0)
-                flags = code[pc, 3]
-                x, y, z = _destination(flags, code[pc, 2], ctx, floats, cints, cfloats, efloats)
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
+                pc += 1
+                crossing = False
+                for i in range(n):
+                    if eints[selbuf[i], EI_DIM] != cints[ctx, CI_DIM]:
+                        crossing = True
+                if crossing:  # to another level: the HOST that follows
+                    continue
+                pc += 1
+                flags = code[pc - 2, 3]
+                x, y, z = _destination(flags, code[pc - 2, 2], ctx, floats, cints, cfloats, efloats)
                 has = 1
                 ok = 0
                 val = 0
-                pc += 1
                 if n == 0 or not _in_spawnable_bounds(x, y, z):  # "No entity was found", "Invalid position"
                     continue
                 for i in range(n):  # teleport.apply: the position, its own rotation wrapped, no vertical motion
@@ -1141,8 +1168,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     val = _mth_floor(x)
                 pc += 1
             else:  # OP_LOG
-                n = _select(code[pc, 2], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
-                            eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 2], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
                 has = 1
                 ok = 1 if n else 0
                 val = n
@@ -1153,8 +1180,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_SELHOLDERS:
             if alive:
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
-                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
-                            eorder, values, present, alive_obj, selbuf, off)
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                            efloats, etags, eorder, values, present, alive_obj, selbuf, off)
                 for i in range(off, off + n):
                     selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
@@ -1162,8 +1189,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
         elif op == OP_ASSTAGE:
             n = 0
             if alive:
-                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], sels, sfloats, tests, eints, efloats, etags,
-                            eorder, values, present, alive_obj, selbuf, 0)
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
                 if 0 < n < forklimit and (regs[R_NCTX] + n > cints.shape[0] or regs[R_NFORK] + n > fstack.shape[0]):
                     status = ST_GROWCTX  # Python makes room, then the stage runs again
                     break

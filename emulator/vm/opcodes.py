@@ -89,7 +89,9 @@ _ROWS = [
                              "axes' bits, TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the "
                              "execution position plus the relative parts, or ^ from its anchor), each keeping its "
                              "rotation (TP_SELF: the execution rotation; wrapped, the pitch clamped) and losing its "
-                             "vertical motion; outside the spawnable bounds the command fails"),
+                             "vertical motion; outside the spawnable bounds the command fails. Always followed by "
+                             "the command's HOST, which runs it instead when a target goes to another level (the "
+                             "context's: the host moves it in the order); TP skips it otherwise"),
     ]),
     *_single("SELHOLDERS", "sb", FREE, "a: selector, b: 0 targets / 1 sources. The holders of the selector's "
                                        "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "

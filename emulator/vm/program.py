@@ -10,6 +10,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from emulator.vm.loop import OP_CALLREG, OP_HALT, WIDTH
+from emulator.world.dimensions import Levels
 from mcfunction_parser.ast import Command, Subcommand
 from mcfunction_parser.diagnostics import Loc
 
@@ -44,8 +45,7 @@ class Program:
     macro_calls: list[MacroCall] = field(default_factory=list)
     names: list[str] = field(default_factory=list)  # operands of OP_FAIL (missing function ids)
     floats: list[float] = field(default_factory=list)  # float operands (store scales), by index
-    dimensions: list[str] = field(default_factory=list)  # OP_IFDIM's operands and the contexts' ctx_dim
-    dimension_ids: dict[str, int] = field(default_factory=dict)
+    levels: Levels = field(default_factory=Levels)  # the world's: OP_IFDIM's operands and the contexts' CI_DIM
     _arrays: tuple | None = None
 
     ROOT_PC = 0  # the root stub: CALLREG then HALT
@@ -89,13 +89,6 @@ class Program:
     def intern_name(self, name: str) -> int:
         self.names.append(name)
         return len(self.names) - 1
-
-    def intern_dimension(self, dimension: str) -> int:
-        index = self.dimension_ids.get(dimension)
-        if index is None:
-            index = self.dimension_ids[dimension] = len(self.dimensions)
-            self.dimensions.append(dimension)
-        return index
 
     @property
     def next_float(self) -> int:

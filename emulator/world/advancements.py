@@ -130,7 +130,7 @@ def _player_matches(state, player: Entity, criterion: dict) -> bool:
     condition = (criterion.get("conditions") or {}).get("player")
     if condition is None:
         return True
-    ctx = predicates.LootContext(state, player.pos, this=player)
+    ctx = predicates.LootContext(state, player.pos, this=player, dimension=player.dimension)
     if isinstance(condition, list):
         return predicates.test(condition, ctx)
     return predicates.entity_matches(condition, ctx, player)

@@ -6,14 +6,17 @@ Public API
   default 0.6 x 1.8, eyes at 0.85 x height).
 - ``Entity``: ``uuid`` (4 signed ints), ``type``, ``pos`` (3 doubles), ``yaw``/``pitch`` (float32),
   ``motion``, ``tags`` (set), ``custom_name`` (text as stored), ``data`` (every other NBT field),
-  ``order`` (creation index), ``alive``; players also have ``player_name``, ``gamemode``, ``level``.
+  ``order`` (creation index), ``alive``, ``dimension`` (its level's id); players also have
+  ``player_name``, ``gamemode``, ``level``.
   Properties: ``uuid_string`` (Java ``UUID.toString``), ``score_holder`` (player name or UUID
   string, what the scoreboard uses), ``is_player``, ``eye_height``, ``bounding_box`` (min/max
   corners), ``display_name`` (what ``name=`` compares), ``anchor(anchor)`` (feet or eyes position).
-- ``EntityStore(seed)``: entities in creation order; ``summon(type, pos, nbt=None, yaw=0, pitch=0)``
-  (fails for players, outside the spawnable bounds, or on a duplicate UUID),
-  ``add_player(name, pos, ...)``, ``kill(entity)``, ``by_uuid(uuid)``, ``by_holder(name)``,
-  ``living()``, ``players()``, ``rng`` (a seeded ``random.Random`` for UUIDs and ``sort=random``).
+- ``EntityStore(seed)``: entities level by level (overworld, nether, end, the packs' own), each
+  level's in the order they came into it; ``summon(type, pos, nbt=None, yaw=0, pitch=0,
+  dimension=OVERWORLD)`` (fails for players, outside the spawnable bounds, or on a duplicate UUID),
+  ``add_player(name, pos, ..., dimension=OVERWORLD)``, ``move_to_level(entity, dimension)`` (a
+  teleport between levels), ``kill(entity)``, ``by_uuid(uuid)``, ``by_holder(name)``, ``living()``,
+  ``players()`` (in join order), ``rng`` (a seeded ``random.Random`` for UUIDs and ``sort=random``).
 - ``in_spawnable_bounds(pos)``: ``Level.isInSpawnableBounds`` (summon and tp refuse positions outside).
 - ``add_tag(entity, name)`` / ``remove_tag(entity, name)``: the ``tag`` command's per-entity step
   (False when nothing changed; an entity holds at most 1024 tags).
@@ -43,8 +46,9 @@ import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, living, rotation
+from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_table import (
-    EF_EYE, EF_HALF, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EntityTable, TagSet,
+    EF_EYE, EF_HALF, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM, EI_JOIN, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import player_defaults, selected_item
@@ -192,7 +196,7 @@ class Entity:
                  yaw=F32(0.0), pitch=F32(0.0), motion=(0.0, 0.0, 0.0), tags: set[str] | None = None,
                  custom_name: str | None = None, data: Compound | None = None, order: int = 0, alive: bool = True,
                  player_name: str | None = None, gamemode: str = "survival", level: int = 0,
-                 team: str | None = None) -> None:
+                 team: str | None = None, dimension: str = OVERWORLD) -> None:
         self._uuid = uuid
         self.type = type
         self.custom_name = custom_name
@@ -209,13 +213,15 @@ class Entity:
         self.vehicle: Entity | None = None
         self.passengers: list = []
         self._table: EntityTable | None = None
-        # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive]
-        self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive]
+        # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
+        self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]
 
     def attach(self, table: EntityTable) -> None:
         """Move the entity's fields into a new row of ``table`` (its slot becomes ``order``)."""
-        pos, yaw, pitch, motion, tags, alive = self._own
+        pos, yaw, pitch, motion, tags, alive, dimension = self._own
+        level = table.levels.level_id(dimension)
         self.order = slot = table.new_slot(self, self.type, self.score_holder)
+        table.ints[slot, EI_DIM] = level
         table.floats[slot, EF_X:EF_Z + 1] = pos
         table.floats[slot, EF_MX:EF_MZ + 1] = motion
         table.floats[slot, EF_YAW] = yaw
@@ -264,6 +270,15 @@ class Entity:
             self._own[5] = bool(value)
         else:
             self._table.ints[self.order, EI_ALIVE] = int(value)
+
+    @property
+    def dimension(self) -> str:
+        """The id of the level the entity is in (``EntityStore.move_to_level`` changes it)."""
+        return self._own[6] if self._table is None else self._table.levels.names[self.dimension_id]
+
+    @property
+    def dimension_id(self) -> int:
+        return int(self._table.ints[self.order, EI_DIM])
 
     def __repr__(self) -> str:
         return f"Entity({self.type}, {self.uuid_string}, pos={self.pos})"
@@ -359,6 +374,8 @@ def entity_nbt(entity: Entity) -> Compound:
     riders = List(_passenger_nbt(p) for p in entity.passengers if p.alive and not p.is_player)
     if riders:
         nbt["Passengers"] = riders
+    if entity.is_player:
+        nbt["Dimension"] = String(entity.dimension)  # ServerPlayer.addAdditionalSaveData
     if entity.is_player and (held := selected_item(entity.data)) is not None:
         nbt["SelectedItem"] = held  # NbtPredicate.getEntityTagForPredicate, what data and nbt= read
     return nbt
@@ -374,7 +391,7 @@ def _passenger_nbt(entity: Entity) -> Compound:
 
 # Written by entity_nbt from the entity's own fields; Entity.load does not read Passengers (riders
 # come only from summon's NBT and ride), so a data change on a vehicle keeps its riders.
-_MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id", "Passengers")
+_MODELLED = ("Pos", "Motion", "Rotation", "UUID", "CustomName", "Tags", "id", "Passengers", "Dimension")
 # Saved by every entity, read back with typed getters (Entity.saveWithoutId / Entity.load).
 BASE_FIELDS = {"FallDistance": Float, "Fire": Short, "Air": Short, "OnGround": Byte,
                "Invulnerable": Byte, "PortalCooldown": Int}
@@ -483,28 +500,37 @@ def _base_data(type_id: str) -> Compound:
 
 class EntityStore:
     """Every entity of the world: its :class:`EntityTable` (``table``), and the living ones in the
-    order unsorted ``@e`` visits them (``entities``, creation order; ``table.order`` the same as slots)."""
+    order unsorted ``@e`` visits them (``entities``, the same as ``table.order``'s slots): level by
+    level, each level's in the order they came into it (creation, or a teleport from another level)."""
 
     def __init__(self, seed: int = 0) -> None:
         self.rng = random.Random(seed)
         self.entities: list[Entity] = []
         self.table = EntityTable()
+        self.joined = 0  # players that joined so far (EI_JOIN)
 
     def bind_scoreboard(self, scoreboard) -> None:
         """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
         self.table.intern_holder = scoreboard.holder_id
 
     def _add(self, entity: Entity) -> Entity:
-        return self._insert(entity, len(self.entities))
-
-    def _insert(self, entity: Entity, index: int) -> Entity:
+        """Into the store, at the end of its level's entities."""
         entity.attach(self.table)
-        self.entities.insert(index, entity)
-        self.table.insert(index, entity.order)
+        self._enter_level(entity)
         return entity
 
-    def summon(self, type_id: str, pos, nbt: Compound | None = None, yaw=0.0, pitch=0.0) -> Entity:
-        """``summon TYPE POS NBT``: a new entity; the NBT is loaded over the spawn state.
+    def _enter_level(self, entity: Entity) -> None:
+        index = self._place(*self.table.level_span(entity.dimension_id))
+        self.entities.insert(index, entity)
+        self.table.insert(index, entity.order)
+
+    def _place(self, start: int, end: int) -> int:
+        """Where in its level's span ``[start, end]`` of the order a new entity goes."""
+        return end
+
+    def summon(self, type_id: str, pos, nbt: Compound | None = None, yaw=0.0, pitch=0.0,
+               dimension: str = OVERWORLD) -> Entity:
+        """``summon TYPE POS NBT`` in ``dimension``: a new entity; the NBT is loaded over the spawn state.
 
         Fails for players (not summonable), outside the spawnable bounds, or when the NBT's UUID
         is already taken (SummonCommand.createEntity).
@@ -514,7 +540,7 @@ class EntityStore:
         if not in_spawnable_bounds(pos):
             raise CommandFailure("commands.summon.invalidPosition")
         entity = Entity(insecure_uuid(self.rng), type_id, tuple(float(v) for v in pos), F32(yaw), F32(pitch),
-                        data=_base_data(type_id))
+                        data=_base_data(type_id), dimension=dimension)
         if nbt:
             full = entity_nbt(entity)
             full.update(copy_tag(nbt))
@@ -524,10 +550,27 @@ class EntityStore:
         entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
         return self._add(entity)
 
-    def add_player(self, name: str, pos, yaw=0.0, pitch=0.0, gamemode: str = "survival", level: int = 0) -> Entity:
-        return self._add(Entity(insecure_uuid(self.rng), "minecraft:player", tuple(float(v) for v in pos),
-                                F32(yaw), F32(pitch), data=_base_data("minecraft:player"), player_name=name,
-                                gamemode=gamemode, level=level))
+    def add_player(self, name: str, pos, yaw=0.0, pitch=0.0, gamemode: str = "survival", level: int = 0,
+                   dimension: str = OVERWORLD) -> Entity:
+        player = Entity(insecure_uuid(self.rng), "minecraft:player", tuple(float(v) for v in pos), F32(yaw),
+                        F32(pitch), data=_base_data("minecraft:player"), player_name=name, gamemode=gamemode,
+                        level=level, dimension=dimension)
+        self._add(player)
+        self.joined += 1
+        self.table.ints[player.order, EI_JOIN] = self.joined
+        return player
+
+    def move_to_level(self, entity: Entity, dimension: str) -> None:
+        """The entity goes to level ``dimension``, at the end of that level's entities (a teleport
+        between levels: ServerLevel.addDuringTeleport)."""
+        level = self.table.levels.level_id(dimension)
+        if level == entity.dimension_id:
+            return
+        index = self.entities.index(entity)
+        del self.entities[index]
+        self.table.remove(index)
+        self.table.ints[entity.order, EI_DIM] = level
+        self._enter_level(entity)
 
     def kill(self, entity: Entity) -> None:
         entity.alive = False
@@ -548,7 +591,9 @@ class EntityStore:
         return next((e for e in self.entities if e.score_holder == name), None)
 
     def players(self) -> list[Entity]:
-        return [e for e in self.entities if e.is_player]
+        """The players online, in the server's player list order (the order they joined)."""
+        ints = self.table.ints
+        return sorted((e for e in self.entities if e.is_player), key=lambda e: ints[e.order, EI_JOIN])
 
     def living(self) -> list[Entity]:
         return [e for e in self.entities if e.alive]

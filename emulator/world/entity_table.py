@@ -7,7 +7,8 @@ context made for it still reaches it, as the game's source keeps its entity obje
 
 - ``ints`` (int64 ``[slots, EI_WIDTH]``): ``EI_TYPE`` (interned type id, the player is
   ``PLAYER_TYPE``), ``EI_HOLDER`` (its score holder's id in the scoreboard, -1 without one),
-  ``EI_ALIVE`` (1 until killed);
+  ``EI_ALIVE`` (1 until killed), ``EI_DIM`` (its level, :class:`emulator.world.dimensions.Levels`'s
+  number), ``EI_JOIN`` (a player's place in the server's player list: the order of joining);
 - ``floats`` (float64 ``[slots, EF_WIDTH]``): position ``EF_X..EF_Z``, motion ``EF_MX..EF_MZ``,
   rotation ``EF_YAW``/``EF_PITCH`` (float32 values, exact in a double), the hitbox's half width and
   height and the eye height ``EF_HALF``/``EF_HEIGHT``/``EF_EYE`` (``Entity.sizes``, kept by ``attach``
@@ -15,7 +16,8 @@ context made for it still reaches it, as the game's source keeps its entity obje
 - ``tags`` (int64 ``[slots, words]``): a bitset per entity over the interned tag names (tag ``t`` is
   bit ``t & 63`` of word ``t >> 6``); interning a tag past the last word adds one, so there is no
   limit on the tags of an entity or of a pack;
-- ``order[:count]``: the living entities' slots in the order unsorted ``@e`` visits them.
+- ``order[:count]``: the living entities' slots in the order unsorted ``@e`` visits them: level by
+  level (``EI_DIM``), each level's in the order they came into it.
 
 The column numbers are literals of :mod:`emulator.vm.loop` too, written there from here by
 :mod:`emulator.vm.generate` (numba's cache does not see a constant of another module change).
@@ -27,8 +29,10 @@ from typing import Callable, Iterable
 
 import numpy as np
 
-EI_TYPE, EI_HOLDER, EI_ALIVE = range(3)
-EI_WIDTH = 3
+from emulator.world.dimensions import Levels
+
+EI_TYPE, EI_HOLDER, EI_ALIVE, EI_DIM, EI_JOIN = range(5)
+EI_WIDTH = 5
 EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH, EF_HALF, EF_HEIGHT, EF_EYE = range(11)
 EF_WIDTH = 11
 PLAYER_TYPE = 0
@@ -57,6 +61,7 @@ class EntityTable:
         self.type_ids: dict[str, int] = {"minecraft:player": PLAYER_TYPE}
         self.uuids: dict[tuple, list] = {}  # UUID -> the living entities that have it
         self.intern_holder: Callable[[str], int] | None = None  # the scoreboard's holder_id
+        self.levels = Levels()  # the numbers of EI_DIM (the packs' dimensions are added at load)
 
     # ------------------------------------------------------------------ names
     def tag_id(self, name: str) -> int:
@@ -94,6 +99,15 @@ class EntityTable:
             out[:array.shape[0]] = array
             return out
         self.ints, self.floats, self.tags, self.order = (grown(a) for a in (self.ints, self.floats, self.tags, self.order))
+
+    def level_span(self, level: int) -> tuple[int, int]:
+        """The indexes ``[start, end)`` of ``order`` that hold level ``level``'s entities (where a
+        new one of that level goes: ``end``)."""
+        n = self.count
+        if n == 0 or self.ints[self.order[n - 1], EI_DIM] < level:
+            return n, n
+        levels = self.ints[self.order[:n], EI_DIM]  # ascending: the order is grouped by level
+        return int(np.searchsorted(levels, level, "left")), int(np.searchsorted(levels, level, "right"))
 
     def insert(self, index: int, slot: int) -> None:
         """Put ``slot`` at ``index`` of the iteration order."""

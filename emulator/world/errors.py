@@ -22,6 +22,7 @@ MESSAGES = {
     "commands.data.modify.invalid_index": "Invalid list index: {0}",
     "commands.data.modify.invalid_substring": "Invalid substring indices: {0} to {1}",
     "commands.data.entity.invalid": "Unable to modify player data",
+    "argument.dimension.invalid": "Unknown dimension '{0}'",
     "commands.teleport.invalidPosition": "Invalid position for teleport",
     "commands.summon.invalidPosition": "Invalid position for summon",
     "commands.tag.add.failed": "Target either already has the tag or has too many tags",

@@ -384,10 +384,12 @@ def player_inventory(player, version) -> PlayerInventory:
     return PlayerInventory(player, version)
 
 
-def drop_item(store, pos, stack: ItemStack, version, rng, extra: Compound | None = None):
-    """An item entity holding ``stack`` at ``pos`` (ItemEntity's constructor: a pickup delay of 10,
-    random motion drawn from ``rng``); ``extra`` NBT overrides (``PickupDelay``, ``Owner`` ...)."""
+def drop_item(store, pos, stack: ItemStack, version, rng, extra: Compound | None = None,
+              dimension: str = "minecraft:overworld"):
+    """An item entity holding ``stack`` at ``pos`` in ``dimension`` (ItemEntity's constructor: a
+    pickup delay of 10, random motion drawn from ``rng``); ``extra`` NBT overrides (``PickupDelay``,
+    ``Owner`` ...)."""
     data = Compound(Item=to_nbt(stack, version), PickupDelay=Short(10), Age=Short(0), Health=Short(5))
     data["Motion"] = List([Double(rng.random() * 0.2 - 0.1), Double(0.2), Double(rng.random() * 0.2 - 0.1)])
     data.update(extra or {})
-    return store.summon("minecraft:item", pos, data)
+    return store.summon("minecraft:item", pos, data, dimension=dimension)

@@ -38,12 +38,13 @@ def online(state, name: str):
 
 
 def join(state, name: str, pos, rotation=(0.0, 0.0), gamemode: str = "survival", level: int = 0,
-         on_ground: bool = True):
+         on_ground: bool = True, dimension: str = "minecraft:overworld"):
     """A player named ``name`` joins (the one already online of that name leaves first)."""
     previous = online(state, name)
     if previous is not None:
         leave(state, previous)
-    player = state.entities.add_player(name, tuple(float(c) for c in pos), rotation[0], rotation[1], gamemode, level)
+    player = state.entities.add_player(name, tuple(float(c) for c in pos), rotation[0], rotation[1], gamemode, level,
+                                       dimension)
     player.uuid = offline_uuid(name)
     player.data["OnGround"] = Byte(1 if on_ground else 0)
     player.data["XpLevel"] = Int(level)

@@ -499,7 +499,7 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
 def block_matches(predicate: dict, ctx: LootContext, pos) -> bool:
     """BlockPredicate: ``blocks`` (id, list or #tag; ``block``/``tag`` before 1.20.5), ``state``,
     ``nbt`` (the block entity's, partial)."""
-    blocks = ctx.state.blocks
+    blocks = ctx.state.blocks_in(ctx.dimension)
     state = blocks.get(pos)
     wanted = predicate.get("blocks", predicate.get("block"))
     if "tag" in predicate:
@@ -546,7 +546,7 @@ def _property_in_range(actual: str, bounds: dict) -> bool:
 def _fluid_matches(predicate: dict, ctx: LootContext, pos) -> bool:
     """FluidPredicate on the block's fluid: water and lava blocks (level 0: the source, else
     flowing), a waterlogged block's water; every other block holds none (minecraft:empty)."""
-    state = ctx.state.blocks.get(pos)
+    state = ctx.state.blocks_in(ctx.dimension).get(pos)
     properties = dict(state.properties)
     fluid, fluid_props = "minecraft:empty", {}
     if state.id in ("minecraft:water", "minecraft:lava"):

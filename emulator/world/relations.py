@@ -15,6 +15,7 @@ leads, which the emulator does not model: they find nothing.
 """
 from __future__ import annotations
 
+from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import Entity, EntityStore
 from emulator.world.errors import CommandFailure
 from mcfunction_parser.nbt import Compound, IntArray, List, String
@@ -62,20 +63,22 @@ def stop_riding(rider: Entity) -> None:
         rider.vehicle = None
 
 
-def summon_with_passengers(store: EntityStore, type_id: str, pos, nbt: Compound | None) -> Entity:
-    """``summon`` with ``Passengers``: the vehicle, then each passenger compound (``id`` required)
-    at the same position, depth first, riding it. A passenger that cannot be created is skipped."""
+def summon_with_passengers(store: EntityStore, type_id: str, pos, nbt: Compound | None,
+                           dimension: str = OVERWORLD) -> Entity:
+    """``summon`` with ``Passengers`` in ``dimension``: the vehicle, then each passenger compound
+    (``id`` required) at the same position, depth first, riding it. A passenger that cannot be
+    created is skipped."""
     riders = nbt.get("Passengers") if nbt is not None else None
     own = nbt
     if riders is not None:
         own = Compound((k, v) for k, v in nbt.items() if k != "Passengers")
-    vehicle = store.summon(type_id, pos, own)
+    vehicle = store.summon(type_id, pos, own, dimension=dimension)
     for rider_nbt in riders if isinstance(riders, List) else ():
         kind = rider_nbt.get("id") if isinstance(rider_nbt, Compound) else None
         if not isinstance(kind, String):
             continue
         try:
-            rider = summon_with_passengers(store, normalise_id(str(kind)), pos, rider_nbt)
+            rider = summon_with_passengers(store, normalise_id(str(kind)), pos, rider_nbt, dimension)
         except CommandFailure:
             continue
         start_riding(rider, vehicle)

@@ -14,6 +14,13 @@ Semantics (decompiled 1.21 commands/arguments/selector/EntitySelector.java, Enti
 options/EntitySelectorOptions.java):
 - ``@a @p @r`` select players only; ``@e`` and ``@n`` add an "is alive" test; ``@s`` is the
   executor if it passes every test. ``@p @n`` sort nearest, ``@r`` random, limit 1.
+- Levels (EntitySelector.findEntities/findPlayers, isWorldLimited): a selector with a position,
+  volume or distance argument (``x y z dx dy dz distance``: EntitySelectorOptions calls
+  setWorldLimited) searches only the source's level; any other searches every level, entities in
+  the server's level order (``EntityStore.entities``), players in the player list's order (the order
+  they joined, ``EntityStore.players``) whichever level they are in. A selector that only finds
+  players (``@a @p @r``, ``type=player``, ``gamemode``, ``level``, ``advancements``: setIncludesEntities(false))
+  searches players; ``@s`` is the executor wherever it is.
 - Unsorted results come in creation order, limited as they are found; ``nearest``/``furthest``
   sort stably by squared distance; ``random`` shuffles with the store's seeded RNG.
 - ``x y z`` replace the origin's coordinates; ``dx dy dz`` make a box from the origin corner
@@ -65,6 +72,9 @@ def _builtin_world() -> SelectorWorld:
     return SelectorWorld(lambda tag, type_id: resources.in_tag("entity_type", tag, type_id))
 
 
+# the arguments that limit a selector to the source's level (EntitySelectorOptions: setWorldLimited)
+WORLD_LIMITING = frozenset(("x", "y", "z", "dx", "dy", "dz", "distance"))
+
 # (max results, players only, alive test, order) per selector variable.
 _VARIABLES = {
     "a": (UNLIMITED, True, False, "arbitrary"),
@@ -110,6 +120,7 @@ class SelectorQuery:
     def __init__(self, selector: ast.Selector, world: SelectorWorld | None = None) -> None:
         self.limit, self.players_only, alive, self.order = _VARIABLES[selector.variable]
         self.current = selector.variable == "s"
+        self.world_limited = any(arg.key in WORLD_LIMITING for arg in selector.args)
         self.tests: list[Callable[[Entity], bool]] = [lambda e: e.alive] if alive else []
         self.world = world or _builtin_world()
         self.scores: Callable[[str, str], int | None] = _no_scores
@@ -142,8 +153,10 @@ class SelectorQuery:
         elif key in ("x_rotation", "y_rotation"):
             self.tests.append(_rotation_test(value, "pitch" if key == "x_rotation" else "yaw"))
         elif key == "gamemode":
+            self.players_only = True
             self.tests.append(lambda e, v=value, n=neg: e.is_player and (e.gamemode == v) != n)
         elif key == "level":
+            self.players_only = True
             self.tests.append(lambda e, v=value: e.is_player and v.contains(e.level))
         elif key == "team":
             self.tests.append(lambda e, v=value, n=neg: e.type not in NOT_LIVING and ((e.team or "") == v) != n)
@@ -151,6 +164,7 @@ class SelectorQuery:
             test = self.world.predicate
             self.tests.append(lambda e, v=value, n=neg: test(v, e) != n)
         elif key == "advancements" and self.world.advancements is not None:
+            self.players_only = self.players_only or value.strip("{} \t") != ""
             done = self.world.advancements
             self.tests.append(lambda e, v=value: done(v, e))
         else:
@@ -189,12 +203,20 @@ class SelectorQuery:
             e = source.entity
             return [e] if e is not None and all(t(e) for t in tests) else []
         found = []
-        for entity in store.entities:
+        for entity in self._candidates(store, source):
             if all(t(entity) for t in tests):
                 found.append(entity)
                 if self.order == "arbitrary" and len(found) >= self.limit:
                     break
         return self._sorted(found, origin, store)[: self.limit]
+
+    def _candidates(self, store: EntityStore, source: Source) -> list[Entity]:
+        """The entities searched, in the order the game visits them: the source's level's, or every level's."""
+        if not self.world_limited:
+            return store.players() if self.players_only else store.entities
+        start, end = store.table.level_span(store.table.levels.ids[source.dimension])  # a level's are contiguous
+        level = store.entities[start:end]
+        return [e for e in level if e.is_player] if self.players_only else level
 
     def _sorted(self, found: list[Entity], origin, store: EntityStore) -> list[Entity]:
         if len(found) <= 1 or self.order == "arbitrary":

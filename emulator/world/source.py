@@ -1,7 +1,8 @@
 """The execution context (the game's ``CommandSourceStack``) as far as positions and rotations go.
 
-``Source(pos, yaw, pitch, entity, anchor)``: position (3 doubles), rotation (float32 yaw, pitch),
-the executing entity (``@s``, or None for the server) and the anchor (``"feet"`` or ``"eyes"``).
+``Source(pos, yaw, pitch, entity, anchor, dimension)``: position (3 doubles), rotation (float32 yaw,
+pitch), the executing entity (``@s``, or None for the server), the anchor (``"feet"`` or ``"eyes"``)
+and the level (a dimension id).
 
 Methods (each returns a new Source or a position; the Source itself is immutable)
 - ``anchor_position()``: ``Anchor.apply(source)``: the position, raised by the executor's eye
@@ -48,6 +49,7 @@ class Source:
     pitch: np.float32 = F32(0.0)
     entity: object = None  # emulator.world.entities.Entity or None
     anchor: str = "feet"
+    dimension: str = "minecraft:overworld"
 
     def anchor_position(self) -> tuple[float, float, float]:
         if self.entity is None or self.anchor != "eyes":

@@ -400,7 +400,8 @@ class WorldState:
     storage: dict = field(default_factory=dict)  # storage id -> nbt.Compound
     # the world's entities (creation order, UUIDs, seeded RNG) and blocks: see emulator.commands.entities
     entities: EntityStore = field(default_factory=EntityStore)
-    blocks: BlockMap = field(default_factory=BlockMap)
+    blocks: BlockMap = field(default_factory=BlockMap)  # the overworld's; blocks_in(dimension) for any level's
+    other_levels_blocks: dict = field(default_factory=dict)  # dimension id -> BlockMap
     block_ticks: BlockTicks = field(default_factory=BlockTicks)  # blocks' scheduled ticks (a button springing back)
     selector_cache: dict = field(default_factory=dict)  # id(ast.Selector) -> (node, SelectorQuery)
     random_sequences: RandomSequences = field(default_factory=RandomSequences)  # world seed 0
@@ -413,6 +414,12 @@ class WorldState:
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)
+
+    def blocks_in(self, dimension: str) -> BlockMap:
+        """The blocks of level ``dimension`` (each level has its own)."""
+        if dimension == "minecraft:overworld":
+            return self.blocks
+        return self.other_levels_blocks.setdefault(dimension, BlockMap())
 
     def emit(self, kind: str, text: str, loc: Loc | None = None, receivers: tuple[str, ...] = ()) -> None:
         self.log.append(LogEntry(self.tick, kind, text, loc, receivers))

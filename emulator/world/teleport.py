@@ -10,9 +10,16 @@ entity's state at that moment, and ``apply`` moves the entity there)
 - ``to_position_self(source, location)``: ``tp POS``: the executor, rotation "~ ~" (the execution
   rotation).
 - ``to_entity(destination)``: ``tp [TARGETS] DEST``: the destination entity's position and rotation.
-- ``apply(entity, destination)``: set pos and rotation, zero the vertical motion (``tp`` does).
-- ``teleport(source, targets, ...)``: the whole command over several targets, in order (each
-  target sees the earlier ones already moved); returns the count.
+- ``apply(entity, destination, store=None)``: set pos and rotation, zero the vertical motion (``tp``
+  does); with the ``store``, move the entity to the destination's level (the source's level for a
+  position, the destination entity's for an entity: ``execute in the_nether run tp @s ~ ~ ~``
+  crosses, and so does ``execute as @e run tp @s ~ ~ ~`` for an entity outside the server's
+  overworld). Between levels the entity comes last in its new level's order; the game makes a new
+  entity object there (Entity.teleportCrossDimension), the emulator keeps the one, so a context
+  still running as the old one (``@s``) sees the moved entity. Riders and vehicles crossing levels
+  are not modelled (a diagnostic says so).
+- ``teleport(source, targets, ..., store=None)``: the whole command over several targets, in order
+  (each target sees the earlier ones already moved); returns the count.
 Every rotation goes through ``wrapDegrees`` and the pitch is clamped to [-90, 90]; a destination
 outside x/z [-30000000, 30000000) or y [-20000000, 20000000) fails "Invalid position for teleport".
 
@@ -28,8 +35,9 @@ import numpy as np
 
 from mcfunction_parser import ast
 from emulator.world import rotation
+from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import in_spawnable_bounds
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.source import Source
 
 
@@ -38,13 +46,14 @@ class Destination:
     pos: tuple[float, float, float]
     yaw: np.float32
     pitch: np.float32
+    dimension: str = OVERWORLD
 
 
-def _moved(pos, yaw, pitch) -> Destination:
+def _moved(pos, yaw, pitch, dimension: str) -> Destination:
     if not in_spawnable_bounds(pos):
         raise CommandFailure("commands.teleport.invalidPosition")
     yaw, pitch = rotation.teleport_rotation(yaw, pitch)
-    return Destination(tuple(pos), yaw, pitch)
+    return Destination(tuple(pos), yaw, pitch, dimension)
 
 
 def _look_from(source: Source, pos, entity, target) -> tuple[np.float32, np.float32]:
@@ -58,7 +67,7 @@ def to_position(source: Source, entity, location: ast.Vec3, rotation_arg: ast.Ve
                 facing: ast.Vec3 | None = None, facing_entity=None, facing_anchor: str = "feet") -> Destination:
     pos = source.position_of(location)
     yaw, pitch = source.rotation_of(rotation_arg) if rotation_arg is not None else (entity.yaw, entity.pitch)
-    moved = _moved(pos, yaw, pitch)
+    moved = _moved(pos, yaw, pitch, source.dimension)
     target = None
     if facing is not None:
         target = source.position_of(facing)
@@ -67,20 +76,24 @@ def to_position(source: Source, entity, location: ast.Vec3, rotation_arg: ast.Ve
     if target is None:
         return moved
     yaw, pitch = _look_from(source, moved.pos, entity, target)
-    return Destination(moved.pos, yaw, pitch)
+    return Destination(moved.pos, yaw, pitch, moved.dimension)
 
 
 def to_position_self(source: Source, location: ast.Vec3) -> Destination:
     """``tp POS``: teleportToPos with ``WorldCoordinates.current()`` as the rotation."""
-    return _moved(source.position_of(location), source.yaw, source.pitch)
+    return _moved(source.position_of(location), source.yaw, source.pitch, source.dimension)
 
 
 def to_entity(destination) -> Destination:
-    return _moved(destination.pos, destination.yaw, destination.pitch)
+    return _moved(destination.pos, destination.yaw, destination.pitch, destination.dimension)
 
 
-def apply(entity, destination: Destination) -> None:
+def apply(entity, destination: Destination, store=None) -> None:
     """Move the entity; a non-finite rotation is discarded (``setYRot``/``setXRot`` refuse it)."""
+    if store is not None and destination.dimension != entity.dimension:
+        if entity.vehicle is not None or entity.passengers:
+            raise Unmodelled("a riding entity or a vehicle teleported to another dimension")
+        store.move_to_level(entity, destination.dimension)
     entity.pos = destination.pos
     if math.isfinite(destination.yaw):
         entity.yaw = destination.yaw
@@ -92,12 +105,12 @@ def apply(entity, destination: Destination) -> None:
 
 def teleport(source: Source, targets: list, location: ast.Vec3 | None = None, destination_entity=None,
              rotation_arg: ast.Vec2 | None = None, facing: ast.Vec3 | None = None,
-             facing_entity=None, facing_anchor: str = "feet") -> int:
+             facing_entity=None, facing_anchor: str = "feet", store=None) -> int:
     """The whole ``tp TARGETS ...`` command; returns how many entities were teleported."""
     for entity in targets:
         if destination_entity is not None:
             dest = to_entity(destination_entity)
         else:
             dest = to_position(source, entity, location, rotation_arg, facing, facing_entity, facing_anchor)
-        apply(entity, dest)
+        apply(entity, dest, store)
     return len(targets)

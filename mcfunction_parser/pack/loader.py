@@ -65,6 +65,8 @@ class LoadedPacks:
     advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
     predicates: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
     advancements: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
+    dimensions: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension: id -> its JSON
+    dimension_types: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension_type: id -> its JSON
     # registry -> tag id -> flattened tag: the game's own (from a game jar) merged under the packs'
     registry_tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)
     vanilla_tags: bool = False  # the game's own tags were read from a game jar
@@ -160,6 +162,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     _load_predicates(packs, result)
     _load_advancements(packs, result)
     _load_loot(packs, result)
+    _load_dimensions(packs, result)
     return result
 
 
@@ -292,14 +295,14 @@ def _resources(pack: _PackFiles, folders: tuple[str, str], suffix: str,
         if len(parts) < 3 + depth or not rel.endswith(suffix):
             continue
         folder = "/".join(parts[2:2 + depth])
-        if folder == ignored:
-            ns_dir = f"data/{parts[1]}"
-            ignored_count[ns_dir] = ignored_count.get(ns_dir, 0) + 1
-        elif folder == read:
+        if folder == read:  # a folder the rename did not touch has one name in both
             path = "/".join(parts[2 + depth:])[: -len(suffix)]
             resource_id = _resource_id(parts[1], path, pack.shown_file(rel), diagnostics)
             if resource_id is not None:
                 found[resource_id] = rel
+        elif folder == ignored:
+            ns_dir = f"data/{parts[1]}"
+            ignored_count[ns_dir] = ignored_count.get(ns_dir, 0) + 1
     # A pack declaring formats on both sides of the rename keeps both folders on purpose.
     spans = pack.info.supported is not None and pack.info.supported.min < SINGULAR_FOLDERS_FORMAT \
         <= pack.info.supported.max
@@ -464,6 +467,14 @@ def _load_predicates(packs: list[_PackFiles], result: LoadedPacks) -> None:
     for predicate_id, doc in _chosen_json(packs, ("predicate", "predicates"), result):
         if conditions.validate(doc, result.version, f"predicate {predicate_id}", result.diagnostics):
             result.predicates[predicate_id] = doc.value
+
+
+def _load_dimensions(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """The packs' dimensions and dimension types (worldgen registries: only what the emulator reads
+    of them, the ids and the types' coordinate scale)."""
+    for kind, loaded in (("dimension", result.dimensions), ("dimension_type", result.dimension_types)):
+        for resource_id, doc in _chosen_json(packs, (kind, kind), result):
+            loaded[resource_id] = doc.value
 
 
 def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:

@@ -64,10 +64,12 @@ non_negative = st.one_of(st.sampled_from((0, 1, 2, 7, 65536, INT_MAX)), st.integ
 
 # Stages that change the context but not the scores (``as @e`` with no entities: 0 contexts)
 MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
-# With entities: three markers summoned by t:f0, tagged m+a, m, n, an armor stand tagged m, and a
-# trigger objective t
+# With entities: three markers summoned by t:f0, tagged m+a, m, n, an armor stand tagged m, a
+# marker tagged m in the nether (selectors with a position, volume or distance search the context's
+# level only), and a trigger objective t
 ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"]}',
                 'summon marker ~ ~1 ~5 {Tags:["n"]}', 'summon armor_stand ~1 ~ ~1 {Tags:["m"]}',
+                'execute in minecraft:the_nether run summon marker ~ ~ ~1 {Tags:["m","nether"]}',
                 "scoreboard objectives add t trigger")
 # (the VM evaluates @e/@a/@s/@p/@n with type, #type, tag, scores, x/y/z, volumes, distance, limit and
 # sort nearest/furthest itself; random sorts, names, rotations ... go to the host)
@@ -78,7 +80,9 @@ ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=
                     "rotated as @e[type=armor_stand]", "positioned as @s", "as @e[distance=..2.5]",
                     "at @e[distance=1..,sort=nearest,limit=2]", "as @e[x=0,y=0,z=0,dx=2,dy=1,dz=5]",
                     "as @e[dx=-1,dy=0,dz=1,tag=m]", "as @n[tag=m]", "as @e[type=!#minecraft:skeletons,tag=]",
-                    "as @e[tag=w69]", "positioned ^1 ^ ^2", "rotated 30 10", "as @e[tag=!] at @s")
+                    "as @e[tag=w69]", "positioned ^1 ^ ^2", "rotated 30 10", "as @e[tag=!] at @s",
+                    "in minecraft:the_nether", "at @e[tag=nether]", "as @e[tag=m,distance=0..]",
+                    "in minecraft:the_end as @e[x=0,sort=furthest]", "as @e[tag=m] positioned as @e[tag=nether]")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]")
 ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
@@ -103,7 +107,10 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "scoreboard players add @n[tag=m] o 1", "tag @e[sort=furthest,limit=1] add far",
                    "execute as @e[tag=m] run function t:wide", "tag @e[tag=w5,tag=!w68] remove w69",
                    "tp @s ^ ^ ^1", "tp @s ^0.5 ^-1 ^", "execute as @e[tag=n] at @s run tp @s ^ ^ ^-0.25",
-                   "tp @e[x=0,y=0,z=0,distance=..4] ~ ~0.5 ~")
+                   "tp @e[x=0,y=0,z=0,distance=..4] ~ ~0.5 ~", "execute in minecraft:the_nether run tp @s ~ ~ ~1",
+                   "execute in minecraft:the_end run tp @e[tag=n] ~ ~ ~", "tp @s @e[tag=nether,limit=1]",
+                   'execute in minecraft:the_end run summon marker ~ ~ ~ {Tags:["m","n"]}',
+                   "execute if dimension minecraft:the_nether run tag @s add q")
 # t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
@@ -324,7 +331,7 @@ class Outcome:
     log: tuple
     diagnostics: tuple
     line_costs: dict  # {(file name, line): cost charged there}
-    entities: tuple = ()  # (uuid, type, pos, sorted tags) of every entity, in the store's order
+    entities: tuple = ()  # (uuid, type, pos, sorted tags, dimension) of every entity, in the store's order
     storage: dict = None  # {storage id: SNBT}
     schedules: tuple = ()  # (name, due) of every pending schedule, in run order
     gamerules: dict = None
@@ -358,7 +365,7 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
         log=tuple((e.kind, e.text) for e in state.log),
         diagnostics=tuple((d.message, tuple((f.function, f.loc.line) for f in d.frames)) for d in state.diagnostics),
         line_costs={(Path(path).name, line): n for (path, line), n in backend.line_counts().items() if n},
-        entities=tuple((e.uuid_string, e.type, e.pos, tuple(sorted(e.tags))) for e in state.entities.entities),
+        entities=tuple((e.uuid_string, e.type, e.pos, tuple(sorted(e.tags)), e.dimension) for e in state.entities.entities),
         storage={sid: to_snbt(root) for sid, root in state.storage.items()},
         schedules=tuple((e.name, e.due) for e in state.schedule.pending()),
         gamerules=dict(state.gamerules.values),

@@ -1,0 +1,60 @@
+"""The server's levels (dimensions): which exist, their order and their coordinate scale.
+
+``Levels(custom=())``: the three vanilla dimensions, then the packs' own (``data/<ns>/dimension/``),
+each with a number (``id(name)``, ``names[i]``) that the entity table stores per entity (``EI_DIM``)
+and the VM's contexts carry (``CI_DIM``). The numbers follow the server's level order
+(MinecraftServer.getAllLevels: the overworld, the nether, the end, then the others; the game
+orders the packs' dimensions by identity hashes, here they come in id order), which is the order
+a selector that is not limited to one level visits them in.
+``Levels.from_packs(dimensions, dimension_types)``: the packs' dimension files (id -> JSON) and
+dimension type files, for each dimension its type's ``coordinate_scale``.
+``level_id(name)``: DimensionArgument.getDimension: an unknown dimension fails the command
+("Unknown dimension"). ``teleportation_scale(a, b)``: DimensionType.getTeleportationScale, what
+``execute in`` multiplies x and z by (CommandSourceStack.withLevel).
+"""
+from __future__ import annotations
+
+from emulator.world.errors import CommandFailure
+
+OVERWORLD = "minecraft:overworld"
+VANILLA = (OVERWORLD, "minecraft:the_nether", "minecraft:the_end")
+# DimensionType.coordinateScale of the vanilla dimension types (data/minecraft/dimension_type)
+VANILLA_TYPE_SCALE = {"minecraft:overworld": 1.0, "minecraft:overworld_caves": 1.0, "minecraft:the_nether": 8.0,
+                      "minecraft:the_end": 1.0}
+
+
+def _id(name: str) -> str:
+    return name if ":" in name else "minecraft:" + name
+
+
+class Levels:
+    def __init__(self, custom: dict[str, float] | None = None) -> None:
+        """``custom``: the packs' dimensions (id -> coordinate scale); a pack may redefine a vanilla one."""
+        custom = custom or {}
+        self.names: list[str] = list(VANILLA) + sorted(n for n in custom if n not in VANILLA)
+        self.ids = {name: i for i, name in enumerate(self.names)}
+        self.scales = [custom.get(n, VANILLA_TYPE_SCALE.get(n, 1.0)) for n in self.names]
+
+    @classmethod
+    def from_packs(cls, dimensions: dict, dimension_types: dict) -> "Levels":
+        """The dimension files (``type``: a dimension type id or an inline type) with their scales."""
+        custom = {}
+        for name, value in dimensions.items():
+            kind = value.get("type") if isinstance(value, dict) else None
+            if isinstance(kind, str):
+                kind = dimension_types.get(_id(kind), _id(kind))
+            if isinstance(kind, dict):
+                scale = kind.get("coordinate_scale", 1.0)
+            else:
+                scale = VANILLA_TYPE_SCALE.get(kind, 1.0)
+            custom[name] = float(scale) if isinstance(scale, (int, float)) else 1.0
+        return cls(custom)
+
+    def level_id(self, name: str) -> int:
+        index = self.ids.get(name)
+        if index is None:
+            raise CommandFailure("argument.dimension.invalid", name)
+        return index
+
+    def teleportation_scale(self, origin: str, destination: str) -> float:
+        return self.scales[self.level_id(origin)] / self.scales[self.level_id(destination)]
