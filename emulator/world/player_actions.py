@@ -61,7 +61,7 @@ def drop_selected(state, player, whole: bool):
                                    version, state.resources.random, Compound(
                                        PickupDelay=Short(THROWN_PICKUP_DELAY),
                                        Thrower=IntArray(Int(v) for v in player.uuid),
-                                       Motion=_throw_motion(player, state.resources.random)))
+                                       Motion=_throw_motion(player, state.resources.random)), player.dimension)
     statistics.award(state, player, statistics.stat_name("dropped", taken.id), taken.count)
     statistics.award(state, player, statistics.stat_name("custom", "drop"))
     return entity
