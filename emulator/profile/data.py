@@ -42,6 +42,14 @@ class RootStats:
         runs.max_cost = max(runs.max_cost, result.cost)
         runs.cuts += result.cut
 
+    def roots_ran(self, function_id: str, costs) -> None:
+        """Many runs of one root at once (numpy costs; none was cut)."""
+        runs = self.by_function.setdefault(function_id, RootRuns())
+        runs.runs += len(costs)
+        runs.called += int((costs > 0).sum())
+        runs.cost += int(costs.sum())
+        runs.max_cost = max(runs.max_cost, int(costs.max()))
+
     def calls(self) -> Counter:
         return Counter({f: r.called for f, r in self.by_function.items() if r.called})
 

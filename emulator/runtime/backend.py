@@ -14,6 +14,11 @@ Beyond the protocol, a backend may offer what the profiler (:mod:`emulator.profi
 - :class:`InstructionCounts`: cost per instruction and function, calls, and the host ops Python
   ran for the VM. The numba backend counts them.
 
+And what the runtime uses when it can:
+
+- :class:`TickBatches`: ``run_ticks`` runs the tick functions of many ticks in one go, where
+  nothing between them needs the runtime (the numba backend, without leaving the VM).
+
 Command cost — THE rule (both backends must count identically)
 ==============================================================
 From the game's ExecutionContext / BuildContexts / ExecuteCommand / CallFunction (1.20.3+):
@@ -58,6 +63,7 @@ diagnostic read the same in both backends.
 """
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple, Protocol, runtime_checkable
 
@@ -66,6 +72,8 @@ from emulator.world.records import Frame
 from emulator.world.state import WorldState
 
 if TYPE_CHECKING:
+    import numpy as np
+
     from mcfunction_parser import ast
     from mcfunction_parser.nbt import Compound
 
@@ -109,6 +117,27 @@ class Backend(Protocol):
         """Cost charged so far per ``(source path, line)``, cumulative over the run: the sum over
         all lines equals the total cost minus the roots' own CallFunction charges (a root call is
         on no line). May be ``{}`` if not tracked."""
+
+
+@dataclass(frozen=True, slots=True)
+class TickBatch:
+    """What :meth:`TickBatches.run_ticks` ran: each root's cost in order (int64), and whether the
+    last one was cut (no other was; none returns a result the runtime reads)."""
+
+    costs: "np.ndarray"
+    cut: bool
+
+
+@runtime_checkable
+class TickBatches(Protocol):
+    def run_ticks(self, functions: list[str], ticks: int, at_tick: Callable[[int], None]) -> TickBatch | None:
+        """Run ``functions`` (the tick functions) each as its own root as :meth:`Backend.run_root`
+        would, in order, once per tick for up to ``ticks`` ticks, without coming back in between:
+        the runtime has checked that nothing between these ticks needs it (their ends change
+        nothing but the clocks). The last tick may be partial: the batch ends with a root after
+        which Python was needed (e.g. one that ran a host op or was cut). None when the backend
+        cannot run them so. ``at_tick(t)`` is called before anything of tick ``t`` of the batch
+        runs in Python (the clocks must read it)."""
 
 
 # ---------------------------------------------------------------------- what the profiler reads

@@ -20,12 +20,18 @@ An advancement reward earned inside a root (``advancement grant``) runs as its o
 root ends (the game runs it right after the command; the command warns of it).
 
 Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs, with its result.
+
+:meth:`Runtime.run_ticks` hands a run of quiet ticks to a backend that batches them
+(:class:`emulator.runtime.backend.TickBatches`): ticks whose steps 3-6 change nothing but the
+clocks (no scheduled event due, no effect or hurt timer running, no statistic or advancement
+counting a player, no reward pending). The backend comes back early when a root needed Python (a
+host op may change any of that); the runtime then finishes that tick itself and looks again.
 """
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from emulator.runtime.backend import Backend, RootResult
+from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands.entities import entity_context
 from emulator.world import advancements, block_use, living, player_actions, statistics
 from emulator.world.context import Context
@@ -36,7 +42,8 @@ from emulator.world.state import WorldState
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"
 
-# told of each root sequence run: (function id, its result)
+# told of each root sequence run: (function id, its result); a listener with a ``roots_ran(function id,
+# costs)`` method is told of a batch's roots of one function at once (not cut, no result read)
 RootListener = Callable[[str, RootResult], None]
 
 
@@ -62,7 +69,10 @@ class Runtime:
         return self.packs.resolve_tag(tag) if tag in self.packs.tags else []
 
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
-        result = self.backend.run_root(function_id, context, arguments)
+        return self._root_ran(function_id, self.backend.run_root(function_id, context, arguments))
+
+    def _root_ran(self, function_id: str, result: RootResult) -> RootResult:
+        """After each root: its listeners, then the rewards it earned."""
         self.max_root_cost = max(self.max_root_cost, result.cost)
         for listener in self.root_listeners:
             listener(function_id, result)
@@ -104,7 +114,72 @@ class Runtime:
         if not self.loaded:
             self.loaded = True
             cost += self._run_all(self.members(LOAD_TAG))
-        cost += self._run_all(self.members(TICK_TAG))
+        return self._end_tick(cost + self._run_all(self.members(TICK_TAG)))
+
+    def run_ticks(self, n: int) -> int:
+        """Run ``n`` server ticks, as many :meth:`tick` calls would; returns their cost. Quiet ticks
+        run in batches where the backend can."""
+        cost = 0
+        while n > 0:
+            quiet = self._quiet_ticks(n)
+            ran, spent = self._batch(quiet) if quiet > 1 else (1, self.tick())
+            n -= ran
+            cost += spent
+        return cost
+
+    def _quiet_ticks(self, n: int) -> int:
+        """How many of the next ``n`` ticks may run as a batch: every one but the last must end
+        changing only the clocks (see the module's docs)."""
+        state = self.state
+        if (not self.loaded or state.pending_rewards or not isinstance(self.backend, TickBatches)
+                or not (living.tick_is_idle(state) and statistics.tick_is_idle(state)
+                        and advancements.tick_is_idle(state))):
+            return 1
+        due = state.schedule.next_due()
+        return n if due is None else max(1, min(n, due - state.gametime))
+
+    def _batch(self, ticks: int) -> tuple[int, int]:
+        """Up to ``ticks`` quiet ticks through the backend; returns (ticks run, their cost). The last
+        tick it touched ends here: the rest of its functions, then its end (:meth:`_end_tick`)."""
+        state = self.state
+        members = self.members(TICK_TAG)
+        start = (state.gametime, state.tick, state.daytime)
+        daylight = state.gamerules.get("doDaylightCycle") == "true"
+
+        def at_tick(t: int) -> None:  # ticks 0 .. t-1 of the batch ended moving only the clocks
+            state.gametime, state.tick = start[0] + t, start[1] + t
+            if daylight:
+                state.daytime = start[2] + t
+
+        self.rewards_cost = 0
+        batch = self.backend.run_ticks(members, ticks, at_tick)
+        if batch is None or not len(batch.costs):
+            return 1, self.tick()
+        costs, m = batch.costs, len(members)
+        last = (len(costs) - 1) // m  # the tick the batch ended in
+        at_tick(last)
+        self.max_root_cost = max(self.max_root_cost, int(costs.max()))
+        for j, function_id in enumerate(members):  # every root but the last: not cut, no reward earned
+            self._roots_ran(function_id, costs[j:len(costs) - 1:m])
+        self._root_ran(members[(len(costs) - 1) % m], RootResult(int(costs[-1]), None, batch.cut))
+        self.commands_per_tick += costs[:last * m].reshape(last, m).sum(axis=1).tolist()
+        cost = self._end_tick(int(costs[last * m:].sum()) + self._run_all(members[len(costs) - last * m:]))
+        return last + 1, int(costs[:last * m].sum()) + cost
+
+    def _roots_ran(self, function_id: str, costs) -> None:
+        """Roots of ``function_id`` a batch ran (not cut, no reward earned): their listeners."""
+        if not len(costs):
+            return
+        for listener in self.root_listeners:
+            many = getattr(listener, "roots_ran", None)
+            if many is not None:
+                many(function_id, costs)
+            else:
+                for cost in costs.tolist():
+                    listener(function_id, RootResult(cost, None))
+
+    def _end_tick(self, cost: int) -> int:
+        """Steps 3-6 of a tick whose functions cost ``cost``; returns the tick's whole cost."""
         state = self.state
         state.gametime += 1
         while (entry := state.schedule.pop_due(state.gametime)) is not None:

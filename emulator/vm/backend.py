@@ -12,7 +12,7 @@ import numpy as np
 
 from emulator.vm import loop as vm
 from emulator.commands import entities as world_entities
-from emulator.runtime.backend import HostRun, RootResult, report_quota_cut
+from emulator.runtime.backend import HostRun, RootResult, TickBatch, report_quota_cut
 from emulator.vm.compiler import Compiler
 from emulator.vm.entity_arrays import SelectorTables
 from emulator.vm.host import Host, StoreTarget, resolves_target
@@ -92,17 +92,12 @@ class NumbaBackend:
         self.fstack = vm.new_fork_stack()  # contexts waiting for the rest of their chain (see emulator.vm.loop)
         self.coll = vm.new_fork_stack()  # contexts kept for their chain's final command
         self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
+        self.batch = np.zeros(1, dtype=np.int64)  # run_ticks: the tick functions, then each root's cost
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
-        r = self.regs
-        r[:] = 0
-        self.contexts = {}
-        self.context_ids = {}
-        self.as_cache[:, 0] = -1  # context indexes start again
-        self.store_targets = {}
-        self._context_index(context or Context(), ())
+        r = self._start_root(context or Context())
         function = self.packs.functions.get(function_id)
         if function is None:
             state.error(f"Unknown function {function_id}")
@@ -112,15 +107,9 @@ class NumbaBackend:
         except CommandFailure as failure:
             state.error(failure.message, (Frame(function_id, Loc(function.path, 1, 1)),))
             return RootResult(0, None)
-        self.root_frame = Frame(function_id, Loc(function.path, max(function.lines, 1), 1))  # where a root ends
+        self.root_frame = _end_frame(function)
         limit = state.gamerules.max_command_chain_length
-        r[vm.R_PC] = Program.ROOT_PC
-        r[vm.R_QUOTA] = limit
-        r[vm.R_ALIVE] = 1
-        r[vm.R_CALLFN] = fn
-        r[vm.R_SANITIZE] = int(self.sanitize)
-        r[vm.R_COUNTING] = int(self.counting)
-        r[vm.R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
+        self._set_root(fn, limit)
         self.returned = False
         cut = self._drive(limit)
         self._flush_overflows()
@@ -129,11 +118,66 @@ class NumbaBackend:
             result = int(r[vm.R_VAL]) if r[vm.R_OK] else 0
         return RootResult(int(limit - r[vm.R_QUOTA]), result, cut)
 
+    def run_ticks(self, functions: list[str], ticks: int, at_tick) -> TickBatch | None:
+        """:class:`emulator.runtime.backend.TickBatches`: the VM runs the roots one after the other
+        itself (``run``'s batch registers); it comes back at the end of the batch, or at the end of
+        a root when Python is needed before the next one: a cut to report, overflows or log lines
+        to write with their tick, a host op that ran (it may have changed what the tick's end does)."""
+        ids = []
+        for function_id in functions:
+            function = self.packs.functions.get(function_id)
+            if function is None or function.is_macro:  # their errors are run_root's
+                return None
+            ids.append(self.program.function_index[function_id])
+        if not ids or ticks < 1:
+            return None
+        members = len(ids)
+        limit = self.state.gamerules.max_command_chain_length
+        self.batch = np.zeros(members * (ticks + 1), dtype=np.int64)
+        self.batch[:members] = ids
+        self.batch_functions = functions
+        self.at_tick = at_tick
+        self.roots_started = 0
+        r = self._start_root(Context())
+        self.root_contexts = (dict(self.contexts), dict(self.context_ids))
+        self._set_root(ids[0], limit)
+        r[vm.R_BATCH], r[vm.R_BTICKS], r[vm.R_BMEMBERS], r[vm.R_BLIMIT] = 1, ticks, members, limit
+        try:
+            cut = self._drive(limit)
+            self._flush_overflows()
+        finally:
+            r[vm.R_BATCH] = 0
+        return TickBatch(self.batch[members:members + int(r[vm.R_BROOTS])].copy(), cut)
+
+    def _start_root(self, context: Context) -> np.ndarray:
+        """Registers and contexts for a new root run in ``context`` (context 0); the registers."""
+        r = self.regs
+        if r[vm.R_NCTX] > 1:  # the VM made contexts: as_cache names them (their indexes start again)
+            self.as_cache[:, 0] = -1
+        r[:] = 0
+        self.contexts = {}
+        self.context_ids = {}
+        self.store_targets = {}
+        self._context_index(context, ())
+        return r
+
+    def _set_root(self, fn: int, limit: int) -> None:
+        r = self.regs
+        r[vm.R_PC] = Program.ROOT_PC
+        r[vm.R_QUOTA] = limit
+        r[vm.R_ALIVE] = 1
+        r[vm.R_CALLFN] = fn
+        r[vm.R_SANITIZE] = int(self.sanitize)
+        r[vm.R_COUNTING] = int(self.counting)
+        r[vm.R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
+
     def _drive(self, limit: int) -> bool:
-        """Run the VM until the root is done; True when the quota (or the depth cap) cut it."""
+        """Run the VM until the root is done (in a batch of ticks: until the VM comes back at the end of
+        a root); True when the quota (or the depth cap) cut that root."""
         sb = self.state.scoreboard
         r = self.regs
         table = self.state.entities.table
+        cut = False
         while True:
             code, starts, floats = self.program.arrays()
             self._fit_counters(code.shape[0], starts.shape[0])
@@ -143,21 +187,26 @@ class NumbaBackend:
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             sb.writable, sb.trigger, self.counts, self.totals, self.active, self.ovf,
                             self.cints, self.cfloats, sels, sfloats, tests, table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf,
-                            self.fstack, self.coll, self.as_cache)
+                            self.fstack, self.coll, self.as_cache, self.batch)
+            batching = r[vm.R_BATCH] != 0
+            if batching:
+                self._batch_root(status == vm.ST_DONE)
             log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
             if r[vm.R_NLOG]:
                 self._write_log()
             if status == vm.ST_DONE:
                 self.returned = True  # the root function came back (a cut may still be logged)
-                if r[vm.R_QUOTA] > 0:
-                    return False
+                if cut or r[vm.R_QUOTA] > 0:
+                    return cut
                 # the queue checks the quota before polling, even when nothing is left
-                report_quota_cut(self.state, limit, (self.root_frame,))
+                report_quota_cut(self.state, limit, (self._finished_root_frame(),))
                 return True
             if status == vm.ST_CUT:
                 self._close_frames()
                 report_quota_cut(self.state, limit, self.traceback(int(r[vm.R_PC])))
-                return True
+                if not batching:
+                    return True
+                cut = self._abandon_root()
             if status == vm.ST_HOST:
                 pc = int(r[vm.R_PC])
                 self._host_guarded(pc)
@@ -179,7 +228,36 @@ class NumbaBackend:
             elif status == vm.ST_GROW:
                 if not self._grow():
                     self._close_frames()
-                    return True
+                    if not batching:
+                        return True
+                    cut = self._abandon_root()
+
+    def _batch_root(self, ended: bool) -> None:
+        """In a batch, before Python serves the VM: the clocks read the tick of the root running (or
+        that just ``ended``), and when the VM started another root since, Python's contexts start
+        again as run_root starts them."""
+        r = self.regs
+        self.at_tick(int(r[vm.R_BROOTS] - 1) // int(r[vm.R_BMEMBERS]) if ended else int(r[vm.R_BTICK]))
+        if not ended and self.roots_started != r[vm.R_BROOTS]:
+            self.roots_started = int(r[vm.R_BROOTS])
+            self.contexts, self.context_ids = (dict(d) for d in self.root_contexts)
+            self.store_targets = {}
+
+    def _abandon_root(self) -> bool:
+        """A batch's root was cut: the VM resumes at the root stub's HALT, which ends it and the
+        batch (its frames were closed). True (the root was cut)."""
+        r = self.regs
+        r[vm.R_PC] = Program.ROOT_PC + 1
+        r[vm.R_DEPTH] = 0
+        r[vm.R_BSTOP] = 1
+        return True
+
+    def _finished_root_frame(self) -> Frame:
+        """Where the root that just ended ends (the last of a batch's)."""
+        r = self.regs
+        if not r[vm.R_BATCH]:
+            return self.root_frame
+        return _end_frame(self.packs.functions[self.batch_functions[(int(r[vm.R_BROOTS]) - 1) % int(r[vm.R_BMEMBERS])]])
 
     def _write_log(self) -> None:
         """The log lines OP_LOG queued, written by the host as a host op would (it never fails)."""
@@ -228,6 +306,7 @@ class NumbaBackend:
         self.host_runs[pc] += 1
         ctx = self.context(int(r[vm.R_CTX]))
         r[vm.R_PC] = pc + 1
+        r[vm.R_BSTOP] = r[vm.R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
         if opcode == vm.OP_HOST:
             result = self.host.run_final(node, ctx)
             r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = int(result.has), int(result.ok), wrap32(result.value)
@@ -457,6 +536,11 @@ class NumbaBackend:
     def _charged(self) -> list[int]:
         """The pcs of the instructions charged so far, in code order."""
         return np.flatnonzero(self.counts).tolist()
+
+
+def _end_frame(function: ast.Function) -> Frame:
+    """Where a root running ``function`` ends (its last line)."""
+    return Frame(function.id, Loc(function.path, max(function.lines, 1), 1))
 
 
 def _grown(rows: np.ndarray) -> np.ndarray:

@@ -171,7 +171,10 @@ R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
 R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG = range(15, 23)
 R_NFORK, R_NCOLL, R_NSEL2, R_NCTX = range(23, 27)  # rows used in fstack and coll; SELHOLDERS' source count; contexts
-N_REGS = 27
+# a batch of ticks (NumbaBackend.run_ticks; 0 in R_BATCH: one root): the ticks to run, the tick and the member
+# running, the members per tick, the roots done, Python's request to stop when this root ends, each root's quota
+R_BATCH, R_BTICKS, R_BTICK, R_BMEMBER, R_BMEMBERS, R_BROOTS, R_BSTOP, R_BLIMIT = range(27, 35)
+N_REGS = 35
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
 F_WIDTH = 11
@@ -584,7 +587,7 @@ def _clamp_pos(v, limit):
 @njit(cache=True, error_model="numpy")
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
         active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf, logbuf, fstack, coll,
-        as_cache):
+        as_cache, batch):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -592,6 +595,11 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
     On return ``regs[R_PC]`` is where to resume; for ST_HOST/ST_MACRO it is the asking instruction
     and Python moves it past once it has set ``R_HAS/R_OK/R_VAL`` (or ``R_CALLFN``), for ST_CUT the
     entry that was not run, for ST_GROW the call to retry.
+
+    A batch of ticks (``regs[R_BATCH]``): ``batch[:R_BMEMBERS]`` are the tick functions, each
+    tick runs each as its own root (context 0, the server's), and ``batch[R_BMEMBERS + i]`` gets
+    root ``i``'s cost. ST_DONE comes back once the batch is done or when a root ends and Python is
+    needed before the next one (:meth:`emulator.vm.backend.NumbaBackend.run_ticks`).
     """
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
@@ -1414,9 +1422,41 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 continue
             status = ST_MACRO
             break
-        else:  # OP_HALT
+        else:  # the root is done; in a batch of ticks the next root starts here
             status = ST_DONE
-            break
+            if regs[R_BATCH] == 0:
+                break
+            m = regs[R_BMEMBERS]
+            nr = regs[R_BROOTS]
+            batch[m + nr] = regs[R_BLIMIT] - quota  # the root's cost
+            regs[R_BROOTS] = nr + 1
+            j = regs[R_BMEMBER] + 1
+            if j == m:
+                j = 0
+                regs[R_BTICK] += 1
+            regs[R_BMEMBER] = j
+            # Python reports a cut, writes overflows and log lines with their tick, and ends the
+            # tick after a host op (it may have changed what the tick's end does)
+            if quota <= 0 or novf or nlog or regs[R_BSTOP] or regs[R_BTICK] == regs[R_BTICKS]:
+                break
+            if regs[R_NCTX] > 1:  # contexts were made: as_cache's rows name them
+                as_cache[:, 0] = -1
+            regs[R_NCTX] = 1  # context 0: the server at world spawn, as every tick function runs
+            regs[R_NFORK] = 0
+            regs[R_NCOLL] = 0
+            regs[R_CALLFN] = batch[j]
+            pc = 0  # Program.ROOT_PC
+            quota = regs[R_BLIMIT]
+            alive = 1
+            has = 0
+            ok = 0
+            val = 0
+            acc_any = 0
+            acc_sum = 0
+            abort = 0
+            ctx = 0
+            loop = LOOP_NONE
+            nret = 0
     regs[R_PC] = pc
     regs[R_QUOTA] = quota
     regs[R_DEPTH] = depth

@@ -97,6 +97,11 @@ def warn_unobserved(state) -> None:
                             "here: the emulator does not observe that trigger", severity="warning")
 
 
+def tick_is_idle(state) -> bool:
+    """Whether :func:`tick_players` would fire nothing now: no advancement, or no player."""
+    return not state.resources.advancements or not state.entities.players()
+
+
 def tick_players(state) -> None:
     """The triggers each player fires in its tick: ``tick``, and ``location`` every 20 ticks."""
     if not state.resources.advancements:

@@ -355,6 +355,19 @@ def _drop_if_empty(entity) -> None:
         del entity.data["active_effects"]
 
 
+def tick_is_idle(state) -> bool:
+    """Whether :func:`tick_living` would change nothing now: no effect counting down, no hurt
+    time or hurt timer running."""
+    for entity in state.entities.living():
+        found = entity.data.get("active_effects")
+        if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE for e in found):
+            return False
+        hurt_time = entity.data.get("HurtTime")
+        if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or entity in _HURT:
+            return False
+    return True
+
+
 def tick_living(state) -> None:
     """Each living entity's tick, as far as a pack can see it: every effect's duration counts down
     (MobEffectInstance.tickServer) and an expired one is removed; hurt timers run out."""

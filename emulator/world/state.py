@@ -324,6 +324,12 @@ class ScheduleQueue:
                 return entry
         return None
 
+    def next_due(self) -> int | None:
+        """The due time of the next pending event, None when none is pending."""
+        while self._heap and self._live.get((self._heap[0][2].name, self._heap[0][0])) is not self._heap[0][2]:
+            heapq.heappop(self._heap)  # cleared or replaced: never runs
+        return self._heap[0][0] if self._heap else None
+
     def pending(self) -> list[ScheduledEntry]:
         """Pending events in run order."""
         return sorted(self._live.values(), key=lambda e: (e.due, e.seq))

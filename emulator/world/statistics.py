@@ -63,12 +63,20 @@ def award(state, player, stat: str, amount: int = 1) -> None:
 
 def tick_players(state) -> None:
     """Each living player's per-tick statistics, after the tick's functions ran."""
-    board = state.scoreboard
-    if not any(board.alive[board.objective_ids[o]] and ":" in board.criteria[board.objective_ids[o]]
-               for o in board.objectives):
+    if not _counts_statistics(state.scoreboard):
         return  # no statistic objective: nothing to count (the common case, kept cheap)
     for player in state.entities.players():
         for stat in PER_TICK:
             award(state, player, stat_name("custom", stat))
         if player.sneaking:
             award(state, player, stat_name("custom", SNEAK_TIME))
+
+
+def tick_is_idle(state) -> bool:
+    """Whether :func:`tick_players` would change nothing now: no statistic objective, or no player."""
+    return not _counts_statistics(state.scoreboard) or not state.entities.players()
+
+
+def _counts_statistics(board) -> bool:
+    return any(board.alive[board.objective_ids[o]] and ":" in board.criteria[board.objective_ids[o]]
+               for o in board.objectives)
