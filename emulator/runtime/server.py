@@ -23,9 +23,9 @@ Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs
 
 :meth:`Runtime.run_ticks` hands a run of quiet ticks to a backend that batches them
 (:class:`emulator.runtime.backend.TickBatches`): ticks whose steps 3-6 change nothing but the
-clocks (no scheduled event due, no effect or hurt timer running, no statistic or advancement
-counting a player, no reward pending). The backend comes back early when a root needed Python (a
-host op may change any of that); the runtime then finishes that tick itself and looks again.
+clocks (no scheduled event or block tick due, every step of :data:`ENTITY_STEPS` idle, no reward
+pending). The backend comes back early when a root needed Python (a host op may change any of
+that); the runtime then finishes that tick itself and looks again.
 """
 from __future__ import annotations
 
@@ -41,6 +41,14 @@ from emulator.world.state import WorldState
 
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"
+
+# steps 5 and 6 before the rewards, in order, each with its test that it would change nothing now
+# (a batch of ticks needs every one idle: a step added here comes with its test)
+ENTITY_STEPS = ((living.tick_living, living.tick_is_idle),
+                (player_actions.tick_using, player_actions.tick_is_idle),
+                (block_use.tick_menus, block_use.tick_is_idle),
+                (statistics.tick_players, statistics.tick_is_idle),
+                (advancements.tick_players, advancements.tick_is_idle))
 
 # told of each root sequence run: (function id, its result); a listener with a ``roots_ran(function id,
 # costs)`` method is told of a batch's roots of one function at once (not cut, no result read)
@@ -132,11 +140,10 @@ class Runtime:
         changing only the clocks (see the module's docs)."""
         state = self.state
         if (not self.loaded or state.pending_rewards or not isinstance(self.backend, TickBatches)
-                or not (living.tick_is_idle(state) and statistics.tick_is_idle(state)
-                        and advancements.tick_is_idle(state))):
+                or not all(idle(state) for _, idle in ENTITY_STEPS)):
             return 1
-        due = state.schedule.next_due()
-        return n if due is None else max(1, min(n, due - state.gametime))
+        due = [t for t in (state.schedule.next_due(), state.block_ticks.next_due()) if t is not None]
+        return max(1, min(n, min(due) - state.gametime)) if due else n
 
     def _batch(self, ticks: int) -> tuple[int, int]:
         """Up to ``ticks`` quiet ticks through the backend; returns (ticks run, their cost). The last
@@ -191,11 +198,8 @@ class Runtime:
         # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)
         if state.gamerules.get("doDaylightCycle") == "true":
             state.daytime += 1
-        living.tick_living(state)
-        player_actions.tick_using(state)
-        block_use.tick_menus(state)
-        statistics.tick_players(state)
-        advancements.tick_players(state)
+        for step, _ in ENTITY_STEPS:
+            step(state)
         self.rewards_cost += self._run_rewards()
         cost += self.rewards_cost
         self.commands_per_tick.append(cost)

@@ -26,6 +26,10 @@ class BlockTicks:
         self.order += 1
         self.pending.append((gametime + delay, self.order, tuple(pos), block_id, action))
 
+    def next_due(self) -> int | None:
+        """The game time of the next pending block tick, None when none is pending."""
+        return min((p[0] for p in self.pending), default=None)
+
     def run_due(self, state) -> None:
         due = sorted(p for p in self.pending if p[0] <= state.gametime)
         self.pending = [p for p in self.pending if p[0] > state.gametime]

@@ -236,6 +236,11 @@ def close_menu(state, player) -> None:
         _set(state, pos, block, open="false")
 
 
+def tick_is_idle(state) -> bool:
+    """Whether :func:`tick_menus` would do nothing now: no player has a container open."""
+    return not _MENU
+
+
 def tick_menus(state) -> None:
     """Player.tick: a menu no longer valid closes (the block is gone, or the player's eyes are out of
     the block interaction range + 4 of the block's box: Player.canInteractWithBlock)."""

@@ -191,6 +191,11 @@ def _can_eat(player, food: Compound) -> bool:
             or int(numeric_value(player.data.get("foodLevel", Int(20)))) < 20)
 
 
+def tick_is_idle(state) -> bool:
+    """Whether :func:`tick_using` would do nothing now: no player is using an item."""
+    return not _USING
+
+
 def tick_using(state) -> None:
     """LivingEntity.updatingUsingItem for each player using an item: stops when the hand no longer
     holds that item; else ``using_item`` fires (ServerPlayer.updateUsingItem) and, when the duration

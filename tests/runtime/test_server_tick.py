@@ -186,3 +186,15 @@ def test_effects_and_players_tick_each_tick(tmp_path):
         seen.append(_observed(emu))
     assert seen[0] == seen[1]
     assert seen[0]["scores"]["o"]["#slow"] == 0 and seen[0]["scores"]["played"]["Steve"] == 50
+
+
+def test_a_block_tick_due_in_a_batch_runs_at_its_tick(tmp_path):
+    emu = emulator_for(tmp_path, {"t:load": SETUP, "t:tick": "scoreboard players add #t o 1"},
+                       tags={"minecraft:load": ["t:load"], "minecraft:tick": ["t:tick"]})
+    emu.start()
+    ran = []
+    air = emu.state.blocks.get((0, 0, 0)).id
+    emu.state.block_ticks.schedule((0, 0, 0), air, 17, emu.state.gametime,
+                                   lambda state, pos: ran.append((state.gametime, state.scoreboard.get("#t", "o"))))
+    emu.tick(40)
+    assert ran == [(17, 17)] and emu.score("#t", "o") == 40
