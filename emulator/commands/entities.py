@@ -28,7 +28,8 @@ from dataclasses import replace
 import numpy as np
 
 from emulator.world import relations, teleport
-from emulator.world.entities import ENTITY_TYPES, Entity, EntityStore, add_tag, remove_tag
+from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
+from emulator.world.entity_types import ENTITY_TYPES
 from emulator.world import advancement_progress, predicates
 from emulator.world.selectors import SelectorQuery, SelectorWorld
 from emulator.world.source import Source

@@ -1,9 +1,10 @@
 """Entities: types and hitboxes, the entity store, UUIDs, the entity NBT view and loading NBT back.
 
 Public API
-- ``EntityType(id, width, height, eye_height)`` and ``entity_type(id)``: sizes from the game's
-  ``EntityType`` table for the types datapacks commonly use (unknown ids get the game's builder
-  default 0.6 x 1.8, eyes at 0.85 x height).
+- Sizes come from :mod:`emulator.world.entity_types` (the game's EntityType table); an entity's own
+  size (``sizes()``, kept in the table for the VM) follows its pose and age: a sneaking player
+  crouches (0.6 x 1.5, eyes at 1.27), a baby (``Age`` below 0, ``IsBaby``, a ``Small`` armor stand)
+  is smaller, a marker armor stand has no size, and a living entity's ``scale`` attribute scales it.
 - ``Entity``: ``uuid`` (4 signed ints), ``type``, ``pos`` (3 doubles), ``yaw``/``pitch`` (float32),
   ``motion``, ``tags`` (set), ``custom_name`` (text as stored), ``data`` (every other NBT field),
   ``order`` (creation index), ``alive``, ``dimension`` (its level's id); players also have
@@ -28,18 +29,17 @@ Public API
   accessor: ``change`` edits a fresh NBT view, which is loaded back with the UUID kept; players fail
   "Unable to modify player data".
 
-Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/entity/EntityType.java (sizes),
-world/entity/Entity.java (saveWithoutId/load, getEyeHeight, makeBoundingBox, addTag limit 1024),
-world/entity/decoration/ArmorStand.java (marker/small sizes), util/Mth.java (createInsecureUUID),
+Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/entity/Entity.java (saveWithoutId/load,
+getEyeHeight, makeBoundingBox, addTag limit 1024), world/entity/LivingEntity.java (getDimensions:
+the default dimensions scaled by getScale), world/entity/decoration/ArmorStand.java (MARKER_DIMENSIONS,
+BABY_DIMENSIONS: eyes at 0.9875 since 1.20.5), util/Mth.java (createInsecureUUID),
 server/commands/data/EntityDataAccessor.java.
 """
 from __future__ import annotations
 
-import functools
 import math
 import random
 from collections.abc import MutableSet
-from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
@@ -47,8 +47,9 @@ import numpy as np
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import display, living, rotation
 from emulator.world.dimensions import OVERWORLD
+from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
 from emulator.world.entity_table import (
-    EF_EYE, EF_HALF, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM, EI_JOIN, EntityTable, TagSet,
+    EF_EYE, EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM, EI_JOIN, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import player_defaults, selected_item
@@ -60,70 +61,6 @@ MAX_TAGS = 1024
 POS_LIMIT_XZ = 3.0000512e7
 POS_LIMIT_Y = 2.0e7
 MAX_LOADED_MOTION = 10.0
-
-
-@dataclass(frozen=True)
-class EntityType:
-    id: str
-    width: np.float32
-    height: np.float32
-    eye_height: np.float32
-
-
-def _type(name: str, width: float, height: float, eye: float | None = None) -> EntityType:
-    w, h = F32(width), F32(height)
-    # EntityDimensions.scalable: eye height defaults to height * 0.85F (float math).
-    return EntityType("minecraft:" + name, w, h, F32(eye) if eye is not None else h * F32(0.85))
-
-
-ENTITY_TYPES = {
-    t.id: t
-    for t in (
-        _type("player", 0.6, 1.8, 1.62),
-        _type("marker", 0.0, 0.0),
-        _type("armor_stand", 0.5, 1.975, 1.7775),
-        _type("item_display", 0.0, 0.0),
-        _type("block_display", 0.0, 0.0),
-        _type("text_display", 0.0, 0.0),
-        _type("interaction", 0.0, 0.0),
-        _type("area_effect_cloud", 6.0, 0.5),
-        _type("item", 0.25, 0.25, 0.2125),
-        _type("item_frame", 0.5, 0.5, 0.0),
-        _type("falling_block", 0.98, 0.98),
-        _type("tnt", 0.98, 0.98, 0.15),
-        _type("arrow", 0.5, 0.5, 0.13),
-        _type("snowball", 0.25, 0.25),
-        _type("slime", 0.52, 0.52, 0.325),
-        _type("pig", 0.9, 0.9),
-        _type("cow", 0.9, 1.4, 1.3),
-        _type("chicken", 0.4, 0.7, 0.644),
-        _type("sheep", 0.9, 1.3, 1.235),
-        _type("villager", 0.6, 1.95, 1.62),
-        _type("zombie", 0.6, 1.95, 1.74),
-        _type("husk", 0.6, 1.95, 1.74),
-        _type("drowned", 0.6, 1.95, 1.74),
-        _type("skeleton", 0.6, 1.99, 1.74),
-        _type("stray", 0.6, 1.99, 1.74),
-        _type("wither_skeleton", 0.7, 2.4, 2.1),
-        _type("bogged", 0.6, 1.99, 1.74),
-        _type("creeper", 0.6, 1.7),
-        _type("spider", 1.4, 0.9, 0.65),
-        _type("enderman", 0.6, 2.9, 2.55),
-        _type("bat", 0.5, 0.9, 0.45),
-        _type("boat", 1.375, 0.5625, 0.5625),
-        _type("minecart", 0.98, 0.7),
-    )
-}
-
-def entity_type(type_id: str) -> EntityType:
-    """The type's size; an id outside the table gets the game builder's default size."""
-    return ENTITY_TYPES.get(type_id) or _type(type_id.split(":", 1)[-1], 0.6, 1.8)
-
-
-@functools.lru_cache(maxsize=None)
-def _box_extent(type_id: str, scale: float) -> tuple[float, float]:
-    kind = entity_type(type_id)
-    return float(kind.width * F32(scale) / F32(2.0)), float(kind.height * F32(scale))
 
 
 HORIZONTAL_LIMIT = 30_000_000
@@ -190,7 +127,7 @@ class Entity:
     own). Until the store adds it, the entity keeps those values itself."""
 
     __slots__ = ("_uuid", "type", "custom_name", "data", "order", "player_name", "gamemode", "level", "team",
-                 "sneaking", "sprinting", "vehicle", "passengers", "_table", "_own", "__weakref__")
+                 "_sneaking", "sprinting", "vehicle", "passengers", "_table", "_own", "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
                  yaw=F32(0.0), pitch=F32(0.0), motion=(0.0, 0.0, 0.0), tags: set[str] | None = None,
@@ -207,7 +144,7 @@ class Entity:
         self.level = level
         self.team = team
         # a player's inputs (not saved in its NBT; predicates' flags and sneak_time read them)
-        self.sneaking = False
+        self._sneaking = False
         self.sprinting = False
         # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
         self.vehicle: Entity | None = None
@@ -305,31 +242,55 @@ class Entity:
             return plain_text(self.custom_name)
         return self.type.split(":", 1)[-1].replace("_", " ").title()
 
-    def _scale(self) -> np.float32:
-        # ArmorStand.getDimensions: a marker armor stand has no size, a small one is half size.
-        if self.type == "minecraft:armor_stand":
-            if self.data.get("Marker"):
-                return F32(0.0)
-            if self.data.get("Small"):
-                return F32(0.5)
-        return F32(1.0)
+    @property
+    def sneaking(self) -> bool:
+        return self._sneaking
+
+    @sneaking.setter
+    def sneaking(self, value: bool) -> None:
+        self._sneaking = bool(value)
+        self.refresh_sizes()  # a player crouches
+
+    def dimensions(self) -> tuple[np.float32, np.float32, np.float32]:
+        """Width, height and eye height (float32, as EntityDimensions holds them):
+        LivingEntity.getDimensions, the pose's or age's dimensions scaled by the ``scale``
+        attribute; ArmorStand's marker (no size, fixed) and small (baby) dimensions."""
+        kind = entity_type(self.type)
+        width, height, eyes = kind.width, kind.height, kind.eye_height
+        if self.type == "minecraft:armor_stand" and self.data.get("Marker"):
+            return F32(0.0), F32(0.0), F32(0.0)  # EntityDimensions.fixed: the scale does not change it
+        if self.is_player and self._sneaking:
+            width, height, eyes = PLAYER_CROUCHING.width, PLAYER_CROUCHING.height, PLAYER_CROUCHING.eye_height
+        elif living.is_baby(self):
+            age = baby_scale(self.type)
+            width, height, eyes = width * age, height * age, BABY_EYE_HEIGHT.get(self.type, eyes * age)
+        if living.has_attribute(self.type, "scale"):
+            scale = F32(living.attribute_value(self, "scale"))
+            width, height, eyes = width * scale, height * scale, eyes * scale
+        return width, height, eyes
+
+    def sizes(self) -> tuple[float, float, float]:
+        """The hitbox's half width and height and the eye height (``width / 2.0F`` and the others
+        are floats, widened to double): the table's copy, which both backends read."""
+        width, height, eyes = self.dimensions()
+        return float(width / F32(2.0)), float(height), float(eyes)
+
+    def refresh_sizes(self) -> None:
+        """Keep the table's sizes: after anything that changes them (NBT, pose, attributes)."""
+        if self._table is not None:
+            self._table.floats[self.order, EF_HALF:EF_EYE + 1] = self.sizes()
 
     @property
     def eye_height(self) -> np.float32:
-        return entity_type(self.type).eye_height * self._scale()
+        if self._table is None:
+            return self.dimensions()[2]
+        return F32(self._table.floats[self.order, EF_EYE])
 
     def box_extent(self) -> tuple[float, float]:
-        """The hitbox's half width and height (``width / 2.0F`` and the height are floats, widened
-        to double)."""
-        return _box_extent(self.type, float(self._scale()) if self.type == "minecraft:armor_stand" else 1.0)
-
-    def sizes(self) -> tuple[float, float, float]:
-        """The hitbox's half width and height and the eye height: the table's copy for the VM."""
-        return (*self.box_extent(), float(self.eye_height))
-
-    def refresh_sizes(self) -> None:
-        if self._table is not None:
-            self._table.floats[self.order, EF_HALF:EF_EYE + 1] = self.sizes()
+        """The hitbox's half width and height."""
+        if self._table is None:
+            return self.sizes()[:2]
+        return tuple(self._table.floats[self.order, EF_HALF:EF_HEIGHT + 1].tolist())
 
     @property
     def bounding_box(self) -> tuple[float, float, float, float, float, float]:
@@ -469,7 +430,7 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     dropped = set(_MODELLED) | set(FLAG_FIELDS) | (set(display.NOT_SAVED) if entity.type in display.DISPLAY_TYPES else set())
     data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in data and k not in dropped)
     entity.data = data
-    entity.refresh_sizes()  # an armor stand's Marker or Small changes its size
+    entity.refresh_sizes()  # an armor stand's Marker or Small, a baby's Age, the scale attribute
 
 
 def modify_entity(entity: Entity, change: Callable[[Compound], object]):

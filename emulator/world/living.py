@@ -111,6 +111,15 @@ def attribute_id(text: str) -> str:
     return name
 
 
+def is_baby(entity) -> bool:
+    """LivingEntity.isBaby as saved: an ageable mob's ``Age`` below 0, the zombies' and piglins'
+    ``IsBaby``, a ``Small`` armor stand (ArmorStand.isBaby)."""
+    data = entity.data
+    if entity.type == "minecraft:armor_stand":
+        return _number(data.get("Small")) != 0
+    return _number(data.get("Age")) < 0 or _number(data.get("IsBaby")) != 0
+
+
 def has_attribute(type_id: str, name: str) -> bool:
     return is_living(type_id) and (name in _LIVING or name in TYPE_BASES.get(type_id, _MOB))
 
@@ -161,7 +170,7 @@ def base_value(entity, name: str) -> float:
 
 def set_base(entity, name: str, value: float) -> None:
     _instance(entity, name)["base"] = Double(value)
-    _sync_health(entity)
+    _changed(entity)
 
 
 def reset_base(entity, name: str) -> None:
@@ -185,7 +194,7 @@ def add_modifier(entity, name: str, modifier_id: str, amount: float, operation: 
         return False
     _modifiers(entity, name).append(Compound(id=String(modifier_id), amount=Double(amount),
                                              operation=String(operation)))
-    _sync_health(entity)
+    _changed(entity)
     return True
 
 
@@ -195,8 +204,14 @@ def remove_modifier(entity, name: str, modifier_id: str) -> bool:
     if found is None:
         return False
     modifiers.remove(found)
-    _sync_health(entity)
+    _changed(entity)
     return True
+
+
+def _changed(entity) -> None:
+    """After an attribute change: the health within the new maximum, the size at the new scale."""
+    _sync_health(entity)
+    entity.refresh_sizes()
 
 
 def modifier_value(entity, name: str, modifier_id: str) -> float | None:

@@ -43,7 +43,7 @@ from typing import Any
 
 import numpy as np
 
-from emulator.world import advancement_progress
+from emulator.world import advancement_progress, living
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import to_tag as json_to_nbt
@@ -377,7 +377,7 @@ _FLAGS = {
     "is_sneaking": lambda e: e.sneaking,
     "is_sprinting": lambda e: e.sprinting,
     "is_on_ground": lambda e: bool(_number_field(e, "OnGround")),
-    "is_baby": lambda e: _number_field(e, "Age") < 0 or bool(_number_field(e, "IsBaby")),
+    "is_baby": living.is_baby,
 }
 
 

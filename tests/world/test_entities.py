@@ -65,10 +65,11 @@ def test_hitboxes_and_eye_heights():
     stand = store.summon("minecraft:armor_stand", (1.0, 0.0, 1.0))
     small = store.summon("minecraft:armor_stand", (1.0, 0.0, 1.0), Compound(Small=Byte(1)))
     marker = store.summon("minecraft:marker", (2.0, 3.0, 4.0))
-    # EntityType: player 0.6 x 1.8 eyes 1.62; armor stand 0.5 x 1.975 eyes 1.7775 (small: half).
+    # EntityType: player 0.6 x 1.8 eyes 1.62; armor stand 0.5 x 1.975 eyes 1.7775; a small one is
+    # half size with its own eye height (ArmorStand.BABY_DIMENSIONS: withEyeHeight(0.9875F))
     assert player.eye_height == F32(1.62) and player.anchor("eyes")[1] == 64.0 + float(F32(1.62))
     assert stand.bounding_box == (0.75, 0.0, 0.75, 1.25, float(F32(1.975)), 1.25)
-    assert small.eye_height == F32(1.7775) * F32(0.5)
+    assert small.eye_height == F32(0.9875) and small.bounding_box[4] == float(F32(1.975) * F32(0.5))
     assert marker.bounding_box == (2.0, 3.0, 4.0, 2.0, 3.0, 4.0) and marker.eye_height == 0.0
     display = store.summon("minecraft:item_display", (0.0, 0.0, 0.0))
     assert display.eye_height == 0.0 and display.anchor("eyes") == display.pos
