@@ -30,7 +30,7 @@ import numpy as np
 from emulator.world import relations, teleport
 from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
 from emulator.world.entity_types import ENTITY_TYPES
-from emulator.world import advancement_progress, predicates
+from emulator.world import advancement_progress, advancements, predicates
 from emulator.world.selectors import SelectorQuery, SelectorWorld
 from emulator.world.source import Source
 from emulator.world.context import Context, SERVER
@@ -209,7 +209,20 @@ def tag(env, cmd: ast.TagCommand, ctx: Context) -> int:
 
 
 def tp(env, cmd: ast.Teleport, ctx: Context) -> int:
-    """Every ``tp`` form; the result is the number of entities moved."""
+    """Every ``tp`` form; the result is the number of entities moved. A player taken to another
+    level fires ``changed_dimension``."""
+    if not env.state.resources.advancements:
+        return _teleport(env, cmd, ctx)
+    players = {p: p.dimension for p in env.state.entities.players()}
+    try:
+        return _teleport(env, cmd, ctx)
+    finally:
+        for player, origin in players.items():
+            if player.dimension != origin:
+                advancements.changed_dimension(env.state, player, origin)
+
+
+def _teleport(env, cmd: ast.Teleport, ctx: Context) -> int:
     state = env.state
     source = world_source(state, ctx)
     if cmd.targets is None:

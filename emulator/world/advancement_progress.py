@@ -21,7 +21,7 @@ from mcfunction_parser.pack.advancements import criteria, requirements
 
 # the triggers that fire in the emulator (the player actions fire the last ones: emulator.world.player_actions)
 OBSERVED = frozenset({"impossible", "tick", "location", "using_item", "consume_item", "default_block_use",
-                      "item_used_on_block"})
+                      "item_used_on_block", "changed_dimension"})
 
 
 def full_id(text) -> str | None:

@@ -124,10 +124,18 @@ def trigger(state, player: Entity, trigger_name: str, test=None) -> None:
         for name, criterion in criteria(advancement).items():
             if short_trigger(criterion["trigger"]) != trigger_name or name in got:
                 continue
-            ctx = predicates.LootContext(state, player.pos, this=player)
+            ctx = predicates.LootContext(state, player.pos, this=player, dimension=player.dimension)
             if _player_matches(state, player, criterion) and (
                     test is None or test(criterion.get("conditions") or {}, ctx)):
                 award(state, player, advancement_id, name)
+
+
+def changed_dimension(state, player: Entity, origin: str) -> None:
+    """ServerPlayer.triggerDimensionChangeTriggers: ``changed_dimension`` with its ``from`` and
+    ``to`` (ChangeDimensionTrigger.TriggerInstance.matches: a missing one matches any)."""
+    def test(conditions: dict, ctx) -> bool:
+        return all(conditions.get(key) in (None, level) for key, level in (("from", origin), ("to", player.dimension)))
+    trigger(state, player, "changed_dimension", test)
 
 
 def _player_matches(state, player: Entity, criterion: dict) -> bool:

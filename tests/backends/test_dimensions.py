@@ -266,3 +266,18 @@ def test_location_predicates_read_the_level(tmp_path):
     emu = run_both(root)
     assert (score(emu, "#in"), score(emu, "#out")) == (1, None)
     assert [t for t, _ in dims(emu, "@e[tag=hot]")] == ["hot"] and dims(emu, "@e[tag=hot]")[0][1] == NETHER
+
+
+def test_a_player_changing_level_fires_changed_dimension(tmp_path):
+    # ServerPlayer.triggerDimensionChangeTriggers -> ChangeDimensionTrigger (from, to; a missing
+    # one matches any)
+    root = pack(tmp_path, "execute in minecraft:the_nether run tp @a ~ ~ ~\n")
+    for name, conditions in (("any", {}), ("to_nether", {"to": NETHER}), ("to_end", {"to": END}),
+                             ("from_over", {"from": OVERWORLD, "to": NETHER})):
+        (root / "data/t/advancement").mkdir(parents=True, exist_ok=True)
+        (root / "data/t/advancement" / f"{name}.json").write_text(json.dumps(
+            {"criteria": {"c": {"trigger": "minecraft:changed_dimension", "conditions": conditions}}}))
+    emu = run_both(root, (("A", (0, 0, 0), OVERWORLD),))
+    done = {name for name in ("any", "to_nether", "to_end", "from_over")
+            if emu.state.advancement_progress.of(emu.state.entities.players()[0], f"t:{name}")}
+    assert done == {"any", "to_nether", "from_over"}
