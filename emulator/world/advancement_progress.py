@@ -19,7 +19,8 @@ from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from mcfunction_parser.pack.advancements import criteria, requirements
 
-# the triggers that fire in the emulator (the player actions fire the last ones: emulator.world.player_actions)
+# the triggers that fire in the emulator (the player actions fire using_item .. item_used_on_block:
+# emulator.world.player_actions; a teleport between levels changed_dimension)
 OBSERVED = frozenset({"impossible", "tick", "location", "using_item", "consume_item", "default_block_use",
                       "item_used_on_block", "changed_dimension"})
 
