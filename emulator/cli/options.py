@@ -85,20 +85,27 @@ def parse_until(text: str) -> Until:
     return Until(Watch(parts[0], parts[1]), lo, hi)
 
 
-def parse_player(text: str) -> tuple[str, tuple[float, ...], tuple[float, float], bool]:
-    """``NAME@X,Y,Z[,YAW,PITCH][,air]``: the name, position, rotation and whether it stands on the
-    ground (``air``: it is in the air)."""
+def parse_player(text: str) -> tuple[str, tuple[float, ...], tuple[float, float], bool, str]:
+    """``NAME@X,Y,Z[,YAW,PITCH][,air][,in=DIMENSION]``: the name, position, rotation, whether it
+    stands on the ground (``air``: it is in the air) and its level (the overworld by default)."""
     name, _, numbers = text.partition("@")
-    parts = numbers.split(",")
-    on_ground = parts[-1].strip() != "air"
+    parts = [p.strip() for p in numbers.split(",")]
+    on_ground, dimension = True, "minecraft:overworld"
+    while parts and (parts[-1] == "air" or parts[-1].startswith("in=")):
+        word = parts.pop()
+        if word == "air":
+            on_ground = False
+        else:
+            dimension = word[3:] if ":" in word else "minecraft:" + word[3:]
     try:
-        values = [float(v) for v in parts[: len(parts) - (not on_ground)]]
+        values = [float(v) for v in parts]
     except ValueError:
         values = []
     if not name or len(values) not in (3, 5) or not all(map(math.isfinite, values)):
         raise click.BadParameter(f"{text!r}: expected NAME@X,Y,Z or NAME@X,Y,Z,YAW,PITCH (finite numbers), "
-                                 "then ,air for a player in the air", param_hint="--player")
-    return name, tuple(values[:3]), tuple(values[3:]) or (0.0, 0.0), on_ground
+                                 "then ,air for a player in the air and ,in=DIMENSION for its level",
+                                 param_hint="--player")
+    return name, tuple(values[:3]), tuple(values[3:]) or (0.0, 0.0), on_ground, dimension
 
 
 def parse_call(text: str) -> tuple[str, object]:

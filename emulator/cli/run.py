@@ -30,8 +30,9 @@ BATCH_TICKS = 1000  # ticks run in one call when nothing is watched (Ctrl-C and 
 @click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the results as JSON.")
 @click.option("--csv", "csv_out", type=OutputPath(), metavar="FILE|-", help="Watched values per tick.")
 @click.option("--mc", "mc_version", metavar="VERSION", help="Game version to emulate (default: the packs').")
-@click.option("--player", "players", multiple=True, metavar="NAME@X,Y,Z[,YAW,PITCH][,air]",
-              help="Add a simulated player before anything runs, on the ground (,air: in the air).")
+@click.option("--player", "players", multiple=True, metavar="NAME@X,Y,Z[,YAW,PITCH][,air][,in=DIM]",
+              help="Add a simulated player before anything runs, on the ground (,air: in the air), in the "
+                   "overworld (,in=DIM: in that dimension).")
 @click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
 @fail_option
 def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
@@ -47,8 +48,11 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
         watches.append(stop.watch)
     players = [parse_player(p) for p in players]
     emu = load_or_usage_error(Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle), packs, mc_version)
-    for name, pos, rotation, on_ground in players:
-        emu.add_player(name, pos, rotation, on_ground=on_ground)
+    for name, pos, rotation, on_ground, dimension in players:
+        try:
+            emu.add_player(name, pos, rotation, on_ground=on_ground, dimension=dimension)
+        except ValueError as error:  # a dimension the packs do not declare
+            raise click.BadParameter(str(error), param_hint="--player") from None
 
     started = time.perf_counter()
     rows: list[list] = []

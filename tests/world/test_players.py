@@ -88,3 +88,14 @@ def test_run_player_in_the_air(pack, tmp_path):
     assert json.loads(out.read_text())["watch"] == {"#standing n": 1}  # A stands, B is in the air
     bad = CliRunner().invoke(main, ["run", str(root), "--player", "A@0,0,nan"])
     assert bad.exit_code == 2 and "finite numbers" in bad.output
+
+
+def test_run_player_in_a_dimension(pack, tmp_path):
+    root = pack(SETUP, load=["t:init"])
+    out = tmp_path / "run.json"
+    result = CliRunner().invoke(main, ["run", str(root), "--player", "A@0,0,0,air,in=the_nether", "--json", str(out)])
+    assert result.exit_code == 0, result.output
+    [player] = json.loads(out.read_text())["entities"]
+    assert player["dimension"] == "minecraft:the_nether"
+    bad = CliRunner().invoke(main, ["run", str(root), "--player", "A@0,0,0,in=t:nowhere"])
+    assert bad.exit_code == 2 and "t:nowhere" in bad.output
