@@ -90,7 +90,7 @@ def to_entity(destination) -> Destination:
 
 def apply(entity, destination: Destination, store=None) -> None:
     """Move the entity; a non-finite rotation is discarded (``setYRot``/``setXRot`` refuse it)."""
-    if store is not None and destination.dimension != entity.dimension:
+    if store is not None and destination.dimension != entity.dimension and entity.alive:  # a killed one stays
         if entity.vehicle is not None or entity.passengers:
             raise Unmodelled("a riding entity or a vehicle teleported to another dimension")
         store.move_to_level(entity, destination.dimension)

@@ -281,3 +281,12 @@ def test_a_player_changing_level_fires_changed_dimension(tmp_path):
     done = {name for name in ("any", "to_nether", "to_end", "from_over")
             if emu.state.advancement_progress.of(emu.state.entities.players()[0], f"t:{name}")}
     assert done == {"any", "to_nether", "from_over"}
+
+
+def test_a_killed_executor_teleported_to_another_level_stays_out_of_the_world(tmp_path):
+    # the context keeps the killed entity (@s); a teleport cannot bring it back into a level
+    main = ('summon marker 0 0 0 {Tags:["k"]}\n'
+            "execute as @e[tag=k] run function t:gone\n"
+            "execute store result score #left v if entity @e[tag=k]\n")
+    emu = run_both(pack(tmp_path, main, **{"t:gone": "kill @s\nexecute in minecraft:the_nether run tp @s ~ ~ ~"}))
+    assert score(emu, "#left") == 0 and emu.diagnostics == []
