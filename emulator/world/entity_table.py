@@ -106,6 +106,8 @@ class EntityTable:
         n = self.count
         if n == 0 or self.ints[self.order[n - 1], EI_DIM] < level:
             return n, n
+        if self.ints[self.order[0], EI_DIM] == level == self.ints[self.order[n - 1], EI_DIM]:
+            return 0, n  # every entity in one level (the usual world)
         levels = self.ints[self.order[:n], EI_DIM]  # ascending: the order is grouped by level
         return int(np.searchsorted(levels, level, "left")), int(np.searchsorted(levels, level, "right"))
 
