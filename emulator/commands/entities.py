@@ -48,9 +48,9 @@ ENTITY_CONTEXT_STAGES = (ast.ExAs, ast.ExAt, ast.ExPositionedAs, ast.ExRotatedAs
 
 
 class ShuffledEntityStore(EntityStore):
-    """``--shuffle SEED``: each new entity goes to a random place in the iteration order, so unsorted
-    ``@e`` visits entities in a seeded permutation instead of creation order (order-dependent packs
-    show up as different results)."""
+    """``--shuffle SEED``: each new entity goes to a random place among its level's entities in the
+    iteration order, so unsorted ``@e`` visits entities in a seeded permutation instead of creation
+    order (order-dependent packs show up as different results)."""
 
     def __init__(self, seed: int = 0, shuffle_seed: int = 0) -> None:
         super().__init__(seed)
