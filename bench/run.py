@@ -237,7 +237,7 @@ def pool_rows(quick: bool) -> list[Row]:
         raise RuntimeError(problem)
     shots = 6 if quick else 60
     for workers in (1, 2):
-        seconds, unfinished, wrapped = bench_score.random_shots(shots, workers, seed=1)
+        seconds, _, unfinished, wrapped = bench_score.random_shots(shots, workers, seed=1)
         rate = shots / seconds
         trouble = f" ({unfinished} not at rest, {wrapped:.0f} wrapped values)" if unfinished or wrapped else ""
         rows.append(Row(f"batch: random full shots/s, {workers} worker process{'es' if workers > 1 else ''} "

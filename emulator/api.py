@@ -63,14 +63,28 @@ class Emulator:
         runner parses a pack once and starts a fresh world per test); returns ``packs``. The
         profile starts again too."""
         self.packs = packs
-        self.state = world_entities.new_state(self.shuffle)
-        self.state.version = packs.version
+        self._start_world(world_entities.new_state(self.shuffle), compiled=False)
+        return packs
+
+    def new_world(self) -> None:
+        """A fresh world on the packs already loaded, as :meth:`load_parsed` leaves it, without
+        compiling them again: many independent runs of one pack (a sweep's shots) share one
+        compiled program. The new world interns the names the program was compiled with (score
+        holders, objectives, entity tags and types) and nothing else of the old one."""
+        old = self._runtime().state
+        state = world_entities.new_state(self.shuffle)
+        state.scoreboard.intern_names_of(old.scoreboard)
+        state.entities.table.intern_names_of(old.entities.table)
+        self._start_world(state, compiled=True)
+
+    def _start_world(self, state, compiled: bool) -> None:
+        state.version = self.packs.version
+        self.state = state
         stacks = CallStacks() if self.records_calls else None
         if stacks is not None:
             self.backend.record_calls(stacks, self.trace)
-        self.runtime = Runtime(self.backend, packs, self.state, self.sanitize)
+        self.runtime = Runtime(self.backend, self.packs, state, self.sanitize, compiled)
         self.profiler = Profiler(self.runtime, stacks)
-        return packs
 
     @property
     def load_diagnostics(self) -> list[Diagnostic]:

@@ -141,10 +141,10 @@ def new_table(pack: str | Path = DEFAULT_PACK, backend: str = "numba", sanitize:
 
 
 def reset_table(emu: Emulator, balls: dict[int, tuple[int, int]] | None = None) -> Emulator:
-    """A fresh world on ``emu``'s already loaded pack (no reparse, no recompile): its load tick run
-    and a table at TABLE_CORNER, as :func:`new_table` leaves it. Many shots on one emulator
-    start each from here, so that no score or entity of an earlier shot slows the next."""
-    emu.load_parsed(emu.packs)
+    """A fresh world on ``emu``'s already loaded and compiled pack (no reparse, no recompile): its
+    load tick run and a table at TABLE_CORNER, as :func:`new_table` leaves it. Many shots on one
+    emulator start each from here, so that no score or entity of an earlier shot slows the next."""
+    emu.new_world()
     return _set_up(emu, balls)
 
 

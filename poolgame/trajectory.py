@@ -69,21 +69,22 @@ class Trajectory:
     def observe(self, emu, count: int) -> None:
         """Read the balls after a complete physics tick in which the pack resolved ``count`` events."""
         previous = self.ticks[-1] if self.ticks else self.start
-        now = self._read(emu, STATE)
-        saved = self._read(emu, ("bt", *SAVED))
+        block = self._read(emu, (*STATE, "bt", *SAVED, "rx", "rz"))     # one read of every score
+        n = len(STATE)
+        now, saved = block[:, :n], block[:, n:2 * n + 1]
         self.ticks.append(now)
-        self.rolling.append(self._read(emu, ("rx", "rz")))
+        self.rolling.append(block[:, 2 * n + 1:])
         tick = len(self.ticks)
+        # pool:physics/events/begin saves each moving ball at time 0: an event is a later save, or
+        # one at time 0 that differs from where the ball was
+        fresh = (saved != self._saved).any(axis=1) & (saved[:, 1:] != previous).any(axis=1)
+        dropped = (now[:, PHASE] == POCKETED) & (previous[:, PHASE] != POCKETED)
         found = []
-        for i in range(len(self.ids)):
-            bt, after = int(saved[i, 0]), saved[i, 1:]
-            # pool:physics/events/begin saves each moving ball at time 0: an event is a later save,
-            # or one at time 0 that differs from where the ball was
-            fresh = not np.array_equal(saved[i], self._saved[i])
-            if bt > 0 or (fresh and not np.array_equal(after, previous[i])):
-                found.append((i, bt, tuple(int(v) for v in after)))
-            elif now[i, PHASE] == POCKETED and previous[i, PHASE] != POCKETED:
-                found.append((i, bt, tuple(int(v) for v in now[i])))
+        for i in np.flatnonzero((saved[:, 0] > 0) | fresh | dropped).tolist():
+            if saved[i, 0] > 0 or fresh[i]:
+                found.append((i, int(saved[i, 0]), tuple(saved[i, 1:].tolist())))
+            else:
+                found.append((i, int(saved[i, 0]), tuple(now[i].tolist())))
         self._saved = saved
         events = self._classify(tick, found)
         seen = sum(1 for e in events if e.kind != "ball" or e.partner is None or e.ball < e.partner)

@@ -166,3 +166,30 @@ def test_an_added_player_stands_on_the_ground_unless_told_otherwise(tmp_path, ba
     emu.add_player("Alex", (0, 80, 0), on_ground=False)
     emu.call("t:main")
     assert (emu.score("#ground", "o"), emu.score("#air", "o")) == (1, 1)
+
+
+WORLD = {
+    "t:load": SETUP + "summon marker 0 0 0 {Tags:[m]}\nfunction t:place {n: 3}",
+    "t:place": "$scoreboard players set #placed o $(n)",
+    "t:tick": "execute as @e[tag=m] run scoreboard players add @s o 1\nscoreboard players add #n o 1\n"
+              "execute if score #n o matches 2 run say two",
+}
+
+
+def _world(emu) -> tuple:
+    return emu.scores(), emu.entities(), [(e.tick, e.text) for e in emu.log], emu.ticks, emu.commands_per_tick
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_new_world_runs_as_the_first_on_the_same_program(tmp_path, backend):
+    emu = emulator_for(tmp_path, WORLD, TAGS, backend=backend)
+    emu.tick(3)
+    first = _world(emu)
+    program = getattr(emu.backend, "program", None)
+    emu.set_score("#stray", "o", 7)
+    emu.new_world()
+    assert emu.scores() == {} and emu.entities() == [] and emu.ticks == 0 and not emu.log
+    emu.tick(3)
+    assert _world(emu) == first
+    assert first[0]["o"]["#placed"] == 3 and len(first[1]) == 1
+    assert getattr(emu.backend, "program", None) is program      # not compiled again

@@ -290,9 +290,11 @@ def parse_target(text: str):
 
 def describe(state: WorldState, entity: Entity) -> dict:
     """What ``Emulator.entities`` and ``dpemu run --json`` show of an entity."""
-    holder = entity.score_holder
-    scores = {obj: value for obj, holders in state.scoreboard.scores().items()
-              if (value := holders.get(holder)) is not None}
+    board = state.scoreboard
+    hid = board.holder_ids.get(entity.score_holder)
+    n = len(board.objectives)
+    scores = {} if hid is None else {board.objectives[o]: int(board.values[hid, o])
+                                     for o in np.flatnonzero(board.present[hid, :n] & board.alive[:n])}
     return {"uuid": entity.uuid_string, "type": entity.type, "name": entity.player_name,
             "tags": sorted(entity.tags), "pos": list(entity.pos),
             "rotation": [float(entity.yaw), float(entity.pitch)], "dimension": entity.dimension, "scores": scores}

@@ -34,6 +34,11 @@ class ReferenceBackend:
 
     def load(self, packs, state: WorldState, sanitize: bool = False) -> None:
         self._interpreter = Interpreter(packs, state, sanitize, self._recorder, self._tracer)
+        self._packs, self._sanitize = packs, sanitize
+
+    def new_world(self, state: WorldState) -> None:
+        """Nothing is compiled: the interpreter starts again on ``state``."""
+        self.load(self._packs, state, self._sanitize)
 
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
         if self._interpreter is None:

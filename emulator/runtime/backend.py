@@ -104,6 +104,11 @@ class Backend(Protocol):
         ``state.overflows`` (the stored value stays the game's).
         """
 
+    def new_world(self, state: WorldState) -> None:
+        """Run the packs already loaded against ``state``, a fresh world whose scoreboard and
+        entity table intern the names of the last one (``Emulator.new_world``): what the backend
+        made of the packs is kept, its per-world counts start again."""
+
     def run_root(self, function_id: str, context: Context | None = None, arguments: "Compound | None" = None) -> RootResult:
         """Run one root sequence: call ``function_id`` (not a tag; the runtime expands tags) with
         a fresh quota, as ``context`` (None: the server at world spawn), with macro ``arguments``.

@@ -56,13 +56,19 @@ RootListener = Callable[[str, RootResult], None]
 
 
 class Runtime:
-    """``packs`` running on ``backend`` against ``state`` (the backend is loaded here)."""
+    """``packs`` running on ``backend`` against ``state``: the backend loads them here, or with
+    ``compiled`` keeps what it made of them and only moves to ``state`` (a new world whose
+    scoreboard and entity table intern the names of the backend's last one)."""
 
-    def __init__(self, backend: Backend, packs, state: WorldState, sanitize: bool = False) -> None:
+    def __init__(self, backend: Backend, packs, state: WorldState, sanitize: bool = False,
+                 compiled: bool = False) -> None:
         state.resources = Resources.from_packs(packs)
         state.entities.table.levels = Levels.from_packs(packs.dimensions, packs.dimension_types)
         advancements.warn_unobserved(state)
-        backend.load(packs, state, sanitize)
+        if compiled:
+            backend.new_world(state)
+        else:
+            backend.load(packs, state, sanitize)
         self.backend = backend
         self.packs = packs
         self.state = state

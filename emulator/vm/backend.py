@@ -94,6 +94,19 @@ class NumbaBackend:
         self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
         self.batch = np.zeros(1, dtype=np.int64)  # run_ticks: the tick functions, then each root's cost
 
+    def new_world(self, state: WorldState) -> None:
+        """Run the program compiled by :meth:`load` (and its macro instances) on ``state``, a fresh
+        world holding the names it was compiled with; the counters start again."""
+        self.state = state
+        self.selectors.scoreboard, self.selectors.table = state.scoreboard, state.entities.table
+        self.selectors.resources = state.resources
+        self.compiler.sb = state.scoreboard
+        self.host = Host(state, self.packs.functions, self.packs.tags, self._report_here,
+                         self._host_overflow if self.sanitize else None)
+        for counter in (self.counts, self.totals, self.active):
+            counter[:] = 0
+        self.host_runs.clear()
+
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state

@@ -80,6 +80,16 @@ class EntityTable:
             index = self.type_ids[name] = len(self.type_ids)
         return index
 
+    def intern_names_of(self, other: "EntityTable") -> None:
+        """Intern ``other``'s tag and type names, in its order, into this empty table (a program
+        compiled against ``other`` holds their numbers)."""
+        if self.tag_names or len(self.type_ids) > 1:
+            raise ValueError("names are interned into an empty entity table only")
+        for name in other.tag_names:
+            self.tag_id(name)
+        for name in other.type_ids:
+            self.type_id(name)
+
     # ------------------------------------------------------------------ rows
     def new_slot(self, entity, type_name: str, holder: str) -> int:
         """A row for ``entity`` (not yet in the iteration order: see :meth:`insert`)."""

@@ -118,6 +118,16 @@ class Scoreboard:
         self.values, self.present, self.locked, self.alive = values, present, locked, alive
         self.writable, self.trigger = writable, trigger
 
+    def intern_names_of(self, other: "Scoreboard") -> None:
+        """Intern ``other``'s holder and objective names, in its order, into this empty scoreboard:
+        a program compiled against ``other`` (which holds those ids) runs on this one."""
+        if self.holders or self.objectives:
+            raise ValueError("names are interned into an empty scoreboard only")
+        for name in other.holders:
+            self.holder_id(name)
+        for name in other.objectives:
+            self.objective_id(name)
+
     # ------------------------------------------------------------------ objectives
     def exists(self, objective: str) -> bool:
         oid = self.objective_ids.get(objective)
@@ -170,10 +180,9 @@ class Scoreboard:
         where unset (the holder or objective unknown, or no score)."""
         hids = np.array([self.holder_ids.get(h, -1) for h in holders], np.int64)
         oids = np.array([self.objective_ids.get(o, -1) for o in objectives], np.int64)
-        known = np.outer(hids >= 0, (oids >= 0) & (self.alive[np.maximum(oids, 0)] != 0))
-        rows, cols = np.maximum(hids, 0), np.maximum(oids, 0)
-        known &= self.present[np.ix_(rows, cols)] != 0
-        return np.where(known, self.values[np.ix_(rows, cols)], 0).astype(np.int64)
+        rows, cols = np.maximum(hids, 0)[:, None], np.maximum(oids, 0)
+        known = (hids >= 0)[:, None] & ((oids >= 0) & (self.alive[cols] != 0)) & (self.present[rows, cols] != 0)
+        return np.where(known, self.values[rows, cols], 0).astype(np.int64)
 
     def set(self, holder: str, objective: str, value: int) -> None:
         """Set a score (value must already be a Java int). Creates the objective as ``dummy``
