@@ -6,7 +6,8 @@ saves a ball's state at its last event of the tick (``pool.bt``, the time in 1/1
 ``pool.bx`` ... ``pool.bstate``: pool:physics/events/save), so each ball's last event of a tick is
 seen exactly, after its resolution; an earlier event of the same ball in the same tick is not. A
 tick whose events were not all seen (the pack's own count, ``#events.count pool.tmp``, is larger)
-is marked, so that its events are not judged from the wrong starting state.
+(or with a ball-ball event whose partner is not seen at the same time: the partner met something
+else later in the tick) is marked, so that its events are not judged from the wrong starting state.
 Units are the pack's (pool:load's header): um, um/tick, 1/10000 tick.
 """
 from __future__ import annotations
@@ -75,20 +76,23 @@ class Trajectory:
         self.ticks.append(now)
         self.rolling.append(block[:, 2 * n + 1:])
         tick = len(self.ticks)
-        # pool:physics/events/begin saves each moving ball at time 0: an event is a later save, or
-        # one at time 0 that differs from where the ball was
-        fresh = (saved != self._saved).any(axis=1) & (saved[:, 1:] != previous).any(axis=1)
+        # pool:physics/events/begin saves each moving ball at time 0: an event is a new save (a ball
+        # that stopped keeps its last one) made later in the tick, or at time 0 somewhere else than
+        # where the ball was
+        fresh = (saved != self._saved).any(axis=1) & ((saved[:, 0] > 0) | (saved[:, 1:] != previous).any(axis=1))
         dropped = (now[:, PHASE] == POCKETED) & (previous[:, PHASE] != POCKETED)
         found = []
-        for i in np.flatnonzero((saved[:, 0] > 0) | fresh | dropped).tolist():
-            if saved[i, 0] > 0 or fresh[i]:
+        for i in np.flatnonzero(fresh | dropped).tolist():
+            if fresh[i]:
                 found.append((i, int(saved[i, 0]), tuple(saved[i, 1:].tolist())))
             else:
                 found.append((i, int(saved[i, 0]), tuple(now[i].tolist())))
         self._saved = saved
         events = self._classify(tick, found)
         seen = sum(1 for e in events if e.kind != "ball" or e.partner is None or e.ball < e.partner)
-        if seen != count:
+        # a ball event without its partner: the partner's save was overwritten by a later event of
+        # its own (or several balls met at one instant), so that earlier event went unseen
+        if seen != count or any(e.kind == "ball" and e.partner is None for e in events):
             self.unseen.add(tick)
         self.events.extend(events)
 
