@@ -132,3 +132,20 @@ def test_contacts_resolve_at_2r_with_the_exact_normal_at_any_cut(backend):
                 worst = max(worst, error)
                 assert error <= 0.1, (cut, aim, offset, error)
     assert worst > 0
+
+
+def test_a_contact_is_resolved_at_the_time_the_balls_touch():
+    # A rack shot (dpemu score's "shot: random 4", seed 1) where the swept chords of two slow sliding
+    # balls meet 0.025 tick before their curved paths touch. pool:physics/resolve/ball_ball/meet
+    # moves the event to that time along their own paths, so the object ball leaves as from the
+    # exact 2R contact (0.48 deg off when only the positions were moved there, keeping the
+    # velocities of the earlier time).
+    from poolgame.score.cases import Case
+    from poolgame.score.run import score_case
+    from poolgame.shot import DEFAULT_PACK, Shot
+
+    shot = Shot(angle=46.91, speed=4.202, tip_x=-0.327, tip_y=-0.079, elevation=0.0)
+    result = score_case(Case("rack shot", "shots", shot=shot), str(DEFAULT_PACK), modes=("seeded",))
+    directions = result.samples["object_direction"]
+    assert directions and max(directions) <= 0.1, directions
+    assert all(0 <= c <= 0.2 for c in result.samples["contact"])

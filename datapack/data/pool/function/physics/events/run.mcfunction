@@ -6,15 +6,18 @@
 # pool.tmp, $carry pool.game, the event's balls; tags pool.event pool.event_b, pool.settled (removed
 # from the event's balls).
 execute if score #events.kind pool.tmp matches 1 as @e[tag=pool.ball] if score @s pool.id = #events.partner pool.tmp run tag @s add pool.event_b
-# the resolution and restarts about 900 commands (1200 with a ball-ball contact's first Newton step:
-# pool:physics/resolve/ball_ball/touch/step charges each further one), plus each ball's rewind from
-# its saved time
+# the resolution and restarts about 900 commands (1400 with a ball-ball contact's move in time and
+# first Newton step: pool:physics/resolve/ball_ball/touch/step charges each further one), plus each
+# ball's rewind from its saved time
 scoreboard players set #cost.next pool.tmp 900
-execute if score #events.kind pool.tmp matches 1 run scoreboard players set #cost.next pool.tmp 1200
+execute if score #events.kind pool.tmp matches 1 run scoreboard players set #cost.next pool.tmp 1400
 execute as @e[tag=pool.event] run function pool:physics/events/cost/rewind
 # a cushion rewinds its ball once more, to where its path crosses the rail line (pool:physics/resolve/cushion/cross)
 execute if score #events.kind pool.tmp matches 2 as @e[tag=pool.event] run function pool:physics/events/cost/rewind
 execute as @e[tag=pool.event_b] run function pool:physics/events/cost/rewind
+# a ball-ball contact rewinds both balls once more, to the time they touch (pool:physics/resolve/ball_ball/meet)
+execute if score #events.kind pool.tmp matches 1 as @e[tag=pool.event] run function pool:physics/events/cost/rewind
+execute if score #events.kind pool.tmp matches 1 as @e[tag=pool.event_b] run function pool:physics/events/cost/rewind
 scoreboard players operation #cost.next pool.tmp += #cost.work pool.tmp
 # (the first work of a game tick always runs, so that a small $budget slows the table, never stops it)
 execute if score #cost.work pool.tmp matches 1.. if score #cost.next pool.tmp > $budget pool.const run return run scoreboard players set $carry pool.game 1
