@@ -15,16 +15,7 @@
 # pool:physics/resolve/ball_ball/touch/gap and the math library's.
 function pool:physics/resolve/ball_ball/touch/gap
 execute if score #ball_ball.g pool.tmp matches 2001 run return 0
-scoreboard players operation $a pool.math = @s pool.vx
-scoreboard players operation $a pool.math -= #ball_ball.b.vx pool.tmp
-scoreboard players operation $b pool.math = $ux pool.math
-function pool:math/mul_unit
-scoreboard players operation #ball_ball.c pool.tmp = $out pool.math
-scoreboard players operation $a pool.math = @s pool.vz
-scoreboard players operation $a pool.math -= #ball_ball.b.vz pool.tmp
-scoreboard players operation $b pool.math = $uz pool.math
-function pool:math/mul_unit
-scoreboard players operation #ball_ball.c pool.tmp += $out pool.math
+function pool:physics/resolve/ball_ball/touch/closing
 execute if score #ball_ball.c pool.tmp matches ..0 run return 0
 # dt = g 10000 / c in 1/10000 tick
 scoreboard players operation $a pool.math = #ball_ball.g pool.tmp

@@ -7,16 +7,7 @@
 # #cost.work pool.tmp; reads the velocities. Writes: #ball_ball.g #ball_ball.c #ball_ball.ag #ball_ball.sx
 # #ball_ball.sz #ball_ball.tx #ball_ball.tz pool.tmp and the math library's temporaries.
 function pool:physics/resolve/ball_ball/touch/gap
-scoreboard players operation $a pool.math = @s pool.vx
-scoreboard players operation $a pool.math -= #ball_ball.b.vx pool.tmp
-scoreboard players operation $b pool.math = $ux pool.math
-function pool:math/mul_unit
-scoreboard players operation #ball_ball.c pool.tmp = $out pool.math
-scoreboard players operation $a pool.math = @s pool.vz
-scoreboard players operation $a pool.math -= #ball_ball.b.vz pool.tmp
-scoreboard players operation $b pool.math = $uz pool.math
-function pool:math/mul_unit
-scoreboard players operation #ball_ball.c pool.tmp += $out pool.math
+function pool:physics/resolve/ball_ball/touch/closing
 scoreboard players operation #ball_ball.ag pool.tmp = #ball_ball.g pool.tmp
 execute if score #ball_ball.ag pool.tmp matches ..-1 run scoreboard players operation #ball_ball.ag pool.tmp *= #-1 pool.const
 execute if score #ball_ball.ag pool.tmp matches 0 run return 0
