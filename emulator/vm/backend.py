@@ -98,6 +98,7 @@ class NumbaBackend:
         """Run the program compiled by :meth:`load` (and its macro instances) on ``state``, a fresh
         world holding the names it was compiled with; the counters start again."""
         self.state = state
+        state.entities.table.levels = self.program.levels  # the levels the program was compiled with
         self.selectors.scoreboard, self.selectors.table = state.scoreboard, state.entities.table
         self.selectors.resources = state.resources
         self.compiler.sb = state.scoreboard
