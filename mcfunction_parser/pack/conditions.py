@@ -5,10 +5,11 @@ A predicate file (``data/<ns>/predicate/<path>.json``; ``predicates/`` before 1.
 condition object or a list of them (all must hold). Each condition names its type in
 ``condition``; the game's codec refuses a file whose type is unknown in that release or whose
 required fields are missing or of the wrong kind ("Couldn't parse element ..."), and such a
-predicate does not exist at run time. Sources: LootItemConditions (decompiled 1.21, the registry
-of types), minecraft.wiki "Predicate" (History: ``alternatives`` became ``any_of`` and ``all_of``
-came in 1.20.5; ``random_chance_with_looting`` became ``random_chance_with_enchanted_bonus`` and
-``enchantment_active_check`` came in 1.21).
+predicate does not exist at run time. Sources: LootItemConditions (decompiled, the registry
+of types: 1.19.4 registers ``alternative``, 1.20 ``any_of`` and ``all_of`` in its place, 1.21
+``random_chance_with_enchanted_bonus`` in place of ``random_chance_with_looting`` and
+``enchantment_active_check``). The one table of condition types: loot tables and item modifiers
+(:mod:`mcfunction_parser.pack.loot`) check theirs with :func:`problem` too.
 """
 from __future__ import annotations
 
@@ -25,9 +26,9 @@ OLDEST = (1, 13, 0)
 # type -> (first release, first release without it)
 CONDITION_TYPES: dict[str, tuple[Version, Version | None]] = {
     "inverted": (OLDEST, None),
-    "alternatives": (OLDEST, (1, 20, 5)),
-    "any_of": ((1, 20, 5), None),
-    "all_of": ((1, 20, 5), None),
+    "alternative": (OLDEST, (1, 20, 0)),
+    "any_of": ((1, 20, 0), None),
+    "all_of": ((1, 20, 0), None),
     "random_chance": (OLDEST, None),
     "random_chance_with_looting": (OLDEST, (1, 21, 0)),
     "random_chance_with_enchanted_bonus": ((1, 21, 0), None),
@@ -49,7 +50,7 @@ CONDITION_TYPES: dict[str, tuple[Version, Version | None]] = {
 
 # fields the codec requires, per type (a missing one refuses the file)
 _REQUIRED = {
-    "inverted": ("term",), "alternatives": ("terms",), "any_of": ("terms",), "all_of": ("terms",),
+    "inverted": ("term",), "alternative": ("terms",), "any_of": ("terms",), "all_of": ("terms",),
     "random_chance": ("chance",), "entity_properties": ("entity",), "entity_scores": ("entity", "scores"),
     "block_state_property": ("block",), "reference": ("name",), "time_check": ("value",),
     "value_check": ("value", "range"), "table_bonus": ("enchantment", "chances"),
@@ -124,7 +125,7 @@ def problem(value: Any, version: Version) -> tuple[str, str] | None:
             str(value["entity"])
     if kind == "inverted":
         return problem(value["term"], version)
-    if kind in ("alternatives", "any_of", "all_of"):
+    if kind in ("alternative", "any_of", "all_of"):
         if not isinstance(value["terms"], list):
             return f'"terms" of \'{raw}\' must be a list', "terms"
         return problem(value["terms"], version)

@@ -5,12 +5,12 @@ string it is about (its line and column in the file).
 - ``check_loot_table(doc, version, diagnostics)`` / ``check_modifier(...)``: True when the file
   would load (no error found). The game refuses a file that does not decode, so the loader keeps
   only those that pass.
-- ``ENTRY_TYPES``, ``FUNCTION_TYPES``, ``CONDITION_TYPES``, ``NUMBER_TYPES``: type name ->
-  (first release, first release without it).
+- ``ENTRY_TYPES``, ``FUNCTION_TYPES``, ``NUMBER_TYPES``: type name -> (first release, first
+  release without it). Conditions are checked as predicate files are
+  (:func:`mcfunction_parser.pack.conditions.problem`: types per release, required fields).
 
 Sources: decompiled 1.21 world/level/storage/loot/entries/LootPoolEntries.java,
-functions/LootItemFunctions.java, predicates/LootItemConditions.java,
-providers/number/NumberProviders.java; renames and additions from the minecraft.wiki "Loot table",
+functions/LootItemFunctions.java, providers/number/NumberProviders.java; renames and additions from the minecraft.wiki "Loot table",
 "Item modifier" and "Predicate" pages (history sections).
 """
 from __future__ import annotations
@@ -20,6 +20,7 @@ from typing import Any
 from mcfunction_parser import gamedata
 from mcfunction_parser.diagnostics import ERROR, WARNING, Diagnostic
 from mcfunction_parser.items import component_problem
+from mcfunction_parser.pack import conditions as predicate_files
 from mcfunction_parser.pack.text import JsonDocument
 
 Version = tuple[int, int, int]
@@ -57,6 +58,12 @@ CONDITION_TYPES = {
     **_table("random_chance_with_enchanted_bonus enchantment_active_check", _V121),
 }
 NUMBER_TYPES = _table("constant uniform binomial score storage enchantment_level")
+# the fields of a function that hold a number provider, or another item modifier
+_NUMBER_FIELDS = {f"minecraft:{k}": v for k, v in {
+    "set_count": ("count",), "set_damage": ("damage",), "enchant_with_levels": ("levels",),
+    "enchanted_count_increase": ("count",), "looting_enchant": ("count",),
+    "set_ominous_bottle_amplifier": ("amplifier",)}.items()}
+_MODIFIER_FIELDS = {"minecraft:filtered": ("modifier", "on_pass", "on_fail")}
 
 
 def known(table: dict, name: str, version: Version) -> bool:
@@ -177,15 +184,14 @@ class _Checker:
                 self.component(name)
         if kind == "minecraft:set_item" and isinstance(function.get("item"), str):
             self.item(function["item"])
-        for key in ("count", "damage", "levels"):
-            if kind in ("minecraft:set_count", "minecraft:set_damage", "minecraft:enchant_with_levels") and key in function:
+        for key in _NUMBER_FIELDS.get(kind, ()):
+            if key in function:
                 self.number(function[key])
-        if kind in ("minecraft:sequence",):
+        if kind == "minecraft:sequence":
             self.functions(function.get("functions", []))
-        if kind == "minecraft:filtered":
-            for key in ("modifier", "on_pass", "on_fail"):
-                if key in function:
-                    self.function(function[key])
+        for key in _MODIFIER_FIELDS.get(kind, ()):
+            if key in function:
+                self.function(function[key])
 
     def item(self, name: str) -> None:
         """An item id in the release's item registry (an error against that release's own data,
@@ -216,17 +222,9 @@ class _Checker:
             self.condition(condition)
 
     def condition(self, condition: Any) -> None:
-        if isinstance(condition, list):  # an inline all_of
-            self.conditions(condition)
-            return
-        if not isinstance(condition, dict):
-            self.report(ERROR, "a condition must be a JSON object", "condition")
-            return
-        kind = self.type_of(condition, "condition", CONDITION_TYPES, "condition")
-        if kind == "minecraft:inverted":
-            self.condition(condition.get("term"))
-        elif kind in ("minecraft:any_of", "minecraft:all_of", "minecraft:alternative"):
-            self.conditions(condition.get("terms", []))
+        found = predicate_files.problem(condition, self.version)
+        if found is not None:
+            self.report(ERROR, found[0], found[1] or None)
 
     def number(self, value: Any) -> None:
         if isinstance(value, (int, float)) and not isinstance(value, bool):

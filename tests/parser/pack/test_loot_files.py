@@ -52,6 +52,21 @@ def test_types_are_checked_for_the_version(tmp_path):
     assert load_packs([root], mc_version="1.20.4").errors == []
 
 
+def test_conditions_are_checked_as_predicate_files_are(tmp_path):
+    # LootItemConditions' codec, the same in a loot table as in a predicate file: the release's
+    # types (alternative until 1.20, any_of from then) and the required fields
+    pool = {"rolls": 1, "entries": [{"type": "item", "name": "stone"}],
+            "conditions": [{"condition": "alternative", "terms": []}, {"condition": "entity_scores", "entity": "this"}]}
+    root = write_pack(tmp_path / "p", {"a/loot_table/x.json": json.dumps({"pools": [pool]})})
+    found = [(e.line, e.message) for e in load_packs([root], mc_version="1.21").errors]
+    assert found == [(1, "unknown predicate condition type 'alternative' in this release (it exists from 1.13.0 until "
+                         "1.20.0)"), (1, "condition 'entity_scores' needs the field \"scores\"")]
+    pool["conditions"] = [{"condition": "alternative", "terms": []}]
+    old = write_pack(tmp_path / "old", {"a/loot_tables/x.json": json.dumps({"pools": [pool]})})
+    loaded = load_packs([old], mc_version="1.19.4")
+    assert loaded.errors == [] and set(loaded.loot_tables) == {"a:x"}
+
+
 def test_check_names_loot_tables_and_modifiers_that_are_not_loaded(tmp_path):
     from mcfunction_parser.check import check_packs
     root = write_pack(tmp_path / "p", {"a/loot_table/x.json": json.dumps(GOOD),

@@ -67,7 +67,7 @@ def test_predicates_that_fail_to_load_are_errors_with_their_position(tmp_path):
     pack = write_pack(tmp_path / "p", {
         "data/a/predicate/ok.json": json.dumps({"condition": "minecraft:any_of", "terms": []}),
         "data/a/predicate/bad_type.json": '{\n  "condition": "minecraft:nope"\n}',
-        "data/a/predicate/old_type.json": json.dumps({"condition": "alternatives", "terms": []}),
+        "data/a/predicate/old_type.json": json.dumps({"condition": "alternative", "terms": []}),
         "data/a/predicate/missing.json": json.dumps({"condition": "minecraft:entity_scores", "entity": "this"}),
         "data/a/predicate/syntax.json": '{"condition": ',
     }, meta(48))
@@ -76,7 +76,8 @@ def test_predicates_that_fail_to_load_are_errors_with_their_position(tmp_path):
     found = {d.path.rsplit("/", 1)[1]: d for d in loaded.errors}
     assert (found["bad_type.json"].line, found["bad_type.json"].col) == (2, 16)
     assert "unknown predicate condition type 'minecraft:nope'" in found["bad_type.json"].message
-    assert "until 1.20.5" in found["old_type.json"].message  # alternatives became any_of
+    # LootItemConditions: 1.20 registers any_of in place of alternative
+    assert "until 1.20" in found["old_type.json"].message
     assert 'needs the field "scores"' in found["missing.json"].message
     assert "invalid JSON" in found["syntax.json"].message
 
