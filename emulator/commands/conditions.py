@@ -12,6 +12,7 @@ from __future__ import annotations
 from mcfunction_parser import ast
 
 from emulator.world import predicates
+from emulator.world.loot_context import LootContext
 from mcfunction_parser.pack import conditions as pack_conditions
 
 from . import blocks, data, entities, items
@@ -74,9 +75,9 @@ def if_predicate(env, predicate: str, ctx) -> bool:
                 raise CommandFailure("argument.resource_or_id.no_such_element", predicate, "minecraft:predicate",
                                      report=True)
             raise CommandFailure("predicate.unknown", predicate, report=True)
-    loot = predicates.LootContext(state, ctx.pos, this=executor(state, ctx), dimension=ctx.dimension)
+    loot = LootContext(state, ctx.pos, this=executor(state, ctx), dimension=ctx.dimension)
     if predicate[:1] not in "{[":
-        loot.visited.add(predicate)  # ConditionReference: a predicate reaching itself is false
+        loot.visit("predicate " + predicate)  # ConditionReference: a predicate reaching itself is false
     return predicates.test(value, loot)
 
 

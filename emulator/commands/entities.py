@@ -31,6 +31,7 @@ from emulator.world import relations, teleport
 from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
 from emulator.world.entity_types import ENTITY_TYPES
 from emulator.world import advancement_progress, advancements, predicates
+from emulator.world.loot_context import LootContext
 from emulator.world.selectors import SelectorQuery, SelectorWorld
 from emulator.world.source import Source
 from emulator.world.context import Context, SERVER
@@ -128,7 +129,7 @@ def selector_world(state: WorldState) -> SelectorWorld:
     resources = state.resources
 
     def predicate(predicate_id: str, entity: Entity) -> bool:
-        where = predicates.LootContext(state, entity.pos, this=entity, dimension=entity.dimension)
+        where = LootContext(state, entity.pos, this=entity, dimension=entity.dimension)
         return predicates.test_predicate(predicate_id, where)
     def advancements(text: str, entity: Entity) -> bool:
         return advancement_progress.matches(state, entity, advancement_progress.parse_selector_value(text))

@@ -13,7 +13,7 @@ from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
 from emulator.world.items import ItemStack, create, matches
-from emulator.world.loot_context import LootContext
+from emulator.world.loot_context import LootContext, not_modelled
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 
@@ -188,10 +188,11 @@ def count_items(env, cond: ast.IfItems, ctx) -> int:
 
 # ---------------------------------------------------------------------- loot
 def loot_context(env, ctx, **parts) -> LootContext:
+    """The LootParams of the ``loot`` and ``item modify`` commands: the context's position and
+    entity, the seeded loot random source."""
     state = env.state
-    return LootContext(state.resources.random, state.resources, state.version, this=executor(state, ctx), origin=ctx.pos,
-                       daytime=state.daytime, scores=state.scoreboard.get,
-                       storage=lambda sid: state.storage.get(sid, Compound()),
+    parts.setdefault("this", executor(state, ctx))
+    return LootContext(state, ctx.pos, dimension=ctx.dimension, random=state.resources.random,
                        resolve_text=lambda component, entity: _resolved(env, component, entity), **parts)
 
 
@@ -216,7 +217,7 @@ def _vanilla_table(env, table_id: str) -> dict:
     tables are not shipped), else the command fails saying so."""
     table = env.state.resources.loot_tables.get(table_id)
     if table is None:
-        raise CommandFailure("dpemu.loot.not_modelled", "the game's own loot table", table_id, report=True)
+        raise not_modelled("the game's own loot table", table_id)
     return table
 
 
@@ -248,8 +249,7 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
         if victim.type in inventories.NOT_LIVING:  # only living entities have a loot table
             raise CommandFailure("commands.drop.no_loot_table", victim.display_name)
         table_id = victim.data.get("DeathLootTable") or "minecraft:entities/" + victim.type.split(":", 1)[-1]
-        lctx = loot_context(env, ctx, killer=executor(env.state, ctx))
-        lctx.this = victim
+        lctx = loot_context(env, ctx, this=victim, damage_source="minecraft:magic").killed_by(executor(env.state, ctx))
         return loot.roll_table(_vanilla_table(env, str(table_id)), lctx)
     pos = block_pos(source, cmd.pos)
     blocks = env.state.blocks_in(ctx.dimension)

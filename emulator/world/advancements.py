@@ -28,6 +28,7 @@ from __future__ import annotations
 from emulator.world import predicates
 from emulator.world.advancement_progress import OBSERVED, full_id as _id, is_done, short_trigger
 from emulator.world.entities import Entity
+from emulator.world.loot_context import LootContext
 from mcfunction_parser.pack.advancements import criteria
 
 LOCATION_PERIOD = 20
@@ -143,7 +144,7 @@ def _player_matches(state, player: Entity, criterion: dict) -> bool:
     condition = (criterion.get("conditions") or {}).get("player")
     if condition is None:
         return True
-    ctx = predicates.LootContext(state, player.pos, this=player, dimension=player.dimension)
+    ctx = LootContext(state, player.pos, this=player, dimension=player.dimension)
     if isinstance(condition, list):
         return predicates.test(condition, ctx)
     return predicates.entity_matches(condition, ctx, player)

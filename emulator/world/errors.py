@@ -133,7 +133,7 @@ EMULATOR_MESSAGES = {
     "dpemu.macro.not_compound": "Expected argument to be a compound, got {0}",
     "dpemu.loot.unknown_table": "Unknown loot table {0}",
     "dpemu.loot.unknown_modifier": "Unknown item modifier {0}",
-    "dpemu.loot.not_modelled": "{0}: '{1}' is not modelled by the emulator",
+    "dpemu.loot.invalid": "{0} does not parse: {1}",
 }
 
 

@@ -14,7 +14,7 @@ Public API
 - ``matches(predicate, stack, item_tags)``: ItemPredicateArgument: id / ``#tag`` / ``*``, the
   component tests (``component``, ``component=value``, ``count=N|{min,max}``, ``custom_data~{...}``,
   ``damage~{...}``), or the older ``{nbt}`` partial match of the ``tag``. A ``~`` sub-predicate
-  the emulator does not model raises ``CommandFailure`` (reported), never a silent false.
+  the emulator does not model raises ``Unmodelled`` (reported), never a silent false.
 - ``DEFAULTS``: the defaults modelled: ``max_stack_size`` (1, 16 or 64), ``max_damage`` and
   ``damage`` of damageable items. Other default components (lore, rarity ...) are not modelled.
 
@@ -29,7 +29,7 @@ from dataclasses import dataclass, field
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte, Compound, Int, String
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import compare_nbt, copy_tag, is_numeric, tags_equal
 
 AIR = "minecraft:air"
@@ -257,4 +257,4 @@ def sub_predicate(name: str, value, stack: ItemStack) -> bool:
                 if bounds is None or not _within(bounds, number):
                     return False
         return True
-    raise CommandFailure("dpemu.unsupported", f"the item sub-predicate '{name}~'", report=True)
+    raise Unmodelled(f"the item sub-predicate '{name}~'")

@@ -1,14 +1,11 @@
 """Loot tables and item modifiers, run as the game runs them, with a seedable random source.
 
-- ``LootContext``: what a roll may read: ``random``, ``resources`` (other tables, modifiers, item
-  tags), ``this`` (the entity the loot is about), ``killer``, ``tool`` (an ItemStack), ``origin``,
-  ``block_entity`` (a mined container's NBT), ``scores(holder, objective)`` and ``storage(id)``.
+- ``LootContext`` (:mod:`emulator.world.loot_context`): the world and the roll's parameters.
 - ``roll_table(table, ctx)``: LootTable.getRandomItems: each pool's items, the table's functions
   applied, stacks over their maximum split (count 0 dropped).
 - ``apply_modifier(modifier, stack, ctx)``: an item modifier (one function or a list: a sequence).
-- ``conditions_pass(conditions, ctx)``: every condition holds (:mod:`emulator.world.loot_conditions`).
-- ``number(provider, ctx)`` / ``integer(provider, ctx)``: number providers (constant, uniform,
-  binomial, score, storage).
+Conditions (of pools, entries and functions, and ``filtered``'s item filter) are the predicates
+of :mod:`emulator.world.predicates`.
 
 Entries: item, tag (``expand`` both ways), loot_table (id or inline), alternatives, group,
 sequence, empty, dynamic (the mined block's ``contents``). Functions modelled: set_count,
@@ -17,8 +14,11 @@ copy_custom_data, copy_components (block_entity), set_contents, set_enchantments
 enchant_randomly, enchanted_count_increase/looting_enchant, apply_bonus, explosion_decay,
 set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered, sequence,
 reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
-before 1.21.4), set_stew_effect, copy_state. Anything else (an entry, function, condition or number provider type) raises a reported
-``CommandFailure`` naming it: the command fails with a diagnostic, never an empty drop in silence.
+before 1.21.4), set_stew_effect, copy_state. Anything else (an entry, function, condition or
+number provider type) raises :class:`~emulator.world.errors.Unmodelled` naming it: the command
+fails with a diagnostic, never an empty drop in silence. A table, modifier or predicate reached
+again through itself is skipped with a warning (LootContext.pushVisitedElement: the game logs
+"Detected infinite loop in loot tables").
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/level/storage/loot/LootTable.java,
 LootPool.java (addRandomItem: weights), entries/*.java, functions/*.java (SetItemCountFunction,
@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import json
 import math
-from typing import Callable
+from typing import Any, Callable
 
 from mcfunction_parser.nbt import Compound, Int, IntArray, List, String
 from emulator.world import nbt_ops
@@ -40,10 +40,10 @@ from emulator.world.inventories import MAINHAND, entity_slot
 from emulator.world.items import (
     ItemStack, enchantment_level, enchantment_levels, from_nbt, remove_component, set_component, to_nbt,
 )
-from emulator.world.loot_conditions import conditions_pass, item_matches
 from emulator.world.loot_context import (
     LootContext, integer, int_range, namespaced as _id, not_modelled, number, path_of as _path, snbt_or_tag, to_tag,
 )
+from emulator.world.predicates import item_matches, test as all_hold
 from emulator.world.nbt_ops import copy_tag, merge_compounds
 
 # Vanilla enchantments' maximum levels (Enchantments.java, 1.21): enchant_randomly's level range.
@@ -80,7 +80,7 @@ def roll_raw(table: dict, ctx: LootContext) -> list[ItemStack]:
 
 
 def _roll_pool(pool: dict, ctx: LootContext) -> list[ItemStack]:
-    if not conditions_pass(pool.get("conditions", []), ctx):
+    if not all_hold(pool.get("conditions", []), ctx):
         return []
     rolls = integer(pool.get("rolls", 1), ctx) + math.floor(number(pool.get("bonus_rolls", 0.0), ctx) * 0.0)
     out: list[ItemStack] = []
@@ -116,7 +116,7 @@ def _expand(entry: dict, ctx: LootContext, out: list) -> bool:
     """LootPoolEntryContainer.expand: add the singleton entries this one stands for; False when
     its conditions fail (what alternatives and sequence read)."""
     kind = _id(entry.get("type", ""))
-    if not conditions_pass(entry.get("conditions", []), ctx):
+    if not all_hold(entry.get("conditions", []), ctx):
         return False
     if kind == "minecraft:alternatives":
         return any(_expand(child, ctx, out) for child in entry.get("children", []))
@@ -159,13 +159,12 @@ def _nested_table(value, ctx: LootContext) -> list[ItemStack]:
         return roll_raw(value, ctx)
     table_id = _id(value)
     table = ctx.resources.loot_tables.get(table_id)
-    if table is None:
+    if table is None or not ctx.visit("loot_table " + table_id):
         return []  # LootTable.EMPTY for a missing id (a warning at load in the game)
-    ctx.visit("loot_table " + table_id)
     try:
         return roll_raw(table, ctx)
     finally:
-        ctx.visited.pop()
+        ctx.leave("loot_table " + table_id)
 
 
 def _dynamic(entry: dict, ctx: LootContext) -> list[ItemStack]:
@@ -197,7 +196,7 @@ def apply_function(function, stack: ItemStack, ctx: LootContext) -> ItemStack:
     handler = FUNCTIONS.get(kind)
     if handler is None:
         raise not_modelled("item function", kind)
-    if not conditions_pass(function.get("conditions", []), ctx):
+    if not all_hold(function.get("conditions", []), ctx):
         return stack
     return handler(function, stack, ctx)
 
@@ -222,9 +221,9 @@ def _set_damage(f, stack, ctx):
 def _limit_count(f, stack, ctx):
     lo, hi = int_range(f.get("limit", {}), ctx)
     if lo is not None:
-        stack.count = max(stack.count, lo)
+        stack.count = max(stack.count, int(lo))
     if hi is not None:
-        stack.count = min(stack.count, hi)
+        stack.count = min(stack.count, int(hi))
     return stack
 
 
@@ -414,8 +413,8 @@ def _enchant_randomly(f, stack, ctx):
 def _enchanted_count_increase(f, stack, ctx):
     """EnchantedCountIncreaseFunction / LootingEnchantFunction: count + level x number, limited."""
     weapon = None
-    if ctx.killer is not None:
-        access = entity_slot(ctx.killer, MAINHAND, ctx.version)
+    if ctx.attacker is not None:
+        access = entity_slot(ctx.attacker, MAINHAND, ctx.version)
         weapon = access.get() if access is not None else None
     level = enchantment_level(weapon, f.get("enchantment", "minecraft:looting"))
     if level == 0:
@@ -531,7 +530,7 @@ def _copy_state(f, stack, ctx):
 
 
 def _filtered(f, stack, ctx):
-    passed = item_matches(f.get("item_filter", {}), stack, ctx)
+    passed = item_matches(f.get("item_filter", {}), ctx, stack)
     branch = f.get("modifier") if passed else None
     if "on_pass" in f or "on_fail" in f:
         branch = f.get("on_pass") if passed else f.get("on_fail")
@@ -545,13 +544,12 @@ def _sequence(f, stack, ctx):
 def _reference(f, stack, ctx):
     name = _id(f.get("name", ""))
     modifier = ctx.resources.item_modifiers.get(name)
-    if modifier is None:
+    if modifier is None or not ctx.visit("item_modifier " + name):
         return stack  # "Unknown function table called" (logged), the stack unchanged
-    ctx.visit("item_modifier " + name)
     try:
         return apply_modifier(modifier, stack, ctx)
     finally:
-        ctx.visited.pop()
+        ctx.leave("item_modifier " + name)
 
 
 FUNCTIONS: dict[str, Callable] = {f"minecraft:{k}": v for k, v in {

@@ -1,15 +1,24 @@
-"""What a loot roll reads and the values it computes: the :class:`LootContext`, number providers,
-int ranges, and JSON values made NBT. Shared by :mod:`emulator.world.loot` (tables, functions)
-and :mod:`emulator.world.loot_conditions`.
+"""What loot tables, item modifiers, predicates and advancement criteria read, and the values they
+compute: the one :class:`LootContext`, number providers, ranges, and JSON values made NBT. Read by
+:mod:`emulator.world.predicates` (conditions) and :mod:`emulator.world.loot` (tables, functions).
 
-Sources (decompiled 1.21): world/level/storage/loot/LootContext.java, providers/number/*.java
-(ConstantValue, UniformGenerator, BinomialDistributionGenerator, ScoreboardValue, StorageValue),
-IntRange.java.
+- ``number(provider, ctx)`` / ``integer(provider, ctx)``: NumberProvider.getFloat / getInt
+  (constant, uniform, binomial, score, storage).
+- ``in_range(bounds, value, ctx=None)``: an exact number or ``{min, max}`` (MinMaxBounds; an
+  IntRange's bounds may be number providers, read with getInt). ``int_range(bounds, ctx)``.
+- ``to_tag(json)`` / ``snbt_or_tag(value)``: JSON values and SNBT strings as NBT.
+- ``not_modelled(kind, name)``: the :class:`~emulator.world.errors.Unmodelled` failure naming what
+  the emulator does not model (reported; a test meeting it is inconclusive).
+
+Sources (decompiled 1.21): world/level/storage/loot/LootContext.java (EntityTarget, visited
+elements), LootParams.java, providers/number/*.java (ConstantValue, UniformGenerator,
+BinomialDistributionGenerator, ScoreboardValue, StorageValue), IntRange.java,
+advancements/critereon/MinMaxBounds.java, server/commands/LootCommand.java (dropKillLoot).
 """
 from __future__ import annotations
 
 import math
-import random
+import random as _random
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
@@ -19,54 +28,99 @@ from mcfunction_parser.nbt_path import nbt_path
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world import nbt_ops
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import copy_tag
 
-MAX_DEPTH = 64  # a reference chain deeper than this is a cycle (LootContext.hasVisitedElement)
+_TARGETS = {"this": "this", "attacker": "attacker", "direct_attacker": "direct_attacker",
+            "attacking_player": "attacking_player",  # the 1.21 names; before 1.21:
+            "killer": "attacker", "direct_killer": "direct_attacker", "killer_player": "attacking_player"}
+
 
 def namespaced(name: str) -> str:
     return name if ":" in name else "minecraft:" + name
 
 
-def not_modelled(kind: str, name: str) -> CommandFailure:
-    return CommandFailure("dpemu.loot.not_modelled", kind, name, report=True)
+def not_modelled(kind: str, name: str) -> Unmodelled:
+    return Unmodelled(f"{kind} '{name}'")
 
 
 @dataclass
 class LootContext:
-    random: random.Random
-    resources: Any  # emulator.world.resources.Resources
-    version: tuple[int, int, int] = (1, 21, 11)  # the release (item NBT and text forms follow it)
-    this: Any = None
-    killer: Any = None
-    tool: ItemStack | None = None
+    """LootContext: the world (``state``) and the parameters the game's LootParams carry. Loot
+    tables, item modifiers, predicates and advancement criteria all read this one context.
+
+    ``random`` defaults to the level's (``state.random``); the ``loot`` command passes the seeded
+    loot source. ``resolve_text(component, entity)`` resolves a text component as an entity
+    (given by the commands, which own selectors); None keeps it as written."""
+    state: Any  # emulator.world.state.WorldState
     origin: tuple[float, float, float] | None = None
-    block_entity: Compound | None = None
+    this: Any = None  # an emulator.world.entities.Entity
+    attacker: Any = None
+    direct_attacker: Any = None
+    attacking_player: Any = None
+    tool: ItemStack | None = None
     block_state: Any = None  # the mined block (emulator.world.blocks.BlockState)
+    block_entity: Compound | None = None  # the mined block entity's NBT
     explosion_radius: float | None = None
-    daytime: int = 0
-    scores: Callable[[str, str], int | None] = lambda holder, objective: None
-    # a text component resolved for an entity (ComponentUtils.updateForEntity); None: kept as written
+    damage_source: str | None = None  # the damage type id; damage sources are not modelled further
+    dimension: str = "minecraft:overworld"
+    random: _random.Random | None = None
     resolve_text: Callable[[Any, Any], Any] | None = None
-    storage: Callable[[str], Compound] = lambda storage_id: Compound()
-    depth: int = 0
-    visited: list = field(default_factory=list)
+    visited: set[str] = field(default_factory=set)  # LootContext.visitedElements
+
+    def __post_init__(self) -> None:
+        if self.random is None:
+            self.random = self.state.random
+
+    @property
+    def resources(self):
+        return self.state.resources
+
+    @property
+    def version(self) -> tuple[int, int, int]:
+        return self.state.version
+
+    def killed_by(self, killer) -> "LootContext":
+        """LootCommand.dropKillLoot: the killer is the attacker and direct attacker, and the
+        attacking player when it is one."""
+        self.attacker = self.direct_attacker = killer
+        self.attacking_player = killer if killer is not None and killer.is_player else None
+        return self
 
     def entity(self, which: str):
-        """LootContext.EntityTarget: this, attacker/killer, direct_attacker, attacking_player/killer_player."""
-        if which == "this":
-            return self.this
-        if which in ("killer", "attacker", "direct_killer", "direct_attacker"):
-            return self.killer
-        if which in ("killer_player", "attacking_player", "last_damage_player"):
-            return self.killer if self.killer is not None and self.killer.is_player else None
-        raise not_modelled("entity target", which)
+        """LootContext.EntityTarget: this, attacker, direct_attacker, attacking_player (and their
+        pre-1.21 names killer, direct_killer, killer_player)."""
+        if which not in _TARGETS:
+            raise not_modelled("entity target", which)
+        return getattr(self, _TARGETS[which])
 
-    def visit(self, key: str) -> None:
-        if key in self.visited or len(self.visited) >= MAX_DEPTH:
-            raise CommandFailure("dpemu.loot.not_modelled", "a reference cycle", key, report=True)
-        self.visited.append(key)
+    def for_entity(self, entity) -> "LootContext":
+        """A context of the same world with ``entity`` as ``this`` at its position (an entity
+        predicate given as loot conditions)."""
+        return LootContext(self.state, entity.pos, this=entity, dimension=self.dimension, random=self.random,
+                           resolve_text=self.resolve_text, visited=self.visited)
+
+    def score(self, holder: str, objective: str) -> int | None:
+        """The holder's score, None when unset or the objective does not exist."""
+        board = self.state.scoreboard
+        return board.get(holder, objective) if board.exists(objective) else None
+
+    def storage(self, storage_id: str) -> Compound:
+        return self.state.storage.get(storage_id, Compound())
+
+    def visit(self, key: str) -> bool:
+        """LootContext.pushVisitedElement: False (and a logged warning, as the game logs "Detected
+        infinite loop in loot tables") when ``key`` is already being evaluated."""
+        if key in self.visited:
+            self.state.error(f"{key} refers back to itself: the game logs an infinite loop and skips it",
+                             severity="warning")
+            return False
+        self.visited.add(key)
+        return True
+
+    def leave(self, key: str) -> None:
+        self.visited.discard(key)
 
 
 # ---------------------------------------------------------------------- numbers
@@ -115,7 +169,7 @@ def _score(provider: dict, ctx: LootContext) -> float:
         name = target.get("target", "this") if isinstance(target, dict) else target
         entity = ctx.entity(name)
         holder = None if entity is None else entity.score_holder
-    value = None if holder is None else ctx.scores(holder, provider.get("score"))
+    value = None if holder is None else ctx.score(holder, provider.get("score"))
     return 0.0 if value is None else value * float(provider.get("scale", 1.0))
 
 
@@ -129,17 +183,32 @@ def _storage_values(provider: dict, ctx: LootContext) -> list:
 
 def path_of(text: str):
     try:
-        return nbtpath_of(Reader(text, Loc("<loot>", 1, 1), (1, 21, 0)))
+        return nbt_path(Reader(text, Loc("<loot>", 1, 1), (1, 21, 0)))
     except ParseError as error:
-        raise CommandFailure("dpemu.loot.not_modelled", "an NBT path", f"{text} ({error.message})", report=True) from None
+        raise CommandFailure("dpemu.loot.invalid", f"the NBT path '{text}'", error.message, report=True) from None
 
 
-def int_range(value, ctx: LootContext) -> tuple[int | None, int | None]:
-    """IntRange: a number, or {min, max} of number providers."""
-    if isinstance(value, (int, float)):
-        return int(value), int(value)
+def int_range(value, ctx: LootContext | None) -> tuple[float | None, float | None]:
+    """IntRange / MinMaxBounds: a number, or {min, max}; a bound that is a number provider is
+    read with getInt (IntRange.test)."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        return value, value
+    if not isinstance(value, dict):
+        raise not_modelled("range", repr(value))
     lo, hi = value.get("min"), value.get("max")
-    return (None if lo is None else integer(lo, ctx)), (None if hi is None else integer(hi, ctx))
+    return _bound(lo, ctx), _bound(hi, ctx)
+
+
+def _bound(value, ctx: LootContext | None) -> float | None:
+    if value is None or isinstance(value, (int, float)) and not isinstance(value, bool):
+        return value
+    return integer(value, ctx)
+
+
+def in_range(bounds, value: float, ctx: LootContext | None = None) -> bool:
+    """IntRange.test / MinMaxBounds.matches: inclusive, each bound optional."""
+    lo, hi = int_range(bounds, ctx)
+    return (lo is None or value >= lo) and (hi is None or value <= hi)
 
 
 # ---------------------------------------------------------------------- JSON to NBT
@@ -169,6 +238,6 @@ def snbt_or_tag(value) -> Compound:
     try:
         return parse_compound(Reader(str(value), Loc("<loot>", 1, 1), (1, 21, 4)))
     except ParseError as error:
-        raise CommandFailure("dpemu.loot.not_modelled", "an SNBT tag", f"{value} ({error.message})", report=True) from None
+        raise CommandFailure("dpemu.loot.invalid", f"the SNBT '{value}'", error.message, report=True) from None
 
 

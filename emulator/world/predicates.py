@@ -1,20 +1,16 @@
-"""Predicates: loot item conditions and the entity, location, block and item predicates inside them,
-evaluated against a :class:`LootContext`. Used by ``execute if predicate``, ``@e[predicate=...]``,
-PackTest's ``assert predicate``, loot tables and advancement criteria.
+"""The one evaluator of loot item conditions (predicates) and the entity, location, block and item
+predicates inside them, against a :class:`~emulator.world.loot_context.LootContext`. Read by
+``execute if predicate``, ``@e[predicate=...]``, PackTest's ``assert predicate``, loot tables and
+item modifiers (pools, entries, functions, ``filtered``) and advancement criteria.
 
-API (small on purpose; loot tables call it with their own context)
-- ``LootContext(state, origin=None, this=None, ...)``: the game's LootContext parameters:
-  ``origin`` (x, y, z), the entities ``this``/``attacker``/``direct_attacker``/``attacking_player``,
-  ``tool`` (an item stack as its NBT compound: ``{id, count, components}``), ``block_state``
-  (:class:`~emulator.world.blocks.BlockState`), ``explosion_radius``, ``damage_source``;
-  ``dimension``; ``random`` (default: the level's, ``state.random``).
+API
 - ``test(condition, ctx) -> bool``: one condition (a dict) or a list of them (all must hold).
 - ``test_predicate(predicate_id, ctx) -> bool``: a loaded predicate file by id (``reference``'s
-  semantics: an unknown id is false).
+  semantics: an unknown id or a loop is false).
 - ``entity_matches(predicate, ctx, entity)``, ``location_matches(predicate, ctx, pos)``,
-  ``item_matches(predicate, ctx, stack)``, ``block_matches(predicate, ctx, pos)``: the sub-predicates.
-- ``number(provider, ctx)``, ``in_range(range, value, ctx)``: number providers and the int/float
-  ranges (``MinMaxBounds``, ``IntRange``).
+  ``item_matches(predicate, ctx, stack)`` (an :class:`~emulator.world.items.ItemStack`),
+  ``block_matches(predicate, ctx, pos)``: the sub-predicates.
+- ``CONDITIONS``: condition type (without ``minecraft:``) -> evaluator ``(condition, ctx) -> bool``.
 Anything a condition reads that the emulator does not model raises
 :class:`~emulator.world.errors.Unmodelled` with the reason: never a silent true or false.
 
@@ -25,62 +21,38 @@ Sources (decompiled 1.21, net/minecraft/world/level/storage/loot/predicates/*, a
   EntityPredicate.matches: a missing entity fails; ``distance`` needs an origin.
 - EntityPredicate (type, distance, location/stepping_on/movement_affected_by, effects, nbt, flags,
   equipment, type_specific, vehicle, passenger, targeted_entity, team, periodic_tick, slots).
+- EntityEquipmentPredicate.matches: only a LivingEntity matches; each given slot's ItemPredicate
+  tests LivingEntity.getItemBySlot (an empty slot is the empty stack, which ``{}`` matches).
 - DistancePredicate: float differences, x/y/z on their absolute values, horizontal/absolute on
   squared lengths. LocationPredicate: position on the exact doubles, then the block at
   BlockPos.containing. LocationCheck: origin + offset. ExecuteCommand.checkCustomPredicate: the
   COMMAND parameter set (origin, this entity), the level's random.
-- EntityScoresCondition, ValueCheckCondition, TimeCheck (day time, ``period`` modulo),
-  WeatherCheck, LootItemRandomChanceCondition (nextFloat() < chance), LootItemKilledByPlayerCondition,
-  ExplosionCondition (no radius: true), MatchTool, LootItemBlockStatePropertyCondition,
+- EntityHasScoreCondition, ValueCheckCondition (IntRange.test of getInt), TimeCheck (day time,
+  ``period`` modulo, as an int), WeatherCheck, LootItemRandomChanceCondition (nextFloat() < chance),
+  LootItemRandomChanceWithEnchantedBonusCondition, LootItemKilledByPlayerCondition (the
+  attacking player parameter), ExplosionCondition (no radius: true), MatchTool (no tool: false),
+  BonusLevelTableCondition (the tool's level picks the chance), LootItemBlockStatePropertyCondition,
   StatePropertiesPredicate (exact value or min/max on the property's value).
+- ItemPredicate.test: items, count, exact components (DataComponentPredicate), sub-predicates;
+  no special case for the empty stack.
 """
 from __future__ import annotations
 
 import math
-import random as _random
-from dataclasses import dataclass, field
-from typing import Any
+from typing import Callable
 
 import numpy as np
 
-from emulator.world import advancement_progress, living
+from emulator.world import advancement_progress, inventories, living
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
-from emulator.world.loot_context import to_tag as json_to_nbt
+from emulator.world.items import ItemStack, enchantment_level, sub_predicate, value_equal
+from emulator.world.living import is_living
+from emulator.world.loot_context import LootContext, in_range, integer, number, snbt_or_tag, to_tag
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
-from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Byte, Compound, Int
-from mcfunction_parser.reader import ParseError, Reader
-from mcfunction_parser import snbt
+from mcfunction_parser.nbt import Byte, Int
 
 F32 = np.float32
-_TARGETS = {"this": "this", "attacker": "attacker", "killer": "attacker", "direct_attacker": "direct_attacker",
-            "direct_killer": "direct_attacker", "attacking_player": "attacking_player",
-            "killer_player": "attacking_player"}
-
-
-@dataclass
-class LootContext:
-    state: Any  # emulator.world.state.WorldState
-    origin: tuple[float, float, float] | None = None
-    this: Entity | None = None
-    attacker: Entity | None = None
-    direct_attacker: Entity | None = None
-    attacking_player: Entity | None = None
-    tool: Compound | None = None
-    block_state: Any = None
-    explosion_radius: float | None = None
-    damage_source: Any = None
-    dimension: str = "minecraft:overworld"
-    random: _random.Random | None = None
-    visited: set[str] = field(default_factory=set)  # predicates being evaluated (reference loops)
-
-    @property
-    def rng(self) -> _random.Random:
-        return self.random or self.state.random
-
-    def entity(self, target: str) -> Entity | None:
-        return getattr(self, _TARGETS[target])
 
 
 def _kind(value: dict) -> str:
@@ -88,68 +60,63 @@ def _kind(value: dict) -> str:
     return str(kind).removeprefix("minecraft:")
 
 
+def _id(text: str) -> str:
+    return text if ":" in text else "minecraft:" + text
+
+
 # ---------------------------------------------------------------------- conditions
 def test(condition, ctx: LootContext) -> bool:
     """One loot condition, or a list of them (all must hold, in order)."""
     if isinstance(condition, list):
         return all(test(c, ctx) for c in condition)
-    kind = _kind(condition)
-    handler = _CONDITIONS.get(kind)
+    handler = CONDITIONS.get(_kind(condition))
     if handler is None:
         raise Unmodelled(f"predicate condition '{condition.get('condition')}'")
     return handler(condition, ctx)
 
 
 def test_predicate(predicate_id: str, ctx: LootContext) -> bool:
-    """A loaded predicate by id; unknown ids and reference loops are false (ConditionReference)."""
-    predicate = ctx.state.resources.predicates.get(predicate_id)
-    if predicate is None or predicate_id in ctx.visited:
+    """A loaded predicate by id; an unknown id or a loop is false (ConditionReference.test)."""
+    predicate = ctx.resources.predicates.get(predicate_id)
+    if predicate is None or not ctx.visit("predicate " + predicate_id):
         return False
-    ctx.visited.add(predicate_id)
     try:
         return test(predicate, ctx)
     finally:
-        ctx.visited.discard(predicate_id)
+        ctx.leave("predicate " + predicate_id)
 
 
 def _entity_properties(c: dict, ctx: LootContext) -> bool:
     predicate = c.get("predicate")
     if predicate is None:
         return True
-    entity = ctx.entity(c["entity"])
-    return entity_matches(predicate, ctx, entity)
+    return entity_matches(predicate, ctx, ctx.entity(c["entity"]))
 
 
 def _entity_scores(c: dict, ctx: LootContext) -> bool:
     entity = ctx.entity(c["entity"])
     if entity is None:
         return False
-    board = ctx.state.scoreboard
     for objective, bounds in c.get("scores", {}).items():
-        if not board.exists(objective):
-            return False
-        value = board.get(entity.score_holder, objective)
+        value = ctx.score(entity.score_holder, objective)
         if value is None or not in_range(bounds, value, ctx):
             return False
     return True
 
 
-def _random_chance(c: dict, ctx: LootContext) -> bool:
-    return ctx.rng.random() < number(c["chance"], ctx)
+def _chance(chance, ctx: LootContext) -> bool:
+    return ctx.random.random() < chance
 
 
 def _enchanted_bonus(c: dict, ctx: LootContext) -> bool:
-    """LootItemRandomChanceWithEnchantedBonusCondition: the attacker's enchantment level picks the
-    chance; without an attacker the level is 0 (``unenchanted_chance``)."""
-    if ctx.attacker is not None:
-        raise Unmodelled("enchantment levels of an attacker's equipment (random_chance_with_enchanted_bonus)")
-    if "unenchanted_chance" in c:
-        return ctx.rng.random() < float(c["unenchanted_chance"])
-    return ctx.rng.random() < float(c.get("chance", 0.0))  # random_chance_with_looting: level 0
-
-
-def _value_check(c: dict, ctx: LootContext) -> bool:
-    return in_range(c["range"], int(number(c["value"], ctx)), ctx)
+    """LootItemRandomChanceWithEnchantedBonusCondition (random_chance_with_looting before 1.21): the
+    attacker's level of the enchantment picks the chance. An attacker whose equipment holds none of
+    it has level 0 (the unenchanted chance); a level above 0 is not modelled (its slots and
+    level-based chance are the enchantment's definition)."""
+    enchantment = c.get("enchantment", "minecraft:looting")
+    if ctx.attacker is not None and any(enchantment_level(s, enchantment) for s in equipment(ctx.attacker, ctx)):
+        raise Unmodelled(f"an attacker's enchantment level ({c.get('condition')})")
+    return _chance(float(c.get("unenchanted_chance", c.get("chance", 0.0))), ctx)
 
 
 def _time_check(c: dict, ctx: LootContext) -> bool:
@@ -185,98 +152,56 @@ def _match_tool(c: dict, ctx: LootContext) -> bool:
     return "predicate" not in c or item_matches(c["predicate"], ctx, ctx.tool)
 
 
-def _needs_parameter(parameter: str, what: str, absent: bool):
-    """Conditions on a parameter the emulator never provides (a damage source, an explosion):
-    their value without it, else not modelled."""
-    def check(c: dict, ctx: LootContext) -> bool:
-        if getattr(ctx, parameter) is None:
-            return absent
-        raise Unmodelled(what)
-    return check
-
-
 def _table_bonus(c: dict, ctx: LootContext) -> bool:
-    if ctx.tool is not None:
-        raise Unmodelled("enchantment levels of the tool (table_bonus)")
-    chances = c["chances"]
-    return ctx.rng.random() < float(chances[0]) if chances else False
+    """BonusLevelTableCondition: the tool's enchantment level (0 without a tool) picks the chance."""
+    chances = c.get("chances", [])
+    level = enchantment_level(ctx.tool, c.get("enchantment", ""))
+    return bool(chances) and _chance(chances[min(level, len(chances) - 1)], ctx)
 
 
-_CONDITIONS = {
+def _survives_explosion(c: dict, ctx: LootContext) -> bool:
+    return ctx.explosion_radius is None or ctx.random.random() <= 1.0 / ctx.explosion_radius
+
+
+def _damage_source(c: dict, ctx: LootContext) -> bool:
+    """DamageSourceCondition: false without a damage source; damage sources are not modelled."""
+    if ctx.damage_source is None:
+        return False
+    raise Unmodelled(f"damage sources (damage_source_properties on {ctx.damage_source})")
+
+
+def _killed_by_player(c: dict, ctx: LootContext) -> bool:
+    """LootItemKilledByPlayerCondition: the attacking player parameter is present (``inverse``
+    before 1.20.5)."""
+    return (ctx.attacking_player is not None) != bool(c.get("inverse", False))
+
+
+def _any_of(c: dict, ctx: LootContext) -> bool:
+    return any(test(t, ctx) for t in c["terms"])
+
+
+CONDITIONS: dict[str, Callable[[dict, LootContext], bool]] = {
     "inverted": lambda c, ctx: not test(c["term"], ctx),
     "all_of": lambda c, ctx: all(test(t, ctx) for t in c["terms"]),
-    "any_of": lambda c, ctx: any(test(t, ctx) for t in c["terms"]),
-    "alternatives": lambda c, ctx: any(test(t, ctx) for t in c["terms"]),
+    "any_of": _any_of,
+    "alternative": _any_of,  # the name before 1.20
     "reference": lambda c, ctx: test_predicate(_id(c["name"]), ctx),
     "entity_properties": _entity_properties,
     "entity_scores": _entity_scores,
-    "random_chance": _random_chance,
+    "random_chance": lambda c, ctx: _chance(number(c["chance"], ctx), ctx),
     "random_chance_with_enchanted_bonus": _enchanted_bonus,
     "random_chance_with_looting": _enchanted_bonus,
-    "value_check": _value_check,
+    "value_check": lambda c, ctx: in_range(c["range"], integer(c["value"], ctx), ctx),
     "time_check": _time_check,
     "weather_check": _weather_check,
     "location_check": _location_check,
     "block_state_property": _block_state_property,
     "match_tool": _match_tool,
-    "killed_by_player": lambda c, ctx: ctx.attacking_player is not None,
-    "survives_explosion": _needs_parameter("explosion_radius", "explosions (survives_explosion)", True),
-    "damage_source_properties": _needs_parameter("damage_source", "damage sources (damage_source_properties)", False),
+    "killed_by_player": _killed_by_player,
+    "survives_explosion": _survives_explosion,
+    "damage_source_properties": _damage_source,
     "table_bonus": _table_bonus,
 }
-
-
-# ---------------------------------------------------------------------- numbers and ranges
-def number(provider, ctx: LootContext) -> float:
-    """A NumberProvider: a constant, ``constant``, ``uniform``, ``binomial`` or ``score``."""
-    if isinstance(provider, (int, float)) and not isinstance(provider, bool):
-        return provider
-    if not isinstance(provider, dict):
-        raise Unmodelled(f"number provider {provider!r}")
-    kind = _kind(provider) or "constant"
-    if kind == "constant":
-        return provider["value"]
-    if kind == "uniform":  # UniformGenerator.getFloat: Mth.randomBetween(random, min, max)
-        lo, hi = number(provider["min"], ctx), number(provider["max"], ctx)
-        return lo + ctx.rng.random() * (hi - lo)
-    if kind == "binomial":
-        n, p = int(number(provider["n"], ctx)), number(provider["p"], ctx)
-        return sum(ctx.rng.random() < p for _ in range(n))
-    if kind == "score":
-        return _score_provider(provider, ctx)
-    raise Unmodelled(f"number provider type '{provider.get('type')}'")
-
-
-def _score_provider(provider: dict, ctx: LootContext) -> float:
-    """ScoreboardValue: the score of a fixed name or a context entity, times ``scale``; no score: 0."""
-    target = provider.get("target")
-    if isinstance(target, str):
-        target = {"type": "context", "target": target}
-    if _kind(target) == "fixed":
-        holder = target["name"]
-    else:
-        entity = ctx.entity(target["target"])
-        if entity is None:
-            return 0
-        holder = entity.score_holder
-    board = ctx.state.scoreboard
-    value = board.get(holder, provider["score"]) if board.exists(provider["score"]) else None
-    return 0 if value is None else value * float(provider.get("scale", 1.0))
-
-
-def in_range(bounds, value: float, ctx: LootContext | None = None) -> bool:
-    """MinMaxBounds / IntRange: an exact number or ``{min, max}`` (inclusive, each optional; an
-    IntRange's bounds may be number providers)."""
-    if isinstance(bounds, (int, float)) and not isinstance(bounds, bool):
-        return value == bounds
-    if not isinstance(bounds, dict):
-        return False
-    lo, hi = bounds.get("min"), bounds.get("max")
-    if isinstance(lo, dict):
-        lo = number(lo, ctx)
-    if isinstance(hi, dict):
-        hi = number(hi, ctx)
-    return (lo is None or value >= lo) and (hi is None or value <= hi)
 
 
 def _range_sq(bounds, value_sq: float) -> bool:
@@ -291,18 +216,67 @@ def _int32(value: int) -> int:
     return ((value + 2**31) & 0xFFFFFFFF) - 2**31
 
 
-def _id(text: str) -> str:
-    return text if ":" in text else "minecraft:" + text
+# ---------------------------------------------------------------------- equipment and items
+_EQUIPMENT_SLOTS = {"mainhand": inventories.MAINHAND, "offhand": inventories.OFFHAND, "body": inventories.BODY,
+                    **inventories.ARMOR_SLOTS}
 
 
+def _slot_stack(entity: Entity, slot: int, ctx: LootContext) -> ItemStack:
+    """LivingEntity.getItemBySlot: the stack in the slot (the empty stack when none)."""
+    access = inventories.entity_slot(entity, slot, ctx.version)
+    return access.get() if access is not None else ItemStack("minecraft:air", 0)
+
+
+def equipment(entity: Entity, ctx: LootContext) -> list[ItemStack]:
+    """The stacks of a living entity's equipment slots (none for other entities)."""
+    if not is_living(entity.type):
+        return []
+    return [_slot_stack(entity, slot, ctx) for slot in _EQUIPMENT_SLOTS.values()]
+
+
+def _equipment(value: dict, ctx: LootContext, entity: Entity) -> bool:
+    """EntityEquipmentPredicate.matches: a living entity whose given slots' stacks match."""
+    if not is_living(entity.type):
+        return False
+    return all(item_matches(wanted, ctx, _slot_stack(entity, _EQUIPMENT_SLOTS[slot], ctx))
+               for slot, wanted in value.items() if slot in _EQUIPMENT_SLOTS)
+
+
+def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
+    """ItemPredicate.test: ``items`` (id, list or #tag; ``item``/``tag`` before 1.17/1.20.5),
+    ``count``, ``components`` (each equal to the stack's value, defaults included),
+    ``predicates`` (``custom_data``, ``damage``); before 1.20.5 ``nbt`` (a partial match of the
+    stack's tag)."""
+    wanted = predicate.get("items", predicate.get("item"))
+    if "tag" in predicate:
+        wanted = "#" + predicate["tag"]
+    if wanted is not None and not _holder_set(wanted, "item", stack.id, ctx):
+        return False
+    if "count" in predicate and not in_range(predicate["count"], stack.count):
+        return False
+    for name, value in predicate.get("components", {}).items():
+        found = stack.component(_id(name))
+        if found is None or not value_equal(to_tag(value), found):
+            return False
+    for name, value in predicate.get("predicates", {}).items():
+        name = _id(name)
+        if name not in ("minecraft:custom_data", "minecraft:damage"):
+            raise Unmodelled(f"item sub-predicate '{name}'")
+        value = snbt_or_tag(value) if name == "minecraft:custom_data" else to_tag(value)
+        if not sub_predicate(name, value, stack):
+            return False
+    if "nbt" in predicate and not compare_nbt(snbt_or_tag(predicate["nbt"]), stack.tag):
+        return False
+    for key in ("durability", "enchantments", "stored_enchantments", "potion"):
+        if key in predicate:
+            raise Unmodelled(f"item predicate field '{key}'")
+    return True
 # ---------------------------------------------------------------------- entities
 def entity_matches(predicate, ctx: LootContext, entity: Entity | None) -> bool:
     """EntityPredicate.matches(level, ctx.origin, entity); a list is a ContextAwarePredicate of
     loot conditions run with the entity as ``this`` at its position."""
     if isinstance(predicate, list):
-        inner = LootContext(ctx.state, entity.pos if entity else None, this=entity, dimension=ctx.dimension,
-                            random=ctx.random, visited=ctx.visited)
-        return entity is not None and test(predicate, inner)
+        return entity is not None and test(predicate, ctx.for_entity(entity))
     if entity is None:
         return False
     for key, value in predicate.items():
@@ -343,17 +317,7 @@ def _distance(value: dict, ctx: LootContext, entity: Entity) -> bool:
 
 def _nbt(value, ctx: LootContext, entity: Entity) -> bool:
     """NbtPredicate: the entity's saved NBT (a player's with its SelectedItem), a partial match."""
-    return compare_nbt(_parse_snbt(value), entity_nbt(entity))
-
-
-def _parse_snbt(value) -> Compound:
-    if isinstance(value, dict):
-        return json_to_nbt(value)
-    reader = Reader(str(value), Loc("<predicate>", 1, 1), (1, 21, 0))
-    try:
-        return snbt.compound(reader)
-    except ParseError as error:
-        raise Unmodelled(f"NBT {value!r} does not parse: {error.message}") from None
+    return compare_nbt(snbt_or_tag(value), entity_nbt(entity))
 
 
 def _flags(value: dict, ctx: LootContext, entity: Entity) -> bool:
@@ -469,9 +433,10 @@ _ENTITY_FIELDS = {
     "vehicle": _vehicle,
     "passenger": _passenger,
     "type_specific": _type_specific,
+    "equipment": _equipment,
     "player": lambda v, ctx, e: _player(v, ctx, e),  # before 1.19: a top-level player predicate
 }
-_ENTITY_UNMODELLED = {"equipment", "targeted_entity", "periodic_tick", "slots", "movement", "fishing_hook",
+_ENTITY_UNMODELLED = {"targeted_entity", "periodic_tick", "slots", "movement", "fishing_hook",
                       "lightning_bolt", "catType", "components", "predicates"}
 
 
@@ -509,7 +474,7 @@ def block_matches(predicate: dict, ctx: LootContext, pos) -> bool:
     if "state" in predicate and not _state_matches(predicate["state"], dict(state.properties), state.id):
         return False
     if "nbt" in predicate:
-        return compare_nbt(_parse_snbt(predicate["nbt"]), blocks.block_nbt(pos, quiet=True))
+        return compare_nbt(snbt_or_tag(predicate["nbt"]), blocks.block_nbt(pos, quiet=True))
     return True
 
 
@@ -564,35 +529,3 @@ def _fluid_matches(predicate: dict, ctx: LootContext, pos) -> bool:
     return "state" not in predicate or _state_matches(predicate["state"], fluid_props, fluid)
 
 
-# ---------------------------------------------------------------------- items
-def item_matches(predicate: dict, ctx: LootContext, stack: Compound | None) -> bool:
-    """ItemPredicate on a stack's NBT (``{id, count, components}``): ``items`` (id, list or #tag),
-    ``count``, ``components`` (each exactly equal), ``predicates`` (``custom_data``: a partial NBT
-    match); before 1.20.5 ``items``/``tag``/``nbt``."""
-    if stack is None or str(stack.get("id", "minecraft:air")) == "minecraft:air":
-        return False
-    item_id = str(stack["id"])
-    wanted = predicate.get("items")
-    if "tag" in predicate:
-        wanted = "#" + predicate["tag"]
-    if wanted is not None and not _holder_set(wanted, "item", item_id, ctx):
-        return False
-    count = int(numeric_value(stack.get("count", stack.get("Count", Int(1)))))
-    if "count" in predicate and not in_range(predicate["count"], count):
-        return False
-    components = stack.get("components", Compound())
-    for name, value in predicate.get("components", {}).items():
-        found = components.get(_id(name))
-        if found is None or not compare_nbt(json_to_nbt(value), found, partial_lists=False):
-            return False
-    for name, value in predicate.get("predicates", {}).items():
-        if _id(name) != "minecraft:custom_data":
-            raise Unmodelled(f"item sub-predicate '{name}'")
-        if not compare_nbt(_parse_snbt(value), components.get("minecraft:custom_data")):
-            return False
-    if "nbt" in predicate and not compare_nbt(_parse_snbt(predicate["nbt"]), stack.get("tag")):
-        return False
-    for key in ("durability", "enchantments", "stored_enchantments", "potion"):
-        if key in predicate:
-            raise Unmodelled(f"item predicate field '{key}'")
-    return True

@@ -130,8 +130,8 @@ def test_bad_loot_input(tmp_path):
         {"type": "item", "name": "beef", "functions": [{"function": "furnace_smelt"}]}]}]}))
     for emu in _on_both(pack):
         messages = [d.message for d in emu.diagnostics]
-        assert messages == ["Unknown loot table t:missing", "item function: 'minecraft:furnace_smelt' is not "
-                            "modelled by the emulator", "Unknown item modifier t:nothing"]
+        assert messages == ["Unknown loot table t:missing", "not modelled: item function 'minecraft:furnace_smelt'",
+                            "Unknown item modifier t:nothing"]
         assert _scores(emu) == {"#s": 0}
 
 
@@ -165,7 +165,7 @@ def test_kill_loot_uses_the_entity_table_and_its_killer(tmp_path):
     for emu in _on_both(pack):
         assert _scores(emu) == {"#server": 0, "#player": 1, "#marker": 0}
         assert [d.message for d in emu.diagnostics] == [
-            "the game's own loot table: 'minecraft:entities/cow' is not modelled by the emulator"]
+            "not modelled: the game's own loot table 'minecraft:entities/cow'"]
 
 
 def test_set_name_resolved_as_the_entity(tmp_path):

@@ -5,10 +5,12 @@ from __future__ import annotations
 
 import pytest
 
-from emulator.world import predicates
+from emulator.world import inventories, loot, predicates
 from emulator.world.blocks import BlockSpec
 from emulator.world.errors import Unmodelled
-from emulator.world.predicates import LootContext, test as holds
+from emulator.world.items import ItemStack
+from emulator.world.loot_context import LootContext
+from emulator.world.predicates import test as holds
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
 from mcfunction_parser.pack.conditions import parse_inline
@@ -119,8 +121,7 @@ def test_command_parameter_set_lacks_tool_block_and_damage(state):
 
 def test_match_tool_item_predicate(state):
     # MatchTool + ItemPredicate: items, count, components (exact), predicates.custom_data (partial)
-    stack = Compound(id=String("minecraft:stick"), count=Int(3),
-                     components=Compound({"minecraft:custom_data": Compound(magic=Byte(1), more=Int(2))}))
+    stack = ItemStack("minecraft:stick", 3, Compound({"minecraft:custom_data": Compound(magic=Byte(1), more=Int(2))}))
     tool = ctx(state, tool=stack)
     assert holds({"condition": "match_tool", "predicate": {"items": "minecraft:stick", "count": {"min": 2}}}, tool)
     assert not holds({"condition": "match_tool", "predicate": {"items": ["minecraft:stone"]}}, tool)
@@ -141,8 +142,8 @@ def test_flags_effects_and_unmodelled_fields(state):
     assert holds(props({"effects": {"minecraft:speed": {"amplifier": {"min": 1}}}}), this)
     assert not holds(props({"effects": {"minecraft:slowness": {}}}), this)
     assert holds(props({"type_specific": {"type": "player", "gamemode": ["survival"]}}), this)
-    with pytest.raises(Unmodelled, match="equipment"):
-        holds(props({"equipment": {"mainhand": {"items": "minecraft:stick"}}}), this)
+    with pytest.raises(Unmodelled, match="targeted_entity"):
+        holds(props({"targeted_entity": {}}), this)
     with pytest.raises(Unmodelled, match="'minecraft:nope'"):
         holds({"condition": "minecraft:nope"}, this)
 
@@ -151,3 +152,87 @@ def test_inline_predicates_read_snbt():
     # 1.20.5+ inline predicates: SNBT read through the condition codec
     value = parse_inline('{condition:"minecraft:random_chance",chance:0.5f}')
     assert value == {"condition": "minecraft:random_chance", "chance": pytest.approx(0.5)}
+
+
+# ---------------------------------------------------------------------- one evaluator for loot and predicates
+def props(predicate, entity="this"):
+    return {"condition": "entity_properties", "entity": entity, "predicate": predicate}
+
+
+def test_loot_pools_read_the_same_conditions_as_predicates(state):
+    # LootPool.addRandomItems: the pool's conditions are LootItemConditions, the same codec and test
+    # as a predicate file's (an entity_properties gate on the looted entity)
+    table = {"pools": [{"rolls": 1, "conditions": [props({"type": "minecraft:pig"})],
+                        "entries": [{"type": "item", "name": "porkchop"}]}]}
+    pig = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0))
+    cow = state.entities.summon("minecraft:cow", (0.0, 0.0, 0.0))
+    assert [s.id for s in loot.roll_table(table, ctx(state, this=pig))] == ["minecraft:porkchop"]
+    assert loot.roll_table(table, ctx(state, this=cow)) == []
+
+
+def test_value_check_reads_the_provider_as_an_int(state):
+    # ValueCheckCondition.test: range.test(ctx, provider.getInt(ctx)); getInt rounds (Mth.floor(f + 0.5))
+    assert holds({"condition": "value_check", "value": 2.6, "range": {"min": 3, "max": 3}}, ctx(state))
+    assert not holds({"condition": "value_check", "value": 2.4, "range": {"min": 3}}, ctx(state))
+
+
+def test_kill_loot_parameters(state):
+    # LootCommand.dropKillLoot: the killer is attacker and direct attacker, the attacking player when
+    # it is one (LootItemKilledByPlayerCondition); the damage source is magic, which
+    # damage_source_properties would read (not modelled: said so, not false)
+    player = state.entities.add_player("Alex", (0.0, 0.0, 0.0))
+    zombie = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0))
+    by_player = ctx(state, this=zombie, damage_source="minecraft:magic").killed_by(player)
+    assert holds({"condition": "killed_by_player"}, by_player)
+    assert holds(props({"type": "minecraft:player"}, "attacker"), by_player)
+    assert not holds({"condition": "killed_by_player"}, ctx(state, this=player).killed_by(zombie))
+    with pytest.raises(Unmodelled, match="damage sources"):
+        holds({"condition": "damage_source_properties", "predicate": {}}, by_player)
+
+
+def test_enchanted_bonus_without_an_enchanted_attacker_is_the_unenchanted_chance(state):
+    # LootItemRandomChanceWithEnchantedBonusCondition: level 0 (no attacker, or none of the
+    # enchantment on its equipment) takes unenchanted_chance; a level above 0 is not modelled
+    condition = {"condition": "random_chance_with_enchanted_bonus", "enchantment": "minecraft:looting",
+                 "unenchanted_chance": 1.0, "enchanted_chance": 0.0}
+    zombie = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0))
+    assert holds(condition, ctx(state).killed_by(zombie))
+    sword = ItemStack("minecraft:iron_sword", 1, Compound({"minecraft:enchantments": Compound(
+        levels=Compound({"minecraft:looting": Int(2)}))}))
+    inventories.entity_slot(zombie, inventories.MAINHAND, state.version).set(sword)
+    with pytest.raises(Unmodelled, match="enchantment level"):
+        holds(condition, ctx(state).killed_by(zombie))
+
+
+# ---------------------------------------------------------------------- equipment
+@pytest.mark.parametrize("version", [(1, 21, 4), (1, 21, 5)])
+def test_equipment_reads_each_slot_of_a_living_entity(version):
+    # EntityEquipmentPredicate.matches: a LivingEntity; each given slot's ItemPredicate.test on
+    # getItemBySlot (an empty slot is the empty stack: `{}` matches it, a count of at least 1 not);
+    # saved as HandItems/ArmorItems before 1.21.5 and as the equipment compound from it
+    state = WorldState(version=version)
+    zombie = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0))
+    inventories.entity_slot(zombie, inventories.ARMOR_SLOTS["head"], version).set(ItemStack("minecraft:iron_helmet"))
+    inventories.entity_slot(zombie, inventories.MAINHAND, version).set(ItemStack("minecraft:stick", 5))
+    this = ctx(state, this=zombie)
+    assert holds(props({"equipment": {"head": {"items": "minecraft:iron_helmet"}}}), this)
+    assert not holds(props({"equipment": {"head": {"items": ["minecraft:diamond_helmet"]}}}), this)
+    assert holds(props({"equipment": {"mainhand": {"items": "minecraft:stick", "count": {"min": 5}}}}), this)
+    assert not holds(props({"equipment": {"mainhand": {"count": 6}}}), this)
+    assert holds(props({"equipment": {"feet": {}, "offhand": {}}}), this)  # empty slots
+    assert not holds(props({"equipment": {"feet": {"count": {"min": 1}}}}), this)
+    # the iron helmet's default max_damage is one of its components (DataComponentPredicate)
+    assert holds(props({"equipment": {"head": {"components": {"minecraft:max_damage": 165}}}}), this)
+    marker = state.entities.summon("minecraft:marker", (0.0, 0.0, 0.0))
+    assert not holds(props({"equipment": {}}), ctx(state, this=marker))  # not a LivingEntity
+
+
+def test_a_players_mainhand_is_its_selected_slot(state):
+    # Player.getItemBySlot(MAINHAND): Inventory.getSelected, the hotbar slot SelectedItemSlot names
+    player = state.entities.add_player("Alex", (0.0, 0.0, 0.0))
+    inventories.entity_slot(player, 2, state.version).set(ItemStack("minecraft:carrot_on_a_stick"))
+    held = props({"equipment": {"mainhand": {"items": "minecraft:carrot_on_a_stick"}}})
+    assert not holds(held, ctx(state, this=player))
+    player.data["SelectedItemSlot"] = Int(2)
+    assert holds(held, ctx(state, this=player))
+    assert holds(props({"equipment": {"body": {}}}), ctx(state, this=player))  # a player's body slot is empty
