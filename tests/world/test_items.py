@@ -269,3 +269,18 @@ def test_small_functions():
     assert to_snbt(stew.component("minecraft:suspicious_stew_effects")) == '[{id:"minecraft:saturation",duration:7}]'
     model = loot.apply_modifier({"function": "set_custom_model_data", "value": 3}, items.ItemStack("minecraft:stick"), ctx)
     assert model.component("minecraft:custom_model_data") == 3
+
+
+def test_storage_sources_read_nbt_paths():
+    # StorageValue (a number provider) and CopyCustomDataFunction from storage: an NBT path in the
+    # storage; a value that is no single number reads 0
+    ctx = context()
+    ctx.state.storage["t:s"] = Compound(n=Int(3), deep=Compound(tag=String("x")))
+    stack = loot.apply_modifier([{"function": "set_count", "count": {"type": "storage", "storage": "t:s", "path": "n"}},
+                                 {"function": "copy_custom_data", "source": {"type": "storage", "source": "t:s"},
+                                  "ops": [{"source": "deep.tag", "target": "copied", "op": "replace"}]}],
+                                items.ItemStack("minecraft:stone"), ctx)
+    assert stack.count == 3 and to_snbt(stack.component("minecraft:custom_data")) == '{copied:"x"}'
+    missing = loot.apply_modifier({"function": "set_count", "count": {"type": "storage", "storage": "t:s",
+                                                                       "path": "deep"}}, items.ItemStack("minecraft:stone"), ctx)
+    assert missing.count == 0
