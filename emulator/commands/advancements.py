@@ -50,10 +50,27 @@ def advancement(env, cmd: ast.GenericCommand, ctx) -> int:
         what = len(chosen) if first == "many" else f"[{chosen[0]}]"
         who = len(players) if second == "many" else players[0].display_name
         raise CommandFailure(f"commands.advancement.{action}.{first}.to.{second}.failure", what, who)
-    if len(state.pending_rewards) > rewards_before:
+    warn_late_rewards(env, cmd, rewards_before)
+    return changed
+
+
+def warn_late_rewards(env, cmd, rewards_before: int) -> None:
+    """A reward function earned inside a root runs when that root ends here; the game runs it
+    right after the command (AdvancementRewards.grant: ServerFunctionManager.execute queues it
+    next in the running execution context)."""
+    if len(env.state.pending_rewards) > rewards_before:
         env.warn(cmd, "an advancement reward function runs when the current function call ends "
                       "(the game runs it right after this command)")
-    return changed
+
+
+def broadcast_changes(env, cmd, players) -> None:
+    """ServerPlayer.containerMenu.broadcastChanges after a command changed the players' inventories:
+    their changed slots fire inventory_changed now."""
+    before = len(env.state.pending_rewards)
+    for player in players:
+        if player.is_player:
+            advancements.broadcast_changes(env.state, player)
+    warn_late_rewards(env, cmd, before)
 
 
 def _perform(state, action: str, player, advancement_id: str) -> bool:

@@ -18,6 +18,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 
 from . import entities
+from .advancements import broadcast_changes
 from .entities import executor, world_source
 
 
@@ -66,7 +67,9 @@ def give(env, cmd: ast.Give, ctx) -> int:
             remaining -= size
             left = create(cmd.item, size)
             inventory.add(left)  # GiveCommand drops whatever is left of the stack
-            if not left.is_empty:
+            if left.is_empty:  # the whole stack went in: its menu broadcasts the change
+                broadcast_changes(env, cmd, [player])
+            else:
                 x, y, z = player.pos
                 _drop(env, (x, y + float(player.eye_height) - 0.3, z), left, player.dimension,
                       Compound(PickupDelay=Short(0), Owner=IntArray(Int(v) for v in player.uuid)))
@@ -84,7 +87,10 @@ def clear(env, cmd: ast.Clear, ctx) -> int:
         players = _players(env, cmd.targets, ctx)
     test = _test(env, cmd.item)
     max_count = -1 if cmd.max_count is None else cmd.max_count
-    total = sum(inventories.player_inventory(p, _version(env)).clear_or_count(test, max_count) for p in players)
+    total = 0
+    for player in players:  # ClearInventoryCommands: each player's menu broadcasts its changes
+        total += inventories.player_inventory(player, _version(env)).clear_or_count(test, max_count)
+        broadcast_changes(env, cmd, [player])
     if total == 0:
         if len(players) == 1:
             raise CommandFailure("clear.failed.single", players[0].display_name)
@@ -148,6 +154,7 @@ def item_replace(env, cmd: ast.ItemReplace, ctx) -> int:
     for entity in entities.found(env.state, cmd.target.target, ctx):
         access = inventories.entity_slot(entity, slot, _version(env))
         accepted += access is not None and access.set(stack.copy())
+        broadcast_changes(env, cmd, [entity])  # ItemCommands: a player's menu broadcasts
     if accepted == 0:
         raise CommandFailure("commands.item.target.no_changed.known_item", _name(stack), slot)
     return accepted
@@ -167,6 +174,7 @@ def item_modify(env, cmd: ast.ItemModify, ctx) -> int:
         access = inventories.entity_slot(entity, slot, _version(env))
         if access is not None:
             accepted += access.set(apply(access.get()))
+        broadcast_changes(env, cmd, [entity])
     if accepted == 0:
         raise CommandFailure("commands.item.target.no_changes", slot)
     return accepted
@@ -192,7 +200,8 @@ def loot_context(env, ctx, **parts) -> LootContext:
     entity, the seeded loot random source."""
     state = env.state
     parts.setdefault("this", executor(state, ctx))
-    return LootContext(state, ctx.pos, dimension=ctx.dimension, random=state.resources.random,
+    parts.setdefault("origin", ctx.pos)
+    return LootContext(state, dimension=ctx.dimension, random=state.resources.random,
                        resolve_text=lambda component, entity: _resolved(env, component, entity), **parts)
 
 
@@ -240,9 +249,8 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
     source = world_source(env.state, ctx)
     if cmd.source == "loot":
         return loot.roll_table(_table(env, cmd.table), loot_context(env, ctx))
-    if cmd.source == "fish":
-        lctx = loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx))
-        lctx.origin = source.position_of(cmd.pos, centre=False)
+    if cmd.source == "fish":  # LootCommand.dropFishingLoot: the origin is the block's centre
+        lctx = loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), origin=_centre(block_pos(source, cmd.pos)))
         return loot.roll_table(_table(env, cmd.table), lctx)
     if cmd.source == "kill":
         victim = entities.single(env.state, cmd.entity, ctx)
@@ -257,9 +265,13 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
     table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
     if block.is_air:
         return []
-    return loot.roll_table(_vanilla_table(env, table_id),
+    return loot.roll_table(_vanilla_table(env, table_id),  # LootCommand.dropBlockLoot
                            loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), block_entity=blocks.entity(pos),
-                                        block_state=block))
+                                        block_state=block, origin=_centre(pos)))
+
+
+def _centre(pos) -> tuple[float, float, float]:
+    return pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5
 
 
 def loot_command(env, cmd: ast.Loot, ctx) -> int:
@@ -323,6 +335,7 @@ def _replace(env, cmd: ast.Loot, items: list[ItemStack], ctx) -> int:
         for j, stack in enumerate(fill):
             access = inventories.entity_slot(entity, first + j, _version(env))
             placed += access is not None and access.set(stack.copy())
+        broadcast_changes(env, cmd, [entity])  # LootCommand.entityReplace (loot give waits for the tick)
     return placed
 
 

@@ -20,9 +20,9 @@ from emulator.world.errors import Unmodelled
 from mcfunction_parser.pack.advancements import criteria, requirements
 
 # the triggers that fire in the emulator (the player actions fire using_item .. item_used_on_block:
-# emulator.world.player_actions; a teleport between levels changed_dimension)
-OBSERVED = frozenset({"impossible", "tick", "location", "using_item", "consume_item", "default_block_use",
-                      "item_used_on_block", "changed_dimension"})
+# emulator.world.player_actions, block_use; a teleport between levels changed_dimension)
+OBSERVED = frozenset({"impossible", "tick", "location", "inventory_changed", "using_item", "consume_item",
+                      "default_block_use", "item_used_on_block", "changed_dimension"})
 
 
 def full_id(text) -> str | None:
@@ -35,6 +35,8 @@ def full_id(text) -> str | None:
 class Progress:
     obtained: dict[str, dict[str, set[str]]] = field(default_factory=dict)  # player UUID -> advancement -> criteria
     first_tick: dict[str, int] = field(default_factory=dict)  # player UUID -> the tick it first ticked
+    # player UUID -> inventory menu slot -> the stack last broadcast (AbstractContainerMenu.lastSlots)
+    menu_slots: dict[str, dict] = field(default_factory=dict)
 
     def of(self, player: Entity, advancement_id: str) -> set[str]:
         return self.obtained.setdefault(player.uuid_string, {}).setdefault(advancement_id, set())

@@ -6,12 +6,14 @@ observes, and the rewards a completed advancement earns.
   award/revoke; completing an advancement queues its reward function on ``state.pending_rewards``
   (``(function id, player)``), which the runtime runs as the player.
 - ``related(resources, advancement_id, mode)``: the advancements ``only|from|until|through`` name.
-- ``tick_players(state)``: the triggers a server tick fires for every player: ``tick`` each tick,
+- ``trigger(state, player, trigger, test=None)``: SimpleCriterionTrigger.trigger, the one entry
+  for whatever fires a trigger (the actions' ``using_item``, ``consume_item`` ...):
+  ``test(conditions, ctx)`` checks the trigger's own conditions. ``tick_players(state)``: the
+  triggers a server tick fires for every player: the inventory's changes, ``tick`` each tick,
   ``location`` every 20 ticks of the player (counted from its first tick here).
-- ``trigger(state, player, trigger, test=None)``: SimpleCriterionTrigger.trigger: every criterion of
-  that trigger the player has not obtained, whose ``player`` predicate holds and whose other
-  conditions ``test(conditions, ctx)`` accepts, is awarded (the actions' triggers: ``using_item``,
-  ``player_hurt_entity`` ...).
+- ``broadcast_changes(state, player)``: the inventory menu's changed slots fire
+  ``inventory_changed`` (``inventory_changed(state, player, stack)``); the item commands call it
+  where the game's do.
 
 Sources (decompiled 1.21): server/PlayerAdvancements.java (award: rewards when the advancement
 becomes done; revoke), advancements/AdvancementProgress.java and AdvancementRequirements.java
@@ -20,15 +22,21 @@ advancements/AdvancementRewards.java (the function runs as the player, permissio
 server/commands/AdvancementCommands.java (only/from/until/through/everything),
 advancements/critereon/PlayerTrigger.java and SimpleCriterionTrigger.java (the ``player``
 ContextAwarePredicate with the player as ``this`` at its position), server/level/ServerPlayer.java
-(doTick: the location trigger every 20 ticks), commands/arguments/selector/options/
+(tick: broadcastChanges then the tick trigger; doTick: the location trigger every 20 ticks),
+advancements/critereon/InventoryChangeTrigger.java,
+world/inventory/AbstractContainerMenu.java (broadcastChanges, triggerSlotListeners),
+world/inventory/InventoryMenu.java (slot order), commands/arguments/selector/options/
 EntitySelectorOptions.java (``advancements``).
 """
 from __future__ import annotations
 
-from emulator.world import predicates
+from typing import Callable
+
+from emulator.world import inventories, predicates
 from emulator.world.advancement_progress import OBSERVED, full_id as _id, is_done, short_trigger
 from emulator.world.entities import Entity
-from emulator.world.loot_context import LootContext
+from emulator.world.items import EMPTY, ItemStack
+from emulator.world.loot_context import LootContext, in_range
 from mcfunction_parser.pack.advancements import criteria
 
 LOCATION_PERIOD = 20
@@ -103,32 +111,43 @@ def tick_is_idle(state) -> bool:
     return not state.resources.advancements or not state.entities.players()
 
 
+def trigger(state, player: Entity, trigger: str, test: Callable[[dict, LootContext], bool] | None = None) -> None:
+    """SimpleCriterionTrigger.trigger: every criterion of ``trigger`` (``minecraft:`` optional) that
+    the player is listening for (PlayerAdvancements.registerListeners: the advancement is not done
+    and the criterion not obtained) is awarded when its ``player`` predicate holds and
+    ``test(conditions, ctx)`` accepts its conditions (``ctx``: the player as ``this`` at its
+    position). The one entry for actions that fire a trigger."""
+    trigger = short_trigger(trigger)
+    for advancement_id, advancement in state.resources.advancements.items():
+        if is_done(state, player, advancement_id):
+            continue
+        for name, criterion in criteria(advancement).items():
+            if short_trigger(criterion["trigger"]) != trigger or name in state.advancement_progress.of(
+                    player, advancement_id):
+                continue
+            ctx = LootContext(state, player.pos, this=player, dimension=player.dimension)
+            if _player_matches(state, player, criterion) and (
+                    test is None or test(criterion.get("conditions") or {}, ctx)):
+                award(state, player, advancement_id, name)
+
+
+def listened(state, trigger: str) -> bool:
+    """Whether any loaded advancement has a criterion of ``trigger`` (else firing it changes nothing)."""
+    return any(short_trigger(c["trigger"]) == trigger for a in state.resources.advancements.values()
+               for c in criteria(a).values())
+
+
 def tick_players(state) -> None:
-    """The triggers each player fires in its tick: ``tick``, and ``location`` every 20 ticks."""
+    """ServerPlayer.tick: the inventory's changes are broadcast (inventory_changed), then ``tick``
+    fires; ``location`` every 20 ticks of the player (ServerPlayer.doTick)."""
     if not state.resources.advancements:
         return
     for player in state.entities.players():
         first = state.advancement_progress.first_tick.setdefault(player.uuid_string, state.tick)
-        fired = {"tick"} | ({"location"} if (state.tick - first) % LOCATION_PERIOD == 0 else set())
-        for advancement_id, advancement in state.resources.advancements.items():
-            for name, criterion in criteria(advancement).items():
-                if short_trigger(criterion["trigger"]) in fired and name not in state.advancement_progress.of(
-                        player, advancement_id) and _player_matches(state, player, criterion):
-                    award(state, player, advancement_id, name)
-
-
-def trigger(state, player: Entity, trigger_name: str, test=None) -> None:
-    """SimpleCriterionTrigger.trigger for one player: ``test(conditions, ctx)`` checks the
-    trigger's own conditions (the player as ``this`` at its position in ``ctx``)."""
-    for advancement_id, advancement in state.resources.advancements.items():
-        got = state.advancement_progress.of(player, advancement_id)
-        for name, criterion in criteria(advancement).items():
-            if short_trigger(criterion["trigger"]) != trigger_name or name in got:
-                continue
-            ctx = predicates.LootContext(state, player.pos, this=player, dimension=player.dimension)
-            if _player_matches(state, player, criterion) and (
-                    test is None or test(criterion.get("conditions") or {}, ctx)):
-                award(state, player, advancement_id, name)
+        broadcast_changes(state, player)
+        trigger(state, player, "tick")
+        if (state.tick - first) % LOCATION_PERIOD == 0:
+            trigger(state, player, "location")
 
 
 def changed_dimension(state, player: Entity, origin: str) -> None:
@@ -148,3 +167,52 @@ def _player_matches(state, player: Entity, criterion: dict) -> bool:
     if isinstance(condition, list):
         return predicates.test(condition, ctx)
     return predicates.entity_matches(condition, ctx, player)
+
+
+# ---------------------------------------------------------------------- inventory_changed
+# InventoryMenu's slots of the player's Inventory, in menu order: armor head..feet, the main
+# inventory 9-35, the hotbar 0-8, the offhand (the crafting grid and result are other containers)
+_MENU_SLOTS = (103, 102, 101, 100, *range(9, 36), *range(9), inventories.OFFHAND)
+# Inventory.getItem(0..40): the main inventory, armor feet..head, the offhand
+_INVENTORY_SLOTS = (*range(36), 100, 101, 102, 103, inventories.OFFHAND)
+
+
+def broadcast_changes(state, player: Entity) -> None:
+    """AbstractContainerMenu.broadcastChanges on the player's inventory menu: each slot whose stack
+    differs from the last one seen (ItemStack.matches) fires inventory_changed with its new stack
+    (ServerPlayer's slot listener). The game calls it each player tick and in give, clear, item and
+    loot replace; ``loot give`` leaves it to the next tick."""
+    if not listened(state, "inventory_changed"):
+        return
+    seen = state.advancement_progress.menu_slots.setdefault(player.uuid_string, {})
+    for slot in _MENU_SLOTS:
+        stack = inventories.entity_slot(player, slot, state.version).get()
+        last = seen.get(slot, EMPTY)
+        if not (stack.is_empty and last.is_empty or stack.count == last.count and stack.same_item_same_components(last)):
+            seen[slot] = stack.copy()
+            inventory_changed(state, player, stack)
+
+
+def inventory_changed(state, player: Entity, stack: ItemStack) -> None:
+    """InventoryChangeTrigger.trigger: the slot counts over the 41 slots of the Inventory (full: a
+    stack at its maximum size), then each criterion's ``slots`` ranges and ``items``: none matches
+    anything, one must match the changed stack (not empty), several must each match a different
+    stack of the inventory (TriggerInstance.matches)."""
+    stacks = [inventories.entity_slot(player, slot, state.version).get() for slot in _INVENTORY_SLOTS]
+    occupied = [s for s in stacks if not s.is_empty]
+    counts = {"occupied": len(occupied), "empty": len(stacks) - len(occupied),
+              "full": sum(s.count >= s.max_stack_size for s in occupied)}
+    def matches(conditions: dict, ctx: LootContext) -> bool:
+        slots = conditions.get("slots") or {}
+        if not all(in_range(slots.get(key, {}), value) for key, value in counts.items()):
+            return False
+        wanted = conditions.get("items") or []
+        if len(wanted) <= 1:
+            return not wanted or not stack.is_empty and predicates.item_matches(wanted[0], ctx, stack)
+        remaining = list(wanted)
+        for found in occupied:
+            remaining = [p for p in remaining if not predicates.item_matches(p, ctx, found)]
+            if not remaining:
+                return True
+        return False
+    trigger(state, player, "inventory_changed", matches)

@@ -30,7 +30,7 @@ import numpy as np
 
 from emulator.world import advancements, inventories, mth, predicates, statistics
 from emulator.world.errors import Unmodelled
-from emulator.world.items import ItemStack, to_nbt
+from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from mcfunction_parser.nbt import Compound, Double, Float, Int, IntArray, List, Short
 
@@ -254,9 +254,7 @@ def _consume_one(state, player, hand: str) -> None:
 
 def _item_test(state, stack: ItemStack):
     """The ``item`` condition of the using_item / consume_item criteria (an ItemPredicate)."""
-    nbt = to_nbt(stack, state.version)
-
     def test(conditions: dict, ctx) -> bool:
         wanted = conditions.get("item")
-        return wanted is None or predicates.item_matches(wanted, ctx, nbt)
+        return wanted is None or predicates.item_matches(wanted, ctx, stack)
     return test

@@ -31,6 +31,12 @@ avoid_vibration recipe_crafted crafter_recipe_crafted fall_after_explosion safel
 """.split())
 
 
+# the trigger condition fields that are ContextAwarePredicates (an entity predicate, or a list of
+# loot conditions); other list fields (inventory_changed's ``items`` ...) are not conditions
+CONTEXT_FIELDS = frozenset("player entity child parent partner villager zombie projectile shooter victim "
+                           "source bystander lightning location".split())
+
+
 def criteria(advancement: dict) -> dict[str, dict]:
     return advancement.get("criteria", {})
 
@@ -58,7 +64,7 @@ def problem(value: Any, version) -> tuple[str, str] | None:
         if trigger.removeprefix("minecraft:") not in TRIGGERS:
             return f"unknown criterion trigger '{trigger}'", trigger
         for field, predicate in (criterion.get("conditions") or {}).items():
-            if isinstance(predicate, list):  # a list of loot conditions
+            if field in CONTEXT_FIELDS and isinstance(predicate, list):  # a list of loot conditions
                 issue = conditions.problem(predicate, version)
                 if issue:
                     return issue

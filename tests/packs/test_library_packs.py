@@ -26,7 +26,7 @@ def test_the_packs_load_clean():
     # the built-in #minecraft:zombies nested, the optional missing tag skipped (TagLoader)
     assert {"minecraft:husk", "minecraft:zombie", "minecraft:skeleton"} <= undead.members
     assert undead.unknown == ()
-    assert len(rewards.advancements) == 9 and "rewards:on_tick" in rewards.advancement_rewards
+    assert len(rewards.advancements) == 12 and "rewards:on_tick" in rewards.advancement_rewards
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])
