@@ -49,14 +49,16 @@ class Emulator:
         self.profiler: Profiler | None = None
 
     # ------------------------------------------------------------------ loading
-    def load(self, paths: str | Path | Sequence[str | Path], mc_version: str | None = None):
-        """Load one pack or several (later ones override); returns the loaded packs. Pack problems
-        are in :attr:`load_diagnostics`; the world starts empty."""
+    def load(self, paths: str | Path | Sequence[str | Path], mc_version: str | None = None,
+             game_jar: str | Path | None = None):
+        """Load one pack or several (later ones override), over the game's vanilla tags and loot
+        tables when ``game_jar`` names its jar; returns the loaded packs. Pack problems are in
+        :attr:`load_diagnostics`; the world starts empty."""
         from mcfunction_parser.pack.loader import load_packs
 
         if isinstance(paths, (str, Path)):
             paths = [paths]
-        return self.load_parsed(load_packs([Path(p) for p in paths], mc_version))
+        return self.load_parsed(load_packs([Path(p) for p in paths], mc_version, game_jar=game_jar))
 
     def load_parsed(self, packs):
         """Start an empty world on packs already loaded by ``mcfunction_parser.load_packs`` (a test

@@ -96,14 +96,14 @@ def _count(n: int, noun: str) -> str:
 
 def check_packs(paths: Sequence[str | Path], mc_version: str | None = None,
                 with_packs: Sequence[str | Path] = (), workers: int | None = None,
-                on_function=None) -> CheckResult:
+                on_function=None, game_jar: str | Path | None = None) -> CheckResult:
     """Load the packs (in order) and lint them. ``mc_version`` and ``workers`` as for
     :func:`load_packs`. ``with_packs``: packs expected beside them at run time (libraries, other
     modules), loaded first; their own findings are not reported. ``on_function`` as for
     :func:`load_packs`."""
     start = time.perf_counter()
     with paused_gc(kept=True):  # the packs' ASTs hold no reference cycles
-        loaded = load_packs([*with_packs, *paths], mc_version, workers, on_function)
+        loaded = load_packs([*with_packs, *paths], mc_version, workers, on_function, game_jar=game_jar)
         found = lint(loaded)
         diagnostics = sorted(loaded.diagnostics + found, key=_position)
     if with_packs:
@@ -114,14 +114,14 @@ def check_packs(paths: Sequence[str | Path], mc_version: str | None = None,
 
 def check_releases(paths: Sequence[str | Path], releases: Sequence[Version] | None = None,
                    with_packs: Sequence[str | Path] = (), workers: int | None = None,
-                   on_function=None) -> CheckResult:
+                   on_function=None, game_jar: str | Path | None = None) -> CheckResult:
     """Lint the packs once per data pack format among ``releases`` (each format's newest release
     stands for it: the parser's rules follow the format) and merge the findings: one true in every
     release as it is, one true in some tagged with those releases. ``releases`` None: the range
     every pack declares (``supported_formats``, ``min_format``/``max_format``), else the packs' own
     release as :func:`check_packs` picks it. ``workers`` as for :func:`load_packs`."""
     if releases is None:
-        first = check_packs(paths, with_packs=with_packs, workers=workers, on_function=on_function)
+        first = check_packs(paths, with_packs=with_packs, workers=workers, on_function=on_function, game_jar=game_jar)
         releases = declared_releases(first.loaded)
         if len({RELEASE_FORMATS[v] for v in releases}) < 2:
             return first
@@ -129,8 +129,8 @@ def check_releases(paths: Sequence[str | Path], releases: Sequence[Version] | No
     for release in sorted(releases):
         by_format[RELEASE_FORMATS[release]] = release
     if len(by_format) == 1:
-        return check_packs(paths, version_label(max(releases)), with_packs, workers, on_function)
-    results = [(fmt, check_packs(paths, version_label(release), with_packs, workers, on_function))
+        return check_packs(paths, version_label(max(releases)), with_packs, workers, on_function, game_jar)
+    results = [(fmt, check_packs(paths, version_label(release), with_packs, workers, on_function, game_jar))
                for fmt, release in by_format.items()]
     return _merged(results, releases)
 

@@ -12,7 +12,7 @@ from pathlib import Path
 import click
 
 from emulator.cli.outcome import INTERRUPTED, Passes
-from emulator.cli.params import PackPath
+from emulator.cli.params import PackPath, game_jar_option
 from mcfunction_parser.check import check_releases
 from mcfunction_parser.diagnostics import ERROR
 from mcfunction_parser.pack.versions import parse_version_set
@@ -36,13 +36,15 @@ def _validate_versions(ctx: click.Context, param: click.Parameter, value: str | 
 @click.option("--with", "with_packs", multiple=True, type=PackPath(), metavar="PACK",
               help="A pack expected beside these at run time (a library, another module): loaded "
                    "first, its own findings not reported. Repeatable.")
-def check(packs: tuple[Path, ...], as_json: bool, releases: list | None, with_packs: tuple[Path, ...]) -> None:
+@game_jar_option
+def check(packs: tuple[Path, ...], as_json: bool, releases: list | None, with_packs: tuple[Path, ...],
+          game_jar: str | None) -> None:
     """Check data packs (folders or .zip files) and report problems.
 
     Packs load in the order given; later ones override earlier ones."""
     bar = Passes("parsing")
     try:
-        result = check_releases(packs, releases, with_packs, on_function=bar)
+        result = check_releases(packs, releases, with_packs, on_function=bar, game_jar=game_jar)
     except KeyboardInterrupt:
         bar.close()
         click.echo("\ninterrupted: nothing was checked to the end", err=True)

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import click
 
 from emulator.api import Emulator
-from emulator.cli.params import PackPath
+from emulator.cli.params import PackPath, game_jar_option
 from emulator.world.semantics import INT_MAX, INT_MIN
 
 
@@ -142,11 +142,12 @@ def apply_setup(emu: Emulator, order: list[str], sets: list, calls: list[tuple[s
     return load_commands
 
 
-def load_or_usage_error(emu: Emulator, packs, mc_version: str | None) -> Emulator:
-    """``emu`` with ``packs`` loaded; an unknown --mc is a usage error. The load's errors and
-    warnings are printed (a pack the version ignores says so), its infos are not."""
+def load_or_usage_error(emu: Emulator, packs, mc_version: str | None, game_jar: str | None = None) -> Emulator:
+    """``emu`` with ``packs`` loaded (over the game's vanilla data from ``game_jar``); an unknown
+    --mc is a usage error. The load's errors and warnings are printed (a pack the version ignores
+    says so), its infos are not."""
     try:
-        emu.load(list(packs), mc_version)
+        emu.load(list(packs), mc_version, game_jar=game_jar)
     except ValueError as error:
         raise click.BadParameter(str(error), param_hint="--mc") from None
     for diag in emu.load_diagnostics:
@@ -159,7 +160,8 @@ _MAX_TICKS = 2**31 - 1  # the game counts ticks in a long; a run this long is a 
 
 
 def run_options(command):
-    """The arguments ``dpemu run`` and ``dpemu profile`` share: PACKS, --ticks, --call, --set, --until."""
+    """The arguments ``dpemu run`` and ``dpemu profile`` share: PACKS, --ticks, --call, --set, --until,
+    --game-jar."""
     decorators = [
         click.argument("packs", nargs=-1, required=True, type=PackPath()),
         click.option("--ticks", default=1, show_default=True, type=click.IntRange(0, _MAX_TICKS), help="Ticks to run."),
@@ -168,6 +170,7 @@ def run_options(command):
         click.option("--set", "set_", multiple=True, metavar='"HOLDER OBJ VALUE"', help="Set a score before ticking."),
         click.option("--until", metavar='"HOLDER OBJ RANGE"',
                      help="Stop after the tick where the score is in RANGE."),
+        game_jar_option,
     ]
     for decorate in reversed(decorators):
         command = decorate(command)

@@ -85,3 +85,25 @@ class PackPath(click.ParamType):
             self.fail(f"'{path}' {problem}", param, ctx)
         return path
 
+
+
+class GameJar(click.ParamType):
+    """The game's client or server jar, checked when the option is read (its vanilla data is read
+    without Java: :func:`mcfunction_parser.gamedata.vanilla_tags.open_game_jar`)."""
+
+    name = "jar"
+
+    def convert(self, value, param, ctx):
+        from mcfunction_parser.gamedata.vanilla_tags import GameJarError, open_game_jar
+
+        try:
+            open_game_jar(value)
+        except GameJarError as error:
+            self.fail(str(error), param, ctx)
+        return str(value)
+
+
+# One definition of --game-jar for every subcommand that loads packs (run, profile, test, check).
+game_jar_option = click.option(
+    "--game-jar", type=GameJar(), metavar="JAR",
+    help="The game's client or server jar: its vanilla tags (#minecraft:...) and loot tables load under the packs'.")

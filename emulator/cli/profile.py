@@ -39,7 +39,7 @@ STACK_FORMATS = ("collapsed", "trace")
 @click.option("--threshold", default=formats.DEFAULT_THRESHOLD, show_default=True, type=click.FloatRange(min=0),
               metavar="PCT", help="Allowed growth per function with --baseline, in percent.")
 @fail_option
-def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, output, baseline, threshold,
+def profile(packs, ticks, call, set_, until, game_jar, backend, mc_version, fmt, top, output, baseline, threshold,
             no_fail) -> None:
     """Profile PACKS: report exact command counts.
 
@@ -50,7 +50,7 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     sets, calls = [parse_set(s) for s in set_], [parse_call(c) for c in call]
     stop = parse_until(until) if until else None
     trace = formats.TraceWriter() if fmt == "trace" else None
-    emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace)
+    emu = _loaded(packs, mc_version, fmt in STACK_FORMATS or backend == "python", trace, game_jar)
     load_commands = emu.start()
     loaded = emu.profile  # the host ops listed are those after the load's setup
     with interruptible() as stopped:
@@ -72,10 +72,10 @@ def profile(packs, ticks, call, set_, until, backend, mc_version, fmt, top, outp
     sys.exit(exit_status(problems, no_fail, written, stopped[0]) or (1 if grew else 0))
 
 
-def _loaded(packs, mc_version: str | None, stacks: bool, trace) -> Emulator:
+def _loaded(packs, mc_version: str | None, stacks: bool, trace, game_jar: str | None) -> Emulator:
     """An emulator with ``packs`` loaded: the numba VM, or the reference backend recording stacks."""
     emu = Emulator(backend="python", stacks=True, trace=trace) if stacks else Emulator(backend="numba")
-    return load_or_usage_error(emu, packs, mc_version)
+    return load_or_usage_error(emu, packs, mc_version, game_jar)
 
 
 def _check_baseline(saved: dict, report: dict, threshold: float, path: str) -> bool:

@@ -35,7 +35,7 @@ BATCH_TICKS = 1000  # ticks run in one call when nothing is watched (Ctrl-C and 
                    "overworld (,in=DIM: in that dimension).")
 @click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
 @fail_option
-def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv_out, mc_version, players,
+def run(packs, ticks, call, set_, until, game_jar, watch, backend, sanitize, json_out, csv_out, mc_version, players,
         shuffle, no_fail) -> None:
     """Emulate PACKS tick by tick.
 
@@ -47,7 +47,7 @@ def run(packs, ticks, call, set_, watch, until, backend, sanitize, json_out, csv
     if stop and stop.watch not in watches:
         watches.append(stop.watch)
     players = [parse_player(p) for p in players]
-    emu = load_or_usage_error(Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle), packs, mc_version)
+    emu = load_or_usage_error(Emulator(backend=backend, sanitize=sanitize, shuffle=shuffle), packs, mc_version, game_jar)
     for name, pos, rotation, on_ground, dimension in players:
         try:
             emu.add_player(name, pos, rotation, on_ground=on_ground, dimension=dimension)

@@ -6,11 +6,10 @@ import sys
 import click
 
 from emulator.cli.outcome import exit_status, interruptible
-from emulator.cli.params import OutputPath, write_output
+from emulator.cli.params import OutputPath, game_jar_option, write_output
 from emulator.testing import Summary, discover, run_suite
 from emulator.testing.discovery import DiscoveryError, selected
 from emulator.testing.junit import junit_xml
-from mcfunction_parser.gamedata.vanilla_tags import GameJarError
 
 
 @click.command("test")
@@ -25,8 +24,7 @@ from mcfunction_parser.gamedata.vanilla_tags import GameJarError
               help="Load every pack under test into one world and run all their tests there, as a collection's CI does.")
 @click.option("--allow-unmodelled", is_flag=True,
               help="A test meeting something the emulator does not model passes or fails as it ran (default: inconclusive).")
-@click.option("--game-jar", type=click.Path(exists=True, dir_okay=False), metavar="JAR",
-              help="The game's jar: its vanilla tags (#minecraft:...) load under the packs'.")
+@game_jar_option
 def test(paths, pattern, junit_file, backend, strict, with_packs, together, allow_unmodelled, game_jar) -> None:
     """Run PackTest-format test files.
 
@@ -53,12 +51,8 @@ def test(paths, pattern, junit_file, backend, strict, with_packs, together, allo
             summary.results.append(result)
             click.echo(result.report())
 
-        try:
-            run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict,
-                      with_packs=with_packs, together=together, allow_unmodelled=allow_unmodelled,
-                      game_jar=game_jar)
-        except GameJarError as error:
-            raise click.UsageError(str(error)) from None
+        run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict,
+                  with_packs=with_packs, together=together, allow_unmodelled=allow_unmodelled, game_jar=game_jar)
     if not summary.results and not stopped[0]:
         click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
                    + ") under " + ", ".join(paths), err=True)

@@ -30,7 +30,7 @@ def block_tag_test(env):
     resources = env.state.resources
 
     def in_tag(tag_id: str, block_id: str) -> bool:
-        if resources.tag("block", tag_id) is None and (resources.vanilla_tags or not tag_id.startswith("minecraft:")):
+        if resources.tag("block", tag_id) is None and (resources.vanilla_data or not tag_id.startswith("minecraft:")):
             raise CommandFailure("arguments.block.tag.unknown", tag_id, report=True)
         return resources.in_tag("block", tag_id, block_id)
     return in_tag

@@ -13,7 +13,7 @@ from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
 from emulator.world.items import ItemStack, create, matches
-from emulator.world.loot_context import LootContext, not_modelled
+from emulator.world.loot_context import LootContext
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 
@@ -215,19 +215,16 @@ def _resolved(env, component, entity: Entity):
 def _table(env, ref: ast.ResourceOrInline) -> dict:
     if ref.inline is not None:
         return ref.inline
-    table = env.state.resources.loot_tables.get(ref.id)
+    table = env.state.resources.loot_table(ref.id)
     if table is None:
         raise CommandFailure("dpemu.loot.unknown_table", ref.id, report=True)
     return table
 
 
-def _vanilla_table(env, table_id: str) -> dict:
-    """A vanilla entity or block loot table: only when a loaded pack defines it (the game's own
-    tables are not shipped), else the command fails saying so."""
-    table = env.state.resources.loot_tables.get(table_id)
-    if table is None:
-        raise not_modelled("the game's own loot table", table_id)
-    return table
+def _own_table(env, table_id: str) -> dict:
+    """An entity's or block's own loot table (LootCommand.dropKillLoot / dropBlockLoot): one that
+    does not exist drops nothing (LootTable.EMPTY)."""
+    return env.state.resources.loot_table(table_id) or {}
 
 
 def _tool(env, tool, ctx) -> ItemStack | None:
@@ -258,14 +255,14 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
             raise CommandFailure("commands.drop.no_loot_table", victim.display_name)
         table_id = victim.data.get("DeathLootTable") or "minecraft:entities/" + victim.type.split(":", 1)[-1]
         lctx = loot_context(env, ctx, this=victim, damage_source="minecraft:magic").killed_by(executor(env.state, ctx))
-        return loot.roll_table(_vanilla_table(env, str(table_id)), lctx)
+        return loot.roll_table(_own_table(env, str(table_id)), lctx)
     pos = block_pos(source, cmd.pos)
     blocks = env.state.blocks_in(ctx.dimension)
     block = blocks.get(pos)
     table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
     if block.is_air:
         return []
-    return loot.roll_table(_vanilla_table(env, table_id),  # LootCommand.dropBlockLoot
+    return loot.roll_table(_own_table(env, table_id),  # LootCommand.dropBlockLoot
                            loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), block_entity=blocks.entity(pos),
                                         block_state=block, origin=_centre(pos)))
 

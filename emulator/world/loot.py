@@ -158,7 +158,7 @@ def _nested_table(value, ctx: LootContext) -> list[ItemStack]:
     if isinstance(value, dict):
         return roll_raw(value, ctx)
     table_id = _id(value)
-    table = ctx.resources.loot_tables.get(table_id)
+    table = ctx.resources.loot_table(table_id)
     if table is None or not ctx.visit("loot_table " + table_id):
         return []  # LootTable.EMPTY for a missing id (a warning at load in the game)
     try:

@@ -11,6 +11,8 @@ loot tables, item modifiers, predicates, advancements and registry tags, from :c
   A ``#minecraft:`` tag the emulator does not know (no game jar given) raises
   :class:`~emulator.world.errors.Unmodelled` unless ``value`` is among its known members, never a
   silent "no".
+- ``loot_table(table_id)``: a loaded table; None for one that does not exist. A ``minecraft:``
+  table without the game's data raises Unmodelled naming ``--game-jar``.
 """
 from __future__ import annotations
 
@@ -31,7 +33,7 @@ class Resources:
     predicates: dict[str, Any] = field(default_factory=dict)  # id -> JSON value
     advancements: dict[str, Any] = field(default_factory=dict)
     tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)  # registry -> tag id -> tag
-    vanilla_tags: bool = False  # the game's own tags were loaded (from a game jar)
+    vanilla_data: bool = False  # the game's own tags and loot tables were loaded (from its jar)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # loot rolls, dropped items
 
     @classmethod
@@ -40,14 +42,14 @@ class Resources:
         found = cls({k: d.value for k, d in tables.items()}, {k: d.value for k, d in modifiers.items()},
                     predicates=dict(packs.predicates), advancements=dict(packs.advancements),
                     tags={registry: dict(tags) for registry, tags in packs.registry_tags.items()},
-                    vanilla_tags=packs.vanilla_tags)
+                    vanilla_data=packs.vanilla_data)
         for kind, docs in (("loot_table", tables), ("item_modifier", modifiers)):
             found.paths.update((f"{kind} {k}", d.path) for k, d in docs.items())
         return found
 
     def tag(self, registry: str, tag_id: str) -> RegistryTag | None:
         found = self.tags.get(registry, {}).get(tag_id)
-        if found is None and not self.vanilla_tags and tag_id in BUILTIN_TAGS.get(registry, {}):
+        if found is None and not self.vanilla_data and tag_id in BUILTIN_TAGS.get(registry, {}):
             return RegistryTag(BUILTIN_TAGS[registry][tag_id])
         return found
 
@@ -57,6 +59,14 @@ class Resources:
             return True
         self._known(registry, tag_id, tag)
         return False
+
+    def loot_table(self, table_id: str) -> dict | None:
+        """A loot table by id; a vanilla one unknown without the game's data is not modelled."""
+        table = self.loot_tables.get(table_id)
+        if table is None and table_id.startswith("minecraft:") and not self.vanilla_data:
+            raise Unmodelled(f"the game's own loot table {table_id} is not known without the game's data "
+                             "(pass --game-jar)")
+        return table
 
     def item_tag(self, tag_id: str) -> frozenset[str]:
         """The members of item tag ``tag_id`` (``#`` optional). A tag no pack defines fails the
@@ -71,7 +81,7 @@ class Resources:
 
     def _known(self, registry: str, tag_id: str, tag: RegistryTag | None) -> None:
         unknown = tag.unknown if tag is not None else (
-            (tag_id,) if tag_id.startswith("minecraft:") and not self.vanilla_tags else ())
+            (tag_id,) if tag_id.startswith("minecraft:") and not self.vanilla_data else ())
         if unknown:
             raise Unmodelled(f"the vanilla {registry} tag #{unknown[0]} is not known without the game's data "
                              "(pass --game-jar)")

@@ -69,7 +69,7 @@ class LoadedPacks:
     dimension_types: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension_type: id -> its JSON
     # registry -> tag id -> flattened tag: the game's own (from a game jar) merged under the packs'
     registry_tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)
-    vanilla_tags: bool = False  # the game's own tags were read from a game jar
+    vanilla_data: bool = False  # the game's own tags and loot tables were read from its jar
     loot_tables: dict[str, JsonDocument] = field(default_factory=dict)  # id -> its file (checked: pack.loot)
     item_modifiers: dict[str, JsonDocument] = field(default_factory=dict)
     files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
@@ -156,12 +156,14 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     result.packs = [p.info for p in packs]
     if target >= FILTER_FORMAT:
         _apply_filters(packs, metas)
+    jar = None if game_jar is None else (open_game_jar(game_jar), str(game_jar))
+    result.vanilla_data = jar is not None
     _load_functions(packs, result, workers, on_function)
     _load_tags(packs, result)
-    _load_registry_tags(packs, result, game_jar)
+    _load_registry_tags(packs, result, jar)
     _load_predicates(packs, result)
     _load_advancements(packs, result)
-    _load_loot(packs, result)
+    _load_loot(packs, result, jar)
     _load_dimensions(packs, result)
     return result
 
@@ -381,9 +383,18 @@ def _load_tags(packs: list[_PackFiles], result: LoadedPacks) -> None:
                                        result.diagnostics, result.refused)
 
 
-def _load_loot(packs: list[_PackFiles], result: LoadedPacks) -> None:
+def _load_loot(packs: list[_PackFiles], result: LoadedPacks, jar) -> None:
     """Loot tables and item modifiers (a later pack's file replaces an earlier one), each checked
-    (:mod:`mcfunction_parser.pack.loot`); one the game does not load is left out."""
+    (:mod:`mcfunction_parser.pack.loot`); one the game does not load is left out. The game's own
+    tables (``jar``: its root and name) come first, as its built-in data pack does, read as the
+    game ships them (not checked)."""
+    if jar is not None:
+        root, name = jar
+        for path in _jar_files(root, ("loot_table", "loot_tables")):
+            _, namespace, _, rest = path.at.split("/", 3)
+            doc = load_json(path, f"{name}!/{path.at}", result.diagnostics)
+            if doc is not None:
+                result.loot_tables[f"{namespace}:{rest[:-len('.json')]}"] = doc
     for folders, found, check in ((("loot_table", "loot_tables"), result.loot_tables, loot.check_loot_table),
                                   (("item_modifier", "item_modifiers"), result.item_modifiers, loot.check_modifier)):
         for rid, doc in _chosen_json(packs, folders, result):
@@ -391,13 +402,13 @@ def _load_loot(packs: list[_PackFiles], result: LoadedPacks) -> None:
                 found[rid] = doc
 
 
-def _load_registry_tags(packs: list[_PackFiles], result: LoadedPacks, game_jar) -> None:
-    """Every registry's tags: the game's own first (from its jar), then each pack on top."""
+def _load_registry_tags(packs: list[_PackFiles], result: LoadedPacks, jar) -> None:
+    """Every registry's tags: the game's own first (``jar``: its root and name), then each pack on top."""
     merged: dict[str, dict[str, FunctionTag]] = {}
     singular = uses_singular_folders(result.format)
-    if game_jar is not None:
-        root = open_game_jar(game_jar)
-        for path in _jar_tag_files(root):
+    if jar is not None:
+        root, game_jar = jar
+        for path in _jar_files(root, ("tags",)):
             parts = path.at.split("/", 3)  # data/<ns>/tags/<rest>
             split = registry_tags.split_tag_path(parts[3])
             if split is None:
@@ -405,7 +416,6 @@ def _load_registry_tags(packs: list[_PackFiles], result: LoadedPacks, game_jar) 
             registry = registry_tags.registry_for_folder(split[0], True)[0]  # the jar's own names
             registry_tags.read_registry_tag(merged, registry, f"{parts[1]}:{split[1]}", path,
                                             f"{game_jar}!/{path.at}", {}, result.diagnostics)
-        result.vanilla_tags = True
     else:  # the few vanilla tags the emulator knows without the game's data
         for registry, tags in BUILTIN_TAGS.items():
             for tag_id, members in tags.items():
@@ -435,15 +445,15 @@ def _load_registry_tags(packs: list[_PackFiles], result: LoadedPacks, game_jar) 
             result.diagnostics.append(Diagnostic(
                 WARNING, f"{count} file(s) in '{folder}/' ignored: {pack.target_label} reads '{instead}/' instead",
                 pack.shown(folder)))
-    result.registry_tags = registry_tags.flatten(merged, result.vanilla_tags, result.sources, result.diagnostics)
+    result.registry_tags = registry_tags.flatten(merged, result.vanilla_data, result.sources, result.diagnostics)
 
 
-def _jar_tag_files(root):
-    """The jar's tag files (``data/<ns>/tags/...``), in name order."""
+def _jar_files(root, folders: tuple[str, ...]):
+    """The jar's JSON files under ``data/<ns>/<folder>/`` for one of ``folders``, in name order."""
     archive = root.root
     return [zipfile.Path(archive, name) for name in sorted(archive.namelist())
-            if name.startswith("data/") and name.endswith(".json") and name.count("/") >= 4
-            and name.split("/")[2] == "tags"]
+            if name.startswith("data/") and name.endswith(".json") and name.count("/") >= 3
+            and name.split("/")[2] in folders]
 
 
 def _chosen_json(packs: list[_PackFiles], folders: tuple[str, str], result: LoadedPacks):

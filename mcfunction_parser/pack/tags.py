@@ -40,7 +40,8 @@ def normalise_id(text: str) -> str:
 def read_tag_file(path: PackPath, shown: str, diagnostics: list[Diagnostic], kind: str = "function tag"
                   ) -> tuple[JsonDocument, bool, list[TagEntry]] | None:
     """Parse one tag file: (document, replace flag, entries); None if unusable (diagnosed).
-    ``kind`` names the tag in messages (``function tag``, ``block tag`` ...)."""
+    ``kind`` names the tag in every message (``invalid function tag: ...``, ``invalid item tag:
+    ...``)."""
     doc = load_json(path, shown, diagnostics)
     if doc is None:
         return None
@@ -52,14 +53,14 @@ def read_tag_file(path: PackPath, shown: str, diagnostics: list[Diagnostic], kin
         return None
     replace = root.get("replace", False)
     if not isinstance(replace, bool):
-        diagnostics.append(doc.diagnostic(ERROR, '"replace" must be true or false',
+        diagnostics.append(doc.diagnostic(ERROR, f'invalid {kind}: "replace" must be true or false',
                                           doc.find_string("replace")))
         return None
-    entries = _entries(root["values"], doc, diagnostics)
+    entries = _entries(root["values"], doc, diagnostics, kind)
     return (doc, replace, entries) if entries is not None else None
 
 
-def _entries(values: list[Any], doc: JsonDocument, diagnostics: list[Diagnostic]) -> list[TagEntry] | None:
+def _entries(values: list[Any], doc: JsonDocument, diagnostics: list[Diagnostic], kind: str) -> list[TagEntry] | None:
     entries = []
     cursor = doc.find_string("values")
     for value in values:
@@ -69,7 +70,7 @@ def _entries(values: list[Any], doc: JsonDocument, diagnostics: list[Diagnostic]
                 cursor = _advance(doc, raw, _advance(doc, "id", cursor))
             if not isinstance(raw, str) or not isinstance(required, bool):
                 diagnostics.append(doc.diagnostic(
-                    ERROR, 'a tag entry object needs "id" (a string) and optional "required" '
+                    ERROR, f'invalid {kind}: an entry object needs "id" (a string) and optional "required" '
                     '(true or false)', cursor))
                 return None
         elif isinstance(value, str):
@@ -77,14 +78,14 @@ def _entries(values: list[Any], doc: JsonDocument, diagnostics: list[Diagnostic]
             cursor = _advance(doc, raw, cursor)
         else:
             diagnostics.append(doc.diagnostic(
-                ERROR, "a tag entry must be a string or an object with \"id\"", cursor))
+                ERROR, f"invalid {kind}: an entry must be a string or an object with \"id\"", cursor))
             return None
         is_tag = raw.startswith("#")
         name = raw[1:] if is_tag else raw
         if not _RESOURCE_LOCATION.fullmatch(name):
             diagnostics.append(doc.diagnostic(
-                ERROR, f"invalid resource location '{raw}' (allowed: a-z 0-9 _ . - and / in paths)",
-                cursor))
+                ERROR, f"invalid {kind}: invalid resource location '{raw}' (allowed: a-z 0-9 _ . - and / in "
+                "paths)", cursor))
             return None
         entries.append(TagEntry(normalise_id(name), is_tag, required, doc.loc_at(max(cursor, 0))))
     return entries

@@ -50,15 +50,22 @@ def test_game_jar_tags_load_under_the_packs(tmp_path):
     with zipfile.ZipFile(jar, "w") as archive:
         archive.writestr("data/minecraft/tags/block/logs.json", tag("minecraft:oak_log", "#minecraft:birch"))
         archive.writestr("data/minecraft/tags/block/birch.json", tag("minecraft:birch_log"))
+        archive.writestr("data/minecraft/loot_table/entities/cow.json", '{"pools": []}')
+        archive.writestr("data/minecraft/loot_table/chests/x.json", '{"pools": []}')
     server = tmp_path / "server.jar"  # a bundler: the real server jar nested inside
     with zipfile.ZipFile(server, "w") as archive:
         archive.writestr("META-INF/versions/1.21/server-1.21.jar", jar.read_bytes())
-    pack = write_pack(tmp_path / "p", {"data/minecraft/tags/block/logs.json": tag("minecraft:dirt")}, meta(48))
+    pack = write_pack(tmp_path / "p", {"data/minecraft/tags/block/logs.json": tag("minecraft:dirt"),
+                                       "data/minecraft/loot_table/chests/x.json": '{"pools": [], "random_sequence": "a"}'},
+                      meta(48))
     for given in (jar, server):
         loaded = load_packs([pack], game_jar=given)
-        assert loaded.vanilla_tags
+        assert loaded.vanilla_data
         assert loaded.registry_tags["block"]["minecraft:logs"].members == {
             "minecraft:oak_log", "minecraft:birch_log", "minecraft:dirt"}
+        # the game's loot tables load first, a pack's file of the same id replaces one
+        assert loaded.loot_tables["minecraft:entities/cow"].value == {"pools": []}
+        assert "random_sequence" in loaded.loot_tables["minecraft:chests/x"].value
     with pytest.raises(GameJarError):
         load_packs([pack], game_jar=pack / "pack.mcmeta")
 

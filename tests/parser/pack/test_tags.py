@@ -4,6 +4,8 @@ Rules from minecraft.wiki "Tag" (JSON format): ``required`` defaults to true and
 required entry makes the tag fail to load; a circular reference causes a loading failure;
 ``replace`` drops lower-priority packs' entries.
 """
+import pytest
+
 from mcfunction_parser.ast import FunctionTag, TagEntry
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.pack.loader import load_packs
@@ -104,6 +106,19 @@ def test_malformed_tag_files(make_pack):
     assert any("must be a string or an object" in m for m in messages)
     assert any("invalid resource location 'A:Upper'" in m for m in messages)
     assert any('"replace" must be true or false' in m for m in messages)
+
+
+@pytest.mark.parametrize("folder,kind", [("function", "function tag"), ("item", "item tag"), ("block", "block tag"),
+                                         ("entity_type", "entity_type tag"), ("fluid", "fluid tag"),
+                                         ("worldgen/biome", "worldgen/biome tag")])
+def test_every_message_names_the_registry_of_the_tag(make_pack, folder, kind):
+    # each registry's tag file (TagLoader reads them all alike) is reported as what it is
+    path = "data/a/tags/" + folder + "/{}.json"
+    root = make_pack(files={path.format("novalues"): '{"replace": false}', path.format("badentry"): '{"values": [3]}',
+                            path.format("badid"): '{"values": ["A:Upper"]}',
+                            path.format("badreplace"): '{"replace": "yes", "values": []}'})
+    messages = [d.message for d in load_packs([root]).errors]
+    assert len(messages) == 4 and all(m.startswith(f"invalid {kind}: ") for m in messages), messages
 
 
 def test_tags_merge_across_packs_and_replace_drops_earlier(tmp_path, make_pack):
