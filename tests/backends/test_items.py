@@ -149,6 +149,24 @@ def test_equipment_layout_of_1_21_5(tmp_path):
     assert entity_nbt(_player(emu))["equipment"]["offhand"]["id"] == "minecraft:shield"
 
 
+def test_fish_and_mine_loot_take_the_blocks_centre_as_origin(tmp_path):
+    # LootCommand.dropFishingLoot / dropBlockLoot: ORIGIN is Vec3.atCenterOf(pos), not the
+    # command's position; a location_check on the origin sees the centre
+    centred = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "cod"}], "conditions": [
+        {"condition": "location_check", "predicate": {"position": {"x": {"min": 2.5, "max": 2.5},
+                                                                   "y": {"min": 64.5, "max": 64.5}}}}]}]}
+    pack = write_pack(tmp_path / "pack", {"t:main": SETUP + "setblock 2 64 0 stone\n"
+                                          "execute positioned 7.2 70 1 store result score #fish v run "
+                                          "loot give Steve fish t:centred 2 64 0\n"
+                                          "execute positioned 7.2 70 1 store result score #mine v run loot give Steve mine 2 64 0"})
+    (pack / "data/t/loot_table").mkdir(parents=True)
+    (pack / "data/t/loot_table/centred.json").write_text(json.dumps(centred))
+    (pack / "data/minecraft/loot_table/blocks").mkdir(parents=True)
+    (pack / "data/minecraft/loot_table/blocks/stone.json").write_text(json.dumps(centred))
+    for emu in _on_both(pack):
+        assert _scores(emu) == {"#fish": 1, "#mine": 1}
+
+
 def test_kill_loot_uses_the_entity_table_and_its_killer(tmp_path):
     # LootCommand.dropKillLoot: the entity's loot table (DeathLootTable), the executor as the killer;
     # an entity that is not living has none; a vanilla table no pack defines is not shipped
