@@ -23,6 +23,7 @@ Sources (decompiled 1.21, net/minecraft/world/level/storage/loot/predicates/*, a
   equipment, type_specific, vehicle, passenger, targeted_entity, team, periodic_tick, slots).
 - EntityEquipmentPredicate.matches: only a LivingEntity matches; each given slot's ItemPredicate
   tests LivingEntity.getItemBySlot (an empty slot is the empty stack, which ``{}`` matches).
+  SlotsPredicate: each slot range needs one slot (Entity.getSlot) whose stack matches.
 - DistancePredicate: float differences, x/y/z on their absolute values, horizontal/absolute on
   squared lengths. LocationPredicate: position on the exact doubles, then the block at
   BlockPos.containing. LocationCheck: origin + offset. ExecuteCommand.checkCustomPredicate: the
@@ -50,6 +51,7 @@ from emulator.world.items import ItemStack, enchantment_level, sub_predicate, va
 from emulator.world.living import is_living
 from emulator.world.loot_context import LootContext, in_range, integer, number, snbt_or_tag, to_tag
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
+from mcfunction_parser.items import SLOTS
 from mcfunction_parser.nbt import Byte, Int
 
 F32 = np.float32
@@ -240,6 +242,19 @@ def _equipment(value: dict, ctx: LootContext, entity: Entity) -> bool:
         return False
     return all(item_matches(wanted, ctx, _slot_stack(entity, _EQUIPMENT_SLOTS[slot], ctx))
                for slot, wanted in value.items() if slot in _EQUIPMENT_SLOTS)
+
+
+def _slots(value: dict, ctx: LootContext, entity: Entity) -> bool:
+    """SlotsPredicate.matches (1.20.5+): for each slot range (SlotRanges: ``container.*``,
+    ``armor.head`` ...), some slot of it holds a stack the item predicate matches; a slot the
+    entity does not have reads as the empty stack (SlotAccess.NULL)."""
+    for name, wanted in value.items():
+        entry = SLOTS.get(name)
+        if entry is None:
+            raise Unmodelled(f"slot range '{name}'")
+        if not any(item_matches(wanted, ctx, _slot_stack(entity, slot, ctx)) for slot in entry[0]):
+            return False
+    return True
 
 
 def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
@@ -434,9 +449,10 @@ _ENTITY_FIELDS = {
     "passenger": _passenger,
     "type_specific": _type_specific,
     "equipment": _equipment,
+    "slots": _slots,
     "player": lambda v, ctx, e: _player(v, ctx, e),  # before 1.19: a top-level player predicate
 }
-_ENTITY_UNMODELLED = {"targeted_entity", "periodic_tick", "slots", "movement", "fishing_hook",
+_ENTITY_UNMODELLED = {"targeted_entity", "periodic_tick", "movement", "fishing_hook",
                       "lightning_bolt", "catType", "components", "predicates"}
 
 

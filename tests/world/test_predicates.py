@@ -236,3 +236,17 @@ def test_a_players_mainhand_is_its_selected_slot(state):
     player.data["SelectedItemSlot"] = Int(2)
     assert holds(held, ctx(state, this=player))
     assert holds(props({"equipment": {"body": {}}}), ctx(state, this=player))  # a player's body slot is empty
+
+
+def test_slots_need_one_matching_slot_in_each_range(state):
+    # SlotsPredicate.matches: for each SlotRange, some Entity.getSlot(id) stack the ItemPredicate
+    # accepts; a slot the entity does not have is SlotAccess.NULL, the empty stack
+    player = state.entities.add_player("Alex", (0.0, 0.0, 0.0))
+    inventories.entity_slot(player, 20, state.version).set(ItemStack("minecraft:diamond", 3))
+    this = ctx(state, this=player)
+    assert holds(props({"slots": {"inventory.*": {"items": "minecraft:diamond", "count": 3}}}), this)
+    assert not holds(props({"slots": {"hotbar.*": {"items": "minecraft:diamond"}}}), this)
+    assert holds(props({"slots": {"container.*": {"items": "minecraft:diamond"}, "armor.head": {}}}), this)
+    marker = state.entities.summon("minecraft:marker", (0.0, 0.0, 0.0))
+    assert holds(props({"slots": {"weapon.mainhand": {}}}), ctx(state, this=marker))
+    assert not holds(props({"slots": {"weapon.mainhand": {"count": {"min": 1}}}}), ctx(state, this=marker))
