@@ -13,6 +13,7 @@ from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
 from emulator.world.items import ItemStack, create, matches
+from emulator.world.living import is_living
 from emulator.world.loot_context import LootContext
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound, Int, IntArray, Short
@@ -251,7 +252,7 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
         return loot.roll_table(_table(env, cmd.table), lctx)
     if cmd.source == "kill":
         victim = entities.single(env.state, cmd.entity, ctx)
-        if victim.type in inventories.NOT_LIVING:  # only living entities have a loot table
+        if not is_living(victim.type):  # only living entities have a loot table
             raise CommandFailure("commands.drop.no_loot_table", victim.display_name)
         table_id = victim.data.get("DeathLootTable") or "minecraft:entities/" + victim.type.split(":", 1)[-1]
         lctx = loot_context(env, ctx, this=victim, damage_source="minecraft:magic").killed_by(executor(env.state, ctx))

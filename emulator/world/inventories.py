@@ -49,6 +49,7 @@ from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, Short
 from emulator.world.id_families import COLOURS
 from emulator.world.errors import CommandFailure
 from emulator.world.items import EMPTY, ItemStack, from_nbt, to_nbt
+from emulator.world.living import NOT_LIVING
 from emulator.world.nbt_ops import copy_tag
 
 EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a-25w04a: equipment compound, player armor leaves Inventory
@@ -57,16 +58,6 @@ ARMOR_SLOTS = {"feet": 100, "legs": 101, "chest": 102, "head": 103}
 ARMOR = {100: "feet", 101: "legs", 102: "chest", 103: "head"}
 PLAYER_INVENTORY_SIZE, ENDER_SIZE = 36, 27
 _OLD_PLAYER_SLOTS = {OFFHAND: -106, 100: 100, 101: 101, 102: 102, 103: 103}
-NOT_LIVING = frozenset("minecraft:" + n for n in (
-    "marker item item_frame glow_item_frame item_display block_display text_display interaction "
-    "area_effect_cloud falling_block tnt arrow spectral_arrow trident snowball egg ender_pearl "
-    "potion experience_bottle experience_orb fireball small_fireball dragon_fireball wither_skull "
-    "wind_charge breeze_wind_charge firework_rocket fishing_bobber eye_of_ender evoker_fangs "
-    "leash_knot painting lightning_bolt shulker_bullet llama_spit end_crystal "
-    "boat chest_boat minecart chest_minecart hopper_minecart furnace_minecart tnt_minecart "
-    "spawner_minecart command_block_minecart").split()) | frozenset(
-    f"minecraft:{w}_{k}" for w in "oak spruce birch jungle acacia dark_oak mangrove cherry pale_oak bamboo".split()
-    for k in ("boat", "chest_boat", "raft", "chest_raft"))
 _SINGLE_ITEM = {"minecraft:item": "Item", "minecraft:item_frame": "Item", "minecraft:glow_item_frame": "Item",
                 "minecraft:item_display": "item"}
 _ENTITY_CONTAINERS = {"minecraft:chest_minecart": 27, "minecraft:hopper_minecart": 5, "minecraft:chest_boat": 27,

@@ -46,9 +46,10 @@ NOT_LIVING = frozenset(f"minecraft:{n}" for n in (
     "breeze_wind_charge", "shulker_bullet", "llama_spit", "firework_rocket", "fishing_bobber", "eye_of_ender",
     "falling_block", "tnt", "end_crystal", "evoker_fangs", "lightning_bolt", "painting", "item_frame",
     "glow_item_frame", "leash_knot", "boat", "chest_boat", "minecart", "chest_minecart", "furnace_minecart",
-    "hopper_minecart", "tnt_minecart", "spawner_minecart", "command_block_minecart", "oak_boat", "spruce_boat",
-    "birch_boat", "jungle_boat", "acacia_boat", "dark_oak_boat", "mangrove_boat", "cherry_boat", "pale_oak_boat",
-    "bamboo_raft", "oak_chest_boat", "ominous_item_spawner"))
+    "hopper_minecart", "tnt_minecart", "spawner_minecart", "command_block_minecart", "bamboo_raft",
+    "bamboo_chest_raft", "ominous_item_spawner")) | frozenset(  # the boats of each wood (1.21.2+)
+    f"minecraft:{wood}_{kind}" for wood in "oak spruce birch jungle acacia dark_oak mangrove cherry pale_oak".split()
+    for kind in ("boat", "chest_boat"))
 
 # Attributes.java: (default value, min, max) of the registered attributes (1.21.2+ ids).
 DEFAULTS: dict[str, tuple[float, float, float]] = {
