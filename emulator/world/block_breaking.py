@@ -102,13 +102,9 @@ def _drops(state, player, pos, block: BlockState, held) -> list:
     if held_items is not None and any(not held_items.slot(i).get().is_empty for i in range(held_items.size)):
         raise Unmodelled(f"the contents {block.id} spills when mined")
     table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
-    table = state.resources.loot_tables.get(table_id)
-    if table is None:
-        raise Unmodelled(f"the game's own loot table {table_id} (only a pack's own is loaded)")
-    ctx = LootContext(state.resources.random, state.resources, state.version, this=player,
-                      origin=(pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), tool=held, block_state=block,
-                      block_entity=state.blocks.entity(pos), daytime=state.daytime, scores=state.scoreboard.get,
-                      storage=lambda sid: state.storage.get(sid, Compound()))
+    table = state.resources.loot_table(table_id) or {}  # none: LootTable.EMPTY, nothing drops
+    ctx = LootContext(state, (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), this=player, tool=held, block_state=block,
+                      block_entity=state.blocks.entity(pos), random=state.resources.random)
     try:
         return loot.roll_table(table, ctx)
     except CommandFailure as error:

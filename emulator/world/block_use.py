@@ -36,8 +36,8 @@ from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import Unmodelled
-from emulator.world.items import to_nbt
-from mcfunction_parser.nbt import Compound, String
+from emulator.world.loot_context import LootContext
+from mcfunction_parser.nbt import Compound
 
 DEFAULT_BLOCK_USE_VERSION = (1, 20, 5)  # useWithoutItem and its own trigger (24w13a)
 MENU_REACH = 4.0  # Container.stillValidBlockEntity's buffer over the block interaction range
@@ -262,10 +262,10 @@ def _location_test(state, player, pos, stack):
     conditions with the block's centre as origin, the player as ``this``, the block state and (for
     items) the tool; before 1.20 a location predicate and an ``item`` predicate."""
     origin = (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5)
-    tool = to_nbt(stack, state.version) if stack is not None and not stack.is_empty else None
+    tool = stack if stack is not None and not stack.is_empty else None
 
     def test(conditions: dict, _ctx) -> bool:
-        ctx = predicates.LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos))
+        ctx = LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos))
         location = conditions.get("location")
         if isinstance(location, list):
             ok = predicates.test(location, ctx)
