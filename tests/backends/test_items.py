@@ -38,6 +38,12 @@ def _on_both(pack):
         yield emu
 
 
+def _json(pack, rel: str, value) -> None:
+    """A JSON resource (a loot table ...) written into the pack."""
+    (pack / rel).parent.mkdir(parents=True, exist_ok=True)
+    (pack / rel).write_text(json.dumps(value))
+
+
 def _scores(emu):
     return emu.scores().get("v", {})
 
@@ -110,8 +116,7 @@ def test_loot_targets(tmp_path):
                                           "execute store result score #n v run loot insert 0 0 0 loot t:stone\n"
                                           "execute store result score #all v if items block 0 0 0 container.* stone\n"
                                           "execute store result score #g v run loot give Steve loot t:stone\n"})
-    (pack / "data/t/loot_table").mkdir(parents=True)
-    (pack / "data/t/loot_table/stone.json").write_text(json.dumps(table))
+    _json(pack, "data/t/loot_table/stone.json", table)
     results = []
     for emu in _on_both(pack):
         results.append((_scores(emu), emu.entities(), [d.format() for d in emu.diagnostics]))
@@ -125,9 +130,8 @@ def test_bad_loot_input(tmp_path):
     pack = write_pack(tmp_path / "pack", {"t:main": SETUP + "loot give Steve loot t:missing\n"
                                           "execute store success score #s v run loot give Steve loot t:smelt\n"
                                           "item modify entity Steve weapon t:nothing\n"})
-    (pack / "data/t/loot_table").mkdir(parents=True)
-    (pack / "data/t/loot_table/smelt.json").write_text(json.dumps({"pools": [{"rolls": 1, "entries": [
-        {"type": "item", "name": "beef", "functions": [{"function": "furnace_smelt"}]}]}]}))
+    _json(pack, "data/t/loot_table/smelt.json", {"pools": [{"rolls": 1, "entries": [
+        {"type": "item", "name": "beef", "functions": [{"function": "furnace_smelt"}]}]}]})
     for emu in _on_both(pack):
         messages = [d.message for d in emu.diagnostics]
         assert messages == ["Unknown loot table t:missing", "not modelled: item function 'minecraft:furnace_smelt'",
@@ -159,10 +163,8 @@ def test_fish_and_mine_loot_take_the_blocks_centre_as_origin(tmp_path):
                                           "execute positioned 7.2 70 1 store result score #fish v run "
                                           "loot give Steve fish t:centred 2 64 0\n"
                                           "execute positioned 7.2 70 1 store result score #mine v run loot give Steve mine 2 64 0"})
-    (pack / "data/t/loot_table").mkdir(parents=True)
-    (pack / "data/t/loot_table/centred.json").write_text(json.dumps(centred))
-    (pack / "data/minecraft/loot_table/blocks").mkdir(parents=True)
-    (pack / "data/minecraft/loot_table/blocks/stone.json").write_text(json.dumps(centred))
+    _json(pack, "data/t/loot_table/centred.json", centred)
+    _json(pack, "data/minecraft/loot_table/blocks/stone.json", centred)
     for emu in _on_both(pack):
         assert _scores(emu) == {"#fish": 1, "#mine": 1}
 
@@ -178,8 +180,7 @@ def test_kill_loot_uses_the_entity_table_and_its_killer(tmp_path):
         "execute as Steve store result score #player v run loot give Steve kill @e[tag=z,limit=1]\n"
         "execute store success score #marker v run loot give Steve kill @e[type=marker,limit=1]\n"
         "summon cow 0 64 0\nloot give Steve kill @e[type=cow,limit=1]\n"})
-    (pack / "data/t/loot_table").mkdir(parents=True)
-    (pack / "data/t/loot_table/zdrops.json").write_text(json.dumps(drops))
+    _json(pack, "data/t/loot_table/zdrops.json", drops)
     for emu in _on_both(pack):
         assert _scores(emu) == {"#server": 0, "#player": 1, "#marker": 0}
         assert [d.message for d in emu.diagnostics] == [
@@ -245,8 +246,7 @@ def test_mine_reads_the_block_and_its_state(tmp_path):
                                           "execute store result score #d v run loot give Steve mine 0 0 0 shears\n"
                                           "execute store result score #s v run loot give Steve mine 1 0 0\n"
                                           "execute store result score #n v if items entity Steve container.* oak_slab\n"})
-    (pack / "data/minecraft/loot_table/blocks").mkdir(parents=True)
-    (pack / "data/minecraft/loot_table/blocks/oak_slab.json").write_text(json.dumps(table))
+    _json(pack, "data/minecraft/loot_table/blocks/oak_slab.json", table)
     for emu in _on_both(pack):
         assert _scores(emu) == {"#d": 2, "#s": 0, "#n": 2}
         slab = entity_nbt(_player(emu))["Inventory"][0]
