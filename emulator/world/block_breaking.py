@@ -104,7 +104,7 @@ def _drops(state, player, pos, block: BlockState, held) -> list:
     table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
     table = state.resources.loot_table(table_id) or {}  # none: LootTable.EMPTY, nothing drops
     ctx = LootContext(state, (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), this=player, tool=held, block_state=block,
-                      block_entity=state.blocks.entity(pos), random=state.resources.random)
+                      block_entity=state.blocks.entity(pos), dimension=player.dimension, random=state.resources.random)
     try:
         return loot.roll_table(table, ctx)
     except CommandFailure as error:

@@ -265,7 +265,8 @@ def _location_test(state, player, pos, stack):
     tool = stack if stack is not None and not stack.is_empty else None
 
     def test(conditions: dict, _ctx) -> bool:
-        ctx = LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos))
+        ctx = LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos),
+                          dimension=player.dimension)
         location = conditions.get("location")
         if isinstance(location, list):
             ok = predicates.test(location, ctx)

@@ -98,7 +98,7 @@ class LootContext:
     def for_entity(self, entity) -> "LootContext":
         """A context of the same world with ``entity`` as ``this`` at its position (an entity
         predicate given as loot conditions)."""
-        return LootContext(self.state, entity.pos, this=entity, dimension=self.dimension, random=self.random,
+        return LootContext(self.state, entity.pos, this=entity, dimension=entity.dimension, random=self.random,
                            resolve_text=self.resolve_text, visited=self.visited)
 
     def score(self, holder: str, objective: str) -> int | None:
