@@ -157,7 +157,8 @@ def _vm_instructions(counts: list[tuple[int, int]], names: dict[int, str]) -> li
 
 
 # what each host opcode hands to Python, as the profile names it
-HOST_KINDS = {"HOST": "command", "HOSTSTAGE": "stage", "HOSTSTORE": "store"}
+HOST_KINDS = {"HOST": "command", "HOSTSTAGE": "stage", "HOSTSTORE": "store", "GETFIELD": "command",
+              "STOREFIELD": "store", "SETLEAF": "command", "GETLEAF": "command", "STORELEAF": "store"}
 
 
 def _vm_host(runs: dict, loaded: dict, sources: dict, names: dict[int, str]) -> list[dict]:

@@ -16,8 +16,9 @@ from emulator.runtime.backend import HostRun, RootResult, TickBatch, report_quot
 from emulator.vm.compiler import Compiler
 from emulator.vm.entity_arrays import SelectorTables
 from emulator.vm.host import Host, StoreTarget, resolves_target
-from emulator.vm.opcodes import OPERATION_KINDS
+from emulator.vm.opcodes import OPERATION_KINDS, TABLE
 from emulator.vm.program import Program
+from emulator.vm.storage_leaves import StorageLeaves
 from emulator.commands.data import macro_arguments
 from emulator.world.errors import MESSAGES, CommandFailure
 from emulator.runtime.macros import MacroExpander
@@ -62,8 +63,9 @@ class NumbaBackend:
         self.sanitize = sanitize
         self.program = Program(levels=state.entities.table.levels)
         self.selectors = SelectorTables(state.scoreboard, state.entities.table, state.resources)
+        self.leaves = StorageLeaves()
         self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
-                                 self.selectors)
+                                 self.selectors, self.leaves)
         self.compiler.compile_all()
         self.macros = MacroExpander(packs.version)
         self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
@@ -198,10 +200,13 @@ class NumbaBackend:
             if self.selbuf.shape[0] < 2 * table.count + 2:
                 self.selbuf = np.zeros(4 * table.count + 4, dtype=np.int64)
             sels, sfloats, tests = self.selectors.arrays()
+            leaves = self.leaves
+            leaves.read(self.state.storage)
             status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
                             sb.writable, sb.trigger, self.counts, self.totals, self.active, self.ovf,
                             self.cints, self.cfloats, sels, sfloats, tests, table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf,
-                            self.fstack, self.coll, self.as_cache, self.batch)
+                            self.fstack, self.coll, self.as_cache, self.batch, leaves.meta, leaves.values)
+            leaves.write_back(self.state.storage)
             batching = r[vm.R_BATCH] != 0
             if batching:
                 self._batch_root(status == vm.ST_DONE)
@@ -313,22 +318,28 @@ class NumbaBackend:
 
     def _host(self, pc: int) -> None:
         """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
-        opcode, index = self.program.rows[pc][0], self.program.rows[pc][1]
-        node = self.program.host_ops[index].node
+        opcode = self.program.rows[pc][0]
+        node = self.program.host_ops[_host_op_index(self.program.rows[pc])].node
         r = self.regs
         self._current_pc = pc
         self.host_runs[pc] += 1
         ctx = self.context(int(r[vm.R_CTX]))
         r[vm.R_PC] = pc + 1
         r[vm.R_BSTOP] = r[vm.R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
-        if opcode == vm.OP_HOST:
+        if opcode in (vm.OP_HOST, vm.OP_GETFIELD, vm.OP_SETLEAF, vm.OP_GETLEAF):
             result = self.host.run_final(node, ctx)
             r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = int(result.has), int(result.ok), wrap32(result.value)
+        elif opcode == vm.OP_STORELEAF:  # no number there yet: the host's store into storage
+            self.host.run_store(node, None, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
         elif opcode == vm.OP_HOSTSTORE:
             target = None
             if resolves_target(node):
                 target = self.store_targets[dict(self.bindings(int(r[vm.R_CTX])))[id(node)]]
             self.host.run_store(node, target, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
+        elif opcode == vm.OP_STOREFIELD:  # a field the executor lacks: the store its stage resolved to @s
+            target = self.host.run_store_stage(node, ctx)
+            if target is not None:
+                self.host.run_store(node, target, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
         else:
             self._stage(node, ctx)
 
@@ -513,8 +524,8 @@ class NumbaBackend:
         """Every host op Python ran since load (or since ``host_runs.clear()``), in code order:
         what the VM could not do itself."""
         rows, host_ops = self.program.rows, self.program.host_ops
-        return [HostRun(host_ops[rows[pc][1]].function, host_ops[rows[pc][1]].node, rows[pc][0], n)
-                for pc, n in sorted(self.host_runs.items())]
+        return [HostRun(host_ops[_host_op_index(rows[pc])].function, host_ops[_host_op_index(rows[pc])].node,
+                        rows[pc][0], n) for pc, n in sorted(self.host_runs.items())]
 
     def function_totals(self) -> dict[str, int]:
         """Inclusive cost per function (callees included, outermost activations only)."""
@@ -555,6 +566,14 @@ class NumbaBackend:
 def _end_frame(function: ast.Function) -> Frame:
     """Where a root running ``function`` ends (its last line)."""
     return Frame(function.id, Loc(function.path, max(function.lines, 1), 1))
+
+
+# opcode -> the operand slot naming its host op (its "x" operand)
+_HOST_OPERAND = {op.code: op.operands.index("x") + 1 for op in TABLE if "x" in op.operands}
+
+
+def _host_op_index(row: list[int]) -> int:
+    return row[_HOST_OPERAND[row[0]]]
 
 
 def _grown(rows: np.ndarray) -> np.ndarray:

@@ -34,9 +34,10 @@ from typing import Callable
 from emulator.vm import loop as vm
 from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import HostOp, MacroCall, Program
+from emulator.vm.storage_leaves import STORE_TYPES, key_path, number_code
 from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Condition, DataGet, EntityData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositioned, ExPositionedAs,
+    Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositioned, ExPositionedAs,
     ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
     PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
     StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec3,
@@ -44,6 +45,8 @@ from mcfunction_parser.ast import (
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.world.source import world_coordinate
 from emulator.commands.entities import ENTITY_CONTEXT_STAGES
+from emulator.world.display import TRANSFORM_PARTS
+from emulator.world.entity_table import EF_MX, EF_TRANSFORM, EF_X, EF_YAW
 
 _SET_OPS = {"set": vm.OP_SET, "add": vm.OP_ADD, "remove": vm.OP_REMOVE}
 
@@ -56,9 +59,10 @@ class Compiler:
     """
 
     def __init__(self, program: Program, scoreboard: Scoreboard, functions: dict[str, Function],
-                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, selectors=None) -> None:
+                 resolve_tag: Callable[[str], list[str]], tags: set[str] | dict, selectors=None, leaves=None) -> None:
         self.program = program
         self.selectors = selectors  # emulator.vm.entity_arrays.SelectorTables (None: no entity forms)
+        self.leaves = leaves  # emulator.vm.storage_leaves.StorageLeaves (None: storage stays with the host)
         self.sb = scoreboard
         self.functions = functions
         self.resolve_tag = resolve_tag
@@ -127,17 +131,24 @@ class Compiler:
         elif isinstance(cmd, Teleport) and (tp := self.teleport(cmd)) is not None:
             self.emit(vm.OP_TP, *tp)
             self.host(vm.OP_HOST, cmd)  # a target going to another level
-        elif isinstance(cmd, DataGet) and (axis := _position_path(cmd.target, cmd.path)) is not None:
-            scale = -1 if cmd.scale is None else self.program.intern_float(cmd.scale)
-            self.emit(vm.OP_GETPOS, axis, scale)
+        elif isinstance(cmd, DataGet) and (field := _entity_field(cmd.target, cmd.path)) is not None:
+            self.host(vm.OP_GETFIELD, cmd, field[0], self.program.intern_float(1.0 if cmd.scale is None else cmd.scale),
+                      operand=3)
+        elif isinstance(cmd, DataModify) and (leaf := self.set_leaf(cmd)) is not None:
+            self.host(vm.OP_SETLEAF, cmd, *leaf, operand=4)
+        elif isinstance(cmd, DataGet) and (leaf := self.leaf(cmd.target, cmd.path)) is not None:
+            self.host(vm.OP_GETLEAF, cmd, leaf, self.program.intern_float(1.0 if cmd.scale is None else cmd.scale),
+                      operand=3)
         elif isinstance(cmd, Tellraw) and (sel := self.selector(cmd.targets)) is not None:
             self.host(vm.OP_LOG, cmd, sel)  # the host writes the line
         else:
             self.host(vm.OP_HOST, cmd)
 
-    def host(self, op: int, node: Command | Subcommand, *operands: int) -> None:
+    def host(self, op: int, node: Command | Subcommand, *operands: int, operand: int = 1) -> None:
+        """Emit ``op`` naming ``node`` as a host op (its index in operand slot ``operand``, among ``operands``)."""
         self.program.host_ops.append(HostOp(node, self.fn_id))
-        self.emit(op, len(self.program.host_ops) - 1, *operands)
+        index = len(self.program.host_ops) - 1
+        self.emit(op, *operands[:operand - 1], index, *operands[operand - 1:])
 
     # ------------------------------------------------------------------ execute chains
 
@@ -156,15 +167,21 @@ class Compiler:
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
             elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
+            elif isinstance(st, IfData) and (test := self.leaf_test(st)) is not None:
+                self.emit(vm.OP_IFLEAF, *test, 0, 0, int(st.negated), int(last))
             elif isinstance(st, IfDimension) and st.dimension in self.program.levels.ids:  # else it fails: host
                 self.emit(vm.OP_IFDIM, self.program.levels.ids[st.dimension], 0, 0, 0, 0, int(st.negated), int(last))
             elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
             elif isinstance(st, ExPositioned) and not last:
                 self.emit(vm.OP_POSITIONED, *self.coordinates(st.pos))
-            elif (axis := _position_store(st)) is not None and _context_kept(stages[i + 1:], final):
-                self.emit(vm.OP_POSSTAGE, 0, int(forked))
-                stores.append(_PositionStore(st, axis))
+            elif (column := _field_store(st)) is not None and _context_kept(stages[i + 1:], final):
+                self.emit(vm.OP_FIELDSTAGE, 1, int(forked))
+                stores.append(_FieldStore(st, column))
+            elif (isinstance(st, StoreData) and st.type in STORE_TYPES
+                  and (leaf := self.leaf(st.target, st.path)) is not None):
+                self.emit(vm.OP_FIELDSTAGE, 0, int(forked))
+                stores.append(_LeafStore(st, leaf))
             elif isinstance(st, IfScoreMatches):
                 lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
                 hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
@@ -214,9 +231,12 @@ class Compiler:
             if isinstance(st, _SelfScoreStore):
                 self.emit(vm.OP_STORE, 0 if st.node.kind == "result" else 1, vm.HOLDER_SELF,
                           self.objective(st.node.objective))
-            elif isinstance(st, _PositionStore):
-                self.emit(vm.OP_STOREPOS, st.axis, 0 if st.node.kind == "result" else 1,
-                          self.program.intern_float(st.node.scale))
+            elif isinstance(st, _LeafStore):
+                self.host(vm.OP_STORELEAF, st.node, st.leaf, 0 if st.node.kind == "result" else 1,
+                          self.program.intern_float(st.node.scale), STORE_TYPES[st.node.type], operand=5)
+            elif isinstance(st, _FieldStore):
+                self.host(vm.OP_STOREFIELD, st.node, st.column, 0 if st.node.kind == "result" else 1,
+                          self.program.intern_float(st.node.scale), operand=4)
             elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
                 self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
                           self.objective(st.objective))
@@ -356,6 +376,33 @@ class Compiler:
         flags = vm.TP_LOCAL if vec.is_local else sum(1 << axis for axis, c in enumerate(coords) if c.kind == "rel")
         return first, flags
 
+    # ------------------------------------------------------------------ storage numbers
+    def leaf(self, target, path) -> int | None:
+        """The storage leaf of ``storage S a.b.c`` (compound keys only), else None."""
+        keys = key_path(path)
+        if self.leaves is None or not isinstance(target, StorageData) or keys is None:
+            return None
+        return self.leaves.leaf(target.id, keys)
+
+    def set_leaf(self, cmd: DataModify) -> tuple[int, int, int] | None:
+        """(leaf, type, number) of ``data modify storage S P set value N`` with N a number the VM mirrors."""
+        if cmd.mode != "set" or not isinstance(cmd.source, SourceValue) or not number_code(cmd.source.value):
+            return None
+        leaf = self.leaf(cmd.target, cmd.path)
+        if leaf is None:
+            return None
+        return leaf, number_code(cmd.source.value), self.program.intern_float(float(cmd.source.value))
+
+    def leaf_test(self, st: IfData) -> tuple[int, int, int] | None:
+        """(leaf, type, number) of ``if|unless data storage S {K:N}`` (one key, a number the VM mirrors)."""
+        nodes = st.path.nodes
+        if not (len(nodes) == 1 and isinstance(nodes[0], PathFilter) and len(nodes[0].pattern) == 1):
+            return None
+        (key, value), = nodes[0].pattern.items()
+        if not number_code(value) or self.leaves is None or not isinstance(st.source, StorageData):
+            return None
+        return self.leaves.leaf(st.source.id, (key,)), number_code(value), self.program.intern_float(float(value))
+
     def tag_operands(self, cmd: TagCommand) -> tuple[int, int] | None:
         """(selector, tag number) of ``tag SEL add|remove T`` when the VM can run it, else None."""
         if cmd.action not in ("add", "remove") or (sel := self.selector(cmd.targets)) is None:
@@ -397,12 +444,20 @@ _FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, Ex
 _MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
 
 
-class _PositionStore:
-    """A ``store ... entity @s Pos[axis] double S`` the VM runs (see :func:`_position_store`)."""
+class _FieldStore:
+    """A ``store ... entity @s PATH TYPE S`` into a field the entity table keeps (see :func:`_field_store`)."""
 
-    def __init__(self, node: StoreData, axis: int) -> None:
+    def __init__(self, node: StoreData, column: int) -> None:
         self.node = node
-        self.axis = axis
+        self.column = column
+
+
+class _LeafStore:
+    """A ``store ... storage S P TYPE SCALE`` into a storage leaf."""
+
+    def __init__(self, node: StoreData, leaf: int) -> None:
+        self.node = node
+        self.leaf = leaf
 
 
 class _SelfScoreStore:
@@ -412,21 +467,38 @@ class _SelfScoreStore:
         self.node = node
 
 
-def _position_store(st) -> int | None:
-    """The axis of ``store result|success entity @s Pos[0|1|2] double S``, else None."""
-    if not (isinstance(st, StoreData) and st.type == "double"):
+# The numeric entity fields the entity table keeps: NBT list -> (first column, size, element type)
+_FIELD_LISTS = {"Pos": (EF_X, 3, "double"), "Motion": (EF_MX, 3, "double"), "Rotation": (EF_YAW, 2, "float")}
+
+
+def _field_store(st) -> int | None:
+    """The column of ``store result|success entity @s PATH TYPE S`` when PATH is a field the table
+    keeps and TYPE its list's element type (another type does not fit the list: the host's store
+    fails as the game's does), else None."""
+    if not isinstance(st, StoreData):
         return None
-    return _position_path(st.target, st.path)
+    field = _entity_field(st.target, st.path)
+    return field[0] if field is not None and field[1] == st.type else None
 
 
-def _position_path(target, path) -> int | None:
-    """The axis when ``target path`` is ``entity @s Pos[0|1|2]``, else None."""
+def _entity_field(target, path) -> tuple[int, str] | None:
+    """(column, element type) when ``target path`` is ``entity @s`` and one number of Pos, Motion,
+    Rotation or a display's ``transformation`` part (the VM checks the entity is a display), else None."""
     if not (isinstance(target, EntityData) and _bare_self(target.target) and path is not None):
         return None
     nodes = path.nodes
-    if len(nodes) == 2 and nodes[0] == PathKey("Pos") and isinstance(nodes[1], PathIndex) and nodes[1].index in (0, 1, 2):
-        return nodes[1].index
-    return None
+    if len(nodes) == 2 and isinstance(nodes[0], PathKey) and nodes[0].name in _FIELD_LISTS:
+        first, size, element = _FIELD_LISTS[nodes[0].name]
+    elif (len(nodes) == 3 and nodes[0] == PathKey("transformation") and isinstance(nodes[1], PathKey)
+          and nodes[1].name in TRANSFORM_PARTS):
+        start, size = TRANSFORM_PARTS[nodes[1].name]
+        first, element = EF_TRANSFORM + start, "float"
+    else:
+        return None
+    index = nodes[-1]
+    if not (isinstance(index, PathIndex) and -size <= index.index < size):
+        return None
+    return first + index.index % size, element
 
 
 def _context_kept(later: list[Subcommand], final) -> bool:

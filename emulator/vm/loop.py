@@ -21,7 +21,8 @@ executor's holder and slot, dimension, anchor and store bindings, ``CI_*``; ``cf
 and rotation, ``CF_*``; the first ``R_NCTX`` rows are used), and the entities:
 the world's own arrays (:mod:`emulator.world.entity_table`: ``eints``, ``efloats``, ``etags``, the
 living slots ``eorder``), read and written in place, with the selector tables ``sels``/``tests``
-(:mod:`emulator.vm.entity_arrays`) and the scratch ``selbuf`` for what a selector finds. Registers that
+(:mod:`emulator.vm.entity_arrays`) and the scratch ``selbuf`` for what a selector finds; and the
+numbers of command storage the program names, ``lmeta``/``lvalues`` (:mod:`emulator.vm.storage_leaves`). Registers that
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
 the fork loop flag) are saved in the frame and restored on return.
 
@@ -96,68 +97,84 @@ OP_LOG = 14  # [entry] a: host op index, b: selector. `tellraw SEL`: fails when 
 # EntityArgument.getPlayers), else its result is the count. The line is queued in logbuf (op, context) either way: the
 # host's tellraw decides what is written, when the VM returns (before Python serves anything else, so the log keeps
 # its order)
-OP_GETPOS = 15  # [entry] a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: Mth.floor
-OP_TP = 16  # [entry] a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` axes' bits,
+OP_GETFIELD = 15  # [entry] a: column of the entity floats (entity_table EF_*), b: scale (index into floats), c: host op
+# index. `data get entity @s PATH [S]` on a numeric field the table keeps (Pos, Motion, Rotation, a display's
+# transformation): Mth.floor(value * S); an entity without that field (transformation on another type) goes to the
+# host
+OP_SETLEAF = 16  # [entry] a: storage leaf (vm.storage_leaves), b: its number's type (LEAF_*), c: the number (index into
+# floats), d: host op index. `data modify storage S P set value N`: fails when the same number is there ("Nothing
+# changed"); no number there goes to the host (which creates the path)
+OP_GETLEAF = 17  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
+# [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host
+OP_TP = 18  # [entry] a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` axes' bits,
 # TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the execution position plus the relative
 # parts, or ^ from its anchor), each keeping its rotation (TP_SELF: the execution rotation; wrapped, the pitch
 # clamped) and losing its vertical motion; outside the spawnable bounds the command fails. Always followed by the
 # command's HOST, which runs it instead when a target goes to another level (the context's: the host moves it in the
 # order); TP skips it otherwise
-OP_SELHOLDERS = 17  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
+OP_SELHOLDERS = 19  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
 # op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
 # separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
-OP_IFSCORE = 18  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
-OP_IFMATCH = 19  # [condition] a h, b o, c lo, d hi, f negated, g final
-OP_IFENT = 20  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
-OP_IFDIM = 21  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
+OP_IFSCORE = 20  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
+OP_IFMATCH = 21  # [condition] a h, b o, c lo, d hi, f negated, g final
+OP_IFENT = 22  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
+OP_IFLEAF = 23  # [condition] a: storage leaf, b: type (LEAF_*), c: number (index into floats), f negated, g final.
+# `if|unless data storage S {K:N}`: the leaf holds N
+OP_IFDIM = 24  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
 # context's dimension (ctx_dim) is D
-OP_CHKOBJ = 22  # [stage] a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or
+OP_CHKOBJ = 25  # [stage] a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or
 # (c) without an executor ("No entity was found": the command, or in a forked chain this context)
-OP_STORE = 23  # [free] a: 0 result / 1 success, b h (a name or @s), c o
-OP_CALL = 24  # [entry] a: function id
-OP_CALLREG = 25  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
-OP_FEND = 26  # [free] end of a function body: return without a result
-OP_RETV = 27  # [check] a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain
+OP_STORE = 26  # [free] a: 0 result / 1 success, b h (a name or @s), c o
+OP_CALL = 27  # [entry] a: function id
+OP_CALLREG = 28  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
+OP_FEND = 29  # [free] end of a function body: return without a result
+OP_RETV = 30  # [check] a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain
 # every context returns (BuildContexts runs the custom command for each one): RETV counts the returns in R_NRET and
 # goes on; the chain's RETPEND then ends the function
-OP_RETFAIL = 28  # [check] b: as RETV. `return fail`
-OP_RETRES = 29  # [check] end of `return run CMD`: return CMD's result (fail if it had none)
-OP_RETNONE = 30  # [free] abort target of `return run`: end the function without a result
-OP_RETPEND = 31  # [free] after a forked chain ending in `return N|fail`: return, if some context did
-OP_RETIFHAS = 32  # [free] a: pc after the calls. `return run function #tag`: a member that returned skips the later
+OP_RETFAIL = 31  # [check] b: as RETV. `return fail`
+OP_RETRES = 32  # [check] end of `return run CMD`: return CMD's result (fail if it had none)
+OP_RETNONE = 33  # [free] abort target of `return run`: end the function without a result
+OP_RETPEND = 34  # [free] after a forked chain ending in `return N|fail`: return, if some context did
+OP_RETIFHAS = 35  # [free] a: pc after the calls. `return run function #tag`: a member that returned skips the later
 # members (the discard drops them); the chain's stores and RETRES follow
-OP_IFFN_STEP = 33  # [free] a: pc after the calls. A returned member ends the isolated call
-OP_IFNOFN = 34  # [free] a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no
+OP_IFFN_STEP = 36  # [free] a: pc after the calls. A returned member ends the isolated call
+OP_IFNOFN = 37  # [free] a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no
 # context) skips the rest of the call (the command fails)
-OP_TAGBEGIN = 35  # [free] acc_any = 0, acc_sum = 0
-OP_TAGACC = 36  # [free] add the last call's result to the accumulator
-OP_TAGEND = 37  # [check] the tag's result: the sum, if any member returned
-OP_IFFN_BEGIN = 38  # [free] has = 0
-OP_IFFN_END = 39  # [free] a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that
+OP_TAGBEGIN = 38  # [free] acc_any = 0, acc_sum = 0
+OP_TAGACC = 39  # [free] add the last call's result to the accumulator
+OP_TAGEND = 40  # [check] the tag's result: the sum, if any member returned
+OP_IFFN_BEGIN = 41  # [free] has = 0
+OP_IFFN_END = 42  # [free] a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that
 # returned in several contexts passes the context once per return (ST_REPEAT)
-OP_FAIL = 40  # [operand] a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
-OP_RESULT = 41  # [free] a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
-OP_JMPDEAD = 42  # [free] a: target. `run return run ...` with no context left: skip it
-OP_STOP = 43  # [free] abort the chain without an error (`if function` on an empty tag)
-OP_STOREPOS = 44  # [free] a: axis, b: 0 result / 1 success, c: scale (index into floats). Pos[a] = (double)(v * S)
-OP_MACRO = 45  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
-OP_HOSTSTAGE = 46  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
-OP_HOSTSTORE = 47  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 48  # [stage] a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned
+OP_FAIL = 43  # [operand] a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
+OP_RESULT = 44  # [free] a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
+OP_JMPDEAD = 45  # [free] a: target. `run return run ...` with no context left: skip it
+OP_STOP = 46  # [free] abort the chain without an error (`if function` on an empty tag)
+OP_STOREFIELD = 47  # [free] a: column (EF_*), b: 0 result / 1 success, c: scale (index into floats), d: host op index.
+# `store ... entity @s PATH TYPE S` into a field the table keeps, as Entity.load reads it back (Pos clamped, Motion
+# over 10 dropped, Rotation % 360, a display's transformation as float); another type's transformation goes to the
+# host; a player's data is not modified
+OP_MACRO = 48  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
+OP_HOSTSTAGE = 49  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
+OP_HOSTSTORE = 50  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_ASSTAGE = 51  # [stage] a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned
 # as, rotated as). One context per entity found, made by the VM (or one it made earlier in the root that still holds:
 # as_cache); ST_GROWCTX when the context table or the fork stack is full
-OP_POSITIONED = 49  # [stage] a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, TP_LOCAL).
+OP_POSITIONED = 52  # [stage] a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, TP_LOCAL).
 # `positioned X Y Z`: the context at that position, anchored at the feet (made by the VM, or one it made before from
 # the same context and pc)
-OP_POSSTAGE = 50  # [stage] b forked. The `store ... entity @s Pos[i] double S` stage: fails without an executor
+OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
+# TYPE S`: fails without an executor) or a STORELEAF
+OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
+# host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there goes to the host
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
-FIRST_LINE, LAST_LINE = 8, 16
-FIRST_CONDITION, LAST_CONDITION = 18, 21
-FIRST_CALL, LAST_CALL = 24, 25
-FIRST_RETURN, LAST_RETURN = 26, 31
-FIRST_RETURNED, LAST_RETURNED = 32, 33
-FIRST_OPERATION, LAST_OPERATION = 51, 59
+FIRST_LINE, LAST_LINE = 8, 18
+FIRST_CONDITION, LAST_CONDITION = 20, 24
+FIRST_CALL, LAST_CALL = 27, 28
+FIRST_RETURN, LAST_RETURN = 29, 34
+FIRST_RETURNED, LAST_RETURNED = 35, 36
+FIRST_OPERATION, LAST_OPERATION = 55, 63
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -217,8 +234,11 @@ EF_PITCH = 7
 EF_HALF = 8
 EF_HEIGHT = 9
 EF_EYE = 10
-EF_WIDTH = 11
+EF_TRANSFORM = 11
+EF_WIDTH = 25
 PLAYER_TYPE = 0
+FIRST_DISPLAY_TYPE = 1
+LAST_DISPLAY_TYPE = 3
 MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
 # selector rows (emulator.vm.entity_arrays): kind (every entity, or @s), limit, its tests (first,
 # count), sort (SORT_*), players only, a box test, a distance test, limited to the context's level
@@ -236,9 +256,13 @@ KIND_E, KIND_S = range(2)
 SORT_ARBITRARY, SORT_NEAREST, SORT_FURTHEST = range(3)
 TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS, TEST_TYPES, TEST_MEMBER = range(6)
 POS_LIMIT_XZ, POS_LIMIT_Y = 3.0000512e7, 2.0e7  # Entity.load clamps positions to these
+MAX_LOADED_MOTION = 10.0  # and drops motion components past this
 # OP_TP's flags besides the relative axes (1, 2, 4): local coordinates; `tp POS` (the executor,
 # turned to the execution rotation)
 TP_LOCAL, TP_SELF = 8, 16
+# storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty], lvalues[leaf] = the number;
+# type 0: no byte, short, int, float or double there
+LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
 
 
 @njit(cache=True, inline="always")
@@ -531,7 +555,7 @@ def _jittable(fn):
     overload(fn)(typing)
 
 
-for _fn in (semantics.double_to_int, mth.java_float_rem, mth._table_index, mth.sin_of, mth.cos_of):
+for _fn in (semantics.double_to_int, semantics.double_to_short, semantics.double_to_byte, mth.java_float_rem, mth._table_index, mth.sin_of, mth.cos_of):
     _jittable(_fn)
 _wrap_degrees_f = njit(cache=True)(mth.wrap_degrees_f)
 _clamp_f = njit(cache=True)(mth.clamp_f)
@@ -584,10 +608,55 @@ def _clamp_pos(v, limit):
     return t if t > -limit else -limit
 
 
+@njit(cache=True, inline="always")
+def _is_display(type_id):
+    return FIRST_DISPLAY_TYPE <= type_id <= LAST_DISPLAY_TYPE
+
+
+_java_float_rem = njit(cache=True)(mth.java_float_rem)
+
+
+@njit(cache=True)
+def _stored_number(kind, x):
+    """``stores.stored_tag``'s number: (TYPE) of the double ``x`` for LEAF_* ``kind``, as a double."""
+    if kind == LEAF_BYTE:
+        return np.float64(semantics.double_to_byte(x))
+    if kind == LEAF_SHORT:
+        return np.float64(semantics.double_to_short(x))
+    if kind == LEAF_INT:
+        return np.float64(semantics.double_to_int(x))
+    if kind == LEAF_FLOAT:
+        return np.float64(np.float32(x))
+    return x
+
+
+@njit(cache=True)
+def _store_field(efloats, e, column, v):
+    """Entity ``e``'s field ``column`` after storing the double ``v`` (the result times the scale,
+    as a double for Pos and Motion, a float for Rotation and a display's transformation) and loading
+    the NBT back (``entities.load_nbt``): Pos clamped, Motion components over 10 dropped, Rotation's
+    finite components kept and both taken % 360 (``rotation.load_rotation``)."""
+    if column <= EF_Z:
+        efloats[e, column] = _clamp_pos(v, POS_LIMIT_Y if column == EF_Y else POS_LIMIT_XZ)
+    elif column <= EF_MZ:
+        efloats[e, column] = v
+        for axis in range(EF_MX, EF_MZ + 1):
+            if abs(efloats[e, axis]) > MAX_LOADED_MOTION:
+                efloats[e, axis] = 0.0
+    elif column <= EF_PITCH:
+        f = np.float32(v)
+        if np.isfinite(f):
+            efloats[e, column] = f
+        efloats[e, EF_YAW] = _java_float_rem(np.float32(efloats[e, EF_YAW]), 360.0)
+        efloats[e, EF_PITCH] = _java_float_rem(np.float32(efloats[e, EF_PITCH]), 360.0)
+    else:
+        efloats[e, column] = np.float32(v)
+
+
 @njit(cache=True, error_model="numpy")
 def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
         active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf, logbuf, fstack, coll,
-        as_cache, batch):
+        as_cache, batch, lmeta, lvalues):
     """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -856,6 +925,10 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                             efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
+            elif op == OP_IFLEAF:  # compareNbt of {K:N}: the same type and number
+                leaf = code[pc, 1]
+                passed = (lmeta[leaf, 0] == code[pc, 2] and lvalues[leaf] == floats[code[pc, 3]]) != (code[pc, 6] != 0)
+                fval = 1 if passed else 0
             elif op == OP_IFDIM:  # ExecuteCommand: the dimension is the source's level
                 passed = (cints[ctx, CI_DIM] == code[pc, 1]) != (code[pc, 6] != 0)
                 fval = 1 if passed else 0
@@ -1163,17 +1236,43 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     efloats[e, EF_MY] = 0.0
                 ok = 1
                 val = n
-            elif op == OP_GETPOS:
+            elif op == OP_GETFIELD:
                 e = cints[ctx, CI_ENTITY]
+                column = code[pc, 1]
+                if e >= 0 and column >= EF_TRANSFORM and not _is_display(eints[e, EI_TYPE]):
+                    status = ST_HOST  # no such field: the host's `data get` fails as the game's does
+                    break
                 has = 1
                 ok = 0
                 val = 0
                 if e >= 0:  # else "No entity was found"
-                    x = efloats[e, EF_X + code[pc, 1]]
-                    if code[pc, 2] >= 0:
-                        x = x * floats[code[pc, 2]]
                     ok = 1
-                    val = _mth_floor(x)
+                    val = _mth_floor(efloats[e, column] * floats[code[pc, 2]])
+                pc += 1
+            elif op == OP_SETLEAF:
+                leaf = code[pc, 1]
+                if lmeta[leaf, 0] == 0:  # no number there: the host's set creates the path or fails
+                    status = ST_HOST
+                    break
+                has = 1
+                ok = 0
+                val = 0
+                v = floats[code[pc, 3]]
+                if lmeta[leaf, 0] != code[pc, 2] or lvalues[leaf] != v:  # else "Nothing changed"
+                    lmeta[leaf, 0] = code[pc, 2]
+                    lmeta[leaf, 1] = 1
+                    lvalues[leaf] = v
+                    ok = 1
+                    val = 1
+                pc += 1
+            elif op == OP_GETLEAF:
+                leaf = code[pc, 1]
+                if lmeta[leaf, 0] == 0:  # a list's size, a string's length, a failure: the host's
+                    status = ST_HOST
+                    break
+                has = 1
+                ok = 1
+                val = _mth_floor(lvalues[leaf] * floats[code[pc, 2]])
                 pc += 1
             else:  # OP_LOG
                 n = _select(code[pc, 2], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
@@ -1253,12 +1352,12 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_ERROR
                 break
             pc += 1
-        elif op == OP_POSSTAGE:
+        elif op == OP_FIELDSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1
                 if counting:
                     counts[pc] += 1
-            if alive and cints[ctx, CI_ENTITY] < 0:  # "No entity was found": the command, or this context, fails
+            if alive and code[pc, 1] and cints[ctx, CI_ENTITY] < 0:  # "No entity was found": the command, or this context, fails
                 alive = 0
                 pc = pc + 1 if code[pc, 2] else abort
                 continue
@@ -1270,13 +1369,26 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 status = ST_ERROR
                 break
             pc += 1
-        elif op == OP_STOREPOS:
+        elif op == OP_STOREFIELD:
             e = cints[ctx, CI_ENTITY]
             if alive and has and e >= 0 and eints[e, EI_TYPE] != PLAYER_TYPE:  # a player's data cannot be modified
+                column = code[pc, 1]
+                if column >= EF_TRANSFORM and not _is_display(eints[e, EI_TYPE]):
+                    status = ST_HOST  # no transformation to store into: the host's store does what the game does
+                    break
                 stored = (val if ok else 0) if code[pc, 2] == 0 else ok
-                axis = code[pc, 1]
-                efloats[e, EF_X + axis] = _clamp_pos(np.float64(stored) * floats[code[pc, 3]],
-                                                     POS_LIMIT_Y if axis == 1 else POS_LIMIT_XZ)
+                _store_field(efloats, e, column, np.float64(stored) * floats[code[pc, 3]])
+            pc += 1
+        elif op == OP_STORELEAF:
+            if alive and has:
+                leaf = code[pc, 1]
+                if lmeta[leaf, 0] == 0:  # no number there: the host's store creates the path
+                    status = ST_HOST
+                    break
+                stored = (val if ok else 0) if code[pc, 2] == 0 else ok
+                lvalues[leaf] = _stored_number(code[pc, 4], np.float64(stored) * floats[code[pc, 3]])
+                lmeta[leaf, 0] = code[pc, 4]
+                lmeta[leaf, 1] = 1
             pc += 1
         elif op == OP_STORE:
             if alive and has:

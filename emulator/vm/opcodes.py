@@ -83,8 +83,16 @@ _ROWS = [
                              "(TellRawCommand: EntityArgument.getPlayers), else its result is the count. The line is "
                              "queued in logbuf (op, context) either way: the host's tellraw decides what is written, "
                              "when the VM returns (before Python serves anything else, so the log keeps its order)"),
-        ("GETPOS", "i", ENTRY, "a: axis, b: scale (index into floats, -1 none). `data get entity @s Pos[a] [S]`: "
-                               "Mth.floor"),
+        ("GETFIELD", "idx", ENTRY, "a: column of the entity floats (entity_table EF_*), b: scale (index into floats), c: "
+                                  "host op index. `data get entity @s PATH [S]` on a numeric field the table keeps "
+                                  "(Pos, Motion, Rotation, a display's transformation): Mth.floor(value * S); an "
+                                  "entity without that field (transformation on another type) goes to the host"),
+        ("SETLEAF", "iidx", ENTRY, "a: storage leaf (vm.storage_leaves), b: its number's type (LEAF_*), c: the "
+                                   "number (index into floats), d: host op index. `data modify storage S P set value "
+                                   "N`: fails when the same number is there (\"Nothing changed\"); no number there "
+                                   "goes to the host (which creates the path)"),
+        ("GETLEAF", "idx", ENTRY, "a: storage leaf, b: scale (index into floats), c: host op index. `data get "
+                                  "storage S P [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host"),
         ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` "
                              "axes' bits, TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the "
                              "execution position plus the relative parts, or ^ from its anchor), each keeping its "
@@ -101,6 +109,8 @@ _ROWS = [
         ("IFSCORE", "choho" + "bb", CONDITION, "a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final"),
         ("IFMATCH", "hoii_bb", CONDITION, "a h, b o, c lo, d hi, f negated, g final"),
         ("IFENT", "s____bb", CONDITION, "a: selector, f negated, g final. `if|unless entity SEL`"),
+        ("IFLEAF", "iid__bb", CONDITION, "a: storage leaf, b: type (LEAF_*), c: number (index into floats), f "
+                                         "negated, g final. `if|unless data storage S {K:N}`: the leaf holds N"),
         ("IFDIM", "l____bb", CONDITION, "a: dimension (Program.dimensions), f negated, g final. `if|unless "
                                         "dimension D`: the context's dimension (ctx_dim) is D"),
     ]),
@@ -142,8 +152,11 @@ _ROWS = [
     *_single("RESULT", "bi", FREE, "a: ok, b: value. The result of `return N|fail` ending a chain, for its stores"),
     *_single("JMPDEAD", "p", FREE, "a: target. `run return run ...` with no context left: skip it"),
     *_single("STOP", "", FREE, "abort the chain without an error (`if function` on an empty tag)"),
-    *_single("STOREPOS", "ibd", FREE, "a: axis, b: 0 result / 1 success, c: scale (index into floats). "
-                                      "Pos[a] = (double)(v * S)"),
+    *_single("STOREFIELD", "ibdx", FREE, "a: column (EF_*), b: 0 result / 1 success, c: scale (index into floats), "
+                                         "d: host op index. `store ... entity @s PATH TYPE S` into a field the table "
+                                         "keeps, as Entity.load reads it back (Pos clamped, Motion over 10 dropped, "
+                                         "Rotation % 360, a display's transformation as float); another type's "
+                                         "transformation goes to the host; a player's data is not modified"),
     *_single("MACRO", "m", FREE, "a: macro call index. Python instantiates, sets regs[R_CALLFN]"),
     *_single("HOSTSTAGE", "xb", STAGE, "a: host op index, b forked. An execute stage run by Python: sets alive, "
                                        "R_CTX"),
@@ -155,8 +168,11 @@ _ROWS = [
     *_single("POSITIONED", "di", STAGE, "a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, "
                                         "TP_LOCAL). `positioned X Y Z`: the context at that position, anchored at the "
                                         "feet (made by the VM, or one it made before from the same context and pc)"),
-    *_single("POSSTAGE", "_b", STAGE, "b forked. The `store ... entity @s Pos[i] double S` stage: fails without an "
-                                      "executor"),
+    *_single("FIELDSTAGE", "bb", STAGE, "a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... "
+                                        "entity @s PATH TYPE S`: fails without an executor) or a STORELEAF"),
+    *_single("STORELEAF", "ibdix", FREE, "a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), "
+                                         "d: type (LEAF_*), e: host op index. `store ... storage S P TYPE SCALE`: "
+                                         "(TYPE)(result * SCALE); no number there goes to the host"),
     *_family("operation", [(f"OPER{symbol}", "hoho", ENTRY, f"a h1, b o1, c h2, d o2. `{symbol}`")
                            for _, symbol in OPERATIONS]),
 ]

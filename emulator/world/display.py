@@ -10,6 +10,8 @@ value, numbers are converted to the saved type, ``teleport_duration`` is clamped
 - ``default_fields(type_id)``: the fields a new display saves.
 - ``read_fields(type_id, nbt, previous)``: the fields after loading ``nbt`` over ``previous``.
 - ``NOT_SAVED``: fields a display reads but does not save.
+- ``transformation_columns(tag)`` / ``transformation_tag(values)``: the decomposed ``transformation``
+  as the 14 numbers the entity table keeps (translation, left rotation, scale, right rotation) and back.
 
 ``transformation`` is read in its decomposed form (quaternion or ``{angle, axis}`` rotations) or as
 16 numbers, a row-major matrix decomposed as the game decomposes it (:mod:`emulator.world.matrix`);
@@ -82,6 +84,31 @@ def _transformation(value, previous: Compound) -> Compound:
             return copy_tag(previous)
         parts[key] = _floats(part)
     return parts
+
+
+def transformation_columns(tag: Compound) -> list[float]:
+    """The decomposed transformation (as ``read_fields`` leaves it) as 14 numbers, in codec order."""
+    return [float(v) for key, _ in _TRANSFORM for v in tag[key]]
+
+
+def transformation_tag(values) -> Compound:
+    """The transformation compound of 14 float32 numbers in codec order (as saved)."""
+    parts, i = Compound(), 0
+    for key, default in _TRANSFORM:
+        parts[key] = List(Float(v) for v in values[i:i + len(default)])
+        i += len(default)
+    return parts
+
+
+def _parts() -> dict[str, tuple[int, int]]:
+    parts, start = {}, 0
+    for key, default in _TRANSFORM:
+        parts[key] = (start, len(default))
+        start += len(default)
+    return parts
+
+
+TRANSFORM_PARTS = _parts()  # part -> (its first of the 14 numbers, its size)
 
 
 def read_fields(type_id: str, nbt: Compound, previous: Compound) -> Compound:

@@ -49,7 +49,8 @@ from emulator.world import display, living, rotation
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
 from emulator.world.entity_table import (
-    EF_EYE, EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM, EI_JOIN, EntityTable, TagSet,
+    EF_EYE, EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_TRANSFORM, EF_WIDTH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM,
+    EI_JOIN, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import player_defaults, selected_item
@@ -165,6 +166,8 @@ class Entity:
         table.floats[slot, EF_PITCH] = pitch
         table.ints[slot, EI_ALIVE] = int(alive)
         table.floats[slot, EF_HALF:EF_EYE + 1] = self.sizes()
+        if self.type in display.DISPLAY_TYPES:
+            table.floats[slot, EF_TRANSFORM:EF_WIDTH] = display.transformation_columns(self.data["transformation"])
         self._table = table
         self._own = TagSet(table, slot)
         self._own.replace(tags)
@@ -327,6 +330,8 @@ def entity_nbt(entity: Entity) -> Compound:
     nbt["Motion"] = List(Double(v) for v in entity.motion)
     nbt["Rotation"] = List([Float(float(entity.yaw)), Float(float(entity.pitch))])
     nbt.update(copy_tag(entity.data))
+    if _columns_hold_transformation(entity):
+        nbt["transformation"] = _saved_transformation(entity)
     nbt["UUID"] = IntArray(Int(v) for v in entity.uuid)
     if entity.custom_name is not None:
         nbt["CustomName"] = String(entity.custom_name)
@@ -340,6 +345,16 @@ def entity_nbt(entity: Entity) -> Compound:
     if entity.is_player and (held := selected_item(entity.data)) is not None:
         nbt["SelectedItem"] = held  # NbtPredicate.getEntityTagForPredicate, what data and nbt= read
     return nbt
+
+
+def _columns_hold_transformation(entity: Entity) -> bool:
+    """A stored display entity keeps its transformation in the table (the VM writes it there):
+    ``data["transformation"]`` only marks its place among the saved fields."""
+    return entity._table is not None and entity.type in display.DISPLAY_TYPES
+
+
+def _saved_transformation(entity: Entity) -> Compound:
+    return display.transformation_tag(entity._table.floats[entity.order, EF_TRANSFORM:EF_WIDTH].tolist())
 
 
 def _passenger_nbt(entity: Entity) -> Compound:
@@ -426,10 +441,16 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
         entity.custom_name = str(name)
     if isinstance(nbt.get("Tags"), List):
         entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
-    data = _base_fields(entity.type, nbt, entity.data)
+    previous = entity.data
+    if _columns_hold_transformation(entity):
+        previous = Compound(previous)
+        previous["transformation"] = _saved_transformation(entity)
+    data = _base_fields(entity.type, nbt, previous)
     dropped = set(_MODELLED) | set(FLAG_FIELDS) | (set(display.NOT_SAVED) if entity.type in display.DISPLAY_TYPES else set())
     data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in data and k not in dropped)
     entity.data = data
+    if _columns_hold_transformation(entity):
+        entity._table.floats[entity.order, EF_TRANSFORM:EF_WIDTH] = display.transformation_columns(data["transformation"])
     entity.refresh_sizes()  # an armor stand's Marker or Small, a baby's Age, the scale attribute
 
 

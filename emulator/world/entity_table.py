@@ -12,7 +12,9 @@ context made for it still reaches it, as the game's source keeps its entity obje
 - ``floats`` (float64 ``[slots, EF_WIDTH]``): position ``EF_X..EF_Z``, motion ``EF_MX..EF_MZ``,
   rotation ``EF_YAW``/``EF_PITCH`` (float32 values, exact in a double), the hitbox's half width and
   height and the eye height ``EF_HALF``/``EF_HEIGHT``/``EF_EYE`` (``Entity.sizes``, kept by ``attach``
-  and ``load_nbt``);
+  and ``load_nbt``); a display entity's ``transformation`` from ``EF_TRANSFORM``: translation (3),
+  left rotation (4), scale (3), right rotation (4), float32 values (``display.transformation_columns``;
+  the entity's NBT reads them there);
 - ``tags`` (int64 ``[slots, words]``): a bitset per entity over the interned tag names (tag ``t`` is
   bit ``t & 63`` of word ``t >> 6``); interning a tag past the last word adds one, so there is no
   limit on the tags of an entity or of a pack;
@@ -30,13 +32,17 @@ from typing import Callable, Iterable
 import numpy as np
 
 from emulator.world.dimensions import Levels
+from emulator.world.display import DISPLAY_TYPES
 
 EI_TYPE, EI_HOLDER, EI_ALIVE, EI_DIM, EI_JOIN = range(5)
 EI_WIDTH = 5
-EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH, EF_HALF, EF_HEIGHT, EF_EYE = range(11)
-EF_WIDTH = 11
+EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH, EF_HALF, EF_HEIGHT, EF_EYE, EF_TRANSFORM = range(12)
+EF_WIDTH = EF_TRANSFORM + 14
+# type ids interned first: the player, then the display entities (their transformation columns)
 PLAYER_TYPE = 0
-LAYOUT = {name: value for name, value in globals().items() if name.startswith(("EI_", "EF_")) or name == "PLAYER_TYPE"}
+FIRST_DISPLAY_TYPE, LAST_DISPLAY_TYPE = 1, 1 + len(DISPLAY_TYPES) - 1
+LAYOUT = {name: value for name, value in globals().items()
+          if name.startswith(("EI_", "EF_")) or name in ("PLAYER_TYPE", "FIRST_DISPLAY_TYPE", "LAST_DISPLAY_TYPE")}
 
 _MASK64 = 0xFFFFFFFFFFFFFFFF
 
@@ -59,6 +65,7 @@ class EntityTable:
         self.tag_ids: dict[str, int] = {}
         self.tag_names: list[str] = []
         self.type_ids: dict[str, int] = {"minecraft:player": PLAYER_TYPE}
+        self.type_ids.update((name, FIRST_DISPLAY_TYPE + i) for i, name in enumerate(DISPLAY_TYPES))
         self.uuids: dict[tuple, list] = {}  # UUID -> the living entities that have it
         self.intern_holder: Callable[[str], int] | None = None  # the scoreboard's holder_id
         self.levels = Levels()  # the numbers of EI_DIM (the packs' dimensions are added at load)

@@ -45,6 +45,7 @@ from emulator.world.block_ticks import BlockTicks
 from emulator.world.random_sequences import RandomSequences
 from emulator.world.records import Frame, LogEntry, Overflow, RuntimeDiagnostic
 from emulator.world.resources import Resources
+from emulator.world.storage import StorageData
 from mcfunction_parser.diagnostics import Loc
 
 # Criteria whose scores only the game sets (ObjectiveCriteria with readOnly=true).
@@ -412,7 +413,7 @@ class WorldState:
     log: list[LogEntry] = field(default_factory=list)
     diagnostics: list[RuntimeDiagnostic] = field(default_factory=list)
     overflows: list[Overflow] = field(default_factory=list)
-    storage: dict = field(default_factory=dict)  # storage id -> nbt.Compound
+    storage: StorageData = field(default_factory=StorageData)  # storage id -> nbt.Compound
     # the world's entities (creation order, UUIDs, seeded RNG) and blocks: see emulator.commands.entities
     entities: EntityStore = field(default_factory=EntityStore)
     blocks: BlockMap = field(default_factory=BlockMap)  # the overworld's; blocks_in(dimension) for any level's

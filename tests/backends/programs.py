@@ -66,10 +66,11 @@ non_negative = st.one_of(st.sampled_from((0, 1, 2, 7, 65536, INT_MAX)), st.integ
 MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
 # With entities: three markers summoned by t:f0, tagged m+a, m, n, an armor stand tagged m, a
 # marker tagged m in the nether (selectors with a position, volume or distance search the context's
-# level only), and a trigger objective t
+# level only), an item display tagged d, and a trigger objective t
 ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"]}',
                 'summon marker ~ ~1 ~5 {Tags:["n"]}', 'summon armor_stand ~1 ~ ~1 {Tags:["m"]}',
                 'execute in minecraft:the_nether run summon marker ~ ~ ~1 {Tags:["m","nether"]}',
+                'summon item_display ~-1 ~ ~ {Tags:["d"],Rotation:[30f,10f]}',
                 "scoreboard objectives add t trigger")
 # (the VM evaluates @e/@a/@s/@p/@n with type, #type, tag, scores, x/y/z, volumes, distance, limit and
 # sort nearest/furthest itself; random sorts, names, rotations ... go to the host)
@@ -110,7 +111,21 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "tp @e[x=0,y=0,z=0,distance=..4] ~ ~0.5 ~", "execute in minecraft:the_nether run tp @s ~ ~ ~1",
                    "execute in minecraft:the_end run tp @e[tag=n] ~ ~ ~", "tp @s @e[tag=nether,limit=1]",
                    'execute in minecraft:the_end run summon marker ~ ~ ~ {Tags:["m","n"]}',
-                   "execute if dimension minecraft:the_nether run tag @s add q")
+                   "execute if dimension minecraft:the_nether run tag @s add q",
+                   # numeric fields the entity table keeps: a display's transformation, Rotation, Motion
+                   "execute as @e[tag=d] store result entity @s transformation.scale[1] float 0.125 run "
+                   "scoreboard players get #a o",
+                   "execute store result entity @s transformation.translation[0] float -0.5 run scoreboard players get #a o",
+                   "execute store success entity @s transformation.left_rotation[-1] double 3 if entity @e[tag=a]",
+                   "execute store result entity @s Rotation[0] float 1 run scoreboard players get #a o",
+                   "execute store success entity @s Rotation[1] float 1000000000000000000000000000000000000000 if entity @e[tag=a]",
+                   "execute store result entity @s Motion[2] double 0.01 run scoreboard players get #a o",
+                   "execute store result entity @s Motion[0] int 1 run scoreboard players get #a o",
+                   "execute store result score #e o run data get entity @s transformation.scale[1] 1000",
+                   "execute as @e[tag=d] store result score @s p run data get entity @s transformation.scale[1] 1000",
+                   "execute store result score #f o run data get entity @s Rotation[0] 10",
+                   "execute store result score #g p run data get entity @s Motion[-1] 100",
+                   "execute as @e[tag=d] run data get entity @s transformation.right_rotation[3]")
 # t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
@@ -331,7 +346,7 @@ class Outcome:
     log: tuple
     diagnostics: tuple
     line_costs: dict  # {(file name, line): cost charged there}
-    entities: tuple = ()  # (uuid, type, pos, sorted tags, dimension) of every entity, in the store's order
+    entities: tuple = ()  # (uuid, type, pos, sorted tags, dimension, its NBT) of every entity, in the store's order
     storage: dict = None  # {storage id: SNBT}
     schedules: tuple = ()  # (name, due) of every pending schedule, in run order
     gamerules: dict = None
@@ -342,6 +357,7 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
     """Load ``pack`` and run ``entry`` as one root on a fresh world; ``scores`` seeds
     ``{(holder, objective): value}`` first; ``limit`` sets maxCommandChainLength."""
     from emulator.runtime.factory import make_backend
+    from emulator.world.entities import entity_nbt
     from emulator.world.state import WorldState
     from mcfunction_parser.pack.loader import load_packs
 
@@ -365,7 +381,8 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
         log=tuple((e.kind, e.text) for e in state.log),
         diagnostics=tuple((d.message, tuple((f.function, f.loc.line) for f in d.frames)) for d in state.diagnostics),
         line_costs={(Path(path).name, line): n for (path, line), n in backend.line_counts().items() if n},
-        entities=tuple((e.uuid_string, e.type, e.pos, tuple(sorted(e.tags)), e.dimension) for e in state.entities.entities),
+        entities=tuple((e.uuid_string, e.type, e.pos, tuple(sorted(e.tags)), e.dimension, to_snbt(entity_nbt(e)))
+                       for e in state.entities.entities),
         storage={sid: to_snbt(root) for sid, root in state.storage.items()},
         schedules=tuple((e.name, e.due) for e in state.schedule.pending()),
         gamerules=dict(state.gamerules.values),

@@ -91,7 +91,7 @@ def test_host_commands_are_listed_with_counts(demo):
 # stores only Pos) is never charged, so only the backend's record of host runs can list it
 HOST_ONLY = {
     "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nsummon marker\nsummon marker\n",
-    "demo/function/tick.mcfunction": "execute as @e[type=marker] store result entity @s Rotation[0] float 1 "
+    "demo/function/tick.mcfunction": "execute as @e[type=marker] store result entity @s Air short 1 "
                                      "run scoreboard players add $t o 1\n"
                                      "execute as @e[type=marker] run tp @s ^ ^ ^1 ~10 ~\n",
 }
@@ -104,7 +104,7 @@ def test_host_run_stores_and_teleports_are_listed_with_their_runs(pack):
     # 2 markers x 3 ticks: the store runs after each add, the teleport once per marker
     store = by_kind[(1, "store")]
     assert store["count"] == 6 and store["function"] == "demo:tick" and store["path"].endswith("tick.mcfunction")
-    assert store["command"].startswith("execute as @e[type=marker] store result entity @s Rotation[0]")
+    assert store["command"].startswith("execute as @e[type=marker] store result entity @s Air")
     assert by_kind[(2, "command")]["count"] == 6 and by_kind[(2, "command")]["command"].endswith("tp @s ^ ^ ^1 ~10 ~")
     assert not [h for h in host if h["function"] == "demo:init"]  # the load's summons are not listed
     table = profile(root, "--ticks", 3).output

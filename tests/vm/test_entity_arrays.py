@@ -125,7 +125,7 @@ def test_the_forms_compile_to_vm_instructions(tmp_path):
                                               "execute store result entity @s Pos[0] double 0.5 run data get entity @s Pos[1]"})
     emu.call("t:main")
     ops = {row[0] for row in emu.backend.program.rows}
-    assert {vm.OP_ASSTAGE, vm.OP_TAG, vm.OP_IFENT, vm.OP_ENABLE, vm.OP_POSSTAGE, vm.OP_STOREPOS, vm.OP_GETPOS} <= ops
+    assert {vm.OP_ASSTAGE, vm.OP_TAG, vm.OP_IFENT, vm.OP_ENABLE, vm.OP_FIELDSTAGE, vm.OP_STOREFIELD, vm.OP_GETFIELD} <= ops
     assert [type(run.node).__name__ for run in emu.backend.host_ops_run()] == ["ObjectivesAdd"] * 3 + ["Summon"] * 4
 
 

@@ -1,0 +1,132 @@
+"""Numbers in entity NBT and command storage that the VM reads and writes itself: Pos, Motion,
+Rotation and a display's transformation (columns of the entity table), and storage leaves
+(emulator.vm.storage_leaves). Each form runs without a host op when the number is there, and
+agrees with the reference backend, which saves the NBT, edits it and loads it back.
+
+Sources (decompiled 1.21): server/commands/ExecuteCommand.java (storeData), server/commands/data/
+DataCommands.java (getNumeric: Mth.floor; manipulateData: "Nothing changed"), world/entity/Entity.java
+(load: Pos clamped, Motion over 10 dropped, Rotation's finite parts % 360), world/entity/Display.java
+(readAdditionalSaveData: the transformation's floats), commands/arguments/NbtPathArgument.java
+(CompoundChildNode.set, the root filter's compareNbt).
+"""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from emulator.world.entities import entity_nbt
+from mcfunction_parser.nbt import to_snbt
+from tests.vm.helpers import emulator_for
+
+SETUP = ("scoreboard objectives add o dummy\n"
+         'summon item_display 0 0 0 {Tags:["d"],Rotation:[30f,10f],transformation:{translation:[0f,0.5f,0f],'
+         'left_rotation:[0f,0f,0f,1f],scale:[0.25f,0.25f,0.25f],right_rotation:[0f,0f,0f,1f]}}\n'
+         'summon marker 1 0 0 {Tags:["m"],Motion:[0.5d,0d,0d]}\n')
+
+
+def _run_both(tmp_path, body: str):
+    """t:main (SETUP first) on both backends; the numba emulator, after checking they agree."""
+    emus = {}
+    for backend in ("numba", "python"):
+        emu = emulator_for(tmp_path / backend, {"t:main": SETUP + body}, backend=backend)
+        emu.call("t:main")
+        emus[backend] = emu
+    numba, python = emus["numba"], emus["python"]
+    assert numba.scores() == python.scores()
+    assert [to_snbt(entity_nbt(e)) for e in numba.state.entities.entities] == \
+        [to_snbt(entity_nbt(e)) for e in python.state.entities.entities]
+    assert {k: to_snbt(v) for k, v in numba.state.storage.items()} == \
+        {k: to_snbt(v) for k, v in python.state.storage.items()}
+    assert [d.message for d in numba.diagnostics] == [d.message for d in python.diagnostics]
+    return numba
+
+
+def _host_commands(emu) -> list[str]:
+    return [type(run.node).__name__ for run in emu.backend.host_ops_run()]
+
+
+def test_display_transformation_stores_and_reads_run_in_the_vm(tmp_path):
+    emu = _run_both(tmp_path, "scoreboard players set #v o 7\n"
+                              "execute as @e[tag=d] store result entity @s transformation.scale[0] float 0.125 run "
+                              "scoreboard players get #v o\n"
+                              "execute as @e[tag=d] store result entity @s transformation.left_rotation[-1] float -0.1 "
+                              "run scoreboard players get #v o\n"
+                              "execute as @e[tag=d] store result score #s o run data get entity @s "
+                              "transformation.scale[0] 1000\n"
+                              "execute as @e[tag=d] store result score #t o run data get entity @s "
+                              "transformation.translation[1] 10\n"
+                              "execute as @e[tag=d] store result score #r o run data get entity @s "
+                              "transformation.left_rotation[3] 1000\n")
+    assert [emu.score(h, "o") for h in ("#s", "#t", "#r")] == [875, 5, -700]
+    t = entity_nbt(emu.state.entities.entities[0])["transformation"]
+    assert t["scale"] == [0.875, 0.25, 0.25] and t["left_rotation"][3] == float(np.float32(7 * -0.1))
+    assert sorted(_host_commands(emu)) == ["ObjectivesAdd", "Summon", "Summon"]  # the setup only
+
+
+def test_rotation_and_motion_are_read_back_as_entity_load_reads_them(tmp_path):
+    # Rotation: % 360 and an infinite part ignored; Motion: a component past 10 is dropped
+    emu = _run_both(tmp_path, "scoreboard players set #v o 725\n"
+                              "execute as @e store result entity @s Rotation[0] float 1 run scoreboard players get #v o\n"
+                              "execute as @e store result entity @s Rotation[1] float 1000000000000000000000000000000000000000 run "
+                              "scoreboard players get #v o\n"
+                              "execute as @e store result score @s o run data get entity @s Rotation[0] 10\n"
+                              "execute as @e store result entity @s Motion[1] double 0.001 run "
+                              "scoreboard players get #v o\n"
+                              "execute as @e[tag=m] store result entity @s Motion[2] double 0.1 run "
+                              "scoreboard players get #v o\n"
+                              "execute as @e[tag=m] store result score #m o run data get entity @s Motion[1] 1000\n")
+    assert emu.score("#m", "o") == 725
+    marker = emu.state.entities.entities[1]
+    assert marker.motion == (0.5, 0.725, 0.0) and float(marker.yaw) == 5.0 and float(marker.pitch) == 0.0
+    assert "Store" not in " ".join(_host_commands(emu))
+
+
+@pytest.mark.parametrize("line", [
+    "execute as @e[tag=m] store result entity @s transformation.scale[0] float 1 run scoreboard players get #v o",
+    "execute as @e[tag=m] store result score #x o run data get entity @s transformation.scale[0]",
+    "execute as @e[tag=d] store result entity @s Motion[0] int 1 run scoreboard players get #v o",
+    "execute store result entity @s Rotation[0] float 1 run scoreboard players get #v o",
+    "execute as @e[tag=d] store result score #x o run data get entity @s Rotation[5]",
+])
+def test_fields_an_entity_lacks_fail_as_in_the_reference(tmp_path, line):
+    # a marker has no transformation; Motion holds doubles (an int does not fit the list); the
+    # server has no entity; Rotation has two numbers
+    _run_both(tmp_path, "scoreboard players set #v o 3\nscoreboard players set #x o 99\n" + line)
+
+
+def test_storage_numbers_run_in_the_vm(tmp_path):
+    body = ("data modify storage t:s flag set value 1b\n"  # the first: the host creates it
+            "execute store success score #same o run data modify storage t:s flag set value 1b\n"
+            "execute store result score #set o run data modify storage t:s flag set value 0b\n"
+            "execute store success score #on o if data storage t:s {flag:1b}\n"
+            "execute store success score #off o unless data storage t:s {flag:1b}\n"
+            "scoreboard players set #v o -7\n"
+            "data modify storage t:s n set value 0\n"
+            "execute store result storage t:s n int 3 run scoreboard players get #v o\n"
+            "execute store result score #n o run data get storage t:s n\n"
+            "data modify storage t:s f set value 0f\n"
+            "execute store result storage t:s f float 0.1 run scoreboard players get #v o\n"
+            "execute store result score #f o run data get storage t:s f 100\n"
+            "execute store result storage t:s b byte 1 run scoreboard players set #w o 300\n"
+            "execute store result score #b o run data get storage t:s b\n"
+            "data merge storage t:s {flag:1b}\n"
+            "execute store success score #merged o if data storage t:s {flag:1b}\n")
+    emu = _run_both(tmp_path, body)
+    assert [emu.score(h, "o") for h in ("#same", "#set", "#on", "#off", "#n", "#f", "#b", "#merged")] == [
+        0, 1, 0, 1, -21, -70, 44, 1]
+    host = _host_commands(emu)
+    # the three `set`s and the store into b that create their numbers, the merge
+    assert host.count("DataModify") == 3 and host.count("DataMerge") == 1 and host.count("StoreData") == 1
+    assert "IfData" not in host and "DataGet" not in host
+
+
+def test_the_vm_reads_storage_changed_between_calls(tmp_path):
+    from mcfunction_parser.nbt import Byte, Compound
+
+    emu = emulator_for(tmp_path, {"t:main": "scoreboard objectives add o dummy\n"
+                                            "execute store success score #on o if data storage t:s {flag:1b}"})
+    emu.call("t:main")
+    assert emu.score("#on", "o") == 0
+    emu.state.storage["t:s"] = Compound(flag=Byte(1))
+    emu.call("t:main")
+    assert emu.score("#on", "o") == 1
