@@ -37,10 +37,10 @@ from emulator.vm.program import HostOp, MacroCall, Program
 from emulator.vm.storage_leaves import STORE_TYPES, key_path, number_code
 from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAs, ExAt, ExFacingEntity, Execute, ExOn, ExPositioned, ExPositionedAs,
+    Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAlign, ExAnchored, ExAs, ExAt, ExFacingEntity, ExRotated, Execute, ExOn, ExPositioned, ExPositionedAs,
     ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
     PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
-    StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec3,
+    StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec2, Vec3, Coord,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.world.source import world_coordinate
@@ -175,6 +175,13 @@ class Compiler:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
             elif isinstance(st, ExPositioned) and not last:
                 self.emit(vm.OP_POSITIONED, *self.coordinates(st.pos))
+            elif isinstance(st, ExRotated) and not last and "local" not in (st.rot.x.kind, st.rot.y.kind):
+                first = self.program.next_float
+                self.emit(vm.OP_CTXSTAGE, vm.CTX_ROTATED, self.angles(st.rot), first)
+            elif isinstance(st, ExAnchored) and not last:
+                self.emit(vm.OP_CTXSTAGE, vm.CTX_ANCHORED, vm.ANCHOR_EYES if st.anchor == "eyes" else vm.ANCHOR_FEET)
+            elif isinstance(st, ExAlign) and not last:
+                self.emit(vm.OP_CTXSTAGE, vm.CTX_ALIGN, sum(1 << "xyz".index(a) for a in st.axes))
             elif (column := _field_store(st)) is not None and _context_kept(stages[i + 1:], final):
                 self.emit(vm.OP_FIELDSTAGE, 1, int(forked))
                 stores.append(_FieldStore(st, column))
@@ -356,14 +363,23 @@ class Compiler:
         rotation). Absolute integer x/z are centred (+0.5), as Vec3Argument's ``WorldCoordinate.get``
         does (emulator.world.source)."""
         dest = cmd.destination
-        if (not isinstance(dest, Vec3) or cmd.rotation is not None or cmd.facing is not None
-                or cmd.facing_entity is not None):
+        if not isinstance(dest, Vec3) or cmd.facing is not None or cmd.facing_entity is not None:
             return None
         sel = self.selector(Selector("s", (), dest.loc) if cmd.targets is None else cmd.targets)
         if sel is None:
             return None
         first, flags = self.coordinates(dest)
+        rotation = self.angles(cmd.rotation or Vec2(Coord("abs", 0.0), Coord("abs", 0.0), dest.loc))
+        flags |= (vm.TP_REL_YAW if rotation & 1 else 0) | (vm.TP_REL_PITCH if rotation & 2 else 0)
+        if cmd.rotation is not None:
+            flags |= vm.TP_ROT
         return sel, first, flags | (vm.TP_SELF if cmd.targets is None else 0)
+
+    def angles(self, rot: Vec2) -> int:
+        """Intern a rotation's two angles (the next two floats); the bits of its relative ones."""
+        self.program.intern_float(rot.x.value)
+        self.program.intern_float(rot.y.value)
+        return (1 if rot.x.kind == "rel" else 0) | (2 if rot.y.kind == "rel" else 0)
 
     def coordinates(self, vec: Vec3) -> tuple[int, int]:
         """(first of x y z in floats, flags) of a position argument for OP_TP and OP_POSITIONED: the

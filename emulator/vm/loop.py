@@ -106,12 +106,13 @@ OP_SETLEAF = 16  # [entry] a: storage leaf (vm.storage_leaves), b: its number's 
 # changed"); no number there goes to the host (which creates the path)
 OP_GETLEAF = 17  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
 # [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host
-OP_TP = 18  # [entry] a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` axes' bits,
-# TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the execution position plus the relative
-# parts, or ^ from its anchor), each keeping its rotation (TP_SELF: the execution rotation; wrapped, the pitch
-# clamped) and losing its vertical motion; outside the spawnable bounds the command fails. Always followed by the
-# command's HOST, which runs it instead when a target goes to another level (the context's: the host moves it in the
-# order); TP skips it otherwise
+OP_TP = 18  # [entry] a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: flags (the
+# relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles TP_REL_YAW, TP_REL_PITCH). `tp [SEL] X Y
+# Z [YAW PITCH]`: every target to the same position (the execution position plus the relative parts, or ^ from its
+# anchor), each keeping its rotation (TP_SELF: the execution rotation; TP_ROT: the given one, `~` from the execution
+# rotation; wrapped, the pitch clamped) and losing its vertical motion; outside the spawnable bounds the command
+# fails. Always followed by the command's HOST, which runs it instead when a target goes to another level (the
+# context's: the host moves it in the order); TP skips it otherwise
 OP_SELHOLDERS = 19  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
 # op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
 # separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
@@ -163,9 +164,12 @@ OP_ASSTAGE = 51  # [stage] a: selector, b forked, c: kind (commands.entities.ENT
 OP_POSITIONED = 52  # [stage] a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, TP_LOCAL).
 # `positioned X Y Z`: the context at that position, anchored at the feet (made by the VM, or one it made before from
 # the same context and pc)
-OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
+OP_CTXSTAGE = 53  # [stage] a: kind (CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its operand (the relative angles' bits;
+# ANCHOR_*; the axes' bits), c: the angles (index into floats). `rotated YAW PITCH`, `anchored eyes|feet`, `align
+# AXES`: the context changed so (made by the VM, or one it made before from the same context and pc)
+OP_FIELDSTAGE = 54  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
 # TYPE S`: fails without an executor) or a STORELEAF
-OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
+OP_STORELEAF = 55  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
 # host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there goes to the host
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
@@ -174,7 +178,7 @@ FIRST_CONDITION, LAST_CONDITION = 20, 24
 FIRST_CALL, LAST_CALL = 27, 28
 FIRST_RETURN, LAST_RETURN = 29, 34
 FIRST_RETURNED, LAST_RETURNED = 35, 36
-FIRST_OPERATION, LAST_OPERATION = 55, 63
+FIRST_OPERATION, LAST_OPERATION = 56, 64
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -260,6 +264,10 @@ MAX_LOADED_MOTION = 10.0  # and drops motion components past this
 # OP_TP's flags besides the relative axes (1, 2, 4): local coordinates; `tp POS` (the executor,
 # turned to the execution rotation)
 TP_LOCAL, TP_SELF = 8, 16
+# OP_TP's rotation (`tp SEL POS YAW PITCH`, the angles after x y z in floats) and its relative (`~`) angles
+TP_ROT, TP_REL_YAW, TP_REL_PITCH = 32, 64, 128
+# OP_CTXSTAGE's kinds
+CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN = range(3)
 # storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty], lvalues[leaf] = the number;
 # type 0: no byte, short, int, float or double there
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
@@ -606,6 +614,44 @@ def _clamp_pos(v, limit):
     """``max(-limit, min(v, limit))`` as Python evaluates it (the host's clamp; NaN gives -limit)."""
     t = limit if limit < v else v
     return t if t > -limit else -limit
+
+
+@njit(cache=True, inline="always")
+def _angle(value, base, relative):
+    """``rotation.resolve_angle``: ``(float) WorldCoordinate.get((double) base)``."""
+    return np.float32(value + np.float64(np.float32(base))) if relative else np.float32(value)
+
+
+@njit(cache=True)
+def _changed_context(kind, operand, angles, ctx, pc, cints, cfloats, floats, nctx, as_cache):
+    """The context OP_CTXSTAGE ``kind`` at ``pc`` makes from ``ctx`` (stages._rotated_by, _anchored,
+    _aligned): the one made there before in this root if it is the same. Returns (it, the rows used)."""
+    row = as_cache_row(ctx, -1 - pc, 0)
+    made = as_cache[row, 3]
+    yaw, pitch = cfloats[ctx, CF_YAW], cfloats[ctx, CF_PITCH]
+    pos = cfloats[ctx, CF_X:CF_Z + 1]
+    if kind == CTX_ROTATED:
+        yaw = np.float64(_angle(floats[angles], cfloats[ctx, CF_YAW], operand & 1))
+        pitch = np.float64(_angle(floats[angles + 1], cfloats[ctx, CF_PITCH], operand & 2))
+    if as_cache[row, 0] == ctx and as_cache[row, 1] == -1 - pc and (
+            kind != CTX_ROTATED or (cfloats[made, CF_YAW] == yaw and cfloats[made, CF_PITCH] == pitch)):
+        return made, nctx
+    cints[nctx] = cints[ctx]
+    cfloats[nctx] = cfloats[ctx]
+    if kind == CTX_ROTATED:
+        cfloats[nctx, CF_YAW] = yaw
+        cfloats[nctx, CF_PITCH] = pitch
+    elif kind == CTX_ANCHORED:
+        cints[nctx, CI_ANCHOR] = operand
+    else:
+        for axis in range(3):
+            if operand & (1 << axis):
+                cfloats[nctx, CF_X + axis] = np.floor(pos[axis])
+    as_cache[row, 0] = ctx
+    as_cache[row, 1] = -1 - pc
+    as_cache[row, 2] = 0
+    as_cache[row, 3] = nctx
+    return nctx, nctx + 1
 
 
 @njit(cache=True, inline="always")
@@ -1213,6 +1259,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc += 1
                 flags = code[pc - 2, 3]
                 x, y, z = _destination(flags, code[pc - 2, 2], ctx, floats, cints, cfloats, efloats)
+                given_yaw = _angle(floats[code[pc - 2, 2] + 3], cfloats[ctx, CF_YAW], flags & TP_REL_YAW)
+                given_pitch = _angle(floats[code[pc - 2, 2] + 4], cfloats[ctx, CF_PITCH], flags & TP_REL_PITCH)
                 has = 1
                 ok = 0
                 val = 0
@@ -1225,6 +1273,8 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                     efloats[e, EF_Z] = z
                     if flags & TP_SELF:  # `tp POS`: turned to the execution rotation
                         yaw, pitch = np.float32(cfloats[ctx, CF_YAW]), np.float32(cfloats[ctx, CF_PITCH])
+                    elif flags & TP_ROT:  # the given angles, `~` from the execution rotation
+                        yaw, pitch = given_yaw, given_pitch
                     else:
                         yaw, pitch = np.float32(efloats[e, EF_YAW]), np.float32(efloats[e, EF_PITCH])
                     yaw = _wrap_degrees_f(yaw)  # rotation.teleport_rotation
@@ -1344,6 +1394,27 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 continue
             x, y, z = _destination(code[pc, 2], code[pc, 1], ctx, floats, cints, cfloats, efloats)
             ctx, regs[R_NCTX] = _positioned_context(ctx, pc, x, y, z, cints, cfloats, regs[R_NCTX], as_cache)
+            if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
+                alive = 0
+                pc = abort
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                status = ST_ERROR
+                break
+            pc += 1
+        elif op == OP_CTXSTAGE:
+            if alive and regs[R_NCTX] >= cints.shape[0]:
+                status = ST_GROWCTX  # Python makes room, then the stage runs again
+                break
+            if loop != LOOP_REENTERED:
+                quota -= 1
+                if counting:
+                    counts[pc] += 1
+            if alive == 0:
+                pc += 1
+                continue
+            ctx, regs[R_NCTX] = _changed_context(code[pc, 1], code[pc, 2], code[pc, 3], ctx, pc, cints, cfloats, floats,
+                                                 regs[R_NCTX], as_cache)
             if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
                 alive = 0
                 pc = abort

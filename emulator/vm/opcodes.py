@@ -93,13 +93,15 @@ _ROWS = [
                                    "goes to the host (which creates the path)"),
         ("GETLEAF", "idx", ENTRY, "a: storage leaf, b: scale (index into floats), c: host op index. `data get "
                                   "storage S P [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host"),
-        ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z follow), c: flags (the relative `~` "
-                             "axes' bits, TP_LOCAL, TP_SELF). `tp [SEL] X Y Z`: every target to the same position (the "
-                             "execution position plus the relative parts, or ^ from its anchor), each keeping its "
-                             "rotation (TP_SELF: the execution rotation; wrapped, the pitch clamped) and losing its "
-                             "vertical motion; outside the spawnable bounds the command fails. Always followed by "
-                             "the command's HOST, which runs it instead when a target goes to another level (the "
-                             "context's: the host moves it in the order); TP skips it otherwise"),
+        ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: "
+                             "flags (the relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles "
+                             "TP_REL_YAW, TP_REL_PITCH). `tp [SEL] X Y Z [YAW PITCH]`: every target to the same "
+                             "position (the execution position plus the relative parts, or ^ from its anchor), each "
+                             "keeping its rotation (TP_SELF: the execution rotation; TP_ROT: the given one, `~` from "
+                             "the execution rotation; wrapped, the pitch clamped) and losing its vertical motion; "
+                             "outside the spawnable bounds the command fails. Always followed by the command's HOST, "
+                             "which runs it instead when a target goes to another level (the context's: the host "
+                             "moves it in the order); TP skips it otherwise"),
     ]),
     *_single("SELHOLDERS", "sb", FREE, "a: selector, b: 0 targets / 1 sources. The holders of the selector's "
                                        "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "
@@ -168,6 +170,10 @@ _ROWS = [
     *_single("POSITIONED", "di", STAGE, "a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, "
                                         "TP_LOCAL). `positioned X Y Z`: the context at that position, anchored at the "
                                         "feet (made by the VM, or one it made before from the same context and pc)"),
+    *_single("CTXSTAGE", "iid", STAGE, "a: kind (CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its operand (the "
+                                       "relative angles' bits; ANCHOR_*; the axes' bits), c: the angles (index into "
+                                       "floats). `rotated YAW PITCH`, `anchored eyes|feet`, `align AXES`: the context "
+                                       "changed so (made by the VM, or one it made before from the same context and pc)"),
     *_single("FIELDSTAGE", "bb", STAGE, "a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... "
                                         "entity @s PATH TYPE S`: fails without an executor) or a STORELEAF"),
     *_single("STORELEAF", "ibdix", FREE, "a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), "

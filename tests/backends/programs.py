@@ -83,7 +83,9 @@ ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=
                     "as @e[dx=-1,dy=0,dz=1,tag=m]", "as @n[tag=m]", "as @e[type=!#minecraft:skeletons,tag=]",
                     "as @e[tag=w69]", "positioned ^1 ^ ^2", "rotated 30 10", "as @e[tag=!] at @s",
                     "in minecraft:the_nether", "at @e[tag=nether]", "as @e[tag=m,distance=0..]",
-                    "in minecraft:the_end as @e[x=0,sort=furthest]", "as @e[tag=m] positioned as @e[tag=nether]")
+                    "in minecraft:the_end as @e[x=0,sort=furthest]", "as @e[tag=m] positioned as @e[tag=nether]",
+                    "rotated ~10 ~-95", "align xyz", "anchored eyes positioned ^ ^ ^1", "anchored feet",
+                    "at @e[tag=d] rotated ~ ~20 align y")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]")
 ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
@@ -125,7 +127,9 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "execute as @e[tag=d] store result score @s p run data get entity @s transformation.scale[1] 1000",
                    "execute store result score #f o run data get entity @s Rotation[0] 10",
                    "execute store result score #g p run data get entity @s Motion[-1] 100",
-                   "execute as @e[tag=d] run data get entity @s transformation.right_rotation[3]")
+                   "execute as @e[tag=d] run data get entity @s transformation.right_rotation[3]",
+                   "tp @s ~ ~ ~ ~180 ~", "tp @e[tag=n] 1 2 3 45 -100", "tp @e[tag=m] ~ ~ ~ ~-370.5 ~95",
+                   "execute rotated as @e[tag=m] run tp @s ^ ^ ^1 ~ ~10", "tp @s ~ ~ ~ 1000000000000000000000000000000000000000 0")
 # t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 

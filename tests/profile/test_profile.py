@@ -93,7 +93,7 @@ HOST_ONLY = {
     "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nsummon marker\nsummon marker\n",
     "demo/function/tick.mcfunction": "execute as @e[type=marker] store result entity @s Air short 1 "
                                      "run scoreboard players add $t o 1\n"
-                                     "execute as @e[type=marker] run tp @s ^ ^ ^1 ~10 ~\n",
+                                     "execute as @e[type=marker] run tp @s ^ ^ ^1 facing 0 0 0\n",
 }
 
 
@@ -105,7 +105,7 @@ def test_host_run_stores_and_teleports_are_listed_with_their_runs(pack):
     store = by_kind[(1, "store")]
     assert store["count"] == 6 and store["function"] == "demo:tick" and store["path"].endswith("tick.mcfunction")
     assert store["command"].startswith("execute as @e[type=marker] store result entity @s Air")
-    assert by_kind[(2, "command")]["count"] == 6 and by_kind[(2, "command")]["command"].endswith("tp @s ^ ^ ^1 ~10 ~")
+    assert by_kind[(2, "command")]["count"] == 6 and by_kind[(2, "command")]["command"].endswith("tp @s ^ ^ ^1 facing 0 0 0")
     assert not [h for h in host if h["function"] == "demo:init"]  # the load's summons are not listed
     table = profile(root, "--ticks", 3).output
     assert "host-executed commands (" in table

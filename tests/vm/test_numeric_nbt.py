@@ -130,3 +130,29 @@ def test_the_vm_reads_storage_changed_between_calls(tmp_path):
     emu.state.storage["t:s"] = Compound(flag=Byte(1))
     emu.call("t:main")
     assert emu.score("#on", "o") == 1
+
+
+# ---------------------------------------------------------------------- rotations and context stages
+def test_tp_with_a_rotation_runs_in_the_vm(tmp_path):
+    # TeleportCommand: `~` angles are relative to the execution rotation, then wrapDegrees and the
+    # pitch clamped; an infinite angle is discarded (setYRot)
+    emu = _run_both(tmp_path, "execute as @e[tag=d] run tp @s ~ ~ ~ ~180 ~\n"
+                              "execute as @e[tag=d] at @s run tp @s ~ ~ ~ ~-370.5 ~95\n"
+                              "tp @e[tag=m] 1 2 3 45 -100\n"
+                              "execute as @e[tag=m] rotated as @s run tp @s ^ ^ ^1 ~ ~10\n"
+                              "execute as @e[tag=d] run tp @s ~ ~ ~ 1000000000000000000000000000000000000000 0\n")
+    display, marker = emu.state.entities.entities
+    # `as` keeps the server's rotation: 0 + 180 wraps to -180; at @s: -180 - 370.5 wraps to 169.5;
+    # the last yaw is infinite: kept, its pitch 0
+    assert (float(display.yaw), float(display.pitch)) == (169.5, 0.0)
+    assert (float(marker.yaw), float(marker.pitch)) == (45.0, -80.0)  # -90 (clamped) + 10
+    assert not [n for n in _host_commands(emu) if n == "Teleport"]
+
+
+def test_rotated_anchored_and_align_stages_run_in_the_vm(tmp_path):
+    emu = _run_both(tmp_path, "execute as @e[tag=d] rotated ~10 ~-95 run tp @s ~ ~ ~ ~ ~\n"
+                              "execute as @e[tag=m] at @s align xyz run tp @s ~0.25 ~ ~\n"
+                              "execute as @e[tag=d] at @s anchored eyes positioned ^ ^ ^1 run tp @s ~ ~ ~\n"
+                              "execute as @e[tag=m] at @s anchored eyes anchored feet rotated 90 0 run "
+                              "tp @s ^ ^ ^2\n")
+    assert sorted(_host_commands(emu)) == ["ObjectivesAdd", "Summon", "Summon"]
