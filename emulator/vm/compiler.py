@@ -174,7 +174,8 @@ class Compiler:
             elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
             elif isinstance(st, ExPositioned) and not last:
-                self.emit(vm.OP_POSITIONED, *self.coordinates(st.pos))
+                first, flags = self.coordinates(st.pos)
+                self.emit(vm.OP_CTXSTAGE, vm.CTX_POSITIONED, flags, first)
             elif isinstance(st, ExRotated) and not last and "local" not in (st.rot.x.kind, st.rot.y.kind):
                 first = self.program.next_float
                 self.emit(vm.OP_CTXSTAGE, vm.CTX_ROTATED, self.angles(st.rot), first)
@@ -382,7 +383,7 @@ class Compiler:
         return (1 if rot.x.kind == "rel" else 0) | (2 if rot.y.kind == "rel" else 0)
 
     def coordinates(self, vec: Vec3) -> tuple[int, int]:
-        """(first of x y z in floats, flags) of a position argument for OP_TP and OP_POSITIONED: the
+        """(first of x y z in floats, flags) of a position argument for OP_TP and OP_CTXSTAGE: the
         relative axes' bits, or TP_LOCAL."""
         coords = (vec.x, vec.y, vec.z)
         first = self.program.next_float

@@ -161,15 +161,13 @@ OP_HOSTSTORE = 50  # [free] a: host op index. `store ... storage|entity|block|bo
 OP_ASSTAGE = 51  # [stage] a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned
 # as, rotated as). One context per entity found, made by the VM (or one it made earlier in the root that still holds:
 # as_cache); ST_GROWCTX when the context table or the fork stack is full
-OP_POSITIONED = 52  # [stage] a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, TP_LOCAL).
-# `positioned X Y Z`: the context at that position, anchored at the feet (made by the VM, or one it made before from
-# the same context and pc)
-OP_CTXSTAGE = 53  # [stage] a: kind (CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its operand (the relative angles' bits;
-# ANCHOR_*; the axes' bits), c: the angles (index into floats). `rotated YAW PITCH`, `anchored eyes|feet`, `align
-# AXES`: the context changed so (made by the VM, or one it made before from the same context and pc)
-OP_FIELDSTAGE = 54  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
+OP_CTXSTAGE = 52  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its operand (flags as
+# OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; ANCHOR_*; the axes' bits), c: x or the yaw (index into
+# floats; the rest follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, `anchored eyes|feet`,
+# `align AXES`: the context changed so (made by the VM, or one it made before from the same context and pc)
+OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
 # TYPE S`: fails without an executor) or a STORELEAF
-OP_STORELEAF = 55  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
+OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
 # host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there goes to the host
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
@@ -178,7 +176,7 @@ FIRST_CONDITION, LAST_CONDITION = 20, 24
 FIRST_CALL, LAST_CALL = 27, 28
 FIRST_RETURN, LAST_RETURN = 29, 34
 FIRST_RETURNED, LAST_RETURNED = 35, 36
-FIRST_OPERATION, LAST_OPERATION = 56, 64
+FIRST_OPERATION, LAST_OPERATION = 55, 63
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -267,7 +265,7 @@ TP_LOCAL, TP_SELF = 8, 16
 # OP_TP's rotation (`tp SEL POS YAW PITCH`, the angles after x y z in floats) and its relative (`~`) angles
 TP_ROT, TP_REL_YAW, TP_REL_PITCH = 32, 64, 128
 # OP_CTXSTAGE's kinds
-CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN = range(3)
+CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN = range(4)
 # storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty], lvalues[leaf] = the number;
 # type 0: no byte, short, int, float or double there
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
@@ -587,28 +585,6 @@ def _destination(flags, k, ctx, floats, cints, cfloats, efloats):
     return x, y, z
 
 
-@njit(cache=True)
-def _positioned_context(ctx, pc, x, y, z, cints, cfloats, nctx, as_cache):
-    """``positioned X Y Z`` at ``pc`` from context ``ctx``: the context at (x, y, z), anchored at the
-    feet; the one made there before in this root if it is the same. Returns (it, the rows used)."""
-    row = as_cache_row(ctx, -1 - pc, 0)
-    made = as_cache[row, 3]
-    if (as_cache[row, 0] == ctx and as_cache[row, 1] == -1 - pc and cfloats[made, CF_X] == x
-            and cfloats[made, CF_Y] == y and cfloats[made, CF_Z] == z):
-        return made, nctx
-    cints[nctx] = cints[ctx]
-    cfloats[nctx] = cfloats[ctx]
-    cfloats[nctx, CF_X] = x
-    cfloats[nctx, CF_Y] = y
-    cfloats[nctx, CF_Z] = z
-    cints[nctx, CI_ANCHOR] = ANCHOR_FEET
-    as_cache[row, 0] = ctx
-    as_cache[row, 1] = -1 - pc
-    as_cache[row, 2] = 0
-    as_cache[row, 3] = nctx
-    return nctx, nctx + 1
-
-
 @njit(cache=True, inline="always")
 def _clamp_pos(v, limit):
     """``max(-limit, min(v, limit))`` as Python evaluates it (the host's clamp; NaN gives -limit)."""
@@ -623,30 +599,38 @@ def _angle(value, base, relative):
 
 
 @njit(cache=True)
-def _changed_context(kind, operand, angles, ctx, pc, cints, cfloats, floats, nctx, as_cache):
-    """The context OP_CTXSTAGE ``kind`` at ``pc`` makes from ``ctx`` (stages._rotated_by, _anchored,
-    _aligned): the one made there before in this root if it is the same. Returns (it, the rows used)."""
+def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, efloats, nctx, as_cache):
+    """The context OP_CTXSTAGE ``kind`` at ``pc`` makes from ``ctx`` (stages._positioned, _rotated_by,
+    _anchored, _aligned): the one made there before in this root if it is the same. Returns (it,
+    the rows used)."""
     row = as_cache_row(ctx, -1 - pc, 0)
     made = as_cache[row, 3]
+    x, y, z = cfloats[ctx, CF_X], cfloats[ctx, CF_Y], cfloats[ctx, CF_Z]
     yaw, pitch = cfloats[ctx, CF_YAW], cfloats[ctx, CF_PITCH]
-    pos = cfloats[ctx, CF_X:CF_Z + 1]
-    if kind == CTX_ROTATED:
-        yaw = np.float64(_angle(floats[angles], cfloats[ctx, CF_YAW], operand & 1))
-        pitch = np.float64(_angle(floats[angles + 1], cfloats[ctx, CF_PITCH], operand & 2))
-    if as_cache[row, 0] == ctx and as_cache[row, 1] == -1 - pc and (
-            kind != CTX_ROTATED or (cfloats[made, CF_YAW] == yaw and cfloats[made, CF_PITCH] == pitch)):
+    anchor = cints[ctx, CI_ANCHOR]
+    if kind == CTX_POSITIONED:  # anchored at the feet
+        x, y, z = _destination(operand, first, ctx, floats, cints, cfloats, efloats)
+        anchor = ANCHOR_FEET
+    elif kind == CTX_ROTATED:
+        yaw = np.float64(_angle(floats[first], yaw, operand & 1))
+        pitch = np.float64(_angle(floats[first + 1], pitch, operand & 2))
+    elif kind == CTX_ANCHORED:
+        anchor = operand
+    else:
+        x = np.floor(x) if operand & 1 else x
+        y = np.floor(y) if operand & 2 else y
+        z = np.floor(z) if operand & 4 else z
+    if (as_cache[row, 0] == ctx and as_cache[row, 1] == -1 - pc and cfloats[made, CF_X] == x
+            and cfloats[made, CF_Y] == y and cfloats[made, CF_Z] == z and cfloats[made, CF_YAW] == yaw
+            and cfloats[made, CF_PITCH] == pitch):
         return made, nctx
     cints[nctx] = cints[ctx]
-    cfloats[nctx] = cfloats[ctx]
-    if kind == CTX_ROTATED:
-        cfloats[nctx, CF_YAW] = yaw
-        cfloats[nctx, CF_PITCH] = pitch
-    elif kind == CTX_ANCHORED:
-        cints[nctx, CI_ANCHOR] = operand
-    else:
-        for axis in range(3):
-            if operand & (1 << axis):
-                cfloats[nctx, CF_X + axis] = np.floor(pos[axis])
+    cints[nctx, CI_ANCHOR] = anchor
+    cfloats[nctx, CF_X] = x
+    cfloats[nctx, CF_Y] = y
+    cfloats[nctx, CF_Z] = z
+    cfloats[nctx, CF_YAW] = yaw
+    cfloats[nctx, CF_PITCH] = pitch
     as_cache[row, 0] = ctx
     as_cache[row, 1] = -1 - pc
     as_cache[row, 2] = 0
@@ -1381,27 +1365,6 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 fork_contexts(regs, fstack, coll, selbuf, n, depth, pc)  # room checked above
                 loop = regs[R_LOOP]
                 ctx = regs[R_CTX]
-        elif op == OP_POSITIONED:
-            if alive and regs[R_NCTX] >= cints.shape[0]:
-                status = ST_GROWCTX  # Python makes room, then the stage runs again
-                break
-            if loop != LOOP_REENTERED:
-                quota -= 1
-                if counting:
-                    counts[pc] += 1
-            if alive == 0:
-                pc += 1
-                continue
-            x, y, z = _destination(code[pc, 2], code[pc, 1], ctx, floats, cints, cfloats, efloats)
-            ctx, regs[R_NCTX] = _positioned_context(ctx, pc, x, y, z, cints, cfloats, regs[R_NCTX], as_cache)
-            if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
-                alive = 0
-                pc = abort
-                err = ERR_FORK_LIMIT
-                errarg = forklimit
-                status = ST_ERROR
-                break
-            pc += 1
         elif op == OP_CTXSTAGE:
             if alive and regs[R_NCTX] >= cints.shape[0]:
                 status = ST_GROWCTX  # Python makes room, then the stage runs again
@@ -1414,7 +1377,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc += 1
                 continue
             ctx, regs[R_NCTX] = _changed_context(code[pc, 1], code[pc, 2], code[pc, 3], ctx, pc, cints, cfloats, floats,
-                                                 regs[R_NCTX], as_cache)
+                                                 efloats, regs[R_NCTX], as_cache)
             if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
                 alive = 0
                 pc = abort

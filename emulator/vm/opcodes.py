@@ -167,13 +167,12 @@ _ROWS = [
                                       "as, at, positioned as, rotated as). One context per entity found, made by "
                                       "the VM (or one it made earlier in the root that still holds: as_cache); "
                                       "ST_GROWCTX when the context table or the fork stack is full"),
-    *_single("POSITIONED", "di", STAGE, "a: x (index into floats; y, z follow), b: flags as OP_TP's (relative axes, "
-                                        "TP_LOCAL). `positioned X Y Z`: the context at that position, anchored at the "
-                                        "feet (made by the VM, or one it made before from the same context and pc)"),
-    *_single("CTXSTAGE", "iid", STAGE, "a: kind (CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its operand (the "
-                                       "relative angles' bits; ANCHOR_*; the axes' bits), c: the angles (index into "
-                                       "floats). `rotated YAW PITCH`, `anchored eyes|feet`, `align AXES`: the context "
-                                       "changed so (made by the VM, or one it made before from the same context and pc)"),
+    *_single("CTXSTAGE", "iid", STAGE, "a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its "
+                                       "operand (flags as OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; "
+                                       "ANCHOR_*; the axes' bits), c: x or the yaw (index into floats; the rest "
+                                       "follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, "
+                                       "`anchored eyes|feet`, `align AXES`: the context changed so (made by the VM, or "
+                                       "one it made before from the same context and pc)"),
     *_single("FIELDSTAGE", "bb", STAGE, "a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... "
                                         "entity @s PATH TYPE S`: fails without an executor) or a STORELEAF"),
     *_single("STORELEAF", "ibdix", FREE, "a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), "
