@@ -1238,7 +1238,10 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 for i in range(n):
                     if eints[selbuf[i], EI_DIM] != cints[ctx, CI_DIM]:
                         crossing = True
-                if crossing:  # to another level: the HOST that follows
+                if crossing:  # to another level: the HOST that follows runs the command and charges it
+                    quota += 1
+                    if counting:
+                        counts[pc - 1] -= 1
                     continue
                 pc += 1
                 flags = code[pc - 2, 3]

@@ -147,7 +147,9 @@ STORAGE_COMMANDS = ("data merge storage t:s {a:1,l:[1,2]}", "data modify storage
                     "data remove storage t:s a", "data modify storage t:s v set from storage t:s l[0]",
                     "data modify storage t:s l prepend from storage t:s n", "data get storage t:s l",
                     "data get storage t:s missing", "data remove storage t:s l[0]", "data get storage t:s",
-                    "data modify storage t:s w set string storage t:s v")
+                    "data modify storage t:s w set string storage t:s v", "data get storage t:s n 3",
+                    "data get storage t:s d -0.5", "data modify storage t:s f set value 1b",
+                    "data modify storage t:s d set value 0.5d")
 # The read-only objective hp (criterion health, created by t:f0): writes fail (reported; `*` and
 # selectors keep them on the VM's host side), reads and `execute store` work
 READ_ONLY_COMMANDS = ("scoreboard players set * hp 1", "scoreboard players add * hp 2",
@@ -232,7 +234,8 @@ def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
     kinds = ["matches", "compare", "data"] + (["function"] if callees else []) + (["entity"] if vocab.setup else [])
     kind = draw(st.sampled_from(kinds))
     if kind == "data":
-        return f"{word} data storage t:s {draw(st.sampled_from(('a', 'l[]', 'l[{}]', 'n', 'missing')))}"
+        return (f"{word} data storage t:s "
+                f"{draw(st.sampled_from(('a', 'l[]', 'l[{}]', 'n', 'missing', '{n:3}', '{f:1b}', '{d:0.5d}', '{a:1}')))}")
     single = vocab.single_holders
     if kind == "matches":
         return f"{word} score {draw(single)} {draw(objectives)} matches {draw(ranges())}"

@@ -156,3 +156,10 @@ def test_rotated_anchored_and_align_stages_run_in_the_vm(tmp_path):
                               "execute as @e[tag=m] at @s anchored eyes anchored feet rotated 90 0 run "
                               "tp @s ^ ^ ^2\n")
     assert sorted(_host_commands(emu)) == ["ObjectivesAdd", "Summon", "Summon"]
+
+
+def test_a_teleport_to_another_level_is_charged_once(tmp_path):
+    # OP_TP hands a target going to another level to the HOST after it: one command, one charge
+    emu = _run_both(tmp_path, "execute in minecraft:the_end run tp @e[tag=m] ~ ~ ~ ~10 ~\n"
+                              "execute in minecraft:the_nether run tp @e[tag=d] ~ ~ ~\n")
+    assert emu.profile.functions_total["t:main"] == 3 + 2 * 2  # the setup's three, two chains of two
