@@ -4,6 +4,7 @@ components (the values they build on, such as ranges and resource locations, are
 from __future__ import annotations
 
 import json
+import math
 import re
 
 from . import selectors, snbt
@@ -172,9 +173,19 @@ _TIME = re.compile(r"([0-9.\-]*)([tsd]?)")
 _TIME_UNITS = {"": 1, "t": 1, "s": 20, "d": 24000}
 
 
+def _java_round(value: float) -> int:
+    """Math.round(float): half up (0.5 -> 1, -0.5 -> 0), saturating at the int bounds."""
+    if value != value:
+        return 0
+    if abs(value) == float("inf"):
+        return 2**31 - 1 if value > 0 else -2**31
+    return max(-2**31, min(2**31 - 1, math.floor(value + 0.5)))
+
+
 def duration(r: Reader) -> int:
     """A time argument (``10``, ``10t``, ``2.5s``, ``1d``) converted to ticks (rounded as the game
-    does); TimeArgument rejects a negative tick count."""
+    does: TimeArgument.parse multiplies the float by the unit in float and takes Math.round);
+    TimeArgument rejects a negative tick count."""
     start = r.pos
     m = _TIME.match(r.text, start)
     number, unit = m.group(1), m.group(2)
@@ -182,7 +193,7 @@ def duration(r: Reader) -> int:
         r.fail(f"expected a time, got {r.found()}")
     if not FLOAT_TEXT.match(number):
         r.fail(f"invalid time '{number}'", start)
-    ticks = round(float(number) * _TIME_UNITS[unit])  # TimeArgument uses Math.round
+    ticks = _java_round(snbt.to_float32(snbt.to_float32(float(number)) * _TIME_UNITS[unit]))
     if ticks < 0:
         r.fail(f"time must be at least 0 ticks, got {m.group()}", start)
     r.pos = m.end()

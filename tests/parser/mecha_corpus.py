@@ -632,7 +632,8 @@ BY_COMMAND: dict[str, tuple[list[str], list[str]]] = {
     'weather': (
         ['weather clear',
         'weather rain 600',
-        'weather thunder 10s'],
+        'weather thunder 10s',
+        'weather rain 0.5'],
         ['weather sunny',
         'weather rain x',
         'weather clear 1 2'],

@@ -133,6 +133,16 @@ def test_durations():
         arguments.duration(reader("1..2"))
 
 
+def test_durations_round_as_math_round_of_a_float():
+    """TimeArgument.parse: Math.round(readFloat() * unit), the product in float: halves round up
+    (0.5 -> 1, 2.5 -> 3, -0.5 -> 0, where Python's round gives 0, 2 and -0) and a huge count
+    saturates at Integer.MAX_VALUE."""
+    assert [arguments.duration(reader(text)) for text in ("0.5", "2.5", "-0.5", "0.49", "0.05s", "0.1d")] == \
+        [1, 3, 0, 0, 1, 2400]
+    assert arguments.duration(reader("9" * 50)) == 2**31 - 1
+    assert parse_ok("weather rain 0.5")  # the node's minimum is 1: 0.5 rounds to 1 tick
+
+
 def test_integer_errors_name_the_token():
     d = parse_err("scoreboard players set @s x 1.5")
     assert "invalid integer '1.5'" in d.message
