@@ -352,14 +352,12 @@ def _at(loaded: LoadedPacks, severity: str, message: str, loc: Loc) -> Diagnosti
 
 
 def _check_game_data(loaded: LoadedPacks, found: list[Diagnostic]) -> None:
-    """A release newer than every shipped command tree is checked against the newest one, its
-    findings warnings: said once, with how to get that release's own tree."""
-    missing = gamedata.newer_than_shipped(loaded.version)
-    if missing is not None:
+    """A release checked against another minor release's command tree (1.13 – 1.15, 26.x) gets
+    its findings as warnings: said once, naming the tree used and how to get that release's own."""
+    note = gamedata.stand_in(loaded.version)
+    if note is not None:
         path = str(loaded.packs[-1].root) if loaded.packs else ""
-        stand_in = version_label(gamedata.tree_release(loaded.version))
-        found.append(Diagnostic(WARNING, f"commands checked against the {stand_in} command tree, their "
-                                         f"findings warnings: {missing}", path))
+        found.append(Diagnostic(WARNING, note, path))
 
 
 def _references(node: object) -> Iterator[tuple[str, bool, str]]:

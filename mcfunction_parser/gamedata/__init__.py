@@ -23,7 +23,7 @@ A release without its own tree uses the oldest tree at or after it (1.13 – 1.1
 tree, 1.21 – 1.21.10 the 1.21.11 one; the commands a release lacks are gated by
 :mod:`..features` before the tree is asked). A release without registries uses the newest ones
 before it, flagged not exact. A release after every tree (26.x) is checked against the newest one,
-its findings warnings (:func:`newer_than_shipped` says so, with how to provide its own reports).
+its findings warnings. :func:`stand_in` says so for both, with how to provide a release's own reports.
 """
 from __future__ import annotations
 
@@ -53,9 +53,16 @@ def user_dir() -> Path:
 
 def _how_to_get(version: Version, what: str) -> str:
     return (f"no {what} for Minecraft {version_label(version)} (dpemu ships {_shipped_span(what)}): run the "
-            f"{version_label(version)} server's data generator, `java -DbundlerMainClass=net.minecraft.data.Main "
-            f"-jar server.jar --reports`, and copy generated/reports/commands.json, registries.json and "
-            f"blocks.json to {user_dir() / version_label(version)}")
+            f"{version_label(version)} server's data generator, `{_generator(version)}`, and copy "
+            f"generated/reports/commands.json, registries.json and blocks.json to "
+            f"{user_dir() / version_label(version)}")
+
+
+def _generator(version: Version) -> str:
+    """The command that writes the game's reports: from 1.18 the server jar is a bundler."""
+    if version >= (1, 18, 0):
+        return "java -DbundlerMainClass=net.minecraft.data.Main -jar server.jar --reports"
+    return "java -cp server.jar net.minecraft.data.Main --reports"
 
 
 def _shipped_span(what: str) -> str:
@@ -90,7 +97,7 @@ def _user_report(version: Version, name: str):
 
 def tree_release(version: Version) -> Version:
     """The release whose command tree checks ``version``: its own, the oldest one after it, or for a
-    release newer than every shipped tree the newest one (a stand-in: see :func:`newer_than_shipped`)."""
+    release newer than every shipped tree the newest one (a stand-in: see :func:`stand_in`)."""
     if _user_report(version, "commands.json") is not None:
         return version
     shipped = _index()["commands"]
@@ -98,12 +105,20 @@ def tree_release(version: Version) -> Version:
     return min(later) if later else max(shipped)
 
 
-def newer_than_shipped(version: Version) -> str | None:
-    """For a release newer than every tree dpemu ships and without its own reports: what that means
-    and how to get the exact tree; None otherwise."""
-    if _user_report(version, "commands.json") is not None or version <= max(_index()["commands"]):
+def stand_in(version: Version) -> str | None:
+    """For a release checked against another minor release's tree (1.13 – 1.15 against 1.16.5's,
+    26.x against the newest) and without its own reports: which tree, why, and how to get the
+    exact one; None when the tree is of its own minor release."""
+    if _user_report(version, "commands.json") is not None:
         return None
-    return _how_to_get(version, "command tree")
+    release = tree_release(version)
+    if release[:2] == version[:2]:
+        return None
+    why = _how_to_get(version, "command tree")
+    if version < release:
+        why += (" (no maintained package has the trees of 1.13 – 1.15: mecha's start at 1.16, and "
+                "minecraft-data's files for 1.13 – 1.16.2 are copies of one 1.16 tree)")
+    return f"commands checked against the {version_label(release)} command tree, their findings warnings: {why}"
 
 
 def command_tree(version: Version) -> dict:

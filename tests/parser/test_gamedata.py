@@ -11,15 +11,16 @@ from mcfunction_parser.pack.versions import RELEASE_FORMATS
 
 def test_every_known_release_has_a_command_tree_or_a_stand_in(tmp_path, monkeypatch):
     """dpemu ships trees up to 1.21.11; the year-numbered releases (26.x) are checked against the
-    newest one, and newer_than_shipped says how to get their own."""
+    newest one, and stand_in says how to get their own."""
     monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
     newest = max(gamedata._index()["commands"])
     for version in RELEASE_FORMATS:
         release = gamedata.tree_release(version)
         if version > newest:
-            assert release == newest and "--reports" in gamedata.newer_than_shipped(version)
+            assert release == newest and "--reports" in gamedata.stand_in(version)
         else:
-            assert release >= version and gamedata.newer_than_shipped(version) is None
+            assert release >= version
+            assert (gamedata.stand_in(version) is None) is (release[:2] == version[:2])
         assert "execute" in gamedata.command_tree(version)["children"]
 
 
@@ -39,8 +40,19 @@ def test_trees_follow_the_releases():
 
 def test_a_release_after_every_tree_says_how_to_get_its_own(tmp_path, monkeypatch):
     monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
-    message = gamedata.newer_than_shipped((26, 1, 0))
+    message = gamedata.stand_in((26, 1, 0))
     assert "Minecraft 26.1" in message and "--reports" in message and str(tmp_path / "26.1") in message
+    assert "against the 1.21.11 command tree" in message and "-DbundlerMainClass" in message
+
+
+def test_releases_before_every_tree_name_the_tree_they_are_checked_with(tmp_path, monkeypatch):
+    """1.13 – 1.15 have no tree in any maintained package: checked with 1.16.5's, said once, with
+    the pre-1.18 way to run the data generator (the server jar is not a bundler yet)."""
+    monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
+    message = gamedata.stand_in((1, 14, 4))
+    assert "against the 1.16.5 command tree" in message and "Minecraft 1.14.4" in message
+    assert "java -cp server.jar net.minecraft.data.Main --reports" in message
+    assert gamedata.stand_in((1, 16, 0)) is None and gamedata.stand_in((1, 21, 4)) is None
 
 
 def test_the_games_own_reports_are_read_for_any_release(tmp_path, monkeypatch):

@@ -127,3 +127,17 @@ def test_another_minor_releases_tree_only_warns():
     assert cmd is not None and [d.severity for d in diags] == ["warning"]
     assert "checked against the 1.16.5 command tree" in diags[0].message
     assert "locate" in parse_err("locate Village", (1, 16, 5)).source_line
+
+
+def test_a_check_for_1_13_to_1_15_says_once_which_tree_it_uses(tmp_path, monkeypatch):
+    # no maintained package has the 1.13 – 1.15 trees: the check names the 1.16.5 stand-in once
+    monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path / "none"))
+    root = write(tmp_path / "p", {"pack.mcmeta": '{"pack": {"pack_format": 4, "description": ""}}',
+                                  "data/a/functions/f.mcfunction": "locate Village\nsay hi\n"})
+    result = check_packs([root], "1.13.2")
+    assert [d for d in result.diagnostics if d.severity == "error"] == []
+    warnings = [d.message for d in result.diagnostics if d.severity == "warning"]
+    said = [m for m in warnings if "no command tree for Minecraft 1.13.2" in m]
+    assert len(said) == 1 and "against the 1.16.5 command tree" in said[0]
+    assert "java -cp server.jar net.minecraft.data.Main --reports" in said[0]
+    assert any("(checked against the 1.16.5 command tree" in m for m in warnings if m not in said)
