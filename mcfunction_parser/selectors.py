@@ -29,10 +29,12 @@ _PLAYER_TYPES = frozenset(("minecraft:player",))
 NAME_MAX = 16
 
 
-# A selector without nested brackets or quotes: its parse depends only on its text, so it is
-# cached (without locations) and rebuilt on a hit; real packs repeat the same few selectors.
+# A selector without nested brackets or quotes: its parse depends only on its text and the release
+# (ids are checked against the release's registries), so it is cached per release (without
+# locations) and rebuilt on a hit; real packs repeat the same few selectors. One that warned is not
+# cached: a hit would lose the warning.
 _PLAIN_SELECTOR = re.compile(r"@[a-z]\[[^\[\]\"']*\]")
-_CACHE: dict[str, tuple] = {}
+_CACHE: dict[tuple[str, tuple], tuple] = {}
 _CACHE_MAX = 4096
 _OPTION_KEY = re.compile(r"([a-z_]+)[ \t\r\n]*=[ \t\r\n]*")
 _AFTER_VALUE = re.compile(r"[ \t\r\n]*(,[ \t\r\n]*)?")
@@ -50,7 +52,7 @@ def selector(r: Reader) -> Selector:
     loc = r.loc_at(start)
     plain = _PLAIN_SELECTOR.match(text, start)
     if plain is not None:
-        cached = _CACHE.get(plain.group())
+        cached = _CACHE.get((plain.group(), r.version))
         if cached is not None:
             r.pos = plain.end()
             loc_at = r.loc_at
@@ -59,11 +61,13 @@ def selector(r: Reader) -> Selector:
                 args.append(SelectorArg(key, value, negated, loc_at(start + offset)))
             return Selector(variable, tuple(args), loc)
     r.pos = start + 2
+    warned = len(r.warnings)
     args, offsets = _options(r, variable)
-    if plain is not None and r.pos == plain.end() and not any(a.key == "nbt" for a in args):
+    if (plain is not None and r.pos == plain.end() and len(r.warnings) == warned
+            and not any(a.key == "nbt" for a in args)):
         if len(_CACHE) >= _CACHE_MAX:
             _CACHE.clear()
-        _CACHE[plain.group()] = tuple((a.key, a.value, a.negated, o - start) for a, o in zip(args, offsets))
+        _CACHE[plain.group(), r.version] = tuple((a.key, a.value, a.negated, o - start) for a, o in zip(args, offsets))
     return Selector(variable, args, loc)
 
 

@@ -2,6 +2,8 @@ import pytest
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte
+from mcfunction_parser.diagnostics import Loc
+from mcfunction_parser.parse import parse_command
 from tests.parser.parser_helpers import parse_err, parse_ok
 
 
@@ -96,3 +98,15 @@ def test_repeated_selector_gets_its_own_locations():
 def test_repeated_selector_still_checks_the_version():
     parse_ok("kill @n[tag=a]")
     assert "1.21" in parse_err("kill @n[tag=a]", (1, 20, 4)).message
+
+
+def test_a_selector_parsed_for_one_release_is_checked_again_for_another():
+    # the parse of a plain selector is cached per release: armadillos exist from 1.20.5 on, so the
+    # same text parsed first for 1.21 still fails for 1.20.4 (EntitySelectorOptions 'type' reads the
+    # release's entity type registry); a warning (an id checked against an older release's
+    # registry) is given on every parse, not only the first
+    parse_ok("kill @e[type=armadillo,tag=cached]", (1, 21, 0))
+    assert "unknown entity type" in parse_err("kill @e[type=armadillo,tag=cached]", (1, 20, 4)).message
+    for _ in range(2):
+        _, diags = parse_command("kill @e[type=nosuch,tag=cached]", Loc("t", 1, 1), (1, 21, 11))
+        assert [d.severity for d in diags] == ["warning"]
