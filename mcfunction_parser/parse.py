@@ -34,8 +34,12 @@ def parse_lines(physical: list[str], path: str, function_id: str,
                 version: tuple[int, int, int] = DEFAULT_VERSION, pack: str = "") -> tuple[Function, list[Diagnostic]]:
     """:func:`parse_function` of a file already split into its lines (without their terminators,
     as the pack loader keeps them for diagnostics); ``physical`` is not modified. ``pack``: the
-    root of the pack the file is in (``Function.pack``)."""
-    with paused_gc():
+    root of the pack the file is in (``Function.pack``).
+
+    What it builds is moved to the collector's oldest generation (``kept``): a function's nodes hold
+    no reference cycles, so the young-generation pass over all of them that would follow the pause
+    (about 7 % of the parse) finds nothing; unreferenced, they are freed by their counts as ever."""
+    with paused_gc(kept=True):
         return _parse_lines(physical, path, function_id, version, pack)
 
 
