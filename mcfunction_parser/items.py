@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import re
 
-from . import ast
+from . import ast, codecs
 from .game_objects import check_id
 from .primitives import resource_location
 from .reader import Reader
@@ -60,6 +60,40 @@ COMPONENTS: dict[str, tuple[Version, Version | None]] = {
         "chicken/variant frog/variant horse/variant painting/variant llama/variant axolotl/variant "
         "cat/variant cat/collar sheep/color shulker/color").split()},
 }
+# component -> the shape of its value (DataComponents: each type's codec), for the components whose
+# codec is a number, a flag, an enum, a string, a list or a record with required fields; the others'
+# values are read as SNBT and not checked further
+VALUES: dict[str, codecs.Shape] = {f"minecraft:{name}": shape for name, shape in {
+    "damage": codecs.int_at_least(0),
+    "max_damage": codecs.int_at_least(1),
+    "max_stack_size": codecs.int_between(1, 99),
+    "repair_cost": codecs.int_at_least(0),
+    "map_id": codecs.int_at_least(-2**31),
+    "ominous_bottle_amplifier": codecs.int_between(0, 4),
+    "enchantment_glint_override": codecs.boolean,
+    "rarity": codecs.one_of("common", "uncommon", "rare", "epic"),
+    "custom_data": codecs.either(codecs.compound, codecs.string, what="a compound or its SNBT as a string"),
+    "custom_name": codecs.TEXT,
+    "item_name": codecs.TEXT,
+    "lore": codecs.a_list,
+    "custom_model_data": codecs.since((1, 21, 4), codecs.compound, codecs.int_at_least(-2**31)),
+    "dyed_color": codecs.since(codecs.TEXT_AS_SNBT, codecs.RGB, codecs.either(
+        codecs.int_at_least(-2**31), codecs.fields(("rgb", codecs.int_at_least(-2**31))),
+        what="an RGB int or {rgb: int}")),
+    "map_color": codecs.int_at_least(-2**31),
+    "food": codecs.fields(("nutrition", codecs.int_at_least(0)), ("saturation", codecs.number)),
+    "enchantments": codecs.compound,
+    "stored_enchantments": codecs.compound,
+    "unbreakable": codecs.compound,
+    "attribute_modifiers": codecs.since(codecs.TEXT_AS_SNBT, codecs.a_list, codecs.either(
+        codecs.a_list, codecs.compound, what="a list or a compound")),
+    "container": codecs.a_list,
+    "bundle_contents": codecs.a_list,
+    "charged_projectiles": codecs.a_list,
+    "recipes": codecs.a_list,
+    "trim": codecs.fields(*((key, codecs.either(codecs.string, codecs.compound, what="an id or an inline definition"))
+                            for key in ("material", "pattern"))),
+}.items()}
 SUB_PREDICATES = frozenset(f"minecraft:{name}" for name in (
     "damage enchantments stored_enchantments potion_contents custom_data container bundle_contents "
     "firework_explosion fireworks writable_book_content written_book_content attribute_modifiers trim "
@@ -164,10 +198,21 @@ def item_argument(r: Reader) -> ast.ItemArgument:
             return
         r.expect("=")
         r.skip_ws()
-        components.append((name, value(r)))
+        components.append((name, _component_value(r, name)))
 
     _bracketed(r, one, "the item's components")
     return ast.ItemArgument(loc, item_id, tuple(components), tuple(removed))
+
+
+def _component_value(r: Reader, name: str):
+    """The SNBT value of component ``name``, read as its codec reads it (VALUES)."""
+    start = r.pos
+    tag = value(r)
+    shape = VALUES.get(name)
+    problem = shape(tag, r.version) if shape is not None else None
+    if problem:
+        r.fail(f"invalid value for component '{name}': {problem}", start)
+    return tag
 
 
 def _bracketed(r: Reader, one, what: str) -> None:
@@ -260,6 +305,8 @@ def _test(r: Reader) -> ast.ComponentTest:
             _check_component(r, name, start, sub_predicate=op == "~")
         r.pos += 1
         r.skip_ws()
-        return ast.ComponentTest(name, op, value(r), negated)
+        # name=value: ComponentPredicateParser reads the value with the component's own codec
+        tag = _component_value(r, name) if op == "=" else value(r)
+        return ast.ComponentTest(name, op, tag, negated)
     _check_component(r, name, start)
     return ast.ComponentTest(name, "exists", None, negated)

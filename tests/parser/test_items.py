@@ -51,6 +51,39 @@ def test_component_existence_is_gated_by_version():
     assert parse("give @s stone[tooltip_display={}]", V1215)[1] == []
 
 
+@pytest.mark.parametrize("text,version,col,message", [
+    # DataComponents: each component's value is decoded with its codec (NbtOps: any numeric tag
+    # is a number, ExtraCodecs.NON_NEGATIVE_INT / POSITIVE_INT / intRange bound it)
+    ("give @s diamond_sword[damage=-1]", V121, 30, "at least 0"),
+    ("give @s diamond_sword[damage='x']", V121, 30, "expected an integer"),
+    ("give @s diamond_sword[damage=3.5]", V121, None, None),  # Number.intValue(): 3
+    ("give @s stone[max_stack_size=100]", V121, 30, "from 1 to 99"),
+    ("give @s stone[max_damage=0]", V121, 26, "at least 1"),
+    ("give @s stone[rarity=legendary]", V121, 22, "common, uncommon, rare, epic"),
+    ("give @s stone[enchantment_glint_override=true]", V121, None, None),
+    ("give @s stone[enchantment_glint_override='yes']", V121, 42, "true or false"),
+    ("give @s stone[food={nutrition:4}]", V121, 20, "missing field 'saturation'"),
+    ("give @s stone[food={nutrition:4,saturation:1.5f}]", V121, None, None),
+    ("give @s stone[custom_data='{a:1}']", V121, None, None),  # CustomData: a compound or its SNBT
+    ("give @s stone[custom_data=1]", V121, 27, "compound or its SNBT"),
+    # custom_model_data: an int until 1.21.4 made it {floats, flags, strings, colors}
+    ("give @s stone[custom_model_data=1]", V121, None, None),
+    ("give @s stone[custom_model_data=1]", (1, 21, 4), 33, "expected a compound"),
+    ("give @s stone[custom_model_data={floats:[1f]}]", (1, 21, 4), None, None),
+    # text: a JSON string until 1.21.5, an SNBT text component from it
+    ("give @s stone[custom_name={text:'a'}]", V121, 27, "expected a string"),
+    ("give @s stone[custom_name={text:'a'}]", V1215, None, None),
+    ("clear @s *[damage=x]", V121, 19, "expected an integer"),  # ComponentPredicateParser: the same codec
+    ("clear @s *[damage~{durability:{min:1}}]", V121, None, None),  # a sub-predicate: its own codec
+])
+def test_component_values_are_read_by_their_codec(text, version, col, message):
+    cmd, problems = parse(text, version)
+    if message is None:
+        assert problems == [] and cmd is not None
+        return
+    assert cmd is None and problems[0][0] == col and message in problems[0][1], problems
+
+
 def test_older_releases_read_the_nbt_form():
     cmd, problems = parse("give @s stone{display:{Name:'\"a\"'}} 2", V1204)
     assert problems == [] and cmd.item.tag == {"display": {"Name": '"a"'}} and cmd.item.components == ()
