@@ -25,36 +25,32 @@ def is_number(value) -> bool:
 
 
 def number(value, version) -> str | None:
-    return None if is_number(value) else f"expected a number, got {_kind(value)}"
+    return None if is_number(value) else f"expected a number, got {kind(value)}"
 
 
-def int_at_least(low: int) -> Shape:
-    """Codec.INT, or ExtraCodecs.NON_NEGATIVE_INT / POSITIVE_INT: Number.intValue() then the bound."""
+def int_between(low: int, high: int | None = None) -> Shape:
+    """Codec.INT, ExtraCodecs.NON_NEGATIVE_INT / POSITIVE_INT or intRange(low, high): Number.intValue()
+    then the bounds (``high`` None: none above)."""
     def shape(value, version):
         if not is_number(value):
-            return f"expected an integer, got {_kind(value)}"
-        if int(value) < low:
+            return f"expected an integer, got {kind(value)}"
+        if high is None and int(value) < low:
             return f"expected an integer of at least {low}, got {int(value)}"
-        return None
-    return shape
-
-
-def int_between(low: int, high: int) -> Shape:
-    """ExtraCodecs.intRange(low, high)."""
-    def shape(value, version):
-        if not is_number(value):
-            return f"expected an integer, got {_kind(value)}"
-        if not low <= int(value) <= high:
+        if high is not None and not low <= int(value) <= high:
             return f"expected an integer from {low} to {high}, got {int(value)}"
         return None
     return shape
+
+
+def int_at_least(low: int) -> Shape:
+    return int_between(low)
 
 
 def float_between(low: float, high: float) -> Shape:
     """Codec.FLOAT validated to [low, high] (the value as a float)."""
     def shape(value, version):
         if not is_number(value):
-            return f"expected a number, got {_kind(value)}"
+            return f"expected a number, got {kind(value)}"
         if not to_float32(low) <= to_float32(float(value)) <= to_float32(high):
             return f"expected a number from {low} to {high}, got {value}"
         return None
@@ -62,19 +58,19 @@ def float_between(low: float, high: float) -> Shape:
 
 
 def boolean(value, version) -> str | None:
-    return None if is_number(value) else f"expected true or false, got {_kind(value)}"
+    return None if is_number(value) else f"expected true or false, got {kind(value)}"
 
 
 def string(value, version) -> str | None:
-    return None if isinstance(value, str) else f"expected a string, got {_kind(value)}"
+    return None if isinstance(value, str) else f"expected a string, got {kind(value)}"
 
 
 def compound(value, version) -> str | None:
-    return None if isinstance(value, Compound) else f"expected a compound {{...}}, got {_kind(value)}"
+    return None if isinstance(value, Compound) else f"expected a compound {{...}}, got {kind(value)}"
 
 
 def a_list(value, version) -> str | None:
-    return None if isinstance(value, _LISTS) else f"expected a list [...], got {_kind(value)}"
+    return None if isinstance(value, _LISTS) else f"expected a list [...], got {kind(value)}"
 
 
 def one_of(*words: str) -> Shape:
@@ -96,11 +92,16 @@ def numbers(count: int) -> Shape:
 
 
 def either(*shapes: Shape, what: str) -> Shape:
-    """Codec.withAlternative: the first shape that reads the value."""
+    """Codec.withAlternative: the first shape that reads the value. When none does, a problem past the
+    value's kind (an unknown id, a missing field) is reported rather than the kinds expected."""
     def shape(value, version):
-        if any(s(value, version) is None for s in shapes):
-            return None
-        return f"expected {what}, got {_show(value)}"
+        problems = []
+        for alternative in shapes:
+            problem = alternative(value, version)
+            if problem is None:
+                return None
+            problems.append(problem)
+        return next((p for p in problems if not p.startswith("expected ")), f"expected {what}, got {_show(value)}")
     return shape
 
 
@@ -108,7 +109,7 @@ def fields(*required: tuple[str, Shape], optional: tuple[tuple[str, Shape], ...]
     """A record (RecordCodecBuilder.mapCodec): a compound with the required fields, each of its shape."""
     def shape(value, version):
         if not isinstance(value, Compound):
-            return f"expected a compound {{...}}, got {_kind(value)}"
+            return f"expected a compound {{...}}, got {kind(value)}"
         for name, field_shape in required:
             if name not in value:
                 return f"missing field '{name}'"
@@ -128,7 +129,8 @@ def since(release: Version, new: Shape, old: Shape) -> Shape:
     return shape
 
 
-def _kind(value) -> str:
+def kind(value) -> str:
+    """What a value is, for a message."""
     if isinstance(value, str):
         return f"the string {_show(value)}"
     if isinstance(value, Compound):

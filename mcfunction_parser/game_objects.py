@@ -1,6 +1,6 @@
 """Arguments that name the game's objects, checked against its registries for the target release
-(:mod:`.gamedata`): block states and predicates, item stacks and predicates, particles with their
-options, and ids of a registry.
+(:mod:`.gamedata`): block states and predicates and ids of a registry (item stacks and predicates
+are :mod:`.items`, particles :mod:`.particles`).
 
 An id missing from registries that are exactly the target release's is an error (the game parses
 functions with its registries at hand: BlockStateParser.readBlock, ItemParser.readItem and
@@ -21,8 +21,6 @@ from .reader import Reader
 STATIC = frozenset(("block", "item", "entity_type", "particle_type", "mob_effect", "attribute"))
 # the registries became data-driven (a pack may add entries) from these releases
 _DATA_DRIVEN_FROM = {"enchantment": (1, 21, 0), "worldgen/biome": (1, 16, 2)}
-ITEM_COMPONENTS = (1, 20, 5)  # 24w09a: item stacks take [components], not {nbt}
-PARTICLE_SNBT = (1, 20, 5)  # 24w13a: particle options are SNBT
 _DATA_NAMES = {"block": "block", "item": "item", "entity_type": "entity type", "particle_type": "particle type",
                "mob_effect": "effect", "enchantment": "enchantment", "worldgen/biome": "biome",
                "attribute": "attribute"}
@@ -129,111 +127,4 @@ def block(r: Reader, tags: bool) -> str:
         _block_states(r, None if is_tag else rid)
     if r.peek() == "{":
         snbt.compound(r)
-    return r.text[start:r.pos]
-
-
-# ----------------------------------------------------------------------------- items
-
-_COMPONENT_NAME = re.compile(r"[0-9a-z_:/.\-]*")
-
-
-def _component_test(r: Reader, predicate: bool) -> None:
-    """One entry: a stack's ``name=value`` or ``!name``; a predicate's ``name``, ``name=value``,
-    ``name~value`` (a sub-predicate) or ``!`` and one of those."""
-    negated = r.peek() == "!"
-    if negated:
-        r.pos += 1
-    name = _COMPONENT_NAME.match(r.text, r.pos).group()
-    if not name:
-        r.fail(f"expected a component name, got {r.found()}")
-    r.pos += len(name)
-    r.skip_ws()
-    sign = r.peek()
-    if sign == "=" or (predicate and sign == "~"):
-        r.pos += 1
-        r.skip_ws()
-        snbt.value(r)
-        r.skip_ws()
-    elif not predicate and not negated:
-        r.fail(f"expected '=' and a component value, got {r.found()}")
-
-
-def _components(r: Reader, predicate: bool) -> None:
-    """``[entry,...]`` of an item stack or predicate (a predicate's entry: tests joined by ``|``)."""
-    r.pos += 1
-    r.skip_ws()
-    if r.peek() == "]":
-        r.pos += 1
-        return
-    while True:
-        r.skip_ws()
-        _component_test(r, predicate)
-        while predicate and r.peek() == "|":
-            r.pos += 1
-            r.skip_ws()
-            _component_test(r, predicate)
-        if not _another(r, "in the item components"):
-            return
-
-
-def item(r: Reader, predicate: bool) -> str:
-    """An item stack (``predicate``: an item predicate: ``#tag``, and from 1.20.5 ``*``), with
-    ``[components]`` (1.20.5+) or ``{nbt}`` (before), returned as written."""
-    start = r.pos
-    components = r.version >= ITEM_COMPONENTS
-    if predicate and components and r.peek() == "*":  # any item
-        r.pos += 1
-    else:
-        rid, is_tag = resource_or_tag(r, "item") if predicate else (resource_location(r, "item"), False)
-        if not is_tag:
-            check_id(r, "item", rid, start)
-    if components:
-        if r.peek() == "[":
-            _components(r, predicate)
-    elif r.peek() == "{":
-        snbt.compound(r)
-    return r.text[start:r.pos]
-
-
-# ----------------------------------------------------------------------------- particles
-
-def _floats(r: Reader, count: int) -> None:
-    for _ in range(count):
-        r.space("particle option")
-        r.double()
-
-
-# pre-1.20.5 options after the particle name (ParticleOptions.DESERIALIZER.fromCommand)
-def _old_options(r: Reader, name: str) -> None:
-    if name in ("dust",):
-        _floats(r, 4)
-    elif name == "dust_color_transition":
-        _floats(r, 7)
-    elif name in ("block", "block_marker", "falling_dust", "dust_pillar"):
-        r.space("block")
-        block(r, False)
-    elif name == "item":
-        r.space("item")
-        item(r, False)
-    elif name == "vibration":
-        _floats(r, 6 if r.version < (1, 19, 0) else 3)  # 1.19: the destination only
-        r.space("ticks")
-        r.integer()
-    elif name == "sculk_charge":
-        _floats(r, 1)
-    elif name == "shriek":
-        r.space("delay")
-        r.integer()
-
-
-def particle(r: Reader) -> str:
-    """A particle type and its options: SNBT ``{...}`` from 1.20.5, words before."""
-    start = r.pos
-    rid = resource_location(r, "particle type")
-    check_id(r, "particle_type", rid, start)
-    if r.version >= PARTICLE_SNBT:
-        if r.peek() == "{":
-            snbt.compound(r)
-    elif rid.startswith("minecraft:"):
-        _old_options(r, rid[10:])
     return r.text[start:r.pos]

@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 
 from .. import game_objects as objects
-from .. import gamedata, items, snbt
+from .. import gamedata, items, particles, snbt
 from ..arguments import duration, objective, score_holder, single_score_holder, text_component, vec2, vec3
 from ..ast import GenericCommand
 from ..features import version_text
@@ -326,10 +326,10 @@ ARGUMENTS = {
     "minecraft:hex_color": _hex_color,
     "minecraft:int_range": lambda r, p: int_range(r),
     "minecraft:item_enchantment": lambda r, p: objects.registry_id(r, "enchantment"),
-    "minecraft:item_predicate": lambda r, p: objects.item(r, True),
+    "minecraft:item_predicate": lambda r, p: items.item_predicate(r),
     "minecraft:item_slot": lambda r, p: items.slot(r),
     "minecraft:item_slots": lambda r, p: items.slot(r, ranges=True),
-    "minecraft:item_stack": lambda r, p: objects.item(r, False),
+    "minecraft:item_stack": lambda r, p: items.item_argument(r),
     "minecraft:loot_modifier": _id_or_inline,
     "minecraft:loot_predicate": _id_or_inline,
     "minecraft:loot_table": _id_or_inline,
@@ -341,7 +341,7 @@ ARGUMENTS = {
     "minecraft:objective": _objective,
     "minecraft:objective_criteria": lambda r, p: criterion(r),
     "minecraft:operation": _operation,
-    "minecraft:particle": lambda r, p: objects.particle(r),
+    "minecraft:particle": lambda r, p: particles.particle(r),
     "minecraft:resource": _registry_resource,
     "minecraft:resource_key": lambda r, p: resource_location(r),
     "minecraft:resource_location": lambda r, p: resource_location(r),

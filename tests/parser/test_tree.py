@@ -141,3 +141,31 @@ def test_a_check_for_1_13_to_1_15_says_once_which_tree_it_uses(tmp_path, monkeyp
     assert len(said) == 1 and "against the 1.16.5 command tree" in said[0]
     assert "java -cp server.jar net.minecraft.data.Main --reports" in said[0]
     assert any("(checked against the 1.16.5 command tree" in m for m in warnings if m not in said)
+
+
+@pytest.mark.parametrize("line,version,message", [
+    # ParticleArgument.readParticle (1.20.5+): the options are decoded with the type's codec, from
+    # {} when none are written
+    ("particle dust ~ ~ ~", (1, 21, 4), "missing field 'color'"),
+    ("particle dust{color:[1,0,0],scale:1} ~ ~ ~", (1, 21, 4), None),
+    # DustParticleOptions: ExtraCodecs.VECTOR3F in 1.21, RGB_COLOR_CODEC (an int too) by 1.21.11
+    ("particle dust{color:16711680,scale:1} ~ ~ ~", (1, 21, 0), "list of 3 numbers"),
+    ("particle dust{color:16711680,scale:1} ~ ~ ~", (1, 21, 11), None),
+    ("particle dust{color:[1,0,0],scale:4.01} ~ ~ ~", (1, 21, 4), "from 0.01 to 4.0"),  # ScalableParticleOptionsBase
+    ("particle dust_color_transition{from_color:[1,0,0],scale:1} ~ ~ ~", (1, 21, 4), "missing field 'to_color'"),
+    ("particle entity_effect{color:[1,1,1]} ~ ~ ~", (1, 21, 4), "ARGB int or a list of 4 numbers"),
+    ('particle block{block_state:"minecraft:nope"} ~ ~ ~', (1, 21, 4), "unknown block 'minecraft:nope'"),
+    ('particle block{block_state:{Name:"stone",Properties:{}}} ~ ~ ~', (1, 21, 4), None),
+    ('particle item{item:"air"} ~ ~ ~', (1, 21, 4), "may not be minecraft:air"),
+    ('particle item{item:{id:"stone",count:2}} ~ ~ ~', (1, 21, 4), None),
+    ("particle shriek{delay:'x'} ~ ~ ~", (1, 21, 4), "expected an integer"),
+    ("particle flame{anything:1} ~ ~ ~", (1, 21, 4), None),  # SimpleParticleType: a unit codec
+    # before 1.20.5 the options are words (DustParticleOptions.DESERIALIZER.fromCommand)
+    ("particle dust 1 0 0 1 ~ ~ ~", (1, 20, 4), None),
+    ("particle dust 1 0 0 ~ ~ ~", (1, 20, 4), "expected number"),
+])
+def test_particle_options_per_release(line, version, message):
+    if message is None:
+        parse_ok(line, version)
+    else:
+        assert message in parse_err(line, version).message
