@@ -33,7 +33,7 @@ from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands.entities import entity_context
-from emulator.world import advancements, block_use, living, player_actions, statistics
+from emulator.world import advancements, block_use, living, nbt_ops, player_actions, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -83,7 +83,9 @@ class Runtime:
         return self.packs.resolve_tag(tag) if tag in self.packs.tags else []
 
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
-        return self._root_ran(function_id, self.backend.run_root(function_id, context, arguments))
+        """One root sequence, its NBT lists under the rule of the packs' release (mixed types from 1.21.5)."""
+        with nbt_ops.list_rules(self.packs.version):
+            return self._root_ran(function_id, self.backend.run_root(function_id, context, arguments))
 
     def _root_ran(self, function_id: str, result: RootResult) -> RootResult:
         """After each root: its listeners, then the rewards it earned."""
@@ -165,7 +167,8 @@ class Runtime:
                 state.daytime = start[2] + t
 
         self.rewards_cost = 0
-        batch = self.backend.run_ticks(members, ticks, at_tick)
+        with nbt_ops.list_rules(self.packs.version):
+            batch = self.backend.run_ticks(members, ticks, at_tick)
         if batch is None or not len(batch.costs):
             return 1, self.tick()
         costs, m = batch.costs, len(members)
