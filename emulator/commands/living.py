@@ -13,14 +13,15 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from emulator.world import living
+from emulator.world import advancements, living
 from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word
 from mcfunction_parser.reader import ParseError, Reader
 
-from .entities import _executor_required, found, single
+from .advancements import warn_late_rewards
+from .entities import _executor_required, executor, found, single
 
 
 @lru_cache(maxsize=4096)
@@ -110,12 +111,20 @@ def effect(env, cmd: ast.GenericCommand, ctx) -> int:
     seconds = words[3] if len(words) > 3 else None
     if seconds == "infinite":
         duration = living.INFINITE
+    elif seconds is not None:  # an instant effect's seconds are ticks (EffectCommands.giveEffect)
+        duration = _number(cmd, words, 3, int, 0) * (1 if instant else 20)
     else:
-        duration = _number(cmd, words, 3, int, 0) * 20 if seconds is not None else (1 if instant else 600)
+        duration = 1 if instant else 600
     amplifier = _number(cmd, words, 4, int, 0)
     visible = not (len(words) > 5 and words[5] == "true")
-    changed = sum(living.give_effect(env.state, e, effect_id, duration, amplifier, visible)
-                  for e in found(env.state, _target(cmd, words, 1, target), ctx) if living.is_living(e.type))
+    source = executor(env.state, ctx)
+    rewards_before = len(env.state.pending_rewards)
+    changed = 0
+    for e in found(env.state, _target(cmd, words, 1, target), ctx):
+        if living.is_living(e.type) and living.give_effect(env.state, e, effect_id, duration, amplifier, visible):
+            advancements.effects_changed(env.state, e, source)
+            changed += 1
+    warn_late_rewards(env, cmd, rewards_before)
     if not changed:
         raise CommandFailure("commands.effect.give.failed")
     return changed
@@ -127,7 +136,13 @@ def _clear(env, cmd, words, target, ctx) -> int:
     else:
         entities = [_executor_required(env.state, ctx)]
     effect_id = _resource(words[2]) if len(words) > 2 else None
-    changed = sum(living.clear_effects(e, effect_id) for e in entities if living.is_living(e.type))
+    rewards_before = len(env.state.pending_rewards)
+    changed = 0
+    for e in entities:
+        if living.is_living(e.type) and living.clear_effects(e, effect_id):
+            advancements.effects_changed(env.state, e, None)
+            changed += 1
+    warn_late_rewards(env, cmd, rewards_before)
     if not changed:
         raise CommandFailure("commands.effect.clear.specific.failed" if effect_id else
                              "commands.effect.clear.everything.failed")

@@ -10,9 +10,10 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    run as the server at world spawn; then the blocks' scheduled ticks due
    (:class:`emulator.world.block_ticks.BlockTicks`);
 4. the day time advances by one when ``doDaylightCycle`` is on;
-5. every living entity's effects count down (:func:`emulator.world.living.tick_living`), a player
-   using an item goes on using it (:func:`emulator.world.player_actions.tick_using`), an open
-   container out of reach closes (:func:`emulator.world.block_use.tick_menus`) and every
+5. every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
+   that lost one fires ``effects_changed``), a player using an item goes on using it
+   (:func:`emulator.world.player_actions.tick_using`), an open container out of reach closes
+   (:func:`emulator.world.block_use.tick_menus`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`), and the rewards earned run, each its own root as the player.
@@ -44,7 +45,14 @@ TICK_TAG = "minecraft:tick"
 
 # steps 5 and 6 before the rewards, in order, each with its test that it would change nothing now
 # (a batch of ticks needs every one idle: a step added here comes with its test)
-ENTITY_STEPS = ((living.tick_living, living.tick_is_idle),
+def _effects_step(state) -> None:
+    """The entities' effects tick (:func:`emulator.world.living.tick_living`); a player that lost
+    one fires ``effects_changed`` (ServerPlayer.onEffectsRemoved)."""
+    for entity in living.tick_living(state):
+        advancements.effects_changed(state, entity, None)
+
+
+ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
                 (player_actions.tick_using, player_actions.tick_is_idle),
                 (block_use.tick_menus, block_use.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),

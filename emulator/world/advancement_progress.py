@@ -22,7 +22,7 @@ from mcfunction_parser.pack.advancements import criteria, requirements
 # the triggers that fire in the emulator (the player actions fire using_item .. item_used_on_block:
 # emulator.world.player_actions, block_use; a teleport between levels changed_dimension)
 OBSERVED = frozenset({"impossible", "tick", "location", "inventory_changed", "using_item", "consume_item",
-                      "default_block_use", "item_used_on_block", "changed_dimension"})
+                      "default_block_use", "item_used_on_block", "changed_dimension", "effects_changed"})
 
 
 def full_id(text) -> str | None:

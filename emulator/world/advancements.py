@@ -216,3 +216,28 @@ def inventory_changed(state, player: Entity, stack: ItemStack) -> None:
                 return True
         return False
     trigger(state, player, "inventory_changed", matches)
+
+
+# ---------------------------------------------------------------------- effects_changed
+def effects_changed(state, player: Entity, source: Entity | None) -> None:
+    """EffectsChangedTrigger (ServerPlayer.onEffectAdded/onEffectUpdated/onEffectsRemoved): a
+    player's effects were added, changed or removed. ``effects`` (MobEffectsPredicate) reads the
+    effects the player has now; ``source`` is the entity that gave them (``effect give``'s
+    executor; none for a removal, and then a ``source`` condition fails)."""
+    if not player.is_player:
+        return
+
+    def matches(conditions: dict, ctx) -> bool:
+        wanted = conditions.get("effects")
+        if wanted is not None and not predicates.entity_matches({"effects": wanted}, ctx, player):
+            return False
+        if conditions.get("source") is None:
+            return True
+        if source is None:
+            return False
+        source_ctx = LootContext(state, player.pos, this=source, dimension=player.dimension)
+        condition = conditions["source"]
+        if isinstance(condition, list):
+            return predicates.test(condition, source_ctx)
+        return predicates.entity_matches(condition, source_ctx, source)
+    trigger(state, player, "effects_changed", matches)

@@ -13,7 +13,8 @@ entity's NBT fields as the game saves them (``Health``, ``attributes``, ``active
 - Health and damage (LivingEntity.hurtServer/actuallyHurt, no AI): ``health``, ``hurt``; a mob at 0
   health dies (it is removed at once: its 20-tick death animation is not modelled).
 - Effects (LivingEntity.addEffect, MobEffectInstance.update/tick): ``give_effect``, ``clear_effects``;
-  ``tick_living(state)`` counts every effect down once per tick and drops the expired ones.
+  ``tick_living(state)`` counts every effect down once per tick (an instant effect acts then) and
+  drops the expired ones.
 - A player's attack (Player.attack, no items): ``attack``; ``reset_attack_strength`` when it joins.
 - Experience (Player.giveExperiencePoints/giveExperienceLevels/setExperiencePoints):
   ``add_points``, ``add_levels``, ``set_points``, ``set_levels``, ``query_points``, ``xp_needed``.
@@ -318,16 +319,15 @@ def _longer(a: int, b: int) -> bool:
 def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, visible: bool) -> bool:
     """LivingEntity.addEffect: a new effect, or MobEffectInstance.update of the one there (a higher
     amplifier replaces it, the same amplifier with a longer duration extends it, a change of
-    particles shows); False when nothing changed. Instant effects act at once and are not kept."""
-    if effect_id in INSTANT:
-        _instant(state, entity, effect_id, amplifier)
-        return True
+    particles shows); False when nothing changed. Instant effects are kept like the others: the
+    entity's tick applies them (:func:`tick_living`), so a weaker one given while a stronger one
+    waits changes nothing."""
     current = _effect(entity, effect_id)
     if current is None:
         effects(entity).append(Compound(id=String(effect_id), amplifier=Byte(amplifier), duration=Int(duration),
                                         ambient=Byte(0), show_particles=Byte(int(visible)), show_icon=Byte(1)))
         return True
-    old_amp, old_duration = int(_number(current.get("amplifier"))), int(_number(current.get("duration")))
+    old_amp, old_duration = _amplifier(current), int(_number(current.get("duration")))
     changed = False
     if amplifier > old_amp or (amplifier == old_amp and _longer(duration, old_duration)):
         current["amplifier"], current["duration"] = Byte(amplifier), Int(duration)
@@ -336,6 +336,11 @@ def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, vi
         current["show_particles"] = Byte(int(visible))
         changed = True
     return changed
+
+
+def _amplifier(effect: Compound) -> int:
+    """The saved amplifier is a byte; the game reads it back unsigned (0-255)."""
+    return int(_number(effect.get("amplifier"))) & 0xFF
 
 
 UNDEAD = frozenset(f"minecraft:{n}" for n in (
@@ -384,20 +389,18 @@ def tick_is_idle(state) -> bool:
     return True
 
 
-def tick_living(state) -> None:
-    """Each living entity's tick, as far as a pack can see it: every effect's duration counts down
-    (MobEffectInstance.tickServer) and an expired one is removed; hurt timers run out."""
+def tick_living(state) -> list:
+    """Each living entity's tick, as far as a pack can see it (LivingEntity.tickEffects): every
+    effect ticks (MobEffectInstance.tickServer: an instant effect acts each tick it has left,
+    InstantenousMobEffect.shouldApplyEffectTickThisTick; then the duration counts down) and an
+    expired one is removed; hurt timers run out. Returns the entities that lost an effect (the
+    game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
+    lost = []
     for entity in state.entities.living():
         found = entity.data.get("active_effects")
         if isinstance(found, List) and found:
-            for effect in list(found):
-                duration = int(_number(effect.get("duration")))
-                if duration == INFINITE:
-                    continue
-                if duration <= 1:
-                    found.remove(effect)
-                else:
-                    effect["duration"] = Int(duration - 1)
+            if _tick_effects(state, entity, found):
+                lost.append(entity)
             _drop_if_empty(entity)
         hurt_time = entity.data.get("HurtTime")
         if is_numeric(hurt_time) and numeric_value(hurt_time) > 0:
@@ -407,6 +410,24 @@ def tick_living(state) -> None:
             timers[0] -= 1
             if timers[0] <= 0:
                 del _HURT[entity]
+    return lost
+
+
+def _tick_effects(state, entity, found: List) -> bool:
+    """One tick of each effect; True when one expired."""
+    expired = False
+    for effect in list(found):
+        duration = int(_number(effect.get("duration")))
+        if str(effect.get("id", "")) in INSTANT and duration >= 1:
+            _instant(state, entity, str(effect.get("id")), _amplifier(effect))
+        if duration == INFINITE:
+            continue
+        if duration <= 1:
+            found.remove(effect)
+            expired = True
+        else:
+            effect["duration"] = Int(duration - 1)
+    return expired
 
 
 # ---------------------------------------------------------------------- experience

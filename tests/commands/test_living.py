@@ -186,15 +186,37 @@ def test_set_points_compares_as_ints_at_huge_levels(env):
 
 def test_instant_effects_shift_as_java_ints(env):
     """HealOrHarmMobEffect: heal max(4 << amplifier, 0) with Java's int shift (distance mod 32):
-    amplifier 255 heals nothing, 28 heals 2^30; instant damage heals the undead."""
+    amplifier 255 heals nothing, 28 heals 2^30; instant damage heals the undead. Each acts in the
+    entity's next tick (MobEffectInstance.tickServer), not in the command."""
     pig = env.state.entities.summon("minecraft:pig", (0, 0, 0), Compound(Health=Float(2.0)))
     run(env, "effect give @e[type=pig] minecraft:instant_health 1 255")
+    living.tick_living(env.state)
     assert float(pig.data["Health"]) == 2.0
     run(env, "effect give @e[type=pig] minecraft:instant_health 1 28")
+    assert float(pig.data["Health"]) == 2.0 and "active_effects" in pig.data
+    living.tick_living(env.state)
     assert float(pig.data["Health"]) == 10.0  # up to its max health
+    assert "active_effects" not in pig.data
     zombie = env.state.entities.summon("minecraft:zombie", (0, 0, 0), Compound(Health=Float(5.0)))
     run(env, "effect give @e[type=zombie] minecraft:instant_damage 1 0")
+    living.tick_living(env.state)
     assert float(zombie.data["Health"]) == 9.0  # healed by 4 << 0, as instant health would
+
+
+def test_an_instant_effect_waits_for_the_tick_and_a_weaker_one_changes_nothing(env):
+    """EffectCommands.giveEffect: an instant effect's seconds are ticks, each tick applies it once;
+    MobEffectInstance.update: a lower amplifier does not replace the waiting one (the command
+    fails), which is why libraries clear a stronger one first."""
+    pig = env.state.entities.summon("minecraft:pig", (0, 0, 0), Compound(Health=Float(1.0)))
+    run(env, "effect give @e[type=pig] minecraft:instant_health 3 0")
+    assert [int(e["duration"]) for e in pig.data["active_effects"]] == [3]
+    with pytest.raises(CommandFailure, match="has something stronger"):
+        run(env, "effect give @e[type=pig] minecraft:instant_health 2 0")
+    healths = []
+    for _ in range(4):
+        living.tick_living(env.state)
+        healths.append(float(pig.data["Health"]))
+    assert healths == [5.0, 9.0, 10.0, 10.0]
 
 
 # ---------------------------------------------------------------------- gamemode

@@ -1,0 +1,2 @@
+scoreboard objectives add healing.heals dummy
+scoreboard objectives add healing.given dummy

@@ -1,0 +1,1 @@
+scoreboard players add @s healing.heals 1
