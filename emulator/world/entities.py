@@ -255,11 +255,16 @@ class Entity:
         self.refresh_sizes()  # a player crouches
 
     def dimensions(self) -> tuple[np.float32, np.float32, np.float32]:
-        """Width, height and eye height (float32, as EntityDimensions holds them):
+        """Width, height and eye height (float32, as EntityDimensions holds them): an interaction's
+        ``width`` and ``height`` (1 by 1 unless set, eyes at 0.85 of the height);
         LivingEntity.getDimensions, the pose's or age's dimensions scaled by the ``scale``
         attribute; ArmorStand's marker (no size, fixed) and small (baby) dimensions."""
         kind = entity_type(self.type)
         width, height, eyes = kind.width, kind.height, kind.eye_height
+        if self.type == "minecraft:interaction":  # Interaction.getDimensions: scalable(width, height)
+            width, height = (F32(numeric_value(v)) if is_numeric(v := self.data.get(k)) else F32(1.0)
+                             for k in ("width", "height"))
+            return width, height, height * F32(0.85)
         if self.type == "minecraft:armor_stand" and self.data.get("Marker"):
             return F32(0.0), F32(0.0), F32(0.0)  # EntityDimensions.fixed: the scale does not change it
         if self.is_player and self._sneaking:

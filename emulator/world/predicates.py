@@ -40,11 +40,12 @@ Sources (decompiled 1.21, net/minecraft/world/level/storage/loot/predicates/*, a
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Callable
 
 import numpy as np
 
-from emulator.world import advancement_progress, inventories, living
+from emulator.world import advancement_progress, entity_predicate_format, inventories, living, sight
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack, enchantment_level, sub_predicate, value_equal
@@ -294,7 +295,7 @@ def entity_matches(predicate, ctx: LootContext, entity: Entity | None) -> bool:
         return entity is not None and test(predicate, ctx.for_entity(entity))
     if entity is None:
         return False
-    for key, value in predicate.items():
+    for key, value in entity_predicate_format.classic(predicate, ctx.state.version).items():
         check = _ENTITY_FIELDS.get(key)
         if check is None:
             if key in _ENTITY_UNMODELLED:
@@ -414,7 +415,8 @@ def _type_specific(value: dict, ctx: LootContext, entity: Entity) -> bool:
 
 
 def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
-    """PlayerPredicate: the entity must be a player; gamemode, level and advancements are modelled."""
+    """PlayerPredicate: the entity must be a player; gamemode, level, advancements and looking_at
+    (:func:`emulator.world.sight.looked_at`) are modelled."""
     if not entity.is_player:
         return False
     for key, wanted in value.items():
@@ -430,6 +432,10 @@ def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
         elif key == "advancements":
             if not advancement_progress.matches(ctx.state, entity, wanted):
                 return False
+        elif key == "looking_at":  # EntityPredicate.matches(player, entity): from the player's position
+            seen = sight.looked_at(ctx.state, entity)
+            if not entity_matches(wanted, replace(ctx, origin=entity.pos), seen):
+                return False
         else:
             raise Unmodelled(f"player predicate field '{key}'")
     return True
@@ -437,6 +443,7 @@ def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
 
 _ENTITY_FIELDS = {
     "type": _type_matches,
+    "entity_tags": lambda value, ctx, entity: entity_predicate_format.tags_match(value, entity),
     "distance": _distance,
     "nbt": _nbt,
     "flags": _flags,
