@@ -109,19 +109,66 @@ def _resolve(component, resolver: "_Resolver"):
         return [_resolve(c, resolver) for c in component]
     if not isinstance(component, dict):
         return component
-    out = {k: v for k, v in component.items() if k not in _CONTENT_KEYS}  # the style stays
+    out = {k: v for k, v in component.items() if k not in _CONTENT_KEYS and k != "extra"}  # the style stays
     interpreted = []
     if "score" in component:
         out["text"] = resolver.score(component["score"])
     elif "selector" in component:
-        out["text"] = ", ".join(e.display_name for e in resolver.select(str(component["selector"])))
+        out = _selector(component, resolver, out)
     elif "nbt" in component and component.get("interpret") in (True, 1):
         out["text"], interpreted = "", resolver.interpreted(component)  # the values come first
     elif "nbt" in component:
         out["text"] = resolver.nbt(component)
     if "extra" in component or interpreted:
-        out["extra"] = interpreted + _resolve(component.get("extra", []), resolver)
+        out["extra"] = out.get("extra", []) + interpreted + _resolve(component.get("extra", []), resolver)
     return out
+
+
+DEFAULT_SEPARATOR = {"text": ", ", "color": "gray"}  # ComponentUtils.DEFAULT_SEPARATOR
+
+
+def _selector(component: dict, resolver: "_Resolver", style: dict) -> dict:
+    """SelectorContents.resolve: ComponentUtils.formatList of the display names it finds (one name
+    as it is, several joined by the separator, none empty), then the written style applied over
+    it (MutableComponent.withStyle: what the component sets wins)."""
+    names = [display_name(e, resolver.state.version) for e in resolver.select(str(component["selector"]))]
+    if len(names) == 1:
+        found = names[0]
+    else:
+        separator = component.get("separator", DEFAULT_SEPARATOR)
+        joined = [part for i, name in enumerate(names) for part in ([separator] if i else []) + [name]]
+        found = {"text": "", "extra": joined} if joined else {"text": ""}
+    return {**found, **style}
+
+
+def display_name(entity: Entity, version) -> dict:
+    """Entity.getDisplayName as a component: the name (its custom name, a player's name, else the
+    type's name) with a ``show_entity`` hover event and the UUID string to insert; a player's
+    inserts its name and suggests ``/tell NAME `` on click (Player.decorateDisplayNameComponent).
+    Before 1.21.5 the events are written ``hoverEvent``/``clickEvent`` with the old fields.
+    Team prefixes and colours (PlayerTeam.formatNameForTeam) are not applied."""
+    written = read_component(entity.custom_name) if entity.custom_name is not None and not entity.is_player else None
+    if isinstance(written, dict):
+        name = dict(written)
+    elif isinstance(written, list):
+        name = {"text": "", "extra": written}
+    else:
+        name = {"text": entity.display_name}
+    tooltip = {"text": entity.display_name}
+    new = tuple(version) >= (1, 21, 5)
+    if new:
+        name["hover_event"] = {"action": "show_entity", "id": entity.type, "uuid": entity.uuid_string, "name": tooltip}
+    else:
+        name["hoverEvent"] = {"action": "show_entity",
+                              "contents": {"type": entity.type, "id": entity.uuid_string, "name": tooltip}}
+    if entity.is_player:
+        command = f"/tell {entity.player_name} "
+        name["click_event" if new else "clickEvent"] = ({"action": "suggest_command", "command": command} if new
+                                                         else {"action": "suggest_command", "value": command})
+        name["insertion"] = entity.player_name
+    else:
+        name["insertion"] = entity.uuid_string
+    return name
 
 
 class _Resolver:

@@ -5,6 +5,8 @@ their PackTest suites run on both backends:
 - rewards: advancements (a player-tick hook that revokes itself, the location trigger, a reward
   chain, grant/revoke modes and criteria, the advancements selector);
 - healing: health set through instant effects, the effects_changed trigger and its conditions;
+- sight: 26.2 entity sub-predicates, a player's looking_at, an entity's UUID read from the
+  insertion of its display name (a selector text resolved by set_name);
 - lists, typed: a collection library flattening lists that mix types (1.21.5+), and the one-type
   rule of the lists before it."""
 from pathlib import Path
@@ -16,7 +18,7 @@ from emulator.testing.results import PASSED
 from emulator.testing.runner import load_suite, run_case
 
 HERE = Path(__file__).resolve().parent
-SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "typed")}
+SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 

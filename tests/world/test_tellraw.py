@@ -124,3 +124,27 @@ def test_nbt_interpret_takes_the_tag_itself_from_1_21_5(tmp_path):
 def test_plain_text_reads_json_and_snbt_components(text, plain):
     from emulator.world.text import plain_text
     assert plain_text(text) == plain
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_selector_part_is_each_entitys_display_name(tmp_path, backend):
+    """SelectorContents.resolve: ComponentUtils.formatList of Entity.getDisplayName: one name as it
+    is, with the entity's UUID to insert and a show_entity hover (a player: its name to insert and
+    a /tell suggestion, Player.decorateDisplayNameComponent), several joined by a grey ", "; the
+    written style wins (MutableComponent.withStyle)."""
+    emu = emulator(tmp_path, backend, {"t:main": "\n".join([
+        'summon pig 0 0 0 {UUID:[I;1,2,3,4],CustomName:\'"Babe"\'}',
+        'tellraw @a {"selector":"@e[type=pig]","color":"red"}',
+        'tellraw @a {"selector":"@a"}',
+        'summon pig',
+        'tellraw @a {"selector":"@e[type=pig]"}',
+    ])})
+    emu.add_player("Alex")
+    emu.call("t:main")
+    babe, alex, both = (json.loads(e.text) for e in emu.log)
+    uuid = "00000001-0000-0002-0000-000300000004"
+    assert babe == {"text": "Babe", "insertion": uuid, "color": "red", "hoverEvent": {
+        "action": "show_entity", "contents": {"type": "minecraft:pig", "id": uuid, "name": {"text": "Babe"}}}}
+    assert alex["insertion"] == "Alex" and alex["clickEvent"] == {"action": "suggest_command", "value": "/tell Alex "}
+    assert both["text"] == "" and [plain(json.dumps(p)) for p in both["extra"]] == ["Babe", ", ", "Pig"]
+    assert both["extra"][1] == {"text": ", ", "color": "gray"}
