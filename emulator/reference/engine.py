@@ -238,9 +238,12 @@ class Interpreter:
         try:
             self._run_function_command(queue, frame, line, command, source, is_return)
         except CommandFailure as failure:
+            # CustomCommandExecutor.WithErrorHandling: source.callback().onFailure(); after `return
+            # run` that callback carries the frame's return (BuildContexts), so the function fails
             self._fail(failure, source, line)
-            if source.callback is not None:
-                source.callback(False, 0)
+            callback = chain(source.callback, frame.on_return) if is_return else source.callback
+            if callback is not None:
+                callback(False, 0)
 
     def _return(self, queue, frame, command: ast.Return, source: Source) -> None:
         """ReturnValueCustomExecutor / ReturnFailCustomExecutor."""

@@ -92,3 +92,14 @@ def test_arguments_are_read_in_the_games_order(tmp_path, backend, line):
     outcome = run(tmp_path, backend, line)
     assert outcome.scores["o"] == {}
     assert messages(outcome) == []
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_return_run_of_a_function_whose_arguments_fail_returns_failure(tmp_path, backend):
+    # FunctionCommand: no element at the `with` path throws; CustomCommandExecutor.WithErrorHandling
+    # calls source.callback().onFailure(), which after `return run` is chained with the frame's
+    # return value consumer (BuildContexts.execute), so the calling function fails: store success 0
+    outcome = run(tmp_path, backend, "scoreboard players set #s o -5\n"
+                                     "execute store success score #s o run function t:h",
+                  {"t:h": "return run function t:n with storage t:s nothing", "t:n": "$return $(v)"})
+    assert outcome.scores["o"]["#s"] == 0
