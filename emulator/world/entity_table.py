@@ -90,7 +90,7 @@ class EntityTable:
     def intern_names_of(self, other: "EntityTable") -> None:
         """Intern ``other``'s tag and type names, in its order, into this empty table (a program
         compiled against ``other`` holds their numbers)."""
-        if self.tag_names or len(self.type_ids) > 1:
+        if self.tag_names or len(self.type_ids) > LAST_DISPLAY_TYPE + 1:  # only the player and the displays
             raise ValueError("names are interned into an empty entity table only")
         for name in other.tag_names:
             self.tag_id(name)
