@@ -27,7 +27,7 @@ from dataclasses import replace
 
 import numpy as np
 
-from emulator.world import relations, teleport
+from emulator.world import combat, living, relations, teleport
 from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
 from emulator.world.entity_types import ENTITY_TYPES
 from emulator.world import advancement_progress, advancements, predicates
@@ -184,13 +184,24 @@ def summon(env, cmd: ast.Summon, ctx: Context) -> int:
     return 1
 
 
+MAX_FLOAT = 3.4028234663852886e38  # Float.MAX_VALUE
+
+
 def kill(env, cmd: ast.Kill, ctx: Context) -> int:
-    """``kill [TARGETS]`` (the executor by default): entities leave the store, players stay (they
-    respawn); a removed entity loses every score (Scoreboard.entityRemoved -> resetAllPlayerScores)."""
+    """``kill [TARGETS]`` (the executor by default): a living entity is hurt by ``generic_kill`` past
+    any protection and dies (emulator.world.combat: a mob leaves the store, a player dies to
+    respawn later); other entities and armor stands leave the store. A removed entity loses every
+    score (Scoreboard.entityRemoved -> resetAllPlayerScores)."""
     state = env.state
     targets = [_executor_required(state, ctx)] if cmd.targets is None else found(state, cmd.targets, ctx)
     for entity in targets:
-        if not entity.is_player and entity.alive:
+        if not entity.alive:
+            continue
+        if living.is_living(entity.type) and entity.type != "minecraft:armor_stand":
+            # LivingEntity.kill: hurt by generic_kill past every protection (an armor stand is removed)
+            if combat.hurt(state, entity, MAX_FLOAT, combat.DamageSource("minecraft:generic_kill"), True):
+                continue
+        if not entity.is_player:
             state.entities.kill(entity)
             state.scoreboard.reset(entity.score_holder)
     return len(targets)

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from emulator.world import advancements, living
+from emulator.world import advancements, combat, living
 from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast, selectors
@@ -21,7 +21,7 @@ from mcfunction_parser.arguments import holder_from_word
 from mcfunction_parser.reader import ParseError, Reader
 
 from .advancements import warn_late_rewards
-from .entities import _executor_required, executor, found, single
+from .entities import _executor_required, executor, found, parse_target, single
 
 
 @lru_cache(maxsize=4096)
@@ -202,16 +202,32 @@ BYPASSES_INVULNERABILITY = {"minecraft:out_of_world", "minecraft:generic_kill"}
 
 def damage(env, cmd: ast.GenericCommand, ctx) -> int:
     """``damage TARGET AMOUNT [TYPE] [at POS | by ENTITY [from CAUSE]]``: the target is hurt (no
-    knockback, no AI); the source position and attacker are not modelled (a pack cannot observe
-    them without AI)."""
+    knockback, no AI) by a source of that type whose entity is CAUSE, else ENTITY (DamageCommand:
+    the responsible entity earns the kill credit and fires the hurt triggers); the source position
+    is not modelled (a pack cannot observe it without AI)."""
     words, target = _arguments(cmd)
     entity = single(env.state, _target(cmd, words, 0, target), ctx)
     amount = _number(cmd, words, 1)
     damage_type = _resource(words[2]) if len(words) > 2 and words[2] not in ("at", "by") else "minecraft:generic"
-    if not living.is_living(entity.type) or not living.hurt(env.state, entity, amount,
+    direct = _source_entity(env, words, target, "by", ctx)
+    cause = _source_entity(env, words, target, "from", ctx) or direct
+    source = combat.DamageSource(damage_type, cause, direct)
+    if not living.is_living(entity.type) or not combat.hurt(env.state, entity, amount, source,
                                                             damage_type in BYPASSES_INVULNERABILITY):
         raise CommandFailure("commands.damage.invulnerable")
     return 1
+
+
+def _source_entity(env, words: list, target, keyword: str, ctx):
+    """The one entity after ``by`` / ``from`` (EntityArgument.getEntity), None without the keyword
+    (``target``: the command's first selector, where its word is None)."""
+    if keyword not in words or words.index(keyword) + 1 >= len(words):
+        return None
+    word = words[words.index(keyword) + 1]
+    try:
+        return single(env.state, target if word is None else parse_target(word), ctx)
+    except ValueError as error:
+        raise CommandFailure("dpemu.command.unreadable", "damage", str(error), report=True) from None
 
 
 # ---------------------------------------------------------------------- gamemode

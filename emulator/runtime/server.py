@@ -11,7 +11,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    (:class:`emulator.world.block_ticks.BlockTicks`);
 4. the day time advances by one when ``doDaylightCycle`` is on;
 5. every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
-   that lost one fires ``effects_changed``), a player using an item goes on using it
+   that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
+   (:func:`emulator.world.combat.tick_dead`), a player using an item goes on using it
    (:func:`emulator.world.player_actions.tick_using`), an open container out of reach closes
    (:func:`emulator.world.block_use.tick_menus`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
@@ -34,7 +35,7 @@ from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands.entities import entity_context
-from emulator.world import advancements, block_use, living, nbt_ops, player_actions, statistics
+from emulator.world import advancements, block_use, combat, living, nbt_ops, player_actions, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -46,13 +47,15 @@ TICK_TAG = "minecraft:tick"
 # steps 5 and 6 before the rewards, in order, each with its test that it would change nothing now
 # (a batch of ticks needs every one idle: a step added here comes with its test)
 def _effects_step(state) -> None:
-    """The entities' effects tick (:func:`emulator.world.living.tick_living`); a player that lost
-    one fires ``effects_changed`` (ServerPlayer.onEffectsRemoved)."""
-    for entity in living.tick_living(state):
+    """The entities' effects tick (:func:`emulator.world.living.tick_living`, an instant effect's
+    damage as combat's magic: it can kill); a player that lost one fires ``effects_changed``
+    (ServerPlayer.onEffectsRemoved)."""
+    for entity in living.tick_living(state, combat.magic_harm):
         advancements.effects_changed(state, entity, None)
 
 
 ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
+                (combat.tick_dead, combat.tick_is_idle),
                 (player_actions.tick_using, player_actions.tick_is_idle),
                 (block_use.tick_menus, block_use.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),

@@ -13,29 +13,29 @@ Modelled:
   ``@dummy`` one; the emulator has no entity physics to land it).
 - ``leave``: emulator.world.players.leave: ``minecraft.custom:minecraft.leave_game`` + 1, then the
   player is gone (scores stay).
-- ``respawn``: a new player entity with the same name, UUID and tags at the dummy's first spawn
-  position, rotation 0 0 (PackTest's PlayerListMixin), sneak/sprint released, slot 1.
+- ``respawn``: a new player entity with the same name and UUID at the dummy's first spawn
+  position, rotation 0 0 (PackTest's PlayerListMixin), sneak/sprint released, slot 1, keeping what
+  ServerPlayer.restoreFrom keeps (emulator.world.combat: tags, ender chest, with keepInventory the
+  inventory and experience).
 - ``jump``: only from the ground; ``minecraft.custom:minecraft.jump`` + 1. The jump's motion is not
   applied: without gravity and landing it would never end.
 - ``sneak``/``sprint``: the key state (failing when unchanged, as PackTest does); a sneaking player
   earns ``minecraft.custom:minecraft.sneak_time`` every tick (emulator.world.statistics). Sprinting is
   observable only through predicates, which the emulator does not evaluate.
 - ``selectslot N``: ``SelectedItemSlot`` (N - 1) in the player's NBT.
-- ``attack``/``use entity`` on an ``interaction`` entity: its ``attack``/``interaction`` NBT
-  ``{player: UUID, timestamp: game time}`` (Interaction.skipAttackInteraction / interact).
-- ``attack`` on a living entity: Player.attack with an empty hand (emulator.world.living.attack):
+- ``attack`` on an ``interaction`` entity: its ``attack`` NBT ``{player: UUID, timestamp: game
+  time}`` (Interaction.skipAttackInteraction); ``use entity``: emulator.world.entity_use.
+- ``attack`` on a living entity: Player.attack (emulator.world.combat.attack):
   the damage grows with the ticks since the dummy joined or last attacked, the target's
-  ``Health`` and ``HurtTime``, ``damage_dealt`` and the kill statistics. A target that is not
-  living is not attackable: nothing happens, as in the game. Knockback and the
-  ``player_hurt_entity`` advancement trigger are not modelled.
+  ``Health`` and ``HurtTime``, ``damage_dealt``, a death (emulator.world.combat). A target that
+  is not living is not attackable: nothing happens, as in the game. Knockback is not modelled.
 - ``mine``: emulator.world.block_breaking (ServerPlayerGameMode.destroyBlock).
 - ``drop [all]``, ``swap``, ``use item``: emulator.world.player_actions (the item entity with its
   ``Thrower``, the hands' stacks, the items whose use is modelled, using an item over ticks);
   ``use block``: emulator.world.block_use (each hand in turn until one consumes the action).
 
-Not modelled, so a test using them is inconclusive with the reason: using any other entity (mob
-interactions), and what the world modules say they do not model (an item's use, a block's
-interaction, mining with a tool ...).
+Not modelled, so a test using them is inconclusive with the reason: what the world modules say
+they do not model (an item's use, a block's or a mob's interaction, mining with a tool ...).
 
 As in PackTest, an action the game refuses (``Dummy X is not on the ground`` ...) is a failed
 command: the test goes on, and the message is kept as a runtime diagnostic.
@@ -46,7 +46,7 @@ from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import block_breaking, block_use, living, player_actions, players, statistics
+from emulator.world import block_breaking, block_use, combat, entity_use, living, player_actions, players, statistics
 from emulator.world.blocks import block_pos, parse_block
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure, Unmodelled
@@ -215,11 +215,13 @@ class Dummies:
         players.leave(self.state, dummy)
 
     def _respawn(self, dummy: Entity, command, ctx) -> None:
-        tags, spawn = set(dummy.tags), self.spawns.pop(dummy.uuid)
+        """PlayerList.respawn: a new player at the dummy's first spawn (Dummy.adjustSpawnLocation),
+        keeping what ServerPlayer.restoreFrom keeps."""
+        spawn = self.spawns.pop(dummy.uuid)
         block_use.close_menu(self.state, dummy)
         self.state.entities.kill(dummy)
         reborn = self.spawn(dummy.player_name, spawn)
-        reborn.tags = tags  # PlayerList.respawn copies the tags to the new player
+        combat.respawn_keeps(self.state, dummy, reborn)
 
     def _jump(self, dummy: Entity, command, ctx) -> None:
         if not dummy.data.get("OnGround"):
@@ -244,19 +246,17 @@ class Dummies:
     def _attack(self, dummy: Entity, command, ctx) -> None:
         target = self._entity(command.entity, ctx)
         if target.type == "minecraft:interaction":
-            self._record(dummy, target, "attack", "attacking")
+            entity_use.record(self.state, dummy, target, "attack")  # Interaction.skipAttackInteraction
         else:
-            living.attack(self.state, dummy, target)
+            combat.attack(self.state, dummy, target)
 
     def _use_entity(self, dummy: Entity, command, ctx) -> None:
-        self._record(dummy, self._entity(command.entity, ctx), "interaction", "using an item on")
-
-    def _record(self, dummy: Entity, target: Entity, key: str, doing: str) -> None:
-        """An interaction entity remembers who attacked / used it and when (PlayerAction)."""
-        if target.type != "minecraft:interaction":
-            raise Unsupported(f"{doing} {target.type} is not modelled (only interaction entities record "
-                              f"players' actions in the emulator)")
-        target.data[key] = Compound(player=IntArray(Int(v) for v in dummy.uuid), timestamp=Long(self.state.gametime))
+        """DummyCommand.useEntity: each hand in turn, until one consumes the action."""
+        target = self._entity(command.entity, ctx)
+        for hand in (player_actions.MAIN, player_actions.OFF):
+            if entity_use.interact_on(self.state, dummy, hand, target) == "consume":
+                return
+        raise DummyFailure(f"Dummy {dummy.player_name} cannot interact with that entity")
 
     def _mine(self, dummy: Entity, command, ctx) -> None:
         pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)

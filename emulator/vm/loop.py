@@ -335,6 +335,8 @@ def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags,
     (squared, to the feet) from the origin ``(ox, oy, oz)``."""
     if sels[sel, S_PLAYERS] and eints[slot, EI_TYPE] != PLAYER_TYPE:
         return False
+    if sels[sel, S_KIND] == KIND_E and not sels[sel, S_PLAYERS] and eints[slot, EI_ALIVE] == 0:
+        return False  # @e and @n test isAlive (a dead player stays in @a until it respawns)
     t = sels[sel, S_TESTS]
     end = t + sels[sel, S_NTESTS]
     while t < end:

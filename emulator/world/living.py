@@ -10,12 +10,13 @@ entity's NBT fields as the game saves them (``Health``, ``attributes``, ``active
   defaults for the common attributes (``DEFAULTS``, per type ``TYPE_BASES``). An instance appears in
   the ``attributes`` list when a command first reads or changes it (the game's AttributeMap creates
   instances on demand).
-- Health and damage (LivingEntity.hurtServer/actuallyHurt, no AI): ``health``, ``hurt``; a mob at 0
-  health dies (it is removed at once: its 20-tick death animation is not modelled).
+- Health and damage (LivingEntity.hurtServer/actuallyHurt, no AI): ``health``, ``hurt`` (the
+  health taken; who did it, death and the triggers are emulator.world.combat's, which calls it).
 - Effects (LivingEntity.addEffect, MobEffectInstance.update/tick): ``give_effect``, ``clear_effects``;
-  ``tick_living(state)`` counts every effect down once per tick (an instant effect acts then) and
-  drops the expired ones.
-- A player's attack (Player.attack, no items): ``attack``; ``reset_attack_strength`` when it joins.
+  ``tick_living(state, harm)`` counts every effect down once per tick (an instant effect acts then,
+  its damage dealt by ``harm``: emulator.world.combat's, which also kills) and drops the expired ones.
+- A player's swing (Player.attack's damage): ``swing_damage``; ``reset_attack_strength`` when it
+  joins (the attack itself: emulator.world.combat).
 - Experience (Player.giveExperiencePoints/giveExperienceLevels/setExperiencePoints):
   ``add_points``, ``add_levels``, ``set_points``, ``set_levels``, ``query_points``, ``xp_needed``.
 
@@ -33,6 +34,7 @@ import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
 from emulator.world import statistics
+from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.semantics import wrap32
 
@@ -260,14 +262,24 @@ def heal(entity, amount: float) -> None:
         _set_health(entity, health(entity) + amount)
 
 
-def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False) -> bool:
+# Player.actuallyHurt: the food exhaustion of the damage types modelled (DamageType.exhaustion)
+EXHAUSTION = {"minecraft:generic": 0.0, "minecraft:generic_kill": 0.0, "minecraft:out_of_world": 0.0,
+              "minecraft:magic": 0.0, "minecraft:player_attack": 0.1, "minecraft:mob_attack": 0.1}
+
+
+def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
+         damage_type: str = "minecraft:generic") -> bool:
     """LivingEntity.hurtServer without AI or armour items: refused for invulnerable entities,
     creative and spectator players (unless the type bypasses invulnerability) and the dead; within
     the 10 ticks after a hurt only the excess over the last hurt applies. Returns whether it hurt.
-    Armour points reduce the damage as CombatRules.getDamageAfterAbsorb does."""
+    Armour points reduce the damage as CombatRules.getDamageAfterAbsorb does, then absorption
+    (LivingEntity.actuallyHurt); a player counts ``damage_absorbed``/``damage_taken`` and the
+    type's food exhaustion. The resistance effect raises Unmodelled."""
     invulnerable = entity.data.get("Invulnerable") or (entity.is_player and entity.gamemode in ("creative", "spectator"))
     if (invulnerable and not bypasses_invulnerability) or health(entity) <= 0:
         return False
+    if _effect(entity, "minecraft:resistance") is not None and not bypasses_invulnerability:
+        raise Unmodelled("the resistance effect's damage reduction")
     timers = _HURT.setdefault(entity, [0, 0.0])  # invulnerableTime, lastHurt
     if timers[0] > 10 and not bypasses_invulnerability:
         if amount <= timers[1]:
@@ -276,11 +288,38 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False) -
     else:
         dealt, timers[0], timers[1] = amount, 20, amount
         entity.data["HurtTime"] = Int(10)
-    dealt = _after_armour(entity, dealt, bypasses_invulnerability)
-    _set_health(entity, health(entity) - dealt)
-    if health(entity) <= 0 and not entity.is_player:
-        state.entities.kill(entity)
+    _actually_hurt(state, entity, _after_armour(entity, dealt, bypasses_invulnerability), damage_type)
     return True
+
+
+def _actually_hurt(state, entity, amount: float, damage_type: str) -> None:
+    """LivingEntity/Player.actuallyHurt after armour: absorption first, then health."""
+    amount = F32(amount)
+    absorption = F32(_number(entity.data.get("AbsorptionAmount")))
+    left = max(amount - absorption, F32(0.0))
+    absorbed = amount - left
+    if absorbed > 0:
+        entity.data["AbsorptionAmount"] = Float(float(absorption - absorbed))
+    if entity.is_player and 0 < absorbed < F32(3.4028235e37):
+        statistics.award(state, entity, statistics.stat_name("custom", "damage_absorbed"), round(float(absorbed) * 10))
+    if left == 0:
+        return
+    if entity.is_player:
+        if damage_type not in EXHAUSTION:
+            state.error(f"the food exhaustion of damage type {damage_type} is not modelled", severity="warning",
+                        unmodelled=True)
+        else:
+            _exhaust(entity, F32(EXHAUSTION[damage_type]))
+        if left < F32(3.4028235e37):
+            statistics.award(state, entity, statistics.stat_name("custom", "damage_taken"),
+                             math.floor(left * F32(10.0) + F32(0.5)))
+    _set_health(entity, health(entity) - float(left))
+
+
+def _exhaust(player, amount) -> None:
+    """FoodData.addExhaustion: min(exhaustion + amount, 40)."""
+    current = F32(_number(player.data.get("foodExhaustionLevel")))
+    player.data["foodExhaustionLevel"] = Float(float(min(current + amount, F32(40.0))))
 
 
 def _after_armour(entity, amount: float, bypass: bool) -> float:
@@ -348,7 +387,11 @@ UNDEAD = frozenset(f"minecraft:{n}" for n in (
     "stray", "wither_skeleton", "bogged", "skeleton_horse", "phantom", "wither"))
 
 
-def _instant(state, entity, effect_id: str, amplifier: int) -> None:
+def _magic(state, entity, amount: float) -> bool:
+    return hurt(state, entity, amount, damage_type="minecraft:magic")
+
+
+def _instant(state, entity, effect_id: str, amplifier: int, harm) -> None:
     """HealOrHarmMobEffect.applyInstantenousEffect: heal ``max(4 << amplifier, 0)`` or hurt
     ``6 << amplifier`` (Java int shifts: the distance is taken mod 32 and the result wraps, so
     amplifier 255 heals nothing); the undead take them the other way round."""
@@ -358,7 +401,7 @@ def _instant(state, entity, effect_id: str, amplifier: int) -> None:
     if heals:
         heal(entity, float(max(wrap32(4 << (amplifier & 31)), 0)))
     elif wrap32(6 << (amplifier & 31)) > 0:
-        hurt(state, entity, float(wrap32(6 << (amplifier & 31))))
+        harm(state, entity, float(wrap32(6 << (amplifier & 31))))
 
 
 def clear_effects(entity, effect_id: str | None = None) -> bool:
@@ -389,17 +432,18 @@ def tick_is_idle(state) -> bool:
     return True
 
 
-def tick_living(state) -> list:
+def tick_living(state, harm=None) -> list:
     """Each living entity's tick, as far as a pack can see it (LivingEntity.tickEffects): every
     effect ticks (MobEffectInstance.tickServer: an instant effect acts each tick it has left,
     InstantenousMobEffect.shouldApplyEffectTickThisTick; then the duration counts down) and an
-    expired one is removed; hurt timers run out. Returns the entities that lost an effect (the
-    game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
+    expired one is removed; hurt timers run out. ``harm(state, entity, amount)`` deals an instant
+    effect's damage (default: :func:`hurt` as magic, no death). Returns the entities that lost an
+    effect (the game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
     lost = []
     for entity in state.entities.living():
         found = entity.data.get("active_effects")
         if isinstance(found, List) and found:
-            if _tick_effects(state, entity, found):
+            if _tick_effects(state, entity, found, harm or _magic):
                 lost.append(entity)
             _drop_if_empty(entity)
         hurt_time = entity.data.get("HurtTime")
@@ -413,13 +457,13 @@ def tick_living(state) -> list:
     return lost
 
 
-def _tick_effects(state, entity, found: List) -> bool:
+def _tick_effects(state, entity, found: List, harm) -> bool:
     """One tick of each effect; True when one expired."""
     expired = False
     for effect in list(found):
         duration = int(_number(effect.get("duration")))
         if str(effect.get("id", "")) in INSTANT and duration >= 1:
-            _instant(state, entity, str(effect.get("id")), _amplifier(effect))
+            _instant(state, entity, str(effect.get("id")), _amplifier(effect), harm)
         if duration == INFINITE:
             continue
         if duration <= 1:
@@ -520,28 +564,12 @@ def reset_attack_strength(state, player) -> None:
     _SWUNG[player] = state.gametime
 
 
-def attack(state, player, target) -> bool:
-    """Player.attack without items, knockback or critical hits (a player standing on the ground):
-    the attack damage attribute times 0.2 + 0.8 x strength², the strength
-    (getAttackStrengthScale(0.5)) growing with the ticks since the last attack or join over
-    20 / attack_speed; ``minecraft.custom:minecraft.damage_dealt`` counts the health taken x 10
-    (rounded), a kill counts ``killed:<type>``, ``mob_kills`` or ``player_kills`` and
-    ``totalKillCount``. A target that is not living is not attackable: nothing happens.
-    Returns whether the target was hurt."""
-    if not is_living(target.type) or target is player:
-        return False
+def swing_damage(state, player) -> np.float32:
+    """Player.attack's base damage: the attack damage attribute times 0.2 + 0.8 x strength², the
+    strength (getAttackStrengthScale(0.5)) growing with the ticks since the last swing or join over
+    20 / attack_speed; the swing resets it."""
     ticker = state.gametime - _SWUNG.get(player, state.gametime)
     delay = F32(1.0 / attribute_value(player, "attack_speed") * 20.0)
     strength = min(max(F32((F32(ticker) + F32(0.5)) / delay), F32(0.0)), F32(1.0))
-    damage = F32(attribute_value(player, "attack_damage")) * (F32(0.2) + strength * strength * F32(0.8))
     reset_attack_strength(state, player)
-    before = F32(health(target))
-    if not hurt(state, target, float(damage)):
-        return False
-    dealt = before - F32(health(target))
-    statistics.award(state, player, statistics.stat_name("custom", "damage_dealt"), math.floor(dealt * F32(10.0) + F32(0.5)))
-    if health(target) <= 0:
-        statistics.award(state, player, statistics.stat_name("killed", target.type))
-        statistics.award(state, player, statistics.stat_name("custom", "player_kills" if target.is_player else "mob_kills"))
-        statistics.award(state, player, "totalKillCount")
-    return True
+    return F32(attribute_value(player, "attack_damage")) * (F32(0.2) + strength * strength * F32(0.8))

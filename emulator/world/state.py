@@ -356,6 +356,11 @@ GAMERULE_DEFAULTS: dict[str, str] = {
     "commandBlockOutput": "true",
     "doDaylightCycle": "true",
     "randomTickSpeed": "3",
+    "keepInventory": "false",
+    "showDeathMessages": "true",
+    "doImmediateRespawn": "false",
+    "doTileDrops": "true",
+    "doMobLoot": "true",
 }
 GAMERULE_ALIASES: dict[str, str] = {
     "max_command_sequence_length": "maxCommandChainLength",
@@ -365,6 +370,11 @@ GAMERULE_ALIASES: dict[str, str] = {
     "command_block_output": "commandBlockOutput",
     "advance_time": "doDaylightCycle",
     "random_tick_speed": "randomTickSpeed",
+    "keep_inventory": "keepInventory",
+    "show_death_messages": "showDeathMessages",
+    "immediate_respawn": "doImmediateRespawn",
+    "block_drops": "doTileDrops",
+    "mob_drops": "doMobLoot",
 }
 
 

@@ -6,7 +6,9 @@ carrot_on_a_stick`` ...), for the player's name, creating the score at 0 first.
 - ``canonical_criterion(text)``: a criterion as ``ObjectiveCriteria.byName`` reads it: the stat type
   and the value are resource locations written with ``.`` for ``:``, so ``custom:jump`` and
   ``minecraft.custom:minecraft.jump`` name the same statistic; other criteria come back unchanged.
-- ``award(state, player, stat, amount=1)``: ``Player.awardStat`` for the player entity.
+- ``award(state, player, stat, amount=1)``: ``Player.awardStat`` for the player entity;
+  ``reset(state, player, stat)``: ``ServerPlayer.resetStat`` (the score is reset from 1.20.3,
+  set to 0 before).
 - ``tick_players(state)``: the statistics every player earns each tick (``Player.tick``, server side:
   play_time, total_world_time, time_since_death, sneak_time while the sneak key is held,
   time_since_rest); the game ticks players after the tick's functions and scheduled functions.
@@ -25,6 +27,7 @@ from emulator.world.semantics import wrap32
 STAT_TYPES = ("custom", "mined", "crafted", "used", "broken", "picked_up", "dropped", "killed", "killed_by")
 # Player.tick's statistics (server side) of a living player who is not sleeping
 PER_TICK = ("play_time", "total_world_time", "time_since_death", "time_since_rest")
+RESET_UNSETS = (1, 20, 3)  # ScoreAccess::reset (23w46a) replaced Score::reset, which set 0
 SNEAK_TIME = "sneak_time"  # Stats.CROUCH_TIME: while isDiscrete(), i.e. the sneak key is held
 
 
@@ -61,13 +64,25 @@ def award(state, player, stat: str, amount: int = 1) -> None:
             board.set(player.score_holder, name, wrap32(current + amount))
 
 
+def reset(state, player, stat: str) -> None:
+    board = state.scoreboard
+    for name in board.objectives:
+        oid = board.objective_ids[name]
+        if board.alive[oid] and canonical_criterion(board.criteria[oid]) == stat:
+            if tuple(state.version) >= RESET_UNSETS:
+                board.reset(player.score_holder, name)
+            else:
+                board.set(player.score_holder, name, 0)
+
+
 def tick_players(state) -> None:
     """Each living player's per-tick statistics, after the tick's functions ran."""
     if not _counts_statistics(state.scoreboard):
         return  # no statistic objective: nothing to count (the common case, kept cheap)
     for player in state.entities.players():
         for stat in PER_TICK:
-            award(state, player, stat_name("custom", stat))
+            if stat != "time_since_death" or player.alive:  # Player.tick: only while alive
+                award(state, player, stat_name("custom", stat))
         if player.sneaking:
             award(state, player, stat_name("custom", SNEAK_TIME))
 

@@ -39,12 +39,14 @@ SUITE = {
         "execute store result score #d t run attribute @s minecraft:generic.attack_damage get 10\n"
         "assert score #d t matches 10\n"),
     "demo/test/damage/cow.mcfunction": (
-        "summon cow ~1 ~ ~ {Tags:[\"target\"]}\n"
+        "summon cow ~1 ~ ~ {Tags:[\"target\"],DeathLootTable:\"demo:cow\"}\n"
         "damage @e[tag=target,limit=1] 4 minecraft:magic\n"
         "execute store result score #h t run data get entity @e[tag=target,limit=1] Health\n"
         "assert score #h t matches 6\n"
         "damage @e[tag=target,limit=1] 10 minecraft:out_of_world\n"
-        "assert not entity @e[tag=target]\n"),
+        "assert not entity @e[tag=target]\n"
+        "assert entity @e[type=item,nbt={Item:{id:\"minecraft:leather\"}}]\n"),  # its DeathLootTable
+    "demo/loot_table/cow.json": '{"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "leather"}]}]}',
     "demo/test/dummy/attack.mcfunction": (
         "# @dummy\n"
         "summon zombie ~2 ~ ~ {Tags:[\"mob\"],NoAI:1b}\n"
@@ -69,5 +71,5 @@ SUITE = {
 def test_the_living_suite_passes(tmp_path, backend):
     root = write_pack(tmp_path / "suite", SUITE, load=["demo:load"])
     result = CliRunner().invoke(main, ["test", str(root), "--backend", backend, "--strict"])
-    assert result.output.splitlines()[-1] == f"{len(SUITE) - 1} passed, 0 failed", result.output
+    assert result.output.splitlines()[-1] == f"{sum('/test/' in f for f in SUITE)} passed, 0 failed", result.output
     assert result.exit_code == 0

@@ -1,0 +1,393 @@
+"""What follows a living entity's hurt: who gets the credit, the advancement triggers, and death
+(a mob leaves the world; a player dies where it stands until it respawns), with what a datapack
+observes of each.
+
+- ``DamageSource(type, attacker=None, direct=None)``: the damage type and the entity responsible
+  (DamageSource.getEntity) and the one that dealt it (getDirectEntity).
+- ``hurt(state, entity, amount, source, bypasses=False) -> bool``: LivingEntity.hurtServer: the
+  health taken (emulator.world.living.hurt), the kill credit, death at 0 health, the triggers.
+- ``attack(state, player, target) -> bool``: Player.attack with an empty hand or an item that is
+  no weapon (no knockback, no critical hits: a player standing on the ground).
+- ``remember_attacker(state, entity, source)``: the kill credit (the last player, else mob, to hurt
+  it, for 100 ticks); ``hurt_triggers(state, entity, source, amount)``: LivingEntity.hurtServer's
+  end: ``entity_hurt_player`` and ``player_hurt_entity``.
+- ``die(state, entity, source)``: LivingEntity.die / ServerPlayer.die.
+- ``respawn_keeps(state, old, new)``: what PlayerList.respawn carries to the new player.
+- ``tick_dead(state)``: a dead player's ``DeathTime`` counts to 20; ``tick_is_idle(state)``: whether
+  it would do nothing (a batch of ticks needs it idle).
+- ``is_dead(player)``.
+
+A dead player stays in the player list (``@a``, ``@p``, ``@r``, ``@s`` find it; ``@e`` and ``@n`` do
+not: EntitySelectorParser's isAlive test) at the place it died, with ``Health`` 0, until it respawns.
+Its death (ServerPlayer.die): the death message to every player (``showDeathMessages``), its
+inventory dropped (each stack thrown around from its eyes, pickup delay 40; cursed with vanishing:
+destroyed) and experience orbs worth min(7 x level, 100) unless ``keepInventory``, the
+``deathCount`` criterion and ``minecraft.custom:minecraft.deaths``, ``time_since_death`` and
+``time_since_rest`` reset, ``minecraft.killed_by:<type>`` of its killer, the killer's kill
+statistics, ``entity_killed_player``/``player_killed_entity``, and ``LastDeathLocation``.
+
+Sources (decompiled 1.21.x): world/entity/LivingEntity.java (hurtServer, die, getKillCredit,
+dropAllDeathLoot, dropExperience, setLastHurtByPlayer: 100 ticks), server/level/ServerPlayer.java
+(die, awardKillScore, restoreFrom), world/entity/player/Player.java (dropEquipment,
+getBaseExperienceReward), world/entity/player/Inventory.java (dropAll), world/entity/
+ExperienceOrb.java (award, getExperienceValue), server/players/PlayerList.java (respawn),
+advancements/critereon/{PlayerHurtEntityTrigger,EntityHurtPlayerTrigger,KilledTrigger}.java,
+DamagePredicate.java, DamageSourcePredicate.java, EntityPredicate.createContext (the player's
+position as origin); the death messages' en_us texts.
+"""
+from __future__ import annotations
+
+import math
+import weakref
+from dataclasses import dataclass
+
+import numpy as np
+
+from emulator.world import advancements, inventories, living, loot, predicates, statistics
+from emulator.world.entities import Entity
+from emulator.world.errors import Unmodelled
+from emulator.world.items import EMPTY, enchantment_level
+from emulator.world.loot_context import LootContext
+from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String
+
+F32 = np.float32
+CREDIT_TICKS = 100
+EMPTY_TABLE = "minecraft:empty"  # BuiltInLootTables.EMPTY: no drops  # LivingEntity.setLastHurtByPlayer / setLastHurtByMob
+MAX_DEATH_TIME = 20
+ORB_VALUES = (2477, 1237, 617, 307, 149, 73, 37, 17, 7, 3, 1)  # ExperienceOrb.getExperienceValue
+# Animal.getBaseExperienceReward (1 + nextInt(3)) and Monster's (5, without equipment)
+ANIMALS = frozenset("pig cow sheep chicken rabbit mooshroom goat llama horse donkey mule camel turtle fox "
+                    "panda polar_bear wolf cat ocelot frog sniffer armadillo".split())
+MONSTERS = frozenset("zombie husk drowned skeleton stray bogged creeper spider cave_spider witch enderman "
+                     "silverfish endermite vindicator pillager evoker ravager zombified_piglin piglin_brute "
+                     "wither_skeleton blaze guardian".split())
+# en_us death messages by damage type: death.attack.<message id> (with the responsible entity as {1}
+# when the source has one) and its ``.player`` form (a source without an entity, a killer credited)
+DEATH_MESSAGES = {
+    "minecraft:generic": ("{0} died", "{0} died because of {1}"),
+    "minecraft:generic_kill": ("{0} was killed", "{0} was killed while fighting {1}"),
+    "minecraft:out_of_world": ("{0} fell out of the world", "{0} didn't want to live in the same world as {1}"),
+    "minecraft:magic": ("{0} was killed by magic", "{0} was killed by magic while trying to escape {1}"),
+    "minecraft:player_attack": ("{0} was slain by {1}", None),
+    "minecraft:mob_attack": ("{0} was slain by {1}", None),
+}
+
+
+@dataclass(frozen=True)
+class DamageSource:
+    type: str = "minecraft:generic"
+    attacker: Entity | None = None  # DamageSource.getEntity: the responsible entity
+    direct: Entity | None = None  # getDirectEntity
+
+    @property
+    def is_direct(self) -> bool:
+        return self.attacker is self.direct
+
+
+# the last player / mob that hurt an entity, and the game time it did: (entity, time)
+_LAST_HURT_BY: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_DEAD: "weakref.WeakSet" = weakref.WeakSet()
+
+
+def is_dead(entity) -> bool:
+    return entity in _DEAD
+
+
+def kill_credit(state, entity) -> Entity | None:
+    """LivingEntity.getKillCredit: the last attacker within 100 ticks."""
+    found = _LAST_HURT_BY.get(entity)
+    if found is None or state.gametime - found[1] > CREDIT_TICKS:
+        return None
+    return found[0]
+
+
+def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), bypasses: bool = False) -> bool:
+    """LivingEntity.hurtServer: False when the hurt does not go through; else the attacker gets the
+    credit, an entity at 0 health dies, then the hurt's triggers fire."""
+    if not living.hurt(state, entity, amount, bypasses, source.type):
+        return False
+    remember_attacker(state, entity, source)
+    if living.health(entity) <= 0:
+        die(state, entity, source)
+    hurt_triggers(state, entity, source, amount)
+    return True
+
+
+def magic_harm(state, entity, amount: float) -> bool:
+    """An instant damage effect's hurt: magic, with its death and triggers (HealOrHarmMobEffect)."""
+    return hurt(state, entity, amount, DamageSource("minecraft:magic"))
+
+
+def attack(state, player, target) -> bool:
+    """Player.attack: the swing's damage (living.swing_damage) as ``player_attack`` by the player;
+    ``minecraft.custom:minecraft.damage_dealt`` counts the health taken x 10 (rounded). A target
+    that is not living is not attackable: nothing happens. A weapon, tool or enchanted item raises
+    Unmodelled. Returns whether the target was hurt."""
+    if not living.is_living(target.type) or target is player:
+        return False
+    held = inventories.entity_slot(player, inventories.MAINHAND, state.version).get()
+    if not held.is_empty and any(held.component(c) is not None for c in (
+            "minecraft:max_damage", "minecraft:attribute_modifiers", "minecraft:enchantments", "minecraft:tool",
+            "minecraft:weapon")):
+        raise Unmodelled(f"attacking with {held.id} (its damage, enchantments and durability)")
+    damage = living.swing_damage(state, player)
+    before = F32(living.health(target))
+    if not hurt(state, target, float(damage), DamageSource("minecraft:player_attack", player, player)):
+        return False
+    dealt = before - F32(living.health(target))
+    statistics.award(state, player, statistics.stat_name("custom", "damage_dealt"),
+                     math.floor(dealt * F32(10.0) + F32(0.5)))
+    return True
+
+
+def remember_attacker(state, entity, source: DamageSource) -> None:
+    """LivingEntity.hurtServer: a living attacker becomes the last to hurt it (setLastHurtByMob /
+    setLastHurtByPlayer; getKillCredit prefers the player)."""
+    attacker = source.attacker
+    if attacker is None or attacker is entity or attacker.type in inventories.NOT_LIVING:
+        return
+    previous = _LAST_HURT_BY.get(entity)
+    if attacker.is_player or previous is None or not previous[0].is_player or \
+            state.gametime - previous[1] > CREDIT_TICKS:
+        _LAST_HURT_BY[entity] = (attacker, state.gametime)
+
+
+def hurt_triggers(state, entity, source: DamageSource, amount: float) -> None:
+    """The end of LivingEntity.hurtServer: EntityHurtPlayerTrigger (a hurt player) and
+    PlayerHurtEntityTrigger (the attacking player) with the damage."""
+    attacker = source.attacker
+    if entity.is_player:
+        advancements.trigger(state, entity, "entity_hurt_player",
+                             lambda c, ctx: _damage_matches(state, c.get("damage"), entity, source, amount))
+    if attacker is not None and attacker.is_player:
+        advancements.trigger(state, attacker, "player_hurt_entity", lambda c, ctx: (
+            _damage_matches(state, c.get("damage"), attacker, source, amount)
+            and _entity_condition(state, c.get("entity"), attacker, entity)))
+
+
+# ---------------------------------------------------------------------- death
+def die(state, entity, source: DamageSource) -> None:
+    """LivingEntity.die: once; the killer's credit, then a mob leaves the world and a player dies."""
+    if entity in _DEAD or not entity.alive:
+        return
+    for hand in (inventories.MAINHAND, inventories.OFFHAND):
+        held = inventories.entity_slot(entity, hand, state.version)
+        if held is not None and (held.get().id == "minecraft:totem_of_undying"
+                                 or held.get().component("minecraft:death_protection") is not None):
+            raise Unmodelled("a totem of undying saving its holder from death")
+    killer = kill_credit(state, entity)
+    if entity.is_player:
+        _player_dies(state, entity, source, killer)
+    if killer is not None and killer.is_player:
+        _award_kill(state, killer, entity, source)
+    if killer is not None and entity.is_player:
+        statistics.award(state, entity, statistics.stat_name("killed_by", killer.type))
+        advancements.trigger(state, entity, "entity_killed_player", lambda c, ctx: (
+            _entity_condition(state, c.get("entity"), entity, killer)
+            and _source_matches(state, c.get("killing_blow"), entity, source)))
+    if not entity.is_player:
+        if state.gamerules.get("doMobLoot") != "false" and entity.type != "minecraft:armor_stand":
+            _mob_drops(state, entity, killer)
+        state.entities.kill(entity)
+        state.scoreboard.reset(entity.score_holder)  # Scoreboard.entityRemoved
+
+
+def _mob_drops(state, mob, killer) -> None:
+    """LivingEntity.dropAllDeathLoot: the mob's loot table (``DeathLootTable``, else
+    ``entities/<type>``: only a pack's is known) rolled with its killer and dropped where it died;
+    experience when a player hurt it within 100 ticks (Mob.getBaseExperienceReward: animals 1-3,
+    monsters 5); its equipment's drop chances are not modelled."""
+    table_id = str(mob.data.get("DeathLootTable") or "minecraft:entities/" + mob.type.split(":", 1)[-1])
+    table = {"pools": []} if table_id == EMPTY_TABLE else state.resources.loot_tables.get(table_id)
+    if table is None:
+        state.error(f"the drops of a dying {mob.type}: the game's own loot table {table_id} is not known (only a "
+                    "pack's)", severity="warning", unmodelled=True)
+    else:
+        ctx = LootContext(state.resources.random, state.resources, state.version, this=mob, killer=killer,
+                          origin=mob.pos, daytime=state.daytime, scores=state.scoreboard.get,
+                          storage=lambda sid: state.storage.get(sid, Compound()))
+        for stack in loot.roll_table(table, ctx):
+            inventories.drop_item(state.entities, mob.pos, stack, state.version, state.resources.random)
+    if any(not inventories.entity_slot(mob, slot, state.version).get().is_empty
+           for slot in (inventories.MAINHAND, inventories.OFFHAND, *inventories.ARMOR)):
+        state.error(f"the equipment a dying {mob.type} may drop", severity="warning", unmodelled=True)
+    if killer is not None and killer.is_player:
+        name = mob.type.split(":", 1)[-1]
+        if name in ANIMALS:
+            _award_orbs(state, mob.pos, 1 + state.resources.random.randrange(3))
+        elif name in MONSTERS:
+            _award_orbs(state, mob.pos, 5)
+        else:
+            state.error(f"the experience a {mob.type} killed by a player drops", severity="warning", unmodelled=True)
+
+
+def _award_kill(state, killer, victim, source: DamageSource) -> None:
+    """ServerPlayer.awardKillScore: killed:<type>, player_kills or mob_kills, the kill criteria,
+    and player_killed_entity."""
+    statistics.award(state, killer, statistics.stat_name("killed", victim.type))
+    statistics.award(state, killer, statistics.stat_name("custom", "player_kills" if victim.is_player else "mob_kills"))
+    statistics.award(state, killer, "totalKillCount")
+    if victim.is_player:
+        statistics.award(state, killer, "playerKillCount")
+    advancements.trigger(state, killer, "player_killed_entity", lambda c, ctx: (
+        _entity_condition(state, c.get("entity"), killer, victim)
+        and _source_matches(state, c.get("killing_blow"), killer, source)))
+
+
+def _player_dies(state, player, source: DamageSource, killer) -> None:
+    _death_message(state, player, source, killer)
+    if player.gamemode != "spectator":
+        keep = state.gamerules.get("keepInventory") == "true"
+        if not keep:
+            _drop_inventory(state, player)
+            _drop_experience(state, player)
+    statistics.award(state, player, "deathCount")
+    statistics.award(state, player, statistics.stat_name("custom", "deaths"))
+    for stat in ("time_since_death", "time_since_rest"):
+        statistics.reset(state, player, statistics.stat_name("custom", stat))
+    x, y, z = player.pos
+    player.data["LastDeathLocation"] = Compound(
+        dimension=String("minecraft:overworld"),
+        pos=IntArray(Int(math.floor(c)) for c in (x, y, z)))
+    player.data["DeathTime"] = Short(0)
+    _DEAD.add(player)
+    player.alive = False
+    if state.gamerules.get("doImmediateRespawn") == "true":
+        state.error(f"{player.display_name} died with doImmediateRespawn on: the respawn that follows is not "
+                    "modelled (the player stays dead until 'dummy ... respawn')", severity="warning",
+                    unmodelled=True)
+
+
+def _death_message(state, player, source: DamageSource, killer) -> None:
+    """CombatTracker.getDeathMessage for a death with no fall in its history, broadcast when
+    ``showDeathMessages`` is on."""
+    if state.gamerules.get("showDeathMessages") == "false":
+        return
+    texts = DEATH_MESSAGES.get(source.type)
+    responsible = source.attacker or source.direct
+    if responsible is not None:
+        text, other = (texts[0] if texts else None), responsible
+        weapon = inventories.entity_slot(responsible, inventories.MAINHAND, state.version)
+        if weapon is not None and weapon.get().component("minecraft:custom_name") is not None:
+            text = None  # the ".item" form names the weapon
+    else:
+        text, other = (None, None) if texts is None else (texts[1], killer) if killer is not None else (texts[0], None)
+    if text is None:
+        state.error(f"the death message of damage type {source.type} is not modelled: none was sent",
+                    severity="warning", unmodelled=True)
+        return
+    state.broadcast("chat", text.format(player.display_name, other.display_name if other is not None else ""))
+
+
+def _drop_inventory(state, player) -> None:
+    """Player.dropEquipment -> Inventory.dropAll: every stack thrown around (Player.drop with
+    dropAround, no thrower); items cursed with vanishing are destroyed first."""
+    slots = [*range(inventories.PLAYER_INVENTORY_SIZE), *inventories.ARMOR, inventories.OFFHAND]
+    for slot in slots:
+        access = inventories.entity_slot(player, slot, state.version)
+        stack = access.get()
+        if stack.is_empty:
+            continue
+        access.set(EMPTY.copy())
+        if enchantment_level(stack, "minecraft:vanishing_curse") > 0:
+            continue
+        rng = state.resources.random
+        strength, angle = rng.random() * 0.5, rng.random() * math.pi * 2
+        x, y, z = player.pos
+        inventories.drop_item(state.entities, (x, y + float(player.eye_height) - 0.30000001192092896, z), stack,
+                              state.version, rng, Compound(PickupDelay=Short(40), Motion=List([
+                                  Double(-math.sin(angle) * strength), Double(0.2), Double(math.cos(angle) * strength)])))
+
+
+def _drop_experience(state, player) -> None:
+    """LivingEntity.dropExperience: a player always drops min(7 x level, 100) points, split into orbs
+    by ExperienceOrb.getExperienceValue (the game merges an orb into an equal one nearby one time in
+    40, depending on entity ids: not here)."""
+    level = int(player.data.get("XpLevel", Int(0)))
+    _award_orbs(state, player.pos, min(level * 7, 100))
+
+
+def _award_orbs(state, pos, amount: int) -> None:
+    """ExperienceOrb.award: orbs of getExperienceValue's sizes (no merging) at ``pos``."""
+    rng = state.resources.random
+    while amount > 0:
+        value = next(v for v in ORB_VALUES if amount >= v)
+        amount -= value
+        state.entities.summon("minecraft:experience_orb", pos, Compound(
+            Value=Short(value), Count=Int(1), Age=Short(0), Health=Short(5),
+            Motion=List([Double((rng.random() * 0.2 - 0.1) * 2), Double(rng.random() * 0.4),
+                         Double((rng.random() * 0.2 - 0.1) * 2)])))
+
+
+def tick_is_idle(state) -> bool:
+    """Whether :func:`tick_dead` would do nothing now: no dead player's DeathTime still counts."""
+    return not any(p.is_player and not p.alive and int(p.data.get("DeathTime", Short(0))) < MAX_DEATH_TIME
+                   for p in _DEAD)
+
+
+def tick_dead(state) -> None:
+    """LivingEntity.tickDeath: ``DeathTime`` counts up to 20 (then the game takes the body away)."""
+    for player in list(_DEAD):
+        if player.is_player and not player.alive:
+            player.data["DeathTime"] = Short(min(int(player.data.get("DeathTime", Short(0))) + 1, MAX_DEATH_TIME))
+
+
+def respawn_keeps(state, old, new) -> None:
+    """ServerPlayer.restoreFrom (not keeping everything): the ender chest, the tags, and with
+    ``keepInventory`` (or from a spectator) the inventory and experience."""
+    new.tags = set(old.tags)
+    for key in ("EnderItems", "LastDeathLocation"):
+        if key in old.data:
+            new.data[key] = old.data[key]
+    if state.gamerules.get("keepInventory") == "true" or old.gamemode == "spectator":
+        for key in ("Inventory", "equipment", "XpLevel", "XpP", "XpTotal", "Score", "SelectedItemSlot"):
+            if key in old.data:
+                new.data[key] = old.data[key]
+
+
+# ---------------------------------------------------------------------- trigger conditions
+def _entity_condition(state, condition, player, entity) -> bool:
+    """A ContextAwarePredicate about ``entity`` (EntityPredicate.createContext: the entity as
+    ``this``, the player's position as origin): loot conditions or an entity predicate."""
+    if condition is None:
+        return True
+    ctx = predicates.LootContext(state, player.pos, this=entity)
+    if isinstance(condition, list):
+        return predicates.test(condition, ctx)
+    return predicates.entity_matches(condition, ctx, entity)
+
+
+def _damage_matches(state, wanted, player, source: DamageSource, amount: float) -> bool:
+    """DamagePredicate: dealt and taken (the same here: no shield, no freezing), blocked (never),
+    the source entity, the damage source."""
+    if wanted is None:
+        return True
+    for key in ("dealt", "taken"):
+        if key in wanted and not predicates.in_range(wanted[key], amount):
+            return False
+    if wanted.get("blocked") is True:
+        return False
+    if "source_entity" in wanted and not _entity_condition(state, wanted["source_entity"], player, source.attacker):
+        return False
+    return _source_matches(state, wanted.get("type"), player, source)
+
+
+def _source_matches(state, wanted, player, source: DamageSource) -> bool:
+    """DamageSourcePredicate: tags (the damage type's, ``expected``), source and direct entity,
+    is_direct."""
+    if wanted is None:
+        return True
+    for tag in wanted.get("tags", ()):
+        tag_id = str(tag.get("id", ""))
+        if state.resources.in_tag("damage_type", tag_id.removeprefix("#"), source.type) != bool(tag.get("expected")):
+            return False
+    if "is_direct" in wanted and source.is_direct != bool(wanted["is_direct"]):
+        return False
+    for key, entity in (("source_entity", source.attacker), ("direct_entity", source.direct)):
+        if key in wanted:
+            if entity is None or not _entity_condition(state, wanted[key], player, entity):
+                return False
+    unknown = set(wanted) - {"tags", "is_direct", "source_entity", "direct_entity"}
+    if unknown:
+        raise Unmodelled(f"damage source predicate field '{sorted(unknown)[0]}'")
+    return True

@@ -1,0 +1,78 @@
+"""A player using (right-clicking) an entity, as Player.interactOn carries it out, with what a datapack
+observes: an ``interaction`` entity's ``interaction`` record, an item frame taking the held item or
+turning its own, and the entities that have no use of their own.
+
+- ``interact_on(state, player, hand, entity) -> str``: ``"consume"`` or ``"pass"``; an entity whose
+  interaction is not modelled (mobs, villagers, armor stands, vehicles ...) raises Unmodelled.
+- ``record(state, player, entity, key)``: an interaction entity's ``attack`` / ``interaction``
+  ``{player: UUID, timestamp: game time}`` (Interaction.skipAttackInteraction / interact).
+
+The ``player_interacted_with_entity`` criterion fires in the game's network handler
+(ServerGamePacketListenerImpl.handleInteract), which PackTest's dummy bypasses: it does not fire
+for a dummy, here as in the game.
+
+Sources (decompiled 1.21.x): world/entity/player/Player.java (interactOn), world/entity/
+Interaction.java (interact, skipAttackInteraction), world/entity/decoration/ItemFrame.java
+(interact: a fixed frame passes; an empty one takes one of the held items; a full one turns its
+item by one of 8 steps, ``ItemRotation``; an empty frame used with an empty hand consumes the use
+before 1.21.2 and passes from it), world/entity/Entity.java (interact: passes).
+"""
+from __future__ import annotations
+
+from emulator.world import inventories
+from emulator.world.errors import Unmodelled
+from emulator.world.player_actions import hand_slot
+from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
+
+ITEM_FRAMES = ("minecraft:item_frame", "minecraft:glow_item_frame")
+RESULTS_VERSION = (1, 21, 2)  # InteractionResult's rework: an empty frame used with an empty hand passes
+# entities whose interact is Entity's own (no leash, no ride, no menu): using them passes
+PASSIVE = frozenset("minecraft:" + n for n in (
+    "marker item experience_orb area_effect_cloud falling_block tnt block_display item_display text_display "
+    "arrow spectral_arrow trident snowball egg ender_pearl potion experience_bottle fireball small_fireball "
+    "dragon_fireball wither_skull wind_charge breeze_wind_charge firework_rocket eye_of_ender evoker_fangs "
+    "lightning_bolt painting shulker_bullet llama_spit end_crystal").split())
+
+
+def record(state, player, entity, key: str) -> None:
+    entity.data[key] = Compound(player=IntArray(Int(v) for v in player.uuid), timestamp=Long(state.gametime))
+
+
+def interact_on(state, player, hand: str, entity) -> str:
+    """Player.interactOn: a spectator only opens menus; else the entity's own interact."""
+    if player.gamemode == "spectator":
+        return "pass"
+    if entity.type == "minecraft:interaction":
+        record(state, player, entity, "interaction")
+        return "consume"
+    if entity.type in ITEM_FRAMES:
+        return _item_frame(state, player, hand, entity)
+    if entity.type in PASSIVE:
+        return "pass"
+    raise Unmodelled(f"using {entity.type} (its interaction is not modelled: only interaction entities, item "
+                     "frames and entities without an interaction of their own)")
+
+
+def _item_frame(state, player, hand: str, frame) -> str:
+    """ItemFrame.interact on the server: a fixed frame passes; an empty frame takes one of the held
+    items (consumed unless creative; a map is not modelled); a full one turns its item."""
+    if frame.data.get("Fixed"):
+        return "pass"
+    access = inventories.entity_slot(player, hand_slot(hand), state.version)
+    held = access.get()
+    framed = inventories.entity_slot(frame, 0, state.version)
+    if framed.get().is_empty:
+        if held.is_empty:  # before 1.21.2 the server consumed every use of a frame that is not fixed
+            return "pass" if tuple(state.version) >= RESULTS_VERSION else "consume"
+        if held.id == "minecraft:filled_map":
+            raise Unmodelled("putting a map in an item frame (map data)")
+        one = held.copy()
+        one.count = 1
+        framed.set(one)
+        if player.gamemode != "creative":
+            held.count -= 1
+            access.set(held)
+        return "consume"
+    frame.data["ItemRotation"] = Byte((int(frame.data.get("ItemRotation", Byte(0))) + 1) % 8)
+    return "consume"
+

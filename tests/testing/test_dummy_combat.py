@@ -1,0 +1,136 @@
+"""Dummies hurting, hurt, dying and respawning (emulator.world.combat), with what a pack observes.
+Sources: the game's LivingEntity.hurtServer/actuallyHurt/die/getKillCredit, Player.actuallyHurt
+(damage_taken, damage_absorbed), ServerPlayer.die/awardKillScore/restoreFrom, Player.dropEquipment
+and Inventory.dropAll, ExperienceOrb.getExperienceValue, PlayerHurtEntityTrigger,
+EntityHurtPlayerTrigger, KilledTrigger, DamageCommand; misode/packtest Dummy.respawn."""
+import json
+
+import pytest
+
+from tests.testing.test_dummy_hands import run
+
+
+def advancement(trigger, conditions=None):
+    return json.dumps({"criteria": {"c": {"trigger": trigger, **({"conditions": conditions} if conditions else {})}}})
+
+
+HURT = {
+    "demo/advancement/hit_pig.json": advancement("minecraft:player_hurt_entity", {
+        "damage": {"dealt": {"min": 0.1}, "type": {"is_direct": True, "direct_entity": {"type": "minecraft:player"}}},
+        "entity": {"type": "minecraft:pig"}}),
+    "demo/advancement/hit_cow.json": advancement("minecraft:player_hurt_entity", {"entity": {"type": "minecraft:cow"}}),
+    "demo/advancement/hurt.json": advancement("minecraft:entity_hurt_player", {"damage": {"taken": {"min": 2}}}),
+    "demo/advancement/killed_pig.json": advancement("minecraft:player_killed_entity", {"entity": {"type": "minecraft:pig"}}),
+    "demo/advancement/was_killed.json": advancement("minecraft:entity_killed_player", {
+        "entity": {"type": "minecraft:player"}}),
+}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_hurting_and_being_hurt_fire_their_criteria(tmp_path, backend):
+    result = run(tmp_path, (
+        "scoreboard objectives add taken minecraft.custom:minecraft.damage_taken\n"
+        "dummy Alex spawn\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"]}\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert entity @a[name=Alex,advancements={demo:hit_pig=true,demo:hit_cow=false,demo:hurt=false}]\n"
+        "damage Alex 1\n"
+        "assert entity @a[name=Alex,advancements={demo:hurt=false}]\n"
+        "assert score Alex taken matches 10\n"
+        "await delay 11\n"                                  # past the hurt cooldown
+        "damage Alex 2.5\n"
+        "assert entity @a[name=Alex,advancements={demo:hurt=true}]\n"
+        "assert score Alex taken matches 35\n"), files=HURT, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_dummy_dies_drops_its_inventory_and_experience_and_respawns(tmp_path, backend):
+    result = run(tmp_path, (
+        "scoreboard objectives add deaths deathCount\n"
+        "scoreboard objectives add died minecraft.custom:minecraft.deaths\n"
+        "scoreboard objectives add alive minecraft.custom:minecraft.time_since_death\n"
+        "dummy Alex spawn\n"
+        "give Alex stone 5\n"
+        "item replace entity Alex armor.head with leather_helmet\n"
+        "xp set Alex 10 levels\n"
+        "await delay 3\n"
+        "assert score Alex alive matches 3\n"
+        "damage Alex 100\n"
+        "assert chat \"^Alex died$\"\n"
+        "assert score Alex deaths matches 1\nassert score Alex died matches 1\n"
+        "assert not score Alex alive matches 0..\n"          # reset (1.20.3+: unset)
+        "assert entity @a[name=Alex]\nassert not entity @e[type=player]\nassert not entity @n[type=player]\n"
+        "assert data entity Alex {Health:0.0f}\n"
+        "assert entity @e[type=item,nbt={Item:{id:\"minecraft:stone\",count:5},PickupDelay:40s}]\n"
+        "assert not entity @e[type=item,nbt={Thrower:[I;0,0,0,0]}]\n"
+        "assert entity @e[type=item,nbt={Item:{id:\"minecraft:leather_helmet\"}}]\n"
+        # 70 points: 37, 17, 7, 7, 1, 1 (ExperienceOrb.getExperienceValue)
+        "execute store result score #orbs deaths if entity @e[type=experience_orb]\n"
+        "assert score #orbs deaths matches 6\n"
+        "assert entity @e[type=experience_orb,nbt={Value:37s}]\n"
+        "await delay 25\n"
+        "assert data entity Alex {DeathTime:20s}\n"
+        "assert not score Alex alive matches 0..\n"          # time_since_death counts only while alive
+        "dummy Alex respawn\n"
+        "assert entity @e[type=player,name=Alex]\n"
+        "assert data entity Alex {Health:20.0f,XpLevel:0}\n"
+        "assert not items entity Alex container.* *\n"
+        "assert score Alex deaths matches 1\n"), files=HURT, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_keep_inventory_keeps_items_and_experience_through_death(tmp_path):
+    result = run(tmp_path, (
+        "gamerule keepInventory true\n"
+        "dummy Alex spawn\n"
+        "give Alex stone 5\nxp set Alex 3 levels\n"
+        "kill Alex\n"
+        "assert chat \"^Alex was killed$\"\n"
+        "assert not entity @e[type=item]\nassert not entity @e[type=experience_orb]\n"
+        "dummy Alex respawn\n"
+        "assert items entity Alex container.0 stone[count=5]\n"
+        "assert data entity Alex {XpLevel:3}\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_a_player_killed_by_a_player_credits_the_killer(tmp_path):
+    """DamageCommand ``by``: the source's entity is the killer; the victim counts killed_by:player, the
+    killer player_kills, killed:player and the kill criteria; the death message names the killer."""
+    result = run(tmp_path, (
+        "scoreboard objectives add kills playerKillCount\n"
+        "scoreboard objectives add by minecraft.killed_by:minecraft.player\n"
+        "scoreboard objectives add pk minecraft.custom:minecraft.player_kills\n"
+        "dummy Alex spawn\ndummy Bob spawn\n"
+        "damage Bob 50 minecraft:player_attack by Alex\n"
+        "assert chat \"^Bob was slain by Alex$\"\n"
+        "assert score Alex kills matches 1\nassert score Alex pk matches 1\nassert score Bob by matches 1\n"
+        "assert entity @a[name=Bob,advancements={demo:was_killed=true}]\n"), files=HURT)
+    assert result.status == "passed", result.report()
+
+
+def test_the_last_player_to_hurt_a_mob_gets_the_kill(tmp_path):
+    """LivingEntity.getKillCredit: the player who hurt it within 100 ticks, whatever dealt the blow."""
+    result = run(tmp_path, (
+        "scoreboard objectives add pigs minecraft.killed:minecraft.pig\n"
+        "dummy Alex spawn\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],DeathLootTable:\"minecraft:empty\"}\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "await delay 20\n"
+        "damage @e[tag=p,limit=1] 100\n"
+        "assert not entity @e[tag=p]\n"
+        "assert score Alex pigs matches 1\n"
+        "assert entity @a[name=Alex,advancements={demo:killed_pig=true}]\n"), files=HURT)
+    assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("setup, reason", [
+    ("give Alex diamond_sword\ndummy Alex attack @e[type=pig,limit=1]", "attacking with minecraft:diamond_sword"),
+    ("effect give Alex resistance 10\ndamage Alex 1", "the resistance effect"),
+    ("item replace entity Alex weapon.offhand with totem_of_undying\ndamage Alex 100", "a totem of undying"),
+    ("damage Alex 100 minecraft:fall", "the food exhaustion of damage type minecraft:fall"),
+])
+def test_what_combat_does_not_model_makes_the_test_inconclusive(tmp_path, setup, reason):
+    result = run(tmp_path, f"dummy Alex spawn\nsummon pig ~1 ~ ~\n{setup}\nsucceed\n")
+    assert result.status == "inconclusive", result.report()
+    assert reason in result.message
