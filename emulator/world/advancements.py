@@ -14,6 +14,7 @@ observes, and the rewards a completed advancement earns.
 - ``broadcast_changes(state, player)``: the inventory menu's changed slots fire
   ``inventory_changed`` (``inventory_changed(state, player, stack)``); the item commands call it
   where the game's do.
+- ``entity_condition(state, condition, player, entity)``: a trigger's predicate about an entity.
 
 Sources (decompiled 1.21): server/PlayerAdvancements.java (award: rewards when the advancement
 becomes done; revoke), advancements/AdvancementProgress.java and AdvancementRequirements.java
@@ -160,13 +161,19 @@ def changed_dimension(state, player: Entity, origin: str) -> None:
 
 def _player_matches(state, player: Entity, criterion: dict) -> bool:
     """The trigger's ``player`` predicate, the player as ``this`` at its position."""
-    condition = (criterion.get("conditions") or {}).get("player")
+    return entity_condition(state, (criterion.get("conditions") or {}).get("player"), player, player)
+
+
+def entity_condition(state, condition, player: Entity, entity: Entity) -> bool:
+    """A trigger's ContextAwarePredicate about ``entity`` (EntityPredicate.createContext: the entity
+    as ``this``, the player's position as origin): loot conditions or an entity predicate; none
+    holds."""
     if condition is None:
         return True
-    ctx = LootContext(state, player.pos, this=player, dimension=player.dimension)
+    ctx = LootContext(state, player.pos, this=entity, dimension=player.dimension)
     if isinstance(condition, list):
         return predicates.test(condition, ctx)
-    return predicates.entity_matches(condition, ctx, player)
+    return predicates.entity_matches(condition, ctx, entity)
 
 
 # ---------------------------------------------------------------------- inventory_changed
@@ -233,11 +240,5 @@ def effects_changed(state, player: Entity, source: Entity | None) -> None:
             return False
         if conditions.get("source") is None:
             return True
-        if source is None:
-            return False
-        source_ctx = LootContext(state, player.pos, this=source, dimension=player.dimension)
-        condition = conditions["source"]
-        if isinstance(condition, list):
-            return predicates.test(condition, source_ctx)
-        return predicates.entity_matches(condition, source_ctx, source)
+        return source is not None and entity_condition(state, conditions["source"], player, source)
     trigger(state, player, "effects_changed", matches)

@@ -162,7 +162,7 @@ def hurt_triggers(state, entity, source: DamageSource, amount: float) -> None:
     if attacker is not None and attacker.is_player:
         advancements.trigger(state, attacker, "player_hurt_entity", lambda c, ctx: (
             _damage_matches(state, c.get("damage"), attacker, source, amount)
-            and _entity_condition(state, c.get("entity"), attacker, entity)))
+            and advancements.entity_condition(state, c.get("entity"), attacker, entity)))
 
 
 # ---------------------------------------------------------------------- death
@@ -183,7 +183,7 @@ def die(state, entity, source: DamageSource) -> None:
     if killer is not None and entity.is_player:
         statistics.award(state, entity, statistics.stat_name("killed_by", killer.type))
         advancements.trigger(state, entity, "entity_killed_player", lambda c, ctx: (
-            _entity_condition(state, c.get("entity"), entity, killer)
+            advancements.entity_condition(state, c.get("entity"), entity, killer)
             and _source_matches(state, c.get("killing_blow"), entity, source)))
     if not entity.is_player:
         if state.gamerules.get("doMobLoot") != "false" and entity.type != "minecraft:armor_stand":
@@ -230,7 +230,7 @@ def _award_kill(state, killer, victim, source: DamageSource) -> None:
     if victim.is_player:
         statistics.award(state, killer, "playerKillCount")
     advancements.trigger(state, killer, "player_killed_entity", lambda c, ctx: (
-        _entity_condition(state, c.get("entity"), killer, victim)
+        advancements.entity_condition(state, c.get("entity"), killer, victim)
         and _source_matches(state, c.get("killing_blow"), killer, source)))
 
 
@@ -346,17 +346,6 @@ def respawn_keeps(state, old, new) -> None:
 
 
 # ---------------------------------------------------------------------- trigger conditions
-def _entity_condition(state, condition, player, entity) -> bool:
-    """A ContextAwarePredicate about ``entity`` (EntityPredicate.createContext: the entity as
-    ``this``, the player's position as origin): loot conditions or an entity predicate."""
-    if condition is None:
-        return True
-    ctx = predicates.LootContext(state, player.pos, this=entity)
-    if isinstance(condition, list):
-        return predicates.test(condition, ctx)
-    return predicates.entity_matches(condition, ctx, entity)
-
-
 def _damage_matches(state, wanted, player, source: DamageSource, amount: float) -> bool:
     """DamagePredicate: dealt and taken (the same here: no shield, no freezing), blocked (never),
     the source entity, the damage source."""
@@ -367,7 +356,7 @@ def _damage_matches(state, wanted, player, source: DamageSource, amount: float) 
             return False
     if wanted.get("blocked") is True:
         return False
-    if "source_entity" in wanted and not _entity_condition(state, wanted["source_entity"], player, source.attacker):
+    if "source_entity" in wanted and not advancements.entity_condition(state, wanted["source_entity"], player, source.attacker):
         return False
     return _source_matches(state, wanted.get("type"), player, source)
 
@@ -385,7 +374,7 @@ def _source_matches(state, wanted, player, source: DamageSource) -> bool:
         return False
     for key, entity in (("source_entity", source.attacker), ("direct_entity", source.direct)):
         if key in wanted:
-            if entity is None or not _entity_condition(state, wanted[key], player, entity):
+            if entity is None or not advancements.entity_condition(state, wanted[key], player, entity):
                 return False
     unknown = set(wanted) - {"tags", "is_direct", "source_entity", "direct_entity"}
     if unknown:
