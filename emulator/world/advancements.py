@@ -15,6 +15,8 @@ observes, and the rewards a completed advancement earns.
   ``inventory_changed`` (``inventory_changed(state, player, stack)``); the item commands call it
   where the game's do.
 - ``entity_condition(state, condition, player, entity)``: a trigger's predicate about an entity.
+- ``location_test(state, player, pos, stack)``: the location triggers' test (``item_used_on_block``,
+  ``default_block_use``, ``placed_block``).
 
 Sources (decompiled 1.21): server/PlayerAdvancements.java (award: rewards when the advancement
 becomes done; revoke), advancements/AdvancementProgress.java and AdvancementRequirements.java
@@ -162,6 +164,26 @@ def changed_dimension(state, player: Entity, origin: str) -> None:
 def _player_matches(state, player: Entity, criterion: dict) -> bool:
     """The trigger's ``player`` predicate, the player as ``this`` at its position."""
     return entity_condition(state, (criterion.get("conditions") or {}).get("player"), player, player)
+
+
+def location_test(state, player: Entity, pos, stack=None):
+    """The ``location`` (and before 1.20 ``item``) conditions of ItemUsedOnLocationTrigger /
+    DefaultBlockInteractionTrigger as a trigger test: loot conditions with the block's centre as
+    origin, the player as ``this``, the block state at ``pos`` and the held stack as the tool."""
+    origin = (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5)
+    tool = stack if stack is not None and not stack.is_empty else None
+
+    def test(conditions: dict, _ctx) -> bool:
+        ctx = LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos),
+                          dimension=player.dimension)
+        location = conditions.get("location")
+        if isinstance(location, list):
+            ok = predicates.test(location, ctx)
+        else:
+            ok = location is None or predicates.location_matches(location, ctx, origin)
+        item = conditions.get("item")
+        return ok and (item is None or predicates.item_matches(item, ctx, tool))
+    return test
 
 
 def entity_condition(state, condition, player: Entity, entity: Entity) -> bool:

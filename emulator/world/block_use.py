@@ -13,7 +13,8 @@ The flow (ServerPlayerGameMode.useItemOn, 1.20.5+): a spectator only opens menus
 player sneaks holding something, the block reacts to the item (BlockState.useItemOn; every block
 modelled here passes on to the empty-hand use), then, for the main hand, to the hand
 (useWithoutItem): if that consumes the action, ``default_block_use`` fires. Otherwise the held
-item is used on the block (ItemStack.useOn: placing blocks, spawn eggs ... not modelled). Before
+item is used on the block (ItemStack.useOn): a block item places its block
+(emulator.world.block_placing) and ``item_used_on_block`` fires; other items are not modelled. Before
 1.20.5 the block's use (BlockState.use) fires ``item_used_on_block`` with the held stack.
 
 Sources (decompiled 1.21.x): server/level/ServerPlayerGameMode.java (useItemOn),
@@ -30,14 +31,13 @@ from __future__ import annotations
 import math
 import weakref
 
-from emulator.world import advancements, inventories, predicates, statistics
+from emulator.world import advancements, block_placing, inventories, statistics
 from emulator.world.blocks import BlockState
 from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import Unmodelled
-from emulator.world.loot_context import LootContext
-from mcfunction_parser.nbt import Compound
+from mcfunction_parser.nbt import Compound, String
 
 DEFAULT_BLOCK_USE_VERSION = (1, 20, 5)  # useWithoutItem and its own trigger (24w13a)
 MENU_REACH = 4.0  # Container.stillValidBlockEntity's buffer over the block interaction range
@@ -85,13 +85,19 @@ def use_item_on(state, player, hand: str, pos, face: str) -> str:
             result = _use_without_item(state, player, pos, block)
             if result == "consume":
                 if tuple(state.version) >= DEFAULT_BLOCK_USE_VERSION:
-                    advancements.trigger(state, player, "default_block_use", _location_test(state, player, pos, None))
+                    advancements.trigger(state, player, "default_block_use", advancements.location_test(state, player, pos, None))
                 else:
-                    advancements.trigger(state, player, "item_used_on_block", _location_test(state, player, pos, stack))
+                    advancements.trigger(state, player, "item_used_on_block", advancements.location_test(state, player, pos, stack))
                 return result
     if stack.is_empty:
         return "pass"
-    raise Unmodelled(f"using {stack.id} on {block.id} (items used on blocks: placing blocks, spawn eggs, tools ...)")
+    placed = block_placing.place(state, player, hand_slot(hand), pos, face)
+    if placed is None:
+        raise Unmodelled(f"using {stack.id} on {block.id} (items used on blocks other than placing a block: "
+                         "spawn eggs, buckets, tools ...)")
+    if placed == "consume":  # ItemStack.useOn consumed the action: the criterion, with the stack as it was
+        advancements.trigger(state, player, "item_used_on_block", advancements.location_test(state, player, pos, stack))
+    return placed
 
 
 def _item_on_block_passes(block: BlockState, stack, face: str) -> bool:
@@ -105,7 +111,7 @@ def _item_on_block_passes(block: BlockState, stack, face: str) -> bool:
 def _use_without_item(state, player, pos, block: BlockState) -> str:
     """BlockBehaviour.useWithoutItem of the modelled blocks (BlockState.use before 1.20.5)."""
     name = block.id.removeprefix("minecraft:")
-    if block.is_air or block.id in PLAIN:
+    if block.is_air or block.id in PLAIN or block.id in block_placing.REPLACEABLE:
         return "pass"
     if block.id in MENUS:
         return _open_menu(state, player, pos, block, award=True)
@@ -254,27 +260,6 @@ def _within_reach(player, pos) -> bool:
     gap = [max(lo - c, 0.0, c - (lo + 1)) for c, lo in zip(eye, pos)]
     reach = attribute_value(player, "block_interaction_range") + MENU_REACH
     return sum(g * g for g in gap) < reach * reach
-
-
-# ---------------------------------------------------------------------- criteria
-def _location_test(state, player, pos, stack):
-    """The ``location`` of ItemUsedOnLocationTrigger / DefaultBlockInteractionTrigger: loot
-    conditions with the block's centre as origin, the player as ``this``, the block state and (for
-    items) the tool; before 1.20 a location predicate and an ``item`` predicate."""
-    origin = (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5)
-    tool = stack if stack is not None and not stack.is_empty else None
-
-    def test(conditions: dict, _ctx) -> bool:
-        ctx = LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos),
-                          dimension=player.dimension)
-        location = conditions.get("location")
-        if isinstance(location, list):
-            ok = predicates.test(location, ctx)
-        else:
-            ok = location is None or predicates.location_matches(location, ctx, origin)
-        item = conditions.get("item")
-        return ok and (item is None or predicates.item_matches(item, ctx, tool))
-    return test
 
 
 # blocks without a use of their own (plain Block): a click on them goes on to the held item

@@ -125,8 +125,8 @@ def test_a_plain_block_with_empty_hands_refuses_and_an_unknown_direction_is_refu
 
 
 @pytest.mark.parametrize("setup, reason", [
-    ("give @s stone\nsetblock ~2 ~ ~ stone", "using minecraft:stone on minecraft:stone"),
-    ("give @s stone\ndummy @s sneak true\nsetblock ~2 ~ ~ lever", "using minecraft:stone on minecraft:lever"),
+    ("give @s bucket\nsetblock ~2 ~ ~ stone", "using minecraft:bucket on minecraft:stone"),
+    ("give @s bucket\ndummy @s sneak true\nsetblock ~2 ~ ~ lever", "using minecraft:bucket on minecraft:lever"),
     ("setblock ~2 ~ ~ chest\nsetblock ~2 ~1 ~ stone", "opening minecraft:chest under minecraft:stone"),
     ("setblock ~2 ~ ~ chest{LootTable:\"demo:x\"}", "unpacking its loot table"),
     ("setblock ~2 ~ ~ cake", "using the block minecraft:cake"),
@@ -179,5 +179,63 @@ def test_operator_blocks_refuse_and_adventure_players_cannot_mine(tmp_path):
 ])
 def test_survival_mining_the_emulator_cannot_model_is_inconclusive(tmp_path, setup, reason):
     result = run(tmp_path, f"# @dummy\n{setup}\ndummy @s mine ~2 ~ ~\nsucceed\n", files=DIRT_TABLE)
+    assert result.status == "inconclusive", result.report()
+    assert reason in result.message
+
+
+PLACED = {"demo/advancement/placed.json": json.dumps({"criteria": {"c": {
+    "trigger": "minecraft:placed_block",
+    "conditions": {"location": [{"condition": "minecraft:block_state_property", "block": "minecraft:stone"}]}}}}),
+    "demo/advancement/used_on.json": json.dumps({"criteria": {"c": {
+        "trigger": "minecraft:item_used_on_block",
+        "conditions": {"location": [{"condition": "minecraft:match_tool", "predicate": {"items": "minecraft:stone"}},
+                                    {"condition": "minecraft:block_state_property", "block": "minecraft:dirt"}]}}}})}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_block_item_places_its_block_beside_the_clicked_face(tmp_path, backend):
+    """BlockItem.useOn -> place: BlockPlaceContext puts it on the neighbour in the face's direction
+    (the clicked block is not replaceable), spends one item, counts used:<item>, fires placed_block
+    (the placed block) and item_used_on_block (the clicked block, the stack as it was)."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add used minecraft.used:minecraft.stone\n"
+        "setblock ~2 ~ ~ dirt\n"
+        "give @s stone 2\n"
+        "dummy @s use block ~2 ~ ~ up\n"
+        "assert block ~2 ~1 ~ stone\n"
+        "assert block ~2 ~ ~ dirt\n"
+        "assert items entity @s weapon.mainhand stone[count=1]\n"
+        "assert score @s used matches 1\n"
+        "assert entity @s[advancements={demo:placed=true,demo:used_on=true}]\n"
+        "dummy @s use block ~2 ~1 ~ east\n"
+        "assert block ~3 ~1 ~ stone\n"
+        "assert not items entity @s weapon.mainhand *\n"), files=PLACED, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_placing_replaces_grass_and_refuses_a_full_spot_or_an_entity_in_the_way(tmp_path):
+    result = run(tmp_path, "# @dummy\n" + (
+        "setblock ~2 ~ ~ short_grass\n"
+        "give @s stone 3\n"
+        "dummy @s use block ~2 ~ ~ up\n"
+        "assert block ~2 ~ ~ stone\n"                     # the grass is replaced, not built upon
+        "setblock ~2 ~1 ~ dirt\n"
+        "dummy @s use block ~2 ~ ~ up\n"                  # the spot above is taken
+        "summon pig ~ ~ ~2\n"
+        "setblock ~ ~-1 ~2 dirt\n"
+        "dummy @s use block ~ ~-1 ~2 up\n"                # the pig stands there
+        "assert block ~ ~ ~2 air\n"
+        "assert items entity @s weapon.mainhand stone[count=2]\n"
+        "fail \"end\"\n"))
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert "\n".join(result.details).count("cannot interact with that block") == 2
+
+
+@pytest.mark.parametrize("item, reason", [
+    ("lectern", "placing minecraft:lectern (its state follows how it is placed"),
+    ("pig_spawn_egg", "using minecraft:pig_spawn_egg on minecraft:dirt"),
+])
+def test_placements_the_emulator_cannot_model_are_inconclusive(tmp_path, item, reason):
+    result = run(tmp_path, f"# @dummy\nsetblock ~2 ~ ~ dirt\ngive @s {item}\ndummy @s use block ~2 ~ ~ up\nsucceed\n")
     assert result.status == "inconclusive", result.report()
     assert reason in result.message

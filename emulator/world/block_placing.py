@@ -1,0 +1,94 @@
+"""A player placing the block its held item stands for (BlockItem.useOn), with what a datapack observes:
+the block, the item spent, ``minecraft.used:<item>`` and the ``placed_block`` criterion.
+
+- ``place(state, player, hand, clicked, face) -> str``: ``"consume"`` when placed, ``"fail"`` when
+  there is no room, ``"pass"`` for an adventure player; None when the held item places no block
+  the emulator knows (the caller decides what that means). Blocks whose placed state depends on
+  how they are placed (any block with state properties: facing, axis, waterlogged ...) and items
+  carrying block data (``block_state``, ``block_entity_data``) raise Unmodelled.
+
+Where it goes (BlockPlaceContext): on the clicked block when that one can be replaced (air, water,
+lava, grass ...), else on its neighbour in the clicked face's direction, which then must be
+replaceable; a living entity (or vehicle) in the way refuses it (Level.isUnobstructed).
+
+Sources (decompiled 1.21.x): world/item/BlockItem.java (useOn, place: PLACED_BLOCK, consume),
+world/item/context/BlockPlaceContext.java, world/item/ItemStack.java (useOn: ITEM_USED; adventure:
+canPlaceOnBlockInAdventureMode), world/level/block/state/BlockBehaviour.java (canBeReplaced: the
+``replaceable`` tag), world/entity/Entity.java (blocksBuilding).
+"""
+from __future__ import annotations
+
+from emulator.world import advancements, inventories, statistics
+from emulator.world.blocks import BlockSpec
+from emulator.world.errors import Unmodelled
+from emulator.world.inventories import NOT_LIVING
+from mcfunction_parser import gamedata
+
+# BlockTags.REPLACEABLE's common members (what a placed block replaces instead of going beside it)
+REPLACEABLE = frozenset("minecraft:" + n for n in (
+    "air cave_air void_air water lava short_grass grass fern dead_bush tall_grass large_fern vine fire "
+    "soul_fire seagrass tall_seagrass light structure_void crimson_roots warped_roots nether_sprouts "
+    "hanging_roots glow_lichen").split())
+_OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
+            "east": (1, 0, 0)}
+_VEHICLES = ("boat", "raft", "minecart")
+BUILD_LIMITS = (-64, 320)  # the overworld's height (DimensionType min_y, height)
+
+
+def place(state, player, hand_slot: int, clicked, face: str) -> str | None:
+    """BlockItem.useOn with the stack in ``hand_slot`` on the block ``clicked``, face ``face``."""
+    access = inventories.entity_slot(player, hand_slot, state.version)
+    stack = access.get()
+    block_id = stack.id
+    properties = _block_properties(block_id, state.version)
+    if properties is None:
+        return None
+    if player.gamemode == "adventure":
+        return "pass"  # no can_place_on here (its block predicates are not modelled): refused
+    for component in ("minecraft:block_state", "minecraft:block_entity_data", "minecraft:custom_name"):
+        if stack.component(component) is not None:
+            raise Unmodelled(f"placing {block_id} with its {component} component")
+    if properties:
+        raise Unmodelled(f"placing {block_id} (its state follows how it is placed: {', '.join(sorted(properties))})")
+    target = _target(state, clicked, face)
+    if target is None or not BUILD_LIMITS[0] <= target[1] < BUILD_LIMITS[1] or _obstructed(state, target):
+        return "fail"
+    state.blocks.setblock(target, BlockSpec(block_id, False, (), None))
+    advancements.trigger(state, player, "placed_block", advancements.location_test(state, player, target, stack))
+    if player.gamemode != "creative":
+        stack.count -= 1
+        access.set(stack)
+    statistics.award(state, player, statistics.stat_name("used", block_id))
+    return "consume"
+
+
+def _block_properties(block_id: str, version):
+    """The block the item places (the same id: a BlockItem of its block) and its state properties,
+    None when the item is no block the registries know."""
+    name = block_id.removeprefix("minecraft:")
+    if not block_id.startswith("minecraft:") or name not in gamedata.registry("item", version):
+        return None
+    return gamedata.block_states(block_id, version)
+
+
+def _target(state, clicked, face: str):
+    """BlockPlaceContext: the clicked block if replaceable, else its neighbour if that is."""
+    if state.blocks.get(clicked).id in REPLACEABLE:
+        return tuple(clicked)
+    dx, dy, dz = _OFFSETS[face]
+    beside = (clicked[0] + dx, clicked[1] + dy, clicked[2] + dz)
+    return beside if state.blocks.get(beside).id in REPLACEABLE else None
+
+
+def _obstructed(state, pos) -> bool:
+    """Level.isUnobstructed: a living entity (not a spectator) or vehicle overlapping the block."""
+    for entity in state.entities.entities:
+        if not entity.alive or (entity.type in NOT_LIVING and not entity.type.endswith(_VEHICLES)):
+            continue
+        if entity.is_player and entity.gamemode == "spectator":
+            continue
+        x0, y0, z0, x1, y1, z1 = entity.bounding_box
+        if x0 < pos[0] + 1 and x1 > pos[0] and y0 < pos[1] + 1 and y1 > pos[1] and z0 < pos[2] + 1 and z1 > pos[2]:
+            return True
+    return False
+
