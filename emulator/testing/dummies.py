@@ -141,6 +141,13 @@ def _use(r: Reader, command: DummyCommand) -> DummyCommand:
     r.fail(f"dummy use: expected item, block or entity, got {what!r}", r.pos - len(what))
 
 
+def _in_overworld(dummy: Entity) -> None:
+    """The block actions act on the overworld's blocks (the test's level)."""
+    if dummy.dimension != "minecraft:overworld":
+        raise Unsupported(f"using or mining blocks in {dummy.dimension} (the dummies' block actions act in the "
+                          "overworld only)")
+
+
 def _word(r: Reader) -> str:
     start = r.pos
     while r.more() and r.peek() != " ":
@@ -259,6 +266,7 @@ class Dummies:
         raise DummyFailure(f"Dummy {dummy.player_name} cannot interact with that entity")
 
     def _mine(self, dummy: Entity, command, ctx) -> None:
+        _in_overworld(dummy)
         pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)
         if not block_breaking.destroy_block(self.state, dummy, pos):
             raise DummyFailure(f"Dummy {dummy.player_name} failed to mine block")
@@ -281,6 +289,7 @@ class Dummies:
         """DummyCommand.useBlock: each hand in turn, until one consumes the action."""
         if command.face not in DIRECTIONS:
             raise DummyFailure("Not a valid direction")
+        _in_overworld(dummy)
         pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)
         for hand in (player_actions.MAIN, player_actions.OFF):
             if block_use.use_item_on(self.state, dummy, hand, pos, command.face) == "consume":

@@ -26,9 +26,9 @@ from emulator.world.entity_table import EntityTable
 from emulator.world.selectors import WORLD_LIMITING as _WORLD_LIMITING
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.vm.loop import (
-    KIND_E, KIND_S, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, S_WORLD, SEL_WIDTH, SF_BOX, SF_DHI,
-    SF_DLO, SF_ORIGIN, SF_WIDTH, SORT_ARBITRARY, SORT_FURTHEST, SORT_NEAREST, TEST_MEMBER, TEST_NOTAGS, TEST_SCORE,
-    TEST_TAG, TEST_TYPE, TEST_TYPES,
+    KIND_E, KIND_S, S_ALIVE, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, S_WORLD, SEL_WIDTH,
+    SF_BOX, SF_DHI, SF_DLO, SF_ORIGIN, SF_WIDTH, SORT_ARBITRARY, SORT_FURTHEST, SORT_NEAREST, TEST_MEMBER, TEST_NOTAGS,
+    TEST_SCORE, TEST_TAG, TEST_TYPE, TEST_TYPES,
 )
 
 # (limit, players only, sort) per selector variable (selectors._VARIABLES); @r sorts randomly: host
@@ -59,6 +59,7 @@ class SelectorTables:
             return None
         row = [0] * SEL_WIDTH
         row[S_LIMIT], row[S_PLAYERS], row[S_SORT] = _VARIABLES[target.variable]
+        row[S_ALIVE] = int(target.variable in "en")  # EntitySelectorParser: @e and @n test isAlive
         row[S_KIND] = KIND_S if target.variable == "s" else KIND_E
         floats = [math.nan] * 3 + [0.0] * (SF_WIDTH - 3)
         deltas, distance, tests = {}, None, []

@@ -250,8 +250,8 @@ MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
 # squared distance bounds. A test row: [TEST_SCORE, objective, lo, hi], [TEST_TYPE, type id, negated, 0],
 # [TEST_TAG, tag, negated, 0], [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all), or [TEST_TYPES,
 # count, negated, 0] followed by `count` rows [TEST_MEMBER, type id, 0, 0] (`type=#tag`)
-SEL_WIDTH = 9
-S_KIND, S_LIMIT, S_TESTS, S_NTESTS, S_SORT, S_PLAYERS, S_BOX, S_DIST, S_WORLD = range(SEL_WIDTH)
+SEL_WIDTH = 10
+S_KIND, S_LIMIT, S_TESTS, S_NTESTS, S_SORT, S_PLAYERS, S_BOX, S_DIST, S_WORLD, S_ALIVE = range(SEL_WIDTH)
 SF_WIDTH = 11
 SF_ORIGIN, SF_BOX, SF_DLO, SF_DHI = 0, 3, 9, 10
 KIND_E, KIND_S = range(2)
@@ -335,7 +335,7 @@ def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags,
     (squared, to the feet) from the origin ``(ox, oy, oz)``."""
     if sels[sel, S_PLAYERS] and eints[slot, EI_TYPE] != PLAYER_TYPE:
         return False
-    if sels[sel, S_KIND] == KIND_E and not sels[sel, S_PLAYERS] and eints[slot, EI_ALIVE] == 0:
+    if sels[sel, S_ALIVE] and eints[slot, EI_ALIVE] == 0:
         return False  # @e and @n test isAlive (a dead player stays in @a until it respawns)
     t = sels[sel, S_TESTS]
     end = t + sels[sel, S_NTESTS]

@@ -174,8 +174,8 @@ def location_test(state, player: Entity, pos, stack=None):
     tool = stack if stack is not None and not stack.is_empty else None
 
     def test(conditions: dict, _ctx) -> bool:
-        ctx = LootContext(state, origin, this=player, tool=tool, block_state=state.blocks.get(pos),
-                          dimension=player.dimension)
+        ctx = LootContext(state, origin, this=player, tool=tool, dimension=player.dimension,
+                          block_state=state.blocks_in(player.dimension).get(pos))
         location = conditions.get("location")
         if isinstance(location, list):
             ok = predicates.test(location, ctx)

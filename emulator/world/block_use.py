@@ -85,9 +85,10 @@ def use_item_on(state, player, hand: str, pos, face: str) -> str:
             result = _use_without_item(state, player, pos, block)
             if result == "consume":
                 if tuple(state.version) >= DEFAULT_BLOCK_USE_VERSION:
-                    advancements.trigger(state, player, "default_block_use", advancements.location_test(state, player, pos, None))
+                    trigger, used = "default_block_use", None
                 else:
-                    advancements.trigger(state, player, "item_used_on_block", advancements.location_test(state, player, pos, stack))
+                    trigger, used = "item_used_on_block", stack
+                advancements.trigger(state, player, trigger, advancements.location_test(state, player, pos, used))
                 return result
     if stack.is_empty:
         return "pass"

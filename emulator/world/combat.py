@@ -51,8 +51,8 @@ from emulator.world.loot_context import LootContext
 from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String
 
 F32 = np.float32
-CREDIT_TICKS = 100
-EMPTY_TABLE = "minecraft:empty"  # BuiltInLootTables.EMPTY: no drops  # LivingEntity.setLastHurtByPlayer / setLastHurtByMob
+CREDIT_TICKS = 100  # LivingEntity.setLastHurtByPlayer / setLastHurtByMob
+EMPTY_TABLE = "minecraft:empty"  # BuiltInLootTables.EMPTY: no drops
 MAX_DEATH_TIME = 20
 ORB_VALUES = (2477, 1237, 617, 307, 149, 73, 37, 17, 7, 3, 1)  # ExperienceOrb.getExperienceValue
 # Animal.getBaseExperienceReward (1 + nextInt(3)) and Monster's (5, without equipment)
@@ -207,16 +207,17 @@ def _mob_drops(state, mob, killer) -> None:
                           origin=mob.pos, daytime=state.daytime, scores=state.scoreboard.get,
                           storage=lambda sid: state.storage.get(sid, Compound()))
         for stack in loot.roll_table(table, ctx):
-            inventories.drop_item(state.entities, mob.pos, stack, state.version, state.resources.random)
+            inventories.drop_item(state.entities, mob.pos, stack, state.version, state.resources.random,
+                                  dimension=mob.dimension)
     if any(not inventories.entity_slot(mob, slot, state.version).get().is_empty
            for slot in (inventories.MAINHAND, inventories.OFFHAND, *inventories.ARMOR)):
         state.error(f"the equipment a dying {mob.type} may drop", severity="warning", unmodelled=True)
     if killer is not None and killer.is_player:
         name = mob.type.split(":", 1)[-1]
         if name in ANIMALS:
-            _award_orbs(state, mob.pos, 1 + state.resources.random.randrange(3))
+            _award_orbs(state, mob.pos, 1 + state.resources.random.randrange(3), mob.dimension)
         elif name in MONSTERS:
-            _award_orbs(state, mob.pos, 5)
+            _award_orbs(state, mob.pos, 5, mob.dimension)
         else:
             state.error(f"the experience a {mob.type} killed by a player drops", severity="warning", unmodelled=True)
 
@@ -247,7 +248,7 @@ def _player_dies(state, player, source: DamageSource, killer) -> None:
         statistics.reset(state, player, statistics.stat_name("custom", stat))
     x, y, z = player.pos
     player.data["LastDeathLocation"] = Compound(
-        dimension=String("minecraft:overworld"),
+        dimension=String(player.dimension),
         pos=IntArray(Int(math.floor(c)) for c in (x, y, z)))
     player.data["DeathTime"] = Short(0)
     _DEAD.add(player)
@@ -293,10 +294,11 @@ def _drop_inventory(state, player) -> None:
             continue
         rng = state.resources.random
         strength, angle = rng.random() * 0.5, rng.random() * math.pi * 2
+        motion = List([Double(-math.sin(angle) * strength), Double(0.2), Double(math.cos(angle) * strength)])
         x, y, z = player.pos
         inventories.drop_item(state.entities, (x, y + float(player.eye_height) - 0.30000001192092896, z), stack,
-                              state.version, rng, Compound(PickupDelay=Short(40), Motion=List([
-                                  Double(-math.sin(angle) * strength), Double(0.2), Double(math.cos(angle) * strength)])))
+                              state.version, rng, Compound(PickupDelay=Short(40), Motion=motion),
+                              dimension=player.dimension)
 
 
 def _drop_experience(state, player) -> None:
@@ -304,10 +306,10 @@ def _drop_experience(state, player) -> None:
     by ExperienceOrb.getExperienceValue (the game merges an orb into an equal one nearby one time in
     40, depending on entity ids: not here)."""
     level = int(player.data.get("XpLevel", Int(0)))
-    _award_orbs(state, player.pos, min(level * 7, 100))
+    _award_orbs(state, player.pos, min(level * 7, 100), player.dimension)
 
 
-def _award_orbs(state, pos, amount: int) -> None:
+def _award_orbs(state, pos, amount: int, dimension: str) -> None:
     """ExperienceOrb.award: orbs of getExperienceValue's sizes (no merging) at ``pos``."""
     rng = state.resources.random
     while amount > 0:
@@ -316,7 +318,7 @@ def _award_orbs(state, pos, amount: int) -> None:
         state.entities.summon("minecraft:experience_orb", pos, Compound(
             Value=Short(value), Count=Int(1), Age=Short(0), Health=Short(5),
             Motion=List([Double((rng.random() * 0.2 - 0.1) * 2), Double(rng.random() * 0.4),
-                         Double((rng.random() * 0.2 - 0.1) * 2)])))
+                         Double((rng.random() * 0.2 - 0.1) * 2)])), dimension=dimension)
 
 
 def tick_is_idle(state) -> bool:
@@ -356,7 +358,8 @@ def _damage_matches(state, wanted, player, source: DamageSource, amount: float) 
             return False
     if wanted.get("blocked") is True:
         return False
-    if "source_entity" in wanted and not advancements.entity_condition(state, wanted["source_entity"], player, source.attacker):
+    if "source_entity" in wanted and not advancements.entity_condition(state, wanted["source_entity"], player,
+                                                                       source.attacker):
         return False
     return _source_matches(state, wanted.get("type"), player, source)
 
