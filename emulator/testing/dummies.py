@@ -46,14 +46,14 @@ from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import block_breaking, block_use, combat, entity_use, living, player_actions, players, statistics
-from emulator.world.blocks import block_pos, parse_block
+from emulator.world import block_breaking, block_use, combat, entity_use, player_actions, players, statistics
+from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word, vec3
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Compound, Int, IntArray, Long
+from mcfunction_parser.nbt import Int
 from mcfunction_parser.reader import Reader
 
 ACTIONS = ("spawn", "leave", "respawn", "jump", "swap", "sneak", "sprint", "drop", "selectslot", "use", "attack",

@@ -37,7 +37,7 @@ from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import Unmodelled
-from mcfunction_parser.nbt import Compound, String
+from mcfunction_parser.nbt import Compound
 
 DEFAULT_BLOCK_USE_VERSION = (1, 20, 5)  # useWithoutItem and its own trigger (24w13a)
 MENU_REACH = 4.0  # Container.stillValidBlockEntity's buffer over the block interaction range

@@ -187,25 +187,25 @@ def die(state, entity, source: DamageSource) -> None:
             and _source_matches(state, c.get("killing_blow"), entity, source)))
     if not entity.is_player:
         if state.gamerules.get("doMobLoot") != "false" and entity.type != "minecraft:armor_stand":
-            _mob_drops(state, entity, killer)
+            _mob_drops(state, entity, killer, source)
         state.entities.kill(entity)
         state.scoreboard.reset(entity.score_holder)  # Scoreboard.entityRemoved
 
 
-def _mob_drops(state, mob, killer) -> None:
+def _mob_drops(state, mob, killer, source: DamageSource) -> None:
     """LivingEntity.dropAllDeathLoot: the mob's loot table (``DeathLootTable``, else
-    ``entities/<type>``: only a pack's is known) rolled with its killer and dropped where it died;
+    ``entities/<type>``: a pack's, or the game's from ``--game-jar``) rolled with its killer and
+    dropped where it died;
     experience when a player hurt it within 100 ticks (Mob.getBaseExperienceReward: animals 1-3,
     monsters 5); its equipment's drop chances are not modelled."""
     table_id = str(mob.data.get("DeathLootTable") or "minecraft:entities/" + mob.type.split(":", 1)[-1])
-    table = {"pools": []} if table_id == EMPTY_TABLE else state.resources.loot_tables.get(table_id)
-    if table is None:
-        state.error(f"the drops of a dying {mob.type}: the game's own loot table {table_id} is not known (only a "
-                    "pack's)", severity="warning", unmodelled=True)
+    try:  # a table that does not exist drops nothing (LootTable.EMPTY)
+        table = {} if table_id == EMPTY_TABLE else state.resources.loot_table(table_id) or {}
+    except Unmodelled as unknown:
+        state.error(f"the drops of a dying {mob.type}: {unknown}", severity="warning", unmodelled=True)
     else:
-        ctx = LootContext(state.resources.random, state.resources, state.version, this=mob, killer=killer,
-                          origin=mob.pos, daytime=state.daytime, scores=state.scoreboard.get,
-                          storage=lambda sid: state.storage.get(sid, Compound()))
+        ctx = LootContext(state, mob.pos, this=mob, dimension=mob.dimension, damage_source=source.type,
+                          random=state.resources.random).killed_by(killer)
         for stack in loot.roll_table(table, ctx):
             inventories.drop_item(state.entities, mob.pos, stack, state.version, state.resources.random,
                                   dimension=mob.dimension)
