@@ -30,6 +30,14 @@ def first_line(text: str) -> str:
     return text.strip().splitlines()[0] if text.strip() else ""
 
 
+def start_up_time(*args) -> float:
+    """Seconds the same command takes to start and finish on a trivial input on this machine now:
+    a Ctrl-C sent sooner would interrupt the start-up, not the work (a loaded machine starts slowly)."""
+    start = time.perf_counter()
+    dpemu(*args)
+    return time.perf_counter() - start
+
+
 def no_traceback(done: subprocess.CompletedProcess) -> None:
     assert "Traceback" not in done.stderr + done.stdout
 
@@ -134,10 +142,11 @@ def test_a_version_the_pack_does_not_support_is_said(tmp_path):
 
 def test_ctrl_c_prints_what_ran_and_exits_130(pack):
     root = pack({"t:tick": "scoreboard players add #n o 1"}, {**LOAD, "minecraft:tick": ["t:tick"]})
-    process = subprocess.Popen([sys.executable, "-m", "emulator", "run", str(root), "--backend", "python",
-                                "--ticks", "100000000", "--watch", "#n o"], cwd=ROOT,
+    args = ["run", str(root), "--backend", "python", "--watch", "#n o", "--ticks"]
+    wait = 2 * start_up_time(*args, "1") + 2
+    process = subprocess.Popen([sys.executable, "-m", "emulator", *args, "100000000"], cwd=ROOT,
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(4)
+    time.sleep(wait)
     process.send_signal(signal.SIGINT)
     out, err = process.communicate(timeout=120)
     assert process.returncode == 130, err
@@ -191,9 +200,10 @@ def test_ctrl_c_during_a_check_exits_130_without_a_traceback(tmp_path):
     # a pack big enough to be still parsing when the signal arrives
     functions = {f"t:f{i}": "\n".join(f"scoreboard players set #a{j} o {j}" for j in range(400)) for i in range(3000)}
     root = write_pack(tmp_path / "big", functions, {})
+    wait = 1.5 * start_up_time("check", write_pack(tmp_path / "small", {"t:f": "say hi"}, {})) + 1
     process = subprocess.Popen([sys.executable, "-m", "emulator", "check", str(root)], cwd=ROOT,
                                stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(2)
+    time.sleep(wait)
     process.send_signal(signal.SIGINT)
     out, err = process.communicate(timeout=120)
     if process.returncode == 0:  # the check finished before the signal: nothing to judge
