@@ -21,7 +21,7 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from mcfunction_parser.diagnostics import ERROR, Diagnostic
+from mcfunction_parser.diagnostics import ERROR, WARNING, Diagnostic
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json
 from mcfunction_parser.pack.versions import Format
 
@@ -90,49 +90,83 @@ def read_pack_meta(root: PackPath, shown_root: str, diagnostics: list[Diagnostic
     doc = load_json(path, shown, diagnostics)
     if doc is None:
         return None
+    notes: list[_Invalid] = []
     try:
-        return _meta_from_json(doc)
+        meta = _meta_from_json(doc, notes)
     except _Invalid as exc:
         diagnostics.append(doc.diagnostic(ERROR, f"invalid pack.mcmeta: {exc}", exc.offset))
         return None
+    diagnostics.extend(doc.diagnostic(WARNING, f"pack.mcmeta: {note}", note.offset) for note in notes)
+    return meta
 
 
 def _join(root: str, name: str) -> str:
     return name if root in ("", ".") else f"{root.rstrip('/')}/{name}"
 
 
-def _meta_from_json(doc: JsonDocument) -> PackMeta:
+def _meta_from_json(doc: JsonDocument, notes: list[_Invalid]) -> PackMeta:
+    """The metadata; ``notes`` collects what the game reads differently from how it is written."""
     root = doc.value
     if not isinstance(root, dict) or not isinstance(root.get("pack"), dict):
         raise _Invalid('expected an object with a "pack" object', doc.find_string("pack"))
     pack = root["pack"]
-    pack_format = _pack_format(pack, doc)
-    supported = _supported_range(pack, pack_format, doc)
-    overlays = _overlays(root.get("overlays"), doc)
+    reader = _Ints(doc, notes)
+    pack_format = _pack_format(pack, doc, reader)
+    supported = _supported_range(pack, pack_format, doc, reader)
+    overlays = _overlays(root.get("overlays"), doc, reader)
     block = _block_filter(root.get("filter"), doc)
     return PackMeta(pack_format, supported, _plain_text(pack.get("description", "")), overlays, block)
 
 
-def _pack_format(pack: dict, doc: JsonDocument) -> int | None:
+class _Ints:
+    """The format numbers as the game reads them: Codec.INT takes any JSON number
+    (DataFixerUpper's JsonOps.getNumberValue) and keeps ``Number.intValue()`` of it, so Gson's
+    LazilyParsedNumber truncates a decimal toward zero (``101.1`` is format 101, minor 0) and keeps
+    the low 32 bits of a whole number. Such a number is a note: the author most likely meant
+    ``[101, 1]``."""
+
+    def __init__(self, doc: JsonDocument, notes: list[_Invalid]):
+        self.doc = doc
+        self.notes = notes
+
+    def read(self, value: Any, key: str) -> int | None:
+        """``value`` as the game's int, or None when it is no JSON number."""
+        if isinstance(value, bool) or not isinstance(value, (int, float)) or value != value \
+                or value in (float("inf"), float("-inf")):
+            return None
+        number = (int(value) + 2**31) % 2**32 - 2**31
+        if number != value:
+            self.notes.append(_Invalid(f'"{key}" {value!r} is read as {number} (the game keeps the whole '
+                                       f'int part of a number; a minor version is written [major, minor])',
+                                       self.doc.find_string(key)))
+        return number
+
+    def all(self, values: list, key: str) -> list[int] | None:
+        numbers = [self.read(v, key) for v in values]
+        return None if None in numbers else numbers
+
+
+def _pack_format(pack: dict, doc: JsonDocument, ints: _Ints) -> int | None:
     value = pack.get("pack_format")
     if value is None:
         if "min_format" in pack and "max_format" in pack:
             return None
         raise _Invalid('"pack.pack_format" is missing (or give "min_format" and "max_format", '
                        '1.21.9+)', doc.find_string("pack"))
-    if not _is_int(value):
+    number = ints.read(value, "pack_format")
+    if number is None:
         raise _Invalid(f'"pack_format" must be an integer, not {_json_type(value)}',
                        doc.find_string("pack_format"))
-    return value
+    return number
 
 
-def _supported_range(pack: dict, pack_format: int | None, doc: JsonDocument) -> FormatRange | None:
+def _supported_range(pack: dict, pack_format: int | None, doc: JsonDocument, ints: _Ints) -> FormatRange | None:
     if "min_format" in pack or "max_format" in pack:
-        lo = _format_bound(pack.get("min_format"), "min_format", 0, doc)
-        hi = _format_bound(pack.get("max_format"), "max_format", ANY_MINOR, doc)
+        lo = _format_bound(pack.get("min_format"), "min_format", 0, doc, ints)
+        hi = _format_bound(pack.get("max_format"), "max_format", ANY_MINOR, doc, ints)
         result = FormatRange(lo, hi)
     elif "supported_formats" in pack:
-        result = _int_range(pack["supported_formats"], "supported_formats", doc)
+        result = _int_range(pack["supported_formats"], "supported_formats", doc, ints)
     elif pack_format is not None:
         return FormatRange((pack_format, 0), (pack_format, ANY_MINOR))
     else:
@@ -145,30 +179,35 @@ def _supported_range(pack: dict, pack_format: int | None, doc: JsonDocument) -> 
     return result
 
 
-def _format_bound(value: Any, key: str, default_minor: int, doc: JsonDocument) -> Format:
+def _format_bound(value: Any, key: str, default_minor: int, doc: JsonDocument, ints: _Ints) -> Format:
     """``88``, ``[88]`` or ``[88, 0]``; a bare major takes ``default_minor``."""
-    if _is_int(value):
-        return (value, default_minor)
-    if isinstance(value, list) and len(value) in (1, 2) and all(_is_int(v) for v in value):
-        return (value[0], value[1] if len(value) == 2 else 0)
+    number = None if isinstance(value, list) else ints.read(value, key)
+    if number is not None:
+        return (number, default_minor)
+    numbers = ints.all(value, key) if isinstance(value, list) and len(value) in (1, 2) else None
+    if numbers is not None:
+        return (numbers[0], numbers[1] if len(numbers) == 2 else 0)
     raise _Invalid(f'"{key}" must be an integer or [major, minor]', doc.find_string(key))
 
 
-def _int_range(value: Any, key: str, doc: JsonDocument) -> FormatRange:
+def _int_range(value: Any, key: str, doc: JsonDocument, ints: _Ints) -> FormatRange:
     """``42``, ``[42, 45]`` or ``{"min_inclusive": 42, "max_inclusive": 45}`` (whole majors)."""
-    if _is_int(value):
-        lo = hi = value
-    elif isinstance(value, list) and len(value) == 2 and all(_is_int(v) for v in value):
-        lo, hi = value
-    elif isinstance(value, dict) and all(_is_int(value.get(k)) for k in ("min_inclusive", "max_inclusive")):
-        lo, hi = value["min_inclusive"], value["max_inclusive"]
+    if isinstance(value, list):
+        bounds = ints.all(value, key) if len(value) == 2 else None
+    elif isinstance(value, dict):
+        bounds = ints.all([value.get(k) for k in ("min_inclusive", "max_inclusive")], key)
+    else:
+        single = ints.read(value, key)
+        bounds = None if single is None else [single, single]
+    if bounds is not None:
+        lo, hi = bounds
     else:
         raise _Invalid(f'"{key}" must be an integer, [min, max] or '
                        '{"min_inclusive": N, "max_inclusive": N}', doc.find_string(key))
     return FormatRange((lo, 0), (hi, ANY_MINOR))
 
 
-def _overlays(section: Any, doc: JsonDocument) -> list[Overlay]:
+def _overlays(section: Any, doc: JsonDocument, ints: _Ints) -> list[Overlay]:
     if section is None:
         return []
     entries = section.get("entries") if isinstance(section, dict) else None
@@ -182,10 +221,10 @@ def _overlays(section: Any, doc: JsonDocument) -> list[Overlay]:
         if not isinstance(directory, str) or not _OVERLAY_DIRECTORY.fullmatch(directory):
             raise _Invalid('each overlay needs a "directory" made of a-z, 0-9, _ and -', offset)
         if "formats" in entry:
-            formats = _int_range(entry["formats"], "formats", doc)
+            formats = _int_range(entry["formats"], "formats", doc, ints)
         elif "min_format" in entry and "max_format" in entry:
-            formats = FormatRange(_format_bound(entry["min_format"], "min_format", 0, doc),
-                                  _format_bound(entry["max_format"], "max_format", ANY_MINOR, doc))
+            formats = FormatRange(_format_bound(entry["min_format"], "min_format", 0, doc, ints),
+                                  _format_bound(entry["max_format"], "max_format", ANY_MINOR, doc, ints))
         else:
             raise _Invalid(f'overlay "{directory}" needs "formats" (or "min_format" and "max_format")',
                            offset)
@@ -230,10 +269,6 @@ def _plain_text(component: Any) -> str:
     if isinstance(component, bool):
         return "true" if component else "false"
     return "" if component is None else str(component)
-
-
-def _is_int(value: Any) -> bool:
-    return isinstance(value, int) and not isinstance(value, bool)
 
 
 def _json_type(value: Any) -> str:

@@ -112,3 +112,33 @@ def test_format_newer_than_every_known_release_warns_once_and_runs_as_the_newest
 def test_26_1_pack_runs_as_26_1_2(make_pack):
     loaded = load_packs([make_pack(meta_json={"pack": {"description": "", "min_format": [101, 1], "max_format": [101, 1]}})])
     assert loaded.version == (26, 1, 2) and not loaded.warnings
+
+
+def test_decimal_format_numbers_are_read_whole_with_a_warning(make_pack):
+    # DataFixerUpper JsonOps.getNumberValue accepts any JSON number and Codec.INT keeps
+    # Number.intValue() of it: Gson's LazilyParsedNumber("101.1").intValue() is 101 (BigDecimal
+    # truncation), so the game loads "min_format": 101.1 as [101, 0] where [101, 1] was meant.
+    loaded = _load_meta(make_pack, '{"pack": {"description": "",\n "min_format": 101.1, "max_format": 101.1}}')
+    info = loaded.packs[0]
+    assert (info.supported.min, info.supported.max) == ((101, 0), (101, ANY_MINOR))
+    assert not loaded.errors and loaded.version == (26, 1, 2)
+    first, second = [w for w in loaded.warnings if "pack.mcmeta" in w.message]
+    assert first.message == ('pack.mcmeta: "min_format" 101.1 is read as 101 (the game keeps the whole int part '
+                             'of a number; a minor version is written [major, minor])')
+    assert (first.line, first.col) == (2, 2) and '"max_format" 101.1' in second.message
+
+
+def test_decimal_numbers_in_lists_and_ranges_are_truncated_too(make_pack):
+    info = _load_meta(make_pack, {"pack": {"pack_format": 48.0, "description": "",
+                                           "supported_formats": {"min_inclusive": 48, "max_inclusive": 61.9}}}).packs[0]
+    assert info.pack_format == 48 and (info.supported.min[0], info.supported.max[0]) == (48, 61)
+    info = _load_meta(make_pack, {"pack": {"description": "", "min_format": [94, 1.5], "max_format": 94}}).packs[0]
+    assert info.supported.min == (94, 1)
+
+
+def test_a_boolean_or_string_format_stays_an_error(make_pack):
+    # JsonOps.getNumberValue refuses a string ("Not a number"); a boolean reads as 1 or 0, a format
+    # no release has, and before 1.20.2 GsonHelper.convertToInt refused it outright.
+    for bad in (True, "48", None):
+        loaded = _load_meta(make_pack, {"pack": {"pack_format": bad, "description": ""}})
+        assert len(loaded.errors) == 1, bad
