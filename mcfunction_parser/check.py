@@ -398,21 +398,25 @@ def _check_calls(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) ->
 
 
 def _namespaces(loaded: LoadedPacks) -> set[str]:
-    """The namespaces the loaded packs define functions or function tags in."""
-    ids = [*loaded.functions, *loaded.refused, *loaded.tags, *loaded.failed_tags]
+    """The namespaces the loaded packs define functions, function tags, predicates, loot tables or
+    item modifiers in."""
+    ids = [*loaded.functions, *loaded.refused, *loaded.tags, *loaded.failed_tags, *loaded.predicates,
+           *loaded.loot_tables, *loaded.item_modifiers]
     return {i.split(":", 1)[0] for i in ids}
 
 
-def _reference_problem(loaded: LoadedPacks, problem: str, name: str, defined: set[str], loc: Loc) -> Diagnostic:
-    """A reference to a function or tag that is not loaded. The game loads the function anyway and
-    fails the call when it runs (FunctionArgument.parse reads only the id; Result.create looks it
-    up): an error when the namespace is one the packs define (a typo, most likely), a warning when
-    no loaded pack defines the namespace (a pack expected beside this one: name it with --with)."""
+def _reference_problem(loaded: LoadedPacks, problem: str, name: str, defined: set[str], loc: Loc,
+                       when: str = "the call fails when it runs") -> Diagnostic:
+    """A reference to a function, tag or other file that is not loaded. The game loads the function
+    anyway and looks the id up when the command runs (FunctionArgument.parse reads only the id;
+    Result.create looks it up; a selector's ``predicate=`` is looked up per entity): an error when
+    the namespace is one the packs define (a typo, most likely), a warning when no loaded pack
+    defines the namespace (a pack expected beside this one: name it with --with)."""
     namespace = name.split(":", 1)[0]
     if namespace in defined:
         return _at(loaded, ERROR, problem, loc)
-    return _at(loaded, WARNING, f"{problem}: no loaded pack defines the namespace '{namespace}' (the call "
-               "fails when it runs unless a pack beside this one defines it; name that pack with --with)", loc)
+    return _at(loaded, WARNING, f"{problem}: no loaded pack defines the namespace '{namespace}' ({when} "
+               "unless a pack beside this one defines it; name that pack with --with)", loc)
 
 
 def _is_macro(loaded: LoadedPacks, function_id: str) -> bool:
@@ -475,6 +479,7 @@ def _missing(loaded: LoadedPacks, name: str, is_tag: bool) -> str | None:
 def _check_predicates(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
     """``execute if predicate ID`` and ``@e[predicate=ID]`` need a predicate file (the vanilla
     pack defines none); an inline ``{...}`` predicate (1.20.5+) must be one the game loads."""
+    defined = _namespaces(loaded)
     for name, loc in facts.predicates:
         if name[:1] in "{[":
             try:
@@ -484,17 +489,22 @@ def _check_predicates(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic
             if problem:
                 found.append(_at(loaded, ERROR, f"inline predicate: {problem[0]}", loc))
         elif _RESOURCE_LOCATION.fullmatch(name) and name not in loaded.predicates:
-            found.append(_at(loaded, ERROR, f"unknown predicate {name}", loc))
+            # EntitySelectorOptions "predicate": an unknown id matches no entity; `execute if
+            # predicate` fails (ResourceOrIdArgument.getPredicate)
+            found.append(_reference_problem(loaded, f"unknown predicate {name}", name, defined, loc,
+                                            "it is unknown when it runs"))
 
 
 def _check_resources(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
-    """A loot table or item modifier named in a namespace the loaded packs define must be loaded
-    (the command fails when it runs); the game's own (``minecraft:``) tables are not shipped here."""
-    namespaces = {fid.split(":", 1)[0] for fid in loaded.functions} - {"minecraft"}
+    """A loot table or item modifier must be loaded (the command fails when it runs): an error in a
+    namespace the loaded packs define, a warning in another; the game's own (``minecraft:``) tables
+    come only with --game-jar, so those are not judged."""
+    defined = _namespaces(loaded) - {"minecraft"}
     loaded_ids = {"loot table": loaded.loot_tables, "item modifier": loaded.item_modifiers}
     for kind, name, loc in facts.resources:
-        if name.split(":", 1)[0] in namespaces and name not in loaded_ids[kind]:
-            found.append(_at(loaded, ERROR, f"unknown {kind} {name}", loc))
+        if name not in loaded_ids[kind] and not name.startswith("minecraft:"):
+            found.append(_reference_problem(loaded, f"unknown {kind} {name}", name, defined, loc,
+                                            "the command fails when it runs"))
 
 
 def _check_objectives(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:

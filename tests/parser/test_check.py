@@ -242,6 +242,21 @@ def test_predicates_must_exist_unless_inline(tmp_path):
     assert errors == [(2, "unknown predicate a:unknown"), (3, "unknown predicate a:missing")]
 
 
+def test_a_predicate_of_a_namespace_no_pack_defines_is_a_warning(tmp_path):
+    # EntitySelectorOptions "predicate" looks the id up per entity when the selector runs (an
+    # unknown one matches nothing): the function loads, and the predicate may come from a library
+    root = write(tmp_path / "p", {**LOAD, fn("load"): "execute as @e[predicate=lib:near] run say 1\n"})
+    result = check_packs([root])
+    assert result.of("error") == []
+    [warning] = [w for w in result.of("warning") if "lib:near" in w.message]
+    assert warning.message == ("unknown predicate lib:near: no loaded pack defines the namespace 'lib' (it is "
+                               "unknown when it runs unless a pack beside this one defines it; name that pack "
+                               "with --with)")
+    lib = write(tmp_path / "lib", {"data/lib/predicate/near.json": '{"condition": "minecraft:random_chance", '
+                                                                   '"chance": 0.5}'})
+    assert not [w for w in check_packs([root], with_packs=[lib]).of("warning") if "lib:near" in w.message]
+
+
 def _generic_facts(loaded):
     """What the rules read, found the slow way: every node of every function (check.walk)."""
     calls, predicates, uses, created, returning = [], [], {}, set(), set()

@@ -73,8 +73,14 @@ def test_check_names_loot_tables_and_modifiers_that_are_not_loaded(tmp_path):
                                        "a/function/f.mcfunction": "loot give @a loot a:x\nloot give @a loot a:y\n"
                                        "item modify entity @s weapon a:m\nloot give @a loot minecraft:chests/x\n"
                                        "loot give @a loot other:z\n"})
-    errors = [(e.line, e.message) for e in check_packs([root]).of("error")]
-    assert errors == [(2, "unknown loot table a:y"), (3, "unknown item modifier a:m")]
+    result = check_packs([root])
+    assert [(e.line, e.message) for e in result.of("error")] == [(2, "unknown loot table a:y"),
+                                                                  (3, "unknown item modifier a:m")]
+    # a namespace no loaded pack defines: a pack expected beside this one (the vanilla tables are
+    # judged only with --game-jar)
+    [warning] = [w for w in result.of("warning") if "other:z" in w.message]
+    assert warning.line == 5 and warning.message.startswith(
+        "unknown loot table other:z: no loaded pack defines the namespace 'other' (the command fails")
 
 
 def test_item_ids_and_components_are_checked(tmp_path):
