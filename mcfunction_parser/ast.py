@@ -204,6 +204,17 @@ class GenericCommand(Command):
 
 
 @dataclass(frozen=True, slots=True)
+class UnreadCommand(Command):
+    """A line of a release newer than every command tree dpemu has that its readers refuse: kept,
+    so the function loads as it may in that release, with ``reason`` (why it was not read); running
+    it is not modelled."""
+
+    name: str
+    text: str
+    reason: str
+
+
+@dataclass(frozen=True, slots=True)
 class MacroLine(Command):
     """A ``$`` line; ``template`` is the text after ``$`` with ``$(key)`` placeholders intact."""
 

@@ -5,8 +5,9 @@ import contextlib
 import gc
 import re
 
-from .ast import Command, Function, MacroLine
+from .ast import Command, Function, MacroLine, UnreadCommand
 from .commands import command
+from .commands.tree import newer_than_every_tree, stand_in_note
 from .diagnostics import ERROR, WARNING, Diagnostic, Loc
 from .features import feature_problem
 from .lines import LineError, logical_lines, macro_keys
@@ -126,14 +127,26 @@ def _parse(reader: Reader, diagnostics: list[Diagnostic], physical: list[str] | 
         if reader.pos < reader.end:
             reader.finish()
     except ParseError as error:
-        _report(reader, ERROR, error.message, error.pos, diagnostics, physical, source_line)
-        cmd = None
+        cmd = _unread(reader, error, diagnostics, physical, source_line)
     except RecursionError:
         _report(reader, ERROR, "command is nested too deeply", 0, diagnostics, physical, source_line)
         cmd = None
     for message, pos in reader.warnings:
         _report(reader, WARNING, message, pos, diagnostics, physical, source_line)
     return cmd
+
+
+def _unread(reader: Reader, error: ParseError, diagnostics: list[Diagnostic], physical: list[str] | None,
+            source_line: str | None) -> UnreadCommand | None:
+    """A command the readers refuse: an error, and the line left out (the game refuses to load the
+    function); for a release newer than every command tree here (26.x), whose syntax may have
+    changed, a warning and the line kept as an :class:`UnreadCommand`."""
+    if not newer_than_every_tree(reader.version):
+        _report(reader, ERROR, error.message, error.pos, diagnostics, physical, source_line)
+        return None
+    reason = f"{error.message} ({stand_in_note(reader.version)})"
+    _report(reader, WARNING, reason, error.pos, diagnostics, physical, source_line)
+    return UnreadCommand(reader.start_loc, reader.text.split(" ", 1)[0], reader.text, reason)
 
 
 def _report(reader: Reader, severity: str, message: str, pos: int, diagnostics: list[Diagnostic],

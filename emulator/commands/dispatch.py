@@ -21,8 +21,14 @@ NO_OBSERVABLE_EFFECT = frozenset({
     "debug", "perf", "jfr", "save-all", "save-off", "save-on",
 })
 
+
+def _unread(env, cmd: ast.UnreadCommand, ctx) -> int:
+    env.unmodelled(cmd, f"'{cmd.name}' is not emulated here: the line was not read ({cmd.reason})")
+    return 1
+
+
 HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
-            **items.HANDLERS}
+            **items.HANDLERS, ast.UnreadCommand: _unread}
 # the commands the parser keeps as text, by name
 GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS}
 

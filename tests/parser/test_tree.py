@@ -169,3 +169,16 @@ def test_particle_options_per_release(line, version, message):
         parse_ok(line, version)
     else:
         assert message in parse_err(line, version).message
+
+
+def test_a_line_a_release_after_every_tree_may_accept_is_kept_unread():
+    from mcfunction_parser.parse import parse_function
+    # 26.1 has no tree here and may have changed any syntax (its `time of <clock>`): a warning and an
+    # UnreadCommand, so the function loads as it may in the game; 1.21.11 still refuses the line
+    text = "time of a:clock add 1t\nunknowncmd 1\ntime add 1t\n"
+    function, diags = parse_function(text, "f", "a:f", (26, 1, 0))
+    assert [d.severity for d in diags] == ["warning", "warning"]
+    assert [type(c).__name__ for c in function.commands] == ["UnreadCommand", "UnreadCommand", "Time"]
+    assert function.commands[0].name == "time" and "dpemu has none for 26.1" in function.commands[0].reason
+    function, diags = parse_function(text, "f", "a:f", (1, 21, 11))
+    assert [d.severity for d in diags] == ["error", "error"] and len(function.commands) == 1

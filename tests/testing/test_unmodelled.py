@@ -53,3 +53,21 @@ def test_allow_unmodelled_gives_pass_and_fail_back(tmp_path):
     assert results["demo:weather"].status == "passed"
     assert results["demo:weather_fails"].status == "failed"
     assert results["demo:condition"].status == "failed"  # the command failed as not modelled
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_26x_line_no_reader_knows_loads_and_makes_its_test_inconclusive(tmp_path, backend):
+    # a 26.x pack (format 101: no command tree of its own here) may use syntax that came after
+    # 1.21.11 (`time of <clock>`): the line is a warning, the function still loads, and running it
+    # is not modelled rather than skipped
+    root = write_pack(tmp_path / "pack", {"demo/test/clock.mcfunction": "time of demo:clock add 1t\nsucceed\n",
+                                          "demo/test/plain.mcfunction": "scoreboard objectives add o dummy\n"
+                                                                        "succeed\n"})
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"description": "t", "min_format": 101,
+                                                           "max_format": 101}}))
+    results = {r.id: r for r in run_suite(discover([root]), backend).results}
+    assert results["demo:plain"].status == "passed"
+    clock = results["demo:clock"]
+    assert clock.status == "inconclusive"
+    assert ("'time' is not emulated here: the line was not read (expected time action (add|query|set), got 'of' "
+            "(checked against the 1.21.11 command tree: dpemu has none for 26.1.2))") in clock.message
