@@ -1,4 +1,5 @@
-"""``advancement grant|revoke TARGETS everything|only ADV [CRITERION]|from ADV|until ADV|through ADV``.
+"""``advancement grant|revoke TARGETS everything|only ADV [CRITERION]|from ADV|until ADV|through ADV``,
+and the reward functions earned (:func:`earned_rewards`), which the backends run.
 
 The parser keeps the command as text; it is read here. Sources (decompiled 1.21):
 server/commands/AdvancementCommands.java (perform / performCriterion: the result is the number of
@@ -15,7 +16,7 @@ from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word
 from mcfunction_parser.reader import ParseError, Reader
 
-from .entities import select
+from .entities import entity_context, select
 
 _MODES = ("only", "from", "until", "through")
 
@@ -23,7 +24,6 @@ _MODES = ("only", "from", "until", "through")
 def advancement(env, cmd: ast.GenericCommand, ctx) -> int:
     action, targets, mode, advancement_id, criterion = _read(cmd)
     state = env.state
-    rewards_before = len(state.pending_rewards)
     players = select(state, targets, ctx)
     if any(not p.is_player for p in players):
         raise CommandFailure("argument.player.entities", report=True)
@@ -50,27 +50,31 @@ def advancement(env, cmd: ast.GenericCommand, ctx) -> int:
         what = len(chosen) if first == "many" else f"[{chosen[0]}]"
         who = len(players) if second == "many" else players[0].display_name
         raise CommandFailure(f"commands.advancement.{action}.{first}.to.{second}.failure", what, who)
-    warn_late_rewards(env, cmd, rewards_before)
     return changed
 
 
-def warn_late_rewards(env, cmd, rewards_before: int) -> None:
-    """A reward function earned inside a root runs when that root ends here; the game runs it
-    right after the command (AdvancementRewards.grant: ServerFunctionManager.execute queues it
-    next in the running execution context)."""
-    if len(env.state.pending_rewards) > rewards_before:
-        env.warn(cmd, "an advancement reward function runs when the current function call ends "
-                      "(the game runs it right after this command)")
+def earned_rewards(state, functions) -> list:
+    """The reward functions earned since the last call, in the order earned, each as ``(function id,
+    context)``: the player at its position (AdvancementRewards.grant runs it with the player's
+    CommandSourceStack). When and how they run is the caller's (ServerFunctionManager.execute:
+    inside a running command, queued to run right after that command, one frame deeper; else a
+    root of its own). A function that is not loaded is an error and runs nothing."""
+    earned, state.pending_rewards = state.pending_rewards, []
+    out = []
+    for function, player in earned:
+        if function not in functions:
+            state.error(f"advancement reward function {function} does not exist")
+            continue
+        out.append((function, entity_context(state, player)))
+    return out
 
 
-def broadcast_changes(env, cmd, players) -> None:
+def broadcast_changes(env, players) -> None:
     """ServerPlayer.containerMenu.broadcastChanges after a command changed the players' inventories:
     their changed slots fire inventory_changed now."""
-    before = len(env.state.pending_rewards)
     for player in players:
         if player.is_player:
             advancements.broadcast_changes(env.state, player)
-    warn_late_rewards(env, cmd, before)
 
 
 def _perform(state, action: str, player, advancement_id: str) -> bool:

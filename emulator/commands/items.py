@@ -69,7 +69,7 @@ def give(env, cmd: ast.Give, ctx) -> int:
             left = create(cmd.item, size)
             inventory.add(left)  # GiveCommand drops whatever is left of the stack
             if left.is_empty:  # the whole stack went in: its menu broadcasts the change
-                broadcast_changes(env, cmd, [player])
+                broadcast_changes(env, [player])
             else:
                 x, y, z = player.pos
                 _drop(env, (x, y + float(player.eye_height) - 0.3, z), left, player.dimension,
@@ -91,7 +91,7 @@ def clear(env, cmd: ast.Clear, ctx) -> int:
     total = 0
     for player in players:  # ClearInventoryCommands: each player's menu broadcasts its changes
         total += inventories.player_inventory(player, _version(env)).clear_or_count(test, max_count)
-        broadcast_changes(env, cmd, [player])
+        broadcast_changes(env, [player])
     if total == 0:
         if len(players) == 1:
             raise CommandFailure("clear.failed.single", players[0].display_name)
@@ -155,7 +155,7 @@ def item_replace(env, cmd: ast.ItemReplace, ctx) -> int:
     for entity in entities.found(env.state, cmd.target.target, ctx):
         access = inventories.entity_slot(entity, slot, _version(env))
         accepted += access is not None and access.set(stack.copy())
-        broadcast_changes(env, cmd, [entity])  # ItemCommands: a player's menu broadcasts
+        broadcast_changes(env, [entity])  # ItemCommands: a player's menu broadcasts
     if accepted == 0:
         raise CommandFailure("commands.item.target.no_changed.known_item", _name(stack), slot)
     return accepted
@@ -175,7 +175,7 @@ def item_modify(env, cmd: ast.ItemModify, ctx) -> int:
         access = inventories.entity_slot(entity, slot, _version(env))
         if access is not None:
             accepted += access.set(apply(access.get()))
-        broadcast_changes(env, cmd, [entity])
+        broadcast_changes(env, [entity])
     if accepted == 0:
         raise CommandFailure("commands.item.target.no_changes", slot)
     return accepted
@@ -333,7 +333,7 @@ def _replace(env, cmd: ast.Loot, items: list[ItemStack], ctx) -> int:
         for j, stack in enumerate(fill):
             access = inventories.entity_slot(entity, first + j, _version(env))
             placed += access is not None and access.set(stack.copy())
-        broadcast_changes(env, cmd, [entity])  # LootCommand.entityReplace (loot give waits for the tick)
+        broadcast_changes(env, [entity])  # LootCommand.entityReplace (loot give waits for the tick)
     return placed
 
 

@@ -20,7 +20,6 @@ from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word
 from mcfunction_parser.reader import ParseError, Reader
 
-from .advancements import warn_late_rewards
 from .entities import _executor_required, executor, found, parse_target, single
 
 
@@ -118,13 +117,11 @@ def effect(env, cmd: ast.GenericCommand, ctx) -> int:
     amplifier = _number(cmd, words, 4, int, 0)
     visible = not (len(words) > 5 and words[5] == "true")
     source = executor(env.state, ctx)
-    rewards_before = len(env.state.pending_rewards)
     changed = 0
     for e in found(env.state, _target(cmd, words, 1, target), ctx):
         if living.is_living(e.type) and living.give_effect(env.state, e, effect_id, duration, amplifier, visible):
             advancements.effects_changed(env.state, e, source)
             changed += 1
-    warn_late_rewards(env, cmd, rewards_before)
     if not changed:
         raise CommandFailure("commands.effect.give.failed")
     return changed
@@ -136,13 +133,11 @@ def _clear(env, cmd, words, target, ctx) -> int:
     else:
         entities = [_executor_required(env.state, ctx)]
     effect_id = _resource(words[2]) if len(words) > 2 else None
-    rewards_before = len(env.state.pending_rewards)
     changed = 0
     for e in entities:
         if living.is_living(e.type) and living.clear_effects(e, effect_id):
             advancements.effects_changed(env.state, e, None)
             changed += 1
-    warn_late_rewards(env, cmd, rewards_before)
     if not changed:
         raise CommandFailure("commands.effect.clear.specific.failed" if effect_id else
                              "commands.effect.clear.everything.failed")

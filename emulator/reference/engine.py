@@ -20,6 +20,7 @@ from __future__ import annotations
 
 from collections import Counter
 
+from emulator.commands.advancements import earned_rewards
 from emulator.commands.data import macro_arguments
 from emulator.world.errors import CommandFailure
 from emulator.commands.server import require_function
@@ -161,14 +162,33 @@ class Interpreter:
                 self._fail(failure, source, line)
                 if source.callback is not None:
                     source.callback(False, 0)
-                return
-            if source.callback is not None:
-                source.callback(True, value)
-            if self.tracer is not None:  # the game traces a result only when the command did not throw
-                self.tracer.result(frame.depth, self._command_text(line.loc), value)
+            else:
+                if source.callback is not None:
+                    source.callback(True, value)
+                if self.tracer is not None:  # the game traces a result only when the command did not throw
+                    self.tracer.result(frame.depth, self._command_text(line.loc), value)
+            if self.state.pending_rewards:
+                self._queue_rewards(queue, frame, source.activation)
 
         execute.entry = (source.activation.function, source.activation, line.loc)
         return execute
+
+    def _queue_rewards(self, queue: ExecutionQueue, frame: CallFrame, caller: Activation) -> None:
+        """AdvancementRewards.grant inside a command: ServerFunctionManager.execute queues each reward
+        function earned (ExecutionContext.queueInitialFunctionCall) to run right after the command,
+        in a top frame one deeper than the command's (createTopFrame), as the player, its result
+        going nowhere (CommandResultCallback.EMPTY). Its call is charged on no line, in the
+        caller's stack."""
+        top = CallFrame(frame.depth + 1, None, frame.depth + 1)
+        for function_id, context in earned_rewards(self.state, self.packs.functions):
+            function = self.packs.functions[function_id]
+            try:
+                commands = self.macros.instantiate(function, None)
+            except CommandFailure as failure:  # the game drops a macro reward (FunctionInstantiationException)
+                self.state.error(failure.message, caller.frames(None))
+                continue
+            queue.queue_next(top, self._call_function(function, commands, Source(context, None, caller), None,
+                                                      False, None))
 
     # ------------------------------------------------------------------ custom stages
     def _return_run(self, queue, frame, line, index, sources, forked, activation) -> None:
@@ -306,12 +326,12 @@ class Interpreter:
             self.state.error(failure.message, frames, unmodelled=failure.unmodelled)
 
     def _charge_call(self, queue: ExecutionQueue, function_id: str, caller: Activation | None, call_loc) -> None:
-        """CallFunction's unit: on the caller's line, or, for a root's own call, on no line and in
-        the root's stack."""
+        """CallFunction's unit: on the caller's line, or, for a root's own call and a reward's, on no
+        line and in the stack of the function called (under its caller's, for a reward)."""
         if call_loc is None:
             queue.charge()
             if self.recorder is not None:
-                self.recorder.charge((function_id,))
+                self.recorder.charge((caller.stack() if caller is not None else ()) + (function_id,))
             return
         if self.recorder is not None:
             self.recorder.call(function_id)

@@ -17,9 +17,12 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    (:func:`emulator.world.block_use.tick_menus`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
-   tick_players`), and the rewards earned run, each its own root as the player.
-An advancement reward earned inside a root (``advancement grant``) runs as its own root when that
-root ends (the game runs it right after the command; the command warns of it).
+   tick_players`).
+An advancement reward function earned by a command (``advancement grant``, ``effect give`` ...)
+runs right after that command, inside its root (the backends queue it: AdvancementRewards.grant,
+ServerFunctionManager.execute); one earned outside any command (a step of the tick, a PackTest
+dummy's action) runs at once as a root of its own, as the player (:meth:`Runtime.run_rewards`,
+after each step).
 
 Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs, with its result.
 
@@ -34,7 +37,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult, TickBatches
-from emulator.commands.entities import entity_context
+from emulator.commands.advancements import earned_rewards
 from emulator.world import advancements, block_use, combat, living, nbt_ops, player_actions, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
@@ -44,7 +47,7 @@ from emulator.world.state import WorldState
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"
 
-# steps 5 and 6 before the rewards, in order, each with its test that it would change nothing now
+# steps 5 and 6 in order, each with its test that it would change nothing now
 # (a batch of ticks needs every one idle: a step added here comes with its test)
 def _effects_step(state) -> None:
     """The entities' effects tick (:func:`emulator.world.living.tick_living`, an instant effect's
@@ -99,23 +102,22 @@ class Runtime:
             return self._root_ran(function_id, self.backend.run_root(function_id, context, arguments))
 
     def _root_ran(self, function_id: str, result: RootResult) -> RootResult:
-        """After each root: its listeners, then the rewards it earned."""
+        """After each root: its listeners, then any reward earned in it outside a command."""
         self.max_root_cost = max(self.max_root_cost, result.cost)
         for listener in self.root_listeners:
             listener(function_id, result)
-        self.rewards_cost += self._run_rewards()
+        self.run_rewards()
         return result
 
-    def _run_rewards(self) -> int:
-        """Advancement rewards earned so far, each its own root as the player (AdvancementRewards:
-        the function runs as the player at its position); a missing function is an error."""
+    def run_rewards(self) -> int:
+        """The advancement rewards earned outside any command, each run now as a root of its own
+        (ServerFunctionManager.execute with no execution context running: Commands.
+        executeCommandInContext makes one); returns their cost, also added to ``rewards_cost``."""
         cost = 0
         while self.state.pending_rewards:
-            function, player = self.state.pending_rewards.pop(0)
-            if function not in self.packs.functions:
-                self.state.error(f"advancement reward function {function} does not exist")
-                continue
-            cost += self.run_root(function, entity_context(self.state, player)).cost
+            for function, context in earned_rewards(self.state, self.packs.functions):
+                cost += self.run_root(function, context).cost
+        self.rewards_cost += cost
         return cost
 
     def call(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
@@ -220,7 +222,7 @@ class Runtime:
             state.daytime += 1
         for step, _ in ENTITY_STEPS:
             step(state)
-        self.rewards_cost += self._run_rewards()
+            self.run_rewards()
         cost += self.rewards_cost
         self.commands_per_tick.append(cost)
         state.tick += 1

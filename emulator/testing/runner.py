@@ -397,6 +397,8 @@ def _act(source: TestSource, step: Dummy, ctx: Context) -> None:
         source.emu.state.error(f"{step.loc.path}:{step.loc.line}: {step.command.text}: not modelled: {reason}",
                                unmodelled=True)
         raise _Verdict(FAILED, f"{step.command.text}: not modelled: {reason}", step.loc.line) from None
+    finally:  # a reward the action earned runs right after it, as after any test command
+        source.emu.runtime.run_rewards()
 
 
 def _holds(source: TestSource, step, chat_start: int, ctx: Context | None = None) -> bool:

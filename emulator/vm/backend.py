@@ -19,6 +19,7 @@ from emulator.vm.host import Host, StoreTarget, resolves_target
 from emulator.vm.opcodes import OPERATION_KINDS, TABLE
 from emulator.vm.program import Program
 from emulator.vm.storage_leaves import StorageLeaves
+from emulator.commands.advancements import earned_rewards
 from emulator.commands.data import macro_arguments
 from emulator.world.errors import MESSAGES, CommandFailure
 from emulator.runtime.macros import MacroExpander
@@ -44,6 +45,10 @@ _ERROR_TEXT = {  # the game's messages (emulator.world.errors) of the VM's runti
     vm.ERR_FORK_LIMIT: MESSAGES["command.forkLimit"],
     vm.ERR_READ_ONLY: MESSAGES["arguments.objective.readonly"],
 }
+# what a host command leaves for the rest of its chain (its result, where it goes on, its context
+# and fork state), kept while the reward functions it earned run (NumbaBackend._next_reward)
+_COMMAND_REGISTERS = np.array([vm.R_PC, vm.R_HAS, vm.R_OK, vm.R_VAL, vm.R_ALIVE, vm.R_CTX, vm.R_LOOP, vm.R_NRET,
+                               vm.R_ABORT, vm.R_ACC_ANY, vm.R_ACC_SUM, vm.R_CALLFN])
 _SANITIZER_OPS = {**{k: symbol for symbol, k in OPERATION_KINDS.items()}, vm.SAN_ADD_CMD: "add",
                   vm.SAN_REMOVE_CMD: "remove"}
 
@@ -94,6 +99,8 @@ class NumbaBackend:
         self.fstack = vm.new_fork_stack()  # contexts waiting for the rest of their chain (see emulator.vm.loop)
         self.coll = vm.new_fork_stack()  # contexts kept for their chain's final command
         self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
+        # per host command whose reward functions are running: (its registers, the rewards still to run)
+        self.rewards: list[tuple[np.ndarray, list]] = []
         self.batch = np.zeros(1, dtype=np.int64)  # run_ticks: the tick functions, then each root's cost
 
     def new_world(self, state: WorldState) -> None:
@@ -174,6 +181,7 @@ class NumbaBackend:
         self.contexts = {}
         self.context_ids = {}
         self.store_targets = {}
+        self.rewards = []
         self._context_index(context, ())
         return r
 
@@ -232,6 +240,8 @@ class NumbaBackend:
             elif status == vm.ST_GROWCTX:
                 self._grow_contexts(2 * self.cints.shape[0])
                 self.fstack = _grown(self.fstack)
+            elif status == vm.ST_RESUME:
+                self._next_reward()
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_GROWCOLL:
@@ -269,6 +279,7 @@ class NumbaBackend:
         r[vm.R_PC] = Program.ROOT_PC + 1
         r[vm.R_DEPTH] = 0
         r[vm.R_BSTOP] = 1
+        self.rewards = []
         return True
 
     def _finished_root_frame(self) -> Frame:
@@ -329,6 +340,9 @@ class NumbaBackend:
         if opcode in (vm.OP_HOST, vm.OP_GETFIELD, vm.OP_SETLEAF, vm.OP_GETLEAF):
             result = self.host.run_final(node, ctx)
             r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = int(result.has), int(result.ok), wrap32(result.value)
+            if self.state.pending_rewards:
+                self.rewards.append((r[_COMMAND_REGISTERS].copy(), earned_rewards(self.state, self.packs.functions)))
+                self._next_reward()
         elif opcode == vm.OP_STORELEAF:  # no number there yet: the host's store into storage
             self.host.run_store(node, None, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
         elif opcode == vm.OP_HOSTSTORE:
@@ -342,6 +356,28 @@ class NumbaBackend:
                 self.host.run_store(node, target, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
         else:
             self._stage(node, ctx)
+
+    def _next_reward(self) -> None:
+        """Call the next reward function the host command on top of :attr:`rewards` earned, as the
+        game queues it right after the command (ExecutionContext.queueInitialFunctionCall, one frame
+        deeper): the VM runs the reward stub (CALLREG, charged 1, then RESUME) in the player's
+        context; at RESUME the next one, and after the last the registers the command left (its
+        result for its stores, where it goes on)."""
+        r = self.regs
+        kept, waiting = self.rewards[-1]
+        while waiting:
+            function_id, context = waiting.pop(0)
+            try:
+                fn = self._instance(self.packs.functions[function_id], None)
+            except CommandFailure as failure:  # the game drops a macro reward (FunctionInstantiationException)
+                self.state.error(failure.message, self.traceback(self._current_pc))
+                continue
+            r[vm.R_CTX] = self._context_index(context, ())
+            r[vm.R_ALIVE], r[vm.R_LOOP], r[vm.R_NRET], r[vm.R_CALLFN] = 1, vm.LOOP_NONE, 0, fn
+            r[vm.R_PC] = Program.REWARD_PC
+            return
+        self.rewards.pop()
+        r[_COMMAND_REGISTERS] = kept
 
     def _context_index(self, ctx: Context, bindings: tuple) -> int:
         """Intern a context Python made, with its store bindings (a loop re-running a stage must not

@@ -169,6 +169,8 @@ OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a
 # TYPE S`: fails without an executor) or a STORELEAF
 OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
 # host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there goes to the host
+OP_RESUME = 64  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
+# the registers the command that earned it left
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
 FIRST_LINE, LAST_LINE = 8, 18
@@ -198,7 +200,7 @@ N_REGS = 35
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
 F_WIDTH = 11
 
-ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_GROWCOLL, ST_REPEAT, ST_GROWCTX = range(10)
+ST_DONE, ST_HOST, ST_CUT, ST_GROW, ST_ERROR, ST_FLUSH, ST_MACRO, ST_GROWCOLL, ST_REPEAT, ST_GROWCTX, ST_RESUME = range(11)
 
 # contexts: cints[ctx] = executor's holder id (-1: the server), executor's slot (-1), dimension
 # (Program.dimensions), anchor (ANCHOR_*), store bindings (the backend's binding sets);
@@ -727,7 +729,7 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
     while True:
         ipc = pc
         op = code[pc, 0]
-        if op >= FIRST_OPERATION:  # scoreboard players operation, one opcode per operation
+        if FIRST_OPERATION <= op <= LAST_OPERATION:  # scoreboard players operation, one opcode per operation
             if alive == 0:
                 pc += 1
                 continue
@@ -1572,6 +1574,9 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
                 pc += 1
                 continue
             status = ST_MACRO
+            break
+        elif op == OP_RESUME:  # a reward function called after a host command returned (NumbaBackend._next_reward)
+            status = ST_RESUME
             break
         else:  # the root is done; in a batch of ticks the next root starts here
             status = ST_DONE

@@ -180,6 +180,8 @@ _ROWS = [
                                          "(TYPE)(result * SCALE); no number there goes to the host"),
     *_family("operation", [(f"OPER{symbol}", "hoho", ENTRY, f"a h1, b o1, c h2, d o2. `{symbol}`")
                            for _, symbol in OPERATIONS]),
+    *_single("RESUME", "", FREE, "an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, "
+                                 "Python restores the registers the command that earned it left"),
 ]
 TABLE = tuple(Opcode(code, name, operands, cost, family, doc)
               for code, (family, name, operands, cost, doc) in enumerate(_ROWS))

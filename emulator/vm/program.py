@@ -9,7 +9,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from emulator.vm.loop import OP_CALLREG, OP_HALT, WIDTH
+from emulator.vm.loop import OP_CALLREG, OP_HALT, OP_RESUME, WIDTH
 from emulator.world.dimensions import Levels
 from mcfunction_parser.ast import Command, Subcommand
 from mcfunction_parser.diagnostics import Loc
@@ -49,11 +49,12 @@ class Program:
     _arrays: tuple | None = None
 
     ROOT_PC = 0  # the root stub: CALLREG then HALT
+    REWARD_PC = 2  # the reward stub: CALLREG then RESUME (an advancement reward run after a host command)
 
     def __post_init__(self) -> None:
         if not self.rows:
-            self.emit(OP_CALLREG, loc=None, owner=-1)
-            self.emit(OP_HALT, loc=None, owner=-1)
+            for op in (OP_CALLREG, OP_HALT, OP_CALLREG, OP_RESUME):
+                self.emit(op, loc=None, owner=-1)
 
     # ------------------------------------------------------------------ building
     def emit(self, op: int, *args: int, loc: Loc | None, owner: int) -> int:

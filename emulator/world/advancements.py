@@ -4,7 +4,8 @@ observes, and the rewards a completed advancement earns.
 - Progress and reading it: :mod:`emulator.world.advancement_progress`.
 - ``award(state, player, advancement_id, criterion) -> bool`` / ``revoke(...)``: PlayerAdvancements.
   award/revoke; completing an advancement queues its reward function on ``state.pending_rewards``
-  (``(function id, player)``), which the runtime runs as the player.
+  (``(function id, player)``), which the backend running the command runs right after it, or the
+  runtime at once outside commands (:func:`emulator.commands.advancements.earned_rewards`).
 - ``related(resources, advancement_id, mode)``: the advancements ``only|from|until|through`` name.
 - ``trigger(state, player, trigger, test=None)``: SimpleCriterionTrigger.trigger, the one entry
   for whatever fires a trigger (the actions' ``using_item``, ``consume_item`` ...):
