@@ -30,7 +30,7 @@ def test_disasm_host_ops(tmp_path):
     ops = [line.split(None, 3)[2:] for line in result.output.splitlines() if line.startswith("      |")]
     # host stages carry the forked flag: after `as`, a failing stage drops only its context
     # after a stage that can fork, STAGESDONE collects each context before any runs the command
-    assert ops == [["CMD", "->8"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"], ["STAGESDONE", "->8"],
+    assert ops == [["CMD", "->10"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"], ["STAGESDONE", "->10"],
                    ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
 
 
