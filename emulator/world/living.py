@@ -347,7 +347,9 @@ def effects(entity) -> List:
 
 
 def _effect(entity, effect_id: str) -> Compound | None:
-    return next((e for e in effects(entity) if str(e.get("id", "")) == effect_id), None)
+    """The entity's effect ``effect_id`` (reading it saves no empty ``active_effects``)."""
+    found = entity.data.get("active_effects")
+    return next((e for e in found if str(e.get("id", "")) == effect_id), None) if isinstance(found, List) else None
 
 
 def _longer(a: int, b: int) -> bool:
@@ -391,7 +393,7 @@ def _magic(state, entity, amount: float) -> bool:
     return hurt(state, entity, amount, damage_type="minecraft:magic")
 
 
-def _instant(state, entity, effect_id: str, amplifier: int, harm) -> None:
+def apply_instant(state, entity, effect_id: str, amplifier: int, harm) -> None:
     """HealOrHarmMobEffect.applyInstantenousEffect: heal ``max(4 << amplifier, 0)`` or hurt
     ``6 << amplifier`` (Java int shifts: the distance is taken mod 32 and the result wraps, so
     amplifier 255 heals nothing); the undead take them the other way round."""
@@ -463,7 +465,7 @@ def _tick_effects(state, entity, found: List, harm) -> bool:
     for effect in list(found):
         duration = int(_number(effect.get("duration")))
         if str(effect.get("id", "")) in INSTANT and duration >= 1:
-            _instant(state, entity, str(effect.get("id")), _amplifier(effect), harm)
+            apply_instant(state, entity, str(effect.get("id")), _amplifier(effect), harm)
         if duration == INFINITE:
             continue
         if duration <= 1:

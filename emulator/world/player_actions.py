@@ -7,7 +7,8 @@ each (the item entity, the inventory NBT, statistics, the ``using_item``/``consu
   is empty.
 - ``swap_hands(state, player)``: the main hand and offhand stacks trade places.
 - ``use_item(state, player, hand)``: ServerPlayerGameMode.useItem -> Item.use for the items whose
-  use is modelled (:data:`USES`); returns ``"consume"``, ``"pass"`` or ``"fail"`` (InteractionResult:
+  use is modelled (:data:`USES`, and what emulator.world.consumables says is eaten or drunk: its
+  food, effects and use remainder); returns ``"consume"``, ``"pass"`` or ``"fail"`` (InteractionResult:
   only ``consume`` is an action the client's use stops at). Any other item raises Unmodelled.
 - ``tick_using(state)``: each player using an item (LivingEntity.updatingUsingItem): the
   ``using_item`` trigger every tick, and when its use duration ends the item is consumed.
@@ -18,7 +19,9 @@ world/entity/player/Player.java and LivingEntity.java (createItemStackToDrop, st
 updatingUsingItem, completeUsingItem), world/entity/player/Inventory.java (removeFromSelected),
 server/level/ServerPlayerGameMode.java (useItem), world/item/FoodOnAStickItem.java,
 KnowledgeBookItem.java, Item.java (use), world/item/component/Consumable.java (startConsuming,
-onConsume, consumeTicks), world/food/FoodData.java (eat), world/food/FoodProperties.java.
+onConsume, consumeTicks), world/food/FoodData.java (eat), world/food/FoodProperties.java,
+world/item/ItemStack.java (finishUsingItem, applyAfterUseComponentSideEffects), UseRemainder.java
+(convertIntoRemainder), ServerPlayer.handleExtraItemsCreatedOnUse, consume_effects/*.java.
 """
 from __future__ import annotations
 
@@ -28,17 +31,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from emulator.world import advancements, inventories, mth, predicates, statistics
+from emulator.world import advancements, combat, consumables, inventories, living, mth, predicates, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
-from emulator.world.nbt_ops import is_numeric, numeric_value
-from mcfunction_parser.nbt import Compound, Double, Float, Int, IntArray, List, Short
+from emulator.world.nbt_ops import numeric_value
+from mcfunction_parser.nbt import Compound, Double, Float, Int, IntArray, List, Short, String
 
 F32 = np.float32
 THROWN_PICKUP_DELAY = 40  # Player.createItemStackToDrop: setPickUpDelay(40)
-CONSUMABLE_VERSION = (1, 21, 2)  # the consumable component; before it, the food component made an item edible
-FOOD_VERSION = (1, 20, 5)
-DEFAULT_CONSUME_SECONDS = 1.6  # Consumable / FoodProperties DEFAULT_EAT_SECONDS
 MAIN, OFF = "main_hand", "off_hand"
 
 
@@ -56,15 +56,26 @@ def drop_selected(state, player, whole: bool):
     taken.count = held.count if whole else 1
     held.count -= taken.count
     access.set(held)
-    x, y, z = player.pos
-    entity = inventories.drop_item(state.entities, (x, y + float(player.eye_height) - float(F32(0.3)), z), taken,
-                                   version, state.resources.random, Compound(
-                                       PickupDelay=Short(THROWN_PICKUP_DELAY),
-                                       Thrower=IntArray(Int(v) for v in player.uuid),
-                                       Motion=_throw_motion(player, state.resources.random)), player.dimension)
+    entity = _throw(state, player, taken, thrown_from_hand=True)
     statistics.award(state, player, statistics.stat_name("dropped", taken.id), taken.count)
     statistics.award(state, player, statistics.stat_name("custom", "drop"))
     return entity
+
+
+def drop_from(state, player, stack: ItemStack):
+    """ServerPlayer.drop(stack, false, false): the stack thrown from the eyes, no thrower, no statistic."""
+    return _throw(state, player, stack, thrown_from_hand=False)
+
+
+def _throw(state, player, stack: ItemStack, thrown_from_hand: bool):
+    """LivingEntity.createItemStackToDrop (not randomly): at the eyes less 0.3, pickup delay 40,
+    the player as ``Thrower`` when thrown from the hand."""
+    x, y, z = player.pos
+    extra = Compound(PickupDelay=Short(THROWN_PICKUP_DELAY), Motion=_throw_motion(player, state.resources.random))
+    if thrown_from_hand:
+        extra["Thrower"] = IntArray(Int(v) for v in player.uuid)
+    return inventories.drop_item(state.entities, (x, y + float(player.eye_height) - float(F32(0.3)), z), stack,
+                                 state.version, state.resources.random, extra, player.dimension)
 
 
 def _throw_motion(player, rng) -> List:
@@ -112,7 +123,9 @@ def use_item(state, player, hand: str) -> str:
     stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
     if stack.is_empty:
         return "pass"  # Items.AIR: Item.use passes
-    consumable = _consumable(state, stack)
+    if stack.component("minecraft:use_cooldown") is not None:
+        raise Unmodelled(f"the use cooldown of {stack.id} (ItemCooldowns)")
+    consumable = consumables.consumable(stack, state.version)
     if consumable is not None:
         return _start_consuming(state, player, hand, stack, consumable)
     use = USES.get(stack.id)
@@ -143,40 +156,14 @@ USES = {"minecraft:carrot_on_a_stick": _food_on_a_stick, "minecraft:warped_fungu
         "minecraft:knowledge_book": _knowledge_book}
 
 
-@dataclass(frozen=True)
-class _Consumable:
-    ticks: int
-    food: Compound | None  # nutrition, saturation, can_always_eat
-    effects: object  # on_consume_effects (1.21.2+)
-
-
-def _consumable(state, stack: ItemStack) -> _Consumable | None:
-    """The stack's consumable (1.21.2+) or, from 1.20.5 to 1.21.1, food component, as the game reads
-    them; vanilla foods' own defaults are not known here (they raise Unmodelled in use_item)."""
-    version = tuple(state.version)
-    food = stack.component("minecraft:food")
-    food = food if isinstance(food, Compound) else None
-    if version >= CONSUMABLE_VERSION:
-        found = stack.component("minecraft:consumable")
-        if not isinstance(found, Compound):
-            return None
-        return _Consumable(_ticks(found.get("consume_seconds")), food, found.get("on_consume_effects"))
-    if version >= FOOD_VERSION and food is not None:
-        return _Consumable(_ticks(food.get("eat_seconds")), food, food.get("effects"))
-    return None
-
-
-def _ticks(seconds) -> int:
-    """Consumable.consumeTicks: (int) (seconds * 20)."""
-    value = float(numeric_value(seconds)) if is_numeric(seconds) else DEFAULT_CONSUME_SECONDS
-    return int(F32(value) * F32(20.0))
-
-
-def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: _Consumable) -> str:
+def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: consumables.Consumable) -> str:
     """Consumable.startConsuming: a food the player cannot eat fails; a duration starts using the
     item, none consumes it at once."""
     if consumable.food is not None and not _can_eat(player, consumable.food):
         return "fail"
+    unmodelled = [e for e in consumable.effects if _effect_type(e) not in _CONSUME_EFFECTS]
+    if unmodelled:  # known when the use starts, so the dummy's command is what the test reports
+        raise Unmodelled(f"the {_effect_type(unmodelled[0])} consume effect of {stack.id}")
     if consumable.ticks > 0:
         _USING[player] = _Using(hand, stack.id, consumable.ticks)
         return "consume"
@@ -184,10 +171,9 @@ def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: _Co
     return "consume"
 
 
-def _can_eat(player, food: Compound) -> bool:
+def _can_eat(player, food: consumables.Food) -> bool:
     """Player.canEat: invulnerable (creative), food that can always be eaten, or hunger below 20."""
-    always = food.get("can_always_eat")
-    return (player.gamemode == "creative" or (is_numeric(always) and bool(numeric_value(always)))
+    return (player.gamemode == "creative" or food.can_always_eat
             or int(numeric_value(player.data.get("foodLevel", Int(20)))) < 20)
 
 
@@ -212,34 +198,93 @@ def tick_using(state) -> None:
         using.remaining -= 1
         if using.remaining == 0:
             del _USING[player]
-            consumable = _consumable(state, stack)
+            consumable = consumables.consumable(stack, state.version)
             if consumable is not None:
                 _finish(state, player, using.hand, consumable)
 
 
-def _finish(state, player, hand: str, consumable: _Consumable) -> None:
-    """Consumable.onConsume: ``minecraft.used:<item>`` and ``consume_item`` with the stack before it
-    shrinks, the food eaten, then one item consumed (not in creative)."""
-    stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
-    if consumable.effects:
-        raise Unmodelled(f"the consume effects of {stack.id}")
+def _finish(state, player, hand: str, consumable: consumables.Consumable) -> None:
+    """ItemStack.finishUsingItem -> Consumable.onConsume: ``minecraft.used:<item>`` and
+    ``consume_item`` with the stack before it shrinks, the listeners (the food eaten, a potion's or
+    stew's effects), the consume effects, one item consumed (not in creative), then the use
+    remainder (UseRemainder.convertIntoRemainder: the emptied hand holds it, else it goes to the
+    inventory or is dropped)."""
+    access = inventories.entity_slot(player, hand_slot(hand), state.version)
+    stack = access.get()
     statistics.award(state, player, statistics.stat_name("used", stack.id))
     advancements.trigger(state, player, "consume_item", _item_test(state, stack))
     if consumable.food is not None:
         _eat(player, consumable.food)
-    if stack.component("minecraft:use_remainder") is not None:
-        raise Unmodelled(f"the use remainder of {stack.id}")
+    _give_effects(state, player, consumable.gives)
+    _give_effects(state, player, consumable.effects_to_apply(state.resources.random))
+    for effect in consumable.effects:
+        _CONSUME_EFFECTS[_effect_type(effect)](state, player, effect)
+    if player.gamemode == "creative":
+        return  # hasInfiniteMaterials: nothing shrinks, no remainder
+    before = stack.count
     _consume_one(state, player, hand)
+    if consumable.remainder is not None and before > 0:
+        _give_remainder(state, player, access, consumable.remainder.copy())
 
 
-def _eat(player, food: Compound) -> None:
+def _effect_type(effect) -> str:
+    return str(effect.get("type", "")).removeprefix("minecraft:") if isinstance(effect, Compound) else ""
+
+
+def _give_effects(state, player, effects) -> None:
+    """LivingEntity.addEffect for each (PotionContents.applyToLivingEntity: an instantaneous effect
+    acts at once instead, a harm as indirect magic from the player)."""
+    for effect_id, duration, amplifier in effects:
+        if effect_id in living.INSTANT:
+            living.apply_instant(state, player, effect_id, amplifier, _self_harm(player))
+        elif living.give_effect(state, player, effect_id, duration, amplifier, effect_id != "minecraft:bad_omen"):
+            advancements.effects_changed(state, player, None)
+
+
+def _self_harm(player):
+    def harm(state, entity, amount: float) -> bool:
+        return combat.hurt(state, entity, amount, combat.DamageSource("minecraft:indirect_magic", player, player))
+    return harm
+
+
+def _remove_effects(state, player, effect) -> None:
+    """RemoveStatusEffectsConsumeEffect: the listed effects (an id, a list or a #tag)."""
+    listed = effect.get("effects")
+    ids = [str(listed)] if isinstance(listed, String) else [str(e) for e in (listed or ())]
+    if any(i.startswith("#") for i in ids):
+        raise Unmodelled("a remove_effects consume effect naming an effect tag")
+    if any([living.clear_effects(player, i) for i in ids]):
+        advancements.effects_changed(state, player, None)
+
+
+def _clear_all_effects(state, player, effect) -> None:
+    """ClearAllStatusEffectsConsumeEffect: LivingEntity.removeAllEffects."""
+    if living.clear_effects(player):
+        advancements.effects_changed(state, player, None)
+
+
+# the consume effects carried out after the listeners (apply_effects: effects_to_apply; play_sound:
+# nothing a pack observes)
+_CONSUME_EFFECTS = {"apply_effects": lambda state, player, effect: None,
+                    "remove_effects": _remove_effects, "clear_all_effects": _clear_all_effects,
+                    "play_sound": lambda state, player, effect: None}
+
+
+def _give_remainder(state, player, access, remainder: ItemStack) -> None:
+    """UseRemainder.convertIntoRemainder; ServerPlayer.handleExtraItemsCreatedOnUse."""
+    if access.get().is_empty:
+        access.set(remainder)
+        return
+    if not inventories.player_inventory(player, state.version).add(remainder) or not remainder.is_empty:
+        drop_from(state, player, remainder)
+
+
+def _eat(player, food: consumables.Food) -> None:
     """FoodData.eat(nutrition, saturation): food level clamped to 0..20, saturation to 0..food level."""
-    nutrition = int(numeric_value(food.get("nutrition", Int(0))))
-    saturation = F32(numeric_value(food.get("saturation", Float(0.0))))
-    level = min(max(nutrition + int(numeric_value(player.data.get("foodLevel", Int(20)))), 0), 20)
+    level = min(max(food.nutrition + int(numeric_value(player.data.get("foodLevel", Int(20)))), 0), 20)
     current = F32(numeric_value(player.data.get("foodSaturationLevel", Float(5.0))))
     player.data["foodLevel"] = Int(level)
-    player.data["foodSaturationLevel"] = Float(float(min(max(saturation + current, F32(0.0)), F32(level))))
+    player.data["foodSaturationLevel"] = Float(float(min(max(food.saturation + current, F32(0.0)), F32(level))))
 
 
 def _consume_one(state, player, hand: str) -> None:
