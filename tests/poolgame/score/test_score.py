@@ -13,12 +13,7 @@ from poolgame.score.run import score_case
 from poolgame.shot import DEFAULT_PACK
 
 PACK = str(DEFAULT_PACK)
-KNOWN_DEFECTS = {
-    "object_direction": "a sliding ball's acceleration is kept to 1 um/tick^2 per component (pool.ax/az, mu_s g times "
-                        "the slip's unit vector, rounded), up to 1e-4 rad off the slip: a stun shot's path bends 4 um "
-                        "sideways in 4.5 ticks, and at an 89 deg cut (1 um sideways turns the normal 0.057 deg) the "
-                        "object ball leaves 0.23 deg off",
-}
+KNOWN_DEFECTS: dict = {}
 
 
 @pytest.fixture(scope="module")

@@ -11,6 +11,7 @@
 #   unit vectors    x 10000 (a rolling ball's direction x 100000)
 #   rolling speed   0.01 um/tick; rolling distance 0.01 um
 #   time in a tick  1/10000 tick
+#   sliding         acceleration 0.001 um/tick^2; its fine state in 1/2000 um and um/tick
 #   angles          1/100 degree (centidegrees)
 # Ball states (pool.state): 0 at rest, 1 sliding, 2 rolling, 3 pocketed.
 
@@ -24,12 +25,20 @@ scoreboard objectives add pool.vz dummy
 scoreboard objectives add pool.wx dummy
 scoreboard objectives add pool.wz dummy
 scoreboard objectives add pool.wy dummy
-# sliding phase: acceleration (um/tick^2), remaining slide time (1/10000 tick), rolling velocity at its end
+# sliding phase: acceleration (0.001 um/tick^2), remaining slide time (1/10000 tick), rolling
+# velocity at its end (um/tick); the fine state the slide runs on: the position's part below a um
+# (1/2000 um), velocity and spin (1/2000 um/tick)
 scoreboard objectives add pool.ax dummy
 scoreboard objectives add pool.az dummy
 scoreboard objectives add pool.tau dummy
 scoreboard objectives add pool.rx dummy
 scoreboard objectives add pool.rz dummy
+scoreboard objectives add pool.px dummy
+scoreboard objectives add pool.pz dummy
+scoreboard objectives add pool.fvx dummy
+scoreboard objectives add pool.fvz dummy
+scoreboard objectives add pool.fwx dummy
+scoreboard objectives add pool.fwz dummy
 # rolling phase: start position (um), direction (x 100000), speed (0.01 um/tick), distance (0.01 um)
 scoreboard objectives add pool.x0 dummy
 scoreboard objectives add pool.z0 dummy
@@ -50,6 +59,12 @@ scoreboard objectives add pool.bs dummy
 scoreboard objectives add pool.bspd dummy
 scoreboard objectives add pool.bstate dummy
 scoreboard objectives add pool.bt dummy
+scoreboard objectives add pool.bpx dummy
+scoreboard objectives add pool.bpz dummy
+scoreboard objectives add pool.bfvx dummy
+scoreboard objectives add pool.bfvz dummy
+scoreboard objectives add pool.bfwx dummy
+scoreboard objectives add pool.bfwz dummy
 # the ball's chord in this tick: from (cx, cz) at time ct (1/10000 tick) to (x, z) at the tick's end
 scoreboard objectives add pool.cx dummy
 scoreboard objectives add pool.cz dummy

@@ -22,6 +22,12 @@ scoreboard objectives remove pool.az
 scoreboard objectives remove pool.tau
 scoreboard objectives remove pool.rx
 scoreboard objectives remove pool.rz
+scoreboard objectives remove pool.px
+scoreboard objectives remove pool.pz
+scoreboard objectives remove pool.fvx
+scoreboard objectives remove pool.fvz
+scoreboard objectives remove pool.fwx
+scoreboard objectives remove pool.fwz
 scoreboard objectives remove pool.x0
 scoreboard objectives remove pool.z0
 scoreboard objectives remove pool.dx
@@ -40,6 +46,12 @@ scoreboard objectives remove pool.bs
 scoreboard objectives remove pool.bspd
 scoreboard objectives remove pool.bstate
 scoreboard objectives remove pool.bt
+scoreboard objectives remove pool.bpx
+scoreboard objectives remove pool.bpz
+scoreboard objectives remove pool.bfvx
+scoreboard objectives remove pool.bfvz
+scoreboard objectives remove pool.bfwx
+scoreboard objectives remove pool.bfwz
 scoreboard objectives remove pool.cx
 scoreboard objectives remove pool.cz
 scoreboard objectives remove pool.ct

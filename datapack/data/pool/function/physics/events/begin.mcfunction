@@ -9,5 +9,5 @@ scoreboard players set #ball_ball.nohit.t pool.tmp -1
 scoreboard players set #events.same pool.tmp 0
 execute as @e[tag=pool.ball,tag=!pool.settled,scores={pool.state=0..2}] run function pool:physics/events/save
 tag @e[tag=pool.ball,tag=!pool.settled,scores={pool.state=0..2}] add pool.dirty
-# 16 balls saved: 15 commands each
-scoreboard players add #cost.work pool.tmp 250
+# 16 balls saved: 15 commands each, 23 sliding
+scoreboard players add #cost.work pool.tmp 380

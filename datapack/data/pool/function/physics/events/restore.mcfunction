@@ -1,6 +1,6 @@
 # pool:physics/events/restore — copy the saved objectives (pool.b*) back into @s's state.
 # Reads: @s pool.bx pool.bz pool.bvx pool.bvz pool.bwx pool.bwz pool.bwy pool.btau pool.bs pool.bspd
-# pool.bstate. Writes: @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.wy pool.tau pool.s
+# pool.bstate (a sliding ball's fine state too: pool:physics/events/restore/slide). Writes: @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.wy pool.tau pool.s
 # pool.spd pool.state.
 scoreboard players operation @s pool.x = @s pool.bx
 scoreboard players operation @s pool.z = @s pool.bz
@@ -13,3 +13,4 @@ scoreboard players operation @s pool.tau = @s pool.btau
 scoreboard players operation @s pool.s = @s pool.bs
 scoreboard players operation @s pool.spd = @s pool.bspd
 scoreboard players operation @s pool.state = @s pool.bstate
+execute if score @s pool.state matches 1 run function pool:physics/events/restore/slide

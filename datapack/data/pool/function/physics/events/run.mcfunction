@@ -6,11 +6,11 @@
 # pool.tmp, $carry pool.game, the event's balls; tags pool.event pool.event_b, pool.settled (removed
 # from the event's balls).
 execute if score #events.kind pool.tmp matches 1 as @e[tag=pool.ball] if score @s pool.id = #events.partner pool.tmp run tag @s add pool.event_b
-# the resolution and restarts about 900 commands (1400 with a ball-ball contact's move in time and
+# the resolution and restarts about 1020 commands (1640 with a ball-ball contact's move in time and
 # first Newton step: pool:physics/resolve/ball_ball/touch/step charges each further one), plus each
 # ball's rewind from its saved time
-scoreboard players set #cost.next pool.tmp 900
-execute if score #events.kind pool.tmp matches 1 run scoreboard players set #cost.next pool.tmp 1400
+scoreboard players set #cost.next pool.tmp 1020
+execute if score #events.kind pool.tmp matches 1 run scoreboard players set #cost.next pool.tmp 1640
 execute as @e[tag=pool.event] run function pool:physics/events/cost/rewind
 # a cushion rewinds its ball once more, to where its path crosses the rail line (pool:physics/resolve/cushion/cross)
 execute if score #events.kind pool.tmp matches 2 as @e[tag=pool.event] run function pool:physics/events/cost/rewind

@@ -1,7 +1,8 @@
 # pool:physics/events/save — copy @s's changing state into the saved objectives (pool.b*), at time
 # #events.now.
 # Reads: #events.now pool.tmp, @s pool.x pool.z pool.vx pool.vz pool.wx pool.wz pool.wy pool.tau
-# pool.s pool.spd pool.state. Writes: @s pool.bx ... pool.bstate, pool.bt (the time).
+# pool.s pool.spd pool.state (a sliding ball's fine state too: pool:physics/events/save/slide).
+# Writes: @s pool.bx ... pool.bstate, pool.bt (the time).
 # The phase constants (ax az rx rz dx dz x0 z0) change only when a phase starts, which
 # pool:physics/motion/advance redoes identically after a restore; a rolling phase past 10 m moves
 # its start up to the ball first (pool:physics/motion/roll/rebase: pool.s must stay below 2^31).
@@ -18,3 +19,4 @@ scoreboard players operation @s pool.bs = @s pool.s
 scoreboard players operation @s pool.bspd = @s pool.spd
 scoreboard players operation @s pool.bstate = @s pool.state
 scoreboard players operation @s pool.bt = #events.now pool.tmp
+execute if score @s pool.state matches 1 run function pool:physics/events/save/slide

@@ -10,6 +10,11 @@ scoreboard players operation #cushion.d pool.tmp = @s pool.az
 scoreboard players operation #cushion.d pool.tmp *= #cushion.nz pool.tmp
 scoreboard players operation #cushion.ao pool.tmp += #cushion.d pool.tmp
 scoreboard players operation #cushion.ao pool.tmp *= #-1 pool.const
+# in um/tick^2 (pool.ax pool.az are in 0.001 um/tick^2)
+scoreboard players operation $a pool.math = #cushion.ao pool.tmp
+scoreboard players operation $b pool.math = #1000 pool.const
+function pool:math/div_round
+scoreboard players operation #cushion.ao pool.tmp = $out pool.math
 # f(dt0) in um: ao g / 20000 with g = dt0^2 / 10000
 scoreboard players operation #cushion.g pool.tmp = #cushion.dt pool.tmp
 scoreboard players operation #cushion.g pool.tmp *= #cushion.dt pool.tmp

@@ -23,12 +23,14 @@ scoreboard players operation #separate.sz pool.tmp /= #4 pool.const
 scoreboard players operation #separate.sz pool.tmp *= #separate.sz pool.tmp
 scoreboard players operation #separate.g pool.tmp += #separate.sz pool.tmp
 execute if score #separate.g pool.tmp >= #separate.far pool.tmp run return 0
-function pool:math/normalize
+# the distance exactly (pool:math/gap: len = 2R + 1 + gap; pool:math/normalize's length can be 2 um
+# off, which left pairs overlapping)
+function pool:math/gap
+execute if score $out pool.math matches 2001 run return 0
 # #separate.g = half the shortfall, rounded up: (2R + 10 - len + 1) / 2, when 2R + 11 - len >
 # #separate.act
-scoreboard players operation #separate.g pool.tmp = $2R pool.const
-scoreboard players add #separate.g pool.tmp 11
-scoreboard players operation #separate.g pool.tmp -= $len pool.math
+scoreboard players set #separate.g pool.tmp 10
+scoreboard players operation #separate.g pool.tmp -= $out pool.math
 execute if score #separate.g pool.tmp <= #separate.act pool.tmp run return 0
 scoreboard players operation #separate.g pool.tmp /= #2 pool.const
 scoreboard players operation $a pool.math = #separate.g pool.tmp
