@@ -7,7 +7,7 @@ ExecuteCommand.java (checkRegions).
 """
 from __future__ import annotations
 
-from emulator.world.blocks import BlockSpec, block_pos, parse_block
+from emulator.world.blocks import BlockSpec, block_pos, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
 from mcfunction_parser.reader import ParseError, Reader
@@ -54,7 +54,7 @@ def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
 def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     """``setblock POS BLOCK [MODE]`` / ``fill FROM TO BLOCK [MODE]`` (``replace FILTER`` too)."""
     corners, words = _read(cmd)
-    spec, mode = block_argument(words[0]), (words[1] if len(words) > 1 else "replace")
+    spec, mode = with_defaults(block_argument(words[0]), env.state.version), (words[1] if len(words) > 1 else "replace")
     source = world_source(env.state, ctx)
     positions = [block_pos(source, corner) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)

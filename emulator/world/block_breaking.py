@@ -20,7 +20,7 @@ from __future__ import annotations
 import numpy as np
 
 from emulator.world import inventories, loot, statistics
-from emulator.world.blocks import BlockState, parse_block
+from emulator.world.blocks import BlockState, parse_block, with_defaults
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.loot_context import LootContext
@@ -114,7 +114,7 @@ def _drops(state, player, pos, block: BlockState, held) -> list:
 def _remove(state, pos, block: BlockState) -> None:
     """Level.removeBlock: air, or water where the block was waterlogged."""
     water = dict(block.properties).get("waterlogged") == "true"
-    state.blocks.setblock(pos, parse_block("minecraft:water" if water else "minecraft:air"))
+    state.blocks.setblock(pos, with_defaults(parse_block("minecraft:water" if water else "minecraft:air"), state.version))
 
 
 def _exhaust(player, amount) -> None:

@@ -1,12 +1,17 @@
 """A block map for ``setblock``, ``fill``, ``execute if block(s)`` and ``data ... block``.
 
-Blocks are stored as ``BlockState(id, properties)`` (properties as written, sorted by name) plus an
-optional block entity compound; every position not set is ``minecraft:air``. There is no block
-registry here, so a state only has the properties that were written (no defaults filled in).
+Blocks are stored as ``BlockState(id, properties)`` (properties sorted by name) plus an optional
+block entity compound; every position not set is ``minecraft:air``. A block placed by id gets its
+default state with the written properties set over it (:func:`with_defaults`, from the release's
+registries: ``mcfunction_parser.gamedata.default_state``); a block the registries do not know keeps
+only the properties written.
 
 Public API
 - ``parse_block(text)``: ``id[props]{nbt}`` (an ``#tag`` too, for predicates) into
   ``BlockSpec(id, is_tag, properties, nbt)``; ``BlockSpec.state`` gives the ``BlockState``.
+- ``with_defaults(spec, version)``: the spec a placement places (the block's default state under
+  the written properties); ``knows_states(block_id, version)``: whether a state's properties are
+  the block's whole set in that release.
 - ``block_pos(source, vec3)``: ``BlockPosArgument``: the position resolved like an entity
   position but without centring, then floored.
 - ``BlockMap``: ``get(pos)``, ``entity(pos)`` (block entity compound or None),
@@ -18,15 +23,20 @@ Failures raise ``CommandFailure`` with the game's messages.
 
 Sources (decompiled 1.21): server/commands/SetBlockCommand.java, FillCommand.java,
 ExecuteCommand.java (checkRegions), commands/arguments/blocks/BlockPredicateArgument.java,
-commands/arguments/blocks/BlockInput.java, server/commands/data/BlockDataAccessor.java.
+commands/arguments/blocks/BlockStateParser.java (a block id starts from Block.defaultBlockState,
+each written property set over it), commands/arguments/blocks/BlockInput.java,
+nbt/NbtUtils.java (readBlockState: a structure palette's state likewise),
+server/commands/data/BlockDataAccessor.java.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 from dataclasses import dataclass
 from typing import Callable
 
+from mcfunction_parser import gamedata
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound, Int, String
 from mcfunction_parser.reader import ParseError, Reader
@@ -106,6 +116,26 @@ def parse_block(text: str) -> BlockSpec:
     if pos != len(text):
         raise ValueError(f"unexpected text after block: {text[pos:]!r}")
     return BlockSpec(block_id, is_tag, tuple(sorted(properties.items())), nbt)
+
+
+def with_defaults(spec: BlockSpec, version) -> BlockSpec:
+    """The spec placed for ``spec`` in release ``version``: the block's default state with the
+    written properties set over it (BlockStateParser, NbtUtils.readBlockState); a tag, or a block
+    the registries do not know, as written."""
+    if spec.is_tag or not spec.id.startswith("minecraft:"):
+        return spec
+    default = gamedata.default_state(spec.id, version)
+    if not default:
+        return spec
+    return dataclasses.replace(spec, properties=tuple(sorted({**default, **dict(spec.properties)}.items())))
+
+
+def knows_states(block_id: str, version) -> bool:
+    """Whether a placed ``block_id``'s properties are all it has in ``version``: the block is in
+    that very release's registries (a later release read with older registries may have added
+    properties)."""
+    release, exact = gamedata.registry_release(version)
+    return exact and block_id.startswith("minecraft:") and gamedata.default_state(block_id, release) is not None
 
 
 def block_pos(source: Source, vec) -> tuple[int, int, int]:

@@ -46,6 +46,7 @@ from typing import Callable
 import numpy as np
 
 from emulator.world import advancement_progress, entity_predicate_format, inventories, living, sight
+from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack, enchantment_level, sub_predicate, value_equal
@@ -146,7 +147,7 @@ def _block_state_property(c: dict, ctx: LootContext) -> bool:
     state = ctx.block_state
     if state is None or state.id != _id(c["block"]):
         return False
-    return _state_matches(c.get("properties"), dict(state.properties), state.id)
+    return _state_matches(c.get("properties"), dict(state.properties), state.id, knows_states(state.id, ctx.version))
 
 
 def _match_tool(c: dict, ctx: LootContext) -> bool:
@@ -494,19 +495,23 @@ def block_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         wanted = "#" + predicate["tag"]
     if wanted is not None and not _holder_set(wanted, "block", state.id, ctx):
         return False
-    if "state" in predicate and not _state_matches(predicate["state"], dict(state.properties), state.id):
+    if "state" in predicate and not _state_matches(predicate["state"], dict(state.properties), state.id,
+                                                   knows_states(state.id, ctx.version)):
         return False
     if "nbt" in predicate:
         return compare_nbt(snbt_or_tag(predicate["nbt"]), blocks.block_nbt(pos, quiet=True))
     return True
 
 
-def _state_matches(wanted: dict | None, properties: dict[str, str], block_id: str) -> bool:
-    """StatePropertiesPredicate: each property equal to a value, or within ``{min, max}``. A property
-    the placed state does not list is a default the emulator does not know."""
+def _state_matches(wanted: dict | None, properties: dict[str, str], block_id: str, complete: bool) -> bool:
+    """StatePropertiesPredicate: each property equal to a value, or within ``{min, max}``; a property
+    the state does not have fails (PropertyMatcher.match: no such property). ``complete``: the
+    properties are the state's whole set, else a property not listed is one the emulator does not know."""
     for name, value in (wanted or {}).items():
         if name not in properties:
-            raise Unmodelled(f"the default value of {block_id}'s '{name}' state (block states as placed only)")
+            if complete:
+                return False
+            raise Unmodelled(f"the '{name}' state of {block_id} (not in the registries of this release)")
         actual = properties[name]
         if isinstance(value, dict):
             if not _property_in_range(actual, value):
@@ -549,6 +554,6 @@ def _fluid_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         wanted = "#" + predicate["tag"]
     if wanted is not None and not _holder_set(wanted, "fluid", fluid, ctx):
         return False
-    return "state" not in predicate or _state_matches(predicate["state"], fluid_props, fluid)
+    return "state" not in predicate or _state_matches(predicate["state"], fluid_props, fluid, True)
 
 

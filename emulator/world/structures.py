@@ -19,7 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from emulator.world.blocks import BlockSpec
+from emulator.world.blocks import BlockSpec, with_defaults
 from emulator.world.errors import CommandFailure
 from emulator.world.nbt_binary import NbtFormatError, read_nbt
 from mcfunction_parser.nbt import Compound, Double, Int, List, String
@@ -125,7 +125,7 @@ def place(state, template: Template, origin: tuple[int, int, int]) -> None:
     ox, oy, oz = origin
     for (x, y, z), spec in template.blocks:
         try:
-            state.blocks.setblock((ox + x, oy + y, oz + z), spec)
+            state.blocks.setblock((ox + x, oy + y, oz + z), with_defaults(spec, state.version))
         except CommandFailure:
             pass  # the same block is there already
     for (x, y, z), nbt in template.entities:

@@ -7,6 +7,7 @@
                                       ``"mob_effect"``, ``"worldgen/biome"``, ``"attribute"``)
     registry_release(version)      -> (release of that data, exact: is it this very release)
     block_states(block, version)   -> {property: (values...)} of a block id, None if unknown
+    default_state(block, version)  -> {property: value} of the block's default state, None if unknown
 
 The game's registry *tags* are :mod:`.vanilla_tags` (read from the user's game jar).
 
@@ -152,6 +153,8 @@ def _registries(version: Version) -> dict:
            for key, value in user.items()}
     blocks = _user_report(release, "blocks.json") or {}
     out["block"] = {k.removeprefix("minecraft:"): value.get("properties", {}) for k, value in blocks.items()}
+    out["block_default"] = {k.removeprefix("minecraft:"): state.get("properties", {})
+                            for k, value in blocks.items() for state in value.get("states", ()) if state.get("default")}
     return out
 
 
@@ -166,3 +169,13 @@ def block_states(block: str, version: Version) -> dict[str, tuple[str, ...]] | N
     """``{property: values}`` of ``block`` (with or without ``minecraft:``), None for an unknown block."""
     states = _registries(version).get("block", {}).get(block.removeprefix("minecraft:"))
     return None if states is None else {key: tuple(values) for key, values in states.items()}
+
+
+def default_state(block: str, version: Version) -> dict[str, str] | None:
+    """``{property: value}`` of ``block``'s default state (Block.defaultBlockState: what a block id
+    written without states places), ``{}`` for a block without properties, None for an unknown block."""
+    name = block.removeprefix("minecraft:")
+    registries = _registries(version)
+    if name not in registries.get("block", {}):
+        return None
+    return dict(registries.get("block_default", {}).get(name, {}))

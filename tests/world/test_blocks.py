@@ -12,9 +12,10 @@ from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import String
 from emulator.world import nbt_ops
-from emulator.world.blocks import BlockMap, BlockState, block_pos, parse_block
+from emulator.world.blocks import BlockMap, BlockState, block_pos, parse_block, with_defaults
 from emulator.world.errors import CommandFailure
 from emulator.world.source import Source
+from tests.world.world_emulator import emulator
 from tests.world.world_paths import path
 
 LOC = Loc("t.mcfunction", 1, 1)
@@ -97,3 +98,40 @@ def test_block_positions_floor_without_centring():
     src = Source(pos=(0.5, 64.9, -0.5))
     vec = ast.Vec3(ast.Coord("rel", 0.0), ast.Coord("rel", 0.0), ast.Coord("abs", 3.0, True), LOC)
     assert block_pos(src, vec) == (0, 64, 3)
+
+
+# ---------------------------------------------------------------------- default states
+@pytest.mark.parametrize("version", [(1, 13, 0), (1, 16, 5), (1, 20, 5), (1, 21, 4)])
+def test_a_block_id_places_its_default_state_with_the_written_properties_over_it(version):
+    # BlockStateParser.parse: the block's defaultBlockState, then each written property set on it
+    stairs = with_defaults(parse_block("oak_stairs[half=top]"), version)
+    assert dict(stairs.properties) == {"facing": "north", "half": "top", "shape": "straight", "waterlogged": "false"}
+    assert dict(with_defaults(parse_block("lever"), version).properties) == {
+        "face": "wall", "facing": "north", "powered": "false"}
+    assert with_defaults(parse_block("stone"), version).properties == ()
+    unknown = parse_block("minecraft:no_such_block[a=b]")
+    assert with_defaults(unknown, version) == unknown  # not in the registries: as written
+    assert with_defaults(parse_block("#minecraft:stairs"), version).properties == ()
+
+
+def test_the_default_state_follows_the_release():
+    # leaves took a waterlogged property in 1.19 (LeavesBlock.WATERLOGGED)
+    assert "waterlogged" not in dict(with_defaults(parse_block("oak_leaves"), (1, 18, 2)).properties)
+    assert dict(with_defaults(parse_block("oak_leaves"), (1, 19, 4)).properties) == {
+        "distance": "7", "persistent": "false", "waterlogged": "false"}
+
+
+def test_setblock_and_if_block_see_the_default_state(tmp_path):
+    # SetBlockCommand places BlockInput's state (the default one for a bare id): `if block` with a
+    # default property holds, and placing the same state again changes nothing ("Could not set")
+    emu = emulator(tmp_path, "python", {
+        "t:place": "setblock 0 1 0 minecraft:oak_stairs\n"
+                   "execute store success score #north o if block 0 1 0 oak_stairs[facing=north,half=bottom]\n"
+                   "execute store success score #again o run setblock 0 1 0 oak_stairs[shape=straight]\n"
+                   "fill 1 1 0 2 1 0 minecraft:lever\n"
+                   "execute store success score #lever o if block 2 1 0 lever[face=wall,powered=false]",
+    })
+    emu.call("t:place")
+    assert [emu.score(h, "o") for h in ("#north", "#again", "#lever")] == [1, 0, 1]
+    assert str(emu.state.blocks.get((0, 1, 0))) == (
+        "minecraft:oak_stairs[facing=north,half=bottom,shape=straight,waterlogged=false]")
