@@ -246,15 +246,23 @@ def _equipment(value: dict, ctx: LootContext, entity: Entity) -> bool:
                for slot, wanted in value.items() if slot in _EQUIPMENT_SLOTS)
 
 
+# SlotsPredicate.matchSlots over a SlotProvider: a slot the entity does not have is skipped; before,
+# Entity.getSlot gave SlotAccess.NULL, read as the empty stack (mappings history of SlotsPredicate)
+SKIPS_MISSING_SLOTS = (1, 21, 11)
+
+
 def _slots(value: dict, ctx: LootContext, entity: Entity) -> bool:
     """SlotsPredicate.matches (1.20.5+): for each slot range (SlotRanges: ``container.*``,
-    ``armor.head`` ...), some slot of it holds a stack the item predicate matches; a slot the
-    entity does not have reads as the empty stack (SlotAccess.NULL)."""
+    ``armor.head`` ...), some slot of it holds a stack the item predicate matches. A slot the
+    entity does not have reads as the empty stack before 1.21.11 (so ``{}`` or ``minecraft:air``
+    matches it there) and is skipped from it (:data:`SKIPS_MISSING_SLOTS`)."""
+    skips = tuple(ctx.version) >= SKIPS_MISSING_SLOTS
     for name, wanted in value.items():
         entry = SLOTS.get(name)
         if entry is None:
             raise Unmodelled(f"slot range '{name}'")
-        if not any(item_matches(wanted, ctx, _slot_stack(entity, slot, ctx)) for slot in entry[0]):
+        slots = [s for s in entry[0] if not skips or inventories.entity_slot(entity, s, ctx.version) is not None]
+        if not any(item_matches(wanted, ctx, _slot_stack(entity, slot, ctx)) for slot in slots):
             return False
     return True
 

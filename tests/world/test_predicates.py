@@ -256,8 +256,7 @@ def test_a_players_mainhand_is_its_selected_slot(state):
 
 
 def test_slots_need_one_matching_slot_in_each_range(state):
-    # SlotsPredicate.matches: for each SlotRange, some Entity.getSlot(id) stack the ItemPredicate
-    # accepts; a slot the entity does not have is SlotAccess.NULL, the empty stack
+    # SlotsPredicate.matches: for each SlotRange, some Entity.getSlot(id) stack the ItemPredicate accepts
     player = state.entities.add_player("Alex", (0.0, 0.0, 0.0))
     inventories.entity_slot(player, 20, state.version).set(ItemStack("minecraft:diamond", 3))
     this = ctx(state, this=player)
@@ -265,5 +264,20 @@ def test_slots_need_one_matching_slot_in_each_range(state):
     assert not holds(props({"slots": {"hotbar.*": {"items": "minecraft:diamond"}}}), this)
     assert holds(props({"slots": {"container.*": {"items": "minecraft:diamond"}, "armor.head": {}}}), this)
     marker = state.entities.summon("minecraft:marker", (0.0, 0.0, 0.0))
-    assert holds(props({"slots": {"weapon.mainhand": {}}}), ctx(state, this=marker))
     assert not holds(props({"slots": {"weapon.mainhand": {"count": {"min": 1}}}}), ctx(state, this=marker))
+
+
+@pytest.mark.parametrize("version,matches", [((1, 20, 5), True), ((1, 21, 10), True), ((1, 21, 11), False),
+                                             ((26, 1, 0), False)])
+def test_a_slot_the_entity_lacks_is_the_empty_stack_until_1_21_11(version, matches):
+    # SlotsPredicate.matchSlots: before 1.21.11 Entity.getSlot gives SlotAccess.NULL for a slot the
+    # entity does not have, whose get() is ItemStack.EMPTY, so a predicate the empty stack passes
+    # (`{}`, `minecraft:air`) matches it; from 1.21.11 it reads the entity as a SlotProvider whose
+    # getSlot is null there, and the slot is skipped (mappings history: matches(SlotProvider))
+    state = WorldState(version=version)
+    marker = state.entities.summon("minecraft:marker", (0.0, 0.0, 0.0))
+    this = ctx(state, this=marker)
+    assert holds(props({"slots": {"weapon.mainhand": {}}}), this) == matches
+    assert holds(props({"slots": {"container.*": {"items": "minecraft:air"}}}), this) == matches
+    zombie = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0))  # its hands are slots it has
+    assert holds(props({"slots": {"weapon.mainhand": {}}}), ctx(state, this=zombie))
