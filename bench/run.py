@@ -258,10 +258,11 @@ BREAK_BEFORE = 2.9e6  # commands/s of the break when issue #13 was filed (21 % o
 
 
 class _VMTimer:
-    """Seconds spent inside the VM's loop (``emulator.vm.loop.run``) while it is installed."""
+    """Seconds spent inside the VM's loop (``emulator.vm.loop.run``) while it is installed on ``backend``."""
 
-    def __init__(self) -> None:
+    def __init__(self, backend) -> None:
         self.seconds = 0.0
+        self.backend = backend
 
     def __enter__(self):
         from emulator.vm import loop
@@ -276,10 +277,12 @@ class _VMTimer:
                 self.seconds += time.perf_counter() - start
 
         loop.run = timed
+        self.backend.stale = True  # it calls the run it finds when it makes its machine
         return self
 
     def __exit__(self, *exc) -> None:
         self.loop.run = self.run
+        self.backend.stale = True
 
 
 def break_in_vm() -> tuple[float, float]:
@@ -289,7 +292,7 @@ def break_in_vm() -> tuple[float, float]:
     emu = new_table()
     strike(emu, BREAK)
     ticking = 0.0
-    with _VMTimer() as inside:
+    with _VMTimer(emu.backend) as inside:
         for _ in range(2000):
             start = time.perf_counter()
             emu.tick()

@@ -8,9 +8,11 @@ from __future__ import annotations
 
 from collections import Counter
 
+import numba
 import numpy as np
 
 from emulator.vm import loop as vm
+from emulator.vm.loop import R_BATCH, R_BSTOP, R_CTX, R_HAS, R_NLOG, R_OK, R_PC, R_VAL, ST_HOST
 from emulator.commands import entities as world_entities
 from emulator.runtime.backend import HostRun, RootResult, TickBatch, report_quota_cut
 from emulator.vm.compiler import Compiler
@@ -77,6 +79,7 @@ class NumbaBackend:
         self.host = Host(state, packs.functions, packs.tags, self._report_here,
                          self._host_overflow if sanitize else None)
         self.regs = vm.new_registers()
+        self.rv = memoryview(self.regs)  # the registers as Python ints: faster to read and write than the array
         self.frames = vm.new_frames(256)
         self.ovf = vm.new_overflow_buffer()
         self.counts = np.zeros(0, dtype=np.int64)  # cost charged per instruction
@@ -102,6 +105,8 @@ class NumbaBackend:
         # per host command whose reward functions are running: (its registers, the rewards still to run)
         self.rewards: list[tuple[np.ndarray, list]] = []
         self.batch = np.zeros(1, dtype=np.int64)  # run_ticks: the tick functions, then each root's cost
+        self.stale = True  # the machine (the arrays above in one structure) is to be made again
+        self._world = (None, None, None, 0)  # the world's arrays it holds: scoreboard, entities, tags, living
 
     def new_world(self, state: WorldState) -> None:
         """Run the program compiled by :meth:`load` (and its macro instances) on ``state``, a fresh
@@ -116,6 +121,7 @@ class NumbaBackend:
         for counter in (self.counts, self.totals, self.active):
             counter[:] = 0
         self.host_runs.clear()
+        self.stale = True
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
@@ -157,6 +163,7 @@ class NumbaBackend:
         members = len(ids)
         limit = self.state.gamerules.max_command_chain_length
         self.batch = np.zeros(members * (ticks + 1), dtype=np.int64)
+        self.stale = True
         self.batch[:members] = ids
         self.batch_functions = functions
         self.at_tick = at_tick
@@ -198,23 +205,20 @@ class NumbaBackend:
     def _drive(self, limit: int) -> bool:
         """Run the VM until the root is done (in a batch of ticks: until the VM comes back at the end of
         a root); True when the quota (or the depth cap) cut that root."""
-        sb = self.state.scoreboard
         r = self.regs
-        table = self.state.entities.table
+        leaves, storage = self.leaves, self.state.storage
         cut = False
+        rv = self.rv
         while True:
-            code, starts, floats = self.program.arrays()
-            self._fit_counters(code.shape[0], starts.shape[0])
-            if self.selbuf.shape[0] < 2 * table.count + 2:
-                self.selbuf = np.zeros(4 * table.count + 4, dtype=np.int64)
-            sels, sfloats, tests = self.selectors.arrays()
-            leaves = self.leaves
-            leaves.read(self.state.storage)
-            status = vm.run(code, starts, floats, r, self.frames, sb.values, sb.present, sb.locked, sb.alive,
-                            sb.writable, sb.trigger, self.counts, self.totals, self.active, self.ovf,
-                            self.cints, self.cfloats, sels, sfloats, tests, table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf,
-                            self.fstack, self.coll, self.as_cache, self.batch, leaves.meta, leaves.values)
-            leaves.write_back(self.state.storage)
+            machine = self._machine()
+            if self.leaves_used:
+                leaves.read(storage)
+            status = self._resume(machine)
+            if self.leaves_used:
+                leaves.write_back(storage)
+            if status == ST_HOST and not rv[R_BATCH] and not rv[R_NLOG]:  # the common request, first
+                self._host_guarded(rv[R_PC])
+                continue
             batching = r[vm.R_BATCH] != 0
             if batching:
                 self._batch_root(status == vm.ST_DONE)
@@ -240,12 +244,14 @@ class NumbaBackend:
             elif status == vm.ST_GROWCTX:
                 self._grow_contexts(2 * self.cints.shape[0])
                 self.fstack = _grown(self.fstack)
+                self.stale = True
             elif status == vm.ST_RESUME:
                 self._next_reward()
             elif status == vm.ST_MACRO:
                 self._macro(int(r[vm.R_PC]))
             elif status == vm.ST_GROWCOLL:
                 self.coll = _grown(self.coll)
+                self.stale = True
             elif status == vm.ST_REPEAT:
                 self._repeat()
             elif status == vm.ST_ERROR:
@@ -253,6 +259,7 @@ class NumbaBackend:
             elif status == vm.ST_FLUSH:
                 if not r[vm.R_NOVF] and not log_full:  # one command reports more than the buffer holds
                     self.ovf = vm.new_overflow_buffer(4 * self.ovf.shape[0])
+                    self.stale = True
                 self._flush_overflows()
             elif status == vm.ST_GROW:
                 if not self._grow():
@@ -260,6 +267,33 @@ class NumbaBackend:
                     if not batching:
                         return True
                     cut = self._abandon_root()
+
+    def _machine(self) -> vm.Machine:
+        """The machine of the VM's current arrays: the last one while they are the same. Whatever
+        replaces one of the backend's arrays (or compiles: the program's, selectors' and storage
+        leaves' arrays) sets ``stale``; the world's arrays are compared here, since commands and the
+        API may grow the scoreboard or the entity table, or change the living entities (``eorder`` is
+        their slice)."""
+        sb, table = self.state.scoreboard, self.state.entities.table
+        world = self._world
+        if (not self.stale and world[0] is sb.values and world[1] is table.ints and world[2] is table.tags
+                and world[3] == table.count):
+            return self.machine
+        code, starts, floats = self.program.arrays()
+        self._fit_counters(code.shape[0], starts.shape[0])
+        if self.selbuf.shape[0] < 2 * table.count + 2:
+            self.selbuf = np.zeros(4 * table.count + 4, dtype=np.int64)
+        sels, sfloats, tests = self.selectors.arrays()
+        self.machine = vm.new_machine(
+            code, starts, floats, self.regs, self.frames, sb.values, sb.present, sb.locked, sb.alive, sb.writable,
+            sb.trigger, self.counts, self.totals, self.active, self.ovf, self.cints, self.cfloats, sels, sfloats, tests,
+            table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack, self.coll,
+            self.as_cache, self.batch, self.leaves.meta, self.leaves.values)
+        self._resume = _entry_point(vm.run, self.machine)
+        self._world = (sb.values, table.ints, table.tags, table.count)
+        self.leaves_used = bool(self.leaves.leaves)  # the program names numbers of storage
+        self.stale = False
+        return self.machine
 
     def _batch_root(self, ended: bool) -> None:
         """In a batch, before Python serves the VM: the clocks read the tick of the root running (or
@@ -329,17 +363,18 @@ class NumbaBackend:
 
     def _host(self, pc: int) -> None:
         """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
-        opcode = self.program.rows[pc][0]
-        node = self.program.host_ops[_host_op_index(self.program.rows[pc])].node
-        r = self.regs
+        row = self.program.rows[pc]
+        opcode = row[0]
+        node = self.program.host_ops[row[_HOST_OPERAND[opcode]]].node
+        r, rv = self.regs, self.rv
         self._current_pc = pc
         self.host_runs[pc] += 1
-        ctx = self.context(int(r[vm.R_CTX]))
-        r[vm.R_PC] = pc + 1
-        r[vm.R_BSTOP] = r[vm.R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
-        if opcode in (vm.OP_HOST, vm.OP_GETFIELD, vm.OP_SETLEAF, vm.OP_GETLEAF):
-            result = self.host.run_final(node, ctx)
-            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = int(result.has), int(result.ok), wrap32(result.value)
+        ctx = self.context(rv[R_CTX])
+        rv[R_PC] = pc + 1
+        rv[R_BSTOP] = rv[R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
+        if opcode in _FINAL_OPS:
+            result = self.host.run_final(node, ctx)  # its value is wrapped
+            rv[R_HAS], rv[R_OK], rv[R_VAL] = result.has, result.ok, result.value
             if self.state.pending_rewards:
                 self.rewards.append((r[_COMMAND_REGISTERS].copy(), earned_rewards(self.state, self.packs.functions)))
                 self._next_reward()
@@ -418,6 +453,7 @@ class NumbaBackend:
     def _grow_contexts(self, size: int) -> None:
         self.cints = _extend(self.cints, size)
         self.cfloats = _extend(self.cfloats, size)
+        self.stale = True
 
     def _bind(self, index: int, node, target: StoreTarget) -> tuple:
         """Context ``index``'s bindings with ``node``'s store target replaced (a recursive chain
@@ -464,6 +500,7 @@ class NumbaBackend:
         made = np.array(contexts, dtype=np.int64)
         while not vm.fork_contexts(r, self.fstack, self.coll, made, len(made), int(r[vm.R_DEPTH]), int(r[vm.R_PC])):
             self.fstack = _grown(self.fstack)
+            self.stale = True
 
     def _repeat(self) -> None:
         """``if function``: the isolated call's callback added this context once per return (each
@@ -498,6 +535,7 @@ class NumbaBackend:
             instance_id = f"{function.id}#{len(self.instances)}"
             fn = self.compiler.compile_function(instance_id, commands)
             self.instances[key] = fn
+            self.stale = True  # the program's arrays, maybe its selectors and storage leaves
         return fn
 
     def _arguments(self, cmd: ast.FunctionCall):
@@ -526,6 +564,7 @@ class NumbaBackend:
         frames = vm.new_frames(min(self.max_depth, depth * 4))
         frames[:depth] = self.frames
         self.frames = frames
+        self.stale = True
         return True
 
     def _flush_overflows(self) -> None:
@@ -604,12 +643,24 @@ def _end_frame(function: ast.Function) -> Frame:
     return Frame(function.id, Loc(function.path, max(function.lines, 1), 1))
 
 
+_FINAL_OPS = frozenset((vm.OP_HOST, vm.OP_GETFIELD, vm.OP_SETLEAF, vm.OP_GETLEAF))  # the host runs a final command
 # opcode -> the operand slot naming its host op (its "x" operand)
 _HOST_OPERAND = {op.code: op.operands.index("x") + 1 for op in TABLE if "x" in op.operands}
 
 
 def _host_op_index(row: list[int]) -> int:
     return row[_HOST_OPERAND[row[0]]]
+
+
+def _entry_point(run, machine: vm.Machine):
+    """``run``'s compiled entry point for ``machine``'s type (compiling it if new): called directly,
+    it skips the dispatcher's type checks. An instrumented ``run`` (a plain function) is itself."""
+    if not hasattr(run, "overloads"):
+        return run
+    signature = (numba.typeof(machine),)
+    if signature not in run.overloads:
+        run.compile(signature)
+    return run.overloads[signature].entry_point
 
 
 def _grown(rows: np.ndarray) -> np.ndarray:

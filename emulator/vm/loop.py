@@ -13,7 +13,8 @@ A command line compiles to a short sequence (see the compiler); the cost rule im
 the one documented in :mod:`emulator.runtime.backend`.
 
 Machine state lives in arrays owned by Python so the loop can return (for a host command, a macro
-instantiation, contexts to make, a full frame stack, a runtime error, a full buffer) and resume:
+instantiation, contexts to make, a full frame stack, a runtime error, a full buffer) and resume;
+``run`` takes them in one :class:`Machine` (its fields: :data:`MACHINE_FIELDS`):
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
 scoreboard ``values``/``present``/``locked``/``alive``/``writable``, the per-instruction ``counts``, the
 sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, the contexts (``cints``: per context its
@@ -64,7 +65,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.experimental import structref
 from numba.extending import overload
 
 from emulator.world import mth, rotation, semantics
@@ -687,11 +689,43 @@ def _store_field(efloats, e, column, v):
         efloats[e, column] = np.float32(v)
 
 
+# ---------------------------------------------------------------- the machine
+# Every array ``run`` reads, in one structure: numba checks and unboxes each argument of a call, so
+# 32 arrays cost about 1.5 us per resume, one structure about 0.1 (through its compiled entry point).
+# The structure holds the arrays themselves: Python keeps writing them in place, and makes a new
+# machine when it replaces one (NumbaBackend._machine).
+MACHINE_FIELDS = ("code", "func_start", "floats", "regs", "frames", "values", "present", "locked", "alive_obj",
+                  "writable", "trig", "counts", "totals", "active", "ovf", "cints", "cfloats", "sels", "sfloats",
+                  "tests", "eints", "efloats", "etags", "eorder", "selbuf", "logbuf", "fstack", "coll", "as_cache",
+                  "batch", "lmeta", "lvalues")
+
+
+@structref.register
+class MachineType(types.StructRef):
+    def preprocess_fields(self, fields):
+        return tuple((name, types.unliteral(t)) for name, t in fields)
+
+
+class Machine(structref.StructRefProxy):
+    """The VM's arrays (MACHINE_FIELDS), as ``run`` takes them."""
+
+
+structref.define_proxy(Machine, MachineType, MACHINE_FIELDS)
+
+
+@njit(cache=True)
+def new_machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
+                totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
+                logbuf, fstack, coll, as_cache, batch, lmeta, lvalues):
+    """A :class:`Machine` of these arrays (compiled and cached: the proxy's own constructor is not cached)."""
+    return Machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
+                   totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
+                   logbuf, fstack, coll, as_cache, batch, lmeta, lvalues)
+
+
 @njit(cache=True, error_model="numpy")
-def run(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts, totals,
-        active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf, logbuf, fstack, coll,
-        as_cache, batch, lmeta, lvalues):
-    """Run from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
+def run(m):
+    """Run machine ``m`` from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
     outermost activation only (``active[f]`` counts f's frames on the stack).
@@ -704,6 +738,38 @@ def run(code, func_start, floats, regs, frames, values, present, locked, alive_o
     root ``i``'s cost. ST_DONE comes back once the batch is done or when a root ends and Python is
     needed before the next one (:meth:`emulator.vm.backend.NumbaBackend.run_ticks`).
     """
+    code = m.code
+    func_start = m.func_start
+    floats = m.floats
+    regs = m.regs
+    frames = m.frames
+    values = m.values
+    present = m.present
+    locked = m.locked
+    alive_obj = m.alive_obj
+    writable = m.writable
+    trig = m.trig
+    counts = m.counts
+    totals = m.totals
+    active = m.active
+    ovf = m.ovf
+    cints = m.cints
+    cfloats = m.cfloats
+    sels = m.sels
+    sfloats = m.sfloats
+    tests = m.tests
+    eints = m.eints
+    efloats = m.efloats
+    etags = m.etags
+    eorder = m.eorder
+    selbuf = m.selbuf
+    logbuf = m.logbuf
+    fstack = m.fstack
+    coll = m.coll
+    as_cache = m.as_cache
+    batch = m.batch
+    lmeta = m.lmeta
+    lvalues = m.lvalues
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
     depth = regs[R_DEPTH]
