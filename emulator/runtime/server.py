@@ -160,7 +160,7 @@ class Runtime:
         """How many of the next ``n`` ticks may run as a batch: every one but the last must end
         changing only the clocks (see the module's docs)."""
         state = self.state
-        if (not self.loaded or state.pending_rewards or not isinstance(self.backend, TickBatches)
+        if (n <= 1 or not self.loaded or state.pending_rewards or not isinstance(self.backend, TickBatches)
                 or not all(idle(state) for _, idle in ENTITY_STEPS)):
             return 1
         due = [t for t in (state.schedule.next_due(), state.block_ticks.next_due()) if t is not None]

@@ -136,7 +136,7 @@ class NumbaBackend:
         except CommandFailure as failure:
             state.error(failure.message, (Frame(function_id, Loc(function.path, 1, 1)),))
             return RootResult(0, None)
-        self.root_frame = _end_frame(function)
+        self.root_function = function  # where a cut at its end is reported (_finished_root_frame)
         limit = state.gamerules.max_command_chain_length
         self._set_root(fn, limit)
         self.returned = False
@@ -320,7 +320,7 @@ class NumbaBackend:
         """Where the root that just ended ends (the last of a batch's)."""
         r = self.regs
         if not r[vm.R_BATCH]:
-            return self.root_frame
+            return _end_frame(self.root_function)
         return _end_frame(self.packs.functions[self.batch_functions[(int(r[vm.R_BROOTS]) - 1) % int(r[vm.R_BMEMBERS])]])
 
     def _write_log(self) -> None:

@@ -251,6 +251,8 @@ def tick_is_idle(state) -> bool:
 def tick_menus(state) -> None:
     """Player.tick: a menu no longer valid closes (the block is gone, or the player's eyes are out of
     the block interaction range + 4 of the block's box: Player.canInteractWithBlock)."""
+    if not _MENU:  # every tick: no open container is the common case
+        return
     for player, pos in list(_MENU.items()):
         if not player.alive or state.blocks.get(pos).id not in MENUS or not _within_reach(player, pos):
             close_menu(state, player)

@@ -323,12 +323,14 @@ def _award_orbs(state, pos, amount: int, dimension: str) -> None:
 
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_dead` would do nothing now: no dead player's DeathTime still counts."""
-    return not any(p.is_player and not p.alive and int(p.data.get("DeathTime", Short(0))) < MAX_DEATH_TIME
+    return not _DEAD or not any(p.is_player and not p.alive and int(p.data.get("DeathTime", Short(0))) < MAX_DEATH_TIME
                    for p in _DEAD)
 
 
 def tick_dead(state) -> None:
     """LivingEntity.tickDeath: ``DeathTime`` counts up to 20 (then the game takes the body away)."""
+    if not _DEAD:  # every tick: an empty set is the common case
+        return
     for player in list(_DEAD):
         if player.is_player and not player.alive:
             player.data["DeathTime"] = Short(min(int(player.data.get("DeathTime", Short(0))) + 1, MAX_DEATH_TIME))

@@ -424,12 +424,14 @@ def _drop_if_empty(entity) -> None:
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_living` would change nothing now: no effect counting down, no hurt
     time or hurt timer running."""
+    hurting = bool(_HURT)
     for entity in state.entities.living():
-        found = entity.data.get("active_effects")
+        found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
+        if found is None and hurt_time is None and not hurting:
+            continue  # the common case, every tick: neither field, no hurt timer anywhere
         if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE for e in found):
             return False
-        hurt_time = entity.data.get("HurtTime")
-        if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or entity in _HURT:
+        if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or (hurting and entity in _HURT):
             return False
     return True
 
@@ -442,16 +444,19 @@ def tick_living(state, harm=None) -> list:
     effect's damage (default: :func:`hurt` as magic, no death). Returns the entities that lost an
     effect (the game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
     lost = []
+    hurting = bool(_HURT)  # only the entity ticking adds itself (an instant effect's harm)
     for entity in state.entities.living():
-        found = entity.data.get("active_effects")
+        found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
+        if found is None and hurt_time is None and not hurting:
+            continue  # the common case, every tick: nothing to count down
         if isinstance(found, List) and found:
             if _tick_effects(state, entity, found, harm or _magic):
                 lost.append(entity)
             _drop_if_empty(entity)
-        hurt_time = entity.data.get("HurtTime")
+            hurt_time = entity.data.get("HurtTime")  # an instant effect's harm may have set it
         if is_numeric(hurt_time) and numeric_value(hurt_time) > 0:
             entity.data["HurtTime"] = Int(int(numeric_value(hurt_time)) - 1)
-        timers = _HURT.get(entity)
+        timers = _HURT.get(entity) if _HURT else None
         if timers is not None:
             timers[0] -= 1
             if timers[0] <= 0:

@@ -186,6 +186,8 @@ def tick_using(state) -> None:
     """LivingEntity.updatingUsingItem for each player using an item: stops when the hand no longer
     holds that item; else ``using_item`` fires (ServerPlayer.updateUsingItem) and, when the duration
     runs out, the item is consumed (completeUsingItem)."""
+    if not _USING:  # every tick: nobody using an item is the common case
+        return
     for player, using in list(_USING.items()):
         if not player.alive:
             del _USING[player]

@@ -64,6 +64,7 @@ class Scoreboard:
         self.objectives: list[str] = []
         self.objective_ids: dict[str, int] = {}
         self.criteria: list[str] = []
+        self.statistic_ids: set[int] = set()  # objectives whose criterion is a statistic (``type:stat``)
         self.display_names: list[str | None] = []
         self.values = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.int32)
         self.present = np.zeros((_INITIAL_HOLDERS, _INITIAL_OBJECTIVES), dtype=np.uint8)
@@ -143,6 +144,10 @@ class Scoreboard:
         self.writable[oid] = criterion not in READ_ONLY_CRITERIA
         self.trigger[oid] = criterion == "trigger"
         self.criteria[oid] = criterion
+        if ":" in criterion:
+            self.statistic_ids.add(oid)
+        else:
+            self.statistic_ids.discard(oid)
         self.display_names[oid] = display_name
         self.present[:, oid] = 0
         self.locked[:, oid] = 1

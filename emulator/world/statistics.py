@@ -93,5 +93,4 @@ def tick_is_idle(state) -> bool:
 
 
 def _counts_statistics(board) -> bool:
-    return any(board.alive[board.objective_ids[o]] and ":" in board.criteria[board.objective_ids[o]]
-               for o in board.objectives)
+    return any(board.alive[oid] for oid in board.statistic_ids)
