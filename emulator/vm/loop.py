@@ -27,8 +27,10 @@ numbers of command storage the program names, ``lmeta``/``lvalues`` (:mod:`emula
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
 the fork loop flag) are saved in the frame and restored on return.
 
-A call with array arguments costs more than a whole scoreboard command here, and even an untaken
-call in a branch slows it: the scoreboard ops resolve names and ``@s`` themselves and read a
+``run`` borrows every array of its machine (:func:`_borrowed`): numba keeps no reference counts on
+them, so a helper taking arrays no longer counts each up and down with an atomic operation (that
+made a selector over 16 entities cost about 10x its work). A call with array arguments still
+costs more than a whole scoreboard command here, and even an untaken call in a branch slows it: the scoreboard ops resolve names and ``@s`` themselves and read a
 selector's holders from OP_SELHOLDERS, emitted just before them.
 The same holds for an ``inline="always"`` helper taking an array when the inlined body branches
 (numba then keeps a reference count increment and decrement per use: the charge preamble
@@ -66,8 +68,9 @@ import math
 
 import numpy as np
 from numba import njit, types
+from numba.core import cgutils
 from numba.experimental import structref
-from numba.extending import overload
+from numba.extending import intrinsic, overload
 
 from emulator.world import mth, rotation, semantics
 
@@ -273,6 +276,20 @@ CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN = range(4)
 # storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty], lvalues[leaf] = the number;
 # type 0: no byte, short, int, float or double there
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
+
+
+@intrinsic
+def _borrowed(typingctx, array):
+    """``array`` without its reference count: a view numba keeps no count for. Every helper call
+    counts each array it is passed up on entry and down on exit, an atomic operation each, which cost
+    more than the helpers' work (a selector over 16 entities ran about 10x slower); ``run`` borrows
+    Python's arrays, which outlive the call, so the counts are skipped (a null count is not kept)."""
+    def codegen(context, builder, signature, args):
+        view = cgutils.create_struct_proxy(signature.args[0])(context, builder, value=args[0])
+        view.meminfo = cgutils.get_null_value(view.meminfo.type)
+        view.parent = cgutils.get_null_value(view.parent.type)
+        return view._getvalue()
+    return array(array), codegen
 
 
 @njit(cache=True, inline="always")
@@ -738,38 +755,38 @@ def run(m):
     root ``i``'s cost. ST_DONE comes back once the batch is done or when a root ends and Python is
     needed before the next one (:meth:`emulator.vm.backend.NumbaBackend.run_ticks`).
     """
-    code = m.code
-    func_start = m.func_start
-    floats = m.floats
-    regs = m.regs
-    frames = m.frames
-    values = m.values
-    present = m.present
-    locked = m.locked
-    alive_obj = m.alive_obj
-    writable = m.writable
-    trig = m.trig
-    counts = m.counts
-    totals = m.totals
-    active = m.active
-    ovf = m.ovf
-    cints = m.cints
-    cfloats = m.cfloats
-    sels = m.sels
-    sfloats = m.sfloats
-    tests = m.tests
-    eints = m.eints
-    efloats = m.efloats
-    etags = m.etags
-    eorder = m.eorder
-    selbuf = m.selbuf
-    logbuf = m.logbuf
-    fstack = m.fstack
-    coll = m.coll
-    as_cache = m.as_cache
-    batch = m.batch
-    lmeta = m.lmeta
-    lvalues = m.lvalues
+    code = _borrowed(m.code)
+    func_start = _borrowed(m.func_start)
+    floats = _borrowed(m.floats)
+    regs = _borrowed(m.regs)
+    frames = _borrowed(m.frames)
+    values = _borrowed(m.values)
+    present = _borrowed(m.present)
+    locked = _borrowed(m.locked)
+    alive_obj = _borrowed(m.alive_obj)
+    writable = _borrowed(m.writable)
+    trig = _borrowed(m.trig)
+    counts = _borrowed(m.counts)
+    totals = _borrowed(m.totals)
+    active = _borrowed(m.active)
+    ovf = _borrowed(m.ovf)
+    cints = _borrowed(m.cints)
+    cfloats = _borrowed(m.cfloats)
+    sels = _borrowed(m.sels)
+    sfloats = _borrowed(m.sfloats)
+    tests = _borrowed(m.tests)
+    eints = _borrowed(m.eints)
+    efloats = _borrowed(m.efloats)
+    etags = _borrowed(m.etags)
+    eorder = _borrowed(m.eorder)
+    selbuf = _borrowed(m.selbuf)
+    logbuf = _borrowed(m.logbuf)
+    fstack = _borrowed(m.fstack)
+    coll = _borrowed(m.coll)
+    as_cache = _borrowed(m.as_cache)
+    batch = _borrowed(m.batch)
+    lmeta = _borrowed(m.lmeta)
+    lvalues = _borrowed(m.lvalues)
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
     depth = regs[R_DEPTH]
