@@ -102,6 +102,7 @@ scoreboard players set #1000 pool.const 1000
 scoreboard players set #2000 pool.const 2000
 scoreboard players set #10000 pool.const 10000
 scoreboard players set #20000 pool.const 20000
+scoreboard players set #16384 pool.const 16384
 scoreboard players set #32767 pool.const 32767
 scoreboard players set #32768 pool.const 32768
 scoreboard players set #100000 pool.const 100000
@@ -114,6 +115,9 @@ scoreboard players set $2R pool.const 57150
 # centre distance at which the swept test reports a contact: 2R + 20 um (see
 # pool:physics/detect/sweep/pair)
 scoreboard players set $contact pool.const 57170
+# the overlap at which a touching pair that did not approach becomes a contact when the two run into
+# each other later in the tick (see pool:physics/detect/pair/recontact), um
+scoreboard players set $recontact pool.const 50
 # playing area 2.54 m x 1.27 m
 scoreboard players set $L pool.const 2540000
 scoreboard players set $W pool.const 1270000

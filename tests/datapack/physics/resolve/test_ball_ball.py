@@ -57,14 +57,21 @@ def test_separating_balls_are_left_alone():
     assert list(v_a1) == [-1000, 0] and list(v_b1) == [0, 0]
 
 
-def touch_shift(v_a, gap):
-    """pool:physics/resolve/ball_ball/touch for a at (600000, 600000) with velocity v_a and b at rest 2R + gap
-    along +x: a's displacement (um)."""
+def touch_shifts(v_a, gap, v_b=(0, 0)):
+    """pool:physics/resolve/ball_ball/touch for a at (600000, 600000) with velocity v_a and b 2R + gap
+    along +x with velocity v_b: a's and b's displacements (um)."""
     board = board_with(x=600000, z=600000, vx=v_a[0], vz=v_a[1])
-    for name, value in zip(("x", "z", "vx", "vz"), (600000 + 57150 + gap, 600000, 0, 0)):
+    b = (600000 + 57150 + gap, 600000)
+    for name, value in zip(("x", "z", "vx", "vz"), (*b, *v_b)):
         board.set_score(f"#ball_ball.b.{name}", "pool.tmp", value)
     board.call("pool:physics/resolve/ball_ball/touch", as_=A)
-    return vector(board, "x", "z") - 600000
+    b_now = [board.score(f"#ball_ball.b.{axis}", "pool.tmp") for axis in "xz"]
+    return vector(board, "x", "z") - 600000, np.array(b_now, float) - b
+
+
+def touch_shift(v_a, gap):
+    """a's displacement by pool:physics/resolve/ball_ball/touch when b is at rest (touch_shifts)."""
+    return touch_shifts(v_a, gap)[0]
 
 
 def test_contact_shift_closes_the_gap_of_a_head_on_pair():
@@ -86,6 +93,16 @@ def test_contact_shift_follows_a_nearly_tangent_path_to_the_contact():
     assert abs(shift[0] * direction[1] - shift[1] * direction[0]) <= 1
     assert 250 <= shift @ direction <= 280
     assert 57150.5 <= np.linalg.norm(np.array([57190, 0]) - shift) <= 57151.5
+
+
+def test_contact_shift_of_a_pair_moving_together_only_closes_its_gap():
+    # b runs beside a at 100000 um/tick along z, a closes on it at 2000 um/tick from 40 um: the
+    # faster ball a moves 39 um along their relative velocity and b stays; moving both along their
+    # own velocities for the 0.02 tick that closes the gap carried the pair 2 mm along z
+    a, b = touch_shifts((2000, 100000), 40, v_b=(0, 100000))
+    assert list(a) == pytest.approx([39, 0], abs=1) and list(b) == [0, 0]
+    a, b = touch_shifts((0, -100000), 40, v_b=(-2000, -100500))
+    assert list(a) == [0, 0] and list(b) == pytest.approx([-39, -10], abs=1)
 
 
 def exact_contact_normal(a, v_a, b, v_b, distance=57150.0):

@@ -1,7 +1,7 @@
 # pool:physics/detect/pair/contact — swept contact test of ball @s (b) with the ball tagged
 # pool.self (a), after the cheap test of their chord boxes: returns 1 with the contact's tick time
-# in #detect.t, or 0 (no contact, or a touching pair that does not approach:
-# pool:physics/detect/pair/touching).
+# in #detect.t, or 0 (no contact, or a touching pair that does not approach within the tick:
+# pool:physics/detect/pair/recontact).
 # Reads: #pair.a.id #pair.a.lx #pair.a.hx #pair.a.lz #pair.a.hz #detect.cap pool.tmp (a's box), @s
 # box and chord (a ball at rest has cx = x). Writes: #detect.t #cost.work (the exact test's cost)
 # #detect.abort pool.tmp; both chords' starts moved to #events.now; the sweep's temporaries.
@@ -25,8 +25,9 @@ function pool:physics/detect/sweep/pair
 execute if score #sweep.f pool.tmp matches 10001 run return 0
 function pool:physics/detect/absolute
 # an immediate contact (at #events.now: the fraction 0, or one small enough to round to it) that
-# does not approach is no event: resolving it would change nothing and find it again at once, for
-# ever
-execute if score #detect.t pool.tmp = #events.now pool.tmp if function pool:physics/detect/pair/resolved_apart run return run function pool:physics/detect/pair/touching
-execute if score #detect.t pool.tmp = #events.now pool.tmp if function pool:physics/detect/pair/separating run return run function pool:physics/detect/pair/touching
-return 1
+# does not approach is no event at once: resolving it would change nothing and find it again at
+# once, for ever; it may still approach later in the tick (pool:physics/detect/pair/recontact)
+execute unless score #detect.t pool.tmp = #events.now pool.tmp run return 1
+function pool:physics/detect/pair/separating
+execute if score #pair.s pool.tmp matches 1.. unless function pool:physics/detect/pair/resolved_apart run return 1
+return run function pool:physics/detect/pair/recontact

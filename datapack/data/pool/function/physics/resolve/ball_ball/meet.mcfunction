@@ -3,7 +3,7 @@
 # paths) moves the event time #events.te by dt and rewinds both balls there along their own paths
 # (pool:physics/events/rewind), so that their velocities, spins and the rest of the tick belong to
 # the time of the contact; pool:physics/resolve/ball_ball/touch then closes what is left (below the
-# time step, and the paths' curve over dt) along the velocities.
+# time step, and the paths' curve over dt).
 # Without this, a near-tangent pair moved millimetres along its paths keeps the velocities of the
 # earlier time (a sliding ball's differ by its deceleration) and runs ahead for the rest of the tick.
 # The time stays within #events.now and the next stored event of any other ball, so that events

@@ -4,8 +4,8 @@
 # step, until g = 0 (or |g| = 1 twice, or four moves). #ball_ball.steps becomes -1 when touch must
 # put the balls back: |g| did not shrink (or is more than 2 mm), c <= 0, or a move of more than 30 mm.
 # Reads/writes: @s pool.x pool.z, #ball_ball.b.x #ball_ball.b.z #ball_ball.last #ball_ball.steps
-# #cost.work pool.tmp; reads the velocities. Writes: #ball_ball.g #ball_ball.c #ball_ball.ag #ball_ball.sx
-# #ball_ball.sz #ball_ball.tx #ball_ball.tz pool.tmp and the math library's temporaries.
+# #cost.work pool.tmp; reads the velocities and #ball_ball.fast. Writes: #ball_ball.g #ball_ball.c
+# #ball_ball.ag #ball_ball.sx #ball_ball.sz pool.tmp and the math library's temporaries.
 function pool:physics/resolve/ball_ball/touch/gap
 function pool:physics/resolve/ball_ball/touch/closing
 scoreboard players operation #ball_ball.ag pool.tmp = #ball_ball.g pool.tmp
@@ -19,30 +19,23 @@ scoreboard players add #ball_ball.steps pool.tmp 1
 # the event's estimate (pool:physics/events/run) covers one move; each further one is charged
 execute if score #ball_ball.steps pool.tmp matches 2.. run scoreboard players add #cost.work pool.tmp 250
 scoreboard players operation #ball_ball.last pool.tmp = #ball_ball.ag pool.tmp
-# the moves v g / c (|v g| <= 2^31: |v| <= 10^6 um/tick, |g| <= 2000 um)
+# the move (v_a - v_b) g / c of the faster ball (#ball_ball.fast: 1 for a, 0 for b) relative to the
+# other (|v_a - v_b| g < 2^31: each |v| <= 5e5 um/tick, |g| <= 2000 um)
 scoreboard players operation $b pool.math = #ball_ball.c pool.tmp
 scoreboard players operation $a pool.math = @s pool.vx
+scoreboard players operation $a pool.math -= #ball_ball.b.vx pool.tmp
 scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
 function pool:math/div_round
 scoreboard players operation #ball_ball.sx pool.tmp = $out pool.math
 scoreboard players operation $a pool.math = @s pool.vz
+scoreboard players operation $a pool.math -= #ball_ball.b.vz pool.tmp
 scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
 function pool:math/div_round
 scoreboard players operation #ball_ball.sz pool.tmp = $out pool.math
-scoreboard players operation $a pool.math = #ball_ball.b.vx pool.tmp
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation #ball_ball.tx pool.tmp = $out pool.math
-scoreboard players operation $a pool.math = #ball_ball.b.vz pool.tmp
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation #ball_ball.tz pool.tmp = $out pool.math
 execute unless score #ball_ball.sx pool.tmp matches -30000..30000 run return run scoreboard players set #ball_ball.steps pool.tmp -1
 execute unless score #ball_ball.sz pool.tmp matches -30000..30000 run return run scoreboard players set #ball_ball.steps pool.tmp -1
-execute unless score #ball_ball.tx pool.tmp matches -30000..30000 run return run scoreboard players set #ball_ball.steps pool.tmp -1
-execute unless score #ball_ball.tz pool.tmp matches -30000..30000 run return run scoreboard players set #ball_ball.steps pool.tmp -1
-scoreboard players operation @s pool.x += #ball_ball.sx pool.tmp
-scoreboard players operation @s pool.z += #ball_ball.sz pool.tmp
-scoreboard players operation #ball_ball.b.x pool.tmp += #ball_ball.tx pool.tmp
-scoreboard players operation #ball_ball.b.z pool.tmp += #ball_ball.tz pool.tmp
+execute if score #ball_ball.fast pool.tmp matches 1 run scoreboard players operation @s pool.x += #ball_ball.sx pool.tmp
+execute if score #ball_ball.fast pool.tmp matches 1 run scoreboard players operation @s pool.z += #ball_ball.sz pool.tmp
+execute if score #ball_ball.fast pool.tmp matches 0 run scoreboard players operation #ball_ball.b.x pool.tmp -= #ball_ball.sx pool.tmp
+execute if score #ball_ball.fast pool.tmp matches 0 run scoreboard players operation #ball_ball.b.z pool.tmp -= #ball_ball.sz pool.tmp
 function pool:physics/resolve/ball_ball/touch/step
