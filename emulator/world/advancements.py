@@ -36,11 +36,13 @@ from __future__ import annotations
 
 from typing import Callable
 
-from emulator.world import inventories, predicates
+from emulator.world import inventories, living, loot, predicates
 from emulator.world.advancement_progress import OBSERVED, full_id as _id, is_done, short_trigger
 from emulator.world.entities import Entity
+from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
 from emulator.world.loot_context import LootContext, in_range
+from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 from mcfunction_parser.pack.advancements import criteria
 
 LOCATION_PERIOD = 20
@@ -68,14 +70,41 @@ def revoke(state, player: Entity, advancement_id: str, criterion: str) -> bool:
 
 
 def _reward(state, player: Entity, advancement_id: str) -> None:
+    """AdvancementRewards.grant, in its order: the experience points, each loot table's items, the
+    recipes (not modelled: no recipe book here), then the function queued to run as the player."""
     rewards = state.resources.advancements[advancement_id].get("rewards") or {}
+    if rewards.get("experience"):
+        living.add_points(player, int(rewards["experience"]))
+    try:
+        _loot_rewards(state, player, rewards.get("loot") or [])
+    except Unmodelled as reason:
+        state.error(f"advancement {advancement_id}: its loot reward: {reason}", unmodelled=True)
+    if rewards.get("recipes"):
+        state.error(f"advancement {advancement_id}: the recipes reward is not modelled (no recipe book)",
+                    severity="warning", unmodelled=True)
     function = rewards.get("function")
     if isinstance(function, str):
         state.pending_rewards.append((function if ":" in function else "minecraft:" + function, player))
-    for kind in ("experience", "loot", "recipes"):
-        if rewards.get(kind):
-            state.error(f"advancement {advancement_id}: the {kind} reward is not modelled", severity="warning",
-                        unmodelled=True)
+
+
+def _loot_rewards(state, player: Entity, tables: list) -> None:
+    """Each table rolled with the player as ``this`` at its position (LootContextParamSets.
+    ADVANCEMENT_REWARD); each stack into the inventory (Player.addItem), what is left of it thrown
+    from the player (ServerPlayer.drop) with no pickup delay and the player as its target
+    (``Owner``); the inventory menu broadcasts its changes once something went in. A table no pack
+    defines drops nothing (LootTable.EMPTY)."""
+    inventory, added = inventories.player_inventory(player, state.version), False
+    ctx = LootContext(state, player.pos, this=player, dimension=player.dimension, random=state.resources.random)
+    for table_id in tables:
+        table_id = table_id if ":" in table_id else "minecraft:" + table_id
+        for stack in loot.roll_table(state.resources.loot_table(table_id) or {}, ctx):
+            if inventory.add(stack):  # true once all of it went in (Inventory.add)
+                added = True
+            elif not stack.is_empty:
+                inventories.throw_from(state.entities, player, stack, state.version, state.resources.random,
+                                       Compound(PickupDelay=Short(0), Owner=IntArray(Int(v) for v in player.uuid)))
+    if added:
+        broadcast_changes(state, player)
 
 
 def related(resources, advancement_id: str, mode: str) -> list[str]:

@@ -32,7 +32,8 @@ API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 ar
 - ``selected_item(data)``: the held stack's NBT for ``SelectedItem`` (None when empty).
 - ``default_block_entity(block_id)``: the block entity a container gets when placed (``Items: []``).
 - ``drop_item(store, pos, stack, version, rng, extra)``: an item entity (what ``give`` drops, ``loot
-  spawn`` makes, a player would drop).
+  spawn`` makes, a player would drop); ``throw_from(store, player, stack, version, rng, extra)``:
+  one a player throws (Player.createItemStackToDrop: from the eyes, along the look).
 
 Sources (decompiled 1.21): world/entity/player/Player.java and Inventory.java (getSlot, add,
 getSlotWithRemainingSpace, save), world/entity/LivingEntity.java (getSlot), world/entity/Mob.java
@@ -42,16 +43,22 @@ advancements/critereon/NbtPredicate.java (SelectedItem); 1.21.5 equipment from t
 """
 from __future__ import annotations
 
+import math
 import weakref
 from collections.abc import Callable
 
+import numpy as np
+
 from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, Short
+from emulator.world import mth
 from emulator.world.id_families import COLOURS
 from emulator.world.errors import CommandFailure
 from emulator.world.items import EMPTY, ItemStack, from_nbt, to_nbt
 from emulator.world.living import NOT_LIVING
 from emulator.world.nbt_ops import copy_tag
 
+F32 = np.float32
+THROWN_PICKUP_DELAY = 40  # Player.createItemStackToDrop: setPickUpDelay(40)
 EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a-25w04a: equipment compound, player armor leaves Inventory
 MAINHAND, OFFHAND, BODY, CURSOR = 98, 99, 105, 499
 ARMOR_SLOTS = {"feet": 100, "legs": 101, "chest": 102, "head": 103}
@@ -373,6 +380,24 @@ class PlayerInventory:
 
 def player_inventory(player, version) -> PlayerInventory:
     return PlayerInventory(player, version)
+
+
+def throw_from(store, player, stack: ItemStack, version, rng, extra: Compound | None = None):
+    """Player.createItemStackToDrop (not thrown around): an item entity at the eyes minus 0.3, in
+    the player's level, with a pickup delay of 40, thrown 0.3 along the look with a little random
+    spread (drawn from the emulator's random, not the player's own: the game's values differ);
+    ``extra`` NBT overrides."""
+    pitch, yaw = F32(player.pitch) * F32(math.pi / 180), F32(player.yaw) * F32(math.pi / 180)
+    sin_p, cos_p, sin_y, cos_y = mth.sin(pitch), mth.cos(pitch), mth.sin(yaw), mth.cos(yaw)
+    angle, spread = F32(rng.random()) * F32(math.pi * 2), F32(0.02) * F32(rng.random())
+    motion = List([Double(float(-sin_y * cos_p * F32(0.3)) + math.cos(angle) * float(spread)),
+                   Double(float(-sin_p * F32(0.3) + F32(0.1) + (F32(rng.random()) - F32(rng.random())) * F32(0.1))),
+                   Double(float(cos_y * cos_p * F32(0.3)) + math.sin(angle) * float(spread))])
+    x, y, z = player.pos
+    data = Compound(PickupDelay=Short(THROWN_PICKUP_DELAY), Motion=motion)
+    data.update(extra or {})
+    return drop_item(store, (x, y + float(player.eye_height) - float(F32(0.3)), z), stack, version, rng, data,
+                     player.dimension)
 
 
 def drop_item(store, pos, stack: ItemStack, version, rng, extra: Compound | None = None,

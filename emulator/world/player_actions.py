@@ -25,20 +25,18 @@ world/item/ItemStack.java (finishUsingItem, applyAfterUseComponentSideEffects), 
 """
 from __future__ import annotations
 
-import math
 import weakref
 from dataclasses import dataclass
 
 import numpy as np
 
-from emulator.world import advancements, combat, consumables, inventories, living, mth, predicates, statistics
+from emulator.world import advancements, combat, consumables, inventories, living, predicates, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import numeric_value
-from mcfunction_parser.nbt import Compound, Double, Float, Int, IntArray, List, Short, String
+from mcfunction_parser.nbt import Compound, Float, Int, IntArray, String
 
 F32 = np.float32
-THROWN_PICKUP_DELAY = 40  # Player.createItemStackToDrop: setPickUpDelay(40)
 MAIN, OFF = "main_hand", "off_hand"
 
 
@@ -68,25 +66,10 @@ def drop_from(state, player, stack: ItemStack):
 
 
 def _throw(state, player, stack: ItemStack, thrown_from_hand: bool):
-    """LivingEntity.createItemStackToDrop (not randomly): at the eyes less 0.3, pickup delay 40,
-    the player as ``Thrower`` when thrown from the hand."""
-    x, y, z = player.pos
-    extra = Compound(PickupDelay=Short(THROWN_PICKUP_DELAY), Motion=_throw_motion(player, state.resources.random))
-    if thrown_from_hand:
-        extra["Thrower"] = IntArray(Int(v) for v in player.uuid)
-    return inventories.drop_item(state.entities, (x, y + float(player.eye_height) - float(F32(0.3)), z), stack,
-                                 state.version, state.resources.random, extra, player.dimension)
-
-
-def _throw_motion(player, rng) -> List:
-    """createItemStackToDrop's motion: 0.3 along the look direction, a little random spread (drawn
-    from the emulator's random, not the player's own: the game's values differ)."""
-    pitch, yaw = F32(player.pitch) * F32(math.pi / 180), F32(player.yaw) * F32(math.pi / 180)
-    sin_p, cos_p, sin_y, cos_y = mth.sin(pitch), mth.cos(pitch), mth.sin(yaw), mth.cos(yaw)
-    angle, spread = F32(rng.random()) * F32(math.pi * 2), F32(0.02) * F32(rng.random())
-    return List([Double(float(-sin_y * cos_p * F32(0.3)) + math.cos(angle) * float(spread)),
-                 Double(float(-sin_p * F32(0.3) + F32(0.1) + (F32(rng.random()) - F32(rng.random())) * F32(0.1))),
-                 Double(float(cos_y * cos_p * F32(0.3)) + math.sin(angle) * float(spread))])
+    """LivingEntity.createItemStackToDrop (not randomly): :func:`inventories.throw_from`, the
+    player as ``Thrower`` when thrown from the hand."""
+    extra = Compound(Thrower=IntArray(Int(v) for v in player.uuid)) if thrown_from_hand else None
+    return inventories.throw_from(state.entities, player, stack, state.version, state.resources.random, extra)
 
 
 def swap_hands(state, player) -> None:

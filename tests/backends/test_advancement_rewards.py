@@ -12,6 +12,7 @@ import json
 import pytest
 
 from emulator import Emulator
+from emulator.world.entities import entity_nbt
 from tests.world.world_emulator import make_pack
 
 BACKENDS = ["python", "numba"]
@@ -107,3 +108,45 @@ def test_a_missing_or_macro_reward_is_an_error_and_the_command_goes_on(tmp_path,
     errors = [d.message for d in emu.diagnostics if d.severity == "error"]
     assert errors[0] == "advancement reward function t:gone does not exist"
     assert "t:macro" in errors[1] and len(errors) == 2
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_experience_and_loot_come_before_the_function(tmp_path, backend):
+    # AdvancementRewards.grant: giveExperiencePoints, then each loot table's items (ADVANCEMENT_REWARD:
+    # the player as this at its position) into the inventory, then the function
+    root = tmp_path / "p"
+    table = root / "data" / "t" / "loot_table" / "gift.json"
+    table.parent.mkdir(parents=True, exist_ok=True)
+    table.write_text(json.dumps({"pools": [{"rolls": 1, "entries": [
+        {"type": "item", "name": "minecraft:diamond", "functions": [{"function": "set_count", "count": 2}]}]}]}))
+    emu = _emulator(tmp_path, backend, {
+        "t:main": "advancement grant Alex only t:a",
+        "t:after": "execute store result score #xp o run xp query @s points\n"
+                   "execute store result score #diamonds o run clear @s minecraft:diamond 0",
+    }, {"a": {"criteria": {"x": {"trigger": "minecraft:impossible"}},
+              "rewards": {"experience": 5, "loot": ["t:gift"], "function": "t:after"}}}, players=("Alex",))
+    emu.call("t:main")
+    assert (emu.score("#xp", "o"), emu.score("#diamonds", "o")) == (5, 2)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_loot_that_does_not_fit_is_thrown_to_the_player(tmp_path, backend):
+    # Player.addItem failing: ServerPlayer.drop(stack, false) at the eyes minus 0.3, then
+    # setNoPickUpDelay and setTarget(the player): PickupDelay 0 and Owner
+    root = tmp_path / "p"
+    table = root / "data" / "t" / "loot_table" / "gift.json"
+    table.parent.mkdir(parents=True, exist_ok=True)
+    table.write_text(json.dumps({"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "minecraft:diamond"}]}]}))
+    emu = _emulator(tmp_path, backend, {
+        "t:main": "give Alex minecraft:stone 2304\nadvancement grant Alex only t:a",
+    }, {"a": {"criteria": {"x": {"trigger": "minecraft:impossible"}}, "rewards": {"loot": ["t:gift"],
+                                                                                  "recipes": ["minecraft:stick"]}}},
+        players=("Alex",))
+    emu.call("t:main")
+    [item] = [entity_nbt(e) for e in emu.state.entities.entities if e.type == "minecraft:item"]
+    [alex] = emu.state.entities.players()
+    assert item["Item"]["id"] == "minecraft:diamond" and item["PickupDelay"] == 0
+    assert [int(v) for v in item["Owner"]] == list(alex.uuid)
+    assert float(item["Pos"][1]) == pytest.approx(1.62 - 0.3, abs=1e-6)
+    warnings = [d for d in emu.diagnostics if d.unmodelled]
+    assert ["recipes reward is not modelled" in d.message for d in warnings] == [True]
