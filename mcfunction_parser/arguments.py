@@ -182,10 +182,10 @@ def _java_round(value: float) -> int:
     return max(-2**31, min(2**31 - 1, math.floor(value + 0.5)))
 
 
-def duration(r: Reader) -> int:
+def duration(r: Reader, minimum: int = 0) -> int:
     """A time argument (``10``, ``10t``, ``2.5s``, ``1d``) converted to ticks (rounded as the game
     does: TimeArgument.parse multiplies the float by the unit in float and takes Math.round);
-    TimeArgument rejects a negative tick count."""
+    TimeArgument rejects a tick count below its minimum (0 unless the command says otherwise)."""
     start = r.pos
     m = _TIME.match(r.text, start)
     number, unit = m.group(1), m.group(2)
@@ -194,8 +194,8 @@ def duration(r: Reader) -> int:
     if not FLOAT_TEXT.match(number):
         r.fail(f"invalid time '{number}'", start)
     ticks = _java_round(snbt.to_float32(snbt.to_float32(float(number)) * _TIME_UNITS[unit]))
-    if ticks < 0:
-        r.fail(f"time must be at least 0 ticks, got {m.group()}", start)
+    if ticks < minimum:
+        r.fail(f"time must be at least {minimum} ticks, got {m.group()}", start)
     r.pos = m.end()
     return ticks
 

@@ -88,6 +88,7 @@ COMMANDS: dict[str, tuple[Version, Version | None, int]] = {
     "stopwatch": ((1, 21, 11), None, 2),  # 25w41a
     "stopsound": (OLDEST, None, 2),
     "summon": (OLDEST, None, 2),
+    "swing": ((26, 1, 0), None, 2),  # in 26.1's command tree (minecraft-data), not 1.21.11's
     "tag": (OLDEST, None, 2),
     "team": (OLDEST, None, 2),
     "teammsg": (OLDEST, None, 0),
@@ -115,6 +116,7 @@ COMMANDS: dict[str, tuple[Version, Version | None, int]] = {
 FEATURES: dict[str, tuple[Version, Version | None]] = {
     "macro lines": ((1, 20, 2), None),  # 23w31a
     "line continuation": ((1, 20, 2), None),  # 23w31a
+    "world clocks": ((26, 1, 0), None),  # 26.1's tree: time of <clock>, pause, resume, rate, set <marker>
     "function arguments": ((1, 20, 2), None),  # 23w31a: function NAME {..} / with
     "return run": ((1, 20, 3), None),  # 23w31a, removed in 1.20.2-pre1, back in 23w41a
     "return fail": ((1, 20, 3), None),  # 23w44a

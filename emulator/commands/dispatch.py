@@ -18,7 +18,7 @@ from . import advancements, blocks, bossbar, conditions, data, entities, items, 
 # (their result, the number of players reached, is the one thing left unmodelled).
 NO_OBSERVABLE_EFFECT = frozenset({
     "particle", "playsound", "stopsound", "title", "me", "msg", "tell", "w", "teammsg", "tm", "help",
-    "debug", "perf", "jfr", "save-all", "save-off", "save-on",
+    "debug", "perf", "jfr", "save-all", "save-off", "save-on", "swing",
 })
 
 
@@ -30,7 +30,7 @@ def _unread(env, cmd: ast.UnreadCommand, ctx) -> int:
 HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
             **items.HANDLERS, ast.UnreadCommand: _unread}
 # the commands the parser keeps as text, by name
-GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS}
+GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **server.GENERIC_HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

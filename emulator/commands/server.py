@@ -101,6 +101,13 @@ def time(env, cmd: ast.Time, ctx) -> int:
     return wrap32(_java_rem(state.daytime, DAY_TICKS))
 
 
+def world_clock(env, cmd: ast.GenericCommand, ctx) -> int:
+    """The clock forms of ``time`` from 26.1 (``time of <clock> ...``, ``pause``, ``rate`` ...),
+    which the parser keeps as text: not modelled."""
+    env.unmodelled(cmd, f"'{cmd.text}' is not emulated (26.1's world clocks): it succeeds without effect")
+    return 1
+
+
 def random(env, cmd: ast.RandomCommand, ctx) -> int:
     """``random value|roll RANGE [SEQUENCE]``: a bound left open is Integer.MIN/MAX_VALUE; the span
     max - min must be 1 .. 2147483646. ``roll`` broadcasts "<name> rolled N (from A to B)" (logged
@@ -168,3 +175,5 @@ HANDLERS = {
     ast.RandomCommand: random,
     ast.Trigger: trigger,
 }
+# the forms the parser keeps as text, by command name
+GENERIC_HANDLERS = {"time": world_clock}

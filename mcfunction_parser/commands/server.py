@@ -5,10 +5,10 @@ import re
 
 from .. import ast
 from ..arguments import duration, objective
-from ..features import gamerule_type, version_text
+from ..features import FEATURES, gamerule_type, version_text
 from ..primitives import int_range, resource_location
-from ..reader import Reader, show
-from .tree import root_for
+from ..reader import ParseError, Reader, show
+from .tree import root_for, tree_command
 
 _RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")
 TIME_NAMES = {"day": 1000, "noon": 6000, "night": 13000, "midnight": 18000}
@@ -81,6 +81,8 @@ def random(r: Reader, loc) -> ast.Command:
 
 
 def time(r: Reader, loc) -> ast.Command:
+    if r.version >= FEATURES["world clocks"][0]:
+        return _time_with_clocks(r, loc)
     action = r.keyword(("add", "set", "query"), "time action")
     r.space("time" if action != "query" else "daytime, gametime or day")
     if action == "query":
@@ -95,6 +97,29 @@ def time(r: Reader, loc) -> ast.Command:
         value = duration(r)
     r.finish()
     return ast.Time(loc, action, value, None)
+
+
+def _time_with_clocks(r: Reader, loc) -> ast.Command:
+    """``time`` from 26.1 (world clocks). ``time add|set <ticks>`` (add takes a negative time from
+    26.1) and ``time query gametime`` keep their AST and meaning here; the clock forms (``of
+    <clock>``, ``pause``, ``resume``, ``rate``, ``query time|<timeline>``, ``set <time marker>``,
+    which took the place of ``set day`` ...) are checked against the release's command tree and
+    kept as text: their clocks are not modelled."""
+    text, start = r.text, r.pos
+    if text.startswith(" query gametime", start) and start + 15 == r.end:
+        r.pos = r.end
+        return ast.Time(loc, "query", None, "gametime")
+    for action, minimum in (("add", -2**31), ("set", 0)):
+        value_at = start + len(action) + 2
+        if text.startswith(f" {action} ", start) and value_at < r.end and text[value_at] in "-.0123456789":
+            try:  # Brigadier tries <time> first; what it refuses may still be a time marker id
+                r.pos = value_at
+                value = duration(r, minimum)
+                r.finish()
+                return ast.Time(loc, action, value, None)
+            except ParseError:
+                r.pos = start
+    return tree_command(r, loc, "time")
 
 
 def trigger(r: Reader, loc) -> ast.Command:

@@ -10,16 +10,16 @@ from mcfunction_parser.pack.versions import RELEASE_FORMATS
 
 
 def test_every_known_release_has_a_command_tree_or_a_stand_in(tmp_path, monkeypatch):
-    """dpemu ships trees up to 1.21.11; the year-numbered releases (26.x) are checked against the
-    newest one, and stand_in says how to get their own."""
+    """dpemu ships trees up to 26.1; a later release (26.2) is checked against the newest one, and
+    stand_in says how to get its own."""
     monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
     newest = max(gamedata._index()["commands"])
     for version in RELEASE_FORMATS:
         release = gamedata.tree_release(version)
-        if version > newest:
+        if version[:2] > newest[:2]:
             assert release == newest and "--reports" in gamedata.stand_in(version)
         else:
-            assert release >= version
+            assert release[:2] >= version[:2]
             assert (gamedata.stand_in(version) is None) is (release[:2] == version[:2])
         assert "execute" in gamedata.command_tree(version)["children"]
 
@@ -40,9 +40,10 @@ def test_trees_follow_the_releases():
 
 def test_a_release_after_every_tree_says_how_to_get_its_own(tmp_path, monkeypatch):
     monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
-    message = gamedata.stand_in((26, 1, 0))
-    assert "Minecraft 26.1" in message and "--reports" in message and str(tmp_path / "26.1") in message
-    assert "against the 1.21.11 command tree" in message and "-DbundlerMainClass" in message
+    message = gamedata.stand_in((26, 2, 0))
+    assert "Minecraft 26.2" in message and "--reports" in message and str(tmp_path / "26.2") in message
+    assert "against the 26.1 command tree" in message and "-DbundlerMainClass" in message
+    assert gamedata.stand_in((26, 1, 2)) is None
 
 
 def test_releases_before_every_tree_name_the_tree_they_are_checked_with(tmp_path, monkeypatch):
@@ -94,6 +95,13 @@ def test_registries_and_block_states():
         "facing": "north", "half": "bottom", "shape": "straight", "waterlogged": "false"}
     assert gamedata.default_state("sea_pickle", (1, 13, 0)) == {"pickles": "1", "waterlogged": "true"}
     assert gamedata.default_state("stone", (1, 20, 0)) == {} and gamedata.default_state("nope", (1, 20, 0)) is None
+    # RedStoneWireBlock's default (every side none, power 0), from 26.1's data
+    assert gamedata.default_state("redstone_wire", (26, 1, 0)) == {
+        "east": "none", "north": "none", "power": "0", "south": "none", "west": "none"}
     # newer releases than the newest registry data fall back to it, flagged as not exact
-    assert gamedata.registry_release((1, 21, 11)) == ((1, 21, 4), False)
-    assert gamedata.registry_release((1, 21, 4)) == ((1, 21, 4), True)
+    assert gamedata.registry_release((26, 2, 0)) == ((26, 1, 0), False)
+    assert gamedata.registry_release((1, 21, 7)) == ((1, 21, 6), False)
+    assert gamedata.registry_release((1, 21, 11)) == ((1, 21, 11), True)
+    assert "copper_golem" in gamedata.registry("entity_type", (1, 21, 9))  # 25w31a
+    assert "copper_golem" not in gamedata.registry("entity_type", (1, 21, 8))
+    assert "mannequin" in gamedata.registry("entity_type", (1, 21, 11))

@@ -77,10 +77,12 @@ def test_arguments_follow_the_release():
 def test_ids_unknown_to_older_registry_data_are_warnings():
     from mcfunction_parser.diagnostics import Loc
     from mcfunction_parser.parse import parse_command
-    # 1.21.11 is newer than the newest registries shipped (1.21.4): a new id may exist there
-    cmd, diags = parse_command("give @s no_such_item", Loc("t", 1, 1), (1, 21, 11))
+    # 26.2 is newer than the newest registries shipped (26.1): a new id may exist there
+    cmd, diags = parse_command("give @s no_such_item", Loc("t", 1, 1), (26, 2, 0))
     assert cmd is not None and [d.severity for d in diags] == ["warning"]
-    assert "not in the 1.21.4 registry" in diags[0].message
+    assert "not in the 26.1 registry" in diags[0].message
+    _, diags = parse_command("give @s no_such_item", Loc("t", 1, 1), (1, 21, 11))
+    assert [d.severity for d in diags] == ["error"]
 
 
 def test_a_release_newer_than_every_tree_is_checked_against_the_newest_as_warnings(tmp_path, monkeypatch):
@@ -173,12 +175,31 @@ def test_particle_options_per_release(line, version, message):
 
 def test_a_line_a_release_after_every_tree_may_accept_is_kept_unread():
     from mcfunction_parser.parse import parse_function
-    # 26.1 has no tree here and may have changed any syntax (its `time of <clock>`): a warning and an
-    # UnreadCommand, so the function loads as it may in the game; 1.21.11 still refuses the line
-    text = "time of a:clock add 1t\nunknowncmd 1\ntime add 1t\n"
-    function, diags = parse_function(text, "f", "a:f", (26, 1, 0))
+    # 26.2 has no tree here (26.1's stands in) and may have changed any syntax: a line no reader
+    # accepts is a warning and an UnreadCommand, so the function loads as it may in the game
+    text = "frobnicate 1\nscoreboard players frob x\ntime add 1t\n"
+    function, diags = parse_function(text, "f", "a:f", (26, 2, 0))
     assert [d.severity for d in diags] == ["warning", "warning"]
     assert [type(c).__name__ for c in function.commands] == ["UnreadCommand", "UnreadCommand", "Time"]
-    assert function.commands[0].name == "time" and "dpemu has none for 26.1" in function.commands[0].reason
-    function, diags = parse_function(text, "f", "a:f", (1, 21, 11))
+    assert function.commands[0].name == "frobnicate"
+    assert function.commands[0].reason == ("unknown command 'frobnicate' (checked against the 26.1 command tree: "
+                                           "dpemu has none for 26.2)")
+    function, diags = parse_function(text, "f", "a:f", (26, 1, 0))
     assert [d.severity for d in diags] == ["error", "error"] and len(function.commands) == 1
+
+
+def test_26_1_time_has_world_clocks():
+    from mcfunction_parser.parse import parse_function
+    # 26.1's command tree (minecraft-data 3.119's commands.json): time of <clock> add|set|pause|
+    # resume|rate|query, time pause|resume|rate, query time|<timeline>, set <time marker>; time add
+    # takes a negative time; time query day|daytime are gone ("daytime" reads as a timeline id)
+    text = ("time add -5\ntime set 100\ntime query gametime\ntime of a:clock add 1t\ntime pause\n"
+            "time set a:dawn\ntime of a:clock rate 0\ntime query daytime extra\n")
+    function, diags = parse_function(text, "f", "a:f", (26, 1, 0))
+    kinds = [(type(c).__name__, getattr(c, "value", None)) for c in function.commands]
+    assert kinds == [("Time", -5), ("Time", 100), ("Time", None), ("GenericCommand", None),
+                     ("GenericCommand", None), ("GenericCommand", None)]
+    assert [(d.line, d.message) for d in diags] == [(7, "number must be at least 1e-05, got 0"),
+                                                    (8, "expected repetition, got 'extra'")]
+    _, diags = parse_function("time add -5\ntime of a:clock pause\nswing @s\n", "f", "a:f", (1, 21, 11))
+    assert [d.line for d in diags] == [1, 2, 3]
