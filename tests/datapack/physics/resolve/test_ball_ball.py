@@ -105,6 +105,15 @@ def test_contact_shift_of_a_pair_moving_together_only_closes_its_gap():
     assert list(a) == [0, 0] and list(b) == pytest.approx([-39, -10], abs=1)
 
 
+def test_contact_shift_pushes_a_pair_out_of_an_overlap_it_would_leave_only_slowly():
+    # a overlaps b by 300 um and closes at 400 um/tick while sliding past at 4000 um/tick: on
+    # straight paths it would have entered 0.75 tick ago, 3 mm back along its path (a ball squeezed
+    # between two others at one instant: that move carried it into a third ball); it moves out
+    # along the normal instead, to 2R + 1
+    a, b = touch_shifts((400, 4000), -300)
+    assert list(a) == pytest.approx([-301, 0], abs=1) and list(b) == [0, 0]
+
+
 def exact_contact_normal(a, v_a, b, v_b, distance=57150.0):
     """The unit normal where the straight paths first meet at ``distance`` (float)."""
     d, w = np.array(b, float) - a, np.array(v_b, float) - v_a

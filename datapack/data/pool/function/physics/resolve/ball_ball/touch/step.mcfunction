@@ -5,7 +5,7 @@
 # put the balls back: |g| did not shrink (or is more than 2 mm), c <= 0, or a move of more than 30 mm.
 # Reads/writes: @s pool.x pool.z, #ball_ball.b.x #ball_ball.b.z #ball_ball.last #ball_ball.steps
 # #cost.work pool.tmp; reads the velocities and #ball_ball.fast. Writes: #ball_ball.g #ball_ball.c
-# #ball_ball.ag #ball_ball.sx #ball_ball.sz pool.tmp and the math library's temporaries.
+# #ball_ball.ag #ball_ball.t #ball_ball.sx #ball_ball.sz pool.tmp and the math library's temporaries.
 function pool:physics/resolve/ball_ball/touch/gap
 function pool:physics/resolve/ball_ball/touch/closing
 scoreboard players operation #ball_ball.ag pool.tmp = #ball_ball.g pool.tmp
@@ -19,19 +19,17 @@ scoreboard players add #ball_ball.steps pool.tmp 1
 # the event's estimate (pool:physics/events/run) covers one move; each further one is charged
 execute if score #ball_ball.steps pool.tmp matches 2.. run scoreboard players add #cost.work pool.tmp 250
 scoreboard players operation #ball_ball.last pool.tmp = #ball_ball.ag pool.tmp
-# the move (v_a - v_b) g / c of the faster ball (#ball_ball.fast: 1 for a, 0 for b) relative to the
-# other (|v_a - v_b| g < 2^31: each |v| <= 5e5 um/tick, |g| <= 2000 um)
-scoreboard players operation $b pool.math = #ball_ball.c pool.tmp
-scoreboard players operation $a pool.math = @s pool.vx
-scoreboard players operation $a pool.math -= #ball_ball.b.vx pool.tmp
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation #ball_ball.sx pool.tmp = $out pool.math
-scoreboard players operation $a pool.math = @s pool.vz
-scoreboard players operation $a pool.math -= #ball_ball.b.vz pool.tmp
-scoreboard players operation $a pool.math *= #ball_ball.g pool.tmp
-function pool:math/div_round
-scoreboard players operation #ball_ball.sz pool.tmp = $out pool.math
+# the move of the faster ball (#ball_ball.fast: 1 for a, 0 for b) relative to the other: along
+# their relative velocity (pool:physics/resolve/ball_ball/touch/relative), or along the normal out
+# of an overlap that the straight paths would take more than half a tick to leave (g < 0 and
+# |g| > c / 2, #ball_ball.t = 2 |g| then: a ball squeezed between two others at one instant, whose
+# time could not move): following the relative path back that far carried it millimetres into a
+# third ball
+scoreboard players set #ball_ball.t pool.tmp 0
+execute if score #ball_ball.g pool.tmp matches ..-1 run scoreboard players operation #ball_ball.t pool.tmp = #ball_ball.ag pool.tmp
+scoreboard players operation #ball_ball.t pool.tmp *= #2 pool.const
+execute if score #ball_ball.t pool.tmp <= #ball_ball.c pool.tmp run function pool:physics/resolve/ball_ball/touch/relative
+execute if score #ball_ball.t pool.tmp > #ball_ball.c pool.tmp run function pool:physics/resolve/ball_ball/touch/normal
 execute unless score #ball_ball.sx pool.tmp matches -30000..30000 run return run scoreboard players set #ball_ball.steps pool.tmp -1
 execute unless score #ball_ball.sz pool.tmp matches -30000..30000 run return run scoreboard players set #ball_ball.steps pool.tmp -1
 execute if score #ball_ball.fast pool.tmp matches 1 run scoreboard players operation @s pool.x += #ball_ball.sx pool.tmp
