@@ -6,5 +6,6 @@ from setuptools import find_packages, setup
 setup(
     packages=find_packages(include=["emulator*", "mcfunction_parser*", "poolgame*"]) + ["poolgame.datapack"],
     package_dir={"poolgame.datapack": "datapack"},
-    package_data={"poolgame.datapack": ["**/*"], "mcfunction_parser.gamedata": ["data/*"]},
+    # the VM's loop template: emulator.vm.variants renders smaller loops from it at run time
+    package_data={"poolgame.datapack": ["**/*"], "mcfunction_parser.gamedata": ["data/*"], "emulator.vm": ["loop.py.in"]},
 )

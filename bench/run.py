@@ -267,7 +267,8 @@ class _VMTimer:
     def __enter__(self):
         from emulator.vm import loop
 
-        self.loop, self.run = loop, loop.run
+        self.loop = getattr(self.backend, "loop", loop)  # the loop module the backend runs (emulator.vm.variants)
+        self.run = self.loop.run
 
         def timed(*args):
             start = time.perf_counter()
@@ -276,7 +277,7 @@ class _VMTimer:
             finally:
                 self.seconds += time.perf_counter() - start
 
-        loop.run = timed
+        self.loop.run = timed
         self.backend.stale = True  # it calls the run it finds when it makes its machine
         return self
 

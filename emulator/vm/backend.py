@@ -11,7 +11,7 @@ from collections import Counter
 import numba
 import numpy as np
 
-from emulator.vm import loop as vm
+from emulator.vm import loop as vm, variants
 from emulator.vm.loop import R_BATCH, R_BSTOP, R_CTX, R_HAS, R_NLOG, R_OK, R_PC, R_VAL, ST_HOST
 from emulator.commands import entities as world_entities
 from emulator.runtime.backend import HostRun, RootResult, TickBatch, report_quota_cut
@@ -289,7 +289,8 @@ class NumbaBackend:
             sb.trigger, self.counts, self.totals, self.active, self.ovf, self.cints, self.cfloats, sels, sfloats, tests,
             table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack, self.coll,
             self.as_cache, self.batch, self.leaves.meta, self.leaves.values)
-        self._resume = _entry_point(vm.run, self.machine)
+        self.loop = variants.loop_for(self.program.opcodes)
+        self._resume = _entry_point(self.loop.run, self.machine)
         self._world = (sb.values, table.ints, table.tags, table.count)
         self.leaves_used = bool(self.leaves.leaves)  # the program names numbers of storage
         self.stale = False

@@ -57,10 +57,16 @@ _MACRO = re.compile(r"^(\s*)([A-Z_]+)\((.*)\)$")
 _CASE = re.compile(r"^(\s*)case (\w+):(\s*#.*)?$")
 
 
-def render() -> str:
-    """The text of emulator/vm/loop.py."""
+def render(families: frozenset[str] | None = None) -> str:
+    """The text of emulator/vm/loop.py; with ``families``, of a loop whose dispatch chain serves
+    only those families' opcodes (and the chain's last case): see :mod:`emulator.vm.variants`."""
     lines = TEMPLATE.read_text().splitlines()
     cases = [i for i, line in enumerate(lines) if _CASE.match(line)]
+    if families is not None:
+        left = {j for i in cases[:-1] if _CASE.match(lines[i]).group(2) not in families
+                for j in (i, *_case_body(lines, i))}
+        lines = [line for i, line in enumerate(lines) if i not in left]
+        cases = [i for i, line in enumerate(lines) if _CASE.match(line)]
     out = []
     for i, line in enumerate(lines):
         if line.strip() == "# @opcodes":
@@ -71,8 +77,28 @@ def render() -> str:
             out.append(_dispatch(line, first=i == cases[0], last=i == cases[-1]))
         else:
             out += _expand(line)
-    _check_cases([_CASE.match(lines[i]).group(2) for i in cases])
+    if families is None:
+        _check_cases([_CASE.match(lines[i]).group(2) for i in cases])
     return HEADER + "\n".join(out) + "\n"
+
+
+def run_source(families: frozenset[str]) -> str:
+    """The text of ``run`` alone (its decorator to its end) in the loop serving only ``families``."""
+    text = render(families)
+    start = text.index('@njit(cache=True, error_model="numpy")\ndef run(')
+    end = text.index("\ndef ", text.index("\ndef run(", start) + 1)
+    return text[start:end].rstrip() + "\n"
+
+
+def _case_body(lines: list[str], at: int) -> list[int]:
+    """The line numbers of the body of the case at ``at`` (up to the next line indented as much or less)."""
+    depth = len(lines[at]) - len(lines[at].lstrip())
+    body = []
+    for i in range(at + 1, len(lines)):
+        if lines[i].strip() and len(lines[i]) - len(lines[i].lstrip()) <= depth:
+            break
+        body.append(i)
+    return body
 
 
 def _constants() -> list[str]:

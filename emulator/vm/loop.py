@@ -97,27 +97,27 @@ OP_GET = 10  # [entry] a h (a name or @s), b o
 OP_ENABLE = 11  # [entry] a: holders, b: objective. `scoreboard players enable`
 OP_TAG = 12  # [entry] a: selector, b: tag number (bit b & 63 of word b >> 6), c: 1 add / 0 remove. `tag SEL add|remove
 # T` (fails when nothing changes; an entity holds at most MAX_TAGS)
-OP_HOST = 13  # [entry] a: host op index. A final command run by Python (charged here, per context)
-OP_LOG = 14  # [entry] a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
+OP_LOG = 13  # [entry] a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player (TellRawCommand:
 # EntityArgument.getPlayers), else its result is the count. The line is queued in logbuf (op, context) either way: the
 # host's tellraw decides what is written, when the VM returns (before Python serves anything else, so the log keeps
 # its order)
-OP_GETFIELD = 15  # [entry] a: column of the entity floats (entity_table EF_*), b: scale (index into floats), c: host op
+OP_GETFIELD = 14  # [entry] a: column of the entity floats (entity_table EF_*), b: scale (index into floats), c: host op
 # index. `data get entity @s PATH [S]` on a numeric field the table keeps (Pos, Motion, Rotation, a display's
 # transformation): Mth.floor(value * S); an entity without that field (transformation on another type) goes to the
 # host
-OP_SETLEAF = 16  # [entry] a: storage leaf (vm.storage_leaves), b: its number's type (LEAF_*), c: the number (index into
+OP_SETLEAF = 15  # [entry] a: storage leaf (vm.storage_leaves), b: its number's type (LEAF_*), c: the number (index into
 # floats), d: host op index. `data modify storage S P set value N`: fails when the same number is there ("Nothing
 # changed"); no number there goes to the host (which creates the path)
-OP_GETLEAF = 17  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
+OP_GETLEAF = 16  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
 # [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host
-OP_TP = 18  # [entry] a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: flags (the
+OP_TP = 17  # [entry] a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: flags (the
 # relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles TP_REL_YAW, TP_REL_PITCH). `tp [SEL] X Y
 # Z [YAW PITCH]`: every target to the same position (the execution position plus the relative parts, or ^ from its
 # anchor), each keeping its rotation (TP_SELF: the execution rotation; TP_ROT: the given one, `~` from the execution
 # rotation; wrapped, the pitch clamped) and losing its vertical motion; outside the spawnable bounds the command
 # fails. Always followed by the command's HOST, which runs it instead when a target goes to another level (the
 # context's: the host moves it in the order); TP skips it otherwise
+OP_HOST = 18  # [entry] a: host op index. A final command run by Python (charged here, per context)
 OP_SELHOLDERS = 19  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
 # op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
 # separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
@@ -178,7 +178,7 @@ OP_RESUME = 64  # [free] an advancement reward's call came back (Program.REWARD_
 # the registers the command that earned it left
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
-FIRST_LINE, LAST_LINE = 8, 18
+FIRST_LINE, LAST_LINE = 8, 17
 FIRST_CONDITION, LAST_CONDITION = 20, 24
 FIRST_CALL, LAST_CALL = 27, 28
 FIRST_RETURN, LAST_RETURN = 29, 34
@@ -1314,9 +1314,6 @@ def run(m):
                 ok = 1 if changed else 0
                 val = changed
                 pc += 1
-            elif op == OP_HOST:
-                status = ST_HOST
-                break
             elif op == OP_TP:
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
                             efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
@@ -1635,6 +1632,18 @@ def run(m):
         elif op == OP_STOP:  # even with no context left: nothing of the chain follows
             alive = 0
             pc = abort
+        elif op == OP_HOST:  # a family of its own: the loops without the line commands serve it (emulator.vm.variants)
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[pc] += 1
+            status = ST_HOST
+            break
         elif op == OP_HOSTSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1

@@ -78,7 +78,6 @@ _ROWS = [
         ("ENABLE", "ho", ENTRY, "a: holders, b: objective. `scoreboard players enable`"),
         ("TAG", "sib", ENTRY, "a: selector, b: tag number (bit b & 63 of word b >> 6), c: 1 add / 0 remove. `tag "
                               "SEL add|remove T` (fails when nothing changes; an entity holds at most MAX_TAGS)"),
-        ("HOST", "x", ENTRY, "a: host op index. A final command run by Python (charged here, per context)"),
         ("LOG", "xs", ENTRY, "a: host op index, b: selector. `tellraw SEL`: fails when SEL finds no player "
                              "(TellRawCommand: EntityArgument.getPlayers), else its result is the count. The line is "
                              "queued in logbuf (op, context) either way: the host's tellraw decides what is written, "
@@ -103,6 +102,7 @@ _ROWS = [
                              "which runs it instead when a target goes to another level (the context's: the host "
                              "moves it in the order); TP skips it otherwise"),
     ]),
+    *_single("HOST", "x", ENTRY, "a: host op index. A final command run by Python (charged here, per context)"),
     *_single("SELHOLDERS", "sb", FREE, "a: selector, b: 0 targets / 1 sources. The holders of the selector's "
                                        "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "
                                        "sources from the buffer's middle (R_NSEL2 of them). A separate op keeps calls "

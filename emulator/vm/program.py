@@ -46,6 +46,7 @@ class Program:
     names: list[str] = field(default_factory=list)  # operands of OP_FAIL (missing function ids)
     floats: list[float] = field(default_factory=list)  # float operands (store scales), by index
     levels: Levels = field(default_factory=Levels)  # the world's: OP_IFDIM's operands and the contexts' CI_DIM
+    opcodes: set[int] = field(default_factory=set)  # the opcodes the code uses (emulator.vm.variants)
     _arrays: tuple | None = None
 
     ROOT_PC = 0  # the root stub: CALLREG then HALT
@@ -60,6 +61,7 @@ class Program:
     def emit(self, op: int, *args: int, loc: Loc | None, owner: int) -> int:
         row = [op, *args] + [0] * (WIDTH - 1 - len(args))
         self.rows.append(row)
+        self.opcodes.add(op)
         self.locs.append(loc)
         self.owner.append(owner)
         self._arrays = None

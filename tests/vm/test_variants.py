@@ -1,0 +1,51 @@
+"""The small dispatch loop (emulator.vm.variants): what it serves, that it is the one a small
+program runs, and that a program growing past it moves to the whole loop."""
+from __future__ import annotations
+
+from pathlib import Path
+
+from emulator.vm import generate, loop, opcodes, variants
+from tests.vm.helpers import emulator_for
+
+SMALL_PACK = {
+    "t:main": "scoreboard objectives add o dummy\n"
+              "scoreboard players set #a o 7\n"
+              "scoreboard players operation #b o = #a o\n"
+              "scoreboard players operation #b o *= #a o\n"
+              "function t:add\n"
+              "say hello\n"
+              "return run function t:add",
+    "t:add": "scoreboard players add #b o 2\nreturn 9",
+}
+
+
+def test_the_whole_family_set_renders_the_whole_loop():
+    assert generate.render(frozenset(op.family for op in opcodes.TABLE)) == Path(loop.__file__).read_text()
+
+
+def test_the_small_loop_has_no_selector_entity_or_fork_branch():
+    # what makes the whole loop slow to compile (see the module's docs): none of it in the small one
+    text = generate.run_source(variants.SMALL)
+    for used in ("_select(", "_matches(", "eints[", "efloats[", "etags[", "fork_contexts(", "_entity_context("):
+        assert used not in text, used
+    assert "case " not in text and "status = ST_HOST" in text
+
+
+def test_a_small_program_runs_the_small_loop_as_the_reference_runs_it(tmp_path):
+    results = {}
+    for backend in ("numba", "python"):
+        emu = emulator_for(tmp_path / backend, SMALL_PACK, backend=backend)
+        results[backend] = (emu.call("t:main"), emu.score("#a", "o"), emu.score("#b", "o"))
+        if backend == "numba":
+            assert emu.backend.loop is not loop and emu.backend.loop.run is not loop.run
+    assert results["numba"] == results["python"] == (9, 7, 53)
+
+
+def test_a_macro_instance_past_the_small_set_moves_to_the_whole_loop(tmp_path):
+    pack = {**SMALL_PACK,
+            "t:main": "scoreboard objectives add o dummy\nscoreboard players set #a o 0\nfunction t:m {v: 3}",
+            "t:m": "$execute if score #a o matches 0 run scoreboard players set #c o $(v)"}
+    emu = emulator_for(tmp_path, pack)
+    emu.call("t:main")
+    assert emu.backend.loop is loop
+    assert emu.score("#c", "o") == 3
