@@ -8,19 +8,20 @@
   ids are checked against the release's item registry (:func:`.game_objects.check_id`).
 - ``slot(r, ranges=False)``: SlotArgument (one slot) or, with ``ranges``, SlotsArgument
   (``container.*``, ``armor.*`` ...): the name and the slot ids it stands for (SlotRanges).
-- ``COMPONENTS``: data component ids with the releases that have them (DataComponents);
-  ``SUB_PREDICATES``: the ``~`` predicates (ItemSubPredicates).
+- ``component_problem``: a data component id checked against the release's data component types
+  (DataComponents' registry, :mod:`.gamedata`); ``SUB_PREDICATES``: the ``~`` predicates
+  (ItemSubPredicates).
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): commands/arguments/item/ItemParser.java,
 ItemPredicateArgument.java, ComponentPredicateParser.java, world/inventory/SlotRanges.java,
-core/component/DataComponents.java, advancements/critereon/ItemSubPredicates.java; the component
-history from the minecraft.wiki "Data component format" page.
+core/component/DataComponents.java, advancements/critereon/ItemSubPredicates.java.
 """
 from __future__ import annotations
 
 import re
 
-from . import ast, codecs
+from . import ast, codecs, gamedata
+from .features import version_text
 from .game_objects import check_id
 from .primitives import resource_location
 from .reader import Reader
@@ -29,37 +30,7 @@ from .snbt import compound, value
 Version = tuple[int, int, int]
 _COMPONENT_ID = re.compile(r"[0-9a-z_:/.\-]*")
 COMPONENTS_VERSION: Version = (1, 20, 5)  # 24w09a: components replace the item's tag
-KNOWN_UNTIL: Version = (1, 21, 5)  # the table is complete up to this release
 
-_BASE = (
-    "custom_data max_stack_size max_damage damage unbreakable custom_name item_name lore rarity "
-    "enchantments can_place_on can_break attribute_modifiers custom_model_data repair_cost "
-    "creative_slot_lock enchantment_glint_override intangible_projectile food tool stored_enchantments "
-    "dyed_color map_color map_id map_decorations map_post_processing charged_projectiles bundle_contents "
-    "potion_contents suspicious_stew_effects writable_book_content written_book_content trim "
-    "debug_stick_state entity_data bucket_entity_data block_entity_data instrument "
-    "ominous_bottle_amplifier recipes lodestone_tracker firework_explosion fireworks profile "
-    "note_block_sound banner_patterns base_color pot_decorations container block_state bees lock "
-    "container_loot"
-)
-# component -> (first release, first release without it)
-COMPONENTS: dict[str, tuple[Version, Version | None]] = {
-    **{f"minecraft:{name}": ((1, 20, 5), None) for name in _BASE.split()},
-    "minecraft:hide_additional_tooltip": ((1, 20, 5), (1, 21, 5)),
-    "minecraft:hide_tooltip": ((1, 20, 5), (1, 21, 5)),
-    "minecraft:fire_resistant": ((1, 20, 5), (1, 21, 2)),
-    "minecraft:jukebox_playable": ((1, 21, 0), None),
-    **{f"minecraft:{name}": ((1, 21, 2), None) for name in (
-        "item_model consumable use_remainder use_cooldown damage_resistant enchantable equippable "
-        "repairable glider tooltip_style death_protection").split()},
-    **{f"minecraft:{name}": ((1, 21, 5), None) for name in (
-        "weapon blocks_attacks tooltip_display break_sound provides_banner_patterns provides_trim_material "
-        "potion_duration_scale villager/variant wolf/variant wolf/collar wolf/sound_variant fox/variant "
-        "salmon/size parrot/variant tropical_fish/pattern tropical_fish/base_color "
-        "tropical_fish/pattern_color mooshroom/variant rabbit/variant pig/variant cow/variant "
-        "chicken/variant frog/variant horse/variant painting/variant llama/variant axolotl/variant "
-        "cat/variant cat/collar sheep/color shulker/color").split()},
-}
 # component -> the shape of its value (DataComponents: each type's codec), for the components whose
 # codec is a number, a flag, an enum, a string, a list or a record with required fields; the others'
 # values are read as SNBT and not checked further
@@ -101,14 +72,22 @@ SUB_PREDICATES = frozenset(f"minecraft:{name}" for name in (
 
 
 def component_problem(name: str, version: Version) -> tuple[str, str] | None:
-    """(severity, message) when ``name`` is not a data component of ``version``."""
-    span = COMPONENTS.get(name)
-    if span is not None and span[0] <= version and (span[1] is None or version < span[1]):
+    """(severity, message) when ``name`` is not a data component type of ``version``: an error
+    against the release's own registry, a warning against an older release's (a release after
+    the newest data dpemu has may have added it)."""
+    namespace, _, path = name.partition(":")
+    try:
+        release, exact = gamedata.registry_release(version)
+    except gamedata.GameDataMissing:
         return None
-    if span is not None:
+    known = gamedata.registry("data_component_type", release)
+    if not known or (namespace == "minecraft" and path in known):
+        return None
+    if not exact:
+        return "warning", (f"unknown component '{name}' (not in the {version_text(release)} registry, "
+                           "the newest dpemu has)")
+    if namespace == "minecraft" and gamedata.in_any_release("data_component_type", path):
         return "error", f"component '{name}' does not exist in this version"
-    if version > KNOWN_UNTIL:  # later releases added components this table does not list
-        return "warning", f"unknown component '{name}' (not a component up to 1.21.5)"
     return "error", f"unknown component '{name}'"
 
 

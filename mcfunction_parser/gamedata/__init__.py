@@ -6,6 +6,7 @@
                                       ``"entity_type"``, ``"particle_type"``, ``"enchantment"``,
                                       ``"mob_effect"``, ``"worldgen/biome"``, ``"attribute"``)
     registry_release(version)      -> (release of that data, exact: is it this very release)
+    in_any_release(name, id)       -> whether any release's registry ``name`` holds ``id``
     block_states(block, version)   -> {property: (values...)} of a block id, None if unknown
     default_state(block, version)  -> {property: value} of the block's default state, None if unknown
 
@@ -164,6 +165,12 @@ def registry(name: str, version: Version) -> frozenset[str]:
     """The ids of registry ``name`` (``"item"``, ``"worldgen/biome"``...) without ``minecraft:``;
     empty for a registry the data does not hold."""
     return frozenset(_registries(version).get(name, ()))
+
+
+@lru_cache(maxsize=None)
+def in_any_release(name: str, entry: str) -> bool:
+    """Whether ``entry`` (without ``minecraft:``) is in registry ``name`` of any shipped release."""
+    return any(entry in registry(name, release) for release in _index()["registries"])
 
 
 def block_states(block: str, version: Version) -> dict[str, tuple[str, ...]] | None:

@@ -7,7 +7,8 @@
   minor release: its last patch) and minecraft-data's ``pc/<release>/commands.json`` for 1.20.2,
   1.20.3 and 26.1, converted to the report's shape;
 - registries (blocks with their states and each block's default state, items, entity types,
-  particles, enchantments, effects, biomes, attributes): minecraft-data, per release it maps in
+  particles, enchantments, effects, biomes, attributes, and from 1.20.5 the data component types,
+  read from the protocol's SlotComponentType): minecraft-data, per release it maps in
   ``dataPaths.json``.
 
 minecraft-data (PrismarineJS, MIT) is read from its npm package: the maintained one, with the
@@ -112,8 +113,28 @@ def _default_state(block: dict) -> dict[str, str]:
     return dict(sorted(default.items()))
 
 
+def _component_types(protocol: dict) -> list[str] | None:
+    """The data component types of a release (1.20.5+): the names of the protocol's
+    ``SlotComponentType``, the network ids of DataComponents' registry."""
+    stack = [protocol]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, dict):
+            found = node.get("SlotComponentType")
+            if isinstance(found, list) and len(found) == 2 and "mappings" in found[1]:
+                return sorted(found[1]["mappings"].values())
+            stack.extend(node.values())
+        elif isinstance(node, list):
+            stack.extend(node)
+    return None
+
+
 def _registries(root: Path, paths: dict) -> dict:
     out: dict = {}
+    if "protocol" in paths:
+        components = _component_types(json.loads((root / paths["protocol"] / "protocol.json").read_text()))
+        if components:
+            out["data_component_type"] = components
     for kind, registry in _REGISTRY_FILES.items():
         if kind not in paths:
             continue

@@ -49,6 +49,15 @@ def test_component_existence_is_gated_by_version():
     assert parse("give @s stone[damage_resistant={types:'#minecraft:is_fire'}]", (1, 21, 4))[1] == []
     assert "does not exist" in parse("give @s stone[hide_tooltip={}]", V1215)[1][0][1]
     assert parse("give @s stone[tooltip_display={}]", V1215)[1] == []
+    # the component types are each release's DataComponents registry (minecraft-data's protocol,
+    # SlotComponentType): piercing_weapon came in 1.21.11, dye in 26.1
+    assert parse("give @s stone[piercing_weapon={}]", (1, 21, 11))[1] == []
+    assert "does not exist in this version" in parse("give @s stone[piercing_weapon={}]", (1, 21, 9))[1][0][1]
+    assert parse("give @s stone[dye='red']", (26, 1, 0))[1] == []
+    # after the newest data (26.1): an unknown component may be new, so a warning naming that data
+    cmd, problems = parse("give @s stone[brand_new={}]", (26, 2, 0))
+    assert cmd is not None and problems == [(15, "unknown component 'minecraft:brand_new' (not in the 26.1 "
+                                                 "registry, the newest dpemu has)")]
 
 
 @pytest.mark.parametrize("text,version,col,message", [
