@@ -30,8 +30,8 @@ def _version(env):
 def _test(env, predicate: ast.ItemPredicate | None):
     if predicate is None:
         return lambda stack: True
-    tags = env.state.resources.item_tag
-    return lambda stack: matches(predicate, stack, tags)
+    resources = env.state.resources
+    return lambda stack: matches(predicate, stack, resources)
 
 
 def _name(stack: ItemStack) -> str:

@@ -11,16 +11,18 @@ Public API
   item does not have is dropped: PatchedDataComponentMap.applyPatch).
 - ``to_nbt(stack, version)`` / ``from_nbt(tag)``: ``{id, count, components}`` from 1.20.5,
   ``{id, Count:1b, tag}`` before (ItemStack.save / ItemStack.parse, both forms are read).
-- ``matches(predicate, stack, item_tags)``: ItemPredicateArgument: id / ``#tag`` / ``*``, the
+- ``matches(predicate, stack, resources)``: ItemPredicateArgument: id / ``#tag`` / ``*``, the
   component tests (``component``, ``component=value``, ``count=N|{min,max}``, ``custom_data~{...}``,
-  ``damage~{...}``), or the older ``{nbt}`` partial match of the ``tag``. A ``~`` sub-predicate
+  ``damage~{...}``, ``enchantments~[...]``, ``stored_enchantments~[...]``), or the older
+  ``{nbt}`` partial match of the ``tag``. A ``~`` sub-predicate
   the emulator does not model raises ``Unmodelled`` (reported), never a silent false.
 - ``DEFAULTS``: the defaults modelled: ``max_stack_size`` (1, 16 or 64), ``max_damage`` and
   ``damage`` of damageable items. Other default components (lore, rarity ...) are not modelled.
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/item/ItemStack.java (CODEC, isSameItemSameComponents),
 core/component/PatchedDataComponentMap.java, commands/arguments/item/ItemPredicateArgument.java,
-advancements/critereon/ItemDamagePredicate.java, ItemCustomDataPredicate.java; durabilities from
+advancements/critereon/ItemDamagePredicate.java, ItemCustomDataPredicate.java,
+ItemEnchantmentsPredicate.java, EnchantmentPredicate.java; durabilities from
 world/item/Tiers.java and ArmorMaterials.java (base durability 11/16/15/13 x multiplier).
 """
 from __future__ import annotations
@@ -28,7 +30,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from mcfunction_parser import ast
-from mcfunction_parser.nbt import Byte, Compound, Int, String
+from mcfunction_parser.nbt import Byte, Compound, Int, List, String
 from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import compare_nbt, copy_tag, is_numeric, tags_equal
 
@@ -193,11 +195,12 @@ def from_nbt(tag) -> ItemStack:
 
 
 # ---------------------------------------------------------------------- predicates
-def matches(predicate: ast.ItemPredicate, stack: ItemStack, item_tags) -> bool:
-    """ItemPredicateArgument's test of one stack (an empty stack matches nothing but ``air``)."""
+def matches(predicate: ast.ItemPredicate, stack: ItemStack, resources) -> bool:
+    """ItemPredicateArgument's test of one stack (an empty stack matches nothing but ``air``);
+    ``resources``: the world's :class:`~emulator.world.resources.Resources` (its tags)."""
     if predicate.id is not None:
         if predicate.is_tag:
-            if stack.id not in item_tags(predicate.id):
+            if stack.id not in resources.item_tag(predicate.id):
                 return False
         elif stack.id != predicate.id:
             return False
@@ -205,10 +208,10 @@ def matches(predicate: ast.ItemPredicate, stack: ItemStack, item_tags) -> bool:
         return False  # '*' is any non-air item
     if predicate.tag is not None:
         return compare_nbt(predicate.tag, stack.tag)
-    return all(any(_test(t, stack) != t.negated for t in group) for group in predicate.tests)
+    return all(any(_test(t, stack, resources) != t.negated for t in group) for group in predicate.tests)
 
 
-def _test(test: ast.ComponentTest, stack: ItemStack) -> bool:
+def _test(test: ast.ComponentTest, stack: ItemStack, resources) -> bool:
     if test.name == "minecraft:count" and test.kind != "exists":  # MinMaxBounds.Ints: N or {min, max}
         bounds = _bounds(test.value)
         return bounds is not None and _within(bounds, stack.count)
@@ -217,7 +220,7 @@ def _test(test: ast.ComponentTest, stack: ItemStack) -> bool:
     if test.kind == "=":
         found = stack.component(test.name)
         return found is not None and value_equal(test.value, found)
-    return sub_predicate(test.name, test.value, stack)
+    return sub_predicate(test.name, test.value, stack, resources)
 
 
 def value_equal(wanted, found) -> bool:
@@ -243,7 +246,13 @@ def _within(bounds, number: float) -> bool:
     return (lo is None or number >= lo) and (hi is None or number <= hi)
 
 
-def sub_predicate(name: str, value, stack: ItemStack) -> bool:
+def sub_predicate(name: str, value, stack: ItemStack, resources) -> bool:
+    """ItemSubPredicate.matches: ``value`` as NBT; ``resources`` for the registry tags it names."""
+    if name in ("minecraft:enchantments", "minecraft:stored_enchantments"):
+        # ItemEnchantmentsPredicate: every EnchantmentPredicate of the list is in the component
+        levels = enchantment_levels(stack, name)
+        return isinstance(value, List) and all(
+            isinstance(p, Compound) and _enchantment_in(p, levels, resources) for p in value)
     if name == "minecraft:custom_data":  # ItemCustomDataPredicate: NbtPredicate on the custom data
         return compare_nbt(value, stack.component(name) or Compound())
     if name == "minecraft:damage":  # ItemDamagePredicate: only damageable items
@@ -258,3 +267,29 @@ def sub_predicate(name: str, value, stack: ItemStack) -> bool:
                     return False
         return True
     raise Unmodelled(f"the item sub-predicate '{name}~'")
+
+
+def _enchantment_in(predicate: Compound, levels: Compound, resources) -> bool:
+    """EnchantmentPredicate.containedIn: with ``enchantments`` (an id, a list, or a #tag), one of
+    them present at a level within ``levels``; without, any enchantment within ``levels``, or any
+    enchantment at all when ``levels`` bounds nothing."""
+    bounds = _bounds(predicate["levels"]) if "levels" in predicate else (None, None)
+    if bounds is None:
+        return False
+    present = {str(k): int(v) for k, v in levels.items() if is_numeric(v) and int(v) > 0}
+    wanted = predicate.get("enchantments")
+    if wanted is None:
+        if bounds == (None, None):
+            return bool(present)
+        return any(_within(bounds, level) for level in present.values())
+    if isinstance(wanted, String) and str(wanted).startswith("#"):
+        tag = _namespaced(str(wanted)[1:])
+        chosen = [e for e in present if resources.in_tag("enchantment", tag, e)]
+    else:
+        names = [wanted] if isinstance(wanted, String) else list(wanted) if isinstance(wanted, List) else []
+        chosen = [e for e in map(_namespaced, map(str, names)) if e in present]
+    return any(_within(bounds, present[e]) for e in chosen)
+
+
+def _namespaced(name: str) -> str:
+    return name if ":" in name else "minecraft:" + name

@@ -49,12 +49,12 @@ from emulator.world import advancement_progress, entity_predicate_format, invent
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
-from emulator.world.items import ItemStack, enchantment_level, sub_predicate, value_equal
+from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_level, sub_predicate, value_equal
 from emulator.world.living import is_living
 from emulator.world.loot_context import LootContext, in_range, integer, number, snbt_or_tag, to_tag
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
 from mcfunction_parser.items import SLOTS
-from mcfunction_parser.nbt import Byte, Int
+from mcfunction_parser.nbt import Byte, Compound, Int, List
 
 F32 = np.float32
 
@@ -267,11 +267,16 @@ def _slots(value: dict, ctx: LootContext, entity: Entity) -> bool:
     return True
 
 
+# the item sub-predicates (ItemSubPredicates) modelled: emulator.world.items.sub_predicate
+_SUB_PREDICATES = ("minecraft:custom_data", "minecraft:damage", "minecraft:enchantments",
+                   "minecraft:stored_enchantments")
+
+
 def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
     """ItemPredicate.test: ``items`` (id, list or #tag; ``item``/``tag`` before 1.17/1.20.5),
     ``count``, ``components`` (each equal to the stack's value, defaults included),
-    ``predicates`` (``custom_data``, ``damage``); before 1.20.5 ``nbt`` (a partial match of the
-    stack's tag)."""
+    ``predicates`` (:data:`_SUB_PREDICATES`); before 1.20.5 ``nbt`` (a partial match of the
+    stack's tag) and :func:`_old_item_fields`."""
     wanted = predicate.get("items", predicate.get("item"))
     if "tag" in predicate:
         wanted = "#" + predicate["tag"]
@@ -285,17 +290,61 @@ def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
             return False
     for name, value in predicate.get("predicates", {}).items():
         name = _id(name)
-        if name not in ("minecraft:custom_data", "minecraft:damage"):
+        if name not in _SUB_PREDICATES:
             raise Unmodelled(f"item sub-predicate '{name}'")
         value = snbt_or_tag(value) if name == "minecraft:custom_data" else to_tag(value)
-        if not sub_predicate(name, value, stack):
+        if not sub_predicate(name, value, stack, ctx.resources):
             return False
     if "nbt" in predicate and not compare_nbt(snbt_or_tag(predicate["nbt"]), stack.tag):
         return False
-    for key in ("durability", "enchantments", "stored_enchantments", "potion"):
-        if key in predicate:
-            raise Unmodelled(f"item predicate field '{key}'")
-    return True
+    # the fields of the ItemPredicate before 1.20.5; its codec from 1.20.5 ignores them
+    return tuple(ctx.version) >= COMPONENTS_VERSION or _old_item_fields(predicate, stack)
+
+
+def _old_item_fields(predicate: dict, stack: ItemStack) -> bool:
+    """ItemPredicate.matches before 1.20.5: ``durability`` (a damageable item's max damage less its
+    ``Damage``), ``enchantments`` / ``stored_enchantments`` (each EnchantmentPredicate contained in
+    the ``Enchantments`` / ``StoredEnchantments`` of the tag), ``potion`` (the tag's ``Potion``,
+    ``minecraft:empty`` when none)."""
+    tag = stack.tag or Compound()
+    if "durability" in predicate:
+        max_damage = stack.component("minecraft:max_damage")
+        if max_damage is None or _true(tag.get("Unbreakable")) or not in_range(
+                predicate["durability"], int(max_damage) - _int(tag.get("Damage"))):
+            return False
+    for key, saved in (("enchantments", "Enchantments"), ("stored_enchantments", "StoredEnchantments")):
+        levels = _old_enchantments(tag.get(saved))
+        if not all(_old_enchantment_in(wanted, levels) for wanted in predicate.get(key) or ()):
+            return False
+    return "potion" not in predicate or _id(predicate["potion"]) == _id(str(tag.get("Potion") or "empty"))
+
+
+def _true(value) -> bool:
+    return _int(value) != 0
+
+
+def _int(value) -> int:
+    """CompoundTag.getInt: a number's int value, 0 for anything else."""
+    return int(numeric_value(value)) if is_numeric(value) else 0
+
+
+def _old_enchantments(entries) -> dict[str, int]:
+    """EnchantmentHelper.deserializeEnchantments: ``{id, lvl}`` entries, the level clamped to 0 - 255."""
+    levels = {}
+    for entry in entries if isinstance(entries, List) else ():
+        if isinstance(entry, Compound) and "id" in entry:
+            levels[_id(str(entry["id"]))] = min(max(_int(entry.get("lvl")), 0), 255)
+    return levels
+
+
+def _old_enchantment_in(wanted: dict, levels: dict[str, int]) -> bool:
+    """EnchantmentPredicate.containedIn before 1.20.5: the ``enchantment`` present within
+    ``levels``; without one, some enchantment within ``levels``; with neither, true."""
+    bounds = wanted.get("levels")
+    if "enchantment" in wanted:
+        level = levels.get(_id(wanted["enchantment"]))
+        return level is not None and (bounds is None or in_range(bounds, level))
+    return bounds is None or any(in_range(bounds, level) for level in levels.values())
 # ---------------------------------------------------------------------- entities
 def entity_matches(predicate, ctx: LootContext, entity: Entity | None) -> bool:
     """EntityPredicate.matches(level, ctx.origin, entity); a list is a ContextAwarePredicate of

@@ -129,6 +129,18 @@ def test_a_state_property_the_block_lacks_fails_where_the_release_has_registries
         holds(powered, ctx(later, origin=(0.5, 0.5, 0.5)))
 
 
+def test_match_tool_reads_the_enchantments_sub_predicate(state):
+    # ItemPredicate.predicates: ItemSubPredicates.ENCHANTMENTS / STORED_ENCHANTMENTS
+    # (ItemEnchantmentsPredicate over the stack's component)
+    book = ItemStack("minecraft:enchanted_book", 1, Compound({"minecraft:stored_enchantments": Compound(
+        levels=Compound({"minecraft:mending": Int(1)}))}))
+    stored = {"condition": "match_tool", "predicate": {"predicates": {
+        "minecraft:stored_enchantments": [{"enchantments": "minecraft:mending", "levels": 1}]}}}
+    assert holds(stored, ctx(state, tool=book))
+    enchanted = {"condition": "match_tool", "predicate": {"predicates": {"minecraft:enchantments": [{}]}}}
+    assert not holds(enchanted, ctx(state, tool=book))
+
+
 def test_command_parameter_set_lacks_tool_block_and_damage(state):
     # ExecuteCommand.checkCustomPredicate uses LootContextParamSets.COMMAND: origin and this only
     assert not holds({"condition": "match_tool"}, ctx(state))
@@ -283,3 +295,29 @@ def test_a_slot_the_entity_lacks_is_the_empty_stack_until_1_21_11(version, match
     assert holds(props({"slots": {"container.*": {"items": "minecraft:air"}}}), this) == matches
     zombie = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0))  # its hands are slots it has
     assert holds(props({"slots": {"weapon.mainhand": {}}}), ctx(state, this=zombie))
+
+
+@pytest.mark.parametrize("version", [(1, 16, 5), (1, 20, 4)])
+def test_item_predicate_fields_before_1_20_5(version):
+    # ItemPredicate.matches before 1.20.5: durability (max damage - Damage of a damageable item),
+    # enchantments / stored_enchantments (EnchantmentPredicate.containedIn the deserialized tag
+    # list; with neither enchantment nor levels it is true), potion (the tag's Potion)
+    state = WorldState(version=version)
+    pick = ItemStack("minecraft:diamond_pickaxe", 1, tag=Compound(Damage=Int(61), Enchantments=List([
+        Compound(id=String("minecraft:silk_touch"), lvl=Int(1))])))
+    tool = ctx(state, tool=pick)
+
+    def tool_is(**fields):
+        return holds({"condition": "match_tool", "predicate": fields}, tool)
+    assert tool_is(durability={"max": 1500}) and not tool_is(durability={"min": 1501})
+    assert tool_is(enchantments=[{"enchantment": "minecraft:silk_touch", "levels": {"min": 1}}])
+    assert not tool_is(enchantments=[{"enchantment": "minecraft:fortune"}])
+    assert tool_is(enchantments=[{"levels": 1}]) and not tool_is(enchantments=[{"levels": {"min": 2}}])
+    assert tool_is(stored_enchantments=[{}]) and not tool_is(stored_enchantments=[{"levels": 1}])
+    assert tool_is(potion="minecraft:empty") and not tool_is(potion="minecraft:swiftness")
+
+
+def test_the_old_item_predicate_fields_are_ignored_from_1_20_5(state):
+    # ItemPredicate.CODEC from 1.20.5 has items, count, components, predicates: other keys are ignored
+    assert holds({"condition": "match_tool", "predicate": {"durability": {"min": 9999}}},
+                 ctx(state, tool=ItemStack("minecraft:stick")))
