@@ -102,6 +102,7 @@ class NumbaBackend:
         self.fstack = vm.new_fork_stack()  # contexts waiting for the rest of their chain (see emulator.vm.loop)
         self.coll = vm.new_fork_stack()  # contexts kept for their chain's final command
         self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
+        self.host_ops_at: dict[int, tuple] = {}  # pc -> (opcode, node) of the host ops the VM asked for
         # per host command whose reward functions are running: (its registers, the rewards still to run)
         self.rewards: list[tuple[np.ndarray, list]] = []
         self.batch = np.zeros(1, dtype=np.int64)  # run_ticks: the tick functions, then each root's cost
@@ -213,11 +214,16 @@ class NumbaBackend:
             machine = self._machine()
             if self.leaves_used:
                 leaves.read(storage)
-            status = self._resume(machine)
-            if self.leaves_used:
+                status = self._resume(machine)
                 leaves.write_back(storage)
+            else:
+                status = self._resume(machine)
             if status == ST_HOST and not rv[R_BATCH] and not rv[R_NLOG]:  # the common request, first
-                self._host_guarded(rv[R_PC])
+                pc = rv[R_PC]
+                try:
+                    self._host(pc)
+                except Exception as error:  # noqa: BLE001 - the pack's run must go on
+                    self._host_failed(pc, error)
                 continue
             batching = r[vm.R_BATCH] != 0
             if batching:
@@ -352,25 +358,30 @@ class NumbaBackend:
 
     # ------------------------------------------------------------------ requests
     def _host_guarded(self, pc: int) -> None:
-        """A bug in a host handler fails that one command with a diagnostic, never the run."""
         try:
             self._host(pc)
         except Exception as error:  # noqa: BLE001 - the pack's run must go on
-            r = self.regs
-            self.state.error(f"internal error running this command: {type(error).__name__}: {error}",
-                             self.traceback(pc))
-            r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = 1, 0, 0
-            r[vm.R_PC] = pc + 1
+            self._host_failed(pc, error)
+
+    def _host_failed(self, pc: int, error: Exception) -> None:
+        """A bug in a host handler fails that one command with a diagnostic, never the run."""
+        r = self.regs
+        self.state.error(f"internal error running this command: {type(error).__name__}: {error}",
+                         self.traceback(pc))
+        r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = 1, 0, 0
+        r[vm.R_PC] = pc + 1
 
     def _host(self, pc: int) -> None:
         """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
-        row = self.program.rows[pc]
-        opcode = row[0]
-        node = self.program.host_ops[row[_HOST_OPERAND[opcode]]].node
+        op = self.host_ops_at.get(pc)
+        if op is None:
+            row = self.program.rows[pc]
+            op = self.host_ops_at[pc] = (row[0], self.program.host_ops[row[_HOST_OPERAND[row[0]]]].node)
+        opcode, node = op
         r, rv = self.regs, self.rv
         self._current_pc = pc
         self.host_runs[pc] += 1
-        ctx = self.context(rv[R_CTX])
+        ctx = self.contexts.get(rv[R_CTX]) or self.context(rv[R_CTX])
         rv[R_PC] = pc + 1
         rv[R_BSTOP] = rv[R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
         if opcode in _FINAL_OPS:
