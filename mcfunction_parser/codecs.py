@@ -73,6 +73,16 @@ def a_list(value, version) -> str | None:
     return None if isinstance(value, _LISTS) else f"expected a list [...], got {kind(value)}"
 
 
+def list_of(element: Shape) -> Shape:
+    """``element.listOf()``: a list whose every entry reads as ``element``."""
+    def shape(value, version):
+        if not isinstance(value, _LISTS):
+            return f"expected a list [...], got {kind(value)}"
+        return next((f"entry {i}: {p}" for i, p in ((i, element(v, version)) for i, v in enumerate(value)) if p),
+                    None)
+    return shape
+
+
 def one_of(*words: str) -> Shape:
     """A StringRepresentable enum: one of ``words``."""
     def shape(value, version):

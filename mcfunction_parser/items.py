@@ -65,10 +65,28 @@ VALUES: dict[str, codecs.Shape] = {f"minecraft:{name}": shape for name, shape in
     "trim": codecs.fields(*((key, codecs.either(codecs.string, codecs.compound, what="an id or an inline definition"))
                             for key in ("material", "pattern"))),
 }.items()}
-SUB_PREDICATES = frozenset(f"minecraft:{name}" for name in (
-    "damage enchantments stored_enchantments potion_contents custom_data container bundle_contents "
-    "firework_explosion fireworks writable_book_content written_book_content attribute_modifiers trim "
-    "jukebox_playable").split())
+# MinMaxBounds.Ints.CODEC: Codec.either({min?, max?}, Codec.INT)
+_INT_BOUNDS = codecs.either(codecs.fields(optional=(("min", codecs.int_at_least(-2**31)),
+                                                    ("max", codecs.int_at_least(-2**31)))),
+                            codecs.int_at_least(-2**31), what="an int or {min, max}")
+# RegistryCodecs.homogeneousList: an id, a #tag, or a list of ids
+_HOLDERS = codecs.either(codecs.string, codecs.list_of(codecs.string), what="an id, a #tag or a list of ids")
+_ENCHANTMENTS = codecs.list_of(codecs.fields(optional=(("enchantments", _HOLDERS), ("levels", _INT_BOUNDS))))
+# the ``~`` predicates (ItemSubPredicates) and the shape of each one's value: its codec (1.21
+# critereon classes: ItemDamagePredicate, ItemEnchantmentsPredicate over EnchantmentPredicate,
+# ItemPotionsPredicate, ItemCustomDataPredicate (NbtPredicate: TagParser.LENIENT_CODEC),
+# ItemJukeboxPlayablePredicate; the others are records, read from a compound)
+SUB_PREDICATES: dict[str, codecs.Shape] = {f"minecraft:{name}": shape for name, shape in {
+    "damage": codecs.fields(optional=(("durability", _INT_BOUNDS), ("damage", _INT_BOUNDS))),
+    "enchantments": _ENCHANTMENTS,
+    "stored_enchantments": _ENCHANTMENTS,
+    "potion_contents": _HOLDERS,
+    "custom_data": codecs.either(codecs.string, codecs.compound, what="a compound or its SNBT as a string"),
+    "jukebox_playable": codecs.fields(optional=(("song", _HOLDERS),)),
+    **{name: codecs.compound for name in (
+        "container bundle_contents firework_explosion fireworks writable_book_content written_book_content "
+        "attribute_modifiers trim").split()},
+}.items()}
 
 
 def component_problem(name: str, version: Version) -> tuple[str, str] | None:
@@ -194,6 +212,17 @@ def _component_value(r: Reader, name: str):
     return tag
 
 
+def _sub_predicate_value(r: Reader, name: str):
+    """The SNBT value of sub-predicate ``name`` (``count~`` is the pseudo one: bounds)."""
+    start = r.pos
+    tag = value(r)
+    shape = _INT_BOUNDS if name == "minecraft:count" else SUB_PREDICATES.get(name)
+    problem = shape(tag, r.version) if shape is not None else None
+    if problem:
+        r.fail(f"invalid value for item sub-predicate '{name}': {problem}", start)
+    return tag
+
+
 def _bracketed(r: Reader, one, what: str) -> None:
     """``[one, one, ...]`` when the cursor is at ``[`` (whitespace allowed around each)."""
     if r.peek() != "[":
@@ -284,8 +313,9 @@ def _test(r: Reader) -> ast.ComponentTest:
             _check_component(r, name, start, sub_predicate=op == "~")
         r.pos += 1
         r.skip_ws()
-        # name=value: ComponentPredicateParser reads the value with the component's own codec
-        tag = _component_value(r, name) if op == "=" else value(r)
+        # name=value: ComponentPredicateParser reads the value with the component's own codec,
+        # name~value with the sub-predicate's
+        tag = _component_value(r, name) if op == "=" else _sub_predicate_value(r, name)
         return ast.ComponentTest(name, op, tag, negated)
     _check_component(r, name, start)
     return ast.ComponentTest(name, "exists", None, negated)

@@ -84,6 +84,20 @@ def test_component_existence_is_gated_by_version():
     ("give @s stone[custom_name={text:'a'}]", V1215, None, None),
     ("clear @s *[damage=x]", V121, 19, "expected an integer"),  # ComponentPredicateParser: the same codec
     ("clear @s *[damage~{durability:{min:1}}]", V121, None, None),  # a sub-predicate: its own codec
+    # ItemDamagePredicate: durability and damage are MinMaxBounds.Ints (an int or {min, max})
+    ("clear @s *[damage~{damage:3}]", V121, None, None),
+    ("clear @s *[damage~{durability:'x'}]", V121, 19, "'durability': expected an int or {min, max}"),
+    # ItemEnchantmentsPredicate: a list of EnchantmentPredicate (enchantments: a HolderSet, levels)
+    ("clear @s *[enchantments~[{enchantments:'minecraft:sharpness',levels:{min:2}}]]", V121, None, None),
+    ("clear @s *[enchantments~{levels:1}]", V121, 25, "expected a list [...], got a compound"),
+    ("clear @s *[stored_enchantments~[{levels:'x'}]]", V121, 32, "entry 0: 'levels': expected an int or"),
+    # ItemPotionsPredicate: a HolderSet of potions (an id, a #tag or a list of ids)
+    ("clear @s *[potion_contents~['minecraft:healing','#minecraft:x']]", V121, None, None),
+    ("clear @s *[potion_contents~5]", V121, 28, "expected an id, a #tag or a list of ids, got 5"),
+    # NbtPredicate: TagParser.LENIENT_CODEC (SNBT in a string, or a compound); records: a compound
+    ("clear @s *[custom_data~'{a:1b}']", V121, None, None),
+    ("clear @s *[custom_data~5]", V121, 24, "expected a compound or its SNBT as a string"),
+    ("clear @s *[trim~1]", V121, 17, "expected a compound"),
 ])
 def test_component_values_are_read_by_their_codec(text, version, col, message):
     cmd, problems = parse(text, version)
