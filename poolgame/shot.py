@@ -12,6 +12,8 @@ import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
+import numpy as np
+
 from emulator.api import Emulator
 from emulator.world.text import plain_text
 from poolgame.trajectory import Trajectory
@@ -176,12 +178,19 @@ def ball_holders(emu: Emulator) -> dict[int, str]:
     return {e["scores"]["pool.id"]: e["uuid"] for e in emu.entities("@e[tag=pool.ball]")}
 
 
+BALL_FIELDS = ["pool.x", "pool.z", "pool.state"]
+
+
 def ball_states(emu: Emulator, holders: dict[int, str] | None = None) -> dict[int, tuple[int, int, int]]:
     """Ball id -> (x um, z um, pool.state) from the balls' scores (``holders`` from
     :func:`ball_holders` saves running a selector each time)."""
     holders = holders if holders is not None else ball_holders(emu)
-    block = emu.score_block(list(holders.values()), ["pool.x", "pool.z", "pool.state"])
-    return {i: tuple(int(v) for v in row) for i, row in zip(holders, block)}
+    return _states(holders, emu.score_block(list(holders.values()), BALL_FIELDS))
+
+
+def _states(holders: dict[int, str], block) -> dict[int, tuple[int, int, int]]:
+    """Ball id -> its row of ``block`` (:data:`BALL_FIELDS` of each holder, in ``holders``' order)."""
+    return {i: tuple(row) for i, row in zip(holders, block.tolist())}
 
 
 def strike(emu: Emulator, shot: Shot) -> list[str]:
@@ -199,10 +208,12 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None, record:
     tick and the events the pack resolved (``ShotResult.trajectory``)."""
     refused = strike(emu, shot)
     holders = ball_holders(emu)
-    start = ball_states(emu, holders)
+    ids, names = list(holders), list(holders.values())
+    start = emu.score_block(names, BALL_FIELDS)
     trajectory = Trajectory(emu, holders) if record and not refused else None
     if refused:
-        return ShotResult(refused, emu.score("$resting", "pool.game") == 1, 0, [], 0.0, _outcomes(start, {}), list(emu.overflows),
+        return ShotResult(refused, emu.score("$resting", "pool.game") == 1, 0, [], 0.0,
+                          _outcomes(_states(holders, start), {}), list(emu.overflows),
                           list(emu.diagnostics))
     last_change: dict[int, int] = {}
     previous, first_tick = start, len(emu.commands_per_tick)
@@ -220,8 +231,9 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None, record:
                 if not carry:
                     trajectory.observe(emu, count)
                     count = 0
-            now = ball_states(emu, holders)
-            last_change.update({i: tick for i, s in now.items() if s != previous.get(i)})
+            now = emu.score_block(names, BALL_FIELDS)  # compared as arrays: a tick's cheap part
+            for row in np.flatnonzero((now != previous).any(axis=1)).tolist():
+                last_change[ids[row]] = tick
             previous = now
             if emu.score("$resting", "pool.game") == 1:
                 at_rest = True
@@ -230,7 +242,7 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None, record:
         interrupted = True
     seconds = time.perf_counter() - started
     costs = emu.commands_per_tick[first_tick:]
-    return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(previous, last_change),
+    return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(_states(holders, previous), last_change),
                       list(emu.overflows), list(emu.diagnostics), carried, interrupted, trajectory)
 
 
