@@ -31,6 +31,8 @@ class BlockTicks:
         return min((p[0] for p in self.pending), default=None)
 
     def run_due(self, state) -> None:
+        if not self.pending:  # every tick: nothing pending is the common case
+            return
         due = sorted(p for p in self.pending if p[0] <= state.gametime)
         self.pending = [p for p in self.pending if p[0] > state.gametime]
         for _, _, pos, block_id, action in due:

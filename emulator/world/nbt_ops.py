@@ -36,7 +36,6 @@ from __future__ import annotations
 
 import math
 from abc import ABC, abstractmethod
-from contextlib import contextmanager
 from contextvars import ContextVar
 
 from mcfunction_parser import ast
@@ -211,14 +210,20 @@ _MIXED_LISTS: ContextVar[bool] = ContextVar("mixed_lists", default=False)
 MIXED_LISTS_VERSION = (1, 21, 5)
 
 
-@contextmanager
-def list_rules(version: tuple[int, int, int]):
-    """Run NBT operations with the list rule of ``version`` (mixed-type lists from 1.21.5)."""
-    token = _MIXED_LISTS.set(tuple(version) >= MIXED_LISTS_VERSION)
-    try:
-        yield
-    finally:
-        _MIXED_LISTS.reset(token)
+class list_rules:
+    """Run NBT operations with the list rule of ``version`` (mixed-type lists from 1.21.5): a
+    context manager (a class: every root sequence enters one)."""
+
+    __slots__ = ("mixed", "token")
+
+    def __init__(self, version: tuple[int, int, int]) -> None:
+        self.mixed = tuple(version) >= MIXED_LISTS_VERSION
+
+    def __enter__(self) -> None:
+        self.token = _MIXED_LISTS.set(self.mixed)
+
+    def __exit__(self, *exc) -> None:
+        _MIXED_LISTS.reset(self.token)
 
 
 def _list_accepts(lst: List, tag) -> bool:
