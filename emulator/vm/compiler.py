@@ -411,7 +411,11 @@ class Compiler:
         return leaf, number_code(cmd.source.value), self.program.intern_float(float(cmd.source.value))
 
     def leaf_test(self, st: IfData) -> tuple[int, int, int] | None:
-        """(leaf, type, number) of ``if|unless data storage S {K:N}`` (one key, a number the VM mirrors)."""
+        """(leaf, type, number) of ``if|unless data storage S {K:N}`` (one key, a number the VM mirrors),
+        or (leaf, 0, 0) of ``if|unless data storage S a.b.c`` (compound keys: the path leads to a tag,
+        counted once as the game counts the tags it finds)."""
+        if (leaf := self.leaf(st.source, st.path)) is not None:
+            return leaf, 0, 0
         nodes = st.path.nodes
         if not (len(nodes) == 1 and isinstance(nodes[0], PathFilter) and len(nodes[0].pattern) == 1):
             return None

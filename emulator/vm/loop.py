@@ -125,7 +125,7 @@ OP_IFSCORE = 20  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f 
 OP_IFMATCH = 21  # [condition] a h, b o, c lo, d hi, f negated, g final
 OP_IFENT = 22  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
 OP_IFLEAF = 23  # [condition] a: storage leaf, b: type (LEAF_*), c: number (index into floats), f negated, g final.
-# `if|unless data storage S {K:N}`: the leaf holds N
+# `if|unless data storage S {K:N}`: the leaf holds N; b = 0: `if|unless data storage S a.b.c`: the path leads to a tag
 OP_IFDIM = 24  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
 # context's dimension (ctx_dim) is D
 OP_CHKOBJ = 25  # [stage] a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or
@@ -273,7 +273,7 @@ TP_LOCAL, TP_SELF = 8, 16
 TP_ROT, TP_REL_YAW, TP_REL_PITCH = 32, 64, 128
 # OP_CTXSTAGE's kinds
 CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN = range(4)
-# storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty], lvalues[leaf] = the number;
+# storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty, exists], lvalues[leaf] = the number;
 # type 0: no byte, short, int, float or double there
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
 
@@ -1042,9 +1042,12 @@ def run(m):
                             efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
-            elif op == OP_IFLEAF:  # compareNbt of {K:N}: the same type and number
+            elif op == OP_IFLEAF:  # compareNbt of {K:N}: the same type and number; type 0: the path leads to a tag
                 leaf = code[pc, 1]
-                passed = (lmeta[leaf, 0] == code[pc, 2] and lvalues[leaf] == floats[code[pc, 3]]) != (code[pc, 6] != 0)
+                if code[pc, 2] == 0:
+                    passed = (lmeta[leaf, 2] != 0) != (code[pc, 6] != 0)
+                else:
+                    passed = (lmeta[leaf, 0] == code[pc, 2] and lvalues[leaf] == floats[code[pc, 3]]) != (code[pc, 6] != 0)
                 fval = 1 if passed else 0
             elif op == OP_IFDIM:  # ExecuteCommand: the dimension is the source's level
                 passed = (cints[ctx, CI_DIM] == code[pc, 1]) != (code[pc, 6] != 0)

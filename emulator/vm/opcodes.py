@@ -112,7 +112,8 @@ _ROWS = [
         ("IFMATCH", "hoii_bb", CONDITION, "a h, b o, c lo, d hi, f negated, g final"),
         ("IFENT", "s____bb", CONDITION, "a: selector, f negated, g final. `if|unless entity SEL`"),
         ("IFLEAF", "iid__bb", CONDITION, "a: storage leaf, b: type (LEAF_*), c: number (index into floats), f "
-                                         "negated, g final. `if|unless data storage S {K:N}`: the leaf holds N"),
+                                         "negated, g final. `if|unless data storage S {K:N}`: the leaf holds N; "
+                                         "b = 0: `if|unless data storage S a.b.c`: the path leads to a tag"),
         ("IFDIM", "l____bb", CONDITION, "a: dimension (Program.dimensions), f negated, g final. `if|unless "
                                         "dimension D`: the context's dimension (ctx_dim) is D"),
     ]),

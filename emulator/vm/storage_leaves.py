@@ -3,9 +3,11 @@
 A leaf is a storage id and a path of compound keys (``phys:flags contact``) that a command of the
 program names with a number: ``data modify storage S P set value N``, ``execute if data storage S
 {K:N}``, ``data get storage S P [scale]`` and ``execute store ... storage S P TYPE SCALE``. The VM
-keeps each leaf in two arrays: ``meta[leaf] = [type, dirty]`` (``type``: the ``LEAF_*`` type of the
-number there, 0 when the path does not lead through compounds to a byte, short, int, float or
-double) and ``values[leaf]`` (the number, exact in a double).
+keeps each leaf in two arrays: ``meta[leaf] = [type, dirty, exists]`` (``type``: the ``LEAF_*`` type of
+the number there, 0 when the path does not lead through compounds to a byte, short, int, float or
+double; ``exists``: 1 when it leads to any tag, for ``execute if|unless data storage S a.b.c``)
+and ``values[leaf]`` (the number, exact in a double). The VM writes numbers only where one is, so
+it never changes what exists.
 
 Python's compounds stay the storage (``WorldState.storage``): :meth:`StorageLeaves.read` mirrors
 them into the arrays when the storage changed (its ``version``), before the VM runs, and
@@ -43,7 +45,7 @@ class StorageLeaves:
     def __init__(self) -> None:
         self.leaves: list[tuple[str, tuple[str, ...]]] = []
         self._ids: dict[tuple[str, tuple[str, ...]], int] = {}
-        self.meta = np.zeros((1, 2), dtype=np.int64)
+        self.meta = np.zeros((1, 3), dtype=np.int64)
         self.values = np.zeros(1, dtype=np.float64)
         self.version = -1  # the storage version last read
 
@@ -70,6 +72,7 @@ class StorageLeaves:
                 tag = tag.get(key) if isinstance(tag, Compound) else None
             self.meta[index, 0] = number_code(tag)
             self.meta[index, 1] = 0
+            self.meta[index, 2] = tag is not None
             self.values[index] = float(tag) if self.meta[index, 0] else 0.0
         self.version = getattr(storage, "version", -1)
 

@@ -120,6 +120,27 @@ def test_storage_numbers_run_in_the_vm(tmp_path):
     assert "IfData" not in host and "DataGet" not in host
 
 
+def test_storage_paths_tested_in_the_vm(tmp_path):
+    # ExecuteCommand.checkMatchingData: the count of tags the path finds (a key path: 0 or 1), any
+    # tag type; a path through a list or a number finds nothing (NbtPathArgument.CompoundChildNode)
+    body = ("data merge storage t:s {a:{b:[1,2],c:\"x\"},n:3}\n"
+            "execute store result score #ab o if data storage t:s a.b\n"
+            "execute store result score #ac o if data storage t:s a.c\n"
+            "execute store result score #a o if data storage t:s a\n"
+            "execute store result score #ad o if data storage t:s a.d\n"
+            "execute store result score #nx o if data storage t:s n.x\n"
+            "execute store result score #bx o if data storage t:s a.b.x\n"
+            "execute store result score #not o unless data storage t:s a.d\n"
+            "execute store result score #gone o if data storage t:other a\n"
+            "execute if data storage t:s n run data remove storage t:s a.c\n"
+            "execute store result score #ac2 o if data storage t:s a.c\n")
+    emu = _run_both(tmp_path, body)
+    assert [emu.score(h, "o") for h in ("#ab", "#ac", "#a", "#ad", "#nx", "#bx", "#not", "#gone", "#ac2")] == [
+        1, 1, 1, 0, 0, 0, 1, 0, 0]
+    host = _host_commands(emu)
+    assert "IfData" not in host and host.count("DataRemove") == 1  # the VM reads the removal's result
+
+
 def test_the_vm_reads_storage_changed_between_calls(tmp_path):
     from mcfunction_parser.nbt import Byte, Compound
 
