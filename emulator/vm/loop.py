@@ -32,11 +32,12 @@ them, so a helper taking arrays no longer counts each up and down with an atomic
 made a selector over 16 entities cost about 10x its work). A call with array arguments still
 costs more than a whole scoreboard command here, and even an untaken call in a branch slows it: the scoreboard ops resolve names and ``@s`` themselves and read a
 selector's holders from OP_SELHOLDERS, emitted just before them.
-The same holds for an ``inline="always"`` helper taking an array when the inlined body branches
+The same held for an ``inline="always"`` helper taking an array when the inlined body branches
 (numba then keeps a reference count increment and decrement per use: the charge preamble
-``quota -= 1; counts[pc] += 1`` as such a helper halved the loop's speed), so the charge is
-written out in each op (the template's ``CHARGE()``); the shared helpers take scalars or run
-straight-line code. The scoreboard ops take a lean path for one target and one source (a name or
+``quota -= 1; counts[pc] += 1`` as such a helper halved the loop's speed, measured before the
+arrays were borrowed), so the charge is written out in each op (the template's ``CHARGE()``); the
+shared helpers in ``run`` take scalars or run straight-line code, while the selector's entity test
+(:func:`_matches`) is inlined into :func:`_select`'s loop. The scoreboard ops take a lean path for one target and one source (a name or
 ``@s``), whose objective test reads ``writable`` for the target (a read-only objective fails there,
 at no cost to the writable case), and the dispatch chain (the template's ``case FAMILY:`` lines,
 one branch per family of the opcode table) tests the hottest opcodes first (operations,
@@ -349,7 +350,7 @@ def _report(ovf, novf, pc, kind, a, b, exact):
     return novf + 1
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values, present, alive_obj):
     """EntitySelector's predicate for one entity (``selectors.SelectorQuery``'s tests): players
     only, tag, type and score tests, the box (the hitbox intersects it, strictly) and the distance
