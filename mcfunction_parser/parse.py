@@ -100,7 +100,7 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
             _leading_slash(text, loc, physical, diagnostics)
             continue
         reader = JoinedReader(text, loc, version, segments) if segments else Reader(text, loc, version)
-        cmd = _parse(reader, diagnostics, physical)
+        cmd = _parse(reader, diagnostics, physical, keep_unread=True)
         if cmd is not None:
             commands.append(cmd)
     function = Function(function_id, path, tuple(commands), len(physical), is_macro, pack)
@@ -111,7 +111,9 @@ def parse_command(text: str, loc: Loc,
                   version: tuple[int, int, int] = DEFAULT_VERSION) -> tuple[Command | None, list[Diagnostic]]:
     """Parse one command (no leading ``/``), e.g. a macro line with its ``$(key)`` filled in.
 
-    ``loc`` is where the command text starts; diagnostics point into ``text`` from there.
+    ``loc`` is where the command text starts; diagnostics point into ``text`` from there. A
+    command that does not parse is an error even in a release newer than every command tree: a
+    macro line that fails to parse when it is called fails the call, which packs test for.
     """
     diagnostics: list[Diagnostic] = []
     source_line = " " * (loc.col - 1) + text
@@ -121,13 +123,17 @@ def parse_command(text: str, loc: Loc,
 
 
 def _parse(reader: Reader, diagnostics: list[Diagnostic], physical: list[str] | None,
-           source_line: str | None = None) -> Command | None:
+           source_line: str | None = None, keep_unread: bool = False) -> Command | None:
     try:
         cmd = command(reader)
         if reader.pos < reader.end:
             reader.finish()
     except ParseError as error:
-        cmd = _unread(reader, error, diagnostics, physical, source_line)
+        if keep_unread and newer_than_every_tree(reader.version):
+            cmd = _unread(reader, error, diagnostics, physical)
+        else:
+            _report(reader, ERROR, error.message, error.pos, diagnostics, physical, source_line)
+            cmd = None
     except RecursionError:
         _report(reader, ERROR, "command is nested too deeply", 0, diagnostics, physical, source_line)
         cmd = None
@@ -136,16 +142,14 @@ def _parse(reader: Reader, diagnostics: list[Diagnostic], physical: list[str] | 
     return cmd
 
 
-def _unread(reader: Reader, error: ParseError, diagnostics: list[Diagnostic], physical: list[str] | None,
-            source_line: str | None) -> UnreadCommand | None:
-    """A command the readers refuse: an error, and the line left out (the game refuses to load the
-    function); for a release newer than every command tree here (26.x), whose syntax may have
-    changed, a warning and the line kept as an :class:`UnreadCommand`."""
-    if not newer_than_every_tree(reader.version):
-        _report(reader, ERROR, error.message, error.pos, diagnostics, physical, source_line)
-        return None
+def _unread(reader: Reader, error: ParseError, diagnostics: list[Diagnostic],
+            physical: list[str] | None) -> UnreadCommand:
+    """A function's line the readers refuse, in a release newer than every command tree here
+    (26.2), whose syntax may have changed: a warning, and the line kept as an
+    :class:`UnreadCommand` so the function loads (elsewhere such a line is an error and the game
+    refuses to load the function)."""
     reason = f"{error.message} ({stand_in_note(reader.version)})"
-    _report(reader, WARNING, reason, error.pos, diagnostics, physical, source_line)
+    _report(reader, WARNING, reason, error.pos, diagnostics, physical, None)
     return UnreadCommand(reader.start_loc, reader.text.split(" ", 1)[0], reader.text, reason)
 
 

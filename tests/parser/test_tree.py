@@ -203,3 +203,12 @@ def test_26_1_time_has_world_clocks():
                                                     (8, "expected repetition, got 'extra'")]
     _, diags = parse_function("time add -5\ntime of a:clock pause\nswing @s\n", "f", "a:f", (1, 21, 11))
     assert [d.line for d in diags] == [1, 2, 3]
+
+
+def test_a_macro_line_that_does_not_parse_stays_an_error_after_every_tree():
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+    # a macro line is parsed when the function is called, and one that does not parse fails the
+    # call (FunctionBuilder / MacroFunction.instantiate): packs test that invalid input errors
+    cmd, diags = parse_command("frobnicate 1", Loc("f", 1, 2), (26, 2, 0))
+    assert cmd is None and [d.severity for d in diags] == ["error"]
