@@ -29,7 +29,7 @@ Modelled:
   the damage grows with the ticks since the dummy joined or last attacked, the target's
   ``Health`` and ``HurtTime``, ``damage_dealt``, a death (emulator.world.combat). A target that
   is not living is not attackable: nothing happens, as in the game. Knockback is not modelled.
-- ``mine``: emulator.world.block_breaking (ServerPlayerGameMode.destroyBlock).
+- ``mine``: emulator.world.block_breaking (ServerPlayerGameMode.destroyBlock; the held tool: emulator.world.tools).
 - ``drop [all]``, ``swap``, ``use item``: emulator.world.player_actions (the item entity with its
   ``Thrower``, the hands' stacks, the items whose use is modelled, using an item over ticks);
   ``use block``: emulator.world.block_use (each hand in turn until one consumes the action).

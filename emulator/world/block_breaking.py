@@ -6,8 +6,9 @@ block's loot dropped as item entities, ``minecraft.mined:<block>`` and the food 
   spectator players, operator blocks such as command blocks, a creative player holding a sword).
   Survival drops come from the block's loot table (``blocks/<id>``), which only a loaded pack can
   supply here: without it, or for a block whose need of the right tool is not known here
-  (:data:`HAND_HARVESTABLE` / :data:`NEEDS_TOOL`), or with a tool (its durability and correctness
-  need the game's tool data), the break raises Unmodelled.
+  (:data:`HAND_HARVESTABLE` / :data:`NEEDS_TOOL`), the break raises Unmodelled. A tool decides
+  whether a block that needs one drops (its rules read the game's block tags: pass ``--game-jar``
+  or define them) and takes its durability damage (emulator.world.tools).
 
 Sources (decompiled 1.21.x): server/level/ServerPlayerGameMode.java (destroyBlock), world/level/
 block/Block.java (playerDestroy: BLOCK_MINED, causeFoodExhaustion(0.005), dropResources; popResource:
@@ -19,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import inventories, loot, statistics
+from emulator.world import inventories, loot, statistics, tools
 from emulator.world.blocks import BlockState, parse_block, with_defaults
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import CommandFailure, Unmodelled
@@ -71,9 +72,10 @@ def destroy_block(state, player, pos) -> bool:
     if player.gamemode == "creative":
         _remove(state, pos, block)
         return True
-    harvest = _can_harvest(block, held)
+    harvest = _can_harvest(state, block, held)
     drops = _drops(state, player, pos, block, held) if harvest else []
     _remove(state, pos, block)
+    tools.mine_block(state, player, inventories.entity_slot(player, inventories.MAINHAND, state.version), block.id)
     if harvest:
         statistics.award(state, player, statistics.stat_name("mined", block.id))
         _exhaust(player, MINING_EXHAUSTION)
@@ -83,15 +85,15 @@ def destroy_block(state, player, pos) -> bool:
     return True
 
 
-def _can_harvest(block: BlockState, held) -> bool:
-    """Player.hasCorrectToolForDrops, for an empty hand or an item that is no tool."""
-    if held.component("minecraft:max_damage") is not None or held.component("minecraft:tool") is not None:
-        raise Unmodelled(f"mining {block.id} with {held.id} (tool speed, correctness and durability)")
+def _can_harvest(state, block: BlockState, held) -> bool:
+    """Player.hasCorrectToolForDrops: a block that needs no tool, or the held tool is right for it
+    (emulator.world.tools: Tool.isCorrectForDrops)."""
     if block.id in HAND_HARVESTABLE:
         return True
-    if block.id in NEEDS_TOOL:
-        return False
-    raise Unmodelled(f"mining {block.id} in survival (whether it needs the right tool for drops)")
+    if block.id not in NEEDS_TOOL:
+        raise Unmodelled(f"mining {block.id} in survival (whether it needs the right tool for drops)")
+    found = tools.tool(held, state.version)
+    return found is not None and found.correct_for_drops(block.id, state.resources)
 
 
 def _drops(state, player, pos, block: BlockState, held) -> list:

@@ -37,7 +37,7 @@ from emulator.world.nbt_ops import compare_nbt, copy_tag, is_numeric, tags_equal
 AIR = "minecraft:air"
 COMPONENTS_VERSION = (1, 20, 5)
 
-_TOOL_DURABILITY = {"wooden": 59, "stone": 131, "iron": 250, "golden": 32, "diamond": 1561, "netherite": 2031}
+_TOOL_DURABILITY = {"wooden": 59, "stone": 131, "copper": 190, "iron": 250, "golden": 32, "diamond": 1561, "netherite": 2031}
 _TOOLS = ("sword", "pickaxe", "axe", "shovel", "hoe")
 _ARMOR_MULTIPLIER = {"leather": 5, "chainmail": 15, "iron": 15, "golden": 7, "diamond": 33, "netherite": 37}
 _ARMOR_BASE = {"helmet": 11, "chestplate": 16, "leggings": 15, "boots": 13}

@@ -1,0 +1,151 @@
+"""Mining with an item: which tool may harvest a block, and what mining does to the tool.
+
+- ``tool(stack, version) -> Tool | None``: the stack's ``tool`` component as a pack patched it, else
+  the vanilla tool's (pickaxes, axes, shovels, hoes, swords and shears: ToolMaterial.
+  applyToolProperties / applySwordProperties, ShearsItem.createToolProperties); before 1.20.5 the
+  same rules from the tool's tier (DiggerItem.isCorrectToolForDrops: the ``needs_*_tool`` tags).
+  None for an item that is no tool.
+- ``Tool.correct_for_drops(block_id, resources)``: Tool.isCorrectForDrops (the first rule naming the
+  block that says so); a vanilla block tag unknown without the game's data raises Unmodelled.
+- ``mine_block(state, player, access, block_id)``: ItemStack.mineBlock -> Item.mineBlock: a tool
+  counts ``minecraft.used:<item>`` and, unless the block breaks instantly (destroy time 0; shears
+  also then, but not on fire), takes its ``damage_per_block``
+  (ItemStack.hurtAndBreak: none for an unbreakable item or a creative player; the damage, and at
+  the maximum the item breaks with ``minecraft.broken:<item>``). The ``item_durability_changed``
+  trigger is not observed (armour's wear is not modelled either).
+
+Not modelled (Unmodelled): the mining speed (PackTest's ``dummy mine`` breaks the block at once,
+DummyCommand.mineBlock -> ServerPlayerGameMode.destroyBlock, so no pack sees it), the Unbreaking
+enchantment's chance, maces and tridents, and tools of pre-1.20.5 NBT ``Unbreakable``.
+
+Sources (decompiled 1.21.x and 26.1): world/item/component/Tool.java (isCorrectForDrops),
+ToolMaterial.java (incorrect_for_<tier>_tool tags), Item.java and ShearsItem.java (mineBlock),
+ItemStack.java (mineBlock, hurtAndBreak, processDurabilityChange, applyDamage); before 1.20.5
+DiggerItem.java and Tiers.java (tier levels).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from emulator.world import statistics
+from emulator.world.errors import Unmodelled
+from emulator.world.items import ItemStack, enchantment_level, set_component
+from emulator.world.nbt_ops import is_numeric, numeric_value
+from mcfunction_parser.nbt import Compound, Int, List, String
+
+COMPONENTS_VERSION = (1, 20, 5)
+TIERS = {"wooden": 0, "golden": 0, "stone": 1, "copper": 1, "iron": 2, "diamond": 3, "netherite": 4}
+_MINEABLE = {"pickaxe": "pickaxe", "axe": "axe", "shovel": "shovel", "hoe": "hoe"}
+# blocks whose destroy time is 0 (BlockBehaviour.Properties.instabreak()): a tool takes no damage
+INSTANT_BREAK = frozenset("minecraft:" + n for n in (
+    "short_grass grass fern dead_bush tall_grass large_fern seagrass tall_seagrass dandelion torchflower poppy "
+    "blue_orchid allium azure_bluet red_tulip orange_tulip white_tulip pink_tulip oxeye_daisy cornflower "
+    "wither_rose lily_of_the_valley sunflower lilac rose_bush peony brown_mushroom red_mushroom tnt torch "
+    "wall_torch soul_torch soul_wall_torch redstone_torch redstone_wall_torch fire soul_fire redstone_wire "
+    "repeater comparator wheat carrots potatoes beetroots sugar_cane lily_pad kelp kelp_plant end_rod "
+    "slime_block honey_block scaffolding flower_pot structure_void bamboo_sapling warped_fungus crimson_fungus "
+    "warped_roots crimson_roots nether_sprouts spore_blossom azalea flowering_azalea small_dripleaf "
+    "hanging_roots frogspawn oak_sapling spruce_sapling birch_sapling jungle_sapling acacia_sapling "
+    "cherry_sapling dark_oak_sapling pale_oak_sapling mangrove_propagule").split())
+
+
+@dataclass(frozen=True)
+class Rule:
+    blocks: tuple[str, ...]  # ids and #tags
+    correct_for_drops: bool | None
+
+
+@dataclass(frozen=True)
+class Tool:
+    rules: tuple[Rule, ...]
+    damage_per_block: int
+
+    def correct_for_drops(self, block_id: str, resources) -> bool:
+        """Tool.isCorrectForDrops: the first rule with ``correct_for_drops`` that names the block."""
+        for rule in self.rules:
+            if rule.correct_for_drops is not None and _names(rule.blocks, block_id, resources):
+                return rule.correct_for_drops
+        return False
+
+
+def _names(blocks: tuple[str, ...], block_id: str, resources) -> bool:
+    return any(resources.in_tag("block", b[1:], block_id) if b.startswith("#") else b == block_id for b in blocks)
+
+
+def _vanilla(item_id: str, version) -> Tool | None:
+    name = item_id.removeprefix("minecraft:")
+    if name == "shears":
+        return Tool((Rule(("minecraft:cobweb",), True),), 1)
+    material, _, kind = name.rpartition("_")
+    if material not in TIERS or kind not in (*_MINEABLE, "sword"):
+        return None
+    if kind == "sword":
+        return Tool((Rule(("minecraft:cobweb",), True),), 2)
+    mineable = Rule((f"#minecraft:mineable/{_MINEABLE[kind]}",), True)
+    if tuple(version) >= COMPONENTS_VERSION:
+        tier = "gold" if material == "golden" else material
+        return Tool((Rule((f"#minecraft:incorrect_for_{tier}_tool",), False), mineable), 1)
+    level = TIERS[material]  # DiggerItem.isCorrectToolForDrops: the needs_*_tool tags above the tier
+    denied = tuple(f"#minecraft:needs_{t}_tool" for t, needed in (("diamond", 3), ("iron", 2), ("stone", 1))
+                   if level < needed)
+    return Tool(((Rule(denied, False),) if denied else ()) + (mineable,), 1)
+
+
+def tool(stack: ItemStack, version) -> Tool | None:
+    """The stack's tool: its patched ``tool`` component, else the vanilla item's."""
+    if tuple(version) >= COMPONENTS_VERSION and ("minecraft:tool" in stack.patch or "!minecraft:tool" in stack.patch):
+        tag = stack.component("minecraft:tool")
+        return _from_component(tag) if isinstance(tag, Compound) else None
+    if stack.id in ("minecraft:mace", "minecraft:trident"):
+        raise Unmodelled(f"mining with {stack.id} (its tool rules)")
+    return _vanilla(stack.id, version)
+
+
+def _from_component(tag: Compound) -> Tool:
+    rules = []
+    for rule in tag.get("rules", List()):
+        blocks = rule.get("blocks")
+        listed = (str(blocks),) if isinstance(blocks, String) else tuple(str(b) for b in (blocks or ()))
+        correct = rule.get("correct_for_drops")
+        rules.append(Rule(tuple(b if b.startswith("#") or ":" in b else "minecraft:" + b for b in listed),
+                          bool(numeric_value(correct)) if is_numeric(correct) else None))
+    damage = tag.get("damage_per_block")
+    return Tool(tuple(rules), int(numeric_value(damage)) if is_numeric(damage) else 1)
+
+
+def mine_block(state, player, access, block_id: str) -> None:
+    """ItemStack.mineBlock for the main hand's stack (``access``) after it mined ``block_id``."""
+    stack = access.get()
+    found = tool(stack, state.version)
+    if found is None:
+        return  # Item.mineBlock: no tool, nothing happens
+    statistics.award(state, player, statistics.stat_name("used", stack.id))
+    shears = stack.id == "minecraft:shears"
+    if found.damage_per_block > 0 and (block_id not in INSTANT_BREAK if not shears else "fire" not in block_id):
+        _hurt_and_break(state, player, access, found.damage_per_block)
+
+
+def _hurt_and_break(state, player, access, amount: int) -> None:
+    """ItemStack.hurtAndBreak -> processDurabilityChange, applyDamage (its item_durability_changed
+    trigger is not observed here)."""
+    stack = access.get()
+    max_damage = stack.component("minecraft:max_damage")
+    if (not is_numeric(max_damage) or stack.component("minecraft:unbreakable") is not None
+            or (stack.tag or {}).get("Unbreakable") or player.gamemode == "creative"):
+        return
+    old_enchantments = (stack.tag or {}).get("Enchantments") or ()
+    if enchantment_level(stack, "minecraft:unbreaking") or any(
+            "unbreaking" in str(e.get("id", "")) for e in old_enchantments if isinstance(e, Compound)):
+        raise Unmodelled(f"the Unbreaking enchantment's chance to spare {stack.id}")
+    damage = stack.component("minecraft:damage") if tuple(state.version) >= COMPONENTS_VERSION else \
+        (stack.tag or {}).get("Damage")
+    new_damage = (int(numeric_value(damage)) if is_numeric(damage) else 0) + amount
+    if tuple(state.version) >= COMPONENTS_VERSION:
+        set_component(stack, "minecraft:damage", Int(new_damage))
+    else:
+        stack.tag = stack.tag if stack.tag is not None else Compound()
+        stack.tag["Damage"] = Int(new_damage)
+    if new_damage >= int(numeric_value(max_damage)):
+        stack.count -= 1
+        statistics.award(state, player, statistics.stat_name("broken", stack.id))
+    access.set(stack)
