@@ -30,7 +30,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from emulator.world import advancements, combat, consumables, inventories, living, predicates, statistics
+from emulator.world import (advancements, combat, consumables, inventories, living, predicates, projectile_weapons,
+                            statistics)
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import numeric_value
@@ -38,6 +39,8 @@ from mcfunction_parser.nbt import Compound, Float, Int, IntArray, String
 
 F32 = np.float32
 MAIN, OFF = "main_hand", "off_hand"
+BOW_USE_TICKS = 72000  # BowItem.getUseDuration
+CROSSBOW_USE_TICKS = 28  # CrossbowItem.getUseDuration: the charge duration (25 ticks) + 3
 
 
 # ---------------------------------------------------------------------- drop and swap
@@ -135,8 +138,29 @@ def _knowledge_book(state, player, hand, stack: ItemStack) -> str:
     return "fail"
 
 
+def _bow(state, player, hand, stack: ItemStack) -> str:
+    """BowItem.use: with ammunition (or in creative) the bow is drawn for 72000 ticks (getUseDuration);
+    it shoots only when released, which a dummy never does."""
+    if player.gamemode != "creative" and projectile_weapons.ammunition(state, player, stack).is_empty:
+        return "fail"
+    _USING[player] = _Using(hand, stack.id, BOW_USE_TICKS)
+    return "consume"
+
+
+def _crossbow(state, player, hand, stack: ItemStack) -> str:
+    """CrossbowItem.use: a charged crossbow shoots at once; else with ammunition it starts charging,
+    which completes only on release (never for a dummy)."""
+    if projectile_weapons.charged(stack):
+        projectile_weapons.shoot_charged(state, player, hand_slot(hand))
+        return "consume"
+    if projectile_weapons.ammunition(state, player, stack).is_empty:
+        return "fail"
+    _USING[player] = _Using(hand, stack.id, CROSSBOW_USE_TICKS)
+    return "consume"
+
+
 USES = {"minecraft:carrot_on_a_stick": _food_on_a_stick, "minecraft:warped_fungus_on_a_stick": _food_on_a_stick,
-        "minecraft:knowledge_book": _knowledge_book}
+        "minecraft:knowledge_book": _knowledge_book, "minecraft:bow": _bow, "minecraft:crossbow": _crossbow}
 
 
 def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: consumables.Consumable) -> str:
@@ -181,7 +205,7 @@ def tick_using(state) -> None:
             continue
         advancements.trigger(state, player, "using_item", _item_test(state, stack))
         using.remaining -= 1
-        if using.remaining == 0:
+        if using.remaining == 0 and stack.id != "minecraft:crossbow":  # Item.useOnRelease: a crossbow waits
             del _USING[player]
             consumable = consumables.consumable(stack, state.version)
             if consumable is not None:

@@ -122,10 +122,10 @@ def mine_block(state, player, access, block_id: str) -> None:
     statistics.award(state, player, statistics.stat_name("used", stack.id))
     shears = stack.id == "minecraft:shears"
     if found.damage_per_block > 0 and (block_id not in INSTANT_BREAK if not shears else "fire" not in block_id):
-        _hurt_and_break(state, player, access, found.damage_per_block)
+        hurt_and_break(state, player, access, found.damage_per_block)
 
 
-def _hurt_and_break(state, player, access, amount: int) -> None:
+def hurt_and_break(state, player, access, amount: int) -> None:
     """ItemStack.hurtAndBreak -> processDurabilityChange, applyDamage (its item_durability_changed
     trigger is not observed here)."""
     stack = access.get()

@@ -168,6 +168,6 @@ def test_food_feeds_the_player_only_when_it_can_eat(tmp_path):
 
 
 def test_an_item_whose_use_is_not_modelled_makes_the_test_inconclusive(tmp_path):
-    result = run(tmp_path, "# @dummy\ngive @s bow\ndummy @s use item\nsucceed\n")
+    result = run(tmp_path, "# @dummy\ngive @s water_bucket\ndummy @s use item\nsucceed\n")
     assert (result.status, result.line) == ("inconclusive", 3), result.report()
-    assert "using minecraft:bow" in result.message
+    assert "using minecraft:water_bucket" in result.message

@@ -1,0 +1,65 @@
+"""Dummies with bows and crossbows (emulator.world.projectile_weapons). Sources: BowItem.use (drawn
+with ammunition or in creative, else FAIL; shooting waits for a release PackTest cannot send),
+CrossbowItem.use/performShooting (a charged crossbow shoots at once: 3.15 blocks per tick,
+inaccuracy 1), Player.getProjectile, AbstractArrow (at the eyes less 0.1, Owner, pickup, crit),
+Projectile.getMovementToShoot, ItemStack.hurtAndBreak (one durability per arrow)."""
+import pytest
+
+from tests.testing.test_dummy_hands import run
+
+USING = {"demo/advancement/drawing.json": '{"criteria":{"c":{"trigger":"minecraft:using_item",'
+                                          '"conditions":{"item":{"items":"minecraft:bow"}}}},"rewards":{"function":"demo:drawing"}}',
+         "demo/function/drawing.mcfunction": "scoreboard players add @s draws 1\nadvancement revoke @s only demo:drawing\n"}
+
+
+def test_a_bow_is_drawn_only_with_arrows_and_never_shoots(tmp_path):
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add draws dummy\n"
+        "give @s bow\n"
+        "dummy @s use item\n"                       # no arrow: FAIL
+        "await delay 2\n"
+        "assert not score @s draws matches 1..\n"
+        "give @s arrow 3\n"
+        "dummy @s use item\n"
+        "await delay 40\n"
+        "assert score @s draws matches 40\n"
+        "assert not entity @e[type=arrow]\n"
+        "assert items entity @s container.* arrow[count=3]\n"), pack_format=61, files=USING)
+    assert result.status == "passed", result.report()
+    assert "\n".join(result.details).count("cannot use that item") == 1
+
+
+@pytest.mark.parametrize("pack_format, crossbow", [
+    (61, 'crossbow[charged_projectiles=[{id:"minecraft:arrow",count:1}]]'),
+    (26, 'crossbow{Charged:1b,ChargedProjectiles:[{id:"minecraft:arrow",Count:1b}]}')])
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_charged_crossbow_shoots_its_arrow_along_the_view(tmp_path, pack_format, crossbow, backend):
+    """The dummy looks south (yaw 0): the arrow flies +z at 3.15 +- the spread, from the eyes less 0.1."""
+    data = "SelectedItem.components.\"minecraft:charged_projectiles\"" if pack_format > 26 else \
+        "SelectedItem.tag.ChargedProjectiles"
+    damage = "SelectedItem.components{\"minecraft:damage\":1}" if pack_format > 26 else "SelectedItem.tag{Damage:1}"
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add t dummy\n"
+        "scoreboard objectives add shots minecraft.used:minecraft.crossbow\n"
+        f"give @s {crossbow}\n"
+        "dummy @s use item\n"
+        "assert entity @e[type=arrow,x=0.5,y=2.52,z=0.5,distance=..0.001]\n"
+        "assert entity @e[type=arrow,nbt={crit:1b,pickup:1b,damage:2.0d}]\n"
+        "execute store result score #vz t run data get entity @e[type=arrow,limit=1] Motion[2] 1000\n"
+        "assert score #vz t matches 3095..3205\n"
+        "execute store result score #vx t run data get entity @e[type=arrow,limit=1] Motion[0] 1000\n"
+        "assert score #vx t matches -60..60\n"
+        "execute store result score #owner t run data get entity @e[type=arrow,limit=1] Owner[0]\n"
+        "execute store result score #uuid t run data get entity @s UUID[0]\n"
+        "assert score #owner t = #uuid t\n"
+        f"assert not data entity @s {data}[0]\n"
+        f"assert data entity @s {damage}\n"
+        "assert score @s shots matches 1\n"), pack_format=pack_format, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_multishot_and_fireworks_are_not_modelled(tmp_path):
+    result = run(tmp_path, "# @dummy\ngive @s crossbow[charged_projectiles=[{id:\"minecraft:firework_rocket\"}]]\n"
+                           "dummy @s use item\nsucceed\n", pack_format=61)
+    assert result.status == "inconclusive", result.report()
+    assert "from a crossbow" in result.message
