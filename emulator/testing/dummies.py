@@ -42,6 +42,7 @@ command: the test goes on, and the message is kept as a runtime diagnostic.
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
@@ -290,8 +291,9 @@ class Dummies:
         if command.face not in DIRECTIONS:
             raise DummyFailure("Not a valid direction")
         _in_overworld(dummy)
-        pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)
+        hit = world_entities.world_source(self.state, ctx).position_of(command.pos, centre=False)
+        pos = tuple(math.floor(v) for v in hit)  # BlockPos.containing
         for hand in (player_actions.MAIN, player_actions.OFF):
-            if block_use.use_item_on(self.state, dummy, hand, pos, command.face) == "consume":
+            if block_use.use_item_on(self.state, dummy, hand, pos, command.face, hit) == "consume":
                 return
         raise DummyFailure(f"Dummy {dummy.player_name} cannot interact with that block")

@@ -3,9 +3,11 @@ the block, the item spent, ``minecraft.used:<item>`` and the ``placed_block`` cr
 
 - ``place(state, player, hand, clicked, face) -> str``: ``"consume"`` when placed, ``"fail"`` when
   there is no room, ``"pass"`` for an adventure player; None when the held item places no block
-  the emulator knows (the caller decides what that means). Blocks whose placed state depends on
-  how they are placed (any block with state properties: facing, axis, waterlogged ...) and items
-  carrying block data (``block_state``, ``block_entity_data``) raise Unmodelled.
+  the emulator knows (the caller decides what that means). A block with state properties takes the
+  state its placement gives it (emulator.world.placed_states: facing, axis, half ...; a block whose
+  rule is not modelled raises Unmodelled), and the stairs beside it take their new shape; items
+  carrying block data (``block_state``, ``block_entity_data``) raise Unmodelled. Other neighbours'
+  shapes (fences, walls, panes, redstone) do not follow, as after ``setblock`` here.
 
 Where it goes (BlockPlaceContext): on the clicked block when that one can be replaced (air, water,
 lava, grass ...), else on its neighbour in the clicked face's direction, which then must be
@@ -18,7 +20,7 @@ canPlaceOnBlockInAdventureMode), world/level/block/state/BlockBehaviour.java (ca
 """
 from __future__ import annotations
 
-from emulator.world import advancements, inventories, statistics
+from emulator.world import advancements, inventories, placed_states, statistics
 from emulator.world.blocks import BlockSpec
 from emulator.world.errors import Unmodelled
 from emulator.world.inventories import NOT_LIVING
@@ -35,8 +37,9 @@ _VEHICLES = ("boat", "raft", "minecart")
 BUILD_LIMITS = (-64, 320)  # the overworld's height (DimensionType min_y, height)
 
 
-def place(state, player, hand_slot: int, clicked, face: str) -> str | None:
-    """BlockItem.useOn with the stack in ``hand_slot`` on the block ``clicked``, face ``face``."""
+def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | None:
+    """BlockItem.useOn with the stack in ``hand_slot`` on the block ``clicked``, face ``face``, the
+    click at ``hit`` (the block's corner when not given)."""
     access = inventories.entity_slot(player, hand_slot, state.version)
     stack = access.get()
     block_id = stack.id
@@ -48,12 +51,13 @@ def place(state, player, hand_slot: int, clicked, face: str) -> str | None:
     for component in ("minecraft:block_state", "minecraft:block_entity_data", "minecraft:custom_name"):
         if stack.component(component) is not None:
             raise Unmodelled(f"placing {block_id} with its {component} component")
-    if properties:
-        raise Unmodelled(f"placing {block_id} (its state follows how it is placed: {', '.join(sorted(properties))})")
     target = _target(state, clicked, face)
     if target is None or not BUILD_LIMITS[0] <= target[1] < BUILD_LIMITS[1] or _obstructed(state, target):
         return "fail"
-    state.blocks.setblock(target, BlockSpec(block_id, False, (), None))
+    placed = placed_states.state_for_placement(state, player, block_id, properties, target, face,
+                                               tuple(hit) if hit is not None else tuple(clicked)) if properties else {}
+    state.blocks.setblock(target, BlockSpec(block_id, False, tuple(sorted(placed.items())), None))
+    placed_states.update_neighbour_stairs(state, target)
     advancements.trigger(state, player, "placed_block", advancements.location_test(state, player, target, stack))
     if player.gamemode != "creative":
         stack.count -= 1

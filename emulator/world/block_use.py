@@ -71,8 +71,9 @@ _OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (
 _MENU: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()  # player -> the container block it has open
 
 
-def use_item_on(state, player, hand: str, pos, face: str) -> str:
-    """ServerPlayerGameMode.useItemOn with the stack in ``hand`` on the block at ``pos``."""
+def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
+    """ServerPlayerGameMode.useItemOn with the stack in ``hand`` on the block at ``pos``, clicked at
+    ``hit`` (the block's corner when not given)."""
     pos = tuple(pos)
     block = state.blocks.get(pos)
     stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
@@ -92,7 +93,7 @@ def use_item_on(state, player, hand: str, pos, face: str) -> str:
                 return result
     if stack.is_empty:
         return "pass"
-    placed = block_placing.place(state, player, hand_slot(hand), pos, face)
+    placed = block_placing.place(state, player, hand_slot(hand), pos, face, hit)
     if placed is None:
         raise Unmodelled(f"using {stack.id} on {block.id} (items used on blocks other than placing a block: "
                          "spawn eggs, buckets, tools ...)")
@@ -112,7 +113,7 @@ def _item_on_block_passes(block: BlockState, stack, face: str) -> bool:
 def _use_without_item(state, player, pos, block: BlockState) -> str:
     """BlockBehaviour.useWithoutItem of the modelled blocks (BlockState.use before 1.20.5)."""
     name = block.id.removeprefix("minecraft:")
-    if block.is_air or block.id in PLAIN or block.id in block_placing.REPLACEABLE:
+    if block.is_air or block.id in PLAIN or block.id.endswith(_PLAIN_KINDS) or block.id in block_placing.REPLACEABLE:
         return "pass"
     if block.id in MENUS:
         return _open_menu(state, player, pos, block, award=True)
@@ -265,10 +266,14 @@ def _within_reach(player, pos) -> bool:
     return sum(g * g for g in gap) < reach * reach
 
 
-# blocks without a use of their own (plain Block): a click on them goes on to the held item
+# blocks without a use of their own (plain Block, RotatedPillarBlock, StairBlock, piston bases,
+# observers ...): a click on them goes on to the held item
 PLAIN = frozenset("minecraft:" + n for n in (
     "stone granite diorite andesite cobblestone dirt coarse_dirt grass_block sand red_sand gravel bedrock glass "
     "obsidian smooth_stone stone_bricks deepslate netherrack end_stone bricks sandstone barrier iron_block "
-    "gold_block diamond_block emerald_block lapis_block coal_block netherite_block").split()) | frozenset(
+    "gold_block diamond_block emerald_block lapis_block coal_block netherite_block piston sticky_piston observer "
+    "hay_block bone_block basalt polished_basalt quartz_pillar purpur_pillar carved_pumpkin jack_o_lantern "
+    "end_rod").split()) | frozenset(
     f"minecraft:{c}_{k}" for c in COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
     f"minecraft:{w}_planks" for w in WOODS)
+_PLAIN_KINDS = ("_stairs", "_log", "_wood", "_stem", "_hyphae", "_glazed_terracotta")
