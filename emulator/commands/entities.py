@@ -240,18 +240,19 @@ def _teleport(env, cmd: ast.Teleport, ctx: Context) -> int:
     if cmd.targets is None:
         entity = _executor_required(state, ctx)
         if isinstance(cmd.destination, ast.Vec3):
-            teleport.apply(entity, teleport.to_position_self(source, cmd.destination), state.entities)
+            teleport.apply(entity, teleport.to_position_self(source, cmd.destination), state.entities, state.version)
         else:
-            teleport.apply(entity, teleport.to_entity(single(state, cmd.destination, ctx)), state.entities)
+            teleport.apply(entity, teleport.to_entity(single(state, cmd.destination, ctx)), state.entities,
+                           state.version)
         return 1
     targets = found(state, cmd.targets, ctx)
     if not isinstance(cmd.destination, ast.Vec3):
         return teleport.teleport(source, targets, destination_entity=single(state, cmd.destination, ctx),
-                                 store=state.entities)
+                                 store=state.entities, version=state.version)
     facing_entity = None if cmd.facing_entity is None else single(state, cmd.facing_entity, ctx)
     return teleport.teleport(source, targets, cmd.destination, rotation_arg=cmd.rotation, facing=cmd.facing,
                              facing_entity=facing_entity, facing_anchor=cmd.facing_anchor or "feet",
-                             store=state.entities)
+                             store=state.entities, version=state.version)
 
 
 def ride(env, cmd: ast.Ride, ctx: Context) -> int:

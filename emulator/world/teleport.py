@@ -16,9 +16,10 @@ entity's state at that moment, and ``apply`` moves the entity there)
   crosses, and so does ``execute as @e run tp @s ~ ~ ~`` for an entity outside the server's
   overworld). Between levels the entity comes last in its new level's order; the game makes a new
   entity object there (Entity.teleportCrossDimension), the emulator keeps the one, so a context
-  still running as the old one (``@s``) sees the moved entity. Riders and vehicles crossing levels
-  are not modelled (a diagnostic says so).
-- ``teleport(source, targets, ..., store=None)``: the whole command over several targets, in order
+  still running as the old one (``@s``) sees the moved entity. An entity crossing levels leaves its
+  vehicle; from 1.21.2 its passengers go along (their offsets and turns kept) and ride it again,
+  before they stay behind (``version``: the packs' release).
+- ``teleport(source, targets, ..., store=None, version=None)``: the whole command over several targets, in order
   (each target sees the earlier ones already moved); returns the count.
 Every rotation goes through ``wrapDegrees`` and the pitch is clamped to [-90, 90]; a destination
 outside x/z [-30000000, 30000000) or y [-20000000, 20000000) fails "Invalid position for teleport".
@@ -37,8 +38,11 @@ from mcfunction_parser import ast
 from emulator.world import rotation
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import in_spawnable_bounds
-from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.errors import CommandFailure
+from emulator.world.relations import start_riding, stop_riding
 from emulator.world.source import Source
+
+PASSENGERS_TRAVEL_VERSION = (1, 21, 2)  # Entity.teleportCrossDimension takes the passengers along
 
 
 @dataclass(frozen=True)
@@ -88,12 +92,37 @@ def to_entity(destination) -> Destination:
     return _moved(destination.pos, destination.yaw, destination.pitch, destination.dimension)
 
 
-def apply(entity, destination: Destination, store=None) -> None:
+def apply(entity, destination: Destination, store=None, version=None) -> None:
     """Move the entity; a non-finite rotation is discarded (``setYRot``/``setXRot`` refuse it)."""
     if store is not None and destination.dimension != entity.dimension and entity.alive:  # a killed one stays
-        if entity.vehicle is not None or entity.passengers:
-            raise Unmodelled("a riding entity or a vehicle teleported to another dimension")
-        store.move_to_level(entity, destination.dimension)
+        _cross_levels(entity, destination, store, version)
+        return
+    _move(entity, destination)
+
+
+def _cross_levels(entity, destination: Destination, store, version) -> None:
+    """A teleport into another level. From 1.21.2 (Entity.teleport -> teleportCrossDimension) the
+    entity leaves its vehicle and takes its passengers along: each keeps its offset from it and its
+    turn relative to it (calculatePassengerTransition) and rides it again; before
+    (Entity.teleportTo -> unRide) it leaves its vehicle and its passengers stay behind."""
+    stop_riding(entity)
+    riders = list(entity.passengers)
+    for rider in riders:
+        stop_riding(rider)
+    old_pos, old_yaw, old_pitch = entity.pos, entity.yaw, entity.pitch
+    store.move_to_level(entity, destination.dimension)
+    _move(entity, destination)
+    if version is None or tuple(version) < PASSENGERS_TRAVEL_VERSION:
+        return
+    for rider in riders:
+        pos = tuple(d + (r - o) for d, r, o in zip(destination.pos, rider.pos, old_pos))
+        yaw = destination.yaw + (float(rider.yaw) - float(old_yaw))
+        pitch = destination.pitch + (float(rider.pitch) - float(old_pitch))
+        _cross_levels(rider, Destination(pos, yaw, pitch, destination.dimension), store, version)
+        start_riding(rider, entity)
+
+
+def _move(entity, destination: Destination) -> None:
     entity.pos = destination.pos
     if math.isfinite(destination.yaw):
         entity.yaw = destination.yaw
@@ -105,12 +134,12 @@ def apply(entity, destination: Destination, store=None) -> None:
 
 def teleport(source: Source, targets: list, location: ast.Vec3 | None = None, destination_entity=None,
              rotation_arg: ast.Vec2 | None = None, facing: ast.Vec3 | None = None,
-             facing_entity=None, facing_anchor: str = "feet", store=None) -> int:
+             facing_entity=None, facing_anchor: str = "feet", store=None, version=None) -> int:
     """The whole ``tp TARGETS ...`` command; returns how many entities were teleported."""
     for entity in targets:
         if destination_entity is not None:
             dest = to_entity(destination_entity)
         else:
             dest = to_position(source, entity, location, rotation_arg, facing, facing_entity, facing_anchor)
-        apply(entity, dest, store)
+        apply(entity, dest, store, version)
     return len(targets)

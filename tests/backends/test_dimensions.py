@@ -290,3 +290,30 @@ def test_a_killed_executor_teleported_to_another_level_stays_out_of_the_world(tm
             "execute store result score #left v if entity @e[tag=k]\n")
     emu = run_both(pack(tmp_path, main, **{"t:gone": "kill @s\nexecute in minecraft:the_nether run tp @s ~ ~ ~"}))
     assert score(emu, "#left") == 0 and emu.diagnostics == []
+
+
+RIDE = ('summon pig 0 0 0 {Tags:["v"],Rotation:[10f,0f],Passengers:[{id:"minecraft:marker",Tags:["r"]}]}\n'
+        'tp @e[tag=r] 0.25 1 0 30 0\n'
+        'summon armor_stand 0 0 0 {Tags:["seat"]}\n'
+        'ride @e[tag=v,limit=1] mount @e[tag=seat,limit=1]\n'
+        "execute in minecraft:the_nether run tp @e[tag=v] 10 20 30 40 0\n"
+        "execute as @e[tag=r] on vehicle if entity @s[tag=v] run scoreboard players set #rides v 1\n"
+        "execute as @e[tag=v] on vehicle run scoreboard players set #seated v 1\n")
+
+
+def test_a_vehicle_crossing_levels_takes_its_passengers_along_from_1_21_2(tmp_path):
+    # Entity.teleport: not as a passenger it leaves its vehicle (stopRiding); teleportCrossDimension:
+    # each passenger keeps its offset and its turn relative to the vehicle
+    # (calculatePassengerTransition) and rides it again in the new level
+    emu = run_both(write_pack(tmp_path / "pack", {"t:main": SETUP + RIDE}, pack_format=61))
+    assert sorted(dims(emu)) == [("r", NETHER), ("seat", OVERWORLD), ("v", NETHER)]
+    assert (score(emu, "#rides"), score(emu, "#seated")) == (1, None)
+    rider = emu.entities("@e[tag=r]")[0]
+    assert rider["pos"] == [10.25, 21.0, 30.5] and rider["rotation"][0] == 60.0  # the pig at 10.5 20 30.5
+
+
+def test_before_1_21_2_a_vehicle_crossing_levels_leaves_its_passengers(tmp_path):
+    # 1.20 Entity.teleportTo(ServerLevel, ...) into another level: unRide (ejectPassengers, stopRiding)
+    emu = run_both(write_pack(tmp_path / "pack", {"t:main": SETUP + RIDE}, pack_format=48))
+    assert sorted(dims(emu)) == [("r", OVERWORLD), ("seat", OVERWORLD), ("v", NETHER)]
+    assert (score(emu, "#rides"), score(emu, "#seated")) == (None, None)
