@@ -7,7 +7,8 @@ ExecuteCommand.java (checkRegions).
 """
 from __future__ import annotations
 
-from emulator.world.blocks import BlockSpec, block_pos, parse_block, with_defaults
+from emulator.world import command_blocks
+from emulator.world.blocks import BlockSpec, block_pos, box_positions, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
 from mcfunction_parser.reader import ParseError, Reader
@@ -59,13 +60,18 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     positions = [block_pos(source, corner) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
-        return blocks.setblock(positions[0], spec, mode)
+        count = blocks.setblock(positions[0], spec, mode)
+        command_blocks.after_change(env.state, ctx.dimension, positions[:1])
+        return count
     block_filter = None
     if mode == "replace" and len(words) > 2:
         kept = block_argument(words[2])
         in_tag = block_tag_test(env)
         block_filter = lambda pos: blocks.test(pos, kept, in_tag)  # noqa: E731 - FillCommand's filter
-    return blocks.fill(positions[0], positions[1], spec, mode, block_filter)
+    count = blocks.fill(positions[0], positions[1], spec, mode, block_filter)
+    if spec.id in command_blocks.COMMAND_BLOCKS or blocks.has_any(command_blocks.COMMAND_BLOCKS):
+        command_blocks.after_change(env.state, ctx.dimension, box_positions(positions[0], positions[1]))
+    return count
 
 
 def _read(cmd: ast.GenericCommand) -> tuple[list, list[str]]:

@@ -17,8 +17,8 @@ from __future__ import annotations
 from abc import ABC, abstractmethod
 from typing import Callable
 
-from emulator.world import nbt_ops, stores
-from emulator.world.blocks import BlockMap, block_pos
+from emulator.world import command_blocks, nbt_ops, stores
+from emulator.world.blocks import block_pos
 from emulator.world.entities import POS_LIMIT_XZ, POS_LIMIT_Y, Entity, entity_nbt, modify_entity
 from emulator.world.storage import CommandStorage
 from mcfunction_parser import ast
@@ -63,15 +63,19 @@ class EntityAccessor(DataAccessor):
 
 
 class BlockAccessor(DataAccessor):
-    def __init__(self, blocks: BlockMap, pos) -> None:
-        self.blocks, self.pos = blocks, pos
-        blocks.block_nbt(pos)  # fails now for a block without a block entity, as the game's accessor does
+    def __init__(self, state, dimension: str, pos) -> None:
+        self.state, self.dimension, self.pos = state, dimension, pos
+        self.blocks = state.blocks_in(dimension)
+        self.blocks.block_nbt(pos)  # fails now for a block without a block entity, as the game's accessor does
 
     def read(self) -> Compound:
         return self.blocks.block_nbt(self.pos)
 
     def change(self, edit):
-        return self.blocks.modify_block(self.pos, edit)
+        before = self.blocks.entity(self.pos)
+        result = self.blocks.modify_block(self.pos, edit)
+        command_blocks.after_edit(self.state, self.dimension, self.pos, before)  # the entity loads again
+        return result
 
 
 def accessor(env, target: ast.DataTarget, ctx) -> DataAccessor:
@@ -81,7 +85,7 @@ def accessor(env, target: ast.DataTarget, ctx) -> DataAccessor:
         return StorageAccessor(CommandStorage(state.storage), target.id)
     if isinstance(target, ast.EntityData):
         return EntityAccessor(entities.single(state, target.target, ctx))
-    return BlockAccessor(state.blocks_in(ctx.dimension), block_pos(entities.world_source(state, ctx), target.pos))
+    return BlockAccessor(state, ctx.dimension, block_pos(entities.world_source(state, ctx), target.pos))
 
 
 # ---------------------------------------------------------------------- commands

@@ -68,9 +68,10 @@ class Interpreter:
             self.state.error(failure.message)
             return RootResult(0, None)
         result: list[int | None] = [None]
+        succeeded: list[bool | None] = [None]
 
         def on_result(success: bool, value: int) -> None:
-            result[0] = value if success else 0
+            result[0], succeeded[0] = (value if success else 0), success
 
         limit = self.state.gamerules.max_command_chain_length
         queue = ExecutionQueue(limit, self.state.gamerules.max_command_fork_count, self._internal_error)
@@ -82,7 +83,7 @@ class Interpreter:
             self.state.error("Command execution stopped due to command queue overflow (max 10000000)")
         if queue.cut:
             report_quota_cut(self.state, limit, _where(stopped))
-        return RootResult(queue.cost, result[0], queue.cut)
+        return RootResult(queue.cost, result[0], queue.cut, succeeded[0])
 
     # ------------------------------------------------------------------ tasks
     def _call_function(self, function: ast.Function, commands, source: Source, result_callback,

@@ -90,6 +90,7 @@ class RootResult:
     cost: int
     result: int | None
     cut: bool = False
+    succeeded: bool | None = None  # with a result: whether it was a success (``return fail``, a failed ``return run``: no)
 
 
 class Backend(Protocol):

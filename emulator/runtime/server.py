@@ -43,7 +43,11 @@ from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
 from emulator.world.state import WorldState
+from mcfunction_parser.nbt import Compound, String
+from mcfunction_parser.parse import parse_function
 
+COMMAND_BLOCK_FUNCTION = "dpemu:command_block"  # the macro function a command block's command runs in
+COMMAND_RUNNER_VERSION = (1, 20, 3)
 LOAD_TAG = "minecraft:load"
 TICK_TAG = "minecraft:tick"
 
@@ -92,6 +96,20 @@ class Runtime:
         self.max_root_cost = 0  # the costliest root so far (quota headroom = limit - this)
         self.root_listeners: list[RootListener] = []
         self.rewards_cost = 0  # commands advancement rewards ran (counted in their tick)
+        state.command_runner = self.run_command
+
+    def run_command(self, text: str, context: Context) -> bool | None:
+        """A command block's command as its own root (BaseCommandBlock.performCommand:
+        performPrefixedCommand): whether it succeeded. It runs as ``return run COMMAND`` in a macro
+        function, so both backends parse it when it runs (from 1.20.3, where ``return run`` exists)."""
+        if tuple(self.packs.version) < COMMAND_RUNNER_VERSION:
+            self.state.error("running a command block's command before 1.20.3", severity="warning", unmodelled=True)
+            return None
+        if COMMAND_BLOCK_FUNCTION not in self.packs.functions:
+            function, _ = parse_function("$return run $(command)", "<command block>", COMMAND_BLOCK_FUNCTION,
+                                         tuple(self.packs.version))
+            self.packs.functions[COMMAND_BLOCK_FUNCTION] = function
+        return self.run_root(COMMAND_BLOCK_FUNCTION, context, Compound(command=String(text))).succeeded
 
     def members(self, tag: str) -> list[str]:
         return self.packs.resolve_tag(tag) if tag in self.packs.tags else []

@@ -143,10 +143,10 @@ class NumbaBackend:
         self.returned = False
         cut = self._drive(limit)
         self._flush_overflows()
-        result = None
+        result = succeeded = None
         if self.returned and r[vm.R_HAS]:
-            result = int(r[vm.R_VAL]) if r[vm.R_OK] else 0
-        return RootResult(int(limit - r[vm.R_QUOTA]), result, cut)
+            result, succeeded = (int(r[vm.R_VAL]) if r[vm.R_OK] else 0), bool(r[vm.R_OK])
+        return RootResult(int(limit - r[vm.R_QUOTA]), result, cut, succeeded)
 
     def run_ticks(self, functions: list[str], ticks: int, at_tick) -> TickBatch | None:
         """:class:`emulator.runtime.backend.TickBatches`: the VM runs the roots one after the other

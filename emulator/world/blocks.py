@@ -42,6 +42,7 @@ from mcfunction_parser.nbt import Compound, Int, String
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure
+from emulator.world import command_blocks
 from emulator.world.inventories import default_block_entity
 from emulator.world.nbt_ops import compare_nbt, copy_tag, tags_equal
 from emulator.world.source import Source
@@ -153,6 +154,11 @@ def _volume(lo, hi) -> int:
     return math.prod(h - l + 1 for l, h in zip(lo, hi))
 
 
+def box_positions(start, end) -> list[tuple[int, int, int]]:
+    """Every position of the box between two corners."""
+    return list(_positions(*_box(start, end)))
+
+
 def _positions(lo, hi):
     # BlockPos.betweenClosed: x fastest, then y, then z.
     for z in range(lo[2], hi[2] + 1):
@@ -172,6 +178,9 @@ class BlockMap:
     def entity(self, pos) -> Compound | None:
         return self.entities.get(tuple(pos))
 
+    def has_any(self, block_ids) -> bool:
+        return any(state.id in block_ids for state in self.states.values())
+
     def _place(self, pos, spec: BlockSpec) -> bool:
         """``BlockInput.place``: False when the state is already there (block entity data not applied)."""
         pos, state = tuple(pos), spec.state
@@ -183,6 +192,8 @@ class BlockMap:
             self.states[pos] = state
         self.entities.pop(pos, None)
         nbt = default_block_entity(state.id)
+        if nbt is None:
+            nbt = command_blocks.default_entity(state.id)
         if spec.nbt is not None:
             nbt = nbt or Compound()
             nbt.update(copy_tag(spec.nbt))

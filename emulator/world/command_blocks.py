@@ -1,0 +1,249 @@
+"""Command blocks: impulse, repeating and chain command blocks running their ``Command`` as the
+game runs them, with the block entity fields a pack reads back (``SuccessCount``, ``LastOutput``,
+``LastExecution``, ``conditionMet``, ``powered``, ``auto``).
+
+- ``default_entity(block_id)``: the block entity a command block is placed with.
+- ``after_change(state, dimension, positions)``: after ``setblock``/``fill`` changed ``positions``:
+  a command block placed there loads (CommandBlockEntity.loadAdditional -> setAutomatic: ``auto``
+  schedules its tick unless powered or a chain block), and each command block beside a changed
+  block hears the change (CommandBlock.neighborChanged: powered by a neighbour's signal, an
+  impulse or repeating one not ``auto`` schedules its tick in 1 tick).
+- ``after_edit(state, dimension, pos, before)``: after ``data merge|modify block`` changed a command
+  block's entity (loadAdditional: ``auto`` rising schedules the tick).
+- The block tick (CommandBlock.tick): an impulse block runs once, a repeating one every tick while
+  powered or ``auto``; a conditional one only when the block behind it (against its facing) is a
+  command block whose ``SuccessCount`` is above 0; after it, the chain blocks it faces run in turn
+  (CommandBlock.executeChain: powered or ``auto`` ones, a conditional one as above, the chain
+  stopping at a block that did not run its command this game time, at most
+  ``maxCommandChainLength`` steps).
+- Running the command (BaseCommandBlock.performCommand): not twice in a game time (``LastExecution``
+  with ``UpdateLastExecution``); ``SuccessCount`` the command's success (1 or 0); as a source at the
+  block's centre, rotated to its facing (Direction.toYRot), in the overworld, with no entity. The
+  runtime runs the text (``state.command_runner(text, context) -> bool | None``: True on success).
+
+Power (Level.hasNeighborSignal) comes from a neighbouring redstone block, a powered lever or
+button, or a lit redstone torch; any other redstone component beside a command block is not
+modelled (a warning: the test is inconclusive). ``LastOutput`` (with ``TrackOutput`` and the
+``commandBlockOutput`` game rule) is written with its time, ``[HH:mm:ss] `` as the game writes it
+from the wall clock; the message after it is the command's feedback text, which the emulator does
+not produce (a warning: the test is inconclusive). A command that forks over several contexts
+counts one success, the game one per context. Command blocks outside the overworld do not run
+(a warning). ``CustomName`` naming the source (``@`` by default) is not modelled.
+
+Sources (decompiled 1.21.x and 26.1): world/level/block/CommandBlock.java (neighborChanged, tick,
+execute, executeChain, setPoweredAndUpdate), block/entity/CommandBlockEntity.java (loadAdditional,
+setAutomatic, scheduleTick, markConditionMet, getMode, isConditional), world/level/BaseCommandBlock.java
+(performCommand, save, load, sendSystemMessage: ``[HH:mm:ss] `` + the message),
+server/commands/SetBlockCommand.java and FillCommand.java (Level.blockUpdated after placing).
+"""
+from __future__ import annotations
+
+import datetime
+import json
+
+from emulator.world.context import Context
+from emulator.world.nbt_ops import is_numeric, numeric_value
+from mcfunction_parser.nbt import Byte, Compound, Int, Long, String
+
+IMPULSE, REPEATING, CHAIN = ("minecraft:command_block", "minecraft:repeating_command_block",
+                             "minecraft:chain_command_block")
+COMMAND_BLOCKS = frozenset((IMPULSE, REPEATING, CHAIN))
+COMPONENT_TEXT_VERSION = (1, 21, 5)  # LastOutput saved as a text component's tag, a JSON string before
+_OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
+            "east": (1, 0, 0)}
+_OPPOSITE = {"up": "down", "down": "up", "north": "south", "south": "north", "west": "east", "east": "west"}
+_Y_ROT = {"south": 0.0, "west": 90.0, "north": 180.0, "east": 270.0, "up": 270.0, "down": 270.0}  # Direction.toYRot
+# neighbours whose signal the emulator does not work out (wires, repeaters, powered blocks ...)
+_UNKNOWN_POWER = ("redstone_wire", "repeater", "comparator", "observer", "daylight_detector", "target",
+                  "pressure_plate", "tripwire_hook", "trapped_chest", "lectern", "sculk_sensor", "piston")
+
+
+def default_entity(block_id: str) -> Compound | None:
+    """BaseCommandBlock.save and CommandBlockEntity.saveAdditional of a new command block."""
+    if block_id not in COMMAND_BLOCKS:
+        return None
+    return Compound(Command=String(""), SuccessCount=Int(0), TrackOutput=Byte(1), UpdateLastExecution=Byte(1),
+                    powered=Byte(0), conditionMet=Byte(0), auto=Byte(0))
+
+
+def _flag(nbt: Compound, key: str, default: bool = False) -> bool:
+    value = nbt.get(key)
+    return bool(numeric_value(value)) if is_numeric(value) else default
+
+
+def _facing(block) -> str:
+    return dict(block.properties).get("facing", "north")
+
+
+def _beside(pos, direction: str):
+    dx, dy, dz = _OFFSETS[direction]
+    return (pos[0] + dx, pos[1] + dy, pos[2] + dz)
+
+
+# ---------------------------------------------------------------------- changes
+def after_change(state, dimension: str, positions) -> None:
+    """SetBlockCommand / FillCommand: each changed block loads, then its neighbours hear of it."""
+    blocks = state.blocks_in(dimension)
+    positions = [tuple(p) for p in positions]
+    if dimension != "minecraft:overworld":
+        if any(blocks.get(p).id in COMMAND_BLOCKS for p in positions):
+            state.error(f"a command block in {dimension} (command blocks run in the overworld only here)",
+                        severity="warning", unmodelled=True)
+        return
+    for pos in positions:
+        if blocks.get(pos).id in COMMAND_BLOCKS:
+            _set_automatic(state, pos, before=False)
+    heard = {n for pos in positions for n in (_beside(pos, d) for d in _OFFSETS) if blocks.get(n).id in COMMAND_BLOCKS}
+    for pos in sorted(heard):
+        _neighbour_changed(state, pos)
+
+
+def after_edit(state, dimension: str, pos, before: Compound | None) -> None:
+    """``data`` changed the command block's entity: CommandBlockEntity.loadAdditional."""
+    if dimension != "minecraft:overworld" or state.blocks.get(pos).id not in COMMAND_BLOCKS:
+        return
+    _set_automatic(state, tuple(pos), before=_flag(before or Compound(), "auto"))
+
+
+def _set_automatic(state, pos, before: bool) -> None:
+    """CommandBlockEntity.setAutomatic: ``auto`` rising schedules the tick (not powered, not a chain)."""
+    nbt = state.blocks.entity(pos)
+    if nbt is None:
+        return
+    if _flag(nbt, "auto") and not before and not _flag(nbt, "powered") and state.blocks.get(pos).id != CHAIN:
+        _schedule(state, pos)
+
+
+def _neighbour_changed(state, pos) -> None:
+    """CommandBlock.setPoweredAndUpdate with Level.hasNeighborSignal."""
+    nbt = state.blocks.entity(pos)
+    powered = has_neighbour_signal(state, pos)
+    if nbt is None or powered == _flag(nbt, "powered"):
+        return
+    nbt["powered"] = Byte(int(powered))
+    if powered and not _flag(nbt, "auto") and state.blocks.get(pos).id != CHAIN:
+        _schedule(state, pos)
+
+
+def has_neighbour_signal(state, pos) -> bool:
+    """Level.hasNeighborSignal for the sources modelled here."""
+    found = False
+    for direction in _OFFSETS:
+        block = state.blocks.get(_beside(pos, direction))
+        name, properties = block.id.removeprefix("minecraft:"), dict(block.properties)
+        if name == "redstone_block" or (name in ("lever",) or name.endswith("_button")) and \
+                properties.get("powered") == "true":
+            found = True
+        elif name in ("redstone_torch", "redstone_wall_torch") and properties.get("lit", "true") == "true":
+            found = found or not _torch_on(block, direction)
+        elif any(kind in name for kind in _UNKNOWN_POWER):
+            state.error(f"the redstone signal of {block.id} beside a command block", severity="warning",
+                        unmodelled=True)
+    return found
+
+
+def _torch_on(torch, direction: str) -> bool:
+    """Whether the command block is the block the torch stands on or hangs from (no signal into it)."""
+    if torch.id.endswith("redstone_torch"):
+        return direction == "up"
+    return _OPPOSITE[direction] == dict(torch.properties).get("facing", "north")
+
+
+def _schedule(state, pos) -> None:
+    """CommandBlockEntity.scheduleTick: markConditionMet, then the block's tick in 1 game tick."""
+    _mark_condition_met(state, pos)
+    state.block_ticks.schedule(pos, state.blocks.get(pos).id, 1, state.gametime, tick)
+
+
+def _mark_condition_met(state, pos) -> bool:
+    """CommandBlockEntity.markConditionMet: unconditional, or the block behind has SuccessCount > 0."""
+    block, nbt = state.blocks.get(pos), state.blocks.entity(pos)
+    met = True
+    if dict(block.properties).get("conditional") == "true":
+        behind = _beside(pos, _OPPOSITE[_facing(block)])
+        there = state.blocks.entity(behind)
+        met = state.blocks.get(behind).id in COMMAND_BLOCKS and there is not None and \
+            is_numeric(there.get("SuccessCount")) and int(numeric_value(there["SuccessCount"])) > 0
+    nbt["conditionMet"] = Byte(int(met))
+    return met
+
+
+# ---------------------------------------------------------------------- ticks
+def tick(state, pos) -> None:
+    """CommandBlock.tick."""
+    block, nbt = state.blocks.get(pos), state.blocks.entity(pos)
+    if nbt is None:
+        return
+    was_met = _flag(nbt, "conditionMet")
+    conditional = dict(block.properties).get("conditional") == "true"
+    if block.id == REPEATING:
+        _mark_condition_met(state, pos)
+    if block.id in (REPEATING, IMPULSE):
+        if was_met:
+            _execute(state, pos, block, nbt)
+        elif conditional:
+            nbt["SuccessCount"] = Int(0)
+    if block.id == REPEATING and (_flag(nbt, "powered") or _flag(nbt, "auto")):
+        state.block_ticks.schedule(pos, block.id, 1, state.gametime, tick)
+
+
+def _execute(state, pos, block, nbt: Compound) -> None:
+    """CommandBlock.execute: the command (an empty one only clears SuccessCount), then the chain."""
+    if str(nbt.get("Command", "")):
+        perform(state, pos, nbt)
+    else:
+        nbt["SuccessCount"] = Int(0)
+    _execute_chain(state, pos, _facing(block))
+
+
+def _execute_chain(state, pos, direction: str) -> None:
+    """CommandBlock.executeChain."""
+    steps = state.gamerules.max_command_chain_length
+    while steps > 0:
+        steps -= 1
+        pos = _beside(pos, direction)
+        block, nbt = state.blocks.get(pos), state.blocks.entity(pos)
+        if block.id != CHAIN or nbt is None:
+            break
+        if _flag(nbt, "powered") or _flag(nbt, "auto"):
+            if _mark_condition_met(state, pos):
+                if not perform(state, pos, nbt):
+                    break
+            elif dict(block.properties).get("conditional") == "true":
+                nbt["SuccessCount"] = Int(0)
+        direction = _facing(block)
+
+
+def perform(state, pos, nbt: Compound) -> bool:
+    """BaseCommandBlock.performCommand: False when it already ran this game time."""
+    track_time = _flag(nbt, "UpdateLastExecution", True)
+    last = nbt.get("LastExecution")
+    if track_time and is_numeric(last) and int(numeric_value(last)) == state.gametime:
+        return False
+    command = str(nbt.get("Command", ""))
+    nbt["SuccessCount"] = Int(0)
+    if command:  # the server's enable-command-block is taken as on, as a test server has it
+        block = state.blocks.get(pos)
+        source = Context(pos=(pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), rot=(_Y_ROT[_facing(block)], 0.0))
+        succeeded = state.command_runner(command.removeprefix("/"), source)
+        nbt["SuccessCount"] = Int(1 if succeeded else 0)
+        _last_output(state, nbt, command)
+    if track_time:
+        nbt["LastExecution"] = Long(state.gametime)
+    else:
+        nbt.pop("LastExecution", None)
+    return True
+
+
+def _last_output(state, nbt: Compound, command: str) -> None:
+    """BaseCommandBlock's source: a message becomes ``[HH:mm:ss] `` + the message (wall clock)."""
+    nbt.pop("LastOutput", None)
+    if not _flag(nbt, "TrackOutput", True) or state.gamerules.get("commandBlockOutput") == "false":
+        return
+    stamp = "[" + datetime.datetime.now().strftime("%H:%M:%S") + "] "
+    if tuple(state.version) >= COMPONENT_TEXT_VERSION:
+        nbt["LastOutput"] = Compound(text=String(stamp))
+    else:
+        nbt["LastOutput"] = String(json.dumps({"text": stamp}))
+    state.error(f"the output of the command block command `{command}` (LastOutput holds only its time here)",
+                severity="warning", unmodelled=True)

@@ -1,0 +1,83 @@
+"""Command blocks (emulator.world.command_blocks) on both backends. Sources: CommandBlock.tick,
+execute, executeChain, neighborChanged/setPoweredAndUpdate; CommandBlockEntity.loadAdditional ->
+setAutomatic (auto schedules the tick 1 game tick later), markConditionMet (a conditional block
+needs SuccessCount > 0 behind it); BaseCommandBlock.performCommand (SuccessCount, LastExecution,
+LastOutput as ``[HH:mm:ss] `` and the message)."""
+import pytest
+
+from emulator.api import Emulator
+from tests.backends.programs import write_pack
+
+SETUP = "scoreboard objectives add v dummy\n"
+
+
+def world(tmp_path, main: str, backend: str, pack_format: int = 61) -> Emulator:
+    emu = Emulator(backend=backend)
+    emu.load(write_pack(tmp_path / "pack", {"t:main": SETUP + main}, pack_format=pack_format))
+    emu.start()
+    emu.runtime.call("t:main")
+    return emu
+
+
+def block(emu, pos, key):
+    return emu.state.blocks.entity(pos).get(key)
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_an_auto_impulse_block_runs_once_the_next_tick(tmp_path, backend):
+    emu = world(tmp_path, 'setblock 0 0 0 command_block{auto:1b,Command:"scoreboard players add #n v 1"}\n', backend)
+    assert emu.score("#n", "v") is None
+    emu.tick()
+    assert emu.score("#n", "v") == 1
+    assert block(emu, (0, 0, 0), "SuccessCount") == 1
+    assert block(emu, (0, 0, 0), "LastExecution") == emu.state.gametime
+    emu.tick(5)
+    assert emu.score("#n", "v") == 1
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_repeating_block_runs_every_tick_and_its_chain_follows(tmp_path, backend):
+    """The chain block it faces runs right after it when auto; a conditional chain block runs only
+    while the block behind it succeeded (here a failing test clears it)."""
+    main = ('setblock 0 0 0 repeating_command_block[facing=east]{auto:1b,Command:"scoreboard players add #r v 1"}\n'
+            'setblock 1 0 0 chain_command_block[facing=east]{auto:1b,Command:"execute if score #r v matches 3.. '
+            'run scoreboard players add #c v 0"}\n'
+            'setblock 2 0 0 chain_command_block[facing=east,conditional=true]{auto:1b,'
+            'Command:"scoreboard players add #k v 1"}\n')
+    emu = world(tmp_path, main, backend)
+    emu.tick(4)
+    assert emu.score("#r", "v") == 4
+    assert emu.score("#k", "v") == 2  # the chain's test held in the 3rd and 4th runs only
+    assert block(emu, (1, 0, 0), "SuccessCount") == 1 and block(emu, (2, 0, 0), "conditionMet") == 1
+
+
+def test_a_redstone_block_powers_an_impulse_block_once(tmp_path):
+    """neighborChanged: powered rising schedules the tick; staying powered does not run it again."""
+    main = ('setblock 0 0 0 command_block{Command:"scoreboard players add #p v 1"}\n'
+            "setblock 1 0 0 redstone_block\n")
+    emu = world(tmp_path, main, "python")
+    emu.tick(3)
+    assert emu.score("#p", "v") == 1 and block(emu, (0, 0, 0), "powered") == 1
+    emu.runtime.call("t:main")  # the block is set again (unpowered), then the redstone block anew: no change
+    emu.tick(2)
+    assert emu.score("#p", "v") == 1
+
+
+def test_last_output_holds_the_time_and_is_not_modelled_beyond(tmp_path):
+    """BaseCommandBlock's source: ``[HH:mm:ss] `` and the message (a text component from 1.21.5;
+    Bookshelf's bs.time reads the time from LastOutput.text)."""
+    emu = world(tmp_path, 'setblock 0 0 0 command_block{auto:1b,Command:"scoreboard players add #n v 1"}\n'
+                          "data modify storage t:t time set string block 0 0 0 LastOutput.text 1 9\n",
+                "python", pack_format=71)
+    emu.tick()
+    text = str(block(emu, (0, 0, 0), "LastOutput")["text"])
+    assert text[0] == "[" and text[3] == ":" and text[6] == ":" and text.endswith("] ")
+    assert any(d.unmodelled and "LastOutput" in d.message for d in emu.diagnostics)
+
+
+def test_data_merge_auto_starts_a_block(tmp_path):
+    """CommandBlockEntity.loadAdditional -> setAutomatic: auto rising schedules the tick."""
+    emu = world(tmp_path, 'setblock 0 0 0 command_block{Command:"scoreboard players add #n v 1"}\n'
+                          "data merge block 0 0 0 {auto:1b}\n", "python")
+    emu.tick()
+    assert emu.score("#n", "v") == 1
