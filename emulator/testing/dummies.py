@@ -29,6 +29,7 @@ Modelled:
   the damage grows with the ticks since the dummy joined or last attacked, the target's
   ``Health`` and ``HurtTime``, ``damage_dealt``, a death (emulator.world.combat). A target that
   is not living is not attackable: nothing happens, as in the game. Knockback is not modelled.
+- The block actions act in the dummy's level (its blocks and block ticks: WorldState.level).
 - ``mine``: emulator.world.block_breaking (ServerPlayerGameMode.destroyBlock; the held tool: emulator.world.tools).
 - ``drop [all]``, ``swap``, ``use item``: emulator.world.player_actions (the item entity with its
   ``Thrower``, the hands' stacks, the items whose use is modelled, using an item over ticks);
@@ -140,13 +141,6 @@ def _use(r: Reader, command: DummyCommand) -> DummyCommand:
         command = replace(command, action="use entity", entity=_entity(r))
         return replace(command, pos=vec3(r)) if r.optional_space() else command
     r.fail(f"dummy use: expected item, block or entity, got {what!r}", r.pos - len(what))
-
-
-def _in_overworld(dummy: Entity) -> None:
-    """The block actions act on the overworld's blocks (the test's level)."""
-    if dummy.dimension != "minecraft:overworld":
-        raise Unsupported(f"using or mining blocks in {dummy.dimension} (the dummies' block actions act in the "
-                          "overworld only)")
 
 
 def _word(r: Reader) -> str:
@@ -267,9 +261,8 @@ class Dummies:
         raise DummyFailure(f"Dummy {dummy.player_name} cannot interact with that entity")
 
     def _mine(self, dummy: Entity, command, ctx) -> None:
-        _in_overworld(dummy)
         pos = block_pos(world_entities.world_source(self.state, ctx), command.pos)
-        if not block_breaking.destroy_block(self.state, dummy, pos):
+        if not block_breaking.destroy_block(self.state.level(dummy.dimension), dummy, pos):
             raise DummyFailure(f"Dummy {dummy.player_name} failed to mine block")
 
     def _drop(self, dummy: Entity, command, ctx) -> None:
@@ -290,10 +283,10 @@ class Dummies:
         """DummyCommand.useBlock: each hand in turn, until one consumes the action."""
         if command.face not in DIRECTIONS:
             raise DummyFailure("Not a valid direction")
-        _in_overworld(dummy)
         hit = world_entities.world_source(self.state, ctx).position_of(command.pos, centre=False)
         pos = tuple(math.floor(v) for v in hit)  # BlockPos.containing
+        level = self.state.level(dummy.dimension)  # the dummy's level (DummyCommand: dummy.serverLevel())
         for hand in (player_actions.MAIN, player_actions.OFF):
-            if block_use.use_item_on(self.state, dummy, hand, pos, command.face, hit) == "consume":
+            if block_use.use_item_on(level, dummy, hand, pos, command.face, hit) == "consume":
                 return
         raise DummyFailure(f"Dummy {dummy.player_name} cannot interact with that block")

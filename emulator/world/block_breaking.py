@@ -81,7 +81,7 @@ def destroy_block(state, player, pos) -> bool:
         _exhaust(player, MINING_EXHAUSTION)
         if state.gamerules.get("doTileDrops") != "false":
             for stack in drops:
-                _pop(state, pos, stack)
+                _pop(state, pos, stack, player.dimension)
     return True
 
 
@@ -125,11 +125,11 @@ def _exhaust(player, amount) -> None:
     player.data["foodExhaustionLevel"] = Float(float(min(current + amount, F32(40.0))))
 
 
-def _pop(state, pos, stack) -> None:
+def _pop(state, pos, stack, dimension: str) -> None:
     """Block.popResource: an item entity about the block's centre (pickup delay 10)."""
     rng = state.resources.random
     x, y, z = (pos[0] + 0.5 + rng.uniform(-0.25, 0.25), pos[1] + 0.5 + rng.uniform(-0.25, 0.25) - ITEM_HALF_HEIGHT,
                pos[2] + 0.5 + rng.uniform(-0.25, 0.25))
     inventories.drop_item(state.entities, (x, y, z), stack, state.version, rng,
                           Compound(PickupDelay=Short(10), Motion=List([Double(rng.random() * 0.2 - 0.1), Double(0.2),
-                                                                        Double(rng.random() * 0.2 - 0.1)])))
+                                                                        Double(rng.random() * 0.2 - 0.1)])), dimension)

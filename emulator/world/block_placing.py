@@ -34,7 +34,8 @@ REPLACEABLE = frozenset("minecraft:" + n for n in (
 _OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
             "east": (1, 0, 0)}
 _VEHICLES = ("boat", "raft", "minecart")
-BUILD_LIMITS = (-64, 320)  # the overworld's height (DimensionType min_y, height)
+# the vanilla levels' build heights (their DimensionType's min_y, min_y + height)
+BUILD_LIMITS = {"minecraft:overworld": (-64, 320), "minecraft:the_nether": (0, 256), "minecraft:the_end": (0, 256)}
 
 
 def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | None:
@@ -52,7 +53,8 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
         if stack.component(component) is not None:
             raise Unmodelled(f"placing {block_id} with its {component} component")
     target = _target(state, clicked, face)
-    if target is None or not BUILD_LIMITS[0] <= target[1] < BUILD_LIMITS[1] or _obstructed(state, target):
+    low, high = _build_limits(player.dimension)
+    if target is None or not low <= target[1] < high or _obstructed(state, target, player.dimension):
         return "fail"
     placed = placed_states.state_for_placement(state, player, block_id, properties, target, face,
                                                tuple(hit) if hit is not None else tuple(clicked)) if properties else {}
@@ -84,10 +86,18 @@ def _target(state, clicked, face: str):
     return beside if state.blocks.get(beside).id in REPLACEABLE else None
 
 
-def _obstructed(state, pos) -> bool:
-    """Level.isUnobstructed: a living entity (not a spectator) or vehicle overlapping the block."""
+def _build_limits(dimension: str) -> tuple[int, int]:
+    if dimension not in BUILD_LIMITS:
+        raise Unmodelled(f"the build height of {dimension} (its dimension type's min_y and height)")
+    return BUILD_LIMITS[dimension]
+
+
+def _obstructed(state, pos, dimension: str) -> bool:
+    """Level.isUnobstructed: a living entity (not a spectator) or vehicle of the level overlapping the block."""
     for entity in state.entities.entities:
         if not entity.alive or (entity.type in NOT_LIVING and not entity.type.endswith(_VEHICLES)):
+            continue
+        if entity.dimension != dimension:
             continue
         if entity.is_player and entity.gamemode == "spectator":
             continue

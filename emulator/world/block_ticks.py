@@ -2,7 +2,8 @@
 (a pressed button springs back). ``schedule(pos, block_id, delay, gametime, action)``; each server
 tick ``run_due(state)`` runs, after the scheduled functions, every tick due by the game time, in
 due then scheduling order, and only while the block at ``pos`` is still ``block_id`` (a block tick
-of a block that was replaced does nothing: ServerLevel.tickBlock checks the block).
+of a block that was replaced does nothing: ServerLevel.tickBlock checks the block). Each tick is of a
+level: ``action(level, pos)`` gets that level's view (WorldState.level).
 
 Sources (decompiled 1.21): world/ticks/LevelTicks.java (tick: trigger time <= game time, then
 priority and insertion order), server/level/ServerLevel.java (tick: tickTime, then blockTicks.tick;
@@ -14,17 +15,25 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 
+OVERWORLD = "minecraft:overworld"
+
+
 @dataclass
 class BlockTicks:
-    pending: list = field(default_factory=list)  # (due game time, order, pos, block id, action(state, pos))
+    # (due game time, order, pos, block id, action(level, pos), level): ``level`` is the dimension
+    pending: list = field(default_factory=list)
     order: int = 0
 
-    def schedule(self, pos, block_id: str, delay: int, gametime: int, action: Callable) -> None:
+    def schedule(self, pos, block_id: str, delay: int, gametime: int, action: Callable,
+                 dimension: str = OVERWORLD) -> None:
         """LevelAccessor.scheduleTick: a tick already pending for that block at ``pos`` stays (no second)."""
-        if any(p[2] == tuple(pos) and p[3] == block_id for p in self.pending):
+        if any(p[2] == tuple(pos) and p[3] == block_id and p[5] == dimension for p in self.pending):
             return
         self.order += 1
-        self.pending.append((gametime + delay, self.order, tuple(pos), block_id, action))
+        self.pending.append((gametime + delay, self.order, tuple(pos), block_id, action, dimension))
+
+    def in_level(self, dimension: str) -> "LevelTicks":
+        return LevelTicks(self, dimension)
 
     def next_due(self) -> int | None:
         """The game time of the next pending block tick, None when none is pending."""
@@ -35,6 +44,20 @@ class BlockTicks:
             return
         due = sorted(p for p in self.pending if p[0] <= state.gametime)
         self.pending = [p for p in self.pending if p[0] > state.gametime]
-        for _, _, pos, block_id, action in due:
-            if state.blocks.get(pos).id == block_id:
-                action(state, pos)
+        for _, _, pos, block_id, action, dimension in due:
+            if state.blocks_in(dimension).get(pos).id == block_id:
+                action(state.level(dimension), pos)
+
+
+@dataclass
+class LevelTicks:
+    """One level's block ticks (the ``block_ticks`` of a level view)."""
+
+    ticks: BlockTicks
+    dimension: str
+
+    def schedule(self, pos, block_id: str, delay: int, gametime: int, action: Callable) -> None:
+        self.ticks.schedule(pos, block_id, delay, gametime, action, self.dimension)
+
+    def next_due(self) -> int | None:
+        return self.ticks.next_due()

@@ -219,7 +219,7 @@ def _open_menu(state, player, pos, block: BlockState, award: bool) -> str:
     close_menu(state, player)
     if block.id == "minecraft:barrel":
         _set(state, pos, block, open="true")  # BarrelBlockEntity.startOpen -> updateBlockState
-    _MENU[player] = pos
+    _MENU[player] = (player.dimension, pos)
     if award and MENUS[block.id] is not None:
         statistics.award(state, player, statistics.stat_name("custom", MENUS[block.id]))
     return "consume"
@@ -236,12 +236,14 @@ def _blocker(block: BlockState, pos):
 
 def close_menu(state, player) -> None:
     """AbstractContainerMenu.removed -> Container.stopOpen: a barrel with no viewer left closes."""
-    pos = _MENU.pop(player, None)
-    if pos is None:
+    opened = _MENU.pop(player, None)
+    if opened is None:
         return
-    block = state.blocks.get(pos)
-    if block.id == "minecraft:barrel" and not any(p == pos for p in _MENU.values()):
-        _set(state, pos, block, open="false")
+    level = state.level(opened[0])
+    pos = opened[1]
+    block = level.blocks.get(pos)
+    if block.id == "minecraft:barrel" and opened not in _MENU.values():
+        _set(level, pos, block, open="false")
 
 
 def tick_is_idle(state) -> bool:
@@ -254,8 +256,9 @@ def tick_menus(state) -> None:
     the block interaction range + 4 of the block's box: Player.canInteractWithBlock)."""
     if not _MENU:  # every tick: no open container is the common case
         return
-    for player, pos in list(_MENU.items()):
-        if not player.alive or state.blocks.get(pos).id not in MENUS or not _within_reach(player, pos):
+    for player, (dimension, pos) in list(_MENU.items()):
+        if (not player.alive or player.dimension != dimension or state.blocks_in(dimension).get(pos).id not in MENUS
+                or not _within_reach(player, pos)):
             close_menu(state, player)
 
 

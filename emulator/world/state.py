@@ -453,6 +453,12 @@ class WorldState:
             return self.blocks
         return self.other_levels_blocks.setdefault(dimension, BlockMap())
 
+    def level(self, dimension: str) -> "LevelView":
+        """The world as seen from level ``dimension`` (what the game's ServerLevel gives a block's
+        code): its blocks and its block ticks; everything else is the world's."""
+        return self if dimension == "minecraft:overworld" else LevelView(self, dimension)
+
+
     def emit(self, kind: str, text: str, loc: Loc | None = None, receivers: tuple[str, ...] = ()) -> None:
         self.log.append(LogEntry(self.tick, kind, text, loc, receivers))
 
@@ -463,3 +469,16 @@ class WorldState:
     def error(self, message: str, frames: tuple[Frame, ...] = (), severity: str = "error",
               unmodelled: bool = False) -> None:
         self.diagnostics.append(RuntimeDiagnostic(self.tick, message, frames, severity, unmodelled))
+
+
+class LevelView:
+    """:meth:`WorldState.level` for a level other than the overworld: ``blocks`` and ``block_ticks``
+    are that level's, every other attribute is the world's."""
+
+    def __init__(self, state: WorldState, dimension: str) -> None:
+        self._state, self.dimension = state, dimension
+        self.blocks = state.blocks_in(dimension)
+        self.block_ticks = state.block_ticks.in_level(dimension)
+
+    def __getattr__(self, name: str):
+        return getattr(self._state, name)
