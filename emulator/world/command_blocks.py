@@ -245,5 +245,6 @@ def _last_output(state, nbt: Compound, command: str) -> None:
         nbt["LastOutput"] = Compound(text=String(stamp))
     else:
         nbt["LastOutput"] = String(json.dumps({"text": stamp}))
-    state.error(f"the output of the command block command `{command}` (LastOutput holds only its time here)",
-                severity="warning", unmodelled=True)
+    message = f"the output of the command block command `{command}` (LastOutput holds only its time here)"
+    if not any(d.message == message for d in state.diagnostics):  # once, not every tick of a repeating block
+        state.error(message, severity="warning", unmodelled=True)
