@@ -12,7 +12,6 @@ each (the item entity, the inventory NBT, statistics, the ``using_item``/``consu
   only ``consume`` is an action the client's use stops at). Any other item raises Unmodelled.
 - ``tick_using(state)``: each player using an item (LivingEntity.updatingUsingItem): the
   ``using_item`` trigger every tick, and when its use duration ends the item is consumed.
-- ``is_using(player)``.
 
 Sources (decompiled 1.21.x): server/level/ServerPlayer.java (drop, updateUsingItem),
 world/entity/player/Player.java and LivingEntity.java (createItemStackToDrop, startUsingItem,
@@ -25,7 +24,6 @@ world/item/ItemStack.java (finishUsingItem, applyAfterUseComponentSideEffects), 
 """
 from __future__ import annotations
 
-import weakref
 from dataclasses import dataclass
 
 import numpy as np
@@ -91,13 +89,6 @@ class _Using:
     remaining: int  # useItemRemaining
 
 
-_USING: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-
-
-def is_using(player) -> bool:
-    return player in _USING
-
-
 def hand_slot(hand: str) -> int:
     return inventories.MAINHAND if hand == MAIN else inventories.OFFHAND
 
@@ -143,7 +134,7 @@ def _bow(state, player, hand, stack: ItemStack) -> str:
     it shoots only when released, which a dummy never does."""
     if player.gamemode != "creative" and projectile_weapons.ammunition(state, player, stack).is_empty:
         return "fail"
-    _USING[player] = _Using(hand, stack.id, BOW_USE_TICKS)
+    state.using_items[player] = _Using(hand, stack.id, BOW_USE_TICKS)
     return "consume"
 
 
@@ -155,7 +146,7 @@ def _crossbow(state, player, hand, stack: ItemStack) -> str:
         return "consume"
     if projectile_weapons.ammunition(state, player, stack).is_empty:
         return "fail"
-    _USING[player] = _Using(hand, stack.id, CROSSBOW_USE_TICKS)
+    state.using_items[player] = _Using(hand, stack.id, CROSSBOW_USE_TICKS)
     return "consume"
 
 
@@ -172,7 +163,7 @@ def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: con
     if unmodelled:  # known when the use starts, so the dummy's command is what the test reports
         raise Unmodelled(f"the {_effect_type(unmodelled[0])} consume effect of {stack.id}")
     if consumable.ticks > 0:
-        _USING[player] = _Using(hand, stack.id, consumable.ticks)
+        state.using_items[player] = _Using(hand, stack.id, consumable.ticks)
         return "consume"
     _finish(state, player, hand, consumable)
     return "consume"
@@ -186,27 +177,27 @@ def _can_eat(player, food: consumables.Food) -> bool:
 
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_using` would do nothing now: no player is using an item."""
-    return not _USING
+    return not state.using_items
 
 
 def tick_using(state) -> None:
     """LivingEntity.updatingUsingItem for each player using an item: stops when the hand no longer
     holds that item; else ``using_item`` fires (ServerPlayer.updateUsingItem) and, when the duration
     runs out, the item is consumed (completeUsingItem)."""
-    if not _USING:  # every tick: nobody using an item is the common case
+    if not state.using_items:  # every tick: nobody using an item is the common case
         return
-    for player, using in list(_USING.items()):
+    for player, using in list(state.using_items.items()):
         if not player.alive:
-            del _USING[player]
+            del state.using_items[player]
             continue
         stack = inventories.entity_slot(player, hand_slot(using.hand), state.version).get()
         if stack.is_empty or stack.id != using.item:
-            del _USING[player]
+            del state.using_items[player]
             continue
         advancements.trigger(state, player, "using_item", _item_test(state, stack))
         using.remaining -= 1
         if using.remaining == 0 and stack.id != "minecraft:crossbow":  # Item.useOnRelease: a crossbow waits
-            del _USING[player]
+            del state.using_items[player]
             consumable = consumables.consumable(stack, state.version)
             if consumable is not None:
                 _finish(state, player, using.hand, consumable)
