@@ -35,7 +35,7 @@ class RootStats:
         self.by_function: dict[str, RootRuns] = {}
 
     def __call__(self, function_id: str, result: RootResult) -> None:
-        runs = self.by_function.setdefault(function_id, RootRuns())
+        runs = self.by_function.get(function_id) or self.by_function.setdefault(function_id, RootRuns())
         runs.runs += 1
         runs.called += result.cost > 0
         runs.cost += result.cost

@@ -96,6 +96,7 @@ class Runtime:
         self.max_root_cost = 0  # the costliest root so far (quota headroom = limit - this)
         self.root_listeners: list[RootListener] = []
         self.rewards_cost = 0  # commands advancement rewards ran (counted in their tick)
+        self._members: dict[tuple[str, int], tuple[str, ...]] = {}
         state.command_runner = self.run_command
 
     def run_command(self, text: str, context: Context) -> bool | None:
@@ -111,8 +112,14 @@ class Runtime:
             self.packs.functions[COMMAND_BLOCK_FUNCTION] = function
         return self.run_root(COMMAND_BLOCK_FUNCTION, context, Compound(command=String(text))).succeeded
 
-    def members(self, tag: str) -> list[str]:
-        return self.packs.resolve_tag(tag) if tag in self.packs.tags else []
+    def members(self, tag: str) -> tuple[str, ...]:
+        """The functions ``#tag`` runs, resolved once: the tags do not change while the packs run, and
+        functions are only ever added (a command block's), so their count keys what the tag finds."""
+        key = (tag, len(self.packs.functions))
+        found = self._members.get(key)
+        if found is None:
+            found = self._members[key] = tuple(self.packs.resolve_tag(tag)) if tag in self.packs.tags else ()
+        return found
 
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
         """One root sequence, its NBT lists under the rule of the packs' release (mixed types from 1.21.5)."""
@@ -246,5 +253,5 @@ class Runtime:
         state.tick += 1
         return cost
 
-    def _run_all(self, functions: list[str]) -> int:
+    def _run_all(self, functions) -> int:
         return sum(self.run_root(f).cost for f in functions)

@@ -12,7 +12,8 @@ import numba
 import numpy as np
 
 from emulator.vm import loop as vm, variants
-from emulator.vm.loop import R_BATCH, R_BSTOP, R_CTX, R_HAS, R_NLOG, R_OK, R_PC, R_VAL, ST_HOST
+from emulator.vm.loop import (R_ALIVE, R_BATCH, R_BSTOP, R_CALLFN, R_COUNTING, R_CTX, R_FORKLIMIT, R_HAS, R_NCTX,
+                              R_NLOG, R_NOVF, R_OK, R_PC, R_QUOTA, R_ROOT, R_SANITIZE, R_VAL, ST_DONE, ST_HOST)
 from emulator.commands import entities as world_entities
 from emulator.runtime.backend import HostRun, RootResult, TickBatch, report_quota_cut
 from emulator.vm.compiler import Compiler
@@ -26,7 +27,7 @@ from emulator.commands.data import macro_arguments
 from emulator.world.errors import MESSAGES, CommandFailure
 from emulator.runtime.macros import MacroExpander
 from emulator.world.semantics import wrap32
-from emulator.world.context import Context
+from emulator.world.context import SERVER, Context
 from emulator.world.records import Frame, Overflow
 from emulator.world.state import WorldState
 from mcfunction_parser import ast
@@ -93,7 +94,7 @@ class NumbaBackend:
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
         self.context_ids: dict[tuple, int] = {}
-        self.as_cache = np.full((vm.AS_CACHE_SIZE, 4), -1, dtype=np.int64)  # rows (context, slot, kind, made)
+        self.as_cache = np.full((vm.AS_CACHE_SIZE, 5), -1, dtype=np.int64)  # rows (context, slot, kind, made, root)
         # the store targets a context's chain resolved, ((id(store node), key), ...), by CI_BIND: a
         # store writes to what its stage resolved, whatever context the chain ends in
         self.binding_sets: list[tuple] = [()]
@@ -107,6 +108,7 @@ class NumbaBackend:
         self.rewards: list[tuple[np.ndarray, list]] = []
         self.batch = np.zeros(1, dtype=np.int64)  # run_ticks: the tick functions, then each root's cost
         self.stale = True  # the machine (the arrays above in one structure) is to be made again
+        self._root_key = None  # the last root's entity-less context, in row 0 of the context arrays
         self._world = (None, None, None, 0)  # the world's arrays it holds: scoreboard, entities, tags, living
 
     def new_world(self, state: WorldState) -> None:
@@ -127,7 +129,7 @@ class NumbaBackend:
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
-        r = self._start_root(context or Context())
+        self._start_root(context or Context())
         function = self.packs.functions.get(function_id)
         if function is None:
             state.error(f"Unknown function {function_id}")
@@ -142,11 +144,13 @@ class NumbaBackend:
         self._set_root(fn, limit)
         self.returned = False
         cut = self._drive(limit)
-        self._flush_overflows()
+        rv = self.rv
+        if rv[R_NOVF]:
+            self._flush_overflows()
         result = succeeded = None
-        if self.returned and r[vm.R_HAS]:
-            result, succeeded = (int(r[vm.R_VAL]) if r[vm.R_OK] else 0), bool(r[vm.R_OK])
-        return RootResult(int(limit - r[vm.R_QUOTA]), result, cut, succeeded)
+        if self.returned and rv[R_HAS]:
+            result, succeeded = (rv[R_VAL] if rv[R_OK] else 0), bool(rv[R_OK])
+        return RootResult(limit - rv[R_QUOTA], result, cut, succeeded)
 
     def run_ticks(self, functions: list[str], ticks: int, at_tick) -> TickBatch | None:
         """:class:`emulator.runtime.backend.TickBatches`: the VM runs the roots one after the other
@@ -182,26 +186,33 @@ class NumbaBackend:
 
     def _start_root(self, context: Context) -> np.ndarray:
         """Registers and contexts for a new root run in ``context`` (context 0); the registers."""
-        r = self.regs
-        if r[vm.R_NCTX] > 1:  # the VM made contexts: as_cache names them (their indexes start again)
-            self.as_cache[:, 0] = -1
-        r[:] = 0
-        self.contexts = {}
-        self.context_ids = {}
+        r, rv = self.regs, self.rv
+        root = rv[R_ROOT] + 1  # the contexts the VM made (as_cache names them) are the last root's
+        r.fill(0)
+        rv[R_ROOT] = root
         self.store_targets = {}
         self.rewards = []
-        self._context_index(context, ())
+        key = _context_key(context, ())
+        if key == self._root_key:  # an entity-less context: row 0 still holds it (no one else writes there)
+            self.contexts = {0: context}
+            self.context_ids = {key: 0}
+            rv[R_NCTX] = 1
+        else:
+            self.contexts = {}
+            self.context_ids = {}
+            self._context_index(context, ())
+            self._root_key = key if context.executor == SERVER else None
         return r
 
     def _set_root(self, fn: int, limit: int) -> None:
-        r = self.regs
-        r[vm.R_PC] = Program.ROOT_PC
-        r[vm.R_QUOTA] = limit
-        r[vm.R_ALIVE] = 1
-        r[vm.R_CALLFN] = fn
-        r[vm.R_SANITIZE] = int(self.sanitize)
-        r[vm.R_COUNTING] = int(self.counting)
-        r[vm.R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
+        rv = self.rv
+        rv[R_PC] = Program.ROOT_PC
+        rv[R_QUOTA] = limit
+        rv[R_ALIVE] = 1
+        rv[R_CALLFN] = fn
+        rv[R_SANITIZE] = int(self.sanitize)
+        rv[R_COUNTING] = int(self.counting)
+        rv[R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
 
     def _drive(self, limit: int) -> bool:
         """Run the VM until the root is done (in a batch of ticks: until the VM comes back at the end of
@@ -225,15 +236,15 @@ class NumbaBackend:
                 except Exception as error:  # noqa: BLE001 - the pack's run must go on
                     self._host_failed(pc, error)
                 continue
-            batching = r[vm.R_BATCH] != 0
+            batching = rv[R_BATCH] != 0
             if batching:
-                self._batch_root(status == vm.ST_DONE)
-            log_full = r[vm.R_NLOG] == self.logbuf.shape[0]
-            if r[vm.R_NLOG]:
+                self._batch_root(status == ST_DONE)
+            log_full = rv[R_NLOG] == self.logbuf.shape[0]
+            if rv[R_NLOG]:
                 self._write_log()
-            if status == vm.ST_DONE:
+            if status == ST_DONE:
                 self.returned = True  # the root function came back (a cut may still be logged)
-                if cut or r[vm.R_QUOTA] > 0:
+                if cut or rv[R_QUOTA] > 0:
                     return cut
                 # the queue checks the quota before polling, even when nothing is left
                 report_quota_cut(self.state, limit, (self._finished_root_frame(),))
@@ -429,7 +440,7 @@ class NumbaBackend:
     def _context_index(self, ctx: Context, bindings: tuple) -> int:
         """Intern a context Python made, with its store bindings (a loop re-running a stage must not
         grow the table): its row in the context arrays."""
-        key = (ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension, bindings)
+        key = _context_key(ctx, bindings)
         index = self.context_ids.get(key)
         if index is None:
             r = self.regs
@@ -648,6 +659,10 @@ class NumbaBackend:
     def _charged(self) -> list[int]:
         """The pcs of the instructions charged so far, in code order."""
         return np.flatnonzero(self.counts).tolist()
+
+
+def _context_key(ctx: Context, bindings: tuple) -> tuple:
+    return ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension, bindings
 
 
 def _end_frame(function: ast.Function) -> Frame:

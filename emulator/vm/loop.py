@@ -201,7 +201,8 @@ R_NFORK, R_NCOLL, R_NSEL2, R_NCTX = range(23, 27)  # rows used in fstack and col
 # a batch of ticks (NumbaBackend.run_ticks; 0 in R_BATCH: one root): the ticks to run, the tick and the member
 # running, the members per tick, the roots done, Python's request to stop when this root ends, each root's quota
 R_BATCH, R_BTICKS, R_BTICK, R_BMEMBER, R_BMEMBERS, R_BROOTS, R_BSTOP, R_BLIMIT = range(27, 35)
-N_REGS = 35
+R_ROOT = 35  # the root's serial number, never reset: as_cache's rows made in another root do not hold
+N_REGS = 36
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
 F_WIDTH = 11
@@ -502,7 +503,7 @@ def fork_contexts(regs, fstack, coll, contexts, n, depth, resume):
 
 # (context, entity slot, stage kind) -> the context that stage made there: a direct-mapped cache, per
 # root, so that a loop re-running a stage does not grow the context table
-AS_CACHE_SIZE = 4096
+AS_CACHE_SIZE = 4096  # rows (context, slot, kind, made, R_ROOT when made)
 
 
 @njit(cache=True, inline="always")
@@ -511,14 +512,14 @@ def as_cache_row(ctx, slot, kind):
 
 
 @njit(cache=True)
-def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_cache):
+def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_cache, root):
     """The context stage ``kind`` (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as,
     rotated as) makes from context ``ctx`` for entity ``slot`` (entity_stage_context): one made
     before in this root if it still holds (the entity may have moved since), else a new row
     ``nctx``. Returns (the context, the rows used)."""
     row = as_cache_row(ctx, slot, kind)
     made = as_cache[row, 3]
-    if as_cache[row, 0] == ctx and as_cache[row, 1] == slot and as_cache[row, 2] == kind:
+    if as_cache[row, 4] == root and as_cache[row, 0] == ctx and as_cache[row, 1] == slot and as_cache[row, 2] == kind:
         same = True
         if kind == 1 or kind == 2:
             for axis in range(3):
@@ -548,6 +549,7 @@ def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_ca
     as_cache[row, 1] = slot
     as_cache[row, 2] = kind
     as_cache[row, 3] = nctx
+    as_cache[row, 4] = root
     return nctx, nctx + 1
 
 
@@ -623,7 +625,7 @@ def _angle(value, base, relative):
 
 
 @njit(cache=True)
-def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, efloats, nctx, as_cache):
+def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, efloats, nctx, as_cache, root):
     """The context OP_CTXSTAGE ``kind`` at ``pc`` makes from ``ctx`` (stages._positioned, _rotated_by,
     _anchored, _aligned): the one made there before in this root if it is the same. Returns (it,
     the rows used)."""
@@ -644,8 +646,8 @@ def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, eflo
         x = np.floor(x) if operand & 1 else x
         y = np.floor(y) if operand & 2 else y
         z = np.floor(z) if operand & 4 else z
-    if (as_cache[row, 0] == ctx and as_cache[row, 1] == -1 - pc and cfloats[made, CF_X] == x
-            and cfloats[made, CF_Y] == y and cfloats[made, CF_Z] == z and cfloats[made, CF_YAW] == yaw
+    if (as_cache[row, 4] == root and as_cache[row, 0] == ctx and as_cache[row, 1] == -1 - pc
+            and cfloats[made, CF_X] == x and cfloats[made, CF_Y] == y and cfloats[made, CF_Z] == z and cfloats[made, CF_YAW] == yaw
             and cfloats[made, CF_PITCH] == pitch):
         return made, nctx
     cints[nctx] = cints[ctx]
@@ -659,6 +661,7 @@ def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, eflo
     as_cache[row, 1] = -1 - pc
     as_cache[row, 2] = 0
     as_cache[row, 3] = nctx
+    as_cache[row, 4] = root
     return nctx, nctx + 1
 
 
@@ -1447,7 +1450,7 @@ def run(m):
                 nctx = regs[R_NCTX]
                 for i in range(n):  # one context per entity, made here (entity_stage_context)
                     selbuf[i], nctx = _entity_context(code[pc - 1, 3], ctx, selbuf[i], cints, cfloats, nctx, eints,
-                                                      efloats, as_cache)
+                                                      efloats, as_cache, regs[R_ROOT])
                 regs[R_NCTX] = nctx
                 if n == 1:
                     ctx = selbuf[0]
@@ -1468,7 +1471,7 @@ def run(m):
                 pc += 1
                 continue
             ctx, regs[R_NCTX] = _changed_context(code[pc, 1], code[pc, 2], code[pc, 3], ctx, pc, cints, cfloats, floats,
-                                                 efloats, regs[R_NCTX], as_cache)
+                                                 efloats, regs[R_NCTX], as_cache, regs[R_ROOT])
             if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
                 alive = 0
                 pc = abort
@@ -1691,8 +1694,7 @@ def run(m):
             # tick after a host op (it may have changed what the tick's end does)
             if quota <= 0 or novf or nlog or regs[R_BSTOP] or regs[R_BTICK] == regs[R_BTICKS]:
                 break
-            if regs[R_NCTX] > 1:  # contexts were made: as_cache's rows name them
-                as_cache[:, 0] = -1
+            regs[R_ROOT] += 1  # contexts made before are not this root's
             regs[R_NCTX] = 1  # context 0: the server at world spawn, as every tick function runs
             regs[R_NFORK] = 0
             regs[R_NCOLL] = 0
