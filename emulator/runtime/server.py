@@ -131,7 +131,8 @@ class Runtime:
         self.max_root_cost = max(self.max_root_cost, result.cost)
         for listener in self.root_listeners:
             listener(function_id, result)
-        self.run_rewards()
+        if self.state.pending_rewards:
+            self.run_rewards()
         return result
 
     def run_rewards(self) -> int:
@@ -247,7 +248,8 @@ class Runtime:
             state.daytime += 1
         for step, _ in ENTITY_STEPS:
             step(state)
-            self.run_rewards()
+            if state.pending_rewards:
+                self.run_rewards()
         cost += self.rewards_cost
         self.commands_per_tick.append(cost)
         state.tick += 1

@@ -495,6 +495,8 @@ class EntityStore:
         self.entities: list[Entity] = []
         self.table = EntityTable()
         self.joined = 0  # players that joined so far (EI_JOIN)
+        self.changes = 0  # entities that came into ``entities`` or left it so far
+        self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
 
     def bind_scoreboard(self, scoreboard) -> None:
         """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
@@ -510,6 +512,7 @@ class EntityStore:
         index = self._place(*self.table.level_span(entity.dimension_id))
         self.entities.insert(index, entity)
         self.table.insert(index, entity.order)
+        self.changes += 1
 
     def _place(self, start: int, end: int) -> int:
         """Where in its level's span ``[start, end]`` of the order a new entity goes."""
@@ -555,6 +558,7 @@ class EntityStore:
             return
         index = self.entities.index(entity)
         del self.entities[index]
+        self.changes += 1
         self.table.remove(index)
         self.table.ints[entity.order, EI_DIM] = level
         self._enter_level(entity)
@@ -563,6 +567,7 @@ class EntityStore:
         entity.alive = False
         index = self.entities.index(entity)
         del self.entities[index]
+        self.changes += 1
         self.table.remove(index)
         self.table.index_uuid(entity, entity.uuid, None)
 
@@ -585,3 +590,10 @@ class EntityStore:
     def living(self) -> list[Entity]:
         alive = self.table.ints[:, EI_ALIVE].tolist()  # one read of the column: this runs every tick
         return [e for e in self.entities if alive[e.order]]
+
+    def living_mobs(self) -> list[Entity]:
+        """The living LivingEntities (mobs, players, armor stands: :func:`living.is_living`), in the
+        store's order; the few that tick effects, found again only when entities came or left."""
+        if self._mobs[0] != self.changes:
+            self._mobs = (self.changes, [e for e in self.entities if living.is_living(e.type)])
+        return [e for e in self._mobs[1] if e.alive]

@@ -421,17 +421,11 @@ def _drop_if_empty(entity) -> None:
         del entity.data["active_effects"]
 
 
-def _living_entities(state) -> list:
-    """The LivingEntities in the world: only they tick effects and hurt time (a display or a marker
-    keeps no ``active_effects``: Entity.load of its type does not read them)."""
-    return [e for e in state.entities.living() if e.type not in NOT_LIVING]
-
-
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_living` would change nothing now: no effect counting down, no hurt
     time or hurt timer running."""
     hurting = bool(_HURT)
-    for entity in _living_entities(state):
+    for entity in state.entities.living_mobs():
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
         if found is None and hurt_time is None and not hurting:
             continue  # the common case, every tick: neither field, no hurt timer anywhere
@@ -451,7 +445,7 @@ def tick_living(state, harm=None) -> list:
     effect (the game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
     lost = []
     hurting = bool(_HURT)  # only the entity ticking adds itself (an instant effect's harm)
-    for entity in _living_entities(state):
+    for entity in state.entities.living_mobs():  # a display or a marker reads no active_effects (Entity.load)
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
         if found is None and hurt_time is None and not hurting:
             continue  # the common case, every tick: nothing to count down

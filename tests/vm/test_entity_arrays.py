@@ -228,3 +228,21 @@ def test_sorted_selectors_keep_the_game_order(tmp_path):
     assert [("far" in e["tags"], "near" in e["tags"]) for e in emu.entities()] == [
         (True, False), (True, False), (False, True), (False, False), (False, False)]
     assert emu.score("#near", "o") == 3
+
+
+def test_contexts_the_vm_made_hold_only_in_their_root(tmp_path):
+    """as_cache keeps the contexts a root made (R_ROOT tells roots apart): in the next root, context 1
+    is the `positioned` one, which a row left by the last root's `as` must not be taken for."""
+    emus = []
+    for backend in ("numba", "python"):
+        emu = emulator_for(tmp_path / backend, {
+            "t:setup": SETUP, "t:as": "execute as @e[tag=x] run scoreboard players add @s s 1",
+            "t:both": "execute positioned 5 0 0 run scoreboard players add #p o 1\n"
+                      "execute as @e[tag=x] run scoreboard players add @s s 1"}, backend=backend)
+        for function in ("t:setup", "t:as", "t:both", "t:both"):
+            emu.call(function)
+        emu.tick(3)
+        emus.append(emu)
+    numba, python = emus
+    assert numba.scores() == python.scores()
+    assert _score(numba, "@e", "s") == [3, 3, 3, None]

@@ -448,3 +448,22 @@ def test_tp_discards_a_non_finite_rotation():
     rot = ast.Vec2(coord("abs", 1e39), coord("abs", 10), LOC)
     teleport.teleport(Source(), [e], vec(coord("abs", 1.0), coord("abs", 2.0), coord("abs", 3.0)), rotation_arg=rot)
     assert e.yaw == F32(30.0) and e.pitch == F32(10.0) and e.pos == (1.0, 2.0, 3.0)
+
+
+def test_living_mobs_follow_summons_kills_level_changes_and_deaths():
+    """Only LivingEntities tick effects (LivingEntity.tickEffects): the store's living_mobs are the
+    living ones among its entities, in its order, as entities come, go and die."""
+    store = EntityStore()
+    store.summon("minecraft:marker", (0, 0, 0))
+    zombie = store.summon("minecraft:zombie", (0, 0, 0))
+    player = store.add_player("p", (0, 0, 0))
+    assert store.living_mobs() == [zombie, player]
+    stand = store.summon("minecraft:armor_stand", (0, 0, 0))
+    store.summon("minecraft:item_display", (0, 0, 0))
+    assert store.living_mobs() == [zombie, player, stand]
+    store.kill(zombie)
+    assert store.living_mobs() == [player, stand]
+    store.move_to_level(player, "minecraft:the_nether")
+    assert store.living_mobs() == [stand, player]
+    player.alive = False  # a dead player stays in the store
+    assert store.living_mobs() == [stand]
