@@ -146,25 +146,21 @@ def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False
         return result
     started = time.perf_counter()
     emu = fresh_world(packs, backend)
-    if case.before_batch:
-        emu.call(case.before_batch)
-    environment = None
+    emu.tick()  # the rest of the server's first tick: GameTestServer.startTests runs after it
+    source = TestSource(emu, Dummies(emu.state))
     try:
-        environment = set_up_environment(emu, packs, case.directives.environment)
-        size = place_template(emu, packs, case.directives.template) if case.directives.template else (1, 1, 1)
-        encase(emu, packs.version, size, case.directives.sky_access)
-        source = TestSource(emu, Dummies(emu.state), size)
+        prepare(source, packs, case)
         source.dummy_entity = spawn_dummy(source, case)
         _run_steps(emu, source, case)
     except _Verdict as verdict:
         result.status, result.message, result.line = verdict.status, verdict.message, verdict.line
     except Exception as error:  # an emulator bug fails this test, not the suite
         result.status, result.message = FAILED, f"internal error: {type(error).__name__}: {error}"
-    for function in environment.teardown if environment else ():
+    for function in source.environment.teardown if source.environment else ():
         emu.call(function)
     if case.after_batch:
         emu.call(case.after_batch)
-    result.ticks = emu.ticks
+    result.ticks = emu.ticks - source.started
     result.seconds = time.perf_counter() - started
     errors = [d for d in emu.diagnostics if d.severity == "error"]
     unmodelled = [d for d in emu.diagnostics if d.unmodelled]
@@ -181,6 +177,36 @@ def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False
     shown = emu.diagnostics if result.status != PASSED else errors
     result.details = list(dict.fromkeys(d.format() for d in shown))
     return result
+
+
+_TEST_INSTANCES = (1, 21, 5)  # the game's own test instances and environments (PackTest 2)
+_CHUNK_WAIT = 20  # GameTestInfo.ticksToWaitForChunkLoading before 1.21.5
+
+
+def prepare(source: TestSource, packs, case: TestCase) -> None:
+    """What the game does between the batch's start (the end of the server's first tick, after
+    ``#minecraft:load``: GameTestServer.tickServer -> startTests) and the test's first line, then
+    ``source.started``. From 1.21.5 (GameTestRunner.runBatch, GameTestInfo.startExecution and
+    tickInternal): the structure is placed and encased, the environment set up, and the test
+    starts in the game test ticker's second tick, after that tick's functions and block ticks
+    (MinecraftServer.tickChildren ticks it last). Before (PackTest 1.x ticks the ticker first in
+    each server tick, MinecraftServerMixin): the test is encased and the batch's function runs,
+    the test waits 20 ticks (GameTestInfo.ensureStructureIsPlaced), then its structure is placed
+    and it starts at the start of the next tick. A server slower to load the test's chunks waits
+    longer; the emulator takes the shortest wait."""
+    emu, version = source.emu, packs.version
+    template = read_template(packs, case.directives.template) if case.directives.template else None
+    source.size = template.size if template is not None else (1, 1, 1)
+    if version >= _TEST_INSTANCES and template is not None:
+        structures.place(emu.state, template, TestSource.block_origin())
+    encase(emu, version, source.size, case.directives.sky_access)
+    if case.before_batch:
+        emu.call(case.before_batch)
+    source.environment = set_up_environment(emu, packs, case.directives.environment)
+    emu.tick(2 if version >= _TEST_INSTANCES else _CHUNK_WAIT)
+    if version < _TEST_INSTANCES and template is not None:
+        structures.place(emu.state, template, TestSource.block_origin())
+    source.started = emu.ticks
 
 
 def set_up_environment(emu: Emulator, packs, environment_id: str):
@@ -222,18 +248,16 @@ def encase(emu: Emulator, version, size, sky_access: bool) -> None:
                     emu.state.blocks.setblock((x, y, z), _BARRIER)
 
 
-def place_template(emu: Emulator, packs, template_id: str) -> tuple[int, int, int]:
-    """The test's structure with its corner at the test source's block; returns its size."""
+def read_template(packs, template_id: str):
+    """The test's structure (placed with its corner at the test source's block)."""
     data = structures.find_template(packs, template_id)
     if data is None:
         missing = structures.template_file(packs, template_id)
         raise _Verdict(FAILED, f"Missing test structure: {template_id} (no {missing})")
     try:
-        template = structures.read_template(data)
+        return structures.read_template(data)
     except structures.StructureError as error:
         raise _Verdict(FAILED, f"Test structure {template_id}: {error}") from None
-    structures.place(emu.state, template, tuple(int(c) for c in TestSource.ORIGIN))
-    return template.size
 
 
 class TestSource:
@@ -249,6 +273,12 @@ class TestSource:
         self.emu, self.dummies = emu, dummies
         self.size = size  # of the test structure, whose corner is ORIGIN
         self.dummy_entity: Entity | None = None
+        self.environment = None  # the test environment set up for it
+        self.started = emu.ticks  # the world's tick when its first line ran
+
+    @classmethod
+    def block_origin(cls) -> tuple[int, int, int]:
+        return tuple(int(c) for c in cls.ORIGIN)
 
     def inside(self, entity: Entity) -> bool:
         """GameTestHelper.getBounds().inflate(1).contains(position): half-open on the far side."""
@@ -335,10 +365,10 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
                 raise _Verdict(FAILED, describe_failure(source, step, chat_start), step.loc.line)
         elif isinstance(step, (Check, ChatCheck, InsideCheck)):
             while not _holds(source, step, chat_start):
-                _tick_or_time_out(emu, timeout, step, describe_failure(source, step, chat_start))
+                _tick_or_time_out(source, timeout, step, describe_failure(source, step, chat_start))
         elif isinstance(step, Delay):
             for _ in range(step.ticks):
-                _tick_or_time_out(emu, timeout, step, f"still in 'await delay {step.ticks}'")
+                _tick_or_time_out(source, timeout, step, f"still in 'await delay {step.ticks}'")
         elif isinstance(step, Fail):
             raise _Verdict(FAILED, step.message, step.loc.line)
         elif isinstance(step, Succeed):
@@ -370,7 +400,7 @@ def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeou
         ctx, poll = polls[0]
         waiting = (f"still in 'await delay {inner.ticks}'" if isinstance(inner, Delay)
                    else describe_failure(source, inner, chat_start, ctx))
-        _tick_or_time_out(emu, timeout, inner, f"{waiting} ({len(polls)} context(s) of the execute prefix waiting)")
+        _tick_or_time_out(source, timeout, inner, f"{waiting} ({len(polls)} context(s) of the execute prefix waiting)")
         if poll():
             polls.pop(0)
 
@@ -418,10 +448,10 @@ def _found_inside(source: TestSource, step: InsideCheck, ctx: Context | None) ->
     return [e for e in found if source.inside(e)]
 
 
-def _tick_or_time_out(emu: Emulator, timeout: int, step, waiting: str) -> None:
-    if emu.ticks >= timeout:
+def _tick_or_time_out(source: TestSource, timeout: int, step, waiting: str) -> None:
+    if source.emu.ticks - source.started >= timeout:
         raise _Verdict(FAILED, f"Timed out after {timeout} ticks: {waiting}", step.loc.line)
-    emu.tick()
+    source.emu.tick()
 
 
 def describe_failure(test: TestSource, check, chat_start: int = 0, ctx: Context | None = None) -> str:

@@ -59,14 +59,14 @@ def test_attack_and_use_on_an_interaction_entity_record_the_player_and_time(pack
         "summon interaction ~2 ~ ~ {Tags:[\"box\"]}\n"
         "await delay 2\n"
         "dummy @s attack @e[tag=box,limit=1]\n"
-        "assert data entity @e[tag=box,limit=1] {attack:{timestamp:2L}}\n"
+        "assert data entity @e[tag=box,limit=1] {attack:{timestamp:23L}}\n"  # 1.21: the test starts at game time 21
         "assert not data entity @e[tag=box,limit=1] interaction\n"
         "execute store result score #a t run data get entity @e[tag=box,limit=1] attack.player[0]\n"
         "execute store result score #s t run data get entity @s UUID[0]\n"
         "assert score #a t = #s t\n"
         "await delay 1\n"
         "dummy @s use entity @e[tag=box,limit=1]\n"
-        "assert data entity @e[tag=box,limit=1] {interaction:{timestamp:3L},attack:{timestamp:2L}}\n"))
+        "assert data entity @e[tag=box,limit=1] {interaction:{timestamp:24L},attack:{timestamp:23L}}\n"))
     assert result.status == "passed", result.report()
 
 

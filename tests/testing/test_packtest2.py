@@ -42,7 +42,7 @@ def test_environment_functions_rules_and_time_apply_before_the_test(tmp_path, ba
                                            "assert data storage t:r {v:7}\n",
              "demo/test/nested.mcfunction": "# @environment demo:both\nassert score #env o matches 1\n"
                                             "execute store result score #t o run time query daytime\n"
-                                            "assert score #t o matches 13000\n",
+                                            "assert score #t o matches 13002\n",  # set, then 2 ticks to the start
              "demo/test/default.mcfunction": "# @environment minecraft:default\nsucceed\n"}
     summary, results = suite(tmp_path, files, backend=backend)
     assert {k: r.status for k, r in results.items()} == {
@@ -116,3 +116,42 @@ def test_an_entity_inside_check_whose_selector_fails_fails_the_test(tmp_path):
     files = {"demo/test/bad.mcfunction": "assert entity @e[limit=0] inside\n"}
     _, results = suite(tmp_path, files)
     assert results["demo:bad"].status == "failed" and "Traceback" not in results["demo:bad"].message
+
+
+@pytest.mark.parametrize("pack_format,ticks,gametime", [
+    # 1.21.5+: the structure, then the environment at the end of the server's first tick
+    # (GameTestServer.tickServer -> startTests -> GameTestRunner.runBatch); the test's tick count
+    # starts at -2 (GameTestInfo.startExecution(1)) and its body runs when it reaches 0, in the
+    # ticker's second tick, after that tick's functions and block ticks (MinecraftServer.tickChildren)
+    (NEW, 3, 3),
+    # PackTest 1.x (1.21): GameTestInfo.ensureStructureIsPlaced waits 20 ticks and the test starts in
+    # the next, before its functions (PackTest's MinecraftServerMixin ticks the ticker first)
+    (48, 21, 21),
+])
+def test_a_test_starts_ticks_after_the_load(tmp_path, pack_format, ticks, gametime):
+    files = {
+        "demo/function/load.mcfunction": "scoreboard objectives add o dummy\n",
+        "demo/function/tick.mcfunction": "scoreboard players add #ticks o 1\n",
+        "demo/test/timing.mcfunction": f"assert score #ticks o matches {ticks}\n"
+                                       "execute store result score #gt o run time query gametime\n"
+                                       f"assert score #gt o matches {gametime}\n",
+    }
+    root = write_pack(tmp_path / "pack", files, tick=["demo:tick"], load=["demo:load"])
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": pack_format, "description": "t"}}))
+    [result] = run_suite(discover([root])).results
+    assert result.status == "passed", result.report()
+
+
+def test_a_command_block_the_environment_sets_has_run_when_the_test_starts(tmp_path):
+    # Bookshelf's bs.time: its setup places a repeating command block (auto), whose first block
+    # tick (CommandBlockEntity.setAutomatic -> scheduleTick, 1 tick) runs before the test starts
+    files = {
+        "demo/test_environment/clock.json": json.dumps({"type": "minecraft:function", "setup": "demo:setup"}),
+        "demo/function/setup.mcfunction":
+            'setblock 5 0 5 repeating_command_block[facing=up]{auto:1b,Command:"help me",TrackOutput:1b}\n',
+        "demo/test/clock.mcfunction": "# @environment demo:clock\n"
+                                      "assert data block 5 0 5 LastOutput.text\n"
+                                      "assert data block 5 0 5 {SuccessCount:1}\n",
+    }
+    _, results = suite(tmp_path, files)
+    assert results["demo:clock"].status != "failed", results["demo:clock"].report()

@@ -86,7 +86,8 @@ def test_await_ticks_the_world_until_the_condition_holds(pack):
     root = pack({
         "demo/function/count.mcfunction": "scoreboard players add $t o 1\n",
         "demo/function/init.mcfunction": "scoreboard objectives add o dummy\n",
-        "demo/test/wait.mcfunction": "await score $t o matches 3\nassert score $t o matches 3\n"
+        # the tick function ran before the test started (see test_a_test_starts_ticks_after_the_load): count from 0
+        "demo/test/wait.mcfunction": "scoreboard players set $t o 0\nawait score $t o matches 3\nassert score $t o matches 3\n"
                                      "await delay 1s\nassert score $t o matches 23\n",
     }, tick=["demo:count"], load=["demo:init"])
     result = run(root).results[0]
@@ -318,14 +319,16 @@ def test_await_after_execute_polls_each_context_in_turn(pack, backend):
     root = pack({
         "demo/function/init.mcfunction": "scoreboard objectives add o dummy\n",
         "demo/function/tick.mcfunction": PER_CONTEXT_TICK,
-        "demo/test/each.mcfunction": "summon marker ~ ~ ~ {Tags:[m1]}\nsummon marker ~ ~ ~ {Tags:[m2]}\n"
+        "demo/test/each.mcfunction": "scoreboard players set $t o 0\n"
+                                     "summon marker ~ ~ ~ {Tags:[m1]}\nsummon marker ~ ~ ~ {Tags:[m2]}\n"
                                      "execute as @e[type=marker] run await entity @s[tag=done]\n"
                                      "assert score $t o matches 4\n",
         # each: m1's poll passes after tick 3, m2's (true since tick 1) is tried after the next tick:
         # 4 ticks, not the 3 a re-evaluated prefix would take; delays: 2 contexts x 2 ticks
-        "demo/test/delays.mcfunction": "summon marker\nsummon marker\nexecute as @e[type=marker] run await delay 2\n"
+        "demo/test/delays.mcfunction": "scoreboard players set $t o 0\nsummon marker\nsummon marker\nexecute as @e[type=marker] run await delay 2\n"
                                        "assert score $t o matches 4\n",
-        "demo/test/none.mcfunction": "execute as @e[type=marker] run await entity @s[tag=never]\n"
+        "demo/test/none.mcfunction": "scoreboard players set $t o 0\n"
+                                     "execute as @e[type=marker] run await entity @s[tag=never]\n"
                                      "assert not score $t o matches 1..\n",  # no context: no tick waited
         "demo/test/timeout.mcfunction": "# @timeout 5\nsummon marker ~ ~ ~ {Tags:[m3]}\n"
                                         "execute as @e[type=marker] run await entity @s[tag=done]\n",
