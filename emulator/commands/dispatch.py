@@ -17,7 +17,7 @@ from . import advancements, blocks, bossbar, conditions, data, entities, items, 
 # Commands that only show or play something to players: no world state a pack can test changes
 # (their result, the number of players reached, is the one thing left unmodelled).
 NO_OBSERVABLE_EFFECT = frozenset({
-    "particle", "playsound", "stopsound", "title", "me", "msg", "tell", "w", "teammsg", "tm", "help",
+    "particle", "playsound", "stopsound", "title", "me", "msg", "tell", "w", "teammsg", "tm",
     "debug", "perf", "jfr", "save-all", "save-off", "save-on", "swing",
 })
 

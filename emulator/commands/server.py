@@ -1,16 +1,18 @@
 """The server's other commands: ``say``, ``tellraw``, ``gamerule``, ``schedule``, ``time``,
-``random`` and ``trigger``.
+``random``, ``trigger`` and ``help``.
 
 Sources (decompiled 1.21): server/commands/SayCommand.java, TellRawCommand.java,
 GameRuleCommand.java, ScheduleCommand.java, TimeCommand.java, RandomCommand.java (randomSample),
-TriggerCommand.java (getScore); the texts are the world library's (:mod:`emulator.world.text_components`).
+TriggerCommand.java (getScore), HelpCommand.java; the texts are the world library's
+(:mod:`emulator.world.text_components`).
 """
 from __future__ import annotations
 
 from emulator.world import text_components
 from emulator.world.errors import MESSAGES
 from emulator.world.semantics import INT_MAX, INT_MIN, wrap32
-from mcfunction_parser import ast
+from mcfunction_parser import ast, gamedata
+from mcfunction_parser.commands import usage
 from mcfunction_parser.pack.tags import normalise_id  # ResourceLocation.toString (the MD5 seed hashes it)
 
 from . import entities
@@ -165,6 +167,21 @@ def trigger(env, cmd: ast.Trigger, ctx) -> int:
     return value
 
 
+def help_(env, cmd: ast.GenericCommand, ctx) -> int:
+    """HelpCommand: the number of usage messages it sends (a player sees them; a command block
+    keeps the last, :func:`emulator.world.command_blocks.feedback`); a command the source may not
+    use fails."""
+    text = cmd.text.partition(" ")[2] or None
+    try:
+        count = usage.help_count(gamedata.command_tree(env.state.version), text)
+    except (gamedata.GameDataMissing, ValueError) as reason:
+        env.unmodelled(cmd, f"'help' is not emulated here ({reason}): it succeeds without effect")
+        return 1
+    if count is None:
+        raise CommandFailure("commands.help.failed", report=True)
+    return count
+
+
 HANDLERS = {
     ast.Say: say,
     ast.Tellraw: tellraw,
@@ -176,4 +193,4 @@ HANDLERS = {
     ast.Trigger: trigger,
 }
 # the forms the parser keeps as text, by command name
-GENERIC_HANDLERS = {"time": world_clock}
+GENERIC_HANDLERS = {"time": world_clock, "help": help_}

@@ -23,27 +23,32 @@ game runs them, with the block entity fields a pack reads back (``SuccessCount``
 
 Power (Level.hasNeighborSignal) comes from a neighbouring redstone block, a powered lever or
 button, or a lit redstone torch; any other redstone component beside a command block is not
-modelled (a warning: the test is inconclusive). ``LastOutput`` (with ``TrackOutput`` and the
-``commandBlockOutput`` game rule) is written with its time, ``[HH:mm:ss] `` as the game writes it
-from the wall clock; the message after it is the command's feedback text, which the emulator does
-not produce (a warning: the test is inconclusive). A command that forks over several contexts
+modelled (a warning: the test is inconclusive). ``LastOutput`` (with ``TrackOutput``) is the last
+message the command sent its source, after ``[HH:mm:ss] `` from the wall clock (:func:`feedback`:
+``help``'s usage, none from ``tellraw``, ``say`` and ``return N``); another command's message is
+not produced (the time alone, and a warning: the test is inconclusive). A command that forks over several contexts
 counts one success, the game one per context. Command blocks outside the overworld do not run
 (a warning). ``CustomName`` naming the source (``@`` by default) is not modelled.
 
 Sources (decompiled 1.21.x and 26.1): world/level/block/CommandBlock.java (neighborChanged, tick,
 execute, executeChain, setPoweredAndUpdate), block/entity/CommandBlockEntity.java (loadAdditional,
 setAutomatic, scheduleTick, markConditionMet, getMode, isConditional), world/level/BaseCommandBlock.java
-(performCommand, save, load, sendSystemMessage: ``[HH:mm:ss] `` + the message),
+(performCommand, save, load, sendSystemMessage: ``[HH:mm:ss] `` + the message, acceptsSuccess,
+acceptsFailure), commands/CommandSourceStack.java (sendSuccess, sendFailure),
 server/commands/SetBlockCommand.java and FillCommand.java (Level.blockUpdated after placing).
 """
 from __future__ import annotations
 
 import datetime
+import functools
 import json
 
 from emulator.world.context import Context
 from emulator.world.nbt_ops import is_numeric, numeric_value
-from mcfunction_parser.nbt import Byte, Compound, Int, Long, String
+from mcfunction_parser import ast, gamedata
+from mcfunction_parser.commands import usage
+from mcfunction_parser.nbt import Byte, Compound, Int, List, Long, String
+from mcfunction_parser.parse import parse_function
 
 IMPULSE, REPEATING, CHAIN = ("minecraft:command_block", "minecraft:repeating_command_block",
                              "minecraft:chain_command_block")
@@ -221,13 +226,18 @@ def perform(state, pos, nbt: Compound) -> bool:
     if track_time and is_numeric(last) and int(numeric_value(last)) == state.gametime:
         return False
     command = str(nbt.get("Command", ""))
+    if command.lower() == "searge":  # the game's easter egg: no command runs, nor the time is kept
+        nbt["LastOutput"] = _saved_component(state, "#itzlipofutzli")
+        nbt["SuccessCount"] = Int(1)
+        return True
     nbt["SuccessCount"] = Int(0)
     if command:  # the server's enable-command-block is taken as on, as a test server has it
+        nbt.pop("LastOutput", None)
         block = state.blocks.get(pos)
         source = Context(pos=(pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), rot=(_Y_ROT[_facing(block)], 0.0))
         succeeded = state.command_runner(command.removeprefix("/"), source)
         nbt["SuccessCount"] = Int(1 if succeeded else 0)
-        _last_output(state, nbt, command)
+        _last_output(state, nbt, command, bool(succeeded))
     if track_time:
         nbt["LastExecution"] = Long(state.gametime)
     else:
@@ -235,16 +245,76 @@ def perform(state, pos, nbt: Compound) -> bool:
     return True
 
 
-def _last_output(state, nbt: Compound, command: str) -> None:
-    """BaseCommandBlock's source: a message becomes ``[HH:mm:ss] `` + the message (wall clock)."""
-    nbt.pop("LastOutput", None)
-    if not _flag(nbt, "TrackOutput", True) or state.gamerules.get("commandBlockOutput") == "false":
+# ---------------------------------------------------------------------- output
+def _last_output(state, nbt: Compound, command: str, succeeded: bool) -> None:
+    """BaseCommandBlock.sendSystemMessage: each message the command sends its source replaces
+    ``LastOutput`` with ``[HH:mm:ss] `` (the wall clock) and the message, while ``TrackOutput``
+    is on; a success's only when ``sendCommandFeedback`` is (acceptsSuccess), a failure's always
+    (acceptsFailure). A command that sends none leaves no ``LastOutput``."""
+    if not _flag(nbt, "TrackOutput", True):
         return
+    messages = feedback(state, command, succeeded)
     stamp = "[" + datetime.datetime.now().strftime("%H:%M:%S") + "] "
+    if messages is None:
+        nbt["LastOutput"] = _saved_component(state, {"text": stamp})
+        message = f"the output of the command block command `{command}` (LastOutput holds only its time here)"
+        if not any(d.message == message for d in state.diagnostics):  # once, not every tick of a repeating block
+            state.error(message, severity="warning", unmodelled=True)
+        return
+    feedback_on = state.gamerules.get("sendCommandFeedback") != "false"
+    shown = [text for text, failure in messages if failure or feedback_on]
+    if shown:
+        nbt["LastOutput"] = _saved_component(state, {"text": stamp, "extra": [shown[-1]]})
+
+
+def feedback(state, command: str, succeeded: bool) -> list[tuple[object, bool]] | None:
+    """The messages ``command`` sends its source (each a text component and whether it is a
+    failure), for the commands whose messages the emulator knows; None for the others. Functions
+    the command calls send none (FunctionCommand runs them withSuppressedOutput)."""
+    final = _final_command(command, tuple(state.version))
+    if isinstance(final, (ast.Tellraw, ast.Say)) and succeeded:
+        return []  # TellRawCommand sends nothing back; say broadcasts to the players only
+    if isinstance(final, ast.Return) and final.kind != "run":
+        return []
+    if isinstance(final, ast.GenericCommand) and final.name == "help":
+        return _help_feedback(state, final.text.partition(" ")[2] or None)
+    return None
+
+
+def _help_feedback(state, text: str | None) -> list[tuple[object, bool]] | None:
+    try:
+        lines = usage.help_messages(gamedata.command_tree(tuple(state.version)), text)
+    except (gamedata.GameDataMissing, usage.OrderUnknown, ValueError):
+        return None
+    if lines is None:  # CommandSourceStack.sendFailure: the message in red
+        return [({"text": "", "extra": [{"translate": "commands.help.failed"}], "color": "red"}, True)]
+    return [(line, False) for line in lines]
+
+
+@functools.lru_cache(maxsize=256)
+def _final_command(command: str, version: tuple[int, int, int]):
+    """The command an ``execute ... run`` chain (or ``return run``) ends with; None if it does not parse."""
+    function, errors = parse_function(command.removeprefix("/"), "<command block>", "dpemu:command_block", version)
+    node = function.commands[0] if function.commands and not errors else None
+    while True:
+        if isinstance(node, ast.Execute) and node.run is not None:
+            node = node.run
+        elif isinstance(node, ast.Return) and node.kind == "run":
+            node = node.command
+        else:
+            return node
+
+
+def _saved_component(state, component):
+    """A text component as the block entity saves it: its tag from 1.21.5, a JSON string before."""
     if tuple(state.version) >= COMPONENT_TEXT_VERSION:
-        nbt["LastOutput"] = Compound(text=String(stamp))
-    else:
-        nbt["LastOutput"] = String(json.dumps({"text": stamp}))
-    message = f"the output of the command block command `{command}` (LastOutput holds only its time here)"
-    if not any(d.message == message for d in state.diagnostics):  # once, not every tick of a repeating block
-        state.error(message, severity="warning", unmodelled=True)
+        return _as_tag(component)
+    return String(json.dumps(component, separators=(",", ":"), ensure_ascii=False))
+
+
+def _as_tag(value):
+    if isinstance(value, dict):
+        return Compound({k: _as_tag(v) for k, v in value.items()})
+    if isinstance(value, list):
+        return List(_as_tag(v) for v in value)
+    return String(value)

@@ -48,6 +48,7 @@ MESSAGES = {
     "commands.random.error.range_too_large": "The range of the random value must be at most 2147483646",
     "commands.random.error.range_too_small": "The range of the random value must be at least 2",
     "commands.random.roll": "{0} rolled {1} (from {2} to {3})",
+    "commands.help.failed": "Unknown command or insufficient permissions",
     "commands.ride.already_riding": "{0} is already riding {1}",
     "commands.ride.mount.failure.cant_ride_players": "Players can't be ridden",
     "commands.ride.mount.failure.loop": "Can't mount entity on itself or any of its passengers",

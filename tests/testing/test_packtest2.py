@@ -154,4 +154,4 @@ def test_a_command_block_the_environment_sets_has_run_when_the_test_starts(tmp_p
                                       "assert data block 5 0 5 {SuccessCount:1}\n",
     }
     _, results = suite(tmp_path, files)
-    assert results["demo:clock"].status != "failed", results["demo:clock"].report()
+    assert results["demo:clock"].status == "passed", results["demo:clock"].report()

@@ -81,3 +81,51 @@ def test_data_merge_auto_starts_a_block(tmp_path):
                           "data merge block 0 0 0 {auto:1b}\n", "python")
     emu.tick()
     assert emu.score("#n", "v") == 1
+
+
+def last_output(emu, pos=(0, 0, 0)):
+    return block(emu, pos, "LastOutput")
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_help_sends_its_usage_and_the_block_keeps_the_last_message(tmp_path, backend):
+    """HelpCommand sends ``/TEXT `` + CommandDispatcher.getSmartUsage of each child of the node it
+    reached; BaseCommandBlock.sendSystemMessage keeps ``[HH:mm:ss] `` + the message (1.21.5+: the
+    component's tag; Bookshelf's bs.time runs ``help me``). Its result is the number of messages."""
+    main = ('setblock 0 0 0 command_block{auto:1b,Command:"help me"}\n'
+            'setblock 2 0 0 command_block{auto:1b,Command:"execute store result score #k v run help kill"}\n')
+    emu = world(tmp_path, main, backend, pack_format=71)
+    emu.tick()
+    out = last_output(emu)
+    assert list(out["extra"]) == ["/me <action>"] and str(out["text"]).endswith("] ")
+    assert list(last_output(emu, (2, 0, 0))["extra"]) == ["/kill [<targets>]"]  # kill runs without targets
+    assert emu.score("#k", "v") == 1 and block(emu, (0, 0, 0), "SuccessCount") == 1
+    assert not any(d.unmodelled for d in emu.diagnostics)
+
+
+def test_help_of_a_command_the_block_may_not_use_fails_in_red(tmp_path):
+    """``stop`` needs level 4, a command block has 2: commands.help.failed, sent with
+    CommandSourceStack.sendFailure (the message in red); before 1.21.5 LastOutput is a JSON string."""
+    emu = world(tmp_path, 'setblock 0 0 0 command_block{auto:1b,Command:"help stop"}\n', "python", pack_format=61)
+    emu.tick()
+    import json
+    out = json.loads(str(last_output(emu)))
+    assert out["extra"] == [{"text": "", "extra": [{"translate": "commands.help.failed"}], "color": "red"}]
+    assert block(emu, (0, 0, 0), "SuccessCount") == 0
+
+
+def test_a_command_that_sends_nothing_leaves_no_output_and_feedback_rules_apply(tmp_path):
+    """performCommand clears lastOutput before running; tellraw sends its source nothing. A success
+    is kept only while sendCommandFeedback is on (BaseCommandBlock.acceptsSuccess), nothing at all
+    without TrackOutput; ``Searge`` is the game's easter egg."""
+    main = ('setblock 0 0 0 command_block{auto:1b,Command:"tellraw @a \\"hi\\"",LastOutput:\'{"text":"old"}\'}\n'
+            "gamerule sendCommandFeedback false\n"
+            'setblock 1 0 0 command_block{auto:1b,Command:"help me"}\n'
+            'setblock 2 0 0 command_block{auto:1b,Command:"help me",TrackOutput:0b}\n'
+            'setblock 3 0 0 command_block{auto:1b,Command:"searge"}\n')
+    emu = world(tmp_path, main, "python", pack_format=61)
+    emu.add_player("Alex")  # tellraw to nobody fails ("No player was found": a message not modelled)
+    emu.tick()
+    assert last_output(emu) is None and last_output(emu, (1, 0, 0)) is None and last_output(emu, (2, 0, 0)) is None
+    assert str(last_output(emu, (3, 0, 0))) == '"#itzlipofutzli"' and block(emu, (3, 0, 0), "SuccessCount") == 1
+    assert not any(d.unmodelled for d in emu.diagnostics)
