@@ -75,7 +75,7 @@ _ENCHANTMENTS = codecs.list_of(codecs.fields(optional=(("enchantments", _HOLDERS
 # the ``~`` predicates (ItemSubPredicates) and the shape of each one's value: its codec (1.21
 # critereon classes: ItemDamagePredicate, ItemEnchantmentsPredicate over EnchantmentPredicate,
 # ItemPotionsPredicate, ItemCustomDataPredicate (NbtPredicate: TagParser.LENIENT_CODEC),
-# ItemJukeboxPlayablePredicate; the others are records, read from a compound)
+# ItemJukeboxPlayablePredicate, VillagerTypePredicate; the others are records, read from a compound)
 SUB_PREDICATES: dict[str, codecs.Shape] = {f"minecraft:{name}": shape for name, shape in {
     "damage": codecs.fields(optional=(("durability", _INT_BOUNDS), ("damage", _INT_BOUNDS))),
     "enchantments": _ENCHANTMENTS,
@@ -83,10 +83,18 @@ SUB_PREDICATES: dict[str, codecs.Shape] = {f"minecraft:{name}": shape for name, 
     "potion_contents": _HOLDERS,
     "custom_data": codecs.either(codecs.string, codecs.compound, what="a compound or its SNBT as a string"),
     "jukebox_playable": codecs.fields(optional=(("song", _HOLDERS),)),
+    "villager/variant": _HOLDERS,
     **{name: codecs.compound for name in (
         "container bundle_contents firework_explosion fireworks writable_book_content written_book_content "
         "attribute_modifiers trim").split()},
 }.items()}
+
+
+# the sub-predicates registered after 1.20.5: jukebox_playable with its component (1.21); the
+# 1.21.5+ DataComponentPredicates' villager/variant, found in the 1.21.11 and 26.1 sources and in no
+# list up to 1.21.7 (the release between that added it is unconfirmed: read from 1.21.11)
+SUB_PREDICATES_SINCE: dict[str, Version] = {"minecraft:jukebox_playable": (1, 21, 0),
+                                            "minecraft:villager/variant": (1, 21, 11)}
 
 
 def component_problem(name: str, version: Version) -> tuple[str, str] | None:
@@ -255,7 +263,7 @@ def _component_id(r: Reader) -> str:
 
 def _check_component(r: Reader, name: str, start: int, sub_predicate: bool = False) -> None:
     if sub_predicate:
-        if name not in SUB_PREDICATES:
+        if name not in SUB_PREDICATES or r.version < SUB_PREDICATES_SINCE.get(name, COMPONENTS_VERSION):
             r.fail(f"unknown item sub-predicate '{name}'", start)
         return
     problem = component_problem(name, r.version)

@@ -12,7 +12,8 @@ from emulator.world import inventories, loot, text_components
 from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
-from emulator.world.items import ItemStack, create, matches
+from emulator.world.item_predicates import matches
+from emulator.world.items import ItemStack, create
 from emulator.world.living import is_living
 from emulator.world.loot_context import LootContext
 from mcfunction_parser import ast
@@ -30,8 +31,8 @@ def _version(env):
 def _test(env, predicate: ast.ItemPredicate | None):
     if predicate is None:
         return lambda stack: True
-    resources = env.state.resources
-    return lambda stack: matches(predicate, stack, resources)
+    resources, version = env.state.resources, env.state.version
+    return lambda stack: matches(predicate, stack, resources, version)
 
 
 def _name(stack: ItemStack) -> str:

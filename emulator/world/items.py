@@ -1,5 +1,5 @@
 """Item stacks: an id, a count and a data component patch, read from and written to the NBT the
-game saves, and the item predicates of commands.
+game saves (their predicates: :mod:`emulator.world.item_predicates`).
 
 Public API
 - ``ItemStack(id, count=1, patch=Compound(), tag=None)``: ``patch`` is the component patch as the
@@ -11,18 +11,14 @@ Public API
   item does not have is dropped: PatchedDataComponentMap.applyPatch).
 - ``to_nbt(stack, version)`` / ``from_nbt(tag)``: ``{id, count, components}`` from 1.20.5,
   ``{id, Count:1b, tag}`` before (ItemStack.save / ItemStack.parse, both forms are read).
-- ``matches(predicate, stack, resources)``: ItemPredicateArgument: id / ``#tag`` / ``*``, the
-  component tests (``component``, ``component=value``, ``count=N|{min,max}``, ``custom_data~{...}``,
-  ``damage~{...}``, ``enchantments~[...]``, ``stored_enchantments~[...]``), or the older
-  ``{nbt}`` partial match of the ``tag``. A ``~`` sub-predicate
-  the emulator does not model raises ``Unmodelled`` (reported), never a silent false.
 - ``DEFAULTS``: the defaults modelled: ``max_stack_size`` (1, 16 or 64), ``max_damage`` and
-  ``damage`` of damageable items. Other default components (lore, rarity ...) are not modelled.
+  ``damage`` of damageable items, the empty ``container`` of container blocks' items, the empty
+  ``bundle_contents`` of bundles, ``writable_book_content`` of the book and quill, ``fireworks``
+  of rockets (flight duration 1) and music discs' ``jukebox_playable`` song (Items' registrations).
+  Other default components (lore, rarity ...) are not modelled.
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): world/item/ItemStack.java (CODEC, isSameItemSameComponents),
-core/component/PatchedDataComponentMap.java, commands/arguments/item/ItemPredicateArgument.java,
-advancements/critereon/ItemDamagePredicate.java, ItemCustomDataPredicate.java,
-ItemEnchantmentsPredicate.java, EnchantmentPredicate.java; durabilities from
+core/component/PatchedDataComponentMap.java, world/item/Items.java (the defaults); durabilities from
 world/item/Tiers.java and ArmorMaterials.java (base durability 11/16/15/13 x multiplier).
 """
 from __future__ import annotations
@@ -31,8 +27,7 @@ from dataclasses import dataclass, field
 
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte, Compound, Int, List, String
-from emulator.world.errors import Unmodelled
-from emulator.world.nbt_ops import compare_nbt, copy_tag, is_numeric, tags_equal
+from emulator.world.nbt_ops import copy_tag, is_numeric, tags_equal
 
 AIR = "minecraft:air"
 COMPONENTS_VERSION = (1, 20, 5)
@@ -66,10 +61,30 @@ def _max_damage(name: str) -> int | None:
     return None
 
 
+# Items: the block items registered with DataComponents.CONTAINER = ItemContainerContents.EMPTY
+_CONTAINERS = frozenset(("chest trapped_chest barrel ender_chest hopper dispenser dropper crafter furnace smoker "
+                         "blast_furnace brewing_stand chiseled_bookshelf campfire soul_campfire").split())
+
+
+def _content_defaults(name: str) -> Compound:
+    """The default contents of containers, bundles, books, rockets and music discs."""
+    if name in _CONTAINERS or name.endswith("shulker_box"):
+        return Compound({"minecraft:container": List()})
+    if name == "bundle" or name.endswith("_bundle"):
+        return Compound({"minecraft:bundle_contents": List()})
+    if name == "writable_book":
+        return Compound({"minecraft:writable_book_content": Compound()})
+    if name == "firework_rocket":
+        return Compound({"minecraft:fireworks": Compound(flight_duration=Byte(1))})
+    if name.startswith("music_disc_"):  # JukeboxSongs: music_disc_<song>
+        return Compound({"minecraft:jukebox_playable": Compound(song=String("minecraft:" + name[11:]))})
+    return Compound()
+
+
 def defaults(item_id: str) -> Compound:
     """The item's default components that are modelled (its prototype, partly)."""
     name = item_id.split(":", 1)[-1]
-    found = Compound()
+    found = _content_defaults(name) if item_id.startswith("minecraft:") else Compound()
     durability = _max_damage(name) if item_id.startswith("minecraft:") else None
     if durability is not None:
         found["minecraft:max_stack_size"] = Int(1)
@@ -192,104 +207,3 @@ def from_nbt(tag) -> ItemStack:
                       copy_tag(components) if isinstance(components, Compound) else Compound(),
                       copy_tag(old) if isinstance(old, Compound) else None)
     return EMPTY.copy() if stack.is_empty else stack
-
-
-# ---------------------------------------------------------------------- predicates
-def matches(predicate: ast.ItemPredicate, stack: ItemStack, resources) -> bool:
-    """ItemPredicateArgument's test of one stack (an empty stack matches nothing but ``air``);
-    ``resources``: the world's :class:`~emulator.world.resources.Resources` (its tags)."""
-    if predicate.id is not None:
-        if predicate.is_tag:
-            if stack.id not in resources.item_tag(predicate.id):
-                return False
-        elif stack.id != predicate.id:
-            return False
-    elif stack.is_empty:
-        return False  # '*' is any non-air item
-    if predicate.tag is not None:
-        return compare_nbt(predicate.tag, stack.tag)
-    return all(any(_test(t, stack, resources) != t.negated for t in group) for group in predicate.tests)
-
-
-def _test(test: ast.ComponentTest, stack: ItemStack, resources) -> bool:
-    if test.name == "minecraft:count" and test.kind != "exists":  # MinMaxBounds.Ints: N or {min, max}
-        bounds = _bounds(test.value)
-        return bounds is not None and _within(bounds, stack.count)
-    if test.kind == "exists":
-        return stack.component(test.name) is not None
-    if test.kind == "=":
-        found = stack.component(test.name)
-        return found is not None and value_equal(test.value, found)
-    return sub_predicate(test.name, test.value, stack, resources)
-
-
-def value_equal(wanted, found) -> bool:
-    """Components compare as decoded values: numbers by value (``damage=3`` matches ``3`` stored
-    as any numeric tag), everything else tag for tag."""
-    if is_numeric(wanted) and is_numeric(found):
-        return float(wanted) == float(found)
-    return tags_equal(wanted, found)
-
-
-def _bounds(value) -> tuple[float | None, float | None] | None:
-    """MinMaxBounds as a codec reads it: a number, or ``{min, max}``."""
-    if is_numeric(value):
-        return float(value), float(value)
-    if isinstance(value, Compound):
-        lo, hi = value.get("min"), value.get("max")
-        return (float(lo) if is_numeric(lo) else None), (float(hi) if is_numeric(hi) else None)
-    return None
-
-
-def _within(bounds, number: float) -> bool:
-    lo, hi = bounds
-    return (lo is None or number >= lo) and (hi is None or number <= hi)
-
-
-def sub_predicate(name: str, value, stack: ItemStack, resources) -> bool:
-    """ItemSubPredicate.matches: ``value`` as NBT; ``resources`` for the registry tags it names."""
-    if name in ("minecraft:enchantments", "minecraft:stored_enchantments"):
-        # ItemEnchantmentsPredicate: every EnchantmentPredicate of the list is in the component
-        levels = enchantment_levels(stack, name)
-        return isinstance(value, List) and all(
-            isinstance(p, Compound) and _enchantment_in(p, levels, resources) for p in value)
-    if name == "minecraft:custom_data":  # ItemCustomDataPredicate: NbtPredicate on the custom data
-        return compare_nbt(value, stack.component(name) or Compound())
-    if name == "minecraft:damage":  # ItemDamagePredicate: only damageable items
-        max_damage = stack.component("minecraft:max_damage")
-        if max_damage is None or not isinstance(value, Compound):
-            return False
-        damage = int(stack.component("minecraft:damage") or 0)
-        for key, number in (("damage", damage), ("durability", int(max_damage) - damage)):
-            if key in value:
-                bounds = _bounds(value[key])
-                if bounds is None or not _within(bounds, number):
-                    return False
-        return True
-    raise Unmodelled(f"the item sub-predicate '{name}~'")
-
-
-def _enchantment_in(predicate: Compound, levels: Compound, resources) -> bool:
-    """EnchantmentPredicate.containedIn: with ``enchantments`` (an id, a list, or a #tag), one of
-    them present at a level within ``levels``; without, any enchantment within ``levels``, or any
-    enchantment at all when ``levels`` bounds nothing."""
-    bounds = _bounds(predicate["levels"]) if "levels" in predicate else (None, None)
-    if bounds is None:
-        return False
-    present = {str(k): int(v) for k, v in levels.items() if is_numeric(v) and int(v) > 0}
-    wanted = predicate.get("enchantments")
-    if wanted is None:
-        if bounds == (None, None):
-            return bool(present)
-        return any(_within(bounds, level) for level in present.values())
-    if isinstance(wanted, String) and str(wanted).startswith("#"):
-        tag = _namespaced(str(wanted)[1:])
-        chosen = [e for e in present if resources.in_tag("enchantment", tag, e)]
-    else:
-        names = [wanted] if isinstance(wanted, String) else list(wanted) if isinstance(wanted, List) else []
-        chosen = [e for e in map(_namespaced, map(str, names)) if e in present]
-    return any(_within(bounds, present[e]) for e in chosen)
-
-
-def _namespaced(name: str) -> str:
-    return name if ":" in name else "minecraft:" + name

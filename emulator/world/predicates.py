@@ -49,7 +49,8 @@ from emulator.world import advancement_progress, entity_predicate_format, invent
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
-from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_level, sub_predicate, value_equal
+from emulator.world.item_predicates import codec_matches
+from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_level
 from emulator.world.living import is_living
 from emulator.world.loot_context import LootContext, in_range, integer, number, snbt_or_tag, to_tag
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
@@ -267,16 +268,13 @@ def _slots(value: dict, ctx: LootContext, entity: Entity) -> bool:
     return True
 
 
-# the item sub-predicates (ItemSubPredicates) modelled: emulator.world.items.sub_predicate
-_SUB_PREDICATES = ("minecraft:custom_data", "minecraft:damage", "minecraft:enchantments",
-                   "minecraft:stored_enchantments")
-
-
 def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
-    """ItemPredicate.test: ``items`` (id, list or #tag; ``item``/``tag`` before 1.17/1.20.5),
-    ``count``, ``components`` (each equal to the stack's value, defaults included),
-    ``predicates`` (:data:`_SUB_PREDICATES`); before 1.20.5 ``nbt`` (a partial match of the
-    stack's tag) and :func:`_old_item_fields`."""
+    """ItemPredicate.test: from 1.20.5 the codec's fields (``items``, ``count``, ``components``,
+    ``predicates``: :func:`emulator.world.item_predicates.codec_matches`); before, ``items``
+    (``item``/``tag`` before 1.17), ``count``, ``nbt`` (a partial match of the stack's tag) and
+    :func:`_old_item_fields`."""
+    if tuple(ctx.version) >= COMPONENTS_VERSION:
+        return codec_matches(to_tag(predicate), stack, ctx.resources, ctx.version)
     wanted = predicate.get("items", predicate.get("item"))
     if "tag" in predicate:
         wanted = "#" + predicate["tag"]
@@ -284,21 +282,9 @@ def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
         return False
     if "count" in predicate and not in_range(predicate["count"], stack.count):
         return False
-    for name, value in predicate.get("components", {}).items():
-        found = stack.component(_id(name))
-        if found is None or not value_equal(to_tag(value), found):
-            return False
-    for name, value in predicate.get("predicates", {}).items():
-        name = _id(name)
-        if name not in _SUB_PREDICATES:
-            raise Unmodelled(f"item sub-predicate '{name}'")
-        value = snbt_or_tag(value) if name == "minecraft:custom_data" else to_tag(value)
-        if not sub_predicate(name, value, stack, ctx.resources):
-            return False
     if "nbt" in predicate and not compare_nbt(snbt_or_tag(predicate["nbt"]), stack.tag):
         return False
-    # the fields of the ItemPredicate before 1.20.5; its codec from 1.20.5 ignores them
-    return tuple(ctx.version) >= COMPONENTS_VERSION or _old_item_fields(predicate, stack)
+    return _old_item_fields(predicate, stack)
 
 
 def _old_item_fields(predicate: dict, stack: ItemStack) -> bool:

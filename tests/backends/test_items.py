@@ -251,3 +251,27 @@ def test_mine_reads_the_block_and_its_state(tmp_path):
         assert _scores(emu) == {"#d": 2, "#s": 0, "#n": 2}
         slab = entity_nbt(_player(emu))["Inventory"][0]
         assert to_snbt(slab["components"]) == '{"minecraft:block_state":{type:"double"}}'
+
+
+def test_sub_predicates_as_packs_use_them(tmp_path):
+    # a backpack library reads a held shulker box's contents (ItemContainerPredicate), a potion
+    # belt clears potions by their potion (ItemPotionsPredicate), a predicate file reads a book's
+    # author (ItemWrittenBookPredicate) in the entity predicate's equipment, on both backends
+    box = ("shulker_box[container=[{slot:0,item:{id:'minecraft:tripwire_hook',count:1,"
+           "components:{'minecraft:custom_data':{key:'vault'}}}},{slot:1,item:{id:'minecraft:bread',count:5}}]]")
+    _json(tmp_path / "pack", "data/t/predicate/author.json", {
+        "condition": "minecraft:entity_properties", "entity": "this",
+        "predicate": {"equipment": {"offhand": {"items": "minecraft:written_book", "predicates": {
+            "minecraft:written_book_content": {"author": "Alex", "pages": {"size": {"min": 1}}}}}}}})
+    emu = run_both(tmp_path, {"t:main": SETUP + f"item replace entity Steve weapon.mainhand with {box}\n"
+                              "item replace entity Steve weapon.offhand with written_book[written_book_content="
+                              "{title:'Log',author:'Alex',pages:['\"day 1\"']}]\n"
+                              "give Steve potion[potion_contents={potion:'minecraft:healing'}] 1\n"
+                              "give Steve potion[potion_contents={potion:'minecraft:poison'}] 1\n"
+                              "execute store result score #key v if items entity Steve weapon.mainhand "
+                              "*[container~{items:{contains:[{predicates:{'minecraft:custom_data':{key:'vault'}}}]}}]\n"
+                              "execute store result score #food v if items entity Steve weapon.* "
+                              "*[container~{items:{count:[{test:{items:'minecraft:bread',count:{min:5}},count:1}]}}]\n"
+                              "execute store result score #healing v run clear Steve *[potion_contents~'minecraft:healing']\n"
+                              "execute store result score #author v as Steve if predicate t:author\n"}, players=STEVE)
+    assert _scores(emu) == {"#key": 1, "#food": 1, "#healing": 1, "#author": 1}
