@@ -25,8 +25,8 @@ def _make_coord(prefix: str, number: str, block: bool) -> Coord | None:
     if number:
         if not (INT_TEXT if block and not prefix else FLOAT_TEXT).match(number):
             return None
-        return Coord(_KINDS[prefix], float(number), not prefix and "." not in number)
-    return Coord(_KINDS[prefix], 0.0) if prefix else None
+        return Coord.new(_KINDS[prefix], float(number), not prefix and "." not in number)
+    return Coord.new(_KINDS[prefix], 0.0) if prefix else None
 
 
 def _coord(r: Reader, block: bool, allow_local: bool) -> Coord:
@@ -68,7 +68,7 @@ def vec3(r: Reader, block: bool = False) -> Vec3:
                 _VEC3_CACHE[key] = coords
         if coords is not None:
             r.pos = m.end()
-            return Vec3(*coords, loc)
+            return Vec3.new(*coords, loc)
     start = r.pos
     x = _coord(r, block, True)
     r.space("y coordinate")
@@ -78,7 +78,7 @@ def vec3(r: Reader, block: bool = False) -> Vec3:
     local = (x.kind == "local") + (y.kind == "local") + (z.kind == "local")
     if local not in (0, 3):
         r.fail("cannot mix world and local coordinates (use ^ for all three or for none)", start)
-    return Vec3(x, y, z, loc)
+    return Vec3.new(x, y, z, loc)
 
 
 def _fast_coords(g: tuple, block: bool) -> tuple[Coord, Coord, Coord] | None:
@@ -97,7 +97,7 @@ def vec2(r: Reader, integers: bool = False) -> Vec2:
     x = _coord(r, integers, False)
     r.space("second coordinate")
     y = _coord(r, integers, False)
-    return Vec2(x, y, loc)
+    return Vec2.new(x, y, loc)
 
 
 # ----------------------------------------------------------------------------- names
@@ -163,8 +163,8 @@ def plain_holder(r: Reader, word: str, start: int):
 def holder_from_word(word: str, loc: Loc):
     """A score holder written as a word: ``*`` or a name (UUIDs recognised)."""
     if word == "*":
-        return Wildcard(loc)
-    return NameTarget(word, loc, "-" in word and is_uuid(word))
+        return Wildcard.new(loc)
+    return NameTarget.new(word, loc, "-" in word and is_uuid(word))
 
 
 # ----------------------------------------------------------------------------- durations

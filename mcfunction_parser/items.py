@@ -170,7 +170,7 @@ def slot(r: Reader, ranges: bool = False) -> ast.SlotArgument:
     if (entry is None or not entry[1] <= r.version or (entry[2] is not None and r.version >= entry[2])
             or (len(entry[0]) > 1 and not ranges) or (name.endswith(".*") and not ranges)):
         r.fail(f"unknown slot '{name}'" if name else f"expected a slot, got {r.found()}", start)
-    return ast.SlotArgument(name, entry[0])
+    return ast.SlotArgument.new(name, entry[0])
 
 
 # ----------------------------------------------------------------------------- items
@@ -182,7 +182,7 @@ def item_argument(r: Reader) -> ast.ItemArgument:
     check_id(r, "item", item_id, start)
     if r.version < COMPONENTS_VERSION:
         tag = compound(r) if r.peek() == "{" else None
-        return ast.ItemArgument(loc, item_id, tag=tag)
+        return ast.ItemArgument.new(loc, item_id, tag=tag)
     components: list = []
     removed: list[str] = []
     seen: set[str] = set()
@@ -206,7 +206,7 @@ def item_argument(r: Reader) -> ast.ItemArgument:
         components.append((name, _component_value(r, name)))
 
     _bracketed(r, one, "the item's components")
-    return ast.ItemArgument(loc, item_id, tuple(components), tuple(removed))
+    return ast.ItemArgument.new(loc, item_id, tuple(components), tuple(removed))
 
 
 def _component_value(r: Reader, name: str):
@@ -291,10 +291,10 @@ def item_predicate(r: Reader) -> ast.ItemPredicate:
         check_id(r, "item", item_id, start)
     if r.version < COMPONENTS_VERSION:
         tag = compound(r) if r.peek() == "{" else None
-        return ast.ItemPredicate(loc, item_id, is_tag, tag=tag)
+        return ast.ItemPredicate.new(loc, item_id, is_tag, tag=tag)
     groups: list = []
     _bracketed(r, lambda: groups.append(_any_of(r)), "the item predicate")
-    return ast.ItemPredicate(loc, item_id, is_tag, tuple(groups))
+    return ast.ItemPredicate.new(loc, item_id, is_tag, tuple(groups))
 
 
 def _any_of(r: Reader) -> tuple[ast.ComponentTest, ...]:
@@ -324,6 +324,6 @@ def _test(r: Reader) -> ast.ComponentTest:
         # name=value: ComponentPredicateParser reads the value with the component's own codec,
         # name~value with the sub-predicate's
         tag = _component_value(r, name) if op == "=" else _sub_predicate_value(r, name)
-        return ast.ComponentTest(name, op, tag, negated)
+        return ast.ComponentTest.new(name, op, tag, negated)
     _check_component(r, name, start)
-    return ast.ComponentTest(name, "exists", None, negated)
+    return ast.ComponentTest.new(name, "exists", None, negated)

@@ -23,23 +23,23 @@ def nbt_path(r: Reader) -> NbtPath:
         if c == "{":
             if not first:
                 r.fail("a compound filter '{...}' must follow a key or start the path")
-            nodes.append(PathFilter(compound(r)))
+            nodes.append(PathFilter.new(compound(r)))
         elif c == "[":
             nodes.append(_bracket(r))
         elif c == '"' or c == "'":
-            nodes.append(PathKey(r.quoted()))
+            nodes.append(PathKey.new(r.quoted()))
         else:
             m = _KEY.match(text, r.pos)
             if m is None:
                 r.fail(f"expected an NBT path, got {r.found()}")
             r.pos = m.end()
-            nodes.append(PathKey(m.group()))
+            nodes.append(PathKey.new(m.group()))
         first = False
         # a key may be followed by a {filter}, [index] or '.'
         while True:
             c = r.peek()
             if c == "{" and isinstance(nodes[-1], PathKey):
-                nodes.append(PathFilter(compound(r)))
+                nodes.append(PathFilter.new(compound(r)))
             elif c == "[":
                 nodes.append(_bracket(r))
             else:
@@ -50,7 +50,7 @@ def nbt_path(r: Reader) -> NbtPath:
                 r.fail("expected an NBT path node after '.'")
             continue
         if c == "" or c == " ":
-            return NbtPath(tuple(nodes), text[start:r.pos], loc)
+            return NbtPath.new(tuple(nodes), text[start:r.pos], loc)
         r.fail(f"unexpected '{c}' in NBT path")
 
 
@@ -59,9 +59,9 @@ def _bracket(r: Reader):
     c = r.peek()
     if c == "]":
         r.pos += 1
-        return PathAll()
+        return PathAll.new()
     if c == "{":
-        node = PathMatch(compound(r))
+        node = PathMatch.new(compound(r))
     else:
         start = r.pos
         m = _INDEX.match(r.text, start)
@@ -71,6 +71,6 @@ def _bracket(r: Reader):
         if not INT_MIN <= index <= INT_MAX:
             r.fail(f"index {brief(m.group())} is out of range for a 32-bit int", start)
         r.pos = m.end()
-        node = PathIndex(index)
+        node = PathIndex.new(index)
     r.expect("]")
     return node

@@ -84,7 +84,7 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
             diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col, physical[item.line - 1]))
             continue
         text, line, col, segments = item
-        loc = Loc(path, line, col)
+        loc = Loc.new(path, line, col)
         first = text[0]
         if first == "$":
             if not macros_ok:
@@ -103,7 +103,7 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
         cmd = _parse(reader, diagnostics, physical, keep_unread=True)
         if cmd is not None:
             commands.append(cmd)
-    function = Function(function_id, path, tuple(commands), len(physical), is_macro, pack)
+    function = Function.new(function_id, path, tuple(commands), len(physical), is_macro, pack)
     return function, diagnostics
 
 
@@ -150,7 +150,7 @@ def _unread(reader: Reader, error: ParseError, diagnostics: list[Diagnostic],
     refuses to load the function)."""
     reason = f"{error.message} ({stand_in_note(reader.version)})"
     _report(reader, WARNING, reason, error.pos, diagnostics, physical, None)
-    return UnreadCommand(reader.start_loc, reader.text.split(" ", 1)[0], reader.text, reason)
+    return UnreadCommand.new(reader.start_loc, reader.text.split(" ", 1)[0], reader.text, reason)
 
 
 def _report(reader: Reader, severity: str, message: str, pos: int, diagnostics: list[Diagnostic],
@@ -169,7 +169,7 @@ def _macro_line(text: str, loc: Loc, segments: tuple, physical: list[str],
         reader = JoinedReader(text, loc, (0, 0, 0), segments) if segments else Reader(text, loc, (0, 0, 0))
         _report(reader, ERROR, error, offset + 1, diagnostics, physical, None)
         return None
-    return MacroLine(loc, template, keys)
+    return MacroLine.new(loc, template, keys)
 
 
 def _leading_slash(text: str, loc: Loc, physical: list[str], diagnostics: list[Diagnostic]) -> None:

@@ -104,7 +104,7 @@ def int_range(r: Reader) -> IntRange:
         r.pos = start + len(token)
         return cached
     lo, hi = _range(r, True)
-    result = IntRange(lo, hi)
+    result = IntRange.new(lo, hi)
     if r.pos == start + len(token):
         if len(_INT_RANGES) >= _CACHE_MAX:
             _INT_RANGES.clear()
@@ -114,14 +114,14 @@ def int_range(r: Reader) -> IntRange:
 
 def float_range(r: Reader) -> FloatRange:
     lo, hi = _range(r, False)
-    return FloatRange(lo, hi)
+    return FloatRange.new(lo, hi)
 
 
 def rotation_range(r: Reader) -> FloatRange:
     """``x_rotation``/``y_rotation`` (WrappedMinMaxBounds.fromReader): ``135..-135`` is the half
     turn through 180."""
     lo, hi = _range(r, False, wraps=True)
-    return FloatRange(lo, hi)
+    return FloatRange.new(lo, hi)
 
 
 # ----------------------------------------------------------------------------- UUIDs

@@ -91,10 +91,10 @@ class Reader:
 
     def loc(self) -> Loc:
         """The file position of the cursor."""
-        return Loc(self.path, self.line, self.col + self.pos)
+        return Loc.new(self.path, self.line, self.col + self.pos)
 
     def loc_at(self, pos: int) -> Loc:
-        return Loc(self.path, self.line, self.col + pos)
+        return Loc.new(self.path, self.line, self.col + pos)
 
     def fail(self, message: str, pos: int | None = None):
         raise ParseError(message, self.pos if pos is None else pos)
@@ -326,4 +326,4 @@ class JoinedReader(Reader):
             if seg[0] > pos:
                 break
             start, line, col = seg
-        return Loc(self.path, line, col + pos - start)
+        return Loc.new(self.path, line, col + pos - start)

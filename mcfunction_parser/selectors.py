@@ -58,8 +58,8 @@ def selector(r: Reader) -> Selector:
             loc_at = r.loc_at
             args = []
             for key, value, negated, offset in cached:  # a loop: a comprehension costs a call in 3.11
-                args.append(SelectorArg(key, value, negated, loc_at(start + offset)))
-            return Selector(variable, tuple(args), loc)
+                args.append(SelectorArg.new(key, value, negated, loc_at(start + offset)))
+            return Selector.new(variable, tuple(args), loc)
     r.pos = start + 2
     warned = len(r.warnings)
     args, offsets = _options(r, variable)
@@ -68,14 +68,14 @@ def selector(r: Reader) -> Selector:
         if len(_CACHE) >= _CACHE_MAX:
             _CACHE.clear()
         _CACHE[plain.group(), r.version] = tuple((a.key, a.value, a.negated, o - start) for a, o in zip(args, offsets))
-    return Selector(variable, args, loc)
+    return Selector.new(variable, args, loc)
 
 
 def bare_selector(r: Reader, variable: str, start: int) -> Selector:
     """``@s``, ``@e`` ... without options, written at offset ``start``."""
     if variable not in _ALWAYS_VALID:
         _check_variable(r, variable, start)
-    return Selector(variable, (), r.loc_at(start))
+    return Selector.new(variable, (), r.loc_at(start))
 
 
 def _check_variable(r: Reader, variable: str, start: int) -> None:
@@ -114,7 +114,7 @@ def _options(r: Reader, variable: str) -> tuple[tuple[SelectorArg, ...], list[in
             r.pos += 1
             r.skip_ws()
         _check_applicable(r, variable, key, negated, args, key_pos)
-        args.append(SelectorArg(key, _PARSERS[key](r), negated, r.loc_at(key_pos)))
+        args.append(SelectorArg.new(key, _PARSERS[key](r), negated, r.loc_at(key_pos)))
         offsets.append(key_pos)
         after = _AFTER_VALUE.match(text, r.pos)
         r.pos = after.end()
@@ -282,7 +282,7 @@ def target(r: Reader, single: bool = False, players: bool = False):
                 r.fail(f"player name '{name}' is longer than {NAME_MAX} characters", start)
             r.pos = start
             r.fail(f"expected a selector, player name or UUID, got {r.found()}", start)
-        result = NameTarget(name, loc, is_uuid=uuid)
+        result = NameTarget.new(name, loc, is_uuid=uuid)
     if single and not is_single(result):
         r.fail("only one entity is allowed, but the selector allows more than one (add limit=1)", start)
     if players and not is_players_only(result):

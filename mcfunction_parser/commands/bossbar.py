@@ -17,16 +17,16 @@ def bossbar(r: Reader, loc) -> ast.Command:
     action = r.keyword(("add", "remove", "list", "set", "get"), "bossbar action")
     if action == "list":
         r.finish()
-        return ast.Bossbar(loc, action, None)
+        return ast.Bossbar.new(loc, action, None)
     r.space("bossbar id")
     bar = resource_location(r, "bossbar id")
     if action == "add":
         r.space("bossbar name (a text component)")
-        node = ast.Bossbar(loc, action, bar, text=text_component(r))
+        node = ast.Bossbar.new(loc, action, bar, text=text_component(r))
     elif action == "remove":
-        node = ast.Bossbar(loc, action, bar)
+        node = ast.Bossbar.new(loc, action, bar)
     elif action == "get":
-        node = ast.Bossbar(loc, action, bar, r.keyword(_GET_FIELDS, "bossbar property"))
+        node = ast.Bossbar.new(loc, action, bar, r.keyword(_GET_FIELDS, "bossbar property"))
     else:
         node = _set(r, loc, bar)
     r.finish()
@@ -37,16 +37,16 @@ def _set(r: Reader, loc, bar: str) -> ast.Bossbar:
     field = r.keyword(_SET_FIELDS, "bossbar property")
     if field == "players":  # no targets: nobody sees it
         who = target(r, players=True) if r.optional_space() else None
-        return ast.Bossbar(loc, "set", bar, field, targets=who)
+        return ast.Bossbar.new(loc, "set", bar, field, targets=who)
     r.space(f"bossbar {field}")
     if field == "name":
-        return ast.Bossbar(loc, "set", bar, field, text=text_component(r))
+        return ast.Bossbar.new(loc, "set", bar, field, text=text_component(r))
     if field in ("color", "style"):
-        return ast.Bossbar(loc, "set", bar, field, text=r.literal(COLORS if field == "color" else STYLES, field))
+        return ast.Bossbar.new(loc, "set", bar, field, text=r.literal(COLORS if field == "color" else STYLES, field))
     if field == "visible":
-        return ast.Bossbar(loc, "set", bar, field, flag=r.boolean())
+        return ast.Bossbar.new(loc, "set", bar, field, flag=r.boolean())
     low = 0 if field == "value" else 1  # IntegerArgumentType.integer(0) / integer(1)
-    return ast.Bossbar(loc, "set", bar, field, number=r.integer(lo=low, what=f"bossbar {field}"))
+    return ast.Bossbar.new(loc, "set", bar, field, number=r.integer(lo=low, what=f"bossbar {field}"))
 
 
 PARSERS = {"bossbar": bossbar}

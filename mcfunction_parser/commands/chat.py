@@ -17,7 +17,7 @@ def say(r: Reader, loc) -> ast.Command:
     r.space("message")
     start = r.pos
     message(r)
-    return ast.Say(loc, r.text[start:])
+    return ast.Say.new(loc, r.text[start:])
 
 
 def message(r: Reader) -> None:
@@ -39,7 +39,7 @@ def tellraw(r: Reader, loc) -> ast.Command:
     r.space("text component")
     component = text_component(r)
     r.finish()
-    return ast.Tellraw(loc, who, component)
+    return ast.Tellraw.new(loc, who, component)
 
 
 PARSERS = {"say": say, "tellraw": tellraw}

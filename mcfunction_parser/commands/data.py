@@ -18,7 +18,7 @@ def _get(r: Reader, loc):
         if r.optional_space():
             scale = r.double(what="scale")
     r.finish()
-    return ast.DataGet(loc, target, path, scale)
+    return ast.DataGet.new(loc, target, path, scale)
 
 
 def _merge(r: Reader, loc):
@@ -26,7 +26,7 @@ def _merge(r: Reader, loc):
     r.space("NBT compound")
     nbt = compound(r)
     r.finish()
-    return ast.DataMerge(loc, target, nbt)
+    return ast.DataMerge.new(loc, target, nbt)
 
 
 def _remove(r: Reader, loc):
@@ -34,7 +34,7 @@ def _remove(r: Reader, loc):
     r.space("NBT path")
     path = nbt_path(r)
     r.finish()
-    return ast.DataRemove(loc, target, path)
+    return ast.DataRemove.new(loc, target, path)
 
 
 def _modify(r: Reader, loc):
@@ -49,7 +49,7 @@ def _modify(r: Reader, loc):
     r.space("from, value or string")
     source = _source(r)
     r.finish()
-    return ast.DataModify(loc, target, path, mode, index, source)
+    return ast.DataModify.new(loc, target, path, mode, index, source)
 
 
 def _source(r: Reader) -> ast.DataSource:
@@ -58,19 +58,19 @@ def _source(r: Reader) -> ast.DataSource:
     kind = r.literal(("from", "value", "string"), "data source")
     r.space("value" if kind == "value" else "entity, storage or block")
     if kind == "value":
-        return ast.SourceValue(value(r), loc)
+        return ast.SourceValue.new(value(r), loc)
     if kind == "string":
         r.require("data modify string", start)
     source = data_target(r)
     path = nbt_path(r) if r.optional_space() else None
     if kind == "from":
-        return ast.SourceFrom(source, path, loc)
+        return ast.SourceFrom.new(source, path, loc)
     begin = end = None
     if path is not None and r.optional_space():
         begin = r.integer(what="start index")
         if r.optional_space():
             end = r.integer(what="end index")
-    return ast.SourceString(source, path, begin, end, loc)
+    return ast.SourceString.new(source, path, begin, end, loc)
 
 
 _ACTIONS = {"get": _get, "merge": _merge, "modify": _modify, "remove": _remove}

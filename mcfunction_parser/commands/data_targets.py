@@ -15,7 +15,7 @@ def data_target(r: Reader) -> ast.DataTarget:
     kind = r.literal(_KINDS, "entity, storage or block")
     r.space(kind)
     if kind == "entity":
-        return ast.EntityData(target(r, single=True), loc)
+        return ast.EntityData.new(target(r, single=True), loc)
     if kind == "storage":
-        return ast.StorageData(resource_location(r, "storage id"), loc)
-    return ast.BlockData(vec3(r, block=True), loc)
+        return ast.StorageData.new(resource_location(r, "storage id"), loc)
+    return ast.BlockData.new(vec3(r, block=True), loc)

@@ -21,7 +21,7 @@ def tag(r: Reader, loc) -> ast.Command:
         if not name:
             r.fail("expected a tag name (letters, digits, _ - . +)", start)
     r.finish()
-    return ast.TagCommand(loc, who, action, name)
+    return ast.TagCommand.new(loc, who, action, name)
 
 
 def summon(r: Reader, loc) -> ast.Command:
@@ -33,13 +33,13 @@ def summon(r: Reader, loc) -> ast.Command:
         if r.optional_space():
             nbt = compound(r)
     r.finish()
-    return ast.Summon(loc, kind, pos, nbt)
+    return ast.Summon.new(loc, kind, pos, nbt)
 
 
 def kill(r: Reader, loc) -> ast.Command:
     who = target(r) if r.optional_space() else None
     r.finish()
-    return ast.Kill(loc, who)
+    return ast.Kill.new(loc, who)
 
 
 def _try_position(r: Reader):
@@ -65,36 +65,36 @@ def teleport(r: Reader, loc) -> ast.Command:
     if pos is not None:
         if r.pos >= r.end or first_start < r.end and r.text[first_start] in "~^":
             r.finish()
-            return ast.Teleport(loc, None, pos)
+            return ast.Teleport.new(loc, None, pos)
         r.pos = first_start  # more follows: `tp -1 ~ ~ ~` moves the player named -1 (the targets branch)
     who = target(r)
     if not r.optional_space():
         r.pos = first_start
         destination = target(r, single=True)
-        return ast.Teleport(loc, None, destination)
+        return ast.Teleport.new(loc, None, destination)
     pos = _try_position(r)
     if pos is None:
         destination = target(r, single=True)
         r.finish()
-        return ast.Teleport(loc, who, destination)
+        return ast.Teleport.new(loc, who, destination)
     if not r.optional_space():
-        return ast.Teleport(loc, who, pos)
+        return ast.Teleport.new(loc, who, pos)
     if r.rest_word() != "facing":
         rotation = vec2(r)
         r.finish()
-        return ast.Teleport(loc, who, pos, rotation=rotation)
+        return ast.Teleport.new(loc, who, pos, rotation=rotation)
     r.pos += 6
     r.space("position or 'entity'")
     if r.rest_word() != "entity":
         facing = vec3(r)
         r.finish()
-        return ast.Teleport(loc, who, pos, facing=facing)
+        return ast.Teleport.new(loc, who, pos, facing=facing)
     r.pos += 6
     r.space("entity")
     facing_entity = target(r, single=True)
     anchor = r.literal(("eyes", "feet"), "anchor") if r.optional_space() else None
     r.finish()
-    return ast.Teleport(loc, who, pos, facing_entity=facing_entity, facing_anchor=anchor)
+    return ast.Teleport.new(loc, who, pos, facing_entity=facing_entity, facing_anchor=anchor)
 
 
 def ride(r: Reader, loc) -> ast.Command:
@@ -106,7 +106,7 @@ def ride(r: Reader, loc) -> ast.Command:
         r.space("vehicle entity")
         vehicle = target(r, single=True)
     r.finish()
-    return ast.Ride(loc, who, action, vehicle)
+    return ast.Ride.new(loc, who, action, vehicle)
 
 
 PARSERS = {"tag": tag, "summon": summon, "kill": kill, "tp": teleport, "teleport": teleport, "ride": ride}

@@ -30,11 +30,11 @@ _AXES = re.compile(r"[xyz]{1,3}")
 
 
 def _as(r, loc):
-    return ast.ExAs(loc, target(r))
+    return ast.ExAs.new(loc, target(r))
 
 
 def _at(r, loc):
-    return ast.ExAt(loc, target(r))
+    return ast.ExAt.new(loc, target(r))
 
 
 def _positioned(r, loc):
@@ -42,20 +42,20 @@ def _positioned(r, loc):
     if word == "as":
         r.pos += 2
         r.space("entity")
-        return ast.ExPositionedAs(loc, target(r))
+        return ast.ExPositionedAs.new(loc, target(r))
     if word == "over":
         r.require("execute positioned over", r.pos)
         r.pos += 4
-        return ast.ExPositionedOver(loc, r.keyword(_HEIGHTMAPS, "heightmap"))
-    return ast.ExPositioned(loc, vec3(r))
+        return ast.ExPositionedOver.new(loc, r.keyword(_HEIGHTMAPS, "heightmap"))
+    return ast.ExPositioned.new(loc, vec3(r))
 
 
 def _rotated(r, loc):
     if r.rest_word() == "as":
         r.pos += 2
         r.space("entity")
-        return ast.ExRotatedAs(loc, target(r))
-    return ast.ExRotated(loc, vec2(r))
+        return ast.ExRotatedAs.new(loc, target(r))
+    return ast.ExRotated.new(loc, vec2(r))
 
 
 def _facing(r, loc):
@@ -63,12 +63,12 @@ def _facing(r, loc):
         r.pos += 6
         r.space("entity")
         who = target(r)
-        return ast.ExFacingEntity(loc, who, r.keyword(_ANCHORS, "anchor"))
-    return ast.ExFacing(loc, vec3(r))
+        return ast.ExFacingEntity.new(loc, who, r.keyword(_ANCHORS, "anchor"))
+    return ast.ExFacing.new(loc, vec3(r))
 
 
 def _anchored(r, loc):
-    return ast.ExAnchored(loc, r.literal(_ANCHORS, "anchor"))
+    return ast.ExAnchored.new(loc, r.literal(_ANCHORS, "anchor"))
 
 
 def _align(r, loc):
@@ -76,21 +76,21 @@ def _align(r, loc):
     word = r.word()
     if not _AXES.fullmatch(word) or len(set(word)) != len(word):
         r.fail(f"expected a swizzle of x, y and z without repeats, got {show(word)}", start)
-    return ast.ExAlign(loc, word)
+    return ast.ExAlign.new(loc, word)
 
 
 def _in(r, loc):
-    return ast.ExIn(loc, resource_location(r, "dimension"))
+    return ast.ExIn.new(loc, resource_location(r, "dimension"))
 
 
 def _on(r, loc):
     r.require("execute on", r.pos - 3)
-    return ast.ExOn(loc, r.literal(_RELATIONS, "relation"))
+    return ast.ExOn.new(loc, r.literal(_RELATIONS, "relation"))
 
 
 def _summon(r, loc):
     r.require("execute summon", r.pos - 7)
-    return ast.ExSummon(loc, registry_id(r, "entity_type"))
+    return ast.ExSummon.new(loc, registry_id(r, "entity_type"))
 
 
 # ----------------------------------------------------------------------------- conditions
@@ -106,26 +106,26 @@ def _if_score(r, loc, negated):
     obj = objective(r)
     op = r.keyword_then_space(_SCORE_TESTS, "comparison", _score_test_follows)
     if op == "matches":
-        return ast.IfScoreMatches(loc, negated, holder, obj, int_range(r))
+        return ast.IfScoreMatches.new(loc, negated, holder, obj, int_range(r))
     source = single_score_holder(r)
     r.space("objective")
-    return ast.IfScore(loc, negated, holder, obj, op, source, objective(r))
+    return ast.IfScore.new(loc, negated, holder, obj, op, source, objective(r))
 
 
 def _if_entity(r, loc, negated):
-    return ast.IfEntity(loc, negated, target(r))
+    return ast.IfEntity.new(loc, negated, target(r))
 
 
 def _if_data(r, loc, negated):
     source = data_target(r)
     r.space("NBT path")
-    return ast.IfData(loc, negated, source, nbt_path(r))
+    return ast.IfData.new(loc, negated, source, nbt_path(r))
 
 
 def _if_block(r, loc, negated):
     pos = vec3(r, block=True)
     r.space("block")
-    return ast.IfBlock(loc, negated, pos, block(r, tags=True))
+    return ast.IfBlock.new(loc, negated, pos, block(r, tags=True))
 
 
 def _if_blocks(r, loc, negated):
@@ -134,33 +134,33 @@ def _if_blocks(r, loc, negated):
     end = vec3(r, block=True)
     r.space("destination")
     dest = vec3(r, block=True)
-    return ast.IfBlocks(loc, negated, start, end, dest, r.keyword(("all", "masked"), "mode"))
+    return ast.IfBlocks.new(loc, negated, start, end, dest, r.keyword(("all", "masked"), "mode"))
 
 
 def _if_function(r, loc, negated):
     name, is_tag = resource_or_tag(r, "function")
-    return ast.IfFunction(loc, negated, name, is_tag)
+    return ast.IfFunction.new(loc, negated, name, is_tag)
 
 
 def _if_predicate(r, loc, negated):
     if r.peek() in "{[":  # inline predicate (1.20.5+)
-        return ast.IfPredicate(loc, negated, json_span(r, "predicate"))
-    return ast.IfPredicate(loc, negated, resource_location(r, "predicate"))
+        return ast.IfPredicate.new(loc, negated, json_span(r, "predicate"))
+    return ast.IfPredicate.new(loc, negated, resource_location(r, "predicate"))
 
 
 def _if_biome(r, loc, negated):
     pos = vec3(r, block=True)
     r.space("biome")
     name, is_tag = resource_or_tag(r, "biome")
-    return ast.IfBiome(loc, negated, pos, ("#" if is_tag else "") + name)
+    return ast.IfBiome.new(loc, negated, pos, ("#" if is_tag else "") + name)
 
 
 def _if_loaded(r, loc, negated):
-    return ast.IfLoaded(loc, negated, vec3(r, block=True))
+    return ast.IfLoaded.new(loc, negated, vec3(r, block=True))
 
 
 def _if_dimension(r, loc, negated):
-    return ast.IfDimension(loc, negated, resource_location(r, "dimension"))
+    return ast.IfDimension.new(loc, negated, resource_location(r, "dimension"))
 
 
 def _if_items(r, loc, negated):
@@ -169,13 +169,13 @@ def _if_items(r, loc, negated):
     r.space("slots")
     slots = slot(r, ranges=True)
     r.space("item predicate")
-    return ast.IfItems(loc, negated, source, slots, item_predicate(r))
+    return ast.IfItems.new(loc, negated, source, slots, item_predicate(r))
 
 
 def _if_stopwatch(r, loc, negated):
     name = resource_location(r, "stopwatch")
     r.space("range")
-    return ast.IfStopwatch(loc, negated, name, float_range(r))
+    return ast.IfStopwatch.new(loc, negated, name, float_range(r))
 
 
 _CONDITIONS = {
@@ -216,17 +216,17 @@ def _store(r, loc):
     if where == "score":
         holder = score_holder(r)
         r.space("objective")
-        return ast.StoreScore(loc, kind, holder, objective(r))
+        return ast.StoreScore.new(loc, kind, holder, objective(r))
     if where == "bossbar":
         bar = resource_location(r, "bossbar")
-        return ast.StoreBossbar(loc, kind, bar, r.keyword(("value", "max"), "bossbar field"))
+        return ast.StoreBossbar.new(loc, kind, bar, r.keyword(("value", "max"), "bossbar field"))
     r.pos = start
     dest = data_target(r)
     r.space("NBT path")
     path = nbt_path(r)
     kind_type = r.keyword(STORE_TYPES, "NBT type")
     r.space("scale")
-    return ast.StoreData(loc, kind, dest, path, kind_type, r.double(what="scale"))
+    return ast.StoreData.new(loc, kind, dest, path, kind_type, r.double(what="scale"))
 
 
 _SUBCOMMANDS = {
@@ -254,7 +254,7 @@ def _fast_score_matches(r: Reader, m, sub_loc):
         return None
     holder = plain_holder(r, holder_text, m.start(2))
     r.pos = m.end()
-    return ast.IfScoreMatches(sub_loc, m.group(1) == "unless", holder, m.group(3), int_range(r))
+    return ast.IfScoreMatches.new(sub_loc, m.group(1) == "unless", holder, m.group(3), int_range(r))
 
 
 def execute(r: Reader, loc) -> ast.Command:
@@ -264,10 +264,10 @@ def execute(r: Reader, loc) -> ast.Command:
     while True:
         pos = r.pos
         if pos == r.end and condition_last:
-            return ast.Execute(loc, tuple(subcommands), None)
+            return ast.Execute.new(loc, tuple(subcommands), None)
         if text.startswith(" run ", pos) and pos + 5 < r.end:
             r.pos = pos + 5
-            return ast.Execute(loc, tuple(subcommands), command(r))
+            return ast.Execute.new(loc, tuple(subcommands), command(r))
         m = _FAST_SCORE_MATCHES.match(text, pos)
         if m is not None:
             fast = _fast_score_matches(r, m, r.loc_at(pos + 1))
@@ -277,7 +277,7 @@ def execute(r: Reader, loc) -> ast.Command:
                 continue
         name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
         if name == "run":
-            return ast.Execute(loc, tuple(subcommands), command(r))
+            return ast.Execute.new(loc, tuple(subcommands), command(r))
         subcommands.append(_SUBCOMMANDS[name](r, r.loc_at(pos + 1)))
         condition_last = name in _CONDITION_SUBCOMMANDS
         if r.pos == r.end and not condition_last:

@@ -15,18 +15,18 @@ def function(r: Reader, loc) -> ast.Command:
     r.space("function")
     name, is_tag = resource_or_tag(r, "function")
     if not r.optional_space():
-        return ast.FunctionCall(loc, name, is_tag)
+        return ast.FunctionCall.new(loc, name, is_tag)
     r.require("function arguments", r.pos)
     if r.peek() == "{":
         args = compound(r)
         r.finish()
-        return ast.FunctionCall(loc, name, is_tag, arguments=args)
+        return ast.FunctionCall.new(loc, name, is_tag, arguments=args)
     r.literal(("with",), "arguments '{...}' or 'with'")
     r.space("entity, storage or block")
     source = data_target(r)
     path = nbt_path(r) if r.optional_space() else None
     r.finish()
-    return ast.FunctionCall(loc, name, is_tag, with_source=source, with_path=path)
+    return ast.FunctionCall.new(loc, name, is_tag, with_source=source, with_path=path)
 
 
 def return_(r: Reader, loc) -> ast.Command:
@@ -37,15 +37,15 @@ def return_(r: Reader, loc) -> ast.Command:
         r.require("return run", start)
         r.pos += 3
         r.space("command")
-        return ast.Return(loc, "run", command=command(r))
+        return ast.Return.new(loc, "run", command=command(r))
     if word == "fail":
         r.require("return fail", start)
         r.pos += 4
         r.finish()
-        return ast.Return(loc, "fail")
+        return ast.Return.new(loc, "fail")
     value = r.integer(what="return value")
     r.finish()
-    return ast.Return(loc, "value", value=value)
+    return ast.Return.new(loc, "value", value=value)
 
 
 def schedule(r: Reader, loc) -> ast.Command:
@@ -55,7 +55,7 @@ def schedule(r: Reader, loc) -> ast.Command:
         # a greedy string compared textually with the scheduled ids ("ns:path" or "#ns:path"),
         # so it is kept as written: `schedule clear foo` does not clear minecraft:foo's event
         text = r.rest()
-        return ast.ScheduleClear(loc, text[1:] if text.startswith("#") else text, text.startswith("#"))
+        return ast.ScheduleClear.new(loc, text[1:] if text.startswith("#") else text, text.startswith("#"))
     name, is_tag = resource_or_tag(r, "function")
     r.space("time")
     time_pos = r.pos
@@ -66,7 +66,7 @@ def schedule(r: Reader, loc) -> ast.Command:
                            time_pos))
     mode = r.literal(("append", "replace"), "schedule mode") if r.optional_space() else "replace"
     r.finish()
-    return ast.Schedule(loc, name, is_tag, ticks, mode)
+    return ast.Schedule.new(loc, name, is_tag, ticks, mode)
 
 
 PARSERS = {"function": function, "return": return_, "schedule": schedule}

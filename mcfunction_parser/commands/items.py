@@ -35,17 +35,17 @@ def resource_or_inline(r: Reader, what: str) -> ast.ResourceOrInline:
     start = r.pos
     if r.peek() in ("{", "[") and r.version >= COMPONENTS_VERSION:
         tag = value(r)
-        return ast.ResourceOrInline(None, nbt_to_json(tag), r.text[start:r.pos])
+        return ast.ResourceOrInline.new(None, nbt_to_json(tag), r.text[start:r.pos])
     name = resource_location(r, what)
-    return ast.ResourceOrInline(name, None, r.text[start:r.pos])
+    return ast.ResourceOrInline.new(name, None, r.text[start:r.pos])
 
 
 def item_target(r: Reader, what: str, single: bool = False) -> ast.ItemTarget:
     kind = r.literal(("entity", "block"), f"{what} (entity|block)")
     r.space("entity" if kind == "entity" else "position")
     if kind == "entity":
-        return ast.ItemTarget(kind, target(r, single=single))
-    return ast.ItemTarget(kind, vec3(r, block=True))
+        return ast.ItemTarget.new(kind, target(r, single=single))
+    return ast.ItemTarget.new(kind, vec3(r, block=True))
 
 
 def give(r: Reader, loc) -> ast.Command:
@@ -55,7 +55,7 @@ def give(r: Reader, loc) -> ast.Command:
     item = item_argument(r)
     count = r.integer(1, INT_MAX, "count") if r.optional_space() else 1
     r.finish()
-    return ast.Give(loc, who, item, count)
+    return ast.Give.new(loc, who, item, count)
 
 
 def clear(r: Reader, loc) -> ast.Command:
@@ -67,7 +67,7 @@ def clear(r: Reader, loc) -> ast.Command:
             if r.optional_space():
                 max_count = r.integer(0, INT_MAX, "maximum count")
     r.finish()
-    return ast.Clear(loc, who, item, max_count)
+    return ast.Clear.new(loc, who, item, max_count)
 
 
 def item(r: Reader, loc) -> ast.Command:
@@ -81,7 +81,7 @@ def item(r: Reader, loc) -> ast.Command:
         r.space("item modifier")
         modifier = resource_or_inline(r, "item modifier")
         r.finish()
-        return ast.ItemModify(loc, where, target_slot, modifier)
+        return ast.ItemModify.new(loc, where, target_slot, modifier)
     r.space("with|from")
     how = r.literal(("with", "from"), "with|from")
     r.space("item" if how == "with" else "source")
@@ -89,13 +89,13 @@ def item(r: Reader, loc) -> ast.Command:
         created = item_argument(r)
         count = r.integer(1, 99 if r.version >= COMPONENTS_VERSION else 64, "count") if r.optional_space() else None
         r.finish()
-        return ast.ItemReplace(loc, where, target_slot, item=created, count=count)
+        return ast.ItemReplace.new(loc, where, target_slot, item=created, count=count)
     source = item_target(r, "source", single=True)
     r.space("source slot")
     source_slot = slot(r)
     modifier = resource_or_inline(r, "item modifier") if r.optional_space() else None
     r.finish()
-    return ast.ItemReplace(loc, where, target_slot, source=source, source_slot=source_slot, modifier=modifier)
+    return ast.ItemReplace.new(loc, where, target_slot, source=source, source_slot=source_slot, modifier=modifier)
 
 
 def loot(r: Reader, loc) -> ast.Command:
@@ -137,7 +137,7 @@ def _loot_source(r: Reader, loc, action, destination, loot_slot, count) -> ast.L
     if source == "kill":
         entity = target(r, single=True)
     r.finish()
-    return ast.Loot(loc, action, destination, source, loot_slot, count, table, pos, tool, entity)
+    return ast.Loot.new(loc, action, destination, source, loot_slot, count, table, pos, tool, entity)
 
 
 PARSERS = {"give": give, "clear": clear, "item": item, "loot": loot}

@@ -56,14 +56,14 @@ def _obj_add(r, loc, action):
     chosen = criterion(r)
     display = text_component(r) if r.optional_space() else None
     r.finish()
-    return ast.ObjectivesAdd(loc, name, chosen, display)
+    return ast.ObjectivesAdd.new(loc, name, chosen, display)
 
 
 def _obj_remove(r, loc, action):
     r.space("objective name")
     name = objective(r)
     r.finish()
-    return ast.ObjectivesRemove(loc, name)
+    return ast.ObjectivesRemove.new(loc, name)
 
 
 def _obj_modify(r, loc, action):
@@ -77,7 +77,7 @@ def _obj_modify(r, loc, action):
     if field == "numberformat":
         value = r.text[r.pos + 1:] if r.optional_space() else ""
         r.pos = r.end
-        return ast.ObjectivesModify(loc, name, field, value)
+        return ast.ObjectivesModify.new(loc, name, field, value)
     r.space("value")
     if field == "displayname":
         value = text_component(r)
@@ -86,7 +86,7 @@ def _obj_modify(r, loc, action):
     else:
         value = "true" if r.boolean() else "false"
     r.finish()
-    return ast.ObjectivesModify(loc, name, field, value)
+    return ast.ObjectivesModify.new(loc, name, field, value)
 
 
 def _obj_setdisplay(r, loc, action):
@@ -94,12 +94,12 @@ def _obj_setdisplay(r, loc, action):
     slot = display_slot(r)
     name = objective(r) if r.optional_space() else None
     r.finish()
-    return ast.ObjectivesSetdisplay(loc, slot, name)
+    return ast.ObjectivesSetdisplay.new(loc, slot, name)
 
 
 def _obj_list(r, loc, action):
     r.finish()
-    return ast.ObjectivesList(loc)
+    return ast.ObjectivesList.new(loc)
 
 
 _OBJECTIVE_ACTIONS = {
@@ -126,7 +126,7 @@ def _fast_operation(r: Reader, loc):
     if objective_too_long(name, r.version) or objective_too_long(source_name, r.version):
         return None
     r.pos = r.end
-    return ast.ScoreOperation(loc, _fast_holder(r, m, 1), name, m.group(3), _fast_holder(r, m, 4), source_name)
+    return ast.ScoreOperation.new(loc, _fast_holder(r, m, 1), name, m.group(3), _fast_holder(r, m, 4), source_name)
 
 
 def _fast_set(r: Reader, loc, action: str):
@@ -137,7 +137,7 @@ def _fast_set(r: Reader, loc, action: str):
     if not (INT_MIN if action == "set" else 0) <= value <= INT_MAX:
         return None
     r.pos = r.end
-    return ast.ScoreSet(loc, action, _fast_holder(r, m, 1), m.group(2), value)
+    return ast.ScoreSet.new(loc, action, _fast_holder(r, m, 1), m.group(2), value)
 
 
 def _pl_set(r, loc, action):
@@ -151,7 +151,7 @@ def _pl_set(r, loc, action):
     r.space("score")
     value = r.integer(what="score") if action == "set" else r.integer(0, INT_MAX, what="score")
     r.finish()
-    return ast.ScoreSet(loc, action, holder, name, value)
+    return ast.ScoreSet.new(loc, action, holder, name, value)
 
 
 def _pl_reset(r, loc, action):
@@ -159,7 +159,7 @@ def _pl_reset(r, loc, action):
     holder = score_holder(r)
     name = objective(r) if r.optional_space() else None
     r.finish()
-    return ast.ScoreReset(loc, holder, name)
+    return ast.ScoreReset.new(loc, holder, name)
 
 
 def _pl_get(r, loc, action):
@@ -168,7 +168,7 @@ def _pl_get(r, loc, action):
     r.space("objective")
     name = objective(r)
     r.finish()
-    return ast.ScoreGet(loc, holder, name)
+    return ast.ScoreGet.new(loc, holder, name)
 
 
 def _pl_enable(r, loc, action):
@@ -177,7 +177,7 @@ def _pl_enable(r, loc, action):
     r.space("objective")
     name = objective(r)
     r.finish()
-    return ast.ScoreEnable(loc, holder, name)
+    return ast.ScoreEnable.new(loc, holder, name)
 
 
 def _pl_operation(r, loc, action):
@@ -194,13 +194,13 @@ def _pl_operation(r, loc, action):
     r.space("objective")
     source_name = objective(r)
     r.finish()
-    return ast.ScoreOperation(loc, targets, name, op, sources, source_name)
+    return ast.ScoreOperation.new(loc, targets, name, op, sources, source_name)
 
 
 def _pl_list(r, loc, action):
     holder = single_score_holder(r) if r.optional_space() else None
     r.finish()
-    return ast.ScoreList(loc, holder)
+    return ast.ScoreList.new(loc, holder)
 
 
 def _pl_display(r, loc, action):
@@ -209,7 +209,7 @@ def _pl_display(r, loc, action):
     text = r.rest()
     if not text.startswith(("name ", "numberformat ")):
         r.fail(f"expected name or numberformat, got {show(text.split(' ')[0])}", r.end - len(text))
-    return ast.ScoreDisplay(loc, text)
+    return ast.ScoreDisplay.new(loc, text)
 
 
 _PLAYER_ACTIONS = {

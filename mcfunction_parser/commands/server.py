@@ -36,7 +36,7 @@ def gamerule(r: Reader, loc) -> ast.Command:
         else:
             value = str(r.integer(what="game rule value (true, false or an integer)"))
     r.finish()
-    return ast.Gamerule(loc, rule, value)
+    return ast.Gamerule.new(loc, rule, value)
 
 
 def _int_bounds(rule: str, version) -> dict:
@@ -61,7 +61,7 @@ def random(r: Reader, loc) -> ast.Command:
         rng = int_range(r)
         seq = _sequence(r)
         r.finish()
-        return ast.RandomCommand(loc, action, rng, seq)
+        return ast.RandomCommand.new(loc, action, rng, seq)
     r.require("random reset", start)
     if r.peek() == "*" and r.rest_word() == "*":
         r.pos += 1
@@ -77,7 +77,7 @@ def random(r: Reader, loc) -> ast.Command:
             r.space("includeSequenceId")
             include_seq = r.boolean()
     r.finish()
-    return ast.RandomCommand(loc, "reset", None, seq, seed, include_world, include_seq)
+    return ast.RandomCommand.new(loc, "reset", None, seq, seed, include_world, include_seq)
 
 
 def time(r: Reader, loc) -> ast.Command:
@@ -88,7 +88,7 @@ def time(r: Reader, loc) -> ast.Command:
     if action == "query":
         query = r.literal(("daytime", "gametime", "day"), "time query")
         r.finish()
-        return ast.Time(loc, action, None, query)
+        return ast.Time.new(loc, action, None, query)
     word = r.rest_word()
     if action == "set" and word in TIME_NAMES:
         r.pos += len(word)
@@ -96,7 +96,7 @@ def time(r: Reader, loc) -> ast.Command:
     else:
         value = duration(r)
     r.finish()
-    return ast.Time(loc, action, value, None)
+    return ast.Time.new(loc, action, value, None)
 
 
 def _time_with_clocks(r: Reader, loc) -> ast.Command:
@@ -108,7 +108,7 @@ def _time_with_clocks(r: Reader, loc) -> ast.Command:
     text, start = r.text, r.pos
     if text.startswith(" query gametime", start) and start + 15 == r.end:
         r.pos = r.end
-        return ast.Time(loc, "query", None, "gametime")
+        return ast.Time.new(loc, "query", None, "gametime")
     for action, minimum in (("add", -2**31), ("set", 0)):
         value_at = start + len(action) + 2
         if text.startswith(f" {action} ", start) and value_at < r.end and text[value_at] in "-.0123456789":
@@ -116,7 +116,7 @@ def _time_with_clocks(r: Reader, loc) -> ast.Command:
                 r.pos = value_at
                 value = duration(r, minimum)
                 r.finish()
-                return ast.Time(loc, action, value, None)
+                return ast.Time.new(loc, action, value, None)
             except ParseError:
                 r.pos = start
     return tree_command(r, loc, "time")
@@ -131,7 +131,7 @@ def trigger(r: Reader, loc) -> ast.Command:
         r.space("value")
         value = r.integer(what="value")
     r.finish()
-    return ast.Trigger(loc, name, action, value)
+    return ast.Trigger.new(loc, name, action, value)
 
 
 PARSERS = {"gamerule": gamerule, "random": random, "time": time, "trigger": trigger}

@@ -58,7 +58,7 @@ def tree_command(r: Reader, loc, name: str) -> GenericCommand:
         _VALID[key] = known
     r.warnings.extend((message, pos + start) for message, pos in known)
     r.pos = r.end
-    return GenericCommand(loc, name, text)
+    return GenericCommand.new(loc, name, text)
 
 
 def _walk(r: Reader, root: dict, node: dict) -> None:

@@ -76,6 +76,38 @@ def test_ast_nodes_are_still_frozen_and_equal_by_value():
         loc.col = 1
 
 
+def test_new_builds_the_object_the_class_builds():
+    speed_up_inits(globals())
+    child = _Child.new(1, c=(2,))
+    assert type(child) is _Child and child == _Child(1, "b", (2,)) and hash(child) == hash(_Child(1, c=(2,)))
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        child.a = 2
+    with pytest.raises(TypeError):
+        _Child.new()  # a is required
+    assert _WithFactory.new is _WithFactory  # no fast __init__: new is the class itself
+    loc = diagnostics.Loc.new("f", 1, 2)
+    assert type(loc) is diagnostics.Loc and loc == diagnostics.Loc("f", 1, 2) and str(loc) == "f:1:2"
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        loc.col = 3
+    node = ast.ScoreSet.new(loc, "set", ast.NameTarget.new("#a", loc), "obj", 3)
+    assert type(node) is ast.ScoreSet and node == ast.ScoreSet(loc, "set", ast.NameTarget("#a", loc), "obj", 3)
+    assert node.targets.is_uuid is False and pickle.loads(pickle.dumps(node)) == node
+
+
+@pytest.mark.parametrize("module", [ast, diagnostics])
+def test_every_node_has_new_with_its_parameters(module):
+    for cls in _module_dataclasses(module):
+        assert "new" in cls.__dict__, cls.__name__  # its own: a subclass must not build its base
+        if cls.new is cls:
+            continue
+        parameters = [(p.name, p.default) for p in inspect.signature(cls.new).parameters.values()]
+        assert parameters == [(p.name, p.default) for p in inspect.signature(cls.__init__).parameters.values()][1:]
+        values = [object() for _ in dataclasses.fields(cls)]
+        built, made = cls.new(*values), cls(*values)
+        assert type(built) is cls and all(getattr(built, f.name) is getattr(made, f.name)
+                                          for f in dataclasses.fields(cls)), cls.__name__
+
+
 def test_patched_classes_pickle_as_their_fields():
     loc = diagnostics.Loc("f", 1, 2)
     selector = ast.Selector("e", (ast.SelectorArg("tag", "a", False, loc),), loc)
