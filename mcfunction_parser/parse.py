@@ -12,6 +12,7 @@ from .diagnostics import ERROR, WARNING, Diagnostic, Loc
 from .features import feature_problem
 from .lines import LineError, logical_lines, macro_keys
 from .reader import JoinedReader, ParseError, Reader
+from .relocate import NotRelocatable, relocate
 
 DEFAULT_VERSION = (1, 21, 0)
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
@@ -79,11 +80,22 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
                                       "reads as part of the first line", path, 1, 1, physical[0]))
     is_macro = False
     macros_ok = feature_problem("macro lines", version) is None
+    read = _READ.get(version)
+    if read is None or len(read) >= _READ_MAX:
+        read = _READ[version] = {}  # a bound on the memory it keeps: start afresh
     for item in logical_lines(physical, version):
         if type(item) is LineError:
             diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col, physical[item.line - 1]))
             continue
         text, line, col, segments = item
+        if not segments:  # a joined line spans lines: read each time
+            known = read.get(text)
+            if known:  # the same text read cleanly before: the same command, moved here
+                try:
+                    commands.append(relocate(known[0], path, line, col - known[1]))
+                    continue
+                except NotRelocatable:
+                    read[text] = False
         loc = Loc.new(path, line, col)
         first = text[0]
         if first == "$":
@@ -99,12 +111,30 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
         if first == "/":
             _leading_slash(text, loc, physical, diagnostics)
             continue
-        reader = JoinedReader(text, loc, version, segments) if segments else Reader(text, loc, version)
-        cmd = _parse(reader, diagnostics, physical, keep_unread=True)
+        if segments:
+            cmd = _parse(JoinedReader(text, loc, version, segments), diagnostics, physical, keep_unread=True)
+        else:
+            found = len(diagnostics)
+            cmd = _parse(Reader(text, loc, version), diagnostics, physical, keep_unread=True)
+            if len(diagnostics) == found and cmd is not None and text not in read:
+                read[text] = (cmd, col)
         if cmd is not None:
             commands.append(cmd)
     function = Function.new(function_id, path, tuple(commands), len(physical), is_macro, pack)
     return function, diagnostics
+
+
+# Per release, each line text read cleanly (no diagnostic) -> (its command, the column it started at),
+# or False for one that cannot be relocated (see .relocate). A line seen again is relocated, not read
+# again: a quarter of the pool pack's command lines repeat an earlier one. A line that had a
+# diagnostic is always read again, so it reports it again.
+_READ: dict[tuple[int, int, int], dict] = {}
+_READ_MAX = 1 << 15
+
+
+def forget_read_lines() -> None:
+    """Empty the memory of lines read (a benchmark's fresh start; a test's clean slate)."""
+    _READ.clear()
 
 
 def parse_command(text: str, loc: Loc,

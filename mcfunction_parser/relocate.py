@@ -1,0 +1,103 @@
+"""A parsed command moved to another line: the same nodes, every :class:`Loc` in them moved.
+
+A command's parse depends only on its text and the release (the registries and command trees are
+fixed per process), and its locations only on where the text starts. So :mod:`.parse` reads each
+distinct line once per release and builds a repeated line by relocating the first one's nodes:
+real packs repeat many lines (a quarter of the pool pack's command lines repeat an earlier one).
+
+Relocating builds new nodes wherever a location is inside, and shares what holds none (ranges,
+coordinates, names): those are immutable. A command holding a mutable value (an NBT compound or
+list: ``summon ... {...}``, ``nbt=`` in a selector, ``data modify ... value``) is not relocated:
+:class:`NotRelocatable` says so, and the caller parses such lines each time.
+"""
+from __future__ import annotations
+
+import dataclasses
+
+from .diagnostics import Loc
+
+
+class NotRelocatable(Exception):
+    """The node holds a value that must not be shared between two commands."""
+
+
+def relocate(node, path: str, line: int, shift: int):
+    """``node`` with each Loc ``(p, l, c)`` in it replaced by ``Loc(path, line, c + shift)``."""
+    relocator = _RELOCATORS[type(node)]
+    return node if relocator is None else relocator(node, path, line, shift)
+
+
+def _loc(loc: Loc, path: str, line: int, shift: int) -> Loc:
+    return Loc.new(path, line, loc.col + shift)
+
+
+def _tuple(items: tuple, path: str, line: int, shift: int) -> tuple:
+    moved = []
+    changed = False
+    for item in items:
+        relocator = _RELOCATORS[type(item)]
+        if relocator is not None:
+            item = relocator(item, path, line, shift)
+            changed = True
+        moved.append(item)
+    return tuple(moved) if changed else items
+
+
+def _refuse(value, path, line, shift):
+    raise NotRelocatable(type(value).__name__)
+
+
+_IMMUTABLE = (str, int, float, type(None))  # bool is an int; NBT numbers and strings subclass these
+# fields annotated so hold immutable values that hold no location: kept without a look
+SCALARS = frozenset(("str", "int", "bool", "float", "str | None", "int | None", "float | None", "bool | None",
+                     "tuple[str, ...]", "tuple[int, ...]"))
+
+
+def _dataclass_relocator(cls: type):
+    """A function rebuilding an instance of the frozen dataclass ``cls`` with its locations moved,
+    None when its fields are all scalars (the instance is kept), or :func:`_refuse` for a class
+    that its constructor cannot rebuild from the field values in order."""
+    fields = dataclasses.fields(cls)
+    if any(not f.init or f.kw_only for f in fields):
+        return _refuse
+    if all(f.type in SCALARS for f in fields):
+        return None
+    body, args, looked = [], [], []
+    for i, f in enumerate(fields):
+        if f.type in SCALARS:
+            args.append(f"node.{f.name}")
+        elif f.type == "Loc":
+            args.append(f"Loc.new(path, line, node.{f.name}.col + shift)")
+        else:  # another node, a tuple or a value of any type: its own relocator decides
+            body += [f"    v{i} = node.{f.name}",
+                     f"    g = R[type(v{i})]",
+                     f"    a{i} = v{i} if g is None else g(v{i}, path, line, shift)"]
+            args.append(f"a{i}")
+            looked.append(i)
+    if len(looked) == len(fields):  # no location of its own: the node itself when nothing inside moved
+        body += ["    if " + " and ".join(f"a{i} is v{i}" for i in looked) + ":", "        return node"]
+    source = "def relocate(node, path, line, shift):\n" + "\n".join(body + [f"    return cls.new({', '.join(args)})"])
+    namespace = {"R": _RELOCATORS, "cls": cls, "Loc": Loc}
+    exec(source, namespace)  # noqa: S102  (the source is built from the field names above)
+    return namespace["relocate"]
+
+
+class _Relocators(dict):
+    """type -> its relocator: None for an immutable value kept as it is, decided on first sight."""
+
+    def __missing__(self, cls: type):
+        if cls is Loc:
+            relocator = _loc
+        elif cls is tuple:
+            relocator = _tuple
+        elif issubclass(cls, _IMMUTABLE) and not issubclass(cls, (dict, list)):
+            relocator = None
+        elif dataclasses.is_dataclass(cls) and cls.__dataclass_params__.frozen:
+            relocator = _dataclass_relocator(cls)
+        else:
+            relocator = _refuse
+        self[cls] = relocator
+        return relocator
+
+
+_RELOCATORS = _Relocators()

@@ -1,0 +1,102 @@
+"""A line read before is relocated, not read again: the same AST and diagnostics as a fresh read."""
+from __future__ import annotations
+
+import dataclasses
+import random
+import sys
+from pathlib import Path
+
+import pytest
+
+from mcfunction_parser import parse
+from mcfunction_parser.parse import forget_read_lines, parse_function
+from mcfunction_parser.relocate import NotRelocatable, relocate
+
+from .mecha_corpus import BY_COMMAND
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(ROOT / "bench"))
+from corpus import _command  # noqa: E402
+
+
+def _mutables(node, found: dict) -> dict:
+    """id -> object of every dict and list reachable from ``node`` (NBT compounds and lists)."""
+    if isinstance(node, (dict, list)):
+        found[id(node)] = node
+        for item in (node.values() if isinstance(node, dict) else node):
+            _mutables(item, found)
+    elif isinstance(node, tuple):
+        for item in node:
+            _mutables(item, found)
+    elif dataclasses.is_dataclass(node) and not isinstance(node, type):
+        for f in dataclasses.fields(node):
+            _mutables(getattr(node, f.name), found)
+    return found
+
+
+def _check_relocated(lines: list[str], version) -> int:
+    """Each line, read where it is and then again elsewhere (another file, line 3, indented): the
+    second read equals a fresh read there and shares no mutable value with the first. Returns how
+    many lines were relocated."""
+    relocated = 0
+    for text in lines:
+        forget_read_lines()
+        expected = parse_function(f"\n\n  {text}\n", "b.mcfunction", "t:b", version)
+        forget_read_lines()
+        first, _ = parse_function(f"{text}\n", "a.mcfunction", "t:a", version)
+        again = parse_function(f"\n\n  {text}\n", "b.mcfunction", "t:b", version)
+        assert again == expected, text
+        assert not _mutables(first.commands, {}).keys() & _mutables(again[0].commands, {}).keys(), text
+        relocated += type(parse._READ[version].get(text)) is tuple
+    return relocated
+
+
+def test_every_accepted_mecha_corpus_line_relocates_to_a_fresh_read():
+    lines = [line for accepted, _ in BY_COMMAND.values() for line in accepted]
+    relocated = _check_relocated(lines, (1, 21, 11))
+    assert relocated > len(lines) // 2  # not a vacuous test: most lines are relocated
+
+
+def test_generated_corpus_lines_relocate_to_a_fresh_read():
+    rng = random.Random(7)
+    lines = list(dict.fromkeys(_command(rng) for _ in range(1500)))
+    relocated = _check_relocated(lines, (1, 21, 0))
+    assert relocated > len(lines) // 2
+
+
+def test_the_pool_pack_relocates_to_a_fresh_read():
+    lines = {line.strip() for path in (ROOT / "datapack").rglob("*.mcfunction")
+             for line in path.read_text().splitlines()}
+    lines = sorted(line for line in lines if line and not line.startswith(("#", "$")) and not line.endswith("\\"))
+    assert _check_relocated(lines, (1, 21, 4)) > len(lines) // 2
+
+
+def test_a_line_with_nbt_is_read_each_time():
+    # an NBT compound is mutable: two commands never share one
+    forget_read_lines()
+    text = "summon marker ~ ~ ~ {Tags:[\"a\"]}\n"
+    function, _ = parse_function(text * 3, "a.mcfunction", "t:a", (1, 21, 0))
+    compounds = [cmd.nbt for cmd in function.commands]
+    assert compounds[0] == compounds[1] == compounds[2] and len({id(c) for c in compounds}) == 3
+    assert parse._READ[(1, 21, 0)][text.strip()] is False
+    with pytest.raises(NotRelocatable):
+        relocate(function.commands[0], "b.mcfunction", 4, 0)
+
+
+def test_a_line_with_a_diagnostic_reports_it_every_time():
+    forget_read_lines()
+    function, diagnostics = parse_function("gamerule noSuchRule true\n  gamerule noSuchRule true\n", "a.mcfunction",
+                                           "t:a", (1, 21, 0))
+    assert [(d.severity, d.line, d.col) for d in diagnostics] == [("warning", 1, 10), ("warning", 2, 12)]
+    assert len(function.commands) == 2 and function.commands[1].loc.line == 2
+
+
+def test_relocation_moves_every_location_and_keeps_the_rest():
+    forget_read_lines()
+    text = "execute as @e[tag=a,limit=1] if score @s o matches 1.. run scoreboard players set #x o 1"
+    function, _ = parse_function(f"{text}\n    {text}\n", "a.mcfunction", "t:a", (1, 21, 0))
+    first, second = function.commands
+    assert second.loc == first.loc.__class__("a.mcfunction", 2, 5)
+    assert second.subcommands[0].targets.args[0].loc.col == first.subcommands[0].targets.args[0].loc.col + 4
+    assert second.subcommands[1].range is first.subcommands[1].range  # immutable, no location: shared
+    assert second.run.targets.loc.line == 2 and second.run.value == 1
