@@ -217,10 +217,10 @@ class NumbaBackend:
     def _drive(self, limit: int) -> bool:
         """Run the VM until the root is done (in a batch of ticks: until the VM comes back at the end of
         a root); True when the quota (or the depth cap) cut that root."""
-        r = self.regs
+        r, rv = self.regs, self.rv
         leaves, storage = self.leaves, self.state.storage
+        host_ops_at = self.host_ops_at
         cut = False
-        rv = self.rv
         while True:
             machine = self._machine()
             if self.leaves_used:
@@ -231,8 +231,12 @@ class NumbaBackend:
                 status = self._resume(machine)
             if status == ST_HOST and not rv[R_BATCH] and not rv[R_NLOG]:  # the common request, first
                 pc = rv[R_PC]
+                op = host_ops_at.get(pc) or self._host_op(pc)
                 try:
-                    self._host(pc)
+                    if op[0] in _FINAL_OPS:
+                        self._final(pc, op[1])
+                    else:
+                        self._host(pc)
                 except Exception as error:  # noqa: BLE001 - the pack's run must go on
                     self._host_failed(pc, error)
                 continue
@@ -382,26 +386,39 @@ class NumbaBackend:
         r[vm.R_HAS], r[vm.R_OK], r[vm.R_VAL] = 1, 0, 0
         r[vm.R_PC] = pc + 1
 
+    def _host_op(self, pc: int) -> tuple:
+        """(opcode, node) of the host op at ``pc``."""
+        row = self.program.rows[pc]
+        op = self.host_ops_at[pc] = (row[0], self.program.host_ops[row[_HOST_OPERAND[row[0]]]].node)
+        return op
+
+    def _final(self, pc: int, node) -> None:
+        """The host op at ``pc``, a final command (:data:`_FINAL_OPS`), run once for the current
+        context: the common request, served first."""
+        rv = self.rv
+        self._current_pc = pc
+        self.host_runs[pc] += 1
+        ctx = rv[R_CTX]
+        rv[R_PC] = pc + 1
+        result = self.host.run_final(node, self.contexts.get(ctx) or self.context(ctx))  # its value is wrapped
+        rv[R_HAS], rv[R_OK], rv[R_VAL] = result.has, result.ok, result.value
+        if self.state.pending_rewards:  # rewards the command earned run next
+            self.rewards.append((self.regs[_COMMAND_REGISTERS].copy(), earned_rewards(self.state, self.packs.functions)))
+            self._next_reward()
+
     def _host(self, pc: int) -> None:
         """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
-        op = self.host_ops_at.get(pc)
-        if op is None:
-            row = self.program.rows[pc]
-            op = self.host_ops_at[pc] = (row[0], self.program.host_ops[row[_HOST_OPERAND[row[0]]]].node)
-        opcode, node = op
+        opcode, node = self.host_ops_at.get(pc) or self._host_op(pc)
         r, rv = self.regs, self.rv
+        rv[R_BSTOP] = rv[R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
+        if opcode in _FINAL_OPS:
+            self._final(pc, node)
+            return
         self._current_pc = pc
         self.host_runs[pc] += 1
         ctx = self.contexts.get(rv[R_CTX]) or self.context(rv[R_CTX])
         rv[R_PC] = pc + 1
-        rv[R_BSTOP] = rv[R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
-        if opcode in _FINAL_OPS:
-            result = self.host.run_final(node, ctx)  # its value is wrapped
-            rv[R_HAS], rv[R_OK], rv[R_VAL] = result.has, result.ok, result.value
-            if self.state.pending_rewards:
-                self.rewards.append((r[_COMMAND_REGISTERS].copy(), earned_rewards(self.state, self.packs.functions)))
-                self._next_reward()
-        elif opcode == vm.OP_STORELEAF:  # no number there yet: the host's store into storage
+        if opcode == vm.OP_STORELEAF:  # no number there yet: the host's store into storage
             self.host.run_store(node, None, bool(r[vm.R_OK]), int(r[vm.R_VAL]))
         elif opcode == vm.OP_HOSTSTORE:
             target = None

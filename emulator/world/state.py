@@ -388,6 +388,7 @@ class Gamerules:
 
     def __init__(self) -> None:
         self.values: dict[str, str] = dict(GAMERULE_DEFAULTS)
+        self._ints: dict[str, int] = {}  # get_int's answers (every root reads two), until a rule is set
 
     @staticmethod
     def canonical(name: str) -> str:
@@ -399,9 +400,13 @@ class Gamerules:
 
     def set(self, name: str, value: str) -> None:
         self.values[self.canonical(name)] = value
+        self._ints.clear()
 
     def get_int(self, name: str) -> int:
-        return int(self.values[self.canonical(name)])
+        found = self._ints.get(name)
+        if found is None:
+            found = self._ints[name] = int(self.values[self.canonical(name)])
+        return found
 
     @property
     def max_command_chain_length(self) -> int:
