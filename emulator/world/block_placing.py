@@ -20,17 +20,15 @@ canPlaceOnBlockInAdventureMode), world/level/block/state/BlockBehaviour.java (ca
 """
 from __future__ import annotations
 
-from emulator.world import advancements, inventories, placed_states, statistics
+from dataclasses import replace
+
+from emulator.world import advancements, inventories, placed_parts, placed_states, statistics
+from emulator.world.block_shapes import REPLACEABLE
 from emulator.world.blocks import BlockSpec
 from emulator.world.errors import Unmodelled
 from emulator.world.inventories import NOT_LIVING
 from mcfunction_parser import gamedata
 
-# BlockTags.REPLACEABLE's common members (what a placed block replaces instead of going beside it)
-REPLACEABLE = frozenset("minecraft:" + n for n in (
-    "air cave_air void_air water lava short_grass grass fern dead_bush tall_grass large_fern vine fire "
-    "soul_fire seagrass tall_seagrass light structure_void crimson_roots warped_roots nether_sprouts "
-    "hanging_roots glow_lichen").split())
 _OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
             "east": (1, 0, 0)}
 _VEHICLES = ("boat", "raft", "minecart")
@@ -43,7 +41,7 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
     click at ``hit`` (the block's corner when not given)."""
     access = inventories.entity_slot(player, hand_slot, state.version)
     stack = access.get()
-    block_id = stack.id
+    item_id = block_id = stack.id
     properties = _block_properties(block_id, state.version)
     if properties is None:
         return None
@@ -52,20 +50,37 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
     for component in ("minecraft:block_state", "minecraft:block_entity_data", "minecraft:custom_name"):
         if stack.component(component) is not None:
             raise Unmodelled(f"placing {block_id} with its {component} component")
-    target = _target(state, clicked, face)
     low, high = _build_limits(player.dimension)
-    if target is None or not low <= target[1] < high or _obstructed(state, target, player.dimension):
+    ctx = _context(state, placed_parts.PlaceContext(state, player, block_id, tuple(clicked), face,
+                                                    tuple(hit) if hit is not None else tuple(clicked), True, high))
+    if ctx is None or not low <= ctx.target[1] < high or _obstructed(state, ctx.target, player.dimension):
         return "fail"
-    placed = placed_states.state_for_placement(state, player, block_id, properties, target, face,
-                                               tuple(hit) if hit is not None else tuple(clicked)) if properties else {}
-    state.blocks.setblock(target, BlockSpec(block_id, False, tuple(sorted(placed.items())), None))
-    placed_states.update_neighbour_stairs(state, target)
-    advancements.trigger(state, player, "placed_block", advancements.location_test(state, player, target, stack))
+    placed = _placed_state(ctx, properties)
+    if placed is None:
+        return "fail"
+    block_id, block_properties = placed
+    state.blocks.setblock(ctx.target, BlockSpec(block_id, False, tuple(sorted(block_properties.items())), None))
+    placed_parts.after_placed(state, ctx.target, block_id, block_properties)
+    placed_states.update_neighbour_stairs(state, ctx.target)
+    advancements.trigger(state, player, "placed_block", advancements.location_test(state, player, ctx.target, stack))
     if player.gamemode != "creative":
         stack.count -= 1
         access.set(stack)
-    statistics.award(state, player, statistics.stat_name("used", block_id))
+    statistics.award(state, player, statistics.stat_name("used", item_id))
     return "consume"
+
+
+def _placed_state(ctx, properties: dict):
+    """The block and its whole state (Block.getStateForPlacement); None when it cannot go there."""
+    placed = placed_parts.state_for_placement(ctx)
+    if placed is NotImplemented:
+        return ctx.block_id, (placed_states.state_for_placement(ctx.state, ctx.player, ctx.block_id, properties,
+                                                               ctx.target, ctx.face, ctx.hit) if properties else {})
+    if placed is not None:
+        missing = set(gamedata.block_states(placed[0], ctx.state.version) or ()) - set(placed[1])
+        if missing:
+            raise Unmodelled(f"placing {placed[0]} (its {', '.join(sorted(missing))} when placed)")
+    return placed
 
 
 def _block_properties(block_id: str, version):
@@ -77,13 +92,19 @@ def _block_properties(block_id: str, version):
     return gamedata.block_states(block_id, version)
 
 
-def _target(state, clicked, face: str):
-    """BlockPlaceContext: the clicked block if replaceable, else its neighbour if that is."""
-    if state.blocks.get(clicked).id in REPLACEABLE:
-        return tuple(clicked)
-    dx, dy, dz = _OFFSETS[face]
-    beside = (clicked[0] + dx, clicked[1] + dy, clicked[2] + dz)
-    return beside if state.blocks.get(beside).id in REPLACEABLE else None
+def _context(state, ctx):
+    """BlockPlaceContext: the clicked block if the item can replace it, else its neighbour in the
+    clicked face's direction if that one can be replaced."""
+    if _replaceable(state.blocks.get(ctx.target), ctx):
+        return ctx
+    dx, dy, dz = _OFFSETS[ctx.face]
+    beside = replace(ctx, target=(ctx.target[0] + dx, ctx.target[1] + dy, ctx.target[2] + dz), replace_clicked=False)
+    return beside if _replaceable(state.blocks.get(beside.target), beside) else None
+
+
+def _replaceable(block, ctx) -> bool:
+    """BlockBehaviour.canBeReplaced: the replaceable tag, or a slab the item completes."""
+    return block.id in REPLACEABLE or placed_parts.replaceable_by(ctx, block)
 
 
 def _build_limits(dimension: str) -> tuple[int, int]:

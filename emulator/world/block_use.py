@@ -31,7 +31,7 @@ from __future__ import annotations
 import math
 import weakref
 
-from emulator.world import advancements, block_placing, inventories, statistics
+from emulator.world import advancements, block_placing, block_shapes, inventories, statistics
 from emulator.world.blocks import BlockState
 from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
@@ -113,7 +113,7 @@ def _item_on_block_passes(block: BlockState, stack, face: str) -> bool:
 def _use_without_item(state, player, pos, block: BlockState) -> str:
     """BlockBehaviour.useWithoutItem of the modelled blocks (BlockState.use before 1.20.5)."""
     name = block.id.removeprefix("minecraft:")
-    if block.is_air or block.id in PLAIN or block.id.endswith(_PLAIN_KINDS) or block.id in block_placing.REPLACEABLE:
+    if block.is_air or block.id in PLAIN or block.id.endswith(_PLAIN_KINDS) or block.id in block_shapes.REPLACEABLE:
         return "pass"
     if block.id in MENUS:
         return _open_menu(state, player, pos, block, award=True)
@@ -279,4 +279,4 @@ PLAIN = frozenset("minecraft:" + n for n in (
     "end_rod").split()) | frozenset(
     f"minecraft:{c}_{k}" for c in COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
     f"minecraft:{w}_planks" for w in WOODS)
-_PLAIN_KINDS = ("_stairs", "_log", "_wood", "_stem", "_hyphae", "_glazed_terracotta")
+_PLAIN_KINDS = ("_stairs", "_slab", "_torch", "_log", "_wood", "_stem", "_hyphae", "_glazed_terracotta")

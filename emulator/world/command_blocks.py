@@ -142,7 +142,7 @@ def has_neighbour_signal(state, pos) -> bool:
         elif name in ("redstone_torch", "redstone_wall_torch") and properties.get("lit", "true") == "true":
             found = found or not _torch_on(block, direction)
         elif any(kind in name for kind in _UNKNOWN_POWER):
-            state.error(f"the redstone signal of {block.id} beside a command block", severity="warning",
+            state.error(f"the redstone signal of {block.id} (beside a block that reads its neighbours' signal)", severity="warning",
                         unmodelled=True)
     return found
 

@@ -63,6 +63,11 @@ def horizontal_direction(player) -> str:
 
 def nearest_looking_direction(player) -> str:
     """Direction.orderedByNearest(player)[0]."""
+    return ordered_by_nearest(player)[0]
+
+
+def ordered_by_nearest(player) -> list[str]:
+    """Direction.orderedByNearest: the six directions from the nearest to the player's look (float math)."""
     pitch = F32(player.pitch) * F32(math.pi / 180)
     yaw = -F32(player.yaw) * F32(math.pi / 180)
     pitch_sin, pitch_cos, yaw_sin, yaw_cos = mth.sin(pitch), mth.cos(pitch), mth.sin(yaw), mth.cos(yaw)
@@ -71,10 +76,12 @@ def nearest_looking_direction(player) -> str:
     y_mag = -pitch_sin if y_pos else pitch_sin
     z_yaw = yaw_cos if z_pos else -yaw_cos
     x_mag, z_mag = x_yaw * pitch_cos, z_yaw * pitch_cos
-    axis_x, axis_y, axis_z = ("east" if x_pos else "west"), ("up" if y_pos else "down"), ("south" if z_pos else "north")
+    x, y, z = ("east" if x_pos else "west"), ("up" if y_pos else "down"), ("south" if z_pos else "north")
     if x_yaw > z_yaw:
-        return axis_y if y_mag > x_mag else axis_x
-    return axis_y if y_mag > z_mag else axis_z
+        first = (y, x, z) if y_mag > x_mag else ((x, z, y) if z_mag > y_mag else (x, y, z))
+    else:
+        first = (y, z, x) if y_mag > z_mag else ((z, x, y) if x_mag > y_mag else (z, y, x))
+    return [*first, OPPOSITE[first[2]], OPPOSITE[first[1]], OPPOSITE[first[0]]]  # makeDirectionArray
 
 
 def _is_pillar(properties: dict) -> bool:

@@ -1,0 +1,121 @@
+"""Dummies placing blocks that join, come in two parts or hang on a neighbour
+(emulator.world.placed_parts), with PackTest's ``use block POS [DIR]`` (the click at POS as written).
+The dummy spawns at the test origin looking south (yaw 0, pitch 0): Direction.orderedByNearest
+gives south, down, west, east, up, north. Sources: SlabBlock (canBeReplaced,
+getStateForPlacement), DoorBlock (getStateForPlacement, getHinge, setPlacedBy), ChestBlock
+(getStateForPlacement, candidatePartnerFacing, updateShape), StandingAndWallBlockItem, WallTorchBlock,
+StandingSignBlock, WallSignBlock, BlockPlaceContext.getNearestLookingDirections."""
+import pytest
+
+from tests.testing.test_dummy_hands import run
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_slabs_take_their_half_and_join_into_a_double_slab(tmp_path, backend):
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add used minecraft.used:minecraft.oak_slab\n"
+        "setblock ~2 ~ ~ stone\nsetblock ~4 ~ ~ stone\n"
+        "give @s oak_slab 5\n"
+        "dummy @s use block ~2 ~ ~ up\n"                  # on top of the stone: the bottom half
+        "assert block ~2 ~1 ~ oak_slab[type=bottom,waterlogged=false]\n"
+        "dummy @s use block ~2 ~1.5 ~ up\n"               # its open top clicked: the same slab doubles
+        "assert block ~2 ~1 ~ oak_slab[type=double]\n"
+        "dummy @s use block ~4 ~0.75 ~0.5 west\n"         # a side clicked above the middle: the top half
+        "assert block ~3 ~ ~ oak_slab[type=top]\n"
+        "dummy @s use block ~3 ~ ~0.5 down\n"             # the top slab's open underside
+        "assert block ~3 ~ ~ oak_slab[type=double]\n"
+        "dummy @s use block ~2 ~1.5 ~ up\n"               # a double slab takes no more: above it
+        "assert block ~2 ~2 ~ oak_slab[type=bottom]\n"
+        "assert score @s used matches 5\n"), backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_a_door_places_both_halves_with_its_hinge_from_the_neighbours_and_the_click(tmp_path):
+    """Facing the player's direction (south); nothing beside: the click decides (on the corner of a
+    south-facing door's block: right; past its middle in x: left); full blocks on its left (east,
+    counter-clockwise of south) turn the hinge left; a redstone block beside powers and opens it."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "fill ~2 ~ ~ ~12 ~ ~ stone\n"
+        "setblock ~5 ~1 ~ stone\nsetblock ~5 ~2 ~ stone\nsetblock ~9 ~1 ~1 redstone_block\n"
+        "give @s oak_door 4\n"
+        "dummy @s use block ~2 ~ ~ up\n"
+        "assert block ~2 ~1 ~ oak_door[facing=south,half=lower,hinge=right,open=false,powered=false]\n"
+        "assert block ~2 ~2 ~ oak_door[facing=south,half=upper,hinge=right,open=false,powered=false]\n"
+        "dummy @s use block ~4.25 ~ ~ up\n"
+        "assert block ~4 ~1 ~ oak_door[hinge=left,half=lower]\n"
+        "dummy @s use block ~11.75 ~ ~ up\n"
+        "assert block ~11 ~1 ~ oak_door[hinge=left]\n"
+        "dummy @s use block ~9 ~ ~ up\n"
+        "assert block ~9 ~1 ~ oak_door[open=true,powered=true]\n"
+        "assert block ~9 ~2 ~ oak_door[half=upper,open=true]\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_a_door_needs_room_above_and_a_floor(tmp_path):
+    result = run(tmp_path, "# @dummy\n" + (
+        "setblock ~2 ~ ~ stone\nsetblock ~2 ~2 ~ stone\n"
+        "give @s oak_door 2\n"
+        "dummy @s use block ~2 ~1 ~ up\n"                 # the upper half has no room
+        "assert block ~2 ~1 ~ air\n"
+        "dummy @s use block ~4 ~1 ~ up\n"                 # nothing to stand on (air is clicked, replaced)
+        "assert block ~4 ~1 ~ air\n"
+        "assert items entity @s weapon.mainhand oak_door[count=2]\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_a_chest_beside_a_chest_facing_the_same_way_makes_a_double_chest(tmp_path):
+    """Both face the player (north); the second finds a single chest counter-clockwise of its
+    facing (west): it is the right half and the first becomes the left; sneaking, a chest placed
+    on top of a block stays single; a trapped chest does not join a chest."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "fill ~2 ~ ~ ~6 ~ ~ stone\n"
+        "give @s chest 3\n"
+        "dummy @s use block ~2 ~1 ~ up\n"
+        "assert block ~2 ~1 ~ chest[facing=north,type=single,waterlogged=false]\n"
+        "dummy @s use block ~3 ~1 ~ up\n"
+        "assert block ~3 ~1 ~ chest[facing=north,type=right]\n"
+        "assert block ~2 ~1 ~ chest[facing=north,type=left]\n"
+        "dummy @s sneak true\n"
+        "dummy @s use block ~5 ~1 ~ up\n"
+        "item replace entity @s weapon.mainhand with trapped_chest\n"
+        "dummy @s sneak false\n"
+        "dummy @s use block ~6 ~1 ~ up\n"
+        "assert block ~5 ~1 ~ chest[type=single]\n"
+        "assert block ~6 ~1 ~ trapped_chest[type=single]\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_torches_and_signs_stand_on_a_floor_or_hang_on_the_clicked_wall(tmp_path):
+    """A top face clicked: standing (down comes first); a side: on the wall, facing away from it.
+    A standing sign turns opposite the player in 16 steps (yaw 0: 8, yaw 90: 12)."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "setblock ~3 ~ ~ stone\nsetblock ~5 ~ ~ stone\nsetblock ~7 ~ ~ stone\nsetblock ~9 ~ ~ stone\n"
+        "give @s torch 2\n"
+        "dummy @s use block ~3 ~ ~ up\n"
+        "assert block ~3 ~1 ~ torch\n"
+        "dummy @s use block ~5 ~0.5 ~0.5 west\n"
+        "assert block ~4 ~ ~ wall_torch[facing=west]\n"
+        "item replace entity @s weapon.mainhand with oak_sign 2\n"
+        "dummy @s use block ~7 ~ ~ up\n"
+        "assert block ~7 ~1 ~ oak_sign[rotation=8,waterlogged=false]\n"
+        "assert data block ~7 ~1 ~ {front_text:{messages:['\"\"','\"\"','\"\"','\"\"'],color:\"black\"},is_waxed:0b}\n"
+        "dummy @s use block ~9 ~0.5 ~0.5 west\n"
+        "assert block ~8 ~ ~ oak_wall_sign[facing=west]\n"
+        "tp @s ~ ~ ~ 90 0\n"
+        "item replace entity @s weapon.mainhand with redstone_torch\n"
+        "dummy @s use block ~9 ~ ~0.5 north\n"           # its north face
+        "assert block ~9 ~ ~-1 redstone_wall_torch[facing=north,lit=true]\n"
+        "item replace entity @s weapon.mainhand with oak_sign\n"
+        "dummy @s use block ~5 ~1 ~ up\n"                # on top of the wall torch's block, looking west
+        "assert block ~5 ~1 ~ oak_sign[rotation=12]\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_an_unknown_shape_below_makes_the_placement_inconclusive(tmp_path):
+    result = run(tmp_path, "# @dummy\n" + (
+        "setblock ~3 ~ ~ oak_slab[type=bottom]\n"
+        "give @s torch\n"
+        "dummy @s use block ~3 ~ ~ up\n"
+        "succeed\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "the shape of minecraft:oak_slab" in result.message
