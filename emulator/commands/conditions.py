@@ -51,6 +51,8 @@ def count(env, cond: ast.Condition, ctx) -> int:
         return int(cond.dimension == ctx.dimension)
     if isinstance(cond, ast.IfPredicate):
         return int(if_predicate(env, cond.predicate, ctx))
+    if isinstance(cond, ast.IfBiome):
+        raise Unmodelled(f"execute if biome ({predicates.NO_TERRAIN})")
     raise Unmodelled(f"the condition '{type(cond).__name__}'")
 
 

@@ -15,7 +15,7 @@ from emulator.world.errors import CommandFailure
 from emulator.world.item_predicates import matches
 from emulator.world.items import ItemStack, create
 from emulator.world.living import is_living
-from emulator.world.loot_context import LootContext
+from emulator.world.loot_context import DamageSource, LootContext
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 
@@ -256,7 +256,7 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
         if not is_living(victim.type):  # only living entities have a loot table
             raise CommandFailure("commands.drop.no_loot_table", victim.display_name)
         table_id = victim.data.get("DeathLootTable") or "minecraft:entities/" + victim.type.split(":", 1)[-1]
-        lctx = loot_context(env, ctx, this=victim, damage_source="minecraft:magic").killed_by(executor(env.state, ctx))
+        lctx = loot_context(env, ctx, this=victim, damage_source=DamageSource("minecraft:magic")).killed_by(executor(env.state, ctx))
         return loot.roll_table(_own_table(env, str(table_id)), lctx)
     pos = block_pos(source, cmd.pos)
     blocks = env.state.blocks_in(ctx.dimension)

@@ -2,8 +2,7 @@
 (a mob leaves the world; a player dies where it stands until it respawns), with what a datapack
 observes of each.
 
-- ``DamageSource(type, attacker=None, direct=None)``: the damage type and the entity responsible
-  (DamageSource.getEntity) and the one that dealt it (getDirectEntity).
+- ``DamageSource`` (:class:`emulator.world.loot_context.DamageSource`, loot tables read it too).
 - ``hurt(state, entity, amount, source, bypasses=False) -> bool``: LivingEntity.hurtServer: the
   health taken (emulator.world.living.hurt), the kill credit, death at 0 health, the triggers.
 - ``attack(state, player, target) -> bool``: Player.attack with an empty hand or an item that is
@@ -39,7 +38,6 @@ from __future__ import annotations
 
 import math
 import weakref
-from dataclasses import dataclass
 
 import numpy as np
 
@@ -47,7 +45,7 @@ from emulator.world import advancements, inventories, living, loot, predicates, 
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level
-from emulator.world.loot_context import LootContext
+from emulator.world.loot_context import DamageSource, LootContext
 from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String
 
 F32 = np.float32
@@ -71,17 +69,6 @@ DEATH_MESSAGES = {
     "minecraft:player_attack": ("{0} was slain by {1}", None),
     "minecraft:mob_attack": ("{0} was slain by {1}", None),
 }
-
-
-@dataclass(frozen=True)
-class DamageSource:
-    type: str = "minecraft:generic"
-    attacker: Entity | None = None  # DamageSource.getEntity: the responsible entity
-    direct: Entity | None = None  # getDirectEntity
-
-    @property
-    def is_direct(self) -> bool:
-        return self.attacker is self.direct
 
 
 # the last player / mob that hurt an entity, and the game time it did: (entity, time)
@@ -204,7 +191,7 @@ def _mob_drops(state, mob, killer, source: DamageSource) -> None:
     except Unmodelled as unknown:
         state.error(f"the drops of a dying {mob.type}: {unknown}", severity="warning", unmodelled=True)
     else:
-        ctx = LootContext(state, mob.pos, this=mob, dimension=mob.dimension, damage_source=source.type,
+        ctx = LootContext(state, mob.pos, this=mob, dimension=mob.dimension, damage_source=source,
                           random=state.resources.random).killed_by(killer)
         for stack in loot.roll_table(table, ctx):
             inventories.drop_item(state.entities, mob.pos, stack, state.version, state.resources.random,
@@ -367,21 +354,6 @@ def _damage_matches(state, wanted, player, source: DamageSource, amount: float) 
 
 
 def _source_matches(state, wanted, player, source: DamageSource) -> bool:
-    """DamageSourcePredicate: tags (the damage type's, ``expected``), source and direct entity,
-    is_direct."""
-    if wanted is None:
-        return True
-    for tag in wanted.get("tags", ()):
-        tag_id = str(tag.get("id", ""))
-        if state.resources.in_tag("damage_type", tag_id.removeprefix("#"), source.type) != bool(tag.get("expected")):
-            return False
-    if "is_direct" in wanted and source.is_direct != bool(wanted["is_direct"]):
-        return False
-    for key, entity in (("source_entity", source.attacker), ("direct_entity", source.direct)):
-        if key in wanted:
-            if entity is None or not advancements.entity_condition(state, wanted[key], player, entity):
-                return False
-    unknown = set(wanted) - {"tags", "is_direct", "source_entity", "direct_entity"}
-    if unknown:
-        raise Unmodelled(f"damage source predicate field '{sorted(unknown)[0]}'")
-    return True
+    """DamageSourcePredicate.matches(player): its entity predicates from the player's position."""
+    return predicates.damage_source_matches(wanted, source, state.resources, lambda predicate, entity: (
+        advancements.entity_condition(state, predicate, player, entity)))

@@ -9,8 +9,11 @@ compute: the one :class:`LootContext`, number providers, ranges, and JSON values
 - ``to_tag(json)`` / ``snbt_or_tag(value)``: JSON values and SNBT strings as NBT.
 - ``not_modelled(kind, name)``: the :class:`~emulator.world.errors.Unmodelled` failure naming what
   the emulator does not model (reported; a test meeting it is inconclusive).
+- ``DamageSource(type, attacker=None, direct=None)``: the damage type and the entity responsible
+  (DamageSource.getEntity) and the one that dealt it (getDirectEntity); ``is_direct``.
 
-Sources (decompiled 1.21): world/level/storage/loot/LootContext.java (EntityTarget, visited
+Sources (decompiled 1.21): world/damagesource/DamageSource.java (isDirect: the causing entity is
+the direct one, both absent included), world/level/storage/loot/LootContext.java (EntityTarget, visited
 elements), LootParams.java, providers/number/*.java (ConstantValue, UniformGenerator,
 BinomialDistributionGenerator, ScoreboardValue, StorageValue), IntRange.java,
 advancements/critereon/MinMaxBounds.java, server/commands/LootCommand.java (dropKillLoot).
@@ -45,6 +48,17 @@ def not_modelled(kind: str, name: str) -> Unmodelled:
     return Unmodelled(f"{kind} '{name}'")
 
 
+@dataclass(frozen=True)
+class DamageSource:
+    type: str = "minecraft:generic"
+    attacker: Any = None  # DamageSource.getEntity: the responsible entity
+    direct: Any = None  # getDirectEntity
+
+    @property
+    def is_direct(self) -> bool:
+        return self.attacker is self.direct
+
+
 @dataclass
 class LootContext:
     """LootContext: the world (``state``) and the parameters the game's LootParams carry. Loot
@@ -63,7 +77,7 @@ class LootContext:
     block_state: Any = None  # the mined block (emulator.world.blocks.BlockState)
     block_entity: Compound | None = None  # the mined block entity's NBT
     explosion_radius: float | None = None
-    damage_source: str | None = None  # the damage type id; damage sources are not modelled further
+    damage_source: DamageSource | None = None
     dimension: str = "minecraft:overworld"
     random: _random.Random | None = None
     resolve_text: Callable[[Any, Any], Any] | None = None

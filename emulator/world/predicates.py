@@ -169,10 +169,31 @@ def _survives_explosion(c: dict, ctx: LootContext) -> bool:
 
 
 def _damage_source(c: dict, ctx: LootContext) -> bool:
-    """DamageSourceCondition: false without a damage source; damage sources are not modelled."""
-    if ctx.damage_source is None:
+    """DamageSourceCondition: false without a damage source or an origin; no predicate: true; its
+    entity predicates from the origin."""
+    if ctx.damage_source is None or ctx.origin is None:
         return False
-    raise Unmodelled(f"damage sources (damage_source_properties on {ctx.damage_source})")
+    return "predicate" not in c or damage_source_matches(
+        c["predicate"], ctx.damage_source, ctx.resources, lambda predicate, entity: entity_matches(predicate, ctx, entity))
+
+
+def damage_source_matches(wanted: dict | None, source, resources, entity_test) -> bool:
+    """DamageSourcePredicate.matches: each of ``tags`` (``{id, expected}``: whether the damage type
+    is in the tag), ``direct_entity`` and ``source_entity`` (``entity_test(predicate, entity)``; an
+    absent entity fails), ``is_direct``. ``source``: a :class:`~emulator.world.loot_context.DamageSource`."""
+    if wanted is None:
+        return True
+    unknown = set(wanted) - {"tags", "is_direct", "source_entity", "direct_entity"}
+    if unknown:
+        raise Unmodelled(f"damage source predicate field '{sorted(unknown)[0]}'")
+    for tag in wanted.get("tags", ()):
+        tag_id = _id(str(tag.get("id", "")).removeprefix("#"))
+        if resources.in_tag("damage_type", tag_id, source.type) != bool(tag.get("expected")):
+            return False
+    for key, entity in (("direct_entity", source.direct), ("source_entity", source.attacker)):
+        if key in wanted and (entity is None or not entity_test(wanted[key], entity)):
+            return False
+    return "is_direct" not in wanted or source.is_direct == bool(wanted["is_direct"])
 
 
 def _killed_by_player(c: dict, ctx: LootContext) -> bool:
@@ -435,6 +456,18 @@ def _location_field(key: str):
     return check
 
 
+def _targeted_entity(value, ctx: LootContext, entity: Entity) -> bool:
+    """EntityPredicate.targetedEntity: a Mob's getTarget(), null for any other entity (which fails,
+    as EntityPredicate.matches does for a missing entity). A mob with ``NoAI`` never acquires one
+    (its goals do not run); another mob's target comes from its AI, which is not modelled."""
+    if not is_living(entity.type) or entity.is_player or entity.type == "minecraft:armor_stand":
+        return False
+    if _number_field(entity, "NoAI"):
+        return False
+    raise Unmodelled(f"entity predicate field 'targeted_entity' (a {entity.type}'s target comes from its AI, "
+                     "which is not modelled)")
+
+
 def _team(value, ctx: LootContext, entity: Entity) -> bool:
     return entity.team is not None and entity.team == value
 
@@ -496,6 +529,7 @@ _ENTITY_FIELDS = {
     "stepping_on": _location_field("stepping_on"),
     "movement_affected_by": _location_field("movement_affected_by"),
     "team": _team,
+    "targeted_entity": _targeted_entity,
     "vehicle": _vehicle,
     "passenger": _passenger,
     "type_specific": _type_specific,
@@ -503,7 +537,7 @@ _ENTITY_FIELDS = {
     "slots": _slots,
     "player": lambda v, ctx, e: _player(v, ctx, e),  # before 1.19: a top-level player predicate
 }
-_ENTITY_UNMODELLED = {"targeted_entity", "periodic_tick", "movement", "fishing_hook",
+_ENTITY_UNMODELLED = {"periodic_tick", "movement", "fishing_hook",
                       "lightning_bolt", "catType", "components", "predicates"}
 
 
@@ -522,10 +556,22 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         return False
     if "fluid" in predicate and not _fluid_matches(predicate["fluid"], ctx, block_pos):
         return False
-    for key in ("biomes", "biome", "structures", "structure", "feature", "smokey", "light", "can_see_sky"):
+    for key, why in _LOCATION_UNMODELLED.items():
         if key in predicate:
-            raise Unmodelled(f"location predicate field '{key}'")
+            raise Unmodelled(f"location predicate field '{key}' ({why})")
     return True
+
+
+# what the world does not keep: LocationPredicate's fields that read it (the fields the world
+# keeps are tested first: when one of them fails the predicate is false whatever these say)
+NO_TERRAIN = "the emulator generates no terrain: its world has no biomes or structures"
+_LOCATION_UNMODELLED = {
+    "biomes": NO_TERRAIN, "biome": NO_TERRAIN, "structures": NO_TERRAIN, "structure": NO_TERRAIN,
+    "feature": NO_TERRAIN,
+    "light": "the emulator keeps no light levels",
+    "can_see_sky": "the emulator keeps no sky light or height maps",
+    "smokey": "a campfire's smoke needs block collision shapes, which the emulator does not keep",
+}
 
 
 def block_matches(predicate: dict, ctx: LootContext, pos) -> bool:

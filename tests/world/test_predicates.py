@@ -9,11 +9,12 @@ from emulator.world import inventories, loot, predicates
 from emulator.world.blocks import BlockSpec, parse_block, with_defaults
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
-from emulator.world.loot_context import LootContext
+from emulator.world.loot_context import DamageSource, LootContext
 from emulator.world.predicates import test as holds
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
 from mcfunction_parser.pack.conditions import parse_inline
+from mcfunction_parser.pack.registry_tags import RegistryTag
 from mcfunction_parser.nbt import Byte, Compound, Int, List, String
 
 
@@ -173,8 +174,14 @@ def test_flags_effects_and_unmodelled_fields(state):
     assert holds(props({"effects": {"minecraft:speed": {"amplifier": {"min": 1}}}}), this)
     assert not holds(props({"effects": {"minecraft:slowness": {}}}), this)
     assert holds(props({"type_specific": {"type": "player", "gamemode": ["survival"]}}), this)
+    # EntityPredicate.targetedEntity: only a Mob has a target (getTarget); a mob without AI never
+    # gets one; another mob's target is its AI's, not modelled
+    assert not holds(props({"targeted_entity": {}}), this)
+    zombie = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0))
+    calm = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0), Compound(NoAI=Byte(1)))
+    assert not holds(props({"targeted_entity": {}}), ctx(state, this=calm))
     with pytest.raises(Unmodelled, match="targeted_entity"):
-        holds(props({"targeted_entity": {}}), this)
+        holds(props({"targeted_entity": {}}), ctx(state, this=zombie))
     with pytest.raises(Unmodelled, match="'minecraft:nope'"):
         holds({"condition": "minecraft:nope"}, this)
 
@@ -209,16 +216,42 @@ def test_value_check_reads_the_provider_as_an_int(state):
 
 def test_kill_loot_parameters(state):
     # LootCommand.dropKillLoot: the killer is attacker and direct attacker, the attacking player when
-    # it is one (LootItemKilledByPlayerCondition); the damage source is magic, which
-    # damage_source_properties would read (not modelled: said so, not false)
+    # it is one (LootItemKilledByPlayerCondition); the damage source is magic, with no entity
     player = state.entities.add_player("Alex", (0.0, 0.0, 0.0))
     zombie = state.entities.summon("minecraft:zombie", (0.0, 0.0, 0.0))
-    by_player = ctx(state, this=zombie, damage_source="minecraft:magic").killed_by(player)
+    by_player = ctx(state, this=zombie, damage_source=DamageSource("minecraft:magic")).killed_by(player)
     assert holds({"condition": "killed_by_player"}, by_player)
     assert holds(props({"type": "minecraft:player"}, "attacker"), by_player)
     assert not holds({"condition": "killed_by_player"}, ctx(state, this=player).killed_by(zombie))
-    with pytest.raises(Unmodelled, match="damage sources"):
-        holds({"condition": "damage_source_properties", "predicate": {}}, by_player)
+    assert holds({"condition": "damage_source_properties", "predicate": {}}, by_player)
+    assert not holds({"condition": "damage_source_properties", "predicate": {"source_entity": {}}}, by_player)
+
+
+def test_damage_source_properties(state):
+    # DamageSourceCondition.test: needs the damage source and the origin; DamageSourcePredicate:
+    # each tag {id, expected}, direct_entity and source_entity (EntityPredicate.matches from the
+    # origin; an absent entity fails), is_direct (DamageSource.isDirect: causing == direct entity,
+    # so a source with neither is direct)
+    state.resources = Resources(tags={"damage_type": {"t:arcane": RegistryTag(frozenset({"minecraft:magic"}))}})
+    player = state.entities.add_player("Alex", (3.0, 0.0, 0.0))
+    arrow = state.entities.summon("minecraft:arrow", (1.0, 0.0, 0.0))
+    shot = ctx(state, damage_source=DamageSource("minecraft:arrow", player, arrow))
+    magic = ctx(state, damage_source=DamageSource("minecraft:magic"))
+
+    def source(predicate, context):
+        return holds({"condition": "damage_source_properties", "predicate": predicate}, context)
+
+    assert source({"source_entity": {"type": "minecraft:player", "distance": {"absolute": {"min": 2.5}}},
+                   "direct_entity": {"type": "minecraft:arrow"}, "is_direct": False}, shot)
+    assert not source({"source_entity": {"distance": {"absolute": {"max": 2.5}}}}, shot)
+    assert not source({"is_direct": True}, shot) and source({"is_direct": True}, magic)
+    assert source({"tags": [{"id": "t:arcane", "expected": True}]}, magic)
+    assert source({"tags": [{"id": "t:arcane", "expected": False}]}, shot)
+    assert not source({"tags": [{"id": "t:arcane", "expected": True}]}, shot)
+    assert not holds({"condition": "damage_source_properties"}, ctx(state))  # no damage source
+    assert not holds({"condition": "damage_source_properties"}, LootContext(state, None, damage_source=magic.damage_source))
+    with pytest.raises(Unmodelled, match="is_fire"):  # the pre-1.19.4 flags are not modelled
+        source({"is_fire": True}, magic)
 
 
 def test_enchanted_bonus_without_an_enchanted_attacker_is_the_unenchanted_chance(state):
@@ -321,3 +354,19 @@ def test_the_old_item_predicate_fields_are_ignored_from_1_20_5(state):
     # ItemPredicate.CODEC from 1.20.5 has items, count, components, predicates: other keys are ignored
     assert holds({"condition": "match_tool", "predicate": {"durability": {"min": 9999}}},
                  ctx(state, tool=ItemStack("minecraft:stick")))
+
+
+@pytest.mark.parametrize("field,value,reason", [
+    ("biomes", "minecraft:plains", "no biomes"), ("structures", "#minecraft:village", "no biomes or structures"),
+    ("light", {"light": {"min": 1}}, "no light levels"), ("can_see_sky", True, "no sky light"),
+    ("smokey", True, "collision shapes"),
+])
+def test_location_fields_the_world_does_not_keep_are_reported(state, field, value, reason):
+    # LocationPredicate.matches: biomes, structures, smokey, light and can_see_sky read what the
+    # emulator's world does not keep (no terrain, no light): not modelled, never a silent yes or no;
+    # a field the world keeps that fails first makes the predicate false all the same
+    check = {"condition": "location_check", "predicate": {field: value}}
+    with pytest.raises(Unmodelled, match=reason):
+        holds(check, ctx(state))
+    check["predicate"]["block"] = {"blocks": "minecraft:stone"}
+    assert not holds(check, ctx(state))
