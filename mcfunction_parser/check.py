@@ -9,6 +9,9 @@ arguments against the game's command tree and version problems per command):
   such);
 - ``execute if predicate`` or a selector's ``predicate=`` naming a predicate file that is not
   loaded (error);
+- ``loot`` or ``item modify`` naming a loot table or item modifier that is not loaded, an
+  advancement's ``rewards.loot`` or ``rewards.recipes`` naming a loot table or recipe that is not
+  (error in a namespace the packs define, warning in another; ``minecraft:`` only with a game jar);
 - calling a macro function without arguments (directly, by ``schedule``, or as a member of
   ``#minecraft:load``/``#minecraft:tick``), or with a literal compound that lacks one of its
   ``$(keys)`` (error: the game fails the call);
@@ -496,15 +499,25 @@ def _check_predicates(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic
 
 
 def _check_resources(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
-    """A loot table or item modifier must be loaded (the command fails when it runs): an error in a
-    namespace the loaded packs define, a warning in another; the game's own (``minecraft:``) tables
-    come only with --game-jar, so those are not judged."""
+    """A loot table or item modifier must be loaded (the command fails when it runs), and so must
+    the loot tables and recipes of advancement rewards: an error in a namespace the loaded packs
+    define, a warning in another; the game's own (``minecraft:``) tables and recipes come only with
+    --game-jar, so those are not judged without it."""
     defined = _namespaces(loaded) - {"minecraft"}
     loaded_ids = {"loot table": loaded.loot_tables, "item modifier": loaded.item_modifiers}
     for kind, name, loc in facts.resources:
         if name not in loaded_ids[kind] and not name.startswith("minecraft:"):
             found.append(_reference_problem(loaded, f"unknown {kind} {name}", name, defined, loc,
                                             "the command fails when it runs"))
+    # AdvancementRewards.grant: an unknown table gives nothing (LootTable.EMPTY), an unknown recipe
+    # is skipped (ServerPlayer.awardRecipesByKey), both in silence
+    defined |= {r.split(":", 1)[0] for r in loaded.recipes} | ({"minecraft"} if loaded.vanilla_data else set())
+    for kind, named, known in (("loot table", loaded.advancement_loot, loaded.loot_tables),
+                               ("recipe", loaded.advancement_recipes, loaded.recipes)):
+        for name, locs in named.items():
+            if name not in known and (loaded.vanilla_data or not name.startswith("minecraft:")):
+                found.extend(_reference_problem(loaded, f"unknown {kind} {name} (advancement reward)", name, defined,
+                                                loc, "the reward gives nothing when it is earned") for loc in locs)
 
 
 def _check_objectives(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:

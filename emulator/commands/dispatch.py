@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import advancements, blocks, bossbar, conditions, data, entities, items, living, scoreboard, server
+from . import advancements, blocks, bossbar, conditions, data, entities, items, living, recipes, scoreboard, server
 
 # Commands that only show or play something to players: no world state a pack can test changes
 # (their result, the number of players reached, is the one thing left unmodelled).
@@ -30,7 +30,8 @@ def _unread(env, cmd: ast.UnreadCommand, ctx) -> int:
 HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
             **items.HANDLERS, ast.UnreadCommand: _unread}
 # the commands the parser keeps as text, by name
-GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **server.GENERIC_HANDLERS}
+GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **recipes.HANDLERS,
+                    **server.GENERIC_HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

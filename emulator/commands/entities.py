@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import random
 from dataclasses import replace
+from functools import lru_cache
 
 import numpy as np
 
@@ -287,6 +288,37 @@ def new_state(shuffle: int | None = None) -> WorldState:
         state.entities = ShuffledEntityStore(shuffle_seed=shuffle)
         state.entities.bind_scoreboard(state.scoreboard)
     return state
+
+
+@lru_cache(maxsize=4096)
+def arguments(cmd: ast.GenericCommand) -> tuple[list, object]:
+    """The command's words after its name, with an entity argument read as a selector (brackets may
+    hold spaces): ``(words, target)``; the target's place in ``words`` holds None."""
+    reader = Reader(cmd.text, cmd.loc, (26, 2, 0))
+    reader.pos = len(cmd.name)
+    words, target = [], None
+    try:
+        reader.skip_ws()
+        while reader.more():
+            if reader.peek() == "@" and target is None:
+                target = selectors.selector(reader)
+                words.append(None)
+            else:
+                start = reader.pos
+                while reader.more() and not reader.peek().isspace():
+                    reader.pos += 1
+                words.append(cmd.text[start:reader.pos])
+            reader.skip_ws()
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error.message, report=True) from None
+    return words, target
+
+
+def target_word(cmd, words: list, index: int, target):
+    """The entity argument at ``index`` of :func:`arguments`' words (a selector, name or UUID)."""
+    if index >= len(words):
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected an entity", report=True)
+    return target if words[index] is None else holder_from_word(words[index], cmd.loc)
 
 
 def parse_target(text: str):

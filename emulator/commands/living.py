@@ -11,46 +11,13 @@ AttributeCommand.java, DamageCommand.java.
 """
 from __future__ import annotations
 
-from functools import lru_cache
 
 from emulator.world import advancements, combat, living
 from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
-from mcfunction_parser import ast, selectors
-from mcfunction_parser.arguments import holder_from_word
-from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser import ast
 
-from .entities import _executor_required, executor, found, parse_target, single
-
-
-@lru_cache(maxsize=4096)
-def _arguments(cmd: ast.GenericCommand) -> tuple[list, object]:
-    """The command's words after its name, with an entity argument read as a selector (brackets may
-    hold spaces): ``(words, target)``; the target's place in ``words`` holds None."""
-    reader = Reader(cmd.text, cmd.loc, (26, 2, 0))
-    reader.pos = len(cmd.name)
-    words, target = [], None
-    try:
-        reader.skip_ws()
-        while reader.more():
-            if reader.peek() == "@" and target is None:
-                target = selectors.selector(reader)
-                words.append(None)
-            else:
-                start = reader.pos
-                while reader.more() and not reader.peek().isspace():
-                    reader.pos += 1
-                words.append(cmd.text[start:reader.pos])
-            reader.skip_ws()
-    except ParseError as error:
-        raise CommandFailure("dpemu.command.unreadable", cmd.name, error.message, report=True) from None
-    return words, target
-
-
-def _target(cmd, words: list, index: int, target):
-    if index >= len(words):
-        raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected an entity", report=True)
-    return target if words[index] is None else holder_from_word(words[index], cmd.loc)
+from .entities import _executor_required, arguments, executor, found, parse_target, single, target_word
 
 
 def _number(cmd, words: list, index: int, kind=float, default=None):
@@ -72,9 +39,9 @@ def _resource(word: str) -> str:
 # ---------------------------------------------------------------------- xp
 def experience(env, cmd: ast.GenericCommand, ctx) -> int:
     """``xp add|set TARGETS AMOUNT [points|levels]``, ``xp query TARGET points|levels``."""
-    words, target = _arguments(cmd)
+    words, target = arguments(cmd)
     action = words[0] if words else ""
-    who = _target(cmd, words, 1, target)
+    who = target_word(cmd, words, 1, target)
     if action == "query":
         player = single(env.state, who, ctx)  # the parser admits players only (EntityArgument.player)
         unit = words[2] if len(words) > 2 else ""
@@ -102,7 +69,7 @@ def experience(env, cmd: ast.GenericCommand, ctx) -> int:
 def effect(env, cmd: ast.GenericCommand, ctx) -> int:
     """``effect give TARGETS EFFECT [SECONDS|infinite] [AMPLIFIER] [HIDE_PARTICLES]`` and ``effect clear
     [TARGETS] [EFFECT]`` (no targets: the executor)."""
-    words, target = _arguments(cmd)
+    words, target = arguments(cmd)
     if words and words[0] == "clear":
         return _clear(env, cmd, words, target, ctx)
     effect_id = _resource(words[2]) if len(words) > 2 else ""
@@ -118,7 +85,7 @@ def effect(env, cmd: ast.GenericCommand, ctx) -> int:
     visible = not (len(words) > 5 and words[5] == "true")
     source = executor(env.state, ctx)
     changed = 0
-    for e in found(env.state, _target(cmd, words, 1, target), ctx):
+    for e in found(env.state, target_word(cmd, words, 1, target), ctx):
         if living.is_living(e.type) and living.give_effect(env.state, e, effect_id, duration, amplifier, visible):
             advancements.effects_changed(env.state, e, source)
             changed += 1
@@ -129,7 +96,7 @@ def effect(env, cmd: ast.GenericCommand, ctx) -> int:
 
 def _clear(env, cmd, words, target, ctx) -> int:
     if len(words) > 1:
-        entities = found(env.state, _target(cmd, words, 1, target), ctx)
+        entities = found(env.state, target_word(cmd, words, 1, target), ctx)
     else:
         entities = [_executor_required(env.state, ctx)]
     effect_id = _resource(words[2]) if len(words) > 2 else None
@@ -152,8 +119,8 @@ def _attribute_name(name: str) -> str:
 def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
     """``attribute TARGET ATTRIBUTE get [SCALE] | base get [SCALE] | base set VALUE | base reset |
     modifier add ID VALUE OPERATION | modifier remove ID | modifier value get ID [SCALE]``."""
-    words, target = _arguments(cmd)
-    entity = single(env.state, _target(cmd, words, 0, target), ctx)
+    words, target = arguments(cmd)
+    entity = single(env.state, target_word(cmd, words, 0, target), ctx)
     name = living.attribute_id(words[1]) if len(words) > 1 else ""
     if not living.is_living(entity.type):
         raise CommandFailure("commands.attribute.failed.entity", entity.display_name)
@@ -200,8 +167,8 @@ def damage(env, cmd: ast.GenericCommand, ctx) -> int:
     knockback, no AI) by a source of that type whose entity is CAUSE, else ENTITY (DamageCommand:
     the responsible entity earns the kill credit and fires the hurt triggers); the source position
     is not modelled (a pack cannot observe it without AI)."""
-    words, target = _arguments(cmd)
-    entity = single(env.state, _target(cmd, words, 0, target), ctx)
+    words, target = arguments(cmd)
+    entity = single(env.state, target_word(cmd, words, 0, target), ctx)
     amount = _number(cmd, words, 1)
     damage_type = _resource(words[2]) if len(words) > 2 and words[2] not in ("at", "by") else "minecraft:generic"
     direct = _source_entity(env, words, target, "by", ctx)
@@ -233,12 +200,12 @@ def gamemode(env, cmd: ast.GenericCommand, ctx) -> int:
     """``gamemode MODE [TARGETS]`` (GameModeCommand.setMode): the players whose mode changed; a
     player already in that mode does not count, and the command does not fail for it. Without
     targets, the executor (a player)."""
-    words, target = _arguments(cmd)
+    words, target = arguments(cmd)
     mode = words[0] if words else ""
     if mode not in GAME_MODES:
         raise CommandFailure("dpemu.command.unreadable", cmd.name, f"unknown game mode '{mode}'", report=True)
     if len(words) > 1:
-        players = found(env.state, _target(cmd, words, 1, target), ctx)  # players only by parse
+        players = found(env.state, target_word(cmd, words, 1, target), ctx)  # players only by parse
     else:
         player = _executor_required(env.state, ctx)
         if not player.is_player:

@@ -36,7 +36,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from emulator.world import inventories, living, loot, predicates
+from emulator.world import inventories, living, loot, predicates, recipes
 from emulator.world.advancement_progress import OBSERVED, full_id as _id, is_done, short_trigger
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
@@ -71,7 +71,8 @@ def revoke(state, player: Entity, advancement_id: str, criterion: str) -> bool:
 
 def _reward(state, player: Entity, advancement_id: str) -> None:
     """AdvancementRewards.grant, in its order: the experience points, each loot table's items, the
-    recipes (not modelled: no recipe book here), then the function queued to run as the player."""
+    recipes (ServerPlayer.awardRecipesByKey: an unknown one is skipped), then the function queued to
+    run as the player."""
     rewards = state.resources.advancements[advancement_id].get("rewards") or {}
     if rewards.get("experience"):
         living.add_points(player, int(rewards["experience"]))
@@ -79,9 +80,11 @@ def _reward(state, player: Entity, advancement_id: str) -> None:
         _loot_rewards(state, player, rewards.get("loot") or [])
     except Unmodelled as reason:
         state.error(f"advancement {advancement_id}: its loot reward: {reason}", unmodelled=True)
-    if rewards.get("recipes"):
-        state.error(f"advancement {advancement_id}: the recipes reward is not modelled (no recipe book)",
-                    severity="warning", unmodelled=True)
+    try:
+        found = [r for r in map(_id, rewards.get("recipes") or []) if r and recipes.find(state.resources, r)]
+        award_recipes(state, player, found)
+    except Unmodelled as reason:
+        state.error(f"advancement {advancement_id}: its recipes reward: {reason}", unmodelled=True)
     function = rewards.get("function")
     if isinstance(function, str):
         state.pending_rewards.append((function if ":" in function else "minecraft:" + function, player))
@@ -105,6 +108,14 @@ def _loot_rewards(state, player: Entity, tables: list) -> None:
                                        Compound(PickupDelay=Short(0), Owner=IntArray(Int(v) for v in player.uuid)))
     if added:
         broadcast_changes(state, player)
+
+
+def award_recipes(state, player: Entity, recipe_ids: list[str]) -> int:
+    """ServerPlayer.awardRecipes: the recipes added to the player's book, each firing
+    ``recipe_unlocked`` (RecipeUnlockedTrigger: its ``recipe`` is the id); the number added."""
+    def unlocked(recipe_id: str) -> None:
+        trigger(state, player, "recipe_unlocked", lambda c, ctx: _id(c.get("recipe")) == recipe_id)
+    return recipes.award(player, recipe_ids, state.resources, unlocked)
 
 
 def related(resources, advancement_id: str, mode: str) -> list[str]:

@@ -33,7 +33,7 @@ import weakref
 import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
-from emulator.world import statistics
+from emulator.world import recipes, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.semantics import wrap32
@@ -134,14 +134,15 @@ def default_base(type_id: str, name: str) -> float:
 
 def base_fields(type_id: str) -> Compound:
     """What a living entity saves from its spawn: Health at its max health, no effects, the
-    player's hunger (FoodData) and experience."""
+    player's hunger (FoodData), experience and empty recipe book."""
     if not is_living(type_id):
         return Compound()
     data = Compound(Health=Float(default_base(type_id, "max_health")), HurtTime=Int(0), DeathTime=Int(0),
                     AbsorptionAmount=Float(0.0))
     if type_id == "minecraft:player":
         data.update(foodLevel=Int(20), foodSaturationLevel=Float(5.0), foodExhaustionLevel=Float(0.0),
-                    foodTickTimer=Int(0), XpLevel=Int(0), XpP=Float(0.0), XpTotal=Int(0), XpSeed=Int(0), Score=Int(0))
+                    foodTickTimer=Int(0), XpLevel=Int(0), XpP=Float(0.0), XpTotal=Int(0), XpSeed=Int(0), Score=Int(0),
+                    recipeBook=recipes.EMPTY_BOOK())
     return data
 
 

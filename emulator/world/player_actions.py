@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from emulator.world import (advancements, combat, consumables, inventories, living, predicates, projectile_weapons,
-                            statistics)
+                            recipes, statistics)
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import numeric_value
@@ -121,12 +121,18 @@ def _food_on_a_stick(state, player, hand, stack: ItemStack) -> str:
 
 
 def _knowledge_book(state, player, hand, stack: ItemStack) -> str:
-    """KnowledgeBookItem.use: the book is consumed (not in creative); with no recipes it fails."""
-    recipes = stack.component("minecraft:recipes") or (stack.tag or {}).get("Recipes")
-    if recipes:
-        raise Unmodelled("a knowledge book's recipes (the emulator has no recipe book)")
+    """KnowledgeBookItem.use: the book is consumed (not in creative); with no recipes it fails, as
+    it does when one of them does not exist (logged "Invalid recipe"); else the player learns them
+    all (ServerPlayer.awardRecipes), ``minecraft.used:knowledge_book`` counts and the use consumes
+    the action. The recipes are the ``recipes`` component (``Recipes`` in the tag before 1.20.5)."""
+    listed = stack.component("minecraft:recipes") or (stack.tag or {}).get("Recipes") or []
+    names = [str(r) if ":" in str(r) else "minecraft:" + str(r) for r in listed]
     _consume_one(state, player, hand)
-    return "fail"
+    if not names or not all(recipes.find(state.resources, r) for r in names):
+        return "fail"
+    advancements.award_recipes(state, player, names)
+    statistics.award(state, player, statistics.stat_name("used", stack.id))
+    return "consume"
 
 
 def _bow(state, player, hand, stack: ItemStack) -> str:

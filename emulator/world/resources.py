@@ -1,5 +1,5 @@
 """The packs' data-driven resources a running world reads (the game's ReloadableServerResources):
-loot tables, item modifiers, predicates, advancements and registry tags, from :class:`LoadedPacks`.
+loot tables, item modifiers, predicates, advancements, recipes and registry tags, from :class:`LoadedPacks`.
 
 - ``Resources.from_packs(packs)`` (only files that load: the game skips the others);
   ``Resources()`` is an empty world's (only the built-in vanilla tags,
@@ -11,6 +11,8 @@ loot tables, item modifiers, predicates, advancements and registry tags, from :c
   A ``#minecraft:`` tag the emulator does not know (no game jar given) raises
   :class:`~emulator.world.errors.Unmodelled` unless ``value`` is among its known members, never a
   silent "no".
+- ``recipes``: recipe id -> type (the packs', and the game's from its jar); see
+  :mod:`emulator.world.recipes`.
 - ``loot_table(table_id)``: a loaded table; None for one that does not exist. A ``minecraft:``
   table without the game's data raises Unmodelled naming ``--game-jar``.
 """
@@ -32,6 +34,7 @@ class Resources:
     paths: dict[str, str] = field(default_factory=dict)  # "loot_table ns:id" -> the file, for messages
     predicates: dict[str, Any] = field(default_factory=dict)  # id -> JSON value
     advancements: dict[str, Any] = field(default_factory=dict)
+    recipes: dict[str, str] = field(default_factory=dict)  # id -> its type
     tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)  # registry -> tag id -> tag
     vanilla_data: bool = False  # the game's own tags and loot tables were loaded (from its jar)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # loot rolls, dropped items
@@ -41,6 +44,7 @@ class Resources:
         tables, modifiers = packs.loot_tables, packs.item_modifiers
         found = cls({k: d.value for k, d in tables.items()}, {k: d.value for k, d in modifiers.items()},
                     predicates=dict(packs.predicates), advancements=dict(packs.advancements),
+                    recipes=dict(packs.recipes),
                     tags={registry: dict(tags) for registry, tags in packs.registry_tags.items()},
                     vanilla_data=packs.vanilla_data)
         for kind, docs in (("loot_table", tables), ("item_modifier", modifiers)):

@@ -63,6 +63,10 @@ class LoadedPacks:
     diagnostics: list[Diagnostic]
     failed_tags: dict[str, FailedTag] = field(default_factory=dict)  # tags the game refuses to load
     advancement_rewards: dict[str, list[Loc]] = field(default_factory=dict)  # function -> where named
+    # the loot tables and recipes advancement rewards name: id -> where named
+    advancement_loot: dict[str, list[Loc]] = field(default_factory=dict)
+    advancement_recipes: dict[str, list[Loc]] = field(default_factory=dict)
+    recipes: dict[str, str] = field(default_factory=dict)  # id -> its type (the jar's, then the packs')
     predicates: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
     advancements: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
     dimensions: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension: id -> its JSON
@@ -164,6 +168,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     _load_predicates(packs, result)
     _load_advancements(packs, result)
     _load_loot(packs, result, jar)
+    _load_recipes(packs, result, jar)
     _load_dimensions(packs, result)
     return result
 
@@ -488,14 +493,38 @@ def _load_dimensions(packs: list[_PackFiles], result: LoadedPacks) -> None:
 
 
 def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
-    """Advancements the game loads (their criteria checked by :mod:`.advancements`), and the
-    ``rewards.function`` of each: those functions are reachable."""
+    """Advancements the game loads (their criteria checked by :mod:`.advancements`), and what their
+    rewards name: the ``function`` (reachable), the ``loot`` tables and ``recipes``."""
     for advancement_id, doc in _chosen_json(packs, ("advancement", "advancements"), result):
         if not advancements.validate(doc, result.version, f"advancement {advancement_id}", result.diagnostics):
             continue
         result.advancements[advancement_id] = doc.value
         rewards = doc.value.get("rewards")
-        reward = rewards.get("function") if isinstance(rewards, dict) else None
-        if isinstance(reward, str):
-            loc = doc.loc_at(max(doc.find_string(reward, doc.find_string("rewards")), 0))
-            result.advancement_rewards.setdefault(normalise_id(reward), []).append(loc)
+        rewards = rewards if isinstance(rewards, dict) else {}
+        after = doc.find_string("rewards")
+        for key, named in (("function", result.advancement_rewards), ("loot", result.advancement_loot),
+                           ("recipes", result.advancement_recipes)):
+            ids = [rewards.get(key)] if key == "function" else rewards.get(key)
+            for reward in ids if isinstance(ids, list) else ():
+                if isinstance(reward, str):
+                    loc = doc.loc_at(max(doc.find_string(reward, after), 0))
+                    named.setdefault(normalise_id(reward), []).append(loc)
+
+
+def _load_recipes(packs: list[_PackFiles], result: LoadedPacks, jar) -> None:
+    """Recipe ids and types (``data/<ns>/recipe``, ``recipes`` before 1.21): the game's own from its
+    jar first, then the packs' (a later pack's file replaces an earlier one). A recipe without a
+    ``type`` is refused, as RecipeManager refuses it; their other fields are not checked."""
+    if jar is not None:
+        root, name = jar
+        for path in _jar_files(root, ("recipe", "recipes")):
+            _, namespace, _, rest = path.at.split("/", 3)
+            doc = load_json(path, f"{name}!/{path.at}", result.diagnostics)
+            if doc is not None and isinstance(doc.value, dict):
+                result.recipes[f"{namespace}:{rest[:-len('.json')]}"] = normalise_id(str(doc.value.get("type", "")))
+    for recipe_id, doc in _chosen_json(packs, ("recipe", "recipes"), result):
+        kind = doc.value.get("type") if isinstance(doc.value, dict) else None
+        if not isinstance(kind, str):
+            result.diagnostics.append(doc.diagnostic(ERROR, f"recipe {recipe_id}: missing the string 'type'", 0))
+            continue
+        result.recipes[recipe_id] = normalise_id(kind)

@@ -149,4 +149,43 @@ def test_loot_that_does_not_fit_is_thrown_to_the_player(tmp_path, backend):
     assert [int(v) for v in item["Owner"]] == list(alex.uuid)
     assert float(item["Pos"][1]) == pytest.approx(1.62 - 0.3, abs=1e-6)
     warnings = [d for d in emu.diagnostics if d.unmodelled]
-    assert ["recipes reward is not modelled" in d.message for d in warnings] == [True]
+    assert ["recipes reward" in d.message and "--game-jar" in d.message for d in warnings] == [True]
+
+
+def _recipe(root, name: str, kind: str = "minecraft:crafting_shapeless") -> None:
+    file = root / "data" / "t" / "recipe" / f"{name}.json"
+    file.parent.mkdir(parents=True, exist_ok=True)
+    file.write_text(json.dumps({"type": kind, "ingredients": ["minecraft:stick"], "result": {"id": "minecraft:stick"}}))
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_recipe_rewards_commands_and_the_unlocked_trigger(tmp_path, backend):
+    # a tutorial chain as packs write it: picking the first advancement's reward teaches the recipe
+    # (AdvancementRewards.grant: awardRecipesByKey, an unknown id skipped), recipe_unlocked
+    # (RecipeUnlockedTrigger: its recipe) completes the next one, whose function counts; RecipeCommand:
+    # the result is the number of recipes added or removed, none fails; a special recipe
+    # (CustomRecipe.isSpecial) is never added (ServerRecipeBook.addRecipes)
+    root = tmp_path / "p"
+    for name, kind in (("wand", "minecraft:crafting_shapeless"), ("staff", "minecraft:crafting_shaped"),
+                       ("dye", "minecraft:crafting_special_armordye")):
+        _recipe(root, name, kind)
+    emu = _emulator(tmp_path, backend, {
+        "t:main": "advancement grant Alex only t:start\n"
+                  "execute store result score #again o run recipe give Alex t:wand\n"
+                  "execute store result score #all o run recipe give @a t:staff\n"
+                  "execute store result score #special o run recipe give Alex t:dye\n"
+                  "execute store result score #take o run recipe take @a t:staff\n"
+                  "execute store result score #taken o run recipe take Alex t:staff\n"
+                  "execute store result score #known o if entity @a[name=Alex,nbt={recipeBook:{recipes:['t:wand']}}]\n",
+        "t:learned": "scoreboard players add @s seen 1",
+    }, {"start": {"criteria": {"x": {"trigger": "minecraft:impossible"}},
+                  "rewards": {"recipes": ["t:wand", "t:missing"]}},
+        "learn": {"criteria": {"r": {"trigger": "minecraft:recipe_unlocked", "conditions": {"recipe": "t:wand"}}},
+                  "rewards": {"function": "t:learned"}}})
+    emu.call("t:main")
+    scores = {k: emu.score(k, "o") for k in ("#again", "#all", "#special", "#take", "#taken", "#known")}
+    assert scores == {"#again": 0, "#all": 2, "#special": 0, "#take": 2, "#taken": 0, "#known": 1}
+    assert (emu.score("Alex", "seen"), emu.score("Steve", "seen")) == (1, None)
+    book = entity_nbt(emu.state.entities.players()[0])["recipeBook"]
+    assert [str(r) for r in book["recipes"]] == ["t:wand"] and [str(r) for r in book["toBeDisplayed"]] == ["t:wand"]
+    assert book["isGuiOpen"] == 0 and book["isSmokerFilteringCraftable"] == 0

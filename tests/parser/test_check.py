@@ -231,6 +231,26 @@ def test_advancement_rewards_must_exist_and_later_packs_replace_advancements(tmp
     assert [d.message.split(" is ")[0] for d in result.of("info")] == ["function a:old"]
 
 
+def test_advancement_loot_and_recipe_rewards_must_exist(tmp_path):
+    # AdvancementRewards.grant gives nothing for an unknown table and skips an unknown recipe, in
+    # silence: graded as other references (an error in a namespace the packs define, a warning in
+    # another; the game's own ids are not judged without its jar)
+    root = write(tmp_path / "p", {
+        "data/a/advancement/adv.json": json.dumps({"criteria": {"t": {"trigger": "minecraft:tick"}}, "rewards": {
+            "loot": ["a:chest", "a:gone", "lib:bonus", "minecraft:chests/igloo_chest"],
+            "recipes": ["a:wand", "a:nope", "minecraft:stick"]}}, indent=1),
+        "data/a/loot_table/chest.json": '{"pools": []}',
+        "data/a/recipe/wand.json": '{"type": "minecraft:crafting_shapeless", "ingredients": ["minecraft:stick"],'
+                                   ' "result": {"id": "minecraft:stick"}}',
+        "data/a/recipe/broken.json": '{"ingredients": []}'})
+    result = check_packs([root])
+    errors = {(d.message, d.line) for d in result.of("error")}
+    assert errors == {("unknown loot table a:gone (advancement reward)", 10),
+                      ("unknown recipe a:nope (advancement reward)", 16),
+                      ("recipe a:broken: missing the string 'type'", 1)}
+    assert [d.message.split(":")[0:2] for d in result.of("warning")] == [["unknown loot table lib", "bonus (advancement reward)"]]
+
+
 def test_predicates_must_exist_unless_inline(tmp_path):
     root = write(tmp_path / "p", {**LOAD, fn("load"): (
         "execute if predicate a:known run say 1\nexecute if predicate a:unknown run say 2\n"

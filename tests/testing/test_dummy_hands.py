@@ -99,6 +99,29 @@ def test_an_empty_knowledge_book_is_consumed_and_fails(tmp_path):
     assert "cannot use that item" in "\n".join(result.details)
 
 
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_knowledge_book_teaches_its_recipes(tmp_path, backend):
+    """KnowledgeBookItem.use: consumed, then every listed recipe must exist (else FAIL, logged
+    "Invalid recipe"); the player learns them (ServerPlayer.awardRecipes) and used:knowledge_book
+    counts; the use consumes the action."""
+    recipe = json.dumps({"type": "minecraft:crafting_shapeless", "ingredients": ["minecraft:stick"],
+                         "result": {"id": "minecraft:stick"}})
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add used minecraft.used:minecraft.knowledge_book\n"
+        "give @s knowledge_book[recipes=['demo:wand']]\n"
+        "give @s knowledge_book[recipes=['demo:wand','demo:gone']]\n"
+        "dummy @s use item\n"
+        "assert entity @s[nbt={recipeBook:{recipes:['demo:wand']}},scores={used=1}]\n"
+        "assert not items entity @s hotbar.0 *\n"
+        "recipe take @s demo:wand\n"
+        "dummy @s selectslot 2\n"
+        "execute store success score #ok used run dummy @s use item\n"
+        "assert not entity @s[nbt={recipeBook:{recipes:['demo:wand']}}]\n"
+        "assert not items entity @s hotbar.1 *\n"), files={"demo/recipe/wand.json": recipe}, pack_format=61,
+        backend=backend)
+    assert result.status == "passed", result.report()
+
+
 USING = {
     "demo/advancement/using.json": json.dumps({
         "criteria": {"c": {"trigger": "minecraft:using_item",
