@@ -10,7 +10,7 @@
   (``container.*``, ``armor.*`` ...): the name and the slot ids it stands for (SlotRanges).
 - ``component_problem``: a data component id checked against the release's data component types
   (DataComponents' registry, :mod:`.gamedata`); ``SUB_PREDICATES``: the ``~`` predicates
-  (ItemSubPredicates).
+  (ItemSubPredicates), ``sub_predicate_registered(name, version)``.
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21): commands/arguments/item/ItemParser.java,
 ItemPredicateArgument.java, ComponentPredicateParser.java, world/inventory/SlotRanges.java,
@@ -95,6 +95,11 @@ SUB_PREDICATES: dict[str, codecs.Shape] = {f"minecraft:{name}": shape for name, 
 # list up to 1.21.7 (the release between that added it is unconfirmed: read from 1.21.11)
 SUB_PREDICATES_SINCE: dict[str, Version] = {"minecraft:jukebox_playable": (1, 21, 0),
                                             "minecraft:villager/variant": (1, 21, 11)}
+
+
+def sub_predicate_registered(name: str, version: Version) -> bool:
+    """Whether the release registers item sub-predicate ``name`` (namespaced)."""
+    return name in SUB_PREDICATES and version >= SUB_PREDICATES_SINCE.get(name, COMPONENTS_VERSION)
 
 
 def component_problem(name: str, version: Version) -> tuple[str, str] | None:
@@ -263,7 +268,7 @@ def _component_id(r: Reader) -> str:
 
 def _check_component(r: Reader, name: str, start: int, sub_predicate: bool = False) -> None:
     if sub_predicate:
-        if name not in SUB_PREDICATES or r.version < SUB_PREDICATES_SINCE.get(name, COMPONENTS_VERSION):
+        if not sub_predicate_registered(name, r.version):
             r.fail(f"unknown item sub-predicate '{name}'", start)
         return
     problem = component_problem(name, r.version)

@@ -31,7 +31,7 @@ from typing import Callable
 
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.items import SUB_PREDICATES_SINCE
+from mcfunction_parser.items import sub_predicate_registered
 from mcfunction_parser.nbt import Compound, List, String
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
@@ -104,9 +104,9 @@ def codec_matches(predicate: Compound, stack: ItemStack, resources, version: Ver
 def sub_predicate(name: str, value, stack: ItemStack, resources, version: Version) -> bool:
     """ItemSubPredicate.matches of ``name`` (namespaced) with its ``value`` as NBT."""
     entry = SUB_PREDICATES.get(name)
-    if entry is None or tuple(version) < entry[0]:
+    if entry is None or not sub_predicate_registered(name, tuple(version)):
         raise Unmodelled(f"the item sub-predicate '{name}~' (not one the game registers in this release)")
-    component, test = entry[1], entry[2]
+    component, test = entry
     if component is None:
         return test(value, stack, resources, version)
     found = stack.component(component)
@@ -301,11 +301,10 @@ def _villager_variant(value, variant, resources, version) -> bool:
     return _holders(value, "villager_type", _reference(variant), resources)
 
 
-# name -> (the first release it is registered in: mcfunction_parser.items.SUB_PREDICATES_SINCE,
-# else 1.20.5; the component it reads, None for the stack; its test)
-SUB_PREDICATES: dict[str, tuple[Version, str | None, Callable]] = {
-    f"minecraft:{name}": (SUB_PREDICATES_SINCE.get(f"minecraft:{name}", (1, 20, 5)),
-                          component and f"minecraft:{component}", test)
+# name -> (the component it reads, None for the stack; its test); which release registers each:
+# mcfunction_parser.items.sub_predicate_registered
+SUB_PREDICATES: dict[str, tuple[str | None, Callable]] = {
+    f"minecraft:{name}": (component and f"minecraft:{component}", test)
     for name, component, test in (
         ("damage", None, _damage),
         ("enchantments", None, _enchantments("minecraft:enchantments")),

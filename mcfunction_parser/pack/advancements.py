@@ -83,4 +83,5 @@ def problem(value: Any, version) -> tuple[str, str] | None:
 
 
 def validate(doc: JsonDocument, version, what: str, diagnostics: list[Diagnostic]) -> bool:
-    return conditions.report(doc, problem(doc.value, version), what, diagnostics)
+    return conditions.report(doc, problem(doc.value, version) or conditions.sub_predicate_problem(doc.value, version),
+                             what, diagnostics)

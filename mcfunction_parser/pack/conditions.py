@@ -16,6 +16,7 @@ from __future__ import annotations
 from typing import Any
 
 from mcfunction_parser import snbt
+from mcfunction_parser.items import COMPONENTS_VERSION, sub_predicate_registered
 from mcfunction_parser.diagnostics import ERROR, Diagnostic, Loc
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.pack.text import JsonDocument
@@ -98,9 +99,13 @@ def known_type(kind: str, version: Version) -> bool:
 def problem(value: Any, version: Version) -> tuple[str, str] | None:
     """Why the game refuses this predicate (a condition or a list of them): (message, the JSON
     string to point at), or None when it loads."""
+    return _structure_problem(value, version) or sub_predicate_problem(value, version)
+
+
+def _structure_problem(value: Any, version: Version) -> tuple[str, str] | None:
     if isinstance(value, list):
         for item in value:
-            found = problem(item, version)
+            found = _structure_problem(item, version)
             if found:
                 return found
         return None
@@ -124,17 +129,34 @@ def problem(value: Any, version: Version) -> tuple[str, str] | None:
         return f"unknown entity target {value['entity']!r} (expected one of: {', '.join(sorted(ENTITY_TARGETS))})", \
             str(value["entity"])
     if kind == "inverted":
-        return problem(value["term"], version)
+        return _structure_problem(value["term"], version)
     if kind in ("alternative", "any_of", "all_of"):
         if not isinstance(value["terms"], list):
             return f'"terms" of \'{raw}\' must be a list', "terms"
-        return problem(value["terms"], version)
+        return _structure_problem(value["terms"], version)
     return None
 
 
 def validate(doc: JsonDocument, version: Version, what: str, diagnostics: list[Diagnostic]) -> bool:
     """Check a predicate file (``what`` names it in the message)."""
     return report(doc, problem(doc.value, version), what, diagnostics)
+
+
+def sub_predicate_problem(value: Any, version: Version) -> tuple[str, str] | None:
+    """An item sub-predicate the release does not register, anywhere in ``value``: every
+    ``predicates`` object (1.20.5+) is read by the registry's dispatched map codec
+    (ItemSubPredicate.CODEC / DataComponentPredicate's), which refuses an unknown name."""
+    if isinstance(value, list):
+        return next(filter(None, (sub_predicate_problem(v, version) for v in value)), None)
+    if not isinstance(value, dict):
+        return None
+    subs = value.get("predicates")
+    if isinstance(subs, dict) and version >= COMPONENTS_VERSION:
+        for name in subs:
+            full = name if ":" in name else "minecraft:" + name
+            if not sub_predicate_registered(full, version):
+                return f"unknown item sub-predicate '{name}' in this release", name
+    return next(filter(None, (sub_predicate_problem(v, version) for v in value.values())), None)
 
 
 def report(doc: JsonDocument, found: tuple[str, str] | None, what: str, diagnostics: list[Diagnostic]) -> bool:

@@ -103,3 +103,24 @@ def test_advancements_load_with_their_criteria(tmp_path):
     assert messages == ["advancement a:bad fails to load: unknown criterion trigger 'minecraft:flying'",
                         "advancement a:req fails to load: requirements name 'y', which is not a criterion"]
     assert list(loaded.advancement_rewards) == ["a:r"]
+
+
+def test_an_item_sub_predicate_the_release_lacks_refuses_the_file(tmp_path):
+    # ItemSubPredicate.CODEC is a dispatched map over the registry: an unknown name fails the whole
+    # file (custom_name is a component, not a sub-predicate; villager/variant comes with 1.21.11)
+    def tool(subs):
+        return json.dumps({"condition": "minecraft:match_tool", "predicate": {"predicates": subs}})
+
+    pack = write_pack(tmp_path / "p", {
+        "data/a/predicate/ok.json": tool({"minecraft:container": {}, "potion_contents": "minecraft:water"}),
+        "data/a/predicate/name.json": tool({"minecraft:custom_name": {}}),
+        "data/a/predicate/villager.json": tool({"villager/variant": "minecraft:desert"}),
+        "data/a/advancement/inv.json": json.dumps({"criteria": {"t": {
+            "trigger": "minecraft:inventory_changed", "conditions": {"items": [{"predicates": {"nope": {}}}]}}}}),
+    }, meta(48))
+    loaded = load_packs([pack])
+    assert set(loaded.predicates) == {"a:ok"} and not loaded.advancements
+    assert sorted(d.message for d in loaded.errors) == [
+        "advancement a:inv fails to load: unknown item sub-predicate 'nope' in this release",
+        "predicate a:name fails to load: unknown item sub-predicate 'minecraft:custom_name' in this release",
+        "predicate a:villager fails to load: unknown item sub-predicate 'villager/variant' in this release"]
