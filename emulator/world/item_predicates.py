@@ -36,7 +36,7 @@ from mcfunction_parser.nbt import Compound, List, String
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure, Unmodelled
-from emulator.world.items import ItemStack, enchantment_levels, from_nbt
+from emulator.world.items import COMMON_COMPONENTS, ItemStack, enchantment_levels, from_nbt
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
 from emulator.world.text import plain_value, read_component
 
@@ -129,7 +129,7 @@ def _enchantments(key: str):
     def test(value, stack: ItemStack, resources, version) -> bool:
         """ItemEnchantmentsPredicate: every EnchantmentPredicate of the list is in the component
         (every item has ``enchantments``, empty by default: DataComponents.COMMON_ITEM_COMPONENTS)."""
-        if key != "minecraft:enchantments" and stack.component(key) is None:
+        if _common(stack, key) is None:
             return False
         levels = enchantment_levels(stack, key)
         return isinstance(value, List) and all(
@@ -317,14 +317,22 @@ SUB_PREDICATES: dict[str, tuple[str | None, Callable]] = {
         ("fireworks", "fireworks", _fireworks),
         ("writable_book_content", "writable_book_content", _writable_book),
         ("written_book_content", "written_book_content", _written_book),
-        # every item has attribute_modifiers, empty by default (DataComponents.COMMON_ITEM_COMPONENTS)
-        ("attribute_modifiers", None, lambda v, s, r, ver: _attribute_modifiers(
-            v, s.component("minecraft:attribute_modifiers") or List(), r, ver)),
+        ("attribute_modifiers", None, lambda v, s, r, ver: _common(s, "minecraft:attribute_modifiers") is not None
+         and _attribute_modifiers(v, _common(s, "minecraft:attribute_modifiers"), r, ver)),
         ("trim", "trim", _trim),
         ("jukebox_playable", "jukebox_playable", _jukebox_playable),
         ("villager/variant", "villager/variant", _villager_variant),
     )
 }
+
+
+def _common(stack: ItemStack, name: str):
+    """The stack's component, where every item has ``enchantments`` and ``attribute_modifiers``
+    (empty by default: DataComponents.COMMON_ITEM_COMPONENTS) unless its patch removed them."""
+    found = stack.component(name)
+    if found is None and name in COMMON_COMPONENTS and "!" + name not in stack.patch:
+        return Compound()
+    return found
 
 
 # ---------------------------------------------------------------------- collections

@@ -31,6 +31,10 @@ from emulator.world.nbt_ops import copy_tag, is_numeric, tags_equal
 
 AIR = "minecraft:air"
 COMPONENTS_VERSION = (1, 20, 5)
+# DataComponents.COMMON_ITEM_COMPONENTS besides max_stack_size: every item has them (their values
+# are not modelled: only that a patch can remove them)
+COMMON_COMPONENTS = frozenset(f"minecraft:{name}" for name in ("lore", "enchantments", "repair_cost",
+                                                               "attribute_modifiers", "rarity"))
 
 _TOOL_DURABILITY = {"wooden": 59, "stone": 131, "copper": 190, "iron": 250, "golden": 32, "diamond": 1561, "netherite": 2031}
 _TOOLS = ("sword", "pickaxe", "axe", "shovel", "hoe")
@@ -165,9 +169,10 @@ def set_component(stack: ItemStack, name: str, value) -> None:
 
 
 def remove_component(stack: ItemStack, name: str) -> None:
-    """PatchedDataComponentMap.remove: a removal is kept only for a default component."""
+    """PatchedDataComponentMap.remove: a removal is kept only for a default component (every item's
+    :data:`COMMON_COMPONENTS` included)."""
     stack.patch.pop(name, None)
-    if name in defaults(stack.id):
+    if name in defaults(stack.id) or name in COMMON_COMPONENTS:
         stack.patch["!" + name] = Compound()
 
 

@@ -184,6 +184,9 @@ def test_attribute_modifiers_trims_songs_and_villager_variants():
                         "amount:{min:4.0},slot:'mainhand',id:'x:y'}]}}]")
     assert not holds(sword, "*[attribute_modifiers~{modifiers:{contains:[{operation:'add_multiplied_base'}]}}]")
     assert holds("stone", "*[attribute_modifiers~{}]") and not holds("stone", "*[attribute_modifiers~{modifiers:{size:1}}]")
+    # ... unless the patch removed it (the removal of a default is kept: PatchedDataComponentMap)
+    assert not holds("stone[!attribute_modifiers]", "*[attribute_modifiers~{}]")
+    assert holds("stone", "*[enchantments~[]]") and not holds("stone[!enchantments]", "*[enchantments~[]]")
     # ItemTrimPredicate: the material and pattern in their HolderSets; an inline material in none
     chest = "iron_chestplate[trim={material:'minecraft:gold',pattern:'minecraft:coast'}]"
     assert holds(chest, "*[trim~{material:'minecraft:gold',pattern:['minecraft:coast','minecraft:dune']}]")
