@@ -45,7 +45,7 @@ from typing import Callable
 
 import numpy as np
 
-from emulator.world import advancement_progress, entity_predicate_format, inventories, living, sight
+from emulator.world import advancement_progress, entity_predicate_format, inventories, living, recipes, sight
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -492,8 +492,8 @@ def _type_specific(value: dict, ctx: LootContext, entity: Entity) -> bool:
 
 
 def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
-    """PlayerPredicate: the entity must be a player; gamemode, level, advancements and looking_at
-    (:func:`emulator.world.sight.looked_at`) are modelled."""
+    """PlayerPredicate: the entity must be a player; gamemode, level, advancements, recipes (its
+    recipe book) and looking_at (:func:`emulator.world.sight.looked_at`) are modelled."""
     if not entity.is_player:
         return False
     for key, wanted in value.items():
@@ -508,6 +508,10 @@ def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
                 return False
         elif key == "advancements":
             if not advancement_progress.matches(ctx.state, entity, wanted):
+                return False
+        elif key == "recipes":  # RecipeBook.contains of each id, equal to the wanted boolean
+            book = recipes.known(entity)
+            if any((_id(r) in book) != bool(expected) for r, expected in wanted.items()):
                 return False
         elif key == "looking_at":  # EntityPredicate.matches(player, entity): from the player's position
             seen = sight.looked_at(ctx.state, entity)

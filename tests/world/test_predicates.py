@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import pytest
 
-from emulator.world import inventories, loot, predicates
+from emulator.world import inventories, loot, predicates, recipes
 from emulator.world.blocks import BlockSpec, parse_block, with_defaults
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
@@ -370,3 +370,13 @@ def test_location_fields_the_world_does_not_keep_are_reported(state, field, valu
         holds(check, ctx(state))
     check["predicate"]["block"] = {"blocks": "minecraft:stone"}
     assert not holds(check, ctx(state))
+
+
+def test_the_player_predicate_reads_the_recipe_book(state):
+    # PlayerPredicate.matches: each recipe's presence in the player's RecipeBook equals its boolean
+    state.resources = Resources(recipes={"t:wand": "minecraft:crafting_shapeless"})
+    player = state.entities.add_player("Alex", (0.0, 0.0, 0.0))
+    recipes.award(player, ["t:wand"], state.resources, lambda recipe_id: None)
+    check = lambda wanted: holds({"condition": "entity_properties", "entity": "this", "predicate": {  # noqa: E731
+        "type_specific": {"type": "player", "recipes": wanted}}}, ctx(state, this=player))
+    assert check({"t:wand": True, "t:staff": False}) and not check({"t:wand": False}) and not check({"t:staff": True})
