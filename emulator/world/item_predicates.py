@@ -253,20 +253,18 @@ def _attribute_modifiers(value, modifiers, resources, version) -> bool:
     if not isinstance(value, Compound):
         return False
     entries = modifiers.get("modifiers") if isinstance(modifiers, Compound) else modifiers
-    return "modifiers" not in value or _collection(value["modifiers"], _list(entries), _modifier_matches)
+    return "modifiers" not in value or _collection(value["modifiers"], _list(entries),
+                                                   lambda p, entry: _modifier_matches(p, entry, resources))
 
 
-def _modifier_matches(predicate, entry) -> bool:
-    """EntryPredicate.test: ``attribute`` (a HolderSet: ids here; a #tag is not modelled), ``id``,
-    ``amount`` (MinMaxBounds.Doubles), ``operation``, ``slot`` (the entry's is ``any`` when absent)."""
+def _modifier_matches(predicate, entry, resources) -> bool:
+    """EntryPredicate.test: ``attribute`` (a HolderSet), ``id``, ``amount`` (MinMaxBounds.Doubles),
+    ``operation``, ``slot`` (the entry's is ``any`` when absent)."""
     if not isinstance(predicate, Compound) or not isinstance(entry, Compound):
         return False
-    if "attribute" in predicate:
-        wanted = predicate["attribute"]
-        if isinstance(wanted, str) and wanted.startswith("#"):
-            raise Unmodelled(f"attribute tags in an item attribute modifier predicate ({wanted})")
-        if not _holders(wanted, "attribute", _id(str(entry.get("type", ""))), None):
-            return False
+    if "attribute" in predicate and not _holders(predicate["attribute"], "attribute",
+                                                 _id(str(entry.get("type", ""))), resources):
+        return False
     if "id" in predicate and _id(str(predicate["id"])) != _id(str(entry.get("id", ""))):
         return False
     if not _in_bounds(predicate.get("amount"), _number(entry.get("amount")), True):
