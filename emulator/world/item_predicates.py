@@ -32,7 +32,7 @@ from typing import Callable
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.items import sub_predicate_registered
-from mcfunction_parser.nbt import Compound, List, String
+from mcfunction_parser.nbt import Compound, List
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure, Unmodelled
