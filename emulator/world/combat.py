@@ -324,10 +324,10 @@ def tick_dead(state) -> None:
 
 
 def respawn_keeps(state, old, new) -> None:
-    """ServerPlayer.restoreFrom (not keeping everything): the ender chest, the tags, and with
-    ``keepInventory`` (or from a spectator) the inventory and experience."""
+    """ServerPlayer.restoreFrom (not keeping everything): the ender chest, the recipe book, the
+    tags, and with ``keepInventory`` (or from a spectator) the inventory and experience."""
     new.tags = set(old.tags)
-    for key in ("EnderItems", "LastDeathLocation"):
+    for key in ("EnderItems", "LastDeathLocation", "recipeBook"):
         if key in old.data:
             new.data[key] = old.data[key]
     if state.gamerules.get("keepInventory") == "true" or old.gamemode == "spectator":

@@ -80,6 +80,20 @@ def test_a_dummy_dies_drops_its_inventory_and_experience_and_respawns(tmp_path, 
     assert result.status == "passed", result.report()
 
 
+def test_the_recipe_book_outlives_death(tmp_path):
+    # ServerPlayer.restoreFrom: recipeBook.copyOverData whatever keepInventory says
+    recipe = json.dumps({"type": "minecraft:crafting_shapeless", "ingredients": ["minecraft:stick"],
+                         "result": {"id": "minecraft:stick"}})
+    result = run(tmp_path, (
+        "dummy Alex spawn\n"
+        "recipe give Alex demo:wand\n"
+        "kill Alex\n"
+        "dummy Alex respawn\n"
+        "assert entity @a[name=Alex,nbt={recipeBook:{recipes:['demo:wand']}}]\n"), files={
+        "demo/recipe/wand.json": recipe})
+    assert result.status == "passed", result.report()
+
+
 def test_keep_inventory_keeps_items_and_experience_through_death(tmp_path):
     result = run(tmp_path, (
         "gamerule keepInventory true\n"
