@@ -275,3 +275,27 @@ def test_sub_predicates_as_packs_use_them(tmp_path):
                               "execute store result score #healing v run clear Steve *[potion_contents~'minecraft:healing']\n"
                               "execute store result score #author v as Steve if predicate t:author\n"}, players=STEVE)
     assert _scores(emu) == {"#key": 1, "#food": 1, "#healing": 1, "#author": 1}
+
+
+def test_death_loot_reads_the_damage_source(tmp_path):
+    # a mob's death loot rolls with its damage source (LivingEntity.dropFromLootTable:
+    # DAMAGE_SOURCE); DamageSourceCondition reads its type's tags, source entity and directness
+    tag = {"values": ["minecraft:player_attack"]}
+    table = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "minecraft:emerald"}], "conditions": [
+        {"condition": "minecraft:damage_source_properties", "predicate": {
+            "tags": [{"id": "t:melee", "expected": True}], "is_direct": True,
+            "source_entity": {"type": "minecraft:player", "distance": {"horizontal": {"max": 5}}}}}]},
+        {"rolls": 1, "entries": [{"type": "item", "name": "minecraft:bone"}], "conditions": [
+            {"condition": "minecraft:damage_source_properties", "predicate": {"source_entity": {}}}]}]}
+    _json(tmp_path / "pack", "data/minecraft/loot_table/entities/zombie.json", table)
+    _json(tmp_path / "pack", "data/t/tags/damage_type/melee.json", tag)
+    emu = run_both(tmp_path, {"t:main": SETUP + "summon zombie 1 64 0 {Tags:['a']}\nsummon zombie 9 64 0 {Tags:['b']}\n"
+                              "summon zombie 1 64 2 {Tags:['c']}\n"
+                              "damage @e[tag=a,limit=1] 100 minecraft:player_attack by Steve\n"
+                              "damage @e[tag=b,limit=1] 100 minecraft:player_attack by Steve\n"
+                              "damage @e[tag=c,limit=1] 100 minecraft:magic\n"
+                              "execute store result score #emeralds v if entity @e[type=item,nbt={Item:{id:'minecraft:emerald'}}]\n"
+                              "execute store result score #bones v if entity @e[type=item,nbt={Item:{id:'minecraft:bone'}}]\n"},
+                   players=STEVE)
+    # a: near, by the player (emerald and bone); b: too far for the emerald (bone only); c: no entity
+    assert _scores(emu) == {"#emeralds": 1, "#bones": 2}
