@@ -20,7 +20,7 @@ FILES = {
     "demo/test/vanilla_tag.mcfunction": "summon pig ~ ~ ~\nassert entity @e[type=#minecraft:logs]\n",
     "demo/test/condition.mcfunction": "# @dummy ~ ~ ~\nassert predicate demo:equipped\n",
     "demo/predicate/equipped.json": json.dumps({"condition": "minecraft:entity_properties", "entity": "this",
-                                                "predicate": {"targeted_entity": {}}}),
+                                                "predicate": {"location": {"light": {"light": {"min": 1}}}}}),
 }
 
 
@@ -42,7 +42,7 @@ def test_unmodelled_effects_make_tests_inconclusive_with_the_reason(tmp_path, ba
     assert results["demo:weather"].message.endswith("the test passed")
     assert "failed (boom)" in results["demo:weather_fails"].message
     assert "#minecraft:logs is not known" in results["demo:vanilla_tag"].message
-    assert "entity predicate field 'targeted_entity'" in results["demo:condition"].message
+    assert "location predicate field 'light'" in results["demo:condition"].message
     assert summary.line() == "1 passed, 0 failed, 5 inconclusive"
     skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='weather']/skipped")
     assert skipped is not None and skipped.get("type") == "inconclusive"
