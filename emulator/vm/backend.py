@@ -309,7 +309,7 @@ class NumbaBackend:
             code, starts, floats, self.regs, self.frames, sb.values, sb.present, sb.locked, sb.alive, sb.writable,
             sb.trigger, self.counts, self.totals, self.active, self.ovf, self.cints, self.cfloats, sels, sfloats, tests,
             table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack, self.coll,
-            self.as_cache, self.batch, self.leaves.meta, self.leaves.values)
+            self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random)
         self.loop = variants.loop_for(self.program.opcodes)
         self._resume = _entry_point(self.loop.run, self.machine)
         self._world = (sb.values, table.ints, table.tags, table.count)

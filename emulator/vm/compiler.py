@@ -2,8 +2,8 @@
 
 What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
 ``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
-``@e @a @s @p @n`` with type, any number of tags, scores, positions, volumes, distance, limit and
-sort by distance), ``tag SEL add|remove``, ``enable``; ``if|unless score`` on named holders and
+``@e @a @s @p @n @r`` with type, any number of tags, scores, name, team, gamemode, level, rotations,
+positions, volumes, distance, limit and sort), ``tag SEL add|remove``, ``enable``; ``if|unless score`` on named holders and
 ``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as SEL``
 and ``positioned X Y Z`` (the VM makes their contexts), ``tp [SEL] X Y Z`` (``~`` and ``^`` too),
 ``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
@@ -24,7 +24,7 @@ Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod
     execute as @e[tag=x] at @s run tp @s ~ ~1 ~
                                        CMD ->end; ASSTAGE sel; ASSTAGE sel' at; STAGESDONE; TP sel' k 7; end: ENDCMD
                                        (sel' is @s; floats[k:k+3] = 0, 1, 0; 7: all three relative)
-    execute as @e[name=x] run say hi
+    execute as @e[nbt={}] run say hi
                                        CMD ->end; HOSTSTAGE; STAGESDONE; HOST; end: ENDCMD
 """
 from __future__ import annotations

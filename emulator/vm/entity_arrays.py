@@ -7,12 +7,14 @@ the scoreboard.
 
 Selectors the VM evaluates (:meth:`SelectorTables.selector`): ``@e @a @s @p @n`` with ``type``
 (``!``, and ``#`` tags the world's resources resolve fully), ``tag``
-(any number, ``!``, the empty ``tag=``), ``scores``, ``x y z``, ``dx dy dz`` volumes,
-``distance``, ``limit`` and ``sort=arbitrary|nearest|furthest``, each limited to the context's level
+(any number, ``!``, the empty ``tag=``), ``scores``, ``name``, ``team``, ``gamemode``, ``level``,
+``x_rotation``, ``y_rotation``, ``x y z``, ``dx dy dz`` volumes,
+``distance``, ``limit`` and ``sort`` (``@r`` and ``sort=random`` shuffle with the world's
+``java.util.Random``, :mod:`emulator.world.java_random`), each limited to the context's level
 or searching every level as ``selectors.SelectorQuery`` does. A selector row and its floats are
 laid out as :mod:`emulator.vm.loop` describes (``S_*``, ``SF_*``); its tests are rows of ``tests``
-(``TEST_*``). Every other selector (``@r``, ``sort=random``, ``name``, ``nbt``, rotations,
-``gamemode``, ``level``, ``team``, ``predicate``) stays with the host (returns None).
+(``TEST_*``). Every other selector (``nbt``, ``predicate``, ``advancements``) stays with the
+host (returns None).
 """
 from __future__ import annotations
 
@@ -21,22 +23,26 @@ import math
 import numpy as np
 
 from mcfunction_parser import ast
+from emulator.world import mth
 from emulator.world.resources import Resources
-from emulator.world.entity_table import EntityTable
+from emulator.world.entity_table import EF_PITCH, EF_YAW, EI_GAMEMODE, EI_NAME, EI_TEAM, EI_XP, GAMEMODES, EntityTable
 from emulator.world.selectors import WORLD_LIMITING as _WORLD_LIMITING
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.vm.loop import (
     KIND_E, KIND_S, S_ALIVE, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, S_WORLD, SEL_WIDTH,
-    SF_BOX, SF_DHI, SF_DLO, SF_ORIGIN, SF_WIDTH, SORT_ARBITRARY, SORT_FURTHEST, SORT_NEAREST, TEST_MEMBER, TEST_NOTAGS,
-    TEST_SCORE, TEST_TAG, TEST_TYPE, TEST_TYPES,
+    SF_BOX, SF_DHI, SF_DLO, SF_ORIGIN, SF_ROT, SF_WIDTH, SORT_ARBITRARY, SORT_FURTHEST, SORT_NEAREST, SORT_RANDOM,
+    TEST_INT, TEST_MEMBER, TEST_NOTAGS, TEST_RANGE, TEST_ROT, TEST_SCORE, TEST_TAG, TEST_TYPE, TEST_TYPES,
 )
 
-# (limit, players only, sort) per selector variable (selectors._VARIABLES); @r sorts randomly: host
+# (limit, players only, sort) per selector variable (selectors._VARIABLES)
 _VARIABLES = {"a": (INT_MAX, True, SORT_ARBITRARY), "e": (INT_MAX, False, SORT_ARBITRARY),
-              "n": (1, False, SORT_NEAREST), "p": (1, True, SORT_NEAREST), "s": (1, False, SORT_ARBITRARY)}
-_SORTS = {"arbitrary": SORT_ARBITRARY, "nearest": SORT_NEAREST, "furthest": SORT_FURTHEST}
+              "n": (1, False, SORT_NEAREST), "p": (1, True, SORT_NEAREST), "r": (1, True, SORT_RANDOM),
+              "s": (1, False, SORT_ARBITRARY)}
+_SORTS = {"arbitrary": SORT_ARBITRARY, "nearest": SORT_NEAREST, "furthest": SORT_FURTHEST, "random": SORT_RANDOM}
 _AXES = {"x": 0, "y": 1, "z": 2}
 _DELTAS = {"dx": 0, "dy": 1, "dz": 2}
+# the rotation arguments: (the entity's column, the first of their two bounds in the selector's floats)
+_ROTATIONS = {"x_rotation": (EF_PITCH, SF_ROT), "y_rotation": (EF_YAW, SF_ROT + 2)}
 
 
 class SelectorTables:
@@ -64,8 +70,14 @@ class SelectorTables:
         floats = [math.nan] * 3 + [0.0] * (SF_WIDTH - 3)
         deltas, distance, tests = {}, None, []
         for arg in target.args:
-            if arg.key == "type" and arg.value == "minecraft:player" and not arg.negated:
-                row[S_PLAYERS] = 1  # a selector of players only searches the player list
+            if (arg.key == "type" and arg.value == "minecraft:player" and not arg.negated) or arg.key in (
+                    "gamemode", "level"):
+                row[S_PLAYERS] = 1  # a selector of players only searches the player list (setIncludesEntities)
+            if arg.key in _ROTATIONS:
+                column, first = _ROTATIONS[arg.key]
+                floats[first:first + 2] = _rotation_bounds(arg.value)
+                tests.append((TEST_ROT, column, first, 0))
+                continue
             tested = self._test(arg, tests)
             if tested is None:
                 return None
@@ -117,6 +129,16 @@ class SelectorTables:
             tests.extend((TEST_MEMBER, self.table.type_id(m), 0, 0) for m in members)
         elif arg.key == "type":
             tests.append((TEST_TYPE, self.table.type_id(arg.value), int(arg.negated), 0))
+        elif arg.key == "name":  # Entity.getName().getString()
+            tests.append((TEST_INT, EI_NAME, self.table.name_id(arg.value), int(arg.negated)))
+        elif arg.key == "team":  # LivingEntity only; "" is no team
+            tests.append((TEST_INT, EI_TEAM, self.table.name_id(arg.value or None), int(arg.negated) | 2))
+        elif arg.key == "gamemode":
+            tests.append((TEST_INT, EI_GAMEMODE, GAMEMODES.index(arg.value), int(arg.negated)))
+        elif arg.key == "level":
+            lo = INT_MIN if arg.value.lo is None else max(INT_MIN, arg.value.lo)
+            hi = INT_MAX if arg.value.hi is None else min(INT_MAX, arg.value.hi)
+            tests.append((TEST_RANGE, EI_XP, lo, hi))
         elif arg.key == "scores":
             for objective, bounds in arg.value:
                 lo = INT_MIN if bounds.lo is None else max(INT_MIN, bounds.lo)
@@ -153,3 +175,10 @@ class SelectorTables:
             tests = np.array(self.test_rows or [[0] * 4], dtype=np.int64).reshape(-1, 4)
             self._arrays = (sels, floats, tests)
         return self._arrays
+
+
+def _rotation_bounds(bounds: ast.FloatRange) -> list[float]:
+    """EntitySelectorParser.createRotationPredicate's bounds: wrapped floats, a missing low 0 and
+    a missing high 359 (the test wraps the entity's angle as a double and compares)."""
+    return [float(mth.wrap_degrees_f(0.0 if bounds.lo is None else bounds.lo)),
+            float(mth.wrap_degrees_f(359.0 if bounds.hi is None else bounds.hi))]

@@ -49,7 +49,7 @@ MACROS = {
     "RESULT": "has = 1\nok = {0}\nval = {1}",
     # {0} = the slots selector {1} finds in this context, written to selbuf[{2}:]
     "SELECT": "{0} = _select({1}, cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,\n"
-              "            efloats, etags, eorder, values, present, alive_obj, selbuf, {2})",
+              "            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, {2})",
     # BuildContexts: a stage reaching the fork limit fails the command
     "FORK_LIMIT": "alive = 0\npc = abort\nFAIL(ERR_FORK_LIMIT, forklimit)",
 }

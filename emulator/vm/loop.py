@@ -21,7 +21,7 @@ sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, the contexts (``cin
 executor's holder and slot, dimension, anchor and store bindings, ``CI_*``; ``cfloats``: its position
 and rotation, ``CF_*``; the first ``R_NCTX`` rows are used), and the entities:
 the world's own arrays (:mod:`emulator.world.entity_table`: ``eints``, ``efloats``, ``etags``, the
-living slots ``eorder``), read and written in place, with the selector tables ``sels``/``tests``
+living slots ``eorder``, the state of the random sorts ``erandom``), read and written in place, with the selector tables ``sels``/``tests``
 (:mod:`emulator.vm.entity_arrays`) and the scratch ``selbuf`` for what a selector finds; and the
 numbers of command storage the program names, ``lmeta``/``lvalues`` (:mod:`emulator.vm.storage_leaves`). Registers that
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
@@ -73,7 +73,7 @@ from numba.core import cgutils
 from numba.experimental import structref
 from numba.extending import intrinsic, overload
 
-from emulator.world import mth, rotation, semantics
+from emulator.world import java_random, mth, rotation, semantics
 
 WIDTH = 8
 
@@ -233,7 +233,12 @@ EI_HOLDER = 1
 EI_ALIVE = 2
 EI_DIM = 3
 EI_JOIN = 4
-EI_WIDTH = 5
+EI_NAME = 5
+EI_TEAM = 6
+EI_LIVING = 7
+EI_GAMEMODE = 8
+EI_XP = 9
+EI_WIDTH = 10
 EF_X = 0
 EF_Y = 1
 EF_Z = 2
@@ -256,16 +261,19 @@ MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
 # (the entities' EI_DIM; else every level: entities in eorder, which is grouped by level, players
 # in the order they joined, EI_JOIN); its floats (sfloats): the
 # origin (NaN: the context's position), the box's low and high corners from the origin, the
-# squared distance bounds. A test row: [TEST_SCORE, objective, lo, hi], [TEST_TYPE, type id, negated, 0],
-# [TEST_TAG, tag, negated, 0], [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all), or [TEST_TYPES,
-# count, negated, 0] followed by `count` rows [TEST_MEMBER, type id, 0, 0] (`type=#tag`)
+# squared distance bounds, the rotation tests' wrapped bounds (x_rotation low, high; y_rotation's). A
+# test row: [TEST_SCORE, objective, lo, hi], [TEST_TYPE, type id, negated, 0],
+# [TEST_TAG, tag, negated, 0], [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all), [TEST_TYPES,
+# count, negated, 0] followed by `count` rows [TEST_MEMBER, type id, 0, 0] (`type=#tag`), [TEST_INT,
+# column of eints, value, negated + 2 if only living entities pass] (`name`, `team`, `gamemode`),
+# [TEST_RANGE, column of eints, lo, hi] (`level`), [TEST_ROT, column of efloats, column of sfloats, 0]
 SEL_WIDTH = 10
 S_KIND, S_LIMIT, S_TESTS, S_NTESTS, S_SORT, S_PLAYERS, S_BOX, S_DIST, S_WORLD, S_ALIVE = range(SEL_WIDTH)
-SF_WIDTH = 11
-SF_ORIGIN, SF_BOX, SF_DLO, SF_DHI = 0, 3, 9, 10
+SF_WIDTH = 15
+SF_ORIGIN, SF_BOX, SF_DLO, SF_DHI, SF_ROT = 0, 3, 9, 10, 11
 KIND_E, KIND_S = range(2)
-SORT_ARBITRARY, SORT_NEAREST, SORT_FURTHEST = range(3)
-TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS, TEST_TYPES, TEST_MEMBER = range(6)
+SORT_ARBITRARY, SORT_NEAREST, SORT_FURTHEST, SORT_RANDOM = range(4)
+TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS, TEST_TYPES, TEST_MEMBER, TEST_INT, TEST_RANGE, TEST_ROT = range(9)
 POS_LIMIT_XZ, POS_LIMIT_Y = 3.0000512e7, 2.0e7  # Entity.load clamps positions to these
 MAX_LOADED_MOTION = 10.0  # and drops motion components past this
 # OP_TP's flags besides the relative axes (1, 2, 4): local coordinates; `tp POS` (the executor,
@@ -351,6 +359,9 @@ def _report(ovf, novf, pc, kind, a, b, exact):
     return novf + 1
 
 
+_wrap_degrees_d = njit(cache=True)(mth.wrap_degrees_d)
+
+
 @njit(cache=True, inline="always")
 def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values, present, alive_obj):
     """EntitySelector's predicate for one entity (``selectors.SelectorQuery``'s tests): players
@@ -385,6 +396,19 @@ def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags,
                 if etags[slot, w] != 0:
                     none = False
             if none == (tests[t, 1] != 0):
+                return False
+        elif kind == TEST_INT:
+            if (tests[t, 3] & 2 and eints[slot, EI_LIVING] == 0) or (
+                    (eints[slot, tests[t, 1]] == tests[t, 2]) == (tests[t, 3] & 1 != 0)):
+                return False
+        elif kind == TEST_RANGE:
+            if not (tests[t, 2] <= eints[slot, tests[t, 1]] <= tests[t, 3]):
+                return False
+        elif kind == TEST_ROT:  # EntitySelectorParser.createRotationPredicate: wrapped bounds, a wrapped angle
+            angle = _wrap_degrees_d(efloats[slot, tests[t, 1]])
+            lo = sfloats[sel, tests[t, 2]]
+            hi = sfloats[sel, tests[t, 2] + 1]
+            if not ((angle >= lo or angle <= hi) if lo > hi else (lo <= angle <= hi)):
                 return False
         else:
             o = tests[t, 1]
@@ -422,13 +446,17 @@ def _tag_count(etags, slot):
     return n
 
 
+_shuffle = njit(cache=True)(java_random.shuffle)
+
+
 @njit(cache=True)
 def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etags, order, values, present, alive_obj,
-            out, off):
+            erandom, out, off):
     """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server; ``pos``
     and ``dim``: the context's position and level), written to ``out[off:]`` in the game's order
     (unsorted: the store's order, or for players not limited to a level the order they joined, cut
-    at the limit; sorted by distance: stable, then cut); their count."""
+    at the limit; sorted by distance: stable, then cut; random: Collections.shuffle with the
+    world's java.util.Random ``erandom``, then cut); their count."""
     ox = pos[0] if np.isnan(sfloats[sel, SF_ORIGIN]) else sfloats[sel, SF_ORIGIN]
     oy = pos[1] if np.isnan(sfloats[sel, SF_ORIGIN + 1]) else sfloats[sel, SF_ORIGIN + 1]
     oz = pos[2] if np.isnan(sfloats[sel, SF_ORIGIN + 2]) else sfloats[sel, SF_ORIGIN + 2]
@@ -457,7 +485,9 @@ def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etag
         for i in range(n):
             keys[i] = eints[out[off + i], EI_JOIN]
         out[off:off + n] = out[off:off + n][np.argsort(keys, kind="mergesort")]
-    if sort != SORT_ARBITRARY and n > 1:  # List.sort: stable, by the squared distance (negated: furthest)
+    if sort == SORT_RANDOM and n > 1:
+        _shuffle(erandom, out, off, n)
+    elif sort != SORT_ARBITRARY and n > 1:  # List.sort: stable, by the squared distance (negated: furthest)
         keys = np.empty(n)
         for i in range(n):
             e = out[off + i]
@@ -587,7 +617,7 @@ def _jittable(fn):
     overload(fn)(typing)
 
 
-for _fn in (semantics.double_to_int, semantics.double_to_short, semantics.double_to_byte, mth.java_float_rem, mth._table_index, mth.sin_of, mth.cos_of):
+for _fn in (java_random.next_bits, java_random.next_int, semantics.double_to_int, semantics.double_to_short, semantics.double_to_byte, mth.java_float_rem, mth._table_index, mth.sin_of, mth.cos_of):
     _jittable(_fn)
 _wrap_degrees_f = njit(cache=True)(mth.wrap_degrees_f)
 _clamp_f = njit(cache=True)(mth.clamp_f)
@@ -718,7 +748,7 @@ def _store_field(efloats, e, column, v):
 MACHINE_FIELDS = ("code", "func_start", "floats", "regs", "frames", "values", "present", "locked", "alive_obj",
                   "writable", "trig", "counts", "totals", "active", "ovf", "cints", "cfloats", "sels", "sfloats",
                   "tests", "eints", "efloats", "etags", "eorder", "selbuf", "logbuf", "fstack", "coll", "as_cache",
-                  "batch", "lmeta", "lvalues")
+                  "batch", "lmeta", "lvalues", "erandom")
 
 
 @structref.register
@@ -737,11 +767,11 @@ structref.define_proxy(Machine, MachineType, MACHINE_FIELDS)
 @njit(cache=True)
 def new_machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
                 totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
-                logbuf, fstack, coll, as_cache, batch, lmeta, lvalues):
+                logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom):
     """A :class:`Machine` of these arrays (compiled and cached: the proxy's own constructor is not cached)."""
     return Machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
                    totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
-                   logbuf, fstack, coll, as_cache, batch, lmeta, lvalues)
+                   logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom)
 
 
 @njit(cache=True, error_model="numpy")
@@ -791,6 +821,7 @@ def run(m):
     batch = _borrowed(m.batch)
     lmeta = _borrowed(m.lmeta)
     lvalues = _borrowed(m.lvalues)
+    erandom = _borrowed(m.erandom)
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
     depth = regs[R_DEPTH]
@@ -1043,7 +1074,7 @@ def run(m):
                     counts[pc] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
                 passed = (n > 0) != (code[pc, 6] != 0)
                 fval = 0 if not passed else (1 if code[pc, 6] else n)  # `if` counts the entities, `unless` gives 1
             elif op == OP_IFLEAF:  # compareNbt of {K:N}: the same type and number; type 0: the path leads to a tag
@@ -1300,7 +1331,7 @@ def run(m):
                 val = n
             elif op == OP_TAG:
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
                 w = code[pc, 2] >> 6
                 m = np.int64(1) << (code[pc, 2] & 63)
                 many = etags.shape[1] * 64 > MAX_TAGS  # else no entity can reach the limit
@@ -1323,7 +1354,7 @@ def run(m):
                 pc += 1
             elif op == OP_TP:
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
                 pc += 1
                 crossing = False
                 for i in range(n):
@@ -1404,7 +1435,7 @@ def run(m):
                 pc += 1
             else:  # OP_LOG
                 n = _select(code[pc, 2], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
                 has = 1
                 ok = 1 if n else 0
                 val = n
@@ -1416,7 +1447,7 @@ def run(m):
             if alive:
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, selbuf, off)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, off)
                 for i in range(off, off + n):
                     selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
@@ -1425,7 +1456,7 @@ def run(m):
             n = 0
             if alive:
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
                 if 0 < n < forklimit and (regs[R_NCTX] + n > cints.shape[0] or regs[R_NFORK] + n > fstack.shape[0]):
                     status = ST_GROWCTX  # Python makes room, then the stage runs again
                     break

@@ -17,7 +17,8 @@ Public API
   dimension=OVERWORLD)`` (fails for players, outside the spawnable bounds, or on a duplicate UUID),
   ``add_player(name, pos, ..., dimension=OVERWORLD)``, ``move_to_level(entity, dimension)`` (a
   teleport between levels), ``kill(entity)``, ``by_uuid(uuid)``, ``by_holder(name)``, ``living()``,
-  ``players()`` (in join order), ``rng`` (a seeded ``random.Random`` for UUIDs and ``sort=random``).
+  ``players()`` (in join order), ``rng`` (a seeded ``random.Random`` for UUIDs); ``sort=random``
+  shuffles with the table's ``random``, seeded with the same seed.
 - ``in_spawnable_bounds(pos)``: ``Level.isInSpawnableBounds`` (summon and tp refuse positions outside).
 - ``add_tag(entity, name)`` / ``remove_tag(entity, name)``: the ``tag`` command's per-entity step
   (False when nothing changed; an entity holds at most 1024 tags).
@@ -45,12 +46,12 @@ from typing import Callable
 import numpy as np
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
-from emulator.world import display, living, rotation
+from emulator.world import display, java_random, living, random_sequences, rotation
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
 from emulator.world.entity_table import (
     EF_EYE, EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_TRANSFORM, EF_WIDTH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM,
-    EI_JOIN, EntityTable, TagSet,
+    EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_TEAM, EI_XP, GAMEMODES, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import player_defaults, selected_item
@@ -122,12 +123,27 @@ class _Column:
             entity._table.floats[entity.order, self.column:self.column + self.width] = value
 
 
+class _Selected:
+    """An entity field that selectors compare: the entity's own, written to its table row as well
+    (:meth:`Entity._write_selected`) whenever it changes."""
+
+    def __set_name__(self, owner, name: str) -> None:
+        self.slot = "_" + name
+
+    def __get__(self, entity, owner=None):
+        return self if entity is None else getattr(entity, self.slot)
+
+    def __set__(self, entity, value) -> None:
+        setattr(entity, self.slot, value)
+        entity._write_selected()
+
+
 class Entity:
     """One entity: a handle on its row of the store's :class:`EntityTable` (``pos``, ``yaw``,
     ``pitch``, ``motion``, ``tags``, ``alive`` read and write the arrays; the other fields are its
     own). Until the store adds it, the entity keeps those values itself."""
 
-    __slots__ = ("_uuid", "type", "custom_name", "data", "order", "player_name", "gamemode", "level", "team",
+    __slots__ = ("_uuid", "type", "_custom_name", "data", "order", "player_name", "_gamemode", "_level", "_team",
                  "_sneaking", "sprinting", "vehicle", "passengers", "_table", "_own", "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
@@ -137,6 +153,7 @@ class Entity:
                  team: str | None = None, dimension: str = OVERWORLD) -> None:
         self._uuid = uuid
         self.type = type
+        self._table: EntityTable | None = None
         self.custom_name = custom_name
         self.data = Compound() if data is None else data
         self.order = order
@@ -150,7 +167,6 @@ class Entity:
         # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
         self.vehicle: Entity | None = None
         self.passengers: list = []
-        self._table: EntityTable | None = None
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]
 
@@ -166,9 +182,11 @@ class Entity:
         table.floats[slot, EF_PITCH] = pitch
         table.ints[slot, EI_ALIVE] = int(alive)
         table.floats[slot, EF_HALF:EF_EYE + 1] = self.sizes()
+        table.ints[slot, EI_LIVING] = int(living.is_living(self.type))
+        self._table = table
+        self._write_selected()
         if self.type in display.DISPLAY_TYPES:
             table.floats[slot, EF_TRANSFORM:EF_WIDTH] = display.transformation_columns(self.data["transformation"])
-        self._table = table
         self._own = TagSet(table, slot)
         self._own.replace(tags)
         table.index_uuid(self, None, self._uuid)
@@ -210,6 +228,25 @@ class Entity:
             self._own[5] = bool(value)
         else:
             self._table.ints[self.order, EI_ALIVE] = int(value)
+
+    # what the selector arguments name, team, gamemode and level compare (a player's ``level`` is its
+    # experience level): kept in the table's EI_NAME, EI_TEAM, EI_GAMEMODE and EI_XP too (the VM's
+    # selectors read them there)
+    custom_name = _Selected()
+    team = _Selected()
+    gamemode = _Selected()
+    level = _Selected()
+
+    def _write_selected(self) -> None:
+        """The table's copy of the fields selectors compare (once the entity is in a table)."""
+        table = self._table
+        if table is None:
+            return
+        row = table.ints[self.order]
+        row[EI_NAME] = table.name_id(self.display_name)
+        row[EI_TEAM] = table.name_id(self._team or None)
+        row[EI_GAMEMODE] = GAMEMODES.index(self._gamemode) if self._gamemode in GAMEMODES else -1
+        row[EI_XP] = self._level
 
     @property
     def dimension(self) -> str:
@@ -494,6 +531,9 @@ class EntityStore:
         self.rng = random.Random(seed)
         self.entities: list[Entity] = []
         self.table = EntityTable()
+        # java.util.Random started from nearby seeds draws alike at first: the seed is mixed first
+        # (RandomSupport.mixStafford13 of the seed's upgrade to 128 bits), as Random() mixes the time
+        java_random.set_seed(self.table.random, random_sequences.mix_stafford13(seed + random_sequences.GOLDEN_RATIO_64))
         self.joined = 0  # players that joined so far (EI_JOIN)
         self.changes = 0  # entities that came into ``entities`` or left it so far
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)

@@ -8,7 +8,12 @@ context made for it still reaches it, as the game's source keeps its entity obje
 - ``ints`` (int64 ``[slots, EI_WIDTH]``): ``EI_TYPE`` (interned type id, the player is
   ``PLAYER_TYPE``), ``EI_HOLDER`` (its score holder's id in the scoreboard, -1 without one),
   ``EI_ALIVE`` (1 until killed), ``EI_DIM`` (its level, :class:`emulator.world.dimensions.Levels`'s
-  number), ``EI_JOIN`` (a player's place in the server's player list: the order of joining);
+  number), ``EI_JOIN`` (a player's place in the server's player list: the order of joining), what
+  the selector arguments ``name``, ``team``, ``gamemode`` and ``level`` compare: ``EI_NAME`` (its
+  display name, interned: :meth:`EntityTable.name_id`), ``EI_TEAM`` (its team's name, interned
+  likewise; -1 without a team), ``EI_LIVING`` (1 for a LivingEntity: ``team`` tests only those),
+  ``EI_GAMEMODE`` (a player's game mode, its index in :data:`GAMEMODES`) and ``EI_XP`` (a player's
+  experience level); the entity writes them when they change (:class:`emulator.world.entities.Entity`);
 - ``floats`` (float64 ``[slots, EF_WIDTH]``): position ``EF_X..EF_Z``, motion ``EF_MX..EF_MZ``,
   rotation ``EF_YAW``/``EF_PITCH`` (float32 values, exact in a double), the hitbox's half width and
   height and the eye height ``EF_HALF``/``EF_HEIGHT``/``EF_EYE`` (``Entity.sizes``, kept by ``attach``
@@ -19,7 +24,9 @@ context made for it still reaches it, as the game's source keeps its entity obje
   bit ``t & 63`` of word ``t >> 6``); interning a tag past the last word adds one, so there is no
   limit on the tags of an entity or of a pack;
 - ``order[:count]``: the living entities' slots in the order unsorted ``@e`` visits them: level by
-  level (``EI_DIM``), each level's in the order they came into it.
+  level (``EI_DIM``), each level's in the order they came into it;
+- ``random`` (int64 ``[1]``): the state of the ``java.util.Random`` that ``sort=random`` and ``@r``
+  shuffle with (:mod:`emulator.world.java_random`), seeded by the store.
 
 The column numbers are literals of :mod:`emulator.vm.loop` too, written there from here by
 :mod:`emulator.vm.generate` (numba's cache does not see a constant of another module change).
@@ -34,8 +41,9 @@ import numpy as np
 from emulator.world.dimensions import Levels
 from emulator.world.display import DISPLAY_TYPES
 
-EI_TYPE, EI_HOLDER, EI_ALIVE, EI_DIM, EI_JOIN = range(5)
-EI_WIDTH = 5
+EI_TYPE, EI_HOLDER, EI_ALIVE, EI_DIM, EI_JOIN, EI_NAME, EI_TEAM, EI_LIVING, EI_GAMEMODE, EI_XP = range(10)
+EI_WIDTH = 10
+GAMEMODES = ("survival", "creative", "adventure", "spectator")  # GameType's ids, in its order
 EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH, EF_HALF, EF_HEIGHT, EF_EYE, EF_TRANSFORM = range(12)
 EF_WIDTH = EF_TRANSFORM + 14
 # type ids interned first: the player, then the display entities (their transformation columns)
@@ -59,6 +67,7 @@ class EntityTable:
         self.floats = np.zeros((capacity, EF_WIDTH), dtype=np.float64)
         self.tags = np.zeros((capacity, 1), dtype=np.int64)
         self.order = np.zeros(capacity, dtype=np.int64)
+        self.random = np.zeros(1, dtype=np.int64)
         self.size = 0  # slots used
         self.count = 0  # living entities, order[:count]
         self.handles: list = []  # slot -> Entity
@@ -66,6 +75,7 @@ class EntityTable:
         self.tag_names: list[str] = []
         self.type_ids: dict[str, int] = {"minecraft:player": PLAYER_TYPE}
         self.type_ids.update((name, FIRST_DISPLAY_TYPE + i) for i, name in enumerate(DISPLAY_TYPES))
+        self.names: dict[str, int] = {}  # display names and team names -> their number (EI_NAME, EI_TEAM)
         self.uuids: dict[tuple, list] = {}  # UUID -> the living entities that have it
         self.intern_holder: Callable[[str], int] | None = None  # the scoreboard's holder_id
         self.levels = Levels()  # the numbers of EI_DIM (the packs' dimensions are added at load)
@@ -87,15 +97,26 @@ class EntityTable:
             index = self.type_ids[name] = len(self.type_ids)
         return index
 
+    def name_id(self, name: str | None) -> int:
+        """The number of a display or team name (``name=``, ``team=``), interning it; -1 for None (no team)."""
+        if name is None:
+            return -1
+        index = self.names.get(name)
+        if index is None:
+            index = self.names[name] = len(self.names)
+        return index
+
     def intern_names_of(self, other: "EntityTable") -> None:
-        """Intern ``other``'s tag and type names, in its order, into this empty table (a program
-        compiled against ``other`` holds their numbers)."""
-        if self.tag_names or len(self.type_ids) > LAST_DISPLAY_TYPE + 1:  # only the player and the displays
+        """Intern ``other``'s tag, type, display and team names, in its order, into this empty table
+        (a program compiled against ``other`` holds their numbers)."""
+        if self.tag_names or self.names or len(self.type_ids) > LAST_DISPLAY_TYPE + 1:  # the player and the displays
             raise ValueError("names are interned into an empty entity table only")
         for name in other.tag_names:
             self.tag_id(name)
         for name in other.type_ids:
             self.type_id(name)
+        for name in other.names:
+            self.name_id(name)
 
     # ------------------------------------------------------------------ rows
     def new_slot(self, entity, type_name: str, holder: str) -> int:

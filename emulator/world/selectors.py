@@ -22,7 +22,8 @@ options/EntitySelectorOptions.java):
   players (``@a @p @r``, ``type=player``, ``gamemode``, ``level``, ``advancements``: setIncludesEntities(false))
   searches players; ``@s`` is the executor wherever it is.
 - Unsorted results come in creation order, limited as they are found; ``nearest``/``furthest``
-  sort stably by squared distance; ``random`` shuffles with the store's seeded RNG.
+  sort stably by squared distance; ``random`` is ``Collections.shuffle`` with the table's seeded
+  ``java.util.Random`` (:mod:`emulator.world.java_random`, shared with the VM).
 - ``x y z`` replace the origin's coordinates; ``dx dy dz`` make a box from the origin corner
   ``[min(0,d), max(0,d) + 1]`` per axis, and an entity matches when its hitbox intersects it
   (strict ``<``); without a box, ``distance=..R`` also pre-filters by the box ``[-R, R + 1]``.
@@ -41,7 +42,7 @@ from __future__ import annotations
 from typing import Callable
 
 from mcfunction_parser import ast
-from emulator.world import mth
+from emulator.world import java_random, mth
 from emulator.world.entities import Entity, EntityStore, entity_nbt
 from emulator.world.living import NOT_LIVING
 from emulator.world.errors import CommandFailure, Unmodelled
@@ -222,7 +223,7 @@ class SelectorQuery:
         if len(found) <= 1 or self.order == "arbitrary":
             return found
         if self.order == "random":
-            store.rng.shuffle(found)
+            java_random.shuffle(store.table.random, found, 0, len(found))
             return found
         sign = 1.0 if self.order == "nearest" else -1.0  # both sorts are stable, like List.sort
         return sorted(found, key=lambda e: sign * _distance_sq(e, origin))

@@ -67,13 +67,13 @@ MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0",
 # With entities: three markers summoned by t:f0, tagged m+a, m, n, an armor stand tagged m, a
 # marker tagged m in the nether (selectors with a position, volume or distance search the context's
 # level only), an item display tagged d, and a trigger objective t
-ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"]}',
+ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"],CustomName:\'"Bob"\',Rotation:[170f,45f]}',
                 'summon marker ~ ~1 ~5 {Tags:["n"]}', 'summon armor_stand ~1 ~ ~1 {Tags:["m"]}',
                 'execute in minecraft:the_nether run summon marker ~ ~ ~1 {Tags:["m","nether"]}',
                 'summon item_display ~-1 ~ ~ {Tags:["d"],Rotation:[30f,10f]}',
                 "scoreboard objectives add t trigger")
-# (the VM evaluates @e/@a/@s/@p/@n with type, #type, tag, scores, x/y/z, volumes, distance, limit and
-# sort nearest/furthest itself; random sorts, names, rotations ... go to the host)
+# (the VM evaluates @e/@a/@s/@p/@n with type, #type, tag, scores, name, team, gamemode, level, rotations,
+# x/y/z, volumes, distance, limit and sort nearest/furthest itself; random sorts, nbt ... go to the host)
 ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=marker,sort=nearest,limit=2]",
                     "positioned as @e[tag=n]", "as @e[tag=m] at @s", "as @e[sort=furthest]",
                     "as @e[tag=m,tag=!a]", "as @e[type=marker,scores={o=0..}]", "as @e[type=!marker]",
@@ -85,9 +85,13 @@ ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=
                     "in minecraft:the_nether", "at @e[tag=nether]", "as @e[tag=m,distance=0..]",
                     "in minecraft:the_end as @e[x=0,sort=furthest]", "as @e[tag=m] positioned as @e[tag=nether]",
                     "rotated ~10 ~-95", "align xyz", "anchored eyes positioned ^ ^ ^1", "anchored feet",
-                    "at @e[tag=d] rotated ~ ~20 align y")
-SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]")
-MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]")
+                    "at @e[tag=d] rotated ~ ~20 align y", "as @e[name=Bob]", "as @e[name=!Marker,tag=m]",
+                    "as @e[y_rotation=135..-135]", "as @e[x_rotation=..10,y_rotation=-30..]", "as @e[team=]",
+                    "as @e[team=!t,type=!marker]", "as @e[gamemode=!creative]", "as @a[level=1..]",
+                    "as @e[tag=m,sort=random,limit=2]", "at @e[sort=random]", "as @r")
+SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]", "@e[tag=m,sort=random,limit=1]")
+MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]",
+                        "@e[sort=random,limit=2]")
 ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
                    'summon marker ~ ~ ~ {Tags:["n"]}', "scoreboard players add @e[tag=m] o 3",
                    "tag @e[tag=m,tag=!a] add a", "tag @e[scores={o=1..}] remove m", "tag @e[type=armor_stand] add n",
@@ -129,7 +133,9 @@ ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "ki
                    "execute store result score #g p run data get entity @s Motion[-1] 100",
                    "execute as @e[tag=d] run data get entity @s transformation.right_rotation[3]",
                    "tp @s ~ ~ ~ ~180 ~", "tp @e[tag=n] 1 2 3 45 -100", "tp @e[tag=m] ~ ~ ~ ~-370.5 ~95",
-                   "execute rotated as @e[tag=m] run tp @s ^ ^ ^1 ~ ~10", "tp @s ~ ~ ~ 1000000000000000000000000000000000000000 0")
+                   "execute rotated as @e[tag=m] run tp @s ^ ^ ^1 ~ ~10", "tag @e[name=Bob,y_rotation=..90] add q",
+                   "data merge entity @s {CustomName:'\"Bob\"'}", "scoreboard players add @e[x_rotation=-45..45] o 1",
+                   "tp @s ~ ~ ~ 1000000000000000000000000000000000000000 0")
 # t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
@@ -245,7 +251,8 @@ def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
     if kind == "entity":
         targets = ('@s', '@e[tag=a]', '@e[tag=n]', '@e[tag=m,scores={o=1..}]', '@e[type=marker,limit=1]',
                    '@s[tag=a]', '@e[tag=m,tag=!a]', '@e[type=!marker]', '@e[distance=..1.5]',
-                   '@e[dx=2,dy=0,dz=2,tag=m]', '@n[tag=w69]', '@e[type=#minecraft:skeletons]')
+                   '@e[dx=2,dy=0,dz=2,tag=m]', '@n[tag=w69]', '@e[type=#minecraft:skeletons]', '@e[name=Bob]',
+                   '@s[x_rotation=40..50]', '@e[team=t]', '@s[y_rotation=-10..10,name=!Bob]')
         return f"{word} entity {draw(st.sampled_from(targets))}"
     return f"{word} function {draw(st.sampled_from(callees))}"
 

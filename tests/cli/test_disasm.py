@@ -24,7 +24,7 @@ def test_disasm_shows_source_and_decoded_operands(tmp_path):
 
 
 def test_disasm_host_ops(tmp_path):
-    pack = write_pack(tmp_path / "pack", {"t:f": "execute as @e[name=x] store result storage t:s v long 1 run say hi"})
+    pack = write_pack(tmp_path / "pack", {"t:f": "execute as @e[nbt={}] store result storage t:s v long 1 run say hi"})
     result = CliRunner().invoke(main, ["disasm", str(pack), "t:f"])
     assert result.exit_code == 0, result.output
     ops = [line.split(None, 3)[2:] for line in result.output.splitlines() if line.startswith("      |")]
