@@ -32,6 +32,7 @@ from __future__ import annotations
 from typing import Callable
 
 from emulator.vm import loop as vm
+from emulator.vm.entity_arrays import shuffles
 from emulator.vm.opcodes import OPERATION_KINDS
 from emulator.vm.program import HostOp, MacroCall, Program
 from emulator.vm.storage_leaves import STORE_TYPES, key_path, number_code
@@ -120,9 +121,9 @@ class Compiler:
         elif isinstance(cmd, ScoreGet) and _named(cmd.target):
             self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
         elif isinstance(cmd, ScoreOperation) and self.vm_holders(cmd.targets) and self.vm_holders(cmd.sources):
-            h, h2 = self.holders(cmd.targets), self.holders(cmd.sources, sources=True)
-            self.emit(vm.FIRST_OPERATION + OPERATION_KINDS[cmd.op], h, self.objective(cmd.objective), h2,
-                      self.objective(cmd.source_objective))
+            h, o = self.holders(cmd.targets), self.objective(cmd.objective)
+            h2 = self.holders(cmd.sources, sources_of=(h, o))
+            self.emit(vm.FIRST_OPERATION + OPERATION_KINDS[cmd.op], h, o, h2, self.objective(cmd.source_objective))
         elif isinstance(cmd, ScoreEnable) and self.vm_holders(cmd.targets):
             h = self.holders(cmd.targets)
             self.emit(vm.OP_ENABLE, h, self.objective(cmd.objective))
@@ -139,7 +140,7 @@ class Compiler:
         elif isinstance(cmd, DataGet) and (leaf := self.leaf(cmd.target, cmd.path)) is not None:
             self.host(vm.OP_GETLEAF, cmd, leaf, self.program.intern_float(1.0 if cmd.scale is None else cmd.scale),
                       operand=3)
-        elif isinstance(cmd, Tellraw) and (sel := self.selector(cmd.targets)) is not None:
+        elif isinstance(cmd, Tellraw) and not shuffles(cmd.targets) and (sel := self.selector(cmd.targets)) is not None:
             self.host(vm.OP_LOG, cmd, sel)  # the host writes the line
         else:
             self.host(vm.OP_HOST, cmd)
@@ -366,6 +367,8 @@ class Compiler:
         dest = cmd.destination
         if not isinstance(dest, Vec3) or cmd.facing is not None or cmd.facing_entity is not None:
             return None
+        if cmd.targets is not None and shuffles(cmd.targets):
+            return None  # the host runs it again for a target going to another level: one draw only
         sel = self.selector(Selector("s", (), dest.loc) if cmd.targets is None else cmd.targets)
         if sel is None:
             return None
@@ -437,16 +440,16 @@ class Compiler:
             return vm.HOLDER_SELF
         return self.sb.holder_id(target.name)
 
-    def holders(self, target, sources: bool = False) -> int | None:
+    def holders(self, target, sources_of: tuple[int, int] | None = None) -> int | None:
         """The holder operand of a name, ``@s`` or a selector the VM evaluates (its SELHOLDERS is
         emitted now, so call this just before the op and only once it will be emitted); None for
-        the host."""
+        the host. ``sources_of``: the operation's target operand and objective, for its sources."""
         if _named(target):
             return self.holder(target)
         sel = self.selector(target)
         if sel is None:
             return None
-        self.emit(vm.OP_SELHOLDERS, sel, int(sources))
+        self.emit(vm.OP_SELHOLDERS, sel, int(sources_of is not None), *(sources_of or ()))
         return vm.HOLDER_SELBUF
 
     def vm_holders(self, target) -> bool:

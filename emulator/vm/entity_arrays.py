@@ -182,3 +182,9 @@ def _rotation_bounds(bounds: ast.FloatRange) -> list[float]:
     a missing high 359 (the test wraps the entity's angle as a double and compares)."""
     return [float(mth.wrap_degrees_f(0.0 if bounds.lo is None else bounds.lo)),
             float(mth.wrap_degrees_f(359.0 if bounds.hi is None else bounds.hi))]
+
+
+def shuffles(target) -> bool:
+    """``@r`` or ``sort=random``: evaluating the selector draws from the world's random."""
+    return isinstance(target, ast.Selector) and (target.variable == "r" or any(
+        arg.key == "sort" and arg.value == "random" for arg in target.args))

@@ -119,9 +119,10 @@ OP_TP = 17  # [entry] a: selector, b: x (index into floats; y, z and the rotatio
 # fails. Always followed by the command's HOST, which runs it instead when a target goes to another level (the
 # context's: the host moves it in the order); TP skips it otherwise
 OP_HOST = 18  # [entry] a: host op index. A final command run by Python (charged here, per context)
-OP_SELHOLDERS = 19  # [free] a: selector, b: 0 targets / 1 sources. The holders of the selector's entities for the next
-# op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them). A
-# separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
+OP_SELHOLDERS = 19  # [free] a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's target holder and
+# objective. The holders of the selector's entities for the next op's HOLDER_SELBUF operand: targets in
+# selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them; none read when the operation fails on its
+# targets first). A separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
 OP_IFSCORE = 20  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
 OP_IFMATCH = 21  # [condition] a h, b o, c lo, d hi, f negated, g final
 OP_IFENT = 22  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
@@ -1444,10 +1445,15 @@ def run(m):
                 nlog += 1
                 pc += 1
         elif op == OP_SELHOLDERS:
-            if alive:
+            if alive and quota > 0:  # (else the command is cut: its selectors, random ones too, are never read)
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
-                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, off)
+                h = code[pc, 3]
+                n = 0
+                # the operation reads its sources only once its targets and their objective were found
+                if code[pc, 2] == 0 or not (writable[code[pc, 4]] == 0 or (h == HOLDER_SELF and cints[ctx, CI_HOLDER] < 0)
+                                            or (h == HOLDER_SELBUF and regs[R_NSEL] == 0)):
+                    n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                                efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, off)
                 for i in range(off, off + n):
                     selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
@@ -1455,9 +1461,11 @@ def run(m):
         elif op == OP_ASSTAGE:
             n = 0
             if alive:
+                drawn = erandom[0]
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
                             efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
                 if 0 < n < forklimit and (regs[R_NCTX] + n > cints.shape[0] or regs[R_NFORK] + n > fstack.shape[0]):
+                    erandom[0] = drawn  # a random sort draws again then, as if for the first time
                     status = ST_GROWCTX  # Python makes room, then the stage runs again
                     break
             if loop != LOOP_REENTERED:

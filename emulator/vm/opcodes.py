@@ -103,10 +103,12 @@ _ROWS = [
                              "moves it in the order); TP skips it otherwise"),
     ]),
     *_single("HOST", "x", ENTRY, "a: host op index. A final command run by Python (charged here, per context)"),
-    *_single("SELHOLDERS", "sb", FREE, "a: selector, b: 0 targets / 1 sources. The holders of the selector's "
-                                       "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "
-                                       "sources from the buffer's middle (R_NSEL2 of them). A separate op keeps calls "
-                                       "out of the scoreboard ops (a call costs them ~20 %)"),
+    *_single("SELHOLDERS", "sbii", FREE, "a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's "
+                                         "target holder and objective. The holders of the selector's "
+                                         "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "
+                                         "sources from the buffer's middle (R_NSEL2 of them; none read when the "
+                                         "operation fails on its targets first). A separate op keeps calls "
+                                         "out of the scoreboard ops (a call costs them ~20 %)"),
     *_family("condition", [
         ("IFSCORE", "choho" + "bb", CONDITION, "a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final"),
         ("IFMATCH", "hoii_bb", CONDITION, "a h, b o, c lo, d hi, f negated, g final"),

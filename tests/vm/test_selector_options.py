@@ -111,3 +111,21 @@ def test_random_sorts_run_in_the_vm_and_pick_what_the_reference_picks(tmp_path):
     assert sum(players) == 50 and all(players)  # five picks, each player picked at least once (this seed)
     assert sum(e["scores"].get("o", 0) for e in emu.entities("@e[tag=r]")) == 5 * 3
     assert len(emu.entities("@e[tag=picked]")) == 1
+
+
+@pytest.mark.parametrize("line", [
+    # ScoreboardCommand.performOperation reads the targets, their objective, then the sources: a
+    # command failing on its targets never reads (never shuffles) its sources
+    "scoreboard players operation @s o = @e[sort=random,limit=2] o",
+    "scoreboard players operation @e[tag=none] o += @e[sort=random,limit=1] o",
+    "scoreboard players operation #x nope += @e[sort=random,limit=1] o",
+    # the host runs a tp whose target goes to another level, and writes tellraw's line: one draw
+    "execute in minecraft:the_nether run tp @e[type=marker,sort=random,limit=1] ~ ~ ~",
+    'tellraw @r "hi"',
+    # a stage making more contexts than the VM has room for runs again once Python made room
+    "summon marker 0 0 0\n" * 40 + "execute as @e[type=marker,sort=random] at @s run scoreboard players add @s o 0",
+])
+def test_a_random_selector_draws_as_often_as_in_the_game(tmp_path, line):
+    # every later random pick agrees only if both backends drew the same number of times before
+    emu = _run_both(tmp_path, line + "\n" + "execute as @e[sort=random,limit=1] run scoreboard players add @s o 1\n" * 6)
+    assert sum(e["scores"].get("o", 0) for e in emu.entities()) >= 6
