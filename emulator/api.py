@@ -22,6 +22,7 @@ from emulator.runtime.backend import Backend, CallRecording, RootResult, Tracer
 from emulator.runtime.factory import make_backend
 from emulator.runtime.server import Runtime
 from emulator.world import players
+from emulator.world.clocks import WorldClocks
 from emulator.world.context import Context
 from emulator.world.semantics import INT_MAX, INT_MIN
 from mcfunction_parser.diagnostics import Diagnostic
@@ -81,6 +82,8 @@ class Emulator:
 
     def _start_world(self, state, compiled: bool) -> None:
         state.version = self.packs.version
+        if self.packs.clocks is not None:
+            state.clocks = WorldClocks(state, self.packs.clocks)
         self.state = state
         stacks = CallStacks() if self.records_calls else None
         if stacks is not None:

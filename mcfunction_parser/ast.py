@@ -670,6 +670,25 @@ class Time(Command):
 
 
 @dataclass(frozen=True, slots=True)
+class ClockCommand(Command):
+    """``time`` on a world clock, from 26.1 (every form but ``time query gametime``, which is
+    :class:`Time`). ``clock``: the clock's id (``time of <clock> ...``), None for the default clock
+    of the executing dimension. ``action``: ``set``/``add`` (``value`` in ticks), ``marker``
+    (``time set <time marker>``: ``value`` the marker's id), ``pause``, ``resume``, ``rate``
+    (``value`` a float), ``query`` (``timeline``: None for ``query time``, else the timeline's id;
+    ``repetition`` for ``... repetition``). Ids carry their namespace; ``clock_loc`` and
+    ``timeline_loc`` are where they are written (the game looks both up when it loads the function)."""
+
+    action: str
+    clock: str | None = None
+    value: Any = None
+    timeline: str | None = None
+    repetition: bool = False
+    clock_loc: Loc | None = None
+    timeline_loc: Loc | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Ride(Command):
     """``ride TARGET mount VEHICLE`` or ``ride TARGET dismount`` (1.19.4+)."""
 

@@ -9,6 +9,7 @@ TriggerCommand.java (getScore), HelpCommand.java; the texts are the world librar
 from __future__ import annotations
 
 from emulator.world import text_components
+from emulator.world.clocks import F32
 from emulator.world.errors import MESSAGES
 from emulator.world.semantics import INT_MAX, INT_MIN, wrap32
 from mcfunction_parser import ast, gamedata
@@ -103,11 +104,59 @@ def time(env, cmd: ast.Time, ctx) -> int:
     return wrap32(_java_rem(state.daytime, DAY_TICKS))
 
 
-def world_clock(env, cmd: ast.GenericCommand, ctx) -> int:
-    """The clock forms of ``time`` from 26.1 (``time of <clock> ...``, ``pause``, ``rate`` ...),
-    which the parser keeps as text: not modelled."""
-    env.unmodelled(cmd, f"'{cmd.text}' is not emulated (26.1's world clocks): it succeeds without effect")
-    return 1
+def clock(env, cmd: ast.ClockCommand, ctx) -> int:
+    """TimeCommand on a world clock (26.1.2): the one ``time of <clock>`` names, else the executing
+    dimension's default clock (none in the nether: commands.time.no_default_clock). ``set`` returns
+    the ticks set; ``add``, ``set <marker>`` and the queries the clock's ticks wrapped as
+    wrapTime (ticks % Integer.MAX_VALUE); ``pause``, ``resume`` and ``rate`` 1. ``query <timeline>``
+    reads a timeline of that clock (commands.time.wrong_timeline_for_clock otherwise): the ticks
+    within its period (Timeline.getCurrentTicks), or with ``repetition`` the periods passed
+    (getPeriodCount, 0 without a period)."""
+    clocks = env.state.clocks
+    name = cmd.clock
+    if name is None:
+        name, dimension_type = env.state.entities.table.levels.default_clock(ctx.dimension)
+        if name is None:
+            raise CommandFailure("commands.time.no_default_clock", dimension_type)
+    _known(clocks is not None and name in clocks, name, "world_clock")  # a macro line's clock; else the load refused it
+    action = cmd.action
+    if action == "set":
+        clocks.set_ticks(name, cmd.value)
+        return cmd.value
+    if action == "add":
+        return _wrap_time(clocks.add_ticks(name, cmd.value))
+    if action == "marker":
+        if not clocks.move_to_marker(name, cmd.value):
+            # 26.1.2 formats the marker's ResourceKey (ERROR_NO_TIME_MARKER_FOUND.create(clock, timeMarkerId))
+            raise CommandFailure("commands.time.no_time_marker_found",
+                                 f"ResourceKey[minecraft:clock_time_marker / {cmd.value}]", name)
+        return _wrap_time(clocks.ticks(name))
+    if action in ("pause", "resume"):
+        clocks.instances[name].paused = action == "pause"
+        return 1
+    if action == "rate":
+        clocks.instances[name].rate = F32(cmd.value)
+        return 1
+    ticks = clocks.ticks(name)
+    if cmd.timeline is None:
+        return _wrap_time(ticks)
+    timeline = clocks.registry.timelines.get(cmd.timeline)
+    _known(timeline is not None, cmd.timeline, "timeline")
+    if timeline.clock != name:
+        raise CommandFailure("commands.time.wrong_timeline_for_clock", cmd.timeline, name)
+    if cmd.repetition:
+        return 0 if timeline.period is None else _java_rem(wrap32(ticks // timeline.period), INT_MAX)
+    return _wrap_time(ticks if timeline.period is None else ticks % timeline.period)
+
+
+def _known(found: bool, rid: str, registry: str) -> None:
+    if not found:
+        raise CommandFailure("argument.resource.not_found", rid, "minecraft:" + registry, report=True)
+
+
+def _wrap_time(ticks: int) -> int:
+    """TimeCommand.wrapTime: Math.toIntExact(ticks % Integer.MAX_VALUE) (a clock's ticks are never negative)."""
+    return ticks % INT_MAX
 
 
 def random(env, cmd: ast.RandomCommand, ctx) -> int:
@@ -189,8 +238,9 @@ HANDLERS = {
     ast.Schedule: schedule,
     ast.ScheduleClear: schedule_clear,
     ast.Time: time,
+    ast.ClockCommand: clock,
     ast.RandomCommand: random,
     ast.Trigger: trigger,
 }
 # the forms the parser keeps as text, by command name
-GENERIC_HANDLERS = {"time": world_clock, "help": help_}
+GENERIC_HANDLERS = {"help": help_}

@@ -5,11 +5,13 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
 1. on the first tick after loading, every ``#minecraft:load`` member (unless :meth:`Runtime.start`
    ran them), each its own root;
 2. every ``#minecraft:tick`` member in order, each its own root;
-3. the game time advances by one, then every scheduled event due at the new time runs, by due
+3. from 26.1, the world clocks advance (MinecraftServer.tickChildren: after the functions, before
+   the levels; :meth:`emulator.world.clocks.WorldClocks.tick`);
+4. the game time advances by one, then every scheduled event due at the new time runs, by due
    time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
    run as the server at world spawn; then the blocks' scheduled ticks due
-   (:class:`emulator.world.block_ticks.BlockTicks`);
-4. the day time advances by one when ``doDaylightCycle`` is on;
+   (:class:`emulator.world.block_ticks.BlockTicks`); before 26.1 the day time then advances by
+   one when ``doDaylightCycle`` is on (ServerLevel.tickTime);
 5. every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
    (:func:`emulator.world.combat.tick_dead`), a player using an item goes on using it
@@ -187,7 +189,8 @@ class Runtime:
         changing only the clocks (see the module's docs)."""
         state = self.state
         if (n <= 1 or not self.loaded or state.pending_rewards or not isinstance(self.backend, TickBatches)
-                or not all(idle(state) for _, idle in ENTITY_STEPS)):
+                or not all(idle(state) for _, idle in ENTITY_STEPS)
+                or (state.clocks is not None and not state.clocks.steady())):
             return 1
         due = [t for t in (state.schedule.next_due(), state.block_ticks.next_due()) if t is not None]
         return max(1, min(n, min(due) - state.gametime)) if due else n
@@ -199,10 +202,13 @@ class Runtime:
         members = self.members(TICK_TAG)
         start = (state.gametime, state.tick, state.daytime)
         daylight = state.gamerules.get("doDaylightCycle") == "true"
+        clocks = None if state.clocks is None else state.clocks.snapshot()
 
         def at_tick(t: int) -> None:  # ticks 0 .. t-1 of the batch ended moving only the clocks
             state.gametime, state.tick = start[0] + t, start[1] + t
-            if daylight:
+            if clocks is not None:
+                state.clocks.after(clocks, t)
+            elif daylight:
                 state.daytime = start[2] + t
 
         self.rewards_cost = 0
@@ -236,6 +242,8 @@ class Runtime:
     def _end_tick(self, cost: int) -> int:
         """Steps 3-6 of a tick whose functions cost ``cost``; returns the tick's whole cost."""
         state = self.state
+        if state.clocks is not None:
+            state.clocks.tick()
         state.gametime += 1
         while (entry := state.schedule.pop_due(state.gametime)) is not None:
             if entry.is_tag:
@@ -244,7 +252,7 @@ class Runtime:
                 cost += self.run_root(entry.function).cost
         state.block_ticks.run_due(state)
         # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)
-        if state.gamerules.get("doDaylightCycle") == "true":
+        if state.clocks is None and state.gamerules.get("doDaylightCycle") == "true":
             state.daytime += 1
         for step, _ in ENTITY_STEPS:
             step(state)

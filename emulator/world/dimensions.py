@@ -8,6 +8,7 @@ orders the packs' dimensions by identity hashes, here they come in id order), wh
 a selector that is not limited to one level visits them in.
 ``Levels.from_packs(dimensions, dimension_types)``: the packs' dimension files (id -> JSON) and
 dimension type files, for each dimension its type's ``coordinate_scale``.
+``default_clock(name)``: the level's dimension type's default clock (26.1) and that type's name.
 ``level_id(name)``: DimensionArgument.getDimension: an unknown dimension fails the command
 ("Unknown dimension"). ``teleportation_scale(a, b)``: DimensionType.getTeleportationScale, what
 ``execute in`` multiplies x and z by (CommandSourceStack.withLevel).
@@ -15,6 +16,7 @@ dimension type files, for each dimension its type's ``coordinate_scale``.
 from __future__ import annotations
 
 from emulator.world.errors import CommandFailure
+from mcfunction_parser.pack.clocks import DEFAULT_CLOCKS
 
 OVERWORLD = "minecraft:overworld"
 VANILLA = (OVERWORLD, "minecraft:the_nether", "minecraft:the_end")
@@ -28,27 +30,38 @@ def _id(name: str) -> str:
 
 
 class Levels:
-    def __init__(self, custom: dict[str, float] | None = None) -> None:
-        """``custom``: the packs' dimensions (id -> coordinate scale); a pack may redefine a vanilla one."""
+    def __init__(self, custom: dict[str, float] | None = None, clocks: dict[str, tuple] | None = None) -> None:
+        """``custom``: the packs' dimensions (id -> coordinate scale); a pack may redefine a vanilla
+        one. ``clocks``: theirs -> (default clock or None, dimension type name)."""
         custom = custom or {}
         self.names: list[str] = list(VANILLA) + sorted(n for n in custom if n not in VANILLA)
         self.ids = {name: i for i, name in enumerate(self.names)}
         self.scales = [custom.get(n, VANILLA_TYPE_SCALE.get(n, 1.0)) for n in self.names]
+        self.clocks = {name: (DEFAULT_CLOCKS.get(name), name) for name in VANILLA} | (clocks or {})
 
     @classmethod
     def from_packs(cls, dimensions: dict, dimension_types: dict) -> "Levels":
-        """The dimension files (``type``: a dimension type id or an inline type) with their scales."""
-        custom = {}
+        """The dimension files (``type``: a dimension type id or an inline type) with their scales
+        and default clocks (a type's ``default_clock``)."""
+        custom, clocks = {}, {}
         for name, value in dimensions.items():
             kind = value.get("type") if isinstance(value, dict) else None
+            type_name = _id(kind) if isinstance(kind, str) else "[unregistered]"  # Holder.getRegisteredName
             if isinstance(kind, str):
                 kind = dimension_types.get(_id(kind), _id(kind))
             if isinstance(kind, dict):
                 scale = kind.get("coordinate_scale", 1.0)
+                clock = kind.get("default_clock")
+                clocks[name] = (_id(clock) if isinstance(clock, str) else None, type_name)
             else:
                 scale = VANILLA_TYPE_SCALE.get(kind, 1.0)
+                clocks[name] = (DEFAULT_CLOCKS.get(kind), type_name)
             custom[name] = float(scale) if isinstance(scale, (int, float)) else 1.0
-        return cls(custom)
+        return cls(custom, clocks)
+
+    def default_clock(self, name: str) -> tuple[str | None, str]:
+        """DimensionType.defaultClock of level ``name``'s type, and the type's name."""
+        return self.clocks.get(name, (None, name))
 
     def level_id(self, name: str) -> int:
         index = self.ids.get(name)

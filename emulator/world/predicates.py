@@ -56,6 +56,7 @@ from emulator.world.loot_context import LootContext, in_range, integer, number, 
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
 from mcfunction_parser.items import SLOTS
 from mcfunction_parser.nbt import Byte, Compound, Int, List
+from mcfunction_parser.pack.tags import normalise_id
 
 F32 = np.float32
 
@@ -125,7 +126,10 @@ def _enchanted_bonus(c: dict, ctx: LootContext) -> bool:
 
 
 def _time_check(c: dict, ctx: LootContext) -> bool:
-    time = ctx.state.daytime
+    """TimeCheck: the day time (the overworld's); from 26.1 the ticks of its ``clock``."""
+    clocks, clock = ctx.state.clocks, c.get("clock")
+    clock = normalise_id(clock) if isinstance(clock, str) else None
+    time = clocks.ticks(clock) if clocks is not None and clock in clocks else ctx.state.daytime
     if c.get("period") is not None:
         time %= int(c["period"])
     return in_range(c["value"], _int32(time), ctx)

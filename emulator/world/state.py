@@ -428,7 +428,7 @@ class WorldState:
     schedule: ScheduleQueue = field(default_factory=ScheduleQueue)
     gamerules: Gamerules = field(default_factory=Gamerules)
     gametime: int = 0
-    daytime: int = 0  # the overworld's day time (time set/add; advances with doDaylightCycle)
+    daytime: int = 0  # the overworld's day time (time set/add; advances with doDaylightCycle); from 26.1 the overworld clock's ticks
     tick: int = 0
     log: list[LogEntry] = field(default_factory=list)
     diagnostics: list[RuntimeDiagnostic] = field(default_factory=list)
@@ -449,6 +449,7 @@ class WorldState:
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
     version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)
     resources: Resources = field(default_factory=Resources)  # loot, predicates, tags, advancements
+    clocks: object = None  # 26.1+: the world clocks (emulator.world.clocks.WorldClocks)
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)

@@ -8,6 +8,7 @@ from ..arguments import duration, objective
 from ..features import FEATURES, gamerule_type, version_text
 from ..primitives import int_range, resource_location
 from ..reader import ParseError, Reader, show
+from ..snbt import to_float32
 from .tree import root_for, tree_command
 
 _RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")
@@ -100,26 +101,51 @@ def time(r: Reader, loc) -> ast.Command:
 
 
 def _time_with_clocks(r: Reader, loc) -> ast.Command:
-    """``time`` from 26.1 (world clocks). ``time add|set <ticks>`` (add takes a negative time from
-    26.1) and ``time query gametime`` keep their AST and meaning here; the clock forms (``of
-    <clock>``, ``pause``, ``resume``, ``rate``, ``query time|<timeline>``, ``set <time marker>``,
-    which took the place of ``set day`` ...) are checked against the release's command tree and
-    kept as text: their clocks are not modelled."""
+    """``time`` from 26.1 (TimeCommand.register, 26.1.2): ``time query gametime`` is :class:`ast.Time`;
+    every other form works on a world clock (:class:`ast.ClockCommand`), the executing dimension's
+    default clock or the one ``time of <clock>`` names. The release's command tree checks the line."""
     text, start = r.text, r.pos
     if text.startswith(" query gametime", start) and start + 15 == r.end:
         r.pos = r.end
         return ast.Time.new(loc, "query", None, "gametime")
-    for action, minimum in (("add", -2**31), ("set", 0)):
-        value_at = start + len(action) + 2
-        if text.startswith(f" {action} ", start) and value_at < r.end and text[value_at] in "-.0123456789":
-            try:  # Brigadier tries <time> first; what it refuses may still be a time marker id
-                r.pos = value_at
-                value = duration(r, minimum)
-                r.finish()
-                return ast.Time.new(loc, action, value, None)
-            except ParseError:
-                r.pos = start
-    return tree_command(r, loc, "time")
+    tree_command(r, loc, "time")
+    words, at = [], start + 1
+    for word in text[start + 1:r.end].split(" "):
+        words.append((word, at))
+        at += len(word) + 1
+    clock = clock_loc = None
+    if words[0][0] == "of":
+        clock, clock_loc = _id_at(r, words[1][1]), r.loc_at(words[1][1])
+        words = words[2:]
+    action = words[0][0]
+    fields = {"clock": clock, "clock_loc": clock_loc}
+    if action in ("set", "add"):
+        ticks = _ticks_at(r, words[1][1], len(words[1][0]), 0 if action == "set" else -2**31)
+        if ticks is None:  # Brigadier tries <time> first: what it refuses is a time marker's id
+            action, fields["value"] = "marker", _id_at(r, words[1][1])
+        else:
+            fields["value"] = ticks
+    elif action == "rate":
+        fields["value"] = to_float32(float(words[1][0]))  # FloatArgumentType: a Java float
+    elif action == "query" and words[1][0] != "time":
+        fields.update(timeline=_id_at(r, words[1][1]), timeline_loc=r.loc_at(words[1][1]), repetition=len(words) == 3)
+    r.pos = r.end
+    return ast.ClockCommand.new(loc, action, **fields)
+
+
+def _id_at(r: Reader, pos: int) -> str:
+    r.pos = pos
+    return resource_location(r)
+
+
+def _ticks_at(r: Reader, pos: int, length: int, minimum: int) -> int | None:
+    """The time argument written at ``pos`` in ticks, None if TimeArgument refuses it."""
+    r.pos = pos
+    try:
+        ticks = duration(r, minimum)
+    except ParseError:
+        return None
+    return ticks if r.pos == pos + length else None
 
 
 def trigger(r: Reader, loc) -> ast.Command:

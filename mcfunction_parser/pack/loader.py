@@ -28,7 +28,7 @@ from mcfunction_parser.pack.parallel import FunctionFile, parse_files
 from mcfunction_parser.pack import loot
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
 from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS, open_game_jar
-from mcfunction_parser.pack import advancements, conditions, registry_tags
+from mcfunction_parser.pack import advancements, clocks, conditions, registry_tags
 from mcfunction_parser.pack.registry_tags import RegistryTag
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from mcfunction_parser.pack.versions import (
@@ -75,6 +75,7 @@ class LoadedPacks:
     registry_tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)
     vanilla_data: bool = False  # the game's own tags and loot tables were read from its jar
     loot_tables: dict[str, JsonDocument] = field(default_factory=dict)  # id -> its file (checked: pack.loot)
+    clocks: clocks.Clocks | None = None  # 26.1+: the world clocks and timelines (the game's and the packs')
     item_modifiers: dict[str, JsonDocument] = field(default_factory=dict)
     files: int = 0  # files read: pack.mcmeta, functions, tags, advancements
     # functions the game refuses whole because a line does not parse (ServerFunctionLibrary logs
@@ -170,6 +171,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     _load_loot(packs, result, jar)
     _load_recipes(packs, result, jar)
     _load_dimensions(packs, result)
+    _load_clocks(packs, result)
     return result
 
 
@@ -490,6 +492,26 @@ def _load_dimensions(packs: list[_PackFiles], result: LoadedPacks) -> None:
     for kind, loaded in (("dimension", result.dimensions), ("dimension_type", result.dimension_types)):
         for resource_id, doc in _chosen_json(packs, (kind, kind), result):
             loaded[resource_id] = doc.value
+
+
+def _load_clocks(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """From 26.1, the world clocks and timelines; a function naming one that no registry holds
+    does not load (see pack.clocks)."""
+    if result.version < clocks.WORLD_CLOCKS:
+        return
+    clock_ids = []
+    for clock_id, doc in _chosen_json(packs, ("world_clock", "world_clock"), result):
+        if isinstance(doc.value, dict):
+            clock_ids.append(clock_id)
+        else:
+            result.diagnostics.append(doc.diagnostic(ERROR, "world clock: expected a JSON object", -1))
+    timelines = list(_chosen_json(packs, ("timeline", "timeline"), result))
+    result.clocks = clocks.read_clocks(clock_ids, timelines, result.diagnostics)
+    for function_id, function in list(result.functions.items()):
+        problems = clocks.unknown_references(function, result.clocks, result.sources.get(function.path, []))
+        if problems:
+            result.diagnostics.extend(problems)
+            result.refused[function_id] = result.functions.pop(function_id)
 
 
 def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:

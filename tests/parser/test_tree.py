@@ -180,7 +180,7 @@ def test_a_line_a_release_after_every_tree_may_accept_is_kept_unread():
     text = "frobnicate 1\nscoreboard players frob x\ntime add 1t\n"
     function, diags = parse_function(text, "f", "a:f", (26, 2, 0))
     assert [d.severity for d in diags] == ["warning", "warning"]
-    assert [type(c).__name__ for c in function.commands] == ["UnreadCommand", "UnreadCommand", "Time"]
+    assert [type(c).__name__ for c in function.commands] == ["UnreadCommand", "UnreadCommand", "ClockCommand"]
     assert function.commands[0].name == "frobnicate"
     assert function.commands[0].reason == ("unknown command 'frobnicate' (checked against the 26.1 command tree: "
                                            "dpemu has none for 26.2)")
@@ -189,16 +189,26 @@ def test_a_line_a_release_after_every_tree_may_accept_is_kept_unread():
 
 
 def test_26_1_time_has_world_clocks():
+    from mcfunction_parser.ast import ClockCommand, Time
     from mcfunction_parser.parse import parse_function
-    # 26.1's command tree (minecraft-data 3.119's commands.json): time of <clock> add|set|pause|
-    # resume|rate|query, time pause|resume|rate, query time|<timeline>, set <time marker>; time add
-    # takes a negative time; time query day|daytime are gone ("daytime" reads as a timeline id)
+    # 26.1's command tree (minecraft-data 3.119's commands.json; TimeCommand.register, 26.1.2): time
+    # [of <clock>] add|set|pause|resume|rate|query, query gametime; time add takes a negative time;
+    # set tries <time> before a time marker id (Brigadier takes the first argument that parses:
+    # "-5" is not a time of set, so it reads as the marker minecraft:-5); query day|daytime are gone
+    # ("day" and "daytime" read as timeline ids)
     text = ("time add -5\ntime set 100\ntime query gametime\ntime of a:clock add 1t\ntime pause\n"
-            "time set a:dawn\ntime of a:clock rate 0\ntime query daytime extra\n")
+            "time set a:dawn\ntime of a:clock rate 0\ntime query daytime extra\ntime set -5\n"
+            "time of the_end query a:t repetition\ntime rate 0.1\ntime query time\n")
     function, diags = parse_function(text, "f", "a:f", (26, 1, 0))
-    kinds = [(type(c).__name__, getattr(c, "value", None)) for c in function.commands]
-    assert kinds == [("Time", -5), ("Time", 100), ("Time", None), ("GenericCommand", None),
-                     ("GenericCommand", None), ("GenericCommand", None)]
+    assert function.commands[2] == Time(function.commands[2].loc, "query", None, "gametime")
+    clocks = [(c.action, c.clock, c.value, c.timeline, c.repetition) for c in function.commands
+              if isinstance(c, ClockCommand)]
+    assert clocks == [("add", None, -5, None, False), ("set", None, 100, None, False),
+                      ("add", "a:clock", 1, None, False), ("pause", None, None, None, False),
+                      ("marker", None, "a:dawn", None, False), ("marker", None, "minecraft:-5", None, False),
+                      ("query", "minecraft:the_end", None, "a:t", True),
+                      ("rate", None, 0.10000000149011612, None, False), ("query", None, None, None, False)]
+    assert function.commands[3].clock_loc.col == 9 and function.commands[7].timeline_loc.col == 23
     assert [(d.line, d.message) for d in diags] == [(7, "number must be at least 1e-05, got 0"),
                                                     (8, "expected repetition, got 'extra'")]
     _, diags = parse_function("time add -5\ntime of a:clock pause\nswing @s\n", "f", "a:f", (1, 21, 11))
