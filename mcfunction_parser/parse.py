@@ -82,7 +82,8 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
     macros_ok = feature_problem("macro lines", version) is None
     read = _READ.get(version)
     if read is None or len(read) >= _READ_MAX:
-        read = _READ[version] = {}  # a bound on the memory it keeps: start afresh
+        _READ.clear()  # one release at a time, and a bound on the nodes it keeps alive: start afresh
+        read = _READ[version] = {}
     for item in logical_lines(physical, version):
         if type(item) is LineError:
             diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col, physical[item.line - 1]))
@@ -124,10 +125,10 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
     return function, diagnostics
 
 
-# Per release, each line text read cleanly (no diagnostic) -> (its command, the column it started at),
-# or False for one that cannot be relocated (see .relocate). A line seen again is relocated, not read
-# again: a quarter of the pool pack's command lines repeat an earlier one. A line that had a
-# diagnostic is always read again, so it reports it again.
+# For the release read last, each line text read cleanly (no diagnostic) -> (its command, the
+# column it started at), or False for one that cannot be relocated (see .relocate). A line seen
+# again is relocated, not read again: a quarter of the pool pack's command lines repeat an earlier
+# one. A line that had a diagnostic is always read again, so it reports it again.
 _READ: dict[tuple[int, int, int], dict] = {}
 _READ_MAX = 1 << 15
 

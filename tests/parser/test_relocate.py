@@ -100,3 +100,11 @@ def test_relocation_moves_every_location_and_keeps_the_rest():
     assert second.subcommands[0].targets.args[0].loc.col == first.subcommands[0].targets.args[0].loc.col + 4
     assert second.subcommands[1].range is first.subcommands[1].range  # immutable, no location: shared
     assert second.run.targets.loc.line == 2 and second.run.value == 1
+
+
+def test_the_memory_holds_the_release_read_last():
+    # a check over many releases keeps one release's lines alive, not every release's
+    forget_read_lines()
+    parse_function("say a\n", "a.mcfunction", "t:a", (1, 20, 4))
+    parse_function("say a\n", "a.mcfunction", "t:a", (1, 21, 4))
+    assert list(parse._READ) == [(1, 21, 4)] and "say a" in parse._READ[(1, 21, 4)]
