@@ -9,7 +9,8 @@ arguments against the game's command tree and version problems per command):
   such);
 - ``execute if predicate`` or a selector's ``predicate=`` naming a predicate file that is not
   loaded (error);
-- ``loot`` or ``item modify`` naming a loot table or item modifier that is not loaded, an
+- ``loot`` or ``item modify`` naming a loot table or item modifier that is not loaded, ``recipe``
+  naming a recipe that is not, an
   advancement's ``rewards.loot`` or ``rewards.recipes`` naming a loot table or recipe that is not
   (error in a namespace the packs define, warning in another; ``minecraft:`` only with a game jar);
 - calling a macro function without arguments (directly, by ``schedule``, or as a member of
@@ -337,11 +338,20 @@ def _record_resources(node: ast.Command, function: ast.Function, facts: _Facts) 
         facts.resources.append(("item modifier", modifier.id, node.loc))
 
 
+def _record_recipe(node: ast.GenericCommand, function: ast.Function, facts: _Facts) -> None:
+    """``recipe give|take TARGETS RECIPE``: the recipe, looked up when the command runs."""
+    words = node.text.split()
+    if node.name == "recipe" and len(words) >= 4 and words[-1] != "*":
+        name = words[-1] if ":" in words[-1] else "minecraft:" + words[-1]
+        facts.resources.append(("recipe", name, node.loc))
+
+
 _RECORDS: dict[type, Callable] = {
     ast.FunctionCall: _record_call, ast.Schedule: _record_call, ast.IfFunction: _record_call,
     ast.MacroLine: _record_macro_line, ast.Return: _record_return, ast.IfPredicate: _record_if_predicate,
     ast.SelectorArg: _record_selector_arg, ast.ObjectivesAdd: _record_objective_add,
     ast.Loot: _record_resources, ast.ItemModify: _record_resources, ast.ItemReplace: _record_resources,
+    ast.GenericCommand: _record_recipe,
 }
 
 
@@ -499,19 +509,19 @@ def _check_predicates(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic
 
 
 def _check_resources(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]) -> None:
-    """A loot table or item modifier must be loaded (the command fails when it runs), and so must
+    """A loot table, item modifier or recipe must be loaded (the command fails when it runs), and so must
     the loot tables and recipes of advancement rewards: an error in a namespace the loaded packs
     define, a warning in another; the game's own (``minecraft:``) tables and recipes come only with
     --game-jar, so those are not judged without it."""
-    defined = _namespaces(loaded) - {"minecraft"}
-    loaded_ids = {"loot table": loaded.loot_tables, "item modifier": loaded.item_modifiers}
+    defined = (_namespaces(loaded) | {r.split(":", 1)[0] for r in loaded.recipes}) - {"minecraft"}
+    loaded_ids = {"loot table": loaded.loot_tables, "item modifier": loaded.item_modifiers, "recipe": loaded.recipes}
     for kind, name, loc in facts.resources:
         if name not in loaded_ids[kind] and not name.startswith("minecraft:"):
             found.append(_reference_problem(loaded, f"unknown {kind} {name}", name, defined, loc,
                                             "the command fails when it runs"))
     # AdvancementRewards.grant: an unknown table gives nothing (LootTable.EMPTY), an unknown recipe
     # is skipped (ServerPlayer.awardRecipesByKey), both in silence
-    defined |= {r.split(":", 1)[0] for r in loaded.recipes} | ({"minecraft"} if loaded.vanilla_data else set())
+    defined |= {"minecraft"} if loaded.vanilla_data else set()
     for kind, named, known in (("loot table", loaded.advancement_loot, loaded.loot_tables),
                                ("recipe", loaded.advancement_recipes, loaded.recipes)):
         for name, locs in named.items():

@@ -242,12 +242,15 @@ def test_advancement_loot_and_recipe_rewards_must_exist(tmp_path):
         "data/a/loot_table/chest.json": '{"pools": []}',
         "data/a/recipe/wand.json": '{"type": "minecraft:crafting_shapeless", "ingredients": ["minecraft:stick"],'
                                    ' "result": {"id": "minecraft:stick"}}',
-        "data/a/recipe/broken.json": '{"ingredients": []}'})
+        "data/a/recipe/broken.json": '{"ingredients": []}', **LOAD,
+        fn("load"): "recipe give @a a:wand\nrecipe take @a *\nexecute as @a run recipe give @s a:typo\n"
+                    "recipe give @a minecraft:stick\n"})
     result = check_packs([root])
     errors = {(d.message, d.line) for d in result.of("error")}
     assert errors == {("unknown loot table a:gone (advancement reward)", 10),
                       ("unknown recipe a:nope (advancement reward)", 16),
-                      ("recipe a:broken: missing the string 'type'", 1)}
+                      ("recipe a:broken: missing the string 'type'", 1),
+                      ("unknown recipe a:typo", 3)}  # RecipeCommand: the id is looked up when it runs
     assert [d.message.split(":")[0:2] for d in result.of("warning")] == [["unknown loot table lib", "bonus (advancement reward)"]]
 
 
