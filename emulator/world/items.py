@@ -13,7 +13,7 @@ Public API
   ``{id, Count:1b, tag}`` before (ItemStack.save / ItemStack.parse, both forms are read).
 - ``DEFAULTS``: the defaults modelled: ``max_stack_size`` (1, 16 or 64), ``max_damage`` and
   ``damage`` of damageable items, the empty ``container`` of container blocks' items, the empty
-  ``bundle_contents`` of bundles, ``writable_book_content`` of the book and quill, ``fireworks``
+  ``bundle_contents`` of bundles, an enchanted book's empty ``stored_enchantments``, ``writable_book_content`` of the book and quill, ``fireworks``
   of rockets (flight duration 1) and music discs' ``jukebox_playable`` song (Items' registrations).
   Other default components (lore, rarity ...) are not modelled.
 
@@ -76,6 +76,8 @@ def _content_defaults(name: str) -> Compound:
         return Compound({"minecraft:container": List()})
     if name == "bundle" or name.endswith("_bundle"):
         return Compound({"minecraft:bundle_contents": List()})
+    if name == "enchanted_book":  # ItemEnchantments.EMPTY, as 1.21.5+ writes it
+        return Compound({"minecraft:stored_enchantments": Compound()})
     if name == "writable_book":
         return Compound({"minecraft:writable_book_content": Compound()})
     if name == "firework_rocket":

@@ -187,6 +187,8 @@ def test_attribute_modifiers_trims_songs_and_villager_variants():
     # ... unless the patch removed it (the removal of a default is kept: PatchedDataComponentMap)
     assert not holds("stone[!attribute_modifiers]", "*[attribute_modifiers~{}]")
     assert holds("stone", "*[enchantments~[]]") and not holds("stone[!enchantments]", "*[enchantments~[]]")
+    # Items.ENCHANTED_BOOK: stored_enchantments, empty by default
+    assert holds("enchanted_book", "*[stored_enchantments~[]]") and not holds("book", "*[stored_enchantments~[]]")
     # ItemTrimPredicate: the material and pattern in their HolderSets; an inline material in none
     chest = "iron_chestplate[trim={material:'minecraft:gold',pattern:'minecraft:coast'}]"
     assert holds(chest, "*[trim~{material:'minecraft:gold',pattern:['minecraft:coast','minecraft:dune']}]")
