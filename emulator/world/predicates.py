@@ -450,13 +450,17 @@ def _effects(value: dict, ctx: LootContext, entity: Entity) -> bool:
 
 
 def _location_field(key: str):
-    """``location`` (the entity's position), ``stepping_on`` (EntityPredicate.LocationWrapper:
-    getOnPos, 0.2 below the feet) and ``movement_affected_by`` (0.500001 below)."""
-    drop = {"location": 0.0, "stepping_on": 0.2, "movement_affected_by": 0.500001}[key]
+    """``location`` (the entity's exact position), ``stepping_on`` and ``movement_affected_by``
+    (EntityPredicate.matches: Vec3.atCenterOf the block getOnPos finds 0.2 below the feet, and
+    getBlockPosBelowThatAffectsMyMovement 0.500001 below; the supporting block an entity on a
+    block's edge stands on is not modelled: the block under its position is taken)."""
+    drop = {"stepping_on": 0.2, "movement_affected_by": 0.500001}.get(key)
 
     def check(value: dict, ctx: LootContext, entity: Entity) -> bool:
         x, y, z = entity.pos
-        return location_matches(value, ctx, (x, y - drop, z))
+        if drop is None:
+            return location_matches(value, ctx, (x, y, z))
+        return location_matches(value, ctx, tuple(math.floor(v) + 0.5 for v in (x, y - drop, z)))
     return check
 
 

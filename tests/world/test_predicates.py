@@ -380,3 +380,17 @@ def test_the_player_predicate_reads_the_recipe_book(state):
     check = lambda wanted: holds({"condition": "entity_properties", "entity": "this", "predicate": {  # noqa: E731
         "type_specific": {"type": "player", "recipes": wanted}}}, ctx(state, this=player))
     assert check({"t:wand": True, "t:staff": False}) and not check({"t:wand": False}) and not check({"t:staff": True})
+
+
+def test_stepping_on_reads_the_centre_of_the_block_below(state):
+    # EntityPredicate.matches: location at the entity's exact position; stepping_on at
+    # Vec3.atCenterOf(getOnPos()), the block 0.2 below the feet; movement_affected_by 0.500001 below
+    state.blocks.setblock((0, 63, 0), BlockSpec("minecraft:stone", False, (), None))
+    pig = state.entities.summon("minecraft:pig", (0.3, 64.0, 0.7))
+    near = lambda field, x: holds({"condition": "entity_properties", "entity": "this", "predicate": {  # noqa: E731
+        field: {"position": {"x": {"min": x - 0.01, "max": x + 0.01}}, "block": {"blocks": "minecraft:stone"}}}},
+        ctx(state, this=pig))
+    assert near("stepping_on", 0.5) and near("movement_affected_by", 0.5) and not near("stepping_on", 0.3)
+    assert not near("location", 0.3)  # its own block is air
+    assert holds({"condition": "entity_properties", "entity": "this", "predicate": {
+        "location": {"position": {"x": {"min": 0.29, "max": 0.31}}}}}, ctx(state, this=pig))
