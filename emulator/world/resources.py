@@ -27,6 +27,9 @@ from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS
 from mcfunction_parser.pack.registry_tags import RegistryTag
 
 
+_READ_ENCHANTMENTS = ("unbreaking",)  # the enchantments whose effects the emulator carries out
+
+
 @dataclass
 class Resources:
     loot_tables: dict = field(default_factory=dict)  # id -> JSON value
@@ -38,6 +41,7 @@ class Resources:
     tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)  # registry -> tag id -> tag
     vanilla_data: bool = False  # the game's own tags and loot tables were loaded (from its jar)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # loot rolls, dropped items
+    redefined_enchantments: frozenset = frozenset()  # vanilla enchantments a pack's file redefines
 
     @classmethod
     def from_packs(cls, packs) -> "Resources":
@@ -47,6 +51,8 @@ class Resources:
                     recipes=dict(packs.recipes),
                     tags={registry: dict(tags) for registry, tags in packs.registry_tags.items()},
                     vanilla_data=packs.vanilla_data)
+        found.redefined_enchantments = frozenset(
+            f"minecraft:{e}" for e in _READ_ENCHANTMENTS if packs.read_file(f"data/minecraft/enchantment/{e}.json"))
         for kind, docs in (("loot_table", tables), ("item_modifier", modifiers)):
             found.paths.update((f"{kind} {k}", d.path) for k, d in docs.items())
         return found

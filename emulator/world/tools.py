@@ -11,29 +11,37 @@
   counts ``minecraft.used:<item>`` and, unless the block breaks instantly (destroy time 0; shears
   also then, but not on fire), takes its ``damage_per_block``
   (ItemStack.hurtAndBreak: none for an unbreakable item or a creative player; the damage, and at
-  the maximum the item breaks with ``minecraft.broken:<item>``). The ``item_durability_changed``
-  trigger is not observed (armour's wear is not modelled either).
+  the maximum the item breaks with ``minecraft.broken:<item>``), less what Unbreaking spares, with
+  the ``item_durability_changed`` trigger (armour's wear is not modelled).
 
 Not modelled (Unmodelled): the mining speed (PackTest's ``dummy mine`` breaks the block at once,
-DummyCommand.mineBlock -> ServerPlayerGameMode.destroyBlock, so no pack sees it), the Unbreaking
-enchantment's chance, maces and tridents, and tools of pre-1.20.5 NBT ``Unbreakable``.
+DummyCommand.mineBlock -> ServerPlayerGameMode.destroyBlock, so no pack sees it), the effects of
+a pack's own enchantments and of a redefined Unbreaking (enchantment files are not read).
 
 Sources (decompiled 1.21.x and 26.1): world/item/component/Tool.java (isCorrectForDrops),
 ToolMaterial.java (incorrect_for_<tier>_tool tags), Item.java and ShearsItem.java (mineBlock),
-ItemStack.java (mineBlock, hurtAndBreak, processDurabilityChange, applyDamage); before 1.20.5
+ItemStack.java (mineBlock, hurtAndBreak, processDurabilityChange, applyDamage),
+item/enchantment/Enchantments.java (UNBREAKING), effects/RemoveBinomial.java, advancements/critereon/
+ItemDurabilityTrigger.java, DigDurabilityEnchantment.java before 1.21; before 1.20.5
 DiggerItem.java and Tiers.java (tier levels).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
 
-from emulator.world import statistics
+import numpy as np
+
+from emulator.world import advancements, predicates, statistics
 from emulator.world.errors import Unmodelled
-from emulator.world.items import ItemStack, enchantment_level, set_component
+from emulator.world.items import ItemStack, enchantment_level, enchantment_levels, set_component
+from emulator.world.loot_context import in_range
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from mcfunction_parser.nbt import Compound, Int, List, String
 
+F32 = np.float32
 COMPONENTS_VERSION = (1, 20, 5)
+ENCHANTMENT_EFFECTS_VERSION = (1, 21, 0)  # enchantments as data with effect components
+_ARMOUR = ("_helmet", "_chestplate", "_leggings", "_boots")  # #enchantable/armor's vanilla members (with turtle_helmet)
 TIERS = {"wooden": 0, "golden": 0, "stone": 1, "copper": 1, "iron": 2, "diamond": 3, "netherite": 4}
 _MINEABLE = {"pickaxe": "pickaxe", "axe": "axe", "shovel": "shovel", "hoe": "hoe"}
 # blocks whose destroy time is 0 (BlockBehaviour.Properties.instabreak()): a tool takes no damage
@@ -126,21 +134,26 @@ def mine_block(state, player, access, block_id: str) -> None:
 
 
 def hurt_and_break(state, player, access, amount: int) -> None:
-    """ItemStack.hurtAndBreak -> processDurabilityChange, applyDamage (its item_durability_changed
-    trigger is not observed here)."""
+    """ItemStack.hurtAndBreak: nothing for an item that takes no damage or a player with infinite
+    materials; the damage less what Unbreaking spares (processDurabilityChange), then
+    ``item_durability_changed`` with the damage to come, the new ``damage`` and, at the maximum,
+    the item broken (``minecraft.broken:<item>``)."""
     stack = access.get()
     max_damage = stack.component("minecraft:max_damage")
     if (not is_numeric(max_damage) or stack.component("minecraft:unbreakable") is not None
             or (stack.tag or {}).get("Unbreakable") or player.gamemode == "creative"):
         return
-    old_enchantments = (stack.tag or {}).get("Enchantments") or ()
-    if enchantment_level(stack, "minecraft:unbreaking") or any(
-            "unbreaking" in str(e.get("id", "")) for e in old_enchantments if isinstance(e, Compound)):
-        raise Unmodelled(f"the Unbreaking enchantment's chance to spare {stack.id}")
-    damage = stack.component("minecraft:damage") if tuple(state.version) >= COMPONENTS_VERSION else \
-        (stack.tag or {}).get("Damage")
-    new_damage = (int(numeric_value(damage)) if is_numeric(damage) else 0) + amount
-    if tuple(state.version) >= COMPONENTS_VERSION:
+    if amount > 0:
+        amount -= _spared(state, stack, amount)
+        if amount <= 0:
+            return
+    components = tuple(state.version) >= COMPONENTS_VERSION
+    damage = stack.component("minecraft:damage") if components else (stack.tag or {}).get("Damage")
+    old_damage = int(numeric_value(damage)) if is_numeric(damage) else 0
+    new_damage = old_damage + amount
+    advancements.trigger(state, player, "item_durability_changed",
+                         _durability_test(stack, int(numeric_value(max_damage)), old_damage, new_damage))
+    if components:
         set_component(stack, "minecraft:damage", Int(new_damage))
     else:
         stack.tag = stack.tag if stack.tag is not None else Compound()
@@ -149,3 +162,45 @@ def hurt_and_break(state, player, access, amount: int) -> None:
         stack.count -= 1
         statistics.award(state, player, statistics.stat_name("broken", stack.id))
     access.set(stack)
+
+
+def _spared(state, stack: ItemStack, amount: int) -> int:
+    """The damage points Unbreaking spares, drawn from the emulator's seeded random (the game draws
+    from the level's). From 1.21 its item_damage effect (Enchantments.UNBREAKING: remove_binomial,
+    each point spared with chance level / (level + 1), armour 2 level / (5 level + 5), float math);
+    before, DigDurabilityEnchantment.shouldIgnoreDurabilityDrop (armour first passes 60 %, then
+    nextInt(level + 1) > 0)."""
+    if tuple(state.version) >= ENCHANTMENT_EFFECTS_VERSION:
+        foreign = [e for e in enchantment_levels(stack) if not e.startswith("minecraft:")]
+        if foreign or "minecraft:unbreaking" in state.resources.redefined_enchantments:
+            raise Unmodelled(f"the item_damage effects of {(foreign or ['a redefined minecraft:unbreaking'])[0]} "
+                             "(enchantment files are not read)")
+    level = _unbreaking_level(state, stack)
+    if level <= 0:
+        return 0
+    random = state.resources.random
+    armour = stack.id.endswith(_ARMOUR)
+    if tuple(state.version) >= ENCHANTMENT_EFFECTS_VERSION:
+        chance = F32(2 * level) / F32(10 + 5 * (level - 1)) if armour else F32(level) / F32(2 + (level - 1))
+        return sum(F32(random.random()) < chance for _ in range(amount))
+    return sum(not (armour and random.random() < 0.6) and random.randrange(level + 1) > 0 for _ in range(amount))
+
+
+def _unbreaking_level(state, stack: ItemStack) -> int:
+    if tuple(state.version) >= COMPONENTS_VERSION:
+        return enchantment_level(stack, "minecraft:unbreaking")
+    for entry in (stack.tag or {}).get("Enchantments") or ():
+        if isinstance(entry, Compound) and str(entry.get("id", "")).removeprefix("minecraft:") == "unbreaking":
+            return int(numeric_value(entry.get("lvl", Int(0))))
+    return 0
+
+
+def _durability_test(stack: ItemStack, max_damage: int, old_damage: int, new_damage: int):
+    """ItemDurabilityTrigger: ``item`` (the stack before the damage), ``durability`` (what is left
+    after it), ``delta`` (the old damage less the new: negative)."""
+    def test(conditions: dict, ctx) -> bool:
+        return ((conditions.get("item") is None or predicates.item_matches(conditions["item"], ctx, stack))
+                and (conditions.get("durability") is None
+                     or in_range(conditions["durability"], max_damage - new_damage, ctx))
+                and (conditions.get("delta") is None or in_range(conditions["delta"], old_damage - new_damage, ctx)))
+    return test

@@ -173,7 +173,8 @@ def test_operator_blocks_refuse_and_adventure_players_cannot_mine(tmp_path):
 
 @pytest.mark.parametrize("setup, reason", [
     ("setblock ~2 ~ ~ grass_block", "the game's own loot table minecraft:blocks/grass_block"),
-    ("setblock ~2 ~ ~ dirt\ngive @s diamond_pickaxe[enchantments={levels:{\"minecraft:unbreaking\":1}}]", "Unbreaking"),
+    ("setblock ~2 ~ ~ dirt\ngive @s diamond_pickaxe[enchantments={levels:{\"demo:brittle\":1}}]",
+     "the item_damage effects of demo:brittle"),
     ("setblock ~2 ~ ~ stone\ngive @s iron_pickaxe", "the vanilla block tag #minecraft:incorrect_for_iron_tool"),
     ("setblock ~2 ~ ~ dirt\ngive @s trident", "mining with minecraft:trident"),
     ("setblock ~2 ~ ~ magma_block", "whether it needs the right tool"),

@@ -94,3 +94,34 @@ def test_before_1_20_5_the_tier_and_needs_tags_decide(tmp_path):
         "dummy @s mine ~2 ~1 ~\n"
         "assert entity @e[type=item]\n"), pack_format=26, files=files)
     assert result.status == "passed", result.report()
+
+
+WORN = {  # item_durability_changed counted by a reward that revokes the advancement to hear the next
+    **TAGS,
+    "demo/advancement/worn.json": json.dumps({"criteria": {"w": {"trigger": "minecraft:item_durability_changed",
+        "conditions": {"item": {"items": "minecraft:diamond_pickaxe"}, "delta": -1}}},
+        "rewards": {"function": "demo:worn"}}),
+    "demo/advancement/low.json": json.dumps({"criteria": {"w": {"trigger": "minecraft:item_durability_changed",
+        "conditions": {"durability": {"max": 1555}}}}}),
+    "demo/function/worn.mcfunction": "scoreboard players add @s worn 1\nadvancement revoke @s only demo:worn\n",
+}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_unbreaking_spares_some_damage_and_each_point_taken_fires_item_durability_changed(tmp_path, backend):
+    """ItemStack.hurtAndBreak: processDurabilityChange (Unbreaking III: each point spared with chance
+    3/4, from the seeded random) before ItemDurabilityTrigger (delta: old damage - new; durability:
+    what is left), which fires only for damage taken."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add worn dummy\n"
+        "fill ~2 ~ ~ ~2 ~19 ~ stone\n"
+        "give @s diamond_pickaxe[enchantments={levels:{\"minecraft:unbreaking\":3}}]\n"
+        + "".join(f"dummy @s mine ~2 ~{y} ~\n" for y in range(19, -1, -1)) +
+        "execute store result score #damage worn run data get entity @s SelectedItem.components.\"minecraft:damage\"\n"
+        "assert score #damage worn matches 1..15\n"          # 20 blocks, about 5 points taken
+        "assert score #damage worn = @s worn\n"
+        "assert entity @s[advancements={demo:low=false}]\n"
+        "item replace entity @s weapon.mainhand with diamond_pickaxe[damage=1554]\n"
+        "setblock ~2 ~ ~ stone\ndummy @s mine ~2 ~ ~\n"
+        "assert entity @s[advancements={demo:low=true}]\n"), pack_format=61, files=WORN, backend=backend)
+    assert result.status == "passed", result.report()
