@@ -31,7 +31,7 @@ from __future__ import annotations
 import math
 import weakref
 
-from emulator.world import advancements, block_placing, block_shapes, inventories, statistics
+from emulator.world import advancements, block_placing, block_shapes, inventories, item_cooldowns, statistics
 from emulator.world.blocks import BlockState
 from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
@@ -91,7 +91,7 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
                     trigger, used = "item_used_on_block", stack
                 advancements.trigger(state, player, trigger, advancements.location_test(state, player, pos, used))
                 return result
-    if stack.is_empty:
+    if stack.is_empty or item_cooldowns.on_cooldown(state, player, stack):
         return "pass"
     placed = block_placing.place(state, player, hand_slot(hand), pos, face, hit)
     if placed is None:

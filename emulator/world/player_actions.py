@@ -6,8 +6,8 @@ each (the item entity, the inventory NBT, statistics, the ``using_item``/``consu
   stack) out of the selected hotbar slot as an item entity thrown by the player; None when the hand
   is empty.
 - ``swap_hands(state, player)``: the main hand and offhand stacks trade places.
-- ``use_item(state, player, hand)``: ServerPlayerGameMode.useItem -> Item.use for the items whose
-  use is modelled (:data:`USES`, and what emulator.world.consumables says is eaten or drunk: its
+- ``use_item(state, player, hand)``: ServerPlayerGameMode.useItem (an item whose cooldown group
+  cools down passes: emulator.world.item_cooldowns) -> Item.use for the items whose use is modelled (:data:`USES`, and what emulator.world.consumables says is eaten or drunk: its
   food, effects and use remainder); returns ``"consume"``, ``"pass"`` or ``"fail"`` (InteractionResult:
   only ``consume`` is an action the client's use stops at). Any other item raises Unmodelled.
 - ``tick_using(state)``: each player using an item (LivingEntity.updatingUsingItem): the
@@ -28,8 +28,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from emulator.world import (advancements, combat, consumables, inventories, living, predicates, projectile_weapons,
-                            recipes, statistics)
+from emulator.world import (advancements, combat, consumables, inventories, item_cooldowns, living, predicates,
+                            projectile_weapons, recipes, statistics)
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import numeric_value
@@ -100,8 +100,8 @@ def use_item(state, player, hand: str) -> str:
     stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
     if stack.is_empty:
         return "pass"  # Items.AIR: Item.use passes
-    if stack.component("minecraft:use_cooldown") is not None:
-        raise Unmodelled(f"the use cooldown of {stack.id} (ItemCooldowns)")
+    if item_cooldowns.on_cooldown(state, player, stack):
+        return "pass"
     consumable = consumables.consumable(stack, state.version)
     if consumable is not None:
         return _start_consuming(state, player, hand, stack, consumable)
@@ -171,7 +171,7 @@ def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: con
     if consumable.ticks > 0:
         state.using_items[player] = _Using(hand, stack.id, consumable.ticks)
         return "consume"
-    _finish(state, player, hand, consumable)
+    _finish(state, player, hand, consumable)  # ItemStack.use: at once, then its cooldown (in _finish)
     return "consume"
 
 
@@ -217,6 +217,7 @@ def _finish(state, player, hand: str, consumable: consumables.Consumable) -> Non
     inventory or is dropped)."""
     access = inventories.entity_slot(player, hand_slot(hand), state.version)
     stack = access.get()
+    before = stack.copy()
     statistics.award(state, player, statistics.stat_name("used", stack.id))
     advancements.trigger(state, player, "consume_item", _item_test(state, stack))
     if consumable.food is not None:
@@ -225,12 +226,11 @@ def _finish(state, player, hand: str, consumable: consumables.Consumable) -> Non
     _give_effects(state, player, consumable.effects_to_apply(state.resources.random))
     for effect in consumable.effects:
         _CONSUME_EFFECTS[_effect_type(effect)](state, player, effect)
-    if player.gamemode == "creative":
-        return  # hasInfiniteMaterials: nothing shrinks, no remainder
-    before = stack.count
-    _consume_one(state, player, hand)
-    if consumable.remainder is not None and before > 0:
-        _give_remainder(state, player, access, consumable.remainder.copy())
+    if player.gamemode != "creative":  # hasInfiniteMaterials: nothing shrinks, no remainder
+        _consume_one(state, player, hand)
+        if consumable.remainder is not None and before.count > 0:
+            _give_remainder(state, player, access, consumable.remainder.copy())
+    item_cooldowns.apply_use_cooldown(state, player, before)  # applyAfterUseComponentSideEffects
 
 
 def _effect_type(effect) -> str:

@@ -444,6 +444,7 @@ class WorldState:
     bossbars: BossBars = field(default_factory=BossBars)
     advancement_progress: Progress = field(default_factory=Progress)  # each player's criteria
     using_items: dict = field(default_factory=dict)  # player -> the item it is using (emulator.world.player_actions)
+    item_cooldowns: dict = field(default_factory=dict)  # player -> cooldown group -> its end tick (item_cooldowns)
     command_runner: object = None  # runs a command block's text: (text, Context) -> success (set by the runtime)
     pending_rewards: list = field(default_factory=list)  # (reward function, player) earned, to run next (take_rewards)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)

@@ -144,10 +144,33 @@ def test_chorus_fruit_teleporting_is_not_modelled(tmp_path):
     assert "teleport_randomly" in result.message
 
 
-def test_an_item_with_a_use_cooldown_is_not_modelled(tmp_path):
-    """ItemStack.applyAfterUseComponentSideEffects -> UseCooldown.apply: a cooldown the emulator does
-    not keep (a second use would pass in the game)."""
-    result = run(tmp_path, "# @dummy\ngive @s stick[consumable={},use_cooldown={seconds:1}]\ndummy @s use item\n"
-                           "succeed\n", pack_format=61)
-    assert result.status == "inconclusive", result.report()
-    assert "use cooldown" in result.message
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_use_cooldown_makes_the_next_uses_of_its_group_pass_until_it_ends(tmp_path, backend):
+    """ItemStack.use -> applyAfterUseComponentSideEffects -> UseCooldown.apply: the group (the
+    cooldown_group, else the item) cools down Math.round(seconds * 20) ticks; meanwhile
+    ServerPlayerGameMode.useItem passes (ItemCooldowns.isOnCooldown), also for another item of the
+    group, and useItemOn uses the block without the item (no placement)."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add ate minecraft.used:minecraft.stick\n"
+        "scoreboard objectives add placed minecraft.used:minecraft.stone\n"
+        "give @s stick[consumable={consume_seconds:0},use_cooldown={seconds:1,cooldown_group:\"demo:g\"}] 4\n"
+        "dummy @s use item\n"
+        "assert score @s ate matches 1\n"
+        "dummy @s use item\n"                            # cooling down: passes
+        "assert score @s ate matches 1\n"
+        "item replace entity @s weapon.offhand with stone[use_cooldown={seconds:5,cooldown_group:\"demo:g\"}]\n"
+        "setblock ~3 ~ ~ dirt\n"
+        "dummy @s swap\n"
+        "dummy @s use block ~3 ~ ~ up\n"                 # the stone is of the same group: not placed
+        "assert block ~3 ~1 ~ air\n"
+        "dummy @s swap\n"
+        "await delay 19\n"
+        "dummy @s use item\n"
+        "assert score @s ate matches 1\n"
+        "await delay 1\n"                                # 20 ticks after the use
+        "dummy @s use item\n"
+        "assert score @s ate matches 2\n"
+        "assert items entity @s weapon.mainhand stick[count=2]\n"
+        "fail \"end\"\n"), pack_format=61, backend=backend)
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert "\n".join(result.details).count("cannot use that item") == 2
