@@ -5,7 +5,8 @@ block (slabs, stairs, fences, carpets ...) raises Unmodelled: its shape is not i
 
 - ``is_solid(block)``: BlockStateBase.isSolid (a wall sign or a standing sign needs it);
 - ``is_face_sturdy(block)``: isFaceSturdy for any face (a torch, a door's floor);
-- ``is_collision_full(block)``: isCollisionShapeFullBlock (a door's hinge side).
+- ``is_collision_full(block)``: isCollisionShapeFullBlock (a door's hinge side);
+- ``collides(block)``: a collision shape at all (Level.noCollision: a random teleport's landing).
 For a full cube the three hold, for an empty shape none does, so one classification answers all.
 
 Sources (decompiled 1.21.x): world/level/block/state/BlockBehaviour.java (BlockStateBase.
@@ -69,6 +70,11 @@ def _kind(block) -> bool:
     if name.endswith("_slab") and dict(block.properties).get("type") == "double":
         return True
     raise Unmodelled(f"the shape of {block.id} (a placement beside it reads it)")
+
+
+def collides(block) -> bool:
+    """Whether the block's collision shape is not empty (for the blocks known here: a full cube)."""
+    return _kind(block)
 
 
 def is_solid(block) -> bool:

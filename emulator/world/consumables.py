@@ -10,8 +10,8 @@ game keeps in code rather than data.
 - ``Consumable.effects_to_apply(rng) -> list``: the (effect, duration, amplifier) it gives now,
   with the probabilities drawn from ``rng`` (the emulator's random, not the player's own).
 
-Not modelled (raise Unmodelled where met): ``teleport_randomly`` (chorus fruit), ``play_sound``
-is nothing a pack observes (ignored), custom potion effects in the pre-1.20.5 NBT form.
+Not modelled (raise Unmodelled where met): custom potion effects in the pre-1.20.5 NBT form;
+``play_sound`` is nothing a pack observes (ignored).
 
 Sources (decompiled 1.21.x and 26.1): world/food/Foods.java, FoodProperties.java (Builder.build:
 saturation = FoodConstants.saturationByModifier = nutrition x modifier x 2), world/item/component/

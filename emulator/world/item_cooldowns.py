@@ -8,7 +8,7 @@ no ``using_item``, no statistic), and a block is used without it.
   Math.round(seconds * 20) ticks.
 The group is the component's ``cooldown_group``, else the item's id (ItemCooldowns.getCooldownGroup);
 the vanilla items that carry the component by default are the ender pearl, the chorus fruit and the
-wind charge. The player's tick count is the world's (both advance once a server tick).
+wind charge (before 1.21.2 the chorus fruit and the ender pearl cool down 20 ticks, in code). The player's tick count is the world's (both advance once a server tick).
 
 Sources (decompiled 1.21.2+): world/item/ItemCooldowns.java (addCooldown, isOnCooldown,
 getCooldownPercent, tick), world/item/component/UseCooldown.java, world/item/Items.java
@@ -27,12 +27,13 @@ from mcfunction_parser.nbt import Compound
 
 USE_COOLDOWN_VERSION = (1, 21, 2)
 _VANILLA_SECONDS = {"minecraft:ender_pearl": 1.0, "minecraft:chorus_fruit": 1.0, "minecraft:wind_charge": 0.5}
+_LEGACY = ("minecraft:chorus_fruit", "minecraft:ender_pearl")  # their 20-tick cooldown in code before 1.21.2
 
 
 def _use_cooldown(state, stack: ItemStack) -> tuple[float, str] | None:
     """The stack's use_cooldown: (seconds, group); None without one."""
-    if tuple(state.version) < USE_COOLDOWN_VERSION:
-        return None
+    if tuple(state.version) < USE_COOLDOWN_VERSION:  # ChorusFruitItem, EnderpearlItem: addCooldown(item, 20)
+        return (1.0, stack.id) if stack.id in _LEGACY else None
     if "!minecraft:use_cooldown" in stack.patch:
         return None
     tag = stack.component("minecraft:use_cooldown")

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from emulator.world import (advancements, combat, consumables, inventories, item_cooldowns, living, predicates,
-                            projectile_weapons, recipes, statistics)
+                            projectile_weapons, random_teleport, recipes, statistics)
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import numeric_value
@@ -269,11 +269,17 @@ def _clear_all_effects(state, player, effect) -> None:
         advancements.effects_changed(state, player, None)
 
 
+def _teleport_randomly(state, player, effect) -> None:
+    """TeleportRandomlyConsumeEffect (a chorus fruit's; ChorusFruitItem before 1.21.2)."""
+    diameter = effect.get("diameter")
+    random_teleport.teleport_randomly(state, player, float(numeric_value(diameter)) if diameter is not None else 16.0)
+
+
 # the consume effects carried out after the listeners (apply_effects: effects_to_apply; play_sound:
 # nothing a pack observes)
 _CONSUME_EFFECTS = {"apply_effects": lambda state, player, effect: None,
                     "remove_effects": _remove_effects, "clear_all_effects": _clear_all_effects,
-                    "play_sound": lambda state, player, effect: None}
+                    "teleport_randomly": _teleport_randomly, "play_sound": lambda state, player, effect: None}
 
 
 def _give_remainder(state, player, access, remainder: ItemStack) -> None:

@@ -136,12 +136,26 @@ def test_a_creative_dummy_keeps_the_potion(tmp_path):
     assert result.status == "passed", result.report()
 
 
-def test_chorus_fruit_teleporting_is_not_modelled(tmp_path):
-    """Consumables.CHORUS_FRUIT: teleport_randomly (a random teleport): the test is inconclusive."""
-    result = run(tmp_path, "# @dummy\ngive @s chorus_fruit\ndummy @s use item\nawait delay 32\nsucceed\n",
-                 pack_format=61)
-    assert result.status == "inconclusive", result.report()
-    assert "teleport_randomly" in result.message
+@pytest.mark.parametrize("pack_format", [48, 61])
+def test_chorus_fruit_teleports_the_eater_onto_ground_nearby_and_cools_down(tmp_path, pack_format):
+    """Consumables.CHORUS_FRUIT (1.21.2+: teleport_randomly, use_cooldown 1 s; before, ChorusFruitItem.
+    finishUsingItem and addCooldown(item, 20)): LivingEntity.randomTeleport lands it on the first
+    block below that blocks motion, within 8 blocks in x and z, in a free spot; a second fruit
+    right after passes (cooling down). The spot comes from the seeded random."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "fill ~-8 ~-1 ~-8 ~8 ~-1 ~8 stone\n"
+        "give @s chorus_fruit 2\n"
+        "dummy @s use item\n"
+        "await delay 32\n"
+        "assert not entity @s[x=0.5,y=1,z=0.5,distance=..0.01]\n"
+        "assert entity @s[x=-7.5,y=-7,z=-7.5,dx=16,dy=16,dz=16]\n"
+        "execute at @s if block ~ ~-1 ~ air run fail \"nothing below\"\n"
+        "execute at @s unless block ~ ~ ~ air run fail \"inside a block\"\n"
+        "dummy @s use item\n"
+        "assert items entity @s weapon.mainhand chorus_fruit[count=1]\n"
+        "fail \"end\"\n"), pack_format=pack_format)
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert "\n".join(result.details).count("cannot use that item") == 1
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])
