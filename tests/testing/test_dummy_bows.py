@@ -58,8 +58,30 @@ def test_a_charged_crossbow_shoots_its_arrow_along_the_view(tmp_path, pack_forma
     assert result.status == "passed", result.report()
 
 
-def test_multishot_and_fireworks_are_not_modelled(tmp_path):
-    result = run(tmp_path, "# @dummy\ngive @s crossbow[charged_projectiles=[{id:\"minecraft:firework_rocket\"}]]\n"
-                           "dummy @s use item\nsucceed\n", pack_format=61)
-    assert result.status == "inconclusive", result.report()
-    assert "from a crossbow" in result.message
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_multishot_spreads_the_volley_and_a_rocket_slows_it(tmp_path, backend):
+    """ProjectileWeaponItem.shoot: Multishot I spreads three projectiles over 10 degrees each side
+    of the view (0, +10, -10 about the up vector); a firework rocket among them makes the whole
+    volley 1.6 blocks a tick (CrossbowItem.getShootingPower) and is a FireworkRocketEntity at the
+    eyes less 0.15, shot at an angle; the crossbow wears 1 per arrow and 3 per rocket."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add t dummy\n"
+        "give @s crossbow[enchantments={levels:{\"minecraft:multishot\":1,\"minecraft:piercing\":2}},"
+        "charged_projectiles=[{id:\"minecraft:arrow\",count:1},{id:\"minecraft:arrow\",count:1},"
+        "{id:\"minecraft:firework_rocket\",count:1,components:{\"minecraft:fireworks\":{flight_duration:2}}}]]\n"
+        "dummy @s use item\n"
+        "assert entity @e[type=arrow,nbt={PierceLevel:2b}]\n"
+        "execute store result score #n t if entity @e[type=arrow]\n"
+        "assert score #n t matches 2\n"
+        "assert entity @e[type=firework_rocket,x=0.5,y=2.47,z=0.5,distance=..0.001,nbt={ShotAtAngle:1b}]\n"
+        "execute store result score #life t run data get entity @e[type=firework_rocket,limit=1] LifeTime\n"
+        "assert score #life t matches 30..41\n"          # 10 x (2 + 1) + nextInt(6) + nextInt(7)
+        "execute as @e[type=arrow] store result score @s t run data get entity @s Motion[0] 1000\n"
+        # the straight arrow: x within the spread; the second turned -10 degrees about +y (towards -x:
+        # 1.6 x sin(10 deg) = 0.278), the rocket +10 degrees
+        "assert entity @e[type=arrow,scores={t=-30..30}]\n"
+        "assert entity @e[type=arrow,scores={t=-300..-250}]\n"
+        "execute store result score #vx t run data get entity @e[type=firework_rocket,limit=1] Motion[0] 1000\n"
+        "assert score #vx t matches 250..300\n"
+        "assert data entity @s SelectedItem.components{\"minecraft:damage\":5}\n"), pack_format=61, backend=backend)
+    assert result.status == "passed", result.report()
