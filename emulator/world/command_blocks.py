@@ -18,7 +18,7 @@ game runs them, with the block entity fields a pack reads back (``SuccessCount``
   ``maxCommandChainLength`` steps).
 - Running the command (BaseCommandBlock.performCommand): not twice in a game time (``LastExecution``
   with ``UpdateLastExecution``); ``SuccessCount`` the command's success (1 or 0); as a source at the
-  block's centre, rotated to its facing (Direction.toYRot), in the overworld, with no entity. The
+  block's centre, rotated to its facing (Direction.toYRot), in the block's level, with no entity. The
   runtime runs the text (``state.command_runner(text, context) -> bool | None``: True on success).
 
 Power (Level.hasNeighborSignal) comes from a neighbouring redstone block, a powered lever or
@@ -27,8 +27,8 @@ modelled (a warning: the test is inconclusive). ``LastOutput`` (with ``TrackOutp
 message the command sent its source, after ``[HH:mm:ss] `` from the wall clock (:func:`feedback`:
 ``help``'s usage, none from ``tellraw``, ``say`` and ``return N``); another command's message is
 not produced (the time alone, and a warning: the test is inconclusive). A command that forks over several contexts
-counts one success, the game one per context. Command blocks outside the overworld do not run
-(a warning). ``CustomName`` naming the source (``@`` by default) is not modelled.
+counts one success, the game one per context. A command block in another level runs there (the
+level's blocks, block ticks and the command's dimension). ``CustomName`` naming the source (``@`` by default) is not modelled.
 
 Sources (decompiled 1.21.x and 26.1): world/level/block/CommandBlock.java (neighborChanged, tick,
 execute, executeChain, setPoweredAndUpdate), block/entity/CommandBlockEntity.java (loadAdditional,
@@ -87,14 +87,11 @@ def _beside(pos, direction: str):
 
 # ---------------------------------------------------------------------- changes
 def after_change(state, dimension: str, positions) -> None:
-    """SetBlockCommand / FillCommand: each changed block loads, then its neighbours hear of it."""
-    blocks = state.blocks_in(dimension)
+    """SetBlockCommand / FillCommand: each changed block loads, then its neighbours hear of it (in
+    the level ``dimension``: its blocks and block ticks)."""
+    state = state.level(dimension)
+    blocks = state.blocks
     positions = [tuple(p) for p in positions]
-    if dimension != "minecraft:overworld":
-        if any(blocks.get(p).id in COMMAND_BLOCKS for p in positions):
-            state.error(f"a command block in {dimension} (command blocks run in the overworld only here)",
-                        severity="warning", unmodelled=True)
-        return
     for pos in positions:
         if blocks.get(pos).id in COMMAND_BLOCKS:
             _set_automatic(state, pos, before=False)
@@ -105,7 +102,8 @@ def after_change(state, dimension: str, positions) -> None:
 
 def after_edit(state, dimension: str, pos, before: Compound | None) -> None:
     """``data`` changed the command block's entity: CommandBlockEntity.loadAdditional."""
-    if dimension != "minecraft:overworld" or state.blocks.get(pos).id not in COMMAND_BLOCKS:
+    state = state.level(dimension)
+    if state.blocks.get(pos).id not in COMMAND_BLOCKS:
         return
     _set_automatic(state, tuple(pos), before=_flag(before or Compound(), "auto"))
 
@@ -234,7 +232,8 @@ def perform(state, pos, nbt: Compound) -> bool:
     if command:  # the server's enable-command-block is taken as on, as a test server has it
         nbt.pop("LastOutput", None)
         block = state.blocks.get(pos)
-        source = Context(pos=(pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), rot=(_Y_ROT[_facing(block)], 0.0))
+        source = Context(pos=(pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), rot=(_Y_ROT[_facing(block)], 0.0),
+                         dimension=getattr(state, "dimension", "minecraft:overworld"))
         succeeded = state.command_runner(command.removeprefix("/"), source)
         nbt["SuccessCount"] = Int(1 if succeeded else 0)
         _last_output(state, nbt, command, bool(succeeded))

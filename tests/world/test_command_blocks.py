@@ -129,3 +129,21 @@ def test_a_command_that_sends_nothing_leaves_no_output_and_feedback_rules_apply(
     assert last_output(emu) is None and last_output(emu, (1, 0, 0)) is None and last_output(emu, (2, 0, 0)) is None
     assert str(last_output(emu, (3, 0, 0))) == '"#itzlipofutzli"' and block(emu, (3, 0, 0), "SuccessCount") == 1
     assert not any(d.unmodelled for d in emu.diagnostics)
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_command_block_in_another_level_runs_there(tmp_path, backend):
+    """The block's level schedules its tick (CommandBlockEntity.scheduleTick on its own level) and
+    BaseCommandBlock.createCommandSourceStack sources the command in that level: ``~`` places the
+    stone in the nether beside it; a redstone block there powers an impulse block."""
+    main = ('execute in minecraft:the_nether run setblock 0 64 0 command_block{auto:1b,TrackOutput:0b,'
+            'Command:"setblock ~ ~1 ~ stone"}\n'
+            'execute in minecraft:the_nether run setblock 3 64 0 command_block{TrackOutput:0b,'
+            'Command:"scoreboard players add #p v 1"}\n'
+            'execute in minecraft:the_nether run setblock 4 64 0 redstone_block\n')
+    emu = world(tmp_path, main, backend)
+    emu.tick()
+    nether = emu.state.blocks_in("minecraft:the_nether")
+    assert nether.get((0, 65, 0)).id == "minecraft:stone" and emu.state.blocks.get((0, 65, 0)).is_air
+    assert emu.score("#p", "v") == 1
+    assert not any(d.unmodelled for d in emu.diagnostics)
