@@ -2,7 +2,8 @@
 
 - ``tool(stack, version) -> Tool | None``: the stack's ``tool`` component as a pack patched it, else
   the vanilla tool's (pickaxes, axes, shovels, hoes, swords and shears: ToolMaterial.
-  applyToolProperties / applySwordProperties, ShearsItem.createToolProperties); before 1.20.5 the
+  applyToolProperties / applySwordProperties, ShearsItem.createToolProperties; the trident and the
+  mace: no rules, 2 damage a block, as TridentItem.mineBlock before 1.20.5); before 1.20.5 the
   same rules from the tool's tier (DiggerItem.isCorrectToolForDrops: the ``needs_*_tool`` tags).
   None for an item that is no tool.
 - ``Tool.correct_for_drops(block_id, resources)``: Tool.isCorrectForDrops (the first rule naming the
@@ -84,6 +85,8 @@ def _vanilla(item_id: str, version) -> Tool | None:
     name = item_id.removeprefix("minecraft:")
     if name == "shears":
         return Tool((Rule(("minecraft:cobweb",), True),), 1)
+    if name in ("trident", "mace"):  # TridentItem / MaceItem.createToolProperties: no rules, 2 a block
+        return Tool((), 2)
     material, _, kind = name.rpartition("_")
     if material not in TIERS or kind not in (*_MINEABLE, "sword"):
         return None
@@ -104,8 +107,6 @@ def tool(stack: ItemStack, version) -> Tool | None:
     if tuple(version) >= COMPONENTS_VERSION and ("minecraft:tool" in stack.patch or "!minecraft:tool" in stack.patch):
         tag = stack.component("minecraft:tool")
         return _from_component(tag) if isinstance(tag, Compound) else None
-    if stack.id in ("minecraft:mace", "minecraft:trident"):
-        raise Unmodelled(f"mining with {stack.id} (its tool rules)")
     return _vanilla(stack.id, version)
 
 

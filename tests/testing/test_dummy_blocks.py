@@ -176,7 +176,6 @@ def test_operator_blocks_refuse_and_adventure_players_cannot_mine(tmp_path):
     ("setblock ~2 ~ ~ dirt\ngive @s diamond_pickaxe[enchantments={levels:{\"demo:brittle\":1}}]",
      "the item_damage effects of demo:brittle"),
     ("setblock ~2 ~ ~ stone\ngive @s iron_pickaxe", "the vanilla block tag #minecraft:incorrect_for_iron_tool"),
-    ("setblock ~2 ~ ~ dirt\ngive @s trident", "mining with minecraft:trident"),
     ("setblock ~2 ~ ~ magma_block", "whether it needs the right tool"),
     ("setblock ~2 ~ ~ oak_door[half=lower]", "its other half"),
 ])

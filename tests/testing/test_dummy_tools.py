@@ -125,3 +125,20 @@ def test_unbreaking_spares_some_damage_and_each_point_taken_fires_item_durabilit
         "setblock ~2 ~ ~ stone\ndummy @s mine ~2 ~ ~\n"
         "assert entity @s[advancements={demo:low=true}]\n"), pack_format=61, files=WORN, backend=backend)
     assert result.status == "passed", result.report()
+
+
+def test_a_trident_and_a_mace_mine_as_tools_without_rules(tmp_path):
+    """TridentItem / MaceItem.createToolProperties: Tool(no rules, speed 1, 2 damage a block): a
+    block that needs a tool does not drop, the weapon wears by 2 unless the block breaks instantly."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "setblock ~2 ~ ~ stone\nsetblock ~4 ~ ~ stone\nsetblock ~4 ~1 ~ torch\n"
+        "give @s trident\n"
+        "dummy @s mine ~2 ~ ~\n"
+        "assert block ~2 ~ ~ air\n"
+        "assert not entity @e[type=item]\n"
+        "assert data entity @s SelectedItem.components{\"minecraft:damage\":2}\n"
+        "item replace entity @s weapon.mainhand with mace\n"
+        "dummy @s mine ~4 ~1 ~\n"
+        "assert block ~4 ~1 ~ air\n"
+        "assert not data entity @s SelectedItem.components.\"minecraft:damage\"\n"), pack_format=61, files=TAGS)
+    assert result.status == "passed", result.report()
