@@ -460,8 +460,15 @@ def _location_field(key: str):
         x, y, z = entity.pos
         if drop is None:
             return location_matches(value, ctx, (x, y, z))
+        if key == "stepping_on" and tuple(ctx.version) >= STEPPING_NEEDS_GROUND and not _number_field(entity, "OnGround"):
+            return False
         return location_matches(value, ctx, tuple(math.floor(v) + 0.5 for v in (x, y - drop, z)))
     return check
+
+
+# stepping_on holds only for an entity on the ground (entity.onGround()): in the 1.21.11 and 26.1
+# sources, not in 1.21's; the release between that added it is unconfirmed
+STEPPING_NEEDS_GROUND = (1, 21, 11)
 
 
 def _targeted_entity(value, ctx: LootContext, entity: Entity) -> bool:

@@ -385,6 +385,7 @@ def test_the_player_predicate_reads_the_recipe_book(state):
 def test_stepping_on_reads_the_centre_of_the_block_below(state):
     # EntityPredicate.matches: location at the entity's exact position; stepping_on at
     # Vec3.atCenterOf(getOnPos()), the block 0.2 below the feet; movement_affected_by 0.500001 below
+    state.version = (1, 21, 0)
     state.blocks.setblock((0, 63, 0), BlockSpec("minecraft:stone", False, (), None))
     pig = state.entities.summon("minecraft:pig", (0.3, 64.0, 0.7))
     near = lambda field, x: holds({"condition": "entity_properties", "entity": "this", "predicate": {  # noqa: E731
@@ -392,5 +393,10 @@ def test_stepping_on_reads_the_centre_of_the_block_below(state):
         ctx(state, this=pig))
     assert near("stepping_on", 0.5) and near("movement_affected_by", 0.5) and not near("stepping_on", 0.3)
     assert not near("location", 0.3)  # its own block is air
+    # from 1.21.11 stepping_on also needs the entity on the ground (EntityPredicate.matches: onGround)
+    state.version = (1, 21, 11)
+    assert not near("stepping_on", 0.5) and near("movement_affected_by", 0.5)
+    pig.data["OnGround"] = Byte(1)
+    assert near("stepping_on", 0.5)
     assert holds({"condition": "entity_properties", "entity": "this", "predicate": {
         "location": {"position": {"x": {"min": 0.29, "max": 0.31}}}}}, ctx(state, this=pig))
