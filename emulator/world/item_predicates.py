@@ -12,7 +12,7 @@ Public API
   DataComponentPredicate.matches) with ``value`` as NBT. A name the release does not register, or
   one the emulator does not model, raises :class:`~emulator.world.errors.Unmodelled` naming it:
   never a silent yes or no.
-- ``value_equal(wanted, found)``: a component's exact value test.
+- ``value_equal(name, wanted, found)``: a component's exact value test.
 
 Sources (decompiled 1.21, Yeet-Masta/MCP-1.21, advancements/critereon/): ItemPredicate.test,
 ItemSubPredicates (the registered names), SingleComponentItemPredicate.matches (a stack without
@@ -36,7 +36,7 @@ from mcfunction_parser.nbt import Compound, List
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure, Unmodelled
-from emulator.world.items import COMMON_COMPONENTS, ItemStack, enchantment_levels, from_nbt
+from emulator.world.items import COMMON_COMPONENTS, ItemStack, decoded, enchantment_levels, from_nbt
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
 from emulator.world.text import plain_value, read_component
 
@@ -67,13 +67,14 @@ def _test(test: ast.ComponentTest, stack: ItemStack, resources, version: Version
         return stack.component(test.name) is not None
     if test.kind == "=":
         found = stack.component(test.name)
-        return found is not None and value_equal(test.value, found)
+        return found is not None and value_equal(test.name, test.value, found)
     return sub_predicate(test.name, test.value, stack, resources, version)
 
 
-def value_equal(wanted, found) -> bool:
-    """Components compare as decoded values: numbers by value (``damage=3`` matches ``3`` stored
-    as any numeric tag), everything else tag for tag."""
+def value_equal(name: str, wanted, found) -> bool:
+    """Components compare as decoded values (:func:`emulator.world.items.decoded`): numbers by value
+    (``damage=3`` matches ``3`` stored as any numeric tag), everything else tag for tag."""
+    wanted, found = decoded(name, wanted), decoded(name, found)
     if is_numeric(wanted) and is_numeric(found):
         return float(wanted) == float(found)
     return tags_equal(wanted, found)
@@ -93,7 +94,7 @@ def codec_matches(predicate: Compound, stack: ItemStack, resources, version: Ver
     components = predicate.get("components", Compound())
     for name, value in components.items() if isinstance(components, Compound) else ():
         found = stack.component(_id(name))
-        if found is None or not value_equal(value, found):
+        if found is None or not value_equal(_id(name), value, found):
             return False
     subs = predicate.get("predicates", Compound())
     return all(sub_predicate(_id(name), value, stack, resources, version)

@@ -160,11 +160,21 @@ def enchantment_level(stack: ItemStack | None, enchantment: str) -> int:
 EMPTY = ItemStack(AIR, 0)
 
 
+def decoded(name: str, value):
+    """A component's value as its codec reads it, where two written forms decode alike:
+    ``jukebox_playable`` is ``{song}`` before 1.21.5 (show_in_tooltip true unless said) and the
+    song alone from 1.21.5 (JukeboxPlayable.CODEC), compared by its song."""
+    if name == "minecraft:jukebox_playable" and isinstance(value, Compound) and "song" in value \
+            and all(k == "song" or (k == "show_in_tooltip" and value[k] != 0) for k in value):
+        return value["song"]
+    return value
+
+
 def set_component(stack: ItemStack, name: str, value) -> None:
     """PatchedDataComponentMap.set: a value equal to the default leaves the patch."""
     stack.patch.pop("!" + name, None)
     default = defaults(stack.id).get(name)
-    if default is not None and tags_equal(default, value):
+    if default is not None and tags_equal(decoded(name, default), decoded(name, value)):
         stack.patch.pop(name, None)
     else:
         stack.patch[name] = copy_tag(value)

@@ -199,6 +199,12 @@ def test_attribute_modifiers_trims_songs_and_villager_variants():
     assert holds("music_disc_cat", "*[jukebox_playable~{song:'minecraft:cat'}]")
     assert not holds("music_disc_cat", "*[jukebox_playable~{song:['minecraft:13']}]")
     assert holds("music_disc_13", "*[jukebox_playable~{}]") and not holds("stone", "*[jukebox_playable~{}]")
+    # JukeboxPlayable.CODEC: {song} before 1.21.5, the song alone from it; either way the disc's own
+    # song is its default (the patch stays empty) and equals the component as written
+    assert holds("music_disc_cat", "*[jukebox_playable={song:'minecraft:cat'}]")
+    assert holds("music_disc_cat", "*[jukebox_playable='minecraft:cat']", V1215)
+    assert items.create(argument("music_disc_cat[jukebox_playable='minecraft:cat']", V1215), 1).patch == {}
+    assert not holds("music_disc_cat", "*[jukebox_playable={song:'minecraft:cat',show_in_tooltip:false}]")
     # VillagerTypePredicate (DataComponentPredicates, read from 1.21.11)
     assert holds("stone[villager/variant='minecraft:desert']", "*[villager/variant~'minecraft:desert']", V12111)
     assert not holds("stone[villager/variant='minecraft:desert']", "*[villager/variant~['taiga']]", V12111)
