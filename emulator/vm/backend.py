@@ -302,14 +302,15 @@ class NumbaBackend:
             return self.machine
         code, starts, floats = self.program.arrays()
         self._fit_counters(code.shape[0], starts.shape[0])
-        if self.selbuf.shape[0] < 2 * table.count + 2:
-            self.selbuf = np.zeros(4 * table.count + 4, dtype=np.int64)
+        found = max(table.count, sb.present.shape[0])  # entities, or holders (`*`)
+        if self.selbuf.shape[0] < 2 * found + 2:
+            self.selbuf = np.zeros(4 * found + 4, dtype=np.int64)
         sels, sfloats, tests = self.selectors.arrays()
         self.machine = vm.new_machine(
             code, starts, floats, self.regs, self.frames, sb.values, sb.present, sb.locked, sb.alive, sb.writable,
             sb.trigger, self.counts, self.totals, self.active, self.ovf, self.cints, self.cfloats, sels, sfloats, tests,
             table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack, self.coll,
-            self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random)
+            self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random, sb.kept)
         self.loop = variants.loop_for(self.program.opcodes)
         self._resume = _entry_point(self.loop.run, self.machine)
         self._world = (sb.values, table.ints, table.tags, table.count)

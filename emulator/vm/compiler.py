@@ -1,7 +1,8 @@
 """AST -> bytecode for the numba VM.
 
 What compiles to VM instructions: scoreboard ``players`` commands on named holders (``#x``,
-``$y``, player names), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
+``$y``, player names), ``*`` (set, add, remove, reset, enable, and the operations its order does not
+change: :func:`_order_free`), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
 ``@e @a @s @p @n @r`` with type, any number of tags, scores, name, team, gamemode, level, rotations,
 positions, volumes, distance, limit and sort), ``tag SEL add|remove``, ``enable``; ``if|unless score`` on named holders and
 ``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as SEL``
@@ -41,7 +42,7 @@ from mcfunction_parser.ast import (
     Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAlign, ExAnchored, ExAs, ExAt, ExFacingEntity, ExRotated, Execute, ExOn, ExPositioned, ExPositionedAs,
     ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
     PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
-    StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec2, Vec3, Coord,
+    StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec2, Vec3, Coord, Wildcard,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.world.source import world_coordinate
@@ -120,7 +121,8 @@ class Compiler:
                 self.emit(vm.OP_RESET, h, self.objective(cmd.objective))
         elif isinstance(cmd, ScoreGet) and _named(cmd.target):
             self.emit(vm.OP_GET, self.holder(cmd.target), self.objective(cmd.objective))
-        elif isinstance(cmd, ScoreOperation) and self.vm_holders(cmd.targets) and self.vm_holders(cmd.sources):
+        elif (isinstance(cmd, ScoreOperation) and self.vm_holders(cmd.targets) and self.vm_holders(cmd.sources)
+              and _order_free(cmd)):
             h, o = self.holders(cmd.targets), self.objective(cmd.objective)
             h2 = self.holders(cmd.sources, sources_of=(h, o))
             self.emit(vm.FIRST_OPERATION + OPERATION_KINDS[cmd.op], h, o, h2, self.objective(cmd.source_objective))
@@ -205,6 +207,10 @@ class Compiler:
             elif isinstance(st, StoreScore) and _bare_self(st.targets) and _context_kept(stages[i + 1:], final):
                 self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked), 1)
                 stores.append(_SelfScoreStore(st))
+            elif (isinstance(st, StoreScore) and isinstance(st.targets, Wildcard) and not outer_stores
+                  and _tracking_kept(stages, final)):
+                self.emit(vm.OP_CHKOBJ, self.objective(st.objective), int(forked), 2)
+                stores.append(_TrackedScoreStore(st))
             elif isinstance(st, (StoreScore, StoreData, StoreBossbar)):
                 self.host(vm.OP_HOSTSTAGE, st, int(forked))  # resolves the store's target now, as the modifier does
                 stores.append(st)
@@ -246,6 +252,9 @@ class Compiler:
             elif isinstance(st, _FieldStore):
                 self.host(vm.OP_STOREFIELD, st.node, st.column, 0 if st.node.kind == "result" else 1,
                           self.program.intern_float(st.node.scale), operand=4)
+            elif isinstance(st, _TrackedScoreStore):
+                self.emit(vm.OP_STORE, 0 if st.node.kind == "result" else 1, vm.HOLDER_TRACKED,
+                          self.objective(st.node.objective))
             elif isinstance(st, StoreScore) and isinstance(st.targets, NameTarget):
                 self.emit(vm.OP_STORE, 0 if st.kind == "result" else 1, self.holder(st.targets),
                           self.objective(st.objective))
@@ -441,19 +450,19 @@ class Compiler:
         return self.sb.holder_id(target.name)
 
     def holders(self, target, sources_of: tuple[int, int] | None = None) -> int | None:
-        """The holder operand of a name, ``@s`` or a selector the VM evaluates (its SELHOLDERS is
+        """The holder operand of a name, ``@s``, ``*`` or a selector the VM evaluates (its SELHOLDERS is
         emitted now, so call this just before the op and only once it will be emitted); None for
         the host. ``sources_of``: the operation's target operand and objective, for its sources."""
         if _named(target):
             return self.holder(target)
-        sel = self.selector(target)
+        sel = vm.SEL_TRACKED if isinstance(target, Wildcard) else self.selector(target)
         if sel is None:
             return None
         self.emit(vm.OP_SELHOLDERS, sel, int(sources_of is not None), *(sources_of or ()))
         return vm.HOLDER_SELBUF
 
     def vm_holders(self, target) -> bool:
-        return _named(target) or self.selector(target) is not None
+        return _named(target) or isinstance(target, Wildcard) or self.selector(target) is not None
 
     def objective(self, name: str) -> int:
         return self.sb.objective_id(name)
@@ -486,6 +495,13 @@ class _LeafStore:
 
 class _SelfScoreStore:
     """A ``store result|success score @s OBJ`` the VM runs (the chain keeps its executor)."""
+
+    def __init__(self, node: StoreScore) -> None:
+        self.node = node
+
+
+class _TrackedScoreStore:
+    """A ``store result|success score * OBJ`` the VM runs (the chain keeps the holders tracked: :func:`_tracking_kept`)."""
 
     def __init__(self, node: StoreScore) -> None:
         self.node = node
@@ -532,6 +548,16 @@ def _context_kept(later: list[Subcommand], final) -> bool:
         isinstance(final, Return) and final.kind == "run")
 
 
+def _tracking_kept(stages: list[Subcommand], final) -> bool:
+    """Nothing in the chain gives a holder its first score or takes its last, so the holders ``*``
+    names when its store runs are those its stage read (ExecuteCommand.storeValue resolves them
+    there): the chain's only store (nor one of an enclosing ``return run``'s chain), no call (``if
+    function``), and no final command but a read (``scoreboard players get``, ``data get``) or none."""
+    stores = [st for st in stages if isinstance(st, (StoreScore, StoreData, StoreBossbar))]
+    return (len(stores) == 1 and not any(isinstance(st, IfFunction) for st in stages)
+            and (final is None or isinstance(final, (ScoreGet, DataGet))))
+
+
 def _bare_self(target) -> bool:
     return isinstance(target, Selector) and target.variable == "s" and not target.args
 
@@ -539,6 +565,21 @@ def _bare_self(target) -> bool:
 def _named(holder) -> bool:
     """A holder the VM resolves itself: a name, or a bare ``@s`` (through the context's holder)."""
     return isinstance(holder, NameTarget) or _bare_self(holder)
+
+
+def _order_free(cmd: ScoreOperation) -> bool:
+    """The operation gives the game's scores whatever order ``*`` names its holders in (the game's
+    is its score map's hash order, the VM's the interning order): ``*`` on one side only, the two
+    objectives different (no target is a source), and for ``*`` targets an operation that neither
+    writes the source (``><``) nor may stop half-way (``/=`` and ``%=`` by zero fail at the first
+    target, which alone got its score created); for ``*`` sources only ``<`` and ``>`` (each
+    target's steps in another order would wrap, and the sanitizer report, differently)."""
+    wild_targets, wild_sources = isinstance(cmd.targets, Wildcard), isinstance(cmd.sources, Wildcard)
+    if not (wild_targets or wild_sources):
+        return True
+    if (wild_targets and wild_sources) or cmd.objective == cmd.source_objective:
+        return False
+    return cmd.op in ("<", ">") or (wild_targets and cmd.op in ("=", "+=", "-=", "*="))
 
 
 def _vm_condition(st: IfScore | IfScoreMatches) -> bool:

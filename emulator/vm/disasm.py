@@ -44,9 +44,11 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
     if kind == "h":
         if value == vm.HOLDER_SELBUF:
             return "<selected>"
+        if value == vm.HOLDER_TRACKED:
+            return "*"
         return "@s" if value == vm.HOLDER_SELF else scoreboard.holders[value]
     if kind == "s":
-        return f"sel#{value}"
+        return "*" if value == vm.SEL_TRACKED else f"sel#{value}"
     if kind == "d":
         return repr(program.floats[value])
     if kind == "o":

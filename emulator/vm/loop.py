@@ -16,7 +16,7 @@ Machine state lives in arrays owned by Python so the loop can return (for a host
 instantiation, contexts to make, a full frame stack, a runtime error, a full buffer) and resume;
 ``run`` takes them in one :class:`Machine` (its fields: :data:`MACHINE_FIELDS`):
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
-scoreboard ``values``/``present``/``locked``/``alive``/``writable``, the per-instruction ``counts``, the
+scoreboard ``values``/``present``/``locked``/``alive``/``writable``/``kept``, the per-instruction ``counts``, the
 sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, the contexts (``cints``: per context its
 executor's holder and slot, dimension, anchor and store bindings, ``CI_*``; ``cfloats``: its position
 and rotation, ``CF_*``; the first ``R_NCTX`` rows are used), and the entities:
@@ -87,6 +87,10 @@ WIDTH = 8
 # found"); HOLDER_SELBUF the holders the SELHOLDERS just before found (see entity_arrays)
 HOLDER_SELF = -2
 HOLDER_SELBUF = -3
+# OP_SELHOLDERS' selector operand for `*`: every tracked holder (a score, or kept: Scoreboard.kept)
+SEL_TRACKED = -1
+# OP_STORE's holder operand for `*` (its OP_CHKOBJ checked there is one)
+HOLDER_TRACKED = -4
 
 OP_HALT = 0  # [free] root finished: return ST_DONE
 OP_CMD = 1  # [check] a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
@@ -134,9 +138,10 @@ OP_IFLEAF = 23  # [condition] a: storage leaf, b: type (LEAF_*), c: number (inde
 # `if|unless data storage S {K:N}`: the leaf holds N; b = 0: `if|unless data storage S a.b.c`: the path leads to a tag
 OP_IFDIM = 24  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
 # context's dimension (ctx_dim) is D
-OP_CHKOBJ = 25  # [stage] a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o does not exist, or
-# (c) without an executor ("No entity was found": the command, or in a forked chain this context)
-OP_STORE = 26  # [free] a: 0 result / 1 success, b h (a name or @s), c o
+OP_CHKOBJ = 25  # [stage] a o, b forked, c: the holder is 1 @s, 2 `*`. The `store ... score` stage: fails if o does not
+# exist, or (c = 1) without an executor ("No entity was found": the command, or in a forked chain this context), or (c
+# = 2, first) when `*` names nobody
+OP_STORE = 26  # [free] a: 0 result / 1 success, b h (a name, @s or HOLDER_TRACKED: every holder `*` names), c o
 OP_CALL = 27  # [entry] a: function id
 OP_CALLREG = 28  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
 OP_FEND = 29  # [free] end of a function body: return without a result
@@ -753,7 +758,7 @@ def _store_field(efloats, e, column, v):
 MACHINE_FIELDS = ("code", "func_start", "floats", "regs", "frames", "values", "present", "locked", "alive_obj",
                   "writable", "trig", "counts", "totals", "active", "ovf", "cints", "cfloats", "sels", "sfloats",
                   "tests", "eints", "efloats", "etags", "eorder", "selbuf", "logbuf", "fstack", "coll", "as_cache",
-                  "batch", "lmeta", "lvalues", "erandom")
+                  "batch", "lmeta", "lvalues", "erandom", "kept")
 
 
 @structref.register
@@ -772,11 +777,11 @@ structref.define_proxy(Machine, MachineType, MACHINE_FIELDS)
 @njit(cache=True)
 def new_machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
                 totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
-                logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom):
+                logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom, kept):
     """A :class:`Machine` of these arrays (compiled and cached: the proxy's own constructor is not cached)."""
     return Machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
                    totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
-                   logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom)
+                   logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom, kept)
 
 
 @njit(cache=True, error_model="numpy")
@@ -827,6 +832,7 @@ def run(m):
     lmeta = _borrowed(m.lmeta)
     lvalues = _borrowed(m.lvalues)
     erandom = _borrowed(m.erandom)
+    kept = _borrowed(m.kept)
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
     depth = regs[R_DEPTH]
@@ -1334,6 +1340,7 @@ def run(m):
                     else:
                         present[h, o] = 0
                         locked[h, o] = 1
+                    kept[h] = 0  # a holder left without a score leaves the map (kept only matters then)
                 ok = 1
                 val = n
             elif op == OP_TAG:
@@ -1455,13 +1462,22 @@ def run(m):
                 off = (selbuf.shape[0] >> 1) if code[pc, 2] else 0
                 h = code[pc, 3]
                 n = 0
-                # the operation reads its sources only once its targets and their objective were found
-                if code[pc, 2] == 0 or not (writable[code[pc, 4]] == 0 or (h == HOLDER_SELF and cints[ctx, CI_HOLDER] < 0)
-                                            or (h == HOLDER_SELBUF and regs[R_NSEL] == 0)):
+                if code[pc, 2] and (writable[code[pc, 4]] == 0 or (h == HOLDER_SELF and cints[ctx, CI_HOLDER] < 0)
+                                    or (h == HOLDER_SELBUF and regs[R_NSEL] == 0)):
+                    pass  # the operation fails on its targets or their objective first: its sources are never read
+                elif code[pc, 1] == SEL_TRACKED:  # `*` (Scoreboard.getTrackedPlayers), in interning order
+                    for h in range(present.shape[0]):  # unused rows hold nothing
+                        tracked = kept[h] != 0
+                        for o_ in range(present.shape[1]):
+                            tracked = tracked or present[h, o_] != 0
+                        if tracked:
+                            selbuf[off + n] = h
+                            n += 1
+                else:
                     n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
                                 efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, off)
-                for i in range(off, off + n):
-                    selbuf[i] = eints[selbuf[i], EI_HOLDER]
+                    for i in range(off, off + n):
+                        selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
             pc += 1
         elif op == OP_ASSTAGE:
@@ -1570,14 +1586,36 @@ def run(m):
                     h = cints[ctx, CI_HOLDER]
                 o = code[pc, 3]
                 v = (val if ok else 0) if code[pc, 1] == 0 else ok
-                values[h, o] = v
-                present[h, o] = 1
+                if h == HOLDER_TRACKED:  # `*`: the chain changes no holder's tracking, so the stage's holders
+                    for h in range(present.shape[0]):
+                        tracked = kept[h] != 0
+                        for o_ in range(present.shape[1]):
+                            tracked = tracked or present[h, o_] != 0
+                        if tracked:
+                            values[h, o] = v
+                            present[h, o] = 1
+                else:
+                    values[h, o] = v
+                    present[h, o] = 1
             pc += 1
         elif op == OP_CHKOBJ:  # the `store ... score` stage
             if loop != LOOP_REENTERED:
                 quota -= 1
                 if counting:
                     counts[np.uint64(pc)] += 1
+            if alive and code[pc, 3] == 2:  # `*`: the holders are read first; none fails (no report)
+                n = 0
+                for h in range(present.shape[0]):
+                    tracked = kept[h] != 0
+                    for o_ in range(present.shape[1]):
+                        tracked = tracked or present[h, o_] != 0
+                    if tracked:
+                        n += 1
+                        break
+                if n == 0:
+                    alive = 0
+                    pc = pc + 1 if code[pc, 2] else abort
+                    continue
             if alive and (alive_obj[code[pc, 1]] == 0 or forklimit <= 1):
                 err = ERR_UNKNOWN_OBJECTIVE if alive_obj[code[pc, 1]] == 0 else ERR_FORK_LIMIT
                 errarg = code[pc, 1] if err == ERR_UNKNOWN_OBJECTIVE else forklimit
@@ -1585,7 +1623,7 @@ def run(m):
                 pc = pc + 1 if code[pc, 2] else abort  # in a forked chain only this context fails
                 status = ST_ERROR
                 break
-            if alive and code[pc, 3] and cints[ctx, CI_HOLDER] < 0:
+            if alive and code[pc, 3] == 1 and cints[ctx, CI_HOLDER] < 0:
                 alive = 0
                 pc = pc + 1 if code[pc, 2] else abort
                 continue

@@ -119,10 +119,12 @@ _ROWS = [
         ("IFDIM", "l____bb", CONDITION, "a: dimension (Program.dimensions), f negated, g final. `if|unless "
                                         "dimension D`: the context's dimension (ctx_dim) is D"),
     ]),
-    *_single("CHKOBJ", "obb", STAGE, "a o, b forked, c: the holder is @s. The `store ... score` stage: fails if o "
-                                     "does not exist, or (c) without an executor (\"No entity was found\": the "
-                                     "command, or in a forked chain this context)"),
-    *_single("STORE", "bho", FREE, "a: 0 result / 1 success, b h (a name or @s), c o"),
+    *_single("CHKOBJ", "obi", STAGE, "a o, b forked, c: the holder is 1 @s, 2 `*`. The `store ... score` stage: "
+                                     "fails if o does not exist, or (c = 1) without an executor (\"No entity was "
+                                     "found\": the command, or in a forked chain this context), or (c = 2, first) "
+                                     "when `*` names nobody"),
+    *_single("STORE", "bho", FREE, "a: 0 result / 1 success, b h (a name, @s or HOLDER_TRACKED: every holder `*` "
+                                   "names), c o"),
     *_family("call", [
         ("CALL", "f", ENTRY, "a: function id"),
         ("CALLREG", "", ENTRY, "call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1"),

@@ -74,7 +74,9 @@ class Scoreboard:
         self.trigger = np.zeros(_INITIAL_OBJECTIVES, dtype=np.uint8)
         # the game's holder map (Scoreboard.playerScores) for the order of ``*``: see tracked_holders
         self.tracked = OpenHashKeys(16, 0.5)
-        self._kept_empty: set[str] = set()  # tracked holders whose last score went with its objective
+        # per holder: 1 when it is tracked without a score (its last one went with its objective). What `*`
+        # names is the holders with a score or this flag (the VM reads it; tracked_holders orders them)
+        self.kept = np.zeros(_INITIAL_HOLDERS, dtype=np.uint8)
 
     # ------------------------------------------------------------------ interning
     def holder_id(self, name: str) -> int:
@@ -111,6 +113,9 @@ class Scoreboard:
         present[:cap_h, :cap_o] = self.present
         locked = np.ones((new_h, new_o), dtype=np.uint8)
         locked[:cap_h, :cap_o] = self.locked
+        kept = np.zeros(new_h, dtype=np.uint8)
+        kept[:cap_h] = self.kept
+        self.kept = kept
         alive = np.zeros(new_o, dtype=np.uint8)
         alive[:cap_o] = self.alive
         writable = np.zeros(new_o, dtype=np.uint8)
@@ -158,6 +163,7 @@ class Scoreboard:
         if not self.exists(name):
             return False
         oid = self.objective_ids[name]
+        self.tracked_holders()  # the map brought up to date first: the holders the VM gave scores are in it
         n = len(self.holders)
         had = np.flatnonzero(self.present[:n, oid])
         self.alive[oid] = 0
@@ -165,7 +171,7 @@ class Scoreboard:
         self.present[:, oid] = 0
         self.locked[:, oid] = 1
         # Scoreboard.removeObjective empties PlayerScores but keeps the holders in the map
-        self._kept_empty.update(self.holders[h] for h in had if not self.present[h].any())
+        self.kept[had[~self.present[had].any(axis=1)]] = 1
         return True
 
     def is_writable(self, objective: str) -> bool:
@@ -200,7 +206,7 @@ class Scoreboard:
         self.values[hid, oid] = value
         self.present[hid, oid] = 1
         self.tracked.add(holder)  # getOrCreatePlayerInfo
-        self._kept_empty.discard(holder)
+        self.kept[hid] = 0
 
     def reset(self, holder: str, objective: str | None = None) -> None:
         """Unset one score, or every score of the holder when ``objective`` is None."""
@@ -217,7 +223,7 @@ class Scoreboard:
         # resetAllPlayerScores drops the holder; resetSinglePlayerScore once it has no score left
         if objective is None or not self.present[hid].any():
             self.tracked.remove(holder)
-            self._kept_empty.discard(holder)
+            self.kept[hid] = 0
 
     def enable(self, holder: str, objective: str) -> bool:
         """``scoreboard players enable`` for one holder: get-or-create the score (0) and unlock
@@ -251,11 +257,12 @@ class Scoreboard:
         n = len(self.holders)
         rows = self.present[:n].any(axis=1)
         for name in self.tracked.keys():
-            if not rows[self.holder_ids[name]] and name not in self._kept_empty:
+            h = self.holder_ids[name]
+            if not rows[h] and not self.kept[h]:
                 self.tracked.remove(name)
         for h in np.flatnonzero(rows):
             self.tracked.add(self.holders[h])
-            self._kept_empty.discard(self.holders[h])
+        self.kept[:n][rows] = 0
         return self.tracked.keys()
 
     def scores(self) -> dict[str, dict[str, int]]:

@@ -92,7 +92,7 @@ ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]", "@e[tag=m,sort=random,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]",
                         "@e[sort=random,limit=2]")
-ENTITY_COMMANDS = ("tag @s add a", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
+ENTITY_COMMANDS = ("tag @s add a", "scoreboard players enable * t", "tag @s remove a", "tag @e[tag=n] add m", "kill @e[tag=a,limit=1]",
                    'summon marker ~ ~ ~ {Tags:["n"]}', "scoreboard players add @e[tag=m] o 3",
                    "tag @e[tag=m,tag=!a] add a", "tag @e[scores={o=1..}] remove m", "tag @e[type=armor_stand] add n",
                    "scoreboard players operation #a o < @e[tag=m] o", "scoreboard players reset @e[tag=a] o",
@@ -147,7 +147,8 @@ SERVER_COMMANDS = ("say hi", 'tellraw @a "x"', "schedule function t:leaf0 1t", "
                    "schedule function #t:leaves 2t replace", "schedule function t:leaf0 5t replace",
                    "schedule clear t:leaf0", "schedule clear #t:leaves", "schedule clear t:nothing",
                    "gamerule randomTickSpeed 7", "gamerule randomTickSpeed", "gamerule doDaylightCycle false",
-                   "gamerule doDaylightCycle", "gamerule nope")
+                   "gamerule doDaylightCycle", "gamerule nope", "scoreboard objectives add q dummy",
+                   "scoreboard players add #q q 4", "scoreboard objectives remove q")
 # Command storage t:s: data commands, `if data`, `data get` into scores
 STORAGE_COMMANDS = ("data merge storage t:s {a:1,l:[1,2]}", "data modify storage t:s l append value 3",
                     "data remove storage t:s a", "data modify storage t:s v set from storage t:s l[0]",
@@ -200,8 +201,8 @@ def score_commands(draw, vocab: Vocabulary) -> str:
     """A scoreboard command that can run anywhere (no calls)."""
     kind = draw(st.sampled_from(("set", "add", "remove", "operation", "operation", "operation", "reset", "get")))
     h, o = draw(vocab.holders), draw(objectives)
-    if kind in ("set", "add", "remove", "reset") and draw(st.integers(0, 9)) == 0:
-        h = "*"  # every tracked holder; order-independent commands only (the game's order is a hash order)
+    if kind in ("set", "add", "remove", "reset", "operation") and draw(st.integers(0, 9)) == 0:
+        h = "*"  # every tracked holder (the VM runs the forms whose order changes nothing, the host the others)
     if kind == "set":
         return f"scoreboard players set {h} {o} {draw(ints)}"
     if kind in ("add", "remove"):
@@ -210,7 +211,7 @@ def score_commands(draw, vocab: Vocabulary) -> str:
         return f"scoreboard players reset {h} {o}"
     if kind == "get":
         return f"scoreboard players get {draw(vocab.single_holders)} {o}"
-    source = draw(vocab.holders)
+    source = "*" if h != "*" and draw(st.integers(0, 9)) == 0 else draw(vocab.holders)
     return f"scoreboard players operation {h} {o} {draw(st.sampled_from(OPERATIONS))} {source} {draw(objectives)}"
 
 
@@ -298,7 +299,8 @@ def commands(draw, callees: list[str], vocab: Vocabulary) -> str:
         return f"execute {draw(stage_chains(callees, vocab))} run {draw(inner)}"
     if kind == "store":
         what = draw(st.sampled_from(("result", "success")))
-        return f"execute store {what} score {draw(vocab.holders)} {draw(objectives)} run {draw(inner)}"
+        holder = "*" if draw(st.integers(0, 7)) == 0 else draw(vocab.holders)
+        return f"execute store {what} score {holder} {draw(objectives)} run {draw(inner)}"
     if kind == "condition":
         # `if function` must be followed by more (ExecuteCommand registers it with fork only)
         return f"execute {draw(conditions([], vocab))}"

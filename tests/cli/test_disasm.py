@@ -34,6 +34,14 @@ def test_disasm_host_ops(tmp_path):
                    ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
 
 
+def test_disasm_names_the_wildcard(tmp_path):
+    pack = write_pack(tmp_path / "pack", {"t:f": "scoreboard players reset * o\n"
+                                                 "execute store result score * o run scoreboard players get #a o"})
+    result = CliRunner().invoke(main, ["disasm", str(pack), "t:f"])
+    assert result.exit_code == 0, result.output
+    assert "SELHOLDERS * 0" in result.output and "STORE 0 * o" in result.output
+
+
 def test_disasm_unknown_function(tmp_path):
     pack = write_pack(tmp_path / "pack", {"t:f": "say hi"})
     result = CliRunner().invoke(main, ["disasm", str(pack), "t:nope"])
