@@ -50,7 +50,7 @@ def _facing_entity(env, st: ast.ExFacingEntity, ctx: Context) -> list[Context]:
 
 def _on(env, st: ast.ExOn, ctx: Context) -> list[Context]:
     """``on RELATION``: only the executor changes; no executor, or nothing related, gives no context."""
-    related = relations.related(env.state.entities, executor(env.state, ctx), st.relation)
+    related = relations.related(env.state, executor(env.state, ctx), st.relation)
     return [context_as(env.state, ctx, e) for e in related]
 
 

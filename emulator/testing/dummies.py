@@ -24,7 +24,8 @@ Modelled:
   observable only through predicates, which the emulator does not evaluate.
 - ``selectslot N``: ``SelectedItemSlot`` (N - 1) in the player's NBT.
 - ``attack`` on an ``interaction`` entity: its ``attack`` NBT ``{player: UUID, timestamp: game
-  time}`` (Interaction.skipAttackInteraction); ``use entity``: emulator.world.entity_use.
+  time}`` and ``player_hurt_entity`` (Interaction.skipAttackInteraction); ``use entity``:
+  emulator.world.entity_use.
 - ``attack`` on a living entity: Player.attack (emulator.world.combat.attack):
   the damage grows with the ticks since the dummy joined or last attacked, the target's
   ``Health`` and ``HurtTime``, ``damage_dealt``, a death (emulator.world.combat). A target that
@@ -246,11 +247,7 @@ class Dummies:
         dummy.data["SelectedItemSlot"] = Int(command.slot - 1)
 
     def _attack(self, dummy: Entity, command, ctx) -> None:
-        target = self._entity(command.entity, ctx)
-        if target.type == "minecraft:interaction":
-            entity_use.record(self.state, dummy, target, "attack")  # Interaction.skipAttackInteraction
-        else:
-            combat.attack(self.state, dummy, target)
+        entity_use.attack(self.state, dummy, self._entity(command.entity, ctx))
 
     def _use_entity(self, dummy: Entity, command, ctx) -> None:
         """DummyCommand.useEntity: each hand in turn, until one consumes the action."""

@@ -73,6 +73,9 @@ DEATH_MESSAGES = {
 
 # the last player / mob that hurt an entity, and the game time it did: (entity, time)
 _LAST_HURT_BY: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+# LivingEntity.lastHurtByMob: the last living entity (a player too) that hurt it, and when
+_LAST_ATTACKER: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+NO_ANGER = frozenset({"minecraft:mob_attack_no_aggro"})  # the game's #minecraft:no_anger damage types
 _DEAD: "weakref.WeakSet" = weakref.WeakSet()
 
 
@@ -84,6 +87,15 @@ def kill_credit(state, entity) -> Entity | None:
     """LivingEntity.getKillCredit: the last attacker within 100 ticks."""
     found = _LAST_HURT_BY.get(entity)
     if found is None or state.gametime - found[1] > CREDIT_TICKS:
+        return None
+    return found[0]
+
+
+def last_attacker(state, entity) -> Entity | None:
+    """LivingEntity.getLastAttacker (getLastHurtByMob): the last living entity to hurt it, until it
+    dies or 100 ticks pass (LivingEntity.baseTick clears it)."""
+    found = _LAST_ATTACKER.get(entity)
+    if found is None or not found[0].alive or state.gametime - found[1] > CREDIT_TICKS:
         return None
     return found[0]
 
@@ -145,6 +157,8 @@ def remember_attacker(state, entity, source: DamageSource) -> None:
     attacker = source.attacker
     if attacker is None or attacker is entity or attacker.type in inventories.NOT_LIVING:
         return
+    if source.type not in NO_ANGER:  # setLastHurtByMob, unless the damage type angers no one
+        _LAST_ATTACKER[entity] = (attacker, state.gametime)
     previous = _LAST_HURT_BY.get(entity)
     if attacker.is_player or previous is None or not previous[0].is_player or \
             state.gametime - previous[1] > CREDIT_TICKS:
@@ -159,9 +173,14 @@ def hurt_triggers(state, entity, source: DamageSource, amount: float) -> None:
         advancements.trigger(state, entity, "entity_hurt_player",
                              lambda c, ctx: _damage_matches(state, c.get("damage"), entity, source, amount))
     if attacker is not None and attacker.is_player:
-        advancements.trigger(state, attacker, "player_hurt_entity", lambda c, ctx: (
-            _damage_matches(state, c.get("damage"), attacker, source, amount)
-            and advancements.entity_condition(state, c.get("entity"), attacker, entity)))
+        player_hurt_entity(state, attacker, entity, source, amount)
+
+
+def player_hurt_entity(state, player, entity, source: DamageSource, amount: float) -> None:
+    """PlayerHurtEntityTrigger.trigger: the damage (dealt and taken alike) and the hurt entity."""
+    advancements.trigger(state, player, "player_hurt_entity", lambda c, ctx: (
+        _damage_matches(state, c.get("damage"), player, source, amount)
+        and advancements.entity_condition(state, c.get("entity"), player, entity)))
 
 
 # ---------------------------------------------------------------------- death

@@ -6,6 +6,9 @@ turning its own, and the entities that have no use of their own.
   interaction is not modelled (mobs, villagers, armor stands, vehicles ...) raises Unmodelled.
 - ``record(state, player, entity, key)``: an interaction entity's ``attack`` / ``interaction``
   ``{player: UUID, timestamp: game time}`` (Interaction.skipAttackInteraction / interact).
+- ``attack(state, player, target) -> bool``: Player.attack: an interaction entity records the
+  attack and fires ``player_hurt_entity`` (generic damage, 1 dealt and taken, not blocked:
+  Interaction.skipAttackInteraction); any other target is :func:`emulator.world.combat.attack`.
 
 The ``player_interacted_with_entity`` criterion fires in the game's network handler
 (ServerGamePacketListenerImpl.handleInteract), which PackTest's dummy bypasses: it does not fire
@@ -19,8 +22,9 @@ before 1.21.2 and passes from it), world/entity/Entity.java (interact: passes).
 """
 from __future__ import annotations
 
-from emulator.world import inventories
+from emulator.world import combat, inventories
 from emulator.world.errors import Unmodelled
+from emulator.world.loot_context import DamageSource
 from emulator.world.player_actions import hand_slot
 from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
 
@@ -36,6 +40,15 @@ PASSIVE = frozenset("minecraft:" + n for n in (
 
 def record(state, player, entity, key: str) -> None:
     entity.data[key] = Compound(player=IntArray(Int(v) for v in player.uuid), timestamp=Long(state.gametime))
+
+
+def attack(state, player, target) -> bool:
+    """Player.attack: True when the target was hurt (an interaction entity never is)."""
+    if target.type == "minecraft:interaction":
+        record(state, player, target, "attack")
+        combat.player_hurt_entity(state, player, target, DamageSource("minecraft:generic"), 1.0)
+        return False
+    return combat.attack(state, player, target)
 
 
 def interact_on(state, player, hand: str, entity) -> str:

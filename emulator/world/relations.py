@@ -10,17 +10,25 @@ loaded and starts riding its vehicle, forced), server/level/ServerLevel.tryAddFr
 (couldAcceptPassenger false); ``ride`` itself is :func:`emulator.commands.entities.ride`.
 ``owner`` follows the ``Owner`` UUID of tameable animals and horses (OwnableEntity); ``origin``
 follows ``Owner`` of projectiles, evoker fangs and area effect clouds and ``Thrower`` of items
-(TraceableEntity). ``controller``, ``attacker``, ``leasher`` and ``target`` need AI, combat or
-leads, which the emulator does not model: they find nothing.
+(TraceableEntity). ``target`` and ``attacker`` (ExecuteCommand: Targeting.getTarget,
+Attackable.getLastAttacker): an interaction entity's are the players in its level whose UUIDs its
+``interaction`` and ``attack`` records name (Interaction.getTarget / getLastAttacker, through
+Level.getPlayerByUUID); a living entity's attacker is the last living entity to hurt it within 100
+ticks (LivingEntity.getLastHurtByMob, emulator.world.combat); a mob's target comes from its AI,
+which is not modelled (Unmodelled), except for a mob with ``NoAI``, whose goals never run: none.
+``controller`` and ``leasher`` need riding control and leads, which the emulator does not model:
+they find nothing.
 """
 from __future__ import annotations
 
+from emulator.world import combat, living
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import Entity, EntityStore
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser.nbt import Compound, IntArray, List, String
 from mcfunction_parser.pack.tags import normalise_id
 
+INTERACTION = "minecraft:interaction"
 _NO_PASSENGERS = frozenset({"minecraft:marker"})
 _OWNABLE = frozenset(f"minecraft:{t}" for t in (
     "wolf", "cat", "parrot", "horse", "donkey", "mule", "llama", "trader_llama", "skeleton_horse",
@@ -93,8 +101,9 @@ def _by_uuid_field(store: EntityStore, entity: Entity, key: str) -> list[Entity]
     return []
 
 
-def related(store: EntityStore, entity: Entity | None, relation: str) -> list[Entity]:
+def related(state, entity: Entity | None, relation: str) -> list[Entity]:
     """The entities ``execute on <relation>`` runs as, from ``entity`` (None: the server)."""
+    store = state.entities
     if entity is None:
         return []
     if relation == "passengers":
@@ -106,7 +115,29 @@ def related(store: EntityStore, entity: Entity | None, relation: str) -> list[En
         return _by_uuid_field(store, entity, "Owner")
     if relation == "origin" and entity.type in _TRACEABLE:
         return _by_uuid_field(store, entity, _TRACEABLE[entity.type])
+    if relation in ("target", "attacker") and entity.type == INTERACTION:
+        return _interaction_player(store, entity, "interaction" if relation == "target" else "attack")
+    if relation == "attacker" and living.is_living(entity.type):
+        attacker = combat.last_attacker(state, entity)
+        return [] if attacker is None else [attacker]
+    if relation == "target" and _is_mob(entity) and not entity.data.get("NoAI"):
+        raise Unmodelled(f"execute on target: a {entity.type}'s target comes from its AI, which is not modelled")
     return []
+
+
+def _is_mob(entity: Entity) -> bool:
+    """A Mob (Targeting): a living entity that is neither a player nor an armor stand."""
+    return living.is_living(entity.type) and not entity.is_player and entity.type != "minecraft:armor_stand"
+
+
+def _interaction_player(store: EntityStore, entity: Entity, key: str) -> list[Entity]:
+    """Level.getPlayerByUUID of the record's ``player``: a player in the interaction's level."""
+    record = entity.data.get(key)
+    player = record.get("player") if isinstance(record, Compound) else None
+    if not isinstance(player, IntArray) or len(player) != 4:
+        return []
+    uuid = tuple(int(v) for v in player)
+    return [p for p in store.players() if p.alive and p.uuid == uuid and p.dimension == entity.dimension][:1]
 
 
 def self_and_passengers(entity: Entity) -> list[Entity]:

@@ -7,6 +7,8 @@ their PackTest suites run on both backends:
 - healing: health set through instant effects, the effects_changed trigger and its conditions;
 - sight: 26.2 entity sub-predicates, a player's looking_at, an entity's UUID read from the
   insertion of its display name (a selector text resolved by set_name);
+- clicks: clicks on interaction entities heard as a library hears them (player_hurt_entity with
+  entity and damage conditions, ``execute on attacker|target``);
 - lists, typed: a collection library flattening lists that mix types (1.21.5+), and the one-type
   rule of the lists before it."""
 from pathlib import Path
@@ -18,7 +20,8 @@ from emulator.testing.results import PASSED
 from emulator.testing.runner import load_suite, run_case
 
 HERE = Path(__file__).resolve().parent
-SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed")}
+SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
+                                                                         "clicks")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 

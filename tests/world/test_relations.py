@@ -119,3 +119,64 @@ def test_a_vehicle_saves_its_riders_in_passengers(tmp_path, backend):
     assert emu.score("#after", "o") == 2  # the merge's empty Passengers changed nothing
     assert emu.score("#none", "o") == 0  # no riders: no Passengers (the get fails, storing 0)
     assert emu.score("#rides", "o") == 1 and emu.score("#player", "o") == 0  # it rides, unsaved
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_on_attacker_is_the_last_living_entity_to_hurt_within_100_ticks(tmp_path, backend):
+    # ExecuteCommand ``on attacker``: Attackable.getLastAttacker; LivingEntity.getLastAttacker is
+    # getLastHurtByMob, set by hurtServer (setLastHurtByMob) and cleared by baseTick once the
+    # attacker is dead or more than 100 ticks passed
+    emu = emulator(tmp_path, backend, {
+        "t:main": 'summon pig 0 0 0 {Tags:["p"],NoAI:1b}\nsummon zombie 2 0 0 {Tags:["z"],NoAI:1b}\n'
+                  'summon skeleton 4 0 0 {Tags:["s"],NoAI:1b}\n'
+                  "execute as @e[tag=p] on attacker run scoreboard players add #before o 1\n"
+                  "damage @e[tag=p,limit=1] 1 minecraft:mob_attack by @e[tag=z,limit=1]\n"
+                  # within the invulnerable ticks only a bigger hurt goes through (LivingEntity.hurt)
+                  "damage @e[tag=p,limit=1] 2 minecraft:mob_attack by @e[tag=s,limit=1]",
+        "t:who": "execute as @e[tag=p] on attacker run tag @s add attacker",
+        "t:clear": "tag @e remove attacker"})
+    emu.call("t:main")
+    assert emu.score("#before", "o") is None
+    emu.call("t:who")
+    assert [e["tags"] for e in emu.entities("@e[tag=attacker]")] == [["attacker", "s"]]  # the last one
+    emu.call("t:clear")
+    emu.tick(100)
+    emu.call("t:who")
+    assert len(emu.entities("@e[tag=attacker]")) == 1
+    emu.call("t:clear")
+    emu.tick(1)  # 101 ticks on: forgotten
+    emu.call("t:who")
+    assert emu.entities("@e[tag=attacker]") == []
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_on_attacker_forgets_a_dead_attacker_and_an_unangering_hurt(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {
+        "t:main": 'summon pig 0 0 0 {Tags:["p"],NoAI:1b}\nsummon zombie 2 0 0 {Tags:["z"],NoAI:1b}\n'
+                  # mob_attack_no_aggro is in #minecraft:no_anger: no setLastHurtByMob
+                  "damage @e[tag=p,limit=1] 1 minecraft:mob_attack_no_aggro by @e[tag=z,limit=1]\n"
+                  "execute as @e[tag=p] on attacker run scoreboard players add #calm o 1\n"
+                  "damage @e[tag=p,limit=1] 2 minecraft:mob_attack by @e[tag=z,limit=1]\n"
+                  "execute as @e[tag=p] on attacker run scoreboard players add #angry o 1\n"
+                  "kill @e[tag=z]\n"
+                  "execute as @e[tag=p] on attacker run scoreboard players add #dead o 1"})
+    emu.call("t:main")
+    assert (emu.score("#calm", "o"), emu.score("#angry", "o"), emu.score("#dead", "o")) == (None, 1, None)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_on_target_of_a_mob_needs_its_ai(tmp_path, backend):
+    # Targeting is Mob and Interaction: a NoAI mob's goals never run, so it has no target; another
+    # mob's target comes from its AI, which the emulator does not model (the command fails as not
+    # modelled); an armor stand or a marker is no Targeting: nothing
+    emu = emulator(tmp_path, backend, {
+        "t:calm": 'summon zombie 0 0 0 {Tags:["calm"],NoAI:1b}\nsummon armor_stand 0 0 0 {Tags:["stand"]}\n'
+                  "execute as @e[tag=calm] on target run scoreboard players add #calm o 1\n"
+                  "execute as @e[tag=stand] on target run scoreboard players add #stand o 1\n"
+                  "scoreboard players set #done o 1",
+        "t:wild": "summon zombie 0 0 0\nexecute as @e[type=zombie,nbt=!{NoAI:1b}] on target run say found"})
+    emu.call("t:calm")
+    assert (emu.score("#calm", "o"), emu.score("#stand", "o"), emu.score("#done", "o")) == (None, None, 1)
+    assert not any(d.unmodelled for d in emu.diagnostics)
+    emu.call("t:wild")
+    assert any(d.unmodelled and "target comes from its AI" in d.message for d in emu.diagnostics)

@@ -1,0 +1,2 @@
+scoreboard objectives add clicks.left dummy
+scoreboard objectives add clicks.n dummy

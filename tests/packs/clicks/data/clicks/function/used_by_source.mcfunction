@@ -1,0 +1,2 @@
+execute on target if entity @s[tag=clicks.source] run return 1
+return fail
