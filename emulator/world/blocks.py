@@ -43,7 +43,7 @@ from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure
 from emulator.world import command_blocks
-from emulator.world.inventories import default_block_entity
+from emulator.world.inventories import default_block_entity, normalise_items
 from emulator.world.nbt_ops import compare_nbt, copy_tag, tags_equal
 from emulator.world.source import Source
 
@@ -197,6 +197,7 @@ class BlockMap:
         if spec.nbt is not None:
             nbt = nbt or Compound()
             nbt.update(copy_tag(spec.nbt))
+            normalise_items(nbt)
         if nbt is not None:
             self.entities[pos] = nbt
         return True
@@ -290,5 +291,6 @@ class BlockMap:
         result = change(nbt)
         for key in ("x", "y", "z", "id"):
             nbt.pop(key, None)
+        normalise_items(nbt)
         self.entities[tuple(pos)] = nbt
         return result

@@ -54,7 +54,7 @@ from emulator.world.entity_table import (
     EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_TEAM, EI_XP, GAMEMODES, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
-from emulator.world.inventories import player_defaults, selected_item
+from emulator.world.inventories import normalise_items, player_defaults, selected_item
 from emulator.world.text import plain_text
 from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 
@@ -490,6 +490,7 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     data = _base_fields(entity.type, nbt, previous)
     dropped = set(_MODELLED) | set(FLAG_FIELDS) | (set(display.NOT_SAVED) if entity.type in display.DISPLAY_TYPES else set())
     data.update((k, copy_tag(v)) for k, v in nbt.items() if k not in data and k not in dropped)
+    normalise_items(data)
     entity.data = data
     if _columns_hold_transformation(entity):
         entity._table.floats[entity.order, EF_TRANSFORM:EF_WIDTH] = display.transformation_columns(data["transformation"])

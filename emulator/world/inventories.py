@@ -31,6 +31,10 @@ API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 ar
 - ``MAINHAND``, ``OFFHAND``, ``BODY``, ``CURSOR``, ``ARMOR_SLOTS``: slot ids by name.
 - ``selected_item(data)``: the held stack's NBT for ``SelectedItem`` (None when empty).
 - ``default_block_entity(block_id)``: the block entity a container gets when placed (``Items: []``).
+- ``normalise_items(data)``: the item stacks of an entity's or block entity's NBT, as the game
+  reads them when it loads that NBT (summon, setblock, ``data``): each one's components patched
+  over the item's defaults (a component equal to a default, or a removal of one the item lacks,
+  leaves the patch: :func:`emulator.world.items.from_nbt`).
 - ``drop_item(store, pos, stack, version, rng, extra)``: an item entity (what ``give`` drops, ``loot
   spawn`` makes, a player would drop); ``throw_from(store, player, stack, version, rng, extra)``:
   one a player throws (Player.createItemStackToDrop: from the eyes, along the look).
@@ -85,6 +89,10 @@ CONTAINER_SIZES = {
 }
 # ContainerSingleItem block entities: one slot, saved under a key of its own
 SINGLE_ITEM_BLOCKS = {"minecraft:decorated_pot": "item", "minecraft:jukebox": "RecordItem"}
+# the keys under which entities and block entities save item stacks (a stack, a list of stacks, or
+# ``equipment``'s compound of them)
+ITEM_KEYS = ("Item", "item", "Items", "HandItems", "ArmorItems", "body_armor_item", "equipment", "Inventory",
+             "EnderItems", "RecordItem")
 
 
 def _new_layout(version) -> bool:
@@ -274,6 +282,26 @@ def container(blocks, pos, version) -> Container | None:
         return Container(nbt, 1, version, SINGLE_ITEM_BLOCKS[block_id])
     size = CONTAINER_SIZES.get(block_id)
     return None if size is None else Container(nbt, size, version)
+
+
+def normalise_items(data: Compound) -> None:
+    """Each stack under :data:`ITEM_KEYS` with its components read as the game's codec builds the
+    stack (PatchedDataComponentMap.fromPatch: applyPatch); other fields stay as given."""
+    for key in ITEM_KEYS:
+        value = data.get(key)
+        if isinstance(value, List):
+            stacks = list(value)
+        elif isinstance(value, Compound):
+            stacks = list(value.values()) if key == "equipment" else [value]
+        else:
+            continue
+        for tag in stacks:
+            if isinstance(tag, Compound) and isinstance(tag.get("components"), Compound):
+                patch = from_nbt(tag).patch
+                if patch:
+                    tag["components"] = patch
+                else:
+                    del tag["components"]
 
 
 def default_block_entity(block_id: str) -> Compound | None:

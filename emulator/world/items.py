@@ -10,7 +10,8 @@ Public API
   stack (a component equal to the item's default leaves the patch, a removal of a component the
   item does not have is dropped: PatchedDataComponentMap.applyPatch).
 - ``to_nbt(stack, version)`` / ``from_nbt(tag)``: ``{id, count, components}`` from 1.20.5,
-  ``{id, Count:1b, tag}`` before (ItemStack.save / ItemStack.parse, both forms are read).
+  ``{id, Count:1b, tag}`` before (ItemStack.save / ItemStack.parse, both forms are read); read
+  components are patched as ``create`` patches them.
 - ``DEFAULTS``: the defaults modelled: ``max_stack_size`` (1, 16 or 64), ``max_damage`` and
   ``damage`` of damageable items, the empty ``container`` of container blocks' items, the empty
   ``bundle_contents`` of bundles, an enchanted book's empty ``stored_enchantments``, ``writable_book_content`` of the book and quill, ``fireworks``
@@ -48,10 +49,10 @@ _OTHER_DURABILITY = {
 # Items that stack to 16 or do not stack (besides damageable ones), by name or name suffix.
 _STACK_16 = ("ender_pearl", "snowball", "egg", "bucket", "armor_stand", "honey_bottle", "written_book",
              "_sign", "_banner", "blue_egg", "brown_egg")
-_STACK_1 = ("potion", "splash_potion", "lingering_potion", "_bucket", "saddle", "minecart", "_boat", "_raft",
+_STACK_1 = ("potion", "splash_potion", "lingering_potion", "_bucket", "saddle", "minecart", "_minecart", "_boat", "_raft",
             "_bed", "music_disc_", "totem_of_undying", "shulker_box", "cake", "enchanted_book", "writable_book",
             "_stew", "mushroom_stew", "beetroot_soup", "bundle", "spyglass", "goat_horn", "knowledge_book",
-            "debug_stick", "_horse_armor", "_pattern", "ominous_trial_key")
+            "debug_stick", "_horse_armor", "_pattern")
 
 
 def _max_damage(name: str) -> int | None:
@@ -212,7 +213,10 @@ def to_nbt(stack: ItemStack, version) -> Compound:
 
 
 def from_nbt(tag) -> ItemStack:
-    """ItemStack.parseOptional: an empty stack for anything unreadable (either save form)."""
+    """ItemStack.parseOptional: an empty stack for anything unreadable (either save form). The
+    components go through the patch as the codec's stack is built (PatchedDataComponentMap.fromPatch
+    -> applyPatch): a value equal to the item's default leaves it, so does a removal of a component
+    the item does not have; ``damage`` is ``minecraft:damage`` (ResourceLocation)."""
     if not isinstance(tag, Compound) or not isinstance(tag.get("id"), str):
         return EMPTY.copy()
     item_id = str(tag["id"])
@@ -221,6 +225,12 @@ def from_nbt(tag) -> ItemStack:
     components = tag.get("components")
     old = tag.get("tag")
     stack = ItemStack(item_id, int(count) if is_numeric(count) else 1,
-                      copy_tag(components) if isinstance(components, Compound) else Compound(),
-                      copy_tag(old) if isinstance(old, Compound) else None)
+                      tag=copy_tag(old) if isinstance(old, Compound) else None)
+    for key, value in components.items() if isinstance(components, Compound) else ():
+        removed = key.startswith("!")
+        name = key[removed:] if ":" in key else "minecraft:" + key[removed:]
+        if removed:
+            remove_component(stack, name)
+        else:
+            set_component(stack, name, value)
     return EMPTY.copy() if stack.is_empty else stack

@@ -104,6 +104,24 @@ def test_data_views_and_writes(tmp_path):
     assert _scores(emu) == {"#apple": 7, "#sel": 7, "#nbt": 1, "#ent": 2}
 
 
+def test_loaded_items_drop_components_equal_to_their_defaults(tmp_path):
+    # Entity.load / BlockEntity.loadWithComponents read each stack with ItemStack.CODEC, whose
+    # PatchedDataComponentMap.fromPatch applies the patch over the item's defaults: a damage of 0 on a
+    # sword, or a removal of food it never had, is gone when the NBT is read back
+    emu = run_both(tmp_path, {"t:main": SETUP + "setblock 0 0 0 chest\n"
+                              'data modify block 0 0 0 Items append value {Slot:0b,id:"minecraft:diamond_sword",count:1,'
+                              'components:{"minecraft:damage":0,"!minecraft:food":{}}}\n'
+                              "execute store result score #block v if data block 0 0 0 Items[0].components\n"
+                              'summon item 0 64 0 {Item:{id:"minecraft:iron_sword",count:1,components:{"minecraft:damage":0,'
+                              '"minecraft:custom_data":{k:1b}}},Tags:["i"]}\n'
+                              "execute store result score #item v if data entity @e[tag=i,limit=1] Item.components\n"
+                              'execute store result score #kept v if data entity @e[tag=i,limit=1] Item.components."minecraft:custom_data"\n'
+                              'execute store result score #damage v if data entity @e[tag=i,limit=1] Item.components."minecraft:damage"\n'
+                              'setblock 1 0 0 barrel{Items:[{Slot:1b,id:"minecraft:stone",count:2,components:{"minecraft:max_stack_size":64}}]}\n'
+                              "execute store result score #barrel v if data block 1 0 0 Items[0].components\n"}, players=STEVE)
+    assert _scores(emu) == {"#block": 0, "#item": 1, "#kept": 1, "#damage": 0, "#barrel": 0}
+
+
 def test_loot_targets(tmp_path):
     # LootCommand: spawn drops item entities, replace fills slot after slot, insert distributes
     table = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "stone", "functions": [

@@ -41,6 +41,10 @@ def test_max_stack_sizes_and_durabilities():
     assert items.ItemStack("minecraft:water_bucket").max_stack_size == 1
     assert items.ItemStack("minecraft:bucket").max_stack_size == 16
     assert items.ItemStack("minecraft:stone").max_stack_size == 64
+    # Items.java (1.21): every minecart stacks to 1 (stacksTo(1)); the ominous trial key to 64 (no stacksTo)
+    for cart in ("minecart", "chest_minecart", "tnt_minecart", "hopper_minecart", "command_block_minecart"):
+        assert items.ItemStack("minecraft:" + cart).max_stack_size == 1
+    assert items.ItemStack("minecraft:ominous_trial_key").max_stack_size == 64
 
 
 def test_nbt_forms_by_version():
@@ -52,6 +56,18 @@ def test_nbt_forms_by_version():
     assert items.from_nbt(items.to_nbt(stack, V121)) == stack
     assert items.from_nbt(Compound(id=String("stone"), Count=Int(2))).count == 2
     assert items.from_nbt(Compound(id=String("minecraft:air"))).is_empty
+
+
+def test_read_components_are_patched_over_the_defaults():
+    # ItemStack.CODEC builds the stack with PatchedDataComponentMap.fromPatch: a patch that is not
+    # sanitized goes through applyPatch, so a value equal to the item's default and a removal of a
+    # component the item lacks leave it; a key without namespace is minecraft's (ResourceLocation)
+    read = items.from_nbt(Compound(id=String("minecraft:diamond_sword"), count=Int(1), components=Compound({
+        "minecraft:damage": Int(0), "max_stack_size": Int(1), "!minecraft:food": Compound(),
+        "!minecraft:max_damage": Compound(), "custom_data": Compound(a=Int(1))})))
+    assert read.patch == {"!minecraft:max_damage": {}, "minecraft:custom_data": {"a": 1}}
+    damaged = items.from_nbt(Compound(id=String("minecraft:diamond_sword"), components=Compound({"minecraft:damage": Int(3)})))
+    assert damaged.patch == {"minecraft:damage": 3}
 
 
 def _player(version_slots=None):
