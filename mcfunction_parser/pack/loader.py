@@ -26,6 +26,7 @@ from mcfunction_parser.diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
 from mcfunction_parser.pack.parallel import FunctionFile, parse_files
 from mcfunction_parser.pack import loot
+from mcfunction_parser.pack import recipes as recipe_files
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
 from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS, open_game_jar
 from mcfunction_parser.pack import advancements, clocks, conditions, registry_tags
@@ -67,6 +68,7 @@ class LoadedPacks:
     advancement_loot: dict[str, list[Loc]] = field(default_factory=dict)
     advancement_recipes: dict[str, list[Loc]] = field(default_factory=dict)
     recipes: dict[str, str] = field(default_factory=dict)  # id -> its type (the jar's, then the packs')
+    recipe_bodies: dict[str, Any] = field(default_factory=dict)  # id -> its JSON, the recipes that decode
     predicates: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
     advancements: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
     dimensions: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension: id -> its JSON
@@ -534,19 +536,26 @@ def _load_advancements(packs: list[_PackFiles], result: LoadedPacks) -> None:
 
 
 def _load_recipes(packs: list[_PackFiles], result: LoadedPacks, jar) -> None:
-    """Recipe ids and types (``data/<ns>/recipe``, ``recipes`` before 1.21): the game's own from its
-    jar first, then the packs' (a later pack's file replaces an earlier one). A recipe without a
-    ``type`` is refused, as RecipeManager refuses it; their other fields are not checked."""
+    """Recipes (``data/<ns>/recipe``, ``recipes`` before 1.21): the game's own from its jar first,
+    then the packs' (a later pack's file replaces an earlier one). A recipe that does not decode
+    (:func:`mcfunction_parser.pack.recipes.check_recipe`) is refused, as RecipeManager skips it:
+    the id of one without a ``type`` is not loaded; one whose other fields fail keeps its id and
+    type (``recipe`` still names it) and has no body to craft with."""
     if jar is not None:
         root, name = jar
         for path in _jar_files(root, ("recipe", "recipes")):
             _, namespace, _, rest = path.at.split("/", 3)
             doc = load_json(path, f"{name}!/{path.at}", result.diagnostics)
             if doc is not None and isinstance(doc.value, dict):
-                result.recipes[f"{namespace}:{rest[:-len('.json')]}"] = normalise_id(str(doc.value.get("type", "")))
+                recipe_id = f"{namespace}:{rest[:-len('.json')]}"
+                result.recipes[recipe_id] = normalise_id(str(doc.value.get("type", "")))
+                result.recipe_bodies[recipe_id] = doc.value
     for recipe_id, doc in _chosen_json(packs, ("recipe", "recipes"), result):
         kind = doc.value.get("type") if isinstance(doc.value, dict) else None
         if not isinstance(kind, str):
             result.diagnostics.append(doc.diagnostic(ERROR, f"recipe {recipe_id}: missing the string 'type'", 0))
             continue
         result.recipes[recipe_id] = normalise_id(kind)
+        result.recipe_bodies.pop(recipe_id, None)
+        if recipe_files.check_recipe(doc, result.version, recipe_id, result.diagnostics):
+            result.recipe_bodies[recipe_id] = doc.value
