@@ -47,9 +47,10 @@ MACROS = {
     "FAIL": "err = {0}\nerrarg = {1}\nstatus = ST_ERROR\nbreak",
     # the command ran (its callbacks hear this result)
     "RESULT": "has = 1\nok = {0}\nval = {1}",
-    # {0} = the slots selector {1} finds in this context, written to selbuf[{2}:]
+    # {0} = the slots selector {1} finds in this context, written to selbuf[{2}:] (an int64 offset: a
+    # literal 0 would make numba compile _select a second time, for Literal[int](0))
     "SELECT": "{0} = _select({1}, cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,\n"
-              "            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, {2})",
+              "            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64({2}))",
     # {0} = whether holder {1} is one `*` names (Scoreboard.getTrackedPlayers: a score, or kept)
     "TRACKED": "{0} = kept[{1}] != 0\nfor o_ in range(present.shape[1]):\n    {0} = {0} or present[{1}, o_] != 0",
     # BuildContexts: a stage reaching the fork limit fails the command

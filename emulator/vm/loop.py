@@ -460,6 +460,36 @@ _shuffle = njit(cache=True)(java_random.shuffle)
 
 
 @njit(cache=True)
+def _sort_by(keys, out, off, n):
+    """``out[off:off + n]`` ordered by ``keys[:n]``, equal keys in their order (List.sort is stable): a
+    bottom-up merge sort of the positions, written out (numpy's argsort and a fancy-indexed row copy
+    compile for seconds: its generic sort, the copy's shape check and its message)."""
+    a = np.empty(n, dtype=np.int64)
+    b = np.empty(n, dtype=np.int64)
+    for i in range(n):
+        a[i] = i
+    width = 1
+    while width < n:
+        for lo in range(0, n, 2 * width):
+            mid = min(lo + width, n)
+            hi = min(lo + 2 * width, n)
+            i, j = lo, mid
+            for k in range(lo, hi):
+                if j >= hi or (i < mid and not keys[a[j]] < keys[a[i]]):
+                    b[k] = a[i]
+                    i += 1
+                else:
+                    b[k] = a[j]
+                    j += 1
+        a, b = b, a
+        width *= 2
+    for i in range(n):
+        b[i] = out[off + a[i]]
+    for i in range(n):
+        out[off + i] = b[i]
+
+
+@njit(cache=True)
 def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etags, order, values, present, alive_obj,
             erandom, out, off):
     """The slots selector ``sel`` finds (``self_slot``: the executor's, -1 for the server; ``pos``
@@ -491,10 +521,10 @@ def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etag
             if sort == SORT_ARBITRARY and n >= limit and not joined:
                 break
     if joined and n > 1:
-        keys = np.empty(n, dtype=np.int64)
+        keys = np.empty(n)
         for i in range(n):
             keys[i] = eints[out[off + i], EI_JOIN]
-        out[off:off + n] = out[off:off + n][np.argsort(keys, kind="mergesort")]
+        _sort_by(keys, out, off, n)
     if sort == SORT_RANDOM and n > 1:
         _shuffle(erandom, out, off, n)
     elif sort != SORT_ARBITRARY and n > 1:  # List.sort: stable, by the squared distance (negated: furthest)
@@ -506,8 +536,7 @@ def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etag
             dz = efloats[e, EF_Z] - oz
             d2 = dx * dx + dy * dy + dz * dz
             keys[i] = d2 if sort == SORT_NEAREST else -d2
-        ranked = out[off:off + n][np.argsort(keys, kind="mergesort")]
-        out[off:off + n] = ranked
+        _sort_by(keys, out, off, n)
     return n if n < limit else limit
 
 
@@ -551,6 +580,14 @@ def as_cache_row(ctx, slot, kind):
     return (ctx * 7919 + slot * 4 + kind) & (AS_CACHE_SIZE - 1)
 
 
+@njit(cache=True, inline="always")
+def _copy_row(rows, to, row):
+    """``rows[to] = rows[row]``, written out: numba's row assignment checks the shapes and compiles the
+    error's message (about 2 s)."""
+    for c in range(rows.shape[1]):
+        rows[to, c] = rows[row, c]
+
+
 @njit(cache=True)
 def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_cache, root):
     """The context stage ``kind`` (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as,
@@ -572,8 +609,8 @@ def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_ca
             same = False
         if same:
             return made, nctx
-    cints[nctx] = cints[ctx]
-    cfloats[nctx] = cfloats[ctx]
+    _copy_row(cints, nctx, ctx)
+    _copy_row(cfloats, nctx, ctx)
     if kind == 0:  # as: the executor
         cints[nctx, CI_ENTITY] = slot
         cints[nctx, CI_HOLDER] = eints[slot, EI_HOLDER]
@@ -690,7 +727,7 @@ def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, eflo
             and cfloats[made, CF_X] == x and cfloats[made, CF_Y] == y and cfloats[made, CF_Z] == z and cfloats[made, CF_YAW] == yaw
             and cfloats[made, CF_PITCH] == pitch):
         return made, nctx
-    cints[nctx] = cints[ctx]
+    _copy_row(cints, nctx, ctx)
     cints[nctx, CI_ANCHOR] = anchor
     cfloats[nctx, CF_X] = x
     cfloats[nctx, CF_Y] = y
@@ -1087,7 +1124,7 @@ def run(m):
                     counts[np.uint64(pc)] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
                 n = _select(code[upc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
                 passed = (n > 0) != (code[upc, 6] != 0)
                 fval = 0 if not passed else (1 if code[upc, 6] else n)  # `if` counts the entities, `unless` gives 1
             elif op == OP_IFLEAF:  # compareNbt of {K:N}: the same type and number; type 0: the path leads to a tag
@@ -1345,7 +1382,7 @@ def run(m):
                 val = n
             elif op == OP_TAG:
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
                 w = code[pc, 2] >> 6
                 m = np.int64(1) << (code[pc, 2] & 63)
                 many = etags.shape[1] * 64 > MAX_TAGS  # else no entity can reach the limit
@@ -1368,7 +1405,7 @@ def run(m):
                 pc += 1
             elif op == OP_TP:
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
                 pc += 1
                 crossing = False
                 for i in range(n):
@@ -1449,7 +1486,7 @@ def run(m):
                 pc += 1
             else:  # OP_LOG
                 n = _select(code[pc, 2], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
                 has = 1
                 ok = 1 if n else 0
                 val = n
@@ -1475,7 +1512,7 @@ def run(m):
                             n += 1
                 else:
                     n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                                efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, off)
+                                efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(off))
                     for i in range(off, off + n):
                         selbuf[i] = eints[selbuf[i], EI_HOLDER]
                 regs[R_NSEL2 if code[pc, 2] else R_NSEL] = n
@@ -1485,7 +1522,7 @@ def run(m):
             if alive:
                 drawn = erandom[0]
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, 0)
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
                 if 0 < n < forklimit and (regs[R_NCTX] + n > cints.shape[0] or regs[R_NFORK] + n > fstack.shape[0]):
                     erandom[0] = drawn  # a random sort draws again then, as if for the first time
                     status = ST_GROWCTX  # Python makes room, then the stage runs again

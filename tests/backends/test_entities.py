@@ -134,6 +134,26 @@ def test_selector_order_with_and_without_sort(tmp_path):
     assert [e["pos"][0] for e in tagged(emu, "far")] == [3.5, 2.5]
 
 
+def test_sorted_selectors_keep_equal_distances_in_their_order_in_the_vm(tmp_path):
+    # EntitySelectorParser.ORDER_NEAREST / ORDER_FURTHEST: List.sort by the squared distance, which is
+    # stable (TimSort): entities at equal distances stay in the store's order. 13 markers, many ties,
+    # numbered in the order `execute as` visits them
+    xs = (3, -1, 2, 1, -3, 0, 2, -2, 1, 3, -1, 0, 2)
+    body = SETUP + "".join(f"summon marker {x} 0 0 {{Tags:[\"m\"]}}\n" for x in xs)
+    for sort in ("nearest", "furthest"):
+        body += f"scoreboard players set #i v 0\nexecute as @e[tag=m,x=0.5,y=0,z=0,sort={sort}] run function t:{sort}\n"
+    functions = {"t:main": body,
+                 "t:nearest": "scoreboard players add #i v 1\nscoreboard players operation @s v = #i v",
+                 "t:furthest": "scoreboard players add #i v 1\nscoreboard players operation @s w = #i v"}
+    functions["t:main"] = functions["t:main"].replace(SETUP, SETUP + "scoreboard objectives add w dummy\n")
+    emu = run_both(tmp_path, functions)
+    nearest = sorted(range(len(xs)), key=lambda i: abs(xs[i]))  # sorted() is stable too
+    furthest = sorted(range(len(xs)), key=lambda i: -abs(xs[i]))
+    markers = tagged(emu, "m")
+    assert [markers[i]["scores"]["v"] for i in nearest] == list(range(1, len(xs) + 1))
+    assert [markers[i]["scores"]["w"] for i in furthest] == list(range(1, len(xs) + 1))
+
+
 def test_shuffle_permutes_unsorted_order_and_both_backends_agree(tmp_path):
     body = SETUP + "".join(f"summon marker {x} 0 0 {{Tags:[\"m\"]}}\n" for x in range(8))
     body += "execute as @e[tag=m] run scoreboard players add #i v 1\n"
