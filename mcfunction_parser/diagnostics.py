@@ -1,6 +1,8 @@
 """Source locations and diagnostics shared by the parser, the pack loader, the linter and the emulator."""
 from __future__ import annotations
 
+import functools
+from collections import namedtuple
 from dataclasses import dataclass
 
 from .pack.versions import parse_mc_version, releases_label
@@ -10,16 +12,25 @@ WARNING = "warning"
 INFO = "info"
 
 
-@dataclass(frozen=True, slots=True)
-class Loc:
-    """A position in a source file. ``line`` and ``col`` are 1-based; ``col`` counts characters."""
+class Loc(namedtuple("Loc", ("path", "line", "col"))):
+    """A position in a source file. ``line`` and ``col`` are 1-based; ``col`` counts characters.
 
-    path: str
-    line: int
-    col: int
+    A named tuple, not a dataclass like the AST's nodes: the parser builds several per command,
+    and a tuple is built by one C call (``new_loc``), about a third faster than a slotted object."""
+
+    __slots__ = ()
 
     def __str__(self) -> str:
         return f"{self.path}:{self.line}:{self.col}"
+
+    @staticmethod
+    def new(path: str, line: int, col: int) -> "Loc":
+        return new_loc((path, line, col))
+
+
+# new_loc((path, line, col)) is Loc(path, line, col) built by one C call, without a Python frame
+# (the parser's hot paths build locations so)
+new_loc = functools.partial(tuple.__new__, Loc)
 
 
 @dataclass(frozen=True, slots=True)

@@ -8,7 +8,7 @@ import re
 from .ast import Command, Function, MacroLine, UnreadCommand
 from .commands import command
 from .commands.tree import newer_than_every_tree, stand_in_note
-from .diagnostics import ERROR, WARNING, Diagnostic, Loc
+from .diagnostics import ERROR, WARNING, Diagnostic, Loc, new_loc
 from .features import feature_problem
 from .lines import LineError, logical_lines, macro_keys
 from .reader import JoinedReader, ParseError, Reader
@@ -97,7 +97,7 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
                     continue
                 except NotRelocatable:
                     read[text] = False
-        loc = Loc.new(path, line, col)
+        loc = new_loc((path, line, col))
         first = text[0]
         if first == "$":
             if not macros_ok:

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from .diagnostics import Loc
+from .diagnostics import Loc, new_loc
 from .features import feature_problem
 
 INT_MIN = -(2**31)
@@ -91,10 +91,10 @@ class Reader:
 
     def loc(self) -> Loc:
         """The file position of the cursor."""
-        return Loc.new(self.path, self.line, self.col + self.pos)
+        return new_loc((self.path, self.line, self.col + self.pos))
 
     def loc_at(self, pos: int) -> Loc:
-        return Loc.new(self.path, self.line, self.col + pos)
+        return new_loc((self.path, self.line, self.col + pos))
 
     def fail(self, message: str, pos: int | None = None):
         raise ParseError(message, self.pos if pos is None else pos)
@@ -326,4 +326,4 @@ class JoinedReader(Reader):
             if seg[0] > pos:
                 break
             start, line, col = seg
-        return Loc.new(self.path, line, col + pos - start)
+        return new_loc((self.path, line, col + pos - start))

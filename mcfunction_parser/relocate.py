@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import dataclasses
 
-from .diagnostics import Loc
+from .diagnostics import Loc, new_loc
 
 
 class NotRelocatable(Exception):
@@ -28,7 +28,7 @@ def relocate(node, path: str, line: int, shift: int):
 
 
 def _loc(loc: Loc, path: str, line: int, shift: int) -> Loc:
-    return Loc.new(path, line, loc.col + shift)
+    return new_loc((path, line, loc[2] + shift))
 
 
 def _tuple(items: tuple, path: str, line: int, shift: int) -> tuple:
@@ -67,7 +67,7 @@ def _dataclass_relocator(cls: type):
         if f.type in SCALARS:
             args.append(f"node.{f.name}")
         elif f.type == "Loc":
-            args.append(f"Loc.new(path, line, node.{f.name}.col + shift)")
+            args.append(f"new_loc((path, line, node.{f.name}[2] + shift))")
         else:  # another node, a tuple or a value of any type: its own relocator decides
             body += [f"    v{i} = node.{f.name}",
                      f"    g = R[type(v{i})]",
@@ -77,7 +77,7 @@ def _dataclass_relocator(cls: type):
     if len(looked) == len(fields):  # no location of its own: the node itself when nothing inside moved
         body += ["    if " + " and ".join(f"a{i} is v{i}" for i in looked) + ":", "        return node"]
     source = "def relocate(node, path, line, shift):\n" + "\n".join(body + [f"    return cls.new({', '.join(args)})"])
-    namespace = {"R": _RELOCATORS, "cls": cls, "Loc": Loc}
+    namespace = {"R": _RELOCATORS, "cls": cls, "new_loc": new_loc}
     exec(source, namespace)  # noqa: S102  (the source is built from the field names above)
     return namespace["relocate"]
 
