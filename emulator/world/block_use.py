@@ -29,7 +29,6 @@ advancements/critereon/ItemUsedOnLocationTrigger.java and DefaultBlockInteractio
 from __future__ import annotations
 
 import math
-import weakref
 
 from emulator.world import advancements, block_placing, block_shapes, inventories, item_cooldowns, statistics
 from emulator.world.blocks import BlockState
@@ -67,9 +66,6 @@ _HAND_OPENED = {"door", "trapdoor"}  # every type but iron (BlockSetType.canOpen
 _DIRECTIONS = ("south", "west", "north", "east")  # Direction.from2DDataValue
 _OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
             "east": (1, 0, 0)}
-
-_MENU: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()  # player -> the container block it has open
-
 
 def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
     """ServerPlayerGameMode.useItemOn with the stack in ``hand`` on the block at ``pos``, clicked at
@@ -219,7 +215,7 @@ def _open_menu(state, player, pos, block: BlockState, award: bool) -> str:
     close_menu(state, player)
     if block.id == "minecraft:barrel":
         _set(state, pos, block, open="true")  # BarrelBlockEntity.startOpen -> updateBlockState
-    _MENU[player] = (player.dimension, pos)
+    state.open_menus[player] = (player.dimension, pos)
     if award and MENUS[block.id] is not None:
         statistics.award(state, player, statistics.stat_name("custom", MENUS[block.id]))
     return "consume"
@@ -236,27 +232,27 @@ def _blocker(block: BlockState, pos):
 
 def close_menu(state, player) -> None:
     """AbstractContainerMenu.removed -> Container.stopOpen: a barrel with no viewer left closes."""
-    opened = _MENU.pop(player, None)
+    opened = state.open_menus.pop(player, None)
     if opened is None:
         return
     level = state.level(opened[0])
     pos = opened[1]
     block = level.blocks.get(pos)
-    if block.id == "minecraft:barrel" and opened not in _MENU.values():
+    if block.id == "minecraft:barrel" and opened not in state.open_menus.values():
         _set(level, pos, block, open="false")
 
 
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_menus` would do nothing now: no player has a container open."""
-    return not _MENU
+    return not state.open_menus
 
 
 def tick_menus(state) -> None:
     """Player.tick: a menu no longer valid closes (the block is gone, or the player's eyes are out of
     the block interaction range + 4 of the block's box: Player.canInteractWithBlock)."""
-    if not _MENU:  # every tick: no open container is the common case
+    if not state.open_menus:  # every tick: no open container is the common case
         return
-    for player, (dimension, pos) in list(_MENU.items()):
+    for player, (dimension, pos) in list(state.open_menus.items()):
         if (not player.alive or player.dimension != dimension or state.blocks_in(dimension).get(pos).id not in MENUS
                 or not _within_reach(player, pos)):
             close_menu(state, player)

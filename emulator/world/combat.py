@@ -14,7 +14,6 @@ observes of each.
 - ``respawn_keeps(state, old, new)``: what PlayerList.respawn carries to the new player.
 - ``tick_dead(state)``: a dead player's ``DeathTime`` counts to 20; ``tick_is_idle(state)``: whether
   it would do nothing (a batch of ticks needs it idle).
-- ``is_dead(player)``.
 
 A dead player stays in the player list (``@a``, ``@p``, ``@r``, ``@s`` find it; ``@e`` and ``@n`` do
 not: EntitySelectorParser's isAlive test) at the place it died, with ``Health`` 0, until it respawns.
@@ -37,7 +36,6 @@ position as origin); the death messages' en_us texts.
 from __future__ import annotations
 
 import math
-import weakref
 
 import numpy as np
 
@@ -71,21 +69,12 @@ DEATH_MESSAGES = {
 }
 
 
-# the last player / mob that hurt an entity, and the game time it did: (entity, time)
-_LAST_HURT_BY: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-# LivingEntity.lastHurtByMob: the last living entity (a player too) that hurt it, and when
-_LAST_ATTACKER: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 NO_ANGER = frozenset({"minecraft:mob_attack_no_aggro"})  # the game's #minecraft:no_anger damage types
-_DEAD: "weakref.WeakSet" = weakref.WeakSet()
-
-
-def is_dead(entity) -> bool:
-    return entity in _DEAD
 
 
 def kill_credit(state, entity) -> Entity | None:
     """LivingEntity.getKillCredit: the last attacker within 100 ticks."""
-    found = _LAST_HURT_BY.get(entity)
+    found = state.last_hurt_by.get(entity)
     if found is None or state.gametime - found[1] > CREDIT_TICKS:
         return None
     return found[0]
@@ -94,7 +83,7 @@ def kill_credit(state, entity) -> Entity | None:
 def last_attacker(state, entity) -> Entity | None:
     """LivingEntity.getLastAttacker (getLastHurtByMob): the last living entity to hurt it, until it
     dies or 100 ticks pass (LivingEntity.baseTick clears it)."""
-    found = _LAST_ATTACKER.get(entity)
+    found = state.last_attacker.get(entity)
     if found is None or not found[0].alive or state.gametime - found[1] > CREDIT_TICKS:
         return None
     return found[0]
@@ -158,11 +147,11 @@ def remember_attacker(state, entity, source: DamageSource) -> None:
     if attacker is None or attacker is entity or attacker.type in inventories.NOT_LIVING:
         return
     if source.type not in NO_ANGER:  # setLastHurtByMob, unless the damage type angers no one
-        _LAST_ATTACKER[entity] = (attacker, state.gametime)
-    previous = _LAST_HURT_BY.get(entity)
+        state.last_attacker[entity] = (attacker, state.gametime)
+    previous = state.last_hurt_by.get(entity)
     if attacker.is_player or previous is None or not previous[0].is_player or \
             state.gametime - previous[1] > CREDIT_TICKS:
-        _LAST_HURT_BY[entity] = (attacker, state.gametime)
+        state.last_hurt_by[entity] = (attacker, state.gametime)
 
 
 def hurt_triggers(state, entity, source: DamageSource, amount: float) -> None:
@@ -186,7 +175,7 @@ def player_hurt_entity(state, player, entity, source: DamageSource, amount: floa
 # ---------------------------------------------------------------------- death
 def die(state, entity, source: DamageSource) -> None:
     """LivingEntity.die: once; the killer's credit, then a mob leaves the world and a player dies."""
-    if entity in _DEAD or not entity.alive:
+    if entity in state.dead_players or not entity.alive:
         return
     for hand in (inventories.MAINHAND, inventories.OFFHAND):
         held = inventories.entity_slot(entity, hand, state.version)
@@ -269,7 +258,7 @@ def _player_dies(state, player, source: DamageSource, killer) -> None:
         dimension=String(player.dimension),
         pos=IntArray(Int(math.floor(c)) for c in (x, y, z)))
     player.data["DeathTime"] = Short(0)
-    _DEAD.add(player)
+    state.dead_players.add(player)
     player.alive = False
     if state.gamerules.get("doImmediateRespawn") == "true":
         state.error(f"{player.display_name} died with doImmediateRespawn on: the respawn that follows is not "
@@ -341,15 +330,15 @@ def _award_orbs(state, pos, amount: int, dimension: str) -> None:
 
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_dead` would do nothing now: no dead player's DeathTime still counts."""
-    return not _DEAD or not any(p.is_player and not p.alive and int(p.data.get("DeathTime", Short(0))) < MAX_DEATH_TIME
-                   for p in _DEAD)
+    return not state.dead_players or not any(p.is_player and not p.alive and int(p.data.get("DeathTime", Short(0))) < MAX_DEATH_TIME
+                   for p in state.dead_players)
 
 
 def tick_dead(state) -> None:
     """LivingEntity.tickDeath: ``DeathTime`` counts up to 20 (then the game takes the body away)."""
-    if not _DEAD:  # every tick: an empty set is the common case
+    if not state.dead_players:  # every tick: an empty set is the common case
         return
-    for player in list(_DEAD):
+    for player in list(state.dead_players):
         if player.is_player and not player.alive:
             player.data["DeathTime"] = Short(min(int(player.data.get("DeathTime", Short(0))) + 1, MAX_DEATH_TIME))
 

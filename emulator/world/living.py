@@ -28,7 +28,6 @@ ExperienceCommand.java, EffectCommands.java, DamageCommand.java.
 from __future__ import annotations
 
 import math
-import weakref
 
 import numpy as np
 
@@ -240,8 +239,6 @@ def attribute_value(entity, name: str) -> float:
 
 
 # ---------------------------------------------------------------------- health and damage
-# LivingEntity.invulnerableTime and lastHurt (not saved): per entity, while they run
-_HURT: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 def health(entity) -> float:
     return _number(entity.data.get("Health"), default_base(entity.type, "max_health"))
@@ -281,7 +278,7 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
         return False
     if _effect(entity, "minecraft:resistance") is not None and not bypasses_invulnerability:
         raise Unmodelled("the resistance effect's damage reduction")
-    timers = _HURT.setdefault(entity, [0, 0.0])  # invulnerableTime, lastHurt
+    timers = state.hurt_timers.setdefault(entity, [0, 0.0])  # LivingEntity.invulnerableTime, lastHurt
     if timers[0] > 10 and not bypasses_invulnerability:
         if amount <= timers[1]:
             return False
@@ -425,14 +422,14 @@ def _drop_if_empty(entity) -> None:
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_living` would change nothing now: no effect counting down, no hurt
     time or hurt timer running."""
-    hurting = bool(_HURT)
+    hurting = bool(state.hurt_timers)
     for entity in state.entities.living_mobs():
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
         if found is None and hurt_time is None and not hurting:
             continue  # the common case, every tick: neither field, no hurt timer anywhere
         if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE for e in found):
             return False
-        if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or (hurting and entity in _HURT):
+        if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or (hurting and entity in state.hurt_timers):
             return False
     return True
 
@@ -445,7 +442,7 @@ def tick_living(state, harm=None) -> list:
     effect's damage (default: :func:`hurt` as magic, no death). Returns the entities that lost an
     effect (the game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
     lost = []
-    hurting = bool(_HURT)  # only the entity ticking adds itself (an instant effect's harm)
+    hurting = bool(state.hurt_timers)  # only the entity ticking adds itself (an instant effect's harm)
     for entity in state.entities.living_mobs():  # a display or a marker reads no active_effects (Entity.load)
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
         if found is None and hurt_time is None and not hurting:
@@ -457,11 +454,11 @@ def tick_living(state, harm=None) -> list:
             hurt_time = entity.data.get("HurtTime")  # an instant effect's harm may have set it
         if is_numeric(hurt_time) and numeric_value(hurt_time) > 0:
             entity.data["HurtTime"] = Int(int(numeric_value(hurt_time)) - 1)
-        timers = _HURT.get(entity) if _HURT else None
+        timers = state.hurt_timers.get(entity) if state.hurt_timers else None
         if timers is not None:
             timers[0] -= 1
             if timers[0] <= 0:
-                del _HURT[entity]
+                del state.hurt_timers[entity]
     return lost
 
 
@@ -564,19 +561,16 @@ def query_levels(player) -> int:
 
 
 # ---------------------------------------------------------------------- a player's attack
-# Player.attackStrengthTicker: the game time it was last reset (join, attack), per player
-_SWUNG: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-
-
 def reset_attack_strength(state, player) -> None:
-    _SWUNG[player] = state.gametime
+    """Player.resetAttackStrengthTicker (join, attack): the game time is kept (WorldState.swung)."""
+    state.swung[player] = state.gametime
 
 
 def swing_damage(state, player) -> np.float32:
     """Player.attack's base damage: the attack damage attribute times 0.2 + 0.8 x strength², the
     strength (getAttackStrengthScale(0.5)) growing with the ticks since the last swing or join over
     20 / attack_speed; the swing resets it."""
-    ticker = state.gametime - _SWUNG.get(player, state.gametime)
+    ticker = state.gametime - state.swung.get(player, state.gametime)
     delay = F32(1.0 / attribute_value(player, "attack_speed") * 20.0)
     strength = min(max(F32((F32(ticker) + F32(0.5)) / delay), F32(0.0)), F32(1.0))
     reset_attack_strength(state, player)

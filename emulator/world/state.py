@@ -32,6 +32,7 @@ from __future__ import annotations
 import heapq
 import itertools
 import random
+import weakref
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -452,6 +453,13 @@ class WorldState:
     advancement_progress: Progress = field(default_factory=Progress)  # each player's criteria
     using_items: dict = field(default_factory=dict)  # player -> the item it is using (emulator.world.player_actions)
     item_cooldowns: dict = field(default_factory=dict)  # player -> cooldown group -> its end tick (item_cooldowns)
+    # what the game keeps on its entities without saving it, held weakly (a removed entity drops out)
+    open_menus: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # player -> (level, pos) (block_use)
+    hurt_timers: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> [invulnerableTime, lastHurt] (living)
+    swung: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # player -> game time of its last swing (living)
+    last_hurt_by: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> (attacker, game time) (combat)
+    last_attacker: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> (living attacker, game time) (combat)
+    dead_players: weakref.WeakSet = field(default_factory=weakref.WeakSet)  # players that died, until they respawn (combat)
     command_runner: object = None  # runs a command block's text: (text, Context) -> success (set by the runtime)
     pending_rewards: list = field(default_factory=list)  # (reward function, player) earned, to run next (take_rewards)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)

@@ -99,3 +99,25 @@ def test_run_player_in_a_dimension(pack, tmp_path):
     assert player["dimension"] == "minecraft:the_nether"
     bad = CliRunner().invoke(main, ["run", str(root), "--player", "A@0,0,0,in=t:nowhere"])
     assert bad.exit_code == 2 and "t:nowhere" in bad.output
+
+
+def test_what_a_world_keeps_on_its_players_stays_in_that_world(pack):
+    """A player's death, hurt timer, last attacker and swing are kept by its own world (WorldState):
+    a world made after it neither ticks its dead player's DeathTime (LivingEntity.tickDeath) nor
+    sees its timers."""
+    files = {"t/function/die.mcfunction": "kill @a\n", "t/function/hurt.mcfunction": "damage @a 1\n"}
+    first = Emulator(backend="python")
+    first.load(pack(files))
+    first.add_player("Alex")
+    first.add_player("Steve")
+    first.call("t:die", as_="Alex")
+    first.call("t:hurt")
+    dead = first.state.entities.players()[0]
+    assert dead.data["DeathTime"] == 0 and first.state.dead_players and first.state.hurt_timers
+    second = Emulator(backend="python")
+    second.load(pack(files))
+    assert not second.state.dead_players and not second.state.hurt_timers and not second.state.swung
+    second.tick(5)
+    assert dead.data["DeathTime"] == 0
+    first.tick(5)
+    assert dead.data["DeathTime"] == 5
