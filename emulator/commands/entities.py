@@ -160,6 +160,24 @@ def single(state: WorldState, target, ctx: Context) -> Entity:
     return entities[0]
 
 
+def players_found(state: WorldState, target, ctx: Context) -> list[Entity]:
+    """EntityArgument.getPlayers: the players found (EntitySelector.findPlayers: a UUID names a
+    player only); none fails "No player was found"."""
+    players = [e for e in select(state, target, ctx) if e.is_player]
+    if not players:
+        raise CommandFailure("argument.entity.notfound.player")
+    return players
+
+
+def single_player(state: WorldState, target, ctx: Context) -> Entity:
+    """EntityArgument.getPlayer (EntitySelector.findSinglePlayer): anything but one player fails
+    "No player was found"."""
+    players = [e for e in select(state, target, ctx) if e.is_player]
+    if len(players) != 1:
+        raise CommandFailure("argument.entity.notfound.player")
+    return players[0]
+
+
 def holder_names(state: WorldState, selector: ast.Selector, ctx: Context) -> list[str]:
     """ScoreHolderArgument with a selector: each entity's holder name (UUID, or player name)."""
     return [e.score_holder for e in found(state, selector, ctx)]

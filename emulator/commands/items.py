@@ -40,8 +40,8 @@ def _name(stack: ItemStack) -> str:
 
 
 def _players(env, target, ctx) -> list[Entity]:
-    found = entities.found(env.state, target, ctx)
-    if any(not e.is_player for e in found):
+    found = entities.select(env.state, target, ctx)
+    if not found or any(not e.is_player for e in found):
         raise CommandFailure("argument.entity.notfound.player")
     return found
 

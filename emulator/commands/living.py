@@ -17,7 +17,8 @@ from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast
 
-from .entities import _executor_required, arguments, executor, found, parse_target, single, target_word
+from .entities import (_executor_required, arguments, executor, found, parse_target, players_found, single,
+                       single_player, target_word)
 
 
 def _number(cmd, words: list, index: int, kind=float, default=None):
@@ -43,12 +44,12 @@ def experience(env, cmd: ast.GenericCommand, ctx) -> int:
     action = words[0] if words else ""
     who = target_word(cmd, words, 1, target)
     if action == "query":
-        player = single(env.state, who, ctx)  # the parser admits players only (EntityArgument.player)
+        player = single_player(env.state, who, ctx)
         unit = words[2] if len(words) > 2 else ""
         return living.query_levels(player) if unit == "levels" else living.query_points(player)
     amount = _number(cmd, words, 2, int)
     unit = words[3] if len(words) > 3 else "points"
-    players = found(env.state, who, ctx)  # players only: the parser refuses other selectors
+    players = players_found(env.state, who, ctx)
     if action == "add":
         for player in players:
             (living.add_levels if unit == "levels" else living.add_points)(player, amount)
@@ -205,7 +206,7 @@ def gamemode(env, cmd: ast.GenericCommand, ctx) -> int:
     if mode not in GAME_MODES:
         raise CommandFailure("dpemu.command.unreadable", cmd.name, f"unknown game mode '{mode}'", report=True)
     if len(words) > 1:
-        players = found(env.state, target_word(cmd, words, 1, target), ctx)  # players only by parse
+        players = players_found(env.state, target_word(cmd, words, 1, target), ctx)
     else:
         player = _executor_required(env.state, ctx)
         if not player.is_player:

@@ -12,7 +12,7 @@ from emulator.world import advancements, recipes
 from emulator.world.errors import CommandFailure
 from mcfunction_parser import ast
 
-from .entities import arguments, select, target_word
+from .entities import arguments, players_found, target_word
 
 
 def recipe(env, cmd: ast.GenericCommand, ctx) -> int:
@@ -21,9 +21,7 @@ def recipe(env, cmd: ast.GenericCommand, ctx) -> int:
         raise CommandFailure("dpemu.command.unreadable", "recipe", "expected 'recipe give|take TARGETS RECIPE|*'",
                              report=True)
     action, which, state = words[0], words[2], env.state
-    players = select(state, target_word(cmd, words, 1, target), ctx)  # players only: the parser refuses others
-    if not players:
-        raise CommandFailure("argument.entity.notfound.player")  # EntityArgument.getPlayers
+    players = players_found(state, target_word(cmd, words, 1, target), ctx)
     if which == "*":
         chosen = recipes.every(state.resources)
     else:

@@ -232,3 +232,22 @@ def test_gamemode_counts_the_players_it_changed(env):
     assert run(env, "execute if entity @a[gamemode=creative,name=Alex]") == 1
     with pytest.raises(CommandFailure):
         run(env, "gamemode survival")  # the server is no player
+
+
+@pytest.mark.parametrize("command, message", [
+    # EntityArgument.getPlayers / getPlayer (EntitySelector.findSinglePlayer): NO_PLAYERS_FOUND
+    ("xp add @a 1", "No player was found"), ("xp query @p levels", "No player was found"),
+    ("gamemode creative @a", "No player was found"), ("recipe give @a *", "No player was found"),
+    ("give @a stone", "No player was found"),
+    ("xp add Nobody 1", "No player was found"), ("damage Nobody 1", "No entity was found"),
+    # a UUID parses in an entity argument only (EntitySelectorParser.parseNameOrUUID: includesEntities)
+    ("damage {uuid} 1", "commands.damage.invulnerable"),
+    # EntityArgument.getEntities / getEntity: NO_ENTITIES_FOUND
+    ("effect give @e[type=pig] speed", "No entity was found"), ("damage @e[type=pig,limit=1] 1", "No entity was found"),
+    ("attribute @e[type=pig,limit=1] scale get", "No entity was found"),
+])
+def test_an_empty_target_fails_with_its_argument_types_message(env, command, message):
+    uuid = env.state.entities.summon("minecraft:marker", (0.0, 0.0, 0.0)).uuid_string
+    with pytest.raises(CommandFailure) as failure:
+        run(env, command.format(uuid=uuid))
+    assert message in (failure.value.message, failure.value.key)
