@@ -18,9 +18,9 @@ from .entities import world_source
 from emulator.world.errors import CommandFailure
 
 
-def block_argument(text: str) -> BlockSpec:
+def block_argument(env, text: str) -> BlockSpec:
     try:
-        return parse_block(text)
+        return parse_block(text, env.state.version)
     except ValueError as error:
         raise CommandFailure("dpemu.block.invalid", text, error, report=True) from None
 
@@ -40,7 +40,7 @@ def block_tag_test(env):
 def if_block(env, cond: ast.IfBlock, ctx) -> int:
     """``if block POS BLOCK``: 1 when the block matches."""
     pos = block_pos(world_source(env.state, ctx), cond.pos)
-    return int(env.state.blocks_in(ctx.dimension).test(pos, block_argument(cond.block), block_tag_test(env)))
+    return int(env.state.blocks_in(ctx.dimension).test(pos, block_argument(env, cond.block), block_tag_test(env)))
 
 
 def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
@@ -54,8 +54,8 @@ def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
 
 def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     """``setblock POS BLOCK [MODE]`` / ``fill FROM TO BLOCK [MODE]`` (``replace FILTER`` too)."""
-    corners, words = _read(cmd)
-    spec, mode = with_defaults(block_argument(words[0]), env.state.version), (words[1] if len(words) > 1 else "replace")
+    corners, words = _read(cmd, env.state.version)
+    spec, mode = with_defaults(block_argument(env, words[0]), env.state.version), (words[1] if len(words) > 1 else "replace")
     source = world_source(env.state, ctx)
     positions = [block_pos(source, corner) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
@@ -65,7 +65,7 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
         return count
     block_filter = None
     if mode == "replace" and len(words) > 2:
-        kept = block_argument(words[2])
+        kept = block_argument(env, words[2])
         in_tag = block_tag_test(env)
         block_filter = lambda pos: blocks.test(pos, kept, in_tag)  # noqa: E731 - FillCommand's filter
     count = blocks.fill(positions[0], positions[1], spec, mode, block_filter)
@@ -74,9 +74,10 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     return count
 
 
-def _read(cmd: ast.GenericCommand) -> tuple[list, list[str]]:
-    """The corner positions and the words after them (the block, a mode, a filter)."""
-    reader = Reader(cmd.text, cmd.loc, (1, 21, 0))
+def _read(cmd: ast.GenericCommand, version) -> tuple[list, list[str]]:
+    """The corner positions and the words after them (the block, a mode, a filter), read in the
+    grammar of the packs' release."""
+    reader = Reader(cmd.text, cmd.loc, tuple(version))
     try:
         reader.pos = len(cmd.name) + 1
         corners = [vec3(reader, block=True)]

@@ -30,8 +30,10 @@ from __future__ import annotations
 
 import math
 
-from emulator.world import advancements, block_placing, block_shapes, inventories, item_cooldowns, statistics
+from emulator.world import (advancements, block_placing, block_shapes, inventories, item_cooldowns, signs,
+                            statistics)
 from emulator.world.blocks import BlockState
+from emulator.world.context import Context
 from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
 from emulator.world.id_families import COLOURS, WOODS
@@ -78,7 +80,7 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
     holding = any(not inventories.entity_slot(player, s, state.version).get().is_empty
                   for s in (inventories.MAINHAND, inventories.OFFHAND))
     if not (player.sneaking and holding):
-        if _item_on_block_passes(block, stack, face) and hand == MAIN:
+        if _item_on_block_passes(state, player, pos, block, stack, face) and hand == MAIN:
             result = _use_without_item(state, player, pos, block)
             if result == "consume":
                 if tuple(state.version) >= DEFAULT_BLOCK_USE_VERSION:
@@ -98,11 +100,16 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
     return placed
 
 
-def _item_on_block_passes(block: BlockState, stack, face: str) -> bool:
+def _item_on_block_passes(state, player, pos, block: BlockState, stack, face: str) -> bool:
     """BlockBehaviour.useItemOn: TRY_WITH_EMPTY_HAND for the blocks modelled here, except a note block
-    clicked on top with a head (NoteBlock.useItemOn: the head is placed instead)."""
+    clicked on top with a head (NoteBlock.useItemOn: the head is placed instead); a dye, ink sac or
+    honeycomb applied to an unwaxed sign (SignBlock.useItemOn) is not modelled."""
     if block.id == "minecraft:note_block" and face == "up" and stack.id.endswith(("_head", "_skull")):
         return False
+    if signs.is_sign(block.id) and stack.id in signs.APPLICATORS and player.gamemode != "adventure":
+        sign = state.blocks.entity(pos)
+        if sign is not None and not int(sign.get("is_waxed", 0)):
+            raise Unmodelled(f"applying {stack.id} to a sign (SignApplicator.tryApplyToSign)")
     return True
 
 
@@ -113,6 +120,8 @@ def _use_without_item(state, player, pos, block: BlockState) -> str:
         return "pass"
     if block.id in MENUS:
         return _open_menu(state, player, pos, block, award=True)
+    if signs.is_sign(block.id):
+        return signs.use(state, player, pos, block, _run_click_command)
     if block.id == "minecraft:lever":
         _set(state, pos, block, powered=_flip(block, "powered"))
         return "consume"
@@ -131,6 +140,13 @@ def _use_without_item(state, player, pos, block: BlockState) -> str:
     if kind in _HAND_OPENED:
         return "pass"  # iron doors and trapdoors open by redstone only
     raise Unmodelled(f"using the block {block.id} (its interaction is not modelled)")
+
+
+def _run_click_command(state, command: str, player, pos) -> None:
+    """SignBlockEntity.executeClickCommandsIfPresent: performPrefixedCommand as the player, at the
+    sign's centre, rotation zero, in the player's level (createCommandSourceStack)."""
+    at = (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5)
+    state.command_runner(command.removeprefix("/"), Context(player.order, at, (0.0, 0.0), "feet", player.dimension))
 
 
 def _property(block: BlockState, key: str, default: str) -> str:

@@ -7,10 +7,10 @@ registries: ``mcfunction_parser.gamedata.default_state``); a block the registrie
 only the properties written.
 
 Public API
-- ``parse_block(text)``: ``id[props]{nbt}`` (an ``#tag`` too, for predicates) into
+- ``parse_block(text, version)``: ``id[props]{nbt}`` (an ``#tag`` too, for predicates) into
   ``BlockSpec(id, is_tag, properties, nbt)``; ``BlockSpec.state`` gives the ``BlockState``.
 - ``with_defaults(spec, version)``: the spec a placement places (the block's default state under
-  the written properties); ``knows_states(block_id, version)``: whether a state's properties are
+  the written properties; a sign's block entity); ``knows_states(block_id, version)``: whether a state's properties are
   the block's whole set in that release.
 - ``block_pos(source, vec3)``: ``BlockPosArgument``: the position resolved like an entity
   position but without centring, then floored.
@@ -42,7 +42,7 @@ from mcfunction_parser.nbt import Compound, Int, String
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure
-from emulator.world import command_blocks
+from emulator.world import command_blocks, signs
 from emulator.world.inventories import default_block_entity, normalise_items
 from emulator.world.nbt_ops import compare_nbt, copy_tag, tags_equal
 from emulator.world.source import Source
@@ -88,8 +88,9 @@ def _namespaced(name: str) -> str:
     return name if ":" in name else "minecraft:" + name
 
 
-def parse_block(text: str) -> BlockSpec:
-    """``id[k=v,...]{nbt}``; raises ValueError on malformed text (the parser reports it first)."""
+def parse_block(text: str, version=(1, 21, 0)) -> BlockSpec:
+    """``id[k=v,...]{nbt}``, the NBT in the grammar of ``version`` (mixed lists from 1.21.5); raises
+    ValueError on malformed text (the parser reports it first)."""
     m = _ID.match(text)
     if m is None:
         raise ValueError(f"expected a block id: {text!r}")
@@ -107,7 +108,7 @@ def parse_block(text: str) -> BlockSpec:
         pos = close + 1
     nbt = None
     if text[pos:pos + 1] == "{":
-        reader = Reader(text, Loc("<block>", 1, 1), (1, 21, 0))
+        reader = Reader(text, Loc("<block>", 1, 1), tuple(version))
         reader.pos = pos
         try:
             nbt = parse_compound(reader)
@@ -122,9 +123,12 @@ def parse_block(text: str) -> BlockSpec:
 def with_defaults(spec: BlockSpec, version) -> BlockSpec:
     """The spec placed for ``spec`` in release ``version``: the block's default state with the
     written properties set over it (BlockStateParser, NbtUtils.readBlockState); a tag, or a block
-    the registries do not know, as written."""
+    the registries do not know, as written. A sign's NBT is the block entity it loads into
+    (emulator.world.signs.loaded_entity)."""
     if spec.is_tag or not spec.id.startswith("minecraft:"):
         return spec
+    if signs.is_sign(spec.id):
+        spec = dataclasses.replace(spec, nbt=signs.loaded_entity(version, spec.nbt))
     default = gamedata.default_state(spec.id, version)
     if not default:
         return spec

@@ -32,10 +32,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from emulator.world import block_shapes, command_blocks
+from emulator.world import block_shapes, command_blocks, signs
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
-from mcfunction_parser.nbt import Byte, Compound, List, String
 from emulator.world.placed_states import (CLOCKWISE, HORIZONTAL, OFFSETS, OPPOSITE, horizontal_direction,
                                           ordered_by_nearest)
 
@@ -101,25 +100,12 @@ def state_for_placement(ctx: PlaceContext):
 
 def after_placed(state, pos, block_id: str, properties: dict) -> None:
     if block_id.endswith("_sign"):
-        state.blocks.entities[tuple(pos)] = _sign_entity(tuple(state.version))
+        state.blocks.entities[tuple(pos)] = signs.new_entity(state.version)
     elif block_id.endswith("_door"):  # DoorBlock.setPlacedBy
         upper = (pos[0], pos[1] + 1, pos[2])
         state.blocks.set_state(upper, BlockState(block_id, _sorted({**properties, "half": "upper"})))
     elif block_id in _CHESTS and properties.get("type") != "single":
         _join_partner(state, pos, block_id, properties)
-
-
-def _sign_entity(version) -> Compound:
-    """SignBlockEntity.saveAdditional of a new sign: both sides' four empty lines (SignText.DIRECT_CODEC:
-    text components from 1.21.5, their JSON before: ``""`` from 1.20.3, ``{"text":""}`` before)."""
-    if version < (1, 20, 0):
-        raise Unmodelled("a sign's block entity before 1.20 (Text1 .. Text4)")
-    empty = "" if version >= (1, 21, 5) else '""' if version >= (1, 20, 3) else '{"text":""}'
-
-    def side() -> Compound:
-        return Compound(messages=List(String(empty) for _ in range(4)), color=String("black"),
-                        has_glowing_text=Byte(0))
-    return Compound(front_text=side(), back_text=side(), is_waxed=Byte(0))
 
 
 def _sorted(properties: dict) -> tuple:
