@@ -47,7 +47,8 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
         return None
     if player.gamemode == "adventure":
         return "pass"  # no can_place_on here (its block predicates are not modelled): refused
-    for component in ("minecraft:block_state", "minecraft:block_entity_data", "minecraft:custom_name"):
+    for component in ("minecraft:block_state", "minecraft:block_entity_data", "minecraft:custom_name",
+                      "minecraft:banner_patterns", "minecraft:profile", "minecraft:note_block_sound"):
         if stack.component(component) is not None:
             raise Unmodelled(f"placing {block_id} with its {component} component")
     low, high = _build_limits(player.dimension)

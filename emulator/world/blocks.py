@@ -50,6 +50,9 @@ from emulator.world.source import Source
 AIR = "minecraft:air"
 AIR_TYPES = {"minecraft:air", "minecraft:cave_air", "minecraft:void_air"}
 MODIFICATION_LIMIT = 32768  # gamerule commandModificationBlockLimit default
+# blocks whose new block entity saves nothing (BannerBlockEntity without patterns or name,
+# SkullBlockEntity without a profile, a sound or a name)
+_EMPTY_ENTITY_SUFFIXES = ("_banner", "_skull", "_head")
 
 
 _ID = re.compile(r"#?[a-z0-9_.\-]+(?::[a-z0-9_.\-/]+)?")
@@ -198,6 +201,8 @@ class BlockMap:
         nbt = default_block_entity(state.id)
         if nbt is None:
             nbt = command_blocks.default_entity(state.id)
+        if nbt is None and state.id.endswith(_EMPTY_ENTITY_SUFFIXES) and state.id != "minecraft:piston_head":
+            nbt = Compound()
         if spec.nbt is not None:
             nbt = nbt or Compound()
             nbt.update(copy_tag(spec.nbt))

@@ -12,7 +12,15 @@ and what BlockItem.place does after), with what a datapack observes: the block s
 - torches (standing or on a wall: ``torch``, ``soul_torch``, ``redstone_torch``, ``copper_torch``)
   and signs (standing, rotated in 16 steps opposite the player, or on a wall), whichever fits first
   in the directions the player looks nearest, the clicked face's opposite first
-  (StandingAndWallBlockItem.getPlacementState with BlockPlaceContext.getNearestLookingDirections).
+  (StandingAndWallBlockItem.getPlacementState with BlockPlaceContext.getNearestLookingDirections);
+  banners (the sign's rules: BannerBlock, WallBannerBlock) and heads and skulls (standing anywhere,
+  turned with the player; on a wall before the first block that is not replaceable; powered by a
+  neighbour's signal);
+- hanging signs: under a sturdy block (square to the player, or attached and turned in 16 steps
+  when sneaking: CeilingHangingSignBlock) or on a wall held by a sturdy block beside
+  (WallHangingSignBlock.canPlace); under another hanging sign is not modelled;
+- rails: straight along the player's direction on a sturdy block (BaseRailBlock); joining
+  another rail (RailState) is not modelled.
 
 - ``state_for_placement(ctx) -> (block_id, properties) | None | NotImplemented``: NotImplemented
   for a block none of these rules covers; None when the block cannot be placed there.
@@ -23,7 +31,8 @@ and what BlockItem.place does after), with what a datapack observes: the block s
 
 Sources (decompiled 1.21.x): world/level/block/SlabBlock.java, DoorBlock.java, ChestBlock.java,
 TorchBlock.java and BaseTorchBlock.canSurvive, WallTorchBlock.java, StandingSignBlock.java,
-WallSignBlock.java, block/entity/SignBlockEntity.java and SignText.java, world/item/StandingAndWallBlockItem.java, world/item/context/BlockPlaceContext.java,
+WallSignBlock.java, CeilingHangingSignBlock, WallHangingSignBlock, BannerBlock, WallBannerBlock,
+SkullBlock, AbstractSkullBlock, WallSkullBlock, BaseRailBlock, world/item/HangingSignItem.java, world/item/StandingAndWallBlockItem.java, world/item/context/BlockPlaceContext.java,
 util/SegmentedAnglePrecision.java (fromDegrees: Math.round(deg * 16 / 360) & 15).
 """
 from __future__ import annotations
@@ -35,13 +44,15 @@ import numpy as np
 from emulator.world import block_shapes, command_blocks, signs
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
-from emulator.world.placed_states import (CLOCKWISE, HORIZONTAL, OFFSETS, OPPOSITE, horizontal_direction,
+from emulator.world.placed_states import (AXIS, CLOCKWISE, HORIZONTAL, OFFSETS, OPPOSITE, horizontal_direction,
                                           ordered_by_nearest)
 
 _TORCHES = {"minecraft:torch": "minecraft:wall_torch", "minecraft:soul_torch": "minecraft:soul_wall_torch",
             "minecraft:redstone_torch": "minecraft:redstone_wall_torch",
             "minecraft:copper_torch": "minecraft:copper_wall_torch"}
 _CHESTS = ("minecraft:chest", "minecraft:trapped_chest")
+_SKULLS = ("_skull", "_head")
+RAILS = ("minecraft:rail", "minecraft:powered_rail", "minecraft:detector_rail", "minecraft:activator_rail")
 
 
 @dataclass
@@ -93,8 +104,17 @@ def state_for_placement(ctx: PlaceContext):
         return block_id, _chest(ctx)
     if block_id in _TORCHES:
         return _standing_or_wall(ctx, block_id, _TORCHES[block_id], _torch_survives)
-    if block_id.endswith("_sign") and not block_id.endswith("_hanging_sign"):
+    if block_id.endswith("_hanging_sign"):
+        return _hanging_sign(ctx, block_id, block_id.removesuffix("_hanging_sign") + "_wall_hanging_sign")
+    if block_id.endswith("_sign"):
         return _standing_or_wall(ctx, block_id, block_id.removesuffix("_sign") + "_wall_sign", _sign_survives)
+    if block_id.endswith("_banner"):
+        return _standing_or_wall(ctx, block_id, block_id.removesuffix("_banner") + "_wall_banner", _sign_survives)
+    if block_id.endswith(_SKULLS) and block_id != "minecraft:piston_head":
+        kind = "_skull" if block_id.endswith("_skull") else "_head"
+        return _standing_or_wall(ctx, block_id, block_id.removesuffix(kind) + "_wall" + kind, _skull_survives)
+    if block_id in RAILS:
+        return _rail(ctx, block_id)
     return NotImplemented
 
 
@@ -227,7 +247,16 @@ def _standing_or_wall(ctx: PlaceContext, standing: str, wall: str, survives):
 def _standing_properties(ctx: PlaceContext, block_id: str) -> dict:
     if block_id.endswith("_sign"):  # StandingSignBlock: RotationSegment.convertToSegment(yRot + 180)
         return {"rotation": str(_segment(ctx.player.yaw + 180.0)), "waterlogged": "true" if ctx.water else "false"}
+    if block_id.endswith("_banner"):  # BannerBlock: the same turn, no water
+        return {"rotation": str(_segment(ctx.player.yaw + 180.0))}
+    if block_id.endswith(_SKULLS):  # SkullBlock: convertToSegment(yRot), powered by a neighbour's signal
+        return {"rotation": str(_segment(ctx.player.yaw)), "powered": _powered(ctx)}
     return {"lit": "true"} if block_id == "minecraft:redstone_torch" else {}
+
+
+def _powered(ctx: PlaceContext) -> str:
+    """AbstractSkullBlock.getStateForPlacement: Level.hasNeighborSignal."""
+    return "true" if command_blocks.has_neighbour_signal(ctx.state, ctx.target) else "false"
 
 
 def _segment(degrees) -> int:
@@ -247,6 +276,8 @@ def _wall_state(ctx: PlaceContext, wall: str, survives) -> dict | None:
             properties["waterlogged"] = "true" if ctx.water else "false"
         elif wall == "minecraft:redstone_wall_torch":
             properties["lit"] = "true"
+        elif wall.endswith(_SKULLS):
+            properties["powered"] = _powered(ctx)
         if survives(ctx, wall, properties):
             return properties
     return None
@@ -269,6 +300,92 @@ def _torch_survives(ctx: PlaceContext, block_id: str, properties: dict) -> bool:
 
 
 def _sign_survives(ctx: PlaceContext, block_id: str, properties: dict) -> bool:
-    """StandingSignBlock / WallSignBlock.canSurvive: a solid block below or behind."""
+    """StandingSignBlock / WallSignBlock and BannerBlock / WallBannerBlock.canSurvive: a solid block
+    below or behind."""
     below_or_behind = OPPOSITE[properties["facing"]] if "facing" in properties else "down"
     return block_shapes.is_solid(ctx.block(ctx.at(ctx.target, below_or_behind)))
+
+
+def _skull_survives(ctx: PlaceContext, block_id: str, properties: dict) -> bool:
+    """A standing skull survives anywhere; WallSkullBlock.getStateForPlacement takes the first
+    horizontal direction whose block is not replaceable."""
+    if "facing" not in properties:
+        return True
+    return ctx.block(ctx.at(ctx.target, OPPOSITE[properties["facing"]])).id not in block_shapes.REPLACEABLE
+
+
+# ---------------------------------------------------------------------- hanging signs
+def _hanging_sign(ctx: PlaceContext, ceiling: str, wall: str):
+    """HangingSignItem (StandingAndWallBlockItem attached upwards): the nearest looking direction
+    up gives the ceiling sign, a horizontal one the wall sign, whichever can be placed first."""
+    wall_state = _wall_hanging_state(ctx, wall)
+    for direction in nearest_looking_directions(ctx):
+        if direction == "down":
+            continue
+        if direction == "up":
+            properties = _ceiling_hanging_state(ctx)
+            if properties is not None:
+                return ceiling, properties
+        elif wall_state is not None:
+            return wall, wall_state
+    return None
+
+
+def _ceiling_hanging_state(ctx: PlaceContext) -> dict | None:
+    """CeilingHangingSignBlock.getStateForPlacement and canSurvive (a sturdy block above): attached
+    (turned in 16 steps opposite the player) unless the face above is full and the player stands
+    upright, else square to the player's direction."""
+    above = ctx.block(ctx.at(ctx.target, "up"))
+    if above.id.endswith("_hanging_sign"):
+        raise Unmodelled(f"placing a hanging sign under {above.id}")
+    if not block_shapes.is_face_sturdy(above):
+        return None
+    attached = ctx.player.sneaking
+    rotation = _segment(ctx.player.yaw + 180.0) if attached else \
+        _SEGMENT_OF[OPPOSITE[horizontal_direction(ctx.player)]]
+    return {"attached": "true" if attached else "false", "rotation": str(rotation),
+            "waterlogged": "true" if ctx.water else "false"}
+
+
+_SEGMENT_OF = {"south": 0, "west": 4, "north": 8, "east": 12}  # RotationSegment.convertToSegment(Direction)
+
+
+def _wall_hanging_state(ctx: PlaceContext, wall: str) -> dict | None:
+    """WallHangingSignBlock.getStateForPlacement: the first horizontal direction off the clicked
+    face's axis, facing away from it, held by a sturdy block (or a wall hanging sign along the same
+    axis) on either side (canPlace, canAttachTo)."""
+    for direction in nearest_looking_directions(ctx):
+        if direction in ("up", "down") or AXIS[direction] == AXIS[ctx.face]:
+            continue
+        facing = OPPOSITE[direction]
+        sides = (CLOCKWISE[facing], _COUNTER_CLOCKWISE[facing])
+        if any(_holds_hanging_sign(ctx, ctx.block(ctx.at(ctx.target, side)), facing) for side in sides):
+            return {"facing": facing, "waterlogged": "true" if ctx.water else "false"}
+    return None
+
+
+def _holds_hanging_sign(ctx: PlaceContext, block, facing: str) -> bool:
+    if block.id.endswith("_wall_hanging_sign"):
+        return AXIS[dict(block.properties).get("facing", "north")] == AXIS[facing]
+    return block_shapes.is_face_sturdy(block)
+
+
+# ---------------------------------------------------------------------- rails
+def _rail(ctx: PlaceContext, block_id: str):
+    """BaseRailBlock.getStateForPlacement and canSurvive (a sturdy block below): straight along the
+    player's direction. A rail beside, above or below one of its ends (RailState joins them) and a
+    powered, detector or activator rail next to a signal are not modelled."""
+    if not block_shapes.is_face_sturdy(ctx.block(ctx.at(ctx.target, "down"))):
+        return None
+    for direction in HORIZONTAL:
+        for up in (-1, 0, 1):
+            if ctx.block(ctx.at(ctx.target, direction, up)).id in RAILS:
+                raise Unmodelled(f"placing {block_id} beside a rail (RailState connects them)")
+    facing = horizontal_direction(ctx.player)
+    properties = {"shape": "east_west" if facing in ("east", "west") else "north_south",
+                  "waterlogged": "true" if ctx.water else "false"}
+    if block_id != "minecraft:rail":
+        if command_blocks.has_neighbour_signal(ctx.state, ctx.target):
+            raise Unmodelled(f"placing {block_id} next to a redstone signal (its power along the line)")
+        properties["powered"] = "false"
+    return block_id, properties
