@@ -234,7 +234,7 @@ def test_placing_replaces_grass_and_refuses_a_full_spot_or_an_entity_in_the_way(
 
 
 @pytest.mark.parametrize("item, reason", [
-    ("rail", "placing minecraft:rail (its state follows how it is placed"),
+    ("oak_fence", "placing minecraft:oak_fence (its state follows how it is placed"),
     ("pig_spawn_egg", "using minecraft:pig_spawn_egg on minecraft:dirt"),
 ])
 def test_placements_the_emulator_cannot_model_are_inconclusive(tmp_path, item, reason):
