@@ -29,13 +29,12 @@ import numpy as np
 
 from emulator.world import mth
 from emulator.world.errors import Unmodelled
-from emulator.world.text import plain_value
+from emulator.world.text import RESOLVED, needs_resolving, plain_value
 from mcfunction_parser.nbt import Byte, Compound, List, String
 
 SNBT_TEXT_VERSION = (1, 21, 5)  # messages are components as NBT from 1.21.5, JSON strings before
 _COLOURS = frozenset("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown green "
                      "red black".split())
-_RESOLVED = ("score", "selector", "nbt")
 # SignApplicator items (DyeItem, GlowInkSacItem, InkSacItem, HoneycombItem)
 APPLICATORS = frozenset({"minecraft:glow_ink_sac", "minecraft:ink_sac", "minecraft:honeycomb"}) | frozenset(
     f"minecraft:{c}_dye" for c in _COLOURS)
@@ -106,7 +105,7 @@ def _lines(version, messages) -> list | None:
         component = _component(version, message)
         if component is _INVALID:
             return None
-        if _needs_resolving(component):
+        if needs_resolving(component):
             raise Unmodelled("a sign line with a score, selector or nbt component (resolved when the sign loads)")
         lines.append(_saved_line(version, message, component))
     return lines
@@ -125,14 +124,6 @@ def _component(version, tag):
         return json.loads(str(tag))
     except ValueError:
         return _INVALID
-
-
-def _needs_resolving(component) -> bool:
-    if isinstance(component, list):
-        return any(_needs_resolving(c) for c in component)
-    if isinstance(component, dict):
-        return any(k in component for k in _RESOLVED) or _needs_resolving(component.get("extra", []))
-    return False
 
 
 def _saved_line(version, written, component):
@@ -204,6 +195,6 @@ def _editable(version, side) -> bool:
         return True
     for message in side.get("messages", List()):
         component = _component(version, message)
-        if isinstance(component, dict) and any(k in component for k in ("translate", "keybind") + _RESOLVED):
+        if isinstance(component, dict) and any(k in component for k in ("translate", "keybind") + RESOLVED):
             return False
     return True

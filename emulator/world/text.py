@@ -90,6 +90,18 @@ def read_component(text: str):
     return plain_value(value) if not text[reader.pos:].strip() else None
 
 
+RESOLVED = ("score", "selector", "nbt")  # the contents ComponentUtils.updateForEntity resolves
+
+
+def needs_resolving(component) -> bool:
+    """Whether a component (plain values) holds a score, selector or nbt part, itself or in its extras."""
+    if isinstance(component, list):
+        return any(needs_resolving(c) for c in component)
+    if isinstance(component, dict):
+        return any(k in component for k in RESOLVED) or needs_resolving(component.get("extra", []))
+    return False
+
+
 def plain_value(tag):
     """An NBT tag as the plain Python value a JSON component would have."""
     if isinstance(tag, Compound):

@@ -26,7 +26,7 @@ from emulator.world.state import WorldState
 from emulator.world import nbt_ops
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import CommandFailure
-from emulator.world.text import plain_value, read_component, tag_as_string
+from emulator.world.text import RESOLVED, needs_resolving, plain_value, read_component, tag_as_string
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
@@ -35,8 +35,7 @@ from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.selectors import selector
 
 _MESSAGE_SELECTOR = re.compile(r"@[spaern]")
-_RESOLVED = ("score", "selector", "nbt")
-_CONTENT_KEYS = _RESOLVED + ("separator", "storage", "entity", "block", "interpret", "source")
+_CONTENT_KEYS = RESOLVED + ("separator", "storage", "entity", "block", "interpret", "source")
 Select = Callable[[str], list[Entity]]  # a selector or name as written -> the entities it finds
 
 
@@ -90,18 +89,10 @@ def tellraw_command(state: WorldState, cmd: ast.Tellraw, receivers: list[Entity]
 
 def resolved_text(text: str, state: WorldState, select: Select, receiver: Entity) -> str:
     component = read_component(text)
-    if component is None or not _needs_resolving(component):
+    if component is None or not needs_resolving(component):
         return text
     resolved = _resolve(component, _Resolver(state, select, receiver))
     return json.dumps(resolved, ensure_ascii=False, separators=(",", ":"))
-
-
-def _needs_resolving(component) -> bool:
-    if isinstance(component, list):
-        return any(_needs_resolving(c) for c in component)
-    if isinstance(component, dict):
-        return any(k in component for k in _RESOLVED) or _needs_resolving(component.get("extra", []))
-    return False
 
 
 def _resolve(component, resolver: "_Resolver"):
