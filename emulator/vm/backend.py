@@ -222,13 +222,13 @@ class NumbaBackend:
         host_ops_at = self.host_ops_at
         cut = False
         while True:
-            machine = self._machine()
+            address = self._machine()
             if self.leaves_used:
                 leaves.read(storage)
-                status = self._resume(machine)
+                status = self._resume(address, self.machine_type)
                 leaves.write_back(storage)
             else:
-                status = self._resume(machine)
+                status = self._resume(address, self.machine_type)
             if status == ST_HOST and not rv[R_BATCH] and not rv[R_NLOG]:  # the common request, first
                 pc = rv[R_PC]
                 op = host_ops_at.get(pc) or self._host_op(pc)
@@ -289,8 +289,9 @@ class NumbaBackend:
                         return True
                     cut = self._abandon_root()
 
-    def _machine(self) -> vm.Machine:
-        """The machine of the VM's current arrays: the last one while they are the same. Whatever
+    def _machine(self) -> int:
+        """The address of the machine of the VM's current arrays (``run`` takes it by that; the
+        backend keeps the machine): the last one while they are the same. Whatever
         replaces one of the backend's arrays (or compiles: the program's, selectors' and storage
         leaves' arrays) sets ``stale``; the world's arrays are compared here, since commands and the
         API may grow the scoreboard or the entity table, or change the living entities (``eorder`` is
@@ -299,7 +300,7 @@ class NumbaBackend:
         world = self._world
         if (not self.stale and world[0] is sb.values and world[1] is table.ints and world[2] is table.tags
                 and world[3] == table.count):
-            return self.machine
+            return self.address
         code, starts, floats = self.program.arrays()
         self._fit_counters(code.shape[0], starts.shape[0])
         found = max(table.count, sb.present.shape[0])  # entities, or holders (`*`)
@@ -312,11 +313,13 @@ class NumbaBackend:
             table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack, self.coll,
             self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random, sb.kept)
         self.loop = variants.loop_for(self.program.opcodes)
+        self.address = vm.machine_address(self.machine)
+        self.machine_type = numba.typeof(self.machine)  # a type passed to a dispatcher is typed as TypeRef
         self._resume = _entry_point(self.loop.run, self.machine)
         self._world = (sb.values, table.ints, table.tags, table.count)
         self.leaves_used = bool(self.leaves.leaves)  # the program names numbers of storage
         self.stale = False
-        return self.machine
+        return self.address
 
     def _batch_root(self, ended: bool) -> None:
         """In a batch, before Python serves the VM: the clocks read the tick of the root running (or
@@ -698,11 +701,12 @@ def _host_op_index(row: list[int]) -> int:
 
 
 def _entry_point(run, machine: vm.Machine):
-    """``run``'s compiled entry point for ``machine``'s type (compiling it if new): called directly,
-    it skips the dispatcher's type checks. An instrumented ``run`` (a plain function) is itself."""
+    """``run``'s compiled entry point for ``machine``'s type (compiling it if new): called directly
+    with the machine's address and type (which it does not read), it skips the dispatcher's type
+    checks. An instrumented ``run`` (a plain function calling the dispatcher) is itself."""
     if not hasattr(run, "overloads"):
         return run
-    signature = (numba.typeof(machine),)
+    signature = (numba.types.intp, numba.typeof(numba.typeof(machine)))  # the type's type: TypeRef
     if signature not in run.overloads:
         run.compile(signature)
     return run.overloads[signature].entry_point

@@ -100,7 +100,11 @@ class Compiler:
     def command(self, cmd: Command) -> None:
         if isinstance(cmd, Execute):
             stages, final = flatten_execute(cmd)
-            self.chain(stages, final, returning=False)
+            if (len(stages) == 1 and isinstance(stages[0], IfScoreMatches) and _vm_condition(stages[0])
+                    and self.one_instruction(final)):
+                self.score_test_run(stages[0], final)
+            else:
+                self.chain(stages, final, returning=False)
         elif isinstance(cmd, Return):
             self.return_(cmd, [], in_chain=False)
         elif isinstance(cmd, FunctionCall):
@@ -146,6 +150,27 @@ class Compiler:
             self.host(vm.OP_LOG, cmd, sel)  # the host writes the line
         else:
             self.host(vm.OP_HOST, cmd)
+
+    def one_instruction(self, cmd: Command | None) -> bool:
+        """``cmd`` compiles to one instruction that leaves the context as it found it: a score
+        command or operation on names (or ``@s``), a call of a plain function."""
+        if isinstance(cmd, ScoreSet):
+            return _named(cmd.targets)
+        if isinstance(cmd, ScoreOperation):
+            return _named(cmd.targets) and _named(cmd.sources)
+        return (isinstance(cmd, FunctionCall) and not cmd.is_tag and cmd.arguments is None and cmd.with_source is None
+                and cmd.function in self.functions and not self.functions[cmd.function].is_macro)
+
+    def score_test_run(self, st: IfScoreMatches, final: Command) -> None:
+        """``execute if|unless score H O matches R run CMD``, CMD one instruction: IFRUN, then CMD
+        (the chain's CMD, IFMATCH and ENDCMD in one: the hot shape of scoreboard code)."""
+        lo = INT_MIN if st.range.lo is None else max(INT_MIN, st.range.lo)
+        hi = INT_MAX if st.range.hi is None else min(INT_MAX, st.range.hi)
+        at = self.emit(vm.OP_IFRUN, self.holder(st.target), self.objective(st.objective), lo, hi, 0, int(st.negated))
+        self.command(final)
+        if self.program.next_pc != at + 2:
+            raise AssertionError(f"IFRUN's command took {self.program.next_pc - at - 1} instructions")
+        self.program.patch(at, 5, self.program.next_pc)
 
     def host(self, op: int, node: Command | Subcommand, *operands: int, operand: int = 1) -> None:
         """Emit ``op`` naming ``node`` as a host op (its index in operand slot ``operand``, among ``operands``)."""

@@ -185,7 +185,11 @@ OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a
 # TYPE S`: fails without an executor) or a STORELEAF
 OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
 # host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there goes to the host
-OP_RESUME = 64  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
+OP_IFRUN = 64  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
+# O matches LO..HI run CMD` where CMD is one instruction (a score command on names, a function call) and the chain has
+# no other stage: CMD's entry check and the condition stage in one (charged as the stage), then CMD, or the pc after
+# it; no ENDCMD follows
+OP_RESUME = 65  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
 # the registers the command that earned it left
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
@@ -314,7 +318,7 @@ def _borrowed(typingctx, array):
 
 @njit(cache=True, inline="always")
 def _wrap(x):
-    return ((x + 2147483648) & 0xFFFFFFFF) - 2147483648
+    return np.int64(np.int32(x))  # truncated, then sign-extended: Java's int
 
 
 @njit(cache=True, inline="always")
@@ -791,7 +795,8 @@ def _store_field(efloats, e, column, v):
 # Every array ``run`` reads, in one structure: numba checks and unboxes each argument of a call, so
 # 32 arrays cost about 1.5 us per resume, one structure about 0.1 (through its compiled entry point).
 # The structure holds the arrays themselves: Python keeps writing them in place, and makes a new
-# machine when it replaces one (NumbaBackend._machine).
+# machine when it replaces one (NumbaBackend._machine). ``run`` takes it by its address: unboxing the
+# structure looks its ``_meminfo`` up by name on each call, an int is read at once.
 MACHINE_FIELDS = ("code", "func_start", "floats", "regs", "frames", "values", "present", "locked", "alive_obj",
                   "writable", "trig", "counts", "totals", "active", "ovf", "cints", "cfloats", "sels", "sfloats",
                   "tests", "eints", "efloats", "etags", "eorder", "selbuf", "logbuf", "fstack", "coll", "as_cache",
@@ -821,9 +826,42 @@ def new_machine(code, func_start, floats, regs, frames, values, present, locked,
                    logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom, kept)
 
 
+@intrinsic
+def _machine_address(typingctx, machine):
+    """The address of ``machine``'s meminfo, by which :func:`run` takes it."""
+    def codegen(context, builder, signature, args):
+        ref = cgutils.create_struct_proxy(signature.args[0])(context, builder, value=args[0])
+        return builder.ptrtoint(ref.meminfo, context.get_value_type(types.intp))
+    return types.intp(machine), codegen
+
+
+@njit(cache=True)
+def machine_address(machine):
+    """The address :func:`run` takes ``machine`` by (valid while its proxy lives)."""
+    return _machine_address(machine)
+
+
+@intrinsic
+def _machine_at(typingctx, address, machine_type):
+    """The machine of type ``machine_type`` at ``address`` (:func:`machine_address`). Its proxy,
+    which Python keeps while ``run`` runs, holds it; the reference made here is counted, and ``run``
+    lets it go when it returns."""
+    instance = machine_type.instance_type
+
+    def codegen(context, builder, signature, args):
+        ref = cgutils.create_struct_proxy(instance)(context, builder)
+        ref.meminfo = builder.inttoptr(args[0], ref.meminfo.type)
+        value = ref._getvalue()
+        context.nrt.incref(builder, instance, value)
+        return value
+    return instance(address, machine_type), codegen
+
+
 @njit(cache=True, error_model="numpy")
-def run(m):
-    """Run machine ``m`` from ``regs[R_PC]`` until done or until Python is needed; returns an ``ST_*`` status.
+def run(address, machine_type):
+    """Run the machine at ``address`` (:func:`machine_address`; ``machine_type``: its type, known
+    when ``run`` is compiled, so the call reads no attribute of the proxy) from ``regs[R_PC]`` until
+    done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
     outermost activation only (``active[f]`` counts f's frames on the stack).
@@ -836,6 +874,7 @@ def run(m):
     root ``i``'s cost. ST_DONE comes back once the batch is done or when a root ends and Python is
     needed before the next one (:meth:`emulator.vm.backend.NumbaBackend.run_ticks`).
     """
+    m = _machine_at(address, machine_type)
     code = _borrowed(m.code)
     func_start = _borrowed(m.func_start)
     floats = _borrowed(m.floats)
@@ -870,6 +909,11 @@ def run(m):
     lvalues = _borrowed(m.lvalues)
     erandom = _borrowed(m.erandom)
     kept = _borrowed(m.kept)
+    # the scores as rows of one flat array each, indexed h * ncols + o (values and present have one
+    # shape: the scoreboard grows them together): one index for both, computed once per score
+    ncols = np.uint64(values.shape[1])
+    vflat = values.reshape(values.size)
+    pflat = present.reshape(present.size)
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
     depth = regs[R_DEPTH]
@@ -906,12 +950,8 @@ def run(m):
             o = code[upc, 2]
             o2 = code[upc, 4]
             h = code[upc, 1]
-            if h == HOLDER_SELF:
-                h = cints[ctx, CI_HOLDER]
             h2 = code[upc, 3]
-            if h2 == HOLDER_SELF:
-                h2 = cints[ctx, CI_HOLDER]
-            if h >= 0 and h2 >= 0:  # one target, one source (names or @s): the common case, kept lean
+            if h >= 0 and h2 >= 0:  # one target, one source, both names: the common case, kept lean
                 uh, uo, uh2, uo2 = np.uint64(h), np.uint64(o), np.uint64(h2), np.uint64(o2)
                 if sanitize and novf >= ovf.shape[0]:
                     status = ST_FLUSH
@@ -919,11 +959,11 @@ def run(m):
                 quota -= 1
                 if counting:
                     counts[np.uint64(pc)] += 1
-                has = 1
-                ok = 0
-                val = 0
                 pc += 1
                 if writable[uo] == 0 or alive_obj[uo2] == 0:  # o unknown or read-only, or o2 unknown
+                    has = 1
+                    ok = 0
+                    val = 0
                     if alive_obj[o] and writable[uo] == 0:  # ObjectiveArgument.getWritableObjective: read-only
                         err = ERR_READ_ONLY
                         errarg = o
@@ -933,25 +973,31 @@ def run(m):
                     errarg = o if alive_obj[o] == 0 else o2
                     status = ST_ERROR
                     break
-                if present[uh, uo] == 0:  # get-or-create: the target first, then the source
-                    values[uh, uo] = 0
-                    present[uh, uo] = 1
-                if present[uh2, uo2] == 0:
-                    values[uh2, uo2] = 0
-                    present[uh2, uo2] = 1
-                a = np.int64(values[uh, uo])
-                b = np.int64(values[uh2, uo2])
+                i = uh * ncols + uo
+                i2 = uh2 * ncols + uo2
+                if pflat[i] == 0:  # get-or-create: the target first, then the source
+                    vflat[i] = 0
+                    pflat[i] = 1
+                if pflat[i2] == 0:
+                    vflat[i2] = 0
+                    pflat[i2] = 1
+                a = np.int64(vflat[i])
+                b = np.int64(vflat[i2])
                 k = op - FIRST_OPERATION
                 if b == 0 and (k == OPK_DIV or k == OPK_MOD):
+                    has = 1
+                    ok = 0
+                    val = 0
                     err = ERR_DIV_ZERO
                     errarg = 0
                     status = ST_ERROR
                     break
                 r = _operate(k, a, b)
                 if k == OPK_SWAP:
-                    values[uh2, uo2] = a
+                    vflat[i2] = a
                 nv = _wrap(r)
-                values[uh, uo] = nv
+                vflat[i] = nv
+                has = 1
                 ok = 1
                 val = nv
                 if sanitize and _overflowed(r):
@@ -960,6 +1006,10 @@ def run(m):
                         status = ST_FLUSH
                         break
                 continue
+            if h == HOLDER_SELF:  # @s: through the selector path, as one holder
+                h = cints[ctx, CI_HOLDER]
+            if h2 == HOLDER_SELF:
+                h2 = cints[ctx, CI_HOLDER]
             if h >= 0:
                 selbuf[0] = h
                 nt = 1
@@ -1046,19 +1096,59 @@ def run(m):
                 status = ST_CUT
                 break
             h = code[upc, 1]
+            o = code[upc, 2]
             if h == HOLDER_SELF:
                 h = cints[ctx, CI_HOLDER]
-            if h >= 0:  # a name, or @s run by an entity
-                n = 1
-            else:
-                n = regs[R_NSEL] if h == HOLDER_SELBUF else 0
+            d = np.int64(code[upc, 3])
+            if h >= 0:  # one holder (a name, or @s run by an entity): the common case, kept lean
+                uo = np.uint64(o)
+                if sanitize and novf >= ovf.shape[0]:
+                    status = ST_FLUSH
+                    break
+                quota -= 1
+                if counting:
+                    counts[np.uint64(pc)] += 1
+                pc += 1
+                if writable[uo] == 0:
+                    has = 1
+                    ok = 0
+                    val = 0
+                    if alive_obj[uo]:  # ObjectiveArgument.getWritableObjective: read-only
+                        err = ERR_READ_ONLY
+                        errarg = o
+                        status = ST_ERROR
+                        break
+                    err = ERR_UNKNOWN_OBJECTIVE
+                    errarg = o
+                    status = ST_ERROR
+                    break
+                i = np.uint64(h) * ncols + uo
+                old = np.int64(0)
+                if op == OP_SET:
+                    exact = d
+                else:
+                    if pflat[i]:
+                        old = np.int64(vflat[i])
+                    exact = old + d if op == OP_ADD else old - d
+                nv = _wrap(exact)
+                vflat[i] = nv
+                pflat[i] = 1
+                has = 1
+                ok = 1
+                val = nv
+                if sanitize and _overflowed(exact):
+                    novf = _report(ovf, novf, ipc, SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD, old, d, exact)
+                    if novf >= ovf.shape[0]:
+                        status = ST_FLUSH
+                        break
+                continue
+            n = regs[R_NSEL] if h == HOLDER_SELBUF else 0
             if sanitize and novf + n > ovf.shape[0]:
                 status = ST_FLUSH
                 break
             quota -= 1
             if counting:
                 counts[np.uint64(pc)] += 1
-            o = code[upc, 2]
             has = 1
             ok = 0
             val = 0
@@ -1075,18 +1165,7 @@ def run(m):
                 errarg = o
                 status = ST_ERROR
                 break
-            d = np.int64(code[upc, 3])
             kind = SAN_ADD_CMD if op == OP_ADD else SAN_REMOVE_CMD
-            if h >= 0:  # one holder: the common case, kept lean
-                old, exact = _set_score(op, values, present, np.uint64(h), np.uint64(o), d)
-                ok = 1
-                val = _wrap(exact)
-                if sanitize and _overflowed(exact):
-                    novf = _report(ovf, novf, ipc, kind, old, d, exact)
-                    if novf >= ovf.shape[0]:
-                        status = ST_FLUSH
-                        break
-                continue
             total = np.int64(0)
             for i in range(n):
                 old, exact = _set_score(op, values, present, selbuf[i], o, d)
@@ -1098,6 +1177,45 @@ def run(m):
             if sanitize and novf >= ovf.shape[0]:
                 status = ST_FLUSH
                 break
+        elif op == OP_IFRUN:  # `execute if|unless score H O matches LO..HI run CMD`, CMD one instruction: run it or skip it
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1  # the condition stage's
+            if counting:
+                counts[np.uint64(pc)] += 1
+            alive = 1
+            has = 0
+            skip = code[upc, 5]
+            abort = skip
+            h = code[upc, 1]
+            o = code[upc, 2]
+            if alive_obj[np.uint64(o)] == 0:  # the stage's error drops the context: CMD does not run
+                has = 1
+                ok = 0
+                val = 0
+                pc = skip
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                status = ST_ERROR
+                break
+            if h == HOLDER_SELF:
+                h = cints[ctx, CI_HOLDER]
+            if h < 0:  # @s run by the server: the context is dropped, `unless` too
+                pc = skip
+                continue
+            i = np.uint64(h) * ncols + np.uint64(o)
+            passed = pflat[i] != 0 and code[upc, 3] <= vflat[i] <= code[upc, 4]
+            if passed == (code[upc, 6] != 0):
+                pc = skip
+                continue
+            if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
+                pc = skip
+                err = ERR_FORK_LIMIT
+                errarg = forklimit
+                status = ST_ERROR
+                break
+            pc += 1
         elif op == OP_CMD:
             if quota <= 0:
                 status = ST_CUT

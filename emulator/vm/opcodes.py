@@ -185,6 +185,11 @@ _ROWS = [
                                          "(TYPE)(result * SCALE); no number there goes to the host"),
     *_family("operation", [(f"OPER{symbol}", "hoho", ENTRY, f"a h1, b o1, c h2, d o2. `{symbol}`")
                            for _, symbol in OPERATIONS]),
+    *_single("IFRUN", "hoiipb", STAGE, "a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. "
+                                       "`execute if|unless score H O matches LO..HI run CMD` where CMD is one "
+                                       "instruction (a score command on names, a function call) and the chain has no "
+                                       "other stage: CMD's entry check and the condition stage in one (charged as the "
+                                       "stage), then CMD, or the pc after it; no ENDCMD follows"),
     *_single("RESUME", "", FREE, "an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, "
                                  "Python restores the registers the command that earned it left"),
 ]

@@ -18,7 +18,8 @@ def test_disasm_shows_source_and_decoded_operands(tmp_path):
     assert lines[0].split("|")[0].strip() == "2"
     assert "execute if score #a o matches 1.." in lines[0]
     ops = [line.split()[2] for line in lines if line.startswith("      |")]
-    assert ops == ["CMD", "IFMATCH", "OPER*=", "ENDCMD", "CALL", "FEND"]
+    assert ops == ["IFRUN", "OPER*=", "CALL", "FEND"]  # a condition and one instruction: fused
+    assert any("IFRUN #a o 1 2147483647 ->6 0" in line for line in lines)
     assert any("OPER*= #a o #b o" in line for line in lines)
     assert any("CALL t:g" in line for line in lines)
 
