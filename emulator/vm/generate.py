@@ -53,6 +53,8 @@ MACROS = {
               "            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64({2}))",
     # {0} = whether holder {1} is one `*` names (Scoreboard.getTrackedPlayers: a score, or kept)
     "TRACKED": "{0} = kept[{1}] != 0\nfor o_ in range(present.shape[1]):\n    {0} = {0} or present[{1}, o_] != 0",
+    # the objective {0} cannot be written: read-only (ObjectiveArgument.getWritableObjective) or unknown
+    "UNWRITABLE": "if alive_obj[{0}]:\n    FAIL(ERR_READ_ONLY, {0})\nFAIL(ERR_UNKNOWN_OBJECTIVE, {0})",
     # BuildContexts: a stage reaching the fork limit fails the command
     "FORK_LIMIT": "alive = 0\npc = abort\nFAIL(ERR_FORK_LIMIT, forklimit)",
 }

@@ -42,8 +42,9 @@ shared helpers in ``run`` take scalars or run straight-line code, while the sele
 at no cost to the writable case), and the dispatch chain (the template's ``case FAMILY:`` lines,
 one branch per family of the opcode table) tests the hottest opcodes first (operations,
 set/add/remove, a chain's CMD/IF*/ENDCMD, calls).
-The hot paths index with unsigned integers where the index cannot be negative (``upc``: the pc,
-the holders and objectives of the scoreboard commands' one-holder paths, the counters): numba
+The hot paths index with unsigned integers where the index cannot be negative (the instruction's
+row in the flat code ``cflat``, the holders and objectives of the scoreboard commands' one-holder
+paths, the counters): numba
 wraps a negative signed index (a comparison and a select per dimension, its size kept live), and
 without those the scoreboard loop ran 1.4x faster (in-process A/B, CPU time).
 ``run`` uses numba's ``numpy`` error model: the divisions check their divisor themselves, and
@@ -912,6 +913,7 @@ def run(address, machine_type):
     # the scores as rows of one flat array each, indexed h * ncols + o (values and present have one
     # shape: the scoreboard grows them together): one index for both, computed once per score
     ncols = np.uint64(values.shape[1])
+    cflat = code.reshape(code.size)  # rows of WIDTH: an instruction's operands at a constant offset
     vflat = values.reshape(values.size)
     pflat = present.reshape(present.size)
     pc = regs[R_PC]
@@ -938,8 +940,8 @@ def run(address, machine_type):
     ipc = pc
     while True:
         ipc = pc
-        upc = np.uint64(pc)  # pc as an index numba need not wrap (see the module's docs)
-        op = code[upc, 0]
+        row = np.uint64(pc) * np.uint64(WIDTH)  # the instruction in the flat code, an index numba need not wrap
+        op = cflat[row]
         if FIRST_OPERATION <= op <= LAST_OPERATION:  # scoreboard players operation, one opcode per operation
             if alive == 0:
                 pc += 1
@@ -947,10 +949,10 @@ def run(address, machine_type):
             if quota <= 0:
                 status = ST_CUT
                 break
-            o = code[upc, 2]
-            o2 = code[upc, 4]
-            h = code[upc, 1]
-            h2 = code[upc, 3]
+            o = cflat[row + np.uint64(2)]
+            o2 = cflat[row + np.uint64(4)]
+            h = cflat[row + np.uint64(1)]
+            h2 = cflat[row + np.uint64(3)]
             if h >= 0 and h2 >= 0:  # one target, one source, both names: the common case, kept lean
                 uh, uo, uh2, uo2 = np.uint64(h), np.uint64(o), np.uint64(h2), np.uint64(o2)
                 if sanitize and novf >= ovf.shape[0]:
@@ -1095,11 +1097,11 @@ def run(address, machine_type):
             if quota <= 0:
                 status = ST_CUT
                 break
-            h = code[upc, 1]
-            o = code[upc, 2]
+            h = cflat[row + np.uint64(1)]
+            o = cflat[row + np.uint64(2)]
             if h == HOLDER_SELF:
                 h = cints[ctx, CI_HOLDER]
-            d = np.int64(code[upc, 3])
+            d = np.int64(cflat[row + np.uint64(3)])
             if h >= 0:  # one holder (a name, or @s run by an entity): the common case, kept lean
                 uo = np.uint64(o)
                 if sanitize and novf >= ovf.shape[0]:
@@ -1113,7 +1115,7 @@ def run(address, machine_type):
                     has = 1
                     ok = 0
                     val = 0
-                    if alive_obj[uo]:  # ObjectiveArgument.getWritableObjective: read-only
+                    if alive_obj[o]:
                         err = ERR_READ_ONLY
                         errarg = o
                         status = ST_ERROR
@@ -1156,7 +1158,7 @@ def run(address, machine_type):
             if n == 0:  # "No entity was found"
                 continue
             if writable[o] == 0:
-                if alive_obj[o]:  # ObjectiveArgument.getWritableObjective: read-only
+                if alive_obj[o]:
                     err = ERR_READ_ONLY
                     errarg = o
                     status = ST_ERROR
@@ -1186,10 +1188,10 @@ def run(address, machine_type):
                 counts[np.uint64(pc)] += 1
             alive = 1
             has = 0
-            skip = code[upc, 5]
+            skip = cflat[row + np.uint64(5)]
             abort = skip
-            h = code[upc, 1]
-            o = code[upc, 2]
+            h = cflat[row + np.uint64(1)]
+            o = cflat[row + np.uint64(2)]
             if alive_obj[np.uint64(o)] == 0:  # the stage's error drops the context: CMD does not run
                 has = 1
                 ok = 0
@@ -1205,8 +1207,8 @@ def run(address, machine_type):
                 pc = skip
                 continue
             i = np.uint64(h) * ncols + np.uint64(o)
-            passed = pflat[i] != 0 and code[upc, 3] <= vflat[i] <= code[upc, 4]
-            if passed == (code[upc, 6] != 0):
+            passed = pflat[i] != 0 and cflat[row + np.uint64(3)] <= vflat[i] <= cflat[row + np.uint64(4)]
+            if passed == (cflat[row + np.uint64(6)] != 0):
                 pc = skip
                 continue
             if forklimit <= 1:  # BuildContexts: the one context made reaches the fork limit
@@ -1222,10 +1224,10 @@ def run(address, machine_type):
                 break
             alive = 1
             has = 0
-            abort = code[upc, 1]
+            abort = cflat[row + np.uint64(1)]
             pc += 1
         elif FIRST_CONDITION <= op <= LAST_CONDITION:  # a stage, or final
-            final = code[upc, 7]
+            final = cflat[row + np.uint64(7)]
             if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
                 quota -= 1
                 if counting:
@@ -1241,27 +1243,27 @@ def run(address, machine_type):
                 if counting:
                     counts[np.uint64(pc)] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
-                n = _select(code[upc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                n = _select(cflat[row + np.uint64(1)], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
                             efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
-                passed = (n > 0) != (code[upc, 6] != 0)
-                fval = 0 if not passed else (1 if code[upc, 6] else n)  # `if` counts the entities, `unless` gives 1
+                passed = (n > 0) != (cflat[row + np.uint64(6)] != 0)
+                fval = 0 if not passed else (1 if cflat[row + np.uint64(6)] else n)  # `if` counts the entities, `unless` gives 1
             elif op == OP_IFLEAF:  # compareNbt of {K:N}: the same type and number; type 0: the path leads to a tag
-                leaf = code[upc, 1]
-                if code[upc, 2] == 0:
-                    passed = (lmeta[leaf, 2] != 0) != (code[upc, 6] != 0)
+                leaf = cflat[row + np.uint64(1)]
+                if cflat[row + np.uint64(2)] == 0:
+                    passed = (lmeta[leaf, 2] != 0) != (cflat[row + np.uint64(6)] != 0)
                 else:
-                    passed = (lmeta[leaf, 0] == code[upc, 2] and lvalues[leaf] == floats[code[upc, 3]]) != (code[upc, 6] != 0)
+                    passed = (lmeta[leaf, 0] == cflat[row + np.uint64(2)] and lvalues[leaf] == floats[cflat[row + np.uint64(3)]]) != (cflat[row + np.uint64(6)] != 0)
                 fval = 1 if passed else 0
             elif op == OP_IFDIM:  # ExecuteCommand: the dimension is the source's level
-                passed = (cints[ctx, CI_DIM] == code[upc, 1]) != (code[upc, 6] != 0)
+                passed = (cints[ctx, CI_DIM] == cflat[row + np.uint64(1)]) != (cflat[row + np.uint64(6)] != 0)
                 fval = 1 if passed else 0
             else:
-                h = code[upc, 1] if op == OP_IFMATCH else code[upc, 2]
-                o = code[upc, 2] if op == OP_IFMATCH else code[upc, 3]
+                h = cflat[row + np.uint64(1)] if op == OP_IFMATCH else cflat[row + np.uint64(2)]
+                o = cflat[row + np.uint64(2)] if op == OP_IFMATCH else cflat[row + np.uint64(3)]
                 bad = alive_obj[o] == 0
-                if op == OP_IFSCORE and alive_obj[code[upc, 5]] == 0:
+                if op == OP_IFSCORE and alive_obj[cflat[row + np.uint64(5)]] == 0:
                     bad = True
-                    o = code[upc, 5]
+                    o = cflat[row + np.uint64(5)]
                 if bad:
                     err = ERR_UNKNOWN_OBJECTIVE
                     errarg = o
@@ -1275,7 +1277,7 @@ def run(address, machine_type):
                     break
                 if h == HOLDER_SELF:
                     h = cints[ctx, CI_HOLDER]
-                if op == OP_IFSCORE and code[upc, 4] == HOLDER_SELF and cints[ctx, CI_HOLDER] < 0:
+                if op == OP_IFSCORE and cflat[row + np.uint64(4)] == HOLDER_SELF and cints[ctx, CI_HOLDER] < 0:
                     h = -1
                 if h < 0:  # @s run by the server: a final test fails, a stage (a fork) drops the context
                     if final:
@@ -1290,15 +1292,15 @@ def run(address, machine_type):
                 if present[np.uint64(h), np.uint64(o)]:
                     a = values[np.uint64(h), np.uint64(o)]
                     if op == OP_IFMATCH:
-                        passed = code[upc, 3] <= a <= code[upc, 4]
+                        passed = cflat[row + np.uint64(3)] <= a <= cflat[row + np.uint64(4)]
                     else:
-                        h2 = code[upc, 4]
+                        h2 = cflat[row + np.uint64(4)]
                         if h2 == HOLDER_SELF:
                             h2 = cints[ctx, CI_HOLDER]
-                        o2 = code[upc, 5]
+                        o2 = cflat[row + np.uint64(5)]
                         if present[h2, o2]:
                             b = values[h2, o2]
-                            c = code[upc, 1]
+                            c = cflat[row + np.uint64(1)]
                             if c == CMP_LT:
                                 passed = a < b
                             elif c == CMP_LE:
@@ -1309,7 +1311,7 @@ def run(address, machine_type):
                                 passed = a >= b
                             else:
                                 passed = a > b
-                if code[upc, 6]:
+                if cflat[row + np.uint64(6)]:
                     passed = not passed
                 fval = 1 if passed else 0
             if final:
