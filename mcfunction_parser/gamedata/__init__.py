@@ -85,15 +85,48 @@ def _shipped(name: str):
     return json.loads(gzip.decompress((_DATA / name).read_bytes()))
 
 
+# the game's reports a release's folder may hold, and the JSON shape each must have: the commands
+# report is the root node ({"type": "root", "children": {...}}), the registries report maps each
+# registry to {"entries": {...}}, the blocks report each block to {"states": [...], ...}
+_REPORTS = {
+    "commands.json": lambda data: isinstance(data, dict) and isinstance(data.get("children"), dict),
+    "registries.json": lambda data: isinstance(data, dict) and all(
+        isinstance(v, dict) and isinstance(v.get("entries"), dict) for v in data.values()),
+    "blocks.json": lambda data: isinstance(data, dict) and all(isinstance(v, dict) for v in data.values()),
+}
+_UNREADABLE: dict[tuple[Version, str], str] = {}  # (release, report) -> why it was not used
+
+
 @lru_cache(maxsize=None)
 def _user_report(version: Version, name: str):
+    """The user's report ``name`` for ``version``; None when there is none, or when it is unreadable
+    or not of the report's shape (the shipped data stands in; :func:`unreadable_reports` says why)."""
     path = user_dir() / version_label(version) / name
     if not path.is_file():
         return None
     try:
-        return json.loads(path.read_text(encoding="utf-8"))
+        data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError) as error:
-        raise GameDataMissing(f"{path}: unreadable game report ({error})") from None
+        problem = f"unreadable game report ({error})"
+    else:
+        if _REPORTS[name](data):
+            return data
+        problem = f"not the game's {name.removesuffix('.json')} report"
+    label = version_label(version)
+    _UNREADABLE[version, name] = (
+        f"{path}: {problem}: Minecraft {label} is checked with the data dpemu ships instead; make the "
+        f"report again with the {label} server's data generator, `{_generator(version)}`, or remove it")
+    return None
+
+
+def unreadable_reports(version: Version) -> list[tuple[str, str]]:
+    """(path, why) of each of the user's reports for ``version`` that could not be used."""
+    found = []
+    for name in _REPORTS:
+        _user_report(version, name)
+        if (version, name) in _UNREADABLE:
+            found.append((str(user_dir() / version_label(version) / name), _UNREADABLE[version, name]))
+    return found
 
 
 # ----------------------------------------------------------------------------- command trees

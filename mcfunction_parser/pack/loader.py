@@ -28,6 +28,7 @@ from mcfunction_parser.pack.parallel import FunctionFile, parse_files
 from mcfunction_parser.pack import loot
 from mcfunction_parser.pack import recipes as recipe_files
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
+from mcfunction_parser import gamedata
 from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS, open_game_jar
 from mcfunction_parser.pack import advancements, clocks, conditions, registry_tags
 from mcfunction_parser.pack.registry_tags import RegistryTag
@@ -158,6 +159,8 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     target = pack_format_for_version(version)
     metas_read = sum((root / "pack.mcmeta").is_file() for _, _, root in opened)
     result = LoadedPacks([], version, {}, {}, {}, diagnostics, files=metas_read)
+    diagnostics.extend(Diagnostic(ERROR, why.removeprefix(path + ": "), path)
+                       for path, why in gamedata.unreadable_reports(version))
     packs = [_collect(path, root, shown, meta, target, version, diagnostics)
              for (path, shown, root), meta in zip(opened, metas)]
     result.packs = [p.info for p in packs]

@@ -105,3 +105,47 @@ def test_registries_and_block_states():
     assert "copper_golem" in gamedata.registry("entity_type", (1, 21, 9))  # 25w31a
     assert "copper_golem" not in gamedata.registry("entity_type", (1, 21, 8))
     assert "mannequin" in gamedata.registry("entity_type", (1, 21, 11))
+
+
+@pytest.fixture
+def own_reports(tmp_path, monkeypatch):
+    """A folder of the user's reports; the memory of reports read emptied before and after."""
+    monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
+    gamedata._user_report.cache_clear()
+    gamedata._UNREADABLE.clear()
+    yield tmp_path
+    gamedata._user_report.cache_clear()
+    gamedata._UNREADABLE.clear()
+
+
+def test_an_unreadable_report_is_named_and_the_shipped_data_stands_in(own_reports):
+    folder = own_reports / "1.19.1"
+    folder.mkdir()
+    (folder / "commands.json").write_text('{"broken')
+    (folder / "registries.json").write_text("[1]")  # JSON, but not the registries report's shape
+    assert gamedata.tree_release((1, 19, 1)) == (1, 19, 4)  # the shipped tree, as without a report
+    assert gamedata.registry_release((1, 19, 1)) == ((1, 19, 0), False)
+    problems = dict(gamedata.unreadable_reports((1, 19, 1)))
+    assert set(problems) == {str(folder / "commands.json"), str(folder / "registries.json")}
+    commands = problems[str(folder / "commands.json")]
+    assert "unreadable game report" in commands and "Minecraft 1.19.1" in commands
+    assert "-DbundlerMainClass=net.minecraft.data.Main -jar server.jar --reports" in commands
+    assert "not the game's registries report" in problems[str(folder / "registries.json")]
+    assert gamedata.unreadable_reports((1, 19, 2)) == []
+
+
+def test_loading_for_a_release_with_an_unreadable_report_is_an_error_naming_it(own_reports, tmp_path_factory):
+    from mcfunction_parser import load_packs
+
+    (own_reports / "1.19.1").mkdir()
+    (own_reports / "1.19.1" / "commands.json").write_text("not json")
+    pack = tmp_path_factory.mktemp("pack")
+    (pack / "pack.mcmeta").write_text('{"pack": {"pack_format": 10, "description": ""}}')
+    (pack / "data" / "t" / "functions").mkdir(parents=True)
+    (pack / "data" / "t" / "functions" / "f.mcfunction").write_text("gamemode flying\n")
+    loaded = load_packs([pack], mc_version="1.19.1")
+    messages = [(d.path, d.message) for d in loaded.errors]
+    assert messages[0][0] == str(own_reports / "1.19.1" / "commands.json")
+    assert "unreadable game report" in messages[0][1] and "--reports" in messages[0][1]
+    # the function is still checked, with the shipped tree
+    assert any(d.line == 1 and d.col == 10 and "game mode" in d.message for d in loaded.errors)
