@@ -8,6 +8,7 @@ only raised for bad input, never on the happy path.
 from __future__ import annotations
 
 import re
+from bisect import bisect_right
 
 from .diagnostics import Loc, new_loc
 from .features import feature_problem
@@ -81,9 +82,7 @@ class Reader:
         self.start_loc = loc  # where the text starts: the location of a command at offset 0
         self.pos = 0
         self.end = len(text)
-        self.path = loc.path
-        self.line = loc.line
-        self.col = loc.col
+        self.path, self.line, self.col = loc  # a named tuple: unpacked faster than read by name
         self.version = version
         self.warnings: list[tuple[str, int]] = []  # (message, offset): problems that keep the command
 
@@ -311,19 +310,16 @@ class JoinedReader(Reader):
     """A command joined from continuation lines: ``segments`` lists ``(offset, line, col)`` where
     each physical line's piece starts, so positions map back to the right line."""
 
-    __slots__ = ("segments",)
+    __slots__ = ("segments", "offsets")
 
     def __init__(self, text: str, loc: Loc, version: tuple[int, int, int], segments: tuple):
         super().__init__(text, loc, version)
         self.segments = segments
+        self.offsets = [seg[0] for seg in segments]  # ascending, the first 0
 
     def loc(self) -> Loc:
         return self.loc_at(self.pos)
 
     def loc_at(self, pos: int) -> Loc:
-        start, line, col = self.segments[0]
-        for seg in self.segments:
-            if seg[0] > pos:
-                break
-            start, line, col = seg
+        start, line, col = self.segments[bisect_right(self.offsets, pos) - 1]  # the last piece starting at or before pos
         return new_loc((self.path, line, col + pos - start))

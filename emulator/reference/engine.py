@@ -341,7 +341,7 @@ class Interpreter:
     def _charge(self, queue: ExecutionQueue, loc, activation: Activation) -> None:
         """One quota unit, on ``loc``'s line, in ``activation``'s call stack."""
         queue.charge()
-        self.line_counts[(loc.path, loc.line)] += 1
+        self.line_counts[loc[:2]] += 1  # (path, line)
         if self.recorder is not None:
             self.recorder.charge(activation.stack())
 
