@@ -42,6 +42,10 @@ shared helpers in ``run`` take scalars or run straight-line code, while the sele
 at no cost to the writable case), and the dispatch chain (the template's ``case FAMILY:`` lines,
 one branch per family of the opcode table) tests the hottest opcodes first (operations,
 set/add/remove, a chain's CMD/IF*/ENDCMD, calls).
+A run of operations on names loops inside the operation branch, each reading the next instruction
+itself until one is something else (or the quota is spent): LLVM weighs a loop's blocks above the
+rest of ``run`` when it hands out registers, and fewer of the run's values are spilled to the stack
+(the scoreboard loop ran about 10 % faster, in-process ratio to the hand-written loop, CPU time).
 The hot paths index with unsigned integers where the index cannot be negative (the instruction's
 row in the flat code ``cflat``, the holders and objectives of the scoreboard commands' one-holder
 paths, the counters): numba
@@ -954,59 +958,73 @@ def run(address, machine_type):
             h = cflat[row + np.uint64(1)]
             h2 = cflat[row + np.uint64(3)]
             if h >= 0 and h2 >= 0:  # one target, one source, both names: the common case, kept lean
-                uh, uo, uh2, uo2 = np.uint64(h), np.uint64(o), np.uint64(h2), np.uint64(o2)
-                if sanitize and novf >= ovf.shape[0]:
-                    status = ST_FLUSH
-                    break
-                quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
-                pc += 1
-                if writable[uo] == 0 or alive_obj[uo2] == 0:  # o unknown or read-only, or o2 unknown
-                    has = 1
-                    ok = 0
-                    val = 0
-                    if alive_obj[o] and writable[uo] == 0:  # ObjectiveArgument.getWritableObjective: read-only
-                        err = ERR_READ_ONLY
-                        errarg = o
-                        status = ST_ERROR
-                        break
-                    err = ERR_UNKNOWN_OBJECTIVE
-                    errarg = o if alive_obj[o] == 0 else o2
-                    status = ST_ERROR
-                    break
-                i = uh * ncols + uo
-                i2 = uh2 * ncols + uo2
-                if pflat[i] == 0:  # get-or-create: the target first, then the source
-                    vflat[i] = 0
-                    pflat[i] = 1
-                if pflat[i2] == 0:
-                    vflat[i2] = 0
-                    pflat[i2] = 1
-                a = np.int64(vflat[i])
-                b = np.int64(vflat[i2])
-                k = op - FIRST_OPERATION
-                if b == 0 and (k == OPK_DIV or k == OPK_MOD):
-                    has = 1
-                    ok = 0
-                    val = 0
-                    err = ERR_DIV_ZERO
-                    errarg = 0
-                    status = ST_ERROR
-                    break
-                r = _operate(k, a, b)
-                if k == OPK_SWAP:
-                    vflat[i2] = a
-                nv = _wrap(r)
-                vflat[i] = nv
-                has = 1
-                ok = 1
-                val = nv
-                if sanitize and _overflowed(r):
-                    novf = _report(ovf, novf, ipc, k, a, b, r)
-                    if novf >= ovf.shape[0]:
+                while True:  # and the operations on names after it, in a loop of their own: LLVM gives its values the registers
+                    uh, uo, uh2, uo2 = np.uint64(h), np.uint64(o), np.uint64(h2), np.uint64(o2)
+                    if sanitize and novf >= ovf.shape[0]:
                         status = ST_FLUSH
                         break
+                    quota -= 1
+                    if counting:
+                        counts[np.uint64(pc)] += 1
+                    pc += 1
+                    if writable[uo] == 0 or alive_obj[uo2] == 0:  # o unknown or read-only, or o2 unknown
+                        has = 1
+                        ok = 0
+                        val = 0
+                        if alive_obj[o] and writable[uo] == 0:  # ObjectiveArgument.getWritableObjective: read-only
+                            err = ERR_READ_ONLY
+                            errarg = o
+                            status = ST_ERROR
+                            break
+                        err = ERR_UNKNOWN_OBJECTIVE
+                        errarg = o if alive_obj[o] == 0 else o2
+                        status = ST_ERROR
+                        break
+                    i = uh * ncols + uo
+                    i2 = uh2 * ncols + uo2
+                    if pflat[i] == 0:  # get-or-create: the target first, then the source
+                        vflat[i] = 0
+                        pflat[i] = 1
+                    if pflat[i2] == 0:
+                        vflat[i2] = 0
+                        pflat[i2] = 1
+                    a = np.int64(vflat[i])
+                    b = np.int64(vflat[i2])
+                    k = op - FIRST_OPERATION
+                    if b == 0 and (k == OPK_DIV or k == OPK_MOD):
+                        has = 1
+                        ok = 0
+                        val = 0
+                        err = ERR_DIV_ZERO
+                        errarg = 0
+                        status = ST_ERROR
+                        break
+                    r = _operate(k, a, b)
+                    if k == OPK_SWAP:
+                        vflat[i2] = a
+                    nv = _wrap(r)
+                    vflat[i] = nv
+                    has = 1
+                    ok = 1
+                    val = nv
+                    if sanitize and _overflowed(r):
+                        novf = _report(ovf, novf, ipc, k, a, b, r)
+                        if novf >= ovf.shape[0]:
+                            status = ST_FLUSH
+                            break
+                    ipc = pc  # the next instruction: run here while it is an operation on names
+                    row = np.uint64(pc) * np.uint64(WIDTH)
+                    op = cflat[row]
+                    if op < FIRST_OPERATION or op > LAST_OPERATION or quota <= 0:
+                        break
+                    o = cflat[row + np.uint64(2)]
+                    o2 = cflat[row + np.uint64(4)]
+                    h = cflat[row + np.uint64(1)]
+                    h2 = cflat[row + np.uint64(3)]
+                    if h < 0 or h2 < 0:
+                        break
+                if status != ST_DONE:  # an error or a full buffer
+                    break
                 continue
             if h == HOLDER_SELF:  # @s: through the selector path, as one holder
                 h = cints[ctx, CI_HOLDER]
