@@ -468,34 +468,58 @@ def _tag_count(etags, slot):
 _shuffle = njit(cache=True)(java_random.shuffle)
 
 
+RUN = 8  # _sort_by's runs sorted by insertion before they are merged
+
+
 @njit(cache=True)
-def _sort_by(keys, out, off, n):
-    """``out[off:off + n]`` ordered by ``keys[:n]``, equal keys in their order (List.sort is stable): a
-    bottom-up merge sort of the positions, written out (numpy's argsort and a fancy-indexed row copy
-    compile for seconds: its generic sort, the copy's shape check and its message)."""
-    a = np.empty(n, dtype=np.int64)
-    b = np.empty(n, dtype=np.int64)
+def _sort_by(keys, out, off, n, limit):
+    """``out[off:off + n]`` ordered by ``keys[:n]`` (which it reorders), equal keys in their order
+    (List.sort is stable), as far as the first ``limit`` places: runs of RUN sorted by insertion,
+    then merged bottom-up (numpy's argsort and a fancy-indexed row copy compile for seconds: its
+    generic sort, the copy's shape check and its message). One place wanted: the first least key."""
+    if limit == 1:
+        best = 0
+        for i in range(1, n):
+            if keys[i] < keys[best]:
+                best = i
+        out[off] = out[off + best]
+        return
+    slots = np.empty(n, dtype=np.int64)
     for i in range(n):
-        a[i] = i
-    width = 1
+        slots[i] = out[off + i]
+    for lo in range(0, n, RUN):
+        for i in range(lo + 1, min(lo + RUN, n)):
+            k = keys[i]
+            s = slots[i]
+            j = i
+            while j > lo and keys[j - 1] > k:
+                keys[j] = keys[j - 1]
+                slots[j] = slots[j - 1]
+                j -= 1
+            keys[j] = k
+            slots[j] = s
+    keys2 = np.empty(n)
+    slots2 = np.empty(n, dtype=np.int64)
+    width = RUN
     while width < n:
         for lo in range(0, n, 2 * width):
             mid = min(lo + width, n)
             hi = min(lo + 2 * width, n)
             i, j = lo, mid
             for k in range(lo, hi):
-                if j >= hi or (i < mid and not keys[a[j]] < keys[a[i]]):
-                    b[k] = a[i]
+                if j >= hi or (i < mid and not keys[j] < keys[i]):
+                    keys2[k] = keys[i]
+                    slots2[k] = slots[i]
                     i += 1
                 else:
-                    b[k] = a[j]
+                    keys2[k] = keys[j]
+                    slots2[k] = slots[j]
                     j += 1
-        a, b = b, a
+        keys, keys2 = keys2, keys
+        slots, slots2 = slots2, slots
         width *= 2
-    for i in range(n):
-        b[i] = out[off + a[i]]
-    for i in range(n):
-        out[off + i] = b[i]
+    for i in range(min(n, limit)):
+        out[off + i] = slots[i]
 
 
 @njit(cache=True)
@@ -533,7 +557,7 @@ def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etag
         keys = np.empty(n)
         for i in range(n):
             keys[i] = eints[out[off + i], EI_JOIN]
-        _sort_by(keys, out, off, n)
+        _sort_by(keys, out, off, n, n)  # whole: a sort or a shuffle may follow
     if sort == SORT_RANDOM and n > 1:
         _shuffle(erandom, out, off, n)
     elif sort != SORT_ARBITRARY and n > 1:  # List.sort: stable, by the squared distance (negated: furthest)
@@ -545,7 +569,7 @@ def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etag
             dz = efloats[e, EF_Z] - oz
             d2 = dx * dx + dy * dy + dz * dz
             keys[i] = d2 if sort == SORT_NEAREST else -d2
-        _sort_by(keys, out, off, n)
+        _sort_by(keys, out, off, n, limit)
     return n if n < limit else limit
 
 

@@ -136,22 +136,25 @@ def test_selector_order_with_and_without_sort(tmp_path):
 
 def test_sorted_selectors_keep_equal_distances_in_their_order_in_the_vm(tmp_path):
     # EntitySelectorParser.ORDER_NEAREST / ORDER_FURTHEST: List.sort by the squared distance, which is
-    # stable (TimSort): entities at equal distances stay in the store's order. 13 markers, many ties,
-    # numbered in the order `execute as` visits them
-    xs = (3, -1, 2, 1, -3, 0, 2, -2, 1, 3, -1, 0, 2)
+    # stable (TimSort): entities at equal distances stay in the store's order, and a limit keeps the
+    # first of them (EntitySelector.sortAndLimit). 21 markers, many ties, numbered in the order
+    # `execute as` visits them
+    xs = (3, -1, 2, 1, -3, 0, 2, -2, 1, 3, -1, 0, 2, -4, 4, 1, -2, 0, 3, -3, 2)
     body = SETUP + "".join(f"summon marker {x} 0 0 {{Tags:[\"m\"]}}\n" for x in xs)
-    for sort in ("nearest", "furthest"):
-        body += f"scoreboard players set #i v 0\nexecute as @e[tag=m,x=0.5,y=0,z=0,sort={sort}] run function t:{sort}\n"
-    functions = {"t:main": body,
-                 "t:nearest": "scoreboard players add #i v 1\nscoreboard players operation @s v = #i v",
-                 "t:furthest": "scoreboard players add #i v 1\nscoreboard players operation @s w = #i v"}
-    functions["t:main"] = functions["t:main"].replace(SETUP, SETUP + "scoreboard objectives add w dummy\n")
-    emu = run_both(tmp_path, functions)
-    nearest = sorted(range(len(xs)), key=lambda i: abs(xs[i]))  # sorted() is stable too
-    furthest = sorted(range(len(xs)), key=lambda i: -abs(xs[i]))
+    functions = {}
+    cases = {"a": "sort=nearest", "b": "sort=furthest", "c": "sort=nearest,limit=1", "d": "sort=furthest,limit=1",
+             "e": "sort=nearest,limit=5", "f": "sort=furthest,limit=9"}
+    for objective, options in cases.items():
+        body += (f"scoreboard objectives add {objective} dummy\nscoreboard players set #i v 0\n"
+                 f"execute as @e[tag=m,x=0.5,y=0,z=0,{options}] run function t:{objective}\n")
+        functions[f"t:{objective}"] = f"scoreboard players add #i v 1\nscoreboard players operation @s {objective} = #i v"
+    emu = run_both(tmp_path, {"t:main": body, **functions})
     markers = tagged(emu, "m")
-    assert [markers[i]["scores"]["v"] for i in nearest] == list(range(1, len(xs) + 1))
-    assert [markers[i]["scores"]["w"] for i in furthest] == list(range(1, len(xs) + 1))
+    for objective, options in cases.items():
+        order = sorted(range(len(xs)), key=lambda i: abs(xs[i]) * (1 if "nearest" in options else -1))  # stable
+        limit = int(options.partition("limit=")[2] or len(xs))
+        numbered = [markers[i]["scores"].get(objective) for i in order]
+        assert numbered == list(range(1, limit + 1)) + [None] * (len(xs) - limit), options
 
 
 def test_shuffle_permutes_unsorted_order_and_both_backends_agree(tmp_path):
