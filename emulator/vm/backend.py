@@ -11,7 +11,7 @@ from collections import Counter
 import numba
 import numpy as np
 
-from emulator.vm import loop as vm, variants
+from emulator.vm import jit_cache, loop as vm, variants
 from emulator.vm.loop import (R_ALIVE, R_BATCH, R_BSTOP, R_CALLFN, R_COUNTING, R_CTX, R_FORKLIMIT, R_HAS, R_NCTX,
                               R_NLOG, R_NOVF, R_OK, R_PC, R_QUOTA, R_ROOT, R_SANITIZE, R_VAL, ST_DONE, ST_HOST)
 from emulator.commands import entities as world_entities
@@ -33,6 +33,8 @@ from emulator.world.state import WorldState
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
+
+jit_cache.lean_loads(vm.run, vm.new_machine, vm.fork_contexts)  # the functions Python calls
 
 # The game's ExecutionContext stops a root when its queue would exceed 10,000,000 entries; each
 # frame here holds at least one pending entry, so deeper stacks than this cannot happen.

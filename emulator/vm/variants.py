@@ -23,7 +23,7 @@ import tempfile
 from pathlib import Path
 from types import ModuleType
 
-from emulator.vm import generate, loop, opcodes
+from emulator.vm import generate, jit_cache, loop, opcodes
 
 TINY = frozenset({"halt", "cmd", "call", "return", "score", "host", "resume"})
 SMALL = TINY | {"operation"}
@@ -59,6 +59,7 @@ def _load(families: frozenset) -> ModuleType:
     module = importlib.util.module_from_spec(spec)
     sys.modules[name] = module
     spec.loader.exec_module(module)
+    jit_cache.lean_loads(module.run)
     return module
 
 
