@@ -1,10 +1,12 @@
 """The smaller dispatch loops (emulator.vm.variants): what they serve, that each is the one a
-program of its families runs, and that a program growing past one moves to the next that serves it."""
+program of its families runs, and that a program with a macro line runs the whole loop."""
 from __future__ import annotations
 
 import inspect
 import re
 from pathlib import Path
+
+import pytest
 
 from emulator.vm import generate, loop, opcodes, variants
 from tests.vm.helpers import emulator_for
@@ -17,6 +19,12 @@ SMALL_PACK = {
               "function t:add\n"
               "say hello\n"
               "return run function t:add",
+    "t:add": "scoreboard players add #b o 2\nreturn 9",
+}
+
+TINY_PACK = {
+    "t:main": "scoreboard objectives add o dummy\nscoreboard players set #a o 7\nfunction t:add\nsay hello\n"
+              "scoreboard players remove #a o 1\nreturn run function t:add",
     "t:add": "scoreboard players add #b o 2\nreturn 9",
 }
 
@@ -33,15 +41,17 @@ def test_the_small_loop_has_no_selector_entity_or_fork_branch():
     assert "case " not in text and "status = ST_HOST" in text
 
 
-def test_a_small_program_runs_the_small_loop_as_the_reference_runs_it(tmp_path):
+@pytest.mark.parametrize("pack, expected, operations", [(SMALL_PACK, (9, 7, 53), True), (TINY_PACK, (9, 6, 4), False)],
+                         ids=["small", "tiny"])
+def test_a_program_runs_its_tiers_loop_as_the_reference_runs_it(tmp_path, pack, expected, operations):
     results = {}
     for backend in ("numba", "python"):
-        emu = emulator_for(tmp_path / backend, SMALL_PACK, backend=backend)
+        emu = emulator_for(tmp_path / backend, pack, backend=backend)
         results[backend] = (emu.call("t:main"), emu.score("#a", "o"), emu.score("#b", "o"))
         if backend == "numba":
-            assert emu.backend.loop is variants.loop_for(emu.backend.program.opcodes)
-            assert emu.backend.loop.run is not loop.run and "_operate(" in inspect.getsource(emu.backend.loop.run)
-    assert results["numba"] == results["python"] == (9, 7, 53)
+            assert emu.backend.loop is variants.loop_for(emu.backend.program.opcodes) is not loop
+            assert ("_operate(" in inspect.getsource(emu.backend.loop.run)) == operations
+    assert results["numba"] == results["python"] == expected
 
 
 def test_a_macro_instance_past_the_small_set_moves_to_the_whole_loop(tmp_path):
@@ -54,28 +64,9 @@ def test_a_macro_instance_past_the_small_set_moves_to_the_whole_loop(tmp_path):
     assert emu.score("#c", "o") == 3
 
 
-TINY_PACK = {
-    "t:main": "scoreboard objectives add o dummy\nscoreboard players set #a o 7\nfunction t:add\nsay hello\n"
-              "scoreboard players remove #a o 1\nreturn run function t:add",
-    "t:add": "scoreboard players add #b o 2\nreturn 9",
-}
-
-
 def test_the_tiny_loop_has_no_operation_branch_and_borrows_only_what_it_reads():
     text = generate.run_source(variants.TINY)
     assert "_operate(" not in text and "FIRST_OPERATION" not in text and "status = ST_HOST" in text
     borrowed = re.findall(r"(\w+) = _borrowed\(m\.\1\)", text)
     assert "values" in borrowed and "eints" not in borrowed and "ovf" in borrowed
     assert len(borrowed) < len(loop.MACHINE_FIELDS) // 2
-
-
-def test_a_tiny_program_runs_the_tiny_loop_as_the_reference_runs_it(tmp_path):
-    results = {}
-    for backend in ("numba", "python"):
-        emu = emulator_for(tmp_path / backend, TINY_PACK, backend=backend)
-        results[backend] = (emu.call("t:main"), emu.score("#a", "o"), emu.score("#b", "o"))
-        if backend == "numba":
-            assert "_operate(" not in inspect.getsource(emu.backend.loop.run)
-            assert emu.backend.loop is variants.loop_for(emu.backend.program.opcodes) is not loop
-    assert results["numba"] == results["python"] == (9, 6, 4)
-
