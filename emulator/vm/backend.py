@@ -34,7 +34,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
 
-jit_cache.lean_loads(vm.run, vm.new_machine, vm.fork_contexts)  # the functions Python calls
+jit_cache.lean_loads(vm.run, vm.new_machine, vm.machine_address, vm.fork_contexts)  # the functions Python calls
 
 # The game's ExecutionContext stops a root when its queue would exceed 10,000,000 entries; each
 # frame here holds at least one pending entry, so deeper stacks than this cannot happen.
