@@ -7,7 +7,7 @@ ExecuteCommand.java (checkRegions).
 """
 from __future__ import annotations
 
-from emulator.world import command_blocks
+from emulator.world import command_blocks, crafters
 from emulator.world.blocks import BlockSpec, block_pos, box_positions, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
@@ -62,6 +62,7 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     if cmd.name == "setblock":
         count = blocks.setblock(positions[0], spec, mode)
         command_blocks.after_change(env.state, ctx.dimension, positions[:1])
+        crafters.after_change(env.state, ctx.dimension, positions[:1])
         return count
     block_filter = None
     if mode == "replace" and len(words) > 2:
@@ -71,6 +72,8 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     count = blocks.fill(positions[0], positions[1], spec, mode, block_filter)
     if spec.id in command_blocks.COMMAND_BLOCKS or blocks.has_any(command_blocks.COMMAND_BLOCKS):
         command_blocks.after_change(env.state, ctx.dimension, box_positions(positions[0], positions[1]))
+    if blocks.has_any((crafters.CRAFTER,)):
+        crafters.after_change(env.state, ctx.dimension, box_positions(positions[0], positions[1]))
     return count
 
 

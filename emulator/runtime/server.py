@@ -16,7 +16,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
    (:func:`emulator.world.combat.tick_dead`), a player using an item goes on using it
    (:func:`emulator.world.player_actions.tick_using`), an open container out of reach closes
-   (:func:`emulator.world.block_use.tick_menus`) and every
+   (:func:`emulator.world.block_use.tick_menus`), a crafter that crafted counts its 6 ticks of
+   ``crafting`` down (:func:`emulator.world.crafters.tick_crafting`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`).
@@ -40,7 +41,7 @@ from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands.advancements import earned_rewards
-from emulator.world import advancements, block_use, combat, living, nbt_ops, player_actions, statistics
+from emulator.world import advancements, block_use, combat, crafters, living, nbt_ops, player_actions, statistics
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -67,6 +68,7 @@ ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
                 (combat.tick_dead, combat.tick_is_idle),
                 (player_actions.tick_using, player_actions.tick_is_idle),
                 (block_use.tick_menus, block_use.tick_is_idle),
+                (crafters.tick_crafting, crafters.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),
                 (advancements.tick_players, advancements.tick_is_idle))
 

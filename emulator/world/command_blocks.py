@@ -8,6 +8,8 @@ game runs them, with the block entity fields a pack reads back (``SuccessCount``
   schedules its tick unless powered or a chain block), and each command block beside a changed
   block hears the change (CommandBlock.neighborChanged: powered by a neighbour's signal, an
   impulse or repeating one not ``auto`` schedules its tick in 1 tick).
+- ``neighbours_of(blocks, positions, block_ids)``: the blocks of those ids beside any changed
+  position (the ones that hear the change; crafters use it too).
 - ``after_edit(state, dimension, pos, before)``: after ``data merge|modify block`` changed a command
   block's entity (loadAdditional: ``auto`` rising schedules the tick).
 - The block tick (CommandBlock.tick): an impulse block runs once, a repeating one every tick while
@@ -95,9 +97,14 @@ def after_change(state, dimension: str, positions) -> None:
     for pos in positions:
         if blocks.get(pos).id in COMMAND_BLOCKS:
             _set_automatic(state, pos, before=False)
-    heard = {n for pos in positions for n in (_beside(pos, d) for d in _OFFSETS) if blocks.get(n).id in COMMAND_BLOCKS}
-    for pos in sorted(heard):
+    for pos in neighbours_of(blocks, positions, COMMAND_BLOCKS):
         _neighbour_changed(state, pos)
+
+
+def neighbours_of(blocks, positions, block_ids) -> list:
+    """The blocks among ``block_ids`` beside any of ``positions`` (Level.updateNeighborsAt), in order."""
+    return sorted({n for pos in positions for n in (_beside(tuple(pos), d) for d in _OFFSETS)
+                   if blocks.get(n).id in block_ids})
 
 
 def after_edit(state, dimension: str, pos, before: Compound | None) -> None:

@@ -71,7 +71,7 @@ PLAYER_INVENTORY_SIZE, ENDER_SIZE = 36, 27
 _OLD_PLAYER_SLOTS = {OFFHAND: -106, 100: 100, 101: 101, 102: 102, 103: 103}
 _SINGLE_ITEM = {"minecraft:item": "Item", "minecraft:item_frame": "Item", "minecraft:glow_item_frame": "Item",
                 "minecraft:item_display": "item"}
-_ENTITY_CONTAINERS = {"minecraft:chest_minecart": 27, "minecraft:hopper_minecart": 5, "minecraft:chest_boat": 27,
+ENTITY_CONTAINERS = {"minecraft:chest_minecart": 27, "minecraft:hopper_minecart": 5, "minecraft:chest_boat": 27,
                       **{f"minecraft:{w}_chest_boat": 27 for w in "oak spruce birch jungle acacia dark_oak mangrove "
                          "cherry pale_oak".split()}, "minecraft:bamboo_chest_raft": 27}
 # slots of entities whose own inventories are not modelled (said so when used): villagers' 300-307,
@@ -247,8 +247,8 @@ def entity_slot(entity, slot: int, version) -> SlotAccess | None:
         return _equipment_slot(data, slot, version, player=True)
     if entity.type in _SINGLE_ITEM:
         return _key_slot(lambda create: data, _SINGLE_ITEM[entity.type], version) if slot == 0 else None
-    if entity.type in _ENTITY_CONTAINERS:
-        return _list_slot(data, "Items", slot, version) if 0 <= slot < _ENTITY_CONTAINERS[entity.type] else None
+    if entity.type in ENTITY_CONTAINERS:
+        return _list_slot(data, "Items", slot, version) if 0 <= slot < ENTITY_CONTAINERS[entity.type] else None
     if entity.type in NOT_LIVING:
         return None
     if slot in _UNMODELLED.get(entity.type, ()):

@@ -12,7 +12,8 @@ loot tables, item modifiers, predicates, advancements, recipes and registry tags
   :class:`~emulator.world.errors.Unmodelled` unless ``value`` is among its known members, never a
   silent "no".
 - ``recipes``: recipe id -> type (the packs', and the game's from its jar); see
-  :mod:`emulator.world.recipes`.
+  :mod:`emulator.world.recipes`; ``recipe_bodies``: id -> JSON of those that decode
+  (:mod:`emulator.world.crafting` matches them).
 - ``loot_table(table_id)``: a loaded table; None for one that does not exist. A ``minecraft:``
   table without the game's data raises Unmodelled naming ``--game-jar``.
 """
@@ -38,6 +39,7 @@ class Resources:
     predicates: dict[str, Any] = field(default_factory=dict)  # id -> JSON value
     advancements: dict[str, Any] = field(default_factory=dict)
     recipes: dict[str, str] = field(default_factory=dict)  # id -> its type
+    recipe_bodies: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (the recipes that decode)
     tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)  # registry -> tag id -> tag
     vanilla_data: bool = False  # the game's own tags and loot tables were loaded (from its jar)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # loot rolls, dropped items
@@ -48,7 +50,7 @@ class Resources:
         tables, modifiers = packs.loot_tables, packs.item_modifiers
         found = cls({k: d.value for k, d in tables.items()}, {k: d.value for k, d in modifiers.items()},
                     predicates=dict(packs.predicates), advancements=dict(packs.advancements),
-                    recipes=dict(packs.recipes),
+                    recipes=dict(packs.recipes), recipe_bodies=dict(packs.recipe_bodies),
                     tags={registry: dict(tags) for registry, tags in packs.registry_tags.items()},
                     vanilla_data=packs.vanilla_data)
         found.redefined_enchantments = frozenset(

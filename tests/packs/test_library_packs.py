@@ -9,6 +9,8 @@ their PackTest suites run on both backends:
   insertion of its display name (a selector text resolved by set_name);
 - clicks: clicks on interaction entities heard as a library hears them (player_hurt_entity with
   entity and damage conditions, ``execute on attacker|target``);
+- crafting: custom recipes tested with a crafter (shaped with a mirrored pattern and an item tag,
+  shapeless with a remainder, into a chest in front, crafter_recipe_crafted);
 - lists, typed: a collection library flattening lists that mix types (1.21.5+), and the one-type
   rule of the lists before it."""
 from pathlib import Path
@@ -21,7 +23,7 @@ from emulator.testing.runner import load_suite, run_case
 
 HERE = Path(__file__).resolve().parent
 SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
-                                                                         "clicks")}
+                                                                         "clicks", "crafting")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 
