@@ -1,5 +1,6 @@
 """A player using a block (right-clicking it with a hand), as ServerPlayerGameMode.useItemOn carries
-it out, with what a datapack observes: the block's new state (levers, buttons that spring back,
+it out, with what a datapack observes: the block's new state (levers, buttons that spring back, the
+command blocks and crafters beside them hearing the change,
 note blocks, doors, trapdoors, fence gates, a barrel's ``open``), the statistics of opening
 containers and workstations, and the ``default_block_use`` / ``item_used_on_block`` criteria.
 
@@ -30,8 +31,8 @@ from __future__ import annotations
 
 import math
 
-from emulator.world import (advancements, block_placing, block_shapes, inventories, item_cooldowns, signs,
-                            statistics)
+from emulator.world import (advancements, block_placing, block_shapes, command_blocks, crafters, inventories,
+                            item_cooldowns, signs, statistics)
 from emulator.world.blocks import BlockState
 from emulator.world.context import Context
 from emulator.world.living import attribute_value
@@ -124,6 +125,7 @@ def _use_without_item(state, player, pos, block: BlockState) -> str:
         return signs.use(state, player, pos, block, _run_click_command)
     if block.id == "minecraft:lever":
         _set(state, pos, block, powered=_flip(block, "powered"))
+        _neighbours_hear(state, pos)
         return "consume"
     if block.id in BUTTONS:
         return _press(state, pos, block)
@@ -205,12 +207,23 @@ def _press(state, pos, block: BlockState) -> str:
     if _property(block, "powered", "false") == "true":
         return "consume"
     _set(state, pos, block, powered="true")
+    _neighbours_hear(state, pos)
 
     def release(state, pos) -> None:
         current = state.blocks.get(pos)
         _set(state, pos, current, powered="false")
+        _neighbours_hear(state, pos)
     state.block_ticks.schedule(pos, block.id, BUTTONS[block.id], state.gametime, release)
     return "consume"
+
+
+def _neighbours_hear(state, pos) -> None:
+    """LeverBlock.pull / ButtonBlock.press and checkPressed: updateNeighbours, so a command block
+    or crafter beside it reads its new signal (the neighbours of the block it hangs on are not
+    reached: power through a block is not modelled)."""
+    dimension = getattr(state, "dimension", "minecraft:overworld")
+    command_blocks.after_change(state, dimension, [pos])
+    crafters.after_change(state, dimension, [pos])
 
 
 # ---------------------------------------------------------------------- containers
