@@ -20,7 +20,8 @@ Sources (decompiled 1.21, net/minecraft/world/level/storage/loot/predicates/*, a
 - LootItemEntityPropertyCondition: the entity of the target and the origin; no predicate: true;
   EntityPredicate.matches: a missing entity fails; ``distance`` needs an origin.
 - EntityPredicate (type, distance, location/stepping_on/movement_affected_by, effects, nbt, flags,
-  equipment, type_specific, vehicle, passenger, targeted_entity, team, periodic_tick, slots).
+  equipment, type_specific, vehicle, passenger, targeted_entity, team, periodic_tick, slots,
+  components: emulator.world.entity_components).
 - EntityEquipmentPredicate.matches: only a LivingEntity matches; each given slot's ItemPredicate
   tests LivingEntity.getItemBySlot (an empty slot is the empty stack, which ``{}`` matches).
   SlotsPredicate: each slot range needs one slot (Entity.getSlot) whose stack matches.
@@ -45,7 +46,8 @@ from typing import Callable
 
 import numpy as np
 
-from emulator.world import advancement_progress, entity_predicate_format, inventories, living, recipes, sight
+from emulator.world import (advancement_progress, entity_components, entity_predicate_format, inventories, living,
+                            recipes, sight)
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -483,6 +485,13 @@ def _targeted_entity(value, ctx: LootContext, entity: Entity) -> bool:
                      "which is not modelled)")
 
 
+def _entity_components(value, ctx: LootContext, entity: Entity) -> bool:
+    """DataComponentMatchers' exact ``components`` (1.21.5+; the codec ignores the field before)."""
+    if tuple(ctx.state.version) < ENTITY_COMPONENTS_VERSION or not isinstance(value, dict):
+        return True
+    return entity_components.components_match(value, entity)
+
+
 def _team(value, ctx: LootContext, entity: Entity) -> bool:
     return entity.team is not None and entity.team == value
 
@@ -555,9 +564,11 @@ _ENTITY_FIELDS = {
     "equipment": _equipment,
     "slots": _slots,
     "player": lambda v, ctx, e: _player(v, ctx, e),  # before 1.19: a top-level player predicate
+    "components": lambda v, ctx, e: _entity_components(v, ctx, e),
 }
 _ENTITY_UNMODELLED = {"periodic_tick", "movement", "fishing_hook",
-                      "lightning_bolt", "catType", "components", "predicates"}
+                      "lightning_bolt", "catType", "predicates"}
+ENTITY_COMPONENTS_VERSION = (1, 21, 5)  # EntityPredicate's DataComponentMatchers
 
 
 # ---------------------------------------------------------------------- locations and blocks

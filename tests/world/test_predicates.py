@@ -400,3 +400,34 @@ def test_stepping_on_reads_the_centre_of_the_block_below(state):
     assert near("stepping_on", 0.5)
     assert holds({"condition": "entity_properties", "entity": "this", "predicate": {
         "location": {"position": {"x": {"min": 0.29, "max": 0.31}}}}}, ctx(state, this=pig))
+
+
+def test_entity_components_compare_what_the_entity_saves():
+    # EntityPredicate.matches: components.test(entity) (1.21.5+), each listed component equal to
+    # Entity.get's: Cat.get (cat/variant from ``variant``, cat/collar from CollarColor, red when
+    # absent: DEFAULT_COLLAR_COLOR), Sheep.get (sheep/color from Color, DyeColor's legacy ids),
+    # Fox.get (fox/variant from Type), Villager.get (villager/variant: VillagerData.type)
+    state = WorldState(version=(1, 21, 5))
+    props = lambda c: {"condition": "entity_properties", "entity": "this", "predicate": {"components": c}}  # noqa: E731
+    cat = state.entities.summon("minecraft:cat", (0.0, 0.0, 0.0), Compound(variant=String("minecraft:black")))
+    this = ctx(state, this=cat)
+    assert holds(props({"minecraft:cat/variant": "black"}), this)
+    assert holds(props({"cat/variant": "minecraft:black", "cat/collar": "red"}), this)
+    assert not holds(props({"cat/variant": "minecraft:tabby"}), this)
+    assert not holds(props({"wolf/variant": "minecraft:pale"}), this)  # a cat has no wolf variant
+    sheep = state.entities.summon("minecraft:sheep", (0.0, 0.0, 0.0), Compound(Color=Byte(14)))
+    assert holds(props({"sheep/color": "red"}), ctx(state, this=sheep))
+    fox = state.entities.summon("minecraft:fox", (0.0, 0.0, 0.0), Compound(Type=String("snow")))
+    assert holds(props({"fox/variant": "snow"}), ctx(state, this=fox))
+    villager = state.entities.summon("minecraft:villager", (0.0, 0.0, 0.0), Compound(VillagerData=Compound(
+        type=String("minecraft:desert"), profession=String("minecraft:none"), level=Int(1))))
+    assert holds(props({"villager/variant": "desert"}), ctx(state, this=villager))
+    # a variant the spawn picked (summoned without it: Mob.finalizeSpawn), or a component the
+    # emulator does not read, is not modelled
+    stray = state.entities.summon("minecraft:cat", (0.0, 0.0, 0.0))
+    with pytest.raises(Unmodelled, match="finalizeSpawn"):
+        holds(props({"cat/variant": "black"}), ctx(state, this=stray))
+    with pytest.raises(Unmodelled, match="custom_name"):
+        holds(props({"custom_name": "Tom"}), this)
+    # before 1.21.5 the entity predicate has no components field: ignored
+    assert holds(props({"cat/variant": "minecraft:tabby"}), ctx(WorldState(version=(1, 21, 4)), this=cat))
