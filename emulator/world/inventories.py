@@ -306,9 +306,12 @@ def normalise_items(data: Compound) -> None:
 
 def default_block_entity(block_id: str) -> Compound | None:
     """What a container saves when placed empty (ContainerHelper.saveAllItems always writes Items;
-    a single-item container writes its item only when it has one)."""
+    a single-item container writes its item only when it has one; a crafter its crafting ticks
+    left and whether it is triggered too)."""
     if block_id in SINGLE_ITEM_BLOCKS:
         return Compound()
+    if block_id == "minecraft:crafter":  # CrafterBlockEntity.saveAdditional
+        return Compound(crafting_ticks_remaining=Int(0), Items=List(), triggered=Int(0))
     return Compound(Items=List()) if block_id in CONTAINER_SIZES else None
 
 

@@ -21,3 +21,6 @@ setblock ~1 ~1 ~ air
 assert block ~1 ~ ~ minecraft:crafter[triggered=false]
 setblock ~1 ~1 ~ minecraft:redstone_block
 await items block ~1 ~ ~ container.8 minecraft:stick[count=1]
+# what the crafter saves (CrafterBlockEntity.saveAdditional)
+setblock ~1 ~2 ~ minecraft:crafter
+assert data block ~1 ~2 ~ {crafting_ticks_remaining:0,triggered:0,Items:[]}
