@@ -17,6 +17,9 @@ from mcfunction_parser.snbt import compound as parse_compound
 from .entities import world_source
 from emulator.world.errors import CommandFailure
 
+# the blocks that read their neighbours' signal when a neighbour changes
+NEIGHBOUR_READERS = command_blocks.COMMAND_BLOCKS | {crafters.CRAFTER}
+
 
 def block_argument(env, text: str) -> BlockSpec:
     try:
@@ -70,10 +73,10 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
         in_tag = block_tag_test(env)
         block_filter = lambda pos: blocks.test(pos, kept, in_tag)  # noqa: E731 - FillCommand's filter
     count = blocks.fill(positions[0], positions[1], spec, mode, block_filter)
-    if spec.id in command_blocks.COMMAND_BLOCKS or blocks.has_any(command_blocks.COMMAND_BLOCKS):
-        command_blocks.after_change(env.state, ctx.dimension, box_positions(positions[0], positions[1]))
-    if blocks.has_any((crafters.CRAFTER,)):
-        crafters.after_change(env.state, ctx.dimension, box_positions(positions[0], positions[1]))
+    if spec.id in NEIGHBOUR_READERS or blocks.has_any(NEIGHBOUR_READERS):  # one look over the level's blocks
+        changed = box_positions(positions[0], positions[1])
+        command_blocks.after_change(env.state, ctx.dimension, changed)
+        crafters.after_change(env.state, ctx.dimension, changed)
     return count
 
 
