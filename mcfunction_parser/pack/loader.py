@@ -542,8 +542,7 @@ def _load_recipes(packs: list[_PackFiles], result: LoadedPacks, jar) -> None:
     """Recipes (``data/<ns>/recipe``, ``recipes`` before 1.21): the game's own from its jar first,
     then the packs' (a later pack's file replaces an earlier one). A recipe that does not decode
     (:func:`mcfunction_parser.pack.recipes.check_recipe`) is refused, as RecipeManager skips it:
-    the id of one without a ``type`` is not loaded; one whose other fields fail keeps its id and
-    type (``recipe`` still names it) and has no body to craft with."""
+    it does not exist (``recipe give`` fails on it, it crafts nothing)."""
     if jar is not None:
         root, name = jar
         for path in _jar_files(root, ("recipe", "recipes")):
@@ -558,7 +557,8 @@ def _load_recipes(packs: list[_PackFiles], result: LoadedPacks, jar) -> None:
         if not isinstance(kind, str):
             result.diagnostics.append(doc.diagnostic(ERROR, f"recipe {recipe_id}: missing the string 'type'", 0))
             continue
-        result.recipes[recipe_id] = normalise_id(kind)
+        result.recipes.pop(recipe_id, None)  # a pack's file replaces the jar's, even one that fails
         result.recipe_bodies.pop(recipe_id, None)
         if recipe_files.check_recipe(doc, result.version, recipe_id, result.diagnostics):
+            result.recipes[recipe_id] = normalise_id(kind)
             result.recipe_bodies[recipe_id] = doc.value
