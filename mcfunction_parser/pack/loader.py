@@ -26,6 +26,7 @@ from mcfunction_parser.diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
 from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_pack_meta
 from mcfunction_parser.pack.parallel import FunctionFile, parse_files
 from mcfunction_parser.pack import loot
+from mcfunction_parser.pack import dimensions as dimension_files
 from mcfunction_parser.pack import recipes as recipe_files
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
 from mcfunction_parser import gamedata
@@ -492,11 +493,16 @@ def _load_predicates(packs: list[_PackFiles], result: LoadedPacks) -> None:
 
 
 def _load_dimensions(packs: list[_PackFiles], result: LoadedPacks) -> None:
-    """The packs' dimensions and dimension types (worldgen registries: only what the emulator reads
-    of them, the ids and the types' coordinate scale)."""
-    for kind, loaded in (("dimension", result.dimensions), ("dimension_type", result.dimension_types)):
-        for resource_id, doc in _chosen_json(packs, (kind, kind), result):
-            loaded[resource_id] = doc.value
+    """The packs' dimension types, then dimensions (worldgen registries: only what the emulator
+    reads of them, the ids and the types' coordinate scale, checked by :mod:`.dimensions`; a file
+    that fails is left out)."""
+    for type_id, doc in _chosen_json(packs, ("dimension_type", "dimension_type"), result):
+        if dimension_files.check_dimension_type(doc, f"dimension type {type_id}", result.diagnostics):
+            result.dimension_types[type_id] = doc.value
+    for dimension_id, doc in _chosen_json(packs, ("dimension", "dimension"), result):
+        if dimension_files.check_dimension(doc, f"dimension {dimension_id}", result.dimension_types,
+                                           result.diagnostics):
+            result.dimensions[dimension_id] = doc.value
 
 
 def _load_clocks(packs: list[_PackFiles], result: LoadedPacks) -> None:

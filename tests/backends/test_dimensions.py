@@ -216,14 +216,17 @@ def test_an_unknown_dimension_fails_the_command(tmp_path):
     assert (score(emu, "#unless_ok"), score(emu, "#ok")) == (0, 1)
 
 
+FLAT = {"type": "minecraft:flat", "settings": {"layers": [], "biome": "minecraft:plains"}}
+
+
 def test_custom_dimensions_from_the_pack(tmp_path):
     # data/<ns>/dimension/ declares levels; its dimension type's coordinate_scale scales `in`
     # (CommandSourceStack.withLevel: x * from / to)
     root = pack(tmp_path, "execute positioned 8 0 16 in t:deep run summon marker ~ ~ ~ {Tags:[\"d\"]}\n"
                           "execute in t:flat if dimension t:flat run scoreboard players set #flat v 1\n")
-    for name, body in (("dimension/deep", {"type": "t:deep_type", "generator": {}}),
+    for name, body in (("dimension/deep", {"type": "t:deep_type", "generator": FLAT}),
                        ("dimension_type/deep_type", {"coordinate_scale": 4.0}),
-                       ("dimension/flat", {"type": "minecraft:overworld", "generator": {}})):
+                       ("dimension/flat", {"type": "minecraft:overworld", "generator": FLAT})):
         (root / "data/t" / f"{name}.json").parent.mkdir(parents=True, exist_ok=True)
         (root / "data/t" / f"{name}.json").write_text(json.dumps(body))
     emu = run_both(root)
