@@ -31,8 +31,6 @@ world/Container.getMaxStackSize (99), advancements/critereon/RecipeCraftedTrigge
 """
 from __future__ import annotations
 
-import weakref
-
 from emulator.world import advancements, command_blocks, crafting, inventories, predicates
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
@@ -46,8 +44,6 @@ CONTAINER_MAX = 99  # Container.getMaxStackSize
 _STEPS = {"down": (0, -1, 0), "up": (0, 1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
           "east": (1, 0, 0)}
 _PLAIN_CONTAINERS = frozenset(f"minecraft:{n}" for n in "chest trapped_chest barrel hopper dispenser dropper".split())
-# each level's crafters still crafting: BlockMap -> {pos: ticks left}
-_CRAFTING: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
 def _properties(block) -> dict[str, str]:
@@ -101,7 +97,7 @@ def _craft(level, pos) -> None:
     if crafted is None or crafted.result.is_empty:
         return
     nbt["crafting_ticks_remaining"] = Int(CRAFTING_TICKS)
-    _CRAFTING.setdefault(level.blocks, {})[tuple(pos)] = CRAFTING_TICKS
+    _world(level).crafting[(_dimension(level), tuple(pos))] = CRAFTING_TICKS
     level.blocks.set_state(pos, _with(level.blocks.get(pos), crafting="true"))
     for stack in [crafted.result] + [r for r in crafted.remainders if not r.is_empty]:
         _dispense(level, pos, stack, crafted.recipe_id, grid)
@@ -235,22 +231,22 @@ def _recipe_crafted_matches(conditions: dict, ctx, recipe_id: str, grid: list[It
 
 
 def tick_is_idle(state) -> bool:
-    return not any(_CRAFTING.values())
+    return not state.crafting
 
 
 def tick_crafting(state) -> None:
     """CrafterBlockEntity.serverTick: ``crafting_ticks_remaining`` counts down; at 0 the crafter
     stops ``crafting``."""
-    for blocks, counting in list(_CRAFTING.items()):
-        for pos, left in list(counting.items()):
-            nbt = blocks.entity(pos)
-            if blocks.get(pos).id != CRAFTER or nbt is None:
-                del counting[pos]
-                continue
-            left -= 1
-            nbt["crafting_ticks_remaining"] = Int(left)
-            if left > 0:
-                counting[pos] = left
-                continue
-            del counting[pos]
-            blocks.set_state(pos, _with(blocks.get(pos), crafting="false"))
+    for (dimension, pos), left in list(state.crafting.items()):
+        blocks = state.blocks_in(dimension)
+        nbt = blocks.entity(pos)
+        if blocks.get(pos).id != CRAFTER or nbt is None:
+            del state.crafting[(dimension, pos)]
+            continue
+        left -= 1
+        nbt["crafting_ticks_remaining"] = Int(left)
+        if left > 0:
+            state.crafting[(dimension, pos)] = left
+            continue
+        del state.crafting[(dimension, pos)]
+        blocks.set_state(pos, _with(blocks.get(pos), crafting="false"))
