@@ -155,7 +155,12 @@ def test_loot_that_does_not_fit_is_thrown_to_the_player(tmp_path, backend):
 def _recipe(root, name: str, kind: str = "minecraft:crafting_shapeless") -> None:
     file = root / "data" / "t" / "recipe" / f"{name}.json"
     file.parent.mkdir(parents=True, exist_ok=True)
-    file.write_text(json.dumps({"type": kind, "ingredients": ["minecraft:stick"], "result": {"id": "minecraft:stick"}}))
+    body = {"type": kind}  # a special recipe has no other field; crafting ones as 1.21 writes them
+    if kind == "minecraft:crafting_shapeless":
+        body.update(ingredients=[{"item": "minecraft:stick"}], result={"id": "minecraft:stick"})
+    elif kind == "minecraft:crafting_shaped":
+        body.update(pattern=["#"], key={"#": {"item": "minecraft:stick"}}, result={"id": "minecraft:stick"})
+    file.write_text(json.dumps(body))
 
 
 @pytest.mark.parametrize("backend", BACKENDS)

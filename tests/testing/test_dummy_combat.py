@@ -90,7 +90,7 @@ def test_the_recipe_book_outlives_death(tmp_path):
         "kill Alex\n"
         "dummy Alex respawn\n"
         "assert entity @a[name=Alex,nbt={recipeBook:{recipes:['demo:wand']}}]\n"), files={
-        "demo/recipe/wand.json": recipe})
+        "demo/recipe/wand.json": recipe}, pack_format=61)  # the ingredient as an id: 1.21.2+
     assert result.status == "passed", result.report()
 
 
