@@ -5,13 +5,13 @@ What compiles to VM instructions: scoreboard ``players`` commands on named holde
 change: :func:`_order_free`), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
 ``@e @a @s @p @n @r`` with type, any number of tags, scores, name, team, gamemode, level, rotations,
 positions, volumes, distance, limit and sort), ``tag SEL add|remove``, ``enable``; ``if|unless score`` on named holders and
-``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as SEL``
-and ``positioned X Y Z`` (the VM makes their contexts), ``tp [SEL] X Y Z`` (``~`` and ``^`` too),
+``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as|facing entity SEL``
+and ``positioned|facing X Y Z``, ``rotated``, ``anchored``, ``align`` (the VM makes their contexts), ``tp [SEL] X Y Z`` (``~`` and ``^`` too),
 ``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
 ``if|unless function``, function calls and tags, every ``return`` form, and macro calls
 (instantiated by Python on first use). Everything else is a host op run by Python: a final command
 (``OP_HOST``: ``say``, ``schedule``, selectors ...), an execute stage (``OP_HOSTSTAGE``: ``in``,
-``rotated``, ``facing``, ``if data`` ...; it sets the context the rest of the chain runs in, through
+``on``, ``if data`` ...; it sets the context the rest of the chain runs in, through
 :mod:`emulator.vm.host` and :mod:`emulator.commands.stages`) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
 
 Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.opcodes`)::
@@ -39,7 +39,7 @@ from emulator.vm.program import HostOp, MacroCall, Program
 from emulator.vm.storage_leaves import STORE_TYPES, key_path, number_code
 from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
-    Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAlign, ExAnchored, ExAs, ExAt, ExFacingEntity, ExRotated, Execute, ExOn, ExPositioned, ExPositionedAs,
+    Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAlign, ExAnchored, ExAs, ExAt, ExFacing, ExFacingEntity, ExRotated, Execute, ExOn, ExPositioned, ExPositionedAs,
     ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
     PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
     StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec2, Vec3, Coord, Wildcard,
@@ -201,9 +201,12 @@ class Compiler:
                 self.emit(vm.OP_IFDIM, self.program.levels.ids[st.dimension], 0, 0, 0, 0, int(st.negated), int(last))
             elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
-            elif isinstance(st, ExPositioned) and not last:
+            elif isinstance(st, ExFacingEntity) and not last and (sel := self.selector(st.targets)) is not None:
+                self.emit(vm.OP_ASSTAGE, sel, int(forked), vm.FACING_EYES if st.anchor == "eyes" else vm.FACING_FEET)
+            elif isinstance(st, (ExPositioned, ExFacing)) and not last:
                 first, flags = self.coordinates(st.pos)
-                self.emit(vm.OP_CTXSTAGE, vm.CTX_POSITIONED, flags, first)
+                self.emit(vm.OP_CTXSTAGE, vm.CTX_POSITIONED if isinstance(st, ExPositioned) else vm.CTX_FACING, flags,
+                          first)
             elif isinstance(st, ExRotated) and not last and "local" not in (st.rot.x.kind, st.rot.y.kind):
                 first = self.program.next_float
                 self.emit(vm.OP_CTXSTAGE, vm.CTX_ROTATED, self.angles(st.rot), first)

@@ -180,12 +180,14 @@ OP_MACRO = 48  # [free] a: macro call index. Python instantiates, sets regs[R_CA
 OP_HOSTSTAGE = 49  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 50  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
 OP_ASSTAGE = 51  # [stage] a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned
-# as, rotated as). One context per entity found, made by the VM (or one it made earlier in the root that still holds:
-# as_cache); ST_GROWCTX when the context table or the fork stack is full
-OP_CTXSTAGE = 52  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its operand (flags as
-# OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; ANCHOR_*; the axes' bits), c: x or the yaw (index into
-# floats; the rest follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, `anchored eyes|feet`,
-# `align AXES`: the context changed so (made by the VM, or one it made before from the same context and pc)
+# as, rotated as; then FACING_FEET, FACING_EYES: `facing entity SEL feet|eyes`). One context per entity found, made by
+# the VM (or one it made earlier in the root that still holds: as_cache); ST_GROWCTX when the context table or the
+# fork stack is full
+OP_CTXSTAGE = 52  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
+# (flags as OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; ANCHOR_*; the axes' bits), c: x or the yaw
+# (index into floats; the rest follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, `anchored
+# eyes|feet`, `align AXES`, `facing X Y Z` (from the anchor): the context changed so (made by the VM, or one it made
+# before from the same context and pc)
 OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
 # TYPE S`: fails without an executor) or a STORELEAF
 OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
@@ -301,7 +303,9 @@ TP_LOCAL, TP_SELF = 8, 16
 # OP_TP's rotation (`tp SEL POS YAW PITCH`, the angles after x y z in floats) and its relative (`~`) angles
 TP_ROT, TP_REL_YAW, TP_REL_PITCH = 32, 64, 128
 # OP_CTXSTAGE's kinds
-CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN = range(4)
+CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING = range(5)
+# OP_ASSTAGE's kinds after commands.entities.ENTITY_CONTEXT_STAGES' four: `facing entity SEL feet|eyes`
+FACING_FEET, FACING_EYES = 4, 5
 # storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty, exists], lvalues[leaf] = the number;
 # type 0: no byte, short, int, float or double there
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
@@ -624,13 +628,21 @@ def _copy_row(rows, to, row):
 @njit(cache=True)
 def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_cache, root):
     """The context stage ``kind`` (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as,
-    rotated as) makes from context ``ctx`` for entity ``slot`` (entity_stage_context): one made
+    rotated as; then FACING_FEET, FACING_EYES: stages._facing_entity) makes from context ``ctx`` for
+    entity ``slot`` (entity_stage_context): one made
     before in this root if it still holds (the entity may have moved since), else a new row
     ``nctx``. Returns (the context, the rows used)."""
     row = as_cache_row(ctx, slot, kind)
     made = as_cache[row, 3]
+    yaw = pitch = 0.0
+    if kind >= FACING_FEET:  # the rotation from the context's anchor to the entity's feet or eyes
+        up = efloats[slot, EF_EYE] if kind == FACING_EYES else 0.0
+        yaw, pitch = _facing_from(ctx, efloats[slot, EF_X], efloats[slot, EF_Y] + up, efloats[slot, EF_Z], cints,
+                                  cfloats, efloats)
     if as_cache[row, 4] == root and as_cache[row, 0] == ctx and as_cache[row, 1] == slot and as_cache[row, 2] == kind:
         same = True
+        if kind >= FACING_FEET and (cfloats[made, CF_YAW] != yaw or cfloats[made, CF_PITCH] != pitch):
+            same = False
         if kind == 1 or kind == 2:
             for axis in range(3):
                 if cfloats[made, CF_X + axis] != efloats[slot, EF_X + axis]:
@@ -655,6 +667,9 @@ def _entity_context(kind, ctx, slot, cints, cfloats, nctx, eints, efloats, as_ca
         cfloats[nctx, CF_PITCH] = efloats[slot, EF_PITCH]
     if kind == 1:  # at: the level
         cints[nctx, CI_DIM] = eints[slot, EI_DIM]
+    if kind >= FACING_FEET:
+        cfloats[nctx, CF_YAW] = yaw
+        cfloats[nctx, CF_PITCH] = pitch
     as_cache[row, 0] = ctx
     as_cache[row, 1] = slot
     as_cache[row, 2] = kind
@@ -697,11 +712,31 @@ def _jittable(fn):
     overload(fn)(typing)
 
 
-for _fn in (java_random.next_bits, java_random.next_int, semantics.double_to_int, semantics.double_to_short, semantics.double_to_byte, mth.java_float_rem, mth._table_index, mth.sin_of, mth.cos_of):
+@intrinsic
+def _raw_bits(typingctx, x):
+    """``Double.doubleToRawLongBits``: the double's bits as a long (``mth._bits``)."""
+    def codegen(context, builder, signature, args):
+        return builder.bitcast(args[0], context.get_value_type(types.int64))
+    return types.int64(types.float64), codegen
+
+
+@intrinsic
+def _from_raw_bits(typingctx, bits):
+    """``Double.longBitsToDouble`` (``mth._from_bits``)."""
+    def codegen(context, builder, signature, args):
+        return builder.bitcast(args[0], context.get_value_type(types.float64))
+    return types.float64(types.int64), codegen
+
+
+overload(mth._bits)(lambda x: lambda x: _raw_bits(np.float64(x)))
+overload(mth._from_bits)(lambda bits: lambda bits: _from_raw_bits(np.int64(bits)))
+for _fn in (java_random.next_bits, java_random.next_int, semantics.double_to_int, semantics.double_to_short, semantics.double_to_byte, mth.java_float_rem, mth._table_index, mth.sin_of, mth.cos_of,
+            mth.wrap_degrees_f, mth.fast_inv_sqrt, mth.atan2):
     _jittable(_fn)
 _wrap_degrees_f = njit(cache=True)(mth.wrap_degrees_f)
 _clamp_f = njit(cache=True)(mth.clamp_f)
 _local_offset = njit(cache=True)(rotation.local_offset)
+_facing_angles = njit(cache=True)(rotation.facing_angles)
 
 
 @njit(cache=True)
@@ -735,9 +770,19 @@ def _angle(value, base, relative):
 
 
 @njit(cache=True)
+def _facing_from(ctx, tx, ty, tz, cints, cfloats, efloats):
+    """``Source.facing_position``: the rotation (as doubles) looking from context ``ctx``'s anchor (its
+    position, raised by the executor's eye height when anchored at the eyes) at ``(tx, ty, tz)``."""
+    e = cints[ctx, CI_ENTITY]
+    up = efloats[e, EF_EYE] if cints[ctx, CI_ANCHOR] == ANCHOR_EYES and e >= 0 else 0.0
+    yaw, pitch = _facing_angles(tx - cfloats[ctx, CF_X], ty - (cfloats[ctx, CF_Y] + up), tz - cfloats[ctx, CF_Z])
+    return np.float64(yaw), np.float64(pitch)
+
+
+@njit(cache=True)
 def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, efloats, nctx, as_cache, root):
     """The context OP_CTXSTAGE ``kind`` at ``pc`` makes from ``ctx`` (stages._positioned, _rotated_by,
-    _anchored, _aligned): the one made there before in this root if it is the same. Returns (it,
+    _anchored, _aligned, _facing): the one made there before in this root if it is the same. Returns (it,
     the rows used)."""
     row = as_cache_row(ctx, -1 - pc, 0)
     made = as_cache[row, 3]
@@ -752,6 +797,9 @@ def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, eflo
         pitch = np.float64(_angle(floats[first + 1], pitch, operand & 2))
     elif kind == CTX_ANCHORED:
         anchor = operand
+    elif kind == CTX_FACING:  # stages._facing: the anchor and position kept
+        tx, ty, tz = _destination(operand, first, ctx, floats, cints, cfloats, efloats)
+        yaw, pitch = _facing_from(ctx, tx, ty, tz, cints, cfloats, efloats)
     else:
         x = np.floor(x) if operand & 1 else x
         y = np.floor(y) if operand & 2 else y

@@ -169,14 +169,15 @@ _ROWS = [
                                        "R_CTX"),
     *_single("HOSTSTORE", "x", FREE, "a: host op index. `store ... storage|entity|block|bossbar`, after the result"),
     *_single("ASSTAGE", "sbb", STAGE, "a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: "
-                                      "as, at, positioned as, rotated as). One context per entity found, made by "
+                                      "as, at, positioned as, rotated as; then FACING_FEET, FACING_EYES: `facing "
+                                      "entity SEL feet|eyes`). One context per entity found, made by "
                                       "the VM (or one it made earlier in the root that still holds: as_cache); "
                                       "ST_GROWCTX when the context table or the fork stack is full"),
-    *_single("CTXSTAGE", "iid", STAGE, "a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN), b: its "
+    *_single("CTXSTAGE", "iid", STAGE, "a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its "
                                        "operand (flags as OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; "
                                        "ANCHOR_*; the axes' bits), c: x or the yaw (index into floats; the rest "
                                        "follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, "
-                                       "`anchored eyes|feet`, `align AXES`: the context changed so (made by the VM, or "
+                                       "`anchored eyes|feet`, `align AXES`, `facing X Y Z` (from the anchor): the context changed so (made by the VM, or "
                                        "one it made before from the same context and pc)"),
     *_single("FIELDSTAGE", "bb", STAGE, "a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... "
                                         "entity @s PATH TYPE S`: fails without an executor) or a STORELEAF"),

@@ -154,11 +154,15 @@ def fast_inv_sqrt(x: float) -> float:
 
 
 _FRAC_BIAS = _from_bits(4805340802404319232)
+# the tables as arrays: numba freezes a global array into the VM's code (a tuple would be indexed through a switch)
+_ASIN = np.array(ASIN_TAB)
+_COS = np.array(COS_TAB)
 _ONE_SIXTH = 0.16666666666666666
 
 
 def atan2(y: float, x: float) -> float:
-    """``Mth.atan2(double y, double x)``: table lookup plus a cubic correction, in double."""
+    """``Mth.atan2(double y, double x)``: table lookup plus a cubic correction, in double (the numba
+    VM compiles it as is, with ``_bits``/``_from_bits`` as raw bit casts)."""
     d0 = x * x + y * y
     if math.isnan(d0):
         return math.nan
@@ -178,8 +182,8 @@ def atan2(y: float, x: float) -> float:
     index = ((_bits(biased) & 0xFFFFFFFF) + 2**31) % 2**32 - 2**31  # (int) of the raw long bits
     if not 0 <= index <= 256:
         return math.nan  # only reachable with infinite input, where the game itself throws
-    correction = y * COS_TAB[index] - x * (biased - _FRAC_BIAS)
-    angle = ASIN_TAB[index] + (6.0 + correction * correction) * correction * _ONE_SIXTH
+    correction = y * float(_COS[index]) - x * (biased - _FRAC_BIAS)
+    angle = float(_ASIN[index]) + (6.0 + correction * correction) * correction * _ONE_SIXTH
     if steep:
         angle = math.pi / 2 - angle
     if negative_x:

@@ -10,7 +10,8 @@ Public functions
 - ``local_to_world(origin, yaw, pitch, left, up, forwards)``: ``^left ^up ^forwards`` from an
   origin (the execution position with its anchor applied), ``LocalCoordinates.getPosition``.
 - ``facing_rotation(origin, target)``: the ``(yaw, pitch)`` that looks from ``origin`` at
-  ``target``; ``execute facing``, ``tp ... facing`` and ``Entity.lookAt`` all use this formula.
+  ``target``; ``execute facing``, ``tp ... facing`` and ``Entity.lookAt`` all use this formula
+  (``facing_angles`` of the offset, the form the numba VM compiles).
 - ``relative_rotation(base_yaw, base_pitch, yaw_coord, pitch_coord)``: a rotation argument
   (``~10 ~``) resolved against the execution rotation: ``(float)(value + (double)base)``.
 - ``load_rotation(current, loaded)``: what loading ``Rotation`` NBT leaves (finite values, ``% 360``).
@@ -96,11 +97,20 @@ def facing_rotation(origin, target, float_horizontal: bool = False) -> tuple[np.
     horizontal distance to float (``Mth.sqrt``); 1.18+ use ``Math.sqrt``.
     """
     dx, dy, dz = (t - o for t, o in zip(target, origin))
-    horizontal = math.sqrt(dx * dx + dz * dz)
     if float_horizontal:
-        horizontal = float(mth.f32(horizontal))
-    pitch = mth.wrap_degrees_f(mth.f32(-(mth.atan2(dy, horizontal) * _RAD_TO_DEG_D)))
-    yaw = mth.wrap_degrees_f(mth.f32(mth.atan2(dz, dx) * _RAD_TO_DEG_D) - _RIGHT_ANGLE)
+        horizontal = float(mth.f32(math.sqrt(dx * dx + dz * dz)))
+        pitch = mth.wrap_degrees_f(mth.f32(-(mth.atan2(dy, horizontal) * _RAD_TO_DEG_D)))
+        return mth.wrap_degrees_f(mth.f32(mth.atan2(dz, dx) * _RAD_TO_DEG_D) - _RIGHT_ANGLE), pitch
+    return facing_angles(dx, dy, dz)
+
+
+def facing_angles(dx: float, dy: float, dz: float) -> tuple[np.float32, np.float32]:
+    """``facing_rotation`` of the offset ``(dx, dy, dz)`` (1.18+: the horizontal distance in double;
+    scalars only: the numba VM compiles this function as is). Both angles are at most 180 degrees
+    before the cast, so the float casts cannot overflow."""
+    horizontal = math.sqrt(dx * dx + dz * dz)
+    pitch = mth.wrap_degrees_f(np.float32(-(mth.atan2(dy, horizontal) * _RAD_TO_DEG_D)))
+    yaw = mth.wrap_degrees_f(np.float32(mth.atan2(dz, dx) * _RAD_TO_DEG_D) - _RIGHT_ANGLE)
     return yaw, pitch
 
 

@@ -88,7 +88,11 @@ ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=
                     "at @e[tag=d] rotated ~ ~20 align y", "as @e[name=Bob]", "as @e[name=!Marker,tag=m]",
                     "as @e[y_rotation=135..-135]", "as @e[x_rotation=..10,y_rotation=-30..]", "as @e[team=]",
                     "as @e[team=!t,type=!marker]", "as @e[gamemode=!creative]", "as @a[level=1..]",
-                    "as @e[tag=m,sort=random,limit=2]", "at @e[sort=random]", "as @r")
+                    "as @e[tag=m,sort=random,limit=2]", "at @e[sort=random]", "as @r",
+                    "facing 1 -2 3", "as @e[tag=m] at @s facing ^1 ^ ^-2", "anchored eyes facing ~1 ~2 ~-3",
+                    "facing entity @e[tag=m] eyes", "as @e[tag=n] at @s facing entity @e[type=armor_stand] feet",
+                    "at @e[tag=d] anchored eyes facing entity @e[tag=!d,sort=nearest,limit=2] eyes",
+                    "facing entity @s feet")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]", "@e[tag=m,sort=random,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]",
                         "@e[sort=random,limit=2]")
@@ -135,7 +139,8 @@ ENTITY_COMMANDS = ("tag @s add a", "scoreboard players enable * t", "tag @s remo
                    "tp @s ~ ~ ~ ~180 ~", "tp @e[tag=n] 1 2 3 45 -100", "tp @e[tag=m] ~ ~ ~ ~-370.5 ~95",
                    "execute rotated as @e[tag=m] run tp @s ^ ^ ^1 ~ ~10", "tag @e[name=Bob,y_rotation=..90] add q",
                    "data merge entity @s {CustomName:'\"Bob\"'}", "scoreboard players add @e[x_rotation=-45..45] o 1",
-                   "tp @s ~ ~ ~ 1000000000000000000000000000000000000000 0")
+                   "tp @s ~ ~ ~ 1000000000000000000000000000000000000000 0",
+                   "execute facing 0 1 0 run tp @s ~ ~ ~ ~ ~", "execute at @s facing entity @e[tag=n] eyes run tp @s ~ ~ ~ ~ ~1")
 # t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
