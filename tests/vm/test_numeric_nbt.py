@@ -15,8 +15,7 @@ import numpy as np
 import pytest
 
 from emulator.world.entities import entity_nbt
-from mcfunction_parser.nbt import to_snbt
-from tests.vm.helpers import emulator_for
+from tests.vm.helpers import emulator_for, host_kinds, run_both
 
 SETUP = ("scoreboard objectives add o dummy\n"
          'summon item_display 0 0 0 {Tags:["d"],Rotation:[30f,10f],transformation:{translation:[0f,0.5f,0f],'
@@ -25,24 +24,7 @@ SETUP = ("scoreboard objectives add o dummy\n"
 
 
 def _run_both(tmp_path, body: str):
-    """t:main (SETUP first) on both backends; the numba emulator, after checking they agree."""
-    emus = {}
-    for backend in ("numba", "python"):
-        emu = emulator_for(tmp_path / backend, {"t:main": SETUP + body}, backend=backend)
-        emu.call("t:main")
-        emus[backend] = emu
-    numba, python = emus["numba"], emus["python"]
-    assert numba.scores() == python.scores()
-    assert [to_snbt(entity_nbt(e)) for e in numba.state.entities.entities] == \
-        [to_snbt(entity_nbt(e)) for e in python.state.entities.entities]
-    assert {k: to_snbt(v) for k, v in numba.state.storage.items()} == \
-        {k: to_snbt(v) for k, v in python.state.storage.items()}
-    assert [d.message for d in numba.diagnostics] == [d.message for d in python.diagnostics]
-    return numba
-
-
-def _host_commands(emu) -> list[str]:
-    return [type(run.node).__name__ for run in emu.backend.host_ops_run()]
+    return run_both(tmp_path, SETUP + body)
 
 
 def test_display_transformation_stores_and_reads_run_in_the_vm(tmp_path):
@@ -60,7 +42,7 @@ def test_display_transformation_stores_and_reads_run_in_the_vm(tmp_path):
     assert [emu.score(h, "o") for h in ("#s", "#t", "#r")] == [875, 5, -700]
     t = entity_nbt(emu.state.entities.entities[0])["transformation"]
     assert t["scale"] == [0.875, 0.25, 0.25] and t["left_rotation"][3] == float(np.float32(7 * -0.1))
-    assert sorted(_host_commands(emu)) == ["ObjectivesAdd", "Summon", "Summon"]  # the setup only
+    assert sorted(host_kinds(emu)) == ["ObjectivesAdd", "Summon", "Summon"]  # the setup only
 
 
 def test_rotation_and_motion_are_read_back_as_entity_load_reads_them(tmp_path):
@@ -78,7 +60,7 @@ def test_rotation_and_motion_are_read_back_as_entity_load_reads_them(tmp_path):
     assert emu.score("#m", "o") == 725
     marker = emu.state.entities.entities[1]
     assert marker.motion == (0.5, 0.725, 0.0) and float(marker.yaw) == 5.0 and float(marker.pitch) == 0.0
-    assert "Store" not in " ".join(_host_commands(emu))
+    assert "Store" not in " ".join(host_kinds(emu))
 
 
 @pytest.mark.parametrize("line", [
@@ -114,7 +96,7 @@ def test_storage_numbers_run_in_the_vm(tmp_path):
     emu = _run_both(tmp_path, body)
     assert [emu.score(h, "o") for h in ("#same", "#set", "#on", "#off", "#n", "#f", "#b", "#merged")] == [
         0, 1, 0, 1, -21, -70, 44, 1]
-    host = _host_commands(emu)
+    host = host_kinds(emu)
     # the three `set`s and the store into b that create their numbers, the merge
     assert host.count("DataModify") == 3 and host.count("DataMerge") == 1 and host.count("StoreData") == 1
     assert "IfData" not in host and "DataGet" not in host
@@ -137,7 +119,7 @@ def test_storage_paths_tested_in_the_vm(tmp_path):
     emu = _run_both(tmp_path, body)
     assert [emu.score(h, "o") for h in ("#ab", "#ac", "#a", "#ad", "#nx", "#bx", "#not", "#gone", "#ac2")] == [
         1, 1, 1, 0, 0, 0, 1, 0, 0]
-    host = _host_commands(emu)
+    host = host_kinds(emu)
     assert "IfData" not in host and host.count("DataRemove") == 1  # the VM reads the removal's result
 
 
@@ -167,7 +149,7 @@ def test_tp_with_a_rotation_runs_in_the_vm(tmp_path):
     # the last yaw is infinite: kept, its pitch 0
     assert (float(display.yaw), float(display.pitch)) == (169.5, 0.0)
     assert (float(marker.yaw), float(marker.pitch)) == (45.0, -80.0)  # -90 (clamped) + 10
-    assert not [n for n in _host_commands(emu) if n == "Teleport"]
+    assert not [n for n in host_kinds(emu) if n == "Teleport"]
 
 
 def test_rotated_anchored_and_align_stages_run_in_the_vm(tmp_path):
@@ -176,7 +158,7 @@ def test_rotated_anchored_and_align_stages_run_in_the_vm(tmp_path):
                               "execute as @e[tag=d] at @s anchored eyes positioned ^ ^ ^1 run tp @s ~ ~ ~\n"
                               "execute as @e[tag=m] at @s anchored eyes anchored feet rotated 90 0 run "
                               "tp @s ^ ^ ^2\n")
-    assert sorted(_host_commands(emu)) == ["ObjectivesAdd", "Summon", "Summon"]
+    assert sorted(host_kinds(emu)) == ["ObjectivesAdd", "Summon", "Summon"]
 
 
 def test_a_teleport_to_another_level_is_charged_once(tmp_path):

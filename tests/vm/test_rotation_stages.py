@@ -16,31 +16,13 @@ import numpy as np
 import pytest
 
 from emulator.vm import loop
-from emulator.world import mth, rotation
-from tests.vm.helpers import emulator_for
+from emulator.world import rotation
+from tests.vm.helpers import host_kinds, run_both
 
 SETUP = ("scoreboard objectives add o dummy\n"
          'summon marker 1 2 3 {Tags:["m"],Rotation:[10f,20f]}\n'
          'summon armor_stand -4 0.5 7 {Tags:["m","s"]}\n'
          'summon marker 0.3 -2 5.5 {Tags:["n"]}\n')
-
-
-def _run_both(tmp_path, body: str):
-    """t:main (SETUP first) on both backends; the numba emulator, after checking they agree."""
-    emus = {}
-    for backend in ("numba", "python"):
-        emu = emulator_for(tmp_path / backend, {"t:main": SETUP + body}, backend=backend)
-        emu.call("t:main")
-        emus[backend] = emu
-    numba, python = emus["numba"], emus["python"]
-    assert numba.entities() == python.entities()
-    assert numba.scores() == python.scores()
-    assert [d.message for d in numba.diagnostics] == [d.message for d in python.diagnostics]
-    return numba
-
-
-def _host_kinds(emu) -> set[str]:
-    return {type(run.node).__name__ for run in emu.backend.host_ops_run()}
 
 
 def _bits(x: float) -> int:
@@ -62,10 +44,10 @@ def test_the_compiled_atan2_is_the_python_one_bit_for_bit():
 
 def test_facing_a_position_turns_the_context(tmp_path):
     # from (0, 0, 0) to (1, 0, 1): yaw atan2(1, 1) - 90 = -45, pitch 0 (to the game's float)
-    emu = _run_both(tmp_path, "execute as @e[tag=n] positioned 0 0 0 facing 1 0 1 run tp @s ~ ~ ~ ~ ~\n")
+    emu = run_both(tmp_path, SETUP + "execute as @e[tag=n] positioned 0 0 0 facing 1 0 1 run tp @s ~ ~ ~ ~ ~\n")
     yaw, pitch = emu.entities("@e[tag=n]")[0]["rotation"]
     assert (round(yaw, 4), pitch) == (-45.0, 0.0)
-    assert not _host_kinds(emu) & {"ExFacing", "Teleport"}  # both ran in the VM
+    assert not set(host_kinds(emu)) & {"ExFacing", "Teleport"}  # both ran in the VM
 
 
 @pytest.mark.parametrize("chain", [
@@ -79,7 +61,7 @@ def test_facing_a_position_turns_the_context(tmp_path):
     "facing entity @e[tag=nobody] eyes",  # no entity: no context
 ])
 def test_facing_stages_run_in_the_vm(tmp_path, chain):
-    emu = _run_both(tmp_path, f'execute {chain} run summon marker ~ ~ ~ {{Tags:["f"]}}\n'
+    emu = run_both(tmp_path, SETUP + f'execute {chain} run summon marker ~ ~ ~ {{Tags:["f"]}}\n'
                               "execute as @e[tag=f] at @s run tp @s ~ ~ ~ ~ ~\n"
                               f"execute store result score #n o {chain} run scoreboard players add #c o 1\n")
-    assert not _host_kinds(emu) & {"ExFacing", "ExFacingEntity", "Teleport"}
+    assert not set(host_kinds(emu)) & {"ExFacing", "ExFacingEntity", "Teleport"}
