@@ -395,26 +395,40 @@ class Compiler:
         """The selector row of ``target`` when the VM evaluates it, else None."""
         return None if self.selectors is None else self.selectors.selector(target)
 
-    def teleport(self, cmd: Teleport) -> tuple[int, int, int] | None:
-        """(selector, first of x y z in floats, flags) of ``tp [SEL] X Y Z`` with world or local
-        coordinates and no rotation or facing; else None. Flags: the relative (``~``) axes' bits,
-        ``TP_LOCAL`` for ``^``, ``TP_SELF`` without targets (the executor, turned to the execution
-        rotation). Absolute integer x/z are centred (+0.5), as Vec3Argument's ``WorldCoordinate.get``
-        does (emulator.world.source)."""
-        dest = cmd.destination
-        if not isinstance(dest, Vec3) or cmd.facing is not None or cmd.facing_entity is not None:
+    def teleport(self, cmd: Teleport) -> tuple[int, ...] | None:
+        """OP_TP's operands (selector, first of x y z in floats, flags, kind, its operand) for ``tp
+        [SEL] X Y Z [YAW PITCH | facing X Y Z | facing entity E [ANCHOR]]`` and ``tp [SEL] E``; None
+        when the host runs it (a selector the VM does not evaluate, or a random one: the host runs
+        the command again for a target going to another level, which must draw once). Flags: the
+        relative (``~``) axes' bits, ``TP_LOCAL`` for ``^``, ``TP_SELF`` without targets (the
+        executor, turned to the execution rotation), ``TP_ROT`` and the relative angles. Kind:
+        TPF_POS (the facing position's flags, its x y z after the angles), TPF_FEET or TPF_EYES (the
+        faced entity's selector), TPF_ENTITY (the destination's selector, no floats). Absolute
+        integer x/z are centred (+0.5), as Vec3Argument's ``WorldCoordinate.get`` does
+        (emulator.world.source)."""
+        if any(shuffles(t) for t in (cmd.targets, cmd.facing_entity, cmd.destination)):
             return None
-        if cmd.targets is not None and shuffles(cmd.targets):
-            return None  # the host runs it again for a target going to another level: one draw only
-        sel = self.selector(Selector("s", (), dest.loc) if cmd.targets is None else cmd.targets)
+        sel = self.selector(Selector("s", (), cmd.loc) if cmd.targets is None else cmd.targets)
         if sel is None:
             return None
+        dest = cmd.destination
+        if not isinstance(dest, Vec3):
+            entity = self.selector(dest)
+            return None if entity is None else (sel, 0, 0, vm.TPF_ENTITY, entity)
+        kind, operand = 0, 0
+        if cmd.facing_entity is not None:
+            operand = self.selector(cmd.facing_entity)
+            if operand is None:
+                return None
+            kind = vm.TPF_EYES if cmd.facing_anchor == "eyes" else vm.TPF_FEET
         first, flags = self.coordinates(dest)
         rotation = self.angles(cmd.rotation or Vec2(Coord("abs", 0.0), Coord("abs", 0.0), dest.loc))
         flags |= (vm.TP_REL_YAW if rotation & 1 else 0) | (vm.TP_REL_PITCH if rotation & 2 else 0)
         if cmd.rotation is not None:
             flags |= vm.TP_ROT
-        return sel, first, flags | (vm.TP_SELF if cmd.targets is None else 0)
+        if cmd.facing is not None:
+            kind, operand = vm.TPF_POS, self.coordinates(cmd.facing)[1]
+        return sel, first, flags | (vm.TP_SELF if cmd.targets is None else 0), kind, operand
 
     def angles(self, rot: Vec2) -> int:
         """Intern a rotation's two angles (the next two floats); the bits of its relative ones."""

@@ -125,12 +125,14 @@ OP_SETLEAF = 15  # [entry] a: storage leaf (vm.storage_leaves), b: its number's 
 OP_GETLEAF = 16  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
 # [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host
 OP_TP = 17  # [entry] a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: flags (the
-# relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles TP_REL_YAW, TP_REL_PITCH). `tp [SEL] X Y
-# Z [YAW PITCH]`: every target to the same position (the execution position plus the relative parts, or ^ from its
-# anchor), each keeping its rotation (TP_SELF: the execution rotation; TP_ROT: the given one, `~` from the execution
-# rotation; wrapped, the pitch clamped) and losing its vertical motion; outside the spawnable bounds the command
-# fails. Always followed by the command's HOST, which runs it instead when a target goes to another level (the
-# context's: the host moves it in the order); TP skips it otherwise
+# relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles TP_REL_YAW, TP_REL_PITCH), d: kind
+# (TPF_*), e: its operand. `tp [SEL] X Y Z [YAW PITCH | facing X Y Z | facing entity E [ANCHOR]]` and `tp [SEL] E`:
+# every target to the same position (the execution position plus the relative parts, ^ from its anchor, or E's), each
+# keeping its rotation (TP_SELF: the execution rotation; TP_ROT: the given one, `~` from the execution rotation; E's;
+# wrapped, the pitch clamped) or looking from its anchor at the position or entity faced, and losing its vertical
+# motion; outside the spawnable bounds, or E not exactly one entity, the command fails. Always followed by the
+# command's HOST, which runs it instead when a target goes to another level (the context's or E's: the host moves it
+# in the order); TP skips it otherwise
 OP_HOST = 18  # [entry] a: host op index. A final command run by Python (charged here, per context)
 OP_SELHOLDERS = 19  # [free] a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's target holder and
 # objective. The holders of the selector's entities for the next op's HOLDER_SELBUF operand: targets in
@@ -302,6 +304,10 @@ MAX_LOADED_MOTION = 10.0  # and drops motion components past this
 TP_LOCAL, TP_SELF = 8, 16
 # OP_TP's rotation (`tp SEL POS YAW PITCH`, the angles after x y z in floats) and its relative (`~`) angles
 TP_ROT, TP_REL_YAW, TP_REL_PITCH = 32, 64, 128
+# OP_TP's kinds (operand d; 0: a position, the rotation as the flags say): `facing X Y Z` (operand e:
+# its flags, its x y z after the angles in floats), `facing entity E feet|eyes` (e: E's selector), `tp
+# [SEL] E` (e: the destination's selector)
+TPF_POS, TPF_FEET, TPF_EYES, TPF_ENTITY = 1, 2, 3, 4
 # OP_CTXSTAGE's kinds
 CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING = range(5)
 # OP_ASSTAGE's kinds after commands.entities.ENTITY_CONTEXT_STAGES' four: `facing entity SEL feet|eyes`
@@ -821,6 +827,55 @@ def _changed_context(kind, operand, first, ctx, pc, cints, cfloats, floats, eflo
     as_cache[row, 3] = nctx
     as_cache[row, 4] = root
     return nctx, nctx + 1
+
+
+@njit(cache=True)
+def _teleport(ins, ctx, other, n, selbuf, floats, cints, cfloats, efloats):
+    """OP_TP ``ins`` (its row of code) moving the ``n`` entities ``selbuf[:n]`` in context ``ctx``
+    (``other``: the destination or the entity faced), as ``teleport.teleport`` does: nothing when
+    the destination is outside the spawnable bounds ("Invalid position for teleport"), else each
+    to the same position, its rotation wrapped and the pitch clamped (its own, TP_SELF's execution
+    rotation, TP_ROT's given one or the destination's), or looking from its anchor there at the
+    position or entity faced (``Entity.lookAt``), and its vertical motion 0."""
+    flags, k, kind = ins[3], ins[2], ins[4]
+    if kind == TPF_ENTITY:  # TeleportCommand.teleportToEntity: the destination's position and rotation
+        x, y, z = efloats[other, EF_X], efloats[other, EF_Y], efloats[other, EF_Z]
+        given_yaw, given_pitch = np.float32(efloats[other, EF_YAW]), np.float32(efloats[other, EF_PITCH])
+    else:
+        x, y, z = _destination(flags, k, ctx, floats, cints, cfloats, efloats)
+        given_yaw = _angle(floats[k + 3], cfloats[ctx, CF_YAW], flags & TP_REL_YAW)
+        given_pitch = _angle(floats[k + 4], cfloats[ctx, CF_PITCH], flags & TP_REL_PITCH)
+    if not _in_spawnable_bounds(x, y, z):
+        return
+    tx, ty, tz = x, y, z  # what a facing target looks at
+    if kind == TPF_POS:
+        tx, ty, tz = _destination(ins[5], k + 5, ctx, floats, cints, cfloats, efloats)
+    elif kind == TPF_FEET or kind == TPF_EYES:
+        tx, ty, tz = efloats[other, EF_X], efloats[other, EF_Y], efloats[other, EF_Z]
+        if kind == TPF_EYES:
+            ty += efloats[other, EF_EYE]
+    for i in range(n):
+        e = selbuf[i]
+        efloats[e, EF_X] = x
+        efloats[e, EF_Y] = y
+        efloats[e, EF_Z] = z
+        if TPF_POS <= kind <= TPF_EYES:  # from its own anchor (the execution anchor) at the new position
+            up = efloats[e, EF_EYE] if cints[ctx, CI_ANCHOR] == ANCHOR_EYES else 0.0
+            yaw, pitch = _facing_angles(tx - x, ty - (y + up), tz - z)
+        else:
+            if flags & TP_SELF:  # `tp POS`: turned to the execution rotation
+                yaw, pitch = np.float32(cfloats[ctx, CF_YAW]), np.float32(cfloats[ctx, CF_PITCH])
+            elif flags & TP_ROT or kind == TPF_ENTITY:  # the given angles (`~` from the execution rotation)
+                yaw, pitch = given_yaw, given_pitch
+            else:
+                yaw, pitch = np.float32(efloats[e, EF_YAW]), np.float32(efloats[e, EF_PITCH])
+            yaw = _wrap_degrees_f(yaw)  # rotation.teleport_rotation
+            pitch = _clamp_f(_wrap_degrees_f(pitch), -90.0, 90.0)
+        if np.isfinite(yaw):
+            efloats[e, EF_YAW] = yaw
+        if np.isfinite(pitch):
+            efloats[e, EF_PITCH] = pitch
+        efloats[e, EF_MY] = 0.0
 
 
 @njit(cache=True, inline="always")
@@ -1616,10 +1671,19 @@ def run(address, machine_type):
             elif op == OP_TP:
                 n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
                             efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
+                kind = code[pc, 4]
+                other = -1  # the destination or the entity faced: EntityArgument.getEntity wants exactly one
+                if kind >= TPF_FEET and n > 0:
+                    m = _select(code[pc, 5], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                                efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(selbuf.shape[0] >> 1))
+                    other = selbuf[selbuf.shape[0] >> 1]
+                    if m != 1:  # "No entity was found", "Only one entity is allowed": the command fails
+                        n = 0
                 pc += 1
+                dim = eints[other, EI_DIM] if kind == TPF_ENTITY and n > 0 else cints[ctx, CI_DIM]
                 crossing = False
                 for i in range(n):
-                    if eints[selbuf[i], EI_DIM] != cints[ctx, CI_DIM]:
+                    if eints[selbuf[i], EI_DIM] != dim:
                         crossing = True
                 if crossing:  # to another level: the HOST that follows runs the command and charges it
                     quota += 1
@@ -1627,33 +1691,12 @@ def run(address, machine_type):
                         counts[pc - 1] -= 1
                     continue
                 pc += 1
-                flags = code[pc - 2, 3]
-                x, y, z = _destination(flags, code[pc - 2, 2], ctx, floats, cints, cfloats, efloats)
-                given_yaw = _angle(floats[code[pc - 2, 2] + 3], cfloats[ctx, CF_YAW], flags & TP_REL_YAW)
-                given_pitch = _angle(floats[code[pc - 2, 2] + 4], cfloats[ctx, CF_PITCH], flags & TP_REL_PITCH)
                 has = 1
                 ok = 0
                 val = 0
-                if n == 0 or not _in_spawnable_bounds(x, y, z):  # "No entity was found", "Invalid position"
+                if n == 0:
                     continue
-                for i in range(n):  # teleport.apply: the position, its own rotation wrapped, no vertical motion
-                    e = selbuf[i]
-                    efloats[e, EF_X] = x
-                    efloats[e, EF_Y] = y
-                    efloats[e, EF_Z] = z
-                    if flags & TP_SELF:  # `tp POS`: turned to the execution rotation
-                        yaw, pitch = np.float32(cfloats[ctx, CF_YAW]), np.float32(cfloats[ctx, CF_PITCH])
-                    elif flags & TP_ROT:  # the given angles, `~` from the execution rotation
-                        yaw, pitch = given_yaw, given_pitch
-                    else:
-                        yaw, pitch = np.float32(efloats[e, EF_YAW]), np.float32(efloats[e, EF_PITCH])
-                    yaw = _wrap_degrees_f(yaw)  # rotation.teleport_rotation
-                    pitch = _clamp_f(_wrap_degrees_f(pitch), -90.0, 90.0)
-                    if np.isfinite(yaw):
-                        efloats[e, EF_YAW] = yaw
-                    if np.isfinite(pitch):
-                        efloats[e, EF_PITCH] = pitch
-                    efloats[e, EF_MY] = 0.0
+                _teleport(code[pc - 2], ctx, other, n, selbuf, floats, cints, cfloats, efloats)
                 ok = 1
                 val = n
             elif op == OP_GETFIELD:

@@ -92,15 +92,17 @@ _ROWS = [
                                    "goes to the host (which creates the path)"),
         ("GETLEAF", "idx", ENTRY, "a: storage leaf, b: scale (index into floats), c: host op index. `data get "
                                   "storage S P [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host"),
-        ("TP", "sdi", ENTRY, "a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: "
-                             "flags (the relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles "
-                             "TP_REL_YAW, TP_REL_PITCH). `tp [SEL] X Y Z [YAW PITCH]`: every target to the same "
-                             "position (the execution position plus the relative parts, or ^ from its anchor), each "
-                             "keeping its rotation (TP_SELF: the execution rotation; TP_ROT: the given one, `~` from "
-                             "the execution rotation; wrapped, the pitch clamped) and losing its vertical motion; "
-                             "outside the spawnable bounds the command fails. Always followed by the command's HOST, "
-                             "which runs it instead when a target goes to another level (the context's: the host "
-                             "moves it in the order); TP skips it otherwise"),
+        ("TP", "sdiii", ENTRY, "a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: "
+                               "flags (the relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles "
+                               "TP_REL_YAW, TP_REL_PITCH), d: kind (TPF_*), e: its operand. `tp [SEL] X Y Z [YAW "
+                               "PITCH | facing X Y Z | facing entity E [ANCHOR]]` and `tp [SEL] E`: every target to "
+                               "the same position (the execution position plus the relative parts, ^ from its anchor, "
+                               "or E's), each keeping its rotation (TP_SELF: the execution rotation; TP_ROT: the given "
+                               "one, `~` from the execution rotation; E's; wrapped, the pitch clamped) or looking "
+                               "from its anchor at the position or entity faced, and losing its vertical motion; "
+                               "outside the spawnable bounds, or E not exactly one entity, the command fails. Always "
+                               "followed by the command's HOST, which runs it instead when a target goes to another "
+                               "level (the context's or E's: the host moves it in the order); TP skips it otherwise"),
     ]),
     *_single("HOST", "x", ENTRY, "a: host op index. A final command run by Python (charged here, per context)"),
     *_single("SELHOLDERS", "sbii", FREE, "a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's "

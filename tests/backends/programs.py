@@ -140,7 +140,12 @@ ENTITY_COMMANDS = ("tag @s add a", "scoreboard players enable * t", "tag @s remo
                    "execute rotated as @e[tag=m] run tp @s ^ ^ ^1 ~ ~10", "tag @e[name=Bob,y_rotation=..90] add q",
                    "data merge entity @s {CustomName:'\"Bob\"'}", "scoreboard players add @e[x_rotation=-45..45] o 1",
                    "tp @s ~ ~ ~ 1000000000000000000000000000000000000000 0",
-                   "execute facing 0 1 0 run tp @s ~ ~ ~ ~ ~", "execute at @s facing entity @e[tag=n] eyes run tp @s ~ ~ ~ ~ ~1")
+                   "execute facing 0 1 0 run tp @s ~ ~ ~ ~ ~", "execute at @s facing entity @e[tag=n] eyes run tp @s ~ ~ ~ ~ ~1",
+                   "tp @e[tag=m] ~ ~1 ~ facing 0 0 0", "execute anchored eyes run tp @s ^ ^ ^1 facing ~1 ~ ~",
+                   "tp @e[tag=n] ~ ~ ~ facing entity @n[tag=m] eyes", "tp @s @n[type=armor_stand]",
+                   "tp @e[tag=m] @e[tag=n,limit=1]", "execute as @e[tag=nether] run tp @s @e[tag=m,limit=1,sort=nearest]",
+                   "tp @e[tag=a] ~ ~ ~ facing entity @e[tag=zz,limit=1] feet", "tp @s ~ ~ ~ facing entity @s feet",
+                   "tp @n[tag=d]")
 # t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 

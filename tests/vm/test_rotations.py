@@ -1,11 +1,14 @@
-"""Rotations the VM computes itself: ``execute facing X Y Z`` and ``facing entity SEL feet|eyes``
-(the game's table-based Mth.atan2, compiled from the same source the reference runs).
+"""Rotations the VM computes itself: ``execute facing X Y Z`` and ``facing entity SEL feet|eyes``,
+``tp ... facing`` (the game's table-based Mth.atan2, compiled from the same source the reference
+runs), and ``tp`` to an entity.
 
 Sources (decompiled 1.21): commands/CommandSourceStack.java (facing: from the anchor position,
 pitch = wrapDegrees((float) -(atan2(dy, horizontal) * 180/PI)), yaw = wrapDegrees((float)(atan2(dz,
 dx) * 180/PI) - 90)), commands/arguments/EntityAnchorArgument.java (Anchor.apply: feet, or the
 eyes), server/commands/ExecuteCommand.java (facing: a redirect; facing entity: a fork over the
-entities found), util/Mth.java (atan2, fastInvSqrt).
+entities found), util/Mth.java (atan2, fastInvSqrt), server/commands/TeleportCommand.java (teleportToEntity: the
+destination's position and rotation; LookAtPosition/LookAtEntity.perform: Entity.lookAt(the source's
+anchor, target) after the move), world/entity/Entity.java (lookAt: from the entity's own anchor).
 """
 from __future__ import annotations
 
@@ -65,3 +68,35 @@ def test_facing_stages_run_in_the_vm(tmp_path, chain):
                               "execute as @e[tag=f] at @s run tp @s ~ ~ ~ ~ ~\n"
                               f"execute store result score #n o {chain} run scoreboard players add #c o 1\n")
     assert not set(host_kinds(emu)) & {"ExFacing", "ExFacingEntity", "Teleport"}
+
+
+@pytest.mark.parametrize("line", [
+    "execute as @e[tag=m] at @s run tp @s ~1 ~ ~ facing 0 0 0",
+    "execute as @e[tag=n] at @s anchored eyes run tp @e[tag=m] ~ ~1 ~ facing entity @n[tag=n] eyes",
+    "tp @e[tag=m] 0 1 0 facing entity @n[tag=n] feet",
+    "execute anchored eyes run tp @e[type=armor_stand] ^ ^ ^1 facing ~1 ~ ~",  # from its own eyes
+    "tp @e[tag=n] @n[type=armor_stand]",  # its position and rotation
+    "execute as @e[tag=m] run tp @e[tag=n,limit=1]",
+    "tp @e[tag=m] ~ ~ ~ facing entity @e[tag=nobody,limit=1] eyes",  # no entity to face: fails
+    "tp @e[tag=n] @e[tag=nobody,limit=1]",
+    "tp @e[tag=n] @e[tag=m,sort=furthest,limit=1]",
+])
+def test_teleports_facing_or_to_an_entity_run_in_the_vm(tmp_path, line):
+    emu = run_both(tmp_path, SETUP + f"execute store result score #r o run {line}\n")
+    assert not set(host_kinds(emu)) & {"Teleport"}
+
+
+def test_a_teleport_facing_turns_each_target_from_its_own_anchor(tmp_path):
+    # two entities at the same place facing one point from their eyes: the armor stand's eyes are
+    # higher than the marker's (its eye height 1.7875, a marker's 0), so it looks down more
+    emu = run_both(tmp_path, SETUP + "execute anchored eyes run tp @e[tag=m] 0 0 0 facing 5 0 0\n")
+    (_, marker_pitch), (_, stand_pitch) = [e["rotation"] for e in emu.entities("@e[tag=m]")]
+    assert marker_pitch == 0.0 and stand_pitch > 19.0
+    assert not set(host_kinds(emu)) & {"Teleport"}
+
+
+def test_a_teleport_to_an_entity_in_another_level_runs_on_the_host(tmp_path):
+    emu = run_both(tmp_path, SETUP + 'execute in minecraft:the_nether run summon marker 0 0 0 {Tags:["x"]}\n'
+                                     "tp @e[tag=n] @n[tag=x]\n")
+    assert emu.entities("@e[tag=n]")[0]["dimension"] == "minecraft:the_nether"
+    assert "Teleport" in host_kinds(emu)
