@@ -87,13 +87,15 @@ def test_host_commands_are_listed_with_counts(demo):
     assert say and say[0]["count"] == 1 and say[0]["function"] == "demo:b" and say[0]["line"] == 2
 
 
-# a tick whose stores and teleport only Python can do: a store into an entity's Rotation (the VM
-# stores only Pos) is never charged, so only the backend's record of host runs can list it
+# a tick whose stores and teleport only Python can do: a store into an entity's Air (the VM stores
+# only the fields its table keeps) and a teleport facing a random entity; a store is never charged,
+# so only the backend's record of host runs can list it
 HOST_ONLY = {
     "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nsummon marker\nsummon marker\n",
     "demo/function/tick.mcfunction": "execute as @e[type=marker] store result entity @s Air short 1 "
                                      "run scoreboard players add $t o 1\n"
-                                     "execute as @e[type=marker] run tp @s ^ ^ ^1 facing 0 0 0\n",
+                                     "execute as @e[type=marker] run tp @s ^ ^ ^1 facing entity "
+                                     "@e[type=marker,sort=random,limit=1] feet\n",
 }
 
 
@@ -105,7 +107,7 @@ def test_host_run_stores_and_teleports_are_listed_with_their_runs(pack):
     store = by_kind[(1, "store")]
     assert store["count"] == 6 and store["function"] == "demo:tick" and store["path"].endswith("tick.mcfunction")
     assert store["command"].startswith("execute as @e[type=marker] store result entity @s Air")
-    assert by_kind[(2, "command")]["count"] == 6 and by_kind[(2, "command")]["command"].endswith("tp @s ^ ^ ^1 facing 0 0 0")
+    assert by_kind[(2, "command")]["count"] == 6 and by_kind[(2, "command")]["command"].endswith("limit=1] feet")
     assert not [h for h in host if h["function"] == "demo:init"]  # the load's summons are not listed
     table = profile(root, "--ticks", 3).output
     assert "host-executed commands (" in table
