@@ -449,7 +449,7 @@ class Compiler:
 
     # ------------------------------------------------------------------ storage numbers
     def leaf(self, target, path) -> int | None:
-        """The storage leaf of ``storage S a.b.c`` (compound keys only), else None."""
+        """The storage leaf of ``storage S a.b.c`` (compound keys and list indices: ``a.l[0]``), else None."""
         keys = key_path(path)
         if self.leaves is None or not isinstance(target, StorageData) or keys is None:
             return None

@@ -121,7 +121,7 @@ OP_GETFIELD = 14  # [entry] a: column of the entity floats (entity_table EF_*), 
 # host
 OP_SETLEAF = 15  # [entry] a: storage leaf (vm.storage_leaves), b: its number's type (LEAF_*), c: the number (index into
 # floats), d: host op index. `data modify storage S P set value N`: fails when the same number is there ("Nothing
-# changed"); no number there goes to the host (which creates the path)
+# changed"); no number there goes to the host (which creates the path), and so does a list's element of another type
 OP_GETLEAF = 16  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
 # [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host
 OP_TP = 17  # [entry] a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: flags (the
@@ -193,7 +193,8 @@ OP_CTXSTAGE = 52  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, 
 OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
 # TYPE S`: fails without an executor) or a STORELEAF
 OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
-# host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there goes to the host
+# host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there, or a list's element of
+# another type, goes to the host
 OP_IFRUN = 64  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
 # O matches LO..HI run CMD` where CMD is one instruction (a score command on names, a function call) and the chain has
 # no other stage: CMD's entry check and the condition stage in one (charged as the stage), then CMD, or the pc after
@@ -313,7 +314,7 @@ CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING = range(5)
 # OP_ASSTAGE's kinds after commands.entities.ENTITY_CONTEXT_STAGES' four: `facing entity SEL feet|eyes`
 FACING_FEET, FACING_EYES = 4, 5
 # storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty, exists], lvalues[leaf] = the number;
-# type 0: no byte, short, int, float or double there
+# type 0: no byte, short, int, float or double there; exists 2: a list's element (a number of its type only)
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
 
 
@@ -1714,8 +1715,8 @@ def run(address, machine_type):
                 pc += 1
             elif op == OP_SETLEAF:
                 leaf = code[pc, 1]
-                if lmeta[leaf, 0] == 0:  # no number there: the host's set creates the path or fails
-                    status = ST_HOST
+                if lmeta[leaf, 0] == 0 or (lmeta[leaf, 2] == 2 and lmeta[leaf, 0] != code[pc, 2]):
+                    status = ST_HOST  # no number there (the host creates the path or fails), a list of another type
                     break
                 has = 1
                 ok = 0
@@ -1861,8 +1862,8 @@ def run(address, machine_type):
         elif op == OP_STORELEAF:
             if alive and has:
                 leaf = code[pc, 1]
-                if lmeta[leaf, 0] == 0:  # no number there: the host's store creates the path
-                    status = ST_HOST
+                if lmeta[leaf, 0] == 0 or (lmeta[leaf, 2] == 2 and lmeta[leaf, 0] != code[pc, 4]):
+                    status = ST_HOST  # no number there (the host's store creates the path), a list of another type
                     break
                 stored = (val if ok else 0) if code[pc, 2] == 0 else ok
                 lvalues[leaf] = _stored_number(code[pc, 4], np.float64(stored) * floats[code[pc, 3]])

@@ -89,7 +89,8 @@ _ROWS = [
         ("SETLEAF", "iidx", ENTRY, "a: storage leaf (vm.storage_leaves), b: its number's type (LEAF_*), c: the "
                                    "number (index into floats), d: host op index. `data modify storage S P set value "
                                    "N`: fails when the same number is there (\"Nothing changed\"); no number there "
-                                   "goes to the host (which creates the path)"),
+                                   "goes to the host (which creates the path), and so does a list's element of "
+                                   "another type"),
         ("GETLEAF", "idx", ENTRY, "a: storage leaf, b: scale (index into floats), c: host op index. `data get "
                                   "storage S P [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host"),
         ("TP", "sdiii", ENTRY, "a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: "
@@ -185,7 +186,8 @@ _ROWS = [
                                         "entity @s PATH TYPE S`: fails without an executor) or a STORELEAF"),
     *_single("STORELEAF", "ibdix", FREE, "a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), "
                                          "d: type (LEAF_*), e: host op index. `store ... storage S P TYPE SCALE`: "
-                                         "(TYPE)(result * SCALE); no number there goes to the host"),
+                                         "(TYPE)(result * SCALE); no number there, or a list's element of another type, goes "
+                                         "to the host"),
     *_family("operation", [(f"OPER{symbol}", "hoho", ENTRY, f"a h1, b o1, c h2, d o2. `{symbol}`")
                            for _, symbol in OPERATIONS]),
     *_single("IFRUN", "hoiipb", STAGE, "a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. "

@@ -166,7 +166,16 @@ STORAGE_COMMANDS = ("data merge storage t:s {a:1,l:[1,2]}", "data modify storage
                     "data get storage t:s missing", "data remove storage t:s l[0]", "data get storage t:s",
                     "data modify storage t:s w set string storage t:s v", "data get storage t:s n 3",
                     "data get storage t:s d -0.5", "data modify storage t:s f set value 1b",
-                    "data modify storage t:s d set value 0.5d")
+                    "data modify storage t:s d set value 0.5d",
+                    # list elements (their numbers mirrored by the VM; l[0] and l[-1] may be one number)
+                    "data get storage t:s l[0]", "data get storage t:s l[-1] 2", "data modify storage t:s l[1] set value 7",
+                    "data modify storage t:s l[0] set value 2.5d", "data modify storage t:s l[-1] set value 4",
+                    "data merge storage t:s {m:[{x:1},{x:2b}],ia:[I;5,6]}", "data get storage t:s m[-1].x 3",
+                    "data modify storage t:s m[0].x set value 9", "data get storage t:s ia[1]",
+                    "data remove storage t:s l[-1]", "data modify storage t:s l prepend value 1b")
+# `if|unless data storage t:s PATH`
+DATA_CONDITIONS = ('a', 'l[]', 'l[{}]', 'n', 'missing', '{n:3}', '{f:1b}', '{d:0.5d}', '{a:1}', 'l[0]', 'l[-1]', 'l[2]',
+                   'm[-1].x', 'ia[1]')
 # The read-only objective hp (criterion health, created by t:f0): writes fail (reported; `*` and
 # selectors keep them on the VM's host side), reads and `execute store` work
 READ_ONLY_COMMANDS = ("scoreboard players set * hp 1", "scoreboard players add * hp 2",
@@ -235,7 +244,9 @@ def server_commands(draw, vocab: Vocabulary) -> str:
         fixed = st.sampled_from(STORAGE_COMMANDS)
         return draw(st.one_of(fixed, ints.map(lambda v: f"data modify storage t:s n set value {v}")))
     if kind == "store":
-        what, into = draw(st.sampled_from((("result", "n int 1"), ("result", "d double 0.5"), ("success", "f byte 1"))))
+        what, into = draw(st.sampled_from((("result", "n int 1"), ("result", "d double 0.5"), ("success", "f byte 1"),
+                                           ("result", "l[0] int 1"), ("result", "l[-1] double 2"),
+                                           ("result", "m[1].x byte 1"), ("result", "ia[0] int 1"))))
         inner = draw(score_commands(vocab))
         return f"execute store {what} storage t:s {into} run {inner}"
     if draw(st.booleans()):
@@ -252,7 +263,7 @@ def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
     kind = draw(st.sampled_from(kinds))
     if kind == "data":
         return (f"{word} data storage t:s "
-                f"{draw(st.sampled_from(('a', 'l[]', 'l[{}]', 'n', 'missing', '{n:3}', '{f:1b}', '{d:0.5d}', '{a:1}')))}")
+                f"{draw(st.sampled_from(DATA_CONDITIONS))}")
     single = vocab.single_holders
     if kind == "matches":
         return f"{word} score {draw(single)} {draw(objectives)} matches {draw(ranges())}"

@@ -166,3 +166,43 @@ def test_a_teleport_to_another_level_is_charged_once(tmp_path):
     emu = _run_both(tmp_path, "execute in minecraft:the_end run tp @e[tag=m] ~ ~ ~ ~10 ~\n"
                               "execute in minecraft:the_nether run tp @e[tag=d] ~ ~ ~\n")
     assert emu.profile.functions_total["t:main"] == 3 + 2 * 2  # the setup's three, two chains of two
+
+
+def test_list_elements_run_in_the_vm(tmp_path):
+    # NbtPathArgument.IndexedElementNode: a negative index counts from the end, out of range finds
+    # nothing; ListTag.setTag (before 1.21.5) keeps the list's element type
+    body = ('data merge storage t:s {l:[1,2,3],m:[{x:1.5d},{x:2b}],e:[]}\n'
+            "scoreboard players set #v o -7\n"
+            "execute store result storage t:s l[0] int 3 run scoreboard players get #v o\n"
+            "execute store result storage t:s m[-1].x byte 1 run scoreboard players set #w o 300\n"
+            "execute store result score #l0 o run data get storage t:s l[0]\n"
+            "execute store result score #l2 o run data get storage t:s l[-1] 10\n"
+            "execute store result score #m0 o run data get storage t:s m[0].x 10\n"
+            "execute store result score #m1 o run data get storage t:s m[-1].x\n"
+            "execute store success score #set o run data modify storage t:s l[1] set value 5\n"
+            "execute store success score #same o run data modify storage t:s l[1] set value 5\n"
+            "execute store result score #has o if data storage t:s l[1]\n"
+            "execute store result score #out o if data storage t:s l[3]\n"
+            "execute store result score #neg o if data storage t:s l[-4]\n"
+            "execute store result score #e o if data storage t:s e[0]\n"
+            "execute store result score #mx o if data storage t:s m[-2]\n")
+    emu = _run_both(tmp_path, body)
+    assert [emu.score(h, "o") for h in ("#l0", "#l2", "#m0", "#m1", "#set", "#same", "#has", "#out", "#neg", "#e",
+                                        "#mx")] == [-21, 30, 15, 44, 1, 0, 1, 0, 0, 0, 1]
+    assert host_kinds(emu)[3:] == ["DataMerge"]  # after SETUP's
+
+
+@pytest.mark.parametrize("line", [
+    "execute store result storage t:s l[0] double 1 run scoreboard players get #v o",  # another type: the host's
+    "data modify storage t:s l[-1] set value 2.5d",
+    "execute store result storage t:s ia[0] double 1.5 run scoreboard players get #v o",  # an array converts
+    "execute store result score #x o run data get storage t:s ia[1]",
+    "execute store result storage t:s one[0] int 2 run scoreboard players get #v o",  # one[0] is one[-1]
+    "data modify storage t:s l[-2] set value 7",  # l[-2] is l[0]
+])
+def test_list_elements_the_host_writes(tmp_path, line):
+    body = ("data merge storage t:s {l:[1,2],ia:[I;5,6],one:[4]}\nscoreboard players set #v o 3\n" + line + "\n"
+            "execute store result score #a o run data get storage t:s one[-1]\n"
+            "execute store result score #b o run data get storage t:s l[0] 10\n")
+    emu = _run_both(tmp_path, body)
+    assert 6 in [run.node.loc.line for run in emu.backend.host_ops_run()]  # the line (after SETUP's 3, 2 more)
