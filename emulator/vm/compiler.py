@@ -5,13 +5,14 @@ What compiles to VM instructions: scoreboard ``players`` commands on named holde
 change: :func:`_order_free`), ``@s`` and the selectors the VM evaluates (:mod:`emulator.vm.entity_arrays`:
 ``@e @a @s @p @n @r`` with type, any number of tags, scores, name, team, gamemode, level, rotations,
 positions, volumes, distance, limit and sort), ``tag SEL add|remove``, ``enable``; ``if|unless score`` on named holders and
-``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as|facing entity SEL``
+``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as|facing entity SEL``,
+``on vehicle|passengers``
 and ``positioned|facing X Y Z``, ``rotated``, ``anchored``, ``align`` (the VM makes their contexts), ``tp [SEL] X Y Z`` (``~`` and ``^`` too),
 ``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
 ``if|unless function``, function calls and tags, every ``return`` form, and macro calls
 (instantiated by Python on first use). Everything else is a host op run by Python: a final command
 (``OP_HOST``: ``say``, ``schedule``, selectors ...), an execute stage (``OP_HOSTSTAGE``: ``in``,
-``on``, ``if data`` ...; it sets the context the rest of the chain runs in, through
+``on origin``, ``if data`` ...; it sets the context the rest of the chain runs in, through
 :mod:`emulator.vm.host` and :mod:`emulator.commands.stages`) or a store into NBT or a bossbar (``OP_HOSTSTORE``).
 
 Shapes (the cost rule is in :mod:`emulator.runtime.backend`; the opcodes in :mod:`emulator.vm.opcodes`)::
@@ -201,6 +202,8 @@ class Compiler:
                 self.emit(vm.OP_IFDIM, self.program.levels.ids[st.dimension], 0, 0, 0, 0, int(st.negated), int(last))
             elif isinstance(st, ENTITY_CONTEXT_STAGES) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), ENTITY_CONTEXT_STAGES.index(type(st)))
+            elif isinstance(st, ExOn) and not last and st.relation in _RELATIONS and self.selectors is not None:
+                self.emit(vm.OP_ASSTAGE, _RELATIONS[st.relation], int(forked), 0)  # as each related entity
             elif isinstance(st, ExFacingEntity) and not last and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_ASSTAGE, sel, int(forked), vm.FACING_EYES if st.anchor == "eyes" else vm.FACING_FEET)
             elif isinstance(st, (ExPositioned, ExFacing)) and not last:
@@ -515,6 +518,8 @@ class Compiler:
 
 # Stages registered with ``fork`` in ExecuteCommand (the others are plain redirects)
 _FORKS = (Condition, ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)  # `summon` redirects
+# `execute on` relations the VM follows itself (the entity table's EI_VEHICLE); the others read NBT
+_RELATIONS = {"vehicle": vm.REL_VEHICLE, "passengers": vm.REL_PASSENGERS}
 # Stages that can make several contexts: their chains collect the contexts before the final command
 _MULTIPLY = (ExAs, ExAt, ExPositionedAs, ExRotatedAs, ExFacingEntity, ExOn)
 

@@ -48,7 +48,7 @@ def _operand(program: Program, scoreboard: Scoreboard, kind: str, value: int) ->
             return "*"
         return "@s" if value == vm.HOLDER_SELF else scoreboard.holders[value]
     if kind == "s":
-        return "*" if value == vm.SEL_TRACKED else f"sel#{value}"
+        return {vm.SEL_TRACKED: "*", vm.REL_VEHICLE: "vehicle", vm.REL_PASSENGERS: "passengers"}.get(value, f"sel#{value}")
     if kind == "d":
         return repr(program.floats[value])
     if kind == "o":

@@ -181,10 +181,10 @@ OP_STOREFIELD = 47  # [free] a: column (EF_*), b: 0 result / 1 success, c: scale
 OP_MACRO = 48  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
 OP_HOSTSTAGE = 49  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
 OP_HOSTSTORE = 50  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 51  # [stage] a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned
-# as, rotated as; then FACING_FEET, FACING_EYES: `facing entity SEL feet|eyes`). One context per entity found, made by
-# the VM (or one it made earlier in the root that still holds: as_cache); ST_GROWCTX when the context table or the
-# fork stack is full
+OP_ASSTAGE = 51  # [stage] a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind
+# (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as, rotated as; then FACING_FEET, FACING_EYES: `facing
+# entity SEL feet|eyes`). One context per entity found, made by the VM (or one it made earlier in the root that still
+# holds: as_cache); ST_GROWCTX when the context table or the fork stack is full
 OP_CTXSTAGE = 52  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
 # (flags as OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; ANCHOR_*; the axes' bits), c: x or the yaw
 # (index into floats; the rest follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, `anchored
@@ -262,7 +262,9 @@ EI_TEAM = 6
 EI_LIVING = 7
 EI_GAMEMODE = 8
 EI_XP = 9
-EI_WIDTH = 10
+EI_VEHICLE = 10
+EI_SEAT = 11
+EI_WIDTH = 12
 EF_X = 0
 EF_Y = 1
 EF_Z = 2
@@ -313,6 +315,8 @@ TPF_POS, TPF_FEET, TPF_EYES, TPF_ENTITY = 1, 2, 3, 4
 CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING = range(5)
 # OP_ASSTAGE's kinds after commands.entities.ENTITY_CONTEXT_STAGES' four: `facing entity SEL feet|eyes`
 FACING_FEET, FACING_EYES = 4, 5
+# OP_ASSTAGE's selector operand for `on vehicle|passengers` (the entities related to the executor)
+REL_VEHICLE, REL_PASSENGERS = -2, -3  # (SEL_TRACKED is -1)
 # storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty, exists], lvalues[leaf] = the number;
 # type 0: no byte, short, int, float or double there; exists 2: a list's element (a number of its type only)
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
@@ -585,6 +589,31 @@ def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etag
 
 
 @njit(cache=True)
+def _related(relation, e, eints, out):
+    """``relations.related``: the entities ``on vehicle|passengers`` (REL_*) finds from the executor
+    ``e`` (-1: the server, none), written to ``out``; their count. Killed ones are skipped; the
+    passengers in the order they got on (EI_SEAT)."""
+    if e < 0:
+        return 0
+    if relation == REL_VEHICLE:
+        v = eints[e, EI_VEHICLE] - 1
+        if v >= 0 and eints[v, EI_ALIVE]:
+            out[0] = v
+            return 1
+        return 0
+    n = 0
+    for slot in range(eints.shape[0]):  # unused rows ride nothing
+        if eints[slot, EI_VEHICLE] == e + 1 and eints[slot, EI_ALIVE]:
+            i = n  # insertion by seat
+            while i > 0 and eints[out[i - 1], EI_SEAT] > eints[slot, EI_SEAT]:
+                out[i] = out[i - 1]
+                i -= 1
+            out[i] = slot
+            n += 1
+    return n
+
+
+@njit(cache=True)
 def fork_contexts(regs, fstack, coll, contexts, n, depth, resume):
     """A stage made ``contexts[:n]`` (n >= 2) at frame ``depth``: run the rest of the chain (from
     ``resume``) for the first now and push the others on the fork stack for the chain's ENDCMD.
@@ -837,7 +866,7 @@ def _teleport(ins, ctx, other, n, selbuf, floats, cints, cfloats, efloats):
     the destination is outside the spawnable bounds ("Invalid position for teleport"), else each
     to the same position, its rotation wrapped and the pitch clamped (its own, TP_SELF's execution
     rotation, TP_ROT's given one or the destination's), or looking from its anchor there at the
-    position or entity faced (``Entity.lookAt``), and its vertical motion 0."""
+    position or entity faced (``Entity.lookAt``), and its vertical motion 0. False when it fails."""
     flags, k, kind = ins[3], ins[2], ins[4]
     if kind == TPF_ENTITY:  # TeleportCommand.teleportToEntity: the destination's position and rotation
         x, y, z = efloats[other, EF_X], efloats[other, EF_Y], efloats[other, EF_Z]
@@ -847,7 +876,7 @@ def _teleport(ins, ctx, other, n, selbuf, floats, cints, cfloats, efloats):
         given_yaw = _angle(floats[k + 3], cfloats[ctx, CF_YAW], flags & TP_REL_YAW)
         given_pitch = _angle(floats[k + 4], cfloats[ctx, CF_PITCH], flags & TP_REL_PITCH)
     if not _in_spawnable_bounds(x, y, z):
-        return
+        return False
     tx, ty, tz = x, y, z  # what a facing target looks at
     if kind == TPF_POS:
         tx, ty, tz = _destination(ins[5], k + 5, ctx, floats, cints, cfloats, efloats)
@@ -877,6 +906,7 @@ def _teleport(ins, ctx, other, n, selbuf, floats, cints, cfloats, efloats):
         if np.isfinite(pitch):
             efloats[e, EF_PITCH] = pitch
         efloats[e, EF_MY] = 0.0
+    return True
 
 
 @njit(cache=True, inline="always")
@@ -1697,9 +1727,9 @@ def run(address, machine_type):
                 val = 0
                 if n == 0:
                     continue
-                _teleport(code[pc - 2], ctx, other, n, selbuf, floats, cints, cfloats, efloats)
-                ok = 1
-                val = n
+                if _teleport(code[pc - 2], ctx, other, n, selbuf, floats, cints, cfloats, efloats):
+                    ok = 1
+                    val = n
             elif op == OP_GETFIELD:
                 e = cints[ctx, CI_ENTITY]
                 column = code[pc, 1]
@@ -1775,8 +1805,11 @@ def run(address, machine_type):
             n = 0
             if alive:
                 drawn = erandom[0]
-                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
-                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
+                if code[pc, 1] >= 0:
+                    n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                                efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
+                else:
+                    n = _related(code[pc, 1], cints[ctx, CI_ENTITY], eints, selbuf)
                 if 0 < n < forklimit and (regs[R_NCTX] + n > cints.shape[0] or regs[R_NFORK] + n > fstack.shape[0]):
                     erandom[0] = drawn  # a random sort draws again then, as if for the first time
                     status = ST_GROWCTX  # Python makes room, then the stage runs again

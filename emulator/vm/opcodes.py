@@ -171,7 +171,7 @@ _ROWS = [
     *_single("HOSTSTAGE", "xb", STAGE, "a: host op index, b forked. An execute stage run by Python: sets alive, "
                                        "R_CTX"),
     *_single("HOSTSTORE", "x", FREE, "a: host op index. `store ... storage|entity|block|bossbar`, after the result"),
-    *_single("ASSTAGE", "sbb", STAGE, "a: selector, b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: "
+    *_single("ASSTAGE", "sbb", STAGE, "a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: "
                                       "as, at, positioned as, rotated as; then FACING_FEET, FACING_EYES: `facing "
                                       "entity SEL feet|eyes`). One context per entity found, made by "
                                       "the VM (or one it made earlier in the root that still holds: as_cache); "

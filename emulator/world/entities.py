@@ -51,7 +51,7 @@ from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
 from emulator.world.entity_table import (
     EF_EYE, EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_TRANSFORM, EF_WIDTH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM,
-    EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_TEAM, EI_XP, GAMEMODES, EntityTable, TagSet,
+    EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_SEAT, EI_TEAM, EI_VEHICLE, EI_XP, GAMEMODES, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import normalise_items, player_defaults, selected_item
@@ -144,7 +144,7 @@ class Entity:
     own). Until the store adds it, the entity keeps those values itself."""
 
     __slots__ = ("_uuid", "type", "_custom_name", "data", "order", "player_name", "_gamemode", "_level", "_team",
-                 "_sneaking", "sprinting", "vehicle", "passengers", "_table", "_own", "__weakref__")
+                 "_sneaking", "sprinting", "_vehicle", "passengers", "_table", "_own", "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
                  yaw=F32(0.0), pitch=F32(0.0), motion=(0.0, 0.0, 0.0), tags: set[str] | None = None,
@@ -165,7 +165,7 @@ class Entity:
         self._sneaking = False
         self.sprinting = False
         # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
-        self.vehicle: Entity | None = None
+        self._vehicle: Entity | None = None
         self.passengers: list = []
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]
@@ -189,6 +189,7 @@ class Entity:
             table.floats[slot, EF_TRANSFORM:EF_WIDTH] = display.transformation_columns(self.data["transformation"])
         self._own = TagSet(table, slot)
         self._own.replace(tags)
+        self.vehicle = self._vehicle
         table.index_uuid(self, None, self._uuid)
 
     @property
@@ -247,6 +248,20 @@ class Entity:
         row[EI_TEAM] = table.name_id(self._team or None)
         row[EI_GAMEMODE] = GAMEMODES.index(self._gamemode) if self._gamemode in GAMEMODES else -1
         row[EI_XP] = self._level
+
+    @property
+    def vehicle(self) -> Entity | None:
+        return self._vehicle
+
+    @vehicle.setter
+    def vehicle(self, vehicle: Entity | None) -> None:
+        """Get on ``vehicle`` (None: off); the table's EI_VEHICLE and EI_SEAT follow (the VM's ``on``)."""
+        self._vehicle = vehicle
+        table = self._table
+        if table is not None:
+            table.seats += 1
+            table.ints[self.order, EI_VEHICLE] = 0 if vehicle is None else vehicle.order + 1
+            table.ints[self.order, EI_SEAT] = table.seats
 
     @property
     def dimension(self) -> str:

@@ -14,6 +14,9 @@ context made for it still reaches it, as the game's source keeps its entity obje
   likewise; -1 without a team), ``EI_LIVING`` (1 for a LivingEntity: ``team`` tests only those),
   ``EI_GAMEMODE`` (a player's game mode, its index in :data:`GAMEMODES`) and ``EI_XP`` (a player's
   experience level); the entity writes them when they change (:class:`emulator.world.entities.Entity`);
+  what ``execute on vehicle|passengers`` follows: ``EI_VEHICLE`` (its vehicle's slot + 1, 0 when it
+  rides nothing) and ``EI_SEAT`` (when it last got on or off, counted by :attr:`EntityTable.seats`:
+  a vehicle's passengers in that order are its ``passengers`` list);
 - ``floats`` (float64 ``[slots, EF_WIDTH]``): position ``EF_X..EF_Z``, motion ``EF_MX..EF_MZ``,
   rotation ``EF_YAW``/``EF_PITCH`` (float32 values, exact in a double), the hitbox's half width and
   height and the eye height ``EF_HALF``/``EF_HEIGHT``/``EF_EYE`` (``Entity.sizes``, kept by ``attach``
@@ -41,8 +44,8 @@ import numpy as np
 from emulator.world.dimensions import Levels
 from emulator.world.display import DISPLAY_TYPES
 
-EI_TYPE, EI_HOLDER, EI_ALIVE, EI_DIM, EI_JOIN, EI_NAME, EI_TEAM, EI_LIVING, EI_GAMEMODE, EI_XP = range(10)
-EI_WIDTH = 10
+EI_TYPE, EI_HOLDER, EI_ALIVE, EI_DIM, EI_JOIN, EI_NAME, EI_TEAM, EI_LIVING, EI_GAMEMODE, EI_XP, EI_VEHICLE, EI_SEAT = range(12)
+EI_WIDTH = 12
 GAMEMODES = ("survival", "creative", "adventure", "spectator")  # GameType's ids, in its order
 EF_X, EF_Y, EF_Z, EF_MX, EF_MY, EF_MZ, EF_YAW, EF_PITCH, EF_HALF, EF_HEIGHT, EF_EYE, EF_TRANSFORM = range(12)
 EF_WIDTH = EF_TRANSFORM + 14
@@ -69,6 +72,7 @@ class EntityTable:
         self.order = np.zeros(capacity, dtype=np.int64)
         self.random = np.zeros(1, dtype=np.int64)
         self.size = 0  # slots used
+        self.seats = 0  # the times an entity got on or off a vehicle (EI_SEAT)
         self.count = 0  # living entities, order[:count]
         self.handles: list = []  # slot -> Entity
         self.tag_ids: dict[str, int] = {}

@@ -66,11 +66,13 @@ non_negative = st.one_of(st.sampled_from((0, 1, 2, 7, 65536, INT_MAX)), st.integ
 MODIFIERS = ("positioned ~1 ~ ~-2", "align xz", "anchored eyes", "rotated 90 0", "in minecraft:the_nether", "as @e")
 # With entities: three markers summoned by t:f0, tagged m+a, m, n, an armor stand tagged m, a
 # marker tagged m in the nether (selectors with a position, volume or distance search the context's
-# level only), an item display tagged d, and a trigger objective t
+# level only), an item display tagged d, an armor stand tagged v carrying two markers tagged r (one
+# also m), and a trigger objective t
 ENTITY_SETUP = ('summon marker ~ ~ ~ {Tags:["m","a"]}', 'summon marker ~2 ~ ~ {Tags:["m"],CustomName:\'"Bob"\',Rotation:[170f,45f]}',
                 'summon marker ~ ~1 ~5 {Tags:["n"]}', 'summon armor_stand ~1 ~ ~1 {Tags:["m"]}',
                 'execute in minecraft:the_nether run summon marker ~ ~ ~1 {Tags:["m","nether"]}',
                 'summon item_display ~-1 ~ ~ {Tags:["d"],Rotation:[30f,10f]}',
+                'summon armor_stand ~-2 ~ ~ {Tags:["v"],Passengers:[{id:"marker",Tags:["m","r"]},{id:"marker",Tags:["r"]}]}',
                 "scoreboard objectives add t trigger")
 # (the VM evaluates @e/@a/@s/@p/@n with type, #type, tag, scores, name, team, gamemode, level, rotations,
 # x/y/z, volumes, distance, limit and sort nearest/furthest itself; random sorts, nbt ... go to the host)
@@ -92,7 +94,8 @@ ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=
                     "facing 1 -2 3", "as @e[tag=m] at @s facing ^1 ^ ^-2", "anchored eyes facing ~1 ~2 ~-3",
                     "facing entity @e[tag=m] eyes", "as @e[tag=n] at @s facing entity @e[type=armor_stand] feet",
                     "at @e[tag=d] anchored eyes facing entity @e[tag=!d,sort=nearest,limit=2] eyes",
-                    "facing entity @s feet")
+                    "facing entity @s feet", "on vehicle", "as @e on passengers", "as @e[tag=r] on vehicle at @s",
+                    "as @e[type=armor_stand] on passengers on vehicle")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]", "@e[tag=m,sort=random,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]",
                         "@e[sort=random,limit=2]")
@@ -145,7 +148,8 @@ ENTITY_COMMANDS = ("tag @s add a", "scoreboard players enable * t", "tag @s remo
                    "tp @e[tag=n] ~ ~ ~ facing entity @n[tag=m] eyes", "tp @s @n[type=armor_stand]",
                    "tp @e[tag=m] @e[tag=n,limit=1]", "execute as @e[tag=nether] run tp @s @e[tag=m,limit=1,sort=nearest]",
                    "tp @e[tag=a] ~ ~ ~ facing entity @e[tag=zz,limit=1] feet", "tp @s ~ ~ ~ facing entity @s feet",
-                   "tp @n[tag=d]")
+                   "tp @n[tag=d]", "execute store success score #t o run tp @e[tag=n] 0 -30000000 0",
+                   "execute store result score #u o run tp @e[tag=m] ~ ~ ~ facing entity @n[tag=d] feet")
 # t:wide: 70 tags, so that some live past the first word of the VM's tag bitsets
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
