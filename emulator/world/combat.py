@@ -39,10 +39,10 @@ import math
 
 import numpy as np
 
-from emulator.world import advancements, inventories, living, loot, predicates, statistics
+from emulator.world import advancements, inventories, living, loot, predicates, statistics, tools
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
-from emulator.world.items import EMPTY, enchantment_level
+from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
 from emulator.world.loot_context import DamageSource, LootContext
 from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String
 
@@ -92,9 +92,8 @@ def last_attacker(state, entity) -> Entity | None:
 def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), bypasses: bool = False) -> bool:
     """LivingEntity.hurtServer: False when the hurt does not go through; else the attacker gets the
     credit, an entity at 0 health dies, then the hurt's triggers fire."""
-    if not living.hurt(state, entity, amount, bypasses, source.type):
+    if not living.hurt(state, entity, amount, bypasses, source.type, _armour_wear):
         return False
-    _armour_wear(state, entity)
     remember_attacker(state, entity, source)
     if living.health(entity) <= 0:
         die(state, entity, source)
@@ -102,15 +101,59 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
     return True
 
 
-def _armour_wear(state, entity) -> None:
-    """LivingEntity.hurtArmor is not modelled: a hurt player's armour items keep their damage, so a
-    pack that hears item_durability_changed would miss it (a warning: the test is inconclusive)."""
-    if not entity.is_player or not advancements.listened(state, "item_durability_changed"):
+def _armour_wear(state, entity, amount: float, damage_type: str) -> None:
+    """Player.hurtArmor -> LivingEntity.doHurtEquipment: each worn armour item (ArmorItem; from
+    1.21.2 an equippable item that takes damage when hurt) takes max(1, damage / 4) points through
+    ItemStack.hurtAndBreak (Unbreaking, item_durability_changed, breaking), unless it resists fire
+    and the damage is fire (ItemStack.canBeHurtBy). A mob's armour (from 1.21.2), a pack's
+    equippable component and enchanted armour's hurt effects (protection, thorns ...) are not
+    modelled."""
+    version = tuple(state.version)
+    worn = [inventories.entity_slot(entity, slot, version) for slot in inventories.ARMOR_SLOTS.values()]
+    worn = [access for access in worn if access is not None and _wears(access.get())]
+    if not worn or amount <= 0:
         return
-    worn = [inventories.entity_slot(entity, slot, state.version).get() for slot in inventories.ARMOR_SLOTS.values()]
-    if any(not stack.is_empty and stack.component("minecraft:max_damage") is not None for stack in worn):
-        state.error("the wear of a hurt player's armour (LivingEntity.hurtArmor) and its item_durability_changed",
-                    severity="warning", unmodelled=True)
+    if not entity.is_player:
+        if version >= MOB_ARMOUR_WEAR_VERSION:
+            state.error(f"the wear of {entity.display_name}'s armour (LivingEntity.doHurtEquipment from 1.21.2)",
+                        severity="warning", unmodelled=True)
+        return
+    for access in worn:
+        stack = access.get()
+        if stack.component("minecraft:equippable") is not None:
+            raise Unmodelled(f"the wear of {stack.id} with its equippable component")
+        enchanted = [e for e in _enchantments(stack, version) if e not in _INERT_ON_HURT]
+        if enchanted:
+            raise Unmodelled(f"the effects of {enchanted[0]} on armour when its wearer is hurt")
+    points = int(max(F32(1.0), F32(amount) / F32(4.0)))
+    fire = state.resources.in_tag("damage_type", "minecraft:is_fire", damage_type)
+    for access in worn:
+        stack = access.get()
+        if fire and (stack.id.startswith("minecraft:netherite_") or stack.component("minecraft:fire_resistant")
+                     is not None or stack.component("minecraft:damage_resistant") is not None):
+            if stack.component("minecraft:damage_resistant") is not None:
+                raise Unmodelled(f"the damage_resistant component of {stack.id}")
+            continue
+        tools.hurt_and_break(state, entity, access, points)
+
+
+MOB_ARMOUR_WEAR_VERSION = (1, 21, 2)  # LivingEntity.hurtArmor wears any living entity's equipment
+_ARMOUR_ITEMS = ("_helmet", "_chestplate", "_leggings", "_boots")  # ArmorItem's vanilla members (turtle_helmet too)
+# enchantments with no effect when the wearer is hurt
+_INERT_ON_HURT = frozenset("minecraft:" + e for e in ("unbreaking", "mending", "binding_curse", "vanishing_curse"))
+
+
+def _wears(stack) -> bool:
+    return not stack.is_empty and stack.id.endswith(_ARMOUR_ITEMS) and stack.component("minecraft:max_damage") is not None
+
+
+def _enchantments(stack, version) -> list[str]:
+    """The ids of the stack's enchantments (the ``Enchantments`` tag before 1.20.5)."""
+    if version >= tools.COMPONENTS_VERSION:
+        found = [str(e) for e in enchantment_levels(stack)]
+    else:
+        found = [str(e.get("id", "")) for e in (stack.tag or {}).get("Enchantments") or () if isinstance(e, Compound)]
+    return [e if ":" in e else "minecraft:" + e for e in found]
 
 
 def magic_harm(state, entity, amount: float) -> bool:

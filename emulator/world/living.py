@@ -261,16 +261,22 @@ def heal(entity, amount: float) -> None:
 
 
 # Player.actuallyHurt: the food exhaustion of the damage types modelled (DamageType.exhaustion)
-EXHAUSTION = {"minecraft:generic": 0.0, "minecraft:generic_kill": 0.0, "minecraft:out_of_world": 0.0,
-              "minecraft:magic": 0.0, "minecraft:player_attack": 0.1, "minecraft:mob_attack": 0.1}
+EXHAUSTION = {**{"minecraft:" + t: 0.0 for t in (
+    "on_fire in_wall cramming drown starve fall fly_into_wall out_of_world generic magic wither dragon_breath "
+    "freeze stalagmite indirect_magic sonic_boom outside_border generic_kill").split()}, **{"minecraft:" + t: 0.1 for t in (
+    "in_fire campfire lightning_bolt lava hot_floor cactus dry_out sweet_berry_bush falling_block falling_anvil "
+    "falling_stalactite sting mob_attack mob_attack_no_aggro player_attack arrow trident mob_projectile spit "
+    "fireworks unattributed_fireball fireball wither_skull thrown thorns explosion player_explosion "
+    "bad_respawn_point wind_charge").split()}}  # DamageTypes.bootstrap (1.21)
 
 
 def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
-         damage_type: str = "minecraft:generic") -> bool:
-    """LivingEntity.hurtServer without AI or armour items: refused for invulnerable entities,
-    creative and spectator players (unless the type bypasses invulnerability) and the dead; within
-    the 10 ticks after a hurt only the excess over the last hurt applies. Returns whether it hurt.
-    Armour points reduce the damage as CombatRules.getDamageAfterAbsorb does, then absorption
+         damage_type: str = "minecraft:generic", wear=None) -> bool:
+    """LivingEntity.hurtServer without AI: refused for invulnerable entities, creative and
+    spectator players (unless the type bypasses invulnerability) and the dead; within the 10 ticks
+    after a hurt only the excess over the last hurt applies. Returns whether it hurt. Unless the
+    type is in #bypasses_armor, ``wear(state, entity, damage, type)`` wears the armour
+    (hurtArmor) and armour points reduce the damage as CombatRules.getDamageAfterAbsorb does, then absorption
     (LivingEntity.actuallyHurt); a player counts ``damage_absorbed``/``damage_taken`` and the
     type's food exhaustion. The resistance effect raises Unmodelled."""
     invulnerable = entity.data.get("Invulnerable") or (entity.is_player and entity.gamemode in ("creative", "spectator"))
@@ -286,7 +292,10 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
     else:
         dealt, timers[0], timers[1] = amount, 20, amount
         entity.data["HurtTime"] = Int(10)
-    _actually_hurt(state, entity, _after_armour(entity, dealt, bypasses_invulnerability), damage_type)
+    armoured = not state.resources.in_tag("damage_type", "minecraft:bypasses_armor", damage_type)
+    if armoured and wear is not None:  # LivingEntity.getDamageAfterArmorAbsorb: hurtArmor, then the reduction
+        wear(state, entity, dealt, damage_type)
+    _actually_hurt(state, entity, _after_armour(entity, dealt, not armoured), damage_type)
     return True
 
 
@@ -321,7 +330,8 @@ def _exhaust(player, amount) -> None:
 
 
 def _after_armour(entity, amount: float, bypass: bool) -> float:
-    """CombatRules.getDamageAfterAbsorb (float math) with the entity's armour attributes."""
+    """CombatRules.getDamageAfterAbsorb (float math) with the entity's armour attributes, unless the
+    damage type is in #bypasses_armor."""
     if bypass:
         return amount
     armour, toughness = F32(attribute_value(entity, "armor")), F32(attribute_value(entity, "armor_toughness"))

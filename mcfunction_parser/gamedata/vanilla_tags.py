@@ -9,7 +9,8 @@ registries and block states but no tags), so the user's own jar of the targeted 
 faithful source; nothing is bundled beyond :data:`BUILTIN_TAGS`.
 
 Without a jar, :data:`BUILTIN_TAGS` holds a few vanilla entity type tags (copied from the 1.21
-jar's ``data/minecraft/tags/entity_type``); any other ``#minecraft:`` tag is unknown to the
+jar's ``data/minecraft/tags/entity_type``) and the damage type tags the hurt rules read (1.21's
+DamageTypeTagsProvider); any other ``#minecraft:`` tag is unknown to the
 emulator, and a command reading one says it is not modelled instead of matching nothing.
 """
 from __future__ import annotations
@@ -35,6 +36,13 @@ BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
             "minecraft:fireball", "minecraft:small_fireball", "minecraft:egg", "minecraft:trident",
             "minecraft:dragon_fireball", "minecraft:wither_skull", "minecraft:wind_charge",
             "minecraft:breeze_wind_charge"}),
+    },
+    "damage_type": {
+        "minecraft:bypasses_armor": frozenset("minecraft:" + t for t in (
+            "on_fire in_wall cramming drown fly_into_wall generic wither dragon_breath starve fall freeze "
+            "stalagmite magic indirect_magic out_of_world generic_kill sonic_boom outside_border").split()),
+        "minecraft:is_fire": frozenset("minecraft:" + t for t in (
+            "in_fire campfire on_fire lava hot_floor unattributed_fireball fireball").split()),
     },
 }
 

@@ -169,10 +169,16 @@ def test_creative_players_and_invulnerable_mobs_take_no_damage(env):
         run(env, "damage @e[type=cow,limit=1] 1")
 
 
-def test_armour_absorbs_damage(env):
+def test_armour_absorbs_damage_unless_the_type_bypasses_it(env):
+    """LivingEntity.getDamageAfterArmorAbsorb: damage types in #bypasses_armor (generic, magic ...:
+    DamageTypeTagsProvider) skip CombatRules.getDamageAfterAbsorb."""
     zombie = env.state.entities.summon("minecraft:zombie", (0, 0, 0))  # 2 armour points
-    run(env, "damage @e[type=zombie,limit=1] 5")
+    run(env, "damage @e[type=zombie,limit=1] 5 minecraft:mob_attack")
     assert float(zombie.data["Health"]) == pytest.approx(20 - 5 * (1 - 0.4 / 25), rel=1e-6)
+    other = env.state.entities.summon("minecraft:zombie", (0, 0, 0))
+    other.tags.add("second")
+    run(env, "damage @e[tag=second,limit=1] 5")
+    assert float(other.data["Health"]) == 15.0
 
 
 def test_set_points_compares_as_ints_at_huge_levels(env):

@@ -142,9 +142,51 @@ def test_the_last_player_to_hurt_a_mob_gets_the_kill(tmp_path):
     ("give Alex diamond_sword\ndummy Alex attack @e[type=pig,limit=1]", "attacking with minecraft:diamond_sword"),
     ("effect give Alex resistance 10\ndamage Alex 1", "the resistance effect"),
     ("item replace entity Alex weapon.offhand with totem_of_undying\ndamage Alex 100", "a totem of undying"),
-    ("damage Alex 100 minecraft:fall", "the food exhaustion of damage type minecraft:fall"),
+    ("damage Alex 100 minecraft:fall", "the death message of damage type minecraft:fall"),
 ])
 def test_what_combat_does_not_model_makes_the_test_inconclusive(tmp_path, setup, reason):
     result = run(tmp_path, f"dummy Alex spawn\nsummon pig ~1 ~ ~\n{setup}\nsucceed\n")
     assert result.status == "inconclusive", result.report()
     assert reason in result.message
+
+
+ARMOUR_WORN = {"demo/advancement/worn.json": json.dumps({"criteria": {"c": {
+    "trigger": "minecraft:item_durability_changed",
+    "conditions": {"item": {"items": "minecraft:iron_chestplate"}, "delta": -2}}}})}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_hurt_players_armour_wears_unless_the_damage_bypasses_armour(tmp_path, backend):
+    """LivingEntity.getDamageAfterArmorAbsorb -> Player.hurtArmor -> doHurtEquipment: each armour
+    piece takes max(1, damage / 4) (int) through ItemStack.hurtAndBreak (item_durability_changed);
+    generic damage is in #bypasses_armor; netherite resists fire damage (canBeHurtBy)."""
+    result = run(tmp_path, (
+        "dummy Alex spawn\n"
+        "item replace entity Alex armor.chest with iron_chestplate\n"
+        "item replace entity Alex armor.feet with netherite_boots\n"
+        "item replace entity Alex armor.head with carved_pumpkin\n"
+        "damage Alex 3 minecraft:mob_attack\n"
+        "assert items entity Alex armor.chest iron_chestplate[damage=1]\n"
+        "assert items entity Alex armor.feet netherite_boots[damage=1]\n"
+        "assert entity @a[name=Alex,advancements={demo:worn=false}]\n"
+        "await delay 11\n"
+        "damage Alex 8.5 minecraft:mob_attack\n"             # 8.5 / 4 = 2.125 -> 2 points
+        "assert items entity Alex armor.chest iron_chestplate[damage=3]\n"
+        "assert entity @a[name=Alex,advancements={demo:worn=true}]\n"
+        "await delay 11\n"
+        "damage Alex 4\n"                                    # generic bypasses armour
+        "assert items entity Alex armor.chest iron_chestplate[damage=3]\n"
+        "await delay 11\n"
+        "damage Alex 1 minecraft:in_fire\n"
+        "assert items entity Alex armor.chest iron_chestplate[damage=4]\n"
+        "assert items entity Alex armor.feet netherite_boots[damage=3]\n"), files=ARMOUR_WORN, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_protection_on_a_hurt_players_armour_is_inconclusive(tmp_path):
+    result = run(tmp_path, (
+        "dummy Alex spawn\n"
+        "item replace entity Alex armor.chest with iron_chestplate[enchantments={protection:1}]\n"
+        "damage Alex 3 minecraft:mob_attack\nsucceed\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "minecraft:protection" in result.message
