@@ -32,14 +32,14 @@ from __future__ import annotations
 import math
 
 from emulator.world import (advancements, block_placing, block_shapes, command_blocks, crafters, inventories,
-                            item_cooldowns, signs, statistics)
+                            item_cooldowns, items, signs, statistics)
 from emulator.world.blocks import BlockState
 from emulator.world.context import Context
 from emulator.world.living import attribute_value
 from emulator.world.player_actions import MAIN, hand_slot
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import Unmodelled
-from mcfunction_parser.nbt import Compound
+from mcfunction_parser.nbt import Compound, Int
 
 DEFAULT_BLOCK_USE_VERSION = (1, 20, 5)  # useWithoutItem and its own trigger (24w13a)
 MENU_REACH = 4.0  # Container.stillValidBlockEntity's buffer over the block interaction range
@@ -59,6 +59,7 @@ MENUS = {
     "minecraft:cartography_table": "interact_with_cartography_table",
     "minecraft:smithing_table": "interact_with_smithing_table", "minecraft:enchanting_table": None,
 }
+_MENU_BLOCKS = frozenset(MENUS) | {"minecraft:lectern"}  # blocks whose menu stays open while they stand
 # containers that do not open with a solid block above (ChestBlock.isChestBlockedAt,
 # EnderChestBlock) or in front of their lid (ShulkerBoxBlock.canOpen)
 _BLOCKED_ABOVE = {"minecraft:chest", "minecraft:trapped_chest", "minecraft:ender_chest"}
@@ -77,11 +78,18 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
     block = state.blocks.get(pos)
     stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
     if player.gamemode == "spectator":
+        if block.id == "minecraft:lectern":
+            return _lectern(state, player, pos, block, award=False) if _property(block, "has_book", "") == "true" else "pass"
         return _open_menu(state, player, pos, block, award=False) if block.id in MENUS else "pass"
     holding = any(not inventories.entity_slot(player, s, state.version).get().is_empty
                   for s in (inventories.MAINHAND, inventories.OFFHAND))
     if not (player.sneaking and holding):
-        if _item_on_block_passes(state, player, pos, block, stack, face) and hand == MAIN:
+        before = stack.copy()
+        on_block = _use_item_on_block(state, player, hand, pos, block, stack, face)
+        if on_block == "consume":  # BlockState.useItemOn consumed the action: the criterion with the stack as it was
+            advancements.trigger(state, player, "item_used_on_block", advancements.location_test(state, player, pos, before))
+            return on_block
+        if on_block == "try_empty_hand" and hand == MAIN:
             result = _use_without_item(state, player, pos, block)
             if result == "consume":
                 if tuple(state.version) >= DEFAULT_BLOCK_USE_VERSION:
@@ -101,17 +109,63 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
     return placed
 
 
-def _item_on_block_passes(state, player, pos, block: BlockState, stack, face: str) -> bool:
-    """BlockBehaviour.useItemOn: TRY_WITH_EMPTY_HAND for the blocks modelled here, except a note block
-    clicked on top with a head (NoteBlock.useItemOn: the head is placed instead); a dye, ink sac or
-    honeycomb applied to an unwaxed sign (SignBlock.useItemOn) is not modelled."""
+def _use_item_on_block(state, player, hand: str, pos, block: BlockState, stack, face: str) -> str:
+    """BlockBehaviour.useItemOn: ``"try_empty_hand"`` (PASS_TO_DEFAULT_BLOCK_INTERACTION) for the
+    blocks modelled here, except a note block clicked on top with a head (NoteBlock.useItemOn:
+    ``"skip"``, the head is placed instead) and a lectern (LecternBlock.useItemOn: a lectern book
+    goes onto one without a book, ``"consume"``; an empty main hand skips to the item); a dye, ink
+    sac or honeycomb applied to an unwaxed sign (SignBlock.useItemOn) is not modelled."""
     if block.id == "minecraft:note_block" and face == "up" and stack.id.endswith(("_head", "_skull")):
-        return False
+        return "skip"
+    if block.id == "minecraft:lectern":
+        return _lectern_item(state, player, hand, pos, block, stack)
     if signs.is_sign(block.id) and stack.id in signs.APPLICATORS and player.gamemode != "adventure":
         sign = state.blocks.entity(pos)
         if sign is not None and not int(sign.get("is_waxed", 0)):
             raise Unmodelled(f"applying {stack.id} to a sign (SignApplicator.tryApplyToSign)")
-    return True
+    return "try_empty_hand"
+
+
+LECTERN_BOOKS = ("minecraft:writable_book", "minecraft:written_book")  # #minecraft:lectern_books
+
+
+def _lectern_item(state, player, hand: str, pos, block: BlockState, stack) -> str:
+    """LecternBlock.useItemOn: with a book it passes to the empty hand; a lectern book is placed
+    (tryPlaceBook -> placeBook: one taken from the stack, not from a creative player, saved as
+    ``Book`` with ``Page`` 0, the block ``has_book=true`` and unpowered: resetBookState)."""
+    if tuple(state.version) < DEFAULT_BLOCK_USE_VERSION:
+        raise Unmodelled("using a lectern before 1.20.5 (LecternBlock.use and the books' useOn)")
+    if _property(block, "has_book", "false") == "true":
+        return "try_empty_hand"
+    if stack.id in LECTERN_BOOKS:
+        if stack.id == "minecraft:written_book" and stack.component("minecraft:written_book_content") is not None:
+            raise Unmodelled("placing a written book on a lectern (LecternBlockEntity.resolveBook resolves its pages)")
+        access = inventories.entity_slot(player, hand_slot(hand), state.version)
+        book = stack.copy()
+        book.count = 1
+        if player.gamemode != "creative":  # ItemStack.consumeAndReturn
+            stack.count -= 1
+            access.set(stack)
+        _set(state, pos, block, has_book="true", powered="false")
+        lectern = state.blocks.entity(pos)
+        if lectern is None:
+            lectern = state.blocks.entities[tuple(pos)] = Compound()
+        lectern["Book"] = items.to_nbt(book, state.version)
+        lectern["Page"] = Int(0)
+        return "consume"
+    return "skip" if stack.is_empty and hand == MAIN else "try_empty_hand"
+
+
+def _lectern(state, player, pos, block: BlockState, award: bool = True) -> str:
+    """LecternBlock.useWithoutItem: with a book its menu opens (interact_with_lectern), else the
+    use is consumed all the same."""
+    if _property(block, "has_book", "false") != "true":
+        return "consume"
+    close_menu(state, player)
+    state.open_menus[player] = (player.dimension, pos)
+    if award:
+        statistics.award(state, player, statistics.stat_name("custom", "interact_with_lectern"))
+    return "consume"
 
 
 def _use_without_item(state, player, pos, block: BlockState) -> str:
@@ -123,6 +177,8 @@ def _use_without_item(state, player, pos, block: BlockState) -> str:
         return _open_menu(state, player, pos, block, award=True)
     if signs.is_sign(block.id):
         return signs.use(state, player, pos, block, _run_click_command)
+    if block.id == "minecraft:lectern":
+        return _lectern(state, player, pos, block)
     if block.id == "minecraft:lever":
         _set(state, pos, block, powered=_flip(block, "powered"))
         _neighbours_hear(state, pos)
@@ -282,7 +338,7 @@ def tick_menus(state) -> None:
     if not state.open_menus:  # every tick: no open container is the common case
         return
     for player, (dimension, pos) in list(state.open_menus.items()):
-        if (not player.alive or player.dimension != dimension or state.blocks_in(dimension).get(pos).id not in MENUS
+        if (not player.alive or player.dimension != dimension or state.blocks_in(dimension).get(pos).id not in _MENU_BLOCKS
                 or not _within_reach(player, pos)):
             close_menu(state, player)
 

@@ -241,3 +241,33 @@ def test_placements_the_emulator_cannot_model_are_inconclusive(tmp_path, item, r
     result = run(tmp_path, f"# @dummy\nsetblock ~2 ~ ~ dirt\ngive @s {item}\ndummy @s use block ~2 ~ ~ up\nsucceed\n")
     assert result.status == "inconclusive", result.report()
     assert reason in result.message
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_lectern_takes_a_book_then_opens_its_menu(tmp_path, backend):
+    """LecternBlock.useItemOn (a lectern book placed: tryPlaceBook -> placeBook, resetBookState; the
+    criterion item_used_on_block), useWithoutItem (with a book: openScreen, interact_with_lectern;
+    without: consumed all the same, default_block_use), LecternBlockEntity.saveAdditional (Book, Page)."""
+    files = {"demo/advancement/book.json": json.dumps({"criteria": {"c": {
+        "trigger": "minecraft:item_used_on_block", "conditions": {"location": [
+            {"condition": "minecraft:match_tool", "predicate": {"items": "minecraft:writable_book"}}]}}}}),
+        "demo/advancement/empty.json": json.dumps({"criteria": {"c": {"trigger": "minecraft:default_block_use"}}})}
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add lecterns minecraft.custom:minecraft.interact_with_lectern\n"
+        "setblock ~2 ~ ~ lectern\n"
+        "assert data block ~2 ~ ~ {}\n"
+        "give @s stone\n"
+        "dummy @s use block ~2 ~ ~\n"                     # no book: the use is consumed
+        "assert entity @s[advancements={demo:empty=true,demo:book=false}]\n"
+        "assert block ~2 ~ ~ lectern[has_book=false]\n"
+        "clear @s stone\n"
+        "give @s writable_book\n"
+        "dummy @s use block ~2 ~ ~\n"
+        "assert block ~2 ~ ~ lectern[has_book=true,powered=false]\n"
+        "assert data block ~2 ~ ~ {Book:{id:\"minecraft:writable_book\",count:1},Page:0}\n"
+        "assert not items entity @s weapon.mainhand *\n"
+        "assert entity @s[advancements={demo:book=true}]\n"
+        "assert not score @s lecterns matches 1..\n"
+        "dummy @s use block ~2 ~ ~\n"                     # a book on it: its menu opens
+        "assert score @s lecterns matches 1\n"), files=files, backend=backend)
+    assert result.status == "passed", result.report()
