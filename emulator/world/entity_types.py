@@ -46,6 +46,7 @@ def _type(name: str, width: float, height: float, eye: float | None = None) -> E
 _BOATS = " ".join(f"{wood}_boat {wood}_chest_boat" for wood in (
     "acacia", "birch", "cherry", "dark_oak", "jungle", "mangrove", "oak", "pale_oak", "spruce")) \
     + " bamboo_raft bamboo_chest_raft boat chest_boat"
+BOATS = frozenset("minecraft:" + name for name in _BOATS.split())
 _MINECARTS = "minecart chest_minecart command_block_minecart furnace_minecart hopper_minecart spawner_minecart " \
              "tnt_minecart"
 _SMALL_PROJECTILES = "egg ender_pearl experience_bottle eye_of_ender firework_rocket llama_spit ominous_item_spawner " \

@@ -16,14 +16,18 @@ Attackable.getLastAttacker): an interaction entity's are the players in its leve
 Level.getPlayerByUUID); a living entity's attacker is the last living entity to hurt it within 100
 ticks (LivingEntity.getLastHurtByMob, emulator.world.combat); a mob's target comes from its AI,
 which is not modelled (Unmodelled), except for a mob with ``NoAI``, whose goals never run: none.
-``controller`` and ``leasher`` need riding control and leads, which the emulator does not model:
-they find nothing.
+``controller`` (Entity.getControllingPassenger): a boat's is its first passenger when living
+(Boat); an entity that is neither a boat nor a Mob has none (Entity); a Mob's depends on its AI,
+saddles and held items (Mob, Pig, AbstractHorse, Strider), which are not modelled (Unmodelled) once
+it carries someone. ``leasher`` (Leashable.getLeashHolder): only Mobs and boats are Leashable, and
+one without ``leash`` data has no holder; a leash that is there is not modelled (Unmodelled).
 """
 from __future__ import annotations
 
 from emulator.world import combat, living
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import Entity, EntityStore
+from emulator.world.entity_types import BOATS
 from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser.nbt import Compound, IntArray, List, String
 from mcfunction_parser.pack.tags import normalise_id
@@ -122,6 +126,21 @@ def related(state, entity: Entity | None, relation: str) -> list[Entity]:
         return [] if attacker is None else [attacker]
     if relation == "target" and _is_mob(entity) and not entity.data.get("NoAI"):
         raise Unmodelled(f"execute on target: a {entity.type}'s target comes from its AI, which is not modelled")
+    if relation == "controller":
+        return _controller(entity)
+    if relation == "leasher" and (_is_mob(entity) or entity.type in BOATS) and "leash" in entity.data:
+        raise Unmodelled(f"execute on leasher: a {entity.type}'s leash is not modelled")
+    return []
+
+
+def _controller(entity: Entity) -> list[Entity]:
+    riders = passengers_of(entity)
+    if not riders:
+        return []
+    if entity.type in BOATS:
+        return riders[:1] if living.is_living(riders[0].type) else []
+    if _is_mob(entity):
+        raise Unmodelled(f"execute on controller: whether a {entity.type} is steered by its rider is not modelled")
     return []
 
 

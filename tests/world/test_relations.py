@@ -180,3 +180,34 @@ def test_on_target_of_a_mob_needs_its_ai(tmp_path, backend):
     assert not any(d.unmodelled for d in emu.diagnostics)
     emu.call("t:wild")
     assert any(d.unmodelled and "target comes from its AI" in d.message for d in emu.diagnostics)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_on_controller_and_leasher(tmp_path, backend):
+    # Entity.getControllingPassenger: null unless overridden; Boat's is its first passenger when it
+    # is a LivingEntity. Leashable (Mob, Boat).getLeashHolder: null without leash data; an entity
+    # that is not Leashable gives no context (ExecuteCommand ``on leasher``). A Mob's controller
+    # (Mob, Pig, AbstractHorse: AI, saddles, held items) and a leash that is there are not modelled.
+    emu = emulator(tmp_path, backend, {
+        "t:main": 'summon boat 0 0 0 {Tags:["b"],Passengers:[{id:"minecraft:armor_stand",Tags:["r"]}]}\n'
+                  'summon boat 3 0 0 {Tags:["d"],Passengers:[{id:"minecraft:item_display",Tags:["i"]}]}\n'
+                  'summon minecart 6 0 0 {Tags:["m"],Passengers:[{id:"minecraft:armor_stand"}]}\n'
+                  'summon pig 9 0 0 {Tags:["p"],NoAI:1b}\n'
+                  "execute as @e[tag=b] on controller run tag @s add steers\n"
+                  "execute as @e[tag=d] on controller run scoreboard players add #display o 1\n"
+                  "execute as @e[tag=m] on controller run scoreboard players add #cart o 1\n"
+                  "execute as @e[tag=p] on controller run scoreboard players add #pig o 1\n"
+                  "execute as @e[tag=p] on leasher run scoreboard players add #leash o 1\n"
+                  "execute as @e[tag=m] on leasher run scoreboard players add #cartleash o 1",
+        "t:ridden": 'summon pig 0 0 3 {Tags:["q"],Passengers:[{id:"minecraft:zombie"}]}\n'
+                    "execute as @e[tag=q] on controller run say found",
+        "t:leashed": 'summon pig 0 0 6 {Tags:["l"],leash:[I;1,2,3,4]}\n'
+                     "execute as @e[tag=l] on leasher run say found"})
+    emu.call("t:main")
+    assert [e["tags"] for e in emu.entities("@e[tag=steers]")] == [["r", "steers"]]
+    assert [emu.score(h, "o") for h in ("#display", "#cart", "#pig", "#leash", "#cartleash")] == [None] * 5
+    assert not any(d.unmodelled for d in emu.diagnostics)
+    emu.call("t:ridden")
+    assert any(d.unmodelled and "steered by its rider" in d.message for d in emu.diagnostics)
+    emu.call("t:leashed")
+    assert any(d.unmodelled and "leash is not modelled" in d.message for d in emu.diagnostics)
