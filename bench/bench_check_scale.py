@@ -90,7 +90,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as tmp:
         packs = [str(p) for p in write_packs(Path(tmp), args.packs, args.lines)]
         ours = run_child(CHECK_SCRIPT, packs)
-        print(f"| figure | measured | target |\n|---|---|---|")
+        print("| figure | measured | target |\n|---|---|---|")
         print(f"| commands checked ({args.packs} packs, {ours['lines']:,} lines) | {ours['commands']:,} | "
               f">= {TARGET_COMMANDS:,} |")
         print(f"| dpemu check of them (wall; CPU of the check and its worker processes) | {ours['seconds']:.1f} s "

@@ -1,6 +1,5 @@
 """Registry tags, predicates and advancements as the loader reads them (TagLoader, the predicate and
 advancement codecs; minecraft.wiki "Tag", "Predicate", "Advancement definition")."""
-import io
 import json
 import zipfile
 
