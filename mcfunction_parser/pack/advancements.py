@@ -12,7 +12,7 @@ from __future__ import annotations
 from typing import Any
 
 from mcfunction_parser.diagnostics import Diagnostic
-from mcfunction_parser.pack import conditions
+from mcfunction_parser.pack import conditions, predicate_ids
 from mcfunction_parser.pack.text import JsonDocument
 
 # CriteriaTriggers (1.21, with the 1.21.x additions); names without the namespace.
@@ -64,10 +64,9 @@ def problem(value: Any, version) -> tuple[str, str] | None:
         if trigger.removeprefix("minecraft:") not in TRIGGERS:
             return f"unknown criterion trigger '{trigger}'", trigger
         for field, predicate in (criterion.get("conditions") or {}).items():
-            if field in CONTEXT_FIELDS and isinstance(predicate, list):  # a list of loot conditions
-                issue = conditions.problem(predicate, version)
-                if issue:
-                    return issue
+            issue = _field_problem(field, predicate, version)
+            if issue:
+                return issue
     groups = value.get("requirements")
     if groups is not None:
         if not isinstance(groups, list) or not all(isinstance(g, list) for g in groups):
@@ -79,6 +78,20 @@ def problem(value: Any, version) -> tuple[str, str] | None:
     rewards = value.get("rewards")
     if rewards is not None and not isinstance(rewards, dict):
         return '"rewards" must be an object', "rewards"
+    return None
+
+
+def _field_problem(field: str, value: Any, version) -> tuple[str, str] | None:
+    """A trigger's condition field: a ContextAwarePredicate (a list of loot conditions, or an entity
+    predicate), an item predicate (``item``, ``rod``) or a list of them (``items``, ``ingredients``)."""
+    if field in CONTEXT_FIELDS and isinstance(value, list):
+        return conditions.problem(value, version)
+    if field in CONTEXT_FIELDS and field != "location":  # ``location`` was a location predicate before 1.20
+        return predicate_ids.entity_problem(value, version)
+    if field in ("item", "rod"):
+        return predicate_ids.item_problem(value, version)
+    if field in ("items", "ingredients") and isinstance(value, list):
+        return next(filter(None, (predicate_ids.item_problem(v, version) for v in value)), None)
     return None
 
 

@@ -19,6 +19,7 @@ from mcfunction_parser import snbt
 from mcfunction_parser.items import COMPONENTS_VERSION, sub_predicate_registered
 from mcfunction_parser.diagnostics import ERROR, Diagnostic, Loc
 from mcfunction_parser.reader import ParseError, Reader
+from mcfunction_parser.pack.predicate_ids import condition_problem
 from mcfunction_parser.pack.text import JsonDocument
 
 Version = tuple[int, int, int]
@@ -99,7 +100,8 @@ def known_type(kind: str, version: Version) -> bool:
 def problem(value: Any, version: Version) -> tuple[str, str] | None:
     """Why the game refuses this predicate (a condition or a list of them): (message, the JSON
     string to point at), or None when it loads."""
-    return _structure_problem(value, version) or sub_predicate_problem(value, version)
+    return (_structure_problem(value, version) or sub_predicate_problem(value, version)
+            or condition_problem(value, version))
 
 
 def _structure_problem(value: Any, version: Version) -> tuple[str, str] | None:

@@ -429,10 +429,11 @@ def _load_registry_tags(packs: list[_PackFiles], result: LoadedPacks, jar) -> No
             registry = registry_tags.registry_for_folder(split[0], True)[0]  # the jar's own names
             registry_tags.read_registry_tag(merged, registry, f"{parts[1]}:{split[1]}", path,
                                             f"{game_jar}!/{path.at}", {}, result.diagnostics)
-    else:  # the few vanilla tags the emulator knows without the game's data
+    else:  # the few vanilla tags the emulator knows without the game's data: the newest release's
+        # members, optional so that an older release's registry leaves out the ones it lacks
         for registry, tags in BUILTIN_TAGS.items():
             for tag_id, members in tags.items():
-                entries = [TagEntry(member, False, True, Loc("<built-in>", 1, 1)) for member in sorted(members)]
+                entries = [TagEntry(member, False, False, Loc("<built-in>", 1, 1)) for member in sorted(members)]
                 merge_tag(merged.setdefault(registry, {}), tag_id, False, entries)
     for pack in packs:
         ignored_count: dict[str, tuple[int, str]] = {}
@@ -458,7 +459,8 @@ def _load_registry_tags(packs: list[_PackFiles], result: LoadedPacks, jar) -> No
             result.diagnostics.append(Diagnostic(
                 WARNING, f"{count} file(s) in '{folder}/' ignored: {pack.target_label} reads '{instead}/' instead",
                 pack.shown(folder)))
-    result.registry_tags = registry_tags.flatten(merged, result.vanilla_data, result.sources, result.diagnostics)
+    result.registry_tags = registry_tags.flatten(merged, result.vanilla_data, result.sources, result.diagnostics,
+                                                  result.version)
 
 
 def _jar_files(root, folders: tuple[str, ...]):

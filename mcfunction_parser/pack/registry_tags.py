@@ -10,8 +10,9 @@ Rules (minecraft.wiki "Tag"; TagLoader.build / TagLoader.tryBuildTag, decompiled
   drops what came before, otherwise entries append (the same merge as function tags).
 - Entries are ids or ``#tags``; a required entry that is missing makes the whole tag fail to load
   (TagLoader logs "Couldn't load tag ... as it is missing following references") and a tag that
-  fails does not exist; ``"required": false`` entries are skipped when absent. Whether a plain id
-  exists in its registry needs the game's registries and is not checked here.
+  fails does not exist; ``"required": false`` entries are skipped when absent. A plain id is
+  checked against the release's registry for the static registries dpemu has (items, blocks,
+  entity types: TagEntry.build looks the element up); a pack may add to the others.
 - A nested ``#minecraft:`` tag the emulator does not know (no game jar was given) is kept as
   *unknown*: a tag holding one matches its known members and says it is not modelled otherwise.
 """
@@ -21,6 +22,7 @@ from dataclasses import dataclass
 
 from mcfunction_parser.ast import FunctionTag
 from mcfunction_parser.diagnostics import ERROR, Diagnostic
+from mcfunction_parser.pack.predicate_ids import unknown_id
 from mcfunction_parser.pack.text import split_lines
 from mcfunction_parser.pack.tags import merge_tag, read_tag_file
 
@@ -76,21 +78,22 @@ def read_registry_tag(merged: dict[str, dict[str, FunctionTag]], registry: str, 
 
 
 def flatten(merged: dict[str, dict[str, FunctionTag]], known_vanilla: bool, sources: dict[str, list[str]],
-            diagnostics: list[Diagnostic]) -> dict[str, dict[str, RegistryTag]]:
+            diagnostics: list[Diagnostic], version=None) -> dict[str, dict[str, RegistryTag]]:
     """Every tag of every registry flattened; tags the game refuses to load are left out, with an
     error at the entry that breaks them. ``known_vanilla``: the game's own tags were loaded (a
-    missing ``#minecraft:`` tag is then missing, not unknown)."""
+    missing ``#minecraft:`` tag is then missing, not unknown). ``version``: the release whose registries the plain ids are checked
+    against (None: not checked)."""
     out: dict[str, dict[str, RegistryTag]] = {}
     for registry, tags in merged.items():
         resolved: dict[str, RegistryTag | None] = {}
         for tag_id in tags:
-            _resolve(registry, tags, tag_id, resolved, [], known_vanilla, sources, diagnostics)
+            _resolve(registry, tags, tag_id, resolved, [], known_vanilla, sources, diagnostics, version)
         out[registry] = {tag_id: tag for tag_id, tag in resolved.items() if tag is not None}
     return out
 
 
 def _resolve(registry: str, tags: dict[str, FunctionTag], tag_id: str, resolved: dict, trail: list[str],
-             known_vanilla: bool, sources, diagnostics) -> RegistryTag | None:
+             known_vanilla: bool, sources, diagnostics, version=None) -> RegistryTag | None:
     if tag_id in resolved:
         return resolved[tag_id]
     if tag_id in trail:
@@ -100,6 +103,11 @@ def _resolve(registry: str, tags: dict[str, FunctionTag], tag_id: str, resolved:
     failure = None
     for entry in tags[tag_id].entries:
         if not entry.is_tag:
+            if _missing(registry, entry.id, version):
+                if not entry.required:
+                    continue
+                failure = (entry, f"{entry.id} is not in the {registry} registry of this release")
+                break
             members.setdefault(entry.id, None)
             continue
         if entry.id in trail or entry.id == tag_id:
@@ -112,7 +120,8 @@ def _resolve(registry: str, tags: dict[str, FunctionTag], tag_id: str, resolved:
                 failure = (entry, f"#{entry.id} does not exist")
                 break
             continue
-        nested = _resolve(registry, tags, entry.id, resolved, [*trail, tag_id], known_vanilla, sources, diagnostics)
+        nested = _resolve(registry, tags, entry.id, resolved, [*trail, tag_id], known_vanilla, sources, diagnostics,
+                          version)
         if nested is None:
             if entry.required:
                 failure = (entry, f"it includes #{entry.id}, which fails to load")
@@ -129,3 +138,8 @@ def _resolve(registry: str, tags: dict[str, FunctionTag], tag_id: str, resolved:
         return None
     tag = resolved[tag_id] = RegistryTag(frozenset(members), tuple(dict.fromkeys(unknown)))
     return tag
+
+
+def _missing(registry: str, entry_id: str, version) -> bool:
+    return version is not None and registry in ("item", "block", "entity_type") and \
+        unknown_id(registry, entry_id, version) is not None

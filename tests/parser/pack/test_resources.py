@@ -123,3 +123,64 @@ def test_an_item_sub_predicate_the_release_lacks_refuses_the_file(tmp_path):
         "advancement a:inv fails to load: unknown item sub-predicate 'nope' in this release",
         "predicate a:name fails to load: unknown item sub-predicate 'minecraft:custom_name' in this release",
         "predicate a:villager fails to load: unknown item sub-predicate 'villager/variant' in this release"]
+
+
+def test_ids_inside_predicates_the_release_lacks_refuse_the_file(tmp_path):
+    # ItemPredicate.CODEC (items: homogeneousList(ITEM), components: DataComponentType.CODEC keys),
+    # EntityTypePredicate.CODEC, BlockPredicate.CODEC, SlotsPredicate.CODEC (SlotRanges.CODEC keys):
+    # an id the release does not register fails the whole file, wherever it sits
+    def entity(predicate):
+        return json.dumps({"condition": "minecraft:entity_properties", "entity": "this", "predicate": predicate})
+
+    pack = write_pack(tmp_path / "p", {
+        "data/a/predicate/ok.json": entity({"type": "#minecraft:skeletons", "equipment": {"head": {
+            "items": ["minecraft:stone"], "components": {"minecraft:damage": 1}}},
+            "slots": {"container.*": {}}, "vehicle": {"type": "minecraft:pig"}}),
+        "data/a/predicate/item.json": entity({"equipment": {"mainhand": {"items": "minecraft:no_item"}}}),
+        "data/a/predicate/type.json": json.dumps({"condition": "minecraft:inverted", "term": json.loads(
+            entity({"vehicle": {"type": ["minecraft:pig", "minecraft:no_mob"]}}))}),
+        "data/a/predicate/slot.json": entity({"slots": {"weapon.nope": {}}}),
+        "data/a/predicate/component.json": json.dumps({"condition": "minecraft:match_tool", "predicate": {
+            "components": {"minecraft:no_component": 1}}}),
+        "data/a/predicate/block.json": json.dumps({"condition": "minecraft:location_check", "predicate": {
+            "block": {"blocks": "minecraft:no_block"}}}),
+        "data/a/advancement/inv.json": json.dumps({"criteria": {"t": {
+            "trigger": "minecraft:inventory_changed", "conditions": {"items": [{"items": "minecraft:no_item"}]}}}}),
+        "data/a/advancement/player.json": json.dumps({"criteria": {"t": {
+            "trigger": "minecraft:tick", "conditions": {"player": {"type": "minecraft:no_mob"}}}}}),
+        "data/a/loot_table/l.json": json.dumps({"pools": [{"rolls": 1, "entries": [{
+            "type": "minecraft:item", "name": "minecraft:stone", "conditions": [json.loads(entity(
+                {"slots": {"weapon.nope": {}}}))]}]}]}),
+    }, meta(48))
+    loaded = load_packs([pack])
+    assert set(loaded.predicates) == {"a:ok"} and not loaded.advancements and not loaded.loot_tables
+    found = {d.path.rsplit("/", 1)[1]: d for d in loaded.errors}
+    assert found["item.json"].message == "predicate a:item fails to load: unknown item 'minecraft:no_item'"
+    assert (found["item.json"].line, found["item.json"].col) == (1, entity(
+        {"equipment": {"mainhand": {"items": "minecraft:no_item"}}}).index('"minecraft:no_item"') + 1)
+    assert "unknown entity type 'minecraft:no_mob'" in found["type.json"].message
+    assert "unknown slot range 'weapon.nope'" in found["slot.json"].message
+    assert "unknown component 'minecraft:no_component'" in found["component.json"].message
+    assert "unknown block 'minecraft:no_block'" in found["block.json"].message
+    assert "unknown item 'minecraft:no_item'" in found["inv.json"].message
+    assert "unknown entity type 'minecraft:no_mob'" in found["player.json"].message
+    assert "unknown slot range 'weapon.nope'" in found["l.json"].message
+
+
+def test_a_tag_naming_an_item_block_or_entity_type_the_release_lacks_fails_to_load(tmp_path):
+    # TagEntry.build looks each plain id up in its registry: a required one missing fails the tag
+    # ("missing following references"); an optional one is skipped; a pack may add biomes
+    pack = write_pack(tmp_path / "p", {
+        "data/a/tags/item/bad.json": tag("minecraft:stone", "minecraft:no_item"),
+        "data/a/tags/item/optional.json": tag("minecraft:stone", {"id": "minecraft:no_item", "required": False}),
+        "data/a/tags/entity_type/bad.json": tag("a:my_mob"),
+        "data/a/tags/worldgen/biome/mine.json": tag("a:my_biome"),
+    }, meta(48))
+    loaded = load_packs([pack])
+    tags = loaded.registry_tags
+    assert "a:bad" not in tags["item"] and "a:bad" not in tags["entity_type"]
+    assert tags["item"]["a:optional"].members == {"minecraft:stone"}
+    assert tags["worldgen/biome"]["a:mine"].members == {"a:my_biome"}
+    assert sorted(d.message for d in loaded.errors) == [
+        "entity_type tag #a:bad fails to load: a:my_mob is not in the entity_type registry of this release",
+        "item tag #a:bad fails to load: minecraft:no_item is not in the item registry of this release"]
