@@ -34,7 +34,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
 
-jit_cache.lean_loads(vm.run, vm.new_machine, vm.machine_address, vm.fork_contexts)  # the functions Python calls
+jit_cache.lean_loads(vm.run, vm.fork_contexts)  # the functions Python calls
 
 # The game's ExecutionContext stops a root when its queue would exceed 10,000,000 entries; each
 # frame here holds at least one pending entry, so deeper stacks than this cannot happen.
@@ -309,15 +309,15 @@ class NumbaBackend:
         if self.selbuf.shape[0] < 2 * found + 2:
             self.selbuf = np.zeros(4 * found + 4, dtype=np.int64)
         sels, sfloats, tests = self.selectors.arrays()
-        self.machine = vm.new_machine(
+        self.machine = vm.Machine(
             code, starts, floats, self.regs, self.frames, sb.values, sb.present, sb.locked, sb.alive, sb.writable,
             sb.trigger, self.counts, self.totals, self.active, self.ovf, self.cints, self.cfloats, sels, sfloats, tests,
             table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack, self.coll,
             self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random, sb.kept)
         self.loop = variants.loop_for(self.program.opcodes)
-        self.address = vm.machine_address(self.machine)
-        self.machine_type = numba.typeof(self.machine)  # a type passed to a dispatcher is typed as TypeRef
-        self._resume = _entry_point(self.loop.run, self.machine)
+        self.descriptor, self.machine_type = vm.machine(self.machine)
+        self.address = self.descriptor.ctypes.data
+        self._resume = _entry_point(self.loop.run, self.machine_type)
         self._world = (sb.values, table.ints, table.tags, table.count)
         self.leaves_used = bool(self.leaves.leaves)  # the program names numbers of storage
         self.stale = False
@@ -702,13 +702,13 @@ def _host_op_index(row: list[int]) -> int:
     return row[_HOST_OPERAND[row[0]]]
 
 
-def _entry_point(run, machine: vm.Machine):
-    """``run``'s compiled entry point for ``machine``'s type (compiling it if new): called directly
-    with the machine's address and type (which it does not read), it skips the dispatcher's type
-    checks. An instrumented ``run`` (a plain function calling the dispatcher) is itself."""
+def _entry_point(run, machine_type):
+    """``run``'s compiled entry point for machines of ``machine_type`` (compiling it if new): called
+    directly with a descriptor's address and the type (which it does not read), it skips the
+    dispatcher's type checks. An instrumented ``run`` (a plain function calling the dispatcher) is itself."""
     if not hasattr(run, "overloads"):
         return run
-    signature = (numba.types.intp, numba.typeof(numba.typeof(machine)))  # the type's type: TypeRef
+    signature = (numba.types.intp, numba.typeof(machine_type))  # a type's type: TypeRef
     if signature not in run.overloads:
         run.compile(signature)
     return run.overloads[signature].entry_point

@@ -14,7 +14,10 @@ The template is the module's source with four additions:
   OP_X``) or range; the chain's last case becomes its ``else``;
 - macro lines ``NAME(ARGS)`` (:data:`MACROS`): statements the opcodes repeat, written out where they
   stand, so that numba compiles straight-line code (a helper taking arrays slows the loop, see its
-  docs).
+  docs);
+- ``# @needs FAMILY`` lines: the rest of the enclosing block (the lines after it indented at least as
+  much) is code only a program using ``FAMILY`` reaches; a loop rendered for families without it
+  leaves that code out (:mod:`emulator.vm.variants`: less to compile).
 """
 from __future__ import annotations
 
@@ -60,6 +63,7 @@ MACROS = {
 }
 _MACRO = re.compile(r"^(\s*)([A-Z_]+)\((.*)\)$")
 _CASE = re.compile(r"^(\s*)case (\w+):(\s*#.*)?$")
+_NEEDS = re.compile(r"^(\s*)# @needs (\w+)$")
 
 
 def render(families: frozenset[str] | None = None) -> str:
@@ -71,7 +75,8 @@ def render(families: frozenset[str] | None = None) -> str:
         left = {j for i in cases[:-1] if _CASE.match(lines[i]).group(2) not in families
                 for j in (i, *_case_body(lines, i))}
         lines = [line for i, line in enumerate(lines) if i not in left]
-        cases = [i for i, line in enumerate(lines) if _CASE.match(line)]
+    lines = _unneeded_dropped(lines, families)
+    cases = [i for i, line in enumerate(lines) if _CASE.match(line)]
     out = []
     for i, line in enumerate(lines):
         if line.strip() == "# @opcodes":
@@ -95,14 +100,31 @@ def run_source(families: frozenset[str]) -> str:
     return _unused_borrows_dropped(text[start:end].rstrip() + "\n")
 
 
-_BORROW = re.compile(r"^    (\w+) = _borrowed\(m\.\1\)\n", re.M)
+_BORROW = re.compile(r"^    (\w+) = m\.\1\n", re.M)
 
 
 def _unused_borrows_dropped(source: str) -> str:
     """``source`` without the lines borrowing an array its code never reads: numba keeps each borrow
-    (a field read, the call, the counts), and a small loop reads a third of the machine's arrays."""
+    (the array made from the machine's descriptor), and a small loop reads a third of the machine's arrays."""
     code = _BORROW.sub("", re.sub(r'""".*?"""', "", source, count=1, flags=re.S))
     return _BORROW.sub(lambda m: m.group(0) if re.search(rf"\b{m.group(1)}\b", code) else "", source)
+
+
+def _unneeded_dropped(lines: list[str], families: frozenset[str] | None) -> list[str]:
+    """``lines`` without their ``# @needs`` lines, nor the code after one whose family is not in
+    ``families`` (None: every family)."""
+    out, depth = [], None  # depth: the indentation of the block being left out
+    for line in lines:
+        indent = len(line) - len(line.lstrip())
+        if depth is not None and (not line.strip() or indent >= depth):
+            continue
+        depth = None
+        needs = _NEEDS.match(line)
+        if needs is None:
+            out.append(line)
+        elif families is not None and needs.group(2) not in families:
+            depth = len(needs.group(1))
+    return out
 
 
 def _case_body(lines: list[str], at: int) -> list[int]:

@@ -14,7 +14,7 @@ the one documented in :mod:`emulator.runtime.backend`.
 
 Machine state lives in arrays owned by Python so the loop can return (for a host command, a macro
 instantiation, contexts to make, a full frame stack, a runtime error, a full buffer) and resume;
-``run`` takes them in one :class:`Machine` (its fields: :data:`MACHINE_FIELDS`):
+``run`` takes them in one :class:`Machine` (its fields: :data:`MACHINE_FIELDS`; by its descriptor, :func:`machine`):
 ``regs`` (int64, indexes ``R_*``), the frame stack ``frames`` (int64 ``[depth, F_WIDTH]``), the
 scoreboard ``values``/``present``/``locked``/``alive``/``writable``/``kept``, the per-instruction ``counts``, the
 sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, the contexts (``cints``: per context its
@@ -27,8 +27,8 @@ numbers of command storage the program names, ``lmeta``/``lvalues`` (:mod:`emula
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
 the fork loop flag) are saved in the frame and restored on return.
 
-``run`` borrows every array of its machine (:func:`_borrowed`): numba keeps no reference counts on
-them, so a helper taking arrays no longer counts each up and down with an atomic operation (that
+``run`` borrows every array of its machine (:func:`_machine_at` makes them without a meminfo):
+numba keeps no reference counts on them, so a helper taking arrays no longer counts each up and down with an atomic operation (that
 made a selector over 16 entities cost about 10x its work). A call with array arguments still
 costs more than a whole scoreboard command here, and even an untaken call in a branch slows it: the scoreboard ops resolve names and ``@s`` themselves and read a
 selector's holders from OP_SELHOLDERS, emitted just before them.
@@ -74,12 +74,13 @@ re-entered pass), so a stage that fails the command leaves the later stages unch
 """
 from __future__ import annotations
 
+import functools
 import math
+from collections import namedtuple
 
 import numpy as np
-from numba import njit, types
+from numba import njit, typeof, types
 from numba.core import cgutils
-from numba.experimental import structref
 from numba.extending import intrinsic, overload
 
 from emulator.world import java_random, mth, rotation, semantics
@@ -320,20 +321,6 @@ REL_VEHICLE, REL_PASSENGERS = -2, -3  # (SEL_TRACKED is -1)
 # storage leaves (emulator.vm.storage_leaves): lmeta[leaf] = [type, dirty, exists], lvalues[leaf] = the number;
 # type 0: no byte, short, int, float or double there; exists 2: a list's element (a number of its type only)
 LEAF_BYTE, LEAF_SHORT, LEAF_INT, LEAF_FLOAT, LEAF_DOUBLE = range(1, 6)
-
-
-@intrinsic
-def _borrowed(typingctx, array):
-    """``array`` without its reference count: a view numba keeps no count for. Every helper call
-    counts each array it is passed up on entry and down on exit, an atomic operation each, which cost
-    more than the helpers' work (a selector over 16 entities ran about 10x slower); ``run`` borrows
-    Python's arrays, which outlive the call, so the counts are skipped (a null count is not kept)."""
-    def codegen(context, builder, signature, args):
-        view = cgutils.create_struct_proxy(signature.args[0])(context, builder, value=args[0])
-        view.meminfo = cgutils.get_null_value(view.meminfo.type)
-        view.parent = cgutils.get_null_value(view.parent.type)
-        return view._getvalue()
-    return array(array), codegen
 
 
 @njit(cache=True, inline="always")
@@ -957,73 +944,65 @@ def _store_field(efloats, e, column, v):
 # ---------------------------------------------------------------- the machine
 # Every array ``run`` reads, in one structure: numba checks and unboxes each argument of a call, so
 # 32 arrays cost about 1.5 us per resume, one structure about 0.1 (through its compiled entry point).
-# The structure holds the arrays themselves: Python keeps writing them in place, and makes a new
-# machine when it replaces one (NumbaBackend._machine). ``run`` takes it by its address: unboxing the
-# structure looks its ``_meminfo`` up by name on each call, an int is read at once.
+# ``run`` takes the machine by the address of its descriptor (:func:`machine`: each array's data
+# address, shape and strides, which Python writes) and the machine's type, and makes its arrays from
+# those: nothing is unboxed on a resume, and no compiled constructor is needed (a structref's,
+# unboxing 34 arrays, took about 0.4 s of an empty-cache start).
 MACHINE_FIELDS = ("code", "func_start", "floats", "regs", "frames", "values", "present", "locked", "alive_obj",
                   "writable", "trig", "counts", "totals", "active", "ovf", "cints", "cfloats", "sels", "sfloats",
                   "tests", "eints", "efloats", "etags", "eorder", "selbuf", "logbuf", "fstack", "coll", "as_cache",
                   "batch", "lmeta", "lvalues", "erandom", "kept")
+Machine = namedtuple("Machine", MACHINE_FIELDS)  # the arrays, as ``run`` reads them (``m.code`` ...)
 
 
-@structref.register
-class MachineType(types.StructRef):
-    def preprocess_fields(self, fields):
-        return tuple((name, types.unliteral(t)) for name, t in fields)
-
-
-class Machine(structref.StructRefProxy):
-    """The VM's arrays (MACHINE_FIELDS), as ``run`` takes them."""
-
-
-structref.define_proxy(Machine, MachineType, MACHINE_FIELDS)
-
-
-@njit(cache=True)
-def new_machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
-                totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
-                logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom, kept):
-    """A :class:`Machine` of these arrays (compiled and cached: the proxy's own constructor is not cached)."""
-    return Machine(code, func_start, floats, regs, frames, values, present, locked, alive_obj, writable, trig, counts,
-                   totals, active, ovf, cints, cfloats, sels, sfloats, tests, eints, efloats, etags, eorder, selbuf,
-                   logbuf, fstack, coll, as_cache, batch, lmeta, lvalues, erandom, kept)
-
-
-@intrinsic
-def _machine_address(typingctx, machine):
-    """The address of ``machine``'s meminfo, by which :func:`run` takes it."""
-    def codegen(context, builder, signature, args):
-        ref = cgutils.create_struct_proxy(signature.args[0])(context, builder, value=args[0])
-        return builder.ptrtoint(ref.meminfo, context.get_value_type(types.intp))
-    return types.intp(machine), codegen
-
-
-@njit(cache=True)
-def machine_address(machine):
-    """The address :func:`run` takes ``machine`` by (valid while its proxy lives)."""
-    return _machine_address(machine)
+def machine(arrays: Machine) -> tuple[np.ndarray, types.NamedTuple]:
+    """The descriptor of ``arrays`` (int64: per array its data address, then its shape and strides)
+    and the machine's numba type. The arrays must live and keep their buffers while ``run`` uses the
+    descriptor: the backend keeps them beside it, and makes a new one when it replaces an array."""
+    words = []
+    for array in arrays:
+        words += (array.ctypes.data, *array.shape, *array.strides)
+    return np.array(words, dtype=np.int64), types.NamedTuple([typeof(array) for array in arrays], Machine)
 
 
 @intrinsic
 def _machine_at(typingctx, address, machine_type):
-    """The machine of type ``machine_type`` at ``address`` (:func:`machine_address`). Its proxy,
-    which Python keeps while ``run`` runs, holds it; the reference made here is counted, and ``run``
-    lets it go when it returns."""
+    """The arrays of the machine whose descriptor is at ``address`` (:func:`machine`), typed by
+    ``machine_type``. They are views numba keeps no count for (no meminfo): every helper call
+    counted each array it is passed up on entry and down on exit, an atomic operation each, which
+    cost more than the helpers' work (a selector over 16 entities ran about 10x slower). Python
+    holds the arrays while ``run`` runs."""
     instance = machine_type.instance_type
 
     def codegen(context, builder, signature, args):
-        ref = cgutils.create_struct_proxy(instance)(context, builder)
-        ref.meminfo = builder.inttoptr(args[0], ref.meminfo.type)
-        value = ref._getvalue()
-        context.nrt.incref(builder, instance, value)
-        return value
+        word_type = context.get_value_type(types.intp)
+        words = builder.inttoptr(args[0], word_type.as_pointer())
+        at = iter(range(sum(1 + 2 * array.ndim for array in instance.types)))
+
+        def word():
+            return builder.load(builder.gep(words, [context.get_constant(types.intp, next(at))]))
+
+        arrays = []
+        for array_type in instance.types:
+            array = cgutils.create_struct_proxy(array_type)(context, builder)  # numba's array: its fields
+            array.meminfo = cgutils.get_null_value(array.meminfo.type)
+            array.parent = cgutils.get_null_value(array.parent.type)
+            array.data = builder.inttoptr(word(), array.data.type)
+            shape = [word() for _ in range(array_type.ndim)]
+            array.shape = cgutils.pack_array(builder, shape)
+            array.strides = cgutils.pack_array(builder, [word() for _ in range(array_type.ndim)])
+            array.nitems = functools.reduce(builder.mul, shape, context.get_constant(types.intp, 1))
+            array.itemsize = context.get_constant(types.intp, context.get_abi_sizeof(
+                context.get_data_type(array_type.dtype)))
+            arrays.append(array._getvalue())
+        return context.make_tuple(builder, instance, arrays)
     return instance(address, machine_type), codegen
 
 
 @njit(cache=True, error_model="numpy")
 def run(address, machine_type):
-    """Run the machine at ``address`` (:func:`machine_address`; ``machine_type``: its type, known
-    when ``run`` is compiled, so the call reads no attribute of the proxy) from ``regs[R_PC]`` until
+    """Run the machine whose descriptor is at ``address`` (:func:`machine`; ``machine_type``: its
+    type, known when ``run`` is compiled) from ``regs[R_PC]`` until
     done or until Python is needed; returns an ``ST_*`` status.
 
     ``totals[f]`` gets the cost spent inside function ``f`` and its callees, counted for the
@@ -1038,40 +1017,40 @@ def run(address, machine_type):
     needed before the next one (:meth:`emulator.vm.backend.NumbaBackend.run_ticks`).
     """
     m = _machine_at(address, machine_type)
-    code = _borrowed(m.code)
-    func_start = _borrowed(m.func_start)
-    floats = _borrowed(m.floats)
-    regs = _borrowed(m.regs)
-    frames = _borrowed(m.frames)
-    values = _borrowed(m.values)
-    present = _borrowed(m.present)
-    locked = _borrowed(m.locked)
-    alive_obj = _borrowed(m.alive_obj)
-    writable = _borrowed(m.writable)
-    trig = _borrowed(m.trig)
-    counts = _borrowed(m.counts)
-    totals = _borrowed(m.totals)
-    active = _borrowed(m.active)
-    ovf = _borrowed(m.ovf)
-    cints = _borrowed(m.cints)
-    cfloats = _borrowed(m.cfloats)
-    sels = _borrowed(m.sels)
-    sfloats = _borrowed(m.sfloats)
-    tests = _borrowed(m.tests)
-    eints = _borrowed(m.eints)
-    efloats = _borrowed(m.efloats)
-    etags = _borrowed(m.etags)
-    eorder = _borrowed(m.eorder)
-    selbuf = _borrowed(m.selbuf)
-    logbuf = _borrowed(m.logbuf)
-    fstack = _borrowed(m.fstack)
-    coll = _borrowed(m.coll)
-    as_cache = _borrowed(m.as_cache)
-    batch = _borrowed(m.batch)
-    lmeta = _borrowed(m.lmeta)
-    lvalues = _borrowed(m.lvalues)
-    erandom = _borrowed(m.erandom)
-    kept = _borrowed(m.kept)
+    code = m.code
+    func_start = m.func_start
+    floats = m.floats
+    regs = m.regs
+    frames = m.frames
+    values = m.values
+    present = m.present
+    locked = m.locked
+    alive_obj = m.alive_obj
+    writable = m.writable
+    trig = m.trig
+    counts = m.counts
+    totals = m.totals
+    active = m.active
+    ovf = m.ovf
+    cints = m.cints
+    cfloats = m.cfloats
+    sels = m.sels
+    sfloats = m.sfloats
+    tests = m.tests
+    eints = m.eints
+    efloats = m.efloats
+    etags = m.etags
+    eorder = m.eorder
+    selbuf = m.selbuf
+    logbuf = m.logbuf
+    fstack = m.fstack
+    coll = m.coll
+    as_cache = m.as_cache
+    batch = m.batch
+    lmeta = m.lmeta
+    lvalues = m.lvalues
+    erandom = m.erandom
+    kept = m.kept
     # the scores as rows of one flat array each, indexed h * ncols + o (values and present have one
     # shape: the scoreboard grows them together): one index for both, computed once per score
     ncols = np.uint64(values.shape[1])

@@ -1,9 +1,13 @@
-"""How the backend resumes the VM: ``run`` takes the machine by its address and type (unboxing the
-structref read its ``_meminfo`` by name on every resume), through its compiled entry point; a plain
-function standing in for ``run`` (bench/run.py's timer of the VM's share of a tick) gets the same
-arguments and calls the dispatcher with them."""
+"""How the backend resumes the VM: ``run`` takes the machine by the address of its descriptor and
+its type (nothing is unboxed on a resume), through its compiled entry point; a plain function
+standing in for ``run`` (bench/run.py's timer of the VM's share of a tick) gets the same arguments
+and calls the dispatcher with them."""
 from __future__ import annotations
 
+import numpy as np
+from numba import njit
+
+from emulator.vm import loop as vm
 from tests.vm.helpers import SETUP, emulator_for
 
 FUNCTIONS = {"t:setup": SETUP, "t:f": "scoreboard players add #n o 1\ntime query gametime\n" * 3}
@@ -40,3 +44,22 @@ def test_a_plain_function_standing_in_for_run_is_called_with_the_same_arguments(
         emu.backend.stale = True
     assert len(calls) == 4  # the root's start and a resume after each of the three host commands
     assert emu.score("#n", "o") == 6
+
+
+@njit
+def _read(address, machine_type):
+    m = vm._machine_at(address, machine_type)
+    m.regs[0] = m.values[1, 2] + m.code[2, 1] + m.floats[4]
+    return m.values.shape[0] * 100 + m.values.shape[1] * 10 + m.values.strides[0] // 8
+
+
+def test_run_makes_the_machines_arrays_from_its_descriptor():
+    arrays = [np.zeros(2, dtype=np.int64) for _ in vm.MACHINE_FIELDS]
+    fields = dict(zip(vm.MACHINE_FIELDS, arrays))
+    wide = np.arange(40, dtype=np.int32).reshape(5, 8)
+    fields.update(code=wide, values=wide[::2, 1:4], floats=np.arange(6, dtype=np.float64) / 2)  # values: strided
+    machine = vm.Machine(**fields)
+    descriptor, machine_type = vm.machine(machine)
+    assert descriptor[0] == wide.ctypes.data and list(descriptor[1:5]) == [5, 8, 32, 4]  # code: data, shape, strides
+    assert _read(descriptor.ctypes.data, machine_type) == 3 * 100 + 3 * 10 + 8
+    assert fields["regs"][0] == wide[2, 3] + wide[2, 1] + 2  # values[1, 2] is wide[2, 3]

@@ -67,6 +67,13 @@ def test_a_macro_instance_past_the_small_set_moves_to_the_whole_loop(tmp_path):
 def test_the_tiny_loop_has_no_operation_branch_and_borrows_only_what_it_reads():
     text = generate.run_source(variants.TINY)
     assert "_operate(" not in text and "FIRST_OPERATION" not in text and "status = ST_HOST" in text
-    borrowed = re.findall(r"(\w+) = _borrowed\(m\.\1\)", text)
+    borrowed = re.findall(r"(\w+) = m\.\1\n", text)
     assert "values" in borrowed and "eints" not in borrowed and "ovf" in borrowed
     assert len(borrowed) < len(loop.MACHINE_FIELDS) // 2
+
+
+def test_code_only_a_family_reaches_is_left_out_of_the_loops_without_it():
+    # the set/add/remove on the holders a SELHOLDERS found (`# @needs selholders`): tiny has none
+    assert "_set_score(" not in generate.run_source(variants.TINY)
+    assert "_set_score(" in generate.run_source(variants.TINY | {"selholders"})
+    assert "@needs" not in generate.render() and "_set_score(" in generate.render()
