@@ -22,10 +22,14 @@ from emulator.testing.junit import junit_xml
               help="A pack loaded beneath each pack under test (a library, another module it needs); repeatable.")
 @click.option("--together", is_flag=True,
               help="Load every pack under test into one world and run all their tests there, as a collection's CI does.")
+@click.option("--isolate", is_flag=True,
+              help="Run each test alone in a fresh world (default: one world, batches in turn, a batch's tests together, "
+                   "as the game test server).")
 @click.option("--allow-unmodelled", is_flag=True,
               help="A test meeting something the emulator does not model passes or fails as it ran (default: inconclusive).")
 @game_jar_option
-def test(paths, pattern, junit_file, backend, strict, with_packs, together, allow_unmodelled, game_jar) -> None:
+def test(paths, pattern, junit_file, backend, strict, with_packs, together, isolate, allow_unmodelled,
+         game_jar) -> None:
     """Run PackTest-format test files.
 
     PATHS: packs as folders or .zip files, folders in a pack, or test files."""
@@ -52,7 +56,8 @@ def test(paths, pattern, junit_file, backend, strict, with_packs, together, allo
             click.echo(result.report())
 
         run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict,
-                  with_packs=with_packs, together=together, allow_unmodelled=allow_unmodelled, game_jar=game_jar)
+                  with_packs=with_packs, together=together, allow_unmodelled=allow_unmodelled, game_jar=game_jar,
+                  isolate=isolate)
     if not summary.results and not stopped[0]:
         click.echo("no test files (data/<ns>/test/**.mcfunction" + (f" matching -k {pattern!r}" if pattern else "")
                    + ") under " + ", ".join(paths), err=True)

@@ -1,11 +1,13 @@
 """Running PackTest-format mcfunction test files (``data/<ns>/test/**.mcfunction``) in the emulator.
 
 discovery finds test files and their packs; directives and testfile read one file into a
-:class:`~emulator.testing.testfile.TestCase`; runner runs cases in fresh worlds; results and
-junit report them. The format is misode/packtest's (README and PackTestFunction):
+:class:`~emulator.testing.testfile.TestCase`; batches orders and places them as the game test
+server does; runner runs them in one world (or each in a fresh one); results and junit report
+them. The format is misode/packtest's (README and PackTestFunction):
 
-- every test gets a fresh world: the pack loaded and ``#minecraft:load`` run; the test's commands
-  run as the server (or its ``@dummy`` player) at (0, 1, 0), the test structure's corner;
+- the tests share one world (the packs loaded and ``#minecraft:load`` run), batch after batch, a
+  batch's tests together; the test's commands run as the server (or its ``@dummy`` player) at its
+  structure's corner on the grid ((0, 1, 0) for the first);
 - ``assert [not] COND`` / ``await [not] COND`` with the conditions of ``execute if`` (checked by
   the emulator itself) and PackTest's ``chat PATTERN``; ``await delay TIME`` (``await for`` in
   older PackTest); ``fail MESSAGE``; ``succeed``; each also after ``execute ... run``;

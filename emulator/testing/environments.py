@@ -7,7 +7,9 @@ environment definition").
 - ``game_rules`` {bool_rules: [{rule, value}], int_rules: [{rule, value}]} (and the newer
   ``rules`` map): set for the test;
 - ``time_of_day`` {time}: the day time for the test.
-Each test here has a world of its own, so nothing needs resetting afterwards. A type the emulator
+The runner sets a batch's environment up before its tests and tears it down when the next batch
+starts: the teardown functions run and the rules and day time go back to what they were
+(TestEnvironmentDefinition.SetGameRules, ClockTime teardown). A type the emulator
 does not model (``weather``: there is no weather here; any other) makes the test inconclusive
 with that reason, never silently ignored.
 """

@@ -1,12 +1,14 @@
-"""Running test cases: each in a fresh world (its pack loaded, ``#minecraft:load`` run), steps in
-order, ``await`` ticking the world (``#minecraft:tick``, schedules) until the test's timeout."""
+"""Running test cases as the game test server runs them: one world (its packs loaded,
+``#minecraft:load`` run), the batches in turn, the tests of a batch together; each test's steps in
+order, ``await`` waiting for the world's next tick (``#minecraft:tick``, schedules) until the
+test's timeout. Or each test alone in a fresh world (``isolate``)."""
 from __future__ import annotations
 
 import os
 import random
 import re
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import replace
 from pathlib import Path
 
@@ -16,14 +18,14 @@ from emulator.commands import stages
 from emulator.commands.env import Env
 from emulator.world.errors import CommandFailure
 from emulator.world.context import Context
-from emulator.testing import chat, environments
+from emulator.testing import batches, chat, environments
 from emulator.testing.discovery import TestFile, selected
 from emulator.testing.dummies import Dummies, DummyFailure, Unsupported
 from emulator.testing.results import FAILED, INCONCLUSIVE, PASSED, Summary, TestResult
 from emulator.testing.testfile import (
     ChatCheck, Check, Delay, Dummy, Fail, InsideCheck, PerContext, Run, Succeed, TestCase, read_test,
 )
-from emulator.world import structures
+from emulator.world import players, structures
 from emulator.world.blocks import BlockSpec
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
@@ -82,9 +84,9 @@ def load_suite(files: list[TestFile], pattern: str | None = None, with_packs=(),
 def _in_batches(cases: list[TestCase]) -> list[TestCase]:
     """Order by batch (first appearance) and give every test of a batch the batch's
     @beforebatch/@afterbatch; a second, different one in a batch is an error of the test giving
-    it (PackTest allows one per batch). As each test has a world of its own, the batch's commands
-    run in each test's world, before and after the test."""
-    batches: dict[str, list[TestCase]] = {}
+    it (PackTest allows one per batch). They run once, before and after the batch (a test's own
+    when tests run isolated)."""
+    groups: dict[str, list[TestCase]] = {}
     hooks: dict[tuple[str, str], tuple[str, str | None]] = {}  # (batch, directive) -> (text, function)
     for case in cases:
         d = case.directives
@@ -96,31 +98,64 @@ def _in_batches(cases: list[TestCase]) -> list[TestCase]:
             if first != given[0]:
                 message = f"{name}: batch {d.batch!r} already has {first!r}"
                 case.errors.append(Diagnostic.at("error", message, given[1]))
-        batches.setdefault(d.batch, []).append(case)
-    for batch, members in batches.items():
+        groups.setdefault(d.batch, []).append(case)
+    for batch, members in groups.items():
         for case in members:
             case.before_batch = hooks.get((batch, "@beforebatch"), (None, None))[1]
             case.after_batch = hooks.get((batch, "@afterbatch"), (None, None))[1]
-    return [case for members in batches.values() for case in members]
+    return [case for members in groups.values() for case in members]
 
 
 def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None = None,
               on_result: Callable[[TestResult], None] | None = None, on_load=None, strict: bool = False,
-              with_packs=(), together: bool = False, allow_unmodelled: bool = False, game_jar=None) -> Summary:
+              with_packs=(), together: bool = False, allow_unmodelled: bool = False, game_jar=None,
+              isolate: bool = False) -> Summary:
     """Run every test in ``files`` (those whose id contains ``pattern``, case-insensitively);
     ``strict``: a runtime error during a test fails it; ``with_packs`` and ``together`` as
     :func:`load_suite`; ``allow_unmodelled``: a test that met something the emulator does not
-    model passes or fails as it ran (else it is inconclusive)."""
+    model passes or fails as it ran (else it is inconclusive); ``isolate``: each test in a world
+    of its own (else as the game test server: see :func:`run_cases`). ``on_result`` sees each
+    result as its test ends."""
     summary = Summary()
     for packs, cases in load_suite(files, pattern, with_packs, together, game_jar):
         if on_load is not None:
             on_load(packs)
-        for case in cases:
-            result = run_case(case, packs, backend, strict, allow_unmodelled)
+        for result in run_cases(packs, cases, backend, strict, allow_unmodelled, isolate):
             summary.results.append(result)
             if on_result is not None:
                 on_result(result)
     return summary
+
+
+def run_cases(packs, cases: list[TestCase], backend: str = "numba", strict: bool = False,
+              allow_unmodelled: bool = False, isolate: bool = False) -> Iterator[TestResult]:
+    """Each case's result as its test ends. As the game test server runs them (default): one
+    world for all, the batches one after another in the game's order, the tests of a batch
+    placed side by side and run together (:mod:`emulator.testing.batches`), so what a test leaves
+    outside its structure (scores, storage, entities, blocks) is there for the tests after it.
+    ``isolate``: each test alone in a fresh world. A test that cannot be read fails at once."""
+    for case in cases:
+        if case.errors:
+            yield _unreadable(case)
+    runnable = [case for case in cases if not case.errors]
+    if isolate:
+        for case in runnable:
+            yield from _World(packs, backend, strict, allow_unmodelled).run([batches.Batch(case.id, [case])])
+    elif runnable:
+        plan = batches.plan(runnable, packs.version >= _TEST_INSTANCES)
+        yield from _World(packs, backend, strict, allow_unmodelled).run(plan)
+
+
+def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False,
+             allow_unmodelled: bool = False) -> TestResult:
+    """One test alone in a fresh world."""
+    return next(run_cases(packs, [case], backend, strict, allow_unmodelled, isolate=True))
+
+
+def _unreadable(case: TestCase) -> TestResult:
+    first = case.errors[0]
+    return TestResult(case.id, case.path, FAILED, first.message, first.line, optional=case.directives.optional,
+                      details=[d.format() for d in case.errors])
 
 
 def fresh_world(packs, backend: str) -> Emulator:
@@ -136,116 +171,267 @@ def run_load(emu: Emulator) -> Emulator:
     return emu
 
 
-def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False,
-             allow_unmodelled: bool = False) -> TestResult:
-    result = TestResult(case.id, case.path, PASSED, optional=case.directives.optional)
-    if case.errors:
-        first = case.errors[0]
-        result.status, result.message, result.line = FAILED, first.message, first.line
-        result.details = [d.format() for d in case.errors]
-        return result
-    started = time.perf_counter()
-    emu = fresh_world(packs, backend)
-    emu.tick()  # the rest of the server's first tick: GameTestServer.startTests runs after it
-    source = TestSource(emu, Dummies(emu.state))
-    try:
-        prepare(source, packs, case)
-        source.dummy_entity = spawn_dummy(source, case)
-        _run_steps(emu, source, case)
-    except _Verdict as verdict:
-        result.status, result.message, result.line = verdict.status, verdict.message, verdict.line
-    except Exception as error:  # an emulator bug fails this test, not the suite
-        result.status, result.message = FAILED, f"internal error: {type(error).__name__}: {error}"
-    for function in source.environment.teardown if source.environment else ():
-        emu.call(function)
-    if case.after_batch:
-        emu.call(case.after_batch)
-    result.ticks = emu.ticks - source.started
-    result.seconds = time.perf_counter() - started
-    errors = [d for d in emu.diagnostics if d.severity == "error"]
-    unmodelled = [d for d in emu.diagnostics if d.unmodelled]
-    if result.status in (PASSED, FAILED) and unmodelled and not allow_unmodelled:
-        # what the test saw may hang on the missing behaviour: neither a pass nor a failure
-        first = unmodelled[0]
-        where = f"{first.frames[-1].loc}: " if first.frames else ""
-        verdict = f"the test {'passed' if result.status == PASSED else 'failed (' + result.message + ')'}"
-        result.status, result.message = INCONCLUSIVE, f"{where}{first.message}; {verdict}"
-        result.line = first.frames[-1].loc.line if first.frames else result.line
-    elif result.status == PASSED and errors and strict:
-        result.status, result.message = FAILED, f"{len(errors)} runtime error(s) during the test (--strict)"
-    # shown with the test: every diagnostic when it did not pass, the runtime errors when it did
-    shown = emu.diagnostics if result.status != PASSED else errors
-    result.details = list(dict.fromkeys(d.format() for d in shown))
-    return result
-
-
 _TEST_INSTANCES = (1, 21, 5)  # the game's own test instances and environments (PackTest 2)
 _CHUNK_WAIT = 20  # GameTestInfo.ticksToWaitForChunkLoading before 1.21.5
+_STONE = BlockSpec("minecraft:stone", False, (), None)
+_AIR = BlockSpec("minecraft:air", False, (), None)
+_STRUCTURE_BLOCK = BlockSpec("minecraft:structure_block", False, (), None)
 
 
-def prepare(source: TestSource, packs, case: TestCase) -> None:
-    """What the game does between the batch's start (the end of the server's first tick, after
-    ``#minecraft:load``: GameTestServer.tickServer -> startTests) and the test's first line, then
-    ``source.started``. From 1.21.5 (GameTestRunner.runBatch, GameTestInfo.startExecution and
-    tickInternal): the structure is placed and encased, the environment set up, and the test
-    starts in the game test ticker's second tick, after that tick's functions and block ticks
-    (MinecraftServer.tickChildren ticks it last). Before (PackTest 1.x ticks the ticker first in
-    each server tick, MinecraftServerMixin): the test is encased and the batch's function runs,
-    the test waits 20 ticks (GameTestInfo.ensureStructureIsPlaced), then its structure is placed
-    and it starts at the start of the next tick. A server slower to load the test's chunks waits
-    longer; the emulator takes the shortest wait."""
-    emu, version = source.emu, packs.version
-    template = read_template(packs, case.directives.template) if case.directives.template else None
-    source.size = template.size if template is not None else (1, 1, 1)
-    if version >= _TEST_INSTANCES and template is not None:
-        structures.place(emu.state, template, TestSource.block_origin())
-    encase(emu, version, source.size, case.directives.sky_access)
-    if case.before_batch:
-        emu.call(case.before_batch)
-    source.environment = set_up_environment(emu, packs, case.directives.environment)
-    emu.tick(2 if version >= _TEST_INSTANCES else _CHUNK_WAIT)
-    if version < _TEST_INSTANCES and template is not None:
-        structures.place(emu.state, template, TestSource.block_origin())
-    source.started = emu.ticks
+class _Running:
+    """One test of the running batch: its source, its steps once started, its verdict."""
+
+    def __init__(self, case: TestCase, source: TestSource) -> None:
+        self.case, self.source = case, source
+        self.template = None
+        self.steps = None  # the test's steps (a generator yielding whenever it waits a tick)
+        self.verdict: _Verdict | None = None
+        self.diagnostics: list = []  # the runtime diagnostics that may bear on it
+        self.clock = time.perf_counter()
+
+
+class _World:
+    """The game test server's world: loaded once (``#minecraft:load``, the first tick), then the
+    batches run in it one after another (GameTestRunner.runBatch)."""
+
+    def __init__(self, packs, backend: str, strict: bool, allow_unmodelled: bool) -> None:
+        self.packs, self.strict, self.allow_unmodelled = packs, strict, allow_unmodelled
+        self.test_instances = packs.version >= _TEST_INSTANCES
+        self.emu = fresh_world(packs, backend)
+        self.emu.tick()  # the rest of the server's first tick: GameTestServer.startTests runs after it
+        self.dummies = Dummies(self.emu.state)
+        self.grid = batches.Grid(TestSource.block_origin())
+        self.seen = 0
+        self.shared = self._new_diagnostics()  # the load's and the first tick's: every test's
+        self.environments: list = []  # set up for the running batch, torn down when the next starts
+
+    def _new_diagnostics(self) -> list:
+        new = self.emu.diagnostics[self.seen:]
+        self.seen = len(self.emu.diagnostics)
+        return new
+
+    def _charge(self, runs) -> None:
+        """The diagnostics since the last charge go to ``runs`` (those running when they arose)."""
+        new = self._new_diagnostics()
+        for run in runs:
+            run.diagnostics += new
+
+    def run(self, plan: list[batches.Batch]) -> Iterator[TestResult]:
+        for batch in plan:
+            yield from self._run_batch(batch)
+        self._end_environments()
+
+    def _run_batch(self, batch: batches.Batch) -> Iterator[TestResult]:
+        emu = self.emu
+        runs = [_Running(case, TestSource(emu, self.dummies)) for case in batch.cases]
+        for run in runs:  # GameTestRunner.createStructuresForBatch
+            self._catch(run, self._prepare, run)
+        first = batch.cases[0]
+        if first.before_batch:
+            emu.call(first.before_batch)
+            self._charge(runs)
+        self._end_environments()
+        for environment_id in dict.fromkeys(case.directives.environment for case in batch.cases):
+            users = [run for run in runs if run.case.directives.environment == environment_id]
+            activation = self._catch(users, set_up_environment, emu, self.packs, environment_id)
+            if activation is not None:
+                self.environments.append(activation)
+        emu.tick(2 if self.test_instances else _CHUNK_WAIT)
+        self._charge(runs)
+        for run in runs:  # GameTestInfo.startTest, in the ticker's order
+            if run.verdict is None:
+                if not self.test_instances and run.template is not None:
+                    structures.place(emu.state, run.template, run.source.block_corner)
+                run.source.started = emu.ticks
+                run.steps = self._steps(run)
+        active = [run for run in runs if run.verdict is None]
+        for run in runs:
+            if run.verdict is not None:
+                yield self._result(run)
+        while active:
+            for run in active:
+                self._advance(run)
+            for run in active:
+                if run.verdict is not None:
+                    yield self._result(run)
+            active = [run for run in active if run.verdict is None]
+            if active:
+                emu.tick()
+                self._charge(active)
+        if first.after_batch:
+            emu.call(first.after_batch)
+
+    def _catch(self, runs, action, *args):
+        """``action(*args)``; a verdict it raises is that of ``runs`` (one or a list)."""
+        runs = runs if isinstance(runs, list) else [runs]
+        try:
+            return action(*args)
+        except _Verdict as verdict:
+            for run in runs:
+                run.verdict = run.verdict or verdict
+        finally:
+            self._charge(runs)
+        return None
+
+    def _prepare(self, run: _Running) -> None:
+        """The test's place on the grid, cleared, its structure (from 1.21.5; before, its structure
+        block under the corner: the structure comes when the test starts) and the barriers round it
+        (StructureGridSpawner.spawnStructure, GameTestInfo.prepareTestStructure)."""
+        directives, source = run.case.directives, run.source
+        run.template = read_template(self.packs, directives.template) if directives.template else None
+        source.size = run.template.size if run.template is not None else (1, 1, 1)
+        corner = self.grid.place(source.size)
+        source.origin = tuple(float(c) for c in corner)
+        self._clear(corner, source.size)
+        if not self.test_instances:
+            self.emu.state.blocks.place((corner[0], corner[1] - 1, corner[2]), _STRUCTURE_BLOCK)
+        elif run.template is not None:
+            structures.place(self.emu.state, run.template, corner)
+        encase(self.emu, self.packs.version, corner, source.size, directives.sky_access)
+
+    def _clear(self, corner, size) -> None:
+        """StructureUtils.clearSpaceForStructure (and PackTest's StructureUtilsMixin for dummies)."""
+        state = self.emu.state
+        low, high = batches.cleared_box(corner, size)
+        floor = corner[1] - 1
+        for x in range(low[0], high[0] + 1):
+            for y in range(low[1], high[1] + 1):
+                for z in range(low[2], high[2] + 1):
+                    state.blocks.place((x, y, z), _STONE if y < floor else _AIR)
+        self._remove_entities(low, tuple(c + 1 for c in high))
+
+    def _remove_entities(self, low, high) -> None:
+        """Entities other than players in the box leave the world; dummies whose block is in it leave."""
+        state = self.emu.state
+        for entity in list(state.entities.entities):
+            inside = all(lo <= p < hi for p, lo, hi in zip(entity.pos, low, high))
+            if inside and entity.is_player and entity.uuid in self.dummies.spawns:
+                players.leave(state, entity)
+            elif inside and not entity.is_player:
+                state.entities.kill(entity)
+
+    def _end_environments(self) -> None:
+        for activation in reversed(self.environments):  # GameTestRunner.endCurrentEnvironment
+            tear_down_environment(self.emu, activation)
+        self.environments = []
+
+    def _steps(self, run: _Running):
+        run.source.dummy_entity = spawn_dummy(run.source, run.case)
+        yield from _run_steps(self.emu, run.source, run.case)
+
+    def _advance(self, run: _Running) -> None:
+        """The test's next tick (GameTestInfo.tick): its steps until it waits again or ends."""
+        try:
+            next(run.steps)
+        except StopIteration:
+            run.verdict = _Verdict(PASSED)
+        except _Verdict as verdict:
+            run.verdict = verdict
+        except Exception as error:  # an emulator bug fails this test, not the suite
+            run.verdict = _Verdict(FAILED, f"internal error: {type(error).__name__}: {error}")
+        finally:
+            self._charge([run])
+        if run.verdict is not None:
+            self._finish(run)
+
+    def _finish(self, run: _Running) -> None:
+        """A test that ended: on success the entities in its bounds grown by a block are removed
+        and its dummies there leave (GameTestInfo.succeed, PackTest's GameTestInfoMixin); from
+        1.21.5 its barriers go (GameTestRunner's testCompleted: removeBarriers)."""
+        source = run.source
+        if run.verdict.status == PASSED:
+            low = tuple(o - 1 for o in source.origin)
+            self._remove_entities(low, tuple(o + s + 1 for o, s in zip(source.origin, source.size)))
+        if self.test_instances:
+            encase(self.emu, self.packs.version, source.block_corner, source.size, run.case.directives.sky_access,
+                   remove=True)
+        self._charge([run])
+
+    def _result(self, run: _Running) -> TestResult:
+        verdict, emu = run.verdict, self.emu
+        result = TestResult(run.case.id, run.case.path, verdict.status, verdict.message, verdict.line,
+                            optional=run.case.directives.optional)
+        result.ticks = emu.ticks - run.source.started if run.steps is not None else 0
+        result.seconds = time.perf_counter() - run.clock
+        diagnostics = self.shared + run.diagnostics
+        errors = [d for d in diagnostics if d.severity == "error"]
+        unmodelled = [d for d in diagnostics if d.unmodelled]
+        if result.status in (PASSED, FAILED) and unmodelled and not self.allow_unmodelled:
+            # what the test saw may hang on the missing behaviour: neither a pass nor a failure
+            first = unmodelled[0]
+            where = f"{first.frames[-1].loc}: " if first.frames else ""
+            seen = f"the test {'passed' if result.status == PASSED else 'failed (' + result.message + ')'}"
+            result.status, result.message = INCONCLUSIVE, f"{where}{first.message}; {seen}"
+            result.line = first.frames[-1].loc.line if first.frames else result.line
+        elif result.status == PASSED and errors and self.strict:
+            result.status, result.message = FAILED, f"{len(errors)} runtime error(s) during the test (--strict)"
+        # shown with the test: every diagnostic when it did not pass, the runtime errors when it did
+        shown = diagnostics if result.status != PASSED else errors
+        result.details = list(dict.fromkeys(d.format() for d in shown))
+        return result
 
 
 def set_up_environment(emu: Emulator, packs, environment_id: str):
     """The test environment's rules and day time, then its setup functions (as the server, as
-    TestEnvironmentDefinition.Functions runs them). One that cannot be set up fails the test; one
-    the emulator does not model makes it inconclusive."""
+    TestEnvironmentDefinition.Functions runs them); returns what :func:`tear_down_environment`
+    needs. One that cannot be set up fails the tests using it; one the emulator does not model
+    makes them inconclusive. From 1.21.5 the game sets up a batch's environment when the batch
+    starts and tears it down when the next one starts (GameTestRunner.runBatch,
+    endCurrentEnvironment); the emulator does the same before 1.21.5."""
     try:
         environment = environments.resolve(packs, environment_id)
     except environments.EnvironmentError as error:
         raise _Verdict(INCONCLUSIVE if error.unmodelled else FAILED, error.message) from None
+    state = emu.state
+    saved = ([(rule, state.gamerules.get(rule)) for rule, _ in environment.rules], state.daytime)
     for rule, value in environment.rules:
-        emu.state.gamerules.set(rule, value)
+        state.gamerules.set(rule, value)
     if environment.day_time is not None:
-        emu.state.daytime = environment.day_time
+        state.daytime = environment.day_time
     for function in environment.setup:
         if function not in packs.functions:
             raise _Verdict(FAILED, f"test environment {environment_id}: unknown setup function {function}")
         emu.call(function)
-    return environment
+    return environment, saved
+
+
+def tear_down_environment(emu: Emulator, activation) -> None:
+    """TestEnvironmentDefinition.teardown: the teardown functions, and the rules and day time the
+    environment set back to what they were before its setup (SetGameRules, ClockTime)."""
+    environment, (rules, day_time) = activation
+    for function in environment.teardown:
+        emu.call(function)
+    for rule, value in reversed(rules):
+        if value is not None:
+            emu.state.gamerules.set(rule, value)
+    if environment.day_time is not None:
+        emu.state.daytime = day_time
 
 
 _BARRIER = BlockSpec("minecraft:barrier", False, (), None)
 _FLOORED_ENCASING = (1, 21, 5)  # TestInstanceBlockEntity (1.21.5+) adds a floor; StructureUtils before it
 
 
-def encase(emu: Emulator, version, size, sky_access: bool) -> None:
-    """Barriers round the test structure, as the game encases a test: walls one block outside it, a
-    ceiling unless the test has sky access, and from 1.21.5 a floor (TestInstanceBlockEntity.
-    processStructureBoundary; StructureUtils.encaseStructure before)."""
-    x0, y0, z0 = (int(c) for c in TestSource.ORIGIN)
+def encase(emu: Emulator, version, corner, size, sky_access: bool, remove: bool = False) -> None:
+    """Barriers round the test structure whose corner is ``corner``, as the game encases a test:
+    walls one block outside it, a ceiling unless the test has sky access, and from 1.21.5 a floor
+    (TestInstanceBlockEntity.processStructureBoundary; StructureUtils.encaseStructure before).
+    ``remove``: the barriers there become air again (TestInstanceBlockEntity.removeBarriers)."""
+    x0, y0, z0 = corner
     low = (x0 - 1, y0 - 1 if version >= _FLOORED_ENCASING else y0, z0 - 1)
     high = (x0 + size[0], y0 + size[1], z0 + size[2])
     floor = version >= _FLOORED_ENCASING
+    blocks = emu.state.blocks
     for x in range(low[0], high[0] + 1):
         for y in range(low[1], high[1] + 1):
             for z in range(low[2], high[2] + 1):
                 wall = x in (low[0], high[0]) or z in (low[2], high[2]) or (floor and y == low[1])
-                if wall or (y == high[1] and not sky_access):
-                    emu.state.blocks.setblock((x, y, z), _BARRIER)
+                if not (wall or (y == high[1] and not sky_access)):
+                    continue
+                if not remove:
+                    blocks.place((x, y, z), _BARRIER)
+                elif blocks.get((x, y, z)).id == _BARRIER.id:
+                    blocks.place((x, y, z), _AIR)
 
 
 def read_template(packs, template_id: str):
@@ -262,27 +448,31 @@ def read_template(packs, template_id: str):
 
 class TestSource:
     """Where test commands run (PackTestExecutor.createCommandSourceStack): as the server, or as the
-    test's dummy, at the test structure's corner (0, 1, 0). PackTest 1.x ran them at the test's
-    structure block + (0, 1, 0), which is where the structure block places a structure, and
-    PackTest 2 at the test origin, the same corner. The dummy stays the source's entity even after
-    it left or respawned, as in PackTest."""
+    test's dummy, at the test structure's corner (its place on the grid: the first test's is
+    (0, 1, 0)). PackTest 1.x ran them at the test's structure block + (0, 1, 0), which is where the
+    structure block places a structure, and PackTest 2 at the test origin, the same corner. The
+    dummy stays the source's entity even after it left or respawned, as in PackTest."""
 
-    ORIGIN = (0.0, 1.0, 0.0)
+    ORIGIN = (0.0, 1.0, 0.0)  # the first test's corner
 
     def __init__(self, emu: Emulator, dummies: Dummies, size=(1, 1, 1)) -> None:
         self.emu, self.dummies = emu, dummies
-        self.size = size  # of the test structure, whose corner is ORIGIN
+        self.origin = self.ORIGIN
+        self.size = size  # of the test structure, whose corner is origin
         self.dummy_entity: Entity | None = None
-        self.environment = None  # the test environment set up for it
         self.started = emu.ticks  # the world's tick when its first line ran
 
     @classmethod
     def block_origin(cls) -> tuple[int, int, int]:
         return tuple(int(c) for c in cls.ORIGIN)
 
+    @property
+    def block_corner(self) -> tuple[int, int, int]:
+        return tuple(int(c) for c in self.origin)
+
     def inside(self, entity: Entity) -> bool:
         """GameTestHelper.getBounds().inflate(1).contains(position): half-open on the far side."""
-        return all(o - 1 <= p < o + s + 1 for p, o, s in zip(entity.pos, self.ORIGIN, self.size))
+        return all(o - 1 <= p < o + s + 1 for p, o, s in zip(entity.pos, self.origin, self.size))
 
     @property
     def dummy(self) -> str | None:
@@ -291,8 +481,8 @@ class TestSource:
 
     def context(self) -> Context:
         if self.dummy_entity is None:
-            return Context(pos=self.ORIGIN)
-        return replace(world_entities.entity_context(self.emu.state, self.dummy_entity), pos=self.ORIGIN)
+            return Context(pos=self.origin)
+        return replace(world_entities.entity_context(self.emu.state, self.dummy_entity), pos=self.origin)
 
     def call(self, function: str, context: Context | None = None) -> int | None:
         return self.emu.runtime.call(function, context or self.context()).result
@@ -326,7 +516,7 @@ def spawn_dummy(source: TestSource, case: TestCase) -> Entity | None:
     test id), at the directive's position relative to the test origin."""
     if case.directives.dummy is None:
         return None
-    pos = _position(case.directives.dummy, TestSource.ORIGIN)
+    pos = _position(case.directives.dummy, source.origin)
     if pos is None:
         raise _Verdict(FAILED, "Failed to initialize test with dummy", 1)
     name = f"Dummy{random.Random(case.id).randrange(100, 1000)}"
@@ -352,7 +542,8 @@ def _position(text: str, origin: tuple[float, float, float]) -> tuple[float, flo
     return tuple(out)
 
 
-def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
+def _run_steps(emu: Emulator, source: TestSource, case: TestCase):
+    """The test's lines in order (a generator: it yields whenever the test waits for the next tick)."""
     timeout = case.directives.timeout
     chat_start = len(emu.log)  # chat conditions see the messages since the test started
     for step in case.steps:
@@ -365,21 +556,21 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase) -> None:
                 raise _Verdict(FAILED, describe_failure(source, step, chat_start), step.loc.line)
         elif isinstance(step, (Check, ChatCheck, InsideCheck)):
             while not _holds(source, step, chat_start):
-                _tick_or_time_out(source, timeout, step, describe_failure(source, step, chat_start))
+                yield from _wait(source, timeout, step, describe_failure(source, step, chat_start))
         elif isinstance(step, Delay):
             for _ in range(step.ticks):
-                _tick_or_time_out(source, timeout, step, f"still in 'await delay {step.ticks}'")
+                yield from _wait(source, timeout, step, f"still in 'await delay {step.ticks}'")
         elif isinstance(step, Fail):
             raise _Verdict(FAILED, step.message, step.loc.line)
         elif isinstance(step, Succeed):
-            raise _Verdict(PASSED)
+            return
         elif isinstance(step, Dummy):
             _act(source, step, source.context())
         elif isinstance(step, PerContext):
-            _run_per_context(emu, source, step, timeout, chat_start)
+            yield from _run_per_context(emu, source, step, timeout, chat_start)
 
 
-def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeout: int, chat_start: int) -> None:
+def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeout: int, chat_start: int):
     """PackTestExecutor: the test command runs in each context of the prefix now; an ``await``
     whose condition does not hold yet (and every ``await delay``) registers a poll, and the polls
     are tried one at a time, the first after each tick, until none is left."""
@@ -400,7 +591,7 @@ def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeou
         ctx, poll = polls[0]
         waiting = (f"still in 'await delay {inner.ticks}'" if isinstance(inner, Delay)
                    else describe_failure(source, inner, chat_start, ctx))
-        _tick_or_time_out(source, timeout, inner, f"{waiting} ({len(polls)} context(s) of the execute prefix waiting)")
+        yield from _wait(source, timeout, inner, f"{waiting} ({len(polls)} context(s) of the execute prefix waiting)")
         if poll():
             polls.pop(0)
 
@@ -448,10 +639,11 @@ def _found_inside(source: TestSource, step: InsideCheck, ctx: Context | None) ->
     return [e for e in found if source.inside(e)]
 
 
-def _tick_or_time_out(source: TestSource, timeout: int, step, waiting: str) -> None:
+def _wait(source: TestSource, timeout: int, step, waiting: str):
+    """Wait for the next tick (the world ticks between two of the test's turns), or time out."""
     if source.emu.ticks - source.started >= timeout:
         raise _Verdict(FAILED, f"Timed out after {timeout} ticks: {waiting}", step.loc.line)
-    source.emu.tick()
+    yield
 
 
 def describe_failure(test: TestSource, check, chat_start: int = 0, ctx: Context | None = None) -> str:

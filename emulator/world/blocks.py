@@ -211,6 +211,11 @@ class BlockMap:
             self.entities[pos] = nbt
         return True
 
+    def place(self, pos, spec: BlockSpec) -> bool:
+        """Place ``spec`` whatever is there (``BlockInput.place`` as the game's own code calls it);
+        False when that state was already there."""
+        return self._place(pos, spec)
+
     def set_state(self, pos, state: BlockState) -> None:
         """Level.setBlock of another state of the same block: its block entity stays (a lever pulled,
         a barrel opened)."""

@@ -78,23 +78,27 @@ def test_a_test_is_encased_in_barriers_with_a_ceiling_unless_it_has_sky_access(t
 
 
 def test_before_1_21_5_the_encasing_has_no_floor(tmp_path):
-    # StructureUtils.encaseStructure: walls from the structure's lowest layer up, the ceiling
-    files = {"demo/test/old.mcfunction": "assert block ~ ~-1 ~ air\nassert block ~1 ~ ~ barrier\n"}
+    # StructureUtils.encaseStructure: walls from the structure's lowest layer up, the ceiling; under
+    # the corner the test's structure block (StructureUtils.prepareTestStructure), no barrier
+    files = {"demo/test/old.mcfunction": "assert block ~ ~-1 ~ structure_block\nassert block ~1 ~ ~ barrier\n"
+                                         "assert block ~1 ~-1 ~ air\n"}
     _, results = suite(tmp_path, files, pack_format=48)
     assert results["demo:old"].status == "passed", results["demo:old"].report()
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])
 def test_entity_inside_finds_only_entities_within_the_test_bounds(tmp_path, backend):
-    body = ('summon marker ~0.5 ~ ~0.5 {Tags:["near"]}\nsummon marker ~5 ~ ~ {Tags:["far"]}\n'
+    # the tests run side by side 6 blocks apart: "far" lies north, outside every test's bounds
+    body = ('summon marker ~0.5 ~ ~0.5 {Tags:["near"]}\nsummon marker ~ ~ ~-4 {Tags:["far"]}\n'
             "summon marker ~1.9 ~ ~ {Tags:[\"edge\"]}\n")
     files = {
         "demo/test/inside.mcfunction": body + "assert entity @e[tag=near] inside\nassert not entity @e[tag=far] inside\n"
                                               "assert entity @e[tag=far]\nassert entity @e[tag=edge] inside\n",
         "demo/test/outside.mcfunction": body + "assert entity @e[tag=far] inside\n",
         "demo/test/not_inside.mcfunction": body + "assert not entity @e[type=marker] inside\n",
-        "demo/test/awaits.mcfunction": "schedule function demo:later 3t\nawait entity @e[tag=later] inside\n",
-        "demo/function/later.mcfunction": 'summon marker 0.5 1 0.5 {Tags:["later"]}',
+        "demo/test/awaits.mcfunction": 'summon marker ~ ~-20 ~ {Tags:["later"]}\nschedule function demo:later 3t\n'
+                                       "await entity @e[tag=later] inside\n",
+        "demo/function/later.mcfunction": "execute as @e[tag=later] at @s run tp @s ~ ~20 ~",
     }
     _, results = suite(tmp_path, files, backend=backend)
     assert results["demo:inside"].status == "passed", results["demo:inside"].report()

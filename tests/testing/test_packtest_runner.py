@@ -8,8 +8,10 @@ from emulator.testing.discovery import DiscoveryError
 SETUP = "scoreboard objectives add o dummy\nscoreboard players set $x o 4\n"
 
 
-def run(root, backend="numba", pattern=None):
-    return run_suite(discover([root]), backend, pattern)
+def run(root, backend="numba", pattern=None, isolate=True):
+    """Each test in a world of its own (the tests here pin one feature each; tests/testing/test_batches.py
+    runs them as the game test server does)."""
+    return run_suite(discover([root]), backend, pattern, isolate=isolate)
 
 
 def by_id(summary):
@@ -113,7 +115,7 @@ def test_fail_succeed_and_execute_prefixes(pack):
     assert results["demo:gated_assert"].message == "Expected score $x o to match 3, found 4"
 
 
-def test_each_test_runs_in_a_fresh_world_after_load(pack):
+def test_isolated_each_test_runs_in_a_fresh_world_after_load(pack):
     root = pack({
         "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $loaded o 1\n",
         "demo/test/a.mcfunction": "scoreboard players set $leak o 1\nassert score $loaded o matches 1\n",

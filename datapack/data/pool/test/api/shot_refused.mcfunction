@@ -1,3 +1,4 @@
+# @batch api_shot_refused
 # @dummy
 # pool:api/shot refuses a shot out of range, or with no cue ball on the table (none is set up
 # here): it tells the players (the dummy receives the chat) every reason and stores nothing.

@@ -1,3 +1,4 @@
+# @batch controls_full_power
 # @timeout 10
 # @dummy
 # The player controls (pool:controls/*): a view with yaw 0 faces south, the table's +z; a trigger

@@ -1,3 +1,4 @@
+# @batch controls_trigger
 # @timeout 10
 # @dummy
 # The player controls (pool:controls/*): a player aims with the view (yaw -90 faces east, the

@@ -1,3 +1,4 @@
+# @batch cue_strike
 # Cue strike (pool:cue/strike through pool:api/shot, errata 5.x): the tip offset gives spin
 # (above centre: follow, to the side: side spin), a raised cue bends the spin axis (masse).
 # Expected values from the float reference (emulator/physics): strike(Shot(angle, speed, tip_x,

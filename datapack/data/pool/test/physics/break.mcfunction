@@ -1,3 +1,4 @@
+# @batch physics_break
 # @timeout 400
 # @dummy
 # The break through the public API: a racked table (pool:table/setup), the cue ball struck at full

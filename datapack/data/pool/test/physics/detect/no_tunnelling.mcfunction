@@ -1,3 +1,4 @@
+# @batch physics_detect_no_tunnelling
 # @timeout 10
 # The swept event search (pool:physics/detect/*): at 10 m/s a ball moves 0.5 m, 8.75 diameters, in
 # one tick; an object ball 7 diameters ahead lies on its chord and is hit within the first tick,

@@ -1,3 +1,4 @@
+# @batch physics_display_place
 # @timeout 10
 # @dummy
 # The displays (pool:physics/display/*): each ball's item_display stands at the table corner (where

@@ -1,3 +1,4 @@
+# @batch physics_events_at_rest
 # @timeout 120
 # @dummy
 # The table-at-rest flag: $resting pool.game is 0 from the strike until no ball moves, then 1

@@ -1,3 +1,4 @@
+# @batch physics_motion_rolling
 # @timeout 120
 # Rolling (pool:physics/motion/roll/*): a ball struck at the natural-roll height (tip 2/5 R above
 # centre) rolls at once and loses mu_r g = 245.25 um/tick every tick along a straight line until it

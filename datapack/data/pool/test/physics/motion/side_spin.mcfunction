@@ -1,3 +1,4 @@
+# @batch physics_motion_side_spin
 # @timeout 40
 # Side-spin decay (pool:physics/motion/spin/advance): side spin wy = R omega_y loses (5/2) mu_sp g =
 # 778.67 um/tick every tick (errata) until it is gone, whatever the ball's phase; it does not bend

@@ -1,3 +1,4 @@
+# @batch physics_motion_sliding
 # @timeout 20
 # Sliding (pool:physics/motion/slide/*): a centre-hit ball slides, cloth friction takes mu_s g =
 # 4905 um/tick off its speed every tick, and in the tick where the slip ends it snaps to rolling at

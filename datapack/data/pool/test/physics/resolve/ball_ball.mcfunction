@@ -1,3 +1,4 @@
+# @batch physics_resolve_ball_ball
 # @timeout 10
 # Ball-ball collision (pool:physics/resolve/ball_ball/collide, through the tick's swept events):
 # head on, the cue ball stops and the object ball takes its speed; hit at a 45 degree cut, the two

@@ -1,3 +1,4 @@
+# @batch physics_resolve_cushion
 # @timeout 20
 # Cushion rebound (pool:physics/resolve/cushion/rebound, errata 4.x: Coulomb friction with a stick
 # limit): the normal speed comes back times e = 0.85, friction trims the speed along the rail and

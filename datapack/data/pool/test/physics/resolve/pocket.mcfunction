@@ -1,3 +1,4 @@
+# @batch physics_resolve_pocket
 # @timeout 10
 # @dummy
 # Pockets (pool:physics/detect/sweep/pocket, pool:physics/resolve/pocket): a ball sent into a corner
