@@ -34,13 +34,19 @@ class RootStats:
     def __init__(self) -> None:
         self.by_function: dict[str, RootRuns] = {}
 
-    def __call__(self, function_id: str, result: RootResult) -> None:
-        runs = self.by_function.get(function_id) or self.by_function.setdefault(function_id, RootRuns())
+    def __call__(self, function_id: str, result: RootResult) -> None:  # every root: kept cheap
+        runs = self.by_function.get(function_id)
+        if runs is None:
+            runs = self.by_function[function_id] = RootRuns()
         runs.runs += 1
-        runs.called += result.cost > 0
-        runs.cost += result.cost
-        runs.max_cost = max(runs.max_cost, result.cost)
-        runs.cuts += result.cut
+        cost = result.cost
+        if cost > 0:
+            runs.called += 1
+            runs.cost += cost
+            if cost > runs.max_cost:
+                runs.max_cost = cost
+        if result.cut:
+            runs.cuts += 1
 
     def roots_ran(self, function_id: str, costs) -> None:
         """Many runs of one root at once (numpy costs; none was cut)."""

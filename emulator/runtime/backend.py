@@ -78,7 +78,7 @@ if TYPE_CHECKING:
     from mcfunction_parser.nbt import Compound
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)  # not frozen: made for every root, and a frozen one costs three times as much
 class RootResult:
     """What running one root sequence did.
 

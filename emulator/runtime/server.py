@@ -101,6 +101,7 @@ class Runtime:
         self.root_listeners: list[RootListener] = []
         self.rewards_cost = 0  # commands advancement rewards ran (counted in their tick)
         self._members: dict[tuple[str, int], tuple[str, ...]] = {}
+        self._mixed_lists = nbt_ops.list_rules(packs.version).mixed
         state.command_runner = self.run_command
 
     def run_command(self, text: str, context: Context) -> bool | None:
@@ -127,6 +128,8 @@ class Runtime:
 
     def run_root(self, function_id: str, context: Context | None = None, arguments=None) -> RootResult:
         """One root sequence, its NBT lists under the rule of the packs' release (mixed types from 1.21.5)."""
+        if nbt_ops.lists_mixed() is self._mixed_lists:  # the rule holds already (a tick's roots, an older release)
+            return self._root_ran(function_id, self.backend.run_root(function_id, context, arguments))
         with nbt_ops.list_rules(self.packs.version):
             return self._root_ran(function_id, self.backend.run_root(function_id, context, arguments))
 
@@ -168,16 +171,26 @@ class Runtime:
 
     def tick(self) -> int:
         """Run one server tick; returns its cost (commands executed)."""
-        cost = 0
         self.rewards_cost = 0
+        if nbt_ops.lists_mixed() is self._mixed_lists:
+            return self._end_tick(self._tick_roots())
+        with nbt_ops.list_rules(self.packs.version):  # entered once for the tick's roots
+            cost = self._tick_roots()
+        return self._end_tick(cost)
+
+    def _tick_roots(self) -> int:
+        """Steps 1 and 2 of a tick: the load functions on the first, then the tick functions."""
+        cost = 0
         if not self.loaded:
             self.loaded = True
             cost += self._run_all(self.members(LOAD_TAG))
-        return self._end_tick(cost + self._run_all(self.members(TICK_TAG)))
+        return cost + self._run_all(self.members(TICK_TAG))
 
     def run_ticks(self, n: int) -> int:
         """Run ``n`` server ticks, as many :meth:`tick` calls would; returns their cost. Quiet ticks
         run in batches where the backend can."""
+        if n == 1:  # one tick() call per tick: nothing to batch
+            return self.tick()
         cost = 0
         while n > 0:
             quiet = self._quiet_ticks(n)
@@ -266,4 +279,7 @@ class Runtime:
         return cost
 
     def _run_all(self, functions) -> int:
-        return sum(self.run_root(f).cost for f in functions)
+        cost = 0
+        for function_id in functions:
+            cost += self.run_root(function_id).cost
+        return cost

@@ -79,6 +79,7 @@ class NumbaBackend:
         self.compiler.compile_all()
         self.macros = MacroExpander(packs.version)
         self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
+        self.roots: dict[str, tuple[ast.Function, int]] = {}  # a root function that is no macro, its index
         self.host = Host(state, packs.functions, packs.tags, self._report_here,
                          self._host_overflow if sanitize else None)
         self.regs = vm.new_registers()
@@ -131,17 +132,14 @@ class NumbaBackend:
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
         state = self.state
-        self._start_root(context or Context())
-        function = self.packs.functions.get(function_id)
-        if function is None:
-            state.error(f"Unknown function {function_id}")
-            return RootResult(0, None)
-        try:
-            fn = self._instance(function, arguments)
-        except CommandFailure as failure:
-            state.error(failure.message, (Frame(function_id, Loc(function.path, 1, 1)),))
-            return RootResult(0, None)
-        self.root_function = function  # where a cut at its end is reported (_finished_root_frame)
+        self._start_root(context)
+        root = self.roots.get(function_id)  # a function that is no macro: found once
+        if root is None:
+            root = self._root(function_id, arguments)
+            if root is None:
+                return RootResult(0, None)
+        # where a cut at its end is reported (_finished_root_frame)
+        self.root_function, fn = root
         limit = state.gamerules.max_command_chain_length
         self._set_root(fn, limit)
         self.returned = False
@@ -153,6 +151,23 @@ class NumbaBackend:
         if self.returned and rv[R_HAS]:
             result, succeeded = (rv[R_VAL] if rv[R_OK] else 0), bool(rv[R_OK])
         return RootResult(limit - rv[R_QUOTA], result, cut, succeeded)
+
+    def _root(self, function_id: str, arguments: Compound | None) -> tuple[ast.Function, int] | None:
+        """The function ``function_id`` and the index of what a root calls (its macro instance for
+        ``arguments``), remembered in :attr:`roots` when it is no macro; None after reporting why
+        it cannot run."""
+        function = self.packs.functions.get(function_id)
+        if function is None:
+            self.state.error(f"Unknown function {function_id}")
+            return None
+        try:
+            fn = self._instance(function, arguments)
+        except CommandFailure as failure:
+            self.state.error(failure.message, (Frame(function_id, Loc(function.path, 1, 1)),))
+            return None
+        if not function.is_macro:
+            self.roots[function_id] = (function, fn)
+        return function, fn
 
     def run_ticks(self, functions: list[str], ticks: int, at_tick) -> TickBatch | None:
         """:class:`emulator.runtime.backend.TickBatches`: the VM runs the roots one after the other
@@ -186,18 +201,25 @@ class NumbaBackend:
             r[vm.R_BATCH] = 0
         return TickBatch(self.batch[members:members + int(r[vm.R_BROOTS])].copy(), cut)
 
-    def _start_root(self, context: Context) -> np.ndarray:
-        """Registers and contexts for a new root run in ``context`` (context 0); the registers."""
+    def _start_root(self, context: Context | None) -> np.ndarray:
+        """Registers and contexts for a new root run in ``context`` (context 0; None: the server at
+        world spawn); the registers."""
         r, rv = self.regs, self.rv
         root = rv[R_ROOT] + 1  # the contexts the VM made (as_cache names them) are the last root's
         r.fill(0)
         rv[R_ROOT] = root
-        self.store_targets = {}
-        self.rewards = []
-        key = _context_key(context, ())
+        if self.store_targets:
+            self.store_targets = {}
+        if self.rewards:
+            self.rewards = []
+        if context is None:
+            context, key = _SPAWN, _SPAWN_KEY
+        else:
+            key = _context_key(context, ())
         if key == self._root_key:  # an entity-less context: row 0 still holds it (no one else writes there)
-            self.contexts = {0: context}
-            self.context_ids = {key: 0}
+            if len(self.contexts) > 1 or len(self.context_ids) > 1:  # the last root made others
+                self.contexts = {0: context}
+                self.context_ids = {key: 0}
             rv[R_NCTX] = 1
         else:
             self.contexts = {}
@@ -231,6 +253,9 @@ class NumbaBackend:
                 leaves.write_back(storage)
             else:
                 status = self._resume(address, self.machine_type)
+            if status == ST_DONE and not rv[R_BATCH] and not rv[R_NLOG] and (cut or rv[R_QUOTA] > 0):
+                self.returned = True  # the root function came back: the common end, first
+                return cut
             if status == ST_HOST and not rv[R_BATCH] and not rv[R_NLOG]:  # the common request, first
                 pc = rv[R_PC]
                 op = host_ops_at.get(pc) or self._host_op(pc)
@@ -686,6 +711,10 @@ class NumbaBackend:
 
 def _context_key(ctx: Context, bindings: tuple) -> tuple:
     return ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension, bindings
+
+
+_SPAWN = Context()  # a root's default context (never changed: the backend only reads contexts)
+_SPAWN_KEY = _context_key(_SPAWN, ())
 
 
 def _end_frame(function: ast.Function) -> Frame:

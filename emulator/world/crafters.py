@@ -237,6 +237,8 @@ def tick_is_idle(state) -> bool:
 def tick_crafting(state) -> None:
     """CrafterBlockEntity.serverTick: ``crafting_ticks_remaining`` counts down; at 0 the crafter
     stops ``crafting``."""
+    if not state.crafting:  # every tick: no crafter crafting is the common case
+        return
     for (dimension, pos), left in list(state.crafting.items()):
         blocks = state.blocks_in(dimension)
         nbt = blocks.entity(pos)

@@ -212,7 +212,8 @@ MIXED_LISTS_VERSION = (1, 21, 5)
 
 class list_rules:
     """Run NBT operations with the list rule of ``version`` (mixed-type lists from 1.21.5): a
-    context manager (a class: every root sequence enters one)."""
+    context manager (a class: every root sequence enters one). Entering the rule in force already
+    changes nothing (a root inside a tick, the older rule outside any)."""
 
     __slots__ = ("mixed", "token")
 
@@ -220,10 +221,16 @@ class list_rules:
         self.mixed = tuple(version) >= MIXED_LISTS_VERSION
 
     def __enter__(self) -> None:
-        self.token = _MIXED_LISTS.set(self.mixed)
+        self.token = None if _MIXED_LISTS.get() is self.mixed else _MIXED_LISTS.set(self.mixed)
 
     def __exit__(self, *exc) -> None:
-        _MIXED_LISTS.reset(self.token)
+        if self.token is not None:
+            _MIXED_LISTS.reset(self.token)
+
+
+def lists_mixed() -> bool:
+    """Whether the list rule in force lets a list mix tag types (:class:`list_rules`)."""
+    return _MIXED_LISTS.get()
 
 
 def _list_accepts(lst: List, tag) -> bool:

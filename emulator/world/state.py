@@ -404,7 +404,8 @@ class Gamerules:
         return GAMERULE_ALIASES.get(name, name)
 
     def get(self, name: str) -> str | None:
-        return self.values.get(self.canonical(name))
+        found = self.values.get(name)  # the canonical spelling (the emulator's own reads, every tick)
+        return found if found is not None else self.values.get(self.canonical(name))
 
     def set(self, name: str, value: str) -> None:
         self.values[self.canonical(name)] = value

@@ -93,4 +93,4 @@ def tick_is_idle(state) -> bool:
 
 
 def _counts_statistics(board) -> bool:
-    return any(board.alive[oid] for oid in board.statistic_ids)
+    return bool(board.statistic_ids) and any(board.alive[oid] for oid in board.statistic_ids)
