@@ -150,6 +150,11 @@ class Emulator:
         """Many scores at once: a numpy int64 array [holder, objective], 0 where unset."""
         return self.state.scoreboard.block(holders, objectives)
 
+    def score_reader(self, holders, objectives):
+        """A function returning :meth:`score_block` of these holders and objectives as they are
+        when called, made for reading them every tick (the names are looked up once)."""
+        return self.state.scoreboard.reader(holders, objectives)
+
     def set_score(self, holder: str, objective: str, value: int) -> None:
         """Set a score (creating the objective as ``dummy`` if needed); value must be an int32."""
         if not INT_MIN <= value <= INT_MAX:

@@ -208,19 +208,20 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None, record:
     tick and the events the pack resolved (``ShotResult.trajectory``)."""
     refused = strike(emu, shot)
     holders = ball_holders(emu)
-    ids, names = list(holders), list(holders.values())
-    start = emu.score_block(names, BALL_FIELDS)
+    ids = list(holders)
+    read_balls = emu.score_reader(holders.values(), BALL_FIELDS)
+    start = read_balls()
     trajectory = Trajectory(emu, holders) if record and not refused else None
     if refused:
         return ShotResult(refused, emu.score("$resting", "pool.game") == 1, 0, [], 0.0,
                           _outcomes(_states(holders, start), {}), list(emu.overflows),
                           list(emu.diagnostics))
-    last_change: dict[int, int] = {}
-    previous, first_tick = start, len(emu.commands_per_tick)
+    states = [start]  # the balls' fields after the strike and after each tick
+    first_tick = len(emu.commands_per_tick)
     started = time.perf_counter()
     at_rest, carried, interrupted, count = False, 0, False, 0
     try:
-        for tick in range(1, max_ticks + 1):
+        for _ in range(max_ticks):
             emu.tick()
             if on_tick is not None:
                 on_tick()
@@ -231,10 +232,7 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None, record:
                 if not carry:
                     trajectory.observe(emu, count)
                     count = 0
-            now = emu.score_block(names, BALL_FIELDS)  # compared as arrays: a tick's cheap part
-            for row in np.flatnonzero((now != previous).any(axis=1)).tolist():
-                last_change[ids[row]] = tick
-            previous = now
+            states.append(read_balls())
             if emu.score("$resting", "pool.game") == 1:
                 at_rest = True
                 break
@@ -242,8 +240,19 @@ def play(emu: Emulator, shot: Shot, max_ticks: int = 2000, on_tick=None, record:
         interrupted = True
     seconds = time.perf_counter() - started
     costs = emu.commands_per_tick[first_tick:]
-    return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(_states(holders, previous), last_change),
+    return ShotResult([], at_rest, len(costs), costs, seconds, _outcomes(_states(holders, states[-1]),
+                                                                         _last_changes(ids, states)),
                       list(emu.overflows), list(emu.diagnostics), carried, interrupted, trajectory)
+
+
+def _last_changes(ids: list[int], states: list[np.ndarray]) -> dict[int, int]:
+    """Ball id -> the last tick (1 = the first after the strike) that changed one of its fields,
+    for the balls that changed: compared once after the shot, not each tick."""
+    if len(states) < 2:
+        return {}
+    changed = (np.diff(np.stack(states), axis=0) != 0).any(axis=2)  # [tick - 1, ball]
+    ticks = changed.shape[0] - np.argmax(changed[::-1], axis=0)
+    return {ids[row]: int(ticks[row]) for row in np.flatnonzero(changed.any(axis=0)).tolist()}
 
 
 def _outcomes(states: dict[int, tuple[int, int, int]], last_change: dict[int, int]) -> list[BallOutcome]:

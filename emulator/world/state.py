@@ -197,6 +197,10 @@ class Scoreboard:
         known = (hids >= 0)[:, None] & ((oids >= 0) & (self.alive[cols] != 0)) & (self.present[rows, cols] != 0)
         return np.where(known, self.values[rows, cols], 0).astype(np.int64)
 
+    def reader(self, holders, objectives) -> "ScoreReader":
+        """A reader of ``block(holders, objectives)`` for reading again and again (each tick)."""
+        return ScoreReader(self, list(holders), list(objectives))
+
     def set(self, holder: str, objective: str, value: int) -> None:
         """Set a score (value must already be a Java int). Creates the objective as ``dummy``
         if it does not exist, so test harnesses can seed scores before ``#load`` runs."""
@@ -276,6 +280,37 @@ class Scoreboard:
             rows = np.flatnonzero(self.present[:n, oid])
             out[name] = {self.holders[h]: int(self.values[h, oid]) for h in rows}
         return out
+
+
+class ScoreReader:
+    """``Scoreboard.block`` of fixed holders and objectives, their ids found once: calling it reads
+    the block as it is now (int64 [holder, objective], 0 where unset) with a few array takes."""
+
+    def __init__(self, board: Scoreboard, holders: list[str], objectives: list[str]) -> None:
+        self.board, self.holders, self.objectives = board, holders, objectives
+        self._values = None  # the scoreboard's values array the flat indices were made for
+
+    def _index(self) -> bool:
+        """Find the ids and flat indices again (the arrays grew, or a name was unknown): False while
+        a holder or objective is unknown."""
+        board = self.board
+        hids = [board.holder_ids.get(h) for h in self.holders]
+        oids = [board.objective_ids.get(o) for o in self.objectives]
+        if None in hids or None in oids:
+            return False
+        self.oids = np.array(oids, dtype=np.int64)
+        self.flat = (np.array(hids, dtype=np.int64)[:, None] * board.values.shape[1] + self.oids).ravel()
+        self.shape = (len(hids), len(oids))
+        self._values = board.values
+        return True
+
+    def __call__(self) -> np.ndarray:
+        board = self.board
+        if board.values is not self._values and not self._index():
+            return board.block(self.holders, self.objectives)
+        flat, shape = self.flat, self.shape
+        known = board.present.ravel().take(flat).reshape(shape) & board.alive.take(self.oids)
+        return board.values.ravel().take(flat).reshape(shape) * known.astype(np.int64)
 
 
 def _grow(capacity: int, needed: int) -> int:
