@@ -1,13 +1,15 @@
 """Block commands and conditions over the world's block map: ``setblock``, ``fill`` (``replace
-FILTER`` too), ``execute if block`` and ``execute if blocks``.
+FILTER`` too), ``execute if block`` and ``execute if blocks``; ``fillbiome`` and ``execute if
+biome`` over the biome cells the world knows (:mod:`emulator.world.biomes`).
 
-The parser keeps ``setblock``/``fill`` as generic commands (their text); they are read here.
-Sources (decompiled 1.21): server/commands/SetBlockCommand.java, FillCommand.java,
-ExecuteCommand.java (checkRegions).
+The parser keeps ``setblock``/``fill``/``fillbiome`` as generic commands (their text); they are
+read here. Sources (decompiled 1.21): server/commands/SetBlockCommand.java, FillCommand.java,
+FillBiomeCommand.java, ExecuteCommand.java (checkRegions; ``if biome``: the ResourceOrTagArgument
+tests Level.getBiome at getLoadedBlockPos).
 """
 from __future__ import annotations
 
-from emulator.world import command_blocks, crafters
+from emulator.world import biomes, command_blocks, crafters
 from emulator.world.blocks import BlockSpec, block_pos, box_positions, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
@@ -55,6 +57,24 @@ def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
     return found or 0
 
 
+def if_biome(env, cond: ast.IfBiome, ctx) -> int:
+    """``if biome POS BIOME``: 1 when the biome there is BIOME or in tag ``#BIOME``."""
+    pos = block_pos(world_source(env.state, ctx), cond.pos)
+    return int(biomes.matches(env.state.resources, cond.biome, biomes.biome_at(env.state, ctx.dimension, pos)))
+
+
+def fillbiome_command(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``fillbiome FROM TO BIOME [replace FILTER]``: the cells set (FillBiomeCommand.fill)."""
+    corners, words = _read(cmd, env.state.version)
+    source = world_source(env.state, ctx)
+    start, end = (block_pos(source, corner) for corner in corners)
+    keep = None
+    if len(words) > 2 and words[1] == "replace":
+        resources, wanted = env.state.resources, words[2]
+        keep = lambda found: biomes.matches(resources, wanted, found)  # noqa: E731 - the filter
+    return biomes.fill(env.state, ctx.dimension, start, end, biomes.namespaced(words[0]), keep)
+
+
 def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     """``setblock POS BLOCK [MODE]`` / ``fill FROM TO BLOCK [MODE]`` (``replace FILTER`` too)."""
     corners, words = _read(cmd, env.state.version)
@@ -87,7 +107,7 @@ def _read(cmd: ast.GenericCommand, version) -> tuple[list, list[str]]:
     try:
         reader.pos = len(cmd.name) + 1
         corners = [vec3(reader, block=True)]
-        if cmd.name == "fill":
+        if cmd.name in ("fill", "fillbiome"):
             reader.pos += 1
             corners.append(vec3(reader, block=True))
     except ParseError as error:
@@ -122,4 +142,4 @@ def _word(reader: Reader) -> str:
 
 
 # generic commands by name
-HANDLERS = {"setblock": block_command, "fill": block_command}
+HANDLERS = {"setblock": block_command, "fill": block_command, "fillbiome": fillbiome_command}

@@ -52,7 +52,7 @@ def count(env, cond: ast.Condition, ctx) -> int:
     if isinstance(cond, ast.IfPredicate):
         return int(if_predicate(env, cond.predicate, ctx))
     if isinstance(cond, ast.IfBiome):
-        raise Unmodelled(f"execute if biome ({predicates.NO_TERRAIN})")
+        return blocks.if_biome(env, cond, ctx)
     raise Unmodelled(f"the condition '{type(cond).__name__}'")
 
 

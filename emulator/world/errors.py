@@ -38,6 +38,7 @@ MESSAGES = {
     "commands.setblock.failed": "Could not set the block",
     "commands.fill.failed": "No blocks were filled",
     "commands.fill.toobig": "Too many blocks in the specified area (maximum {0}, specified {1})",
+    "commands.fillbiome.toobig": "Too many blocks in the specified volume (maximum {0}, specified {1})",
     "commands.execute.blocks.toobig": "Too many blocks in the specified area (maximum {0}, specified {1})",
     "commands.data.block.invalid": "The target block is not a block entity",
     "permissions.requires.player": "A player is required to run this command here",

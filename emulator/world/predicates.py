@@ -46,8 +46,8 @@ from typing import Callable
 
 import numpy as np
 
-from emulator.world import (advancement_progress, entity_components, entity_predicate_format, inventories, living,
-                            recipes, sight)
+from emulator.world import (advancement_progress, biomes, entity_components, entity_predicate_format, inventories,
+                            living, recipes, sight)
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -573,8 +573,9 @@ ENTITY_COMPONENTS_VERSION = (1, 21, 5)  # EntityPredicate's DataComponentMatcher
 
 # ---------------------------------------------------------------------- locations and blocks
 def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
-    """LocationPredicate.matches at exact ``pos``: position ranges, dimension, then the block and
-    fluid at BlockPos.containing(pos)."""
+    """LocationPredicate.matches at exact ``pos``: position ranges, dimension, then the biome, block
+    and fluid at BlockPos.containing(pos) (``biomes``, a HolderSet, from 1.20.5; ``biome``, one id,
+    before). A biome the world does not know is reported after the fields it can test held."""
     position = predicate.get("position", {})
     for axis, value in zip("xyz", pos):
         if axis in position and not in_range(position[axis], value):
@@ -582,6 +583,14 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
     if "dimension" in predicate and _id(predicate["dimension"]) != ctx.dimension:
         return False
     block_pos = tuple(math.floor(v) for v in pos)
+    unknown = None
+    wanted_biome = predicate.get("biomes" if tuple(ctx.version) >= COMPONENTS_VERSION else "biome")
+    if wanted_biome is not None:
+        try:
+            if not _holder_set(wanted_biome, "worldgen/biome", biomes.biome_at(ctx.state, ctx.dimension, block_pos), ctx):
+                return False
+        except Unmodelled as reason:
+            unknown = reason
     if "block" in predicate and not block_matches(predicate["block"], ctx, block_pos):
         return False
     if "fluid" in predicate and not _fluid_matches(predicate["fluid"], ctx, block_pos):
@@ -589,15 +598,16 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
     for key, why in _LOCATION_UNMODELLED.items():
         if key in predicate:
             raise Unmodelled(f"location predicate field '{key}' ({why})")
+    if unknown is not None:
+        raise unknown
     return True
 
 
 # what the world does not keep: LocationPredicate's fields that read it (the fields the world
 # keeps are tested first: when one of them fails the predicate is false whatever these say)
-NO_TERRAIN = "the emulator generates no terrain: its world has no biomes or structures"
+NO_TERRAIN = "the emulator generates no terrain: its world has no structures"
 _LOCATION_UNMODELLED = {
-    "biomes": NO_TERRAIN, "biome": NO_TERRAIN, "structures": NO_TERRAIN, "structure": NO_TERRAIN,
-    "feature": NO_TERRAIN,
+    "structures": NO_TERRAIN, "structure": NO_TERRAIN, "feature": NO_TERRAIN,
     "light": "the emulator keeps no light levels",
     "can_see_sky": "the emulator keeps no sky light or height maps",
     "smokey": "a campfire's smoke needs block collision shapes, which the emulator does not keep",

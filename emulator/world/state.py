@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from emulator.world.biomes import BiomeCells
 from emulator.world.blocks import BlockMap
 from emulator.world.advancement_progress import Progress
 from emulator.world.bossbars import BossBars
@@ -503,6 +504,7 @@ class WorldState:
     version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)
     resources: Resources = field(default_factory=Resources)  # loot, predicates, tags, advancements
     clocks: object = None  # 26.1+: the world clocks (emulator.world.clocks.WorldClocks)
+    biomes: BiomeCells = field(default_factory=BiomeCells)  # the cells fillbiome set, per level (biomes)
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)

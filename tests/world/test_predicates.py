@@ -357,7 +357,7 @@ def test_the_old_item_predicate_fields_are_ignored_from_1_20_5(state):
 
 
 @pytest.mark.parametrize("field,value,reason", [
-    ("biomes", "minecraft:plains", "no biomes"), ("structures", "#minecraft:village", "no biomes or structures"),
+    ("biomes", "minecraft:plains", "generator"), ("structures", "#minecraft:village", "no structures"),
     ("light", {"light": {"min": 1}}, "no light levels"), ("can_see_sky", True, "no sky light"),
     ("smokey", True, "collision shapes"),
 ])
