@@ -45,7 +45,7 @@ from typing import Callable
 
 import numpy as np
 
-from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
+from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String, to_snbt
 from emulator.world import display, java_random, living, random_sequences, rotation
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
@@ -121,6 +121,16 @@ class _Column:
             entity._own[self.own] = value
         else:
             entity._table.floats[entity.order, self.column:self.column + self.width] = value
+
+
+class TextTag(str):
+    """A custom name saved as a compound or a list (a text component in SNBT, 1.21.5+): its SNBT as
+    the text (what :func:`plain_text` reads), the tag kept to be saved back as it was."""
+
+    def __new__(cls, tag):
+        text = super().__new__(cls, to_snbt(tag))
+        text.tag = copy_tag(tag)
+        return text
 
 
 class _Selected:
@@ -391,7 +401,8 @@ def entity_nbt(entity: Entity) -> Compound:
         nbt["transformation"] = _saved_transformation(entity)
     nbt["UUID"] = IntArray(Int(v) for v in entity.uuid)
     if entity.custom_name is not None:
-        nbt["CustomName"] = String(entity.custom_name)
+        name = entity.custom_name
+        nbt["CustomName"] = copy_tag(name.tag) if isinstance(name, TextTag) else String(name)
     if entity.tags:
         nbt["Tags"] = List(String(t) for t in sorted(entity.tags))
     riders = List(_passenger_nbt(p) for p in entity.passengers if p.alive and not p.is_player)
@@ -496,6 +507,8 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     name = nbt.get("CustomName")
     if isinstance(name, String):
         entity.custom_name = str(name)
+    elif isinstance(name, (Compound, List)):  # ComponentSerialization.CODEC reads SNBT from 1.21.5
+        entity.custom_name = TextTag(name)
     if isinstance(nbt.get("Tags"), List):
         entity.tags = set(str(t) for t in _typed_list(nbt, "Tags", String)[:MAX_TAGS])
     previous = entity.data

@@ -6,7 +6,9 @@ equal to the entity's).
   namespaced id, or a dye colour's name), read from the NBT the entity saves; None when the entity
   has no such component. A variant the entity was given by its spawn (``summon`` without the
   field: Mob.finalizeSpawn picks it from the spawn conditions) is not modelled (Unmodelled), nor
-  are the components not listed here (``custom_name``, the other mobs' variants ...).
+  are the components not listed here (``custom_data``, the other mobs' variants ...).
+  ``custom_name`` is Entity.get's: the entity's custom name, compared as the game compares
+  Components (:func:`emulator.world.text.component_value`).
 - ``components_match(expected, entity) -> bool``.
 
 Sources (decompiled 1.21.7): world/entity/animal/Cat.java (get: ``cat/variant``, ``cat/collar``;
@@ -19,8 +21,10 @@ Fox.java and MushroomCow.java (``Type``), npc/Villager.java (``villager/variant`
 """
 from __future__ import annotations
 
+from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import is_numeric, numeric_value
+from emulator.world.text import component_value
 from mcfunction_parser.nbt import Compound, String
 
 DYES = ("white orange magenta light_blue yellow lime pink gray light_gray cyan purple blue brown green red "
@@ -69,11 +73,19 @@ def component(entity, name: str):
         villager = data.get("VillagerData")
         kind = villager.get("type") if isinstance(villager, Compound) else None
         return _namespaced(str(kind)) if isinstance(kind, String) else _spawn_picked(entity, name)
+    if name == "minecraft:custom_name":
+        stored = entity.custom_name
+        if stored is None:
+            return None
+        return component_value(stored.tag if isinstance(stored, TextTag) else String(stored))
     raise Unmodelled(f"the entity component '{name}' in an entity predicate")
 
 
 def _expected(name: str, value):
-    """The predicate's value in the form :func:`component` gives (ids namespaced, dyes by name)."""
+    """The predicate's value in the form :func:`component` gives (ids namespaced, dyes by name, a
+    custom name as a Component)."""
+    if name == "minecraft:custom_name":
+        return component_value(value)
     if isinstance(value, str) and name not in ("minecraft:fox/variant", "minecraft:mooshroom/variant") \
             and not name.endswith(("/collar", "/color")):
         return _namespaced(value)

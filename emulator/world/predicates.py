@@ -56,7 +56,7 @@ from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_leve
 from emulator.world.living import is_living
 from emulator.world.loot_context import LootContext, in_range, integer, number, snbt_or_tag, to_tag
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
-from mcfunction_parser.items import SLOTS
+from mcfunction_parser.items import SLOTS, sub_predicate_registered
 from mcfunction_parser.nbt import Byte, Compound, Int, List
 from mcfunction_parser.pack.tags import normalise_id
 
@@ -492,6 +492,30 @@ def _entity_components(value, ctx: LootContext, entity: Entity) -> bool:
     return entity_components.components_match(value, entity)
 
 
+def _entity_sub_predicates(value, ctx: LootContext, entity: Entity) -> bool:
+    """DataComponentMatchers' ``predicates`` (1.21.5+; ignored before): each sub-predicate reads one
+    component through Entity.get and fails when the entity has none
+    (SingleComponentItemPredicate.matches). Of the registered ones only ``villager/variant`` reads a
+    component an entity exposes (a villager's type, :mod:`emulator.world.entity_components`); the
+    others read item components no entity has. ``custom_data`` on entities (their ``data``, in the
+    26.1 source; the release that added it is unconfirmed) is not modelled."""
+    if tuple(ctx.state.version) < ENTITY_COMPONENTS_VERSION or not isinstance(value, dict):
+        return True
+    for name, wanted in value.items():
+        full = _id(name)
+        if full == "minecraft:custom_data":
+            raise Unmodelled("the custom_data sub-predicate of an entity (an entity's custom data)")
+        if full == "minecraft:villager/variant":
+            found = entity_components.component(entity, full)
+            if found is None or not _holder_set(wanted, "villager_type", found, ctx):
+                return False
+        elif sub_predicate_registered(full, ctx.state.version):
+            return False  # an item's component: Entity.get gives none
+        else:
+            raise Unmodelled(f"entity sub-predicate '{name}'")
+    return True
+
+
 def _team(value, ctx: LootContext, entity: Entity) -> bool:
     return entity.team is not None and entity.team == value
 
@@ -565,9 +589,10 @@ _ENTITY_FIELDS = {
     "slots": _slots,
     "player": lambda v, ctx, e: _player(v, ctx, e),  # before 1.19: a top-level player predicate
     "components": lambda v, ctx, e: _entity_components(v, ctx, e),
+    "predicates": _entity_sub_predicates,
 }
 _ENTITY_UNMODELLED = {"periodic_tick", "movement", "fishing_hook",
-                      "lightning_bolt", "catType", "predicates"}
+                      "lightning_bolt", "catType"}
 ENTITY_COMPONENTS_VERSION = (1, 21, 5)  # EntityPredicate's DataComponentMatchers
 
 

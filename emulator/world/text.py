@@ -113,6 +113,32 @@ def plain_value(tag):
     return int(tag) if isinstance(tag, int) else float(tag)
 
 
+_STYLE_FLAGS = ("bold", "italic", "underlined", "strikethrough", "obfuscated")
+
+
+def component_value(value):
+    """A text component (plain values or NBT) in one form for each Component the codec decodes it
+    to, so that two compare equal when the game's Components do (MutableComponent.equals: contents,
+    style, siblings): a string is ``{"text": s}``, a list its first element with the rest appended
+    to its siblings, ``type`` dropped, the style flags booleans, empty ``extra`` dropped."""
+    value = plain_value(value) if not isinstance(value, (dict, list, str, int, float)) else value
+    if isinstance(value, str):
+        return {"text": value}
+    if isinstance(value, list):
+        if not value:
+            return {"text": ""}
+        first = component_value(value[0])
+        siblings = first.get("extra", []) + [component_value(v) for v in value[1:]]
+        return {**first, "extra": siblings} if siblings else first
+    if not isinstance(value, dict):
+        return {"text": str(value)}
+    out = {k: (bool(v) if k in _STYLE_FLAGS else v) for k, v in value.items() if k != "type"}
+    siblings = [component_value(v) for v in out.pop("extra", [])]
+    if "with" in out and isinstance(out["with"], list):
+        out["with"] = [v if isinstance(v, (int, float)) else component_value(v) for v in out["with"]]
+    return {**out, "extra": siblings} if siblings else out
+
+
 def plain_text(text: str) -> str:
     """The plain text of a text component as written (a string, list or ``{"text": ...}`` with its
     extras, in JSON or SNBT; a ``translate`` key stands for its translation), else the text as

@@ -7,6 +7,7 @@ import pytest
 
 from emulator.world import inventories, loot, predicates, recipes
 from emulator.world.blocks import BlockSpec, parse_block, with_defaults
+from emulator.world.entities import entity_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.loot_context import DamageSource, LootContext
@@ -427,7 +428,49 @@ def test_entity_components_compare_what_the_entity_saves():
     stray = state.entities.summon("minecraft:cat", (0.0, 0.0, 0.0))
     with pytest.raises(Unmodelled, match="finalizeSpawn"):
         holds(props({"cat/variant": "black"}), ctx(state, this=stray))
-    with pytest.raises(Unmodelled, match="custom_name"):
-        holds(props({"custom_name": "Tom"}), this)
+    with pytest.raises(Unmodelled, match="custom_data"):
+        holds(props({"custom_data": {"a": 1}}), this)
     # before 1.21.5 the entity predicate has no components field: ignored
     assert holds(props({"cat/variant": "minecraft:tabby"}), ctx(WorldState(version=(1, 21, 4)), this=cat))
+
+
+def test_the_custom_name_component_compares_components_as_the_game_does():
+    # Entity.get(CUSTOM_NAME) is getCustomName(); DataComponentExactPredicate compares it with the
+    # predicate's value decoded by ComponentSerialization.CODEC (MutableComponent.equals: contents,
+    # style and siblings): "Tom", {"text": "Tom"} and ["Tom"] are one component, a colour another
+    state = WorldState(version=(1, 21, 5))
+    props = lambda c: {"condition": "entity_properties", "entity": "this", "predicate": {"components": c}}  # noqa: E731
+    plain = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0), Compound(CustomName=String("Tom")))
+    red = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0), Compound(
+        CustomName=Compound(text=String("Tom"), color=String("red"))))
+    unnamed = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0))
+    for wanted in ("Tom", {"text": "Tom"}, ["Tom"], {"type": "text", "text": "Tom", "extra": []}):
+        assert holds(props({"minecraft:custom_name": wanted}), ctx(state, this=plain))
+        assert not holds(props({"minecraft:custom_name": wanted}), ctx(state, this=red))
+    assert holds(props({"custom_name": {"text": "Tom", "color": "red"}}), ctx(state, this=red))
+    assert not holds(props({"custom_name": {"text": "Tom", "bold": False}}), ctx(state, this=plain))
+    assert not holds(props({"custom_name": "Tom"}), ctx(state, this=unnamed))  # no component: no match
+    # a name saved as a compound (1.21.5+ SNBT) is kept as it was: data get reads it back
+    assert red.display_name == "Tom" and entity_nbt(red)["CustomName"] == Compound(text=String("Tom"),
+                                                                                    color=String("red"))
+
+
+def test_the_entity_predicates_field_reads_the_components_entities_expose():
+    # DataComponentMatchers.test (1.21.5+): each sub-predicate reads its component through
+    # Entity.get, and a missing component fails (SingleComponentItemPredicate.matches); a villager
+    # exposes villager/variant (Villager.get), no entity an item's damage or enchantments
+    state = WorldState(version=(1, 21, 11))
+    props = lambda p: {"condition": "entity_properties", "entity": "this", "predicate": {"predicates": p}}  # noqa: E731
+    villager = state.entities.summon("minecraft:villager", (0.0, 0.0, 0.0), Compound(VillagerData=Compound(
+        type=String("minecraft:snow"), profession=String("minecraft:none"), level=Int(1))))
+    pig = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0))
+    assert holds(props({"minecraft:villager/variant": "minecraft:snow"}), ctx(state, this=villager))
+    assert holds(props({"villager/variant": ["minecraft:desert", "snow"]}), ctx(state, this=villager))
+    assert not holds(props({"villager/variant": "minecraft:desert"}), ctx(state, this=villager))
+    assert not holds(props({"villager/variant": "minecraft:snow"}), ctx(state, this=pig))
+    assert not holds(props({"damage": {}}), ctx(state, this=pig))
+    with pytest.raises(Unmodelled, match="custom data"):
+        holds(props({"custom_data": {}}), ctx(state, this=pig))
+    # before 1.21.5 the entity predicate has no such field: the codec ignores it
+    state.version = (1, 21, 4)
+    assert holds(props({"damage": {}}), ctx(state, this=pig))
