@@ -154,7 +154,7 @@ class Entity:
     own). Until the store adds it, the entity keeps those values itself."""
 
     __slots__ = ("_uuid", "type", "_custom_name", "data", "order", "player_name", "_gamemode", "_level", "_team",
-                 "_sneaking", "sprinting", "_vehicle", "passengers", "_table", "_own", "__weakref__")
+                 "_sneaking", "sprinting", "_vehicle", "passengers", "_table", "_own", "born", "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
                  yaw=F32(0.0), pitch=F32(0.0), motion=(0.0, 0.0, 0.0), tags: set[str] | None = None,
@@ -177,6 +177,7 @@ class Entity:
         # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
         self._vehicle: Entity | None = None
         self.passengers: list = []
+        self.born = 0  # the server tick it came into the world (EntityStore._add; tickCount counts from it)
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]
 
@@ -564,6 +565,7 @@ class EntityStore:
         # (RandomSupport.mixStafford13 of the seed's upgrade to 128 bits), as Random() mixes the time
         java_random.set_seed(self.table.random, random_sequences.mix_stafford13(seed + random_sequences.GOLDEN_RATIO_64))
         self.joined = 0  # players that joined so far (EI_JOIN)
+        self.clock: Callable[[], int] = lambda: 0  # the server ticks run so far (WorldState.tick)
         self.changes = 0  # entities that came into ``entities`` or left it so far
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
 
@@ -572,7 +574,8 @@ class EntityStore:
         self.table.intern_holder = scoreboard.holder_id
 
     def _add(self, entity: Entity) -> Entity:
-        """Into the store, at the end of its level's entities."""
+        """Into the store, at the end of its level's entities (``born``: the server tick it came in)."""
+        entity.born = self.clock()
         entity.attach(self.table)
         self._enter_level(entity)
         return entity

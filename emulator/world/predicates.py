@@ -516,6 +516,15 @@ def _entity_sub_predicates(value, ctx: LootContext, entity: Entity) -> bool:
     return True
 
 
+def _periodic_tick(value, ctx: LootContext, entity: Entity) -> bool:
+    """EntityPredicate.matches: ``entity.tickCount % periodic_tick == 0``. tickCount grows by one in
+    each tick's entity phase (ServerLevel.tickNonPassenger / tickPassenger), after that tick's
+    functions: here every entity ticks every tick, as where a player is near, so an entity's count
+    is the ticks the server finished since it came into the world (a new entity, or a player that
+    joined, starts at 0)."""
+    return (ctx.state.tick - entity.born) % int(value) == 0
+
+
 def _team(value, ctx: LootContext, entity: Entity) -> bool:
     return entity.team is not None and entity.team == value
 
@@ -590,8 +599,9 @@ _ENTITY_FIELDS = {
     "player": lambda v, ctx, e: _player(v, ctx, e),  # before 1.19: a top-level player predicate
     "components": lambda v, ctx, e: _entity_components(v, ctx, e),
     "predicates": _entity_sub_predicates,
+    "periodic_tick": _periodic_tick,
 }
-_ENTITY_UNMODELLED = {"periodic_tick", "movement", "fishing_hook",
+_ENTITY_UNMODELLED = {"movement", "fishing_hook",
                       "lightning_bolt", "catType"}
 ENTITY_COMPONENTS_VERSION = (1, 21, 5)  # EntityPredicate's DataComponentMatchers
 

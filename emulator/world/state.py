@@ -508,6 +508,7 @@ class WorldState:
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)
+        self.entities.clock = lambda: self.tick
 
     def blocks_in(self, dimension: str) -> BlockMap:
         """The blocks of level ``dimension`` (each level has its own)."""

@@ -474,3 +474,26 @@ def test_the_entity_predicates_field_reads_the_components_entities_expose():
     # before 1.21.5 the entity predicate has no such field: the codec ignores it
     state.version = (1, 21, 4)
     assert holds(props({"damage": {}}), ctx(state, this=pig))
+
+
+def test_periodic_tick_counts_the_ticks_since_the_entity_came(tmp_path):
+    # EntityPredicate.matches: entity.tickCount % periodic_tick == 0; ServerLevel.tickNonPassenger
+    # adds one in each tick's entity phase, after the tick's functions: an entity summoned by the
+    # load or a tick function holds at once (0) and then every 3rd tick
+    from tests.world.world_emulator import make_pack
+    from emulator import Emulator
+    pack = make_pack(tmp_path / "p", {
+        "t:load": "scoreboard objectives add o dummy\nsummon marker 0 0 0 {Tags:['m']}",
+        "t:tick": "execute as @e[tag=m] if predicate t:third run scoreboard players add #hits o 1",
+    }, {"minecraft:load": ["t:load"], "minecraft:tick": ["t:tick"]})
+    (pack / "data/t/predicate").mkdir(parents=True)
+    (pack / "data/t/predicate/third.json").write_text(
+        '{"condition": "minecraft:entity_properties", "entity": "this", "predicate": {"periodic_tick": 3}}')
+    for backend in ("python", "numba"):
+        emu = Emulator(backend=backend)
+        emu.load(pack)
+        emu.tick(7)  # tickCount 0..6 in the functions of ticks 0..6: 0, 3 and 6 hold
+        assert emu.score("#hits", "o") == 3, backend
+        late = emu.state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0))
+        emu.tick(1)
+        assert (emu.state.tick - late.born) == 1
