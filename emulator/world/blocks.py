@@ -43,7 +43,7 @@ from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure
 from emulator.world import command_blocks, signs
-from emulator.world.inventories import default_block_entity, normalise_items
+from emulator.world.inventories import CRAFTER, crafter_loaded, default_block_entity, normalise_items
 from emulator.world.nbt_ops import compare_nbt, copy_tag, tags_equal
 from emulator.world.source import Source
 
@@ -174,6 +174,14 @@ def _positions(lo, hi):
                 yield (x, y, z)
 
 
+def _loaded(block_id: str, nbt: Compound) -> None:
+    """A block entity's NBT as the game loads and saves it: its stacks' components read; a crafter's
+    own fields (:func:`emulator.world.inventories.crafter_loaded`)."""
+    normalise_items(nbt)
+    if block_id == CRAFTER:
+        crafter_loaded(nbt)
+
+
 class BlockMap:
     def __init__(self) -> None:
         self.states: dict[tuple[int, int, int], BlockState] = {}
@@ -198,7 +206,7 @@ class BlockMap:
         else:
             self.states[pos] = state
         self.entities.pop(pos, None)
-        nbt = default_block_entity(state.id)
+        nbt = default_block_entity(state.id, dict(state.properties).get("triggered") == "true")
         if nbt is None:
             nbt = command_blocks.default_entity(state.id)
         if nbt is None and state.id.endswith(_EMPTY_ENTITY_SUFFIXES) and state.id != "minecraft:piston_head":
@@ -206,7 +214,7 @@ class BlockMap:
         if spec.nbt is not None:
             nbt = nbt or Compound()
             nbt.update(copy_tag(spec.nbt))
-            normalise_items(nbt)
+            _loaded(state.id, nbt)
         if nbt is not None:
             self.entities[pos] = nbt
         return True
@@ -305,6 +313,6 @@ class BlockMap:
         result = change(nbt)
         for key in ("x", "y", "z", "id"):
             nbt.pop(key, None)
-        normalise_items(nbt)
+        _loaded(self.get(pos).id, nbt)
         self.entities[tuple(pos)] = nbt
         return result

@@ -1,11 +1,13 @@
 """Crafting: which recipe a 3x3 grid of stacks makes, and what it gives, as the game's crafting
 recipes match and assemble.
 
-- ``craft(resources, grid, version) -> Crafted | None``: the first loaded recipe that matches the
-  grid (nine stacks, row by row) and its result and remainders; None when none matches.
-  A shaped (``crafting_shaped``) or shapeless (``crafting_shapeless``) recipe is matched; when
-  none of them matches and a recipe the emulator does not match could (the game's own recipes
-  without ``--game-jar``, a special or transmute recipe), the craft is not modelled (Unmodelled).
+- ``craft(resources, grid, version) -> Crafted | None``: the first recipe in the game's order
+  (``recipe_order``) that matches the grid (nine stacks, row by row), its result and remainders;
+  None when none matches. Shaped (``crafting_shaped``), shapeless (``crafting_shapeless``) and,
+  from 1.21.2 to 1.21.4, transmute recipes are matched; a special recipe (``crafting_special_*``,
+  ``crafting_decorated_pot``) or a later transmute recipe reached in that order, when the grid
+  holds what it needs, makes the craft not modelled (Unmodelled), as does no match without the
+  game's own recipes (``--game-jar``) and, before 1.21.2 without them, two matches.
 
 Rules (decompiled 1.21): CraftingInput.ofPositioned (the grid trimmed to the box around its
 stacks), ShapedRecipePattern (unpack: the pattern trimmed of empty rows and columns; matches: the
@@ -15,8 +17,9 @@ Ingredient.test (the item only, never its components; an empty ingredient holds 
 stack), ShapedRecipe/ShapelessRecipe.assemble (a copy of the result: ItemStack.STRICT_CODEC,
 ``item`` before 1.20.5), CraftingRecipe.getRemainingItems (Item.getCraftingRemainingItem: the
 water, lava and milk buckets leave a bucket, honey bottles and dragon's breath a glass bottle),
-RecipeManager.getRecipeFor (the first recipe of the type that matches; the game's order is its
-recipe map's, here the packs' load order).
+RecipeManager.getRecipeFor (the first recipe of the type that matches, in the recipe map's order),
+TransmuteRecipe (1.21.3: matches, assemble, ItemStack.transmuteCopy), the special recipes'
+matches (what each needs in the grid).
 """
 from __future__ import annotations
 
@@ -24,6 +27,7 @@ from dataclasses import dataclass
 
 from emulator.world import items
 from emulator.world.errors import Unmodelled
+from emulator.world.hash_order import java_hash_map_order, resource_location_hash
 from emulator.world.items import ItemStack
 from emulator.world.loot_context import namespaced as _id, to_tag
 
@@ -129,28 +133,128 @@ def result_stack(result: dict, version) -> ItemStack:
     return stack
 
 
+# RecipeManager.prepare from 1.21.2 keeps the recipes in a TreeMap; before, apply walked a HashMap
+SORTED_RECIPES = (1, 21, 2)
+TRANSMUTE, TRANSMUTE_SINCE, TRANSMUTE_REWRITTEN = "minecraft:crafting_transmute", (1, 21, 2), (1, 21, 5)
+
+
+def recipe_order(ids, version) -> list[str]:
+    """The order RecipeManager.getRecipeFor tries recipes in (its ``byType`` multimap keeps the
+    order the recipes were read in). From 1.21.2 RecipeManager.prepare reads them from a TreeMap:
+    by id (ResourceLocation.compareTo: the path, then the namespace). Before, ``apply`` walked the
+    HashMap SimpleJsonResourceReloadListener.prepare filled with the files in TreeMap order of their
+    locations (``<ns>:recipe/<path>.json``): :func:`emulator.world.hash_order.java_hash_map_order`."""
+    def by_location(rid: str, suffix: str = "") -> tuple[str, str]:
+        namespace, _, path = rid.partition(":")
+        return path + suffix, namespace
+    if tuple(version) >= SORTED_RECIPES:
+        return sorted(ids, key=by_location)
+    return java_hash_map_order(sorted(ids, key=lambda rid: by_location(rid, ".json")), resource_location_hash)
+
+
+def _transmuted(recipe: dict, stacks: list[ItemStack], resources) -> ItemStack | None:
+    """TransmuteRecipe (1.21.2 - 1.21.4): two stacks, the input (not already the result) and the
+    material; the result is the input's item made the result item, one of it, with the input's
+    components (ItemStack.transmuteCopy). None when it does not match."""
+    result = _id(str(recipe.get("result", "")))
+    present = [s for s in stacks if not s.is_empty]
+    if len(present) != 2:
+        return None
+    source, material = None, False
+    for stack in present:
+        if source is None and _ingredient_test(recipe.get("input"), stack, resources) and stack.id != result:
+            source = stack
+        elif material or not _ingredient_test(recipe.get("material"), stack, resources):
+            return None
+        else:
+            material = True
+    if source is None or not material:
+        return None
+    made = ItemStack(result, 1)
+    for name, value in source.patch.items():
+        if name.startswith("!"):
+            items.remove_component(made, name[1:])
+        else:
+            items.set_component(made, name, value)
+    return made
+
+
+# each special recipe type the emulator does not match, and an item it cannot match without (the
+# recipes' matches methods: CraftingInput needs that item): a grid without it is no such craft
+_SPECIAL_NEEDS = {f"minecraft:crafting_special_{kind}": need for kind, need in {
+    "armordye": lambda ids: any(i.endswith("_dye") for i in ids),
+    "bookcloning": lambda ids: "minecraft:written_book" in ids,
+    "mapcloning": lambda ids: "minecraft:filled_map" in ids,
+    "mapextending": lambda ids: "minecraft:filled_map" in ids,
+    "firework_rocket": lambda ids: "minecraft:paper" in ids,
+    "firework_star": lambda ids: "minecraft:gunpowder" in ids,
+    "firework_star_fade": lambda ids: "minecraft:firework_star" in ids,
+    "repairitem": lambda ids: len(ids) == 2,
+    "tippedarrow": lambda ids: "minecraft:lingering_potion" in ids,
+    "bannerduplicate": lambda ids: sum(i.endswith("_banner") for i in ids) >= 2,
+    "shielddecoration": lambda ids: "minecraft:shield" in ids,
+    "shulkerboxcoloring": lambda ids: any(i.endswith("shulker_box") for i in ids),
+    "suspiciousstew": lambda ids: "minecraft:bowl" in ids,
+}.items()}
+_SPECIAL_NEEDS["minecraft:crafting_decorated_pot"] = lambda ids: len(ids) == 4
+
+
+def _may_match(kind: str, recipe: dict | None, stacks: list[ItemStack], resources) -> bool:
+    """Whether a recipe the emulator does not match could match these stacks (False only when the
+    grid lacks what it needs: a later transmute's every stack is its input or material)."""
+    ids = [s.id for s in stacks if not s.is_empty]
+    if kind == TRANSMUTE:
+        return recipe is None or len(ids) >= 2 and all(
+            _ingredient_test(recipe.get("input"), s, resources) or _ingredient_test(recipe.get("material"), s, resources)
+            for s in stacks if not s.is_empty)
+    need = _SPECIAL_NEEDS.get(kind)
+    return need is None or need(ids)
+
+
+def _result(kind: str, body, width: int, height: int, stacks: list[ItemStack], resources, version):
+    """The recipe's result for these stacks, None when it does not match; :data:`_UNMATCHED` for a
+    recipe the emulator does not match."""
+    if body is not None and kind == SHAPED:
+        return result_stack(body["result"], version) if _shaped_matches(body, width, height, stacks, resources) else None
+    if body is not None and kind == SHAPELESS:
+        return result_stack(body["result"], version) if _shapeless_matches(body, stacks, resources) else None
+    if body is not None and kind == TRANSMUTE and TRANSMUTE_SINCE <= tuple(version) < TRANSMUTE_REWRITTEN:
+        return _transmuted(body, stacks, resources)
+    return _UNMATCHED if kind.startswith(UNMATCHED_PREFIXES) else None
+
+
+_UNMATCHED = object()
+
+
 def craft(resources, grid: list[ItemStack], version) -> Crafted | None:
+    """RecipeManager.getRecipeFor(CRAFTING): the first recipe in the game's order
+    (:func:`recipe_order`) that matches. A recipe the emulator does not match that could match
+    before it, several pack recipes matching before 1.21.2 without the game's recipes (their order
+    then depends on how many the game has), and no match without the game's recipes, are not
+    modelled."""
     width, height, stacks = trimmed(grid)
     if not stacks:
         return None
-    unmatched = []
-    for recipe_id, kind in resources.recipes.items():
-        body = resources.recipe_bodies.get(recipe_id)
-        if kind == SHAPED and body is not None:
-            found = _shaped_matches(body, width, height, stacks, resources)
-        elif kind == SHAPELESS and body is not None:
-            found = _shapeless_matches(body, stacks, resources)
-        else:
-            if kind.startswith(UNMATCHED_PREFIXES):
-                unmatched.append(recipe_id)
+    matched = []
+    for recipe_id in recipe_order(resources.recipes, version):
+        kind, body = resources.recipes[recipe_id], resources.recipe_bodies.get(recipe_id)
+        found = _result(kind, body, width, height, stacks, resources, version)
+        if found is _UNMATCHED:
+            if _may_match(kind, body, stacks, resources):
+                raise Unmodelled(f"crafting: {recipe_id} ({kind}) may match, which the emulator does not model")
             continue
-        if found:
-            remainders = [ItemStack(REMAINDERS[s.id]) if s.id in REMAINDERS else items.EMPTY.copy() for s in stacks]
-            return Crafted(recipe_id, result_stack(body["result"], version), remainders)
+        if found is not None:
+            matched.append((recipe_id, found))
+            if resources.vanilla_data or tuple(version) >= SORTED_RECIPES:
+                break
+    if len(matched) > 1:
+        raise Unmodelled(f"crafting: {matched[0][0]} and {matched[1][0]} both match; before 1.21.2 the game "
+                         "tries them in its recipe map's order, which depends on its own recipes (pass --game-jar)")
+    if matched:
+        recipe_id, result = matched[0]
+        remainders = [ItemStack(REMAINDERS[s.id]) if s.id in REMAINDERS else items.EMPTY.copy() for s in stacks]
+        return Crafted(recipe_id, result, remainders)
     if not resources.vanilla_data:
         raise Unmodelled("crafting with no pack recipe matching: the game's own recipes are not known without "
                          "the game's data (pass --game-jar)")
-    if unmatched:
-        raise Unmodelled(f"crafting with no shaped or shapeless recipe matching: {unmatched[0]} "
-                         f"({resources.recipes[unmatched[0]]}) may match, which the emulator does not model")
     return None

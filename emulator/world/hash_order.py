@@ -1,4 +1,5 @@
-"""The iteration order of the game's score-holder map, reproduced.
+"""The iteration orders of the game's hash maps, reproduced: the score-holder map, and a
+``java.util.HashMap`` keyed by ids (:func:`java_hash_map_order`: the recipe map before 1.21.2).
 
 ``Scoreboard.playerScores`` is a fastutil ``Object2ObjectOpenHashMap<String, PlayerScores>(16, 0.5F)``
 and ``getTrackedPlayers()`` (what ``*`` names) streams its key set. :class:`OpenHashKeys` replays
@@ -124,3 +125,25 @@ class OpenHashKeys:
     def keys(self) -> list[str]:
         """The key set's spliterator order (``keySet().stream()``): slot 0 upwards."""
         return [key for key in self.table if key is not None]
+
+
+def resource_location_hash(rid: str) -> int:
+    """ResourceLocation.hashCode: 31 * namespace.hashCode() + path.hashCode() (unsigned 32-bit)."""
+    namespace, _, path = rid.partition(":")
+    return (31 * java_string_hash(namespace) + java_string_hash(path)) & 0xFFFFFFFF
+
+
+def java_hash_map_order(keys: list, hash_code) -> list:
+    """java.util.HashMap's iteration order of ``keys`` put in that order into a ``new HashMap<>()``
+    (16 buckets, doubled whenever the size passes three quarters of them: HashMap.putVal/resize):
+    bucket by bucket (the hash spread ``h ^ h >>> 16``, masked), each bucket in insertion order,
+    which resize's split keeps. A bucket of 8 or more keys becomes a tree whose links may reorder
+    it; with the few thousand keys of a recipe map that is all but impossible, and not reproduced."""
+    capacity = 16
+    while len(keys) > capacity * 3 // 4:
+        capacity *= 2
+
+    def bucket(key) -> int:
+        h = hash_code(key) & 0xFFFFFFFF
+        return (h ^ (h >> 16)) & (capacity - 1)
+    return sorted(keys, key=bucket)  # stable: insertion order within a bucket

@@ -53,13 +53,13 @@ from collections.abc import Callable
 
 import numpy as np
 
-from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, Short
+from mcfunction_parser.nbt import Byte, Compound, Double, Int, IntArray, List, Short
 from emulator.world import mth
 from emulator.world.id_families import COLOURS
 from emulator.world.errors import CommandFailure
 from emulator.world.items import EMPTY, ItemStack, from_nbt, to_nbt
 from emulator.world.living import NOT_LIVING
-from emulator.world.nbt_ops import copy_tag
+from emulator.world.nbt_ops import copy_tag, is_numeric, narrow
 
 F32 = np.float32
 THROWN_PICKUP_DELAY = 40  # Player.createItemStackToDrop: setPickUpDelay(40)
@@ -80,6 +80,7 @@ _UNMODELLED = {**{f"minecraft:{n}": range(300, 308) for n in ("villager", "wande
                **{f"minecraft:{n}": range(400, 515) for n in (
                    "horse donkey mule llama trader_llama camel skeleton_horse zombie_horse").split()}}
 
+CRAFTER = "minecraft:crafter"
 CONTAINER_SIZES = {
     **{f"minecraft:{n}": 27 for n in ("chest", "trapped_chest", "barrel", "shulker_box")},
     **{f"minecraft:{c}_shulker_box": 27 for c in COLOURS},
@@ -272,6 +273,22 @@ class Container:
         return _list_slot(self.nbt, "Items", index, self.version)
 
 
+class CrafterContainer(Container):
+    """A crafter's nine slots: CrafterBlockEntity.setItem enables a disabled slot it fills."""
+
+    def slot(self, index: int) -> SlotAccess | None:
+        access = super().slot(index)
+        if access is None:
+            return None
+
+        def put(stack: ItemStack) -> None:
+            disabled = self.nbt.get("disabled_slots")
+            if isinstance(disabled, IntArray) and index in [int(v) for v in disabled]:
+                self.nbt["disabled_slots"] = IntArray(Int(v) for v in disabled if int(v) != index)
+            access.set(stack)
+        return SlotAccess(access.get, put)
+
+
 def container(blocks, pos, version) -> Container | None:
     """The container at ``pos`` (ItemCommands.getContainer), None when the block is none."""
     block_id = blocks.get(pos).id
@@ -280,8 +297,23 @@ def container(blocks, pos, version) -> Container | None:
         return None
     if block_id in SINGLE_ITEM_BLOCKS:
         return Container(nbt, 1, version, SINGLE_ITEM_BLOCKS[block_id])
+    if block_id == CRAFTER:
+        return CrafterContainer(nbt, 9, version)
     size = CONTAINER_SIZES.get(block_id)
     return None if size is None else Container(nbt, size, version)
+
+
+def crafter_loaded(nbt: Compound) -> None:
+    """CrafterBlockEntity.loadAdditional then saveAdditional: ``crafting_ticks_remaining`` and
+    ``triggered`` read as ints (getInt: 0 when missing or not a number), ``disabled_slots`` the
+    listed slots 0 - 8 that hold no item (slotCanBeDisabled), saved in slot order."""
+    for key in ("crafting_ticks_remaining", "triggered"):
+        value = nbt.get(key)
+        nbt[key] = Int(narrow(value, Int) if is_numeric(value) else 0)
+    wanted = nbt.get("disabled_slots")
+    wanted = {int(v) for v in wanted} if isinstance(wanted, IntArray) else set()
+    slots = Container(nbt, 9, None)
+    nbt["disabled_slots"] = IntArray(Int(i) for i in range(9) if i in wanted and slots.slot(i).get().is_empty)
 
 
 def normalise_items(data: Compound) -> None:
@@ -304,14 +336,15 @@ def normalise_items(data: Compound) -> None:
                     del tag["components"]
 
 
-def default_block_entity(block_id: str) -> Compound | None:
+def default_block_entity(block_id: str, triggered: bool = False) -> Compound | None:
     """What a container saves when placed empty (ContainerHelper.saveAllItems always writes Items;
     a single-item container writes its item only when it has one; a crafter its crafting ticks
     left and whether it is triggered too)."""
     if block_id in SINGLE_ITEM_BLOCKS:
         return Compound()
-    if block_id == "minecraft:crafter":  # CrafterBlockEntity.saveAdditional
-        return Compound(crafting_ticks_remaining=Int(0), Items=List(), triggered=Int(0))
+    if block_id == CRAFTER:  # CrafterBlockEntity.saveAdditional; newBlockEntity: triggered as the state
+        return Compound(crafting_ticks_remaining=Int(0), Items=List(), triggered=Int(int(triggered)),
+                        disabled_slots=IntArray())
     return Compound(Items=List()) if block_id in CONTAINER_SIZES else None
 
 

@@ -8,11 +8,13 @@ import json
 
 import pytest
 
-from emulator.world import crafting
+from emulator.world import crafting, items
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
 from emulator.world.resources import Resources
 from emulator import Emulator
+from mcfunction_parser.nbt import Int, String
+from mcfunction_parser.pack.registry_tags import RegistryTag
 from tests.world.world_emulator import make_pack
 
 V121 = (1, 21, 0)
@@ -112,3 +114,70 @@ def test_a_crafter_facing_a_furnace_is_not_modelled(tmp_path, backend):
     assert not any(d.unmodelled for d in emu.diagnostics)
     emu.tick(5)
     assert any(d.unmodelled and "into minecraft:furnace" in d.message for d in emu.diagnostics)
+
+
+def test_the_recipes_are_tried_in_the_games_order():
+    # RecipeManager.prepare (1.21.2+): a TreeMap by id, ResourceLocation.compareTo (path, then
+    # namespace); before, a HashMap's order (pinned against java.util.HashMap on OpenJDK 17 with
+    # ResourceLocation's hashCode, 31 * namespace.hashCode() + path.hashCode())
+    ids = ["minecraft:torch", "t:a", "t:b", "minecraft:stick", "a:x/y", "b:a-b", "ns:zz", "minecraft:oak_planks"]
+    assert crafting.recipe_order(ids, (1, 21, 2)) == [
+        "t:a", "b:a-b", "t:b", "minecraft:oak_planks", "minecraft:stick", "minecraft:torch", "a:x/y", "ns:zz"]
+    assert crafting.recipe_order(ids, V121) == [
+        "a:x/y", "b:a-b", "minecraft:torch", "minecraft:oak_planks", "ns:zz", "t:a", "t:b", "minecraft:stick"]
+    two = {"type": "minecraft:crafting_shapeless", "ingredients": ["minecraft:stone"], "result": {"id": "minecraft:dirt"}}
+    res = _resources(**{"t:b": two, "t:a": {**two, "result": {"id": "minecraft:gravel"}}})
+    assert crafting.craft(res, _grid({0: "stone"}), (1, 21, 4)).result.id == "minecraft:gravel"  # t:a first
+    # before 1.21.2 the order hangs on the table's size, so on the game's own recipes
+    with pytest.raises(Unmodelled, match="both match"):
+        crafting.craft(res, _grid({0: "stone"}), V121)
+    res.vanilla_data = True
+    assert crafting.craft(res, _grid({0: "stone"}), V121).recipe_id == "t:a"
+
+
+def test_a_transmute_recipe_keeps_the_inputs_components():
+    # TransmuteRecipe (1.21.2 - 1.21.4): exactly the input (not already the result) and one material;
+    # assemble: transmuteCopy(result, 1), the input's component patch on the result item
+    recipe = {"type": "minecraft:crafting_transmute", "input": "#t:swords", "material": "minecraft:diamond",
+              "result": "minecraft:diamond_sword"}
+    res = _resources(**{"t:upgrade": recipe})
+    res.tags = {"item": {"t:swords": RegistryTag(frozenset({"minecraft:stone_sword", "minecraft:diamond_sword"}))}}
+    sword = ItemStack("minecraft:stone_sword")
+    items.set_component(sword, "minecraft:damage", Int(7))
+    items.set_component(sword, "minecraft:custom_name", String("Old"))
+    grid = [sword, EMPTY.copy(), EMPTY.copy(), EMPTY.copy(), ItemStack("minecraft:diamond")] + [EMPTY.copy()] * 4
+    made = crafting.craft(res, grid, (1, 21, 4)).result
+    assert (made.id, made.count) == ("minecraft:diamond_sword", 1)
+    assert made.component("minecraft:damage") == Int(7) and made.component("minecraft:custom_name") == String("Old")
+    res.vanilla_data = True  # none of the game's recipes here: no match is no craft
+    for cells in ({0: "diamond_sword", 4: "diamond"}, {0: "stone_sword", 4: "diamond", 8: "diamond"}, {0: "stone_sword"}):
+        assert crafting.craft(res, _grid(cells), (1, 21, 4)) is None
+    # its later forms (1.21.5+) are not modelled: a grid it may make says so
+    with pytest.raises(Unmodelled, match="t:upgrade"):
+        crafting.craft(res, grid, (1, 21, 5))
+
+
+def test_a_special_recipe_is_not_modelled_only_where_it_could_match():
+    # a crafting_special_* recipe can only match a grid holding what it needs (BookCloningRecipe a
+    # written book, FireworkRocketRecipe paper ...): elsewhere the next recipe in order is the craft
+    res = _resources(**{"minecraft:book_cloning": {"type": "minecraft:crafting_special_bookcloning"},
+                        "t:torch": TORCH})
+    res.vanilla_data = True
+    assert crafting.craft(res, _grid({1: "coal", 4: "stick"}), V121).recipe_id == "t:torch"
+    with pytest.raises(Unmodelled, match="book_cloning"):
+        crafting.craft(res, _grid({0: "written_book", 1: "writable_book"}), V121)
+
+
+def test_a_crafters_disabled_slots_and_triggered_state_are_saved_as_the_game_saves_them(tmp_path):
+    # CrafterBlock.newBlockEntity: triggered as the placed state; CrafterBlockEntity.loadAdditional:
+    # disabled_slots keeps the slots 0 - 8 that hold no item (slotCanBeDisabled), saveAdditional
+    # writes them in slot order; setItem enables a disabled slot it fills
+    emu = Emulator(backend="python")
+    emu.load(make_pack(tmp_path / "p", {"t:go": "\n".join([
+        "setblock 5 0 0 crafter[triggered=true]",
+        "setblock 0 0 0 crafter{disabled_slots:[I;8,0,4,9,4],Items:[{Slot:4b,id:'minecraft:stone',count:1}]}",
+        "item replace block 0 0 0 container.0 with minecraft:dirt"])}))
+    emu.call("t:go")
+    placed, loaded = emu.state.blocks.entity((5, 0, 0)), emu.state.blocks.entity((0, 0, 0))
+    assert placed["triggered"] == Int(1) and list(placed["disabled_slots"]) == []
+    assert [int(v) for v in loaded["disabled_slots"]] == [8] and loaded["triggered"] == Int(0)
