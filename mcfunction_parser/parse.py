@@ -12,7 +12,8 @@ from .diagnostics import ERROR, WARNING, Diagnostic, Loc, new_loc
 from .features import feature_problem
 from .lines import LineError, logical_lines, macro_keys
 from .reader import JoinedReader, ParseError, Reader
-from .relocate import NotRelocatable, relocate
+from .relocate import NotRelocatable, lines_read, relocate
+from .relocate import forget_read_lines  # noqa: F401  (the parser's public entry points are here)
 
 DEFAULT_VERSION = (1, 21, 0)
 _LINE_BREAK = re.compile(r"\r\n|\r|\n")
@@ -80,10 +81,7 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
                                       "reads as part of the first line", path, 1, 1, physical[0]))
     is_macro = False
     macros_ok = feature_problem("macro lines", version) is None
-    read = _READ.get(version)
-    if read is None or len(read) >= _READ_MAX:
-        _READ.clear()  # one release at a time, and a bound on the nodes it keeps alive: start afresh
-        read = _READ[version] = {}
+    read = lines_read(version)
     for item in logical_lines(physical, version):
         if type(item) is LineError:
             diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col, physical[item.line - 1]))
@@ -123,19 +121,6 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
             commands.append(cmd)
     function = Function.new(function_id, path, tuple(commands), len(physical), is_macro, pack)
     return function, diagnostics
-
-
-# For the release read last, each line text read cleanly (no diagnostic) -> (its command, the
-# column it started at), or False for one that cannot be relocated (see .relocate). A line seen
-# again is relocated, not read again: a quarter of the pool pack's command lines repeat an earlier
-# one. A line that had a diagnostic is always read again, so it reports it again.
-_READ: dict[tuple[int, int, int], dict] = {}
-_READ_MAX = 1 << 15
-
-
-def forget_read_lines() -> None:
-    """Empty the memory of lines read (a benchmark's fresh start; a test's clean slate)."""
-    _READ.clear()
 
 
 def parse_command(text: str, loc: Loc,

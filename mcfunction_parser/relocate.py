@@ -17,6 +17,30 @@ import dataclasses
 from .diagnostics import Loc, new_loc
 
 
+# For the release read last, each command text read cleanly (no diagnostic) -> (its command, the
+# column it started at), or False for one that cannot be relocated. A whole line seen again is
+# relocated, not read again (a quarter of the pool pack's command lines repeat an earlier one), and
+# so is the command after an ``execute ... run`` (see commands.dispatch.rest_command). A text that had
+# a diagnostic is always read again, so it reports it again.
+READ: dict[tuple[int, int, int], dict] = {}
+READ_MAX = 1 << 15
+
+
+def lines_read(version: tuple[int, int, int]) -> dict:
+    """The memory of texts read for ``version``: one release at a time, and a bound on the nodes it
+    keeps alive (past it, it starts afresh)."""
+    read = READ.get(version)
+    if read is None or len(read) >= READ_MAX:
+        READ.clear()
+        read = READ[version] = {}
+    return read
+
+
+def forget_read_lines() -> None:
+    """Empty the memory of texts read (a benchmark's fresh start; a test's clean slate)."""
+    READ.clear()
+
+
 class NotRelocatable(Exception):
     """The node holds a value that must not be shared between two commands."""
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 from ..ast import Command
 from ..features import COMMANDS, command_problem, permission_warning
 from ..reader import Reader
+from ..relocate import READ, READ_MAX, NotRelocatable, relocate
 from .tree import tree_command
 
 # name -> parser(reader positioned after the name, loc of the name) -> Command
@@ -39,3 +40,29 @@ def command(r: Reader) -> Command:
     if parser is not None:
         return parser(r, loc)
     return tree_command(r, loc, name)
+
+
+def rest_command(r: Reader) -> Command:
+    """The command that is the rest of the text (after ``execute ... run``, ``return run``): when
+    that text was read cleanly before as a line or such a rest (see relocate.READ), the command
+    read then, moved here; else read, and remembered when it read cleanly to the end."""
+    read = READ.get(r.version) if type(r) is Reader else None  # a joined line's offsets span lines
+    if read is None:
+        return command(r)
+    start = r.pos
+    rest = r.text[start:]
+    known = read.get(rest)
+    col = r.col + start
+    if known:
+        try:
+            found = relocate(known[0], r.path, r.line, col - known[1])
+            r.pos = r.end
+            return found
+        except NotRelocatable:
+            read[rest] = False
+            known = False
+    warned = len(r.warnings)
+    found = command(r)
+    if known is None and r.pos == r.end and len(r.warnings) == warned and len(read) < READ_MAX:
+        read[rest] = (found, col)
+    return found

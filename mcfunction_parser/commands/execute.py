@@ -18,7 +18,7 @@ from ..selectors import target
 from ..items import item_predicate, slot
 from .data_targets import data_target
 from .items import item_target
-from .dispatch import command
+from .dispatch import rest_command
 
 _ANCHORS = ("eyes", "feet")
 _HEIGHTMAPS = ("world_surface", "motion_blocking", "motion_blocking_no_leaves", "ocean_floor")
@@ -267,7 +267,7 @@ def execute(r: Reader, loc) -> ast.Command:
             return ast.Execute.new(loc, tuple(subcommands), None)
         if text.startswith(" run ", pos) and pos + 5 < r.end:
             r.pos = pos + 5
-            return ast.Execute.new(loc, tuple(subcommands), command(r))
+            return ast.Execute.new(loc, tuple(subcommands), rest_command(r))
         m = _FAST_SCORE_MATCHES.match(text, pos)
         if m is not None:
             fast = _fast_score_matches(r, m, r.loc_at(pos + 1))
@@ -277,7 +277,7 @@ def execute(r: Reader, loc) -> ast.Command:
                 continue
         name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
         if name == "run":
-            return ast.Execute.new(loc, tuple(subcommands), command(r))
+            return ast.Execute.new(loc, tuple(subcommands), rest_command(r))
         subcommands.append(_SUBCOMMANDS[name](r, r.loc_at(pos + 1)))
         condition_last = name in _CONDITION_SUBCOMMANDS
         if r.pos == r.end and not condition_last:

@@ -8,7 +8,7 @@ from ..primitives import resource_or_tag
 from ..reader import Reader
 from ..snbt import compound
 from .data_targets import data_target
-from .dispatch import command
+from .dispatch import rest_command
 
 
 def function(r: Reader, loc) -> ast.Command:
@@ -37,7 +37,7 @@ def return_(r: Reader, loc) -> ast.Command:
         r.require("return run", start)
         r.pos += 3
         r.space("command")
-        return ast.Return.new(loc, "run", command=command(r))
+        return ast.Return.new(loc, "run", command=rest_command(r))
     if word == "fail":
         r.require("return fail", start)
         r.pos += 4

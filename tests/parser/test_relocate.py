@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from mcfunction_parser import parse
+from mcfunction_parser import relocate as memory
 from mcfunction_parser.parse import forget_read_lines, parse_function
 from mcfunction_parser.relocate import NotRelocatable, relocate
 
@@ -47,7 +47,7 @@ def _check_relocated(lines: list[str], version) -> int:
         again = parse_function(f"\n\n  {text}\n", "b.mcfunction", "t:b", version)
         assert again == expected, text
         assert not _mutables(first.commands, {}).keys() & _mutables(again[0].commands, {}).keys(), text
-        relocated += type(parse._READ[version].get(text)) is tuple
+        relocated += type(memory.READ[version].get(text)) is tuple
     return relocated
 
 
@@ -78,7 +78,7 @@ def test_a_line_with_nbt_is_read_each_time():
     function, _ = parse_function(text * 3, "a.mcfunction", "t:a", (1, 21, 0))
     compounds = [cmd.nbt for cmd in function.commands]
     assert compounds[0] == compounds[1] == compounds[2] and len({id(c) for c in compounds}) == 3
-    assert parse._READ[(1, 21, 0)][text.strip()] is False
+    assert memory.READ[(1, 21, 0)][text.strip()] is False
     with pytest.raises(NotRelocatable):
         relocate(function.commands[0], "b.mcfunction", 4, 0)
 
@@ -107,4 +107,37 @@ def test_the_memory_holds_the_release_read_last():
     forget_read_lines()
     parse_function("say a\n", "a.mcfunction", "t:a", (1, 20, 4))
     parse_function("say a\n", "a.mcfunction", "t:a", (1, 21, 4))
-    assert list(parse._READ) == [(1, 21, 4)] and "say a" in parse._READ[(1, 21, 4)]
+    assert list(memory.READ) == [(1, 21, 4)] and "say a" in memory.READ[(1, 21, 4)]
+
+
+def test_the_command_after_run_is_relocated_when_read_before():
+    # the rest of an `execute ... run` (or `return run`) line read cleanly before, as a line or as
+    # such a rest, is moved there: equal to a fresh read, sharing no mutable value with the first
+    version = (1, 21, 0)
+    tail = "scoreboard players operation @s a += #t b"
+    modify = "data modify storage a:b x set value {a:[1]}"
+    lines = [tail, f"execute as @e[tag=x] run {tail}", f"  execute if score @s a matches 1.. run {tail}",
+             f"return run {tail}", f"execute run {modify}", f"execute as @s run {modify}"]
+    fresh = []
+    for i, line in enumerate(lines):  # each line alone, where it is in the file below
+        forget_read_lines()
+        fresh.append(parse_function("\n" * i + line + "\n", "a.mcfunction", "t:a", version)[0].commands[0])
+    forget_read_lines()
+    function, diagnostics = parse_function("".join(f"{line}\n" for line in lines), "a.mcfunction", "t:a", version)
+    assert not diagnostics and list(function.commands) == fresh
+    assert type(memory.READ[version][tail]) is tuple  # remembered as read cleanly
+    assert memory.READ[version][modify] is False  # an NBT value: read each time
+    assert not _mutables(function.commands[4], {}).keys() & _mutables(function.commands[5], {}).keys()
+
+
+def test_a_rest_with_a_warning_or_on_joined_lines_is_read_each_time():
+    version = (1, 21, 0)
+    forget_read_lines()
+    text = "execute as @s run gamerule noSuchRule true\nexecute as @e run gamerule noSuchRule true\n"
+    _, diagnostics = parse_function(text, "a.mcfunction", "t:a", version)
+    assert [(d.severity, d.line, d.col) for d in diagnostics] == [("warning", 1, 28), ("warning", 2, 28)]
+    assert "gamerule noSuchRule true" not in memory.READ[version]
+    forget_read_lines()
+    joined = "scoreboard players set @s a 1\nexecute as @s \\\n  run scoreboard players set @s a 1\n"
+    function, _ = parse_function(joined, "a.mcfunction", "t:a", version)
+    assert function.commands[1].run.loc[1:] == (3, 7) and function.commands[1].run.targets.loc[1:] == (3, 30)
