@@ -72,7 +72,7 @@ class NumbaBackend:
         self.state = state
         self.sanitize = sanitize
         self.program = Program(levels=state.entities.table.levels)
-        self.selectors = SelectorTables(state.scoreboard, state.entities.table, state.resources)
+        self.selectors = SelectorTables(state.scoreboard, state.entities.table, state.resources, state.version)
         self.leaves = StorageLeaves()
         self.compiler = Compiler(self.program, state.scoreboard, packs.functions, packs.resolve_tag, packs.tags,
                                  self.selectors, self.leaves)

@@ -8,7 +8,7 @@ positions, volumes, distance, limit and sort), ``tag SEL add|remove``, ``enable`
 ``@s``, ``if|unless entity SEL``, ``if|unless dimension``, ``as|at|positioned as|rotated as|facing entity SEL``,
 ``on vehicle|passengers``
 and ``positioned|facing X Y Z``, ``rotated``, ``anchored``, ``align`` (the VM makes their contexts), ``tp [SEL] X Y Z`` (``~`` and ``^`` too),
-``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
+``if|unless predicate`` (the predicates :mod:`emulator.vm.predicate_rows` compiles), ``store result|success score`` on named holders and ``@s``, ``store ... entity @s Pos[i] double S``;
 ``if|unless function``, function calls and tags, every ``return`` form, and macro calls
 (instantiated by Python on first use). Everything else is a host op run by Python: a final command
 (``OP_HOST``: ``say``, ``schedule``, selectors ...), an execute stage (``OP_HOSTSTAGE``: ``in``,
@@ -42,7 +42,7 @@ from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAlign, ExAnchored, ExAs, ExAt, ExFacing, ExFacingEntity, ExRotated, Execute, ExOn, ExPositioned, ExPositionedAs,
     ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
-    PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
+    IfPredicate, PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
     StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec2, Vec3, Coord, Wildcard,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN
@@ -196,6 +196,8 @@ class Compiler:
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
             elif isinstance(st, IfEntity) and (sel := self.selector(st.targets)) is not None:
                 self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))
+            elif isinstance(st, IfPredicate) and (sel := self.this_predicate(st)) is not None:
+                self.emit(vm.OP_IFENT, sel, 0, 0, 0, 0, int(st.negated), int(last))  # counts 1 or 0
             elif isinstance(st, IfData) and (test := self.leaf_test(st)) is not None:
                 self.emit(vm.OP_IFLEAF, *test, 0, 0, int(st.negated), int(last))
             elif isinstance(st, IfDimension) and st.dimension in self.program.levels.ids:  # else it fails: host
@@ -397,6 +399,13 @@ class Compiler:
     def selector(self, target) -> int | None:
         """The selector row of ``target`` when the VM evaluates it, else None."""
         return None if self.selectors is None else self.selectors.selector(target)
+
+    def this_predicate(self, st: IfPredicate) -> int | None:
+        """The KIND_THIS selector row of ``if|unless predicate ID`` when the VM evaluates it (an
+        inline predicate, an unknown id and what the VM does not read stay with the host)."""
+        if self.selectors is None or st.predicate[:1] in "{[":
+            return None
+        return self.selectors.this_predicate(st.predicate)
 
     def teleport(self, cmd: Teleport) -> tuple[int, ...] | None:
         """OP_TP's operands (selector, first of x y z in floats, flags, kind, its operand) for ``tp

@@ -10,11 +10,13 @@ Selectors the VM evaluates (:meth:`SelectorTables.selector`): ``@e @a @s @p @n``
 (any number, ``!``, the empty ``tag=``), ``scores``, ``name``, ``team``, ``gamemode``, ``level``,
 ``x_rotation``, ``y_rotation``, ``x y z``, ``dx dy dz`` volumes,
 ``distance``, ``limit`` and ``sort`` (``@r`` and ``sort=random`` shuffle with the world's
-``java.util.Random``, :mod:`emulator.world.java_random`), each limited to the context's level
-or searching every level as ``selectors.SelectorQuery`` does. A selector row and its floats are
+``java.util.Random``, :mod:`emulator.world.java_random`), ``predicate`` of the predicates
+:mod:`emulator.vm.predicate_rows` compiles, each limited to the context's level
+or searching every level as ``selectors.SelectorQuery`` does; and ``execute if predicate``'s
+test on the executor (:meth:`SelectorTables.this_predicate`). A selector row and its floats are
 laid out as :mod:`emulator.vm.loop` describes (``S_*``, ``SF_*``); its tests are rows of ``tests``
-(``TEST_*``). Every other selector (``nbt``, ``predicate``, ``advancements``) stays with the
-host (returns None).
+(``TEST_*``). Every other selector (``nbt``, ``advancements``, a predicate the VM does not
+evaluate) stays with the host (returns None).
 """
 from __future__ import annotations
 
@@ -24,14 +26,15 @@ import numpy as np
 
 from mcfunction_parser import ast
 from emulator.world import mth
+from emulator.vm.predicate_rows import compile_predicate
 from emulator.world.resources import Resources
 from emulator.world.entity_table import EF_PITCH, EF_YAW, EI_GAMEMODE, EI_NAME, EI_TEAM, EI_XP, GAMEMODES, EntityTable
 from emulator.world.selectors import WORLD_LIMITING as _WORLD_LIMITING
 from emulator.world.semantics import INT_MAX, INT_MIN
 from emulator.vm.loop import (
-    KIND_E, KIND_S, S_ALIVE, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, S_WORLD, SEL_WIDTH,
+    KIND_E, KIND_S, KIND_THIS, S_ALIVE, S_BOX, S_DIST, S_KIND, S_LIMIT, S_NTESTS, S_PLAYERS, S_SORT, S_TESTS, S_WORLD, SEL_WIDTH,
     SF_BOX, SF_DHI, SF_DLO, SF_ORIGIN, SF_ROT, SF_WIDTH, SORT_ARBITRARY, SORT_FURTHEST, SORT_NEAREST, SORT_RANDOM,
-    TEST_INT, TEST_MEMBER, TEST_NOTAGS, TEST_RANGE, TEST_ROT, TEST_SCORE, TEST_TAG, TEST_TYPE, TEST_TYPES,
+    TEST_INT, TEST_MEMBER, TEST_NOTAGS, TEST_PRED, TEST_RANGE, TEST_ROT, TEST_SCORE, TEST_TAG, TEST_TYPE, TEST_TYPES,
 )
 
 # (limit, players only, sort) per selector variable (selectors._VARIABLES)
@@ -46,10 +49,12 @@ _ROTATIONS = {"x_rotation": (EF_PITCH, SF_ROT), "y_rotation": (EF_YAW, SF_ROT + 
 
 
 class SelectorTables:
-    def __init__(self, scoreboard, table: EntityTable, resources: Resources | None = None) -> None:
+    def __init__(self, scoreboard, table: EntityTable, resources: Resources | None = None, version=None) -> None:
         self.scoreboard = scoreboard  # objectives of `scores=` are interned here
         self.table = table  # tag and type names are interned here
-        self.resources = resources or Resources()  # entity type tags (the packs' and the game's)
+        self.resources = resources or Resources()  # entity type tags (the packs' and the game's), predicates
+        self.version = version  # the packs' release (how their predicates read); None: predicates stay with the host
+        self._programs: dict[tuple, tuple[int, int]] = {}  # predicate rows -> (first, count) in test_rows
         self.sel_rows: list[list[int]] = []
         self.float_rows: list[list[float]] = []
         self.test_rows: list[list[int]] = []
@@ -101,11 +106,40 @@ class SelectorTables:
         if row[S_KIND] == KIND_S:
             row[S_LIMIT], row[S_SORT], row[S_WORLD] = 1, SORT_ARBITRARY, 0
         self._box(row, floats, deltas, distance)
+        return self._intern(row, floats, tests)
+
+    def this_predicate(self, predicate_id: str) -> int | None:
+        """The selector row (KIND_THIS) of ``execute if predicate ID`` when the VM evaluates the
+        predicate (ExecuteCommand.checkCustomPredicate: the executor as ``this``), else None."""
+        program = self._program(predicate_id)
+        if program is None:
+            return None
+        row = [0] * SEL_WIDTH
+        row[S_KIND], row[S_LIMIT] = KIND_THIS, 1
+        row[S_TESTS], row[S_NTESTS] = program
+        return self._intern(row, [0.0] * SF_WIDTH, [])
+
+    def _program(self, predicate_id: str) -> tuple[int, int] | None:
+        """(first row, rows) of a loaded predicate's program in the test rows, or None."""
+        value = self.resources.predicates.get(predicate_id)
+        rows = None if value is None or self.version is None else compile_predicate(
+            {"condition": "reference", "name": predicate_id}, self, self.version)
+        if rows is None:
+            return None
+        key = tuple(rows)
+        if key not in self._programs:
+            self._programs[key] = (len(self.test_rows), len(rows))
+            self.test_rows.extend(list(r) for r in rows)
+            self._arrays = None
+        return self._programs[key]
+
+    def _intern(self, row: list[int], floats: list[float], tests: list) -> int:
         key = (tuple(row), tuple(floats), tuple(tests))
         index = self._selector_ids.get(key)
         if index is None:
             index = self._selector_ids[key] = len(self.sel_rows)
-            row[S_TESTS], row[S_NTESTS] = len(self.test_rows), len(tests)
+            if row[S_KIND] != KIND_THIS:
+                row[S_TESTS], row[S_NTESTS] = len(self.test_rows), len(tests)
             self.sel_rows.append(row)
             self.float_rows.append(floats)
             self.test_rows.extend(list(t) for t in tests)
@@ -139,6 +173,11 @@ class SelectorTables:
             lo = INT_MIN if arg.value.lo is None else max(INT_MIN, arg.value.lo)
             hi = INT_MAX if arg.value.hi is None else min(INT_MAX, arg.value.hi)
             tests.append((TEST_RANGE, EI_XP, lo, hi))
+        elif arg.key == "predicate":  # EntitySelectorOptions: the entity as `this` at its position
+            program = self._program(arg.value)
+            if program is None:
+                return None
+            tests.append((TEST_PRED, *program, int(arg.negated)))
         elif arg.key == "scores":
             for objective, bounds in arg.value:
                 lo = INT_MIN if bounds.lo is None else max(INT_MIN, bounds.lo)

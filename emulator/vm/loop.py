@@ -293,14 +293,18 @@ MAX_TAGS = 1024  # Entity.addTag refuses a tag past this many
 # [TEST_TAG, tag, negated, 0], [TEST_NOTAGS, negated, 0, 0] (`tag=`: no tag at all), [TEST_TYPES,
 # count, negated, 0] followed by `count` rows [TEST_MEMBER, type id, 0, 0] (`type=#tag`), [TEST_INT,
 # column of eints, value, negated + 2 if only living entities pass] (`name`, `team`, `gamemode`),
-# [TEST_RANGE, column of eints, lo, hi] (`level`), [TEST_ROT, column of efloats, column of sfloats, 0]
+# [TEST_RANGE, column of eints, lo, hi] (`level`), [TEST_ROT, column of efloats, column of sfloats, 0],
+# [TEST_PRED, first row, rows, negated] (`predicate=`: a postfix program of rows, emulator.vm.predicate_rows,
+# whose leaves are the rows above and TEST_THIS, TEST_CONST, TEST_ALL, TEST_ANY, TEST_NOT). A KIND_THIS
+# selector is `execute if predicate`: its tests are the program, run on the executor (none: -1)
 SEL_WIDTH = 10
 S_KIND, S_LIMIT, S_TESTS, S_NTESTS, S_SORT, S_PLAYERS, S_BOX, S_DIST, S_WORLD, S_ALIVE = range(SEL_WIDTH)
 SF_WIDTH = 15
 SF_ORIGIN, SF_BOX, SF_DLO, SF_DHI, SF_ROT = 0, 3, 9, 10, 11
-KIND_E, KIND_S = range(2)
+KIND_E, KIND_S, KIND_THIS = range(3)
 SORT_ARBITRARY, SORT_NEAREST, SORT_FURTHEST, SORT_RANDOM = range(4)
 TEST_SCORE, TEST_TYPE, TEST_TAG, TEST_NOTAGS, TEST_TYPES, TEST_MEMBER, TEST_INT, TEST_RANGE, TEST_ROT = range(9)
+TEST_PRED, TEST_THIS, TEST_CONST, TEST_ALL, TEST_ANY, TEST_NOT = range(9, 15)
 POS_LIMIT_XZ, POS_LIMIT_Y = 3.0000512e7, 2.0e7  # Entity.load clamps positions to these
 MAX_LOADED_MOTION = 10.0  # and drops motion components past this
 # OP_TP's flags besides the relative axes (1, 2, 4): local coordinates; `tp POS` (the executor,
@@ -384,10 +388,72 @@ _wrap_degrees_d = njit(cache=True)(mth.wrap_degrees_d)
 
 
 @njit(cache=True, inline="always")
+def _passes(t, slot, tests, eints, etags, values, present, alive_obj):
+    """Whether entity ``slot`` passes test row ``t``: a tag, type (``TEST_TYPES``: one of its
+    member rows), no-tags, int column, range or score test."""
+    kind = tests[t, 0]
+    if kind == TEST_TAG:
+        tag = tests[t, 1]
+        return ((etags[slot, tag >> 6] >> (tag & 63)) & 1 != 0) != (tests[t, 2] != 0)
+    if kind == TEST_TYPE:
+        return (eints[slot, EI_TYPE] == tests[t, 1]) != (tests[t, 2] != 0)
+    if kind == TEST_TYPES:
+        member = False
+        for m in range(t + 1, t + 1 + tests[t, 1]):
+            if eints[slot, EI_TYPE] == tests[m, 1]:
+                member = True
+        return member != (tests[t, 2] != 0)
+    if kind == TEST_NOTAGS:
+        none = True
+        for w in range(etags.shape[1]):
+            if etags[slot, w] != 0:
+                none = False
+        return none != (tests[t, 1] != 0)
+    if kind == TEST_INT:
+        return not ((tests[t, 3] & 2 and eints[slot, EI_LIVING] == 0) or (
+            (eints[slot, tests[t, 1]] == tests[t, 2]) == (tests[t, 3] & 1 != 0)))
+    if kind == TEST_RANGE:
+        return tests[t, 2] <= eints[slot, tests[t, 1]] <= tests[t, 3]
+    o = tests[t, 1]
+    h = eints[slot, EI_HOLDER]
+    return not (alive_obj[o] == 0 or present[h, o] == 0 or values[h, o] < tests[t, 2] or values[h, o] > tests[t, 3])
+
+
+@njit(cache=True)
+def _predicate(first, count, slot, tests, eints, etags, values, present, alive_obj):
+    """A predicate's postfix program (rows ``first`` to ``first + count``) on entity ``slot`` (-1:
+    none): its booleans are the bits of ``stack``, the top the lowest."""
+    stack = 0
+    t = first
+    while t < first + count:
+        kind = tests[t, 0]
+        if kind == TEST_ALL or kind == TEST_ANY:
+            mask = (1 << tests[t, 1]) - 1
+            top = stack & mask
+            stack = (stack >> tests[t, 1]) << 1
+            if (top == mask) if kind == TEST_ALL else (top != 0):
+                stack |= 1
+        elif kind == TEST_NOT:
+            stack ^= 1
+        else:
+            if kind == TEST_CONST:
+                passed = tests[t, 1] != 0
+            elif kind == TEST_THIS:
+                passed = slot >= 0
+            else:
+                passed = slot >= 0 and _passes(t, slot, tests, eints, etags, values, present, alive_obj)
+            stack = (stack << 1) | (1 if passed else 0)
+            if kind == TEST_TYPES:
+                t += tests[t, 1]
+        t += 1
+    return stack & 1 != 0
+
+
+@njit(cache=True, inline="always")
 def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values, present, alive_obj):
     """EntitySelector's predicate for one entity (``selectors.SelectorQuery``'s tests): players
-    only, tag, type and score tests, the box (the hitbox intersects it, strictly) and the distance
-    (squared, to the feet) from the origin ``(ox, oy, oz)``."""
+    only, the test rows (:func:`_passes`, rotations, predicates), the box (the hitbox intersects
+    it, strictly) and the distance (squared, to the feet) from the origin ``(ox, oy, oz)``."""
     if sels[sel, S_PLAYERS] and eints[slot, EI_TYPE] != PLAYER_TYPE:
         return False
     if sels[sel, S_ALIVE] and eints[slot, EI_ALIVE] == 0:
@@ -396,46 +462,20 @@ def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags,
     end = t + sels[sel, S_NTESTS]
     while t < end:
         kind = tests[t, 0]
-        if kind == TEST_TAG:
-            tag = tests[t, 1]
-            if ((etags[slot, tag >> 6] >> (tag & 63)) & 1 != 0) == (tests[t, 2] != 0):
-                return False
-        elif kind == TEST_TYPE:
-            if (eints[slot, EI_TYPE] == tests[t, 1]) == (tests[t, 2] != 0):
-                return False
-        elif kind == TEST_TYPES:
-            member = False
-            for m in range(t + 1, t + 1 + tests[t, 1]):
-                if eints[slot, EI_TYPE] == tests[m, 1]:
-                    member = True
-            if member == (tests[t, 2] != 0):
-                return False
-            t += tests[t, 1]
-        elif kind == TEST_NOTAGS:
-            none = True
-            for w in range(etags.shape[1]):
-                if etags[slot, w] != 0:
-                    none = False
-            if none == (tests[t, 1] != 0):
-                return False
-        elif kind == TEST_INT:
-            if (tests[t, 3] & 2 and eints[slot, EI_LIVING] == 0) or (
-                    (eints[slot, tests[t, 1]] == tests[t, 2]) == (tests[t, 3] & 1 != 0)):
-                return False
-        elif kind == TEST_RANGE:
-            if not (tests[t, 2] <= eints[slot, tests[t, 1]] <= tests[t, 3]):
-                return False
-        elif kind == TEST_ROT:  # EntitySelectorParser.createRotationPredicate: wrapped bounds, a wrapped angle
+        if kind == TEST_ROT:  # EntitySelectorParser.createRotationPredicate: wrapped bounds, a wrapped angle
             angle = _wrap_degrees_d(efloats[slot, tests[t, 1]])
             lo = sfloats[sel, tests[t, 2]]
             hi = sfloats[sel, tests[t, 2] + 1]
             if not ((angle >= lo or angle <= hi) if lo > hi else (lo <= angle <= hi)):
                 return False
-        else:
-            o = tests[t, 1]
-            h = eints[slot, EI_HOLDER]
-            if alive_obj[o] == 0 or present[h, o] == 0 or values[h, o] < tests[t, 2] or values[h, o] > tests[t, 3]:
+        elif kind == TEST_PRED:
+            if _predicate(tests[t, 1], tests[t, 2], slot, tests, eints, etags, values, present, alive_obj) == (
+                    tests[t, 3] != 0):
                 return False
+        elif not _passes(t, slot, tests, eints, etags, values, present, alive_obj):
+            return False
+        elif kind == TEST_TYPES:
+            t += tests[t, 1]
         t += 1
     x = efloats[slot, EF_X]
     y = efloats[slot, EF_Y]
@@ -535,6 +575,9 @@ def _select(sel, self_slot, pos, dim, sels, sfloats, tests, eints, efloats, etag
     ox = pos[0] if np.isnan(sfloats[sel, SF_ORIGIN]) else sfloats[sel, SF_ORIGIN]
     oy = pos[1] if np.isnan(sfloats[sel, SF_ORIGIN + 1]) else sfloats[sel, SF_ORIGIN + 1]
     oz = pos[2] if np.isnan(sfloats[sel, SF_ORIGIN + 2]) else sfloats[sel, SF_ORIGIN + 2]
+    if sels[sel, S_KIND] == KIND_THIS:
+        return 1 if _predicate(sels[sel, S_TESTS], sels[sel, S_NTESTS], self_slot, tests, eints, etags, values, present,
+                               alive_obj) else 0
     if sels[sel, S_KIND] == KIND_S:
         if self_slot >= 0 and _matches(sel, self_slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags, values,
                                        present, alive_obj):

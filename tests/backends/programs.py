@@ -12,7 +12,7 @@ every program ends.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from hypothesis import strategies as st
@@ -29,10 +29,14 @@ INTERESTING = (INT_MIN, INT_MIN + 1, -65536, -7, -2, -1, 0, 1, 2, 3, 7, 46341, 6
 
 
 def write_pack(root: Path, functions: dict[str, str], tags: dict[str, list[str]] | None = None,
-               pack_format: int = 48) -> Path:
+               pack_format: int = 48, files: dict[str, str] | None = None) -> Path:
     """Write a pack: ``functions`` maps ``ns:path`` to the file text; ``tags`` maps a function
-    tag id to its values."""
+    tag id to its values; ``files`` maps other paths under ``data/`` to their text."""
     root.mkdir(parents=True, exist_ok=True)
+    for path, text in (files or {}).items():
+        file = root / "data" / path
+        file.parent.mkdir(parents=True, exist_ok=True)
+        file.write_text(text)
     (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": pack_format, "description": "test"}}))
     for fid, text in functions.items():
         ns, path = fid.split(":", 1)
@@ -52,6 +56,7 @@ class Program:
     functions: dict[str, str]
     tags: dict[str, list[str]]
     entry: str = "t:f0"
+    files: dict[str, str] = field(default_factory=dict)  # other files under data/ (predicates)
 
     def text(self) -> str:
         tags = "".join(f"# tag {tid}: {values}\n" for tid, values in self.tags.items())
@@ -96,6 +101,37 @@ ENTITY_MODIFIERS = ("as @e[tag=m]", "at @e[tag=m]", "as @e[tag=a]", "as @e[type=
                     "at @e[tag=d] anchored eyes facing entity @e[tag=!d,sort=nearest,limit=2] eyes",
                     "facing entity @s feet", "on vehicle", "as @e on passengers", "as @e[tag=r] on vehicle at @s",
                     "as @e[type=armor_stand] on passengers on vehicle")
+# Predicates (data/t/predicate/*.json) read by `predicate=` and `if predicate`: the VM evaluates
+# those whose conditions read the entity table and the scores (emulator.vm.predicate_rows), the
+# host the rest (nbt, a reference to itself, a random chance)
+PREDICATES = {
+    "marker": {"condition": "entity_properties", "entity": "this", "predicate": {"type": "minecraft:marker"}},
+    "not_marker": {"condition": "inverted", "term": {"condition": "reference", "name": "t:marker"}},
+    "types": {"condition": "entity_properties", "entity": "this",
+              "predicate": {"type": ["armor_stand", "minecraft:item_display"]}},
+    "skeletons": {"condition": "entity_properties", "entity": "this", "predicate": {"type": "#minecraft:skeletons"}},
+    "scores": {"condition": "entity_scores", "entity": "this", "scores": {"o": {"min": -5, "max": 5}, "p": 3}},
+    "o_set": {"condition": "entity_scores", "entity": "this", "scores": {"o": {}}},
+    "stand_or_o": {"condition": "any_of", "terms": [
+        {"condition": "entity_properties", "entity": "this", "predicate": {"type": "armor_stand"}},
+        {"condition": "entity_scores", "entity": "this", "scores": {"o": {"min": 1}}}]},
+    "all": [{"condition": "reference", "name": "t:marker"}, {"condition": "all_of", "terms": []},
+            {"condition": "inverted", "term": {"condition": "any_of", "terms": []}}],
+    "entity": {"condition": "entity_properties", "entity": "this", "predicate": {}},
+    "any_entity": {"condition": "entity_properties", "entity": "this"},
+    "team": {"condition": "entity_properties", "entity": "this", "predicate": {"team": "t"}},
+    "creative": {"condition": "entity_properties", "entity": "this",
+                 "predicate": {"type_specific": {"type": "player", "gamemode": ["creative", "spectator"]}}},
+    "nbt": {"condition": "entity_properties", "entity": "this", "predicate": {"nbt": "{Tags:[\"a\"]}"}},
+    "loop": {"condition": "all_of", "terms": [{"condition": "reference", "name": "t:loop"}]},
+}
+PREDICATE_FILES = {f"t/predicate/{name}.json": json.dumps(value) for name, value in PREDICATES.items()}
+ENTITY_MODIFIERS += ("as @e[predicate=t:marker]", "as @e[predicate=!t:not_marker,tag=m]", "as @e[predicate=t:types]",
+                     "as @e[predicate=t:stand_or_o] at @s", "as @e[predicate=t:all,predicate=!t:scores]",
+                     "as @e[predicate=t:nbt]", "as @e[predicate=!t:o_set,sort=nearest]", "if predicate t:scores",
+                     "unless predicate t:stand_or_o", "if predicate t:entity", "if predicate t:any_entity",
+                     "as @e[predicate=t:skeletons]", "unless predicate t:team", "if predicate t:creative",
+                     "if predicate t:loop")
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]", "@e[tag=m,sort=random,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]",
                         "@e[sort=random,limit=2]")
@@ -279,6 +315,8 @@ def conditions(draw, callees: list[str], vocab: Vocabulary) -> str:
                    '@s[tag=a]', '@e[tag=m,tag=!a]', '@e[type=!marker]', '@e[distance=..1.5]',
                    '@e[dx=2,dy=0,dz=2,tag=m]', '@n[tag=w69]', '@e[type=#minecraft:skeletons]', '@e[name=Bob]',
                    '@s[x_rotation=40..50]', '@e[team=t]', '@s[y_rotation=-10..10,name=!Bob]')
+        if draw(st.integers(0, 3)) == 0:
+            return f"{word} predicate t:{draw(st.sampled_from(sorted(PREDICATES)))}"
         return f"{word} entity {draw(st.sampled_from(targets))}"
     return f"{word} function {draw(st.sampled_from(callees))}"
 
@@ -369,7 +407,7 @@ def programs(draw, max_functions: int = 4, max_lines: int = 8, modifiers: bool =
     functions["t:loop"] = "\n".join(
         ["scoreboard players remove #n p 1"] + loop_body + ["execute if score #n p matches 1.. run function t:loop"]
     )
-    return Program(functions, tags)
+    return Program(functions, tags, files=PREDICATE_FILES if entities else {})
 
 
 # ----------------------------------------------------------------------------- running
@@ -399,6 +437,7 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
     ``{(holder, objective): value}`` first; ``limit`` sets maxCommandChainLength."""
     from emulator.runtime.factory import make_backend
     from emulator.world.entities import entity_nbt
+    from emulator.world.resources import Resources
     from emulator.world.state import WorldState
     from mcfunction_parser.pack.loader import load_packs
 
@@ -406,6 +445,7 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
     errors = [d.format() for d in packs.diagnostics if d.severity == "error"]
     assert not errors, errors
     state = WorldState()
+    state.resources = Resources.from_packs(packs)  # as the runtime: predicates, tags
     if limit is not None:
         state.gamerules.set("maxCommandChainLength", str(limit))
     for (holder, objective), value in (scores or {}).items():

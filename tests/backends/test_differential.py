@@ -42,7 +42,7 @@ KNOWN_VM_GAPS: dict[str, re.Pattern] = {
 def _compare(tmp_path_factory, program, sanitize: bool, limit: int | None = None) -> None:
     assume(not any(gap.search(program.text()) for gap in KNOWN_VM_GAPS.values()))
     note(program.text())
-    pack = write_pack(tmp_path_factory.mktemp("pack"), program.functions, program.tags)
+    pack = write_pack(tmp_path_factory.mktemp("pack"), program.functions, program.tags, files=program.files)
     reference = run_root("python", pack, program.entry, sanitize=sanitize, limit=limit)
     vm = run_root("numba", pack, program.entry, sanitize=sanitize, limit=limit)
     assert not [m for m, _ in reference.diagnostics if m.startswith("internal error")]
