@@ -251,6 +251,8 @@ class Compiler:
                 self.if_function(st)
                 self.emit(vm.OP_CONT)
             else:  # a context modifier or a condition the VM does not evaluate
+                if not last and (guard := self.guard(st)) is not None:
+                    self.emit(vm.OP_HOSTGUARD, guard, int(isinstance(st, IfEntity) and st.negated))
                 self.host(vm.OP_HOST if last else vm.OP_HOSTSTAGE, st, int(forked))
         collect = final is not None and not returning and any(isinstance(st, _MULTIPLY) for st in stages)
         collect_pc = self.emit(vm.OP_STAGESDONE, 0) if collect else None
@@ -399,6 +401,12 @@ class Compiler:
     def selector(self, target) -> int | None:
         """The selector row of ``target`` when the VM evaluates it, else None."""
         return None if self.selectors is None else self.selectors.selector(target)
+
+    def guard(self, st: Subcommand) -> int | None:
+        """OP_HOSTGUARD's selector for a host stage that finds entities (SelectorTables.guard)."""
+        if self.selectors is None or not isinstance(st, (IfEntity, ExFacingEntity, *ENTITY_CONTEXT_STAGES)):
+            return None
+        return self.selectors.guard(st.targets)
 
     def this_predicate(self, st: IfPredicate) -> int | None:
         """The KIND_THIS selector row of ``if|unless predicate ID`` when the VM evaluates it (an

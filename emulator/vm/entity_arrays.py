@@ -45,6 +45,9 @@ _SORTS = {"arbitrary": SORT_ARBITRARY, "nearest": SORT_NEAREST, "furthest": SORT
 _AXES = {"x": 0, "y": 1, "z": 2}
 _DELTAS = {"dx": 0, "dy": 1, "dz": 2}
 # the rotation arguments: (the entity's column, the first of their two bounds in the selector's floats)
+# the arguments SelectorQuery applies after the others (a position, a box, a distance) or that
+# order and cut what the tests found
+_UNORDERED = frozenset({"x", "y", "z", "dx", "dy", "dz", "distance", "sort", "limit"})
 _ROTATIONS = {"x_rotation": (EF_PITCH, SF_ROT), "y_rotation": (EF_YAW, SF_ROT + 2)}
 
 
@@ -107,6 +110,26 @@ class SelectorTables:
             row[S_LIMIT], row[S_SORT], row[S_WORLD] = 1, SORT_ARBITRARY, 0
         self._box(row, floats, deltas, distance)
         return self._intern(row, floats, tests)
+
+    def guard(self, target) -> int | None:
+        """For a selector the host evaluates: a selector the VM evaluates that finds every entity
+        the host would test an argument of its own on (None when there is none). The host's
+        ``SelectorQuery`` tests each entity with the arguments in their order, then the box and the
+        distance: the guard keeps the arguments before the first one the VM cannot evaluate and
+        drops the positions, the sort and the limit (finding more is allowed; a shuffle is not:
+        ``@r`` and ``@p`` search as ``@a``, ``@n`` as ``@e``). When it finds nobody, the host's
+        selector finds nobody without testing anyone, so skipping it changes nothing."""
+        if not isinstance(target, ast.Selector) or target.variable not in _VARIABLES:
+            return None
+        kept = []
+        for arg in target.args:
+            if arg.key in _UNORDERED:
+                continue
+            if self.selector(ast.Selector("e", (arg,), target.loc)) is None:
+                variable = {"r": "a", "p": "a", "n": "e"}.get(target.variable, target.variable)
+                return self.selector(ast.Selector(variable, tuple(kept), target.loc))
+            kept.append(arg)
+        return None  # the VM evaluates the whole selector
 
     def this_predicate(self, predicate_id: str) -> int | None:
         """The selector row (KIND_THIS) of ``execute if predicate ID`` when the VM evaluates the

@@ -181,26 +181,30 @@ OP_STOREFIELD = 47  # [free] a: column (EF_*), b: 0 result / 1 success, c: scale
 # host; a player's data is not modified
 OP_MACRO = 48  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
 OP_HOSTSTAGE = 49  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
-OP_HOSTSTORE = 50  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 51  # [stage] a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind
+OP_HOSTGUARD = 50  # [stage] a: selector, b: negated. Before the HOSTSTAGE of `as|at|positioned as|rotated as|facing
+# entity|if|unless entity SEL` whose SEL the host evaluates: a selector finding every entity the host would test its
+# own arguments on (SelectorTables.guard); when it finds none, the stage makes no context (`unless`: keeps this one),
+# charged here, and the HOSTSTAGE is skipped
+OP_HOSTSTORE = 51  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_ASSTAGE = 52  # [stage] a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind
 # (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as, rotated as; then FACING_FEET, FACING_EYES: `facing
 # entity SEL feet|eyes`). One context per entity found, made by the VM (or one it made earlier in the root that still
 # holds: as_cache); ST_GROWCTX when the context table or the fork stack is full
-OP_CTXSTAGE = 52  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
+OP_CTXSTAGE = 53  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
 # (flags as OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; ANCHOR_*; the axes' bits), c: x or the yaw
 # (index into floats; the rest follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, `anchored
 # eyes|feet`, `align AXES`, `facing X Y Z` (from the anchor): the context changed so (made by the VM, or one it made
 # before from the same context and pc)
-OP_FIELDSTAGE = 53  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
+OP_FIELDSTAGE = 54  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
 # TYPE S`: fails without an executor) or a STORELEAF
-OP_STORELEAF = 54  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
+OP_STORELEAF = 55  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
 # host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there, or a list's element of
 # another type, goes to the host
-OP_IFRUN = 64  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
+OP_IFRUN = 65  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
 # O matches LO..HI run CMD` where CMD is one instruction (a score command on names, a function call) and the chain has
 # no other stage: CMD's entry check and the condition stage in one (charged as the stage), then CMD, or the pc after
 # it; no ENDCMD follows
-OP_RESUME = 65  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
+OP_RESUME = 66  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
 # the registers the command that earned it left
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
@@ -209,7 +213,7 @@ FIRST_CONDITION, LAST_CONDITION = 20, 24
 FIRST_CALL, LAST_CALL = 27, 28
 FIRST_RETURN, LAST_RETURN = 29, 34
 FIRST_RETURNED, LAST_RETURNED = 35, 36
-FIRST_OPERATION, LAST_OPERATION = 55, 63
+FIRST_OPERATION, LAST_OPERATION = 56, 64
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -2090,6 +2094,21 @@ def run(address, machine_type):
                 continue
             status = ST_HOST
             break
+        elif op == OP_HOSTGUARD:  # the host's stage would test nobody: no context (an `unless` keeps this one)
+            n = 1
+            if alive and forklimit > 0:
+                n = _select(code[pc, 1], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
+                            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
+            if n > 0:
+                pc += 1
+                continue
+            if loop != LOOP_REENTERED:
+                quota -= 1
+                if counting:
+                    counts[np.uint64(pc)] += 1
+            if code[pc, 2] == 0:
+                alive = 0
+            pc += 2
         elif op == OP_HOSTSTORE:
             if alive == 0 or has == 0:
                 pc += 1

@@ -170,6 +170,11 @@ _ROWS = [
     *_single("MACRO", "m", FREE, "a: macro call index. Python instantiates, sets regs[R_CALLFN]"),
     *_single("HOSTSTAGE", "xb", STAGE, "a: host op index, b forked. An execute stage run by Python: sets alive, "
                                        "R_CTX"),
+    *_single("HOSTGUARD", "sb", STAGE, "a: selector, b: negated. Before the HOSTSTAGE of `as|at|positioned as|"
+                                       "rotated as|facing entity|if|unless entity SEL` whose SEL the host evaluates: "
+                                       "a selector finding every entity the host would test its own arguments on "
+                                       "(SelectorTables.guard); when it finds none, the stage makes no context "
+                                       "(`unless`: keeps this one), charged here, and the HOSTSTAGE is skipped"),
     *_single("HOSTSTORE", "x", FREE, "a: host op index. `store ... storage|entity|block|bossbar`, after the result"),
     *_single("ASSTAGE", "sbb", STAGE, "a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind (commands.entities.ENTITY_CONTEXT_STAGES: "
                                       "as, at, positioned as, rotated as; then FACING_FEET, FACING_EYES: `facing "

@@ -30,9 +30,10 @@ def test_disasm_host_ops(tmp_path):
     assert result.exit_code == 0, result.output
     ops = [line.split(None, 3)[2:] for line in result.output.splitlines() if line.startswith("      |")]
     # host stages carry the forked flag: after `as`, a failing stage drops only its context
-    # after a stage that can fork, STAGESDONE collects each context before any runs the command
-    assert ops == [["CMD", "->10"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"], ["STAGESDONE", "->10"],
-                   ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
+    # after a stage that can fork, STAGESDONE collects each context before any runs the command;
+    # HOSTGUARD's selector (@e: the arguments before nbt) skips the host's `as` when it finds nobody
+    assert ops == [["CMD", "->11"], ["HOSTGUARD", "sel#0 0"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"],
+                   ["STAGESDONE", "->11"], ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
 
 
 def test_disasm_names_the_wildcard(tmp_path):

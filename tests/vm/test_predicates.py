@@ -89,3 +89,31 @@ def test_26_2_entity_tags_and_entity_type(tmp_path):
     tables = SelectorTables(Scoreboard(), EntityTable(), resources, (26, 2, 0))
     assert tables.this_predicate("t:p") is not None
     assert SelectorTables(Scoreboard(), EntityTable(), resources, (1, 21, 0)).this_predicate("t:p") is None
+
+
+@pytest.mark.parametrize("stage, host_runs", [
+    ("as @e[tag=zz,predicate=t:nbt]", 0),  # the tags find nobody: the host's predicate would test nobody
+    ("as @a[predicate=t:nbt]", 0),  # no player
+    ("if entity @e[tag=zz,nbt={}]", 0),
+    ("unless entity @e[tag=zz,nbt={}]", 0),  # finds nobody: the context goes on
+    ("as @r[gamemode=creative,predicate=t:nbt]", 0),
+    ("as @e[tag=n,predicate=t:nbt]", 1),  # someone to test: the host runs it
+    ("as @e[predicate=t:nbt,tag=zz]", 1),  # the host tests the predicate before the tag
+])
+def test_a_host_stage_that_would_test_nobody_is_skipped(tmp_path, stage, host_runs):
+    """SelectorQuery tests each candidate with the arguments in their order: when the arguments
+    before the first one only the host evaluates find nobody, the selector finds nobody and no
+    entity meets that argument (no predicate is evaluated, nothing is reported), so the VM drops
+    the context itself (an `unless entity` keeps it)."""
+    from emulator import Emulator
+    from emulator.vm import loop as vm
+    lines = SETUP + [f"execute {stage} run scoreboard players add #ran o 1"]
+    _both(tmp_path, lines)
+    pack = write_pack(tmp_path / "one", {"t:setup": "\n".join(SETUP), "t:main": lines[-1]}, files=FILES)
+    emu = Emulator(backend="numba")
+    emu.load(pack)
+    emu.call("t:setup")
+    before = len(emu.backend.host_ops_run())
+    emu.call("t:main")
+    assert len(emu.backend.host_ops_run()) - before == host_runs
+    assert vm.OP_HOSTGUARD in {row[0] for row in emu.backend.program.rows}
