@@ -15,7 +15,6 @@ with that reason, never silently ignored.
 """
 from __future__ import annotations
 
-import json
 from dataclasses import dataclass, field
 
 BUILTIN = {"minecraft:default": {"type": "minecraft:all_of", "definitions": []}}
@@ -47,17 +46,11 @@ def resolve(packs, environment_id: str) -> Environment:
 def _definition(packs, environment_id: str) -> dict:
     if environment_id in BUILTIN:
         return BUILTIN[environment_id]
-    namespace, _, path = environment_id.partition(":")
-    data = packs.read_file(f"data/{namespace}/test_environment/{path}.json")
-    if data is None:
+    definition = packs.test_environments.get(environment_id)
+    if definition is None:  # no such file, or one the game refuses (its error was reported at load)
+        namespace, _, path = environment_id.partition(":")
         raise EnvironmentError(f"Unknown test environment {environment_id} (no data/{namespace}/test_environment/"
-                               f"{path}.json)")
-    try:
-        definition = json.loads(data.decode("utf-8-sig"))
-    except (UnicodeDecodeError, json.JSONDecodeError) as error:
-        raise EnvironmentError(f"test environment {environment_id}: invalid JSON: {error}") from None
-    if not isinstance(definition, dict):
-        raise EnvironmentError(f"test environment {environment_id}: expected a JSON object")
+                               f"{path}.json that loads)")
     return definition
 
 

@@ -31,7 +31,7 @@ from mcfunction_parser.pack import recipes as recipe_files
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
 from mcfunction_parser import gamedata
 from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS, open_game_jar
-from mcfunction_parser.pack import advancements, clocks, conditions, registry_tags
+from mcfunction_parser.pack import advancements, clocks, conditions, registry_tags, test_environments
 from mcfunction_parser.pack.registry_tags import RegistryTag
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
 from mcfunction_parser.pack.versions import (
@@ -72,6 +72,7 @@ class LoadedPacks:
     recipes: dict[str, str] = field(default_factory=dict)  # id -> its type (the jar's, then the packs')
     recipe_bodies: dict[str, Any] = field(default_factory=dict)  # id -> its JSON, the recipes that decode
     predicates: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
+    test_environments: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (1.21.5+, files that load)
     advancements: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
     dimensions: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension: id -> its JSON
     dimension_types: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension_type: id -> its JSON
@@ -173,6 +174,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     _load_tags(packs, result)
     _load_registry_tags(packs, result, jar)
     _load_predicates(packs, result)
+    _load_test_environments(packs, result)
     _load_advancements(packs, result)
     _load_loot(packs, result, jar)
     _load_recipes(packs, result, jar)
@@ -492,6 +494,15 @@ def _load_predicates(packs: list[_PackFiles], result: LoadedPacks) -> None:
     for predicate_id, doc in _chosen_json(packs, ("predicate", "predicates"), result):
         if conditions.validate(doc, result.version, f"predicate {predicate_id}", result.diagnostics):
             result.predicates[predicate_id] = doc.value
+
+
+def _load_test_environments(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """Test environment files (1.21.5+); one the game refuses is an error and does not exist."""
+    if result.version < test_environments.SINCE:
+        return
+    for environment_id, doc in _chosen_json(packs, ("test_environment", "test_environment"), result):
+        if test_environments.validate(doc, result.version, f"test environment {environment_id}", result.diagnostics):
+            result.test_environments[environment_id] = doc.value
 
 
 def _load_dimensions(packs: list[_PackFiles], result: LoadedPacks) -> None:

@@ -184,3 +184,26 @@ def test_a_tag_naming_an_item_block_or_entity_type_the_release_lacks_fails_to_lo
     assert sorted(d.message for d in loaded.errors) == [
         "entity_type tag #a:bad fails to load: a:my_mob is not in the entity_type registry of this release",
         "item tag #a:bad fails to load: minecraft:no_item is not in the item registry of this release"]
+
+
+def test_test_environments_load_as_the_game_decodes_them(tmp_path):
+    # TestEnvironmentDefinition.DIRECT_CODEC (1.21.5+): dispatched on type; an unknown type, a
+    # missing field or invalid JSON refuses the file at its line and column; before 1.21.5 the
+    # folder is not read
+    pack = write_pack(tmp_path / "p", {
+        "data/a/test_environment/ok.json": json.dumps({"type": "minecraft:all_of", "definitions": [
+            "a:night", {"type": "minecraft:function", "setup": "a:setup"}]}),
+        "data/a/test_environment/night.json": json.dumps({"type": "time_of_day", "time": 13000}),
+        "data/a/test_environment/type.json": '{\n  "type": "minecraft:snowy"\n}',
+        "data/a/test_environment/time.json": json.dumps({"type": "time_of_day", "time": -1}),
+        "data/a/test_environment/nested.json": json.dumps({"type": "all_of", "definitions": [{"type": "nope"}]}),
+        "data/a/test_environment/syntax.json": '{"type": ',
+    }, meta(71))
+    loaded = load_packs([pack])
+    assert set(loaded.test_environments) == {"a:ok", "a:night"}
+    found = {d.path.rsplit("/", 1)[1]: d for d in loaded.errors}
+    assert (found["type.json"].line, found["type.json"].col) == (2, 11)
+    assert "unknown test environment type 'minecraft:snowy'" in found["type.json"].message
+    assert "time_of_day needs" in found["time.json"].message and "'nope'" in found["nested.json"].message
+    assert "invalid JSON" in found["syntax.json"].message
+    assert not load_packs([pack], mc_version="1.21.4").test_environments
