@@ -36,7 +36,8 @@ from pathlib import Path
 
 from . import ast, gamedata
 from .diagnostics import ERROR, INFO, WARNING, Diagnostic, Loc
-from mcfunction_parser.pack import conditions
+from mcfunction_parser.pack import conditions, loot as loot_files
+from mcfunction_parser.pack.text import json_document
 from mcfunction_parser.pack.loader import LoadedPacks, load_packs
 from mcfunction_parser.parse import paused_gc
 from mcfunction_parser.pack.versions import RELEASE_FORMATS, Version, parse_mc_version, releases_label, version_label
@@ -232,6 +233,7 @@ class _Facts:
     created: set[str] = field(default_factory=set)  # objectives added (by macro lines too)
     uses: dict[str, list[Loc]] = field(default_factory=dict)  # objective -> where used, in order
     resources: list[tuple[str, str, Loc]] = field(default_factory=list)  # (loot_table|item_modifier, id, where)
+    inline: list[tuple[str, typing.Any, Loc]] = field(default_factory=list)  # (loot table|item modifier, its JSON, where)
 
     def use(self, objective: str, loc: Loc) -> None:
         self.uses.setdefault(objective, []).append(loc)
@@ -330,12 +332,13 @@ def _objective_uses(names: tuple[str, ...]) -> Callable:
 
 
 def _record_resources(node: ast.Command, function: ast.Function, facts: _Facts) -> None:
-    """Loot tables and item modifiers named by id (inline ones are checked where they are read)."""
-    if isinstance(node, ast.Loot) and node.table is not None and node.table.id is not None:
-        facts.resources.append(("loot table", node.table.id, node.loc))
-    modifier = getattr(node, "modifier", None)
-    if modifier is not None and modifier.id is not None:
-        facts.resources.append(("item modifier", modifier.id, node.loc))
+    """Loot tables and item modifiers named by id, and the inline ones (1.20.5+)."""
+    table = node.table if isinstance(node, ast.Loot) else None
+    for kind, found in (("loot table", table), ("item modifier", getattr(node, "modifier", None))):
+        if found is not None and found.id is not None:
+            facts.resources.append((kind, found.id, node.loc))
+        elif found is not None and found.inline is not None:
+            facts.inline.append((kind, found.inline, node.loc))
 
 
 def _record_recipe(node: ast.GenericCommand, function: ast.Function, facts: _Facts) -> None:
@@ -513,6 +516,11 @@ def _check_resources(loaded: LoadedPacks, facts: _Facts, found: list[Diagnostic]
     the loot tables and recipes of advancement rewards: an error in a namespace the loaded packs
     define, a warning in another; the game's own (``minecraft:``) tables and recipes come only with
     --game-jar, so those are not judged without it."""
+    for kind, value, loc in facts.inline:  # ResourceOrIdArgument decodes it as the file's codec does
+        problems: list[Diagnostic] = []
+        check = loot_files.check_loot_table if kind == "loot table" else loot_files.check_modifier
+        check(json_document(value, "<inline>"), loaded.version, problems)
+        found.extend(_at(loaded, ERROR, f"inline {kind}: {p.message}", loc) for p in problems if p.severity == ERROR)
     defined = (_namespaces(loaded) | {r.split(":", 1)[0] for r in loaded.recipes}) - {"minecraft"}
     loaded_ids = {"loot table": loaded.loot_tables, "item modifier": loaded.item_modifiers, "recipe": loaded.recipes}
     for kind, name, loc in facts.resources:

@@ -116,6 +116,13 @@ def load_json(path: PackPath, shown: str, diagnostics: list[Diagnostic]) -> Json
         doc = JsonDocument(shown, text, None, [], line_starts)
         diagnostics.append(doc.diagnostic(ERROR, f"invalid JSON: {exc.msg}", exc.pos))
         return None
+    return json_document(value, shown, text)
+
+
+def json_document(value, shown: str, text: str | None = None) -> JsonDocument:
+    """A document of an already parsed value (``text``: its JSON as written, else made from it)."""
+    text = json.dumps(value) if text is None else text
+    line_starts = [0] + [m.end() for m in _LINE_BREAK.finditer(text)]
     tokens = [(_decode_token(m.group()), m.start()) for m in _JSON_STRING.finditer(text)]
     return JsonDocument(shown, text, value, tokens, line_starts)
 

@@ -354,3 +354,17 @@ def test_inline_predicates_are_checked_as_the_game_loads_them(tmp_path):
                                            'execute if predicate {condition:"minecraft:random_chance",chance:0.5f} run say b\n'})
     [error] = check_packs([pack]).of("error")
     assert error.line == 1 and "inline predicate: unknown predicate condition type 'minecraft:nope'" in error.message
+
+
+def test_inline_loot_tables_and_item_modifiers_are_checked_as_the_game_loads_them(tmp_path):
+    # ResourceOrIdArgument (1.20.5+) decodes an inline loot table or item modifier with the file's
+    # codec when the function loads: an unknown function type or item id refuses it
+    pack = write(tmp_path / "p", {fn("f"): "\n".join([
+        'item modify entity @s weapon.mainhand {function:"minecraft:nope"}',
+        'loot give @s loot {pools:[{rolls:1,entries:[{type:"minecraft:item",name:"minecraft:not_real"}]}]}',
+        'item modify entity @s weapon.mainhand {function:"minecraft:set_count",count:2}',
+        'loot give @s loot {pools:[{rolls:1,entries:[{type:"minecraft:item",name:"minecraft:stone"}]}]}']) + "\n"})
+    errors = check_packs([pack]).of("error")
+    assert [(e.line, e.message) for e in errors] == [
+        (1, "inline item modifier: unknown item function type 'minecraft:nope'"),
+        (2, "inline loot table: unknown item 'minecraft:not_real'")]
