@@ -55,7 +55,7 @@ from emulator.world.item_predicates import codec_matches
 from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_level
 from emulator.world.living import is_living
 from emulator.world.loot_context import LootContext, in_range, integer, number, snbt_or_tag, to_tag
-from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value
+from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
 from mcfunction_parser.items import SLOTS, sub_predicate_registered
 from mcfunction_parser.nbt import Byte, Compound, Int, List
 from mcfunction_parser.pack.tags import normalise_id
@@ -486,10 +486,29 @@ def _targeted_entity(value, ctx: LootContext, entity: Entity) -> bool:
 
 
 def _entity_components(value, ctx: LootContext, entity: Entity) -> bool:
-    """DataComponentMatchers' exact ``components`` (1.21.5+; the codec ignores the field before)."""
+    """DataComponentMatchers' exact ``components`` (1.21.5+; the codec ignores the field before);
+    ``custom_data`` equal to the entity's (:func:`entity_custom_data`)."""
     if tuple(ctx.state.version) < ENTITY_COMPONENTS_VERSION or not isinstance(value, dict):
         return True
-    return entity_components.components_match(value, entity)
+    others = {k: v for k, v in value.items() if _id(k) != "minecraft:custom_data"}
+    for key in value.keys() - others.keys():
+        if not tags_equal(snbt_or_tag(value[key]), entity_custom_data(entity, ctx)):
+            return False
+    return entity_components.components_match(others, entity)
+
+
+# Entity.get(CUSTOM_DATA) is the entity's ``data`` (saved when not empty): in the 26.1 source, not
+# in 1.21.4's; the release between that added it is unconfirmed
+ENTITY_CUSTOM_DATA = (26, 1, 0)
+
+
+def entity_custom_data(entity: Entity, ctx: LootContext) -> Compound:
+    """The entity's custom_data component: its ``data`` compound, empty when it has none."""
+    if tuple(ctx.state.version) < ENTITY_CUSTOM_DATA:
+        raise Unmodelled("an entity's custom_data component (its 'data': in the 26.1 source, the release that "
+                         "added it is unconfirmed)")
+    data = entity.data.get("data")
+    return data if isinstance(data, Compound) else Compound()
 
 
 def _entity_sub_predicates(value, ctx: LootContext, entity: Entity) -> bool:
@@ -497,15 +516,16 @@ def _entity_sub_predicates(value, ctx: LootContext, entity: Entity) -> bool:
     component through Entity.get and fails when the entity has none
     (SingleComponentItemPredicate.matches). Of the registered ones only ``villager/variant`` reads a
     component an entity exposes (a villager's type, :mod:`emulator.world.entity_components`); the
-    others read item components no entity has. ``custom_data`` on entities (their ``data``, in the
-    26.1 source; the release that added it is unconfirmed) is not modelled."""
+    others read item components no entity has. ``custom_data`` (NbtPredicate over the entity's
+    custom data, empty when none: :func:`entity_custom_data`) matches partly."""
     if tuple(ctx.state.version) < ENTITY_COMPONENTS_VERSION or not isinstance(value, dict):
         return True
     for name, wanted in value.items():
         full = _id(name)
         if full == "minecraft:custom_data":
-            raise Unmodelled("the custom_data sub-predicate of an entity (an entity's custom data)")
-        if full == "minecraft:villager/variant":
+            if not compare_nbt(snbt_or_tag(wanted), entity_custom_data(entity, ctx)):
+                return False
+        elif full == "minecraft:villager/variant":
             found = entity_components.component(entity, full)
             if found is None or not _holder_set(wanted, "villager_type", found, ctx):
                 return False
