@@ -3,8 +3,9 @@ recipes match and assemble.
 
 - ``craft(resources, grid, version) -> Crafted | None``: the first recipe in the game's order
   (``recipe_order``) that matches the grid (nine stacks, row by row), its result and remainders;
-  None when none matches. Shaped (``crafting_shaped``), shapeless (``crafting_shapeless``) and,
-  from 1.21.2 to 1.21.4, transmute recipes are matched; a special recipe (``crafting_special_*``,
+  None when none matches. Shaped (``crafting_shaped``), shapeless (``crafting_shapeless``),
+  from 1.21.2 to 1.21.4 transmute, and before 26.1 book cloning (from 1.20.5) and map cloning
+  recipes are matched; another special recipe (``crafting_special_*``,
   ``crafting_decorated_pot``) or a later transmute recipe reached in that order, when the grid
   holds what it needs, makes the craft not modelled (Unmodelled), as does no match without the
   game's own recipes (``--game-jar``) and, before 1.21.2 without them, two matches.
@@ -18,8 +19,9 @@ stack), ShapedRecipe/ShapelessRecipe.assemble (a copy of the result: ItemStack.S
 ``item`` before 1.20.5), CraftingRecipe.getRemainingItems (Item.getCraftingRemainingItem: the
 water, lava and milk buckets leave a bucket, honey bottles and dragon's breath a glass bottle),
 RecipeManager.getRecipeFor (the first recipe of the type that matches, in the recipe map's order),
-TransmuteRecipe (1.21.3: matches, assemble, ItemStack.transmuteCopy), the special recipes'
-matches (what each needs in the grid).
+TransmuteRecipe (1.21.3: matches, assemble, ItemStack.transmuteCopy), BookCloningRecipe
+(matches, assemble, getRemainingItems; WrittenBookContent.tryCraftCopy), MapCloningRecipe, the
+other special recipes' matches (what each needs in the grid).
 """
 from __future__ import annotations
 
@@ -30,6 +32,8 @@ from emulator.world.errors import Unmodelled
 from emulator.world.hash_order import java_hash_map_order, resource_location_hash
 from emulator.world.items import ItemStack
 from emulator.world.loot_context import namespaced as _id, to_tag
+from emulator.world.nbt_ops import is_numeric, numeric_value
+from mcfunction_parser.nbt import Compound, Int
 
 SHAPED, SHAPELESS = "minecraft:crafting_shaped", "minecraft:crafting_shapeless"
 # the crafting recipe types (RecipeType.CRAFTING) the emulator does not match
@@ -211,6 +215,62 @@ def _may_match(kind: str, recipe: dict | None, stacks: list[ItemStack], resource
     return need is None or need(ids)
 
 
+# the special recipes matched here, until 26.1 made them data-driven (its forms are not modelled)
+BOOK_CLONING, MAP_CLONING = "minecraft:crafting_special_bookcloning", "minecraft:crafting_special_mapcloning"
+SPECIAL_UNTIL = (26, 1, 0)
+WRITTEN_BOOK = "minecraft:written_book"
+
+
+def _cloned(stacks: list[ItemStack], source_id: str, material_id: str) -> tuple[ItemStack, int] | None:
+    """BookCloningRecipe / MapCloningRecipe.matches: one source stack and at least one material,
+    nothing else; (the source, how many materials)."""
+    source, count = None, 0
+    for stack in stacks:
+        if stack.is_empty:
+            continue
+        if stack.id == source_id:
+            if source is not None:
+                return None
+            source = stack
+        elif stack.id == material_id:
+            count += 1
+        else:
+            return None
+    return (source, count) if source is not None and count else None
+
+
+def _book_copies(stacks: list[ItemStack]) -> ItemStack | None:
+    """BookCloningRecipe.assemble (1.20.5+): the written book, as many as the writable books, its
+    content a copy a generation later (WrittenBookContent.tryCraftCopy); a book without content, or
+    already a copy of a copy, makes the empty stack (the recipe matched, nothing is crafted)."""
+    found = _cloned(stacks, WRITTEN_BOOK, "minecraft:writable_book")
+    if found is None:
+        return None
+    source, count = found
+    content = source.component("minecraft:written_book_content")
+    generation = content.get("generation") if isinstance(content, Compound) else None
+    generation = int(numeric_value(generation)) if is_numeric(generation) else 0
+    if not isinstance(content, Compound) or generation >= 2:
+        return items.EMPTY.copy()
+    made = source.copy()
+    made.count = count
+    copied = Compound(content)
+    copied["generation"] = Int(generation + 1)
+    items.set_component(made, "minecraft:written_book_content", copied)
+    return made
+
+
+def _remainders(kind: str, stacks: list[ItemStack]) -> list[ItemStack]:
+    """CraftingRecipe.getRemainingItems: each stack's crafting remainder; BookCloningRecipe's keeps
+    the (first) written book as well."""
+    left = [ItemStack(REMAINDERS[s.id]) if s.id in REMAINDERS else items.EMPTY.copy() for s in stacks]
+    if kind == BOOK_CLONING:
+        first = next(i for i, s in enumerate(stacks) if s.id == WRITTEN_BOOK)
+        left[first] = stacks[first].copy()
+        left[first].count = 1
+    return left
+
+
 def _result(kind: str, body, width: int, height: int, stacks: list[ItemStack], resources, version):
     """The recipe's result for these stacks, None when it does not match; :data:`_UNMATCHED` for a
     recipe the emulator does not match."""
@@ -220,6 +280,15 @@ def _result(kind: str, body, width: int, height: int, stacks: list[ItemStack], r
         return result_stack(body["result"], version) if _shapeless_matches(body, stacks, resources) else None
     if body is not None and kind == TRANSMUTE and TRANSMUTE_SINCE <= tuple(version) < TRANSMUTE_REWRITTEN:
         return _transmuted(body, stacks, resources)
+    if kind == BOOK_CLONING and items.COMPONENTS_VERSION <= tuple(version) < SPECIAL_UNTIL:
+        return _book_copies(stacks)
+    if kind == MAP_CLONING and tuple(version) < SPECIAL_UNTIL:  # MapCloningRecipe.assemble: the map, one more
+        found = _cloned(stacks, "minecraft:filled_map", "minecraft:map")
+        if found is None:
+            return None
+        made = found[0].copy()
+        made.count = found[1] + 1
+        return made
     return _UNMATCHED if kind.startswith(UNMATCHED_PREFIXES) else None
 
 
@@ -252,8 +321,7 @@ def craft(resources, grid: list[ItemStack], version) -> Crafted | None:
                          "tries them in its recipe map's order, which depends on its own recipes (pass --game-jar)")
     if matched:
         recipe_id, result = matched[0]
-        remainders = [ItemStack(REMAINDERS[s.id]) if s.id in REMAINDERS else items.EMPTY.copy() for s in stacks]
-        return Crafted(recipe_id, result, remainders)
+        return Crafted(recipe_id, result, _remainders(resources.recipes[recipe_id], stacks))
     if not resources.vanilla_data:
         raise Unmodelled("crafting with no pack recipe matching: the game's own recipes are not known without "
                          "the game's data (pass --game-jar)")
