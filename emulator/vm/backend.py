@@ -39,6 +39,9 @@ jit_cache.lean_loads(vm.run, vm.fork_contexts)  # the functions Python calls
 # The game's ExecutionContext stops a root when its queue would exceed 10,000,000 entries; each
 # frame here holds at least one pending entry, so deeper stacks than this cannot happen.
 MAX_DEPTH = 10_000_000
+# The first sizes of the context arrays and of the contexts waiting for their chain: each growth
+# makes the machine again (about 0.3 ms), so they start at what a pool break's forks reach.
+CONTEXT_ROWS, FORK_ROWS = 256, 1024
 
 _ERROR_TEXT = {  # the game's messages (emulator.world.errors) of the VM's runtime errors
     vm.ERR_DIV_ZERO: MESSAGES["arguments.operation.div0"],
@@ -91,8 +94,8 @@ class NumbaBackend:
         self.active = np.zeros(0, dtype=np.int64)
         # the contexts (R_CTX indexes them; reset per root): their arrays (vm.CI_*, vm.CF_*), rows the VM
         # and Python add, and the Context objects Python made or asked for
-        self.cints = np.zeros((16, vm.CI_WIDTH), dtype=np.int64)
-        self.cfloats = np.zeros((16, vm.CF_WIDTH), dtype=np.float64)
+        self.cints = np.zeros((CONTEXT_ROWS, vm.CI_WIDTH), dtype=np.int64)
+        self.cfloats = np.zeros((CONTEXT_ROWS, vm.CF_WIDTH), dtype=np.float64)
         self.contexts: dict[int, Context] = {}
         self.selbuf = np.zeros(16, dtype=np.int64)  # the VM's selector results (targets, then sources)
         self.logbuf = np.zeros((64, 2), dtype=np.int64)  # OP_LOG's queue: (host op, context)
@@ -103,7 +106,7 @@ class NumbaBackend:
         self.binding_sets: list[tuple] = [()]
         self.binding_ids: dict[tuple, int] = {(): 0}
         self.store_targets: dict[object, StoreTarget] = {}  # key -> target; reset per root
-        self.fstack = vm.new_fork_stack()  # contexts waiting for the rest of their chain (see emulator.vm.loop)
+        self.fstack = vm.new_fork_stack(FORK_ROWS)  # contexts waiting for the rest of their chain (see emulator.vm.loop)
         self.coll = vm.new_fork_stack()  # contexts kept for their chain's final command
         self.host_runs: Counter = Counter()  # pc -> times Python ran the host op there (see host_ops_run)
         self.host_ops_at: dict[int, tuple] = {}  # pc -> (opcode, node) of the host ops the VM asked for

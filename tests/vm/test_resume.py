@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from emulator.vm import loop as vm
-from tests.vm.helpers import SETUP, emulator_for
+from emulator.vm import backend, loop as vm
+from tests.vm.helpers import SETUP, emulator_for, run_both
 
 FUNCTIONS = {"t:setup": SETUP, "t:f": "scoreboard players add #n o 1\ntime query gametime\n" * 3}
 
@@ -63,3 +63,14 @@ def test_run_makes_the_machines_arrays_from_its_descriptor():
     assert descriptor[0] == wide.ctypes.data and list(descriptor[1:5]) == [5, 8, 32, 4]  # code: data, shape, strides
     assert _read(descriptor.ctypes.data, machine_type) == 3 * 100 + 3 * 10 + 8
     assert fields["regs"][0] == wide[2, 3] + wide[2, 1] + 2  # values[1, 2] is wide[2, 3]
+
+
+def test_contexts_beyond_the_first_rows_grow_the_arrays_and_agree_with_the_reference(tmp_path):
+    markers = 40  # 40 x 40 contexts: past the first rows of the context arrays and of the fork stack
+    body = (SETUP + 'summon marker 0 0 0 {Tags:["x"]}\n' * markers
+            + "execute as @e[tag=x] as @e[tag=x] run scoreboard players add @s o 1\n")
+
+    emu = run_both(tmp_path, body)
+    assert emu.backend.cints.shape[0] >= markers * markers > backend.CONTEXT_ROWS
+    assert emu.backend.fstack.shape[0] > backend.FORK_ROWS
+    assert sorted(emu.scores()["o"].values()) == [markers] * markers
