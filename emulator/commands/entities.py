@@ -339,8 +339,11 @@ def target_word(cmd, words: list, index: int, target):
     return target if words[index] is None else holder_from_word(words[index], cmd.loc)
 
 
+@lru_cache(maxsize=4096)
 def parse_target(text: str):
-    """A selector, player name or UUID written as in a command (ValueError when malformed)."""
+    """A selector, player name or UUID written as in a command (ValueError when malformed), read
+    once per text: a text component's selector is read each time the text is shown, and one node
+    keeps its compiled query (:func:`_query`) where a new node each time made another."""
     reader = Reader(text, Loc("<selector>", 1, 1), (1, 21, 0))
     try:
         target = selectors.selector(reader) if text.startswith("@") else holder_from_word(text, reader.loc())
