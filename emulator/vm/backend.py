@@ -345,7 +345,7 @@ class NumbaBackend:
         self.loop = variants.loop_for(self.program.opcodes)
         self.descriptor, self.machine_type = vm.machine(self.machine)
         self.address = self.descriptor.ctypes.data
-        self._resume = _entry_point(self.loop.run, self.machine_type)
+        self._resume = entry_point(self.loop.run, self.machine_type)
         self._world = (sb.values, table.ints, table.tags, table.count)
         self.leaves_used = bool(self.leaves.leaves)  # the program names numbers of storage
         self.stale = False
@@ -734,10 +734,11 @@ def _host_op_index(row: list[int]) -> int:
     return row[_HOST_OPERAND[row[0]]]
 
 
-def _entry_point(run, machine_type):
+def entry_point(run, machine_type):
     """``run``'s compiled entry point for machines of ``machine_type`` (compiling it if new): called
     directly with a descriptor's address and the type (which it does not read), it skips the
-    dispatcher's type checks. An instrumented ``run`` (a plain function calling the dispatcher) is itself."""
+    dispatcher's type checks (typing the machine's type there costs about 20 us a call). An
+    instrumented ``run`` (a plain function standing in for it) is itself."""
     if not hasattr(run, "overloads"):
         return run
     signature = (numba.types.intp, numba.typeof(machine_type))  # a type's type: TypeRef
