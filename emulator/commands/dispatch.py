@@ -31,7 +31,7 @@ HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **serve
             **items.HANDLERS, ast.UnreadCommand: _unread}
 # the commands the parser keeps as text, by name
 GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **recipes.HANDLERS,
-                    **server.GENERIC_HANDLERS}
+                    **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import json
 
-from emulator.world import inventories, loot, text_components
+from emulator.world import enchanting, inventories, loot, text_components
 from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
@@ -338,5 +338,53 @@ def _replace(env, cmd: ast.Loot, items: list[ItemStack], ctx) -> int:
     return placed
 
 
+# ---------------------------------------------------------------------- enchant
+def enchant_command(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``enchant TARGETS ENCHANTMENT [LEVEL]`` (EnchantCommand.enchant): the held item of each
+    living target that can take the enchantment beside the ones it has; alone, a target that
+    cannot is an error; the count enchanted, none an error."""
+    words, target = entities.arguments(cmd)
+    who = entities.target_word(cmd, words, 0, target)
+    if len(words) < 2:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected an enchantment", report=True)
+    enchantment_id = words[1] if ":" in words[1] else "minecraft:" + words[1]
+    try:
+        level = int(words[2]) if len(words) > 2 else 1
+    except ValueError:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, f"expected a level, got '{words[2]}'",
+                             report=True) from None
+    resources, version = env.state.resources, _version(env)
+    found = enchanting.definition(resources, enchantment_id)
+    if level > found["max_level"]:
+        raise CommandFailure("commands.enchant.failed.level", level, found["max_level"])
+    targets = entities.found(env.state, who, ctx)
+    alone = len(targets) == 1
+    changed = 0
+    for entity in targets:
+        if not is_living(entity.type):
+            if alone:
+                raise CommandFailure("commands.enchant.failed.entity", entity.display_name)
+            continue
+        access = inventories.entity_slot(entity, inventories.MAINHAND, version)
+        stack = access.get() if access is not None else None
+        if stack is None or stack.is_empty:
+            if alone:
+                raise CommandFailure("commands.enchant.failed.itemless", entity.display_name)
+            continue
+        if enchanting.can_enchant(resources, found, stack) and \
+                enchanting.compatible(resources, enchanting.current(stack), enchantment_id, found):
+            enchanting.enchant(stack, enchantment_id, level, version)
+            access.set(stack)
+            changed += 1
+        elif alone:
+            raise CommandFailure("commands.enchant.failed.incompatible", _name(stack).strip("[]"))
+    if not changed:
+        raise CommandFailure("commands.enchant.failed")
+    if found.get("effects"):
+        env.unmodelled(cmd, f"the effects of enchantment {enchantment_id} are not modelled")
+    return changed
+
+
 HANDLERS = {ast.Give: give, ast.Clear: clear, ast.ItemReplace: item_replace, ast.ItemModify: item_modify,
             ast.Loot: loot_command}
+GENERIC_HANDLERS = {"enchant": enchant_command}

@@ -8,12 +8,15 @@ loot tables, item modifiers, predicates, advancements, recipes and registry tags
   random sequence).
 - ``tag(registry, tag_id)``: the flattened :class:`RegistryTag`, or None when no such tag loaded.
 - ``in_tag(registry, tag_id, value)``: membership; ``item_tag(tag_id)``: an item tag's members.
+  ``tag_members(registry, tag_id)``: a tag's members, none for an unknown tag.
   A ``#minecraft:`` tag the emulator does not know (no game jar given) raises
   :class:`~emulator.world.errors.Unmodelled` unless ``value`` is among its known members, never a
   silent "no".
 - ``recipes``: recipe id -> type (the packs', and the game's from its jar); see
   :mod:`emulator.world.recipes`; ``recipe_bodies``: id -> JSON of those that decode
   (:mod:`emulator.world.crafting` matches them).
+- ``enchantments``: enchantment id -> JSON, the packs' definitions that load (see
+  :mod:`emulator.world.enchanting`).
 - ``loot_table(table_id)``: a loaded table; None for one that does not exist. A ``minecraft:``
   table without the game's data raises Unmodelled naming ``--game-jar``.
 """
@@ -44,6 +47,7 @@ class Resources:
     vanilla_data: bool = False  # the game's own tags and loot tables were loaded (from its jar)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # loot rolls, dropped items
     redefined_enchantments: frozenset = frozenset()  # vanilla enchantments a pack's file redefines
+    enchantments: dict[str, Any] = field(default_factory=dict)  # id -> JSON (the packs' files that load)
 
     @classmethod
     def from_packs(cls, packs) -> "Resources":
@@ -52,7 +56,7 @@ class Resources:
                     predicates=dict(packs.predicates), advancements=dict(packs.advancements),
                     recipes=dict(packs.recipes), recipe_bodies=dict(packs.recipe_bodies),
                     tags={registry: dict(tags) for registry, tags in packs.registry_tags.items()},
-                    vanilla_data=packs.vanilla_data)
+                    vanilla_data=packs.vanilla_data, enchantments=dict(packs.enchantments))
         found.redefined_enchantments = frozenset(
             f"minecraft:{e}" for e in _READ_ENCHANTMENTS if packs.read_file(f"data/minecraft/enchantment/{e}.json"))
         for kind, docs in (("loot_table", tables), ("item_modifier", modifiers)):
@@ -90,6 +94,13 @@ class Resources:
         if tag is None:
             raise CommandFailure("arguments.item.tag.unknown", tag_id, report=True)
         return tag.members
+
+    def tag_members(self, registry: str, tag_id: str) -> frozenset[str]:
+        """The members of a tag of ``registry`` (none for a tag no pack defines); a vanilla tag
+        the emulator does not know is not modelled."""
+        tag = self.tag(registry, tag_id)
+        self._known(registry, tag_id, tag)
+        return tag.members if tag is not None else frozenset()
 
     def _known(self, registry: str, tag_id: str, tag: RegistryTag | None) -> None:
         unknown = tag.unknown if tag is not None else (

@@ -27,6 +27,7 @@ from mcfunction_parser.pack.meta import ANY_MINOR, FormatRange, PackMeta, read_p
 from mcfunction_parser.pack.parallel import FunctionFile, parse_files
 from mcfunction_parser.pack import loot
 from mcfunction_parser.pack import dimensions as dimension_files
+from mcfunction_parser.pack import enchantments as enchantment_files
 from mcfunction_parser.pack import recipes as recipe_files
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
 from mcfunction_parser import gamedata
@@ -76,6 +77,7 @@ class LoadedPacks:
     advancements: dict[str, Any] = field(default_factory=dict)  # id -> its JSON (files that load)
     dimensions: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension: id -> its JSON
     dimension_types: dict[str, Any] = field(default_factory=dict)  # data/<ns>/dimension_type: id -> its JSON
+    enchantments: dict[str, Any] = field(default_factory=dict)  # data/<ns>/enchantment (1.21+): id -> its JSON
     # registry -> tag id -> flattened tag: the game's own (from a game jar) merged under the packs'
     registry_tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)
     vanilla_data: bool = False  # the game's own tags and loot tables were read from its jar
@@ -179,6 +181,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     _load_loot(packs, result, jar)
     _load_recipes(packs, result, jar)
     _load_dimensions(packs, result)
+    _load_enchantments(packs, result)
     _load_clocks(packs, result)
     return result
 
@@ -516,6 +519,16 @@ def _load_dimensions(packs: list[_PackFiles], result: LoadedPacks) -> None:
         if dimension_files.check_dimension(doc, f"dimension {dimension_id}", result.dimension_types,
                                            result.diagnostics):
             result.dimensions[dimension_id] = doc.value
+
+
+def _load_enchantments(packs: list[_PackFiles], result: LoadedPacks) -> None:
+    """From 1.21, the packs' enchantment definitions (checked by :mod:`.enchantments`; a file that
+    fails is left out)."""
+    if result.version < enchantment_files.DATA_DRIVEN:
+        return
+    for enchantment_id, doc in _chosen_json(packs, ("enchantment", "enchantment"), result):
+        if enchantment_files.check_enchantment(doc, f"enchantment {enchantment_id}", result.version, result.diagnostics):
+            result.enchantments[enchantment_id] = doc.value
 
 
 def _load_clocks(packs: list[_PackFiles], result: LoadedPacks) -> None:
