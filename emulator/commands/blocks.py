@@ -9,7 +9,7 @@ tests Level.getBiome at getLoadedBlockPos).
 """
 from __future__ import annotations
 
-from emulator.world import biomes, command_blocks, crafters
+from emulator.world import biomes, command_blocks, crafters, rails
 from emulator.world.blocks import BlockSpec, block_pos, box_positions, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
@@ -83,7 +83,11 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     positions = [block_pos(source, corner) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
+        before = blocks.get(positions[0]).id
         count = blocks.setblock(positions[0], spec, mode)
+        if spec.id in rails.RAILS and before != spec.id:  # BaseRailBlock.onPlace
+            level = env.state.level(ctx.dimension)
+            rails.join(blocks, positions[0], command_blocks.has_neighbour_signal(level, positions[0]))
         command_blocks.after_change(env.state, ctx.dimension, positions[:1])
         crafters.after_change(env.state, ctx.dimension, positions[:1])
         return count
@@ -93,6 +97,8 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
         in_tag = block_tag_test(env)
         block_filter = lambda pos: blocks.test(pos, kept, in_tag)  # noqa: E731 - FillCommand's filter
     count = blocks.fill(positions[0], positions[1], spec, mode, block_filter)
+    if spec.id in rails.RAILS:
+        env.unmodelled(cmd, "rails placed by fill joining each other as each is placed (RailState)")
     if spec.id in NEIGHBOUR_READERS or blocks.has_any(NEIGHBOUR_READERS):  # one look over the level's blocks
         changed = box_positions(positions[0], positions[1])
         command_blocks.after_change(env.state, ctx.dimension, changed)

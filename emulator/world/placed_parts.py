@@ -19,12 +19,13 @@ and what BlockItem.place does after), with what a datapack observes: the block s
 - hanging signs: under a sturdy block (square to the player, or attached and turned in 16 steps
   when sneaking: CeilingHangingSignBlock) or on a wall held by a sturdy block beside
   (WallHangingSignBlock.canPlace); under another hanging sign is not modelled;
-- rails: straight along the player's direction on a sturdy block (BaseRailBlock); joining
-  another rail (RailState) is not modelled.
+- rails: straight along the player's direction on a sturdy block (BaseRailBlock), then joined to
+  the rails round it (RailState: :mod:`emulator.world.rails`).
 
 - ``state_for_placement(ctx) -> (block_id, properties) | None | NotImplemented``: NotImplemented
   for a block none of these rules covers; None when the block cannot be placed there.
 - ``after_placed(state, pos, block_id, properties)``: the door's upper half, the chest's partner,
+  the rails joined,
   the sign's block entity (its empty text; the editor the game opens for the player is not
   observable by a pack).
 - ``replaceable_by(state, block, ctx)``: a block the placed item goes into (BlockBehaviour.canBeReplaced).
@@ -41,7 +42,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from emulator.world import block_shapes, command_blocks, signs
+from emulator.world import block_shapes, command_blocks, rails, signs
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
 from emulator.world.placed_states import (AXIS, CLOCKWISE, HORIZONTAL, OFFSETS, OPPOSITE, horizontal_direction,
@@ -52,7 +53,6 @@ _TORCHES = {"minecraft:torch": "minecraft:wall_torch", "minecraft:soul_torch": "
             "minecraft:copper_torch": "minecraft:copper_wall_torch"}
 _CHESTS = ("minecraft:chest", "minecraft:trapped_chest")
 _SKULLS = ("_skull", "_head")
-RAILS = ("minecraft:rail", "minecraft:powered_rail", "minecraft:detector_rail", "minecraft:activator_rail")
 
 
 @dataclass
@@ -113,7 +113,7 @@ def state_for_placement(ctx: PlaceContext):
     if block_id.endswith(_SKULLS) and block_id != "minecraft:piston_head":
         kind = "_skull" if block_id.endswith("_skull") else "_head"
         return _standing_or_wall(ctx, block_id, block_id.removesuffix(kind) + "_wall" + kind, _skull_survives)
-    if block_id in RAILS:
+    if block_id in rails.RAILS:
         return _rail(ctx, block_id)
     return NotImplemented
 
@@ -126,6 +126,8 @@ def after_placed(state, pos, block_id: str, properties: dict) -> None:
         state.blocks.set_state(upper, BlockState(block_id, _sorted({**properties, "half": "upper"})))
     elif block_id in _CHESTS and properties.get("type") != "single":
         _join_partner(state, pos, block_id, properties)
+    elif block_id in rails.RAILS:  # BaseRailBlock.onPlace
+        rails.join(state.blocks, pos, command_blocks.has_neighbour_signal(state, pos))
 
 
 def _sorted(properties: dict) -> tuple:
@@ -373,14 +375,10 @@ def _holds_hanging_sign(ctx: PlaceContext, block, facing: str) -> bool:
 # ---------------------------------------------------------------------- rails
 def _rail(ctx: PlaceContext, block_id: str):
     """BaseRailBlock.getStateForPlacement and canSurvive (a sturdy block below): straight along the
-    player's direction. A rail beside, above or below one of its ends (RailState joins them) and a
-    powered, detector or activator rail next to a signal are not modelled."""
+    player's direction (then joined to the rails round it: :mod:`emulator.world.rails`). A powered,
+    detector or activator rail next to a signal is not modelled."""
     if not block_shapes.is_face_sturdy(ctx.block(ctx.at(ctx.target, "down"))):
         return None
-    for direction in HORIZONTAL:
-        for up in (-1, 0, 1):
-            if ctx.block(ctx.at(ctx.target, direction, up)).id in RAILS:
-                raise Unmodelled(f"placing {block_id} beside a rail (RailState connects them)")
     facing = horizontal_direction(ctx.player)
     properties = {"shape": "east_west" if facing in ("east", "west") else "north_south",
                   "waterlogged": "true" if ctx.water else "false"}

@@ -161,15 +161,21 @@ def test_hanging_signs_hang_under_a_block_or_beside_one(tmp_path):
     assert result.status == "passed", result.report()
 
 
-def test_a_rail_lies_along_the_player_and_joining_rails_is_inconclusive(tmp_path):
-    """BaseRailBlock.getStateForPlacement: north_south for a player facing south; RailState's joins
-    are not modelled."""
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_rail_lies_along_the_player_then_joins_the_rails_round_it(tmp_path, backend):
+    """BaseRailBlock.getStateForPlacement: north_south for a player facing south; onPlace ->
+    RailState.place: a rail beside turns both east_west; one south of the first makes it a
+    south_east curve (a plain rail's corner, the first's other end already taken); a rail a block
+    up at the end of the line makes the lower one ascending_east."""
     result = run(tmp_path, "# @dummy\n" + (
-        "setblock ~3 ~ ~ stone\nsetblock ~4 ~ ~ stone\n"
-        "give @s rail 2\n"
+        "setblock ~3 ~ ~ stone\nsetblock ~4 ~ ~ stone\nsetblock ~3 ~ ~1 stone\nsetblock ~5 ~1 ~ stone\n"
+        "give @s rail 4\n"
         "dummy @s use block ~3 ~ ~ up\n"
         "assert block ~3 ~1 ~ rail[shape=north_south,waterlogged=false]\n"
         "dummy @s use block ~4 ~ ~ up\n"
-        "succeed\n"))
-    assert result.status == "inconclusive", result.report()
-    assert "beside a rail" in result.message
+        "assert block ~3 ~1 ~ rail[shape=east_west]\nassert block ~4 ~1 ~ rail[shape=east_west]\n"
+        "dummy @s use block ~3 ~ ~1 up\n"
+        "assert block ~3 ~1 ~1 rail[shape=north_south]\nassert block ~3 ~1 ~ rail[shape=south_east]\n"
+        "dummy @s use block ~5 ~1 ~ up\n"
+        "assert block ~5 ~2 ~ rail[shape=east_west]\nassert block ~4 ~1 ~ rail[shape=ascending_east]\n"), backend=backend)
+    assert result.status == "passed", result.report()
