@@ -40,6 +40,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult, TickBatches
+from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
 from emulator.world import advancements, block_use, combat, crafters, living, nbt_ops, player_actions, statistics
 from emulator.world.context import Context
@@ -104,10 +105,14 @@ class Runtime:
         self._mixed_lists = nbt_ops.list_rules(packs.version).mixed
         state.command_runner = self.run_command
 
-    def run_command(self, text: str, context: Context) -> bool | None:
+    def run_command(self, text: str, context: Context) -> int | None:
         """A command block's command as its own root (BaseCommandBlock.performCommand:
-        performPrefixedCommand): whether it succeeded. It runs as ``return run COMMAND`` in a macro
-        function, so both backends parse it when it runs (from 1.20.3, where ``return run`` exists)."""
+        performPrefixedCommand): how many times it succeeded, one per context its ``run`` ran in
+        (the source's result callback counts each). It runs as ``return run COMMAND`` in a macro
+        function, so both backends parse it when it runs (from 1.20.3, where ``return run`` exists).
+        An ``execute`` whose stages only pick contexts (``as``, ``at``, ``positioned`` ... and the
+        conditions but ``if function``) and make other than one runs its ``run`` command in each,
+        each as a root of its own (the game: one root for the whole command)."""
         if tuple(self.packs.version) < COMMAND_RUNNER_VERSION:
             self.state.error("running a command block's command before 1.20.3", severity="warning", unmodelled=True)
             return None
@@ -115,7 +120,10 @@ class Runtime:
             function, _ = parse_function("$return run $(command)", "<command block>", COMMAND_BLOCK_FUNCTION,
                                          tuple(self.packs.version))
             self.packs.functions[COMMAND_BLOCK_FUNCTION] = function
-        return self.run_root(COMMAND_BLOCK_FUNCTION, context, Compound(command=String(text))).succeeded
+        forked = command_contexts.forked(self.state, self.packs, text, context)
+        runs = [(text, context)] if forked is None else [(forked[0], ctx) for ctx in forked[1]]
+        return sum(bool(self.run_root(COMMAND_BLOCK_FUNCTION, ctx, Compound(command=String(command))).succeeded)
+                   for command, ctx in runs)
 
     def members(self, tag: str) -> tuple[str, ...]:
         """The functions ``#tag`` runs, resolved once: the tags do not change while the packs run, and

@@ -21,15 +21,17 @@ game runs them, with the block entity fields a pack reads back (``SuccessCount``
 - Running the command (BaseCommandBlock.performCommand): not twice in a game time (``LastExecution``
   with ``UpdateLastExecution``); ``SuccessCount`` the command's success (1 or 0); as a source at the
   block's centre, rotated to its facing (Direction.toYRot), in the block's level, with no entity. The
-  runtime runs the text (``state.command_runner(text, context) -> bool | None``: True on success).
+  runtime runs the text (``state.command_runner(text, context) -> int | None``: the successes, one
+  per context the command ran in).
 
 Power (Level.hasNeighborSignal) comes from a neighbouring redstone block, a powered lever or
 button, or a lit redstone torch; any other redstone component beside a command block is not
 modelled (a warning: the test is inconclusive). ``LastOutput`` (with ``TrackOutput``) is the last
 message the command sent its source, after ``[HH:mm:ss] `` from the wall clock (:func:`feedback`:
 ``help``'s usage, none from ``tellraw``, ``say`` and ``return N``); another command's message is
-not produced (the time alone, and a warning: the test is inconclusive). A command that forks over several contexts
-counts one success, the game one per context. A command block in another level runs there (the
+not produced (the time alone, and a warning: the test is inconclusive). ``SuccessCount`` counts a
+success per context the command ran in, as the game's result callback (an ``execute`` whose stages
+change the world, ``store`` or ``summon``, or that ends in ``if function``, counts one). A command block in another level runs there (the
 level's blocks, block ticks and the command's dimension). ``CustomName`` naming the source (``@`` by default) is not modelled.
 
 Sources (decompiled 1.21.x and 26.1): world/level/block/CommandBlock.java (neighborChanged, tick,
@@ -241,9 +243,9 @@ def perform(state, pos, nbt: Compound) -> bool:
         block = state.blocks.get(pos)
         source = Context(pos=(pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), rot=(_Y_ROT[_facing(block)], 0.0),
                          dimension=getattr(state, "dimension", "minecraft:overworld"))
-        succeeded = state.command_runner(command.removeprefix("/"), source)
-        nbt["SuccessCount"] = Int(1 if succeeded else 0)
-        _last_output(state, nbt, command, bool(succeeded))
+        successes = state.command_runner(command.removeprefix("/"), source) or 0
+        nbt["SuccessCount"] = Int(successes)
+        _last_output(state, nbt, command, successes > 0)
     if track_time:
         nbt["LastExecution"] = Long(state.gametime)
     else:

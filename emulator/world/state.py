@@ -498,7 +498,7 @@ class WorldState:
     last_attacker: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> (living attacker, game time) (combat)
     dead_players: weakref.WeakSet = field(default_factory=weakref.WeakSet)  # players that died, until they respawn (combat)
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
-    command_runner: object = None  # runs a command block's text: (text, Context) -> success (set by the runtime)
+    command_runner: object = None  # runs a command block's text: (text, Context) -> successes (set by the runtime)
     pending_rewards: list = field(default_factory=list)  # (reward function, player) earned, to run next (take_rewards)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
     version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)

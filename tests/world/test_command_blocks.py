@@ -147,3 +147,19 @@ def test_a_command_block_in_another_level_runs_there(tmp_path, backend):
     assert nether.get((0, 65, 0)).id == "minecraft:stone" and emu.state.blocks.get((0, 65, 0)).is_air
     assert emu.score("#p", "v") == 1
     assert not any(d.unmodelled for d in emu.diagnostics)
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_success_count_counts_each_context_the_command_ran_in(tmp_path, backend):
+    """BaseCommandBlock.performCommand: the source's callback adds one per successful result, so an
+    execute forking over three entities counts 3, over none 0."""
+    main = ('summon marker 0 5 0 {Tags:["t"]}\nsummon marker 0 5 0 {Tags:["t"]}\nsummon marker 0 5 0 {Tags:["t"]}\n'
+            'setblock 0 0 0 command_block{auto:1b,Command:"execute as @e[tag=t] run scoreboard players add @s v 1"}\n'
+            'setblock 2 0 0 command_block{auto:1b,Command:"execute as @e[tag=none] run scoreboard players add @s v 1"}\n'
+            'setblock 4 0 0 command_block{auto:1b,Command:"execute as @e[tag=t] if score @s v matches 1 at @s '
+            'positioned ~ ~1 ~ run scoreboard players add #n v 1"}\n')
+    emu = world(tmp_path, main, backend)
+    emu.tick()
+    assert block(emu, (0, 0, 0), "SuccessCount") == 3 and block(emu, (2, 0, 0), "SuccessCount") == 0
+    assert [e["scores"].get("v") for e in emu.entities("@e[tag=t]")] == [1, 1, 1]
+    assert block(emu, (4, 0, 0), "SuccessCount") == 3 and emu.score("#n", "v") == 3
