@@ -30,7 +30,7 @@ import numpy as np
 
 from emulator.world import combat, living, relations, teleport
 from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
-from emulator.world.entity_types import ENTITY_TYPES
+from emulator.world.entity_types import ENTITY_TYPES, flies
 from emulator.world import advancement_progress, advancements, predicates
 from emulator.world.loot_context import LootContext
 from emulator.world.selectors import SelectorQuery, SelectorWorld
@@ -199,7 +199,9 @@ def summon(env, cmd: ast.Summon, ctx: Context) -> int:
         env.warn(cmd, f"unknown entity type '{cmd.entity_type}': summoned with the default size 0.6 x 1.8")
     source = world_source(env.state, ctx)
     pos = source.pos if cmd.pos is None else source.position_of(cmd.pos)
-    relations.summon_with_passengers(env.state.entities, cmd.entity_type, pos, cmd.nbt, ctx.dimension)
+    made = relations.summon_with_passengers(env.state.entities, cmd.entity_type, pos, cmd.nbt, ctx.dimension)
+    if flies(made):
+        env.unmodelled(cmd, f"{made.type} in flight: projectiles do not move here (motion, gravity, drag, hits)")
     return 1
 
 

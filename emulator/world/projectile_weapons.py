@@ -112,6 +112,8 @@ def shoot_charged(state, player, hand_slot: int) -> None:
             break
     advancements.trigger(state, player, "shot_crossbow")
     statistics.award(state, player, statistics.stat_name("used", weapon.id))
+    state.error("a crossbow's shot in flight: projectiles do not move here (motion, gravity, drag, hits)",
+                severity="warning", unmodelled=True)
 
 
 def _clear_charge(weapon: ItemStack, version) -> None:

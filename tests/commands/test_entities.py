@@ -93,3 +93,20 @@ def test_kill_and_tag_commands():
     assert store.entities == [a, steve] and not b.alive
     assert run(env, "kill", as_a) == 1
     assert store.entities == [steve]
+
+
+@pytest.mark.parametrize("nbt,reported", [
+    ("", True),  # an arrow falls with gravity from rest
+    ("{inGround:1b}", False),  # stuck in a block (AbstractArrow.inGround)
+    ("{NoGravity:1b}", False),  # no gravity, no motion: it stays
+    ("{NoGravity:1b,Motion:[0.0,0.0,0.5]}", True),
+])
+def test_a_summoned_projectile_in_flight_is_reported_as_not_modelled(tmp_path, nbt, reported):
+    # Projectile.tick / AbstractArrow.tick move it every tick (motion, gravity, drag, hits), which
+    # the emulator does not do
+    from emulator import Emulator
+    from tests.conftest import write_pack
+    emu = Emulator(backend="python")
+    emu.load([write_pack(tmp_path / "p", {"demo/function/f.mcfunction": f"summon arrow 0 0 0 {nbt}\n"})])
+    emu.call("demo:f")
+    assert any(d.unmodelled and "projectiles do not move" in d.message for d in emu.diagnostics) == reported
