@@ -28,9 +28,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from emulator.world import combat, living, relations, teleport
+from emulator.world import combat, living, projectiles, relations, teleport
 from emulator.world.entities import Entity, EntityStore, add_tag, remove_tag
-from emulator.world.entity_types import ENTITY_TYPES, flies
+from emulator.world.entity_types import ENTITY_TYPES
 from emulator.world import advancement_progress, advancements, predicates
 from emulator.world.loot_context import LootContext
 from emulator.world.selectors import SelectorQuery, SelectorWorld
@@ -200,8 +200,7 @@ def summon(env, cmd: ast.Summon, ctx: Context) -> int:
     source = world_source(env.state, ctx)
     pos = source.pos if cmd.pos is None else source.position_of(cmd.pos)
     made = relations.summon_with_passengers(env.state.entities, cmd.entity_type, pos, cmd.nbt, ctx.dimension)
-    if flies(made):
-        env.unmodelled(cmd, f"{made.type} in flight: projectiles do not move here (motion, gravity, drag, hits)")
+    projectiles.launched(env.state, made)
     return 1
 
 

@@ -18,7 +18,9 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    (:func:`emulator.world.player_actions.tick_using`), an open container out of reach closes
    (:func:`emulator.world.block_use.tick_menus`), a crafter that crafted counts its 6 ticks of
    ``crafting`` down (:func:`emulator.world.crafters.tick_crafting`) and every
-   player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`);
+   player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`); a
+   projectile made in flight since the last tick is reported as not modelled (it would have moved:
+   :func:`emulator.world.projectiles.tick_flying`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`).
 An advancement reward function earned by a command (``advancement grant``, ``effect give`` ...)
@@ -42,7 +44,8 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import advancements, block_use, combat, crafters, living, nbt_ops, player_actions, statistics
+from emulator.world import (advancements, block_use, combat, crafters, living, nbt_ops, player_actions, projectiles,
+                           statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -71,6 +74,7 @@ ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
                 (block_use.tick_menus, block_use.tick_is_idle),
                 (crafters.tick_crafting, crafters.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),
+                (projectiles.tick_flying, projectiles.tick_is_idle),
                 (advancements.tick_players, advancements.tick_is_idle))
 
 # told of each root sequence run: (function id, its result); a listener with a ``roots_ran(function id,

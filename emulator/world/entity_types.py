@@ -159,26 +159,6 @@ BABY_EYE_HEIGHT = {**{f"minecraft:{name}": F32(0.93) for name in (
     "minecraft:armor_stand": F32(0.9875)}
 
 
-# Entities that fly by themselves once made (Projectile and its kind, eye_of_ender): nothing moves
-# them here, so one in flight is reported as not modelled (:func:`flies`).
-PROJECTILES = frozenset("minecraft:" + name for name in (
-    "arrow spectral_arrow trident snowball egg ender_pearl experience_bottle potion splash_potion lingering_potion "
-    "fireball small_fireball dragon_fireball wither_skull wind_charge breeze_wind_charge llama_spit "
-    "shulker_bullet firework_rocket eye_of_ender").split())
-_POWERED = frozenset("minecraft:" + name for name in (
-    "fireball small_fireball dragon_fireball wither_skull wind_charge breeze_wind_charge").split())
-
-
-def flies(entity) -> bool:
-    """Whether the game would move this entity each tick: a projectile not stuck in a block
-    (``inGround``), unless it has no gravity, no motion and no power of its own (a fireball's)."""
-    data = entity.data
-    if entity.type not in PROJECTILES or int(data.get("inGround", 0)) or int(data.get("in_ground", 0)):
-        return False
-    still = all(float(m) == 0.0 for m in entity.motion) and int(data.get("NoGravity", 0))
-    return not still or entity.type in _POWERED
-
-
 def baby_scale(type_id: str) -> np.float32:
     return BABY_SCALES.get(type_id, BABY_SCALE)
 

@@ -35,7 +35,7 @@ import math
 
 import numpy as np
 
-from emulator.world import advancements, inventories, mth, statistics, tools
+from emulator.world import advancements, inventories, mth, projectiles, statistics, tools
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack, enchantment_levels, from_nbt, set_component, to_nbt
 from emulator.world.nbt_ops import numeric_value
@@ -112,8 +112,6 @@ def shoot_charged(state, player, hand_slot: int) -> None:
             break
     advancements.trigger(state, player, "shot_crossbow")
     statistics.award(state, player, statistics.stat_name("used", weapon.id))
-    state.error("a crossbow's shot in flight: projectiles do not move here (motion, gravity, drag, hits)",
-                severity="warning", unmodelled=True)
 
 
 def _clear_charge(weapon: ItemStack, version) -> None:
@@ -138,8 +136,9 @@ def _spawn_arrow(state, player, projectile: ItemStack, weapon: ItemStack, direct
                     weapon=to_nbt(weapon, state.version), Motion=List(Double(v) for v in motion),
                     PierceLevel=Byte(piercing))
     data["Rotation"] = List([Float(yaw), Float(pitch)])
-    state.entities.summon(ARROW_ENTITIES[projectile.id], (x, y + float(player.eye_height) - float(F32(0.1)), z),
-                          data, yaw=yaw, pitch=pitch, dimension=player.dimension)
+    projectiles.launched(state, state.entities.summon(
+        ARROW_ENTITIES[projectile.id], (x, y + float(player.eye_height) - float(F32(0.1)), z), data, yaw=yaw,
+        pitch=pitch, dimension=player.dimension))
 
 
 def _spawn_firework(state, player, projectile: ItemStack, direction, power: float) -> None:
@@ -156,8 +155,9 @@ def _spawn_firework(state, player, projectile: ItemStack, direction, power: floa
                     FireworksItem=to_nbt(item, state.version), ShotAtAngle=Byte(1),
                     Motion=List(Double(v) for v in motion))
     data["Rotation"] = List([Float(yaw), Float(pitch)])
-    state.entities.summon("minecraft:firework_rocket", (x, y + float(player.eye_height) - float(F32(0.15)), z),
-                          data, yaw=yaw, pitch=pitch, dimension=player.dimension)
+    projectiles.launched(state, state.entities.summon(
+        "minecraft:firework_rocket", (x, y + float(player.eye_height) - float(F32(0.15)), z), data, yaw=yaw,
+        pitch=pitch, dimension=player.dimension))
 
 
 def _flight(item: ItemStack) -> int:

@@ -498,6 +498,7 @@ class WorldState:
     last_attacker: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> (living attacker, game time) (combat)
     dead_players: weakref.WeakSet = field(default_factory=weakref.WeakSet)  # players that died, until they respawn (combat)
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
+    flying: list = field(default_factory=list)  # projectiles made in flight, checked at the next tick (world.projectiles)
     command_runner: object = None  # runs a command block's text: (text, Context) -> successes (set by the runtime)
     pending_rewards: list = field(default_factory=list)  # (reward function, player) earned, to run next (take_rewards)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)

@@ -109,4 +109,6 @@ def test_a_summoned_projectile_in_flight_is_reported_as_not_modelled(tmp_path, n
     emu = Emulator(backend="python")
     emu.load([write_pack(tmp_path / "p", {"demo/function/f.mcfunction": f"summon arrow 0 0 0 {nbt}\n"})])
     emu.call("demo:f")
+    assert not any(d.unmodelled for d in emu.diagnostics)  # not yet: it has not moved in the game either
+    emu.tick()
     assert any(d.unmodelled and "projectiles do not move" in d.message for d in emu.diagnostics) == reported
