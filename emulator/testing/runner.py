@@ -512,15 +512,21 @@ class TestSource:
 
 
 def spawn_dummy(source: TestSource, case: TestCase) -> Entity | None:
-    """The @dummy player (PackTest's Dummy.createRandom: named Dummy100..Dummy999, here seeded by the
-    test id), at the directive's position relative to the test origin."""
+    """The @dummy player (PackTest's Dummy.createRandom: named Dummy100..Dummy999, drawn again while
+    the name is online, ten tries; here drawn from a random seeded by the test id), at the
+    directive's position relative to the test origin."""
     if case.directives.dummy is None:
         return None
     pos = _position(case.directives.dummy, source.origin)
     if pos is None:
         raise _Verdict(FAILED, "Failed to initialize test with dummy", 1)
-    name = f"Dummy{random.Random(case.id).randrange(100, 1000)}"
-    return source.dummies.spawn(name, pos)
+    draw = random.Random(case.id)
+    online = {p.player_name for p in source.emu.state.entities.players()}
+    for _ in range(10):  # a name already online is drawn again, ten tries
+        name = f"Dummy{draw.randrange(100, 1000)}"
+        if name not in online:
+            return source.dummies.spawn(name, pos)
+    raise _Verdict(FAILED, "Failed to spawn dummy with a random name", 1)
 
 
 def _position(text: str, origin: tuple[float, float, float]) -> tuple[float, float, float] | None:

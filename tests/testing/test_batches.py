@@ -105,3 +105,14 @@ def test_a_passed_test_takes_its_entities_with_it_and_the_next_place_is_cleared(
     })  # pack format 48: 1.21
     results = by_id(run(root))
     assert results["demo:z"].status == "passed", results["demo:z"].message
+
+
+def test_a_dummy_name_already_online_is_drawn_again(pack):
+    # Dummy.createRandom: up to ten draws until the name is free. demo:a and demo:t828 draw the same
+    # first name here (Dummy460); demo:a fails, so its dummy stays online for demo:t828's batch
+    root = pack({"demo/test/a.mcfunction": "# @dummy\n# @batch one\nfail \"keeps its dummy\"\n",
+                 "demo/test/t828.mcfunction": "# @dummy\n# @batch two\nassert entity @a[name=Dummy460]\n"
+                                              "assert entity @s[name=!Dummy460]\n"})
+    results = by_id(run(root))
+    assert results["demo:a"].status == "failed"
+    assert results["demo:t828"].status == "passed", results["demo:t828"].message
