@@ -2,7 +2,8 @@
 the tests of a batch side by side on a grid and run together.
 
 - The tests' order is PackTest's: it reads the test files into a ``java.util.HashMap`` keyed by
-  id (PackTestLibrary.reload) and registers them in that map's iteration order.
+  id (PackTestLibrary.reload) and registers them in that map's iteration order
+  (:func:`emulator.world.hash_order.java_hash_map_order`).
 - Before 1.21.5 (GameTestBatchFactory.fromTestFunction) the tests are grouped by ``@batch`` name
   into a HashMap, so the batches run in that map's order; from 1.21.5 (divideIntoBatches) by test
   environment and dimension, a HashMap keyed by registry holders whose hash is their identity:
@@ -21,36 +22,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from emulator.world.hash_order import java_string_hash
+from emulator.world.hash_order import java_hash_map_order, java_string_hash, resource_location_hash
 
 BATCH_SIZE = 50  # GameTestBatchFactory.MAX_TESTS_PER_BATCH
 TESTS_PER_ROW = 8  # GameTestRunner.DEFAULT_TESTS_PER_ROW
 SPACE_BETWEEN_COLUMNS, SPACE_BETWEEN_ROWS = 5, 6  # StructureGridSpawner
-
-
-def _spread(h: int) -> int:
-    """HashMap.hash: h ^ (h >>> 16) (unsigned 32-bit)."""
-    return h ^ (h >> 16)
-
-
-def hashmap_order(keys: list, hash_of) -> list:
-    """The iteration order of a ``java.util.HashMap`` (default capacity 16, load factor 0.75)
-    into which ``keys`` were put in this order: by bucket (spread hash & (capacity - 1)) of the
-    final table, then in insertion order within a bucket (HashMap.resize keeps the relative
-    order when it splits a bucket). A bucket that grew into a tree (8 keys in one bucket of a
-    table of 64 or more) is not modelled: it keeps insertion order here."""
-    unique = list(dict.fromkeys(keys))
-    capacity = 16
-    while len(unique) > capacity * 3 // 4:
-        capacity *= 2
-    mask = capacity - 1
-    return sorted(unique, key=lambda k: _spread(hash_of(k)) & mask)  # sorted is stable
-
-
-def identifier_hash(test_id: str) -> int:
-    """ResourceLocation.hashCode: 31 * namespace.hashCode() + path.hashCode() (32-bit)."""
-    namespace, _, path = test_id.partition(":")
-    return (31 * java_string_hash(namespace) + java_string_hash(path)) & 0xFFFFFFFF
 
 
 @dataclass
@@ -63,12 +39,12 @@ def plan(cases: list, test_instances: bool) -> list[Batch]:
     """The run's batches in the order the game runs them, each with its tests in order.
     ``test_instances``: 1.21.5 and later (grouped by environment, else by ``@batch``)."""
     by_id = {case.id: case for case in cases}
-    ordered = [by_id[i] for i in hashmap_order(list(by_id), identifier_hash)]
+    ordered = [by_id[i] for i in java_hash_map_order(list(by_id), resource_location_hash)]
     groups: dict[str, list] = {}
     for case in ordered:
         key = case.directives.environment if test_instances else case.directives.batch
         groups.setdefault(key, []).append(case)
-    keys = list(groups) if test_instances else hashmap_order(list(groups), java_string_hash)
+    keys = list(groups) if test_instances else java_hash_map_order(list(groups), java_string_hash)
     return [Batch(f"{key}:{i // BATCH_SIZE}", groups[key][i:i + BATCH_SIZE])
             for key in keys for i in range(0, len(groups[key]), BATCH_SIZE)]
 
