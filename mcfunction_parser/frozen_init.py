@@ -85,6 +85,7 @@ def _factory(cls: type):
     exec(source, namespace)  # noqa: S102  (the source is built from the field names)
     new = namespace["new"]
     new.__qualname__ = f"{cls.__qualname__}.new"
+    new.builder = namespace["_Builder"]  # for code that writes ``new`` out (relocate)
     return staticmethod(new)
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 from bisect import bisect_right
+from operator import itemgetter
 
 from .diagnostics import Loc, new_loc
 from .features import feature_problem
@@ -306,6 +307,9 @@ class Reader:
         self.fail(f"expected true or false, got {show(word)}", start)
 
 
+_first = itemgetter(0)
+
+
 class JoinedReader(Reader):
     """A command joined from continuation lines: ``segments`` lists ``(offset, line, col)`` where
     each physical line's piece starts, so positions map back to the right line."""
@@ -315,7 +319,7 @@ class JoinedReader(Reader):
     def __init__(self, text: str, loc: Loc, version: tuple[int, int, int], segments: tuple):
         super().__init__(text, loc, version)
         self.segments = segments
-        self.offsets = [seg[0] for seg in segments]  # ascending, the first 0
+        self.offsets = list(map(_first, segments))  # ascending, the first 0
 
     def loc(self) -> Loc:
         return self.loc_at(self.pos)

@@ -100,8 +100,14 @@ def _dataclass_relocator(cls: type):
             looked.append(i)
     if len(looked) == len(fields):  # no location of its own: the node itself when nothing inside moved
         body += ["    if " + " and ".join(f"a{i} is v{i}" for i in looked) + ":", "        return node"]
-    source = "def relocate(node, path, line, shift):\n" + "\n".join(body + [f"    return cls.new({', '.join(args)})"])
-    namespace = {"R": _RELOCATORS, "cls": cls, "new_loc": new_loc}
+    builder = getattr(cls.new, "builder", None)
+    if builder is None:
+        body.append(f"    return cls.new({', '.join(args)})")
+    else:  # cls.new written out here (see frozen_init): a call less per node
+        body += ["    self = B()", *(f"    self.{f.name} = {a}" for f, a in zip(fields, args)),
+                 "    self.__class__ = cls", "    return self"]
+    source = "def relocate(node, path, line, shift):\n" + "\n".join(body)
+    namespace = {"R": _RELOCATORS, "cls": cls, "B": builder, "new_loc": new_loc}
     exec(source, namespace)  # noqa: S102  (the source is built from the field names above)
     return namespace["relocate"]
 

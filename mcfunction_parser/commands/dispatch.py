@@ -14,10 +14,16 @@ REGISTRY: dict = {}
 _TABLES: dict = {}  # version -> its table, built on first use (after every family has registered)
 
 
-def _build_table(version: tuple[int, int, int]) -> dict:
+_LAST = [None, None]  # the release read last (the same tuple, line after line) and its table
+
+
+def _table(version: tuple[int, int, int]) -> dict:
     """The commands of ``version``: name -> (parser, or None for one the command tree checks; warning or None)."""
-    table = _TABLES[version] = {name: (REGISTRY.get(name), permission_warning(name))
-                                for name in COMMANDS if command_problem(name, version) is None}
+    table = _TABLES.get(version)
+    if table is None:
+        table = _TABLES[version] = {name: (REGISTRY.get(name), permission_warning(name))
+                                    for name in COMMANDS if command_problem(name, version) is None}
+    _LAST[:] = version, table
     return table
 
 
@@ -27,7 +33,9 @@ def command(r: Reader) -> Command:
     text = r.text
     space = text.find(" ", start)
     name = text[start:space] if space >= 0 else text[start:]
-    entry = (_TABLES.get(r.version) or _build_table(r.version)).get(name)
+    version = r.version
+    table = _LAST[1] if version is _LAST[0] else _table(version)
+    entry = table.get(name)
     if entry is None:
         if not name:
             r.fail(f"expected a command, got {r.found()}")

@@ -18,6 +18,7 @@ from ..selectors import target
 from ..items import item_predicate, slot
 from .data_targets import data_target
 from .items import item_target
+from ..relocate import READ, READ_MAX, NotRelocatable, relocate
 from .dispatch import rest_command
 
 _ANCHORS = ("eyes", "feet")
@@ -257,9 +258,35 @@ def _fast_score_matches(r: Reader, m, sub_loc):
     return ast.IfScoreMatches.new(sub_loc, m.group(1) == "unless", holder, m.group(3), int_range(r))
 
 
+# Where a subcommand may end: a space, a subcommand's name (or run) and a space before more text.
+# A subcommand read cleanly up to such a boundary is remembered with its text, the space before it
+# included (so no command text, which starts without one, is taken for it); see _recall.
+_BOUNDARY = re.compile(r" (?:as|at|positioned|rotated|facing|anchored|align|in|on|summon|if|unless|store|run) (?=.)")
+
+
+def _recall(r: Reader, read: dict, pos: int, boundary):
+    """The subcommand at ``pos`` (its space) when the text up to ``boundary`` (the next boundary)
+    was read cleanly as one subcommand before, moved here (the cursor put at the boundary); else None.
+
+    A subcommand's reader reads a fixed number of arguments and never looks past the space that ends
+    the last one, so the same text followed by any boundary reads the same. The first boundary may be
+    an argument (``positioned as @s``): such a subcommand is not found, and read as usual."""
+    known = read.get(r.text[pos:boundary.start()])
+    if not known:
+        return None
+    try:
+        found = relocate(known[0], r.path, r.line, r.col + pos + 1 - known[1])
+    except NotRelocatable:
+        read[r.text[pos:boundary.start()]] = False
+        return None
+    r.pos = boundary.start()
+    return found
+
+
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
     text = r.text
+    read = READ.get(r.version) if type(r) is Reader else None  # a joined line's offsets span lines
     condition_last = False  # the chain may end after a condition
     while True:
         pos = r.pos
@@ -268,20 +295,30 @@ def execute(r: Reader, loc) -> ast.Command:
         if text.startswith(" run ", pos) and pos + 5 < r.end:
             r.pos = pos + 5
             return ast.Execute.new(loc, tuple(subcommands), rest_command(r))
-        m = _FAST_SCORE_MATCHES.match(text, pos)
-        if m is not None:
-            fast = _fast_score_matches(r, m, r.loc_at(pos + 1))
-            if fast is not None:
-                subcommands.append(fast)
-                condition_last = True
+        boundary = _BOUNDARY.search(text, pos + 1) if read is not None else None
+        if boundary is not None:
+            recalled = _recall(r, read, pos, boundary)
+            if recalled is not None:
+                subcommands.append(recalled)
+                condition_last = isinstance(recalled, ast.Condition)
                 continue
-        name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
-        if name == "run":
-            return ast.Execute.new(loc, tuple(subcommands), rest_command(r))
-        subcommands.append(_SUBCOMMANDS[name](r, r.loc_at(pos + 1)))
-        condition_last = name in _CONDITION_SUBCOMMANDS
-        if r.pos == r.end and not condition_last:
-            r.fail(f"incomplete execute: expected another subcommand or 'run' after '{name}'")
+        warned = len(r.warnings)
+        m = _FAST_SCORE_MATCHES.match(text, pos)
+        fast = _fast_score_matches(r, m, r.loc_at(pos + 1)) if m is not None else None
+        if fast is not None:
+            subcommands.append(fast)
+            condition_last = True
+        else:
+            name = r.keyword_then_space(_ALL, "execute subcommand", _what_follows)
+            if name == "run":
+                return ast.Execute.new(loc, tuple(subcommands), rest_command(r))
+            subcommands.append(_SUBCOMMANDS[name](r, r.loc_at(pos + 1)))
+            condition_last = name in _CONDITION_SUBCOMMANDS
+            if r.pos == r.end and not condition_last:
+                r.fail(f"incomplete execute: expected another subcommand or 'run' after '{name}'")
+        if (boundary is not None and boundary.start() == r.pos and len(r.warnings) == warned
+                and len(read) < READ_MAX):
+            read.setdefault(text[pos:r.pos], (subcommands[-1], r.col + pos + 1))  # False stays
 
 
 PARSERS = {"execute": execute}

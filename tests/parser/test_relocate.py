@@ -141,3 +141,38 @@ def test_a_rest_with_a_warning_or_on_joined_lines_is_read_each_time():
     joined = "scoreboard players set @s a 1\nexecute as @s \\\n  run scoreboard players set @s a 1\n"
     function, _ = parse_function(joined, "a.mcfunction", "t:a", version)
     assert function.commands[1].run.loc[1:] == (3, 7) and function.commands[1].run.targets.loc[1:] == (3, 30)
+
+
+def test_a_subcommand_read_before_is_relocated_to_a_fresh_read():
+    # a subcommand read cleanly up to a boundary (a space, a subcommand's name or run, a space) is
+    # remembered with its text and moved where the same text comes again before any boundary
+    version = (1, 21, 0)
+    lines = ["execute as @e[tag=a,limit=2] at @s run say x",
+             "execute as @e[tag=a,limit=2] if score @s o matches 1.. run say y",
+             "  execute positioned as @s as @e[tag=a,limit=2] store result score @s o run say z",
+             "execute if score @s o matches 1.. as @e[tag=a,limit=2] run say w",
+             "execute store result score @s o if entity @e[nbt={a:1b}] as @s positioned as @s run say v",
+             "execute if entity @e[nbt={a:1b}] unless score @s o matches 1..",
+             "execute positioned as @s if score @s o matches 1.. run say u"]
+    fresh = []
+    for i, line in enumerate(lines):
+        forget_read_lines()
+        fresh.append(parse_function("\n" * i + line + "\n", "a.mcfunction", "t:a", version)[0].commands[0])
+    forget_read_lines()
+    function, diagnostics = parse_function("".join(f"{line}\n" for line in lines), "a.mcfunction", "t:a", version)
+    assert not diagnostics and list(function.commands) == fresh
+    read = memory.READ[version]
+    assert type(read[" as @e[tag=a,limit=2]"]) is tuple and type(read[" if score @s o matches 1.."]) is tuple
+    assert read[" if entity @e[nbt={a:1b}]"] is False  # an NBT value: read each time
+    assert not _mutables(function.commands[4], {}).keys() & _mutables(function.commands[5], {}).keys()
+    assert " positioned" not in read and " positioned as @s" not in read  # its first boundary is its argument
+
+
+def test_a_subcommand_with_a_warning_is_read_each_time():
+    # 26.1.2 has no registries of its own here: an id missing from 26.1's is a warning, every time
+    version = (26, 1, 2)
+    forget_read_lines()
+    line = "execute summon minecraft:no_such_mob as @s run say a"
+    _, diagnostics = parse_function(f"{line}\n  {line}\n", "a.mcfunction", "t:a", version)
+    assert [(d.severity, d.line, d.col) for d in diagnostics] == [("warning", 1, 16), ("warning", 2, 18)]
+    assert " summon minecraft:no_such_mob" not in memory.READ[version]
