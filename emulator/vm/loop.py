@@ -79,9 +79,12 @@ import math
 from collections import namedtuple
 
 import numpy as np
+from llvmlite import ir
 from numba import njit, typeof, types
 from numba.core import cgutils
-from numba.extending import intrinsic, overload
+from numba.core.typing.templates import AttributeTemplate
+from numba.extending import (infer_getattr, intrinsic, lower_getattr_generic, models, overload,
+                             register_model)
 
 from emulator.world import java_random, mth, rotation, semantics
 
@@ -1012,38 +1015,81 @@ def machine(arrays: Machine) -> tuple[np.ndarray, types.NamedTuple]:
     return np.array(words, dtype=np.int64), types.NamedTuple([typeof(array) for array in arrays], Machine)
 
 
+class MachineRef(types.Type):
+    """A machine in ``run``: its descriptor's address (an int); each ``m.FIELD`` makes that array
+    from the descriptor where it is read. (A tuple of the 34 arrays, each field a struct of seven
+    words, made the loop about 20 % slower: LLVM kept it in memory.)"""
+
+    def __init__(self, arrays: types.NamedTuple):
+        self.arrays = arrays
+        super().__init__(name=f"MachineRef({arrays})")
+
+
+register_model(MachineRef)(lambda dmm, fe_type: models.PrimitiveModel(dmm, fe_type, ir.IntType(64)))
+
+
+@infer_getattr
+class _MachineFields(AttributeTemplate):
+    key = MachineRef
+
+    def generic_resolve(self, machine, attr):
+        if attr in MACHINE_FIELDS:
+            return machine.arrays.types[MACHINE_FIELDS.index(attr)]
+
+
+@lower_getattr_generic(MachineRef)
+def _machine_field(context, builder, machine, address, attr):
+    """The array ``attr`` of the machine whose descriptor is at ``address``: a view numba keeps no
+    count for (no meminfo). Every helper call counted each array it is passed up on entry and down
+    on exit, an atomic operation each, which cost more than the helpers' work (a selector over 16
+    entities ran about 10x slower); Python holds the arrays while ``run`` runs."""
+    index = MACHINE_FIELDS.index(attr)
+    array_type = machine.arrays.types[index]
+    first = sum(1 + 2 * other.ndim for other in machine.arrays.types[:index])
+    words = builder.inttoptr(address, ir.IntType(64).as_pointer())
+
+    def word(k):
+        return builder.load(builder.gep(words, [context.get_constant(types.intp, first + k)]))
+
+    array = cgutils.create_struct_proxy(array_type)(context, builder)  # numba's array: its fields
+    array.meminfo = cgutils.get_null_value(array.meminfo.type)
+    array.parent = cgutils.get_null_value(array.parent.type)
+    array.data = builder.inttoptr(word(0), array.data.type)
+    shape = [word(1 + k) for k in range(array_type.ndim)]
+    array.shape = cgutils.pack_array(builder, shape)
+    array.strides = cgutils.pack_array(builder, [word(1 + array_type.ndim + k) for k in range(array_type.ndim)])
+    array.nitems = functools.reduce(builder.mul, shape, context.get_constant(types.intp, 1))
+    array.itemsize = context.get_constant(types.intp, context.get_abi_sizeof(context.get_data_type(array_type.dtype)))
+    return array._getvalue()
+
+
 @intrinsic
-def _machine_at(typingctx, address, machine_type):
-    """The arrays of the machine whose descriptor is at ``address`` (:func:`machine`), typed by
-    ``machine_type``. They are views numba keeps no count for (no meminfo): every helper call
-    counted each array it is passed up on entry and down on exit, an atomic operation each, which
-    cost more than the helpers' work (a selector over 16 entities ran about 10x slower). Python
-    holds the arrays while ``run`` runs."""
-    instance = machine_type.instance_type
+def _flat(typingctx, array):
+    """The C-contiguous ``array`` as one row over the same data. (numba's ``reshape`` calls a helper
+    of ``numba.np.arrayobj``, and loading a cached loop that uses it imports that module: about 0.06 s
+    of a warm start.)"""
+    if not isinstance(array, types.Array) or array.layout != "C":
+        return None
+    row = array.copy(ndim=1)
 
     def codegen(context, builder, signature, args):
-        word_type = context.get_value_type(types.intp)
-        words = builder.inttoptr(args[0], word_type.as_pointer())
-        at = iter(range(sum(1 + 2 * array.ndim for array in instance.types)))
+        whole = cgutils.create_struct_proxy(array)(context, builder, value=args[0])
+        out = cgutils.create_struct_proxy(row)(context, builder)
+        for name in ("meminfo", "parent", "nitems", "itemsize", "data"):
+            setattr(out, name, getattr(whole, name))
+        out.shape = cgutils.pack_array(builder, [whole.nitems])
+        out.strides = cgutils.pack_array(builder, [whole.itemsize])
+        value = out._getvalue()
+        context.nrt.incref(builder, row, value)  # a new reference to the same memory
+        return value
+    return row(array), codegen
 
-        def word():
-            return builder.load(builder.gep(words, [context.get_constant(types.intp, next(at))]))
 
-        arrays = []
-        for array_type in instance.types:
-            array = cgutils.create_struct_proxy(array_type)(context, builder)  # numba's array: its fields
-            array.meminfo = cgutils.get_null_value(array.meminfo.type)
-            array.parent = cgutils.get_null_value(array.parent.type)
-            array.data = builder.inttoptr(word(), array.data.type)
-            shape = [word() for _ in range(array_type.ndim)]
-            array.shape = cgutils.pack_array(builder, shape)
-            array.strides = cgutils.pack_array(builder, [word() for _ in range(array_type.ndim)])
-            array.nitems = functools.reduce(builder.mul, shape, context.get_constant(types.intp, 1))
-            array.itemsize = context.get_constant(types.intp, context.get_abi_sizeof(
-                context.get_data_type(array_type.dtype)))
-            arrays.append(array._getvalue())
-        return context.make_tuple(builder, instance, arrays)
-    return instance(address, machine_type), codegen
+@intrinsic
+def _machine_at(typingctx, address, machine_type):
+    """The machine whose descriptor is at ``address`` (:func:`machine`), of type ``machine_type``."""
+    machine = MachineRef(machine_type.instance_type)
+    return machine(address, machine_type), lambda context, builder, signature, args: args[0]
 
 
 @njit(cache=True, error_model="numpy")
@@ -1101,9 +1147,9 @@ def run(address, machine_type):
     # the scores as rows of one flat array each, indexed h * ncols + o (values and present have one
     # shape: the scoreboard grows them together): one index for both, computed once per score
     ncols = np.uint64(values.shape[1])
-    cflat = code.reshape(code.size)  # rows of WIDTH: an instruction's operands at a constant offset
-    vflat = values.reshape(values.size)
-    pflat = present.reshape(present.size)
+    cflat = _flat(code)  # rows of WIDTH: an instruction's operands at a constant offset
+    vflat = _flat(values)
+    pflat = _flat(present)
     pc = regs[R_PC]
     quota = regs[R_QUOTA]
     depth = regs[R_DEPTH]
