@@ -51,8 +51,10 @@ AIR = "minecraft:air"
 AIR_TYPES = {"minecraft:air", "minecraft:cave_air", "minecraft:void_air"}
 MODIFICATION_LIMIT = 32768  # gamerule commandModificationBlockLimit default
 # blocks whose new block entity saves nothing (BannerBlockEntity without patterns or name,
-# SkullBlockEntity without a profile, a sound or a name, LecternBlockEntity without a book)
-_EMPTY_ENTITY_SUFFIXES = ("_banner", "_skull", "_head", "minecraft:lectern")
+# SkullBlockEntity without a profile, a sound or a name, LecternBlockEntity without a book,
+# BrushableBlockEntity without an item or loot table)
+_EMPTY_ENTITY_SUFFIXES = ("_banner", "_skull", "_head", "minecraft:lectern", "minecraft:suspicious_sand",
+                          "minecraft:suspicious_gravel")
 
 
 _ID = re.compile(r"#?[a-z0-9_.\-]+(?::[a-z0-9_.\-/]+)?")

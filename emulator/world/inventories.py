@@ -81,6 +81,8 @@ _UNMODELLED = {**{f"minecraft:{n}": range(300, 308) for n in ("villager", "wande
                    "horse donkey mule llama trader_llama camel skeleton_horse zombie_horse").split()}}
 
 CRAFTER = "minecraft:crafter"
+# campfires keep four items in ``Items`` but are no Container (Clearable): item commands refuse them
+CAMPFIRES = frozenset({"minecraft:campfire", "minecraft:soul_campfire"})
 CONTAINER_SIZES = {
     **{f"minecraft:{n}": 27 for n in ("chest", "trapped_chest", "barrel", "shulker_box")},
     **{f"minecraft:{c}_shulker_box": 27 for c in COLOURS},
@@ -342,6 +344,8 @@ def default_block_entity(block_id: str, triggered: bool = False) -> Compound | N
     left and whether it is triggered too)."""
     if block_id in SINGLE_ITEM_BLOCKS:
         return Compound()
+    if block_id in CAMPFIRES:  # CampfireBlockEntity.saveAdditional: its four items and cooking times
+        return Compound(Items=List(), CookingTimes=IntArray([Int(0)] * 4), CookingTotalTimes=IntArray([Int(0)] * 4))
     if block_id == CRAFTER:  # CrafterBlockEntity.saveAdditional; newBlockEntity: triggered as the state
         return Compound(crafting_ticks_remaining=Int(0), Items=List(), triggered=Int(int(triggered)),
                         disabled_slots=IntArray())

@@ -135,3 +135,22 @@ def test_setblock_and_if_block_see_the_default_state(tmp_path):
     assert [emu.score(h, "o") for h in ("#north", "#again", "#lever")] == [1, 0, 1]
     assert str(emu.state.blocks.get((0, 1, 0))) == (
         "minecraft:oak_stairs[facing=north,half=bottom,shape=straight,waterlogged=false]")
+
+
+def test_campfires_and_suspicious_blocks_have_their_block_entities(tmp_path):
+    # CampfireBlockEntity.saveAdditional: Items (always), CookingTimes and CookingTotalTimes of its
+    # four slots; it is no Container, so item commands refuse it (ItemCommands.getContainer);
+    # BrushableBlockEntity saves its item only when it has one
+    from emulator import Emulator
+    from tests.world.world_emulator import make_pack
+    emu = Emulator(backend="python")
+    emu.load(make_pack(tmp_path / "p", {
+        "t:go": "scoreboard objectives add o dummy\nsetblock 0 0 0 campfire\nsetblock 1 0 0 suspicious_sand\n"
+                "execute store success score #item o run item replace block 0 0 0 container.0 with stone\n"
+                "execute store success score #data o run data get block 1 0 0"}))
+    emu.call("t:go")
+    fire = emu.state.blocks.entity((0, 0, 0))
+    assert list(fire["Items"]) == [] and [int(v) for v in fire["CookingTimes"]] == [0, 0, 0, 0]
+    assert [int(v) for v in fire["CookingTotalTimes"]] == [0, 0, 0, 0]
+    assert emu.state.blocks.entity((1, 0, 0)) == {}
+    assert (emu.score("#item", "o"), emu.score("#data", "o")) == (0, 1)
