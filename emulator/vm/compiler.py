@@ -42,7 +42,7 @@ from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAlign, ExAnchored, ExAs, ExAt, ExFacing, ExFacingEntity, ExRotated, Execute, ExOn, ExPositioned, ExPositionedAs,
     ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
-    IfPredicate, PathIndex, PathKey, Return, Selector, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
+    IfPredicate, PathIndex, PathKey, Return, Selector, SourceFrom, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
     StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec2, Vec3, Coord, Wildcard,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN
@@ -144,6 +144,8 @@ class Compiler:
                       operand=3)
         elif isinstance(cmd, DataModify) and (leaf := self.set_leaf(cmd)) is not None:
             self.host(vm.OP_SETLEAF, cmd, *leaf, operand=4)
+        elif isinstance(cmd, DataModify) and (leaves := self.copy_leaves(cmd)) is not None:
+            self.host(vm.OP_COPYLEAF, cmd, *leaves, operand=3)
         elif isinstance(cmd, DataGet) and (leaf := self.leaf(cmd.target, cmd.path)) is not None:
             self.host(vm.OP_GETLEAF, cmd, leaf, self.program.intern_float(1.0 if cmd.scale is None else cmd.scale),
                       operand=3)
@@ -483,6 +485,15 @@ class Compiler:
         if leaf is None:
             return None
         return leaf, number_code(cmd.source.value), self.program.intern_float(float(cmd.source.value))
+
+    def copy_leaves(self, cmd: DataModify) -> tuple[int, int] | None:
+        """(leaf, source leaf) of ``data modify storage S P set from storage S2 P2``, both paths of
+        keys and list indices (a copy of one tag: NbtPathArgument.set of the last value found)."""
+        source = cmd.source
+        if cmd.mode != "set" or not isinstance(source, SourceFrom) or source.path is None:
+            return None
+        leaf, copied = self.leaf(cmd.target, cmd.path), self.leaf(source.source, source.path)
+        return None if leaf is None or copied is None else (leaf, copied)
 
     def leaf_test(self, st: IfData) -> tuple[int, int, int] | None:
         """(leaf, type, number) of ``if|unless data storage S {K:N}`` (one key, a number the VM mirrors),

@@ -126,9 +126,12 @@ OP_GETFIELD = 14  # [entry] a: column of the entity floats (entity_table EF_*), 
 OP_SETLEAF = 15  # [entry] a: storage leaf (vm.storage_leaves), b: its number's type (LEAF_*), c: the number (index into
 # floats), d: host op index. `data modify storage S P set value N`: fails when the same number is there ("Nothing
 # changed"); no number there goes to the host (which creates the path), and so does a list's element of another type
-OP_GETLEAF = 16  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
+OP_COPYLEAF = 16  # [entry] a: storage leaf, b: the source's leaf, c: host op index. `data modify storage S P set from
+# storage S2 P2`: the source's number with its type (a copy), failing when the same is there; no number at either, or
+# a list's element given another type, goes to the host
+OP_GETLEAF = 17  # [entry] a: storage leaf, b: scale (index into floats), c: host op index. `data get storage S P
 # [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host
-OP_TP = 17  # [entry] a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: flags (the
+OP_TP = 18  # [entry] a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: flags (the
 # relative `~` axes' bits, TP_LOCAL, TP_SELF, TP_ROT and its relative angles TP_REL_YAW, TP_REL_PITCH), d: kind
 # (TPF_*), e: its operand. `tp [SEL] X Y Z [YAW PITCH | facing X Y Z | facing entity E [ANCHOR]]` and `tp [SEL] E`:
 # every target to the same position (the execution position plus the relative parts, ^ from its anchor, or E's), each
@@ -137,86 +140,86 @@ OP_TP = 17  # [entry] a: selector, b: x (index into floats; y, z and the rotatio
 # motion; outside the spawnable bounds, or E not exactly one entity, the command fails. Always followed by the
 # command's HOST, which runs it instead when a target goes to another level (the context's or E's: the host moves it
 # in the order); TP skips it otherwise
-OP_HOST = 18  # [entry] a: host op index. A final command run by Python (charged here, per context)
-OP_SELHOLDERS = 19  # [free] a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's target holder and
+OP_HOST = 19  # [entry] a: host op index. A final command run by Python (charged here, per context)
+OP_SELHOLDERS = 20  # [free] a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's target holder and
 # objective. The holders of the selector's entities for the next op's HOLDER_SELBUF operand: targets in
 # selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them; none read when the operation fails on its
 # targets first). A separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
-OP_IFSCORE = 20  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
-OP_IFMATCH = 21  # [condition] a h, b o, c lo, d hi, f negated, g final
-OP_IFENT = 22  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
-OP_IFLEAF = 23  # [condition] a: storage leaf, b: type (LEAF_*), c: number (index into floats), f negated, g final.
+OP_IFSCORE = 21  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
+OP_IFMATCH = 22  # [condition] a h, b o, c lo, d hi, f negated, g final
+OP_IFENT = 23  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
+OP_IFLEAF = 24  # [condition] a: storage leaf, b: type (LEAF_*), c: number (index into floats), f negated, g final.
 # `if|unless data storage S {K:N}`: the leaf holds N; b = 0: `if|unless data storage S a.b.c`: the path leads to a tag
-OP_IFDIM = 24  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
+OP_IFDIM = 25  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
 # context's dimension (ctx_dim) is D
-OP_CHKOBJ = 25  # [stage] a o, b forked, c: the holder is 1 @s, 2 `*`. The `store ... score` stage: fails if o does not
+OP_CHKOBJ = 26  # [stage] a o, b forked, c: the holder is 1 @s, 2 `*`. The `store ... score` stage: fails if o does not
 # exist, or (c = 1) without an executor ("No entity was found": the command, or in a forked chain this context), or (c
 # = 2, first) when `*` names nobody
-OP_STORE = 26  # [free] a: 0 result / 1 success, b h (a name, @s or HOLDER_TRACKED: every holder `*` names), c o
-OP_CALL = 27  # [entry] a: function id
-OP_CALLREG = 28  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
-OP_FEND = 29  # [free] end of a function body: return without a result
-OP_RETV = 30  # [check] a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain
+OP_STORE = 27  # [free] a: 0 result / 1 success, b h (a name, @s or HOLDER_TRACKED: every holder `*` names), c o
+OP_CALL = 28  # [entry] a: function id
+OP_CALLREG = 29  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
+OP_FEND = 30  # [free] end of a function body: return without a result
+OP_RETV = 31  # [check] a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain
 # every context returns (BuildContexts runs the custom command for each one): RETV counts the returns in R_NRET and
 # goes on; the chain's RETPEND then ends the function
-OP_RETFAIL = 31  # [check] b: as RETV. `return fail`
-OP_RETRES = 32  # [check] end of `return run CMD`: return CMD's result (fail if it had none)
-OP_RETNONE = 33  # [free] abort target of `return run`: end the function without a result
-OP_RETPEND = 34  # [free] after a forked chain ending in `return N|fail`: return, if some context did
-OP_RETIFHAS = 35  # [free] a: pc after the calls. `return run function #tag`: a member that returned skips the later
+OP_RETFAIL = 32  # [check] b: as RETV. `return fail`
+OP_RETRES = 33  # [check] end of `return run CMD`: return CMD's result (fail if it had none)
+OP_RETNONE = 34  # [free] abort target of `return run`: end the function without a result
+OP_RETPEND = 35  # [free] after a forked chain ending in `return N|fail`: return, if some context did
+OP_RETIFHAS = 36  # [free] a: pc after the calls. `return run function #tag`: a member that returned skips the later
 # members (the discard drops them); the chain's stores and RETRES follow
-OP_IFFN_STEP = 36  # [free] a: pc after the calls. A returned member ends the isolated call
-OP_IFNOFN = 37  # [free] a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no
+OP_IFFN_STEP = 37  # [free] a: pc after the calls. A returned member ends the isolated call
+OP_IFNOFN = 38  # [free] a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no
 # context) skips the rest of the call (the command fails)
-OP_TAGBEGIN = 38  # [free] acc_any = 0, acc_sum = 0
-OP_TAGACC = 39  # [free] add the last call's result to the accumulator
-OP_TAGEND = 40  # [check] the tag's result: the sum, if any member returned
-OP_IFFN_BEGIN = 41  # [free] has = 0
-OP_IFFN_END = 42  # [free] a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that
+OP_TAGBEGIN = 39  # [free] acc_any = 0, acc_sum = 0
+OP_TAGACC = 40  # [free] add the last call's result to the accumulator
+OP_TAGEND = 41  # [check] the tag's result: the sum, if any member returned
+OP_IFFN_BEGIN = 42  # [free] has = 0
+OP_IFFN_END = 43  # [free] a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that
 # returned in several contexts passes the context once per return (ST_REPEAT)
-OP_FAIL = 43  # [operand] a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
-OP_RESULT = 44  # [free] a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
-OP_JMPDEAD = 45  # [free] a: target. `run return run ...` with no context left: skip it
-OP_STOP = 46  # [free] abort the chain without an error (`if function` on an empty tag)
-OP_STOREFIELD = 47  # [free] a: column (EF_*), b: 0 result / 1 success, c: scale (index into floats), d: host op index.
+OP_FAIL = 44  # [operand] a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
+OP_RESULT = 45  # [free] a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
+OP_JMPDEAD = 46  # [free] a: target. `run return run ...` with no context left: skip it
+OP_STOP = 47  # [free] abort the chain without an error (`if function` on an empty tag)
+OP_STOREFIELD = 48  # [free] a: column (EF_*), b: 0 result / 1 success, c: scale (index into floats), d: host op index.
 # `store ... entity @s PATH TYPE S` into a field the table keeps, as Entity.load reads it back (Pos clamped, Motion
 # over 10 dropped, Rotation % 360, a display's transformation as float); another type's transformation goes to the
 # host; a player's data is not modified
-OP_MACRO = 48  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
-OP_HOSTSTAGE = 49  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
-OP_HOSTGUARD = 50  # [stage] a: selector, b: negated. Before the HOSTSTAGE of `as|at|positioned as|rotated as|facing
+OP_MACRO = 49  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
+OP_HOSTSTAGE = 50  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
+OP_HOSTGUARD = 51  # [stage] a: selector, b: negated. Before the HOSTSTAGE of `as|at|positioned as|rotated as|facing
 # entity|if|unless entity SEL` whose SEL the host evaluates: a selector finding every entity the host would test its
 # own arguments on (SelectorTables.guard); when it finds none, the stage makes no context (`unless`: keeps this one),
 # charged here, and the HOSTSTAGE is skipped
-OP_HOSTSTORE = 51  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 52  # [stage] a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind
+OP_HOSTSTORE = 52  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_ASSTAGE = 53  # [stage] a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind
 # (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as, rotated as; then FACING_FEET, FACING_EYES: `facing
 # entity SEL feet|eyes`). One context per entity found, made by the VM (or one it made earlier in the root that still
 # holds: as_cache); ST_GROWCTX when the context table or the fork stack is full
-OP_CTXSTAGE = 53  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
+OP_CTXSTAGE = 54  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
 # (flags as OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; ANCHOR_*; the axes' bits), c: x or the yaw
 # (index into floats; the rest follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, `anchored
 # eyes|feet`, `align AXES`, `facing X Y Z` (from the anchor): the context changed so (made by the VM, or one it made
 # before from the same context and pc)
-OP_FIELDSTAGE = 54  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
+OP_FIELDSTAGE = 55  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
 # TYPE S`: fails without an executor) or a STORELEAF
-OP_STORELEAF = 55  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
+OP_STORELEAF = 56  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
 # host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there, or a list's element of
 # another type, goes to the host
-OP_IFRUN = 65  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
+OP_IFRUN = 66  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
 # O matches LO..HI run CMD` where CMD is one instruction (a score command on names, a function call) and the chain has
 # no other stage: CMD's entry check and the condition stage in one (charged as the stage), then CMD, or the pc after
 # it; no ENDCMD follows
-OP_RESUME = 66  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
+OP_RESUME = 67  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
 # the registers the command that earned it left
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
-FIRST_LINE, LAST_LINE = 8, 17
-FIRST_CONDITION, LAST_CONDITION = 20, 24
-FIRST_CALL, LAST_CALL = 27, 28
-FIRST_RETURN, LAST_RETURN = 29, 34
-FIRST_RETURNED, LAST_RETURNED = 35, 36
-FIRST_OPERATION, LAST_OPERATION = 56, 64
+FIRST_LINE, LAST_LINE = 8, 18
+FIRST_CONDITION, LAST_CONDITION = 21, 25
+FIRST_CALL, LAST_CALL = 28, 29
+FIRST_RETURN, LAST_RETURN = 30, 35
+FIRST_RETURNED, LAST_RETURNED = 36, 37
+FIRST_OPERATION, LAST_OPERATION = 57, 65
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -1815,17 +1818,18 @@ def run(address, machine_type):
                     ok = 1
                     val = _mth_floor(efloats[e, column] * floats[code[pc, 2]])
                 pc += 1
-            elif op == OP_SETLEAF:
+            elif op == OP_SETLEAF or op == OP_COPYLEAF:
                 leaf = code[pc, 1]
-                if lmeta[leaf, 0] == 0 or (lmeta[leaf, 2] == 2 and lmeta[leaf, 0] != code[pc, 2]):
+                kind = code[pc, 2] if op == OP_SETLEAF else lmeta[code[pc, 2], 0]
+                if lmeta[leaf, 0] == 0 or kind == 0 or (lmeta[leaf, 2] == 2 and lmeta[leaf, 0] != kind):
                     status = ST_HOST  # no number there (the host creates the path or fails), a list of another type
                     break
                 has = 1
                 ok = 0
                 val = 0
-                v = floats[code[pc, 3]]
-                if lmeta[leaf, 0] != code[pc, 2] or lvalues[leaf] != v:  # else "Nothing changed"
-                    lmeta[leaf, 0] = code[pc, 2]
+                v = floats[code[pc, 3]] if op == OP_SETLEAF else lvalues[code[pc, 2]]
+                if lmeta[leaf, 0] != kind or lvalues[leaf] != v:  # else "Nothing changed"
+                    lmeta[leaf, 0] = kind
                     lmeta[leaf, 1] = 1
                     lvalues[leaf] = v
                     ok = 1

@@ -91,6 +91,10 @@ _ROWS = [
                                    "N`: fails when the same number is there (\"Nothing changed\"); no number there "
                                    "goes to the host (which creates the path), and so does a list's element of "
                                    "another type"),
+        ("COPYLEAF", "iix", ENTRY, "a: storage leaf, b: the source's leaf, c: host op index. `data modify storage S P "
+                                   "set from storage S2 P2`: the source's number with its type (a copy), failing when "
+                                   "the same is there; no number at either, or a list's element given another type, "
+                                   "goes to the host"),
         ("GETLEAF", "idx", ENTRY, "a: storage leaf, b: scale (index into floats), c: host op index. `data get "
                                   "storage S P [SCALE]`: Mth.floor(number * SCALE); no number there goes to the host"),
         ("TP", "sdiii", ENTRY, "a: selector, b: x (index into floats; y, z and the rotation's yaw, pitch follow), c: "

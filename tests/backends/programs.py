@@ -215,7 +215,12 @@ STORAGE_COMMANDS = ("data merge storage t:s {a:1,l:[1,2]}", "data modify storage
                     "data modify storage t:s l[0] set value 2.5d", "data modify storage t:s l[-1] set value 4",
                     "data merge storage t:s {m:[{x:1},{x:2b}],ia:[I;5,6]}", "data get storage t:s m[-1].x 3",
                     "data modify storage t:s m[0].x set value 9", "data get storage t:s ia[1]",
-                    "data remove storage t:s l[-1]", "data modify storage t:s l prepend value 1b")
+                    "data remove storage t:s l[-1]", "data modify storage t:s l prepend value 1b",
+                    # copies between numbers (the VM's when both are mirrored numbers: the type goes along)
+                    "data modify storage t:s n set from storage t:s d", "data modify storage t:s d set from storage t:s f",
+                    "data modify storage t:s l[0] set from storage t:s n", "data modify storage t:s m[0].x set from storage t:s l[-1]",
+                    "data modify storage t:s f set from storage t:s missing", "data modify storage t:s n set from storage t:s n",
+                    "data modify storage t:s ia[0] set from storage t:s n", "data modify storage t:s d set from storage t:s m[1].x")
 # `if|unless data storage t:s PATH`
 DATA_CONDITIONS = ('a', 'l[]', 'l[{}]', 'n', 'missing', '{n:3}', '{f:1b}', '{d:0.5d}', '{a:1}', 'l[0]', 'l[-1]', 'l[2]',
                    'm[-1].x', 'ia[1]')
