@@ -158,8 +158,8 @@ class _Program:
         return 1
 
     def field_team(self, wanted) -> int:
-        if not isinstance(wanted, str):
-            raise _Host
+        if not isinstance(wanted, str) or not wanted:
+            raise _Host  # an empty name: the table keeps no team and an empty one alike (-1)
         self.rows.append((TEST_INT, EI_TEAM, self.tables.table.name_id(wanted), 0))
         return 1
 
