@@ -411,9 +411,10 @@ class Compiler:
         return self.selectors.guard(st.targets)
 
     def this_predicate(self, st: IfPredicate) -> int | None:
-        """The KIND_THIS selector row of ``if|unless predicate ID`` when the VM evaluates it (an
-        inline predicate, an unknown id and what the VM does not read stay with the host)."""
-        if self.selectors is None or st.predicate[:1] in "{[":
+        """The KIND_THIS selector row of ``if|unless predicate ID|{...}`` when the VM evaluates it
+        (an unknown id, an inline predicate the game refuses and what the VM does not read stay
+        with the host)."""
+        if self.selectors is None:
             return None
         return self.selectors.this_predicate(st.predicate)
 

@@ -13,7 +13,7 @@ Selectors the VM evaluates (:meth:`SelectorTables.selector`): ``@e @a @s @p @n``
 ``java.util.Random``, :mod:`emulator.world.java_random`), ``predicate`` of the predicates
 :mod:`emulator.vm.predicate_rows` compiles, each limited to the context's level
 or searching every level as ``selectors.SelectorQuery`` does; and ``execute if predicate``'s
-test on the executor (:meth:`SelectorTables.this_predicate`). A selector row and its floats are
+test on the executor (a loaded predicate or an inline one) (:meth:`SelectorTables.this_predicate`). A selector row and its floats are
 laid out as :mod:`emulator.vm.loop` describes (``S_*``, ``SF_*``); its tests are rows of ``tests``
 (``TEST_*``). Every other selector (``nbt``, ``advancements``, a predicate the VM does not
 evaluate) stays with the host (returns None).
@@ -25,6 +25,7 @@ import math
 import numpy as np
 
 from mcfunction_parser import ast
+from mcfunction_parser.pack import conditions as pack_conditions
 from emulator.world import mth
 from emulator.vm.predicate_rows import compile_predicate
 from emulator.world.resources import Resources
@@ -131,10 +132,10 @@ class SelectorTables:
             kept.append(arg)
         return None  # the VM evaluates the whole selector
 
-    def this_predicate(self, predicate_id: str) -> int | None:
-        """The selector row (KIND_THIS) of ``execute if predicate ID`` when the VM evaluates the
-        predicate (ExecuteCommand.checkCustomPredicate: the executor as ``this``), else None."""
-        program = self._program(predicate_id)
+    def this_predicate(self, predicate: str) -> int | None:
+        """The selector row (KIND_THIS) of ``execute if predicate ID|{...}`` when the VM evaluates
+        the predicate (ExecuteCommand.checkCustomPredicate: the executor as ``this``), else None."""
+        program = self._inline(predicate) if predicate[:1] in "{[" else self._program(predicate)
         if program is None:
             return None
         row = [0] * SEL_WIDTH
@@ -144,9 +145,20 @@ class SelectorTables:
 
     def _program(self, predicate_id: str) -> tuple[int, int] | None:
         """(first row, rows) of a loaded predicate's program in the test rows, or None."""
-        value = self.resources.predicates.get(predicate_id)
-        rows = None if value is None or self.version is None else compile_predicate(
-            {"condition": "reference", "name": predicate_id}, self, self.version)
+        if predicate_id not in self.resources.predicates:
+            return None
+        return self._rows({"condition": "reference", "name": predicate_id})
+
+    def _inline(self, text: str) -> tuple[int, int] | None:
+        """An inline predicate's program: one that reads and that the game loads (else the host fails it)."""
+        try:
+            value = pack_conditions.parse_inline(text)
+        except ValueError:
+            return None
+        return None if self.version is None or pack_conditions.problem(value, self.version) else self._rows(value)
+
+    def _rows(self, value) -> tuple[int, int] | None:
+        rows = None if self.version is None else compile_predicate(value, self, self.version)
         if rows is None:
             return None
         key = tuple(rows)

@@ -134,7 +134,10 @@ ENTITY_MODIFIERS += ("as @e[predicate=t:marker]", "as @e[predicate=!t:not_marker
                      "if predicate t:loop", "as @e[tag=q,nbt={}]", "as @e[tag=n,predicate=t:loop]",
                      "as @e[tag=zz,predicate=t:loop]", "at @e[predicate=t:loop,tag=zz]", "unless entity @a[nbt={}]",
                      "as @r[predicate=t:nbt]", "if entity @e[tag=zz,tag=!a,nbt={Tags:[]}]",
-                     "positioned as @n[tag=m,predicate=t:nbt,sort=random]", "as @s[tag=a,advancements={t:x=true}]")
+                     "positioned as @n[tag=m,predicate=t:nbt,sort=random]", "as @s[tag=a,advancements={t:x=true}]",
+                     'if predicate {condition:"entity_scores",entity:"this",scores:{o:{min:1}}}',
+                     'unless predicate [{condition:"reference",name:"t:marker"},{condition:"inverted",term:{condition:"any_of",terms:[]}}]',
+                     'if predicate {condition:"entity_properties",entity:"this",predicate:{nbt:"{}"}}')
 SINGLE_ENTITY_HOLDERS = ("@s", "@e[tag=n,limit=1]", "@e[tag=m,sort=nearest,limit=1]", "@e[tag=m,sort=random,limit=1]")
 MULTI_ENTITY_HOLDERS = ("@e[tag=m]", "@e[tag=m,scores={o=..5}]", "@e[type=marker,limit=2]", "@e[tag=!n]",
                         "@e[sort=random,limit=2]")

@@ -60,11 +60,23 @@ def test_if_predicate_reads_the_executor_or_none(tmp_path):
     assert (scores.get("#server", 0), scores["#any"], scores["#scores"], scores["#other"], scores["#count"]) == (0, 1, 1, 2, 1)
 
 
+def test_inline_predicates(tmp_path):
+    """``execute if predicate {...}`` (1.20.5+): the inline condition, with the executor as ``this``."""
+    scores = _both(tmp_path, [
+        'execute as @e if predicate {condition:"entity_scores",entity:"this",scores:{o:{min:3}}} '
+        "run scoreboard players add #three o 1",
+        'execute as @e unless predicate [{condition:"reference",name:"t:marker"},{condition:"all_of",terms:[]}] '
+        "run scoreboard players add #other o 1"])
+    assert (scores["#three"], scores["#other"]) == (1, 3)
+
+
 def test_vm_predicates_run_no_host_op(tmp_path):
     from emulator import Emulator
     pack = write_pack(tmp_path / "pack", {"t:main": "\n".join(
         ["execute as @e[predicate=t:stand_or_o,predicate=!t:scores] run tag @s add q",
-         "execute if predicate t:all run scoreboard players add #x o 1"])}, files=FILES)
+         "execute if predicate t:all run scoreboard players add #x o 1",
+         'execute if predicate {condition:"inverted",term:{condition:"reference",name:"t:scores"}} run scoreboard players add #y o 1'])},
+        files=FILES)
     emu = Emulator(backend="numba")
     emu.load(pack)
     emu.call("t:main")
