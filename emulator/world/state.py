@@ -463,6 +463,22 @@ class Gamerules:
 
 
 # ---------------------------------------------------------------------- the world
+class WeakKeys(weakref.WeakKeyDictionary):
+    """A WeakKeyDictionary whose truth test skips ``__len__`` (a Python method subtracting the keys
+    being removed): the tick's steps ask each tick whether theirs is empty. True while only keys
+    being removed are left, which those steps then find gone."""
+
+    def __bool__(self) -> bool:
+        return bool(self.data)
+
+
+class WeakMembers(weakref.WeakSet):
+    """A WeakSet whose truth test skips ``__len__`` (see :class:`WeakKeys`)."""
+
+    def __bool__(self) -> bool:
+        return bool(self.data)
+
+
 @dataclass
 class WorldState:
     """Everything a run mutates. ``tick`` counts server ticks run so far (the first tick is 0
@@ -491,12 +507,12 @@ class WorldState:
     using_items: dict = field(default_factory=dict)  # player -> the item it is using (emulator.world.player_actions)
     item_cooldowns: dict = field(default_factory=dict)  # player -> cooldown group -> its end tick (item_cooldowns)
     # what the game keeps on its entities without saving it, held weakly (a removed entity drops out)
-    open_menus: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # player -> (level, pos) (block_use)
-    hurt_timers: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> [invulnerableTime, lastHurt] (living)
-    swung: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # player -> game time of its last swing (living)
-    last_hurt_by: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> (attacker, game time) (combat)
-    last_attacker: weakref.WeakKeyDictionary = field(default_factory=weakref.WeakKeyDictionary)  # entity -> (living attacker, game time) (combat)
-    dead_players: weakref.WeakSet = field(default_factory=weakref.WeakSet)  # players that died, until they respawn (combat)
+    open_menus: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (level, pos) (block_use)
+    hurt_timers: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> [invulnerableTime, lastHurt] (living)
+    swung: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> game time of its last swing (living)
+    last_hurt_by: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (attacker, game time) (combat)
+    last_attacker: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (living attacker, game time) (combat)
+    dead_players: weakref.WeakSet = field(default_factory=WeakMembers)  # players that died, until they respawn (combat)
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
     flying: list = field(default_factory=list)  # projectiles made in flight, checked at the next tick (world.projectiles)
     command_runner: object = None  # runs a command block's text: (text, Context) -> successes (set by the runtime)
