@@ -93,9 +93,10 @@ def _dataclass_relocator(cls: type):
         elif f.type == "Loc":
             args.append(f"new_loc((path, line, node.{f.name}[2] + shift))")
         else:  # another node, a tuple or a value of any type: its own relocator decides
-            body += [f"    v{i} = node.{f.name}",
-                     f"    g = R[type(v{i})]",
-                     f"    a{i} = v{i} if g is None else g(v{i}, path, line, shift)"]
+            look = [f"g = R[type(v{i})]", f"a{i} = v{i} if g is None else g(v{i}, path, line, shift)"]
+            if f.type.startswith("tuple["):  # an empty one (a selector without options) kept without a look
+                look = [f"if v{i} is EMPTY:", f"    a{i} = v{i}", "else:", *(f"    {s}" for s in look)]
+            body += [f"    v{i} = node.{f.name}", *(f"    {s}" for s in look)]
             args.append(f"a{i}")
             looked.append(i)
     if len(looked) == len(fields):  # no location of its own: the node itself when nothing inside moved
@@ -107,7 +108,7 @@ def _dataclass_relocator(cls: type):
         body += ["    self = B()", *(f"    self.{f.name} = {a}" for f, a in zip(fields, args)),
                  "    self.__class__ = cls", "    return self"]
     source = "def relocate(node, path, line, shift):\n" + "\n".join(body)
-    namespace = {"R": _RELOCATORS, "cls": cls, "B": builder, "new_loc": new_loc}
+    namespace = {"R": _RELOCATORS, "cls": cls, "B": builder, "new_loc": new_loc, "EMPTY": ()}
     exec(source, namespace)  # noqa: S102  (the source is built from the field names above)
     return namespace["relocate"]
 
