@@ -149,3 +149,23 @@ def test_loading_for_a_release_with_an_unreadable_report_is_an_error_naming_it(o
     assert "unreadable game report" in messages[0][1] and "--reports" in messages[0][1]
     # the function is still checked, with the shipped tree
     assert any(d.line == 1 and d.col == 10 and "game mode" in d.message for d in loaded.errors)
+
+
+def test_the_26_1_hotfixes_gate_the_same_commands_as_26_1(tmp_path, monkeypatch):
+    # 26.1.1 and 26.1.2 are hotfixes of 26.1 (Mojang's 26.1.2 post, 2026-04-09: a hotfix for "a
+    # couple of critical issues", a spectator exploit among them; the three read data pack format
+    # 101.1, see pack.versions), with no command or registry change listed in any source found: the
+    # parser gates the same commands in them, with 26.1's tree
+    # (their own minor release's: no stand-in note). Their registries are 26.1's, marked as another
+    # release's (an id missing from them is a warning, not an error), as for every release dpemu
+    # has no registries of its own for.
+    from mcfunction_parser.features import COMMANDS, command_problem
+
+    monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
+    releases = [(26, 1, 0), (26, 1, 1), (26, 1, 2)]
+    assert {RELEASE_FORMATS[v] for v in releases} == {RELEASE_FORMATS[(26, 1, 0)]}
+    gated = [{name for name in COMMANDS if command_problem(name, v) is None} for v in releases]
+    assert gated[0] == gated[1] == gated[2] and {"swing", "fetchprofile"} <= gated[0]
+    assert all(gamedata.tree_release(v) == (26, 1, 0) and gamedata.stand_in(v) is None for v in releases)
+    assert [gamedata.registry_release(v) for v in releases] == [((26, 1, 0), True), ((26, 1, 0), False),
+                                                                  ((26, 1, 0), False)]
