@@ -4,8 +4,9 @@ compute: the one :class:`LootContext`, number providers, ranges, and JSON values
 
 - ``number(provider, ctx)`` / ``integer(provider, ctx)``: NumberProvider.getFloat / getInt
   (constant, uniform, binomial, score, storage).
-- ``in_range(bounds, value, ctx=None)``: an exact number or ``{min, max}`` (MinMaxBounds; an
-  IntRange's bounds may be number providers, read with getInt). ``int_range(bounds, ctx)``.
+- ``in_range(bounds, value)``: MinMaxBounds, an exact number or ``{min, max}``.
+  ``in_int_range(bounds, value, ctx)`` / ``int_range(bounds, ctx)``: IntRange, whose bounds are
+  number providers read with getInt (a bound written 1.2 is Math.round(1.2F) = 1).
 - ``to_tag(json)`` / ``snbt_or_tag(value)``: JSON values and SNBT strings as NBT.
 - ``not_modelled(kind, name)``: the :class:`~emulator.world.errors.Unmodelled` failure naming what
   the emulator does not model (reported; a test meeting it is inconclusive).
@@ -202,26 +203,34 @@ def path_of(text: str):
         raise CommandFailure("dpemu.loot.invalid", f"the NBT path '{text}'", error.message, report=True) from None
 
 
-def int_range(value, ctx: LootContext | None) -> tuple[float | None, float | None]:
-    """IntRange / MinMaxBounds: a number, or {min, max}; a bound that is a number provider is
-    read with getInt (IntRange.test)."""
+def int_range(value, ctx: LootContext) -> tuple[int | None, int | None]:
+    """IntRange: an int (Codec.INT reads a JSON number with Number.intValue), or ``{min, max}``
+    whose bounds are number providers read with getInt: IntRange's predicate compares the value
+    with ``getInt`` of each bound, so ``{"min": 1.2}`` means at least Math.round(1.2F) = 1."""
     if isinstance(value, (int, float)) and not isinstance(value, bool):
-        return value, value
+        return int(value), int(value)
     if not isinstance(value, dict):
         raise not_modelled("range", repr(value))
     lo, hi = value.get("min"), value.get("max")
-    return _bound(lo, ctx), _bound(hi, ctx)
+    return (None if lo is None else integer(lo, ctx)), (None if hi is None else integer(hi, ctx))
 
 
-def _bound(value, ctx: LootContext | None) -> float | None:
-    if value is None or isinstance(value, (int, float)) and not isinstance(value, bool):
-        return value
-    return integer(value, ctx)
-
-
-def in_range(bounds, value: float, ctx: LootContext | None = None) -> bool:
-    """IntRange.test / MinMaxBounds.matches: inclusive, each bound optional."""
+def in_int_range(bounds, value: int, ctx: LootContext) -> bool:
+    """IntRange.test: inclusive, each bound optional."""
     lo, hi = int_range(bounds, ctx)
+    return (lo is None or value >= lo) and (hi is None or value <= hi)
+
+
+def in_range(bounds, value: float) -> bool:
+    """MinMaxBounds.matches: an exact number or ``{min, max}``, inclusive, each bound optional."""
+    if isinstance(bounds, (int, float)) and not isinstance(bounds, bool):
+        return value == bounds
+    if not isinstance(bounds, dict):
+        raise not_modelled("range", repr(bounds))
+    lo, hi = bounds.get("min"), bounds.get("max")
+    for bound in (lo, hi):
+        if bound is not None and (isinstance(bound, bool) or not isinstance(bound, (int, float))):
+            raise not_modelled("range bound", repr(bound))
     return (lo is None or value >= lo) and (hi is None or value <= hi)
 
 

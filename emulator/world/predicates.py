@@ -54,7 +54,7 @@ from emulator.world.errors import Unmodelled
 from emulator.world.item_predicates import codec_matches
 from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_level
 from emulator.world.living import is_living
-from emulator.world.loot_context import LootContext, in_range, integer, number, snbt_or_tag, to_tag
+from emulator.world.loot_context import LootContext, in_int_range, in_range, integer, number, snbt_or_tag, to_tag
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
 from mcfunction_parser.items import SLOTS, sub_predicate_registered
 from mcfunction_parser.nbt import Byte, Compound, Int, List
@@ -107,7 +107,7 @@ def _entity_scores(c: dict, ctx: LootContext) -> bool:
         return False
     for objective, bounds in c.get("scores", {}).items():
         value = ctx.score(entity.score_holder, objective)
-        if value is None or not in_range(bounds, value, ctx):
+        if value is None or not in_int_range(bounds, value, ctx):
             return False
     return True
 
@@ -134,7 +134,7 @@ def _time_check(c: dict, ctx: LootContext) -> bool:
     time = clocks.ticks(clock) if clocks is not None and clock in clocks else ctx.state.daytime
     if c.get("period") is not None:
         time %= int(c["period"])
-    return in_range(c["value"], _int32(time), ctx)
+    return in_int_range(c["value"], _int32(time), ctx)
 
 
 def _weather_check(c: dict, ctx: LootContext) -> bool:
@@ -223,7 +223,7 @@ CONDITIONS: dict[str, Callable[[dict, LootContext], bool]] = {
     "random_chance": lambda c, ctx: _chance(number(c["chance"], ctx), ctx),
     "random_chance_with_enchanted_bonus": _enchanted_bonus,
     "random_chance_with_looting": _enchanted_bonus,
-    "value_check": lambda c, ctx: in_range(c["range"], integer(c["value"], ctx), ctx),
+    "value_check": lambda c, ctx: in_int_range(c["range"], integer(c["value"], ctx), ctx),
     "time_check": _time_check,
     "weather_check": _weather_check,
     "location_check": _location_check,

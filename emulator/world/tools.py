@@ -202,6 +202,6 @@ def _durability_test(stack: ItemStack, max_damage: int, old_damage: int, new_dam
     def test(conditions: dict, ctx) -> bool:
         return ((conditions.get("item") is None or predicates.item_matches(conditions["item"], ctx, stack))
                 and (conditions.get("durability") is None
-                     or in_range(conditions["durability"], max_damage - new_damage, ctx))
-                and (conditions.get("delta") is None or in_range(conditions["delta"], old_damage - new_damage, ctx)))
+                     or in_range(conditions["durability"], max_damage - new_damage))
+                and (conditions.get("delta") is None or in_range(conditions["delta"], old_damage - new_damage)))
     return test

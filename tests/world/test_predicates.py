@@ -10,7 +10,7 @@ from emulator.world.blocks import BlockSpec, parse_block, with_defaults
 from emulator.world.entities import entity_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
-from emulator.world.loot_context import DamageSource, LootContext
+from emulator.world.loot_context import DamageSource, LootContext, in_range
 from emulator.world.predicates import test as holds
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
@@ -79,6 +79,22 @@ def test_entity_scores_and_value_check(state):
     check = {"condition": "value_check", "value": {"type": "score", "target": {"type": "fixed", "name": "#n"},
                                                     "score": "hp"}, "range": {"min": 7}}
     assert holds(check, ctx(state))
+
+
+def test_int_range_bounds_are_read_with_get_int(state):
+    # IntRange (entity_scores, value_check, time_check): its bounds are number providers compared
+    # through NumberProvider.getInt = Math.round(getFloat), so a bound written 1.2 is 1 and 1.5 is 2
+    # (IntRange's predicate); MinMaxBounds (an entity's level, an item's count) keep what is written
+    pig = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0))
+    state.scoreboard.add_objective("hp")
+    state.scoreboard.set(pig.score_holder, "hp", 1)
+    at_least = {"condition": "entity_scores", "entity": "this", "scores": {"hp": {"min": 1.2}}}
+    assert holds(at_least, ctx(state, this=pig))
+    at_least["scores"]["hp"]["min"] = 1.5
+    assert not holds(at_least, ctx(state, this=pig))
+    state.daytime = 1
+    assert holds({"condition": "time_check", "value": {"max": 0.7}}, ctx(state))
+    assert not in_range({"min": 1.2}, 1)
 
 
 def test_time_check_uses_day_time_modulo_period(state):
