@@ -1024,7 +1024,15 @@ def machine(arrays: Machine) -> tuple[np.ndarray, types.NamedTuple]:
     words = []
     for array in arrays:
         words += (array.ctypes.data, *array.shape, *array.strides)
-    return np.array(words, dtype=np.int64), types.NamedTuple([typeof(array) for array in arrays], Machine)
+    flags = tuple((a.dtype, a.ndim, a.flags.c_contiguous, a.flags.f_contiguous, a.flags.writeable, a.flags.aligned)
+                  for a in arrays)
+    found = _MACHINE_TYPES.get(flags)
+    if found is None:  # numba's typeof of 34 arrays takes about 0.6 ms: a summon per command rebuilds the machine
+        found = _MACHINE_TYPES[flags] = types.NamedTuple([typeof(array) for array in arrays], Machine)
+    return np.array(words, dtype=np.int64), found
+
+
+_MACHINE_TYPES: dict[tuple, types.NamedTuple] = {}  # the arrays' dtype, dimensions and flags -> the type
 
 
 class MachineRef(types.Type):
