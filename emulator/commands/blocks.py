@@ -10,7 +10,7 @@ tests Level.getBiome at getLoadedBlockPos).
 from __future__ import annotations
 
 from emulator.world import biomes, command_blocks, crafters, rails
-from emulator.world.blocks import BlockSpec, block_pos, box_positions, parse_block, with_defaults
+from emulator.world.blocks import BlockSpec, block_pos, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
 from mcfunction_parser.reader import ParseError, Reader
@@ -83,11 +83,10 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     positions = [block_pos(source, corner) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
-        before = blocks.get(positions[0]).id
+        before = blocks.get(positions[0])
         count = blocks.setblock(positions[0], spec, mode)
-        if spec.id in rails.RAILS and before != spec.id:  # BaseRailBlock.onPlace
-            level = env.state.level(ctx.dimension)
-            rails.join(blocks, positions[0], command_blocks.has_neighbour_signal(level, positions[0]))
+        _placed(env, ctx, spec)(positions[0], before)
+        _neighbours_updated(blocks, positions[:1], spec)
         command_blocks.after_change(env.state, ctx.dimension, positions[:1])
         crafters.after_change(env.state, ctx.dimension, positions[:1])
         return count
@@ -96,14 +95,41 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
         kept = block_argument(env, words[2])
         in_tag = block_tag_test(env)
         block_filter = lambda pos: blocks.test(pos, kept, in_tag)  # noqa: E731 - FillCommand's filter
-    count = blocks.fill(positions[0], positions[1], spec, mode, block_filter)
-    if spec.id in rails.RAILS:
-        env.unmodelled(cmd, "rails placed by fill joining each other as each is placed (RailState)")
+    changed = []
+    placed = _placed(env, ctx, spec)
+
+    def on_placed(pos, before):
+        changed.append(pos)
+        placed(pos, before)
+    count = blocks.fill(positions[0], positions[1], spec, mode, block_filter, on_placed)
+    _neighbours_updated(blocks, changed, spec)  # FillCommand: blockUpdated for each block placed
     if spec.id in NEIGHBOUR_READERS or blocks.has_any(NEIGHBOUR_READERS):  # one look over the level's blocks
-        changed = box_positions(positions[0], positions[1])
         command_blocks.after_change(env.state, ctx.dimension, changed)
         crafters.after_change(env.state, ctx.dimension, changed)
     return count
+
+
+def _placed(env, ctx, spec: BlockSpec):
+    """What Block.onPlace does after BlockInput.place set ``spec`` at a position: a rail replacing
+    another block joins its neighbours (BaseRailBlock.onPlace -> updateState), each in turn as
+    ``fill`` places them (in BlockPos.betweenClosed order)."""
+    if spec.id not in rails.RAILS:
+        return lambda pos, before: None
+    blocks, level = env.state.blocks_in(ctx.dimension), env.state.level(ctx.dimension)
+
+    def join(pos, before) -> None:
+        if before.id != spec.id and blocks.get(pos).id == spec.id:
+            rails.join(blocks, pos, command_blocks.has_neighbour_signal(level, pos))
+    return join
+
+
+def _neighbours_updated(blocks, positions, spec: BlockSpec) -> None:
+    """Level.blockUpdated after the command's blocks are down: the rails beside them check they
+    may stay (:func:`emulator.world.rails.notify`)."""
+    # a look at six neighbours each, or first one over the level's blocks for a large fill
+    if spec.id in rails.RAILS or len(positions) < 64 or blocks.has_any(rails.RAILS):
+        for pos in positions:
+            rails.notify(blocks, [pos], blocks.get(pos).id)
 
 
 def _read(cmd: ast.GenericCommand, version) -> tuple[list, list[str]]:

@@ -9,13 +9,19 @@ both lead to rails keeps its shape. ``powered`` is whether the placed rail's blo
 signal (it picks which curve wins when four ways are open). Powered, detector and activator rails
 are straight (no curves).
 
-Not modelled (raises Unmodelled): an ascending rail whose high side is not a full block (the game
-pops it off when a neighbour updates: BaseRailBlock.shouldBeRemoved), a powered neighbour rail
-turning (its power along the line).
+Each change of a rail's shape is a setBlock with neighbour updates (flag 3), and a command's change
+of a block updates its neighbours too (``notify``): a rail told so checks whether it may stay
+(BaseRailBlock.neighborChanged -> shouldBeRemoved: a sturdy block under it, and under its high side
+when it ascends).
+
+Not modelled (raises Unmodelled): a rail that may not stay (the game pops it off and drops it: a
+rail with no sturdy block under it, an ascending one whose high side is not a full block), a powered
+neighbour rail turning (its power along the line), a plain rail with three rails round it updated by
+a signal source (RailBlock.updateState turns it again).
 
 Sources: decompiled 1.21 world/level/block/RailState.java (updateConnections, removeSoftConnections,
 getRail, hasConnection, canConnectTo, connectTo, hasNeighborRail, place), BaseRailBlock.java
-(onPlace, updateState, updateDir, isStraight, shouldBeRemoved).
+(onPlace, updateState, updateDir, isStraight, neighborChanged, shouldBeRemoved), RailBlock.updateState.
 """
 from __future__ import annotations
 
@@ -95,6 +101,7 @@ class _Rail:
         properties["shape"] = shape
         self.state = BlockState(self.state.id, tuple(sorted(properties.items())))
         self.blocks.set_state(self.pos, self.state)
+        notify(self.blocks, [self.pos], self.state.id)  # Level.setBlock with flag 3
 
     def connect_to(self, other: "_Rail") -> None:
         """RailState.connectTo."""
@@ -166,3 +173,41 @@ def _curve(n: bool, s: bool, w: bool, e: bool) -> str | None:
 
 def join(blocks, pos, powered: bool = False) -> None:
     _Rail(blocks, pos).place(powered)
+
+
+# the blocks whose signal a plain rail's neighbour update reads (RailBlock.updateState: isSignalSource)
+_SIGNAL_SOURCES = ("minecraft:detector_rail", "minecraft:redstone_block", "minecraft:lever",
+                   "minecraft:redstone_torch", "minecraft:redstone_wall_torch", "minecraft:target")
+
+
+def notify(blocks, positions, changed_id: str) -> None:
+    """Level.updateNeighborsAt for each of ``positions`` (``changed_id`` the block now there): the
+    rails beside them run BaseRailBlock.neighborChanged. A rail that stays keeps its shape here;
+    one the game would pop off, or turn again, raises Unmodelled."""
+    signal = changed_id in _SIGNAL_SOURCES or changed_id.endswith("_button")
+    for pos in positions:
+        for d in (NORTH, SOUTH, WEST, EAST, _UP, (0, -1, 0)):
+            beside = _add(pos, d)
+            if blocks.get(beside).id in RAILS:
+                _stays(blocks, beside, signal)
+
+
+def _stays(blocks, pos, signal: bool) -> None:
+    rail = _Rail(blocks, pos)
+    below = blocks.get(_add(pos, (0, -1, 0)))
+    if below.id in RAILS or not block_shapes.is_face_sturdy(below):
+        raise Unmodelled(f"a {rail.state.id} with {below.id} under it popping off when a neighbour changes "
+                         "(BaseRailBlock.shouldBeRemoved)")
+    high = _HIGH_SIDE.get(rail.shape)
+    if high is not None and (blocks.get(_add(pos, high)).id in RAILS
+                             or not block_shapes.is_face_sturdy(blocks.get(_add(pos, high)))):
+        raise Unmodelled(f"a rail ascending against {blocks.get(_add(pos, high)).id} popping off when a neighbour "
+                         "changes (BaseRailBlock.shouldBeRemoved)")
+    if signal and not rail.straight and _potential_connections(rail) == 3:
+        raise Unmodelled("a rail with three rails round it updated by a signal source (RailBlock.updateState "
+                         "turns it again)")
+
+
+def _potential_connections(rail: "_Rail") -> int:
+    """RailState.countPotentialConnections: the sides with a rail level, above or below."""
+    return sum(rail.rail_at(_add(rail.pos, d)) is not None for d in (NORTH, SOUTH, WEST, EAST))
