@@ -32,6 +32,7 @@ from emulator.vm.loop import (
 from emulator.world import entity_predicate_format
 from emulator.world.entity_table import EI_GAMEMODE, EI_TEAM, EI_XP, GAMEMODES
 from emulator.world.errors import Unmodelled
+from emulator.world.loot_context import min_max
 from emulator.world.semantics import INT_MAX, INT_MIN
 
 MAX_DEPTH = 60  # booleans on the VM's stack (bits of an int64)
@@ -195,12 +196,21 @@ class _Program:
                 self.rows.extend((TEST_INT, EI_GAMEMODE, GAMEMODES.index(m), 0) for m in modes)
                 self.rows.append((TEST_ANY, len(modes), 0, 0) if modes else (TEST_CONST, 0, 0, 0))
             elif key == "level":
-                lo, hi = _int_bounds(value)
+                lo, hi = _level_bounds(value)
                 self.rows.append((TEST_RANGE, EI_XP, lo, hi))
             else:
                 raise _Host
             pushed += 1
         return pushed
+
+
+def _level_bounds(bounds) -> tuple[int, int]:
+    """A player's ``level``: MinMaxBounds.Ints, its bounds read as the game's codec reads them."""
+    try:
+        lo, hi = min_max(bounds, ints=True)
+    except Unmodelled:
+        raise _Host from None
+    return (INT_MIN if lo is None else lo), (INT_MAX if hi is None else hi)
 
 
 def _int_bounds(bounds) -> tuple[int, int]:

@@ -41,7 +41,7 @@ from emulator.world.advancement_progress import OBSERVED, full_id as _id, is_don
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
-from emulator.world.loot_context import LootContext, in_range
+from emulator.world.loot_context import LootContext, in_ints
 from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 from mcfunction_parser.pack.advancements import criteria
 
@@ -274,7 +274,7 @@ def inventory_changed(state, player: Entity, stack: ItemStack) -> None:
               "full": sum(s.count >= s.max_stack_size for s in occupied)}
     def matches(conditions: dict, ctx: LootContext) -> bool:
         slots = conditions.get("slots") or {}
-        if not all(in_range(slots.get(key, {}), value) for key, value in counts.items()):
+        if not all(in_ints(slots.get(key, {}), value) for key, value in counts.items()):
             return False
         wanted = conditions.get("items") or []
         if len(wanted) <= 1:

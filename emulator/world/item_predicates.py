@@ -32,12 +32,13 @@ from typing import Callable
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.items import sub_predicate_registered
-from mcfunction_parser.nbt import Compound, List
+from mcfunction_parser.nbt import Compound, Double, Float, List
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.items import COMMON_COMPONENTS, ItemStack, decoded, enchantment_levels, from_nbt
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
+from emulator.world.semantics import double_to_int, wrap32
 from emulator.world.text import plain_value, read_component
 
 Version = tuple[int, int, int]
@@ -268,7 +269,7 @@ def _modifier_matches(predicate, entry, resources) -> bool:
         return False
     if "id" in predicate and _id(str(predicate["id"])) != _id(str(entry.get("id", ""))):
         return False
-    if not _in_bounds(predicate.get("amount"), _number(entry.get("amount")), True):
+    if not _in_bounds(predicate.get("amount"), _number(entry.get("amount")), True, ints=False):
         return False
     if "operation" in predicate and str(predicate["operation"]) != str(entry.get("operation", "")):
         return False
@@ -376,14 +377,24 @@ def _reference(value) -> str | None:
     return _id(str(value)) if isinstance(value, str) else None
 
 
-def _bounds(value) -> tuple[float | None, float | None] | None:
-    """MinMaxBounds as a codec reads it: a number, or ``{min, max}``."""
+def _bounds(value, ints: bool = True) -> tuple[float | None, float | None] | None:
+    """MinMaxBounds.Ints (Doubles unless ``ints``) as its codec reads NBT: a number, or ``{min, max}``."""
     if is_numeric(value):
-        return float(value), float(value)
+        return _codec_number(value, ints), _codec_number(value, ints)
     if isinstance(value, Compound):
         lo, hi = value.get("min"), value.get("max")
-        return (float(lo) if is_numeric(lo) else None), (float(hi) if is_numeric(hi) else None)
+        return (_codec_number(lo, ints) if is_numeric(lo) else None), (_codec_number(hi, ints) if is_numeric(hi) else None)
     return None
+
+
+def _codec_number(tag, ints: bool) -> float:
+    """Codec.INT / Codec.DOUBLE on a numeric tag (NbtOps.getNumberValue, then Number.intValue: a
+    long keeps its low 32 bits, a float or double is cast, truncated toward zero and saturated)."""
+    if not ints:
+        return numeric_value(tag)
+    if isinstance(tag, (Float, Double)):
+        return double_to_int(numeric_value(tag))
+    return wrap32(int(tag))
 
 
 def _within(bounds, number: float) -> bool:
@@ -391,11 +402,12 @@ def _within(bounds, number: float) -> bool:
     return (lo is None or number >= lo) and (hi is None or number <= hi)
 
 
-def _in_bounds(value, number: float, absent_matches: bool = False) -> bool:
-    """MinMaxBounds.matches; an absent field is MinMaxBounds.ANY when ``absent_matches``."""
+def _in_bounds(value, number: float, absent_matches: bool = False, ints: bool = True) -> bool:
+    """MinMaxBounds.matches (Ints unless ``ints`` is False); an absent field is MinMaxBounds.ANY
+    when ``absent_matches``."""
     if value is None:
         return absent_matches
-    bounds = _bounds(value)
+    bounds = _bounds(value, ints)
     return bounds is not None and _within(bounds, number)
 
 

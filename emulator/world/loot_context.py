@@ -4,7 +4,8 @@ compute: the one :class:`LootContext`, number providers, ranges, and JSON values
 
 - ``number(provider, ctx)`` / ``integer(provider, ctx)``: NumberProvider.getFloat / getInt
   (constant, uniform, binomial, score, storage).
-- ``in_range(bounds, value)``: MinMaxBounds, an exact number or ``{min, max}``.
+- ``in_range(bounds, value)`` / ``in_ints(bounds, value)``: MinMaxBounds.Doubles / Ints, an exact
+  number or ``{min, max}`` (``min_max(bounds, ints)``: the bounds as the codec reads them).
   ``in_int_range(bounds, value, ctx)`` / ``int_range(bounds, ctx)``: IntRange, whose bounds are
   number providers read with getInt (a bound written 1.2 is Math.round(1.2F) = 1).
 - ``to_tag(json)`` / ``snbt_or_tag(value)``: JSON values and SNBT strings as NBT.
@@ -35,6 +36,7 @@ from emulator.world import nbt_ops
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import copy_tag
+from emulator.world.semantics import wrap32
 
 _TARGETS = {"this": "this", "attacker": "attacker", "direct_attacker": "direct_attacker",
             "attacking_player": "attacking_player",  # the 1.21 names; before 1.21:
@@ -222,16 +224,39 @@ def in_int_range(bounds, value: int, ctx: LootContext) -> bool:
 
 
 def in_range(bounds, value: float) -> bool:
-    """MinMaxBounds.matches: an exact number or ``{min, max}``, inclusive, each bound optional."""
-    if isinstance(bounds, (int, float)) and not isinstance(bounds, bool):
-        return value == bounds
-    if not isinstance(bounds, dict):
-        raise not_modelled("range", repr(bounds))
-    lo, hi = bounds.get("min"), bounds.get("max")
-    for bound in (lo, hi):
-        if bound is not None and (isinstance(bound, bool) or not isinstance(bound, (int, float))):
-            raise not_modelled("range bound", repr(bound))
+    """MinMaxBounds.Doubles.matches: an exact number or ``{min, max}``, inclusive, each bound optional."""
+    lo, hi = min_max(bounds, ints=False)
     return (lo is None or value >= lo) and (hi is None or value <= hi)
+
+
+def in_ints(bounds, value: int) -> bool:
+    """MinMaxBounds.Ints.matches: as :func:`in_range`, the bounds read by Codec.INT (a bound written
+    1.9 is 1, -1.9 is -1)."""
+    lo, hi = min_max(bounds, ints=True)
+    return (lo is None or value >= lo) and (hi is None or value <= hi)
+
+
+def min_max(bounds, ints: bool) -> tuple:
+    """MinMaxBounds.createCodec: ``{min, max}`` (each optional), else one number for both bounds."""
+    if isinstance(bounds, dict):
+        lo, hi = bounds.get("min"), bounds.get("max")
+        return (None if lo is None else _codec_number(lo, ints)), (None if hi is None else _codec_number(hi, ints))
+    point = _codec_number(bounds, ints)
+    return point, point
+
+
+def _codec_number(value, ints: bool):
+    """A bound as Codec.INT / Codec.DOUBLE decode a JSON value: JsonOps.getNumberValue gives a
+    boolean as 1 or 0 and a number as Gson's LazilyParsedNumber, whose intValue truncates a
+    decimal toward zero (BigDecimal.intValue) and keeps the low 32 bits of a number past an int
+    (Long.parseLong then the int cast, or BigDecimal.intValue). Anything else fails the codec."""
+    if isinstance(value, bool):
+        value = int(value)
+    if not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise not_modelled("range bound", repr(value))
+    if not ints:
+        return value
+    return wrap32(math.trunc(value))
 
 
 # ---------------------------------------------------------------------- JSON to NBT

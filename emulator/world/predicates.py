@@ -54,7 +54,8 @@ from emulator.world.errors import Unmodelled
 from emulator.world.item_predicates import codec_matches
 from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_level
 from emulator.world.living import is_living
-from emulator.world.loot_context import LootContext, in_int_range, in_range, integer, number, snbt_or_tag, to_tag
+from emulator.world.loot_context import (LootContext, in_int_range, in_ints, in_range, integer, min_max, number,
+                                         snbt_or_tag, to_tag)
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
 from mcfunction_parser.items import SLOTS, sub_predicate_registered
 from mcfunction_parser.nbt import Byte, Compound, Int, List
@@ -238,9 +239,7 @@ CONDITIONS: dict[str, Callable[[dict, LootContext], bool]] = {
 
 def _range_sq(bounds, value_sq: float) -> bool:
     """MinMaxBounds.Doubles.matchesSqr: the bounds squared against a squared length."""
-    if isinstance(bounds, (int, float)):
-        bounds = {"min": bounds, "max": bounds}
-    lo, hi = bounds.get("min"), bounds.get("max")
+    lo, hi = min_max(bounds, ints=False)
     return (lo is None or value_sq >= lo * lo) and (hi is None or value_sq <= hi * hi)
 
 
@@ -307,7 +306,7 @@ def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
         wanted = "#" + predicate["tag"]
     if wanted is not None and not _holder_set(wanted, "item", stack.id, ctx):
         return False
-    if "count" in predicate and not in_range(predicate["count"], stack.count):
+    if "count" in predicate and not in_ints(predicate["count"], stack.count):
         return False
     if "nbt" in predicate and not compare_nbt(snbt_or_tag(predicate["nbt"]), stack.tag):
         return False
@@ -322,7 +321,7 @@ def _old_item_fields(predicate: dict, stack: ItemStack) -> bool:
     tag = stack.tag or Compound()
     if "durability" in predicate:
         max_damage = stack.component("minecraft:max_damage")
-        if max_damage is None or _true(tag.get("Unbreakable")) or not in_range(
+        if max_damage is None or _true(tag.get("Unbreakable")) or not in_ints(
                 predicate["durability"], int(max_damage) - _int(tag.get("Damage"))):
             return False
     for key, saved in (("enchantments", "Enchantments"), ("stored_enchantments", "StoredEnchantments")):
@@ -356,8 +355,8 @@ def _old_enchantment_in(wanted: dict, levels: dict[str, int]) -> bool:
     bounds = wanted.get("levels")
     if "enchantment" in wanted:
         level = levels.get(_id(wanted["enchantment"]))
-        return level is not None and (bounds is None or in_range(bounds, level))
-    return bounds is None or any(in_range(bounds, level) for level in levels.values())
+        return level is not None and (bounds is None or in_ints(bounds, level))
+    return bounds is None or any(in_ints(bounds, level) for level in levels.values())
 # ---------------------------------------------------------------------- entities
 def entity_matches(predicate, ctx: LootContext, entity: Entity | None) -> bool:
     """EntityPredicate.matches(level, ctx.origin, entity); a list is a ContextAwarePredicate of
@@ -443,7 +442,7 @@ def _effects(value: dict, ctx: LootContext, entity: Entity) -> bool:
         if found is None:
             return False
         for key, field_name in (("amplifier", "amplifier"), ("duration", "duration")):
-            if key in wanted and not in_range(wanted[key], numeric_value(found.get(field_name, Int(0)))):
+            if key in wanted and not in_ints(wanted[key], int(numeric_value(found.get(field_name, Int(0))))):
                 return False
         for key, field_name in (("ambient", "ambient"), ("visible", "show_particles")):
             if key in wanted and bool(numeric_value(found.get(field_name, Byte(0)))) != bool(wanted[key]):
@@ -564,7 +563,7 @@ def _type_specific(value: dict, ctx: LootContext, entity: Entity) -> bool:
     if kind == "slime":  # SlimePredicate: a slime or magma cube whose Size + 1 is in range
         if entity.type not in ("minecraft:slime", "minecraft:magma_cube"):
             return False
-        return in_range(value.get("size", {}), int(_number_field(entity, "Size")) + 1)
+        return in_ints(value.get("size", {}), int(_number_field(entity, "Size")) + 1)
     raise Unmodelled(f"type_specific predicate '{value.get('type')}'")
 
 
@@ -581,7 +580,7 @@ def _player(value: dict, ctx: LootContext, entity: Entity) -> bool:
             if entity.gamemode not in modes:
                 return False
         elif key == "level":
-            if not in_range(wanted, entity.level):
+            if not in_ints(wanted, entity.level):
                 return False
         elif key == "advancements":
             if not advancement_progress.matches(ctx.state, entity, wanted):

@@ -35,7 +35,7 @@ import numpy as np
 from emulator.world import advancements, predicates, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack, enchantment_level, enchantment_levels, set_component
-from emulator.world.loot_context import in_range
+from emulator.world.loot_context import in_ints
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from mcfunction_parser.nbt import Compound, Int, List, String
 
@@ -202,6 +202,6 @@ def _durability_test(stack: ItemStack, max_damage: int, old_damage: int, new_dam
     def test(conditions: dict, ctx) -> bool:
         return ((conditions.get("item") is None or predicates.item_matches(conditions["item"], ctx, stack))
                 and (conditions.get("durability") is None
-                     or in_range(conditions["durability"], max_damage - new_damage))
-                and (conditions.get("delta") is None or in_range(conditions["delta"], old_damage - new_damage)))
+                     or in_ints(conditions["durability"], max_damage - new_damage))
+                and (conditions.get("delta") is None or in_ints(conditions["delta"], old_damage - new_damage)))
     return test

@@ -10,7 +10,7 @@ from emulator.world.blocks import BlockSpec, parse_block, with_defaults
 from emulator.world.entities import entity_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
-from emulator.world.loot_context import DamageSource, LootContext, in_range
+from emulator.world.loot_context import DamageSource, LootContext, in_ints, in_range
 from emulator.world.predicates import test as holds
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
@@ -95,6 +95,26 @@ def test_int_range_bounds_are_read_with_get_int(state):
     state.daytime = 1
     assert holds({"condition": "time_check", "value": {"max": 0.7}}, ctx(state))
     assert not in_range({"min": 1.2}, 1)
+
+
+def test_min_max_bounds_ints_read_their_bounds_with_codec_int(state):
+    # MinMaxBounds.Ints.CODEC = createCodec(Codec.INT, ...): JsonOps.getNumberValue hands Gson's
+    # LazilyParsedNumber to Number.intValue, which truncates a decimal toward zero (BigDecimal.intValue)
+    # and keeps the low 32 bits of a number past an int; a boolean is 1 or 0. MinMaxBounds.Doubles
+    # (distance, position, damage) keep the number written.
+    assert in_ints({"min": 1.9}, 1) and not in_ints({"min": 2.1}, 1)
+    assert in_ints({"max": -1.9}, -1) and not in_ints({"max": -1.9}, 0)
+    assert in_ints(2.7, 2) and not in_ints(2.7, 3)
+    assert in_ints({"min": True, "max": True}, 1)
+    assert in_ints(2**32 + 5, 5)  # (int) Long.parseLong
+    assert not in_range({"min": 1.9}, 1) and in_range({"max": 1.9}, 1.5)
+    slime = state.entities.summon("minecraft:slime", (0.0, 0.0, 0.0))
+    slime.data["Size"] = Int(1)  # SlimePredicate: Size + 1 = 2
+    size = {"condition": "entity_properties", "entity": "this",
+            "predicate": {"type_specific": {"type": "slime", "size": {"min": 2.99, "max": 2.01}}}}
+    assert holds(size, ctx(state, this=slime))
+    size["predicate"]["type_specific"]["size"] = {"min": 3.0}
+    assert not holds(size, ctx(state, this=slime))
 
 
 def test_time_check_uses_day_time_modulo_period(state):
