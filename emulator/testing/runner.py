@@ -159,9 +159,11 @@ def _unreadable(case: TestCase) -> TestResult:
 
 
 def fresh_world(packs, backend: str) -> Emulator:
-    """An emulator on already parsed ``packs`` with an empty world, started with :func:`run_load`."""
+    """An emulator on already parsed ``packs`` with an empty world, started with :func:`run_load`:
+    the test server's world, made without structures (GameTestServer.WORLD_OPTIONS)."""
     emu = Emulator(backend=backend)
     emu.load_parsed(packs)
+    emu.state.structures_generated = False
     return run_load(emu)
 
 

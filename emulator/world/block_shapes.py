@@ -64,12 +64,12 @@ def _kind(block) -> bool:
     if name in _EMPTY_NAMES or name.endswith(_EMPTY_SUFFIXES):
         return False
     if name in _FULL_EXCEPT:
-        raise Unmodelled(f"the shape of {block.id} (a placement beside it reads it)")
+        raise Unmodelled(f"the shape of {block.id} (the emulator keeps only full cubes and blocks without collision)")
     if name in _FULL_NAMES or name in _METAL_BLOCKS or name.endswith(_FULL_SUFFIXES):
         return True
     if name.endswith("_slab") and dict(block.properties).get("type") == "double":
         return True
-    raise Unmodelled(f"the shape of {block.id} (a placement beside it reads it)")
+    raise Unmodelled(f"the shape of {block.id} (the emulator keeps only full cubes and blocks without collision)")
 
 
 def collides(block) -> bool:

@@ -46,8 +46,8 @@ from typing import Callable
 
 import numpy as np
 
-from emulator.world import (advancement_progress, biomes, entity_components, entity_predicate_format, inventories,
-                            living, recipes, sight)
+from emulator.world import (advancement_progress, biomes, campfires, entity_components, entity_predicate_format,
+                            inventories, living, recipes, sight)
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -627,9 +627,10 @@ ENTITY_COMPONENTS_VERSION = (1, 21, 5)  # EntityPredicate's DataComponentMatcher
 
 # ---------------------------------------------------------------------- locations and blocks
 def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
-    """LocationPredicate.matches at exact ``pos``: position ranges, dimension, then the biome, block
-    and fluid at BlockPos.containing(pos) (``biomes``, a HolderSet, from 1.20.5; ``biome``, one id,
-    before). A biome the world does not know is reported after the fields it can test held."""
+    """LocationPredicate.matches at exact ``pos``: position ranges, dimension, then at
+    BlockPos.containing(pos) the biome (``biomes``, a HolderSet, from 1.20.5; ``biome``, one id,
+    before), structures, ``smokey``, block and fluid. A field the world cannot answer is reported
+    after the fields it can test held (when one of them fails the predicate is false whatever it says)."""
     position = predicate.get("position", {})
     for axis, value in zip("xyz", pos):
         if axis in position and not in_range(position[axis], value):
@@ -638,13 +639,12 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         return False
     block_pos = tuple(math.floor(v) for v in pos)
     unknown = None
-    wanted_biome = predicate.get("biomes" if tuple(ctx.version) >= COMPONENTS_VERSION else "biome")
-    if wanted_biome is not None:
+    for check in (_biome_check, _structure_check, _smokey_check):
         try:
-            if not _holder_set(wanted_biome, "worldgen/biome", biomes.biome_at(ctx.state, ctx.dimension, block_pos), ctx):
+            if not check(predicate, ctx, block_pos):
                 return False
         except Unmodelled as reason:
-            unknown = reason
+            unknown = unknown or reason
     if "block" in predicate and not block_matches(predicate["block"], ctx, block_pos):
         return False
     if "fluid" in predicate and not _fluid_matches(predicate["fluid"], ctx, block_pos):
@@ -657,14 +657,34 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
     return True
 
 
-# what the world does not keep: LocationPredicate's fields that read it (the fields the world
-# keeps are tested first: when one of them fails the predicate is false whatever these say)
-NO_TERRAIN = "the emulator generates no terrain: its world has no structures"
+def _biome_check(predicate: dict, ctx: LootContext, pos) -> bool:
+    wanted = predicate.get("biomes" if tuple(ctx.version) >= COMPONENTS_VERSION else "biome")
+    return wanted is None or _holder_set(wanted, "worldgen/biome", biomes.biome_at(ctx.state, ctx.dimension, pos), ctx)
+
+
+def _structure_check(predicate: dict, ctx: LootContext, pos) -> bool:
+    """``structures`` (``structure``, one id, before 1.20.5; ``feature`` before 1.19): a structure
+    with a piece at the block. The test server's world is made without them (GameTestServer's
+    WorldOptions: generateStructures false), so there no structure is anywhere; another world's
+    structures would come from terrain the emulator does not generate."""
+    if not any(key in predicate for key in ("structures", "structure", "feature")):
+        return True
+    if ctx.state.structures_generated is False:
+        return False
+    raise Unmodelled("location predicate field 'structures' (the emulator generates no terrain, so it does not "
+                     "know the structures of this world: only the test server's world is known to have none)")
+
+
+def _smokey_check(predicate: dict, ctx: LootContext, pos) -> bool:
+    """``smokey``: equal to CampfireBlock.isSmokeyPos at the block (:mod:`emulator.world.campfires`)."""
+    return "smokey" not in predicate or bool(predicate["smokey"]) == campfires.is_smokey_pos(
+        ctx.state.blocks_in(ctx.dimension), pos, ctx.state.resources)
+
+
+# what the world does not keep: LocationPredicate's fields that read it (tested last)
 _LOCATION_UNMODELLED = {
-    "structures": NO_TERRAIN, "structure": NO_TERRAIN, "feature": NO_TERRAIN,
     "light": "the emulator keeps no light levels",
     "can_see_sky": "the emulator keeps no sky light or height maps",
-    "smokey": "a campfire's smoke needs block collision shapes, which the emulator does not keep",
 }
 
 

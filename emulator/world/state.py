@@ -522,6 +522,9 @@ class WorldState:
     resources: Resources = field(default_factory=Resources)  # loot, predicates, tags, advancements
     clocks: object = None  # 26.1+: the world clocks (emulator.world.clocks.WorldClocks)
     biomes: BiomeCells = field(default_factory=BiomeCells)  # the cells fillbiome set, per level (biomes)
+    # False in the test server's world (GameTestServer: WorldOptions without generated structures);
+    # None where the world's structures are not known (the emulator generates no terrain)
+    structures_generated: bool | None = None
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)

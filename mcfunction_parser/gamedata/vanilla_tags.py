@@ -9,8 +9,8 @@ registries and block states but no tags), so the user's own jar of the targeted 
 faithful source; nothing is bundled beyond :data:`BUILTIN_TAGS`.
 
 Without a jar, :data:`BUILTIN_TAGS` holds a few vanilla entity type tags (copied from the 1.21
-jar's ``data/minecraft/tags/entity_type``) and the damage type tags the hurt rules read (1.21's
-DamageTypeTagsProvider); any other ``#minecraft:`` tag is unknown to the
+jar's ``data/minecraft/tags/entity_type``), the damage type tags the hurt rules read (1.21's
+DamageTypeTagsProvider) and the block tag a campfire's smoke reads (VanillaBlockTagsProvider); any other ``#minecraft:`` tag is unknown to the
 emulator, and a command reading one says it is not modelled instead of matching nothing.
 """
 from __future__ import annotations
@@ -36,6 +36,9 @@ BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
             "minecraft:fireball", "minecraft:small_fireball", "minecraft:egg", "minecraft:trident",
             "minecraft:dragon_fireball", "minecraft:wither_skull", "minecraft:wind_charge",
             "minecraft:breeze_wind_charge"}),
+    },
+    "block": {
+        "minecraft:campfires": frozenset({"minecraft:campfire", "minecraft:soul_campfire"}),
     },
     "damage_type": {
         "minecraft:bypasses_armor": frozenset("minecraft:" + t for t in (

@@ -394,12 +394,11 @@ def test_the_old_item_predicate_fields_are_ignored_from_1_20_5(state):
 
 
 @pytest.mark.parametrize("field,value,reason", [
-    ("biomes", "minecraft:plains", "generator"), ("structures", "#minecraft:village", "no structures"),
+    ("biomes", "minecraft:plains", "generator"), ("structures", "#minecraft:village", "structures of this world"),
     ("light", {"light": {"min": 1}}, "no light levels"), ("can_see_sky", True, "no sky light"),
-    ("smokey", True, "collision shapes"),
 ])
 def test_location_fields_the_world_does_not_keep_are_reported(state, field, value, reason):
-    # LocationPredicate.matches: biomes, structures, smokey, light and can_see_sky read what the
+    # LocationPredicate.matches: biomes, structures, light and can_see_sky read what the
     # emulator's world does not keep (no terrain, no light): not modelled, never a silent yes or no;
     # a field the world keeps that fails first makes the predicate false all the same
     check = {"condition": "location_check", "predicate": {field: value}}
@@ -407,6 +406,36 @@ def test_location_fields_the_world_does_not_keep_are_reported(state, field, valu
         holds(check, ctx(state))
     check["predicate"]["block"] = {"blocks": "minecraft:stone"}
     assert not holds(check, ctx(state))
+
+
+def test_the_test_servers_world_has_no_structures(state):
+    # GameTestServer.WORLD_OPTIONS = new WorldOptions(0L, false, false): no structure is generated, so
+    # LocationPredicate.matches' getStructureWithPieceAt is never valid and a structures field fails
+    state.structures_generated = False
+    for field, value in (("structures", "#minecraft:village"), ("structures", []), ("structure", "minecraft:fortress")):
+        assert not holds({"condition": "location_check", "predicate": {field: value}}, ctx(state))
+
+
+def test_smokey_looks_down_for_a_lit_campfire(state):
+    # CampfireBlock.isSmokeyPos: up to 5 blocks down a lit #campfires block makes the position smokey;
+    # the first block whose collision shape meets VIRTUAL_FENCE_POST ends the search, smokey only
+    # when a lit campfire is right under it (a campfire's own SHAPE meets the post)
+    smokey = lambda pos: holds({"condition": "location_check", "predicate": {"smokey": True}},  # noqa: E731
+                               ctx(state, origin=pos))
+    place = lambda pos, block: state.blocks.place(pos, with_defaults(parse_block(block), state.version))  # noqa: E731
+    place((0, 0, 0), "minecraft:campfire[lit=true]")
+    assert smokey((0.5, 5.5, 0.5)) and not smokey((0.5, 6.5, 0.5)) and not smokey((0.5, 0.5, 0.5))
+    assert holds({"condition": "location_check", "predicate": {"smokey": False}}, ctx(state, origin=(0.5, 6.5, 0.5)))
+    place((0, 1, 0), "minecraft:oak_planks")  # a full cube right over the fire: its smoke still shows above
+    assert smokey((0.5, 4.5, 0.5))
+    place((0, 2, 0), "minecraft:stone")  # two blocks over it: the stone ends the search
+    assert not smokey((0.5, 4.5, 0.5)) and not smokey((0.5, 3.5, 0.5))
+    place((0, 10, 0), "minecraft:soul_campfire[lit=false]")
+    place((0, 9, 0), "minecraft:soul_campfire[lit=true]")  # an unlit one over a lit one passes its smoke
+    assert smokey((0.5, 12.5, 0.5))
+    place((0, 11, 0), "minecraft:oak_fence")  # a shape the emulator does not keep
+    with pytest.raises(Unmodelled, match="shape of minecraft:oak_fence"):
+        smokey((0.5, 12.5, 0.5))
 
 
 def test_the_player_predicate_reads_the_recipe_book(state):
