@@ -108,6 +108,7 @@ class Runtime:
         self._members: dict[tuple[str, int], tuple[str, ...]] = {}
         self._mixed_lists = nbt_ops.list_rules(packs.version).mixed
         state.command_runner = self.run_command
+        state.functions_named = self.functions_named
 
     def run_command(self, text: str, context: Context) -> int | None:
         """A command block's command as its own root (BaseCommandBlock.performCommand:
@@ -128,6 +129,11 @@ class Runtime:
         runs = [(text, context)] if forked is None else [(forked[0], ctx) for ctx in forked[1]]
         return sum(bool(self.run_root(COMMAND_BLOCK_FUNCTION, ctx, Compound(command=String(command))).succeeded)
                    for command, ctx in runs)
+
+    def functions_named(self, name: str, is_tag: bool) -> list:
+        """The functions ``function NAME`` (``#NAME`` when ``is_tag``) runs, in order."""
+        ids = self.members(name) if is_tag else (name,)
+        return [self.packs.functions[f] for f in ids if f in self.packs.functions]
 
     def members(self, tag: str) -> tuple[str, ...]:
         """The functions ``#tag`` runs, resolved once: the tags do not change while the packs run, and

@@ -28,7 +28,8 @@ Power (Level.hasNeighborSignal) comes from a neighbouring redstone block, a powe
 button, or a lit redstone torch; any other redstone component beside a command block is not
 modelled (a warning: the test is inconclusive). ``LastOutput`` (with ``TrackOutput``) is the last
 message the command sent its source, after ``[HH:mm:ss] `` from the wall clock (:func:`feedback`:
-``help``'s usage, none from ``tellraw``, ``say`` and ``return N``); another command's message is
+``help``'s usage, ``function``'s ``Running function ID`` when the functions cannot return, none
+from ``tellraw``, ``say`` and ``return N``); another command's message is
 not produced (the time alone, and a warning: the test is inconclusive). ``SuccessCount`` counts a
 success per context the command ran in, as the game's result callback (an ``execute`` whose stages
 change the world, ``store`` or ``summon``, or that ends in ``if function``, counts one). A command block in another level runs there (the
@@ -38,7 +39,7 @@ Sources (decompiled 1.21.x and 26.1): world/level/block/CommandBlock.java (neigh
 execute, executeChain, setPoweredAndUpdate), block/entity/CommandBlockEntity.java (loadAdditional,
 setAutomatic, scheduleTick, markConditionMet, getMode, isConditional), world/level/BaseCommandBlock.java
 (performCommand, save, load, sendSystemMessage: ``[HH:mm:ss] `` + the message, acceptsSuccess,
-acceptsFailure), commands/CommandSourceStack.java (sendSuccess, sendFailure),
+acceptsFailure), commands/CommandSourceStack.java (sendSuccess, sendFailure), commands/FunctionCommand.java,
 server/commands/SetBlockCommand.java and FillCommand.java (Level.blockUpdated after placing).
 """
 from __future__ import annotations
@@ -286,7 +287,35 @@ def feedback(state, command: str, succeeded: bool) -> list[tuple[object, bool]] 
         return []
     if isinstance(final, ast.GenericCommand) and final.name == "help":
         return _help_feedback(state, final.text.partition(" ")[2] or None)
+    if isinstance(final, ast.FunctionCall) and final is _command(command, tuple(state.version)):
+        return _function_feedback(state, final)
     return None
+
+
+def _function_feedback(state, call: ast.FunctionCall) -> list[tuple[object, bool]] | None:
+    """FunctionCommand.FunctionCustomExecutor.runGuarded sends ``Running function ID`` (one
+    function) or ``Running functions A, B`` (ComponentUtils.formatList, a grey ", ") before they
+    run. A function that returns a value then sends ``Function ID returned N``
+    (decorateOutputIfNeeded; the command block's source is not silent): not produced here, so a
+    function with a ``return``, a macro line or arguments (which may fail to instantiate) is
+    not modelled (None), nor a name that finds no function (the command fails)."""
+    functions = state.functions_named(call.function, call.is_tag) if state.functions_named else []
+    if (not functions or call.arguments is not None or call.with_source is not None
+            or any(f.is_macro or any(_returns(c) for c in f.commands) for f in functions)):
+        return None
+    if len(functions) == 1:
+        return [({"translate": "commands.function.scheduled.single", "with": [functions[0].id]}, False)]
+    listed: list = []
+    for function in functions:
+        listed += [{"text": ", ", "color": "gray"}, function.id] if listed else [function.id]
+    return [({"translate": "commands.function.scheduled.multiple", "with": [{"text": "", "extra": listed}]}, False)]
+
+
+def _returns(node) -> bool:
+    """Whether the command is or ends in ``return`` (its function's frame then has a result)."""
+    while isinstance(node, ast.Execute) and node.run is not None:
+        node = node.run
+    return isinstance(node, ast.Return)
 
 
 def _help_feedback(state, text: str | None) -> list[tuple[object, bool]] | None:
@@ -300,10 +329,15 @@ def _help_feedback(state, text: str | None) -> list[tuple[object, bool]] | None:
 
 
 @functools.lru_cache(maxsize=256)
+def _command(command: str, version: tuple[int, int, int]):
+    """The command block's command parsed; None if it does not parse."""
+    function, errors = parse_function(command.removeprefix("/"), "<command block>", "dpemu:command_block", version)
+    return function.commands[0] if function.commands and not errors else None
+
+
 def _final_command(command: str, version: tuple[int, int, int]):
     """The command an ``execute ... run`` chain (or ``return run``) ends with; None if it does not parse."""
-    function, errors = parse_function(command.removeprefix("/"), "<command block>", "dpemu:command_block", version)
-    node = function.commands[0] if function.commands and not errors else None
+    node = _command(command, version)
     while True:
         if isinstance(node, ast.Execute) and node.run is not None:
             node = node.run

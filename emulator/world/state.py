@@ -516,6 +516,7 @@ class WorldState:
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
     flying: list = field(default_factory=list)  # projectiles made in flight, checked at the next tick (world.projectiles)
     command_runner: object = None  # runs a command block's text: (text, Context) -> successes (set by the runtime)
+    functions_named: object = None  # (name, is_tag) -> the ast.Function each names, in order (set by the runtime)
     pending_rewards: list = field(default_factory=list)  # (reward function, player) earned, to run next (take_rewards)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
     version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)

@@ -12,7 +12,9 @@ their PackTest suites run on both backends:
 - crafting: custom recipes tested with a crafter (shaped with a mirrored pattern and an item tag,
   shapeless with a remainder, into a chest in front, crafter_recipe_crafted);
 - lists, typed: a collection library flattening lists that mix types (1.21.5+), and the one-type
-  rule of the lists before it."""
+  rule of the lists before it;
+- ticker: a library ticking its modules' function tag from a repeating command block, as forceload
+  libraries do (the block's LastOutput is ``Running functions ...``: FunctionCommand)."""
 from pathlib import Path
 
 import pytest
@@ -23,7 +25,7 @@ from emulator.testing.runner import load_suite, run_case
 
 HERE = Path(__file__).resolve().parent
 SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
-                                                                         "clicks", "crafting")}
+                                                                         "clicks", "crafting", "ticker")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 

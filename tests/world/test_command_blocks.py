@@ -163,3 +163,46 @@ def test_success_count_counts_each_context_the_command_ran_in(tmp_path, backend)
     assert block(emu, (0, 0, 0), "SuccessCount") == 3 and block(emu, (2, 0, 0), "SuccessCount") == 0
     assert [e["scores"].get("v") for e in emu.entities("@e[tag=t]")] == [1, 1, 1]
     assert block(emu, (4, 0, 0), "SuccessCount") == 3 and emu.score("#n", "v") == 3
+
+
+
+def _function_world(tmp_path, blocks: str) -> Emulator:
+    files = {"t:main": SETUP + blocks, "t:one": "scoreboard players add #one v 1",
+             "t:two": "scoreboard players add #two v 1", "t:returns": "execute if score #one v matches 1.. run return 1"}
+    pack = write_pack(tmp_path / "pack", files, pack_format=71)
+    (pack / "data/t/tags/function").mkdir(parents=True)
+    (pack / "data/t/tags/function/each.json").write_text('{"values": ["t:one", "t:two"]}')
+    emu = Emulator(backend="python")
+    emu.load(pack)
+    emu.start()
+    emu.runtime.call("t:main")
+    return emu
+
+
+def test_function_sends_running_function(tmp_path):
+    """FunctionCommand.FunctionCustomExecutor.runGuarded sends ``commands.function.scheduled.single``
+    with the function's id (Component.translationArg: a literal), or ``...multiple`` with the ids
+    joined by a grey ", " (ComponentUtils.formatList) for a tag of several, before they run (a
+    library's repeating block ticking a function tag every tick, as a forceload module does)."""
+    emu = _function_world(tmp_path, 'setblock 0 0 0 repeating_command_block{auto:1b,Command:"function #t:each"}\n'
+                                    'setblock 2 0 0 command_block{auto:1b,Command:"function t:one"}\n')
+    emu.tick(2)
+    assert emu.score("#one", "v") == 3 and emu.score("#two", "v") == 2  # the repeating block ran twice
+    many = last_output(emu)["extra"][0]
+    assert str(many["translate"]) == "commands.function.scheduled.multiple"
+    assert list(many["with"][0]["extra"]) == ["t:one", {"text": ", ", "color": "gray"}, "t:two"]
+    one = last_output(emu, (2, 0, 0))["extra"][0]
+    assert str(one["translate"]) == "commands.function.scheduled.single" and list(one["with"]) == ["t:one"]
+    assert not any(d.unmodelled for d in emu.diagnostics)
+
+
+def test_a_function_that_can_return_leaves_its_output_not_modelled(tmp_path):
+    """A function that returns a value then sends ``commands.function.result``
+    (FunctionCommand.decorateOutputIfNeeded: the block's source is not silent), which is not
+    produced here: the block's output is not modelled; ``execute ... run function`` neither (the
+    message goes once per context it ran in)."""
+    for command in ("function t:returns", "execute if score #one v matches 0.. run function t:one"):
+        emu = _function_world(tmp_path / command.replace(" ", "_").replace(":", "_").replace(".", "_"),
+                              f'setblock 0 0 0 command_block{{auto:1b,Command:"{command}"}}\n')
+        emu.tick()
+        assert any(d.unmodelled and "LastOutput" in d.message for d in emu.diagnostics)

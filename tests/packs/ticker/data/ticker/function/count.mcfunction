@@ -1,0 +1,1 @@
+scoreboard players add #ticks ticker.n 1

@@ -1,0 +1,1 @@
+execute as @e[type=marker,tag=ticker.new] run tag @s add ticker.seen
