@@ -95,6 +95,12 @@ class Emulator:
     def load_diagnostics(self) -> list[Diagnostic]:
         return list(self.packs.diagnostics) if self.packs else []
 
+    @property
+    def backend_ran(self) -> str:
+        """Which backend ran the packs: its name, or for ``auto`` which ran and where it switched
+        (``python, then numba from tick 3 (after 10,002 of work)``)."""
+        return getattr(self.backend, "ran", self.backend_name)
+
     def _runtime(self) -> Runtime:
         if self.runtime is None:
             raise RuntimeError("no pack loaded: call Emulator.load(path) first")

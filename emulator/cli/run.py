@@ -17,6 +17,7 @@ from emulator.cli.options import (
 )
 from emulator.cli.outcome import exit_status, fail_option, has_errors, interruptible, progress
 from emulator.cli.params import OutputPath, write_output
+from emulator.runtime.auto import SWITCH_AFTER
 
 PROGRESS_MIN_TICKS = 200  # show a progress bar from this many ticks on
 BATCH_TICKS = 1000  # ticks run in one call when nothing is watched (Ctrl-C and the bar act between calls)
@@ -25,7 +26,9 @@ BATCH_TICKS = 1000  # ticks run in one call when nothing is watched (Ctrl-C and 
 @click.command("run", cls=OrderedCommand)
 @run_options
 @click.option("--watch", multiple=True, metavar='"HOLDER OBJ"', help="Report this score (and per tick in --csv).")
-@click.option("--backend", type=click.Choice(["numba", "python"]), default="numba", show_default=True)
+@click.option("--backend", type=click.Choice(["auto", "numba", "python"]), default="auto", show_default=True,
+              help=f"auto: the python backend, then the numba VM once the run has done {SWITCH_AFTER:,} commands' "
+                   "work (a root counting as a few).")
 @click.option("--sanitize", is_flag=True, help="Report every arithmetic result that wraps int32.")
 @click.option("--json", "json_out", type=OutputPath(), metavar="FILE|-", help="Write the results as JSON.")
 @click.option("--csv", "csv_out", type=OutputPath(), metavar="FILE|-", help="Watched values per tick.")
@@ -115,6 +118,7 @@ def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float
         "max_root_cost": emu.max_root_cost,
         "quota_headroom": emu.quota - emu.max_root_cost,
         "wall_time_s": round(wall, 6),
+        "backend": emu.backend_ran,
         "watch": {w.label: emu.score(w.holder, w.objective) for w in watches},
         "until_met": stop.met(emu) if stop else None,
         "scores": emu.scores(),
@@ -137,6 +141,7 @@ def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:
         f"wall: {report['wall_time_s']:.3f} s")
     out(f"commands/tick: mean {report['commands_per_tick_mean']:.1f}, max {report['commands_per_tick_max']}   "
         f"quota headroom: {report['quota_headroom']} (costliest root {report['max_root_cost']})")
+    out(f"backend: {report['backend']}")
     for label, value in report["watch"].items():
         out(f"  {label} = {'unset' if value is None else value}")
     if report["until_met"] is not None:

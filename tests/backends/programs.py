@@ -440,12 +440,17 @@ class Outcome:
     storage: dict = None  # {storage id: SNBT}
     schedules: tuple = ()  # (name, due) of every pending schedule, in run order
     gamerules: dict = None
+    roots: tuple = ()  # (result, cost, cut) of each root run
+    ran: str = ""  # the backend's name, or which ran (Emulator.backend_ran)
 
 
 def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, scores: dict | None = None,
-             limit: int | None = None) -> Outcome:
-    """Load ``pack`` and run ``entry`` as one root on a fresh world; ``scores`` seeds
-    ``{(holder, objective): value}`` first; ``limit`` sets maxCommandChainLength."""
+             limit: int | None = None, roots: int = 1, switch_after: int | None = None) -> Outcome:
+    """Load ``pack`` and run ``entry`` as ``roots`` roots on a fresh world (the outcome's result,
+    cost and cut are the last one's); ``scores`` seeds ``{(holder, objective): value}`` first;
+    ``limit`` sets maxCommandChainLength; ``switch_after``: run on the auto backend
+    (:mod:`emulator.runtime.auto`) switching after that much work, ``backend_name`` ignored."""
+    from emulator.runtime.auto import AutoBackend
     from emulator.runtime.factory import make_backend
     from emulator.world.entities import entity_nbt
     from emulator.world.resources import Resources
@@ -461,9 +466,13 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
         state.gamerules.set("maxCommandChainLength", str(limit))
     for (holder, objective), value in (scores or {}).items():
         state.scoreboard.set(holder, objective, value)
-    backend = make_backend(backend_name)
+    if switch_after is None:
+        backend = make_backend(backend_name)
+    else:
+        backend = AutoBackend(make_backend("python"), lambda: make_backend("numba"), switch_after)
     backend.load(packs, state, sanitize=sanitize)
-    root = backend.run_root(entry)
+    results = [backend.run_root(entry) for _ in range(roots)]
+    root = results[-1]
     return Outcome(
         scores=state.scoreboard.scores(),
         result=root.result,
@@ -478,4 +487,6 @@ def run_root(backend_name: str, pack: Path, entry: str, sanitize: bool = False, 
         storage={sid: to_snbt(root) for sid, root in state.storage.items()},
         schedules=tuple((e.name, e.due) for e in state.schedule.pending()),
         gamerules=dict(state.gamerules.values),
+        roots=tuple((r.result, r.cost, r.cut) for r in results),
+        ran=getattr(backend, "ran", backend.name),
     )

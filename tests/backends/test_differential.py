@@ -46,9 +46,14 @@ def _compare(tmp_path_factory, program, sanitize: bool, limit: int | None = None
     reference = run_root("python", pack, program.entry, sanitize=sanitize, limit=limit)
     vm = run_root("numba", pack, program.entry, sanitize=sanitize, limit=limit)
     assert not [m for m, _ in reference.diagnostics if m.startswith("internal error")]
+    _assert_agree(vm, reference, sanitize)
+
+
+def _assert_agree(vm, reference, sanitize: bool) -> None:
     assert vm.scores == reference.scores
     assert vm.result == reference.result
     assert (vm.cost, vm.cut) == (reference.cost, reference.cut)
+    assert vm.roots == reference.roots
     assert vm.line_costs == reference.line_costs
     assert vm.log == reference.log
     assert vm.entities == reference.entities
@@ -134,3 +139,22 @@ def test_store_into_a_random_holder_draws_once(tmp_path):
     reference, vm = run_root("python", pack, "t:main"), run_root("numba", pack, "t:main")
     assert sum(v == 7 for v in reference.scores["o"].values()) == 2  # #x and the one marker
     assert vm.scores == reference.scores
+
+
+# The auto backend (emulator.runtime.auto) runs the reference backend, then moves to the VM between
+# two roots: the entry run as three roots on one world, the switch after the first or the second,
+# leaves what the reference alone leaves (the VM compiles the packs into a world already changed)
+@settings(settings.get_profile("differential"), max_examples=max(EXAMPLES // 3, 20))
+@given(program=programs(modifiers=True, entities=True), switch=st.sampled_from([1, 2]), sanitize=st.booleans())
+def test_switching_to_the_vm_between_roots_agrees(tmp_path_factory, program, switch, sanitize):
+    from emulator.runtime.auto import ROOT_WORK
+
+    assume(not any(gap.search(program.text()) for gap in KNOWN_VM_GAPS.values()))
+    note(program.text())
+    pack = write_pack(tmp_path_factory.mktemp("pack"), program.functions, program.tags, files=program.files)
+    reference = run_root("python", pack, program.entry, sanitize=sanitize, roots=3)
+    work = sum(cost + ROOT_WORK for _, cost, _ in reference.roots[:switch])
+    switched = run_root("auto", pack, program.entry, sanitize=sanitize, roots=3, switch_after=work)
+    assert switched.ran.startswith("python, then numba from tick 0")
+    assert not [m for m, _ in reference.diagnostics if m.startswith("internal error")]
+    _assert_agree(switched, reference, sanitize)

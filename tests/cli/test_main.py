@@ -49,6 +49,14 @@ def test_the_python_backend_imports_no_numba(tmp_path, command):
     assert "numba modules: []" in dpemu(command, str(pack), "--backend", "python", "--ticks", "2")
 
 
+def test_a_short_run_on_the_default_backend_imports_no_numba(tmp_path):
+    # auto (emulator.runtime.auto): the reference backend until the run has done SWITCH_AFTER of work
+    pack = write_pack(tmp_path / "pack", {"t:tick": "scoreboard objectives add o dummy\nsay hi"},
+                      {"minecraft:tick": ["t:tick"]})
+    out = dpemu("run", str(pack), "--ticks", "2")
+    assert "backend: python\n" in out and "numba modules: []" in out
+
+
 def test_a_built_in_subcommand_reads_no_package_metadata(tmp_path):
     # the installed packages' entry points (importlib.metadata reading every package) are looked up
     # only to list the subcommands or to find one another package adds

@@ -81,7 +81,25 @@ def test_json_to_stdout_stays_parseable(pack):
     assert json.loads(result.stdout)["ticks"] == 1
 
 
-@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_the_report_says_which_backend_ran(pack):
+    # the default (auto) moves to the VM between two roots once the run has done SWITCH_AFTER of
+    # work (here a tick is 3 commands and ROOT_WORK for its root); --backend forces one backend
+    from emulator.runtime.auto import ROOT_WORK, SWITCH_AFTER
+
+    def report(*args):
+        return json.loads(invoke(pack, "--json", "-", *args).stdout)
+
+    assert report("--ticks", "3")["backend"] == "python"
+    assert report("--ticks", "3", "--backend", "numba")["backend"] == "numba"
+    assert report("--ticks", "3", "--backend", "python")["backend"] == "python"
+    ticks = str(SWITCH_AFTER // (3 + ROOT_WORK) + 50)
+    switched, vm = report("--ticks", ticks), report("--ticks", ticks, "--backend", "numba")
+    assert switched["backend"].startswith("python, then numba from tick ")
+    assert (switched["scores"], switched["log"], switched["commands_per_tick"]) == (
+        vm["scores"], vm["log"], vm["commands_per_tick"])
+
+
+@pytest.mark.parametrize("backend", ["auto", "numba", "python"])
 def test_sanitize_reports_overflow(pack, tmp_path, backend):
     out = tmp_path / "r.json"
     invoke(pack, "--ticks", "1", "--call", "t:big", "--sanitize", "--backend", backend,
