@@ -41,9 +41,9 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound, Int, String
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
-from emulator.world.errors import CommandFailure
-from emulator.world import command_blocks, signs
-from emulator.world.inventories import CRAFTER, crafter_loaded, default_block_entity, normalise_items
+from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world import block_entities, signs
+from emulator.world.inventories import CRAFTER, crafter_loaded, normalise_items
 from emulator.world.nbt_ops import compare_nbt, copy_tag, tags_equal
 from emulator.world.source import Source
 
@@ -53,8 +53,6 @@ MODIFICATION_LIMIT = 32768  # gamerule commandModificationBlockLimit default
 # blocks whose new block entity saves nothing (BannerBlockEntity without patterns or name,
 # SkullBlockEntity without a profile, a sound or a name, LecternBlockEntity without a book,
 # BrushableBlockEntity without an item or loot table)
-_EMPTY_ENTITY_SUFFIXES = ("_banner", "_skull", "_head", "minecraft:lectern", "minecraft:suspicious_sand",
-                          "minecraft:suspicious_gravel")
 
 
 _ID = re.compile(r"#?[a-z0-9_.\-]+(?::[a-z0-9_.\-/]+)?")
@@ -184,10 +182,14 @@ def _loaded(block_id: str, nbt: Compound) -> None:
         crafter_loaded(nbt)
 
 
+WORLD_RELEASE = (1, 21, 11)  # the release a world runs as when no pack says
+
+
 class BlockMap:
-    def __init__(self) -> None:
+    def __init__(self, version_of: Callable[[], tuple] = lambda: WORLD_RELEASE) -> None:
         self.states: dict[tuple[int, int, int], BlockState] = {}
         self.entities: dict[tuple[int, int, int], Compound] = {}
+        self.version_of = version_of  # the release the world runs as (what a new block entity saves)
 
     def get(self, pos) -> BlockState:
         return self.states.get(tuple(pos), BlockState(AIR))
@@ -208,13 +210,9 @@ class BlockMap:
         else:
             self.states[pos] = state
         self.entities.pop(pos, None)
-        nbt = default_block_entity(state.id, dict(state.properties).get("triggered") == "true")
-        if nbt is None:
-            nbt = command_blocks.default_entity(state.id)
-        if nbt is None and state.id.endswith(_EMPTY_ENTITY_SUFFIXES) and state.id != "minecraft:piston_head":
-            nbt = Compound()
-        if spec.nbt is not None:
-            nbt = nbt or Compound()
+        nbt = block_entities.new_entity(state.id, self.version_of(), dict(state.properties).get("triggered") == "true")
+        if spec.nbt is not None and block_entities.type_id(state.id) is not None:  # BlockInput.place: else ignored
+            nbt = nbt if nbt is not None else Compound()
             nbt.update(copy_tag(spec.nbt))
             _loaded(state.id, nbt)
         if nbt is not None:
@@ -306,13 +304,16 @@ class BlockMap:
 
     def block_nbt(self, pos, quiet: bool = False) -> Compound | None:
         """The block entity's NBT with the position and id the game adds (``saveWithFullMetadata``)."""
+        block_id = self.get(pos).id
+        if not block_entities.known(block_id, self.version_of()):
+            raise Unmodelled(f"the block entity of {block_id} (what it saves in this release is not known)")
         stored = self.entity(pos)
         if stored is None:
             if quiet:
                 return None
             raise CommandFailure("commands.data.block.invalid")
         nbt = copy_tag(stored)
-        nbt.update(x=Int(pos[0]), y=Int(pos[1]), z=Int(pos[2]), id=String(self.get(pos).id))
+        nbt.update(x=Int(pos[0]), y=Int(pos[1]), z=Int(pos[2]), id=String(block_entities.type_id(block_id) or block_id))
         return nbt
 
     def modify_block(self, pos, change: Callable[[Compound], object]):

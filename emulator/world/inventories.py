@@ -83,9 +83,9 @@ _UNMODELLED = {**{f"minecraft:{n}": range(300, 308) for n in ("villager", "wande
 CRAFTER = "minecraft:crafter"
 # campfires keep four items in ``Items`` but are no Container (Clearable): item commands refuse them
 CAMPFIRES = frozenset({"minecraft:campfire", "minecraft:soul_campfire"})
+SHULKER_BOXES = frozenset({"minecraft:shulker_box"} | {f"minecraft:{c}_shulker_box" for c in COLOURS})
 CONTAINER_SIZES = {
-    **{f"minecraft:{n}": 27 for n in ("chest", "trapped_chest", "barrel", "shulker_box")},
-    **{f"minecraft:{c}_shulker_box": 27 for c in COLOURS},
+    **{f"minecraft:{n}": 27 for n in ("chest", "trapped_chest", "barrel")}, **{box: 27 for box in SHULKER_BOXES},
     "minecraft:hopper": 5, "minecraft:dispenser": 9, "minecraft:dropper": 9, "minecraft:crafter": 9,
     "minecraft:furnace": 3, "minecraft:smoker": 3, "minecraft:blast_furnace": 3, "minecraft:brewing_stand": 5,
     "minecraft:chiseled_bookshelf": 6,
@@ -275,6 +275,22 @@ class Container:
         return _list_slot(self.nbt, "Items", index, self.version)
 
 
+class ShulkerBoxContainer(Container):
+    """A shulker box's 27 slots: ShulkerBoxBlockEntity saves ``Items`` only when one holds an item
+    (ContainerHelper.saveAllItems with alwaysPutTag false)."""
+
+    def slot(self, index: int) -> SlotAccess | None:
+        access = super().slot(index)
+        if access is None:
+            return None
+
+        def put(stack: ItemStack) -> None:
+            access.set(stack)
+            if not self.nbt.get("Items"):
+                self.nbt.pop("Items", None)
+        return SlotAccess(access.get, put)
+
+
 class CrafterContainer(Container):
     """A crafter's nine slots: CrafterBlockEntity.setItem enables a disabled slot it fills."""
 
@@ -301,6 +317,8 @@ def container(blocks, pos, version) -> Container | None:
         return Container(nbt, 1, version, SINGLE_ITEM_BLOCKS[block_id])
     if block_id == CRAFTER:
         return CrafterContainer(nbt, 9, version)
+    if block_id in SHULKER_BOXES:
+        return ShulkerBoxContainer(nbt, 27, version)
     size = CONTAINER_SIZES.get(block_id)
     return None if size is None else Container(nbt, size, version)
 

@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from emulator.world.biomes import BiomeCells
-from emulator.world.blocks import BlockMap
+from emulator.world.blocks import WORLD_RELEASE, BlockMap
 from emulator.world.advancement_progress import Progress
 from emulator.world.bossbars import BossBars
 from emulator.world.entities import EntityStore
@@ -519,7 +519,7 @@ class WorldState:
     functions_named: object = None  # (name, is_tag) -> the ast.Function each names, in order (set by the runtime)
     pending_rewards: list = field(default_factory=list)  # (reward function, player) earned, to run next (take_rewards)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
-    version: tuple[int, int, int] = (1, 21, 11)  # the game release the packs run as (LoadedPacks.version)
+    version: tuple[int, int, int] = WORLD_RELEASE  # the game release the packs run as (LoadedPacks.version)
     resources: Resources = field(default_factory=Resources)  # loot, predicates, tags, advancements
     clocks: object = None  # 26.1+: the world clocks (emulator.world.clocks.WorldClocks)
     biomes: BiomeCells = field(default_factory=BiomeCells)  # the cells fillbiome set, per level (biomes)
@@ -530,12 +530,16 @@ class WorldState:
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)
         self.entities.clock = lambda: self.tick
+        self.blocks.version_of = self._release
+
+    def _release(self) -> tuple:
+        return self.version
 
     def blocks_in(self, dimension: str) -> BlockMap:
         """The blocks of level ``dimension`` (each level has its own)."""
         if dimension == "minecraft:overworld":
             return self.blocks
-        return self.other_levels_blocks.setdefault(dimension, BlockMap())
+        return self.other_levels_blocks.setdefault(dimension, BlockMap(self._release))
 
     def level(self, dimension: str) -> "LevelView":
         """The world as seen from level ``dimension`` (what the game's ServerLevel gives a block's

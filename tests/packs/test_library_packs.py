@@ -11,6 +11,8 @@ their PackTest suites run on both backends:
   entity and damage conditions, ``execute on attacker|target``);
 - crafting: custom recipes tested with a crafter (shaped with a mirrored pattern and an item tag,
   shapeless with a remainder, into a chest in front, crafter_recipe_crafted);
+- machines: block entities set up and read as machine and spawner packs do (a spawner placed then
+  merged, a bee nest's bees, a furnace's times, the block entity type's id);
 - lists, typed: a collection library flattening lists that mix types (1.21.5+), and the one-type
   rule of the lists before it;
 - ticker: a library ticking its modules' function tag from a repeating command block, as forceload
@@ -25,7 +27,7 @@ from emulator.testing.runner import load_suite, run_case
 
 HERE = Path(__file__).resolve().parent
 SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
-                                                                         "clicks", "crafting", "ticker")}
+                                                                         "clicks", "crafting", "ticker", "machines")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 

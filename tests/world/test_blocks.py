@@ -13,7 +13,8 @@ from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import String
 from emulator.world import nbt_ops
 from emulator.world.blocks import BlockMap, BlockState, block_pos, parse_block, with_defaults
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.loot_context import snbt_or_tag
 from emulator.world.source import Source
 from tests.world.world_emulator import emulator
 from tests.world.world_paths import path
@@ -154,3 +155,62 @@ def test_campfires_and_suspicious_blocks_have_their_block_entities(tmp_path):
     assert [int(v) for v in fire["CookingTotalTimes"]] == [0, 0, 0, 0]
     assert emu.state.blocks.entity((1, 0, 0)) == {}
     assert (emu.score("#item", "o"), emu.score("#data", "o")) == (0, 1)
+
+
+def _placed(block: str, version) -> BlockMap:
+    world = BlockMap(lambda: version)
+    world.place((0, 0, 0), with_defaults(parse_block(block), version))
+    return world
+
+
+@pytest.mark.parametrize("block,version,saved", [
+    # BaseSpawner.save: the delays and counts as shorts, SpawnPotentials; SpawnData only once drawn
+    # from 1.19.3 (nextSpawnData null), a pig before (new SpawnData())
+    ("spawner", (1, 21, 0), "{Delay:20s,MinSpawnDelay:200s,MaxSpawnDelay:800s,SpawnCount:4s,MaxNearbyEntities:6s,"
+                            "RequiredPlayerRange:16s,SpawnRange:4s,SpawnPotentials:[]}"),
+    ("spawner", (1, 19, 2), "{SpawnData:{entity:{id:\"minecraft:pig\"}},SpawnPotentials:[]}"),
+    # AbstractFurnaceBlockEntity.saveAdditional: renamed in 1.21.4 (BlockEntityFurnaceBurnTimeFix)
+    ("smoker", (1, 21, 0), "{BurnTime:0s,CookTime:0s,CookTimeTotal:0s,Items:[],RecipesUsed:{}}"),
+    ("furnace", (1, 21, 4), "{cooking_time_spent:0s,cooking_total_time:0s,lit_time_remaining:0s,lit_total_time:0s,"
+                            "Items:[],RecipesUsed:{}}"),
+    ("brewing_stand", (1, 21, 0), "{BrewTime:0s,Fuel:0b,Items:[]}"),  # BrewingStandBlockEntity.saveAdditional
+    ("bee_nest", (1, 21, 0), "{bees:[]}"), ("beehive", (1, 20, 4), "{Bees:[]}"),  # BeehiveBlockEntity, 1.20.5 renames
+    ("beacon", (1, 21, 0), "{Levels:0}"),  # BeaconBlockEntity: storeEffect writes no effect while none is chosen
+    ("beacon", (1, 20, 1), "{Primary:-1,Secondary:-1,Levels:0}"),  # MobEffect.getIdFromNullable(null): -1
+    ("hopper", (1, 21, 0), "{Items:[],TransferCooldown:-1}"),  # HopperBlockEntity: cooldownTime = -1
+    ("chiseled_bookshelf", (1, 21, 0), "{Items:[],last_interacted_slot:-1}"),
+    ("comparator", (1, 21, 0), "{OutputSignal:0}"), ("end_gateway", (1, 21, 0), "{Age:0L}"),
+])
+def test_a_new_block_entity_saves_what_the_game_saves(block, version, saved):
+    world = _placed(block, version)
+    wanted = snbt_or_tag(saved)
+    found = world.entity((0, 0, 0))
+    assert nbt_ops.tags_equal(wanted, found) if "SpawnData" not in saved else nbt_ops.compare_nbt(wanted, found)
+
+
+def test_block_entity_ids_and_blocks_without_one():
+    # BlockEntity.saveWithFullMetadata adds the type's id (BlockEntityType: "sign" for every sign,
+    # "mob_spawner", "beehive" for a bee nest ...); an empty shulker box saves no Items
+    # (ContainerHelper.saveAllItems(..., false)); BlockInput.place ignores NBT for a block without one
+    version = (1, 21, 0)
+    assert _placed("oak_wall_sign", version).block_nbt((0, 0, 0))["id"] == "minecraft:sign"
+    assert _placed("spawner", version).block_nbt((0, 0, 0))["id"] == "minecraft:mob_spawner"
+    assert _placed("bee_nest", version).block_nbt((0, 0, 0))["id"] == "minecraft:beehive"
+    box = _placed("red_shulker_box", version)
+    assert box.entity((0, 0, 0)) == {} and box.block_nbt((0, 0, 0))["id"] == "minecraft:shulker_box"
+    for block in ("ender_chest", "enchanting_table", "red_bed", "bell", "conduit", "daylight_detector"):
+        assert _placed(block, version).entity((0, 0, 0)) == {}, block
+    stone = _placed("stone{Items:[]}", version)
+    assert stone.entity((0, 0, 0)) is None
+    with pytest.raises(CommandFailure, match="not a block entity"):
+        stone.block_nbt((0, 0, 0))
+
+
+def test_a_block_entity_whose_save_is_not_known_is_not_modelled():
+    # a sculk sensor's vibration listener, a trial spawner, a jukebox of 1.20 (its TickCount counts
+    # every tick): reading them says so instead of a wrong answer
+    for block, version in (("sculk_sensor", (1, 21, 0)), ("trial_spawner", (1, 21, 0)), ("jukebox", (1, 20, 1)),
+                           ("spawner", (1, 17, 1))):
+        world = _placed(block, version)
+        with pytest.raises(Unmodelled, match="block entity of minecraft:"):
+            world.block_nbt((0, 0, 0))
