@@ -4,9 +4,9 @@ recipes match and assemble.
 - ``craft(resources, grid, version) -> Crafted | None``: the first recipe in the game's order
   (``recipe_order``) that matches the grid (nine stacks, row by row), its result and remainders;
   None when none matches. Shaped (``crafting_shaped``), shapeless (``crafting_shapeless``),
-  from 1.21.2 to 1.21.4 transmute, and before 26.1 book cloning (from 1.20.5) and map cloning
-  recipes are matched; another special recipe (``crafting_special_*``,
-  ``crafting_decorated_pot``) or a later transmute recipe reached in that order, when the grid
+  transmute (from 1.21.2; from 1.21.5 with its result's count and components), and before 26.1 book
+  cloning (from 1.20.5) and map cloning recipes are matched; another special recipe
+  (``crafting_special_*``, ``crafting_decorated_pot``) reached in that order, when the grid
   holds what it needs, makes the craft not modelled (Unmodelled), as does no match without the
   game's own recipes (``--game-jar``) and, before 1.21.2 without them, two matches.
 
@@ -19,7 +19,8 @@ stack), ShapedRecipe/ShapelessRecipe.assemble (a copy of the result: ItemStack.S
 ``item`` before 1.20.5), CraftingRecipe.getRemainingItems (Item.getCraftingRemainingItem: the
 water, lava and milk buckets leave a bucket, honey bottles and dragon's breath a glass bottle),
 RecipeManager.getRecipeFor (the first recipe of the type that matches, in the recipe map's order),
-TransmuteRecipe (1.21.3: matches, assemble, ItemStack.transmuteCopy), BookCloningRecipe
+TransmuteRecipe (1.21.3: matches, assemble, ItemStack.transmuteCopy; 1.21.11: matches with
+TransmuteResult.isResultUnchanged, assemble with TransmuteResult.apply and its CODEC), BookCloningRecipe
 (matches, assemble, getRemainingItems; WrittenBookContent.tryCraftCopy), MapCloningRecipe, the
 other special recipes' matches (what each needs in the grid).
 """
@@ -156,6 +157,60 @@ def recipe_order(ids, version) -> list[str]:
     return java_hash_map_order(sorted(ids, key=lambda rid: by_location(rid, ".json")), resource_location_hash)
 
 
+def _transmute_result(recipe: dict) -> tuple[str, int, dict]:
+    """TransmuteResult.CODEC (1.21.5+): an item id, or ``{id, count, components}`` (count 1 and no
+    components by default)."""
+    result = recipe.get("result", "")
+    if isinstance(result, dict):
+        return _id(str(result.get("id", ""))), int(result.get("count", 1)), result.get("components") or {}
+    return _id(str(result)), 1, {}
+
+
+def _transmute_copy(source: ItemStack, item_id: str, count: int) -> ItemStack:
+    """ItemStack.transmuteCopy: the item changed, the source's component patch kept over it."""
+    made = ItemStack(item_id, count)
+    for name, value in source.patch.items():
+        if name.startswith("!"):
+            items.remove_component(made, name[1:])
+        else:
+            items.set_component(made, name, value)
+    return made
+
+
+def _transmute_applied(recipe: dict, source: ItemStack) -> ItemStack:
+    """TransmuteResult.apply: transmuteCopy to the result's item and count, then its components."""
+    item_id, count, components = _transmute_result(recipe)
+    made = _transmute_copy(source, item_id, count)
+    for name, value in components.items():
+        if name.startswith("!"):
+            items.remove_component(made, _id(name[1:]))
+        else:
+            items.set_component(made, _id(name), to_tag(value))
+    return made
+
+
+def _transmuted_since_1_21_5(recipe: dict, stacks: list[ItemStack], resources) -> ItemStack | None:
+    """TransmuteRecipe (1.21.5+): two stacks; the first that the input accepts is the input, and the
+    recipe does not match when the result would leave it unchanged (TransmuteResult.isResultUnchanged:
+    one item, the same item and components); every other stack must be the one material. The
+    result is TransmuteResult.apply of the input. None when it does not match."""
+    present = [s for s in stacks if not s.is_empty]
+    if len(present) != 2:
+        return None
+    source, material = None, False
+    for stack in present:
+        if source is None and _ingredient_test(recipe.get("input"), stack, resources):
+            made = _transmute_applied(recipe, stack)
+            if made.count == 1 and made.same_item_same_components(stack):
+                return None
+            source = stack
+        elif material or not _ingredient_test(recipe.get("material"), stack, resources):
+            return None
+        else:
+            material = True
+    return _transmute_applied(recipe, source) if source is not None and material else None
+
+
 def _transmuted(recipe: dict, stacks: list[ItemStack], resources) -> ItemStack | None:
     """TransmuteRecipe (1.21.2 - 1.21.4): two stacks, the input (not already the result) and the
     material; the result is the input's item made the result item, one of it, with the input's
@@ -174,13 +229,7 @@ def _transmuted(recipe: dict, stacks: list[ItemStack], resources) -> ItemStack |
             material = True
     if source is None or not material:
         return None
-    made = ItemStack(result, 1)
-    for name, value in source.patch.items():
-        if name.startswith("!"):
-            items.remove_component(made, name[1:])
-        else:
-            items.set_component(made, name, value)
-    return made
+    return _transmute_copy(source, result, 1)
 
 
 # each special recipe type the emulator does not match, and an item it cannot match without (the
@@ -278,7 +327,9 @@ def _result(kind: str, body, width: int, height: int, stacks: list[ItemStack], r
         return result_stack(body["result"], version) if _shaped_matches(body, width, height, stacks, resources) else None
     if body is not None and kind == SHAPELESS:
         return result_stack(body["result"], version) if _shapeless_matches(body, stacks, resources) else None
-    if body is not None and kind == TRANSMUTE and TRANSMUTE_SINCE <= tuple(version) < TRANSMUTE_REWRITTEN:
+    if body is not None and kind == TRANSMUTE and TRANSMUTE_SINCE <= tuple(version):
+        if tuple(version) >= TRANSMUTE_REWRITTEN:
+            return _transmuted_since_1_21_5(body, stacks, resources)
         return _transmuted(body, stacks, resources)
     if kind == BOOK_CLONING and items.COMPONENTS_VERSION <= tuple(version) < SPECIAL_UNTIL:
         return _book_copies(stacks)

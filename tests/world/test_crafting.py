@@ -152,9 +152,29 @@ def test_a_transmute_recipe_keeps_the_inputs_components():
     res.vanilla_data = True  # none of the game's recipes here: no match is no craft
     for cells in ({0: "diamond_sword", 4: "diamond"}, {0: "stone_sword", 4: "diamond", 8: "diamond"}, {0: "stone_sword"}):
         assert crafting.craft(res, _grid(cells), (1, 21, 4)) is None
-    # its later forms (1.21.5+) are not modelled: a grid it may make says so
-    with pytest.raises(Unmodelled, match="t:upgrade"):
-        crafting.craft(res, grid, (1, 21, 5))
+
+
+def test_a_transmute_recipe_from_1_21_5_applies_its_result():
+    # TransmuteResult (1.21.5+; 1.21.11's source): the result an id or {id, count, components};
+    # apply = transmuteCopy(item, count) then the result's component patch; TransmuteRecipe.matches
+    # refuses an input the result leaves unchanged (isResultUnchanged: one item, same components)
+    recipe = {"type": "minecraft:crafting_transmute", "input": "#t:boxes", "material": "minecraft:blue_dye",
+              "result": {"id": "minecraft:blue_shulker_box", "count": 2,
+                         "components": {"minecraft:rarity": "epic", "!minecraft:custom_name": {}}}}
+    res = _resources(**{"t:dye": recipe})
+    res.tags = {"item": {"t:boxes": RegistryTag(frozenset({"minecraft:shulker_box", "minecraft:blue_shulker_box"}))}}
+    res.vanilla_data = True
+    box = ItemStack("minecraft:shulker_box")
+    items.set_component(box, "minecraft:custom_name", String("Loot"))
+    items.set_component(box, "minecraft:lore", List([String("kept")]))
+    made = crafting.craft(res, [box, ItemStack("minecraft:blue_dye")] + [EMPTY.copy()] * 7, (1, 21, 5)).result
+    assert (made.id, made.count) == ("minecraft:blue_shulker_box", 2)
+    assert made.component("minecraft:lore") == List([String("kept")]) and made.component("minecraft:custom_name") is None
+    assert made.component("minecraft:rarity") == String("epic")
+    # an input already what the result makes of it: the recipe does not match (no craft)
+    recipe["result"] = "minecraft:blue_shulker_box"
+    assert crafting.craft(res, _grid({0: "blue_shulker_box", 1: "blue_dye"}), (1, 21, 5)) is None
+    assert crafting.craft(res, _grid({0: "shulker_box", 1: "blue_dye"}), (1, 21, 11)).result.id == "minecraft:blue_shulker_box"
 
 
 def test_a_special_recipe_is_not_modelled_only_where_it_could_match():
