@@ -35,8 +35,7 @@ def resource_location(r: Reader, what: str = "resource location") -> str:
         r.fail(f"invalid {what} '{token}': more than one ':'", start + colon + 1 + path.index(":"))
     if "/" in namespace:
         r.fail(f"invalid {what} '{token}': '/' is not allowed in the namespace", start)
-    if not path:
-        r.fail(f"invalid {what} '{token}': empty path", start + colon + 1)
+    # an empty path is valid (ResourceLocation.isValidPath of ""): ``storage call_stack:`` is a storage
     return token if namespace else "minecraft:" + path
 
 

@@ -16,7 +16,9 @@ their PackTest suites run on both backends:
 - lists, typed: a collection library flattening lists that mix types (1.21.5+), and the one-type
   rule of the lists before it;
 - ticker: a library ticking its modules' function tag from a repeating command block, as forceload
-  libraries do (the block's LastOutput is ``Running functions ...``: FunctionCommand)."""
+  libraries do (the block's LastOutput is ``Running functions ...``: FunctionCommand);
+- stack: a call-stack library keeping its frames in the storage ``stack:`` (a resource location
+  with an empty path, valid: ResourceLocation.isValidPath), as in-game unit test libraries do."""
 from pathlib import Path
 
 import pytest
@@ -27,7 +29,7 @@ from emulator.testing.runner import load_suite, run_case
 
 HERE = Path(__file__).resolve().parent
 SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
-                                                                         "clicks", "crafting", "ticker", "machines")}
+                                                                         "clicks", "crafting", "ticker", "machines", "stack")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 

@@ -103,13 +103,14 @@ def test_range_errors(text, message):
 
 
 @pytest.mark.parametrize("text,expected", [("foo", "minecraft:foo"), ("a:b/c", "a:b/c"), (":x", "minecraft:x"),
-                                           ("a.b-c_d:e/f.g", "a.b-c_d:e/f.g")])
+                                           ("a.b-c_d:e/f.g", "a.b-c_d:e/f.g"), ("a:", "a:"), (":", "minecraft:")])
 def test_resource_locations(text, expected):
+    """ResourceLocation.bySeparator; isValidPath accepts an empty path (no character to refuse)."""
     assert primitives.resource_location(reader(text)) == expected
 
 
 @pytest.mark.parametrize("text,message", [("Foo", "invalid character 'F'"), ("a:b:c", "more than one"),
-                                          ("a/b:c", "namespace"), ("a:", "empty path")])
+                                          ("a/b:c", "namespace")])
 def test_resource_location_errors(text, message):
     with pytest.raises(ParseError, match=message):
         primitives.resource_location(reader(text))

@@ -1,0 +1,1 @@
+data modify storage stack: frames set value []
