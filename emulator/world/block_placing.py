@@ -5,7 +5,8 @@ the block, the item spent, ``minecraft.used:<item>`` and the ``placed_block`` cr
   there is no room, ``"pass"`` for an adventure player; None when the held item places no block
   the emulator knows (the caller decides what that means). A block with state properties takes the
   state its placement gives it (emulator.world.placed_states: facing, axis, half ...; a block whose
-  rule is not modelled raises Unmodelled), and the stairs beside it take their new shape; items
+  rule is not modelled raises Unmodelled), and the stairs beside it take their new shape; a head
+  keeps the item's profile, note block sound, name and other components in its block entity; items
   carrying block data (``block_state``, ``block_entity_data``) raise Unmodelled. Other neighbours'
   shapes (fences, walls, panes, redstone) do not follow, as after ``setblock`` here.
 
@@ -13,7 +14,8 @@ Where it goes (BlockPlaceContext): on the clicked block when that one can be rep
 lava, grass ...), else on its neighbour in the clicked face's direction, which then must be
 replaceable; a living entity (or vehicle) in the way refuses it (Level.isUnobstructed).
 
-Sources (decompiled 1.21.x): world/item/BlockItem.java (useOn, place: PLACED_BLOCK, consume),
+Sources (decompiled 1.21.x): world/item/BlockItem.java (useOn, place: PLACED_BLOCK, consume), world/level/block/entity/BlockEntity.java
+(applyComponents) and SkullBlockEntity.java (applyImplicitComponents, saveAdditional),
 world/item/context/BlockPlaceContext.java, world/item/ItemStack.java (useOn: ITEM_USED; adventure:
 canPlaceOnBlockInAdventureMode), world/level/block/state/BlockBehaviour.java (canBeReplaced: the
 ``replaceable`` tag), world/entity/Entity.java (blocksBuilding).
@@ -27,11 +29,17 @@ from emulator.world.block_shapes import REPLACEABLE
 from emulator.world.blocks import BlockSpec
 from emulator.world.errors import Unmodelled
 from emulator.world.inventories import NOT_LIVING
+from emulator.world.nbt_ops import copy_tag
+from mcfunction_parser.nbt import Compound
 from mcfunction_parser import gamedata
 
 _OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
             "east": (1, 0, 0)}
 _VEHICLES = ("boat", "raft", "minecart")
+SKULLS = ("_skull", "_head")
+# the components a head's block entity reads, and the names it saves them under (SkullBlockEntity)
+_SKULL_READS = {"minecraft:profile": "profile", "minecraft:note_block_sound": "note_block_sound",
+                "minecraft:custom_name": "custom_name"}
 # the vanilla levels' build heights (their DimensionType's min_y, min_y + height)
 BUILD_LIMITS = {"minecraft:overworld": (-64, 320), "minecraft:the_nether": (0, 256), "minecraft:the_end": (0, 256)}
 
@@ -47,10 +55,7 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
         return None
     if player.gamemode == "adventure":
         return "pass"  # no can_place_on here (its block predicates are not modelled): refused
-    for component in ("minecraft:block_state", "minecraft:block_entity_data", "minecraft:custom_name",
-                      "minecraft:banner_patterns", "minecraft:profile", "minecraft:note_block_sound"):
-        if stack.component(component) is not None:
-            raise Unmodelled(f"placing {block_id} with its {component} component")
+    entity = _placed_entity(stack, block_id)
     low, high = _build_limits(player.dimension)
     ctx = _context(state, placed_parts.PlaceContext(state, player, block_id, tuple(clicked), face,
                                                     tuple(hit) if hit is not None else tuple(clicked), True, high))
@@ -60,7 +65,7 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
     if placed is None:
         return "fail"
     block_id, block_properties = placed
-    state.blocks.setblock(ctx.target, BlockSpec(block_id, False, tuple(sorted(block_properties.items())), None))
+    state.blocks.setblock(ctx.target, BlockSpec(block_id, False, tuple(sorted(block_properties.items())), entity))
     placed_parts.after_placed(state, ctx.target, block_id, block_properties)
     placed_states.update_neighbour_stairs(state, ctx.target)
     advancements.trigger(state, player, "placed_block", advancements.location_test(state, player, ctx.target, stack))
@@ -69,6 +74,47 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
         access.set(stack)
     statistics.award(state, player, statistics.stat_name("used", item_id))
     return "consume"
+
+
+def _placed_entity(stack, block_id: str) -> Compound | None:
+    """What the placed block's entity takes from the item (BlockItem.place ->
+    BlockEntity.applyComponentsFromItemStack, 1.20.5+): a head or skull reads its ``profile``,
+    ``note_block_sound`` and ``custom_name`` (SkullBlockEntity.applyImplicitComponents, saved under
+    those names) and keeps the rest of the item's added components under ``components`` (a
+    machine library reads its ``custom_data`` there). Another block's use of them, block data
+    (``block_state``, ``block_entity_data``) and a head profile the game would still have to look
+    up (one without properties and without both a name and an id: ResolvableProfile.isResolved
+    in 1.21; the later releases' lookup is not modelled either) are not modelled."""
+    for component in ("minecraft:block_state", "minecraft:block_entity_data"):
+        if stack.component(component) is not None:
+            raise Unmodelled(f"placing {block_id} with its {component} component")
+    if not (block_id.endswith(SKULLS) and block_id != "minecraft:piston_head"):
+        for component in ("minecraft:custom_name", "minecraft:banner_patterns", "minecraft:profile",
+                          "minecraft:note_block_sound"):
+            if stack.component(component) is not None:
+                raise Unmodelled(f"placing {block_id} with its {component} component")
+        return None
+    profile = stack.component("minecraft:profile")
+    if profile is not None and not _resolved(profile):
+        raise Unmodelled(f"placing {block_id} with a profile the game looks up ({profile})")
+    entity, rest = Compound(), Compound()
+    for name, value in stack.patch.items():
+        if name.startswith("!"):
+            continue
+        if name in _SKULL_READS:
+            entity[_SKULL_READS[name]] = copy_tag(value)
+        else:
+            rest[name] = copy_tag(value)
+    if rest:
+        entity["components"] = rest
+    return entity
+
+
+def _resolved(profile) -> bool:
+    """ResolvableProfile.isResolved (1.21): with properties, or both a name and an id."""
+    if not isinstance(profile, Compound):
+        return False  # a name alone
+    return bool(profile.get("properties")) or ("name" in profile and "id" in profile)
 
 
 def _placed_state(ctx, properties: dict):

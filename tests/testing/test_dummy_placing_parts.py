@@ -146,6 +146,34 @@ def test_banners_and_heads_stand_or_hang_with_an_empty_block_entity(tmp_path, ba
     assert result.status == "passed", result.report()
 
 
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_head_keeps_the_items_profile_name_and_other_components(tmp_path, backend):
+    """BlockItem.place -> BlockEntity.applyComponentsFromItemStack: SkullBlockEntity.applyImplicitComponents
+    reads profile, note_block_sound and custom_name (saveAdditional: under those names; custom_name a
+    JSON string before 1.21.5, a component from 1.21.5), the patch's other added components stay in
+    the block entity's ``components`` (a machine library's player head placed and read back by the
+    placed_block reward); a profile the game would look up (a name alone) is not modelled."""
+    head = ('player_head[profile={id:[I;1,2,3,4],properties:[{name:"textures",value:"e30="}]},'
+            'custom_name={"text":"Tank","italic":false},custom_data={lib:{id:"tank"}},'
+            'custom_model_data={floats:[7f]}]')
+    result = run(tmp_path, "# @dummy\n" + (
+        "setblock ~2 ~ ~ stone\n"
+        f"item replace entity @s weapon.mainhand with {head}\n"
+        "dummy @s use block ~2 ~ ~ up\n"
+        "assert block ~2 ~1 ~ player_head[rotation=0]\n"
+        "assert data block ~2 ~1 ~ {profile:{id:[I;1,2,3,4],properties:[{name:\"textures\",value:\"e30=\"}]}}\n"
+        "assert data block ~2 ~1 ~ {custom_name:{text:\"Tank\"}}\n"
+        "assert data block ~2 ~1 ~ {components:{\"minecraft:custom_data\":{lib:{id:\"tank\"}},"
+        "\"minecraft:custom_model_data\":{floats:[7f]}}}\n"
+        "assert not data block ~2 ~1 ~ components.\"minecraft:profile\"\n"), pack_format=71, backend=backend)
+    assert result.status == "passed", result.report()
+    named = run(tmp_path / "named", "# @dummy\n" + (
+        "setblock ~2 ~ ~ stone\n"
+        'item replace entity @s weapon.mainhand with player_head[profile="Alex"]\n'
+        "dummy @s use block ~2 ~ ~ up\n"), pack_format=71, backend=backend)
+    assert named.status == "inconclusive" and "looks up" in named.message, named.report()
+
 def test_hanging_signs_hang_under_a_block_or_beside_one(tmp_path):
     """CeilingHangingSignBlock: under a full face, upright, square to the player (south: rotation
     8); WallHangingSignBlock: the nearest direction off the clicked face's axis (south), facing
