@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from emulator.world import relations
+from emulator.world import projectiles, relations
 from emulator.world.context import Context
 from mcfunction_parser import ast
 
@@ -55,7 +55,9 @@ def _on(env, st: ast.ExOn, ctx: Context) -> list[Context]:
 
 
 def _summon(env, st: ast.ExSummon, ctx: Context) -> list[Context]:
-    return [context_as(env.state, ctx, env.state.entities.summon(st.entity_type, ctx.pos, dimension=ctx.dimension))]
+    made = env.state.entities.summon(st.entity_type, ctx.pos, dimension=ctx.dimension)
+    projectiles.launched(env.state, made)
+    return [context_as(env.state, ctx, made)]
 
 
 _BY_ENTITY = {

@@ -18,9 +18,9 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    (:func:`emulator.world.player_actions.tick_using`), an open container out of reach closes
    (:func:`emulator.world.block_use.tick_menus`), a crafter that crafted counts its 6 ticks of
    ``crafting`` down (:func:`emulator.world.crafters.tick_crafting`) and every
-   player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`); a
-   projectile made in flight since the last tick is reported as not modelled (it would have moved:
-   :func:`emulator.world.projectiles.tick_flying`);
+   player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`); arrows,
+   tridents and snowballs fly, and another projectile made in flight since the last tick is
+   reported as not modelled (it would have moved: :func:`emulator.world.projectiles.tick_flying`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`).
 An advancement reward function earned by a command (``advancement grant``, ``effect give`` ...)

@@ -31,7 +31,7 @@ import math
 
 import numpy as np
 
-from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
+from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, Short, String
 from emulator.world import recipes, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -136,7 +136,7 @@ def base_fields(type_id: str) -> Compound:
     player's hunger (FoodData), experience and empty recipe book."""
     if not is_living(type_id):
         return Compound()
-    data = Compound(Health=Float(default_base(type_id, "max_health")), HurtTime=Int(0), DeathTime=Int(0),
+    data = Compound(Health=Float(default_base(type_id, "max_health")), HurtTime=Short(0), DeathTime=Short(0),
                     AbsorptionAmount=Float(0.0))
     if type_id == "minecraft:player":
         data.update(foodLevel=Int(20), foodSaturationLevel=Float(5.0), foodExhaustionLevel=Float(0.0),
@@ -291,7 +291,7 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
         dealt, timers[1] = amount - timers[1], amount
     else:
         dealt, timers[0], timers[1] = amount, 20, amount
-        entity.data["HurtTime"] = Int(10)
+        entity.data["HurtTime"] = Short(10)
     armoured = not state.resources.in_tag("damage_type", "minecraft:bypasses_armor", damage_type)
     if armoured and wear is not None:  # LivingEntity.getDamageAfterArmorAbsorb: hurtArmor, then the reduction
         wear(state, entity, dealt, damage_type)
@@ -463,7 +463,7 @@ def tick_living(state, harm=None) -> list:
             _drop_if_empty(entity)
             hurt_time = entity.data.get("HurtTime")  # an instant effect's harm may have set it
         if is_numeric(hurt_time) and numeric_value(hurt_time) > 0:
-            entity.data["HurtTime"] = Int(int(numeric_value(hurt_time)) - 1)
+            entity.data["HurtTime"] = Short(int(numeric_value(hurt_time)) - 1)
         timers = state.hurt_timers.get(entity) if state.hurt_timers else None
         if timers is not None:
             timers[0] -= 1

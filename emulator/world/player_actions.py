@@ -29,10 +29,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from emulator.world import (advancements, combat, consumables, inventories, item_cooldowns, living, predicates,
-                            projectile_weapons, random_teleport, recipes, statistics)
+                            projectile_weapons, random_teleport, recipes, statistics, tools)
 from emulator.world.errors import Unmodelled
-from emulator.world.items import ItemStack
-from emulator.world.nbt_ops import numeric_value
+from emulator.world.items import ItemStack, enchantment_level
+from emulator.world.nbt_ops import is_numeric, numeric_value
 from mcfunction_parser.nbt import Compound, Float, Int, IntArray, String
 
 F32 = np.float32
@@ -156,8 +156,34 @@ def _crossbow(state, player, hand, stack: ItemStack) -> str:
     return "consume"
 
 
+def _snowball(state, player, hand, stack: ItemStack) -> str:
+    """SnowballItem.use: the snowball is thrown, ``minecraft.used:snowball``, one consumed (not in
+    creative); the use succeeds."""
+    projectile_weapons.throw_snowball(state, player, stack)
+    statistics.award(state, player, statistics.stat_name("used", stack.id))
+    _consume_one(state, player, hand)
+    return "consume"
+
+
+def _trident(state, player, hand, stack: ItemStack) -> str:
+    """TridentItem.use: too damaged to use (one point from breaking) or with Riptide out of water and
+    rain it fails; else it is drawn for 72000 ticks and thrown only when released, which a dummy
+    never does (as a bow)."""
+    components = tuple(state.version) >= tools.COMPONENTS_VERSION
+    damage = stack.component("minecraft:damage") if components else (stack.tag or {}).get("Damage")
+    max_damage = stack.component("minecraft:max_damage")
+    if is_numeric(max_damage) and (int(numeric_value(damage)) if is_numeric(damage) else 0) >= \
+            int(numeric_value(max_damage)) - 1:  # isTooDamagedToUse
+        return "fail"
+    if enchantment_level(stack, "minecraft:riptide") > 0:
+        raise Unmodelled("using a trident with Riptide (in water or rain it launches the player)")
+    state.using_items[player] = _Using(hand, stack.id, BOW_USE_TICKS)
+    return "consume"
+
+
 USES = {"minecraft:carrot_on_a_stick": _food_on_a_stick, "minecraft:warped_fungus_on_a_stick": _food_on_a_stick,
-        "minecraft:knowledge_book": _knowledge_book, "minecraft:bow": _bow, "minecraft:crossbow": _crossbow}
+        "minecraft:knowledge_book": _knowledge_book, "minecraft:bow": _bow, "minecraft:crossbow": _crossbow,
+        "minecraft:snowball": _snowball, "minecraft:trident": _trident}
 
 
 def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: consumables.Consumable) -> str:

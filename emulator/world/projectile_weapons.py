@@ -16,15 +16,21 @@
   their rotation from their motion; the crossbow wears by one per arrow and three per rocket
   (emulator.world.tools), ``minecraft.used:crossbow`` and ``shot_crossbow``.
 
+- ``throw_snowball(state, player, stack)``: SnowballItem.use: a snowball at the eyes less 0.1, owned
+  by the player, thrown along its view at 1.5 blocks per tick with inaccuracy 1 (the spread drawn
+  from the emulator's random, as above).
+
 A bow is drawn by ``use item`` and only shoots when released, which PackTest has no action for: a
-dummy never shoots one, as in the game. Projectiles do not move here (an arrow never lands, a
-rocket never explodes). Not modelled (Unmodelled): another charged item, a crossbow enchantment
-other than Multishot, Piercing, Quick Charge, Unbreaking, Mending and Curse of Vanishing.
+dummy never shoots one, as in the game. Arrows and snowballs fly (emulator.world.projectile_flight);
+a rocket does not move here (it never explodes). Not modelled (Unmodelled): another charged item, a
+crossbow enchantment other than Multishot, Piercing, Quick Charge, Unbreaking, Mending and Curse of
+Vanishing.
 
 Sources (decompiled 1.21.x and 26.1): world/item/BowItem.java and CrossbowItem.java (use,
 performShooting, getShootingPower, shootProjectile), ProjectileWeaponItem.java (shoot,
 createProjectile, ARROW_ONLY / ARROW_OR_FIREWORK), world/entity/player/Player.java (getProjectile),
-world/entity/projectile/Projectile.java (shoot, getMovementToShoot), arrow/AbstractArrow.java
+world/entity/projectile/Projectile.java (shoot, shootFromRotation, getMovementToShoot),
+world/item/SnowballItem.java, ThrowableItemProjectile.java (eyes - 0.1F), arrow/AbstractArrow.java
 (constructor: eyes - 0.1; setOwner; addAdditionalSaveData), FireworkRocketEntity.java (constructor,
 addAdditionalSaveData), Entity.calculateViewVector and calculateUpVector, Enchantments.java
 (MULTISHOT, PIERCING).
@@ -50,7 +56,8 @@ MULTISHOT_SPREAD = 10.0  # Enchantments.MULTISHOT: projectile_spread + 10 per le
 # the crossbow enchantments whose effect on a shot is modelled (or that have none)
 _SHOT_ENCHANTMENTS = frozenset(("minecraft:unbreaking", "minecraft:mending", "minecraft:quick_charge",
                                 "minecraft:multishot", "minecraft:piercing", "minecraft:vanishing_curse"))
-INACCURACY = 1.0  # CrossbowItem.use: performShooting(..., 1.0F)
+INACCURACY = 1.0  # CrossbowItem.use: performShooting(..., 1.0F); SnowballItem.use: shootFromRotation(..., 1.0F)
+SNOWBALL_POWER = 1.5  # SnowballItem.use
 SPREAD = 0.0172275  # Projectile.getMovementToShoot
 ARROW_ENTITIES = {"minecraft:arrow": "minecraft:arrow", "minecraft:tipped_arrow": "minecraft:arrow",
                   "minecraft:spectral_arrow": "minecraft:spectral_arrow"}
@@ -158,6 +165,23 @@ def _spawn_firework(state, player, projectile: ItemStack, direction, power: floa
     projectiles.launched(state, state.entities.summon(
         "minecraft:firework_rocket", (x, y + float(player.eye_height) - float(F32(0.15)), z), data, yaw=yaw,
         pitch=pitch, dimension=player.dimension))
+
+
+def throw_snowball(state, player, stack: ItemStack) -> None:
+    """SnowballItem.use: a Snowball (ThrowableItemProjectile at the eyes less 0.1F, the player its
+    ``Owner``, one of the stack as its ``Item``) shot from the player's rotation
+    (Projectile.shootFromRotation: the view vector, 1.5, inaccuracy 1; a standing player adds no
+    movement of its own)."""
+    item = stack.copy()
+    item.count = 1
+    motion, yaw, pitch = _shot(_view_vector(player), SNOWBALL_POWER, state.resources.random)
+    x, y, z = player.pos
+    data = Compound(Owner=IntArray(Int(v) for v in player.uuid), Item=to_nbt(item, state.version),
+                    Motion=List(Double(v) for v in motion))
+    data["Rotation"] = List([Float(yaw), Float(pitch)])
+    projectiles.launched(state, state.entities.summon(
+        "minecraft:snowball", (x, y + float(player.eye_height) - float(F32(0.1)), z), data, yaw=yaw, pitch=pitch,
+        dimension=player.dimension))
 
 
 def _flight(item: ItemStack) -> int:

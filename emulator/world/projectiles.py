@@ -1,15 +1,20 @@
-"""Projectiles in flight, which the emulator does not move: the game moves each one every tick
-(Projectile.tick, AbstractArrow.tick: motion, gravity, drag, hitting blocks and entities).
+"""Projectiles: arrows, tridents and snowballs move each tick as the game moves them
+(:mod:`emulator.world.projectile_flight`); the others are not moved here.
 
-- ``launched(state, entity)``: an entity just made (``summon``, a crossbow's shot); one that flies
-  is watched until the next tick.
-- ``tick_flying(state)``: at the next tick's entity steps, a watched one still there and still in
-  flight (it would have moved) is reported as not modelled, once for the run; ``tick_is_idle``:
-  none watched.
+- ``launched(state, entity)``: an entity just made (``summon``, a crossbow's shot). An arrow,
+  trident or snowball is followed while it exists; another projectile that flies is watched until
+  the next tick.
+- ``tick_flying(state)``: each followed projectile takes its tick; one whose tick meets what is not
+  modelled (:mod:`emulator.world.projectile_flight`) is reported, once for the run, and left where
+  it is from then on; a watched one still there and still in flight (it would have moved) is
+  reported as not modelled; ``tick_is_idle``: none followed or watched.
 - ``flies(entity)``: a projectile not stuck in a block (``inGround``), unless it has no gravity,
   no motion and no power of its own (a fireball's).
 """
 from __future__ import annotations
+
+from emulator.world import projectile_flight
+from emulator.world.errors import Unmodelled
 
 PROJECTILES = frozenset("minecraft:" + name for name in (
     "arrow spectral_arrow trident snowball egg ender_pearl experience_bottle potion splash_potion lingering_potion "
@@ -29,17 +34,31 @@ def flies(entity) -> bool:
 
 
 def launched(state, entity) -> None:
-    if flies(entity):
+    if entity.type in projectile_flight.MODELLED or flies(entity):
         state.flying.append(entity)
 
 
 def tick_flying(state) -> None:
+    followed = []
     for entity in state.flying:
-        if entity.alive and flies(entity):
-            message = MESSAGE.format(entity.type)
-            if not any(d.message == message for d in state.diagnostics):
-                state.error(message, severity="warning", unmodelled=True)
-    state.flying.clear()
+        if not entity.alive:
+            continue
+        if entity.type in projectile_flight.MODELLED:
+            try:
+                projectile_flight.step(state, entity)
+            except Unmodelled as reason:
+                _report(state, reason.message)
+                continue
+            if entity.alive:
+                followed.append(entity)
+        elif flies(entity):
+            _report(state, MESSAGE.format(entity.type))
+    state.flying[:] = followed
+
+
+def _report(state, message: str) -> None:
+    if not any(d.message == message for d in state.diagnostics):
+        state.error(message, severity="warning", unmodelled=True)
 
 
 def tick_is_idle(state) -> bool:

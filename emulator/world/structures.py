@@ -19,6 +19,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from emulator.world import projectiles
 from emulator.world.blocks import BlockSpec, with_defaults
 from emulator.world.errors import CommandFailure
 from emulator.world.nbt_binary import NbtFormatError, read_nbt
@@ -131,6 +132,6 @@ def place(state, template: Template, origin: tuple[int, int, int]) -> None:
     for (x, y, z), nbt in template.entities:
         data = Compound((k, v) for k, v in nbt.items() if k not in ("id", "UUID", "Pos"))
         try:
-            state.entities.summon(str(nbt["id"]), (ox + x, oy + y, oz + z), data)
+            projectiles.launched(state, state.entities.summon(str(nbt["id"]), (ox + x, oy + y, oz + z), data))
         except CommandFailure:
             pass  # createEntityIgnoreException: an entity that cannot be created is left out

@@ -18,7 +18,9 @@ their PackTest suites run on both backends:
 - ticker: a library ticking its modules' function tag from a repeating command block, as forceload
   libraries do (the block's LastOutput is ``Running functions ...``: FunctionCommand);
 - stack: a call-stack library keeping its frames in the storage ``stack:`` (a resource location
-  with an empty path, valid: ResourceLocation.isValidPath), as in-game unit test libraries do."""
+  with an empty path, valid: ResourceLocation.isValidPath), as in-game unit test libraries do;
+- projectiles: arrows and snowballs flying across the test, an arrow sticking in the barrier wall
+  and another falling out of the air onto the structure block, a snowball breaking on the wall."""
 from pathlib import Path
 
 import pytest
@@ -29,7 +31,8 @@ from emulator.testing.runner import load_suite, run_case
 
 HERE = Path(__file__).resolve().parent
 SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
-                                                                         "clicks", "crafting", "ticker", "machines", "stack")}
+                                                                         "clicks", "crafting", "ticker", "machines", "stack",
+                                                                         "projectiles")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 

@@ -108,7 +108,7 @@ def test_attack_hurts_a_mob_with_the_strength_of_the_swing(pack, backend):
         "summon pig ~1 ~ ~ {Tags:[\"p\"],Health:1.2f,DeathLootTable:\"minecraft:empty\"}\n"
         "dummy Alex attack @e[tag=p,limit=1]\n"            # at once: 0.2 + 0.8 x 0.1² = 0.208
         "assert score Alex dealt matches 2\n"
-        "assert data entity @e[tag=p,limit=1] {HurtTime:10}\n"
+        "assert data entity @e[tag=p,limit=1] {HurtTime:10s}\n"
         "execute store result score #h t run data get entity @e[tag=p,limit=1] Health 1000\n"
         "assert score #h t matches 992\n"
         "await delay 20\n"                                 # full strength, past the hurt cooldown

@@ -52,7 +52,7 @@ SUITE = {
         "summon zombie ~2 ~ ~ {Tags:[\"mob\"],NoAI:1b}\n"
         "await delay 10\n"
         "dummy @s attack @e[tag=mob,limit=1]\n"
-        "assert data entity @e[tag=mob,limit=1] {HurtTime:10}\n"
+        "assert data entity @e[tag=mob,limit=1] {HurtTime:10s}\n"
         "execute store result score #h t run data get entity @e[tag=mob,limit=1] Health 100\n"
         "assert score #h t matches 1900..1999\n"),
     "demo/test/players/join.mcfunction": (

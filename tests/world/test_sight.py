@@ -6,7 +6,8 @@ import pytest
 
 from emulator.world.blocks import parse_block
 from emulator.world.errors import Unmodelled
-from emulator.world.sight import clip, looked_at
+from emulator.world.ray import clip
+from emulator.world.sight import looked_at
 from emulator.world.state import WorldState
 from mcfunction_parser.nbt import Compound, Float
 

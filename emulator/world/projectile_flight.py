@@ -1,0 +1,391 @@
+"""Arrows, tridents and snowballs moved tick by tick as the game moves them (from 1.20.5, when
+gravity became the entity's own double): motion, gravity, drag and rotation, hitting blocks
+(arrows stick: ``inGround``; snowballs break), lying in the ground (``life``, despawning after
+1200 ticks, falling when the block under them goes).
+
+- ``MODELLED``: the types moved here; ``step(state, entity)``: one tick of one of them.
+
+A snowball that meets a living entity hurts it by 0 (3 a blaze) as ``thrown`` damage its owner is
+responsible for (HurtTime, ``player_hurt_entity`` with the snowball as direct entity) and breaks;
+the hit's knockback is not modelled (mobs do not move here).
+
+Each tick (AbstractArrow.tick; ThrowableProjectile.tick) the projectile clips the segment from its
+position along its motion against the blocks' collision shapes (:mod:`emulator.world.ray`). An
+arrow in flight moves along its motion (to the hit when it hits: AbstractArrow.onHitBlock), its
+motion scaled by 0.99F and gravity 0.05 taken from it (not when it stuck, from 1.21.2); a snowball's
+gravity 0.03 and drag come before its move from 1.21.2, after it before, and a hit removes it
+(Snowball.onHit: discard). The rotation turns a fifth of the way to the motion's (lerpRotation);
+before 1.21.2 an arrow whose previous rotation is 0, 0 takes the motion's at once.
+
+A block hit (1.21 / 1.21.2+): the arrow's motion becomes the way to the hit, it steps back 0.05
+along it and keeps moving by it (``inGround``, ``shake`` 7, ``crit`` and ``PierceLevel`` 0,
+``inBlockState``); from 1.21.2 it stands at the hit less 0.05 along each axis it moved on, with no
+motion. An arrow in the ground counts ``life`` to 1200 (then it is gone) unless the block it
+sits in changed and nothing is within 0.06 of it (AbstractArrow.shouldFall: it falls again).
+
+Not modelled (raises Unmodelled, the test is inconclusive): an arrow hitting an entity (damage,
+knockback, deflection, piercing), a snowball hitting what is not living or its owner before it left
+it, a projectile in water or passing blocks that act on what is inside them
+(pressure plates, buttons, tripwires, cobwebs, fire, portals ...), hitting a target block or TNT,
+an arrow falling with motion (random), a player picking an arrow up, a burning projectile, a
+trident with Loyalty, other projectiles (eggs, pearls, potions, fireballs ...) and releases
+before 1.20.5 (gravity was a float then).
+
+Sources (decompiled 1.21, and 1.21.2+ from the decompiled classes the wiki's search reaches):
+world/entity/projectile/AbstractArrow.java (tick, stepMoveAndHit, onHitBlock, shouldFall,
+startFalling, tickDespawn, getWaterInertia), ThrowableProjectile.java (tick, applyInertia,
+getDefaultGravity), Projectile.java (updateRotation, lerpRotation, canHitEntity, checkLeftOwner),
+ProjectileUtil.java (getEntityHitResult: the nearest box, inflated by 0.3, the segment enters),
+Snowball.java (onHit, onHitEntity), ThrownTrident.java, damagesource/DamageSources.java (thrown), world/entity/Entity.java (applyGravity, getGravity).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from emulator.world import block_shapes, combat, living, mth, ray
+from emulator.world.errors import Unmodelled
+from emulator.world.items import enchantment_level, from_nbt
+from emulator.world.loot_context import DamageSource
+from emulator.world.nbt_ops import is_numeric, numeric_value
+from mcfunction_parser.nbt import Byte, Compound, Short, String
+
+F32 = np.float32
+ARROWS = frozenset(("minecraft:arrow", "minecraft:spectral_arrow", "minecraft:trident"))
+THROWN = frozenset(("minecraft:snowball",))
+MODELLED = ARROWS | THROWN
+FIRST_RELEASE = (1, 20, 5)  # Entity.getDefaultGravity (a double) from here
+STEP_AND_HIT = (1, 21, 2)  # AbstractArrow.stepMoveAndHit; throwables' gravity and drag before the move
+ARROW_GRAVITY, THROWN_GRAVITY = 0.05, 0.03
+DRAG = float(F32(0.99))  # 0.99F widened
+HIT_STEP = float(F32(0.05))  # 0.05F widened
+DESPAWN = 1200
+SHAKE = 7
+ENTITY_MARGIN = 0.3  # ProjectileUtil: the target's box inflated by 0.3
+_RAD_TO_DEG = float(mth.RAD_TO_DEG)
+_LERP = F32(0.2)
+# not pickable (Entity.isPickable false): what a projectile flies through
+_NOT_PICKABLE = frozenset("minecraft:" + n for n in (
+    "marker item experience_orb area_effect_cloud block_display item_display text_display lightning_bolt "
+    "evoker_fangs arrow spectral_arrow trident snowball egg ender_pearl experience_bottle potion splash_potion "
+    "lingering_potion llama_spit firework_rocket eye_of_ender fishing_bobber").split())
+# blocks whose entityInside or collision a projectile feels beyond a plain shape
+_ACTS_INSIDE = ("_pressure_plate", "_button", "tripwire", "cobweb", "fire", "lava", "water", "sweet_berry_bush",
+                "powder_snow", "portal", "bubble_column", "kelp", "seagrass", "honey_block", "cactus")
+_HIT_REACTIONS = frozenset(("minecraft:target", "minecraft:tnt"))  # BlockBehaviour.onProjectileHit
+SOUND_HIT = "minecraft:entity.arrow.hit"
+
+
+def step(state, entity) -> None:
+    """One tick of an arrow, trident or snowball (:data:`MODELLED`)."""
+    if tuple(state.version) < FIRST_RELEASE:
+        raise Unmodelled(f"{entity.type} in flight before 1.20.5")
+    if _int(entity.data, "Fire", -1) > 0:
+        raise Unmodelled(f"a burning {entity.type}")
+    if entity.type in ARROWS:
+        _arrow(state, entity)
+    else:
+        _thrown(state, entity)
+
+
+# ---------------------------------------------------------------------- arrows
+def _arrow(state, entity) -> None:
+    data, new = entity.data, tuple(state.version) >= STEP_AND_HIT
+    if entity.type == "minecraft:trident" and _loyal(entity):
+        raise Unmodelled("a trident with Loyalty (it returns to its owner)")
+    yaw0, pitch0 = entity.yaw, entity.pitch
+    motion = tuple(entity.motion)
+    if not new and yaw0 == 0.0 and pitch0 == 0.0:  # 1.21: the first rotation is the motion's
+        yaw0, pitch0 = _angles(motion)
+        entity.yaw, entity.pitch = yaw0, pitch0
+    blocks = state.blocks_in(entity.dimension)
+    cell = tuple(math.floor(c) for c in entity.pos)
+    here = blocks.get(cell)
+    if not here.is_air and block_shapes.collides(here):  # a full cube holds the arrow
+        data["inGround"] = Byte(1)
+    if _int(data, "shake", 0) > 0:
+        data["shake"] = Byte(_int(data, "shake", 0) - 1)
+    if _int(data, "inGround", 0):
+        _in_ground(state, entity, here)
+        return
+    _not_in_water(blocks, entity, motion)
+    if new:
+        _arrow_moves(state, entity, motion, yaw0, pitch0)
+    else:
+        _arrow_moves_1_21(state, entity, motion, yaw0, pitch0)
+
+
+def _arrow_moves(state, entity, motion, yaw0, pitch0) -> None:
+    """1.21.2+: turn toward the motion, move to the first hit (or along the motion), then drag and
+    gravity unless it stuck."""
+    start = entity.pos
+    end = _add(start, motion)
+    hit = _hits(state, entity, start, end)
+    yaw, pitch = _angles(motion)
+    entity.pitch, entity.yaw = _lerp_rotation(pitch0, pitch), _lerp_rotation(yaw0, yaw)
+    entity.pos = hit[0] if hit else end
+    if hit:
+        _stick(state, entity, hit, tuple(-HIT_STEP * _sign(m) for m in motion))
+        entity.motion = (0.0, 0.0, 0.0)
+    entity.motion = _scaled(entity.motion, DRAG)
+    if not _int(entity.data, "inGround", 0):
+        _fall(entity, ARROW_GRAVITY)
+
+
+def _arrow_moves_1_21(state, entity, motion, yaw0, pitch0) -> None:
+    """1.21: a hit turns the motion toward it (onHitBlock) and the arrow moves by it from 0.05 back;
+    then it turns, drags and falls."""
+    start = entity.pos
+    hit = _hits(state, entity, start, _add(start, motion))
+    if hit:
+        motion = tuple(h - s for h, s in zip(hit[0], start))
+        length = math.sqrt(sum(m * m for m in motion))
+        back = (0.0, 0.0, 0.0) if length < 1.0E-4 else tuple(m / length * HIT_STEP for m in motion)
+        entity.pos = tuple(s - b for s, b in zip(start, back))
+        _stick(state, entity, hit, (0.0, 0.0, 0.0))
+    yaw, pitch = _angles(motion)
+    entity.pitch, entity.yaw = _lerp_rotation(pitch0, pitch), _lerp_rotation(yaw0, yaw)
+    entity.pos = _add(entity.pos, motion)
+    entity.motion = _scaled(motion, DRAG)
+    _fall(entity, ARROW_GRAVITY)
+
+
+def _stick(state, entity, hit, back) -> None:
+    """AbstractArrow.onHitBlock: the block it hit is its ``inBlockState``; it steps back."""
+    location, cell = hit
+    block = state.blocks_in(entity.dimension).get(cell)
+    if block.id in _HIT_REACTIONS:
+        raise Unmodelled(f"{entity.type} hitting {block.id} (its reaction to projectiles)")
+    entity.pos = _add(entity.pos, back)
+    data = entity.data
+    data["inBlockState"] = _state_tag(block)
+    data["inGround"], data["shake"] = Byte(1), Byte(SHAKE)
+    data["crit"], data["PierceLevel"] = Byte(0), Byte(0)
+    data["SoundEvent"] = String(SOUND_HIT)
+
+
+def _in_ground(state, entity, here) -> None:
+    """A stuck arrow: it falls again when the block it sits in is not the one it hit and nothing
+    is within 0.06 of it (shouldFall; startFalling scales its motion by random factors, so only a
+    still one is followed), else ``life`` counts to its despawn."""
+    data = entity.data
+    _no_player_picks_up(state, entity)
+    if data.get("inBlockState") != _state_tag(here) and _nothing_near(state, entity):
+        if any(m != 0.0 for m in entity.motion):
+            raise Unmodelled(f"{entity.type} falling out of the ground (its motion scaled by random factors)")
+        data["inGround"] = Byte(0)
+        data["life"] = Short(0)
+        return
+    life = _int(data, "life", 0) + 1
+    data["life"] = Short(life)
+    if life >= DESPAWN:
+        state.entities.kill(entity)
+
+
+def _nothing_near(state, entity) -> bool:
+    """Level.noCollision of the point's box inflated by 0.06 (blocks only here)."""
+    x, y, z = entity.pos
+    box = (x - 0.06, y - 0.06, z - 0.06, x + 0.06, y + 0.06, z + 0.06)
+    blocks = state.blocks_in(entity.dimension)
+    return not any(not blocks.get(c).is_air and block_shapes.collides(blocks.get(c)) for c in _box_cells(box))
+
+
+def _no_player_picks_up(state, entity) -> None:
+    """Player.touch -> AbstractArrow.playerTouch: a player within 1 (0.5 up and down) of a stuck
+    arrow that stopped shaking takes it (or tries to)."""
+    if _int(entity.data, "shake", 0) > 0:
+        return
+    box = entity.bounding_box
+    for player in state.entities.players():
+        if player.alive and player.gamemode != "spectator" and player.dimension == entity.dimension:
+            near = _inflate(player.bounding_box, 1.0, 0.5, 1.0)
+            if _intersects(near, box):
+                raise Unmodelled(f"{player.display_name} touching a stuck {entity.type} (picking it up)")
+
+
+# ---------------------------------------------------------------------- thrown
+def _thrown(state, entity) -> None:
+    """ThrowableProjectile.tick for a snowball: a hit removes it (Snowball.onHit)."""
+    blocks = state.blocks_in(entity.dimension)
+    motion = tuple(entity.motion)
+    _not_in_water(blocks, entity, motion)
+    new = tuple(state.version) >= STEP_AND_HIT
+    if new:  # gravity, then drag, then the move by the new motion
+        motion = _scaled(_fallen(entity, motion, THROWN_GRAVITY), DRAG)
+    start = entity.pos
+    hit = ray.clip_blocks(blocks, start, _add(start, motion))
+    target = _entity_hit(state, entity, start, hit[0] if hit else _add(start, motion))
+    if target is not None:
+        _snowball_hits(state, entity, target)
+        return
+    if new:
+        entity.motion = motion
+    yaw, pitch = _angles(motion)
+    entity.pitch, entity.yaw = _lerp_rotation(entity.pitch, pitch), _lerp_rotation(entity.yaw, yaw)
+    if new:
+        entity.pos = hit[0] if hit else _add(start, motion)
+    else:
+        entity.pos = _add(start, motion)
+        entity.motion = _scaled(motion, DRAG)
+        _fall(entity, THROWN_GRAVITY)
+    if hit:
+        block = blocks.get(hit[1])
+        if block.id in _HIT_REACTIONS:
+            raise Unmodelled(f"{entity.type} hitting {block.id} (its reaction to projectiles)")
+        state.entities.kill(entity)
+
+
+def _snowball_hits(state, snowball, target) -> None:
+    """Snowball.onHitEntity: ``thrown`` damage from the snowball, its owner responsible: 3 to a
+    blaze, else 0 (a hurt all the same: HurtTime, ``player_hurt_entity`` for a player's snowball);
+    then the snowball breaks (onHit: discard). Its owner before the snowball left it, and what is
+    not living (boats, frames, interactions ...), are not modelled."""
+    owner = _owner(state, snowball)
+    if owner is not None and not _int(snowball.data, "LeftOwner", 0) and _root(target) is _root(owner):
+        raise Unmodelled(f"{snowball.type} meeting its owner before it left it (Projectile.checkLeftOwner)")
+    if not living.is_living(target.type):
+        raise Unmodelled(f"{snowball.type} hitting {target.type} (its hurt)")
+    damage = 3.0 if target.type == "minecraft:blaze" else 0.0
+    combat.hurt(state, target, damage, DamageSource("minecraft:thrown", owner, snowball))
+    if snowball.alive:
+        state.entities.kill(snowball)
+
+
+def _owner(state, entity):
+    owner = entity.data.get("Owner")
+    if owner is None or len(owner) != 4:
+        return None
+    return state.entities.by_uuid(tuple(int(v) for v in owner))
+
+
+def _root(entity):
+    while entity.vehicle is not None:
+        entity = entity.vehicle
+    return entity
+
+
+# ---------------------------------------------------------------------- shared
+def _hits(state, entity, start, end):
+    """The block the segment hits first, ``(location, cell)`` or None; an entity on the way to it
+    raises Unmodelled (an arrow hitting an entity is not modelled)."""
+    hit = ray.clip_blocks(state.blocks_in(entity.dimension), start, end)
+    target = _entity_hit(state, entity, start, hit[0] if hit else end)
+    if target is not None:
+        raise Unmodelled(f"{entity.type} hitting {target.type} (damage, knockback, deflection)")
+    return hit
+
+
+def _entity_hit(state, entity, start, end):
+    """ProjectileUtil.getEntityHitResult: of the entities it can hit, the one whose box (inflated by
+    0.3) the segment enters nearest its start."""
+    best, nearest = None, math.inf
+    for other in _targets(state, entity):
+        location = ray.clip(_inflate(other.bounding_box, ENTITY_MARGIN, ENTITY_MARGIN, ENTITY_MARGIN), start, end)
+        if location is not None:
+            distance = sum((a - b) ** 2 for a, b in zip(location, start))
+            if distance < nearest:
+                best, nearest = other, distance
+    return best
+
+
+def _targets(state, entity):
+    """What the projectile could hit (Projectile.canHitEntity: pickable, alive, not a spectator);
+    its owner as well, which it cannot hit until it left it (the emulator does not follow that)."""
+    for other in state.entities.entities:
+        if (other is entity or not other.alive or other.type in _NOT_PICKABLE or other.dimension != entity.dimension
+                or (other.is_player and other.gamemode == "spectator")
+                or (other.type == "minecraft:armor_stand" and _int(other.data, "Marker", 0))):
+            continue
+        yield other
+
+
+def _not_in_water(blocks, entity, motion) -> None:
+    """Water slows a projectile (inertia 0.6, 0.8 or 0.99) and blocks such as pressure plates act on
+    it: neither is modelled, so a box meeting one on its way raises Unmodelled."""
+    box = entity.bounding_box
+    swept = tuple(min(b, b + m) for b, m in zip(box[:3], motion)) + tuple(max(b, b + m) for b, m in zip(box[3:], motion))
+    for cell in _box_cells(swept):
+        block = blocks.get(cell)
+        if block.is_air:
+            continue
+        name = block.id.removeprefix("minecraft:")
+        if any(part in name for part in _ACTS_INSIDE) or dict(block.properties).get("waterlogged") == "true":
+            raise Unmodelled(f"{entity.type} in or through {block.id}")
+
+
+def _box_cells(box):
+    lo = [math.floor(c) for c in box[:3]]
+    hi = [math.floor(c) for c in box[3:]]
+    for x in range(lo[0], hi[0] + 1):
+        for y in range(lo[1], hi[1] + 1):
+            for z in range(lo[2], hi[2] + 1):
+                yield (x, y, z)
+
+
+def _loyal(entity) -> bool:
+    item = entity.data.get("item") or entity.data.get("Trident")
+    return isinstance(item, Compound) and enchantment_level(from_nbt(item), "minecraft:loyalty") > 0
+
+
+def _angles(motion) -> tuple[np.float32, np.float32]:
+    """The motion's yaw and pitch: ``(float)(Mth.atan2(x, z) * RAD_TO_DEG)`` and of y over the
+    horizontal distance."""
+    x, y, z = motion
+    return F32(mth.atan2(x, z) * _RAD_TO_DEG), F32(mth.atan2(y, math.sqrt(x * x + z * z)) * _RAD_TO_DEG)
+
+
+def _lerp_rotation(current, target) -> np.float32:
+    """Projectile.lerpRotation: the current angle brought within 180 of the target, then a fifth
+    of the way (Mth.lerp in float)."""
+    current, target = F32(current), F32(target)
+    while target - current < F32(-180.0):
+        current = F32(current - F32(360.0))
+    while target - current >= F32(180.0):
+        current = F32(current + F32(360.0))
+    return F32(current + _LERP * F32(target - current))
+
+
+def _fall(entity, gravity: float) -> None:
+    entity.motion = _fallen(entity, entity.motion, gravity)
+
+
+def _fallen(entity, motion, gravity: float):
+    """Entity.applyGravity: getGravity is 0 with ``NoGravity``."""
+    if _int(entity.data, "NoGravity", 0):
+        return tuple(motion)
+    x, y, z = motion
+    return (x, y - gravity, z)
+
+
+def _scaled(v, factor: float):
+    return tuple(c * factor for c in v)
+
+
+def _add(a, b):
+    return (a[0] + b[0], a[1] + b[1], a[2] + b[2])
+
+
+def _sign(x: float) -> float:
+    return 0.0 if x == 0.0 else math.copysign(1.0, x)
+
+
+def _inflate(box, dx, dy, dz):
+    return (box[0] - dx, box[1] - dy, box[2] - dz, box[3] + dx, box[4] + dy, box[5] + dz)
+
+
+def _intersects(a, b) -> bool:
+    return all(a[i] < b[i + 3] and a[i + 3] > b[i] for i in range(3))
+
+
+def _int(data: Compound, key: str, default: int) -> int:
+    value = data.get(key)
+    return int(numeric_value(value)) if is_numeric(value) else default
+
+
+def _state_tag(block) -> Compound:
+    """NbtUtils.writeBlockState: ``Name`` and, when it has any, ``Properties``."""
+    tag = Compound(Name=String(block.id))
+    if block.properties:
+        tag["Properties"] = Compound({k: String(v) for k, v in block.properties})
+    return tag
