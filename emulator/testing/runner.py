@@ -26,10 +26,10 @@ from emulator.testing.testfile import (
     ChatCheck, Check, Delay, Dummy, Fail, InsideCheck, PerContext, Run, Succeed, TestCase, read_test,
 )
 from emulator.world import players, structures
-from emulator.world.blocks import BlockSpec
+from emulator.world.blocks import BlockSpec, with_defaults
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
-from mcfunction_parser.nbt import Compound, to_snbt
+from mcfunction_parser.nbt import Compound, String, to_snbt
 from mcfunction_parser.pack.loader import load_packs
 
 _SCORE_MATCHES = re.compile(r"score (\S+) (\S+) matches (\S+)$")
@@ -178,6 +178,9 @@ _CHUNK_WAIT = 20  # GameTestInfo.ticksToWaitForChunkLoading before 1.21.5
 _STONE = BlockSpec("minecraft:stone", False, (), None)
 _AIR = BlockSpec("minecraft:air", False, (), None)
 _STRUCTURE_BLOCK = BlockSpec("minecraft:structure_block", False, (), None)
+# StructureUtils.addCommandBlockAndButtonToStartTest: beside the structure block, to rerun the test by hand
+_START_COMMAND_BLOCK = BlockSpec("minecraft:command_block", False, (), Compound(Command=String("test runclosest")))
+_START_BUTTON = BlockSpec("minecraft:stone_button", False, (), None)
 
 
 class _Running:
@@ -286,10 +289,20 @@ class _World:
         source.origin = tuple(float(c) for c in corner)
         self._clear(corner, source.size)
         if not self.test_instances:
-            self.emu.state.blocks.place((corner[0], corner[1] - 1, corner[2]), _STRUCTURE_BLOCK)
+            self._structure_block(corner)
         elif run.template is not None:
             structures.place(self.emu.state, run.template, corner)
         encase(self.emu, self.packs.version, corner, source.size, directives.sky_access)
+
+    def _structure_block(self, corner) -> None:
+        """Before 1.21.5 (GameTestInfo.prepareTestStructure): the structure block under the corner,
+        a command block running ``test runclosest`` at it + (1, 0, -1) and a stone button north of
+        that (StructureUtils.addCommandBlockAndButtonToStartTest, rotation none)."""
+        blocks, version = self.emu.state.blocks, self.packs.version
+        x, y, z = corner[0], corner[1] - 1, corner[2]
+        blocks.place((x, y, z), _STRUCTURE_BLOCK)
+        blocks.place((x + 1, y, z - 1), with_defaults(_START_COMMAND_BLOCK, version))
+        blocks.place((x + 1, y, z - 2), with_defaults(_START_BUTTON, version))
 
     def _clear(self, corner, size) -> None:
         """StructureUtils.clearSpaceForStructure (and PackTest's StructureUtilsMixin for dummies)."""

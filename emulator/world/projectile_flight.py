@@ -23,9 +23,13 @@ along it and keeps moving by it (``inGround``, ``shake`` 7, ``crit`` and ``Pierc
 motion. An arrow in the ground counts ``life`` to 1200 (then it is gone) unless the block it
 sits in changed and nothing is within 0.06 of it (AbstractArrow.shouldFall: it falls again).
 
-Not modelled (raises Unmodelled, the test is inconclusive): an arrow hitting an entity (damage,
-knockback, deflection, piercing), a snowball hitting what is not living or its owner before it left
-it, a projectile in water or passing blocks that act on what is inside them
+An arrow that meets a living entity first hurts it by ceil(speed x ``damage``) as ``arrow``
+damage its owner is responsible for and is gone (AbstractArrow.onHitEntity).
+
+Not modelled (raises Unmodelled, the test is inconclusive): a critical, piercing or tipped arrow's
+hit, a spectral arrow's or trident's, an arrow bouncing off (a hurt that fails), a player's arrow
+hitting a player, ``killed_by_arrow``, a snowball hitting what is not living or its owner before it
+left it, a projectile in water or passing blocks that act on what is inside them
 (pressure plates, buttons, tripwires, cobwebs, fire, portals ...), hitting a target block or TNT,
 an arrow falling with motion (random), a player picking an arrow up, a burning projectile, a
 trident with Loyalty, other projectiles (eggs, pearls, potions, fireballs ...) and releases
@@ -46,7 +50,7 @@ import numpy as np
 
 from emulator.world import block_shapes, combat, living, mth, ray
 from emulator.world.errors import Unmodelled
-from emulator.world.items import enchantment_level, from_nbt
+from emulator.world.items import enchantment_level, enchantment_levels, from_nbt
 from emulator.world.loot_context import DamageSource
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from mcfunction_parser.nbt import Byte, Compound, Short, String
@@ -62,6 +66,7 @@ DRAG = float(F32(0.99))  # 0.99F widened
 HIT_STEP = float(F32(0.05))  # 0.05F widened
 DESPAWN = 1200
 SHAKE = 7
+BASE_DAMAGE = 2.0  # AbstractArrow.baseDamage
 ENTITY_MARGIN = 0.3  # ProjectileUtil: the target's box inflated by 0.3
 _RAD_TO_DEG = float(mth.RAD_TO_DEG)
 _LERP = F32(0.2)
@@ -73,6 +78,8 @@ _NOT_PICKABLE = frozenset("minecraft:" + n for n in (
 # blocks whose entityInside or collision a projectile feels beyond a plain shape
 _ACTS_INSIDE = ("_pressure_plate", "_button", "tripwire", "cobweb", "fire", "lava", "water", "sweet_berry_bush",
                 "powder_snow", "portal", "bubble_column", "kelp", "seagrass", "honey_block", "cactus")
+# living entities whose hurt by an arrow is their own: an enderman teleports, an armor stand breaks
+_OWN_HURT = frozenset(("minecraft:enderman", "minecraft:armor_stand"))
 _HIT_REACTIONS = frozenset(("minecraft:target", "minecraft:tnt"))  # BlockBehaviour.onProjectileHit
 SOUND_HIT = "minecraft:entity.arrow.hit"
 
@@ -121,7 +128,9 @@ def _arrow_moves(state, entity, motion, yaw0, pitch0) -> None:
     gravity unless it stuck."""
     start = entity.pos
     end = _add(start, motion)
-    hit = _hits(state, entity, start, end)
+    hit, gone = _hits(state, entity, start, end, motion)
+    if gone:
+        return
     yaw, pitch = _angles(motion)
     entity.pitch, entity.yaw = _lerp_rotation(pitch0, pitch), _lerp_rotation(yaw0, yaw)
     entity.pos = hit[0] if hit else end
@@ -137,7 +146,9 @@ def _arrow_moves_1_21(state, entity, motion, yaw0, pitch0) -> None:
     """1.21: a hit turns the motion toward it (onHitBlock) and the arrow moves by it from 0.05 back;
     then it turns, drags and falls."""
     start = entity.pos
-    hit = _hits(state, entity, start, _add(start, motion))
+    hit, gone = _hits(state, entity, start, _add(start, motion), motion)
+    if gone:
+        return
     if hit:
         motion = tuple(h - s for h, s in zip(hit[0], start))
         length = math.sqrt(sum(m * m for m in motion))
@@ -266,14 +277,64 @@ def _root(entity):
 
 
 # ---------------------------------------------------------------------- shared
-def _hits(state, entity, start, end):
-    """The block the segment hits first, ``(location, cell)`` or None; an entity on the way to it
-    raises Unmodelled (an arrow hitting an entity is not modelled)."""
+def _hits(state, entity, start, end, motion):
+    """The block the segment hits first, ``(location, cell)`` or None, and whether an entity in the
+    way (nearer than that block) took the arrow (:func:`_arrow_hits`)."""
     hit = ray.clip_blocks(state.blocks_in(entity.dimension), start, end)
     target = _entity_hit(state, entity, start, hit[0] if hit else end)
-    if target is not None:
-        raise Unmodelled(f"{entity.type} hitting {target.type} (damage, knockback, deflection)")
-    return hit
+    if target is None:
+        return hit, False
+    _arrow_hits(state, entity, target, motion)
+    return None, True
+
+
+def _arrow_hits(state, arrow, target, motion) -> None:
+    """AbstractArrow.onHitEntity for a plain arrow: ceil(speed x ``damage``) as ``arrow`` damage of
+    its owner (else of the arrow), then it is gone. A critical arrow's random bonus, piercing,
+    tipped arrows' effects, a weapon's enchantments, a hurt that fails (the arrow bounces back), an
+    enderman, a player shooting a player (teams), the ``killed_by_arrow`` criterion and the other
+    arrows' hits raise Unmodelled."""
+    data = arrow.data
+    reason = None
+    if arrow.type != "minecraft:arrow" or not living.is_living(target.type) or target.type in _OWN_HURT:
+        reason = f"{arrow.type} hitting {target.type}"
+    elif _int(data, "crit", 0):
+        reason = "a critical arrow's bonus damage (random)"
+    elif _int(data, "PierceLevel", 0) > 0:
+        reason = "an arrow piercing what it hits"
+    elif _tipped(data) or _enchanted(data.get("weapon")):
+        reason = "a tipped arrow's effects or its weapon's enchantments on a hit"
+    owner = _owner(state, arrow)
+    if reason is None and target.is_player and owner is not None and owner.is_player:
+        reason = "an arrow of a player hitting a player (Player.canHarmPlayer: teams)"
+    if reason is not None:
+        raise Unmodelled(reason)
+    speed = float(F32(math.sqrt(sum(m * m for m in motion))))
+    base = float(numeric_value(data["damage"])) if is_numeric(data.get("damage")) else BASE_DAMAGE
+    damage = _ceil(min(max(speed * base, 0.0), 2.147483647E9))
+    if not combat.hurt(state, target, float(damage), DamageSource("minecraft:arrow", owner or arrow, arrow)):
+        raise Unmodelled(f"an arrow bouncing off {target.type} (its hurt failed: ProjectileDeflection.REVERSE)")
+    if arrow.alive:
+        state.entities.kill(arrow)
+    if owner is not None and owner.is_player and not target.alive:
+        raise Unmodelled("the killed_by_arrow criterion")
+
+
+def _tipped(data: Compound) -> bool:
+    item = data.get("item")
+    components = item.get("components") if isinstance(item, Compound) else None
+    return any(key in data for key in ("Potion", "custom_potion_effects", "CustomPotionEffects", "Color")) or (
+        isinstance(components, Compound) and "minecraft:potion_contents" in components)
+
+
+def _enchanted(weapon) -> bool:
+    return isinstance(weapon, Compound) and len(enchantment_levels(from_nbt(weapon))) > 0
+
+
+def _ceil(x: float) -> int:
+    """Mth.ceil(double)."""
+    whole = int(x)
+    return whole + 1 if x > whole else whole
 
 
 def _entity_hit(state, entity, start, end):

@@ -20,7 +20,8 @@ their PackTest suites run on both backends:
 - stack: a call-stack library keeping its frames in the storage ``stack:`` (a resource location
   with an empty path, valid: ResourceLocation.isValidPath), as in-game unit test libraries do;
 - projectiles: arrows and snowballs flying across the test, an arrow sticking in the barrier wall
-  and another falling out of the air onto the structure block, a snowball breaking on the wall."""
+  and another falling out of the air onto the structure block, a snowball breaking on the wall, an
+  arrow hurting a pig."""
 from pathlib import Path
 
 import pytest

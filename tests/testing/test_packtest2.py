@@ -79,9 +79,13 @@ def test_a_test_is_encased_in_barriers_with_a_ceiling_unless_it_has_sky_access(t
 
 def test_before_1_21_5_the_encasing_has_no_floor(tmp_path):
     # StructureUtils.encaseStructure: walls from the structure's lowest layer up, the ceiling; under
-    # the corner the test's structure block (StructureUtils.prepareTestStructure), no barrier
+    # the corner the test's structure block (StructureUtils.prepareTestStructure), no barrier; beside
+    # it the command block and stone button to rerun the test by hand
+    # (StructureUtils.addCommandBlockAndButtonToStartTest: + (1, 0, -1), then north of it)
     files = {"demo/test/old.mcfunction": "assert block ~ ~-1 ~ structure_block\nassert block ~1 ~ ~ barrier\n"
-                                         "assert block ~1 ~-1 ~ air\n"}
+                                         "assert block ~1 ~-1 ~ air\n"
+                                         "assert block ~1 ~-1 ~-1 command_block{Command:\"test runclosest\"}\n"
+                                         "assert block ~1 ~-1 ~-2 stone_button[face=wall,facing=north,powered=false]\n"}
     _, results = suite(tmp_path, files, pack_format=48)
     assert results["demo:old"].status == "passed", results["demo:old"].report()
 

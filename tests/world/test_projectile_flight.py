@@ -126,8 +126,23 @@ def test_a_snowball_moves_and_a_hit_removes_it(tmp_path, mc, x, y):
     assert not snowball.alive  # Snowball.onHit: discard
 
 
+@pytest.mark.parametrize("speed,damage", [(1.0, 2), (1.2, 3), (1.5, 3)])
+def test_an_arrow_hurts_the_mob_in_its_way_by_ceil_speed_x_damage_and_is_gone(tmp_path, speed, damage):
+    # AbstractArrow.onHitEntity: Mth.ceil((float) motion length x baseDamage 2.0) as arrow damage
+    # (its owner, else the arrow, responsible), then discard; (float)1.2 x 2.0 = 2.4000001 -> 3
+    emu = world(tmp_path, "summon pig 3.5 10 0.5 {NoAI:1b,NoGravity:1b}\n"
+                          f"summon arrow 0.5 10.5 0.5 {{Motion:[{speed}d,0.0d,0.0d]}}\n")
+    emu.tick(3)
+    pig = only(emu, "minecraft:pig")
+    assert float(pig.data["Health"]) == 10.0 - damage
+    assert not any(e.type == "minecraft:arrow" for e in emu.state.entities.entities)
+    assert not any(d.unmodelled for d in emu.diagnostics)
+
+
 @pytest.mark.parametrize("setup,reason", [
-    ("summon pig 3.5 10 0.5 {NoAI:1b}\n", "hitting minecraft:pig"),
+    ("summon pig 3.5 10 0.5 {NoAI:1b}\nsummon arrow 0.5 10 0.5 {Motion:[1.0,0.0,0.0],crit:1b}\n",
+     "a critical arrow's bonus damage"),
+    ("summon armor_stand 3.5 10 0.5\n", "hitting minecraft:armor_stand"),
     ("setblock 1 10 0 water\n", "in or through minecraft:water"),
     ("setblock 1 10 0 oak_slab\n", "the shape of minecraft:oak_slab"),
 ])
