@@ -11,8 +11,10 @@ the tests of a batch side by side on a grid and run together.
   order in which the tests name them. Either way a group is split into batches of 50.
 - StructureGridSpawner (built by GameTestServer.startTests with 8 tests a row and no clearing
   between batches): each test's corner is 5 blocks east of the previous structure's far side,
-  and after 8 tests the row moves south by its depth plus 6. The game starts the grid at a
-  random spot of a flat world; the emulator at (0, 1, 0).
+  and after 8 tests the row moves south by its depth plus 6. The game starts the grid at y -59
+  of its superflat world (grass at -61, dirt, bedrock at -64), x and z random (GameTestServer.
+  startTests; PackTest's GameTestServerMixin draws them within the world border) and makes that
+  the world spawn; the emulator starts at (0, 1, 0) with no ground beyond the cleared space.
 - StructureUtils.clearSpaceForStructure: before a test's structure is placed, the box from 2
   blocks west, 3 below and 3 north to 3 east, 20 above and 3 south of it becomes air, stone
   below the structure's floor less one, and the entities in it other than players are removed

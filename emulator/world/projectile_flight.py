@@ -24,10 +24,11 @@ motion. An arrow in the ground counts ``life`` to 1200 (then it is gone) unless 
 sits in changed and nothing is within 0.06 of it (AbstractArrow.shouldFall: it falls again).
 
 An arrow that meets a living entity first hurts it by ceil(speed x ``damage``) as ``arrow``
-damage its owner is responsible for and is gone (AbstractArrow.onHitEntity).
+damage its owner is responsible for and is gone (AbstractArrow.onHitEntity); a spectral arrow's
+target glows for the arrow's ``Duration`` (SpectralArrow.doPostHurtEffects).
 
 Not modelled (raises Unmodelled, the test is inconclusive): a critical, piercing or tipped arrow's
-hit, a spectral arrow's or trident's, an arrow bouncing off (a hurt that fails), a player's arrow
+hit, a trident's, a spectral arrow hitting a player, an arrow bouncing off (a hurt that fails), a player's arrow
 hitting a player, ``killed_by_arrow``, a snowball hitting what is not living or its owner before it
 left it, a projectile in water or passing blocks that act on what is inside them
 (pressure plates, buttons, tripwires, cobwebs, fire, portals ...), hitting a target block or TNT,
@@ -67,6 +68,8 @@ HIT_STEP = float(F32(0.05))  # 0.05F widened
 DESPAWN = 1200
 SHAKE = 7
 BASE_DAMAGE = 2.0  # AbstractArrow.baseDamage
+SPECTRAL_GLOWING = 200  # SpectralArrow.duration
+_PLAIN_ARROWS = frozenset(("minecraft:arrow", "minecraft:spectral_arrow"))
 ENTITY_MARGIN = 0.3  # ProjectileUtil: the target's box inflated by 0.3
 _RAD_TO_DEG = float(mth.RAD_TO_DEG)
 _LERP = F32(0.2)
@@ -289,14 +292,17 @@ def _hits(state, entity, start, end, motion):
 
 
 def _arrow_hits(state, arrow, target, motion) -> None:
-    """AbstractArrow.onHitEntity for a plain arrow: ceil(speed x ``damage``) as ``arrow`` damage of
-    its owner (else of the arrow), then it is gone. A critical arrow's random bonus, piercing,
-    tipped arrows' effects, a weapon's enchantments, a hurt that fails (the arrow bounces back), an
-    enderman, a player shooting a player (teams), the ``killed_by_arrow`` criterion and the other
-    arrows' hits raise Unmodelled."""
+    """AbstractArrow.onHitEntity for a plain or spectral arrow: ceil(speed x ``damage``) as ``arrow``
+    damage of its owner (else of the arrow), a spectral arrow's glowing for its ``Duration``, then
+    it is gone. A critical arrow's random bonus, piercing, tipped arrows' effects, a weapon's
+    enchantments, a hurt that fails (the arrow bounces back), an enderman, a player shooting a
+    player (teams), a spectral arrow hitting a player, the ``killed_by_arrow`` criterion and a
+    trident's hit raise Unmodelled."""
     data = arrow.data
     reason = None
-    if arrow.type != "minecraft:arrow" or not living.is_living(target.type) or target.type in _OWN_HURT:
+    spectral = arrow.type == "minecraft:spectral_arrow"
+    if arrow.type not in _PLAIN_ARROWS or not living.is_living(target.type) or target.type in _OWN_HURT \
+            or (spectral and target.is_player):
         reason = f"{arrow.type} hitting {target.type}"
     elif _int(data, "crit", 0):
         reason = "a critical arrow's bonus damage (random)"
@@ -314,6 +320,8 @@ def _arrow_hits(state, arrow, target, motion) -> None:
     damage = _ceil(min(max(speed * base, 0.0), 2.147483647E9))
     if not combat.hurt(state, target, float(damage), DamageSource("minecraft:arrow", owner or arrow, arrow)):
         raise Unmodelled(f"an arrow bouncing off {target.type} (its hurt failed: ProjectileDeflection.REVERSE)")
+    if spectral:  # SpectralArrow.doPostHurtEffects: glowing for its Duration
+        living.give_effect(state, target, "minecraft:glowing", _int(data, "Duration", SPECTRAL_GLOWING), 0, True)
     if arrow.alive:
         state.entities.kill(arrow)
     if owner is not None and owner.is_player and not target.alive:

@@ -139,6 +139,17 @@ def test_an_arrow_hurts_the_mob_in_its_way_by_ceil_speed_x_damage_and_is_gone(tm
     assert not any(d.unmodelled for d in emu.diagnostics)
 
 
+def test_a_spectral_arrow_makes_its_target_glow(tmp_path):
+    # SpectralArrow.doPostHurtEffects: glowing for its Duration (200 unless set), amplifier 0
+    emu = world(tmp_path, "summon pig 3.5 10 0.5 {NoAI:1b,NoGravity:1b}\n"
+                          "summon spectral_arrow 0.5 10.5 0.5 {Motion:[1.0d,0.0d,0.0d],Duration:60}\n")
+    emu.tick(3)
+    pig = only(emu, "minecraft:pig")
+    [glowing] = pig.data["active_effects"]
+    assert str(glowing["id"]) == "minecraft:glowing" and int(glowing["duration"]) == 60
+    assert float(pig.data["Health"]) == 8.0
+
+
 @pytest.mark.parametrize("setup,reason", [
     ("summon pig 3.5 10 0.5 {NoAI:1b}\nsummon arrow 0.5 10 0.5 {Motion:[1.0,0.0,0.0],crit:1b}\n",
      "a critical arrow's bonus damage"),
