@@ -6,8 +6,14 @@ pool game adds ``shot``), so the generic tool never imports them.
 from __future__ import annotations
 
 import importlib
+import os
 
 import click
+
+# numpy's OpenBLAS starts a thread pool when numpy is imported, and each idle thread spins on
+# sched_yield for about 2**28 cycles (0.1 s) before it sleeps: CPU time every dpemu process paid on
+# an idle machine. dpemu's matrices are 3x3 and 4x4; batches of shots use processes, not BLAS threads.
+os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
 
 # subcommand -> ("module:attribute", the one-line help ``dpemu --help`` lists without importing it);
 # tests/cli/test_main.py checks each line against the command's own help

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import importlib
+import os
 import subprocess
 import sys
 
@@ -55,6 +56,19 @@ def test_a_short_run_on_the_default_backend_imports_no_numba(tmp_path):
                       {"minecraft:tick": ["t:tick"]})
     out = dpemu("run", str(pack), "--ticks", "2")
     assert "backend: python\n" in out and "numba modules: []" in out
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self/task"), reason="counts the threads in /proc")
+def test_a_run_starts_no_blas_threads(tmp_path):
+    # numpy's OpenBLAS pool spins each idle thread for about 0.1 s of CPU after it starts
+    pack = write_pack(tmp_path / "pack", {"t:a": "scoreboard objectives add o dummy"})
+    script = SCRIPT.replace("print('numba modules:', sorted(m for m in sys.modules if m.split('.')[0] == 'numba'))",
+                            "import os, numpy\nprint('threads:', len(os.listdir('/proc/self/task')))")
+    env = {k: v for k, v in os.environ.items() if k != "OPENBLAS_NUM_THREADS"}
+    args = [sys.executable, "-c", script, "run", str(pack), "--call", "t:a", "--backend", "python"]
+    assert "threads: 1" in subprocess.run(args, capture_output=True, text=True, check=True, env=env).stdout
+    chosen = subprocess.run(args, capture_output=True, text=True, check=True, env={**env, "OPENBLAS_NUM_THREADS": "2"})
+    assert "threads: 2" in chosen.stdout  # the user's choice stands
 
 
 def test_a_built_in_subcommand_reads_no_package_metadata(tmp_path):
