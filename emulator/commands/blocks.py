@@ -9,7 +9,9 @@ tests Level.getBiome at getLoadedBlockPos).
 """
 from __future__ import annotations
 
-from emulator.world import biomes, command_blocks, crafters, rails
+import math
+
+from emulator.world import biomes, command_blocks, crafters, rails, structures
 from emulator.world.blocks import BlockSpec, block_pos, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
@@ -17,7 +19,8 @@ from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 
 from .entities import world_source
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.loot_context import namespaced
 
 # the blocks that read their neighbours' signal when a neighbour changes
 NEIGHBOUR_READERS = command_blocks.COMMAND_BLOCKS | {crafters.CRAFTER}
@@ -173,5 +176,49 @@ def _word(reader: Reader) -> str:
     return text[start:reader.pos]
 
 
+_ROTATIONS = ("none", "clockwise_90", "180", "counterclockwise_90")
+_MIRRORS = ("none", "left_right", "front_back")
+
+
+def place_command(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``place template TEMPLATE [POS [ROTATION [MIRROR [INTEGRITY [SEED]]]]]`` (PlaceCommand.
+    placeTemplate): the pack's ``structure`` file with its corner at POS (the source's block by
+    default) in the context's level; "There is no template with id" when no pack has it, "Failed to
+    place template" when it holds nothing. A rotation, a mirror or an integrity below 1 (random
+    blocks left out) is not modelled, nor ``place feature|jigsaw|structure`` (world generation)."""
+    reader = Reader(cmd.text, cmd.loc, tuple(env.state.version))
+    try:
+        reader.pos = len(cmd.name) + 1
+        kind = reader.word()
+        if kind != "template":
+            raise Unmodelled(f"'place {kind}' (the emulator does not generate features, jigsaw pieces or structures)")
+        reader.skip_ws()
+        template_id = namespaced(reader.word())
+        reader.skip_ws()
+        corner = vec3(reader, block=True) if reader.more() else None
+        options = reader.text[reader.pos:reader.end].split()
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error, report=True) from None
+    rotation, mirror, integrity = (options + ["none", "none", "1"][len(options):])[:3]
+    if rotation not in _ROTATIONS or mirror not in _MIRRORS:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, f"unknown rotation or mirror in {options}", report=True)
+    if rotation != "none" or mirror != "none":
+        raise Unmodelled(f"place template with rotation {rotation} and mirror {mirror} (rotated block states)")
+    if float(integrity) < 1.0:
+        raise Unmodelled("place template with an integrity below 1 (BlockRotProcessor's random)")
+    data = env.state.resources.template_file(template_id)
+    if data is None:
+        raise CommandFailure("commands.place.template.invalid", template_id)
+    try:
+        template = structures.read_template(data)
+    except structures.StructureError as error:
+        raise CommandFailure("dpemu.structure.invalid", template_id, error, report=True) from None
+    source = world_source(env.state, ctx)
+    origin = block_pos(source, corner) if corner is not None else tuple(math.floor(v) for v in source.pos)
+    if not structures.place(env.state, template, origin, ctx.dimension):
+        raise CommandFailure("commands.place.template.failed")
+    return 1
+
+
 # generic commands by name
-HANDLERS = {"setblock": block_command, "fill": block_command, "fillbiome": fillbiome_command}
+HANDLERS = {"setblock": block_command, "fill": block_command, "fillbiome": fillbiome_command, "place": place_command}

@@ -24,8 +24,9 @@ from __future__ import annotations
 
 import random
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Callable
 
+from emulator.world import structures
 from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS
 from mcfunction_parser.pack.registry_tags import RegistryTag
@@ -48,6 +49,8 @@ class Resources:
     random: random.Random = field(default_factory=lambda: random.Random(0))  # loot rolls, dropped items
     redefined_enchantments: frozenset = frozenset()  # vanilla enchantments a pack's file redefines
     enchantments: dict[str, Any] = field(default_factory=dict)  # id -> JSON (the packs' files that load)
+    # a structure template's file from the packs (``place template``), None when no pack has it
+    template_file: Callable[[str], bytes | None] = lambda template_id: None
 
     @classmethod
     def from_packs(cls, packs) -> "Resources":
@@ -59,6 +62,7 @@ class Resources:
                     vanilla_data=packs.vanilla_data, enchantments=dict(packs.enchantments))
         found.redefined_enchantments = frozenset(
             f"minecraft:{e}" for e in _READ_ENCHANTMENTS if packs.read_file(f"data/minecraft/enchantment/{e}.json"))
+        found.template_file = lambda template_id: structures.find_template(packs, template_id)
         for kind, docs in (("loot_table", tables), ("item_modifier", modifiers)):
             found.paths.update((f"{kind} {k}", d.path) for k, d in docs.items())
         return found

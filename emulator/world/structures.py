@@ -6,7 +6,7 @@ in the loaded packs, reading it, placing its blocks and entities in the world.
 - ``read_template(data)``: a :class:`Template` (size, blocks with their palette state and block
   entity NBT, entities with their relative position and NBT); :class:`StructureError` says what is
   wrong with a corrupt or malformed file.
-- ``place(state, template, origin)``: ``StructureTemplate.placeInWorld`` without rotation or mirror:
+- ``place(state, template, origin, dimension)``: ``StructureTemplate.placeInWorld`` without rotation or mirror:
   every block at origin + pos (its block entity NBT kept), every entity summoned at origin + pos
   from its NBT with a new UUID (``placeEntities`` removes the saved one).
 
@@ -121,17 +121,24 @@ def _ints(value, where: str) -> tuple[int, int, int]:
     return tuple(int(v) for v in value)
 
 
-def place(state, template: Template, origin: tuple[int, int, int]) -> None:
-    """Put ``template``'s blocks and entities into the world with its corner at ``origin``."""
+def place(state, template: Template, origin: tuple[int, int, int], dimension: str = "minecraft:overworld") -> bool:
+    """Put ``template``'s blocks and entities into level ``dimension`` with its corner at
+    ``origin``; False, placing nothing, when it has neither blocks nor entities or a size of 0
+    (StructureTemplate.placeInWorld)."""
+    if not (template.blocks or template.entities) or min(template.size) < 1:
+        return False
     ox, oy, oz = origin
+    blocks = state.blocks_in(dimension)
     for (x, y, z), spec in template.blocks:
         try:
-            state.blocks.setblock((ox + x, oy + y, oz + z), with_defaults(spec, state.version))
+            blocks.setblock((ox + x, oy + y, oz + z), with_defaults(spec, state.version))
         except CommandFailure:
             pass  # the same block is there already
     for (x, y, z), nbt in template.entities:
         data = Compound((k, v) for k, v in nbt.items() if k not in ("id", "UUID", "Pos"))
         try:
-            projectiles.launched(state, state.entities.summon(str(nbt["id"]), (ox + x, oy + y, oz + z), data))
+            projectiles.launched(state, state.entities.summon(str(nbt["id"]), (ox + x, oy + y, oz + z), data,
+                                                              dimension=dimension))
         except CommandFailure:
             pass  # createEntityIgnoreException: an entity that cannot be created is left out
+    return True
