@@ -44,8 +44,8 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_use, combat, crafters, living, nbt_ops, player_actions, projectiles,
-                           statistics)
+from emulator.world import (advancements, block_entity_ticks, block_use, combat, crafters, living, nbt_ops,
+                           player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -75,7 +75,8 @@ ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
                 (crafters.tick_crafting, crafters.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),
                 (projectiles.tick_flying, projectiles.tick_is_idle),
-                (advancements.tick_players, advancements.tick_is_idle))
+                (advancements.tick_players, advancements.tick_is_idle),
+                (block_entity_ticks.tick_block_entities, block_entity_ticks.tick_is_idle))
 
 # told of each root sequence run: (function id, its result); a listener with a ``roots_ran(function id,
 # costs)`` method is told of a batch's roots of one function at once (not cut, no result read)

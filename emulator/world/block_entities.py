@@ -33,6 +33,7 @@ from __future__ import annotations
 from mcfunction_parser.nbt import Byte, Compound, Int, List, Long, Short, String
 from emulator.world import command_blocks, signs
 from emulator.world.id_families import COLOURS, WOODS
+from emulator.world.nbt_ops import copy_tag
 from emulator.world.inventories import CONTAINER_SIZES, SHULKER_BOXES, default_block_entity
 
 
@@ -84,6 +85,34 @@ def known(block_id: str, version) -> bool:
 
 def new_entity(block_id: str, version, triggered: bool = False) -> Compound | None:
     return _new(block_id, tuple(version), triggered)
+
+
+def placed_with(block_id: str, version, given: Compound, triggered: bool = False) -> Compound:
+    """The block entity a block placed with NBT saves: BlockInput.place has the new block entity
+    load only the NBT written (loadWithComponents), so a field that NBT lacks keeps the new one's
+    value unless load reads it anyway: a hopper's TransferCooldown and a chiseled bookshelf's
+    last_interacted_slot become 0 (getInt), a spawner's Delay 0 (getShort) and, without
+    SpawnPotentials, its one potential spawn is its SpawnData (or an empty one: BaseSpawner.load)."""
+    version = tuple(version)
+    nbt = _new(block_id, version, triggered) or Compound()
+    kind = type_id(block_id)
+    for key, value in _READ_WHEN_MISSING.get(kind, {}).items():
+        if key not in given:
+            nbt[key] = value
+    if kind == "minecraft:mob_spawner" and "SpawnPotentials" not in given and nbt:
+        default = Compound(entity=Compound(id=String("minecraft:pig")) if version < (1, 19, 3) else Compound())
+        spawn = given.get("SpawnData") if isinstance(given.get("SpawnData"), Compound) else default
+        nbt["SpawnPotentials"] = List([Compound(data=copy_tag(spawn), weight=Int(1))])
+    nbt.update(copy_tag(given))
+    return nbt
+
+
+# what load reads for a field the NBT lacks, where it differs from a new block entity's value
+_READ_WHEN_MISSING = {
+    "minecraft:hopper": {"TransferCooldown": Int(0)},
+    "minecraft:chiseled_bookshelf": {"last_interacted_slot": Int(0)},
+    "minecraft:mob_spawner": {"Delay": Short(0)},
+}
 
 
 def _new(block_id: str, version: tuple, triggered: bool) -> Compound | None:

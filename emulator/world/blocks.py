@@ -210,10 +210,10 @@ class BlockMap:
         else:
             self.states[pos] = state
         self.entities.pop(pos, None)
-        nbt = block_entities.new_entity(state.id, self.version_of(), dict(state.properties).get("triggered") == "true")
+        triggered = dict(state.properties).get("triggered") == "true"
+        nbt = block_entities.new_entity(state.id, self.version_of(), triggered)
         if spec.nbt is not None and block_entities.type_id(state.id) is not None:  # BlockInput.place: else ignored
-            nbt = nbt if nbt is not None else Compound()
-            nbt.update(copy_tag(spec.nbt))
+            nbt = block_entities.placed_with(state.id, self.version_of(), spec.nbt, triggered)
             _loaded(state.id, nbt)
         if nbt is not None:
             self.entities[pos] = nbt

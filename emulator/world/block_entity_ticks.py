@@ -1,0 +1,251 @@
+"""What block entities do each tick (their BlockEntityTicker on the server), after the entities,
+as far as the emulator models it; what it does not is reported as not modelled, once per kind.
+
+- ``tick_block_entities(state)``: every level's ticking block entities, in each level's order:
+  an end gateway's ``Age`` grows; a hopper's ``TransferCooldown`` counts down to 0 (an idle one:
+  locked, or empty with nothing to pull in above it); a furnace's and an unlit campfire's cooking
+  progress falls back by 2 while nothing burns; a brewing stand takes a blaze powder when out of
+  fuel and shows its bottles in its ``has_bottle_N`` states; a spawner counts its ``Delay`` down
+  while a living player who is no spectator is within ``RequiredPlayerRange``. Moving items,
+  burning, cooking, brewing, spawning, bees leaving a hive, a beacon over blocks and a jukebox
+  playing are not modelled. ``tick_is_idle(state)``: nothing would change.
+
+Sources (decompiled 1.21): world/level/block/entity/TheEndGatewayBlockEntity.portalTick,
+HopperBlockEntity.pushItemsTick / tryMoveItems / suckInItems, AbstractFurnaceBlockEntity.serverTick,
+CampfireBlockEntity.cookTick / cooldownTick, BrewingStandBlockEntity.serverTick,
+world/level/BaseSpawner.serverTick / isNearPlayer (Level.hasNearbyAlivePlayer),
+BeaconBlockEntity.tick (every 80 ticks: updateBase), BeehiveBlockEntity.serverTick,
+JukeboxBlockEntity.tick.
+"""
+from __future__ import annotations
+
+from emulator.world import block_entities, inventories
+from emulator.world.id_families import WOODS
+from emulator.world.items import ItemStack
+from emulator.world.nbt_ops import is_numeric, numeric_value
+from mcfunction_parser.nbt import Byte, Int, Long, Short
+
+_FURNACES = ("minecraft:furnace", "minecraft:smoker", "minecraft:blast_furnace")
+# what a hopper pulls items from besides the container block above it (HopperBlockEntity.suckInItems)
+_CONTAINER_ENTITIES = frozenset("minecraft:" + n for n in (
+    "item chest_minecart hopper_minecart chest_boat bamboo_chest_raft").split()) | frozenset(
+    f"minecraft:{w}_chest_boat" for w in WOODS)
+MESSAGE = "{} working (what a block entity does each tick beyond its counters is not modelled here)"
+
+
+def _int(nbt, key: str, default: int = 0) -> int:
+    value = nbt.get(key)
+    return int(numeric_value(value)) if is_numeric(value) else default
+
+
+def _report(state, what: str) -> None:
+    message = MESSAGE.format(what)
+    if not any(d.message == message for d in state.diagnostics):
+        state.error(message, severity="warning", unmodelled=True)
+
+
+def _levels(state):
+    yield "minecraft:overworld", state.blocks
+    yield from state.other_levels_blocks.items()
+
+
+def tick_block_entities(state) -> None:
+    for dimension, blocks in _levels(state):
+        for pos, nbt in list(blocks.entities.items()):
+            tick = _TICKS.get(block_entities.type_id(blocks.get(pos).id))
+            if tick is not None:
+                tick(state, dimension, blocks, pos, nbt)
+
+
+def tick_is_idle(state) -> bool:
+    for dimension, blocks in _levels(state):
+        for pos, nbt in blocks.entities.items():
+            idle = _IDLE.get(block_entities.type_id(blocks.get(pos).id))
+            if idle is not None and not idle(state, dimension, blocks, pos, nbt):
+                return False
+    return True
+
+
+# ---------------------------------------------------------------------- each kind
+def _gateway(state, dimension, blocks, pos, nbt) -> None:
+    """TheEndGatewayBlockEntity.portalTick: the age grows every tick (its cooldown is not saved)."""
+    nbt["Age"] = Long(_int(nbt, "Age") + 1)
+
+
+def _hopper_still(state, dimension, blocks, pos, nbt) -> bool:
+    """Whether tryMoveItems would move nothing: the hopper locked (``enabled=false``), or empty with
+    no container holding items above it and no item or container entity in the two blocks above."""
+    if dict(blocks.get(pos).properties).get("enabled") == "false":
+        return True
+    if nbt.get("Items"):
+        return False
+    x, y, z = pos
+    above = inventories.container(blocks, (x, y + 1, z), state.version)
+    if above is not None and any(not above.slot(i).get().is_empty for i in range(above.size)):
+        return False
+    if blocks.get((x, y + 1, z)).id == "minecraft:composter":
+        return False
+    return not any(e.alive and e.dimension == dimension and e.type in _CONTAINER_ENTITIES
+                   and x - 1 <= e.pos[0] <= x + 2 and y <= e.pos[1] <= y + 2 and z - 1 <= e.pos[2] <= z + 2
+                   for e in state.entities.entities)
+
+
+def _hopper(state, dimension, blocks, pos, nbt) -> None:
+    """HopperBlockEntity.pushItemsTick: the cooldown counts down; at 0 or below it is set to 0 and
+    the hopper tries to move items."""
+    cooldown = _int(nbt, "TransferCooldown") - 1
+    if cooldown > 0:
+        nbt["TransferCooldown"] = Int(cooldown)
+        return
+    nbt["TransferCooldown"] = Int(0)
+    if not _hopper_still(state, dimension, blocks, pos, nbt):
+        _report(state, "a hopper")
+
+
+def _hopper_idle(state, dimension, blocks, pos, nbt) -> bool:
+    return _int(nbt, "TransferCooldown") == 0 and _hopper_still(state, dimension, blocks, pos, nbt)
+
+
+def _furnace_keys(version) -> tuple[str, str, str]:
+    if tuple(version) >= block_entities.FURNACE_KEYS_VERSION:
+        return "lit_time_remaining", "cooking_time_spent", "cooking_total_time"
+    return "BurnTime", "CookTime", "CookTimeTotal"
+
+
+def _slot(nbt, index: int, size: int, version) -> ItemStack:
+    return inventories.Container(nbt, size, version).slot(index).get()
+
+
+def _furnace_burns(state, nbt) -> bool:
+    lit, _, _ = _furnace_keys(state.version)
+    return _int(nbt, lit) > 0 or not (_slot(nbt, 0, 3, state.version).is_empty or _slot(nbt, 1, 3, state.version).is_empty)
+
+
+def _furnace(state, dimension, blocks, pos, nbt) -> None:
+    """AbstractFurnaceBlockEntity.serverTick: while nothing burns and nothing could, the cooking
+    progress falls back by 2 (clamped to the total)."""
+    if _furnace_burns(state, nbt):
+        _report(state, "a furnace")
+        return
+    _, spent, total = _furnace_keys(state.version)
+    if _int(nbt, spent) > 0:
+        nbt[spent] = Short(min(max(_int(nbt, spent) - 2, 0), _int(nbt, total)))
+
+
+def _furnace_idle(state, dimension, blocks, pos, nbt) -> bool:
+    return not _furnace_burns(state, nbt) and _int(nbt, _furnace_keys(state.version)[1]) <= 0
+
+
+def _campfire(state, dimension, blocks, pos, nbt) -> None:
+    """CampfireBlockEntity: a lit one cooks its items (not modelled); an unlit one lets each
+    slot's progress fall back by 2 (cooldownTick)."""
+    lit = dict(blocks.get(pos).properties).get("lit") == "true"
+    times, totals = list(nbt.get("CookingTimes") or []), list(nbt.get("CookingTotalTimes") or [])
+    if lit:
+        if nbt.get("Items"):
+            _report(state, "a lit campfire cooking")
+        return
+    if any(int(t) > 0 for t in times):
+        totals += [0] * (len(times) - len(totals))
+        nbt["CookingTimes"] = type(nbt["CookingTimes"])(
+            Int(min(max(int(t) - 2, 0), int(total))) if int(t) > 0 else Int(int(t)) for t, total in zip(times, totals))
+
+
+def _campfire_idle(state, dimension, blocks, pos, nbt) -> bool:
+    lit = dict(blocks.get(pos).properties).get("lit") == "true"
+    return not (lit and nbt.get("Items")) and not any(int(t) > 0 for t in nbt.get("CookingTimes") or [])
+
+
+def _brewing(state, dimension, blocks, pos, nbt) -> None:
+    """BrewingStandBlockEntity.serverTick: out of fuel with a blaze powder in its fuel slot, it
+    takes one (20 brews); brewing is not modelled; the ``has_bottle_0..2`` states follow slots 0 - 2."""
+    slots = inventories.Container(nbt, 5, state.version)
+    powder = slots.slot(4).get()
+    if _int(nbt, "Fuel") <= 0 and powder.id == "minecraft:blaze_powder":
+        nbt["Fuel"] = Byte(20)
+        powder.count -= 1
+        slots.slot(4).set(powder if powder.count > 0 else ItemStack("minecraft:air", 0))
+    if _int(nbt, "BrewTime") > 0 or (_int(nbt, "Fuel") > 0 and not slots.slot(3).get().is_empty):
+        _report(state, "a brewing stand")
+    block = blocks.get(pos)
+    bottles = {f"has_bottle_{i}": "true" if not slots.slot(i).get().is_empty else "false" for i in range(3)}
+    if any(dict(block.properties).get(k) not in (None, v) for k, v in bottles.items()):
+        blocks.set_state(pos, type(block)(block.id, tuple(sorted({**dict(block.properties), **bottles}.items()))))
+
+
+def _brewing_idle(state, dimension, blocks, pos, nbt) -> bool:
+    slots = inventories.Container(nbt, 5, state.version)
+    properties = dict(blocks.get(pos).properties)
+    return (_int(nbt, "BrewTime") <= 0 and not (_int(nbt, "Fuel") <= 0 and slots.slot(4).get().id == "minecraft:blaze_powder")
+            and not (_int(nbt, "Fuel") > 0 and not slots.slot(3).get().is_empty)
+            and all(properties.get(f"has_bottle_{i}") in (None, "false" if slots.slot(i).get().is_empty else "true")
+                    for i in range(3)))
+
+
+def _player_near(state, dimension, pos, nbt) -> bool:
+    """BaseSpawner.isNearPlayer: a living player who is no spectator within the range of the
+    block's centre (any distance when the range is negative)."""
+    reach = _int(nbt, "RequiredPlayerRange", 16)
+    centre = tuple(c + 0.5 for c in pos)
+    for player in state.entities.players():
+        if player.dimension != dimension or player.gamemode == "spectator" or player in state.dead_players:
+            continue
+        if reach < 0 or sum((a - b) ** 2 for a, b in zip(player.pos, centre)) < reach * reach:
+            return True
+    return False
+
+
+def _spawner(state, dimension, blocks, pos, nbt) -> None:
+    """BaseSpawner.serverTick near a player: the delay counts down; at 0 it spawns (not modelled)."""
+    if not _player_near(state, dimension, pos, nbt):
+        return
+    delay = _int(nbt, "Delay", 20)
+    if delay > 0:
+        nbt["Delay"] = Short(delay - 1)
+    else:
+        _report(state, "a spawner spawning")
+
+
+def _spawner_idle(state, dimension, blocks, pos, nbt) -> bool:
+    return not _player_near(state, dimension, pos, nbt)
+
+
+def _beacon(state, dimension, blocks, pos, nbt) -> None:
+    """BeaconBlockEntity.tick: every 80 game ticks its levels are counted from the pyramid under
+    it; with no level and nothing under it that stays 0, anything else is not modelled."""
+    if state.gametime % 80 == 0 and not _beacon_idle(state, dimension, blocks, pos, nbt):
+        _report(state, "a beacon")
+
+
+def _beacon_idle(state, dimension, blocks, pos, nbt) -> bool:
+    x, y, z = pos
+    return _int(nbt, "Levels") == 0 and all(blocks.get((x + dx, y - 1, z + dz)).is_air
+                                            for dx in (-1, 0, 1) for dz in (-1, 0, 1))
+
+
+def _busy_when(key: str, what: str):
+    """A block entity that works only while ``key`` holds something (a hive's bees, a jukebox's record)."""
+    def tick(state, dimension, blocks, pos, nbt) -> None:
+        if nbt.get(key):
+            _report(state, what)
+
+    def idle(state, dimension, blocks, pos, nbt) -> bool:
+        return not nbt.get(key)
+    return tick, idle
+
+
+_HIVE = _busy_when("bees", "a beehive with bees")
+_OLD_HIVE = _busy_when("Bees", "a beehive with bees")
+_JUKEBOX = _busy_when("RecordItem", "a jukebox playing")
+_TICKS = {
+    "minecraft:end_gateway": _gateway, "minecraft:hopper": _hopper, "minecraft:campfire": _campfire,
+    "minecraft:brewing_stand": _brewing, "minecraft:mob_spawner": _spawner, "minecraft:beacon": _beacon,
+    "minecraft:beehive": lambda *a: (_HIVE[0](*a), _OLD_HIVE[0](*a)), "minecraft:jukebox": _JUKEBOX[0],
+    **{f: _furnace for f in _FURNACES},
+}
+_IDLE = {
+    "minecraft:end_gateway": lambda *a: False, "minecraft:hopper": _hopper_idle, "minecraft:campfire": _campfire_idle,
+    "minecraft:brewing_stand": _brewing_idle, "minecraft:mob_spawner": _spawner_idle, "minecraft:beacon": _beacon_idle,
+    "minecraft:beehive": lambda *a: _HIVE[1](*a) and _OLD_HIVE[1](*a), "minecraft:jukebox": _JUKEBOX[1],
+    **{f: _furnace_idle for f in _FURNACES},
+}
