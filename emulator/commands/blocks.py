@@ -1,9 +1,9 @@
 """Block commands and conditions over the world's block map: ``setblock``, ``fill`` (``replace
-FILTER`` too), ``execute if block`` and ``execute if blocks``; ``fillbiome`` and ``execute if
+FILTER`` too), ``clone``, ``execute if block`` and ``execute if blocks``; ``fillbiome`` and ``execute if
 biome`` over the biome cells the world knows (:mod:`emulator.world.biomes`).
 
-The parser keeps ``setblock``/``fill``/``fillbiome`` as generic commands (their text); they are
-read here. Sources (decompiled 1.21): server/commands/SetBlockCommand.java, FillCommand.java,
+The parser keeps ``setblock``/``fill``/``clone``/``fillbiome`` as generic commands (their text); they are
+read here. Sources (decompiled 1.21): server/commands/SetBlockCommand.java, FillCommand.java, CloneCommands.java,
 FillBiomeCommand.java, ExecuteCommand.java (checkRegions; ``if biome``: the ResourceOrTagArgument
 tests Level.getBiome at getLoadedBlockPos).
 """
@@ -110,6 +110,89 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
         command_blocks.after_change(env.state, ctx.dimension, changed)
         crafters.after_change(env.state, ctx.dimension, changed)
     return count
+
+
+def clone_command(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``clone [from DIM] BEGIN END [to DIM] DESTINATION [strict] [replace|masked|filtered FILTER]
+    [force|move|normal]`` (CloneCommands): the blocks copied, then the block ticks pending in the box
+    (LevelTicks.copyAreaFrom) and, unless ``strict``, the neighbours told (Level.blockUpdated)."""
+    read = _clone_words(cmd, env.state.version)
+    levels = env.state.entities.table.levels
+    source_level = _namespaced(read["from"]) if read["from"] else ctx.dimension
+    target_level = _namespaced(read["to"]) if read["to"] else ctx.dimension
+    for level in (source_level, target_level):
+        levels.level_id(level)  # DimensionArgument: an unknown level fails the command
+    source = world_source(env.state, ctx)
+    start, end, destination = (block_pos(source, corner) for corner in read["corners"])
+    blocks, target = env.state.blocks_in(source_level), env.state.blocks_in(target_level)
+    keep = lambda pos: True  # noqa: E731 - replace
+    if read["mask"] == "masked":
+        keep = lambda pos: not blocks.get(pos).is_air  # noqa: E731
+    elif read["mask"] == "filtered":
+        wanted, in_tag = block_argument(env, read["filter"]), block_tag_test(env)
+        keep = lambda pos: blocks.test(pos, wanted, in_tag)  # noqa: E731
+    barrier = with_defaults(parse_block("minecraft:barrier"), env.state.version)
+    count, changed, offset = blocks.clone_to(start, end, target, destination, keep, barrier, read["mode"],
+                                             source_level == target_level)
+    lo, hi = (tuple(min(a, b) for a, b in zip(start, end)), tuple(max(a, b) for a, b in zip(start, end)))
+    env.state.block_ticks.copy_area(source_level, lo, hi, offset, target_level)
+    if not read["strict"]:
+        moved = [pos for pos in changed[:len(changed) - count]] if read["mode"] == "move" else []
+        for level, positions in ((source_level, moved), (target_level, changed[len(moved):])):
+            _neighbours_updated(env.state.blocks_in(level), positions, BlockSpec("minecraft:air", False, (), None))
+            command_blocks.after_change(env.state, level, positions)
+            crafters.after_change(env.state, level, positions)
+    if count == 0:
+        raise CommandFailure("commands.clone.failed")
+    return count
+
+
+def _clone_words(cmd: ast.GenericCommand, version) -> dict:
+    """The parts of a ``clone`` command (its grammar checked by the parser for the release)."""
+    reader = Reader(cmd.text, cmd.loc, tuple(version))
+    found = {"from": None, "to": None, "corners": [], "strict": False, "mask": "replace", "filter": None,
+             "mode": "normal"}
+    try:
+        reader.pos = len(cmd.name) + 1
+        if _peek_word(reader) == "from":
+            _word(reader), reader.skip_ws()
+            found["from"] = _word(reader)
+            reader.skip_ws()
+        for _ in range(2):
+            found["corners"].append(vec3(reader, block=True))
+            reader.skip_ws()
+        if _peek_word(reader) == "to":
+            _word(reader), reader.skip_ws()
+            found["to"] = _word(reader)
+            reader.skip_ws()
+        found["corners"].append(vec3(reader, block=True))
+        reader.skip_ws()
+        words = []
+        while reader.more():
+            words.append(_word(reader))
+            reader.skip_ws()
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error, report=True) from None
+    if words[:1] == ["strict"]:
+        found["strict"], words = True, words[1:]
+    if words and words[0] in ("replace", "masked", "filtered"):
+        found["mask"], words = words[0], words[1:]
+        if found["mask"] == "filtered":
+            found["filter"], words = words[0], words[1:]
+    if words:
+        found["mode"] = words[0]
+    return found
+
+
+def _peek_word(reader: Reader) -> str:
+    end = reader.pos
+    while end < reader.end and not reader.text[end].isspace():
+        end += 1
+    return reader.text[reader.pos:end]
+
+
+def _namespaced(name: str) -> str:
+    return name if ":" in name else "minecraft:" + name
 
 
 def _placed(env, ctx, spec: BlockSpec):
@@ -221,4 +304,5 @@ def place_command(env, cmd: ast.GenericCommand, ctx) -> int:
 
 
 # generic commands by name
-HANDLERS = {"setblock": block_command, "fill": block_command, "fillbiome": fillbiome_command, "place": place_command}
+HANDLERS = {"setblock": block_command, "fill": block_command, "fillbiome": fillbiome_command, "place": place_command,
+            "clone": clone_command}

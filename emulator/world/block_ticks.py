@@ -32,6 +32,16 @@ class BlockTicks:
         self.order += 1
         self.pending.append((gametime + delay, self.order, tuple(pos), block_id, action, dimension))
 
+    def copy_area(self, source: str, lo, hi, offset, target: str) -> None:
+        """LevelTicks.copyAreaFrom: each tick pending in level ``source`` within the box ``lo``..``hi``
+        again at its position moved by ``offset`` in level ``target``, due at the same game time."""
+        for due, _, pos, block_id, action, dimension in list(self.pending):
+            if dimension == source and all(l <= p <= h for p, l, h in zip(pos, lo, hi)):
+                moved = tuple(p + o for p, o in zip(pos, offset))
+                if not any(p[2] == moved and p[3] == block_id and p[5] == target for p in self.pending):
+                    self.order += 1
+                    self.pending.append((due, self.order, moved, block_id, action, target))
+
     def in_level(self, dimension: str) -> "LevelTicks":
         return LevelTicks(self, dimension)
 

@@ -265,6 +265,37 @@ class BlockMap:
             raise CommandFailure("commands.fill.failed")
         return count
 
+    def clone_to(self, start, end, target: "BlockMap", destination, keep: Callable[[tuple[int, int, int]], bool],
+                 barrier: BlockSpec, mode: str = "normal", same_level: bool = True) -> tuple[int, list, tuple]:
+        """``clone`` (CloneCommands.clone): the blocks of the box between ``start`` and ``end`` that
+        ``keep`` takes, with their block entities, to ``target`` from ``destination`` (its lowest
+        corner); ``move`` leaves air where they were. Returns the count (each block set but a
+        barrier: the game sets a barrier first, then the block), the positions changed and the
+        offset (``barrier``: the barrier's default state). Fails when the boxes overlap in one level unless ``force`` or ``move``, when the
+        box is over the block limit, or when nothing was cloned."""
+        lo, hi = _box(start, end)
+        offset = tuple(d - l for d, l in zip(destination, lo))
+        if mode == "normal" and same_level and all(
+                l + o <= h and l <= h + o for l, h, o in zip(lo, hi, offset)):
+            raise CommandFailure("commands.clone.overlap")
+        volume = _volume(lo, hi)
+        if volume > MODIFICATION_LIMIT:
+            raise CommandFailure("commands.clone.toobig", MODIFICATION_LIMIT, volume)
+        taken = [(pos, self.get(pos), copy_tag(self.entity(pos)) if self.entity(pos) is not None else None)
+                 for pos in _positions(lo, hi) if keep(pos)]
+        air = BlockSpec(AIR, False, (), None)
+        changed = []
+        if mode == "move":
+            for pos, _, _ in taken:
+                self._place(pos, air)
+            changed += [pos for pos, _, _ in taken]
+        placed = [(tuple(p + o for p, o in zip(pos, offset)), state, nbt) for pos, state, nbt in taken]
+        for pos, _, _ in reversed(placed):
+            target._place(pos, barrier)
+        count = sum(target._place(pos, BlockSpec(state.id, False, state.properties, nbt))
+                    for pos, state, nbt in placed)
+        return count, changed + [pos for pos, _, _ in placed], offset
+
     def test(self, pos, spec: BlockSpec, in_tag: Callable[[str, str], bool] | None = None) -> bool:
         """``execute if block``: id or tag (``in_tag(tag_id, block_id)``), every written property
         equal, NBT a partial match."""

@@ -214,3 +214,48 @@ def test_a_block_entity_whose_save_is_not_known_is_not_modelled():
         world = _placed(block, version)
         with pytest.raises(Unmodelled, match="block entity of minecraft:"):
             world.block_nbt((0, 0, 0))
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_clone_counts_copies_block_entities_and_refuses_overlap(tmp_path, backend):
+    """CloneCommands.clone: every block the mask takes is set to a barrier then to its state, so the
+    result counts them all but barriers; a block entity goes with its block (saveCustomOnly,
+    loadCustomOnly); ``filtered`` onto itself with ``force`` counts the matching blocks (a machine
+    library counting its heads); ``normal`` refuses an overlap, ``move`` leaves air behind."""
+    emu = emulator(tmp_path, backend, {
+        "t:go": "setblock 0 0 0 chest{Items:[{Slot:0b,id:\"minecraft:stone\",count:3}]}\n"
+                "setblock 1 0 0 stone\nsetblock 2 0 0 barrier\n"
+                "setblock 0 0 1 player_head{components:{\"minecraft:custom_data\":{m:1b}}}\n"
+                "setblock 1 0 1 player_head\n"
+                "execute store result score #all o run clone 0 0 0 2 0 0 0 5 0\n"
+                "execute store result score #heads o run clone 0 0 1 2 0 1 0 0 1 filtered "
+                "player_head{components:{\"minecraft:custom_data\":{m:1b}}} force\n"
+                "execute store success score #overlap o run clone 0 0 0 2 0 0 1 0 0\n"
+                "execute store result score #masked o run clone 0 0 1 2 0 1 0 9 1 masked move\n"})
+    emu.call("t:go")
+    assert [emu.score(h, "o") for h in ("#all", "#heads", "#overlap", "#masked")] == [2, 1, 0, 2]
+    blocks = emu.state.blocks
+    assert [blocks.get((x, 5, 0)).id for x in range(3)] == ["minecraft:chest", "minecraft:stone", "minecraft:barrier"]
+    assert blocks.entity((0, 5, 0))["Items"][0]["count"] == 3
+    assert [blocks.get((x, 0, 1)).id for x in range(3)] == ["minecraft:air"] * 3  # moved away
+    assert blocks.get((2, 9, 1)).id == "minecraft:air" and blocks.entity((0, 9, 1))["components"] == {
+        "minecraft:custom_data": {"m": 1}}
+
+
+def test_clone_fails_on_nothing_too_much_and_an_unknown_level(tmp_path):
+    """ERROR_FAILED when no block was set (a masked box of air), ERROR_AREA_TOO_LARGE over the
+    commandModificationBlockLimit, DimensionArgument's unknown dimension; ``to`` another level."""
+    emu = emulator(tmp_path, "python", {
+        "t:go": "setblock 0 0 0 stone\n"
+                "execute store success score #air o run clone 5 5 5 6 6 6 9 9 9 masked\n"
+                "execute store success score #big o run clone 0 0 0 40 40 40 100 0 0\n"
+                "execute store success score #nowhere o run clone 0 0 0 0 0 0 to t:nowhere 0 0 0\n"
+                "execute store result score #nether o run clone 0 0 0 0 0 0 to the_nether 0 64 0\n"})
+    emu.call("t:go")
+    assert [emu.score(h, "o") for h in ("#air", "#big", "#nowhere", "#nether")] == [0, 0, 0, 1]
+    assert emu.state.blocks_in("minecraft:the_nether").get((0, 64, 0)).id == "minecraft:stone"
+    world, barrier = BlockMap(), parse_block("barrier")
+    with pytest.raises(CommandFailure, match="maximum 32768, specified 68921"):
+        world.clone_to((0, 0, 0), (40, 40, 40), world, (100, 0, 0), lambda pos: True, barrier)
+    with pytest.raises(CommandFailure, match="cannot overlap"):
+        world.clone_to((0, 0, 0), (2, 0, 0), world, (2, 0, 0), lambda pos: True, barrier)
+    assert world.clone_to((0, 0, 0), (2, 0, 0), world, (2, 0, 0), lambda pos: True, barrier, "force")[0] == 3
