@@ -91,6 +91,7 @@ class Runtime:
     def __init__(self, backend: Backend, packs, state: WorldState, sanitize: bool = False,
                  compiled: bool = False) -> None:
         state.resources = Resources.from_packs(packs)
+        state.entities.version = tuple(packs.version)
         state.entities.table.levels = Levels.from_packs(packs.dimensions, packs.dimension_types)
         advancements.warn_unobserved(state)
         if compiled:

@@ -54,7 +54,7 @@ from emulator.world.entity_table import (
     EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_SEAT, EI_TEAM, EI_VEHICLE, EI_XP, GAMEMODES, EntityTable, TagSet,
 )
 from emulator.world.errors import CommandFailure
-from emulator.world.inventories import normalise_items, player_defaults, selected_item
+from emulator.world.inventories import equipment_defaults, normalise_items, player_defaults, selected_item
 from emulator.world.text import plain_text
 from emulator.world.nbt_ops import copy_tag, is_numeric, narrow, numeric_value
 
@@ -539,8 +539,9 @@ def modify_entity(entity: Entity, change: Callable[[Compound], object]):
     return result
 
 
-def _base_data(type_id: str) -> Compound:
-    """The fields every entity saves besides the modelled ones, at their spawn values."""
+def _base_data(type_id: str, version=(1, 21, 11)) -> Compound:
+    """The fields every entity saves besides the modelled ones, at their spawn values (in the
+    layout of the release ``version``)."""
     data = Compound(FallDistance=Float(0.0), Fire=Short(-1), Air=Short(300), OnGround=Byte(0),
                     Invulnerable=Byte(0), PortalCooldown=Int(0))
     data.update((key, Compound()) for key in TYPE_COMPOUNDS.get(type_id, ()))
@@ -549,6 +550,8 @@ def _base_data(type_id: str) -> Compound:
     if type_id == "minecraft:player":
         data.update(player_defaults())
     data.update(living.base_fields(type_id))
+    if type_id != "minecraft:player" and living.is_living(type_id):
+        data.update(equipment_defaults(version))
     return data
 
 
@@ -565,6 +568,7 @@ class EntityStore:
         # (RandomSupport.mixStafford13 of the seed's upgrade to 128 bits), as Random() mixes the time
         java_random.set_seed(self.table.random, random_sequences.mix_stafford13(seed + random_sequences.GOLDEN_RATIO_64))
         self.joined = 0  # players that joined so far (EI_JOIN)
+        self.version = (1, 21, 11)  # the release the packs run as (what new entities save)
         self.clock: Callable[[], int] = lambda: 0  # the server ticks run so far (WorldState.tick)
         self.changes = 0  # entities that came into ``entities`` or left it so far
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
@@ -602,7 +606,7 @@ class EntityStore:
         if not in_spawnable_bounds(pos):
             raise CommandFailure("commands.summon.invalidPosition")
         entity = Entity(insecure_uuid(self.rng), type_id, tuple(float(v) for v in pos), F32(yaw), F32(pitch),
-                        data=_base_data(type_id), dimension=dimension)
+                        data=_base_data(type_id, self.version), dimension=dimension)
         if nbt:
             full = entity_nbt(entity)
             full.update(copy_tag(nbt))

@@ -30,6 +30,7 @@ API (slot ids are SlotRanges': 0-35 inventory/container, 98/99 hands, 100-103 ar
   (ClearInventoryCommands), ``selected`` (the held slot).
 - ``MAINHAND``, ``OFFHAND``, ``BODY``, ``CURSOR``, ``ARMOR_SLOTS``: slot ids by name.
 - ``selected_item(data)``: the held stack's NBT for ``SelectedItem`` (None when empty).
+- ``equipment_defaults(version)``: the empty ``HandItems``/``ArmorItems`` a new mob saves before 1.21.5.
 - ``default_block_entity(block_id)``: the block entity a container gets when placed (``Items: []``).
 - ``normalise_items(data)``: the item stacks of an entity's or block entity's NBT, as the game
   reads them when it loads that NBT (summon, setblock, ``data``): each one's components patched
@@ -196,6 +197,15 @@ _UNSAVED: "weakref.WeakKeyDictionary[object, dict[int, ItemStack]]" = weakref.We
 def _unsaved_slot(entity, slot: int) -> SlotAccess:
     slots = _UNSAVED.setdefault(entity, {})
     return SlotAccess(lambda: slots.get(slot, EMPTY).copy(), lambda stack: slots.__setitem__(slot, stack.copy()))
+
+
+def equipment_defaults(version) -> Compound:
+    """What a new mob or armor stand saves of its equipment before 1.21.5 (Mob and
+    ArmorStand.addAdditionalSaveData: ``HandItems`` and ``ArmorItems`` always, ``{}`` for an empty
+    slot; a pack sets ``HandItems[0]`` in place); from 1.21.5 ``equipment`` only when it holds one."""
+    if _new_layout(version):
+        return Compound()
+    return Compound(HandItems=List(Compound() for _ in range(2)), ArmorItems=List(Compound() for _ in range(4)))
 
 
 def player_defaults() -> Compound:

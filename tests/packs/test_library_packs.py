@@ -21,7 +21,9 @@ their PackTest suites run on both backends:
   with an empty path, valid: ResourceLocation.isValidPath), as in-game unit test libraries do;
 - projectiles: arrows and snowballs flying across the test, an arrow sticking in the barrier wall
   and another falling out of the air onto the structure block, a snowball breaking on the wall, an
-  arrow hurting a pig."""
+  arrow hurting a pig;
+- toolstand: an inventory library setting a hidden armor stand's ``HandItems[0]`` (saved empty
+  before 1.21.5) and mining a probe block with it to read a loot table's answer."""
 from pathlib import Path
 
 import pytest
@@ -33,7 +35,7 @@ from emulator.testing.runner import load_suite, run_case
 HERE = Path(__file__).resolve().parent
 SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
                                                                          "clicks", "crafting", "ticker", "machines", "stack",
-                                                                         "projectiles")}
+                                                                         "projectiles", "toolstand")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 
