@@ -1,6 +1,7 @@
 """The typed AST of mcfunction commands.
 
-Every node is a frozen, slotted dataclass carrying ``loc`` (file, line, column of its first
+Every node is a frozen, slotted dataclass (run released: immutable by convention, see
+:mod:`.frozen_init`) carrying ``loc`` (file, line, column of its first
 character). A command is identified by its class; commands the emulator only needs to count, log or
 run host-side (``tellraw``, ``particle``, ``setblock`` ...) are ``GenericCommand`` with their text.
 
@@ -886,4 +887,4 @@ class Loot(Command):
 
 from .frozen_init import speed_up_inits  # noqa: E402
 
-speed_up_inits(globals())  # same nodes, built about twice as fast (see frozen_init)
+speed_up_inits(globals())  # the same nodes, built faster (see frozen_init)

@@ -85,4 +85,4 @@ def _clip(line: str, col: int, width: int = 120) -> tuple[str, int]:
 
 from .frozen_init import speed_up_inits  # noqa: E402
 
-speed_up_inits(globals())  # same Loc and Diagnostic, built about twice as fast (see frozen_init)
+speed_up_inits(globals())  # the same Diagnostic, built faster (see frozen_init)

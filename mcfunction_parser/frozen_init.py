@@ -1,39 +1,76 @@
-"""A faster ``__init__`` for frozen, slotted dataclasses (the AST nodes and ``Loc``).
+"""Building the AST's nodes fast: frozen, slotted dataclasses without the cost of being frozen.
 
-The ``__init__`` that ``@dataclass(frozen=True)`` generates stores each field with
-``object.__setattr__(self, "name", value)``, a generic call that looks the attribute up by name.
-The parser builds about ten such objects per command, so it spends a good part of its time there.
-:func:`speed_up_inits` gives each frozen, slotted dataclass of a module an ``__init__`` with the
-same parameters and defaults that stores through the slot descriptors instead: about twice as fast,
-the same objects (assigning to a field afterwards still raises ``FrozenInstanceError``).
+The nodes (and ``Diagnostic``) are declared ``@dataclass(frozen=True, slots=True)``: equal and
+hashed by value, and never changed once built (:mod:`.relocate` shares a node between commands;
+the emulator keys caches by them). Freezing costs on every build: the generated ``__init__``
+stores each field with ``object.__setattr__``, and a class with its own ``__setattr__`` makes
+every attribute store go through it. The parser builds about ten nodes per command, so
+:func:`speed_up_inits` releases each such class of a module:
+
+- its ``__setattr__`` and ``__delattr__`` (which raise ``FrozenInstanceError``) are removed, so
+  that a node is immutable by convention: nothing in dpemu assigns to a node's field, and the test
+  suite checks it, running with the guard back on (:func:`guard_nodes`);
+- ``cls.new(...)``, with the parameters of ``cls(...)``, builds the same object with
+  ``object.__new__`` and plain slot stores, the parser's way to build a node (about 30 % faster
+  than filling a builder of the same layout and assigning ``__class__``, which a guarded class
+  needs, and about twice as fast as calling a frozen class);
+- ``__init__`` stores through the slot descriptors (about twice as fast as the generated one,
+  guarded or not), and ``__reduce__`` pickles a node as its class and field values
+  (``pack.parallel`` sends parsed functions between processes).
+
 Classes it can't reproduce exactly (``default_factory``, ``init=False`` or keyword-only fields,
-``__post_init__``) keep the generated one. The classes it speeds up also pickle as their class and
-field values, so unpickling builds them with that ``__init__`` too (pack.parallel sends parsed
-functions between processes).
-
-Calling a class still costs its call machinery and one slot-descriptor call per field (each packs
-its arguments in a tuple). The parser's hot paths build nodes with ``cls.new(...)`` instead, with the
-same parameters: it fills a *builder*, a class of the same layout (the same base and slots) whose
-attributes are set the plain way, then turns it into ``cls`` by assigning ``__class__`` (which
-Python allows between classes of one layout): about twice as fast again, and the same object
-``cls(...)`` would give. ``new`` is the class itself where the fast ``__init__`` does not apply.
+``__post_init__``) stay frozen, and their ``new`` is the class itself.
 """
 from __future__ import annotations
 
 import dataclasses
 from types import MemberDescriptorType
 
+# every class released by speed_up_inits -> its frozen (__setattr__, __delattr__)
+_RELEASED: dict[type, tuple] = {}
+_GUARDED = [False]
+# called with the new state when guard_nodes changes it (relocate forgets the code it generated)
+ON_GUARD: list = []
+
 
 def speed_up_inits(namespace: dict) -> None:
-    """Replace ``__init__`` of every eligible dataclass defined in the module ``namespace`` (its globals())."""
+    """Release every eligible dataclass defined in the module ``namespace`` (its globals())."""
     module = namespace["__name__"]
     for obj in list(namespace.values()):
         if isinstance(obj, type) and obj.__module__ == module and dataclasses.is_dataclass(obj):
             init = _fast_init(obj)
-            if init is not None:
-                obj.__init__ = init
-                obj.__reduce__ = _reduce(obj)
-            obj.new = obj if init is None else _factory(obj)
+            if init is None:
+                obj.new = obj
+                continue
+            obj.__init__ = init
+            obj.__reduce__ = _reduce(obj)
+            _RELEASED[obj] = (obj.__dict__["__setattr__"], obj.__dict__["__delattr__"])
+            _set_guard(obj, _GUARDED[0])
+
+
+def guard_nodes(on: bool = True) -> None:
+    """Put the frozen ``__setattr__``/``__delattr__`` back on every released class (assigning to a
+    node's field raises ``FrozenInstanceError`` again), or take them off again with ``on=False``.
+    The test suite runs guarded; ``new`` then builds through a builder class (see :func:`_factory`)."""
+    if _GUARDED[0] is on:
+        return
+    _GUARDED[0] = on
+    for cls in _RELEASED:
+        _set_guard(cls, on)
+    for hook in ON_GUARD:
+        hook(on)
+
+
+def is_guarded() -> bool:
+    return _GUARDED[0]
+
+
+def _set_guard(cls: type, on: bool) -> None:
+    if on:
+        cls.__setattr__, cls.__delattr__ = _RELEASED[cls]
+    elif "__setattr__" in cls.__dict__:
+        del cls.__setattr__, cls.__delattr__
+    cls.new = _factory(cls, on)
 
 
 def _signature(cls: type, namespace: dict) -> list[str] | None:
@@ -72,20 +109,41 @@ def _fast_init(cls: type):
     return init
 
 
-def _factory(cls: type):
-    """``cls.new``: ``cls(...)`` built through a builder of the same layout (see the module's docs)."""
-    namespace: dict = {"cls": cls}
+def builder(cls: type) -> type:
+    """The class whose instances are filled by plain attribute stores before becoming ``cls``:
+    ``cls`` itself when released, else a class of the same layout (the same base and slots) without
+    the frozen ``__setattr__``, whose instance then takes ``cls`` as its ``__class__`` (which Python
+    allows between classes of one layout)."""
+    if cls.__dict__.get("__setattr__") is None:
+        return cls
+    made = cls.__dict__.get("_builder")
+    if made is None or made.__dict__.get("_of") is not cls:
+        made = type(f"{cls.__name__}Builder", (cls.__base__,), {
+            "__slots__": cls.__dict__["__slots__"], "__init__": object.__init__, "_of": cls,
+            "__setattr__": object.__setattr__, "__delattr__": object.__delattr__})
+        type.__setattr__(cls, "_builder", made)
+    return made
+
+
+def build_lines(cls: type, values: list[str], indent: str = "    ") -> list[str]:
+    """Source lines building ``cls`` from the expressions ``values`` (one per field) into ``self``,
+    with ``_new`` = ``object.__new__`` and ``B`` = :func:`builder` (``cls``) in the namespace."""
+    lines = [f"{indent}self = _new(B)"]
+    lines += [f"{indent}self.{f.name} = {v}" for f, v in zip(dataclasses.fields(cls), values)]
+    if builder(cls) is not cls:
+        lines.append(f"{indent}self.__class__ = cls")
+    return lines
+
+
+def _factory(cls: type, guarded: bool):
+    """``cls.new``: ``cls(...)`` built by plain slot stores (see the module's docs)."""
+    namespace: dict = {"cls": cls, "_new": object.__new__, "B": builder(cls)}
     signature = _signature(cls, namespace)
-    namespace["_Builder"] = type(f"{cls.__name__}Builder", (cls.__base__,), {
-        "__slots__": cls.__dict__["__slots__"], "__init__": object.__init__,
-        # both plain: Python then sets attributes through the slots directly
-        "__setattr__": object.__setattr__, "__delattr__": object.__delattr__})
-    body = "".join(f"    self.{f.name} = {f.name}\n" for f in dataclasses.fields(cls))
-    source = f"def new({', '.join(signature)}):\n    self = _Builder()\n{body}    self.__class__ = cls\n    return self\n"
+    body = build_lines(cls, [f.name for f in dataclasses.fields(cls)])
+    source = f"def new({', '.join(signature)}):\n" + "\n".join(body) + "\n    return self\n"
     exec(source, namespace)  # noqa: S102  (the source is built from the field names)
     new = namespace["new"]
     new.__qualname__ = f"{cls.__qualname__}.new"
-    new.builder = namespace["_Builder"]  # for code that writes ``new`` out (relocate)
     return staticmethod(new)
 
 

@@ -15,6 +15,7 @@ from __future__ import annotations
 import dataclasses
 
 from .diagnostics import Loc, new_loc
+from .frozen_init import ON_GUARD, build_lines, builder
 
 
 # For the release read last, each command text read cleanly (no diagnostic) -> (its command, the
@@ -101,14 +102,13 @@ def _dataclass_relocator(cls: type):
             looked.append(i)
     if len(looked) == len(fields):  # no location of its own: the node itself when nothing inside moved
         body += ["    if " + " and ".join(f"a{i} is v{i}" for i in looked) + ":", "        return node"]
-    builder = getattr(cls.new, "builder", None)
-    if builder is None:
-        body.append(f"    return cls.new({', '.join(args)})")
+    if cls.new is cls:
+        body.append(f"    return cls({', '.join(args)})")
     else:  # cls.new written out here (see frozen_init): a call less per node
-        body += ["    self = B()", *(f"    self.{f.name} = {a}" for f, a in zip(fields, args)),
-                 "    self.__class__ = cls", "    return self"]
+        body += [*build_lines(cls, args), "    return self"]
     source = "def relocate(node, path, line, shift):\n" + "\n".join(body)
-    namespace = {"R": _RELOCATORS, "cls": cls, "B": builder, "new_loc": new_loc, "EMPTY": ()}
+    namespace = {"R": _RELOCATORS, "cls": cls, "B": builder(cls), "_new": object.__new__, "new_loc": new_loc,
+                 "EMPTY": ()}
     exec(source, namespace)  # noqa: S102  (the source is built from the field names above)
     return namespace["relocate"]
 
@@ -132,3 +132,4 @@ class _Relocators(dict):
 
 
 _RELOCATORS = _Relocators()
+ON_GUARD.append(lambda on: _RELOCATORS.clear())  # the code written for the other way of building

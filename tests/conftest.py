@@ -5,6 +5,12 @@ from pathlib import Path
 
 import pytest
 
+from mcfunction_parser.frozen_init import guard_nodes
+
+# The AST's nodes are immutable by convention when dpemu runs (frozen_init); the suite runs with
+# the frozen guard on, so code that assigns to a node's field fails here.
+guard_nodes()
+
 
 def write_pack(root: Path, files: dict[str, str], tick: list[str] | None = None, load: list[str] | None = None) -> Path:
     """A pack at ``root`` with ``files`` (path under data/ -> text) and optional tick/load tags."""

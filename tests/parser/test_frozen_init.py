@@ -1,4 +1,7 @@
-"""The fast __init__ of frozen dataclasses builds the same objects as the generated one."""
+"""Released frozen dataclasses (frozen_init) build the same objects as the generated ``__init__``:
+equal and hashed by value; their fields raise FrozenInstanceError when assigned while guarded, as
+the whole suite runs (tests/conftest.py), so no code path of dpemu's that the tests reach assigns
+to a node; released (as dpemu runs), ``new`` builds them by plain stores."""
 from __future__ import annotations
 
 import dataclasses
@@ -8,7 +11,9 @@ import pickle
 import pytest
 
 from mcfunction_parser import ast, diagnostics
-from mcfunction_parser.frozen_init import speed_up_inits
+from mcfunction_parser import frozen_init
+from mcfunction_parser.frozen_init import guard_nodes, is_guarded, speed_up_inits
+from mcfunction_parser.parse import forget_read_lines, parse_function
 
 
 def _module_dataclasses(module):
@@ -35,6 +40,70 @@ class _WithFactory:
 @dataclasses.dataclass(slots=True)
 class _Mutable:
     a: int
+
+
+@pytest.fixture
+def released():
+    """The nodes as dpemu runs them (unguarded) inside the test, guarded again after it."""
+    guard_nodes(False)
+    forget_read_lines()
+    try:
+        yield
+    finally:
+        guard_nodes(True)
+        forget_read_lines()
+
+
+def test_the_suite_runs_guarded():
+    assert is_guarded()
+    assert "__setattr__" in ast.ScoreSet.__dict__ and "__setattr__" in diagnostics.Diagnostic.__dict__
+
+
+def test_released_classes_drop_the_guard_and_keep_value_semantics(released):
+    for cls in frozen_init._RELEASED:
+        assert "__setattr__" not in cls.__dict__ and "__delattr__" not in cls.__dict__, cls.__name__
+        assert cls.new is not cls
+    loc = diagnostics.Loc("f", 1, 2)
+    node = ast.ScoreSet.new(loc, "set", ast.NameTarget.new("#a", loc), "obj", 3)
+    assert type(node) is ast.ScoreSet and node == ast.ScoreSet(loc, "set", ast.NameTarget("#a", loc), "obj", 3)
+    assert hash(node) == hash(ast.ScoreSet(loc, "set", ast.NameTarget("#a", loc), "obj", 3))
+    assert node.targets.is_uuid is False and pickle.loads(pickle.dumps(node)) == node
+    assert not hasattr(node, "__dict__")  # still slotted: no field can be added by mistake
+    with pytest.raises(AttributeError):
+        node.other = 1
+    guard_nodes(True)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        node.value = 4
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        del node.value
+
+
+def test_parses_and_relocations_build_equal_nodes_guarded_or_not():
+    """relocate writes ``new`` out for each way of building: a function with repeated lines (relocated)
+    parses to the same nodes either way, and each relocated command equals its fresh parse."""
+    lines = ["execute as @e[tag=a] at @s if score @s x matches 1.. run tp @s ~ ~1 ~",
+             "scoreboard players operation @s a += #b c", "kill @e[type=zombie,distance=..5]"]
+    source = "\n".join(lines * 3) + "\n  " + lines[0] + "\n"
+
+    def parse():
+        forget_read_lines()
+        function, diags = parse_function(source, "f.mcfunction", "t:f", (1, 21, 0))
+        assert not diags
+        return function.commands
+
+    guarded = parse()
+    guard_nodes(False)
+    try:
+        released = parse()
+    finally:
+        guard_nodes(True)
+        forget_read_lines()
+    assert released == guarded and len(guarded) == 10
+    for cmd in guarded[3:]:  # relocated: equal to the same text read afresh at that place
+        forget_read_lines()
+        text = source.split("\n")[cmd.loc.line - 1]
+        alone, _ = parse_function("\n" * (cmd.loc.line - 1) + text + "\n", "f.mcfunction", "t:f", (1, 21, 0))
+        assert alone.commands[0] == cmd
 
 
 def test_patched_classes_build_equal_frozen_objects():
