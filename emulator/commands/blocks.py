@@ -66,11 +66,28 @@ def if_biome(env, cond: ast.IfBiome, ctx) -> int:
     return int(biomes.matches(env.state.resources, cond.biome, biomes.biome_at(env.state, ctx.dimension, pos)))
 
 
+# Level.isInWorldBoundsHorizontal: x and z in [-30,000,000, 30,000,000)
+_WORLD_BORDER = 30_000_000
+
+
+def loaded_block_pos(env, ctx, pos: tuple[int, int, int]) -> tuple[int, int, int]:
+    """BlockPosArgument.getLoadedBlockPos (setblock, fill, fillbiome): a position outside the level's
+    build height (Level.isOutsideBuildHeight) or past 30,000,000 on x or z fails the command, "That
+    position is out of this world!" (Level.isInWorldBounds); every chunk is loaded here."""
+    x, y, z = pos
+    height = env.state.entities.table.levels.build_height(ctx.dimension, env.state.version)
+    if height is None:
+        raise Unmodelled(f"the build height of {ctx.dimension} (its dimension type's min_y and height)")
+    if not (height[0] <= y < height[1] and -_WORLD_BORDER <= x < _WORLD_BORDER and -_WORLD_BORDER <= z < _WORLD_BORDER):
+        raise CommandFailure("argument.pos.outofworld")
+    return pos
+
+
 def fillbiome_command(env, cmd: ast.GenericCommand, ctx) -> int:
     """``fillbiome FROM TO BIOME [replace FILTER]``: the cells set (FillBiomeCommand.fill)."""
     corners, words = _read(cmd, env.state.version)
     source = world_source(env.state, ctx)
-    start, end = (block_pos(source, corner) for corner in corners)
+    start, end = (loaded_block_pos(env, ctx, block_pos(source, corner)) for corner in corners)
     keep = None
     if len(words) > 2 and words[1] == "replace":
         resources, wanted = env.state.resources, words[2]
@@ -83,7 +100,7 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     corners, words = _read(cmd, env.state.version)
     spec, mode = with_defaults(block_argument(env, words[0]), env.state.version), (words[1] if len(words) > 1 else "replace")
     source = world_source(env.state, ctx)
-    positions = [block_pos(source, corner) for corner in corners]
+    positions = [loaded_block_pos(env, ctx, block_pos(source, corner)) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
         before = blocks.get(positions[0])

@@ -1,4 +1,4 @@
-"""The server's levels (dimensions): which exist, their order and their coordinate scale.
+"""The server's levels (dimensions): which exist, their order, their coordinate scale and build height.
 
 ``Levels(custom=())``: the three vanilla dimensions, then the packs' own (``data/<ns>/dimension/``),
 each with a number (``id(name)``, ``names[i]``) that the entity table stores per entity (``EI_DIM``)
@@ -9,6 +9,7 @@ a selector that is not limited to one level visits them in.
 ``Levels.from_packs(dimensions, dimension_types)``: the packs' dimension files (id -> JSON) and
 dimension type files, for each dimension its type's ``coordinate_scale``.
 ``default_clock(name)``: the level's dimension type's default clock (26.1) and that type's name.
+``build_height(name, version)``: the level's build height, from its type's ``min_y`` and ``height``.
 ``level_id(name)``: DimensionArgument.getDimension: an unknown dimension fails the command
 ("Unknown dimension"). ``teleportation_scale(a, b)``: DimensionType.getTeleportationScale, what
 ``execute in`` multiplies x and z by (CommandSourceStack.withLevel).
@@ -23,6 +24,9 @@ VANILLA = (OVERWORLD, "minecraft:the_nether", "minecraft:the_end")
 # DimensionType.coordinateScale of the vanilla dimension types (data/minecraft/dimension_type)
 VANILLA_TYPE_SCALE = {"minecraft:overworld": 1.0, "minecraft:overworld_caves": 1.0, "minecraft:the_nether": 8.0,
                       "minecraft:the_end": 1.0}
+# their (min_y, height) from 1.18 (BuiltinDimensionTypes); before it every vanilla level was 0 – 255
+VANILLA_TYPE_HEIGHT = {"minecraft:overworld": (-64, 384), "minecraft:overworld_caves": (-64, 384),
+                       "minecraft:the_nether": (0, 256), "minecraft:the_end": (0, 256)}
 
 
 def _id(name: str) -> str:
@@ -30,20 +34,23 @@ def _id(name: str) -> str:
 
 
 class Levels:
-    def __init__(self, custom: dict[str, float] | None = None, clocks: dict[str, tuple] | None = None) -> None:
+    def __init__(self, custom: dict[str, float] | None = None, clocks: dict[str, tuple] | None = None,
+                 heights: dict[str, tuple | None] | None = None) -> None:
         """``custom``: the packs' dimensions (id -> coordinate scale); a pack may redefine a vanilla
-        one. ``clocks``: theirs -> (default clock or None, dimension type name)."""
+        one. ``clocks``: theirs -> (default clock or None, dimension type name). ``heights``: theirs
+        -> their type's (min_y, height), None when it does not say."""
         custom = custom or {}
         self.names: list[str] = list(VANILLA) + sorted(n for n in custom if n not in VANILLA)
         self.ids = {name: i for i, name in enumerate(self.names)}
         self.scales = [custom.get(n, VANILLA_TYPE_SCALE.get(n, 1.0)) for n in self.names]
         self.clocks = {name: (DEFAULT_CLOCKS.get(name), name) for name in VANILLA} | (clocks or {})
+        self.heights = {name: VANILLA_TYPE_HEIGHT[name] for name in VANILLA} | (heights or {})
 
     @classmethod
     def from_packs(cls, dimensions: dict, dimension_types: dict) -> "Levels":
         """The dimension files (``type``: a dimension type id or an inline type) with their scales
         and default clocks (a type's ``default_clock``)."""
-        custom, clocks = {}, {}
+        custom, clocks, heights = {}, {}, {}
         for name, value in dimensions.items():
             kind = value.get("type") if isinstance(value, dict) else None
             type_name = _id(kind) if isinstance(kind, str) else "[unregistered]"  # Holder.getRegisteredName
@@ -53,11 +60,24 @@ class Levels:
                 scale = kind.get("coordinate_scale", 1.0)
                 clock = kind.get("default_clock")
                 clocks[name] = (_id(clock) if isinstance(clock, str) else None, type_name)
+                low, height = kind.get("min_y"), kind.get("height")
+                heights[name] = (low, height) if type(low) is int and type(height) is int else None
             else:
                 scale = VANILLA_TYPE_SCALE.get(kind, 1.0)
                 clocks[name] = (DEFAULT_CLOCKS.get(kind), type_name)
+                heights[name] = VANILLA_TYPE_HEIGHT.get(kind)
             custom[name] = float(scale) if isinstance(scale, (int, float)) else 1.0
-        return cls(custom, clocks)
+        return cls(custom, clocks, heights)
+
+    def build_height(self, name: str, version) -> tuple[int, int] | None:
+        """Level ``name``'s build height as (lowest y, highest y + 1), None when its type does not say
+        (a vanilla type name dpemu does not know, an inline type without ``min_y`` and ``height``)."""
+        found = self.heights.get(name)
+        if found is None:
+            return None
+        if tuple(version) < (1, 18, 0) and name in VANILLA:
+            return 0, 256
+        return found[0], found[0] + found[1]
 
     def default_clock(self, name: str) -> tuple[str | None, str]:
         """DimensionType.defaultClock of level ``name``'s type, and the type's name."""

@@ -25,7 +25,7 @@ Sources, in order:
 A release without its own tree uses the oldest tree at or after it (1.13 – 1.16.4 the 1.16.5
 tree, 1.21 – 1.21.10 the 1.21.11 one; the commands a release lacks are gated by
 :mod:`..features` before the tree is asked). A release without registries uses the newest ones
-before it, flagged not exact. A release after every tree (26.2) is checked against the newest one,
+before it, flagged not exact unless it is a hotfix of that release (:func:`registry_release`). A release after every tree (26.2) is checked against the newest one,
 its findings warnings. :func:`stand_in` says so for both, with how to provide a release's own reports.
 """
 from __future__ import annotations
@@ -36,7 +36,7 @@ import os
 from functools import lru_cache
 from pathlib import Path
 
-from ..pack.versions import parse_mc_version, version_label
+from ..pack.versions import RELEASE_FORMATS, parse_mc_version, version_label
 
 Version = tuple[int, int, int]
 _DATA = Path(__file__).with_name("data")
@@ -169,13 +169,23 @@ def command_tree(version: Version) -> dict:
 # ----------------------------------------------------------------------------- registries
 
 def registry_release(version: Version) -> tuple[Version, bool]:
-    """The release whose registries stand for ``version``, and whether it is ``version`` itself."""
+    """The release whose registries stand for ``version``, and whether they are ``version``'s own:
+    its own data, or for a patch release without data of its own, the data of the release before it
+    in the same minor release when the two read the same data pack format (a hotfix: 26.1.1 and
+    26.1.2 read 26.1's 101.1, 1.19.1 reads 1.19's 10; Mojang bumps the format with the game's data,
+    1.21.7's new music disc came with format 81 after 1.21.6's 80)."""
     if _user_report(version, "registries.json") is not None:
         return version, True
     earlier = [release for release in _index()["registries"] if release <= version]
     if not earlier:
         raise GameDataMissing(_how_to_get(version, "registries"))
-    return max(earlier), max(earlier) == version
+    release = max(earlier)
+    return release, release == version or (release[:2] == version[:2] and _same_format(release, version))
+
+
+def _same_format(a: Version, b: Version) -> bool:
+    formats = [RELEASE_FORMATS.get(v) for v in (a, b)]
+    return formats[0] is not None and formats[0] == formats[1]
 
 
 @lru_cache(maxsize=None)

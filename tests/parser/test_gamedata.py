@@ -7,6 +7,7 @@ import pytest
 
 from mcfunction_parser import gamedata
 from mcfunction_parser.pack.versions import RELEASE_FORMATS
+from mcfunction_parser.parse import parse_function
 
 
 def test_every_known_release_has_a_command_tree_or_a_stand_in(tmp_path, monkeypatch):
@@ -124,7 +125,7 @@ def test_an_unreadable_report_is_named_and_the_shipped_data_stands_in(own_report
     (folder / "commands.json").write_text('{"broken')
     (folder / "registries.json").write_text("[1]")  # JSON, but not the registries report's shape
     assert gamedata.tree_release((1, 19, 1)) == (1, 19, 4)  # the shipped tree, as without a report
-    assert gamedata.registry_release((1, 19, 1)) == ((1, 19, 0), False)
+    assert gamedata.registry_release((1, 19, 1)) == ((1, 19, 0), True)  # the shipped data (a hotfix of 1.19)
     problems = dict(gamedata.unreadable_reports((1, 19, 1)))
     assert set(problems) == {str(folder / "commands.json"), str(folder / "registries.json")}
     commands = problems[str(folder / "commands.json")]
@@ -156,9 +157,9 @@ def test_the_26_1_hotfixes_gate_the_same_commands_as_26_1(tmp_path, monkeypatch)
     # couple of critical issues", a spectator exploit among them; the three read data pack format
     # 101.1, see pack.versions), with no command or registry change listed in any source found: the
     # parser gates the same commands in them, with 26.1's tree
-    # (their own minor release's: no stand-in note). Their registries are 26.1's, marked as another
-    # release's (an id missing from them is a warning, not an error), as for every release dpemu
-    # has no registries of its own for.
+    # (their own minor release's: no stand-in note), and their registries are 26.1's, as their own
+    # (gamedata.registry_release: a patch release reading its minor release's data pack format), so
+    # an id missing from them is an error there as in 26.1.
     from mcfunction_parser.features import COMMANDS, command_problem
 
     monkeypatch.setenv("DPEMU_GAMEDATA", str(tmp_path))
@@ -167,5 +168,24 @@ def test_the_26_1_hotfixes_gate_the_same_commands_as_26_1(tmp_path, monkeypatch)
     gated = [{name for name in COMMANDS if command_problem(name, v) is None} for v in releases]
     assert gated[0] == gated[1] == gated[2] and {"swing", "fetchprofile"} <= gated[0]
     assert all(gamedata.tree_release(v) == (26, 1, 0) and gamedata.stand_in(v) is None for v in releases)
-    assert [gamedata.registry_release(v) for v in releases] == [((26, 1, 0), True), ((26, 1, 0), False),
-                                                                  ((26, 1, 0), False)]
+    assert [gamedata.registry_release(v) for v in releases] == [((26, 1, 0), True)] * 3
+    for version in releases:
+        _, diagnostics = parse_function("give @s no_such_item\n", "f.mcfunction", "t:f", version)
+        assert [d.severity for d in diagnostics] == ["error"], version
+
+
+def test_a_patch_release_reads_its_minor_releases_registries_when_its_format_is_the_same():
+    # gamedata.registry_release: a release without registries of its own takes the newest before it;
+    # they are its own when that release is of the same minor release and reads the same data pack
+    # format (pack.versions' table, from the game jars' version.json): the hotfixes 1.14.2, 1.19.1,
+    # 26.1.1 and 26.1.2. 1.21.2 (the bundles drop, format 57 after 48) and 1.21.7 (the Lava Chicken
+    # music disc, format 81 after 80) changed the game's data: another release's, a warning per id;
+    # so is 26.2 against 26.1's.
+    exact = {version: gamedata.registry_release(version)
+             for version in [(1, 14, 2), (1, 19, 1), (26, 1, 1), (26, 1, 2), (1, 21, 2), (1, 21, 7), (26, 2, 0)]}
+    assert exact == {(1, 14, 2): ((1, 14, 1), True), (1, 19, 1): ((1, 19, 0), True),
+                     (26, 1, 1): ((26, 1, 0), True), (26, 1, 2): ((26, 1, 0), True),
+                     (1, 21, 2): ((1, 21, 1), False), (1, 21, 7): ((1, 21, 6), False),
+                     (26, 2, 0): ((26, 1, 0), False)}
+    _, diagnostics = parse_function("give @s no_such_item\n", "f.mcfunction", "t:f", (1, 21, 7))
+    assert [d.severity for d in diagnostics] == ["warning"]

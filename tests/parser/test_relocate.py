@@ -169,8 +169,8 @@ def test_a_subcommand_read_before_is_relocated_to_a_fresh_read():
 
 
 def test_a_subcommand_with_a_warning_is_read_each_time():
-    # 26.1.2 has no registries of its own here: an id missing from 26.1's is a warning, every time
-    version = (26, 1, 2)
+    # 1.21.7 has no registries of its own here: an id missing from 1.21.6's is a warning, every time
+    version = (1, 21, 7)
     forget_read_lines()
     line = "execute summon minecraft:no_such_mob as @s run say a"
     _, diagnostics = parse_function(f"{line}\n  {line}\n", "a.mcfunction", "t:a", version)
