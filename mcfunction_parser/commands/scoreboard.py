@@ -75,9 +75,9 @@ def _obj_modify(r, loc, action):
     if field in ("displayautoupdate", "numberformat"):
         r.require("objectives modify " + field, start)
     if field == "numberformat":
-        value = r.text[r.pos + 1:] if r.optional_space() else ""
-        r.pos = r.end
-        return ast.ObjectivesModify.new(loc, name, field, value)
+        start = r.pos + 1
+        _number_format(r)
+        return ast.ObjectivesModify.new(loc, name, field, r.text[start:])
     r.space("value")
     if field == "displayname":
         value = text_component(r)
@@ -203,13 +203,35 @@ def _pl_list(r, loc, action):
     return ast.ScoreList.new(loc, holder)
 
 
+def _number_format(r: Reader) -> None:
+    """``[blank | fixed <component> | styled <style>]`` to the end (ScoreboardCommand.register's
+    numberformat branches; a style is read as a text component's JSON or SNBT is)."""
+    if r.optional_space():
+        kind = r.literal(("blank", "fixed", "styled"), "number format")
+        if kind != "blank":
+            r.space("text component" if kind == "fixed" else "style")
+            text_component(r)
+    r.finish()
+
+
 def _pl_display(r, loc, action):
+    """``scoreboard players display name <targets> <objective> [<text>]`` and ``... numberformat
+    <targets> <objective> [<number format>]``, checked and kept as text after ``display``."""
     r.require("scoreboard players display", r.pos - len(action))
     r.space("display property")
-    text = r.rest()
-    if not text.startswith(("name ", "numberformat ")):
-        r.fail(f"expected name or numberformat, got {show(text.split(' ')[0])}", r.end - len(text))
-    return ast.ScoreDisplay.new(loc, text)
+    start = r.pos
+    kind = r.literal(("name", "numberformat"), "display property")
+    r.space("score holders")
+    score_holder(r)
+    r.space("objective")
+    objective(r)
+    if kind == "numberformat":
+        _number_format(r)
+    else:
+        if r.optional_space():
+            text_component(r)
+        r.finish()
+    return ast.ScoreDisplay.new(loc, r.text[start:])
 
 
 _PLAYER_ACTIONS = {

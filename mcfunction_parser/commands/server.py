@@ -75,8 +75,8 @@ def random(r: Reader, loc) -> ast.Command:
         seed = r.integer(what="seed")
         if r.optional_space():
             include_world = r.boolean()
-            r.space("includeSequenceId")
-            include_seq = r.boolean()
+            if r.optional_space():  # includeWorldSeed is executable (RandomCommand.register)
+                include_seq = r.boolean()
     r.finish()
     return ast.RandomCommand.new(loc, "reset", None, seq, seed, include_world, include_seq)
 

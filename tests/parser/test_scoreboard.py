@@ -108,6 +108,23 @@ def test_display_and_numberformat_are_1_20_3():
     assert parse_ok("scoreboard objectives modify o numberformat styled {\"color\":\"red\"}").field == "numberformat"
 
 
+@pytest.mark.parametrize("line,col", [
+    # ScoreboardCommand.register: players display name <targets> <objective> [<component>], ...
+    # numberformat <targets> <objective> [blank | fixed <component> | styled <style>]; objectives
+    # modify <objective> numberformat [the same]
+    ("scoreboard players display name @x obj", 33),
+    ("scoreboard players display name * o!", 36),
+    ('scoreboard players display name * obj {"text":', 39),
+    ("scoreboard players display numberformat * obj bold", 47),
+    ('scoreboard players display numberformat * obj fixed {"text":', 53),
+    ("scoreboard players display colour * obj", 28),
+    ('scoreboard objectives modify obj numberformat styled {"bold":', 54),
+    ("scoreboard objectives modify obj numberformat blank x", 53),
+])
+def test_display_and_numberformat_arguments_are_checked(line, col):
+    assert parse_err(line).col == col  # the caret under the wrong argument
+
+
 def test_incomplete_and_trailing():
     assert "incomplete" in parse_err("scoreboard players set @s obj").message
     d = parse_err("scoreboard players set @s obj 1 2")

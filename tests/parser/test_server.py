@@ -36,6 +36,9 @@ def test_random():
     assert parse_ok("random roll 0..10 ns:dice").sequence == "ns:dice"
     reset = parse_ok("random reset * 42 false true")
     assert (reset.sequence, reset.seed, reset.include_world_seed, reset.include_sequence_id) == ("*", 42, False, True)
+    # RandomCommand.register: includeWorldSeed is executable, includeSequenceId then true
+    reset = parse_ok("random reset ns:seq 7 false")
+    assert (reset.sequence, reset.seed, reset.include_world_seed, reset.include_sequence_id) == ("ns:seq", 7, False, True)
     assert "1.20.2" in parse_err("random value 1..2", (1, 20, 1)).message
 
 
