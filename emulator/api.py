@@ -136,7 +136,7 @@ class Emulator:
     def tick(self, n: int = 1) -> int:
         """Run ``n`` server ticks (:meth:`emulator.runtime.server.Runtime.run_ticks`: on the numba
         backend, quiet ticks run inside the VM without coming back); returns the commands executed."""
-        return self._runtime().run_ticks(n)
+        return (self.runtime or self._runtime()).run_ticks(n)
 
     def run_until(self, predicate: Callable[["Emulator"], bool], max_ticks: int) -> int:
         """Tick until ``predicate(self)`` holds (checked after each tick) or ``max_ticks`` ran;

@@ -78,6 +78,8 @@ ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
                 (advancements.tick_players, advancements.tick_is_idle),
                 (block_entity_ticks.tick_block_entities, block_entity_ticks.tick_is_idle))
 
+_STEPS = tuple(step for step, _ in ENTITY_STEPS)
+
 # told of each root sequence run: (function id, its result); a listener with a ``roots_ran(function id,
 # costs)`` method is told of a batch's roots of one function at once (not cut, no result read)
 RootListener = Callable[[str, RootResult], None]
@@ -155,7 +157,8 @@ class Runtime:
 
     def _root_ran(self, function_id: str, result: RootResult) -> RootResult:
         """After each root: its listeners, then any reward earned in it outside a command."""
-        self.max_root_cost = max(self.max_root_cost, result.cost)
+        if result.cost > self.max_root_cost:
+            self.max_root_cost = result.cost
         for listener in self.root_listeners:
             listener(function_id, result)
         if self.state.pending_rewards:
@@ -240,7 +243,7 @@ class Runtime:
         state = self.state
         members = self.members(TICK_TAG)
         start = (state.gametime, state.tick, state.daytime)
-        daylight = state.gamerules.get("doDaylightCycle") == "true"
+        daylight = state.gamerules.daylight_cycle
         clocks = None if state.clocks is None else state.clocks.snapshot()
 
         def at_tick(t: int) -> None:  # ticks 0 .. t-1 of the batch ended moving only the clocks
@@ -291,9 +294,9 @@ class Runtime:
                 cost += self.run_root(entry.function).cost
         state.block_ticks.run_due(state)
         # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)
-        if state.clocks is None and state.gamerules.get("doDaylightCycle") == "true":
+        if state.clocks is None and state.gamerules.daylight_cycle:
             state.daytime += 1
-        for step, _ in ENTITY_STEPS:
+        for step in _STEPS:
             step(state)
             if state.pending_rewards:
                 self.run_rewards()

@@ -87,6 +87,9 @@ class NumbaBackend:
                          self._host_overflow if sanitize else None)
         self.regs = vm.new_registers()
         self.rv = memoryview(self.regs)  # the registers as Python ints: faster to read and write than the array
+        fresh = vm.new_registers()  # a root's first registers, but its serial, quota, limits and function
+        fresh[R_PC], fresh[R_ALIVE], fresh[R_SANITIZE], fresh[R_NCTX] = Program.ROOT_PC, 1, sanitize, 1
+        self._fresh = memoryview(fresh)
         self.frames = vm.new_frames(256)
         self.ovf = vm.new_overflow_buffer()
         self.counts = np.zeros(0, dtype=np.int64)  # cost charged per instruction
@@ -134,20 +137,17 @@ class NumbaBackend:
 
     # ------------------------------------------------------------------ running
     def run_root(self, function_id: str, context: Context | None = None, arguments: Compound | None = None) -> RootResult:
-        state = self.state
-        self._start_root(context)
+        limit = self.state.gamerules.max_command_chain_length
+        rv = self._start_root(context, limit)
         root = self.roots.get(function_id)  # a function that is no macro: found once
         if root is None:
             root = self._root(function_id, arguments)
             if root is None:
                 return RootResult(0, None)
         # where a cut at its end is reported (_finished_root_frame)
-        self.root_function, fn = root
-        limit = state.gamerules.max_command_chain_length
-        self._set_root(fn, limit)
+        self.root_function, rv[R_CALLFN] = root
         self.returned = False
         cut = self._drive(limit)
-        rv = self.rv
         if rv[R_NOVF]:
             self._flush_overflows()
         result = succeeded = None
@@ -193,9 +193,10 @@ class NumbaBackend:
         self.batch_functions = functions
         self.at_tick = at_tick
         self.roots_started = 0
-        r = self._start_root(Context())
+        self._start_root(Context(), limit)
+        r = self.regs
         self.root_contexts = (dict(self.contexts), dict(self.context_ids))
-        self._set_root(ids[0], limit)
+        r[vm.R_CALLFN] = ids[0]
         r[vm.R_BATCH], r[vm.R_BTICKS], r[vm.R_BMEMBERS], r[vm.R_BLIMIT] = 1, ticks, members, limit
         try:
             cut = self._drive(limit)
@@ -204,13 +205,17 @@ class NumbaBackend:
             r[vm.R_BATCH] = 0
         return TickBatch(self.batch[members:members + int(r[vm.R_BROOTS])].copy(), cut)
 
-    def _start_root(self, context: Context | None) -> np.ndarray:
+    def _start_root(self, context: Context | None, limit: int) -> memoryview:
         """Registers and contexts for a new root run in ``context`` (context 0; None: the server at
-        world spawn); the registers."""
-        r, rv = self.regs, self.rv
+        world spawn) with the quota ``limit``; the registers as Python ints (the root's function is
+        the caller's to set)."""
+        rv = self.rv
         root = rv[R_ROOT] + 1  # the contexts the VM made (as_cache names them) are the last root's
-        r.fill(0)
+        rv[:] = self._fresh  # one copy: each register written alone costs about as much as the copy
         rv[R_ROOT] = root
+        rv[R_QUOTA] = limit
+        rv[R_COUNTING] = self.counting
+        rv[R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
         if self.store_targets:
             self.store_targets = {}
         if self.rewards:
@@ -223,37 +228,25 @@ class NumbaBackend:
             if len(self.contexts) > 1 or len(self.context_ids) > 1:  # the last root made others
                 self.contexts = {0: context}
                 self.context_ids = {key: 0}
-            rv[R_NCTX] = 1
         else:
+            rv[R_NCTX] = 0
             self.contexts = {}
             self.context_ids = {}
             self._context_index(context, ())
             self._root_key = key if context.executor == SERVER else None
-        return r
-
-    def _set_root(self, fn: int, limit: int) -> None:
-        rv = self.rv
-        rv[R_PC] = Program.ROOT_PC
-        rv[R_QUOTA] = limit
-        rv[R_ALIVE] = 1
-        rv[R_CALLFN] = fn
-        rv[R_SANITIZE] = int(self.sanitize)
-        rv[R_COUNTING] = int(self.counting)
-        rv[R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
+        return rv
 
     def _drive(self, limit: int) -> bool:
         """Run the VM until the root is done (in a batch of ticks: until the VM comes back at the end of
         a root); True when the quota (or the depth cap) cut that root."""
         r, rv = self.regs, self.rv
-        leaves, storage = self.leaves, self.state.storage
-        host_ops_at = self.host_ops_at
         cut = False
         while True:
             address = self._machine()
             if self.leaves_used:
-                leaves.read(storage)
+                self.leaves.read(self.state.storage)
                 status = self._resume(address, self.machine_type)
-                leaves.write_back(storage)
+                self.leaves.write_back(self.state.storage)
             else:
                 status = self._resume(address, self.machine_type)
             if status == ST_DONE and not rv[R_BATCH] and not rv[R_NLOG] and (cut or rv[R_QUOTA] > 0):
@@ -261,7 +254,7 @@ class NumbaBackend:
                 return cut
             if status == ST_HOST and not rv[R_BATCH] and not rv[R_NLOG]:  # the common request, first
                 pc = rv[R_PC]
-                op = host_ops_at.get(pc) or self._host_op(pc)
+                op = self.host_ops_at.get(pc) or self._host_op(pc)
                 try:
                     if op[0] in _FINAL_OPS:
                         self._final(pc, op[1])

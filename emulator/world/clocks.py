@@ -78,7 +78,7 @@ class WorldClocks:
         """ServerClockManager.tick, once per server tick after the tick functions (when the
         ``advance_time`` rule is on): each running clock adds its rate to the fraction it carries
         and moves by the whole ticks of it (ClockInstance.tick, float arithmetic)."""
-        if self.state.gamerules.get("doDaylightCycle") != "true":
+        if not self.state.gamerules.daylight_cycle:
             return
         for clock, instance in self.instances.items():
             if instance.paused:
@@ -99,6 +99,6 @@ class WorldClocks:
 
     def after(self, snapshot: dict[str, int], ticks: int) -> None:
         """The clocks ``ticks`` steady ticks after ``snapshot`` (see :meth:`steady`)."""
-        moving = self.state.gamerules.get("doDaylightCycle") == "true"
+        moving = self.state.gamerules.daylight_cycle
         for clock, start in snapshot.items():
             self._set(clock, start + (ticks if moving and not self.instances[clock].paused else 0))

@@ -672,4 +672,5 @@ class EntityStore:
         store's order; the few that tick effects, found again only when entities came or left."""
         if self._mobs[0] != self.changes:
             self._mobs = (self.changes, [e for e in self.entities if living.is_living(e.type)])
-        return [e for e in self._mobs[1] if e.alive]
+        mobs = self._mobs[1]
+        return [e for e in mobs if e.alive] if mobs else []

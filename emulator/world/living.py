@@ -451,9 +451,12 @@ def tick_living(state, harm=None) -> list:
     expired one is removed; hurt timers run out. ``harm(state, entity, amount)`` deals an instant
     effect's damage (default: :func:`hurt` as magic, no death). Returns the entities that lost an
     effect (the game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
+    mobs = state.entities.living_mobs()  # a display or a marker reads no active_effects (Entity.load)
+    if not mobs:  # a pack of markers and displays: every tick
+        return mobs
     lost = []
     hurting = bool(state.hurt_timers)  # only the entity ticking adds itself (an instant effect's harm)
-    for entity in state.entities.living_mobs():  # a display or a marker reads no active_effects (Entity.load)
+    for entity in mobs:
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
         if found is None and hurt_time is None and not hurting:
             continue  # the common case, every tick: nothing to count down

@@ -228,9 +228,9 @@ class list_rules:
             _MIXED_LISTS.reset(self.token)
 
 
-def lists_mixed() -> bool:
-    """Whether the list rule in force lets a list mix tag types (:class:`list_rules`)."""
-    return _MIXED_LISTS.get()
+# whether the list rule in force lets a list mix tag types (:class:`list_rules`); the context
+# variable's own method: the runtime asks each tick
+lists_mixed = _MIXED_LISTS.get
 
 
 def _list_accepts(lst: List, tag) -> bool:

@@ -39,6 +39,8 @@ def launched(state, entity) -> None:
 
 
 def tick_flying(state) -> None:
+    if not state.flying:  # every tick: none made in flight is the common case
+        return
     followed = []
     for entity in state.flying:
         if not entity.alive:
