@@ -158,7 +158,8 @@ def _vm_instructions(counts: list[tuple[int, int]], names: dict[int, str]) -> li
 
 # what each host opcode hands to Python, as the profile names it
 HOST_KINDS = {"HOST": "command", "HOSTSTAGE": "stage", "HOSTSTORE": "store", "GETFIELD": "command",
-              "STOREFIELD": "store", "SETLEAF": "command", "GETLEAF": "command", "STORELEAF": "store"}
+              "STOREFIELD": "store", "SETLEAF": "command", "GETLEAF": "command", "STORELEAF": "store",
+              "COPYLEAF": "command", "OBJECTIVE": "command"}
 
 
 def _vm_host(runs: dict, loaded: dict, sources: dict, names: dict[int, str]) -> list[dict]:

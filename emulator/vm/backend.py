@@ -718,7 +718,7 @@ def _end_frame(function: ast.Function) -> Frame:
     return Frame(function.id, Loc(function.path, max(function.lines, 1), 1))
 
 
-_FINAL_OPS = frozenset((vm.OP_HOST, vm.OP_GETFIELD, vm.OP_SETLEAF, vm.OP_COPYLEAF, vm.OP_GETLEAF))  # the host runs a final command
+_FINAL_OPS = frozenset((vm.OP_HOST, vm.OP_GETFIELD, vm.OP_SETLEAF, vm.OP_COPYLEAF, vm.OP_GETLEAF, vm.OP_OBJECTIVE))  # the host runs a final command
 # opcode -> the operand slot naming its host op (its "x" operand)
 _HOST_OPERAND = {op.code: op.operands.index("x") + 1 for op in TABLE if "x" in op.operands}
 

@@ -42,7 +42,7 @@ from emulator.world.state import Scoreboard
 from mcfunction_parser.ast import (
     Command, Condition, DataGet, DataModify, EntityData, IfData, PathFilter, SourceValue, StorageData, ExAlign, ExAnchored, ExAs, ExAt, ExFacing, ExFacingEntity, ExRotated, Execute, ExOn, ExPositioned, ExPositionedAs,
     ExRotatedAs, Function, FunctionCall, IfDimension, IfEntity, IfFunction, IfScore, IfScoreMatches, NameTarget,
-    IfPredicate, PathIndex, PathKey, Return, Selector, SourceFrom, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
+    IfPredicate, ObjectivesAdd, ObjectivesRemove, PathIndex, PathKey, Return, Selector, SourceFrom, TagCommand, ScoreEnable, ScoreGet, ScoreOperation, ScoreReset, ScoreSet,
     StoreBossbar, StoreData, StoreScore, Subcommand, Teleport, Tellraw, Vec2, Vec3, Coord, Wildcard,
 )
 from emulator.world.semantics import INT_MAX, INT_MIN
@@ -148,6 +148,9 @@ class Compiler:
             self.host(vm.OP_COPYLEAF, cmd, *leaves, operand=3)
         elif isinstance(cmd, DataGet) and (leaf := self.leaf(cmd.target, cmd.path)) is not None:
             self.host(vm.OP_GETLEAF, cmd, leaf, self.program.intern_float(1.0 if cmd.scale is None else cmd.scale),
+                      operand=3)
+        elif isinstance(cmd, (ObjectivesAdd, ObjectivesRemove)):
+            self.host(vm.OP_OBJECTIVE, cmd, self.objective(cmd.objective), int(isinstance(cmd, ObjectivesAdd)),
                       operand=3)
         elif isinstance(cmd, Tellraw) and not shuffles(cmd.targets) and (sel := self.selector(cmd.targets)) is not None:
             self.host(vm.OP_LOG, cmd, sel)  # the host writes the line

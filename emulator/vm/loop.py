@@ -141,85 +141,90 @@ OP_TP = 18  # [entry] a: selector, b: x (index into floats; y, z and the rotatio
 # command's HOST, which runs it instead when a target goes to another level (the context's or E's: the host moves it
 # in the order); TP skips it otherwise
 OP_HOST = 19  # [entry] a: host op index. A final command run by Python (charged here, per context)
-OP_SELHOLDERS = 20  # [free] a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's target holder and
+OP_OBJECTIVE = 20  # [entry] a: objective, b: 1 add / 0 remove, c: host op index. `scoreboard objectives add O ...`:
+# fails when O exists (ScoreboardCommand.addObjective: ERROR_OBJECTIVE_ALREADY_EXISTS, not reported); a new one goes
+# to the host (it keeps the criterion and display name). `scoreboard objectives remove O`: O must exist (reported);
+# its scores go (a holder left with none is kept for `*`: Scoreboard.removeObjective keeps it in the map); the result
+# is the count of objectives left. A family of its own: the small loops serve it (a load function adds its objectives)
+OP_SELHOLDERS = 21  # [free] a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's target holder and
 # objective. The holders of the selector's entities for the next op's HOLDER_SELBUF operand: targets in
 # selbuf[0:R_NSEL], sources from the buffer's middle (R_NSEL2 of them; none read when the operation fails on its
 # targets first). A separate op keeps calls out of the scoreboard ops (a call costs them ~20 %)
-OP_IFSCORE = 21  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
-OP_IFMATCH = 22  # [condition] a h, b o, c lo, d hi, f negated, g final
-OP_IFENT = 23  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
-OP_IFLEAF = 24  # [condition] a: storage leaf, b: type (LEAF_*), c: number (index into floats), f negated, g final.
+OP_IFSCORE = 22  # [condition] a: comparison (CMP_*), b h1, c o1, d h2, e o2, f negated, g final
+OP_IFMATCH = 23  # [condition] a h, b o, c lo, d hi, f negated, g final
+OP_IFENT = 24  # [condition] a: selector, f negated, g final. `if|unless entity SEL`
+OP_IFLEAF = 25  # [condition] a: storage leaf, b: type (LEAF_*), c: number (index into floats), f negated, g final.
 # `if|unless data storage S {K:N}`: the leaf holds N; b = 0: `if|unless data storage S a.b.c`: the path leads to a tag
-OP_IFDIM = 25  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
+OP_IFDIM = 26  # [condition] a: dimension (Program.dimensions), f negated, g final. `if|unless dimension D`: the
 # context's dimension (ctx_dim) is D
-OP_CHKOBJ = 26  # [stage] a o, b forked, c: the holder is 1 @s, 2 `*`. The `store ... score` stage: fails if o does not
+OP_CHKOBJ = 27  # [stage] a o, b forked, c: the holder is 1 @s, 2 `*`. The `store ... score` stage: fails if o does not
 # exist, or (c = 1) without an executor ("No entity was found": the command, or in a forked chain this context), or (c
 # = 2, first) when `*` names nobody
-OP_STORE = 27  # [free] a: 0 result / 1 success, b h (a name, @s or HOLDER_TRACKED: every holder `*` names), c o
-OP_CALL = 28  # [entry] a: function id
-OP_CALLREG = 29  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
-OP_FEND = 30  # [free] end of a function body: return without a result
-OP_RETV = 31  # [check] a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain
+OP_STORE = 28  # [free] a: 0 result / 1 success, b h (a name, @s or HOLDER_TRACKED: every holder `*` names), c o
+OP_CALL = 29  # [entry] a: function id
+OP_CALLREG = 30  # [entry] call regs[R_CALLFN] (the root stub, macro instances); skip if it is -1
+OP_FEND = 31  # [free] end of a function body: return without a result
+OP_RETV = 32  # [check] a: value, b: 1 when the return is its own command line (an entry). `return N`. In a forked chain
 # every context returns (BuildContexts runs the custom command for each one): RETV counts the returns in R_NRET and
 # goes on; the chain's RETPEND then ends the function
-OP_RETFAIL = 32  # [check] b: as RETV. `return fail`
-OP_RETRES = 33  # [check] end of `return run CMD`: return CMD's result (fail if it had none)
-OP_RETNONE = 34  # [free] abort target of `return run`: end the function without a result
-OP_RETPEND = 35  # [free] after a forked chain ending in `return N|fail`: return, if some context did
-OP_RETIFHAS = 36  # [free] a: pc after the calls. `return run function #tag`: a member that returned skips the later
+OP_RETFAIL = 33  # [check] b: as RETV. `return fail`
+OP_RETRES = 34  # [check] end of `return run CMD`: return CMD's result (fail if it had none)
+OP_RETNONE = 35  # [free] abort target of `return run`: end the function without a result
+OP_RETPEND = 36  # [free] after a forked chain ending in `return N|fail`: return, if some context did
+OP_RETIFHAS = 37  # [free] a: pc after the calls. `return run function #tag`: a member that returned skips the later
 # members (the discard drops them); the chain's stores and RETRES follow
-OP_IFFN_STEP = 37  # [free] a: pc after the calls. A returned member ends the isolated call
-OP_IFNOFN = 38  # [free] a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no
+OP_IFFN_STEP = 38  # [free] a: pc after the calls. A returned member ends the isolated call
+OP_IFNOFN = 39  # [free] a: target. After OP_MACRO in a tag call: a member that could not be instantiated (or no
 # context) skips the rest of the call (the command fails)
-OP_TAGBEGIN = 39  # [free] acc_any = 0, acc_sum = 0
-OP_TAGACC = 40  # [free] add the last call's result to the accumulator
-OP_TAGEND = 41  # [check] the tag's result: the sum, if any member returned
-OP_IFFN_BEGIN = 42  # [free] has = 0
-OP_IFFN_END = 43  # [free] a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that
+OP_TAGBEGIN = 40  # [free] acc_any = 0, acc_sum = 0
+OP_TAGACC = 41  # [free] add the last call's result to the accumulator
+OP_TAGEND = 42  # [check] the tag's result: the sum, if any member returned
+OP_IFFN_BEGIN = 43  # [free] has = 0
+OP_IFFN_END = 44  # [free] a: negated. alive &= (value != 0) != negated; no return counts as value 0. A function that
 # returned in several contexts passes the context once per return (ST_REPEAT)
-OP_FAIL = 44  # [operand] a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
-OP_RESULT = 45  # [free] a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
-OP_JMPDEAD = 46  # [free] a: target. `run return run ...` with no context left: skip it
-OP_STOP = 47  # [free] abort the chain without an error (`if function` on an empty tag)
-OP_STOREFIELD = 48  # [free] a: column (EF_*), b: 0 result / 1 success, c: scale (index into floats), d: host op index.
+OP_FAIL = 45  # [operand] a: error (ERR_*), b: operand, c: charge 1, d: abort the chain. The command fails
+OP_RESULT = 46  # [free] a: ok, b: value. The result of `return N|fail` ending a chain, for its stores
+OP_JMPDEAD = 47  # [free] a: target. `run return run ...` with no context left: skip it
+OP_STOP = 48  # [free] abort the chain without an error (`if function` on an empty tag)
+OP_STOREFIELD = 49  # [free] a: column (EF_*), b: 0 result / 1 success, c: scale (index into floats), d: host op index.
 # `store ... entity @s PATH TYPE S` into a field the table keeps, as Entity.load reads it back (Pos clamped, Motion
 # over 10 dropped, Rotation % 360, a display's transformation as float); another type's transformation goes to the
 # host; a player's data is not modified
-OP_MACRO = 49  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
-OP_HOSTSTAGE = 50  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
-OP_HOSTGUARD = 51  # [stage] a: selector, b: negated. Before the HOSTSTAGE of `as|at|positioned as|rotated as|facing
+OP_MACRO = 50  # [free] a: macro call index. Python instantiates, sets regs[R_CALLFN]
+OP_HOSTSTAGE = 51  # [stage] a: host op index, b forked. An execute stage run by Python: sets alive, R_CTX
+OP_HOSTGUARD = 52  # [stage] a: selector, b: negated. Before the HOSTSTAGE of `as|at|positioned as|rotated as|facing
 # entity|if|unless entity SEL` whose SEL the host evaluates: a selector finding every entity the host would test its
 # own arguments on (SelectorTables.guard); when it finds none, the stage makes no context (`unless`: keeps this one),
 # charged here, and the HOSTSTAGE is skipped
-OP_HOSTSTORE = 52  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
-OP_ASSTAGE = 53  # [stage] a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind
+OP_HOSTSTORE = 53  # [free] a: host op index. `store ... storage|entity|block|bossbar`, after the result
+OP_ASSTAGE = 54  # [stage] a: selector (REL_VEHICLE, REL_PASSENGERS: `on vehicle|passengers`), b forked, c: kind
 # (commands.entities.ENTITY_CONTEXT_STAGES: as, at, positioned as, rotated as; then FACING_FEET, FACING_EYES: `facing
 # entity SEL feet|eyes`). One context per entity found, made by the VM (or one it made earlier in the root that still
 # holds: as_cache); ST_GROWCTX when the context table or the fork stack is full
-OP_CTXSTAGE = 54  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
+OP_CTXSTAGE = 55  # [stage] a: kind (CTX_POSITIONED, CTX_ROTATED, CTX_ANCHORED, CTX_ALIGN, CTX_FACING), b: its operand
 # (flags as OP_TP's: relative axes, TP_LOCAL; the relative angles' bits; ANCHOR_*; the axes' bits), c: x or the yaw
 # (index into floats; the rest follow). `positioned X Y Z` (anchored at the feet), `rotated YAW PITCH`, `anchored
 # eyes|feet`, `align AXES`, `facing X Y Z` (from the anchor): the context changed so (made by the VM, or one it made
 # before from the same context and pc)
-OP_FIELDSTAGE = 55  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
+OP_FIELDSTAGE = 56  # [stage] a: an executor is needed, b forked. The stage of a STOREFIELD (`store ... entity @s PATH
 # TYPE S`: fails without an executor) or a STORELEAF
-OP_STORELEAF = 56  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
+OP_STORELEAF = 57  # [free] a: storage leaf, b: 0 result / 1 success, c: scale (index into floats), d: type (LEAF_*), e:
 # host op index. `store ... storage S P TYPE SCALE`: (TYPE)(result * SCALE); no number there, or a list's element of
 # another type, goes to the host
-OP_IFRUN = 66  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
+OP_IFRUN = 67  # [stage] a h (a name or @s), b o, c lo, d hi, e: the pc after CMD, f negated. `execute if|unless score H
 # O matches LO..HI run CMD` where CMD is one instruction (a score command on names, a function call) and the chain has
 # no other stage: CMD's entry check and the condition stage in one (charged as the stage), then CMD, or the pc after
 # it; no ENDCMD follows
-OP_RESUME = 67  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
+OP_RESUME = 68  # [free] an advancement reward's call came back (Program.REWARD_PC): return ST_RESUME, Python restores
 # the registers the command that earned it left
 # the families served by one branch each: their ranges
 FIRST_SCORE, LAST_SCORE = 5, 7
 FIRST_LINE, LAST_LINE = 8, 18
-FIRST_CONDITION, LAST_CONDITION = 21, 25
-FIRST_CALL, LAST_CALL = 28, 29
-FIRST_RETURN, LAST_RETURN = 30, 35
-FIRST_RETURNED, LAST_RETURNED = 36, 37
-FIRST_OPERATION, LAST_OPERATION = 57, 65
+FIRST_CONDITION, LAST_CONDITION = 22, 26
+FIRST_CALL, LAST_CALL = 29, 30
+FIRST_RETURN, LAST_RETURN = 31, 36
+FIRST_RETURNED, LAST_RETURNED = 37, 38
+FIRST_OPERATION, LAST_OPERATION = 58, 66
 # operations: opcode FIRST_OPERATION + OPK_*
 OPK_ASSIGN, OPK_ADD, OPK_SUB, OPK_MUL, OPK_DIV, OPK_MOD, OPK_MIN, OPK_MAX, OPK_SWAP = range(9)
 # comparisons of OP_IFSCORE
@@ -513,6 +518,23 @@ def _matches(sel, slot, ox, oy, oz, sels, sfloats, tests, eints, efloats, etags,
         if not (sfloats[sel, SF_DLO] <= d2 <= sfloats[sel, SF_DHI]):
             return False
     return True
+
+
+@njit(cache=True)
+def _remove_objective(o, present, locked, alive_obj, writable, kept):
+    """Scoreboard.removeObjective (as :meth:`emulator.world.state.Scoreboard.remove_objective`): every
+    score of ``o`` goes; a holder it leaves without any stays in the map (``kept``: ``*`` names it)."""
+    alive_obj[o] = 0
+    writable[o] = 0
+    for h in range(present.shape[0]):
+        if present[h, o]:
+            present[h, o] = 0
+            other = False
+            for o_ in range(present.shape[1]):
+                other = other or present[h, o_] != 0
+            if not other:
+                kept[h] = 1
+        locked[h, o] = 1
 
 
 @njit(cache=True)
@@ -2151,6 +2173,38 @@ def run(address, machine_type):
                 counts[np.uint64(pc)] += 1
             status = ST_HOST
             break
+        elif op == OP_OBJECTIVE:  # `scoreboard objectives add|remove`
+            if alive == 0:
+                pc += 1
+                continue
+            if quota <= 0:
+                status = ST_CUT
+                break
+            quota -= 1
+            if counting:
+                counts[np.uint64(pc)] += 1
+            o = code[pc, 1]
+            if code[pc, 2] and alive_obj[o] == 0:
+                status = ST_HOST  # a new objective: the host keeps its criterion and display name
+                break
+            has = 1
+            ok = 0
+            val = 0
+            pc += 1
+            if code[pc - 1, 2]:  # "An objective already exists by that name"
+                continue
+            if alive_obj[o] == 0:
+                err = ERR_UNKNOWN_OBJECTIVE
+                errarg = o
+                status = ST_ERROR
+                break
+            _remove_objective(o, present, locked, alive_obj, writable, kept)
+            n = 0
+            for o_ in range(alive_obj.shape[0]):
+                n += alive_obj[o_]
+            has = 1
+            ok = 1
+            val = n
         elif op == OP_HOSTSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1

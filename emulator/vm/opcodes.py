@@ -110,6 +110,14 @@ _ROWS = [
                                "level (the context's or E's: the host moves it in the order); TP skips it otherwise"),
     ]),
     *_single("HOST", "x", ENTRY, "a: host op index. A final command run by Python (charged here, per context)"),
+    *_single("OBJECTIVE", "obx", ENTRY, "a: objective, b: 1 add / 0 remove, c: host op index. `scoreboard objectives "
+                                        "add O ...`: fails when O exists (ScoreboardCommand.addObjective: "
+                                        "ERROR_OBJECTIVE_ALREADY_EXISTS, not reported); a new one goes to the host (it "
+                                        "keeps the criterion and display name). `scoreboard objectives remove O`: O must "
+                                        "exist (reported); its scores go (a holder left with none is kept for `*`: "
+                                        "Scoreboard.removeObjective keeps it in the map); the result is the count of "
+                                        "objectives left. A family of its own: the small loops serve it (a load "
+                                        "function adds its objectives)"),
     *_single("SELHOLDERS", "sbii", FREE, "a: selector, b: 0 targets / 1 sources, c, d: the sources' operation's "
                                          "target holder and objective. The holders of the selector's "
                                          "entities for the next op's HOLDER_SELBUF operand: targets in selbuf[0:R_NSEL], "

@@ -256,17 +256,18 @@ class Scoreboard:
         objective included.
 
         Python code changes scores through :meth:`set`/:meth:`reset`, which replay the map exactly.
-        The VM writes ``present`` directly, so the map is first brought up to date: holders the VM
-        emptied leave it, holders it gave a first score join it in interning order (in the game,
-        in the order of their first score; the two differ only for holders that collide in the
-        table and were created between two uses of ``*``)."""
+        The VM writes ``present`` and ``kept`` directly, so the map is first brought up to date:
+        holders the VM emptied leave it, holders it gave a first score (or whose only scores went
+        with an objective it removed) join it in interning order (in the game, in the order of their
+        first score; the two differ only for holders that collide in the table and were created
+        between two uses of ``*``)."""
         n = len(self.holders)
         rows = self.present[:n].any(axis=1)
         for name in self.tracked.keys():
             h = self.holder_ids[name]
             if not rows[h] and not self.kept[h]:
                 self.tracked.remove(name)
-        for h in np.flatnonzero(rows):
+        for h in np.flatnonzero(rows | (self.kept[:n] != 0)):
             self.tracked.add(self.holders[h])
         self.kept[:n][rows] = 0
         return self.tracked.keys()

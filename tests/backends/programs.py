@@ -196,7 +196,7 @@ ENTITY_COMMANDS = ("tag @s add a", "scoreboard players enable * t", "tag @s remo
 WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
 
-# Server commands whose results and effects (schedules, gamerules, the log) are compared; `0t`
+# Server commands whose results and effects (schedules, gamerules, objectives, the log) are compared; `0t`
 # fails (ScheduleCommand), `gamerule nope` is reported
 SERVER_COMMANDS = ("say hi", 'tellraw @a "x"', "schedule function t:leaf0 1t", "schedule function t:leaf0 0t",
                    "schedule function t:leaf1 3t append", "schedule function t:leaf1 3t append",
@@ -204,7 +204,9 @@ SERVER_COMMANDS = ("say hi", 'tellraw @a "x"', "schedule function t:leaf0 1t", "
                    "schedule clear t:leaf0", "schedule clear #t:leaves", "schedule clear t:nothing",
                    "gamerule randomTickSpeed 7", "gamerule randomTickSpeed", "gamerule doDaylightCycle false",
                    "gamerule doDaylightCycle", "gamerule nope", "scoreboard objectives add q dummy",
-                   "scoreboard players add #q q 4", "scoreboard objectives remove q")
+                   "scoreboard players add #q q 4", "scoreboard objectives remove q", "scoreboard objectives add o dummy",
+                   "execute store result score #q o run scoreboard objectives add q dummy",
+                   "execute store result score #q p run scoreboard objectives remove q", "scoreboard players add * q 1")
 # Command storage t:s: data commands, `if data`, `data get` into scores
 STORAGE_COMMANDS = ("data merge storage t:s {a:1,l:[1,2]}", "data modify storage t:s l append value 3",
                     "data remove storage t:s a", "data modify storage t:s v set from storage t:s l[0]",

@@ -121,8 +121,8 @@ def test_a_tick_without_host_ops_lists_none(pack):
     assert report(root, "--ticks", 3)["host"] == []
     assert "host-executed commands: none" in profile(root, "--ticks", 3).output
     called = report(root, "--ticks", 1, "--call", "demo:init")["host"]
-    assert [(h["line"], h["op"], h["count"]) for h in called] == [(1, "command", 1), (2, "command", 1),
-                                                                   (3, "command", 1)]
+    # the objective exists by then: the VM fails its add itself
+    assert [(h["line"], h["op"], h["count"]) for h in called] == [(2, "command", 1), (3, "command", 1)]
 
 
 def test_host_ops_of_macro_instances_count_on_their_line(pack):

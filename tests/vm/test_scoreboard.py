@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from tests.vm.helpers import run_main
+from tests.vm.helpers import host_kinds, run_both, run_main
 
 MIN, MAX = -2147483648, 2147483647
 
@@ -129,6 +129,26 @@ def test_objectives_add_remove(tmp_path):
     emu, _ = run_main(tmp_path, "scoreboard objectives add p dummy\nscoreboard players set #a p 1\n"
                                 "scoreboard objectives remove p\nscoreboard objectives add p dummy")
     assert emu.scores()["p"] == {}
+
+
+def test_objectives_add_of_an_existing_one_and_remove_run_in_the_vm(tmp_path):
+    """ScoreboardCommand.addObjective fails when the name exists (ERROR_OBJECTIVE_ALREADY_EXISTS, not
+    reported) and removeObjective needs an existing one (ObjectiveArgument.getObjective: reported);
+    both return the count of objectives (Scoreboard.getObjectives().size()). Scoreboard.removeObjective
+    keeps a holder whose only scores went in the map, so `*` still names it. Only a new objective
+    goes to the host (its criterion and display name)."""
+    body = ("scoreboard objectives add o dummy\nscoreboard objectives add p dummy\nscoreboard players set #a o 1\nscoreboard players set #b p 5\n"
+            "execute store result score #dup o run scoreboard objectives add p trigger\n"
+            "execute store success score #dup_ok o run scoreboard objectives add o dummy\n"
+            "execute store result score #left o run scoreboard objectives remove p\n"
+            "scoreboard objectives remove p\n"
+            "scoreboard objectives add p dummy\nscoreboard players add * p 3")
+    emu = run_both(tmp_path, body)
+    assert [emu.score(h, "o") for h in ("#dup", "#dup_ok", "#left")] == [0, 0, 1]
+    assert emu.scores()["p"] == {"#a": 3, "#b": 3, "#dup": 3, "#dup_ok": 3, "#left": 3}  # #b kept, then named by `*`
+    assert [d.message for d in emu.diagnostics] == ["Unknown scoreboard objective 'p'"]
+    assert host_kinds(emu).count("ObjectivesAdd") == 3  # o, and p twice
+    assert "ObjectivesRemove" not in host_kinds(emu)
 
 
 def test_list_results(tmp_path):
