@@ -118,7 +118,7 @@ class NumbaBackend:
         self.batch = np.zeros(1, dtype=np.int64)  # run_ticks: the tick functions, then each root's cost
         self.stale = True  # the machine (the arrays above in one structure) is to be made again
         self._root_key = None  # the last root's entity-less context, in row 0 of the context arrays
-        self._world = (None, None, None, 0)  # the world's arrays it holds: scoreboard, entities, tags, living
+        self._world = (None, None, None)  # the world's arrays it holds: scoreboard, entities, tags
 
     def new_world(self, state: WorldState) -> None:
         """Run the program compiled by :meth:`load` (and its macro instances) on ``state``, a fresh
@@ -317,29 +317,28 @@ class NumbaBackend:
         backend keeps the machine): the last one while they are the same. Whatever
         replaces one of the backend's arrays (or compiles: the program's, selectors' and storage
         leaves' arrays) sets ``stale``; the world's arrays are compared here, since commands and the
-        API may grow the scoreboard or the entity table, or change the living entities (``eorder`` is
-        their slice)."""
+        API may grow the scoreboard or the entity table (an entity coming or going changes none: the
+        VM reads the living ones' count from the table's ``live``)."""
         sb, table = self.state.scoreboard, self.state.entities.table
         world = self._world
-        if (not self.stale and world[0] is sb.values and world[1] is table.ints and world[2] is table.tags
-                and world[3] == table.count):
+        if not self.stale and world[0] is sb.values and world[1] is table.ints and world[2] is table.tags:
             return self.address
         code, starts, floats = self.program.arrays()
         self._fit_counters(code.shape[0], starts.shape[0])
-        found = max(table.count, sb.present.shape[0])  # entities, or holders (`*`)
+        found = max(table.order.shape[0], sb.present.shape[0])  # entities (as many as the table holds), or holders (`*`)
         if self.selbuf.shape[0] < 2 * found + 2:
             self.selbuf = np.zeros(4 * found + 4, dtype=np.int64)
         sels, sfloats, tests = self.selectors.arrays()
         self.machine = vm.Machine(
             code, starts, floats, self.regs, self.frames, sb.values, sb.present, sb.locked, sb.alive, sb.writable,
             sb.trigger, self.counts, self.totals, self.active, self.ovf, self.cints, self.cfloats, sels, sfloats, tests,
-            table.ints, table.floats, table.tags, table.living(), self.selbuf, self.logbuf, self.fstack, self.coll,
-            self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random, sb.kept)
+            table.ints, table.floats, table.tags, table.order, self.selbuf, self.logbuf, self.fstack, self.coll,
+            self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random, sb.kept, table.live)
         self.loop = variants.loop_for(self.program.opcodes)
         self.descriptor, self.machine_type = vm.machine(self.machine)
         self.address = self.descriptor.ctypes.data
         self._resume = entry_point(self.loop.run, self.machine_type)
-        self._world = (sb.values, table.ints, table.tags, table.count)
+        self._world = (sb.values, table.ints, table.tags)
         self.leaves_used = bool(self.leaves.leaves)  # the program names numbers of storage
         self.stale = False
         return self.address

@@ -21,7 +21,7 @@ sanitizer's ``ovf`` buffer, the queued log lines ``logbuf``, the contexts (``cin
 executor's holder and slot, dimension, anchor and store bindings, ``CI_*``; ``cfloats``: its position
 and rotation, ``CF_*``; the first ``R_NCTX`` rows are used), and the entities:
 the world's own arrays (:mod:`emulator.world.entity_table`: ``eints``, ``efloats``, ``etags``, the
-living slots ``eorder``, the state of the random sorts ``erandom``), read and written in place, with the selector tables ``sels``/``tests``
+living slots ``eorder``: the table's ``order`` cut at its ``live`` count ``elive``, the state of the random sorts ``erandom``), read and written in place, with the selector tables ``sels``/``tests``
 (:mod:`emulator.vm.entity_arrays`) and the scratch ``selbuf`` for what a selector finds; and the
 numbers of command storage the program names, ``lmeta``/``lvalues`` (:mod:`emulator.vm.storage_leaves`). Registers that
 matter across a call (``alive``, the tag accumulator, the command's abort target, the context,
@@ -1035,7 +1035,7 @@ def _store_field(efloats, e, column, v):
 MACHINE_FIELDS = ("code", "func_start", "floats", "regs", "frames", "values", "present", "locked", "alive_obj",
                   "writable", "trig", "counts", "totals", "active", "ovf", "cints", "cfloats", "sels", "sfloats",
                   "tests", "eints", "efloats", "etags", "eorder", "selbuf", "logbuf", "fstack", "coll", "as_cache",
-                  "batch", "lmeta", "lvalues", "erandom", "kept")
+                  "batch", "lmeta", "lvalues", "erandom", "kept", "elive")
 Machine = namedtuple("Machine", MACHINE_FIELDS)  # the arrays, as ``run`` reads them (``m.code`` ...)
 
 
@@ -1175,7 +1175,7 @@ def run(address, machine_type):
     eints = m.eints
     efloats = m.efloats
     etags = m.etags
-    eorder = m.eorder
+    eorder = m.eorder[:m.elive[0]]  # the living entities (only Python adds or takes one: each resume reads it)
     selbuf = m.selbuf
     logbuf = m.logbuf
     fstack = m.fstack

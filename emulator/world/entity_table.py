@@ -27,7 +27,8 @@ context made for it still reaches it, as the game's source keeps its entity obje
   bit ``t & 63`` of word ``t >> 6``); interning a tag past the last word adds one, so there is no
   limit on the tags of an entity or of a pack;
 - ``order[:count]``: the living entities' slots in the order unsorted ``@e`` visits them: level by
-  level (``EI_DIM``), each level's in the order they came into it;
+  level (``EI_DIM``), each level's in the order they came into it; ``live`` (int64 ``[1]``) holds
+  ``count`` for the VM, which keeps ``order`` whole (an entity coming or going changes no array it holds);
 - ``random`` (int64 ``[1]``): the state of the ``java.util.Random`` that ``sort=random`` and ``@r``
   shuffle with (:mod:`emulator.world.java_random`), seeded by the store.
 
@@ -74,6 +75,7 @@ class EntityTable:
         self.size = 0  # slots used
         self.seats = 0  # the times an entity got on or off a vehicle (EI_SEAT)
         self.count = 0  # living entities, order[:count]
+        self.live = np.zeros(1, dtype=np.int64)  # count, as the VM reads it
         self.handles: list = []  # slot -> Entity
         self.tag_ids: dict[str, int] = {}
         self.tag_names: list[str] = []
@@ -158,13 +160,13 @@ class EntityTable:
         n = self.count
         self.order[index + 1:n + 1] = self.order[index:n].copy()
         self.order[index] = slot
-        self.count = n + 1
+        self.count = self.live[0] = n + 1
 
     def remove(self, index: int) -> None:
         """Take the entity at ``index`` out of the iteration order."""
         n = self.count
         self.order[index:n - 1] = self.order[index + 1:n].copy()
-        self.count = n - 1
+        self.count = self.live[0] = n - 1
 
     def index_uuid(self, entity, old: tuple | None, new: tuple | None) -> None:
         """Keep :attr:`uuids` up to date: ``entity``'s UUID went from ``old`` to ``new`` (None: not living)."""

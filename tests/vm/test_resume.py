@@ -24,6 +24,25 @@ def test_host_ops_resume_the_machine_by_its_address(tmp_path):
     assert emu.score("#n", "o") == 6
 
 
+def test_entities_coming_and_going_keep_the_machine(tmp_path):
+    """The VM reads how many entities live from the table's ``live``: a summon or a kill changes no
+    array the machine holds (only a table grown past its rows makes it again), and the selectors
+    find the entities as they are."""
+    count = "execute store result score #n o if entity @e[type=marker]\n"
+    emu = emulator_for(tmp_path, {"t:setup": SETUP, "t:grow": "summon marker\n" + count,
+                                  "t:shrink": "kill @e[type=marker,limit=1]\n" + count})
+    emu.call("t:setup")
+    emu.call("t:grow")
+    backend = emu.backend
+    first, rows = backend.machine, emu.state.entities.table.ints.shape[0]
+    for n in range(2, 5):
+        emu.call("t:grow")
+        assert emu.score("#n", "o") == n
+    emu.call("t:shrink")
+    assert emu.score("#n", "o") == 3
+    assert emu.state.entities.table.ints.shape[0] == rows and backend.machine is first
+
+
 def test_a_plain_function_standing_in_for_run_is_called_with_the_same_arguments(tmp_path):
     emu = emulator_for(tmp_path, FUNCTIONS)
     emu.call("t:setup")
