@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import advancements, blocks, bossbar, conditions, data, entities, items, living, recipes, scoreboard, server
+from . import advancements, blocks, bossbar, conditions, data, entities, items, living, recipes, scoreboard, server, teams
 
 # Commands that only show or play something to players: no world state a pack can test changes
 # (their result, the number of players reached, is the one thing left unmodelled).
@@ -31,7 +31,7 @@ HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **serve
             **items.HANDLERS, ast.UnreadCommand: _unread}
 # the commands the parser keeps as text, by name
 GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **recipes.HANDLERS,
-                    **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS}
+                    **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS, **teams.HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

@@ -39,7 +39,7 @@ import math
 
 import numpy as np
 
-from emulator.world import advancements, inventories, living, loot, predicates, statistics, tools
+from emulator.world import advancements, inventories, living, loot, predicates, statistics, teams, tools
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
@@ -90,8 +90,13 @@ def last_attacker(state, entity) -> Entity | None:
 
 
 def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), bypasses: bool = False) -> bool:
-    """LivingEntity.hurtServer: False when the hurt does not go through; else the attacker gets the
-    credit, an entity at 0 health dies, then the hurt's triggers fire."""
+    """LivingEntity.hurtServer: False when the hurt does not go through (a player its teammate hurts
+    without friendly fire: ServerPlayer.hurt -> canHarmPlayer); else the attacker gets the credit,
+    an entity at 0 health dies, then the hurt's triggers fire."""
+    attacker = source.attacker
+    if entity.is_player and attacker is not None and attacker.is_player and not teams.can_harm(
+            state.teams, entity, attacker):
+        return False
     if not living.hurt(state, entity, amount, bypasses, source.type, _armour_wear):
         return False
     remember_attacker(state, entity, source)
@@ -326,6 +331,10 @@ def _death_message(state, player, source: DamageSource, killer) -> None:
     if text is None:
         state.error(f"the death message of damage type {source.type} is not modelled: none was sent",
                     severity="warning", unmodelled=True)
+        return
+    if player.team is not None or (other is not None and other.team is not None):
+        state.error("the death message naming an entity in a team (the team's prefix, suffix and colour, its "
+                    "deathMessageVisibility) is not modelled: none was sent", severity="warning", unmodelled=True)
         return
     state.broadcast("chat", text.format(player.display_name, other.display_name if other is not None else ""))
 

@@ -569,6 +569,7 @@ class EntityStore:
         java_random.set_seed(self.table.random, random_sequences.mix_stafford13(seed + random_sequences.GOLDEN_RATIO_64))
         self.joined = 0  # players that joined so far (EI_JOIN)
         self.version = (1, 21, 11)  # the release the packs run as (what new entities save)
+        self.team_of: Callable[[str], str | None] = lambda holder: None  # a score holder's team (WorldState.teams)
         self.clock: Callable[[], int] = lambda: 0  # the server ticks run so far (WorldState.tick)
         self.changes = 0  # entities that came into ``entities`` or left it so far
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
@@ -614,13 +615,14 @@ class EntityStore:
             if self.by_uuid(entity.uuid) is not None:
                 raise CommandFailure("commands.summon.failed.uuid")
         entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
+        entity.team = self.team_of(entity.score_holder)  # a UUID a team already names
         return self._add(entity)
 
     def add_player(self, name: str, pos, yaw=0.0, pitch=0.0, gamemode: str = "survival", level: int = 0,
                    dimension: str = OVERWORLD) -> Entity:
         player = Entity(insecure_uuid(self.rng), "minecraft:player", tuple(float(v) for v in pos), F32(yaw),
                         F32(pitch), data=_base_data("minecraft:player"), player_name=name, gamemode=gamemode,
-                        level=level, dimension=dimension)
+                        level=level, dimension=dimension, team=self.team_of(name))
         self._add(player)
         self.joined += 1
         self.table.ints[player.order, EI_JOIN] = self.joined

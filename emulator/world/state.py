@@ -48,6 +48,7 @@ from emulator.world.random_sequences import RandomSequences
 from emulator.world.records import Frame, LogEntry, Overflow, RuntimeDiagnostic
 from emulator.world.resources import Resources
 from emulator.world.storage import StorageData
+from emulator.world.teams import Teams
 from mcfunction_parser.diagnostics import Loc
 
 # Criteria whose scores only the game sets (ObjectiveCriteria with readOnly=true).
@@ -518,6 +519,7 @@ class WorldState:
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
     flying: list = field(default_factory=list)  # projectiles made in flight, checked at the next tick (world.projectiles)
     command_runner: object = None  # runs a command block's text: (text, Context) -> successes (set by the runtime)
+    teams: Teams = field(default_factory=Teams)  # the scoreboard's teams (emulator.world.teams)
     functions_named: object = None  # (name, is_tag) -> the ast.Function each names, in order (set by the runtime)
     pending_rewards: list = field(default_factory=list)  # (reward function, player) earned, to run next (take_rewards)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
@@ -532,7 +534,15 @@ class WorldState:
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)
         self.entities.clock = lambda: self.tick
+        self.entities.team_of = self.teams.team_of
+        self.teams.on_change = self._team_changed
         self.blocks.version_of = self._release
+
+    def _team_changed(self, holder: str, team: str | None) -> None:
+        """A score holder joined or left a team: so did the entities it names."""
+        for entity in self.entities.entities:
+            if entity.score_holder == holder:
+                entity.team = team
 
     def _release(self) -> tuple:
         return self.version

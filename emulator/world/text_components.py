@@ -26,6 +26,7 @@ from emulator.world.state import WorldState
 from emulator.world import nbt_ops
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import CommandFailure
+from emulator.world.teams import formatted_name
 from emulator.world.text import RESOLVED, needs_resolving, plain_value, read_component, tag_as_string
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
@@ -122,7 +123,7 @@ def _selector(component: dict, resolver: "_Resolver", style: dict) -> dict:
     """SelectorContents.resolve: ComponentUtils.formatList of the display names it finds (one name
     as it is, several joined by the separator, none empty), then the written style applied over
     it (MutableComponent.withStyle: what the component sets wins)."""
-    names = [display_name(e, resolver.state.version) for e in resolver.select(str(component["selector"]))]
+    names = [display_name(e, resolver.state.version, resolver.state.teams) for e in resolver.select(str(component["selector"]))]
     if len(names) == 1:
         found = names[0]
     else:
@@ -132,12 +133,13 @@ def _selector(component: dict, resolver: "_Resolver", style: dict) -> dict:
     return {**found, **style}
 
 
-def display_name(entity: Entity, version) -> dict:
+def display_name(entity: Entity, version, teams=None) -> dict:
     """Entity.getDisplayName as a component: the name (its custom name, a player's name, else the
     type's name) with a ``show_entity`` hover event and the UUID string to insert; a player's
     inserts its name and suggests ``/tell NAME `` on click (Player.decorateDisplayNameComponent).
-    Before 1.21.5 the events are written ``hoverEvent``/``clickEvent`` with the old fields.
-    Team prefixes and colours (PlayerTeam.formatNameForTeam) are not applied."""
+    Before 1.21.5 the events are written ``hoverEvent``/``clickEvent`` with the old fields. In a
+    team, the name is its prefix, name and suffix in the team's colour (PlayerTeam.formatNameForTeam),
+    the events on that whole."""
     written = read_component(entity.custom_name) if entity.custom_name is not None and not entity.is_player else None
     if isinstance(written, dict):
         name = dict(written)
@@ -145,6 +147,8 @@ def display_name(entity: Entity, version) -> dict:
         name = {"text": "", "extra": written}
     else:
         name = {"text": entity.display_name}
+    if teams is not None and entity.team is not None and entity.team in teams.teams:
+        name = formatted_name(teams.teams[entity.team], name)
     tooltip = {"text": entity.display_name}
     new = tuple(version) >= (1, 21, 5)
     if new:

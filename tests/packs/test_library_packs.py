@@ -23,7 +23,9 @@ their PackTest suites run on both backends:
   and another falling out of the air onto the structure block, a snowball breaking on the wall, an
   arrow hurting a pig;
 - toolstand: an inventory library setting a hidden armor stand's ``HandItems[0]`` (saved empty
-  before 1.21.5) and mining a probe block with it to read a loot table's answer."""
+  before 1.21.5) and mining a probe block with it to read a loot table's answer;
+- squads: a team game's teams (membership by selector and by a name before its player joins,
+  friendly fire, a prefix in chat names, empty and remove)."""
 from pathlib import Path
 
 import pytest
@@ -35,7 +37,7 @@ from emulator.testing.runner import load_suite, run_case
 HERE = Path(__file__).resolve().parent
 SUITES = {name: list(load_suite(discover([HERE / name])))[0] for name in ("gated", "rewards", "healing", "lists", "sight", "typed",
                                                                          "clicks", "crafting", "ticker", "machines", "stack",
-                                                                         "projectiles", "toolstand")}
+                                                                         "projectiles", "toolstand", "squads")}
 CASES = [(name, case) for name, (_, cases) in SUITES.items() for case in cases]
 
 

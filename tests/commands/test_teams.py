@@ -1,0 +1,44 @@
+"""``team`` (TeamCommand): results, failures and who is in which team, on both backends.
+Sources (decompiled 1.21): server/commands/TeamCommand.java (createTeam, deleteTeam, emptyTeam,
+joinTeam, leaveTeam, setColor ... return values and errors), world/scores/Scoreboard.java
+(addPlayerToTeam leaves the old team first), world/scores/PlayerTeam.java (the defaults)."""
+import pytest
+
+from tests.world.world_emulator import emulator
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_team_results_failures_and_membership(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "\n".join([
+        "execute store result score #add o run team add a",
+        "execute store result score #add2 o run team add b {\"text\":\"Bee\"}",
+        "execute store success score #dup o run team add a",
+        "summon marker 0 0 0 {Tags:[\"m\"]}",
+        "summon pig 0 0 0 {Tags:[\"p\"]}",
+        "execute store result score #join o run team join a @e[tag=p]",
+        "execute as @e[tag=m] run team join b",
+        "execute store result score #fake o run team join a #fake",
+        "execute store result score #pigs o if entity @e[team=a]",
+        "execute store result score #markers o if entity @e[team=b]",
+        "execute store result score #none o if entity @e[team=]",
+        "execute store result score #list o run team list a",
+        "execute store result score #color o run team modify a color red",
+        "execute store success score #again o run team modify a color red",
+        "execute store success score #ff o run team modify a friendlyFire true",
+        "execute store result score #pre o run team modify a prefix {\"text\":\"A \"}",
+        "execute store result score #leave o run team leave @e[tag=p]",
+        "execute store result score #after o if entity @e[team=a]",
+        "execute store result score #empty o run team empty a",
+        "execute store success score #empty2 o run team empty a",
+        "execute store success score #unknown o run team join c @e[tag=p]",
+        "execute store result score #remove o run team remove b",
+    ])})
+    emu.call("t:go")
+    got = {h: emu.score(h, "o") for h in ("#add", "#add2", "#dup", "#join", "#fake", "#pigs", "#markers", "#none",
+                                          "#list", "#color", "#again", "#ff", "#pre", "#leave", "#after",
+                                          "#empty", "#empty2", "#unknown", "#remove")}
+    # team= tests living entities only (the marker in b is not counted); a name with no entity joins too
+    assert got == {"#add": 1, "#add2": 2, "#dup": 0, "#join": 1, "#fake": 1, "#pigs": 1, "#markers": 0, "#none": 0,
+                   "#list": 2, "#color": 0, "#again": 0, "#ff": 0, "#pre": 1, "#leave": 1, "#after": 0,
+                   "#empty": 1, "#empty2": 0, "#unknown": 0, "#remove": 1}
+    assert emu.state.teams.teams["a"].color == "red" and emu.state.teams.teams["a"].prefix == {"text": "A "}
