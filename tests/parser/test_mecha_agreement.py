@@ -381,3 +381,18 @@ def test_generated_corpus_is_accepted_by_both(mecha_parser, tmp_path):
                 assert mecha_accepts(mecha_parser, line), line
                 checked += 1
     assert checked > 500
+
+
+def test_the_readme_lists_each_deliberate_difference():
+    """Each listed difference's game source (a Class.method it names, else its class) is in the
+    README's table of deliberate differences."""
+    from pathlib import Path
+
+    readme = (Path(__file__).resolve().parents[2] / "README.md").read_text()
+    table = readme[readme.index("**Agreement with mecha.**"):readme.index("The same from Python:")]
+    missing = []
+    for _, _, source in DIFFERENCES + [(None, None, source) for _, _, source in MUTANT_RULES]:
+        names = re.findall(r"\b[A-Z][A-Za-z]+\.[A-Za-z_]+\b", source) or re.findall(r"\b[A-Z][a-z]+[A-Z]\w+", source)
+        if not any(name in table for name in names):
+            missing.append(source)
+    assert not missing, missing
