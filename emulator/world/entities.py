@@ -570,6 +570,7 @@ class EntityStore:
         self.joined = 0  # players that joined so far (EI_JOIN)
         self.version = (1, 21, 11)  # the release the packs run as (what new entities save)
         self.team_of: Callable[[str], str | None] = lambda holder: None  # a score holder's team (WorldState.teams)
+        self.join_team: Callable[[str, str], None] = lambda holder, team: None  # (WorldState.teams)
         self.clock: Callable[[], int] = lambda: 0  # the server ticks run so far (WorldState.tick)
         self.changes = 0  # entities that came into ``entities`` or left it so far
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
@@ -614,6 +615,9 @@ class EntityStore:
             load_nbt(entity, full)
             if self.by_uuid(entity.uuid) is not None:
                 raise CommandFailure("commands.summon.failed.uuid")
+            team = entity.data.pop("Team", None) if living.is_living(type_id) else None
+            if isinstance(team, String):  # LivingEntity.readAdditionalSaveData joins it; nothing saves it
+                self.join_team(entity.score_holder, str(team))
         entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
         entity.team = self.team_of(entity.score_holder)  # a UUID a team already names
         return self._add(entity)

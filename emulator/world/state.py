@@ -535,8 +535,14 @@ class WorldState:
         self.entities.bind_scoreboard(self.scoreboard)
         self.entities.clock = lambda: self.tick
         self.entities.team_of = self.teams.team_of
+        self.entities.join_team = self._join_team
         self.teams.on_change = self._team_changed
         self.blocks.version_of = self._release
+
+    def _join_team(self, holder: str, team: str) -> None:
+        """A mob loaded with ``Team``: it joins that team when there is one (else the game logs a warning)."""
+        if team in self.teams.teams:
+            self.teams.join(self.teams.teams[team], [holder])
 
     def _team_changed(self, holder: str, team: str | None) -> None:
         """A score holder joined or left a team: so did the entities it names."""

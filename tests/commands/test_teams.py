@@ -42,3 +42,19 @@ def test_team_results_failures_and_membership(tmp_path, backend):
                    "#list": 2, "#color": 0, "#again": 0, "#ff": 0, "#pre": 1, "#leave": 1, "#after": 0,
                    "#empty": 1, "#empty2": 0, "#unknown": 0, "#remove": 1}
     assert emu.state.teams.teams["a"].color == "red" and emu.state.teams.teams["a"].prefix == {"text": "A "}
+
+
+def test_a_mob_summoned_with_team_joins_it(tmp_path):
+    """LivingEntity.readAdditionalSaveData: ``Team`` names a team the mob joins (an unknown one is
+    skipped with a log line); addAdditionalSaveData never writes it back. A marker keeps it as data."""
+    emu = emulator(tmp_path, "python", {"t:go": "\n".join([
+        "team add a",
+        "summon pig 0 0 0 {Team:\"a\",Tags:[\"in\"]}",
+        "summon pig 0 0 0 {Team:\"nope\",Tags:[\"out\"]}",
+        "execute store result score #in o if entity @e[tag=in,team=a]",
+        "execute store result score #out o if entity @e[tag=out,team=]",
+        "execute store success score #saved o run data get entity @e[tag=in,limit=1] Team",
+    ])})
+    emu.call("t:go")
+    assert [emu.score(h, "o") for h in ("#in", "#out", "#saved")] == [1, 1, 0]
+    assert len(emu.state.teams.teams["a"].members) == 1
