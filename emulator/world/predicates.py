@@ -47,7 +47,7 @@ from typing import Callable
 import numpy as np
 
 from emulator.world import (advancement_progress, biomes, campfires, entity_components, entity_predicate_format,
-                            inventories, living, recipes, sight)
+                            inventories, living, recipes, sight, sky)
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -639,7 +639,7 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         return False
     block_pos = tuple(math.floor(v) for v in pos)
     unknown = None
-    for check in (_biome_check, _structure_check, _smokey_check):
+    for check in (_biome_check, _structure_check, _smokey_check, _sky_check):
         try:
             if not check(predicate, ctx, block_pos):
                 return False
@@ -681,10 +681,15 @@ def _smokey_check(predicate: dict, ctx: LootContext, pos) -> bool:
         ctx.state.blocks_in(ctx.dimension), pos, ctx.state.resources)
 
 
+def _sky_check(predicate: dict, ctx: LootContext, pos) -> bool:
+    """``can_see_sky``: equal to Level.canSeeSky at the block (:mod:`emulator.world.sky`)."""
+    return "can_see_sky" not in predicate or bool(predicate["can_see_sky"]) == sky.can_see_sky(
+        ctx.state, ctx.dimension, pos)
+
+
 # what the world does not keep: LocationPredicate's fields that read it (tested last)
 _LOCATION_UNMODELLED = {
     "light": "the emulator keeps no light levels",
-    "can_see_sky": "the emulator keeps no sky light or height maps",
 }
 
 

@@ -395,7 +395,7 @@ def test_the_old_item_predicate_fields_are_ignored_from_1_20_5(state):
 
 @pytest.mark.parametrize("field,value,reason", [
     ("biomes", "minecraft:plains", "generator"), ("structures", "#minecraft:village", "structures of this world"),
-    ("light", {"light": {"min": 1}}, "no light levels"), ("can_see_sky", True, "no sky light"),
+    ("light", {"light": {"min": 1}}, "no light levels"), ("can_see_sky", True, "sky light of t:void"),
 ])
 def test_location_fields_the_world_does_not_keep_are_reported(state, field, value, reason):
     # LocationPredicate.matches: biomes, structures, light and can_see_sky read what the
@@ -403,7 +403,7 @@ def test_location_fields_the_world_does_not_keep_are_reported(state, field, valu
     # a field the world keeps that fails first makes the predicate false all the same
     check = {"condition": "location_check", "predicate": {field: value}}
     with pytest.raises(Unmodelled, match=reason):
-        holds(check, ctx(state))
+        holds(check, ctx(state, dimension="t:void"))
     check["predicate"]["block"] = {"blocks": "minecraft:stone"}
     assert not holds(check, ctx(state))
 
@@ -436,6 +436,30 @@ def test_smokey_looks_down_for_a_lit_campfire(state):
     place((0, 11, 0), "minecraft:oak_fence")  # a shape the emulator does not keep
     with pytest.raises(Unmodelled, match="shape of minecraft:oak_fence"):
         smokey((0.5, 12.5, 0.5))
+
+
+def test_can_see_sky_is_sky_light_15_straight_down(state):
+    # BlockAndTintGetter.canSeeSky: sky light 15, which only passes straight down through blocks
+    # that do not dampen it (getLightBlock 0: glass, barriers, torches ...) nor occlude it with a
+    # face (a bottom slab lets it in from above, not out below); the nether has no sky light
+    sees = lambda pos, **kw: holds({"condition": "location_check", "predicate": {"can_see_sky": True}},  # noqa: E731
+                                   ctx(state, origin=pos, **kw))
+    place = lambda pos, block: state.blocks.place(pos, with_defaults(parse_block(block), state.version))  # noqa: E731
+    assert sees((0.5, 64.0, 0.5)) and not sees((0.5, 64.0, 0.5), dimension="minecraft:the_nether")
+    place((0, 70, 0), "minecraft:glass")
+    place((0, 80, 0), "minecraft:barrier")
+    place((0, 65, 0), "minecraft:torch")
+    assert sees((0.5, 64.0, 0.5)) and sees((0.5, 70.5, 0.5))
+    place((0, 64, 0), "minecraft:stone_slab[type=bottom]")
+    assert sees((0.5, 64.2, 0.5)) and not sees((0.5, 63.0, 0.5))
+    place((0, 64, 0), "minecraft:oak_leaves")  # dampens sky light by 1: 14 below
+    assert not sees((0.5, 60.0, 0.5)) and not sees((0.5, 64.5, 0.5))
+    place((0, 64, 0), "minecraft:air")
+    place((0, 90, 0), "minecraft:oak_fence")  # a shape whose light occlusion is not kept here
+    with pytest.raises(Unmodelled, match="oak_fence"):
+        sees((0.5, 60.0, 0.5))
+    place((0, 95, 0), "minecraft:stone")  # a full cube above decides it
+    assert not sees((0.5, 60.0, 0.5))
 
 
 def test_the_player_predicate_reads_the_recipe_book(state):
