@@ -5,7 +5,7 @@ recipes match and assemble.
   (``recipe_order``) that matches the grid (nine stacks, row by row), its result and remainders;
   None when none matches. Shaped (``crafting_shaped``), shapeless (``crafting_shapeless``),
   transmute (from 1.21.2; from 1.21.5 with its result's count and components), and before 26.1 book
-  cloning (from 1.20.5) and map cloning recipes are matched; another special recipe
+  cloning, firework rockets and tipped arrows (from 1.20.5) and map cloning recipes are matched; another special recipe
   (``crafting_special_*``, ``crafting_decorated_pot``) reached in that order, when the grid
   holds what it needs, makes the craft not modelled (Unmodelled), as does no match without the
   game's own recipes (``--game-jar``) and, before 1.21.2 without them, two matches.
@@ -21,8 +21,8 @@ water, lava and milk buckets leave a bucket, honey bottles and dragon's breath a
 RecipeManager.getRecipeFor (the first recipe of the type that matches, in the recipe map's order),
 TransmuteRecipe (1.21.3: matches, assemble, ItemStack.transmuteCopy; 1.21.11: matches with
 TransmuteResult.isResultUnchanged, assemble with TransmuteResult.apply and its CODEC), BookCloningRecipe
-(matches, assemble, getRemainingItems; WrittenBookContent.tryCraftCopy), MapCloningRecipe, the
-other special recipes' matches (what each needs in the grid).
+(matches, assemble, getRemainingItems; WrittenBookContent.tryCraftCopy), MapCloningRecipe,
+FireworkRocketRecipe, TippedArrowRecipe, the other special recipes' matches (what each needs in the grid).
 """
 from __future__ import annotations
 
@@ -34,7 +34,7 @@ from emulator.world.hash_order import java_hash_map_order, resource_location_has
 from emulator.world.items import ItemStack
 from emulator.world.loot_context import namespaced as _id, to_tag
 from emulator.world.nbt_ops import is_numeric, numeric_value
-from mcfunction_parser.nbt import Compound, Int
+from mcfunction_parser.nbt import Byte, Compound, Int, List
 
 SHAPED, SHAPELESS = "minecraft:crafting_shaped", "minecraft:crafting_shapeless"
 # the crafting recipe types (RecipeType.CRAFTING) the emulator does not match
@@ -309,6 +309,39 @@ def _book_copies(stacks: list[ItemStack]) -> ItemStack | None:
     return made
 
 
+FIREWORK_ROCKET, TIPPED_ARROW = "minecraft:crafting_special_firework_rocket", "minecraft:crafting_special_tippedarrow"
+
+
+def _rocket(stacks: list[ItemStack]) -> ItemStack | None:
+    """FireworkRocketRecipe (1.20.5+): one paper, 1 - 3 gunpowder and any firework stars, nothing
+    else; three rockets flying as long as the gunpowder, with the stars' explosions in order."""
+    papers = sum(s.id == "minecraft:paper" for s in stacks)
+    powder = sum(s.id == "minecraft:gunpowder" for s in stacks)
+    others = [s for s in stacks if not s.is_empty and s.id not in ("minecraft:paper", "minecraft:gunpowder")]
+    if papers != 1 or not 1 <= powder <= 3 or any(s.id != "minecraft:firework_star" for s in others):
+        return None
+    explosions = [s.component("minecraft:firework_explosion") for s in others]
+    fireworks = Compound(flight_duration=Byte(powder))
+    if any(e is not None for e in explosions):
+        fireworks["explosions"] = List(e for e in explosions if e is not None)
+    made = ItemStack("minecraft:firework_rocket", 3)
+    items.set_component(made, "minecraft:fireworks", fireworks)
+    return made
+
+
+def _tipped_arrows(width: int, height: int, stacks: list[ItemStack]) -> ItemStack | None:
+    """TippedArrowRecipe (1.20.5+): a full 3 x 3 grid of arrows round a lingering potion; eight
+    tipped arrows with its potion contents."""
+    if (width, height) != (3, 3) or stacks[4].id != "minecraft:lingering_potion" or any(
+            s.id != "minecraft:arrow" for i, s in enumerate(stacks) if i != 4):
+        return None
+    made = ItemStack("minecraft:tipped_arrow", 8)
+    contents = stacks[4].component("minecraft:potion_contents")
+    if contents is not None:
+        items.set_component(made, "minecraft:potion_contents", contents)
+    return made
+
+
 def _remainders(kind: str, stacks: list[ItemStack]) -> list[ItemStack]:
     """CraftingRecipe.getRemainingItems: each stack's crafting remainder; BookCloningRecipe's keeps
     the (first) written book as well."""
@@ -333,6 +366,10 @@ def _result(kind: str, body, width: int, height: int, stacks: list[ItemStack], r
         return _transmuted(body, stacks, resources)
     if kind == BOOK_CLONING and items.COMPONENTS_VERSION <= tuple(version) < SPECIAL_UNTIL:
         return _book_copies(stacks)
+    if kind == FIREWORK_ROCKET and items.COMPONENTS_VERSION <= tuple(version) < SPECIAL_UNTIL:
+        return _rocket(stacks)
+    if kind == TIPPED_ARROW and items.COMPONENTS_VERSION <= tuple(version) < SPECIAL_UNTIL:
+        return _tipped_arrows(width, height, stacks)
     if kind == MAP_CLONING and tuple(version) < SPECIAL_UNTIL:  # MapCloningRecipe.assemble: the map, one more
         found = _cloned(stacks, "minecraft:filled_map", "minecraft:map")
         if found is None:

@@ -92,10 +92,10 @@ def test_without_the_games_recipes_a_grid_no_pack_recipe_makes_is_not_modelled()
     with pytest.raises(Unmodelled, match="--game-jar"):
         crafting.craft(res, _grid({0: "oak_log"}), V121)
     # a special recipe loaded (from the jar) that might match is said so
-    res = _resources(**{"minecraft:firework_rocket": {"type": "minecraft:crafting_special_firework_rocket"}})
+    res = _resources(**{"minecraft:firework_star": {"type": "minecraft:crafting_special_firework_star"}})
     res.vanilla_data = True
-    with pytest.raises(Unmodelled, match="crafting_special_firework_rocket"):
-        crafting.craft(res, _grid({0: "paper", 1: "gunpowder"}), V121)
+    with pytest.raises(Unmodelled, match="crafting_special_firework_star"):
+        crafting.craft(res, _grid({0: "gunpowder", 1: "red_dye"}), V121)
     assert crafting.craft(res, _grid({}), V121) is None  # an empty grid crafts nothing
 
 
@@ -179,13 +179,13 @@ def test_a_transmute_recipe_from_1_21_5_applies_its_result():
 
 def test_a_special_recipe_is_not_modelled_only_where_it_could_match():
     # a crafting_special_* recipe can only match a grid holding what it needs (BookCloningRecipe a
-    # written book, FireworkRocketRecipe paper ...): elsewhere the next recipe in order is the craft
-    res = _resources(**{"minecraft:firework_rocket": {"type": "minecraft:crafting_special_firework_rocket"},
+    # written book, FireworkStarRecipe gunpowder ...): elsewhere the next recipe in order is the craft
+    res = _resources(**{"minecraft:firework_star": {"type": "minecraft:crafting_special_firework_star"},
                         "t:torch": TORCH})
     res.vanilla_data = True
     assert crafting.craft(res, _grid({1: "coal", 4: "stick"}), V121).recipe_id == "t:torch"
-    with pytest.raises(Unmodelled, match="firework_rocket"):
-        crafting.craft(res, _grid({0: "paper", 1: "gunpowder"}), V121)
+    with pytest.raises(Unmodelled, match="firework_star"):
+        crafting.craft(res, _grid({0: "gunpowder", 1: "red_dye"}), V121)
 
 
 def test_a_crafters_disabled_slots_and_triggered_state_are_saved_as_the_game_saves_them(tmp_path):
@@ -230,3 +230,29 @@ def test_book_and_map_cloning_copy_the_original():
     # 26.1 made them data-driven: not modelled there
     with pytest.raises(Unmodelled, match="map_cloning"):
         crafting.craft(res, [filled, ItemStack("minecraft:map")] + [EMPTY.copy()] * 7, (26, 1, 0))
+
+
+def test_firework_rockets_and_tipped_arrows_are_crafted():
+    # FireworkRocketRecipe (1.21): one paper, 1 - 3 gunpowder, firework stars; three rockets with
+    # Fireworks(gunpowder, the stars' explosions); TippedArrowRecipe: eight arrows round a lingering
+    # potion in a full 3 x 3 grid make eight tipped arrows with its potion contents
+    res = _resources(**{"minecraft:firework_rocket": {"type": "minecraft:crafting_special_firework_rocket"},
+                        "minecraft:tipped_arrow": {"type": "minecraft:crafting_special_tippedarrow"}})
+    res.vanilla_data = True
+    star = ItemStack("minecraft:firework_star")
+    items.set_component(star, "minecraft:firework_explosion", Compound(shape=String("star")))
+    grid = [ItemStack("minecraft:paper"), ItemStack("minecraft:gunpowder"), ItemStack("minecraft:gunpowder"), star] + [EMPTY.copy()] * 5
+    made = crafting.craft(res, grid, V121).result
+    assert (made.id, made.count) == ("minecraft:firework_rocket", 3)
+    assert made.component("minecraft:fireworks") == Compound(flight_duration=2, explosions=List([Compound(shape=String("star"))]))
+    plain = crafting.craft(res, _grid({0: "paper", 1: "gunpowder"}), V121).result
+    assert "minecraft:fireworks" not in plain.patch  # Fireworks(1, []) is the rocket's default
+    assert crafting.craft(res, _grid({0: "paper"}), V121) is None
+    assert crafting.craft(res, _grid({0: "paper", 1: "gunpowder", 2: "gunpowder", 3: "gunpowder", 4: "gunpowder"}), V121) is None
+    potion = ItemStack("minecraft:lingering_potion")
+    items.set_component(potion, "minecraft:potion_contents", Compound(potion=String("minecraft:swiftness")))
+    grid = [ItemStack("minecraft:arrow")] * 4 + [potion] + [ItemStack("minecraft:arrow")] * 4
+    made = crafting.craft(res, grid, V121).result
+    assert (made.id, made.count) == ("minecraft:tipped_arrow", 8)
+    assert made.component("minecraft:potion_contents") == Compound(potion=String("minecraft:swiftness"))
+    assert crafting.craft(res, grid[:8] + [EMPTY.copy()], V121) is None
