@@ -5,7 +5,8 @@ recipes match and assemble.
   (``recipe_order``) that matches the grid (nine stacks, row by row), its result and remainders;
   None when none matches. Shaped (``crafting_shaped``), shapeless (``crafting_shapeless``),
   transmute (from 1.21.2; from 1.21.5 with its result's count and components), and before 26.1 book
-  cloning, firework rockets and tipped arrows (from 1.20.5) and map cloning recipes are matched; another special recipe
+  cloning, firework rockets and tipped arrows (from 1.20.5) and map cloning recipes, and shulker
+  box colouring from 1.20.5 to 1.21.1, are matched; another special recipe
   (``crafting_special_*``, ``crafting_decorated_pot``) reached in that order, when the grid
   holds what it needs, makes the craft not modelled (Unmodelled), as does no match without the
   game's own recipes (``--game-jar``) and, before 1.21.2 without them, two matches.
@@ -22,7 +23,7 @@ RecipeManager.getRecipeFor (the first recipe of the type that matches, in the re
 TransmuteRecipe (1.21.3: matches, assemble, ItemStack.transmuteCopy; 1.21.11: matches with
 TransmuteResult.isResultUnchanged, assemble with TransmuteResult.apply and its CODEC), BookCloningRecipe
 (matches, assemble, getRemainingItems; WrittenBookContent.tryCraftCopy), MapCloningRecipe,
-FireworkRocketRecipe, TippedArrowRecipe, the other special recipes' matches (what each needs in the grid).
+FireworkRocketRecipe, TippedArrowRecipe, ShulkerBoxColoring, the other special recipes' matches (what each needs in the grid).
 """
 from __future__ import annotations
 
@@ -31,6 +32,8 @@ from dataclasses import dataclass
 from emulator.world import items
 from emulator.world.errors import Unmodelled
 from emulator.world.hash_order import java_hash_map_order, resource_location_hash
+from emulator.world.id_families import COLOURS
+from emulator.world.inventories import SHULKER_BOXES
 from emulator.world.items import ItemStack
 from emulator.world.loot_context import namespaced as _id, to_tag
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -342,6 +345,21 @@ def _tipped_arrows(width: int, height: int, stacks: list[ItemStack]) -> ItemStac
     return made
 
 
+SHULKER_COLORING, SHULKER_COLORING_UNTIL = "minecraft:crafting_special_shulkerboxcoloring", (1, 21, 2)
+_DYES = {f"minecraft:{colour}_dye": colour for colour in COLOURS}
+
+
+def _coloured_box(stacks: list[ItemStack]) -> ItemStack | None:
+    """ShulkerBoxColoring (1.20.5 - 1.21.1): one shulker box and one dye, nothing else; the box of
+    the dye's colour with the box's components (ItemStack.transmuteCopy)."""
+    present = [s for s in stacks if not s.is_empty]
+    boxes = [s for s in present if s.id in SHULKER_BOXES]
+    dyes = [s for s in present if s.id in _DYES]
+    if len(boxes) != 1 or len(dyes) != 1 or len(present) != 2:
+        return None
+    return _transmute_copy(boxes[0], f"minecraft:{_DYES[dyes[0].id]}_shulker_box", 1)
+
+
 def _remainders(kind: str, stacks: list[ItemStack]) -> list[ItemStack]:
     """CraftingRecipe.getRemainingItems: each stack's crafting remainder; BookCloningRecipe's keeps
     the (first) written book as well."""
@@ -370,6 +388,8 @@ def _result(kind: str, body, width: int, height: int, stacks: list[ItemStack], r
         return _rocket(stacks)
     if kind == TIPPED_ARROW and items.COMPONENTS_VERSION <= tuple(version) < SPECIAL_UNTIL:
         return _tipped_arrows(width, height, stacks)
+    if kind == SHULKER_COLORING and items.COMPONENTS_VERSION <= tuple(version) < SHULKER_COLORING_UNTIL:
+        return _coloured_box(stacks)
     if kind == MAP_CLONING and tuple(version) < SPECIAL_UNTIL:  # MapCloningRecipe.assemble: the map, one more
         found = _cloned(stacks, "minecraft:filled_map", "minecraft:map")
         if found is None:

@@ -256,3 +256,16 @@ def test_firework_rockets_and_tipped_arrows_are_crafted():
     assert (made.id, made.count) == ("minecraft:tipped_arrow", 8)
     assert made.component("minecraft:potion_contents") == Compound(potion=String("minecraft:swiftness"))
     assert crafting.craft(res, grid[:8] + [EMPTY.copy()], V121) is None
+
+
+def test_a_shulker_box_is_dyed_keeping_its_contents():
+    # ShulkerBoxColoring (1.20.5 - 1.21.1): one shulker box and one dye make the box of that colour,
+    # transmuteCopy keeping its components; 1.21.2 replaced it with transmute recipes
+    res = _resources(**{"minecraft:shulker_box_coloring": {"type": "minecraft:crafting_special_shulkerboxcoloring"}})
+    res.vanilla_data = True
+    box = ItemStack("minecraft:red_shulker_box")
+    items.set_component(box, "minecraft:custom_name", String("Loot"))
+    made = crafting.craft(res, [EMPTY.copy(), box, ItemStack("minecraft:lime_dye")] + [EMPTY.copy()] * 6, V121).result
+    assert (made.id, made.count) == ("minecraft:lime_shulker_box", 1) and made.component("minecraft:custom_name") == String("Loot")
+    assert crafting.craft(res, _grid({0: "shulker_box", 1: "lime_dye", 2: "red_dye"}), V121) is None
+    assert crafting.craft(res, _grid({0: "shulker_box", 1: "stick"}), V121) is None
