@@ -44,7 +44,7 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_entity_ticks, block_use, combat, crafters, living, nbt_ops,
+from emulator.world import (advancements, block_entity_ticks, block_use, combat, crafters, light, living, nbt_ops,
                            player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
@@ -252,6 +252,8 @@ class Runtime:
                 state.clocks.after(clocks, t)
             elif daylight:
                 state.daytime = start[2] + t
+                if t > 0:  # the last tick's updateSkyBrightness saw the day time before it advanced
+                    state.sky_darken = light.sky_darken(state.daytime - 1)
 
         self.rewards_cost = 0
         with nbt_ops.list_rules(self.packs.version):
@@ -286,6 +288,8 @@ class Runtime:
         state = self.state
         if state.clocks is not None:
             state.clocks.tick()
+        else:  # ServerLevel.tick: updateSkyBrightness, then tickTime
+            state.sky_darken = light.sky_darken(state.daytime)
         state.gametime += 1
         while (entry := state.schedule.pop_due(state.gametime)) is not None:
             if entry.is_tag:

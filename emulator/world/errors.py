@@ -197,3 +197,4 @@ class Unmodelled(CommandFailure):
 
     def __init__(self, reason: str) -> None:
         super().__init__("dpemu.unmodelled", reason, report=True)
+        self.reason = reason

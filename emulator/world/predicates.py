@@ -47,7 +47,7 @@ from typing import Callable
 import numpy as np
 
 from emulator.world import (advancement_progress, biomes, campfires, entity_components, entity_predicate_format,
-                            inventories, living, recipes, sight, sky)
+                            inventories, light, living, recipes, sight)
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -639,7 +639,7 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         return False
     block_pos = tuple(math.floor(v) for v in pos)
     unknown = None
-    for check in (_biome_check, _structure_check, _smokey_check, _sky_check):
+    for check in (_biome_check, _structure_check, _smokey_check, _light_check, _sky_check):
         try:
             if not check(predicate, ctx, block_pos):
                 return False
@@ -649,9 +649,6 @@ def location_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         return False
     if "fluid" in predicate and not _fluid_matches(predicate["fluid"], ctx, block_pos):
         return False
-    for key, why in _LOCATION_UNMODELLED.items():
-        if key in predicate:
-            raise Unmodelled(f"location predicate field '{key}' ({why})")
     if unknown is not None:
         raise unknown
     return True
@@ -681,16 +678,28 @@ def _smokey_check(predicate: dict, ctx: LootContext, pos) -> bool:
         ctx.state.blocks_in(ctx.dimension), pos, ctx.state.resources)
 
 
+def _light_check(predicate: dict, ctx: LootContext, pos) -> bool:
+    """``light``: LightPredicate, its ``light`` range over Level.getMaxLocalRawBrightness
+    (:func:`emulator.world.light.brightness`)."""
+    if "light" not in predicate:
+        return True
+    bounds = predicate["light"].get("light", {}) if isinstance(predicate["light"], dict) else {}
+    return _about("light", lambda: in_ints(bounds, light.brightness(ctx.state, ctx.dimension, pos)))
+
+
 def _sky_check(predicate: dict, ctx: LootContext, pos) -> bool:
-    """``can_see_sky``: equal to Level.canSeeSky at the block (:mod:`emulator.world.sky`)."""
-    return "can_see_sky" not in predicate or bool(predicate["can_see_sky"]) == sky.can_see_sky(
-        ctx.state, ctx.dimension, pos)
+    """``can_see_sky``: equal to Level.canSeeSky at the block (:func:`emulator.world.light.can_see_sky`)."""
+    return "can_see_sky" not in predicate or _about("can_see_sky", lambda: bool(predicate["can_see_sky"]) == (
+        light.can_see_sky(ctx.state, ctx.dimension, pos)))
 
 
-# what the world does not keep: LocationPredicate's fields that read it (tested last)
-_LOCATION_UNMODELLED = {
-    "light": "the emulator keeps no light levels",
-}
+def _about(field: str, check: Callable[[], bool]) -> bool:
+    """``check()``, its not-modelled reason naming the location predicate field."""
+    try:
+        return check()
+    except Unmodelled as reason:
+        raise Unmodelled(f"location predicate field '{field}' ({reason.reason})") from None
+
 
 
 def block_matches(predicate: dict, ctx: LootContext, pos) -> bool:

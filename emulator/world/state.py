@@ -530,6 +530,7 @@ class WorldState:
     # False in the test server's world (GameTestServer: WorldOptions without generated structures);
     # None where the world's structures are not known (the emulator generates no terrain)
     structures_generated: bool | None = None
+    sky_darken: int = 0  # Level.skyDarken: set from the day time as the overworld starts and each tick (light)
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)

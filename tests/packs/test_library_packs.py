@@ -1,7 +1,7 @@
 """The packs under tests/packs, written the way datapack libraries use the data-driven world, with
 their PackTest suites run on both backends:
 - gated: predicates and registry tags (a predicate-gated tick, location/time/score predicates, decimal range bounds,
-  a campfire's smoke, no structures in the test world, the sky seen or not, references, block and entity type tags);
+  a campfire's smoke, no structures in the test world, the sky seen or not, moonlight, references, block and entity type tags);
 - rewards: advancements (a player-tick hook that revokes itself, the location trigger, a reward
   chain, grant/revoke modes and criteria, the advancements selector);
 - healing: health set through instant effects, the effects_changed trigger and its conditions;
@@ -46,7 +46,7 @@ def test_the_packs_load_clean():
     assert gated.errors == [] and rewards.errors == []
     assert set(gated.predicates) == {"gated:marked_undead", "gated:in_water", "gated:night", "gated:healthy",
                                      "gated:on_soft_ground", "gated:seasoned", "gated:in_smoke",
-                                     "gated:in_village", "gated:outdoors"}
+                                     "gated:in_village", "gated:outdoors", "gated:moonlit"}
     undead = gated.registry_tags["entity_type"]["gated:undead"]
     # the built-in #minecraft:zombies nested, the optional missing tag skipped (TagLoader)
     assert {"minecraft:husk", "minecraft:zombie", "minecraft:skeleton"} <= undead.members

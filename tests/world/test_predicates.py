@@ -395,7 +395,7 @@ def test_the_old_item_predicate_fields_are_ignored_from_1_20_5(state):
 
 @pytest.mark.parametrize("field,value,reason", [
     ("biomes", "minecraft:plains", "generator"), ("structures", "#minecraft:village", "structures of this world"),
-    ("light", {"light": {"min": 1}}, "no light levels"), ("can_see_sky", True, "sky light of t:void"),
+    ("light", {"light": {"min": 1}}, "'light' .*sky light of t:void"), ("can_see_sky", True, "sky light of t:void"),
 ])
 def test_location_fields_the_world_does_not_keep_are_reported(state, field, value, reason):
     # LocationPredicate.matches: biomes, structures, light and can_see_sky read what the
@@ -460,6 +460,25 @@ def test_can_see_sky_is_sky_light_15_straight_down(state):
         sees((0.5, 60.0, 0.5))
     place((0, 95, 0), "minecraft:stone")  # a full cube above decides it
     assert not sees((0.5, 60.0, 0.5))
+
+
+def test_light_is_the_sky_less_its_darkening_where_nothing_gives_light(state):
+    # LightPredicate: Level.getMaxLocalRawBrightness = max(block light, sky light - skyDarken);
+    # skyDarken = (int)((1 - d2) * 11), d2 from Mth.cos of the time of day (Level.updateSkyBrightness)
+    from emulator.world.light import sky_darken
+    level = lambda bounds, pos=(0.5, 64.0, 0.5), **kw: holds(  # noqa: E731
+        {"condition": "location_check", "predicate": {"light": {"light": bounds}}}, ctx(state, origin=pos, **kw))
+    assert [sky_darken(t) for t in (0, 6000, 12000, 13000, 18000, 23500)] == [0, 0, 0, 6, 11, 3]
+    state.sky_darken = sky_darken(18000)
+    assert level(4) and not level({"min": 5})  # midnight under the open sky: 15 - 11
+    assert level(0, dimension="minecraft:the_nether")  # no sky light, nothing lit
+    state.blocks.place((3, 64, 0), with_defaults(parse_block("minecraft:torch"), state.version))
+    with pytest.raises(Unmodelled, match="block light from minecraft:torch"):
+        level(4)
+    assert level(4, pos=(20.5, 64.0, 0.5))  # 20 steps away: no light reaches
+    state.blocks.place((20, 70, 0), with_defaults(parse_block("minecraft:stone"), state.version))
+    with pytest.raises(Unmodelled, match="sky light that does not come straight down"):
+        level(4, pos=(20.5, 64.0, 0.5))
 
 
 def test_the_player_predicate_reads_the_recipe_book(state):
