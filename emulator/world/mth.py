@@ -48,8 +48,11 @@ def f32(x) -> np.float32:
 
 
 def _build_sin_table() -> np.ndarray:
-    # (float)Math.sin((double)i * Math.PI * 2.0 / 65536.0), evaluated left to right in double.
-    return np.array([math.sin(i * math.pi * 2.0 / 65536.0) for i in range(65536)], dtype=np.float32)
+    # (float)Math.sin((double)i * Math.PI * 2.0 / 65536.0), evaluated left to right in double (numpy's
+    # products and quotient of doubles are IEEE's, as Python's: the same arguments), each sine the C
+    # library's, as math.sin: a third of the time a list of the sines took, at every import
+    angles = (np.arange(65536, dtype=np.float64) * math.pi * 2.0 / 65536.0).tolist()
+    return np.fromiter(map(math.sin, angles), dtype=np.float64, count=65536).astype(np.float32)
 
 
 SIN_TABLE = _build_sin_table()

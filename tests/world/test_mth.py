@@ -38,6 +38,13 @@ def test_sine_table_is_indexed_by_truncated_float_product():
     assert mth.SIN_TABLE.dtype == np.float32 and len(mth.SIN_TABLE) == 65536
 
 
+def test_sine_table_is_the_games_entry_by_entry():
+    # Mth's static initialiser: SIN[i] = (float)Math.sin((double)i * Math.PI * 2.0 / 65536.0), the
+    # product and quotient in double left to right (the table is built from numpy's doubles)
+    expected = [F32(math.sin(i * math.pi * 2.0 / 65536.0)) for i in range(65536)]
+    assert mth.SIN_TABLE.tobytes() == np.array(expected, dtype=np.float32).tobytes()
+
+
 def test_wrap_degrees_float():
     # Mth.wrapDegrees(float): f % 360 (sign of dividend), then >= 180 -> -360, < -180 -> +360.
     assert mth.wrap_degrees_f(180.0) == F32(-180.0)
