@@ -253,15 +253,19 @@ def _thrown(state, entity) -> None:
 def _snowball_hits(state, snowball, target) -> None:
     """Snowball.onHitEntity: ``thrown`` damage from the snowball, its owner responsible: 3 to a
     blaze, else 0 (a hurt all the same: HurtTime, ``player_hurt_entity`` for a player's snowball);
-    then the snowball breaks (onHit: discard). Its owner before the snowball left it, and what is
-    not living (boats, frames, interactions ...), are not modelled."""
+    then the snowball breaks (onHit: discard). An interaction entity is pickable but not hurt
+    (Entity.hurt): the snowball just breaks on it. Its owner before the snowball left it, and what
+    else is not living (boats, frames, crystals ...), are not modelled."""
     owner = _owner(state, snowball)
     if owner is not None and not _int(snowball.data, "LeftOwner", 0) and _root(target) is _root(owner):
         raise Unmodelled(f"{snowball.type} meeting its owner before it left it (Projectile.checkLeftOwner)")
-    if not living.is_living(target.type):
+    if target.type == "minecraft:interaction":
+        pass  # Entity.hurt: an interaction is not hurt (its attack record is a player's only)
+    elif not living.is_living(target.type):
         raise Unmodelled(f"{snowball.type} hitting {target.type} (its hurt)")
-    damage = 3.0 if target.type == "minecraft:blaze" else 0.0
-    combat.hurt(state, target, damage, DamageSource("minecraft:thrown", owner, snowball))
+    else:
+        damage = 3.0 if target.type == "minecraft:blaze" else 0.0
+        combat.hurt(state, target, damage, DamageSource("minecraft:thrown", owner, snowball))
     if snowball.alive:
         state.entities.kill(snowball)
 

@@ -139,6 +139,15 @@ def test_an_arrow_hurts_the_mob_in_its_way_by_ceil_speed_x_damage_and_is_gone(tm
     assert not any(d.unmodelled for d in emu.diagnostics)
 
 
+def test_a_snowball_breaks_on_an_interaction_entity(tmp_path):
+    # Interaction.isPickable: a projectile hits it; Entity.hurt does nothing to it; Snowball.onHit: discard
+    emu = world(tmp_path, "summon interaction 2.5 9.5 0.5 {width:1f,height:1f}\n"
+                          "summon snowball 0.5 10 0.5 {Motion:[1.0d,0.0d,0.0d]}\n")
+    emu.tick(2)
+    assert not any(e.type == "minecraft:snowball" for e in emu.state.entities.entities)
+    assert not any(d.unmodelled for d in emu.diagnostics)
+
+
 def test_a_spectral_arrow_makes_its_target_glow(tmp_path):
     # SpectralArrow.doPostHurtEffects: glowing for its Duration (200 unless set), amplifier 0
     emu = world(tmp_path, "summon pig 3.5 10 0.5 {NoAI:1b,NoGravity:1b}\n"
