@@ -38,6 +38,25 @@ def start_up_time(*args) -> float:
     return time.perf_counter() - start
 
 
+def interrupted(args: list[str], wait: float) -> tuple[subprocess.Popen, str, str]:
+    """Starts dpemu, sends it Ctrl-C after `wait` seconds and collects its output. The child gets
+    SIGINT's default action back: a shell starts background jobs with SIGINT ignored, and Python
+    then installs no KeyboardInterrupt handler, so the signal would never arrive. A child that
+    outlives the timeout is killed, never left spinning."""
+    process = subprocess.Popen([sys.executable, "-m", "emulator", *args], cwd=ROOT, text=True,
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        time.sleep(wait)
+        process.send_signal(signal.SIGINT)
+        out, err = process.communicate(timeout=120)
+    finally:
+        if process.poll() is None:
+            process.kill()
+            process.communicate()
+    return process, out, err
+
+
 def no_traceback(done: subprocess.CompletedProcess) -> None:
     assert "Traceback" not in done.stderr + done.stdout
 
@@ -144,11 +163,7 @@ def test_ctrl_c_prints_what_ran_and_exits_130(pack):
     root = pack({"t:tick": "scoreboard players add #n o 1"}, {**LOAD, "minecraft:tick": ["t:tick"]})
     args = ["run", str(root), "--backend", "python", "--watch", "#n o", "--ticks"]
     wait = 2 * start_up_time(*args, "1") + 2
-    process = subprocess.Popen([sys.executable, "-m", "emulator", *args, "100000000"], cwd=ROOT,
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(wait)
-    process.send_signal(signal.SIGINT)
-    out, err = process.communicate(timeout=120)
+    process, out, err = interrupted([*args, "100000000"], wait)
     assert process.returncode == 130, err
     assert "interrupted" in err and first_line(out).startswith("ticks: ")
     assert "Traceback" not in err and "Aborted" not in err
@@ -201,11 +216,7 @@ def test_ctrl_c_during_a_check_exits_130_without_a_traceback(tmp_path):
     functions = {f"t:f{i}": "\n".join(f"scoreboard players set #a{j} o {j}" for j in range(400)) for i in range(3000)}
     root = write_pack(tmp_path / "big", functions, {})
     wait = 1.5 * start_up_time("check", write_pack(tmp_path / "small", {"t:f": "say hi"}, {})) + 1
-    process = subprocess.Popen([sys.executable, "-m", "emulator", "check", str(root)], cwd=ROOT,
-                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    time.sleep(wait)
-    process.send_signal(signal.SIGINT)
-    out, err = process.communicate(timeout=120)
+    process, out, err = interrupted(["check", str(root)], wait)
     if process.returncode == 0:  # the check finished before the signal: nothing to judge
         pytest.skip("the check ended before Ctrl-C")
     assert process.returncode == 130 and "interrupted" in err
