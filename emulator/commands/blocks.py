@@ -47,22 +47,22 @@ def block_tag_test(env):
 
 def if_block(env, cond: ast.IfBlock, ctx) -> int:
     """``if block POS BLOCK``: 1 when the block matches."""
-    pos = block_pos(world_source(env.state, ctx), cond.pos)
+    pos = loaded_block_pos(env.state, ctx, cond.pos)
     return int(env.state.blocks_in(ctx.dimension).test(pos, block_argument(env, cond.block), block_tag_test(env)))
 
 
 def if_blocks(env, cond: ast.IfBlocks, ctx) -> int:
     """``if blocks START END DESTINATION all|masked``: the matching block count, or 0."""
     source = world_source(env.state, ctx)
-    found = env.state.blocks_in(ctx.dimension).compare_regions(
-        block_pos(source, cond.start), block_pos(source, cond.end), block_pos(source, cond.destination),
-        cond.mode == "masked")
+    start, end, destination = (loaded_block_pos(env.state, ctx, corner, source)
+                               for corner in (cond.start, cond.end, cond.destination))
+    found = env.state.blocks_in(ctx.dimension).compare_regions(start, end, destination, cond.mode == "masked")
     return found or 0
 
 
 def if_biome(env, cond: ast.IfBiome, ctx) -> int:
     """``if biome POS BIOME``: 1 when the biome there is BIOME or in tag ``#BIOME``."""
-    pos = block_pos(world_source(env.state, ctx), cond.pos)
+    pos = loaded_block_pos(env.state, ctx, cond.pos)
     return int(biomes.matches(env.state.resources, cond.biome, biomes.biome_at(env.state, ctx.dimension, pos)))
 
 
@@ -70,24 +70,34 @@ def if_biome(env, cond: ast.IfBiome, ctx) -> int:
 _WORLD_BORDER = 30_000_000
 
 
-def loaded_block_pos(env, ctx, pos: tuple[int, int, int]) -> tuple[int, int, int]:
-    """BlockPosArgument.getLoadedBlockPos (setblock, fill, fillbiome): a position outside the level's
-    build height (Level.isOutsideBuildHeight) or past 30,000,000 on x or z fails the command, "That
-    position is out of this world!" (Level.isInWorldBounds); every chunk is loaded here."""
+def loaded_block_pos(state, ctx, vec, source=None, dimension: str | None = None) -> tuple[int, int, int]:
+    """BlockPosArgument.getLoadedBlockPos, which every command reading a block position uses (setblock,
+    fill, fillbiome, clone, place, ``data … block``, ``execute if block|blocks|biome``, ``execute
+    store … block``, ``item … block``, ``loot`` with a block; only spawn points take any position):
+    the position, checked by ``in_world``. ``dimension`` is the position's level when it is not the
+    context's (clone's ``from``/``to``)."""
+    pos = block_pos(source or world_source(state, ctx), vec)
+    in_world(state, dimension or ctx.dimension, pos)
+    return pos
+
+
+def in_world(state, dimension: str, pos: tuple[int, int, int]) -> None:
+    """A position outside the level's build height (Level.isOutsideBuildHeight) or past 30,000,000
+    on x or z fails the command, "That position is out of this world!" (Level.isInWorldBounds);
+    every chunk is loaded here, so the game's "not loaded" never happens."""
     x, y, z = pos
-    height = env.state.entities.table.levels.build_height(ctx.dimension, env.state.version)
+    height = state.entities.table.levels.build_height(dimension, state.version)
     if height is None:
-        raise Unmodelled(f"the build height of {ctx.dimension} (its dimension type's min_y and height)")
+        raise Unmodelled(f"the build height of {dimension} (its dimension type's min_y and height)")
     if not (height[0] <= y < height[1] and -_WORLD_BORDER <= x < _WORLD_BORDER and -_WORLD_BORDER <= z < _WORLD_BORDER):
         raise CommandFailure("argument.pos.outofworld")
-    return pos
 
 
 def fillbiome_command(env, cmd: ast.GenericCommand, ctx) -> int:
     """``fillbiome FROM TO BIOME [replace FILTER]``: the cells set (FillBiomeCommand.fill)."""
     corners, words = _read(cmd, env.state.version)
     source = world_source(env.state, ctx)
-    start, end = (loaded_block_pos(env, ctx, block_pos(source, corner)) for corner in corners)
+    start, end = (loaded_block_pos(env.state, ctx, corner, source) for corner in corners)
     keep = None
     if len(words) > 2 and words[1] == "replace":
         resources, wanted = env.state.resources, words[2]
@@ -100,7 +110,7 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     corners, words = _read(cmd, env.state.version)
     spec, mode = with_defaults(block_argument(env, words[0]), env.state.version), (words[1] if len(words) > 1 else "replace")
     source = world_source(env.state, ctx)
-    positions = [loaded_block_pos(env, ctx, block_pos(source, corner)) for corner in corners]
+    positions = [loaded_block_pos(env.state, ctx, corner, source) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
         before = blocks.get(positions[0])
@@ -140,7 +150,8 @@ def clone_command(env, cmd: ast.GenericCommand, ctx) -> int:
     for level in (source_level, target_level):
         levels.level_id(level)  # DimensionArgument: an unknown level fails the command
     source = world_source(env.state, ctx)
-    start, end, destination = (block_pos(source, corner) for corner in read["corners"])
+    start, end, destination = (loaded_block_pos(env.state, ctx, corner, source, level) for corner, level
+                               in zip(read["corners"], (source_level, source_level, target_level)))
     blocks, target = env.state.blocks_in(source_level), env.state.blocks_in(target_level)
     keep = lambda pos: True  # noqa: E731 - replace
     if read["mask"] == "masked":
@@ -306,6 +317,9 @@ def place_command(env, cmd: ast.GenericCommand, ctx) -> int:
         raise Unmodelled(f"place template with rotation {rotation} and mirror {mirror} (rotated block states)")
     if float(integrity) < 1.0:
         raise Unmodelled("place template with an integrity below 1 (BlockRotProcessor's random)")
+    source = world_source(env.state, ctx)  # the position is an argument: read before the template
+    origin = loaded_block_pos(env.state, ctx, corner, source) if corner is not None else \
+        tuple(math.floor(v) for v in source.pos)
     data = env.state.resources.template_file(template_id)
     if data is None:
         raise CommandFailure("commands.place.template.invalid", template_id)
@@ -313,8 +327,6 @@ def place_command(env, cmd: ast.GenericCommand, ctx) -> int:
         template = structures.read_template(data)
     except structures.StructureError as error:
         raise CommandFailure("dpemu.structure.invalid", template_id, error, report=True) from None
-    source = world_source(env.state, ctx)
-    origin = block_pos(source, corner) if corner is not None else tuple(math.floor(v) for v in source.pos)
     if not structures.place(env.state, template, origin, ctx.dimension):
         raise CommandFailure("commands.place.template.failed")
     return 1

@@ -18,13 +18,13 @@ from abc import ABC, abstractmethod
 from typing import Callable
 
 from emulator.world import command_blocks, nbt_ops, stores
-from emulator.world.blocks import block_pos
 from emulator.world.entities import POS_LIMIT_XZ, POS_LIMIT_Y, Entity, entity_nbt, modify_entity
 from emulator.world.storage import CommandStorage
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound
 
 from . import entities
+from .blocks import loaded_block_pos
 from emulator.world.errors import CommandFailure
 
 
@@ -85,7 +85,7 @@ def accessor(env, target: ast.DataTarget, ctx) -> DataAccessor:
         return StorageAccessor(CommandStorage(state.storage), target.id)
     if isinstance(target, ast.EntityData):
         return EntityAccessor(entities.single(state, target.target, ctx))
-    return BlockAccessor(state, ctx.dimension, block_pos(entities.world_source(state, ctx), target.pos))
+    return BlockAccessor(state, ctx.dimension, loaded_block_pos(state, ctx, target.pos))
 
 
 # ---------------------------------------------------------------------- commands

@@ -9,7 +9,6 @@ from __future__ import annotations
 import json
 
 from emulator.world import enchanting, inventories, loot, text_components
-from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
 from emulator.world.item_predicates import matches
@@ -21,6 +20,7 @@ from mcfunction_parser.nbt import Compound, Int, IntArray, Short
 
 from . import entities
 from .advancements import broadcast_changes
+from .blocks import loaded_block_pos
 from .entities import executor, world_source
 
 
@@ -102,7 +102,7 @@ def clear(env, cmd: ast.Clear, ctx) -> int:
 
 # ---------------------------------------------------------------------- item
 def _container(env, pos_arg, ctx, source: bool) -> inventories.Container:
-    pos = block_pos(world_source(env.state, ctx), pos_arg)
+    pos = loaded_block_pos(env.state, ctx, pos_arg)
     found = inventories.container(env.state.blocks_in(ctx.dimension), pos, _version(env))
     if found is None:
         raise CommandFailure("commands.item.source.not_a_container" if source else
@@ -249,7 +249,8 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
     if cmd.source == "loot":
         return loot.roll_table(_table(env, cmd.table), loot_context(env, ctx))
     if cmd.source == "fish":  # LootCommand.dropFishingLoot: the origin is the block's centre
-        lctx = loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), origin=_centre(block_pos(source, cmd.pos)))
+        origin = _centre(loaded_block_pos(env.state, ctx, cmd.pos, source))
+        lctx = loot_context(env, ctx, tool=_tool(env, cmd.tool, ctx), origin=origin)
         return loot.roll_table(_table(env, cmd.table), lctx)
     if cmd.source == "kill":
         victim = entities.single(env.state, cmd.entity, ctx)
@@ -258,7 +259,7 @@ def _loot_items(env, cmd: ast.Loot, ctx) -> list[ItemStack]:
         table_id = victim.data.get("DeathLootTable") or "minecraft:entities/" + victim.type.split(":", 1)[-1]
         lctx = loot_context(env, ctx, this=victim, damage_source=DamageSource("minecraft:magic")).killed_by(executor(env.state, ctx))
         return loot.roll_table(_own_table(env, str(table_id)), lctx)
-    pos = block_pos(source, cmd.pos)
+    pos = loaded_block_pos(env.state, ctx, cmd.pos, source)
     blocks = env.state.blocks_in(ctx.dimension)
     block = blocks.get(pos)
     table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]

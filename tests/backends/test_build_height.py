@@ -1,5 +1,6 @@
-"""setblock, fill and fillbiome outside the level's build height or the world's border fail when
-they run, "That position is out of this world!" (BlockPosArgument.getLoadedBlockPos: Level.isInWorldBounds,
+"""Every command that reads a block position (setblock, fill, fillbiome, clone, place, data and
+execute on blocks, item and loot with a block) fails when it runs outside the level's build height
+or the world's border, "That position is out of this world!" (BlockPosArgument.getLoadedBlockPos: Level.isInWorldBounds,
 isOutsideBuildHeight and isInWorldBoundsHorizontal), on both backends; the function still loads
 (the positions parse: BlockPosArgument.parse reads any integer), so ``dpemu check`` accepts them."""
 from __future__ import annotations
@@ -9,11 +10,14 @@ from types import SimpleNamespace
 
 import pytest
 
-from emulator.commands.blocks import loaded_block_pos
+from emulator.commands.blocks import in_world
+from emulator.commands.entities import new_state
+from emulator.commands.env import Env
 from emulator.world.dimensions import Levels
 from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser.parse import parse_function
 from tests.backends.test_dimensions import FLAT, pack, run_both, score
+from tests.commands.test_data import run
 
 # (holder, command, succeeds): the overworld's build height is -64 – 319 (BuiltinDimensionTypes:
 # min_y -64, height 384), the nether's and the end's 0 – 255, x and z in [-30,000,000, 30,000,000)
@@ -33,6 +37,15 @@ CASES = [
     ("#nether_low", "execute in minecraft:the_nether run setblock 0 -1 0 stone", False),
     ("#shallow", "execute in t:shallow run setblock 0 79 0 stone", True),
     ("#shallow_over", "execute in t:shallow run setblock 0 80 0 stone", False),
+    # ExecuteCommand's conditions read their positions by BlockPosArgument.getLoadedBlockPos too
+    ("#unless_block_over", "execute unless block 9 320 9 stone", False),  # a failure, not a false test
+    ("#if_blocks", "execute if blocks 9 0 9 9 0 9 9 319 9 all", True),
+    ("#if_blocks_over", "execute if blocks 9 0 9 9 0 9 9 320 9 all", False),
+    ("#if_biome", "execute if biome 1 -64 1 minecraft:desert", True),
+    ("#if_biome_over", "execute if biome 1 -65 1 minecraft:desert", False),
+    ("#clone", "clone 0 0 0 1 1 1 5 318 5", True),
+    ("#clone_over", "clone 0 0 0 1 1 1 5 320 5", False),
+    ("#clone_from", "clone 0 319 0 0 320 0 5 5 5", False),
 ]
 
 
@@ -48,8 +61,20 @@ def _pack(tmp_path):
 
 def test_positions_outside_the_world_fail_when_run(tmp_path):
     emu = run_both(_pack(tmp_path))
-    assert {holder: score(emu, holder) for holder, _, _ in CASES} == {h: int(ok) for h, _, ok in CASES}
+    assert {holder: score(emu, holder) for holder, _, _ in CASES} == {h: ok if ok is None else int(ok) for h, _, ok in CASES}
     assert not emu.diagnostics  # a command's failure, as the game's: no error of the emulator's
+
+
+@pytest.mark.parametrize("command", [
+    "data get block 9 320 9",  # BlockDataAccessor, which `execute store … block` builds as well
+    "item replace block 9 320 9 container.0 with minecraft:stone",  # ItemCommands
+    "loot spawn 0 0 0 mine 9 320 9",  # LootCommand
+    "place template t:none 9 320 9",  # PlaceCommand: the position is read before the template
+])
+def test_the_other_block_readers_fail_with_the_games_message(command):
+    # each of these fails on an empty column anyway: the message tells the position check apart
+    with pytest.raises(CommandFailure, match="That position is out of this world!"):
+        run(Env(new_state(), {}, set()), command)
 
 
 def test_the_check_accepts_them():
@@ -58,22 +83,20 @@ def test_the_check_accepts_them():
     assert not diagnostics
 
 
-def _env(levels, version):
-    """What loaded_block_pos reads of a command's environment: the world's levels and release."""
-    return SimpleNamespace(state=SimpleNamespace(version=version, entities=SimpleNamespace(
-        table=SimpleNamespace(levels=levels))))
+def _state(levels, version):
+    """What in_world reads of the world: its levels and release."""
+    return SimpleNamespace(version=version, entities=SimpleNamespace(table=SimpleNamespace(levels=levels)))
 
 
 def test_the_message_and_the_heights_before_1_18():
-    ctx = SimpleNamespace(dimension="minecraft:overworld")
+    overworld = "minecraft:overworld"
     with pytest.raises(CommandFailure, match="That position is out of this world!"):
-        loaded_block_pos(_env(Levels(), (1, 21, 0)), ctx, (0, 320, 0))
+        in_world(_state(Levels(), (1, 21, 0)), overworld, (0, 320, 0))
     # before 1.18 every vanilla level's build height was 0 – 255
-    assert loaded_block_pos(_env(Levels(), (1, 17, 1)), ctx, (0, 255, 0)) == (0, 255, 0)
+    in_world(_state(Levels(), (1, 17, 1)), overworld, (0, 255, 0))
     with pytest.raises(CommandFailure):
-        loaded_block_pos(_env(Levels(), (1, 17, 1)), ctx, (0, -1, 0))
+        in_world(_state(Levels(), (1, 17, 1)), overworld, (0, -1, 0))
     # a dimension type that does not give its build height: not modelled, said so
-    odd = SimpleNamespace(dimension="t:odd")
     with pytest.raises(Unmodelled, match="build height of t:odd"):
-        loaded_block_pos(_env(Levels.from_packs({"t:odd": {"type": {"coordinate_scale": 1.0}}}, {}), (1, 21, 0)),
-                         odd, (0, 0, 0))
+        in_world(_state(Levels.from_packs({"t:odd": {"type": {"coordinate_scale": 1.0}}}, {}), (1, 21, 0)),
+                 "t:odd", (0, 0, 0))
