@@ -87,8 +87,6 @@ def in_world(state, dimension: str, pos: tuple[int, int, int]) -> None:
     every chunk is loaded here, so the game's "not loaded" never happens."""
     x, y, z = pos
     height = state.entities.table.levels.build_height(dimension, state.version)
-    if height is None:
-        raise Unmodelled(f"the build height of {dimension} (its dimension type's min_y and height)")
     if not (height[0] <= y < height[1] and -_WORLD_BORDER <= x < _WORLD_BORDER and -_WORLD_BORDER <= z < _WORLD_BORDER):
         raise CommandFailure("argument.pos.outofworld")
 

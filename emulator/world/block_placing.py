@@ -40,8 +40,6 @@ SKULLS = ("_skull", "_head")
 # the components a head's block entity reads, and the names it saves them under (SkullBlockEntity)
 _SKULL_READS = {"minecraft:profile": "profile", "minecraft:note_block_sound": "note_block_sound",
                 "minecraft:custom_name": "custom_name"}
-# the vanilla levels' build heights (their DimensionType's min_y, min_y + height)
-BUILD_LIMITS = {"minecraft:overworld": (-64, 320), "minecraft:the_nether": (0, 256), "minecraft:the_end": (0, 256)}
 
 
 def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | None:
@@ -56,7 +54,7 @@ def place(state, player, hand_slot: int, clicked, face: str, hit=None) -> str | 
     if player.gamemode == "adventure":
         return "pass"  # no can_place_on here (its block predicates are not modelled): refused
     entity = _placed_entity(stack, block_id)
-    low, high = _build_limits(player.dimension)
+    low, high = state.entities.table.levels.build_height(player.dimension, state.version)
     ctx = _context(state, placed_parts.PlaceContext(state, player, block_id, tuple(clicked), face,
                                                     tuple(hit) if hit is not None else tuple(clicked), True, high))
     if ctx is None or not low <= ctx.target[1] < high or _obstructed(state, ctx.target, player.dimension):
@@ -152,12 +150,6 @@ def _context(state, ctx):
 def _replaceable(block, ctx) -> bool:
     """BlockBehaviour.canBeReplaced: the replaceable tag, or a slab the item completes."""
     return block.id in REPLACEABLE or placed_parts.replaceable_by(ctx, block)
-
-
-def _build_limits(dimension: str) -> tuple[int, int]:
-    if dimension not in BUILD_LIMITS:
-        raise Unmodelled(f"the build height of {dimension} (its dimension type's min_y and height)")
-    return BUILD_LIMITS[dimension]
 
 
 def _obstructed(state, pos, dimension: str) -> bool:

@@ -16,7 +16,7 @@ dimension type files, for each dimension its type's ``coordinate_scale``.
 """
 from __future__ import annotations
 
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser.pack.clocks import DEFAULT_CLOCKS
 
 OVERWORLD = "minecraft:overworld"
@@ -69,12 +69,12 @@ class Levels:
             custom[name] = float(scale) if isinstance(scale, (int, float)) else 1.0
         return cls(custom, clocks, heights)
 
-    def build_height(self, name: str, version) -> tuple[int, int] | None:
-        """Level ``name``'s build height as (lowest y, highest y + 1), None when its type does not say
-        (a vanilla type name dpemu does not know, an inline type without ``min_y`` and ``height``)."""
+    def build_height(self, name: str, version) -> tuple[int, int]:
+        """Level ``name``'s build height as (lowest y, highest y + 1); not modelled when its type does
+        not say (a vanilla type name dpemu does not know, an inline type without ``min_y`` and ``height``)."""
         found = self.heights.get(name)
         if found is None:
-            return None
+            raise Unmodelled(f"the build height of {name} (its dimension type's min_y and height)")
         if tuple(version) < (1, 18, 0) and name in VANILLA:
             return 0, 256
         return found[0], found[0] + found[1]
