@@ -18,7 +18,7 @@ from abc import ABC, abstractmethod
 from typing import Callable
 
 from emulator.world import command_blocks, nbt_ops, stores
-from emulator.world.entities import POS_LIMIT_XZ, POS_LIMIT_Y, Entity, entity_nbt, modify_entity
+from emulator.world.entities import POS_LIMIT_XZ, POS_LIMIT_Y, Entity, EntityStore, entity_nbt
 from emulator.world.storage import CommandStorage
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Compound
@@ -52,14 +52,14 @@ class StorageAccessor(DataAccessor):
 
 
 class EntityAccessor(DataAccessor):
-    def __init__(self, entity: Entity) -> None:
-        self.entity = entity
+    def __init__(self, entity: Entity, store: EntityStore) -> None:
+        self.entity, self.store = entity, store
 
     def read(self) -> Compound:
         return entity_nbt(self.entity)
 
     def change(self, edit):
-        return modify_entity(self.entity, edit)
+        return self.store.modify(self.entity, edit)
 
 
 class BlockAccessor(DataAccessor):
@@ -84,7 +84,7 @@ def accessor(env, target: ast.DataTarget, ctx) -> DataAccessor:
     if isinstance(target, ast.StorageData):
         return StorageAccessor(CommandStorage(state.storage), target.id)
     if isinstance(target, ast.EntityData):
-        return EntityAccessor(entities.single(state, target.target, ctx))
+        return EntityAccessor(entities.single(state, target.target, ctx), state.entities)
     return BlockAccessor(state, ctx.dimension, loaded_block_pos(state, ctx, target.pos))
 
 

@@ -26,7 +26,7 @@ Public API
   (a vehicle's riders in ``Passengers``, as Entity.saveWithoutId writes them).
 - ``load_nbt(entity, compound)``: ``Entity.load`` (Pos clamped, Motion over 10 dropped, Rotation % 360,
   Tags and CustomName only when present, the common fields read with typed getters, display render
-  fields as ``Display`` reads them, the rest kept as is). ``modify_entity(entity, change)``: the ``data`` entity
+  fields as ``Display`` reads them, the rest kept as is). ``EntityStore.modify(entity, change)``: the ``data`` entity
   accessor: ``change`` edits a fresh NBT view, which is loaded back with the UUID kept; players fail
   "Unable to modify player data".
 
@@ -526,19 +526,6 @@ def load_nbt(entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
     entity.refresh_sizes()  # an armor stand's Marker or Small, a baby's Age, the scale attribute
 
 
-def modify_entity(entity: Entity, change: Callable[[Compound], object]):
-    """Run a ``data`` change on the entity's NBT view and load the result back (UUID kept).
-
-    ``change`` may raise ``CommandFailure``; then the entity is untouched. Returns its result.
-    """
-    nbt = entity_nbt(entity)
-    result = change(nbt)
-    if entity.is_player:
-        raise CommandFailure("commands.data.entity.invalid")
-    load_nbt(entity, nbt, keep_uuid=True)
-    return result
-
-
 def _base_data(type_id: str, version=(1, 21, 11)) -> Compound:
     """The fields every entity saves besides the modelled ones, at their spawn values (in the
     layout of the release ``version``)."""
@@ -612,15 +599,32 @@ class EntityStore:
         if nbt:
             full = entity_nbt(entity)
             full.update(copy_tag(nbt))
-            load_nbt(entity, full)
+            self._load(entity, full)
             if self.by_uuid(entity.uuid) is not None:
                 raise CommandFailure("commands.summon.failed.uuid")
-            team = entity.data.pop("Team", None) if living.is_living(type_id) else None
-            if isinstance(team, String):  # LivingEntity.readAdditionalSaveData joins it; nothing saves it
-                self.join_team(entity.score_holder, str(team))
         entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
         entity.team = self.team_of(entity.score_holder)  # a UUID a team already names
         return self._add(entity)
+
+    def modify(self, entity: Entity, change: Callable[[Compound], object]):
+        """Run a ``data`` change on the entity's NBT view and load the result back (UUID kept).
+
+        ``change`` may raise ``CommandFailure``; then the entity is untouched. Returns its result.
+        """
+        nbt = entity_nbt(entity)
+        result = change(nbt)
+        if entity.is_player:
+            raise CommandFailure("commands.data.entity.invalid")
+        self._load(entity, nbt, keep_uuid=True)
+        return result
+
+    def _load(self, entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:
+        """Entity.load: ``load_nbt``, and a living entity's ``Team`` joins that team
+        (LivingEntity.readAdditionalSaveData; nothing saves it back)."""
+        load_nbt(entity, nbt, keep_uuid=keep_uuid)
+        team = entity.data.pop("Team", None) if living.is_living(entity.type) else None
+        if isinstance(team, String):
+            self.join_team(entity.score_holder, str(team))
 
     def add_player(self, name: str, pos, yaw=0.0, pitch=0.0, gamemode: str = "survival", level: int = 0,
                    dimension: str = OVERWORLD) -> Entity:

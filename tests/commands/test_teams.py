@@ -58,3 +58,21 @@ def test_a_mob_summoned_with_team_joins_it(tmp_path):
     emu.call("t:go")
     assert [emu.score(h, "o") for h in ("#in", "#out", "#saved")] == [1, 1, 0]
     assert len(emu.state.teams.teams["a"].members) == 1
+
+
+def test_data_merge_with_team_joins_it_as_loading_does(tmp_path):
+    """``data merge entity`` loads the merged NBT (EntityDataAccessor.setData: Entity.load), so a
+    living entity's ``Team`` joins the team as a summon's does; a marker keeps it as plain data."""
+    emu = emulator(tmp_path, "python", {"t:go": "\n".join([
+        "team add a",
+        "summon pig 0 0 0 {Tags:[\"p\"]}",
+        "summon marker 0 0 0 {Tags:[\"m\"]}",
+        "data merge entity @e[tag=p,limit=1] {Team:\"a\"}",
+        "data merge entity @e[tag=m,limit=1] {Team:\"a\"}",
+        "execute store result score #in o if entity @e[team=a]",
+        "execute store success score #saved o run data get entity @e[tag=p,limit=1] Team",
+        "execute store success score #kept o run data get entity @e[tag=m,limit=1] Team",
+    ])})
+    emu.call("t:go")
+    assert [emu.score(h, "o") for h in ("#in", "#saved", "#kept")] == [1, 0, 1]
+    assert emu.state.teams.teams["a"].members == [emu.state.entities.entities[0].score_holder]

@@ -14,7 +14,7 @@ from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, String
 from emulator.world import java_random, nbt_ops, rotation, teleport
-from emulator.world.entities import EntityStore, entity_nbt, load_nbt, modify_entity, uuid_string
+from emulator.world.entities import EntityStore, entity_nbt, load_nbt, uuid_string
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.selectors import SelectorWorld, select, select_one
 from emulator.world.source import Source
@@ -95,22 +95,22 @@ def test_entity_nbt_view_and_load_back():
     assert e.pos == (0.0, 0.0, 0.0)
 
 
-def test_modify_entity_keeps_uuid_and_refuses_players():
+def test_modifying_an_entity_keeps_its_uuid_and_refuses_players():
     store = EntityStore()
     e = store.summon("minecraft:marker", (0, 0, 0))
     uuid = e.uuid
-    modify_entity(e, lambda nbt: nbt_ops.modify(nbt, path("UUID", "UUID"), "set", [nbt_ops.copy_tag(
+    store.modify(e, lambda nbt: nbt_ops.modify(nbt, path("UUID", "UUID"), "set", [nbt_ops.copy_tag(
         nbt["UUID"].__class__([Int(1), Int(2), Int(3), Int(4)]))]))
     assert e.uuid == uuid  # EntityDataAccessor.setData restores the UUID
-    modify_entity(e, lambda nbt: nbt_ops.set_path(nbt, path("data.x", "data", "x"), Int(3)))
+    store.modify(e, lambda nbt: nbt_ops.set_path(nbt, path("data.x", "data", "x"), Int(3)))
     assert e.data["data"] == {"x": 3}
     with pytest.raises(CommandFailure, match="Nothing changed"):
-        modify_entity(e, lambda nbt: nbt_ops.modify(nbt, path("data.x", "data", "x"), "set", [Int(3)]))
-    modify_entity(e, lambda nbt: nbt_ops.data_merge(nbt, Compound(Rotation=List([Float(90.0), Float(0.0)]))))
+        store.modify(e, lambda nbt: nbt_ops.modify(nbt, path("data.x", "data", "x"), "set", [Int(3)]))
+    store.modify(e, lambda nbt: nbt_ops.data_merge(nbt, Compound(Rotation=List([Float(90.0), Float(0.0)]))))
     assert e.yaw == F32(90.0)
     steve = store.add_player("Steve", (0, 0, 0))
     with pytest.raises(CommandFailure, match="Unable to modify player data"):
-        modify_entity(steve, lambda nbt: nbt_ops.set_path(nbt, path("x", "x"), Int(1)))
+        store.modify(steve, lambda nbt: nbt_ops.set_path(nbt, path("x", "x"), Int(1)))
 
 
 # ----------------------------------------------------------------------------- selectors
@@ -418,16 +418,16 @@ def test_display_entities_save_their_render_fields():
     nbt = entity_nbt(d)
     assert nbt["transformation"]["scale"] == [1.0, 1.0, 1.0] and type(nbt["transformation"]["scale"][0]) is Float
     assert nbt["teleport_duration"] == 59 and nbt["billboard"] == "center" and nbt["item_display"] == "none"
-    modify_entity(d, lambda n: nbt_ops.set_path(n, path("transformation.translation", "transformation", "translation"),
-                                                List([Double(0.5), Double(1.0), Double(0.1)])))
+    store.modify(d, lambda n: nbt_ops.set_path(n, path("transformation.translation", "transformation", "translation"),
+                                               List([Double(0.5), Double(1.0), Double(0.1)])))
     t = entity_nbt(d)["transformation"]
     assert t["translation"] == [0.5, 1.0, float(F32(0.1))] and type(t["translation"][0]) is Float
     assert t["left_rotation"] == [0.0, 0.0, 0.0, 1.0]
     # A partial transformation does not decode: the previous one stays.
-    modify_entity(d, lambda n: nbt_ops.set_path(n, path("transformation", "transformation"),
-                                                Compound(scale=List([Float(2.0)] * 3))))
+    store.modify(d, lambda n: nbt_ops.set_path(n, path("transformation", "transformation"),
+                                               Compound(scale=List([Float(2.0)] * 3))))
     assert entity_nbt(d)["transformation"] == t
-    modify_entity(d, lambda n: nbt_ops.set_path(n, path("start_interpolation", "start_interpolation"), Int(0)))
+    store.modify(d, lambda n: nbt_ops.set_path(n, path("start_interpolation", "start_interpolation"), Int(0)))
     assert "start_interpolation" not in entity_nbt(d)  # read, never saved
 
 

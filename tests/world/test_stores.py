@@ -58,7 +58,7 @@ def test_store_into_entities():
     def store_entity(entity, p, type_name, value, scale):
         """ExecuteCommand.storeData through the entity's accessor: the tags changed, 0 on a failure."""
         try:
-            return EntityAccessor(entity).change(lambda root: stores.store(root, p, type_name, value, scale))
+            return EntityAccessor(entity, store).change(lambda root: stores.store(root, p, type_name, value, scale))
         except CommandFailure:
             return 0
 
