@@ -20,8 +20,9 @@ from mcfunction_parser.ast import FunctionTag, TagEntry
 from mcfunction_parser.diagnostics import ERROR, Diagnostic, Loc
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json
 
-_NAMESPACE = r"[a-z0-9_.-]+"
-_RESOURCE_LOCATION = re.compile(rf"(?:{_NAMESPACE}:)?[a-z0-9_./-]+")
+# ResourceLocation.read: either part may be empty (isValidNamespace and isValidPath find no
+# character to refuse in ""; an empty namespace is minecraft's)
+_RESOURCE_LOCATION = re.compile(r"(?:[a-z0-9_.-]*:)?[a-z0-9_./-]*")
 
 
 @dataclass
@@ -33,8 +34,10 @@ class FailedTag:
 
 
 def normalise_id(text: str) -> str:
-    """``foo`` -> ``minecraft:foo``; a namespaced id is unchanged."""
-    return text if ":" in text else f"minecraft:{text}"
+    """``foo`` and ``:foo`` -> ``minecraft:foo``; a namespaced id is unchanged."""
+    if ":" not in text:
+        return f"minecraft:{text}"
+    return f"minecraft{text}" if text.startswith(":") else text
 
 
 def read_tag_file(path: PackPath, shown: str, diagnostics: list[Diagnostic], kind: str = "function tag"

@@ -95,6 +95,16 @@ def test_bad_json_has_line_and_column_and_other_tags_load(make_pack):
     assert loaded.resolve_tag("a:good") == ["a:x"]
 
 
+def test_empty_parts_of_an_id_are_valid_and_resolve_like_the_game(make_pack):
+    # ResourceLocation.read: an empty path is valid (isValidPath finds nothing to refuse), an empty
+    # namespace is minecraft's; the entries then name what they name (here: nothing that exists)
+    root = make_pack(files={**_functions("x"), TAG.format("a", "t"): tag("a:x", "#a:", ":x")})
+    messages = [d.message for d in load_packs([root]).errors]
+    assert not any("invalid resource location" in m for m in messages)
+    assert any("function tag #a: does not exist" in m for m in messages)
+    assert any("function minecraft:x does not exist" in m for m in messages)
+
+
 def test_malformed_tag_files(make_pack):
     root = make_pack(files={TAG.format("a", "novalues"): '{"replace": false}',
                             TAG.format("a", "badentry"): '{"values": [3]}',
