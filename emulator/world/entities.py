@@ -561,6 +561,7 @@ class EntityStore:
         self.clock: Callable[[], int] = lambda: 0  # the server ticks run so far (WorldState.tick)
         self.changes = 0  # entities that came into ``entities`` or left it so far
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
+        self._players: tuple[int, list[Entity]] = (0, [])  # (changes then, ``players()``)
 
     def bind_scoreboard(self, scoreboard) -> None:
         """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
@@ -669,9 +670,13 @@ class EntityStore:
         return next((e for e in self.entities if e.score_holder == name), None)
 
     def players(self) -> list[Entity]:
-        """The players online, in the server's player list order (the order they joined)."""
-        ints = self.table.ints
-        return sorted((e for e in self.entities if e.is_player), key=lambda e: ints[e.order, EI_JOIN])
+        """The players online, in the server's player list order (the order they joined); found
+        again only when entities came or left (selectors and advancements ask every tick)."""
+        if self._players[0] != self.changes:
+            ints = self.table.ints
+            self._players = (self.changes, sorted((e for e in self.entities if e.is_player),
+                                                  key=lambda e: ints[e.order, EI_JOIN]))
+        return list(self._players[1])
 
     def living(self) -> list[Entity]:
         alive = self.table.ints[:, EI_ALIVE].tolist()  # one read of the column: this runs every tick
