@@ -375,8 +375,8 @@ def test_position_store_shortcut_equals_the_full_round_trip(kind, axis, value, s
     slow, fast = (s.summon(type_id, (1.5, 64.0, -2.25), nbt) for s in stores_)
     cmd, _ = parse_command(f"execute store result entity @s Pos[{axis}] double 1 run say x", Loc("t", 1, 1))
     sub = dataclasses.replace(cmd.subcommands[0], scale=scale)
-    data.EntityAccessor(slow).change(lambda root: stores.store(root, sub.path, "double", value, sub.scale))
-    data.store(data.EntityAccessor(fast), sub, value)
+    data.EntityAccessor(slow, stores_[0]).change(lambda root: stores.store(root, sub.path, "double", value, sub.scale))
+    data.store(data.EntityAccessor(fast, stores_[1]), sub, value)
     assert fast.pos == slow.pos
     assert nbt_ops.tags_equal(entity_nbt(fast), entity_nbt(slow))
     assert (fast.yaw, fast.pitch, fast.motion, fast.tags) == (slow.yaw, slow.pitch, slow.motion, slow.tags)
