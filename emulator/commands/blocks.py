@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from emulator.world import biomes, command_blocks, crafters, rails, structures
+from emulator.world import biomes, block_breaking, command_blocks, crafters, inventories, rails, structures
 from emulator.world.blocks import BlockSpec, block_pos, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
@@ -111,9 +111,7 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     positions = [loaded_block_pos(env.state, ctx, corner, source) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
-        before = blocks.get(positions[0])
-        count = blocks.setblock(positions[0], spec, mode)
-        _placed(env, ctx, spec)(positions[0], before)
+        count = _setblock(env, ctx, blocks, positions[0], spec, mode)
         _neighbours_updated(blocks, positions[:1], spec)
         command_blocks.after_change(env.state, ctx.dimension, positions[:1])
         crafters.after_change(env.state, ctx.dimension, positions[:1])
@@ -129,7 +127,8 @@ def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
     def on_placed(pos, before):
         changed.append(pos)
         placed(pos, before)
-    count = blocks.fill(positions[0], positions[1], spec, mode, block_filter, on_placed)
+    count = blocks.fill(positions[0], positions[1], spec, mode, block_filter, on_placed,
+                        lambda pos: _clear_or_destroy(env, ctx, blocks, pos, mode))
     _neighbours_updated(blocks, changed, spec)  # FillCommand: blockUpdated for each block placed
     if spec.id in NEIGHBOUR_READERS or blocks.has_any(NEIGHBOUR_READERS):  # one look over the level's blocks
         command_blocks.after_change(env.state, ctx.dimension, changed)
@@ -233,6 +232,31 @@ def _placed(env, ctx, spec: BlockSpec):
         if before.id != spec.id and blocks.get(pos).id == spec.id:
             rails.join(blocks, pos, command_blocks.has_neighbour_signal(level, pos))
     return join
+
+
+def _setblock(env, ctx, blocks, pos, spec: BlockSpec, mode: str) -> int:
+    """SetBlockCommand.setBlock: ``keep`` fails on a block that is not air; ``destroy`` breaks the
+    block with its drops and places nothing when both it and the new block are air (still a
+    success); the other modes clear the block's contents first (Clearable.tryClear), so replacing a
+    chest by the same chest fails with the chest emptied."""
+    if mode == "keep" and not blocks.get(pos).is_air:
+        raise CommandFailure("commands.setblock.failed")
+    _clear_or_destroy(env, ctx, blocks, pos, mode)
+    if mode == "destroy" and spec.state.is_air and blocks.get(pos).is_air:
+        return 1
+    before = blocks.get(pos)
+    count = blocks.setblock(pos, spec)
+    _placed(env, ctx, spec)(pos, before)
+    return count
+
+
+def _clear_or_destroy(env, ctx, blocks, pos, mode: str) -> None:
+    """What setblock and fill do to a block before placing theirs: ``destroy`` breaks it with its
+    drops (Level.destroyBlock), the other modes empty its contents (Clearable.tryClear; fill runs it
+    after the destroy too, on what is left)."""
+    if mode == "destroy":
+        block_breaking.destroy(env.state, pos, ctx.dimension)
+    inventories.try_clear(blocks, pos, env.state.version)
 
 
 def _neighbours_updated(blocks, positions, spec: BlockSpec) -> None:

@@ -24,6 +24,7 @@ from emulator.world import inventories, loot, statistics, tools
 from emulator.world.blocks import BlockState, parse_block, with_defaults
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.items import EMPTY
 from emulator.world.loot_context import LootContext
 from mcfunction_parser.nbt import Compound, Double, Float, List, Short
 
@@ -57,7 +58,8 @@ NEEDS_TOOL = frozenset("minecraft:" + n for n in (
 def destroy_block(state, player, pos) -> bool:
     """ServerPlayerGameMode.destroyBlock for the player at ``pos``."""
     pos = tuple(pos)
-    block = state.blocks.get(pos)
+    blocks = state.blocks_in(player.dimension)
+    block = blocks.get(pos)
     held = inventories.entity_slot(player, inventories.MAINHAND, state.version).get()
     if player.gamemode == "creative" and held.id.endswith(("_sword", "trident", "mace")):
         return False  # Item.canDestroyBlock: weapons do not break blocks in creative
@@ -67,22 +69,39 @@ def destroy_block(state, player, pos) -> bool:
         return False  # Player.blockActionRestricted (adventure's can_break is not modelled: refused)
     if block.is_air:
         return True  # Level.removeBlock changes nothing: nothing to drop
-    if any(key in ("half", "part") for key, _ in block.properties):
-        raise Unmodelled(f"breaking {block.id}: its other half (Block.playerWillDestroy)")
+    _one_block(block)
     if player.gamemode == "creative":
-        _remove(state, pos, block)
+        _remove(state, pos, block, player.dimension)
         return True
     harvest = _can_harvest(state, block, held)
-    drops = _drops(state, player, pos, block, held) if harvest else []
-    _remove(state, pos, block)
+    drops = _drops(state, pos, block, player.dimension, player, held) if harvest else []
+    _remove(state, pos, block, player.dimension)
     tools.mine_block(state, player, inventories.entity_slot(player, inventories.MAINHAND, state.version), block.id)
     if harvest:
         statistics.award(state, player, statistics.stat_name("mined", block.id))
         _exhaust(player, MINING_EXHAUSTION)
-        if state.gamerules.get("doTileDrops") != "false":
-            for stack in drops:
-                _pop(state, pos, stack, player.dimension)
+        _pop_all(state, pos, drops, player.dimension)
     return True
+
+
+def destroy(state, pos, dimension: str) -> bool:
+    """Level.destroyBlock(pos, true), which setblock's and fill's ``destroy`` mode run: False on air;
+    else the block's drops pop (Block.dropResources with no tool and no entity: the loot table's own
+    conditions decide, no tool is required) and the block goes (water where it was waterlogged)."""
+    pos = tuple(pos)
+    block = state.blocks_in(dimension).get(pos)
+    if block.is_air:
+        return False
+    _one_block(block)
+    drops = _drops(state, pos, block, dimension, None, EMPTY.copy())
+    _pop_all(state, pos, drops, dimension)
+    _remove(state, pos, block, dimension)
+    return True
+
+
+def _one_block(block: BlockState) -> None:
+    if any(key in ("half", "part") for key, _ in block.properties):
+        raise Unmodelled(f"breaking {block.id}: its other half (Block.playerWillDestroy, updateShape)")
 
 
 def _can_harvest(state, block: BlockState, held) -> bool:
@@ -96,27 +115,37 @@ def _can_harvest(state, block: BlockState, held) -> bool:
     return found is not None and found.correct_for_drops(block.id, state.resources)
 
 
-def _drops(state, player, pos, block: BlockState, held) -> list:
-    """Block.dropResources: the block's loot table with the tool, the block and its entity."""
+def _drops(state, pos, block: BlockState, dimension: str, entity, tool) -> list:
+    """Block.dropResources: the block's loot table with the tool, the block, its entity and the
+    entity breaking it (none for a command's destroy)."""
     if block.id.endswith("_ore") or "sculk" in block.id or block.id == "minecraft:spawner":
         raise Unmodelled(f"the experience {block.id} drops when mined")
-    held_items = inventories.container(state.blocks, pos, state.version)
+    blocks = state.blocks_in(dimension)
+    held_items = inventories.container(blocks, pos, state.version)
     if held_items is not None and any(not held_items.slot(i).get().is_empty for i in range(held_items.size)):
         raise Unmodelled(f"the contents {block.id} spills when mined")
     table_id = "minecraft:blocks/" + block.id.split(":", 1)[-1]
     table = state.resources.loot_table(table_id) or {}  # none: LootTable.EMPTY, nothing drops
-    ctx = LootContext(state, (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), this=player, tool=held, block_state=block,
-                      block_entity=state.blocks.entity(pos), dimension=player.dimension, random=state.resources.random)
+    ctx = LootContext(state, (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), this=entity, tool=tool, block_state=block,
+                      block_entity=blocks.entity(pos), dimension=dimension, random=state.resources.random)
     try:
         return loot.roll_table(table, ctx)
     except CommandFailure as error:
         raise Unmodelled(error.message) from None
 
 
-def _remove(state, pos, block: BlockState) -> None:
+def _remove(state, pos, block: BlockState, dimension: str) -> None:
     """Level.removeBlock: air, or water where the block was waterlogged."""
     water = dict(block.properties).get("waterlogged") == "true"
-    state.blocks.setblock(pos, with_defaults(parse_block("minecraft:water" if water else "minecraft:air"), state.version))
+    state.blocks_in(dimension).setblock(pos, with_defaults(parse_block("minecraft:water" if water else "minecraft:air"),
+                                                           state.version))
+
+
+def _pop_all(state, pos, drops, dimension: str) -> None:
+    """Block.popResource for each stack, unless the doTileDrops rule is off."""
+    if state.gamerules.get("doTileDrops") != "false":
+        for stack in drops:
+            _pop(state, pos, stack, dimension)
 
 
 def _exhaust(player, amount) -> None:

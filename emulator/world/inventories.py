@@ -333,6 +333,31 @@ def container(blocks, pos, version) -> Container | None:
     return None if size is None else Container(nbt, size, version)
 
 
+def try_clear(blocks, pos, version) -> None:
+    """Clearable.tryClear, which setblock and fill run on the block they are about to replace: a
+    Container's items go (Container.clearContent), a campfire's too, a lectern's book
+    (LecternBlockEntity.setBook(EMPTY): Book and Page are no longer saved) and a jukebox's record
+    (JukeboxBlockEntity.setTheItem(EMPTY) turns its has_record state false)."""
+    nbt = blocks.entity(pos)
+    if nbt is None:
+        return
+    block = blocks.get(pos)
+    if block.id in CAMPFIRES:
+        nbt["Items"] = List()
+        return
+    if block.id == "minecraft:lectern":
+        nbt.pop("Book", None)
+        nbt.pop("Page", None)
+        return
+    held = container(blocks, pos, version)
+    for index in range(held.size if held is not None else 0):
+        if not held.slot(index).get().is_empty:
+            held.slot(index).set(EMPTY.copy())
+    if block.id == "minecraft:jukebox" and ("has_record", "true") in block.properties:
+        blocks.set_state(pos, type(block)(block.id, tuple((k, "false" if k == "has_record" else v)
+                                                          for k, v in block.properties)))
+
+
 def crafter_loaded(nbt: Compound) -> None:
     """CrafterBlockEntity.loadAdditional then saveAdditional: ``crafting_ticks_remaining`` and
     ``triggered`` read as ints (getInt: 0 when missing or not a number), ``disabled_slots`` the
