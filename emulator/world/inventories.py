@@ -91,6 +91,10 @@ CONTAINER_SIZES = {
     "minecraft:furnace": 3, "minecraft:smoker": 3, "minecraft:blast_furnace": 3, "minecraft:brewing_stand": 5,
     "minecraft:chiseled_bookshelf": 6,
 }
+# the RandomizableContainer block entities: those that roll a LootTable when first opened
+RANDOMIZABLE_CONTAINERS = frozenset({"minecraft:chest", "minecraft:trapped_chest", "minecraft:barrel", "minecraft:hopper",
+                                     "minecraft:dispenser", "minecraft:dropper", CRAFTER, "minecraft:decorated_pot"}
+                                    | SHULKER_BOXES)
 # ContainerSingleItem block entities: one slot, saved under a key of its own
 SINGLE_ITEM_BLOCKS = {"minecraft:decorated_pot": "item", "minecraft:jukebox": "RecordItem"}
 # the keys under which entities and block entities save item stacks (a stack, a list of stacks, or

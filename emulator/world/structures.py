@@ -17,13 +17,13 @@ which is used), ``blocks`` (``{pos: [x, y, z], state: palette index, nbt?}``) an
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
-from emulator.world import projectiles
-from emulator.world.blocks import BlockSpec, with_defaults
+from emulator.world import inventories, projectiles
+from emulator.world.blocks import BlockSpec, parse_block, with_defaults
 from emulator.world.errors import CommandFailure
 from emulator.world.nbt_binary import NbtFormatError, read_nbt
-from mcfunction_parser.nbt import Compound, Double, Int, List, String
+from mcfunction_parser.nbt import Compound, Double, Int, List, Long, String
 from mcfunction_parser.pack.versions import uses_singular_folders
 
 
@@ -121,6 +121,16 @@ def _ints(value, where: str) -> tuple[int, int, int]:
     return tuple(int(v) for v in value)
 
 
+def _with_loot_seed(state, spec: BlockSpec) -> BlockSpec:
+    """A RandomizableContainer placed with a ``LootTable`` gets a fresh ``LootTableSeed`` (the
+    placement's random's nextLong; the emulator's random stands in for the structure's)."""
+    if spec.nbt is None or "LootTable" not in spec.nbt or spec.id not in inventories.RANDOMIZABLE_CONTAINERS:
+        return spec
+    nbt = Compound(spec.nbt)
+    nbt["LootTableSeed"] = Long(state.resources.random.getrandbits(64) - 2**63)
+    return replace(spec, nbt=nbt)
+
+
 def place(state, template: Template, origin: tuple[int, int, int], dimension: str = "minecraft:overworld") -> bool:
     """Put ``template``'s blocks and entities into level ``dimension`` with its corner at
     ``origin``; False, placing nothing, when it has neither blocks nor entities or a size of 0
@@ -129,11 +139,14 @@ def place(state, template: Template, origin: tuple[int, int, int], dimension: st
         return False
     ox, oy, oz = origin
     blocks = state.blocks_in(dimension)
+    barrier = with_defaults(parse_block("minecraft:barrier"), state.version)
     for (x, y, z), spec in template.blocks:
-        try:
-            blocks.setblock((ox + x, oy + y, oz + z), with_defaults(spec, state.version))
-        except CommandFailure:
-            pass  # the same block is there already
+        pos = (ox + x, oy + y, oz + z)
+        if spec.nbt is not None:  # the old contents cleared and a barrier set first: the block and its data always load
+            inventories.try_clear(blocks, pos, state.version)
+            blocks.place(pos, barrier)
+            spec = _with_loot_seed(state, spec)
+        blocks.place(pos, with_defaults(spec, state.version))  # else the same state already there stays as it is
     for (x, y, z), nbt in template.entities:
         data = Compound((k, v) for k, v in nbt.items() if k not in ("id", "UUID", "Pos"))
         try:

@@ -8,7 +8,10 @@ from tests.testing.test_structures import BLOCKS, ENTITY, PALETTE, ints, nbt_fil
 
 TEST = "\n".join([
     "scoreboard objectives add t dummy",
+    # the same chest already there: cleared, replaced by a barrier, and the template's loaded
+    "setblock ~5 ~1 ~ chest{Lock:\"old\",Items:[{Slot:0b,id:\"minecraft:stone\",count:1}]}",
     "place template demo:room ~3 ~ ~",
+    "assert not block ~5 ~1 ~ chest{Items:[{}]}",
     "assert block ~3 ~ ~ stone",
     "assert block ~4 ~ ~ oak_stairs[facing=east]",
     "assert block ~5 ~1 ~ chest{Lock:\"key\"}",
@@ -40,3 +43,17 @@ def test_a_rotated_or_partial_placement_is_not_modelled(tmp_path):
     found = results(root, "python")
     for test_id, why in (("demo:turned", "rotation clockwise_90"), ("demo:partial", "integrity below 1")):
         assert found[test_id].status == "inconclusive" and why in found[test_id].report(), found[test_id].report()
+
+
+def test_a_container_placed_with_a_loot_table_draws_its_seed(tmp_path):
+    # StructureTemplate.placeInWorld: a RandomizableContainer's LootTableSeed is the placement
+    # random's nextLong, whatever the template saved; other block entities keep their data as is
+    blocks = [{"pos": ints(0, 0, 0), "state": ("i", 2), "nbt": ("compound", {
+        "LootTable": ("str", "minecraft:chests/simple_dungeon"), "LootTableSeed": ("l", 7)})}]
+    test = "\n".join(["place template demo:loot ~ ~ ~",
+                      "assert block ~ ~ ~ chest{LootTable:\"minecraft:chests/simple_dungeon\"}",
+                      "assert not block ~ ~ ~ chest{LootTableSeed:7L}"])
+    root = write(tmp_path, {"demo/structure/loot.nbt": structure(blocks, PALETTE),
+                            "demo/test/loot.mcfunction": test + "\n"})
+    result = results(root, "python")["demo:loot"]
+    assert result.status == "passed", result.report()
