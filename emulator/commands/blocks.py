@@ -104,36 +104,49 @@ def fillbiome_command(env, cmd: ast.GenericCommand, ctx) -> int:
 
 
 def block_command(env, cmd: ast.GenericCommand, ctx) -> int:
-    """``setblock POS BLOCK [MODE]`` / ``fill FROM TO BLOCK [MODE]`` (``replace FILTER`` too)."""
+    """``setblock POS BLOCK [MODE]`` / ``fill FROM TO BLOCK [replace [FILTER]] [MODE]``."""
     corners, words = _read(cmd, env.state.version)
-    spec, mode = with_defaults(block_argument(env, words[0]), env.state.version), (words[1] if len(words) > 1 else "replace")
+    spec = with_defaults(block_argument(env, words[0]), env.state.version)
+    mode, filter_word = _mode(words[1:])
     source = world_source(env.state, ctx)
     positions = [loaded_block_pos(env.state, ctx, corner, source) for corner in corners]
     blocks = env.state.blocks_in(ctx.dimension)
     if cmd.name == "setblock":
         count = _setblock(env, ctx, blocks, positions[0], spec, mode)
-        _neighbours_updated(blocks, positions[:1], spec)
-        command_blocks.after_change(env.state, ctx.dimension, positions[:1])
-        crafters.after_change(env.state, ctx.dimension, positions[:1])
-        return count
+        changed = positions[:1]
+    else:
+        count, changed = _fill(env, ctx, blocks, positions, spec, mode, filter_word)
+    if mode != "strict":  # strict: UPDATE_KNOWN_SHAPE and no updateNeighboursOnBlockSet
+        _neighbours_updated(blocks, changed, spec)  # blockUpdated for each block placed
+        if cmd.name == "setblock" or spec.id in NEIGHBOUR_READERS or blocks.has_any(NEIGHBOUR_READERS):
+            command_blocks.after_change(env.state, ctx.dimension, changed)
+            crafters.after_change(env.state, ctx.dimension, changed)
+    return count
+
+
+def _mode(words: list[str]) -> tuple[str, str | None]:
+    """The mode and the ``replace`` filter after the block: ``MODE``, or ``replace [FILTER]`` then,
+    from 1.21.5 on, a mode after the filter (``fill … replace stone destroy``)."""
+    if words[:1] == ["replace"] and len(words) > 1:
+        return (words[2] if len(words) > 2 else "replace"), words[1]
+    return (words[0] if words else "replace"), None
+
+
+def _fill(env, ctx, blocks, positions, spec: BlockSpec, mode: str, filter_word: str | None):
+    """FillCommand.fillBlocks: the count and the positions whose block was placed."""
     block_filter = None
-    if mode == "replace" and len(words) > 2:
-        kept = block_argument(env, words[2])
-        in_tag = block_tag_test(env)
+    if filter_word is not None:
+        kept, in_tag = block_argument(env, filter_word), block_tag_test(env)
         block_filter = lambda pos: blocks.test(pos, kept, in_tag)  # noqa: E731 - FillCommand's filter
     changed = []
-    placed = _placed(env, ctx, spec)
+    placed = _placed(env, ctx, spec, mode)
 
     def on_placed(pos, before):
         changed.append(pos)
         placed(pos, before)
     count = blocks.fill(positions[0], positions[1], spec, mode, block_filter, on_placed,
                         lambda pos: _clear_or_destroy(env, ctx, blocks, pos, mode))
-    _neighbours_updated(blocks, changed, spec)  # FillCommand: blockUpdated for each block placed
-    if spec.id in NEIGHBOUR_READERS or blocks.has_any(NEIGHBOUR_READERS):  # one look over the level's blocks
-        command_blocks.after_change(env.state, ctx.dimension, changed)
-        crafters.after_change(env.state, ctx.dimension, changed)
-    return count
+    return count, changed
 
 
 def clone_command(env, cmd: ast.GenericCommand, ctx) -> int:
@@ -220,11 +233,11 @@ def _namespaced(name: str) -> str:
     return name if ":" in name else "minecraft:" + name
 
 
-def _placed(env, ctx, spec: BlockSpec):
+def _placed(env, ctx, spec: BlockSpec, mode: str):
     """What Block.onPlace does after BlockInput.place set ``spec`` at a position: a rail replacing
     another block joins its neighbours (BaseRailBlock.onPlace -> updateState), each in turn as
-    ``fill`` places them (in BlockPos.betweenClosed order)."""
-    if spec.id not in rails.RAILS:
+    ``fill`` places them (in BlockPos.betweenClosed order); ``strict`` skips it (UPDATE_SKIP_ON_PLACE)."""
+    if spec.id not in rails.RAILS or mode == "strict":
         return lambda pos, before: None
     blocks, level = env.state.blocks_in(ctx.dimension), env.state.level(ctx.dimension)
 
@@ -237,8 +250,8 @@ def _placed(env, ctx, spec: BlockSpec):
 def _setblock(env, ctx, blocks, pos, spec: BlockSpec, mode: str) -> int:
     """SetBlockCommand.setBlock: ``keep`` fails on a block that is not air; ``destroy`` breaks the
     block with its drops and places nothing when both it and the new block are air (still a
-    success); the other modes clear the block's contents first (Clearable.tryClear), so replacing a
-    chest by the same chest fails with the chest emptied."""
+    success); before 1.21.5 the other modes empty the block's contents first, so replacing a chest
+    by the same chest fails with the chest emptied (:func:`_clear_or_destroy`)."""
     if mode == "keep" and not blocks.get(pos).is_air:
         raise CommandFailure("commands.setblock.failed")
     _clear_or_destroy(env, ctx, blocks, pos, mode)
@@ -246,17 +259,26 @@ def _setblock(env, ctx, blocks, pos, spec: BlockSpec, mode: str) -> int:
         return 1
     before = blocks.get(pos)
     count = blocks.setblock(pos, spec)
-    _placed(env, ctx, spec)(pos, before)
+    _placed(env, ctx, spec, mode)(pos, before)
     return count
 
 
-def _clear_or_destroy(env, ctx, blocks, pos, mode: str) -> None:
+# 1.21.5 (with ``strict``): setblock and fill place with UPDATE_SKIP_BLOCK_ENTITY_SIDEEFFECTS instead
+# of Clearable.tryClear, and fill counts a position its mode affected (destroyed) even when nothing
+# could be placed there (FillCommand.Mode's affector)
+SIDE_EFFECT_FLAGS_VERSION = (1, 21, 5)
+
+
+def _clear_or_destroy(env, ctx, blocks, pos, mode: str) -> bool:
     """What setblock and fill do to a block before placing theirs: ``destroy`` breaks it with its
-    drops (Level.destroyBlock), the other modes empty its contents (Clearable.tryClear; fill runs it
-    after the destroy too, on what is left)."""
-    if mode == "destroy":
-        block_breaking.destroy(env.state, pos, ctx.dimension)
-    inventories.try_clear(blocks, pos, env.state.version)
+    drops (Level.destroyBlock); before 1.21.5 every mode then empties what is there
+    (Clearable.tryClear: a container's items, a lectern's book, ...). True when the position counts
+    for fill whatever the placing does (1.21.5+: a block destroyed)."""
+    modern = tuple(env.state.version) >= SIDE_EFFECT_FLAGS_VERSION
+    destroyed = mode == "destroy" and block_breaking.destroy(env.state, pos, ctx.dimension)
+    if not modern:
+        inventories.try_clear(blocks, pos, env.state.version)
+    return destroyed and modern
 
 
 def _neighbours_updated(blocks, positions, spec: BlockSpec) -> None:

@@ -240,11 +240,12 @@ class BlockMap:
     def fill(self, start, end, spec: BlockSpec, mode: str = "replace",
              filter: Callable[[tuple[int, int, int]], bool] | None = None,
              on_placed: Callable[[tuple[int, int, int], BlockState], None] | None = None,
-             before: Callable[[tuple[int, int, int]], None] | None = None) -> int:
-        """``fill FROM TO BLOCK [replace [FILTER]|keep|hollow|outline|destroy]``: blocks changed.
+             before: Callable[[tuple[int, int, int]], bool] | None = None) -> int:
+        """``fill FROM TO BLOCK [replace [FILTER]|keep|hollow|outline|destroy|strict]``: blocks changed.
         ``before(pos)`` runs on each position the mode keeps, before its block is placed (the destroy
-        mode's drops, Clearable.tryClear); ``on_placed(pos, state_before)`` after each block is set,
-        before the next (Block.onPlace)."""
+        mode's drops, Clearable.tryClear); the position counts when it returns True even if nothing
+        is placed. ``on_placed(pos, state_before)`` runs after each block is set, before the next
+        (Block.onPlace)."""
         lo, hi = _box(start, end)
         volume = _volume(lo, hi)
         if volume > MODIFICATION_LIMIT:
@@ -259,13 +260,14 @@ class BlockMap:
             border = any(p in (l, h) for p, l, h in zip(pos, lo, hi))
             if mode == "outline" and not border:
                 continue
-            if before is not None:
-                before(pos)
+            affected = before(pos) if before is not None else False
             state_before = self.get(pos)
             if self._place(pos, air if mode == "hollow" and not border else spec):
                 count += 1
                 if on_placed is not None:
                     on_placed(pos, state_before)
+            elif affected:
+                count += 1
         if count == 0:
             raise CommandFailure("commands.fill.failed")
         return count

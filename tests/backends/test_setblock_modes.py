@@ -1,6 +1,6 @@
 """What setblock and fill do to the block they replace, on both backends.
 
-Sources (decompiled 1.21): server/commands/SetBlockCommand.java (setBlock: ``keep`` tests for air
+Sources (decompiled 1.21, and 1.21.5 - 1.21.10 where they changed it): server/commands/SetBlockCommand.java (setBlock: ``keep`` tests for air
 first; ``destroy`` runs Level.destroyBlock(pos, true) and places nothing when both the old and the
 new block are air, still a success; the other modes run Clearable.tryClear on the block entity
 before BlockInput.place, which fails on the same state), server/commands/FillCommand.java
@@ -8,20 +8,25 @@ before BlockInput.place, which fails on the same state), server/commands/FillCom
 counts only when its block changed), world/level/Level.java (destroyBlock: nothing on air, else
 Block.dropResources with no tool and no entity, then the fluid's block), world/Clearable.java and
 its implementers (ChestBlockEntity and the other Containers: clearContent empties the items).
+From 1.21.5 on, both place with UPDATE_SKIP_BLOCK_ENTITY_SIDEEFFECTS (flags 2 | 256) instead of
+clearing, ``strict`` with 816 (no onPlace, known shape) and no updateNeighboursOnBlockSet, fill's
+mode takes a filter before it, and a position its DESTROY affector broke counts even when nothing
+could be placed there.
 """
 from __future__ import annotations
 
 import json
 
-from tests.backends.test_dimensions import pack, run_both, score
+from tests.backends.programs import write_pack
+from tests.backends.test_dimensions import SETUP, run_both, score
 
 CHEST = 'chest{Items:[{Slot:0b,id:"minecraft:diamond",count:3}]}'
 STONE_TABLE = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "minecraft:cobblestone"}]}]}
 
 
-def _run(tmp_path, lines: list[tuple[str, str]], setup: str = ""):
-    main = setup + "".join(f"execute store success score {holder} v run {command}\n" for holder, command in lines)
-    root = pack(tmp_path, main)
+def _run(tmp_path, lines: list[tuple[str, str]], setup: str = "", pack_format: int = 48):
+    main = setup + "".join(f"execute store result score {holder} v run {command}\n" for holder, command in lines)
+    root = write_pack(tmp_path / "pack", {"t:main": SETUP + main}, pack_format=pack_format)
     table = root / "data/minecraft/loot_table/blocks/stone.json"  # the game's own table, as a pack may give it
     table.parent.mkdir(parents=True)
     table.write_text(json.dumps(STONE_TABLE))
@@ -53,7 +58,7 @@ def test_destroy_drops_the_blocks_loot_and_keeps_the_games_results(tmp_path):
                           ("#keep", "setblock 3 0 0 dirt keep")],
                "setblock 0 0 0 stone\nfill 1 0 0 4 0 0 stone\n")
     assert [score(emu, h) for h in ("#destroyed", "#air_on_air", "#replace_air", "#fill_air", "#fill_stone",
-                                    "#keep")] == [1, 1, 0, 0, 1, 0]
+                                    "#keep")] == [1, 1, 0, 0, 2, 0]
     assert _items(emu, "minecraft:cobblestone") == 5  # one per stone broken: 0, 1, 2, 3 and 4
     assert emu.state.blocks.get((1, 0, 0)).id == "minecraft:air" and emu.state.blocks.get((3, 0, 0)).id == "minecraft:stone"
 
@@ -67,3 +72,23 @@ def test_no_drops_when_the_rule_says_so(tmp_path):
 def test_a_destroyed_container_spilling_its_contents_is_not_modelled(tmp_path):
     emu = _run(tmp_path, [], f"setblock 0 0 0 {CHEST}\nsetblock 0 0 0 air destroy\n")
     assert any(d.unmodelled and "spills" in d.message for d in emu.diagnostics)
+
+
+def test_from_1_21_5_the_contents_stay_and_a_destroyed_block_counts(tmp_path):
+    emu = _run(tmp_path, [("#same", "setblock 0 0 0 chest"),
+                          ("#fill_air", "fill 1 0 0 2 0 0 air destroy"),  # broken, none placed: 2 all the same
+                          ("#filtered", "fill 3 0 0 6 0 0 dirt replace stone destroy")],
+               f"setblock 0 0 0 {CHEST}\nfill 1 0 0 4 0 0 stone\n", pack_format=71)
+    assert [score(emu, h) for h in ("#same", "#fill_air", "#filtered")] == [0, 2, 2]
+    assert len(emu.state.blocks.entity((0, 0, 0))["Items"]) == 1  # no Clearable.tryClear any more
+    assert _items(emu, "minecraft:cobblestone") == 4  # 1, 2, 3 and 4: the filter kept 5 and 6 (air) out
+    assert [emu.state.blocks.get((x, 0, 0)).id for x in (3, 4, 5, 6)] == ["minecraft:dirt"] * 2 + ["minecraft:air"] * 2
+
+
+def test_strict_places_without_the_blocks_own_reaction(tmp_path):
+    # a rail placed beside another joins it (BaseRailBlock.onPlace); strict skips onPlace
+    emu = _run(tmp_path, [("#plain", "setblock 1 0 0 rail"), ("#strict", "setblock 1 0 5 rail strict")],
+               "fill 0 -1 0 1 -1 5 stone\nsetblock 0 0 0 rail\nsetblock 0 0 5 rail\n", pack_format=71)
+    assert [score(emu, h) for h in ("#plain", "#strict")] == [1, 1]
+    shape = lambda pos: dict(emu.state.blocks.get(pos).properties)["shape"]  # noqa: E731
+    assert shape((1, 0, 0)) == "east_west" and shape((1, 0, 5)) == "north_south"

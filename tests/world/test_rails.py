@@ -72,13 +72,13 @@ def test_fill_places_rails_one_by_one_each_joining_those_before():
     blocks.fill((0, 0, 0), (3, 0, 1), BlockSpec("minecraft:stone", False, (), None))
     env = SimpleNamespace(state=SimpleNamespace(blocks_in=lambda d: blocks, level=lambda d: SimpleNamespace(blocks=blocks)))
     spec = BlockSpec("minecraft:rail", False, (), None)
-    blocks.fill((0, 1, 0), (3, 1, 0), spec, on_placed=_placed(env, SimpleNamespace(dimension="o"), spec))
+    blocks.fill((0, 1, 0), (3, 1, 0), spec, on_placed=_placed(env, SimpleNamespace(dimension="o"), spec, "replace"))
     assert [shape(blocks, (x, 1, 0)) for x in range(4)] == ["east_west"] * 4
     # a 2x2 square: (0,0) alone north_south, (1,0) joins it east_west, (0,1) finds (0,0) with one end
     # free, so both turn: (0,0) to south_east and (0,1) north_south; (1,1) closes the square
     blocks = BlockMap()
     blocks.fill((0, 0, 0), (1, 0, 1), BlockSpec("minecraft:stone", False, (), None))
-    blocks.fill((0, 1, 0), (1, 1, 1), spec, on_placed=_placed(env, SimpleNamespace(dimension="o"), spec))
+    blocks.fill((0, 1, 0), (1, 1, 1), spec, on_placed=_placed(env, SimpleNamespace(dimension="o"), spec, "replace"))
     got = {(x, z): shape(blocks, (x, 1, z)) for x in (0, 1) for z in (0, 1)}
     assert got == {(0, 0): "south_east", (1, 0): "south_west", (0, 1): "north_east", (1, 1): "north_west"}
 
