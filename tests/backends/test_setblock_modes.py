@@ -1,7 +1,7 @@
 """What setblock and fill do to the block they replace, on both backends.
 
-Sources (decompiled 1.21, and 1.21.5 - 1.21.10 where they changed it): server/commands/SetBlockCommand.java (setBlock: ``keep`` tests for air
-first; ``destroy`` runs Level.destroyBlock(pos, true) and places nothing when both the old and the
+Sources (decompiled 1.21, and 1.21.5 - 1.21.10 where they changed it):
+server/commands/SetBlockCommand.java (setBlock: ``keep`` tests for air first; ``destroy`` runs Level.destroyBlock(pos, true) and places nothing when both the old and the
 new block are air, still a success; the other modes run Clearable.tryClear on the block entity
 before BlockInput.place, which fails on the same state), server/commands/FillCommand.java
 (fillBlocks: the mode's filter, DESTROY breaking the block, then tryClear and place; a position
@@ -60,7 +60,8 @@ def test_destroy_drops_the_blocks_loot_and_keeps_the_games_results(tmp_path):
     assert [score(emu, h) for h in ("#destroyed", "#air_on_air", "#replace_air", "#fill_air", "#fill_stone",
                                     "#keep")] == [1, 1, 0, 0, 2, 0]
     assert _items(emu, "minecraft:cobblestone") == 5  # one per stone broken: 0, 1, 2, 3 and 4
-    assert emu.state.blocks.get((1, 0, 0)).id == "minecraft:air" and emu.state.blocks.get((3, 0, 0)).id == "minecraft:stone"
+    block = lambda pos: emu.state.blocks.get(pos).id  # noqa: E731
+    assert block((1, 0, 0)) == "minecraft:air" and block((3, 0, 0)) == "minecraft:stone"
 
 
 def test_no_drops_when_the_rule_says_so(tmp_path):
