@@ -70,6 +70,15 @@ def if_biome(env, cond: ast.IfBiome, ctx) -> int:
 _WORLD_BORDER = 30_000_000
 
 
+def if_loaded(env, cond: ast.IfLoaded, ctx) -> int:
+    """``if loaded POS``: 1 when POS's chunk is loaded and ticks entities (ExecuteCommand.isChunkLoaded;
+    the position is read by BlockPosArgument.getBlockPos, unchecked). Every chunk of the world is
+    loaded here, as ``forceload`` would keep them, so any column inside the world's 30,000,000
+    blocks is; past them no chunk exists."""
+    x, _, z = block_pos(world_source(env.state, ctx), cond.pos)
+    return int(-_WORLD_BORDER <= x < _WORLD_BORDER and -_WORLD_BORDER <= z < _WORLD_BORDER)
+
+
 def loaded_block_pos(state, ctx, vec, source=None, dimension: str | None = None) -> tuple[int, int, int]:
     """BlockPosArgument.getLoadedBlockPos, which every command reading a block position uses (setblock,
     fill, fillbiome, clone, place, ``data … block``, ``execute if block|blocks|biome``, ``execute

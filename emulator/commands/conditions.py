@@ -53,6 +53,8 @@ def count(env, cond: ast.Condition, ctx) -> int:
         return int(if_predicate(env, cond.predicate, ctx))
     if isinstance(cond, ast.IfBiome):
         return blocks.if_biome(env, cond, ctx)
+    if isinstance(cond, ast.IfLoaded):
+        return blocks.if_loaded(env, cond, ctx)
     raise Unmodelled(f"the condition '{type(cond).__name__}'")
 
 

@@ -43,6 +43,11 @@ CASES = [
     ("#if_blocks_over", "execute if blocks 9 0 9 9 0 9 9 320 9 all", False),
     ("#if_biome", "execute if biome 1 -64 1 minecraft:desert", True),
     ("#if_biome_over", "execute if biome 1 -65 1 minecraft:desert", False),
+    # ExecuteCommand.isChunkLoaded reads its position unchecked (getBlockPos); every chunk is loaded
+    # here, so a column inside the world's border is, at any height
+    ("#loaded", "execute if loaded 29999999 1000 -30000000", True),
+    ("#loaded_past", "execute if loaded 30000000 0 0", False),
+    ("#loaded_stage", "execute if loaded ~ ~ ~ run scoreboard players get #top v", True),
     ("#clone", "clone 0 0 0 1 1 1 5 318 5", True),
     ("#clone_over", "clone 0 0 0 1 1 1 5 320 5", False),
     ("#clone_from", "clone 0 319 0 0 320 0 5 5 5", False),
