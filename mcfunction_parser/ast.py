@@ -1,7 +1,7 @@
 """The typed AST of mcfunction commands.
 
-Every node is a frozen, slotted dataclass (run released: immutable by convention, see
-:mod:`.frozen_init`) carrying ``loc`` (file, line, column of its first
+Every node is a frozen, slotted dataclass (declared with :func:`.frozen_init.node`; run released:
+immutable by convention, see :mod:`.frozen_init`) carrying ``loc`` (file, line, column of its first
 character). A command is identified by its class; commands the emulator only needs to count, log or
 run host-side (``tellraw``, ``particle``, ``setblock`` ...) are ``GenericCommand`` with their text.
 
@@ -17,12 +17,13 @@ from dataclasses import dataclass, field
 from typing import Any, Union
 
 from .diagnostics import Loc
+from .frozen_init import node
 from .nbt import Compound
 
 # ----------------------------------------------------------------------------- values
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IntRange:
     """``1..5``, ``..0``, ``3``: inclusive bounds, None for an open end."""
 
@@ -33,7 +34,7 @@ class IntRange:
         return (self.lo is None or value >= self.lo) and (self.hi is None or value <= self.hi)
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class FloatRange:
     lo: float | None
     hi: float | None
@@ -42,7 +43,7 @@ class FloatRange:
         return (self.lo is None or value >= self.lo) and (self.hi is None or value <= self.hi)
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Coord:
     """One coordinate: ``kind`` is ``"abs"``, ``"rel"`` (``~``) or ``"local"`` (``^``).
 
@@ -55,7 +56,7 @@ class Coord:
     is_int: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Vec3:
     """A position argument; all three coordinates are local or none is."""
 
@@ -69,7 +70,7 @@ class Vec3:
         return self.x.kind == "local"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Vec2:
     """A rotation (yaw, pitch) or a column position (x, z); coordinates are ``abs`` or ``rel``."""
 
@@ -78,7 +79,7 @@ class Vec2:
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class SelectorArg:
     """One ``key=value`` inside ``@e[...]``.
 
@@ -95,7 +96,7 @@ class SelectorArg:
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Selector:
     """``@s @e @a @p @r @n`` with arguments."""
 
@@ -107,7 +108,7 @@ class Selector:
         return [a for a in self.args if a.key == key]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class NameTarget:
     """A player name, fake-player name (``#x``, ``$y``) or UUID used where a target is expected."""
 
@@ -116,7 +117,7 @@ class NameTarget:
     is_uuid: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Wildcard:
     """``*`` as a score holder: every holder with a score in the objective."""
 
@@ -128,29 +129,29 @@ ScoreHolder = Union[Selector, NameTarget, Wildcard]
 
 
 # NBT paths: a root compound filter `{a:1}`, then keys, indexes and filters.
-@dataclass(frozen=True, slots=True)
+@node
 class PathKey:
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class PathIndex:
     index: int
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class PathAll:
     """``[]``: every element of a list."""
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class PathMatch:
     """``[{...}]``: every list element that matches the compound."""
 
     pattern: Compound
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class PathFilter:
     """``{...}`` after a key (``a{b:1}``) or as the root: the current compound must match."""
 
@@ -160,26 +161,26 @@ class PathFilter:
 PathNode = Union[PathKey, PathIndex, PathAll, PathMatch, PathFilter]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class NbtPath:
     nodes: tuple[PathNode, ...]
     text: str
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class EntityData:
     target: Target
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class StorageData:
     id: str
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class BlockData:
     pos: Vec3
     loc: Loc
@@ -191,12 +192,12 @@ DataTarget = Union[EntityData, StorageData, BlockData]
 # ----------------------------------------------------------------------------- commands
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Command:
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class GenericCommand(Command):
     """A command the AST keeps as text: ``name`` is its first word, ``text`` the whole command."""
 
@@ -204,7 +205,7 @@ class GenericCommand(Command):
     text: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class UnreadCommand(Command):
     """A line of a release newer than every command tree dpemu has that its readers refuse: kept,
     so the function loads as it may in that release, with ``reason`` (why it was not read); running
@@ -215,7 +216,7 @@ class UnreadCommand(Command):
     reason: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class MacroLine(Command):
     """A ``$`` line; ``template`` is the text after ``$`` with ``$(key)`` placeholders intact."""
 
@@ -224,38 +225,38 @@ class MacroLine(Command):
 
 
 # scoreboard objectives ...
-@dataclass(frozen=True, slots=True)
+@node
 class ObjectivesAdd(Command):
     objective: str
     criterion: str
     display_name: str | None  # JSON text, as written
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ObjectivesRemove(Command):
     objective: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ObjectivesModify(Command):
     objective: str
     field: str  # "displayname", "rendertype", "displayautoupdate", "numberformat"
     value: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ObjectivesSetdisplay(Command):
     slot: str
     objective: str | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ObjectivesList(Command):
     pass
 
 
 # scoreboard players ...
-@dataclass(frozen=True, slots=True)
+@node
 class ScoreSet(Command):
     """``scoreboard players set|add|remove``; ``action`` is ``"set"``, ``"add"`` or ``"remove"``."""
 
@@ -265,25 +266,25 @@ class ScoreSet(Command):
     value: int
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ScoreReset(Command):
     targets: ScoreHolder
     objective: str | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ScoreGet(Command):
     target: ScoreHolder
     objective: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ScoreEnable(Command):
     targets: ScoreHolder
     objective: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ScoreOperation(Command):
     """``op`` is one of ``= += -= *= /= %= < > ><``."""
 
@@ -294,12 +295,12 @@ class ScoreOperation(Command):
     source_objective: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ScoreList(Command):
     target: ScoreHolder | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ScoreDisplay(Command):
     """``scoreboard players display name|numberformat ...``, kept as text after ``display``."""
 
@@ -307,90 +308,90 @@ class ScoreDisplay(Command):
 
 
 # execute ...
-@dataclass(frozen=True, slots=True)
+@node
 class Subcommand:
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExAs(Subcommand):
     targets: Target
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExAt(Subcommand):
     targets: Target
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExPositioned(Subcommand):
     pos: Vec3
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExPositionedAs(Subcommand):
     targets: Target
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExPositionedOver(Subcommand):
     heightmap: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExRotated(Subcommand):
     rot: Vec2
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExRotatedAs(Subcommand):
     targets: Target
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExFacing(Subcommand):
     pos: Vec3
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExFacingEntity(Subcommand):
     targets: Target
     anchor: str  # "eyes" | "feet"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExAnchored(Subcommand):
     anchor: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExAlign(Subcommand):
     axes: str  # any of "xyz", no repeats
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExIn(Subcommand):
     dimension: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExOn(Subcommand):
     relation: str  # attacker, controller, leasher, origin, owner, passengers, target, vehicle
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ExSummon(Subcommand):
     entity_type: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Condition(Subcommand):
     """Base of ``if``/``unless`` subcommands; ``negated`` is True for ``unless``."""
 
     negated: bool
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfScore(Condition):
     """``if score T o OP S o2``; ``op`` is one of ``< <= = >= >``."""
 
@@ -401,31 +402,31 @@ class IfScore(Condition):
     source_objective: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfScoreMatches(Condition):
     target: ScoreHolder
     objective: str
     range: IntRange
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfEntity(Condition):
     targets: Target
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfData(Condition):
     source: DataTarget
     path: NbtPath
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfBlock(Condition):
     pos: Vec3
     block: str  # block predicate as written: id or #tag, optional [states] and {nbt}
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfBlocks(Condition):
     start: Vec3
     end: Vec3
@@ -433,34 +434,34 @@ class IfBlocks(Condition):
     mode: str  # "all" | "masked"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfFunction(Condition):
     function: str
     is_tag: bool
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfPredicate(Condition):
     predicate: str  # resource location, or inline JSON/SNBT text
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfBiome(Condition):
     pos: Vec3
     biome: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfLoaded(Condition):
     pos: Vec3
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfDimension(Condition):
     dimension: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfItems(Condition):
     """``if items entity|block SOURCE SLOTS PREDICATE``: ``source`` an :class:`ItemTarget`."""
 
@@ -469,7 +470,7 @@ class IfItems(Condition):
     predicate: "ItemPredicate"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class IfStopwatch(Condition):
     """``if stopwatch ID RANGE`` (1.21.11+): the stopwatch's elapsed seconds are in the range."""
 
@@ -477,7 +478,7 @@ class IfStopwatch(Condition):
     range: FloatRange
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class StoreScore(Subcommand):
     """``store result|success score``; ``kind`` is ``"result"`` or ``"success"``."""
 
@@ -486,7 +487,7 @@ class StoreScore(Subcommand):
     objective: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class StoreData(Subcommand):
     """``store result|success entity|storage|block PATH TYPE SCALE``; type is byte/short/int/long/float/double."""
 
@@ -497,21 +498,21 @@ class StoreData(Subcommand):
     scale: float
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class StoreBossbar(Subcommand):
     kind: str
     bossbar: str
     field: str  # "value" | "max"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Execute(Command):
     subcommands: tuple[Subcommand, ...]
     run: Command | None  # None when the chain ends without ``run``
 
 
 # functions
-@dataclass(frozen=True, slots=True)
+@node
 class FunctionCall(Command):
     """``function NAME [ARGS | with SOURCE [PATH]]``."""
 
@@ -522,7 +523,7 @@ class FunctionCall(Command):
     with_path: NbtPath | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Return(Command):
     """``return N`` (kind ``"value"``), ``return run CMD`` (``"run"``), ``return fail`` (``"fail"``)."""
 
@@ -531,7 +532,7 @@ class Return(Command):
     command: Command | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Schedule(Command):
     function: str
     is_tag: bool
@@ -539,40 +540,40 @@ class Schedule(Command):
     mode: str  # "replace" | "append"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ScheduleClear(Command):
     function: str
     is_tag: bool
 
 
 # data
-@dataclass(frozen=True, slots=True)
+@node
 class DataGet(Command):
     target: DataTarget
     path: NbtPath | None
     scale: float | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class DataMerge(Command):
     target: DataTarget
     nbt: Compound
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class SourceValue:
     value: Any  # an NBT value
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class SourceFrom:
     source: DataTarget
     path: NbtPath | None
     loc: Loc
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class SourceString:
     """``string SOURCE [PATH] [START] [END]``."""
 
@@ -586,7 +587,7 @@ class SourceString:
 DataSource = Union[SourceValue, SourceFrom, SourceString]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class DataModify(Command):
     """``mode`` is set, append, prepend, insert (with ``index``) or merge."""
 
@@ -597,14 +598,14 @@ class DataModify(Command):
     source: DataSource
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class DataRemove(Command):
     target: DataTarget
     path: NbtPath
 
 
 # entities
-@dataclass(frozen=True, slots=True)
+@node
 class TagCommand(Command):
     """``tag TARGETS add|remove NAME`` or ``tag TARGETS list`` (``name`` None)."""
 
@@ -613,19 +614,19 @@ class TagCommand(Command):
     name: str | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Summon(Command):
     entity_type: str
     pos: Vec3 | None
     nbt: Compound | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Kill(Command):
     targets: Target | None  # None: the executor
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Teleport(Command):
     """All ``tp``/``teleport`` forms.
 
@@ -643,13 +644,13 @@ class Teleport(Command):
 
 
 # server state
-@dataclass(frozen=True, slots=True)
+@node
 class Gamerule(Command):
     rule: str
     value: str | None  # None: query
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class RandomCommand(Command):
     """``random value|roll RANGE [SEQUENCE]`` or ``random reset SEQUENCE|* [SEED [INCLUDE_WORLD INCLUDE_SEQ]]``."""
 
@@ -661,7 +662,7 @@ class RandomCommand(Command):
     include_sequence_id: bool = True
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Time(Command):
     """``time add|set|query``; ``value`` in ticks for add/set (``day``, ``night`` ... converted)."""
 
@@ -670,7 +671,7 @@ class Time(Command):
     query: str | None  # "daytime" | "gametime" | "day"
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ClockCommand(Command):
     """``time`` on a world clock, from 26.1 (every form but ``time query gametime``, which is
     :class:`Time`). ``clock``: the clock's id (``time of <clock> ...``), None for the default clock
@@ -689,7 +690,7 @@ class ClockCommand(Command):
     timeline_loc: Loc | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Ride(Command):
     """``ride TARGET mount VEHICLE`` or ``ride TARGET dismount`` (1.19.4+)."""
 
@@ -698,7 +699,7 @@ class Ride(Command):
     vehicle: Target | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Bossbar(Command):
     """``bossbar add|remove|list|set|get``. ``field``: the property ``set``/``get`` name (name,
     color, style, value, max, visible, players); ``text``: the name component as written (add,
@@ -714,19 +715,19 @@ class Bossbar(Command):
     targets: Target | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Trigger(Command):
     objective: str
     action: str | None  # None (increment by 1), "add", "set"
     value: int | None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Say(Command):
     message: str
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Tellraw(Command):
     targets: Target
     text: str  # JSON/SNBT text component, as written
@@ -735,7 +736,7 @@ class Tellraw(Command):
 # ----------------------------------------------------------------------------- files and packs
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Function:
     """One .mcfunction file: ``id`` is ``ns:path``; ``commands`` in order; ``is_macro`` if any ``$`` line."""
 
@@ -766,7 +767,7 @@ class FunctionTag:
 # ----------------------------------------------------------------------------- items
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ItemArgument:
     """An item to create (ItemArgument): ``id[component=value,!component]`` from 1.20.5, ``id{tag}``
     before. ``components`` are (namespaced component id, SNBT value) in the order written;
@@ -779,7 +780,7 @@ class ItemArgument:
     tag: Compound | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ComponentTest:
     """One test inside an item predicate's brackets: ``component`` (exists), ``component=value``
     (the component equals the value), ``predicate~value`` (a sub-predicate); ``count`` with either
@@ -792,7 +793,7 @@ class ComponentTest:
     negated: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ItemPredicate:
     """ItemPredicateArgument: ``id``, ``#tag`` or ``*`` (``id`` None), then ``[...]`` tests (from
     1.20.5: a tuple of any-of groups, all of which must pass) or ``{nbt}`` (older: a partial match
@@ -805,7 +806,7 @@ class ItemPredicate:
     tag: Compound | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class SlotArgument:
     """A slot name (SlotArgument / SlotsArgument) and the slot ids it names (several for a range
     such as ``container.*``)."""
@@ -814,7 +815,7 @@ class SlotArgument:
     ids: tuple[int, ...]
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ItemTarget:
     """Where items go or come from: ``entity TARGETS`` or ``block POS``."""
 
@@ -822,7 +823,7 @@ class ItemTarget:
     target: Target | Vec3  # a selector/name for entities, a position for blocks
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ResourceOrInline:
     """ResourceOrIdArgument: a loot table / item modifier / predicate id, or (from 1.20.5) an
     inline definition written as SNBT; ``inline`` holds it converted to JSON values."""
@@ -832,21 +833,21 @@ class ResourceOrInline:
     text: str = ""
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Give(Command):
     targets: Target
     item: ItemArgument
     count: int = 1
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Clear(Command):
     targets: Target | None = None  # None: the executor
     item: ItemPredicate | None = None
     max_count: int | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ItemReplace(Command):
     """``item replace TARGET SLOT with ITEM [COUNT]`` (``item`` set) or ``... from SOURCE SLOT
     [MODIFIER]`` (``source`` set)."""
@@ -860,14 +861,14 @@ class ItemReplace(Command):
     modifier: ResourceOrInline | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class ItemModify(Command):
     target: ItemTarget
     slot: SlotArgument
     modifier: ResourceOrInline
 
 
-@dataclass(frozen=True, slots=True)
+@node
 class Loot(Command):
     """``loot TARGET SOURCE``. ``action`` is give|insert|spawn|replace; ``destination`` the
     players (give), a position (insert, spawn) or an :class:`ItemTarget` (replace) with ``slot``

@@ -1,11 +1,11 @@
 """Building the AST's nodes fast: frozen, slotted dataclasses without the cost of being frozen.
 
-The nodes (and ``Diagnostic``) are declared ``@dataclass(frozen=True, slots=True)``: equal and
-hashed by value, and never changed once built (:mod:`.relocate` shares a node between commands;
-the emulator keys caches by them). Freezing costs on every build: the generated ``__init__``
-stores each field with ``object.__setattr__``, and a class with its own ``__setattr__`` makes
-every attribute store go through it. The parser builds about ten nodes per command, so
-:func:`speed_up_inits` releases each such class of a module:
+The nodes (and ``Diagnostic``) are frozen, slotted dataclasses: equal and hashed by value, and
+never changed once built (:mod:`.relocate` shares a node between commands; the emulator keys caches
+by them). Freezing costs on every build: the generated ``__init__`` stores each field with
+``object.__setattr__``, and a class with its own ``__setattr__`` makes every attribute store go
+through it. The parser builds about ten nodes per command, so :func:`speed_up_inits` releases each
+such class of a module:
 
 - its ``__setattr__`` and ``__delattr__`` (which raise ``FrozenInstanceError``) are removed, so
   that a node is immutable by convention: nothing in dpemu assigns to a node's field, and the test
@@ -18,12 +18,19 @@ every attribute store go through it. The parser builds about ten nodes per comma
   guarded or not), and ``__reduce__`` pickles a node as its class and field values
   (``pack.parallel`` sends parsed functions between processes).
 
+``__init__`` and ``new`` are compiled from their source when first used: a run reads a few kinds of
+command, and compiling the methods of every node at import was most of the parser's start-up. The
+AST declares its nodes with :func:`node` for the same reason: ``@dataclass(frozen=True,
+slots=True)`` without the methods dataclasses would compile for each class (about 70 ms for the
+hundred classes), their generic equivalents here standing in.
+
 Classes it can't reproduce exactly (``default_factory``, ``init=False`` or keyword-only fields,
 ``__post_init__``) stay frozen, and their ``new`` is the class itself.
 """
 from __future__ import annotations
 
 import dataclasses
+from operator import attrgetter
 from types import MemberDescriptorType
 
 # every class released by speed_up_inits -> its frozen (__setattr__, __delattr__)
@@ -31,6 +38,72 @@ _RELEASED: dict[type, tuple] = {}
 _GUARDED = [False]
 # called with the new state when guard_nodes changes it (relocate forgets the code it generated)
 ON_GUARD: list = []
+_NODES: set = set()  # the classes :func:`node` declared
+
+
+def node(cls: type) -> type:
+    """``@dataclass(frozen=True, slots=True)``: the same fields, slots, equality, hash, repr and
+    immutability, the methods generic over the class's fields instead of compiled for each."""
+    made = dataclasses.dataclass(cls, init=False, repr=False, eq=False, slots=True)
+    names = tuple(f.name for f in dataclasses.fields(made))
+    made._values = staticmethod(_values_of(names))
+    made.__eq__, made.__hash__, made.__repr__ = _eq, _hash, _repr
+    made.__setattr__, made.__delattr__ = _frozen_setattr, _frozen_delattr
+    _NODES.add(made)
+    return made
+
+
+def _values_of(names: tuple):
+    """The tuple of a node's field values (what it equals, hashes and pickles as)."""
+    if len(names) > 1:
+        return attrgetter(*names)
+    if names:
+        one = attrgetter(names[0])
+        return lambda obj: (one(obj),)
+    return lambda obj: ()
+
+
+def _eq(self, other):
+    if other.__class__ is self.__class__:
+        return self._values(self) == other._values(other)
+    return NotImplemented
+
+
+def _hash(self):
+    return hash(self._values(self))
+
+
+def _repr(self):
+    values = ", ".join(f"{f.name}={getattr(self, f.name)!r}" for f in dataclasses.fields(self))
+    return f"{type(self).__qualname__}({values})"
+
+
+def _frozen_setattr(self, name, value):
+    raise dataclasses.FrozenInstanceError(f"cannot assign to field {name!r}")
+
+
+def _frozen_delattr(self, name):
+    raise dataclasses.FrozenInstanceError(f"cannot delete field {name!r}")
+
+
+def is_frozen(cls: type) -> bool:
+    """Whether ``cls`` is a frozen dataclass (a :func:`node`, or declared ``frozen=True``)."""
+    return cls in _NODES or (dataclasses.is_dataclass(cls) and cls.__dataclass_params__.frozen)
+
+
+class _Lazy:
+    """A method of ``cls`` compiled on first use: the first look-up builds it with ``make(cls)``,
+    puts it on the class in this descriptor's place and hands it out."""
+
+    __slots__ = ("cls", "name", "make")
+
+    def __init__(self, cls: type, name: str, make) -> None:
+        self.cls, self.name, self.make = cls, name, make
+
+    def __get__(self, obj, owner=None):
+        made = self.make(self.cls)
+        type.__setattr__(self.cls, self.name, made)
+        return self.cls.__dict__[self.name].__get__(obj, owner)
 
 
 def speed_up_inits(namespace: dict) -> None:
@@ -38,12 +111,13 @@ def speed_up_inits(namespace: dict) -> None:
     module = namespace["__name__"]
     for obj in list(namespace.values()):
         if isinstance(obj, type) and obj.__module__ == module and dataclasses.is_dataclass(obj):
-            init = _fast_init(obj)
-            if init is None:
+            if _signature(obj, {}) is None:
                 obj.new = obj
                 continue
-            obj.__init__ = init
-            obj.__reduce__ = _reduce(obj)
+            obj.__init__ = _Lazy(obj, "__init__", _fast_init)
+            if "_values" not in obj.__dict__:
+                obj._values = staticmethod(_values_of(tuple(f.name for f in dataclasses.fields(obj))))
+            obj.__reduce__ = _reduce
             _RELEASED[obj] = (obj.__dict__["__setattr__"], obj.__dict__["__delattr__"])
             _set_guard(obj, _GUARDED[0])
 
@@ -70,14 +144,13 @@ def _set_guard(cls: type, on: bool) -> None:
         cls.__setattr__, cls.__delattr__ = _RELEASED[cls]
     elif "__setattr__" in cls.__dict__:
         del cls.__setattr__, cls.__delattr__
-    cls.new = _factory(cls, on)
+    cls.new = _Lazy(cls, "new", _factory)  # written for the guard as it is when first used
 
 
 def _signature(cls: type, namespace: dict) -> list[str] | None:
     """The parameters of ``cls``'s ``__init__`` (defaults put in ``namespace``), None if the
     fields are not all plain slots set from positional-or-keyword parameters."""
-    params = cls.__dataclass_params__
-    if not params.frozen or "__slots__" not in cls.__dict__ or hasattr(cls, "__post_init__"):
+    if not is_frozen(cls) or "__slots__" not in cls.__dict__ or hasattr(cls, "__post_init__"):
         return None
     signature = []
     for i, f in enumerate(dataclasses.fields(cls)):
@@ -95,8 +168,6 @@ def _signature(cls: type, namespace: dict) -> list[str] | None:
 def _fast_init(cls: type):
     namespace: dict = {}
     signature = _signature(cls, namespace)
-    if signature is None:
-        return None
     body = []
     for i, f in enumerate(dataclasses.fields(cls)):
         namespace[f"_set{i}"] = getattr(cls, f.name).__set__
@@ -105,7 +176,6 @@ def _fast_init(cls: type):
     exec(source, namespace)  # noqa: S102  (the source is built from the field names above)
     init = namespace["__init__"]
     init.__qualname__ = f"{cls.__qualname__}.__init__"
-    init.__doc__ = cls.__init__.__doc__
     return init
 
 
@@ -135,8 +205,9 @@ def build_lines(cls: type, values: list[str], indent: str = "    ") -> list[str]
     return lines
 
 
-def _factory(cls: type, guarded: bool):
-    """``cls.new``: ``cls(...)`` built by plain slot stores (see the module's docs)."""
+def _factory(cls: type):
+    """``cls.new``: ``cls(...)`` built by plain slot stores (see the module's docs), for the guard
+    as it is now."""
     namespace: dict = {"cls": cls, "_new": object.__new__, "B": builder(cls)}
     signature = _signature(cls, namespace)
     body = build_lines(cls, [f.name for f in dataclasses.fields(cls)])
@@ -147,12 +218,7 @@ def _factory(cls: type, guarded: bool):
     return staticmethod(new)
 
 
-def _reduce(cls: type):
+def _reduce(self):
     """``__reduce__`` as the class and the field values (the default goes through the generated
     ``__getstate__`` and ``__setstate__``: about three times slower to pickle, and to unpickle)."""
-    values = "".join(f"self.{f.name}, " for f in dataclasses.fields(cls))
-    namespace: dict = {}
-    exec(f"def __reduce__(self):\n    return (type(self), ({values}))\n", namespace)  # noqa: S102
-    reduce = namespace["__reduce__"]
-    reduce.__qualname__ = f"{cls.__qualname__}.__reduce__"
-    return reduce
+    return type(self), self._values(self)

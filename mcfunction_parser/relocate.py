@@ -15,7 +15,7 @@ from __future__ import annotations
 import dataclasses
 
 from .diagnostics import Loc, new_loc
-from .frozen_init import ON_GUARD, build_lines, builder
+from .frozen_init import ON_GUARD, build_lines, builder, is_frozen
 
 
 # For the release read last, each command text read cleanly (no diagnostic) -> (its command, the
@@ -123,7 +123,7 @@ class _Relocators(dict):
             relocator = _tuple
         elif issubclass(cls, _IMMUTABLE) and not issubclass(cls, (dict, list)):
             relocator = None
-        elif dataclasses.is_dataclass(cls) and cls.__dataclass_params__.frozen:
+        elif is_frozen(cls):
             relocator = _dataclass_relocator(cls)
         else:
             relocator = _refuse
