@@ -323,6 +323,7 @@ class NumbaBackend:
         world = self._world
         if not self.stale and world[0] is sb.values and world[1] is table.ints and world[2] is table.tags:
             return self.address
+        self.loop = variants.loop_for(self.program)  # first: it may hand instructions to Python
         code, starts, floats = self.program.arrays()
         self._fit_counters(code.shape[0], starts.shape[0])
         found = max(table.order.shape[0], sb.present.shape[0])  # entities (as many as the table holds), or holders (`*`)
@@ -334,7 +335,6 @@ class NumbaBackend:
             sb.trigger, self.counts, self.totals, self.active, self.ovf, self.cints, self.cfloats, sels, sfloats, tests,
             table.ints, table.floats, table.tags, table.order, self.selbuf, self.logbuf, self.fstack, self.coll,
             self.as_cache, self.batch, self.leaves.meta, self.leaves.values, table.random, sb.kept, table.live)
-        self.loop = variants.loop_for(self.program.opcodes)
         self.descriptor, self.machine_type = vm.machine(self.machine)
         self.address = self.descriptor.ctypes.data
         self._resume = entry_point(self.loop.run, self.machine_type)

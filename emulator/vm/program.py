@@ -9,7 +9,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from emulator.vm.loop import OP_CALLREG, OP_HALT, OP_RESUME, WIDTH
+from emulator.vm.loop import OP_CALLREG, OP_HALT, OP_HOST, OP_RESUME, WIDTH
+from emulator.vm.opcodes import BY_CODE
 from emulator.world.dimensions import Levels
 from mcfunction_parser.ast import Command, Subcommand
 from mcfunction_parser.diagnostics import Loc
@@ -66,6 +67,18 @@ class Program:
         self.owner.append(owner)
         self._arrays = None
         return len(self.rows) - 1
+
+    def to_host(self, codes: set[int]) -> None:
+        """Each instruction with an opcode of ``codes`` becomes a HOST of its own host op (its ``x``
+        operand): Python runs the command instead (emulator.vm.variants.TO_HOST)."""
+        if not codes:
+            return
+        for row in self.rows:
+            if row[0] in codes:
+                row[:] = [OP_HOST, row[BY_CODE[row[0]].operands.index("x") + 1]] + [0] * (WIDTH - 2)
+        self.opcodes -= codes
+        self.opcodes.add(OP_HOST)
+        self._arrays = None
 
     def patch(self, pc: int, slot: int, value: int) -> None:
         self.rows[pc][slot] = value

@@ -115,8 +115,10 @@ def test_host_run_stores_and_teleports_are_listed_with_their_runs(pack):
 
 
 def test_a_tick_without_host_ops_lists_none(pack):
-    # the load's host commands (objectives add, summon) are not listed; a --call's are
-    root = pack({**HOST_ONLY, "demo/function/tick.mcfunction": "scoreboard players add $t o 1\n"},
+    # the load's host commands (objectives add, summon) are not listed; a --call's are (the tick's
+    # selector makes the program the whole loop's, which runs objective commands itself: a small
+    # loop's program hands them to the host, emulator.vm.variants.TO_HOST)
+    root = pack({**HOST_ONLY, "demo/function/tick.mcfunction": "execute as @e run scoreboard players add $t o 1\n"},
                 load=["demo:init"], tick=["demo:tick"])
     assert report(root, "--ticks", 3)["host"] == []
     assert "host-executed commands: none" in profile(root, "--ticks", 3).output

@@ -49,7 +49,7 @@ def test_a_program_runs_its_tiers_loop_as_the_reference_runs_it(tmp_path, pack, 
         emu = emulator_for(tmp_path / backend, pack, backend=backend)
         results[backend] = (emu.call("t:main"), emu.score("#a", "o"), emu.score("#b", "o"))
         if backend == "numba":
-            assert emu.backend.loop is variants.loop_for(emu.backend.program.opcodes) is not loop
+            assert emu.backend.loop is variants.loop_for(emu.backend.program) is not loop
             assert ("_operate(" in inspect.getsource(emu.backend.loop.run)) == operations
     assert results["numba"] == results["python"] == expected
 
@@ -77,3 +77,21 @@ def test_code_only_a_family_reaches_is_left_out_of_the_loops_without_it():
     assert "_set_score(" not in generate.run_source(variants.TINY)
     assert "_set_score(" in generate.run_source(variants.TINY | {"selholders"})
     assert "@needs" not in generate.render() and "_set_score(" in generate.render()
+
+
+def test_the_small_loops_hand_objective_commands_to_python(tmp_path):
+    # variants.TO_HOST: a program a small loop serves runs `scoreboard objectives add|remove` on the
+    # host, with the same results (a second add fails; a remove returns the objectives left)
+    pack = {"t:main": "scoreboard objectives add o dummy\nscoreboard objectives add p dummy\n"
+                      "scoreboard players set #a p 1",
+            "t:again": "return run scoreboard objectives add o dummy",
+            "t:remove": "return run scoreboard objectives remove p"}
+    results = {}
+    for backend in ("numba", "python"):
+        emu = emulator_for(tmp_path / backend, pack, backend=backend)
+        results[backend] = [emu.call(f) for f in ("t:main", "t:again", "t:remove", "t:remove")] + [emu.objectives()]
+        if backend == "numba":
+            assert emu.backend.loop is not loop and "objective" not in emu.backend.loop.__doc__
+            assert not any(opcodes.BY_CODE[code].family == "objective" for code in emu.backend.program.opcodes)
+    assert results["numba"] == results["python"]
+    assert results["python"][2:] == [1, 0, ["o"]]
