@@ -30,6 +30,7 @@ Classes it can't reproduce exactly (``default_factory``, ``init=False`` or keywo
 from __future__ import annotations
 
 import dataclasses
+import inspect
 from operator import attrgetter
 from types import MemberDescriptorType
 
@@ -38,19 +39,40 @@ _RELEASED: dict[type, tuple] = {}
 _GUARDED = [False]
 # called with the new state when guard_nodes changes it (relocate forgets the code it generated)
 ON_GUARD: list = []
-_NODES: set = set()  # the classes :func:`node` declared
 
 
 def node(cls: type) -> type:
     """``@dataclass(frozen=True, slots=True)``: the same fields, slots, equality, hash, repr and
-    immutability, the methods generic over the class's fields instead of compiled for each."""
-    made = dataclasses.dataclass(cls, init=False, repr=False, eq=False, slots=True)
+    immutability, the methods generic over the class's fields instead of compiled for each; its
+    ``__dataclass_params__`` and the docstring of a class without one are those dataclasses gives."""
+    documented = bool(cls.__doc__)
+    if not documented:  # dataclasses would sign it from an __init__ it does not have yet
+        cls.__doc__ = "-"
+    # made unfrozen, then frozen by the methods below: dataclasses refuses that on a frozen base
+    bases = [b.__dataclass_params__ for b in cls.__mro__[1:] if "__dataclass_params__" in b.__dict__]
+    for base in bases:
+        base.frozen = False
+    try:
+        made = dataclasses.dataclass(cls, init=False, repr=False, eq=False, slots=True)
+    finally:
+        for base in bases:
+            base.frozen = True
+    params = made.__dataclass_params__
+    params.init = params.repr = params.eq = params.frozen = True  # what the methods below give it
+    if not documented:
+        made.__doc__ = made.__name__ + _text_signature(made)
     names = tuple(f.name for f in dataclasses.fields(made))
     made._values = staticmethod(_values_of(names))
     made.__eq__, made.__hash__, made.__repr__ = _eq, _hash, _repr
     made.__setattr__, made.__delattr__ = _frozen_setattr, _frozen_delattr
-    _NODES.add(made)
     return made
+
+
+def _text_signature(cls: type) -> str:
+    """``str(inspect.signature(cls))`` of the ``__init__`` dataclasses writes (no ``-> None``)."""
+    params = [f"{f.name}: {inspect.formatannotation(f.type)}"
+              + ("" if f.default is dataclasses.MISSING else f" = {f.default!r}") for f in dataclasses.fields(cls)]
+    return f"({', '.join(params)})"
 
 
 def _values_of(names: tuple):
@@ -88,7 +110,7 @@ def _frozen_delattr(self, name):
 
 def is_frozen(cls: type) -> bool:
     """Whether ``cls`` is a frozen dataclass (a :func:`node`, or declared ``frozen=True``)."""
-    return cls in _NODES or (dataclasses.is_dataclass(cls) and cls.__dataclass_params__.frozen)
+    return dataclasses.is_dataclass(cls) and cls.__dataclass_params__.frozen
 
 
 class _Lazy:

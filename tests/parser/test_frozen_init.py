@@ -189,3 +189,35 @@ def test_patched_classes_pickle_as_their_fields():
     speed_up_inits(globals())
     assert pickle.loads(pickle.dumps(_Child(1, c=(2,)))) == _Child(1, "b", (2,))
     assert _WithFactory.__reduce__ is object.__reduce__  # no fast __init__: pickled as before
+
+
+def _twin(cls):
+    """The class ``@dataclass(frozen=True, slots=True)`` makes of ``cls``'s fields (flattened)."""
+    fields = dataclasses.fields(cls)
+    namespace = {"__annotations__": {f.name: f.type for f in fields}, "__qualname__": cls.__qualname__,
+                 **{f.name: f.default for f in fields if f.default is not dataclasses.MISSING}}
+    return dataclasses.dataclass(frozen=True, slots=True)(type(cls.__name__, (), namespace))
+
+
+@pytest.mark.parametrize("module", [ast, diagnostics])
+def test_nodes_behave_as_the_dataclasses_they_are_declared_as(module):
+    """``frozen_init.node`` compiles no method per class; what it gives each node matches what
+    ``@dataclass(frozen=True, slots=True)`` makes of the same fields: the parameters (frozen, with
+    ``__init__``, ``__repr__`` and ``__eq__``), ``__match_args__``, the signed docstring of a class
+    without one (``help()``), ``repr``, ``hash`` and equality (same class only)."""
+    nodes = [c for c in _module_dataclasses(module) if c.__dataclass_params__.frozen]
+    assert len(nodes) >= (90 if module is ast else 1) and all(frozen_init.is_frozen(c) for c in nodes)
+    names = ("init", "repr", "eq", "order", "unsafe_hash", "frozen")
+    for cls in nodes:
+        twin = _twin(cls)
+        assert [getattr(cls.__dataclass_params__, n) for n in names] == \
+            [getattr(twin.__dataclass_params__, n) for n in names], cls.__name__
+        assert cls.__match_args__ == twin.__match_args__, cls.__name__
+        if cls.__doc__.startswith(cls.__name__ + "("):  # no docstring: signed as dataclasses signs it
+            assert cls.__doc__ == twin.__doc__
+        values = [(i, f"v{i}") for i, _ in enumerate(dataclasses.fields(cls))]
+        other = [(i, "w") for i, _ in enumerate(dataclasses.fields(cls))]
+        made, twin_made = cls(*values), twin(*values)
+        assert repr(made) == repr(twin_made) and hash(made) == hash(twin_made), cls.__name__
+        assert made == cls(*values) and (made != cls(*other)) == bool(values)
+        assert made.__eq__(twin_made) is NotImplemented and made != twin_made
