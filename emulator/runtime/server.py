@@ -22,7 +22,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    tridents and snowballs fly, and another projectile made in flight since the last tick is
    reported as not modelled (it would have moved: :func:`emulator.world.projectiles.tick_flying`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
-   tick_players`).
+   tick_players`); the block entities tick (:mod:`emulator.world.block_entity_ticks`); a mob in or
+   on a block that would act on it is reported as not modelled (:mod:`emulator.world.block_contact`).
 An advancement reward function earned by a command (``advancement grant``, ``effect give`` ...)
 runs right after that command, inside its root (the backends queue it: AdvancementRewards.grant,
 ServerFunctionManager.execute); one earned outside any command (a step of the tick, a PackTest
@@ -44,7 +45,7 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_entity_ticks, block_use, combat, crafters, light, living, nbt_ops,
+from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, light, living, nbt_ops,
                            player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
@@ -76,7 +77,8 @@ ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),
                 (projectiles.tick_flying, projectiles.tick_is_idle),
                 (advancements.tick_players, advancements.tick_is_idle),
-                (block_entity_ticks.tick_block_entities, block_entity_ticks.tick_is_idle))
+                (block_entity_ticks.tick_block_entities, block_entity_ticks.tick_is_idle),
+                (block_contact.tick_report, block_contact.tick_is_idle))
 
 _STEPS = tuple(step for step, _ in ENTITY_STEPS)
 

@@ -1,0 +1,59 @@
+"""Blocks that act on a mob standing in or on them, which the emulator does not model: reported as
+not modelled, once per block, while a living mob (a mob, a player, an armor stand) is where the
+block would act on it. Entities do not move here, so the game's outcome (a tilted leaf, a pressed
+plate, a burn) never comes, and a test waiting for it must not fail as if the pack were wrong.
+
+- ``tick_report(state)``: the report, each tick after the entities' other steps;
+  ``tick_is_idle(state)``: nothing left to report.
+
+The blocks (decompiled 1.21, world/level/block/): BigDripleafBlock.entityInside (an entity on the
+leaf tilts it: onGround and above y + 0.6875), BasePressurePlateBlock.entityInside (pressed),
+TripWireBlock.entityInside (triggered), MagmaBlock.stepOn (hurts), FarmBlock.fallOn (trampled
+only by a fall, which needs movement: not listed), PowderSnowBlock.entityInside (freezes).
+Where the game looks: the block at the feet (Entity.checkInsideBlocks covers the bounding box; the
+feet are where these blocks sit) and the block under them (Entity.getOnPos: 0.2 below the feet).
+"""
+from __future__ import annotations
+
+import math
+
+MESSAGE = "a mob standing in or on {} (what the block does to it is not modelled here)"
+_INSIDE_SUFFIXES = ("_pressure_plate",)
+_INSIDE = frozenset({"minecraft:big_dripleaf", "minecraft:tripwire", "minecraft:powder_snow"})
+_STEP_ON = frozenset({"minecraft:magma_block"})
+_ON_POS_OFFSET = 0.2  # Entity.getOnPos(): getOnPos(0.2F)
+
+
+def _acts_inside(block_id: str) -> bool:
+    return block_id in _INSIDE or block_id.endswith(_INSIDE_SUFFIXES)
+
+
+def _touched(state, entity):
+    """The acting block ids at the mob's feet and under them (both checks: with no gravity a mob
+    set above a leaf or plate stays at whole y, where the game would have it resting on it)."""
+    blocks = state.level(entity.dimension).blocks
+    x, y, z = entity.pos
+    feet = (math.floor(x), math.floor(y), math.floor(z))
+    under = (feet[0], math.floor(y - _ON_POS_OFFSET), feet[2])
+    for pos in {feet, under}:
+        block_id = blocks.get(pos).id
+        if _acts_inside(block_id) or (pos == under and block_id in _STEP_ON):
+            yield block_id
+
+
+def _unreported(state):
+    reported = {d.message for d in state.diagnostics}
+    for entity in state.entities.living_mobs():
+        for block_id in _touched(state, entity):
+            message = MESSAGE.format(block_id)
+            if message not in reported:
+                yield message
+
+
+def tick_report(state) -> None:
+    for message in dict.fromkeys(_unreported(state)):  # in the mobs' order, each once
+        state.error(message, severity="warning", unmodelled=True)
+
+
+def tick_is_idle(state) -> bool:
+    return next(_unreported(state), None) is None
