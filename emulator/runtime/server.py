@@ -45,8 +45,8 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, light, living, nbt_ops,
-                           player_actions, projectiles, statistics)
+from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, light, living,
+                           nbt_ops, player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels

@@ -42,12 +42,14 @@ def _touched(state, entity):
 
 
 def _unreported(state):
-    reported = {d.message for d in state.diagnostics}
-    for entity in state.entities.living_mobs():
-        for block_id in _touched(state, entity):
-            message = MESSAGE.format(block_id)
-            if message not in reported:
-                yield message
+    touched = [block_id for entity in state.entities.living_mobs() for block_id in _touched(state, entity)]
+    if not touched:  # the common tick: no look at the diagnostics
+        return
+    reported = {d.message for d in state.diagnostics if d.unmodelled}
+    for block_id in touched:
+        message = MESSAGE.format(block_id)
+        if message not in reported:
+            yield message
 
 
 def tick_report(state) -> None:
