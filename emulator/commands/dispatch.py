@@ -31,7 +31,8 @@ HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **serve
             **items.HANDLERS, ast.UnreadCommand: _unread}
 # the commands the parser keeps as text, by name
 GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **recipes.HANDLERS,
-                    **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS, **teams.HANDLERS}
+                    **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS, **teams.HANDLERS,
+                    **entities.GENERIC_HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

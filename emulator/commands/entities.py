@@ -38,7 +38,7 @@ from emulator.world.source import Source
 from emulator.world.context import Context, SERVER
 from emulator.world.state import WorldState
 from mcfunction_parser import ast, selectors
-from mcfunction_parser.arguments import holder_from_word
+from mcfunction_parser.arguments import holder_from_word, vec2, vec3
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.reader import ParseError, Reader
 
@@ -296,7 +296,52 @@ def ride(env, cmd: ast.Ride, ctx: Context) -> int:
     return 1
 
 
+def rotate(env, cmd: ast.GenericCommand, ctx: Context) -> int:
+    """RotateCommand (1.21.2+): ``rotate TARGET ROTATION | facing POS | facing entity E [eyes|feet]``
+    on one entity; the result is 1.
+
+    ``rotate(source, entity, Coordinates)``: the rotation argument against the execution rotation
+    (as ``tp``'s), set by Entity.forceSetRotation -> setYRot/setXRot: neither wrapped nor clamped
+    (``tp`` wraps and clamps), a non-finite angle discarded. ``rotate(source, entity, LookAt)``:
+    LookAt.perform -> Entity.lookAt from the entity's own position and the execution anchor, the
+    same turn as ``tp ... facing`` (:func:`emulator.world.teleport.look_at`). A player is turned at
+    once (the game sends it a rotation packet its client answers)."""
+    state = env.state
+    reader = Reader(cmd.text, cmd.loc, tuple(state.version))
+    reader.pos = len(cmd.name)
+    try:
+        reader.skip_ws()
+        target_arg = selectors.target(reader, single=True)
+        reader.skip_ws()
+        if cmd.text.startswith("facing", reader.pos):
+            reader.pos += len("facing")
+            reader.skip_ws()
+            if cmd.text.startswith("entity ", reader.pos):
+                reader.pos += len("entity")
+                reader.skip_ws()
+                facing_arg = selectors.target(reader, single=True)
+                reader.skip_ws()
+                anchor = reader.word() if reader.more() else "feet"
+                rotation_arg = facing_pos = None
+            else:
+                facing_pos, facing_arg, rotation_arg = vec3(reader), None, None
+        else:
+            rotation_arg, facing_pos, facing_arg = vec2(reader), None, None
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error.message, report=True) from None
+    entity = single(state, target_arg, ctx)
+    source = world_source(state, ctx)
+    if rotation_arg is not None:
+        yaw, pitch = source.rotation_of(rotation_arg)
+        teleport.set_rotation(entity, yaw, pitch)
+        return 1
+    target = source.position_of(facing_pos) if facing_pos is not None else single(state, facing_arg, ctx).anchor(anchor)
+    teleport.set_rotation(entity, *teleport.look_at(source, entity.pos, entity, target))
+    return 1
+
+
 HANDLERS = {ast.Summon: summon, ast.Kill: kill, ast.TagCommand: tag, ast.Teleport: tp, ast.Ride: ride}
+GENERIC_HANDLERS = {"rotate": rotate}
 
 
 # ---------------------------------------------------------------------- the API's view

@@ -60,8 +60,9 @@ def _moved(pos, yaw, pitch, dimension: str) -> Destination:
     return Destination(tuple(pos), yaw, pitch, dimension)
 
 
-def _look_from(source: Source, pos, entity, target) -> tuple[np.float32, np.float32]:
-    """``Entity.lookAt(source anchor, target)`` after the move: from the entity's anchor at ``pos``."""
+def look_at(source: Source, pos, entity, target) -> tuple[np.float32, np.float32]:
+    """``Entity.lookAt(source anchor, target)`` (LookAt.perform): from the entity's anchor at ``pos``
+    (``tp`` turns it after the move, ``rotate`` where it stands)."""
     x, y, z = pos
     origin = (x, y + float(entity.eye_height), z) if source.anchor == "eyes" else (x, y, z)
     return rotation.facing_rotation(origin, target)
@@ -79,7 +80,7 @@ def to_position(source: Source, entity, location: ast.Vec3, rotation_arg: ast.Ve
         target = facing_entity.anchor(facing_anchor)
     if target is None:
         return moved
-    yaw, pitch = _look_from(source, moved.pos, entity, target)
+    yaw, pitch = look_at(source, moved.pos, entity, target)
     return Destination(moved.pos, yaw, pitch, moved.dimension)
 
 
@@ -122,12 +123,17 @@ def _cross_levels(entity, destination: Destination, store, version) -> None:
         start_riding(rider, entity)
 
 
+def set_rotation(entity, yaw, pitch) -> None:
+    """Entity.setYRot/setXRot: a non-finite angle is discarded, any other kept as given."""
+    if math.isfinite(yaw):
+        entity.yaw = np.float32(yaw)
+    if math.isfinite(pitch):
+        entity.pitch = np.float32(pitch)
+
+
 def _move(entity, destination: Destination) -> None:
     entity.pos = destination.pos
-    if math.isfinite(destination.yaw):
-        entity.yaw = destination.yaw
-    if math.isfinite(destination.pitch):
-        entity.pitch = destination.pitch
+    set_rotation(entity, destination.yaw, destination.pitch)
     vx, _, vz = entity.motion
     entity.motion = (vx, 0.0, vz)  # deltaMovement.multiply(1, 0, 1)
 
