@@ -11,7 +11,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    time then insertion; a scheduled tag runs each member as its own root. Scheduled functions
    run as the server at world spawn; then the blocks' scheduled ticks due
    (:class:`emulator.world.block_ticks.BlockTicks`); before 26.1 the day time then advances by
-   one when ``doDaylightCycle`` is on (ServerLevel.tickTime);
+   one when ``doDaylightCycle`` is on (ServerLevel.tickTime); the weather advances before all of
+   step 4 (ServerLevel.advanceWeatherCycle: :mod:`emulator.world.weather`);
 5. every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
    (:func:`emulator.world.combat.tick_dead`), a player using an item goes on using it
@@ -40,6 +41,7 @@ that); the runtime then finishes that tick itself and looks again.
 """
 from __future__ import annotations
 
+import copy
 from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult, TickBatches
@@ -247,9 +249,13 @@ class Runtime:
         start = (state.gametime, state.tick, state.daytime)
         daylight = state.gamerules.daylight_cycle
         clocks = None if state.clocks is None else state.clocks.snapshot()
+        weather, cycle = copy.deepcopy(state.weather), state.gamerules.weather_cycle
 
-        def at_tick(t: int) -> None:  # ticks 0 .. t-1 of the batch ended moving only the clocks
+        def at_tick(t: int) -> None:  # ticks 0 .. t-1 of the batch ended moving only the clocks (and the weather)
             state.gametime, state.tick = start[0] + t, start[1] + t
+            state.weather = copy.deepcopy(weather)  # only Python reads it: a batch stops before that
+            for _ in range(t):
+                state.weather.advance(cycle)
             if clocks is not None:
                 state.clocks.after(clocks, t)
             elif daylight:
@@ -290,7 +296,9 @@ class Runtime:
         state = self.state
         if state.clocks is not None:
             state.clocks.tick()
-        else:  # ServerLevel.tick: updateSkyBrightness, then tickTime
+        # ServerLevel.tick: advanceWeatherCycle, updateSkyBrightness, then tickTime
+        state.weather.advance(state.gamerules.weather_cycle)
+        if state.clocks is None:
             state.sky_darken = light.sky_darken(state.daytime)
         state.gametime += 1
         while (entry := state.schedule.pop_due(state.gametime)) is not None:

@@ -152,6 +152,17 @@ MESSAGES = {
     "commands.attribute.failed.no_modifier": "Attribute {0} for entity {1} has no modifier {2}",
     "commands.attribute.failed.modifier_already_present": "Modifier {0} is already present on attribute {1} for entity {2}",
     "commands.damage.invulnerable": "Target is invulnerable to the given damage type",
+    "commands.difficulty.failure": "The difficulty did not change; it is already set to {0}",
+    "commands.worldborder.set.failed.nochange": "Nothing changed. The world border is already that size",
+    "commands.worldborder.set.failed.small": "World border cannot be smaller than 1 block wide",
+    "commands.worldborder.set.failed.big": "World border cannot be bigger than {0} blocks wide",
+    "commands.worldborder.set.failed.far": "World border cannot be further out than {0} blocks",
+    "commands.worldborder.center.failed": "Nothing changed. The world border is already centered there",
+    "commands.worldborder.damage.amount.failed": "Nothing changed. The world border damage is already that amount",
+    "commands.worldborder.damage.buffer.failed": "Nothing changed. The world border damage buffer is already that distance",
+    "commands.worldborder.warning.time.failed": "Nothing changed. The world border warning is already that amount of time",
+    "commands.worldborder.warning.distance.failed": "Nothing changed. The world border warning is already that distance",
+    "argument.pos.outofbounds": "That position is outside the allowed boundaries.",
 }
 
 EMULATOR_MESSAGES = {

@@ -37,9 +37,12 @@ def online(state, name: str):
     return next((p for p in state.entities.players() if p.player_name == name), None)
 
 
-def join(state, name: str, pos, rotation=(0.0, 0.0), gamemode: str = "survival", level: int = 0,
+def join(state, name: str, pos, rotation=(0.0, 0.0), gamemode: str | None = None, level: int = 0,
          on_ground: bool = True, dimension: str = "minecraft:overworld"):
-    """A player named ``name`` joins (the one already online of that name leaves first)."""
+    """A player named ``name`` joins (the one already online of that name leaves first), in
+    ``gamemode`` or else the world's default game mode (``defaultgamemode``)."""
+    if gamemode is None:
+        gamemode = state.level_settings.default_gamemode
     previous = online(state, name)
     if previous is not None:
         leave(state, previous)

@@ -139,8 +139,12 @@ def _time_check(c: dict, ctx: LootContext) -> bool:
 
 
 def _weather_check(c: dict, ctx: LootContext) -> bool:
-    """The world's weather is always clear here (``weather`` is not modelled: it is reported)."""
-    return all(c.get(key) in (None, False) for key in ("raining", "thundering"))
+    """WeatherCheck.test: the context's level's Level.isRaining / isThundering (emulator.world.weather)."""
+    weather, dimension = ctx.state.weather, ctx.dimension
+    raining, thundering = c.get("raining"), c.get("thundering")
+    if raining is not None and bool(raining) != weather.is_raining(dimension):
+        return False
+    return thundering is None or bool(thundering) == weather.is_thundering(dimension)
 
 
 def _location_check(c: dict, ctx: LootContext) -> bool:

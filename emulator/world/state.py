@@ -43,10 +43,12 @@ from emulator.world.advancement_progress import Progress
 from emulator.world.bossbars import BossBars
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
+from emulator.world.level_settings import LevelSettings
 from emulator.world.block_ticks import BlockTicks
 from emulator.world.random_sequences import RandomSequences
 from emulator.world.records import Frame, LogEntry, Overflow, RuntimeDiagnostic
 from emulator.world.resources import Resources
+from emulator.world.weather import Weather
 from emulator.world.storage import StorageData
 from emulator.world.teams import Teams
 from mcfunction_parser.diagnostics import Loc
@@ -406,6 +408,7 @@ GAMERULE_DEFAULTS: dict[str, str] = {
     "sendCommandFeedback": "true",
     "commandBlockOutput": "true",
     "doDaylightCycle": "true",
+    "doWeatherCycle": "true",
     "randomTickSpeed": "3",
     "keepInventory": "false",
     "showDeathMessages": "true",
@@ -420,6 +423,7 @@ GAMERULE_ALIASES: dict[str, str] = {
     "send_command_feedback": "sendCommandFeedback",
     "command_block_output": "commandBlockOutput",
     "advance_time": "doDaylightCycle",
+    "advance_weather": "doWeatherCycle",
     "random_tick_speed": "randomTickSpeed",
     "keep_inventory": "keepInventory",
     "show_death_messages": "showDeathMessages",
@@ -443,6 +447,7 @@ class Gamerules:
         self.max_command_chain_length = self.get_int("maxCommandChainLength")
         self.max_command_fork_count = self.get_int("maxCommandForkCount")
         self.daylight_cycle = self.values["doDaylightCycle"] == "true"
+        self.weather_cycle = self.values["doWeatherCycle"] == "true"
 
     @staticmethod
     def canonical(name: str) -> str:
@@ -530,6 +535,8 @@ class WorldState:
     # False in the test server's world (GameTestServer: WorldOptions without generated structures);
     # None where the world's structures are not known (the emulator generates no terrain)
     structures_generated: bool | None = None
+    weather: Weather = field(default_factory=Weather)  # the overworld's level data (emulator.world.weather)
+    level_settings: LevelSettings = field(default_factory=LevelSettings)  # spawn, border, difficulty (level_settings)
     sky_darken: int = 0  # Level.skyDarken: set from the day time as the overworld starts and each tick (light)
 
     def __post_init__(self) -> None:

@@ -12,8 +12,8 @@ from emulator.testing.junit import junit_xml
 from tests.conftest import write_pack
 
 FILES = {
-    "demo/test/weather.mcfunction": "weather rain\nsucceed\n",
-    "demo/test/weather_fails.mcfunction": "weather rain\nfail \"boom\"\n",
+    "demo/test/frozen.mcfunction": "tick freeze\nsucceed\n",
+    "demo/test/frozen_fails.mcfunction": "tick freeze\nfail \"boom\"\n",
     "demo/test/sounds.mcfunction": "particle flame ~ ~ ~\nplaysound minecraft:block.note_block.harp master @a\n"
                                    "forceload add 0 0\nsucceed\n",
     "demo/test/forceload_query.mcfunction": "forceload query 0 0\nsucceed\n",
@@ -37,23 +37,23 @@ def run(tmp_path, backend="numba", **options):
 def test_unmodelled_effects_make_tests_inconclusive_with_the_reason(tmp_path, backend):
     summary, results = run(tmp_path, backend)
     status = {k: r.status for k, r in results.items()}
-    assert status == {"demo:weather": "inconclusive", "demo:weather_fails": "inconclusive",
+    assert status == {"demo:frozen": "inconclusive", "demo:frozen_fails": "inconclusive",
                       "demo:sounds": "passed", "demo:vanilla_tag": "inconclusive", "demo:condition": "inconclusive",
                       "demo:forceload_query": "inconclusive"}
-    assert "'weather' is not emulated" in results["demo:weather"].message
-    assert results["demo:weather"].message.endswith("the test passed")
-    assert "failed (boom)" in results["demo:weather_fails"].message
+    assert "'tick' is not emulated" in results["demo:frozen"].message
+    assert results["demo:frozen"].message.endswith("the test passed")
+    assert "failed (boom)" in results["demo:frozen_fails"].message
     assert "#minecraft:logs is not known" in results["demo:vanilla_tag"].message
     assert "location predicate field 'light'" in results["demo:condition"].message
     assert summary.line() == "1 passed, 0 failed, 5 inconclusive"
-    skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='weather']/skipped")
+    skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='frozen']/skipped")
     assert skipped is not None and skipped.get("type") == "inconclusive"
 
 
 def test_allow_unmodelled_gives_pass_and_fail_back(tmp_path):
     summary, results = run(tmp_path, "python", allow_unmodelled=True)
-    assert results["demo:weather"].status == "passed"
-    assert results["demo:weather_fails"].status == "failed"
+    assert results["demo:frozen"].status == "passed"
+    assert results["demo:frozen_fails"].status == "failed"
     assert results["demo:condition"].status == "failed"  # the command failed as not modelled
 
 

@@ -1,0 +1,82 @@
+"""The overworld's weather (every level shares its level data; only a level with sky light rains).
+
+- ``Weather``: the saved timers and flags (ServerLevelData clearWeatherTime, rainTime,
+  thunderTime, raining, thundering) and the levels the predicates read (Level.rainLevel,
+  thunderLevel, float32).
+- ``Weather.set(clear, duration, raining, thundering)``: ServerLevel.setWeatherParameters.
+- ``Weather.advance(cycle)``: ServerLevel.advanceWeatherCycle, once per tick: with the
+  ``doWeatherCycle`` rule the timers count down (a timer at 0 draws a new one; its draw is not the
+  game's random), then the rain and thunder levels move 0.01 towards the flags.
+- ``Weather.is_raining(dimension)`` / ``is_thundering(dimension)``: Level.isRaining (rain level >
+  0.2) and isThundering (thunder level x rain level > 0.9, in a level with sky light and no ceiling),
+  what the ``weather_check`` predicate tests.
+"""
+from __future__ import annotations
+
+import random
+from dataclasses import dataclass, field
+
+import numpy as np
+
+# ServerLevel's IntProviders (UniformInt.of, bounds inclusive)
+RAIN_DELAY = (12000, 180000)
+RAIN_DURATION = (12000, 24000)
+THUNDER_DELAY = (12000, 180000)
+THUNDER_DURATION = (3600, 15600)
+# the levels whose dimension type has sky light and no ceiling (the vanilla dimension types)
+SKY_LEVELS = frozenset({"minecraft:overworld"})
+
+_STEP = np.float32(0.01)
+
+
+@dataclass
+class Weather:
+    clear_time: int = 0
+    rain_time: int = 0
+    thunder_time: int = 0
+    raining: bool = False
+    thundering: bool = False
+    rain_level: np.float32 = np.float32(0.0)
+    thunder_level: np.float32 = np.float32(0.0)
+    random: random.Random = field(default_factory=lambda: random.Random(0))  # stands for the level's random
+
+    def set(self, clear: int, duration: int, raining: bool, thundering: bool) -> None:
+        self.clear_time, self.rain_time, self.thunder_time = clear, duration, duration
+        self.raining, self.thundering = raining, thundering
+
+    def sample(self, bounds: tuple[int, int]) -> int:
+        return self.random.randint(*bounds)
+
+    def advance(self, cycle: bool) -> None:
+        if cycle:
+            self._count_down()
+        self.thunder_level = _towards(self.thunder_level, self.thundering)
+        self.rain_level = _towards(self.rain_level, self.raining)
+
+    def _count_down(self) -> None:
+        if self.clear_time > 0:
+            self.clear_time -= 1
+            self.thunder_time = 0 if self.thundering else 1
+            self.rain_time = 0 if self.raining else 1
+            self.thundering = self.raining = False
+            return
+        self.thunder_time, self.thundering = self._timer(self.thunder_time, self.thundering,
+                                                         THUNDER_DURATION, THUNDER_DELAY)
+        self.rain_time, self.raining = self._timer(self.rain_time, self.raining, RAIN_DURATION, RAIN_DELAY)
+
+    def _timer(self, time: int, on: bool, duration, delay) -> tuple[int, bool]:
+        if time > 0:
+            time -= 1
+            return time, (not on) if time == 0 else on
+        return self.sample(duration if on else delay), on
+
+    def is_raining(self, dimension: str) -> bool:
+        return dimension in SKY_LEVELS and float(self.rain_level) > 0.2
+
+    def is_thundering(self, dimension: str) -> bool:
+        return dimension in SKY_LEVELS and float(np.float32(self.thunder_level * self.rain_level)) > 0.9
+
+
+def _towards(level: np.float32, on: bool) -> np.float32:
+    moved = np.float32(level + _STEP) if on else np.float32(level - _STEP)
+    return np.float32(min(max(moved, np.float32(0.0)), np.float32(1.0)))

@@ -1,0 +1,153 @@
+"""The commands on the world's level data, on both backends: their results, failures and what packs
+read afterwards. Sources (decompiled 1.21, server/commands/): ListPlayersCommand.format (the
+players online), WeatherCommand.setClear/setRain/setThunder (ServerLevel.setWeatherParameters; the
+result is the duration given, -1 without), ServerLevel.advanceWeatherCycle and Level.isRaining /
+isThundering (what the weather_check predicate tests: the rain level climbs 0.01 a tick and must
+pass 0.2), DifficultyCommand (query: Difficulty.getId; set: 0, ERROR_ALREADY_DIFFICULT),
+SeedCommand ((int) seed), DefaultGameModeCommands.setMode (0: no forced game mode),
+WorldBorderCommand (getSize: floor(size + 0.5); setSize: (int)(new - old) and its failures;
+setCenter 0; damage and warning: the value), SetWorldSpawnCommand.setSpawn (1; 0 outside the
+overworld), SetSpawnCommand.setSpawn (the number of players; ServerPlayer.setRespawnPosition as
+saved: SpawnX/Y/Z, SpawnAngle, SpawnDimension, SpawnForced; from 1.21.5 ``respawn``)."""
+import json
+
+import pytest
+
+from emulator import Emulator
+from tests.world.world_emulator import emulator, make_pack
+
+
+def scores(emu, *holders):
+    return [emu.score(h, "o") for h in holders]
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_list_counts_the_players_online(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "execute store result score #n o run list\n"
+                                               "execute store result score #u o run list uuids"})
+    emu.call("t:go")
+    assert scores(emu, "#n", "#u") == [0, 0]
+    emu.add_player("Alex", (0, 0, 0))
+    emu.add_player("Steve", (5, 0, 0))
+    emu.call("t:go")
+    assert scores(emu, "#n", "#u") == [2, 2]
+
+
+WEATHER_PACK = {
+    "t:rain": "execute store result score #r o run weather rain 600",
+    "t:thunder": "execute store result score #t o run weather thunder 10s",
+    "t:clear": "execute store result score #c o run weather clear 1d",
+    "t:look": "\n".join([
+        "execute store success score #raining o if predicate t:raining",
+        "execute store success score #thundering o if predicate t:thundering",
+        "execute in the_nether store success score #nether o if predicate t:raining",
+    ]),
+}
+
+
+def weather_emulator(tmp_path, backend):
+    # a #tick function: quiet ticks run in batches on the numba backend, the weather advancing with them
+    root = make_pack(tmp_path / "p", {"t:setup": "scoreboard objectives add o dummy", **WEATHER_PACK,
+                                      "t:count": "scoreboard players add #ticks o 1"},
+                     {"minecraft:tick": ["t:count"]})
+    predicates = root / "data" / "t" / "predicate"
+    predicates.mkdir(parents=True)
+    (predicates / "raining.json").write_text(json.dumps({"condition": "weather_check", "raining": True}))
+    (predicates / "thundering.json").write_text(json.dumps({"condition": "weather_check", "thundering": True}))
+    emu = Emulator(backend=backend)
+    emu.load(root)
+    emu.call("t:setup")
+    return emu
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_weather_sets_the_level_and_the_predicate_sees_it_as_the_rain_level_rises(tmp_path, backend):
+    emu = weather_emulator(tmp_path, backend)
+    emu.call("t:rain")
+    emu.call("t:look")
+    assert scores(emu, "#r", "#raining") == [600, 0]  # the rain level is still 0
+    emu.tick(19)  # 19 x 0.01 in float32: 0.19000001
+    emu.call("t:look")
+    assert scores(emu, "#raining") == [0]
+    emu.tick(1)  # 0.20000002 > 0.2
+    emu.call("t:look")
+    assert scores(emu, "#raining", "#thundering", "#nether") == [1, 0, 0]
+    emu.call("t:thunder")
+    emu.tick(100)
+    emu.call("t:look")
+    assert scores(emu, "#t", "#raining", "#thundering") == [200, 1, 1]
+    weather = emu.state.weather
+    assert (weather.rain_time, weather.thunder_time, weather.raining, weather.thundering) == (100, 100, True, True)
+    assert emu.score("#ticks", "o") == 120
+    emu.call("t:clear")
+    emu.tick(100)
+    emu.call("t:look")
+    assert scores(emu, "#c", "#raining", "#thundering") == [24000, 0, 0]
+    assert emu.state.weather.clear_time == 24000 - 100
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_weather_timers_run_out(tmp_path, backend):
+    """advanceWeatherCycle: a rain timer reaching 0 flips the rain off; with doWeatherCycle false
+    the timers stand still."""
+    emu = weather_emulator(tmp_path, backend)
+    emu.call("t:rain")
+    emu.tick(599)
+    assert emu.state.weather.raining
+    emu.tick(1)
+    assert not emu.state.weather.raining and emu.state.weather.rain_time == 0
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_difficulty_seed_and_default_game_mode(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "\n".join([
+        "execute store result score #q o run difficulty",
+        "execute store result score #set o run difficulty hard",
+        "execute store success score #setok o run difficulty hard",
+        "execute store result score #q2 o run difficulty",
+        "execute store result score #seed o run seed",
+        "execute store result score #dgm o run defaultgamemode creative",
+    ])})
+    emu.call("t:go")
+    assert scores(emu, "#q", "#set", "#setok", "#q2", "#seed", "#dgm") == [2, 0, 0, 3, 0, 0]
+    emu.add_player("Alex", (0, 0, 0))
+    assert [e for e in emu.state.entities.players()][0].gamemode == "creative"
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_worldborder(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "\n".join([
+        "execute store result score #get o run worldborder get",
+        "execute store result score #set o run worldborder set 100",
+        "execute store success score #same o run worldborder set 100",
+        "execute store result score #add o run worldborder add -10.6 0",
+        "execute store result score #get2 o run worldborder get",
+        "execute store success score #small o run worldborder set 0.5",
+        "execute store result score #center o run worldborder center 10 20",
+        "execute store success score #center2 o run worldborder center 10 20",
+        "execute store result score #amount o run worldborder damage amount 3.7",
+        "execute store result score #warn o run worldborder warning distance 9",
+        "execute store success score #warn2 o run worldborder warning distance 9",
+    ])})
+    emu.call("t:go")
+    assert scores(emu, "#get", "#set", "#same", "#add", "#get2", "#small", "#center", "#center2", "#amount",
+                  "#warn", "#warn2") == [59999968, -59999868, 0, -10, 89, 0, 0, 0, 3, 9, 0]
+    assert emu.state.level_settings.border_center == (10.5, 20.5)
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_setworldspawn_and_spawnpoint(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "\n".join([
+        "execute store result score #ws o run setworldspawn 10 64 -3",
+        "execute in the_nether store result score #nether o run setworldspawn 1 2 3",
+        "execute in the_nether store success score #nether_ok o run setworldspawn 1 2 3",
+        "execute store result score #sp o run spawnpoint @a 4 70 5",
+        "execute store success score #none o run spawnpoint @a[name=Nobody] 0 0 0",
+        "execute store result score #x o run data get entity @p SpawnX",
+        "execute store result score #dim o if data entity @p {SpawnDimension:\"minecraft:overworld\",SpawnForced:1b}",
+    ])})
+    emu.add_player("Alex", (0, 0, 0))
+    emu.add_player("Steve", (0, 0, 0))
+    emu.call("t:go")
+    assert scores(emu, "#ws", "#nether", "#nether_ok", "#sp", "#none", "#x", "#dim") == [1, 0, 1, 2, 0, 4, 1]
+    assert emu.state.level_settings.spawn == (10, 64, -3)
