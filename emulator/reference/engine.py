@@ -75,7 +75,7 @@ class Interpreter:
 
         limit = self.state.gamerules.max_command_chain_length
         queue = ExecutionQueue(limit, self.state.gamerules.max_command_fork_count, self._internal_error)
-        source = Source(context or Context(), None, None)
+        source = Source(context or Context(pos=self.state.level_settings.server_position()), None, None)
         top = CallFrame(0, None, 0)
         queue.queue_next(top, self._call_function(function, commands, source, on_result, False, None))
         stopped = queue.run()

@@ -193,7 +193,7 @@ class NumbaBackend:
         self.batch_functions = functions
         self.at_tick = at_tick
         self.roots_started = 0
-        self._start_root(Context(), limit)
+        self._start_root(None, limit)
         r = self.regs
         self.root_contexts = (dict(self.contexts), dict(self.context_ids))
         r[vm.R_CALLFN] = ids[0]
@@ -221,7 +221,12 @@ class NumbaBackend:
         if self.rewards:
             self.rewards = []
         if context is None:
-            context, key = _SPAWN, _SPAWN_KEY
+            pos = self.state.level_settings.server_position()
+            if pos == _SPAWN.pos:
+                context, key = _SPAWN, _SPAWN_KEY
+            else:
+                context = Context(pos=pos)
+                key = _context_key(context, ())
         else:
             key = _context_key(context, ())
         if key == self._root_key:  # an entity-less context: row 0 still holds it (no one else writes there)
@@ -708,7 +713,7 @@ def _context_key(ctx: Context, bindings: tuple) -> tuple:
     return ctx.executor, ctx.pos, ctx.rot, ctx.anchor, ctx.dimension, bindings
 
 
-_SPAWN = Context()  # a root's default context (never changed: the backend only reads contexts)
+_SPAWN = Context()  # a root's default context at the first world spawn (never changed: the backend only reads contexts)
 _SPAWN_KEY = _context_key(_SPAWN, ())
 
 

@@ -14,7 +14,7 @@ class Context:
     ``executor`` is ``SERVER`` (-1) or the executing entity's ``Entity.order`` (its slot in the
     entity table, ``state.entities.table.handles``). ``pos`` is (x, y, z) doubles, ``rot`` (yaw, pitch) floats,
     ``anchor`` ``"feet"``/``"eyes"``.
-    The server's default context is at world spawn (0, 0, 0 here) in the overworld.
+    The server's default context is at world spawn (0, 0, 0 until ``setworldspawn``) in the overworld.
     """
 
     executor: int = SERVER

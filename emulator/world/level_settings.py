@@ -29,3 +29,9 @@ class LevelSettings:
     border_damage_buffer: float = 5.0
     border_warning_time: int = 15
     border_warning_blocks: int = 5
+
+    def server_position(self) -> tuple[float, float, float]:
+        """Where the server's command source stands (MinecraftServer.createCommandSourceStack:
+        Vec3.atLowerCornerOf(the world spawn), rotation 0 0): the ``#load``/``#tick`` and scheduled
+        functions' position."""
+        return tuple(float(v) for v in self.spawn)

@@ -151,3 +151,38 @@ def test_setworldspawn_and_spawnpoint(tmp_path, backend):
     emu.call("t:go")
     assert scores(emu, "#ws", "#nether", "#nether_ok", "#sp", "#none", "#x", "#dim") == [1, 0, 1, 2, 0, 4, 1]
     assert emu.state.level_settings.spawn == (10, 64, -3)
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_the_server_runs_its_functions_at_the_world_spawn(tmp_path, backend):
+    """MinecraftServer.createCommandSourceStack: Vec3.atLowerCornerOf(the shared spawn), the source of
+    the #tick and scheduled functions (ServerFunctionManager.getGameLoopSender)."""
+    emu = emulator(tmp_path, backend, {
+        "t:go": "setworldspawn 10 64 -3\nschedule function t:later 1t",
+        "t:later": "summon marker ~ ~ ~ {Tags:[\"later\"]}",
+        "t:tick": "execute unless entity @e[tag=ticked] run summon marker ~ ~ ~ {Tags:[\"ticked\"]}",
+    }, {"minecraft:tick": ["t:tick"]})
+    emu.call("t:go")
+    emu.tick(5)
+    positions = {tag: e["pos"] for e in emu.entities() for tag in e["tags"]}
+    assert positions == {"later": [10.0, 64.0, -3.0], "ticked": [10.0, 64.0, -3.0]}
+
+
+def test_spawnpoint_from_1_21_5_saves_one_respawn_compound(tmp_path):
+    """ServerPlayer.addAdditionalSaveData from 1.21.5: RespawnConfig under ``respawn`` (pos as an
+    int array, angle, dimension, forced) instead of SpawnX/Y/Z ..."""
+    root = make_pack(tmp_path / "p", {"t:setup": "scoreboard objectives add o dummy", "t:go": "\n".join([
+        "execute in the_nether run spawnpoint @a 4 70 5",
+        "execute store result score #y o run data get entity @p respawn.pos[1]",
+        "execute store result score #old o if data entity @p SpawnX",
+        "execute store result score #dim o if data entity @p "
+        "{respawn:{dimension:\"minecraft:the_nether\",forced:1b,angle:0f}}",
+    ])})
+    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 71, "description": "t"}}))
+    emu = Emulator(backend="python")
+    emu.load(root)
+    emu.call("t:setup")
+    emu.add_player("Alex", (0, 0, 0))
+    emu.call("t:go")
+    assert emu.state.version >= (1, 21, 5)
+    assert scores(emu, "#y", "#old", "#dim") == [70, 0, 1]
