@@ -171,17 +171,13 @@ def test_the_server_runs_its_functions_at_the_world_spawn(tmp_path, backend):
 def test_spawnpoint_from_1_21_5_saves_one_respawn_compound(tmp_path):
     """ServerPlayer.addAdditionalSaveData from 1.21.5: RespawnConfig under ``respawn`` (pos as an
     int array, angle, dimension, forced) instead of SpawnX/Y/Z ..."""
-    root = make_pack(tmp_path / "p", {"t:setup": "scoreboard objectives add o dummy", "t:go": "\n".join([
+    emu = emulator(tmp_path, "python", {"t:go": "\n".join([
         "execute in the_nether run spawnpoint @a 4 70 5",
         "execute store result score #y o run data get entity @p respawn.pos[1]",
         "execute store result score #old o if data entity @p SpawnX",
         "execute store result score #dim o if data entity @p "
         "{respawn:{dimension:\"minecraft:the_nether\",forced:1b,angle:0f}}",
-    ])})
-    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 71, "description": "t"}}))
-    emu = Emulator(backend="python")
-    emu.load(root)
-    emu.call("t:setup")
+    ])}, pack_format=71)
     emu.add_player("Alex", (0, 0, 0))
     emu.call("t:go")
     assert emu.state.version >= (1, 21, 5)

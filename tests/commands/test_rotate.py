@@ -3,23 +3,15 @@ Sources: server/commands/RotateCommand.java (rotate(source, entity, Coordinates)
 argument against the execution rotation, Entity.forceSetRotation -> setYRot/setXRot, neither
 wrapped nor clamped; rotate(source, entity, LookAt): LookAt.perform -> Entity.lookAt from the
 entity's position, as ``tp ... facing``); the result is 1, an empty target fails."""
-import json
-
 import pytest
 
-from emulator import Emulator
-from tests.world.world_emulator import make_pack
+from tests.world.world_emulator import emulator
 
 PACK_FORMAT_1_21_4 = 61
 
 
 def emulator_1_21_4(tmp_path, backend, functions):
-    root = make_pack(tmp_path / "p", {"t:setup": "scoreboard objectives add o dummy", **functions})
-    (root / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": PACK_FORMAT_1_21_4, "description": "t"}}))
-    emu = Emulator(backend=backend)
-    emu.load(root)
-    emu.call("t:setup")
-    return emu
+    return emulator(tmp_path, backend, functions, pack_format=PACK_FORMAT_1_21_4)
 
 
 def rotation(emu, tag):
