@@ -17,9 +17,10 @@ Modules
 - :mod:`.conditions`  ``if|unless`` tests, as a stage or as the final command
 - :mod:`.stages`      the context-changing execute stages (as, at, positioned, rotated, in, on ...)
 - :mod:`.stores`      ``execute store`` into scores, data and bossbars
-- :mod:`.entities`    entity arguments and contexts; ``summon kill tag tp ride``
+- :mod:`.entities`    entity arguments and contexts; ``summon kill tag tp ride rotate``
 - :mod:`.blocks`      ``setblock``, ``fill``, ``if block(s)``
 - :mod:`.living`      ``xp``, ``effect``, ``attribute``, ``damage``
 - :mod:`.server`      ``say tellraw gamerule schedule time random trigger``
 - :mod:`.bossbar`     ``bossbar``
+- :mod:`.level`       the level's data: ``list weather difficulty seed defaultgamemode worldborder setworldspawn spawnpoint``
 """

@@ -11,14 +11,16 @@ object).
   (getEntity: exactly one); ``holder_names``: a selector's score holders.
 - ``executor``, ``context_as``, ``entity_stage_context``, ``entity_context``, ``world_source``:
   contexts made for entities (the numba VM makes its ``as``/``at`` contexts with these too).
-- ``HANDLERS``: ``summon kill tag tp ride``, each ``(env, cmd, ctx) -> int``.
+- ``HANDLERS``: ``summon kill tag tp ride``, each ``(env, cmd, ctx) -> int``; ``GENERIC_HANDLERS``:
+  ``rotate`` (kept as text by the parser).
 - ``new_state(shuffle)``, ``parse_target(text)``, ``describe(state, entity)``: the API's side.
 
 Entities live in the store's arrays (:mod:`emulator.world.entity_table`), which the numba VM reads
 and writes itself: what a command changes here, the VM sees, with nothing to notify.
 
 Sources (decompiled 1.21): commands/arguments/EntityArgument.java, server/commands/TeleportCommand.java,
-SummonCommand.java, KillCommand.java, TagCommand.java, RideCommand.java, java.util.UUID.fromString.
+SummonCommand.java, KillCommand.java, TagCommand.java, RideCommand.java, java.util.UUID.fromString;
+RotateCommand.java (1.21.2).
 """
 from __future__ import annotations
 
