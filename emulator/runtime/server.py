@@ -41,7 +41,6 @@ that); the runtime then finishes that tick itself and looks again.
 """
 from __future__ import annotations
 
-import copy
 from collections.abc import Callable
 
 from emulator.runtime.backend import Backend, RootResult, TickBatches
@@ -249,13 +248,12 @@ class Runtime:
         start = (state.gametime, state.tick, state.daytime)
         daylight = state.gamerules.daylight_cycle
         clocks = None if state.clocks is None else state.clocks.snapshot()
-        weather, cycle = copy.deepcopy(state.weather), state.gamerules.weather_cycle
+        cycle, weather_at = state.gamerules.weather_cycle, [0]
 
         def at_tick(t: int) -> None:  # ticks 0 .. t-1 of the batch ended moving only the clocks (and the weather)
             state.gametime, state.tick = start[0] + t, start[1] + t
-            state.weather = copy.deepcopy(weather)  # only Python reads it: a batch stops before that
-            for _ in range(t):
-                state.weather.advance(cycle)
+            state.weather.advance_ticks(t - weather_at[0], cycle)  # t only grows in a batch
+            weather_at[0] = t
             if clocks is not None:
                 state.clocks.after(clocks, t)
             elif daylight:

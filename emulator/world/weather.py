@@ -7,6 +7,8 @@
 - ``Weather.advance(cycle)``: ServerLevel.advanceWeatherCycle, once per tick: with the
   ``doWeatherCycle`` rule the timers count down (a timer at 0 draws a new one; its draw is not the
   game's random), then the rain and thunder levels move 0.01 towards the flags.
+  ``advance_ticks(n, cycle)``: the same n times, the quiet stretches (the levels at their flags'
+  bound, no timer running out) counted down at once, as the VM's batches of ticks need.
 - ``Weather.is_raining(dimension)`` / ``is_thundering(dimension)``: Level.isRaining (rain level >
   0.2) and isThundering (thunder level x rain level > 0.9, in a level with sky light and no ceiling),
   what the ``weather_check`` predicate tests.
@@ -48,10 +50,39 @@ class Weather:
         return self.random.randint(*bounds)
 
     def advance(self, cycle: bool) -> None:
+        self.advance_ticks(1, cycle)
+
+    def advance_ticks(self, n: int, cycle: bool) -> None:
+        while n > 0:
+            quiet = min(n, self._quiet_ticks(cycle))
+            if quiet > 0:  # the common tick: whole numbers counted down, no float32 level moved
+                if cycle and self.clear_time > 0:
+                    self.clear_time -= quiet
+                elif cycle:
+                    self.rain_time -= quiet
+                    self.thunder_time -= quiet
+                n -= quiet
+            else:
+                self._step(cycle)
+                n -= 1
+
+    def _step(self, cycle: bool) -> None:
         if cycle:
             self._count_down()
         self.thunder_level = _towards(self.thunder_level, self.thundering)
         self.rain_level = _towards(self.rain_level, self.raining)
+
+    def _quiet_ticks(self, cycle: bool) -> int:
+        """How many ticks from now only count the timers down, each as one :meth:`advance` would: the
+        levels rest at their flags' bound and no timer runs out (or draws) before the last of them."""
+        if self.rain_level != (1 if self.raining else 0) or self.thunder_level != (1 if self.thundering else 0):
+            return 0
+        if not cycle:
+            return 1 << 62
+        if self.clear_time > 0:  # steady once the first tick of it cleared the flags and set both timers to 1
+            steady = not (self.raining or self.thundering) and self.rain_time == self.thunder_time == 1
+            return self.clear_time if steady else 0
+        return min(self.rain_time, self.thunder_time) - 1
 
     def _count_down(self) -> None:
         if self.clear_time > 0:
