@@ -180,10 +180,12 @@ class Emulator:
                    level: int = 0, on_ground: bool = True, dimension: str = "minecraft:overworld") -> str:
         """A simulated player joins (after :meth:`load`, at any tick; a player of that name already
         online leaves first, as the server disconnects it); returns its UUID string, the offline-mode
-        UUID of its name. ``rotation`` is (yaw, pitch) in degrees. The world has no terrain, so
-        ``on_ground`` says whether the player stands (``OnGround:1b``, as a player on a floor does) or
-        is in the air; ``dimension`` is the level it joins in (the packs' own dimensions once loaded);
-        without a ``gamemode`` it plays the world's default (survival, or what ``defaultgamemode`` set).
+        UUID of its name. ``rotation`` is (yaw, pitch) in degrees. Such a player stands for one a
+        client drives: the server does not move it (ServerPlayer.tick does not call travel; only
+        PackTest's dummies fall, :mod:`emulator.world.falling`), so ``on_ground`` is what its client
+        reports: standing (``OnGround:1b``, as a player on a floor does) or in the air; ``dimension`` is
+        the level it joins in (the packs' own dimensions once loaded); without a ``gamemode`` it plays
+        the world's default (survival, or what ``defaultgamemode`` set).
         See :mod:`emulator.world.players`."""
         if dimension not in self.state.entities.table.levels.ids:
             raise ValueError(f"no dimension {dimension!r} (the vanilla ones and the packs' data/<ns>/dimension/)")

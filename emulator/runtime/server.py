@@ -13,7 +13,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    (:class:`emulator.world.block_ticks.BlockTicks`); before 26.1 the day time then advances by
    one when ``doDaylightCycle`` is on (ServerLevel.tickTime); the weather advances before all of
    step 4 (ServerLevel.advanceWeatherCycle: :mod:`emulator.world.weather`);
-5. every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
+5. a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
+   every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
    (:func:`emulator.world.combat.tick_dead`), a player using an item goes on using it
    (:func:`emulator.world.player_actions.tick_using`), an open container out of reach closes
@@ -46,8 +47,8 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, light, living,
-                           nbt_ops, player_actions, projectiles, statistics)
+from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, falling, light,
+                           living, nbt_ops, player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -70,7 +71,8 @@ def _effects_step(state) -> None:
         advancements.effects_changed(state, entity, None)
 
 
-ENTITY_STEPS = ((_effects_step, living.tick_is_idle),
+ENTITY_STEPS = ((falling.tick_falling, falling.tick_is_idle),
+                (_effects_step, living.tick_is_idle),
                 (combat.tick_dead, combat.tick_is_idle),
                 (player_actions.tick_using, player_actions.tick_is_idle),
                 (block_use.tick_menus, block_use.tick_is_idle),

@@ -9,16 +9,18 @@ Dummy.java, PackTestExecutor.java; the game's Player and Interaction classes).
 Modelled:
 - ``spawn``: a survival player named as written (a plain name; ``@s`` has none) joins at the test
   source's position (emulator.world.players.join: the offline-mode UUID the game gives it),
-  standing on the ground (PackTest's own ``setOnGround(true)`` for the
-  ``@dummy`` one; the emulator has no entity physics to land it).
+  not on the ground (the ``@dummy`` one stands: PackTestFunction's ``setOnGround(true)``). From the
+  next tick the server ticks its physics (Dummy.tick -> doTick): it falls, lands (``OnGround``),
+  takes fall damage (emulator.world.falling).
 - ``leave``: emulator.world.players.leave: ``minecraft.custom:minecraft.leave_game`` + 1, then the
   player is gone (scores stay).
 - ``respawn``: a new player entity with the same name and UUID at the dummy's first spawn
   position, rotation 0 0 (PackTest's PlayerListMixin), sneak/sprint released, slot 1, keeping what
   ServerPlayer.restoreFrom keeps (emulator.world.combat: tags, ender chest, with keepInventory the
   inventory and experience).
-- ``jump``: only from the ground; ``minecraft.custom:minecraft.jump`` + 1. The jump's motion is not
-  applied: without gravity and landing it would never end.
+- ``jump``: only from the ground; LivingEntity.jumpFromGround (emulator.world.falling.jump): the
+  jump's motion, ``minecraft.custom:minecraft.jump`` + 1, the food exhaustion; the dummy rises and
+  lands again over the next ticks.
 - ``sneak``/``sprint``: the key state (failing when unchanged, as PackTest does); a sneaking player
   earns ``minecraft.custom:minecraft.sneak_time`` every tick (emulator.world.statistics). Sprinting is
   observable only through predicates, which the emulator does not evaluate.
@@ -49,7 +51,7 @@ from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import block_breaking, block_use, combat, entity_use, player_actions, players, statistics
+from emulator.world import block_breaking, block_use, combat, entity_use, falling, player_actions, players
 from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure, Unmodelled
@@ -167,14 +169,16 @@ class Dummies:
         self.state = state
         self.spawns: dict[tuple, tuple[float, float, float]] = {}  # UUID -> first spawn position
 
-    def spawn(self, name: str, pos) -> Entity:
-        """A new dummy ``name`` at ``pos`` (Dummy.create)."""
+    def spawn(self, name: str, pos, on_ground: bool = False) -> Entity:
+        """A new dummy ``name`` at ``pos`` (Dummy.create: a new player is not on the ground until its
+        first landing; PackTestFunction stands the ``@dummy`` one with ``setOnGround(true)``)."""
         for player in self.state.entities.players():
             if player.player_name == name:
                 kind = "is already logged on" if player.uuid in self.spawns else "is already a player"
                 raise DummyFailure(f"Dummy {name} {kind}")
-        player = players.join(self.state, name, pos)
+        player = players.join(self.state, name, pos, on_ground=on_ground)
         player.data["SelectedItemSlot"] = Int(0)
+        falling.fall(self.state, player)  # Dummy.tick runs doTick: the server ticks its physics
         self.spawns[player.uuid] = tuple(pos)
         return player
 
@@ -229,7 +233,7 @@ class Dummies:
     def _jump(self, dummy: Entity, command, ctx) -> None:
         if not dummy.data.get("OnGround"):
             raise DummyFailure(f"Dummy {dummy.player_name} is not on the ground")
-        statistics.award(self.state, dummy, statistics.stat_name("custom", "jump"))
+        falling.jump(self.state, dummy)
 
     def _sneak(self, dummy: Entity, command, ctx) -> None:
         if dummy.sneaking == command.flag:

@@ -540,7 +540,7 @@ def spawn_dummy(source: TestSource, case: TestCase) -> Entity | None:
     for _ in range(10):  # a name already online is drawn again, ten tries
         name = f"Dummy{draw.randrange(100, 1000)}"
         if name not in online:
-            return source.dummies.spawn(name, pos)
+            return source.dummies.spawn(name, pos, on_ground=True)  # PackTestFunction: setOnGround(true)
     raise _Verdict(FAILED, "Failed to spawn dummy with a random name", 1)
 
 

@@ -20,13 +20,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import inventories, loot, statistics, tools
+from emulator.world import inventories, living, loot, statistics, tools
 from emulator.world.blocks import BlockState, parse_block, with_defaults
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.items import EMPTY
 from emulator.world.loot_context import LootContext
-from mcfunction_parser.nbt import Compound, Double, Float, List, Short
+from mcfunction_parser.nbt import Compound, Double, List, Short
 
 F32 = np.float32
 MINING_EXHAUSTION = F32(0.005)  # Block.playerDestroy
@@ -79,7 +79,7 @@ def destroy_block(state, player, pos) -> bool:
     tools.mine_block(state, player, inventories.entity_slot(player, inventories.MAINHAND, state.version), block.id)
     if harvest:
         statistics.award(state, player, statistics.stat_name("mined", block.id))
-        _exhaust(player, MINING_EXHAUSTION)
+        living.exhaust(player, MINING_EXHAUSTION)
         _pop_all(state, pos, drops, player.dimension)
     return True
 
@@ -146,12 +146,6 @@ def _pop_all(state, pos, drops, dimension: str) -> None:
     if state.gamerules.get("doTileDrops") != "false":
         for stack in drops:
             _pop(state, pos, stack, dimension)
-
-
-def _exhaust(player, amount) -> None:
-    """FoodData.addExhaustion: min(exhaustion + amount, 40)."""
-    current = F32(float(player.data.get("foodExhaustionLevel", Float(0.0))))
-    player.data["foodExhaustionLevel"] = Float(float(min(current + amount, F32(40.0))))
 
 
 def _pop(state, pos, stack, dimension: str) -> None:

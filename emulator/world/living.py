@@ -316,14 +316,14 @@ def _actually_hurt(state, entity, amount: float, damage_type: str) -> None:
             state.error(f"the food exhaustion of damage type {damage_type} is not modelled", severity="warning",
                         unmodelled=True)
         else:
-            _exhaust(entity, F32(EXHAUSTION[damage_type]))
+            exhaust(entity, F32(EXHAUSTION[damage_type]))
         if left < F32(3.4028235e37):
             statistics.award(state, entity, statistics.stat_name("custom", "damage_taken"),
                              math.floor(left * F32(10.0) + F32(0.5)))
     _set_health(entity, health(entity) - float(left))
 
 
-def _exhaust(player, amount) -> None:
+def exhaust(player, amount) -> None:
     """FoodData.addExhaustion: min(exhaustion + amount, 40)."""
     current = F32(_number(player.data.get("foodExhaustionLevel")))
     player.data["foodExhaustionLevel"] = Float(float(min(current + amount, F32(40.0))))
@@ -385,6 +385,12 @@ def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, vi
         current["show_particles"] = Byte(int(visible))
         changed = True
     return changed
+
+
+def effect_amplifier(entity, effect_id: str) -> int | None:
+    """The amplifier of the entity's effect ``effect_id``, None without it."""
+    found = _effect(entity, effect_id)
+    return None if found is None else _amplifier(found)
 
 
 def _amplifier(effect: Compound) -> int:

@@ -5,7 +5,9 @@
   has the offline-mode UUID of its name (``UUIDUtil.createOfflinePlayerUUID``: the same UUID each
   time it joins), and goes to the end of the player list and of the entity order (``@a`` and
   ``@e`` visit players in join order). Its scores are kept by name, so a rejoining player finds
-  them. ``on_ground`` sets ``OnGround`` (the emulator has no terrain to stand on).
+  them. ``on_ground`` sets ``OnGround``: a client's player moves only by its client (ServerPlayer.
+  tick does not call travel), so the server never lands it; PackTest's dummies fall
+  (emulator.world.falling).
 - ``leave(state, player)``: PlayerList.remove: ``minecraft.custom:minecraft.leave_game`` + 1, then
   the player is gone from the world (its scores stay).
 - ``place(player, pos=None, rotation=None, on_ground=None)``: move a player or set its

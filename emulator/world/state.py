@@ -522,6 +522,7 @@ class WorldState:
     last_attacker: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (living attacker, game time) (combat)
     dead_players: weakref.WeakSet = field(default_factory=WeakMembers)  # players that died, until they respawn (combat)
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
+    falling: list = field(default_factory=list)  # players whose physics the server ticks (world.falling)
     flying: list = field(default_factory=list)  # projectiles made in flight, checked at the next tick (world.projectiles)
     command_runner: object = None  # runs a command block's text: (text, Context) -> successes (set by the runtime)
     teams: Teams = field(default_factory=Teams)  # the scoreboard's teams (emulator.world.teams)

@@ -40,7 +40,7 @@ def test_spawn_selectslot_respawn_and_leave(pack, backend):
     result = run(pack, STATS + (
         "dummy Alex spawn\n"
         "assert entity @a[name=Alex,x=0,y=1,z=0,distance=..0.001]\n"
-        "assert data entity Alex {SelectedItemSlot:0,OnGround:1b}\n"
+        "assert data entity Alex {SelectedItemSlot:0,OnGround:0b}\n"  # Dummy.create: not yet landed
         "dummy Alex selectslot 3\n"
         "assert data entity Alex {SelectedItemSlot:2}\n"
         "tag Alex add kept\n"

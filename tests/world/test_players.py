@@ -79,6 +79,18 @@ def test_place_player_moves_and_lands(emu):
     assert alex["pos"] == [4.0, 5.0, 6.0] and alex["rotation"] == [90.0, 10.0]
 
 
+def test_a_player_a_client_drives_stays_where_placed(emu):
+    # ServerPlayer.tick does not call travel: a client's player moves only by its packets, so one
+    # placed in the air is not pulled down by the server (PackTest's dummies are: test_dummy_falling)
+    emu.add_player("Alex", pos=(0.5, 10.0, 0.5), on_ground=False)
+    emu.tick(40)
+    emu.call("t:standing")
+    assert emu.score("#standing", "n") == 0
+    [alex] = emu.entities("@a")
+    assert alex["pos"] == [0.5, 10.0, 0.5]
+    assert emu.diagnostics == []
+
+
 def test_run_player_in_the_air(pack, tmp_path):
     root = pack(SETUP, load=["t:init"], tick=["t:standing"])
     out = tmp_path / "run.json"

@@ -1,0 +1,178 @@
+"""Players whose physics the server ticks fall: gravity and drag, landing on blocks (``OnGround``),
+the fall distance and fall damage, as LivingEntity.travel and Entity.move do it.
+
+Which players: PackTest's dummies (``Dummy.tick`` calls ``doTick``, so Player.tick -> aiStep ->
+travel runs on the server each tick, as for Carpet's fake players). A player that a client
+drives (``Emulator.add_player``, ``--player``) moves only by its client's packets: its position
+and ``OnGround`` are what the API sets (ServerPlayer.tick does not call travel), so it does not
+fall here.
+
+- ``fall(state, player)``: register a player whose physics the server ticks.
+- ``tick_falling(state)``: each such player's tick; ``tick_is_idle(state)``.
+- ``jump(state, player)``: LivingEntity.jumpFromGround (Player's: the ``jump`` statistic, exhaustion).
+
+One tick (LivingEntity.aiStep, travel; Entity.move, checkFallDamage):
+1. a motion component under 0.003 in size becomes 0;
+2. the player moves by its motion, stopped by the full cubes below or above it (Shapes.collide
+   along y: the 1.0E-7 tolerance); ``OnGround`` is whether the move was stopped going down;
+3. on the ground a fall distance > 0 lands: Player.causeFallDamage (none for creative players:
+   ``mayfly``; ``minecraft.custom:minecraft.fall_one_cm`` x 100 from 2 blocks) and
+   LivingEntity.calculateFallDamage: ceil((distance - safe_fall_distance) x multiplier x
+   fall_damage_multiplier) as ``minecraft:fall`` damage (a hay block's multiplier is 0.2:
+   HayBlock.fallOn); the distance is reset. In the air the distance grows by the drop;
+4. a stopped vertical move zeroes the vertical motion (Block.updateEntityAfterFallOn);
+5. the vertical motion loses the gravity (the ``gravity`` attribute, 0.08; at most 0.01 falling
+   with slow falling), then is scaled by 0.98F (travel: ``d2 * 0.98F``, the float widened).
+
+So a player standing on a block keeps ``Motion[1]`` = -0.0784000015258789, as in the game, and a
+player just placed on a block with no motion is not on the ground for its first tick (its move
+is zero, so not stopped going down). The fall distance is the float of 1.21-1.21.4 (1.21.5 made
+it a double: a fall distance there can differ in its last bits).
+
+Not modelled (Unmodelled, reported once): horizontal motion (friction, walls, stepping up), a
+block whose shape is not a full cube or empty, water and lava (they reset and slow the fall),
+slime blocks and beds (they bounce), levitation, spectators (no collision).
+
+Sources (decompiled 1.21): world/entity/LivingEntity.java (aiStep, travel, jumpFromGround,
+causeFallDamage, calculateFallDamage), world/entity/Entity.java (move, checkFallDamage,
+collideBoundingBox), world/entity/player/Player.java (causeFallDamage, jumpFromGround),
+world/phys/shapes/VoxelShape.java (collide), world/level/block/{Block,HayBlock,SlimeBlock,
+BedBlock}.java (fallOn, updateEntityAfterFallOn); misode/packtest Dummy.java (tick).
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from emulator.world import block_shapes, combat, living, statistics
+from emulator.world.errors import Unmodelled
+from mcfunction_parser.nbt import Byte, Float
+
+F32 = np.float32
+EPSILON = 1.0E-7  # Shapes/VoxelShape.collide's tolerance
+MIN_MOVEMENT = 0.003  # LivingEntity.aiStep
+DRAG = float(F32(0.98))  # travel: d2 * 0.98F
+SLOW_FALLING_GRAVITY = 0.01
+FALL_MULTIPLIERS = {"minecraft:hay_block": 0.2}  # Block.fallOn's damage multiplier (else 1.0)
+BOUNCY = frozenset({"minecraft:slime_block"})  # SlimeBlock.updateEntityAfterFallOn
+FLUIDS = frozenset({"minecraft:water", "minecraft:lava", "minecraft:bubble_column"})
+JUMP_EXHAUSTION = (0.05, 0.2)  # Player.jumpFromGround: walking, sprinting
+
+
+def fall(state, player) -> None:
+    """From now on the server ticks ``player``'s physics."""
+    state.falling.append(player)
+
+
+def tick_is_idle(state) -> bool:
+    return not state.falling
+
+
+def tick_falling(state) -> None:
+    state.falling[:] = [p for p in state.falling if p.alive]
+    for player in state.falling:
+        try:
+            _tick(state, player)
+        except Unmodelled as reason:
+            message = f"a player's fall: {reason.message.removeprefix('not modelled: ')}"
+            if not any(d.message == message for d in state.diagnostics):
+                state.error(message, severity="warning", unmodelled=True)
+
+
+def jump(state, player) -> None:
+    """LivingEntity.jumpFromGround: the motion's y becomes the jump power (jump_strength, plus 0.1
+    per jump boost level; a block's jump factor is 1 for the full cubes known here; sprinting
+    adds a push forward, not modelled); Player's: ``minecraft.custom:minecraft.jump`` and the food
+    exhaustion."""
+    if player.sprinting:
+        raise Unmodelled("a sprinting jump (its push forward)")
+    power = F32(living.attribute_value(player, "jump_strength"))  # getJumpPower (a float)
+    boost = living.effect_amplifier(player, "minecraft:jump_boost")
+    if boost is not None:  # getJumpBoostPower: 0.1F x (amplifier + 1)
+        power = power + F32(0.1) * F32(boost + 1)
+    x, _, z = player.motion
+    if power > F32(1.0E-5):
+        player.motion = (x, float(power), z)
+    statistics.award(state, player, statistics.stat_name("custom", "jump"))
+    living.exhaust(player, F32(JUMP_EXHAUSTION[0]))
+
+
+def _tick(state, player) -> None:
+    if living.health(player) <= 0:
+        return
+    if player.gamemode == "spectator":
+        raise Unmodelled("a spectator's movement (no collision)")
+    x, y, z = (0.0 if abs(m) < MIN_MOVEMENT else m for m in player.motion)
+    if x or z:
+        raise Unmodelled("horizontal motion (friction, walls, stepping up)")
+    if living.effect_amplifier(player, "minecraft:levitation") is not None:
+        raise Unmodelled("levitation")
+    blocks = state.blocks_in(player.dimension)
+    moved, below = _collide(blocks, player.bounding_box, y)
+    px, py, pz = player.pos
+    if moved * moved > EPSILON:  # Entity.move: lengthSqr > 1.0E-7
+        player.pos = (px, py + moved, pz)
+    stopped = moved != y
+    on_ground = stopped and y < 0.0
+    player.data["OnGround"] = Byte(int(on_ground))
+    _check_fall_damage(state, player, moved, on_ground, below)
+    if stopped:
+        if below is not None and below.id in BOUNCY:
+            raise Unmodelled(f"landing on {below.id} (it bounces)")
+        y = 0.0
+    gravity = living.attribute_value(player, "gravity")
+    if y <= 0.0 and living.effect_amplifier(player, "minecraft:slow_falling") is not None:
+        gravity = min(gravity, SLOW_FALLING_GRAVITY)
+    player.motion = (x, (y - gravity) * DRAG, z)
+
+
+def _collide(blocks, box, dy: float):
+    """Shapes.collide along y for the full cubes around ``box``: the move allowed, and the block the
+    move stopped on (going down), else None."""
+    if abs(dy) < EPSILON:
+        return 0.0, None
+    x0, y0, z0, x1, y1, z1 = box
+    low, high = (y0 + dy, y1) if dy < 0 else (y0, y1 + dy)
+    stop = None
+    for cx in range(math.floor(x0), math.ceil(x1)):
+        for cz in range(math.floor(z0), math.ceil(z1)):
+            for cy in range(math.floor(low), math.ceil(high)):
+                if not (cy < high and cy + 1 > low):  # AABB.intersects: strict
+                    continue
+                block = blocks.get((cx, cy, cz))
+                if block.id in FLUIDS:
+                    raise Unmodelled(f"moving through {block.id}")
+                if block.is_air or not block_shapes.collides(block):
+                    continue
+                if dy < 0 and cy + 1 - y0 <= EPSILON and cy + 1 - y0 > dy:
+                    dy, stop = cy + 1 - y0, block
+                elif dy > 0 and cy - y1 >= -EPSILON and cy - y1 < dy:
+                    dy = cy - y1
+    return (0.0 if abs(dy) < EPSILON else dy), stop
+
+
+def _check_fall_damage(state, player, moved: float, on_ground: bool, below) -> None:
+    """Entity.checkFallDamage: landing takes the fall (Block.fallOn), else a drop adds to it."""
+    distance = F32(float(player.data.get("FallDistance", Float(0.0))))
+    if on_ground:
+        if distance > 0:
+            multiplier = FALL_MULTIPLIERS.get(below.id if below is not None else "", 1.0)
+            _cause_fall_damage(state, player, distance, F32(multiplier))
+        distance = F32(0.0)
+    elif moved < 0.0:
+        distance = distance - F32(moved)
+    player.data["FallDistance"] = Float(float(distance))
+
+
+def _cause_fall_damage(state, player, distance, multiplier) -> None:
+    """Player.causeFallDamage then LivingEntity.causeFallDamage / calculateFallDamage."""
+    if player.gamemode == "creative":  # abilities.mayfly
+        return
+    if distance >= F32(2.0):
+        statistics.award(state, player, statistics.stat_name("custom", "fall_one_cm"),
+                         math.floor(float(distance) * 100.0 + 0.5))  # Math.round
+    safe = F32(living.attribute_value(player, "safe_fall_distance"))
+    damage = math.ceil(float((distance - safe) * multiplier) * living.attribute_value(player, "fall_damage_multiplier"))
+    if damage > 0:
+        combat.hurt(state, player, float(damage), combat.DamageSource("minecraft:fall"))

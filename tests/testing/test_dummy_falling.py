@@ -1,0 +1,108 @@
+"""PackTest dummies fall (emulator.world.falling): PackTest's Dummy.tick runs doTick, so the server
+ticks the dummy as Player.tick -> LivingEntity.aiStep -> travel does (gravity 0.08, drag 0.98F),
+Entity.move lands it on a block (OnGround), Entity.checkFallDamage sums the fall distance and
+LivingEntity.calculateFallDamage takes ceil(distance - 3) on landing (Player.causeFallDamage: none
+for creative players; fall_one_cm). Sources: misode/packtest Dummy.java (tick); decompiled 1.21
+LivingEntity.java, Entity.java, Player.java, HayBlock.java (fallOn x 0.2)."""
+import pytest
+
+from emulator.testing import discover, run_suite
+
+SKY = "# @skyaccess\n"  # no barrier ceiling over the 1-block test structure: the dummies start above it
+STATS = ("scoreboard objectives add fell minecraft.custom:minecraft.fall_one_cm\n"
+         "scoreboard objectives add jumps minecraft.custom:minecraft.jump\n")
+
+
+def run(pack, text, backend="numba"):
+    [result] = run_suite(discover([pack({"demo/test/t.mcfunction": text})]), backend).results
+    return result
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_dummy_spawned_in_the_air_falls_lands_and_takes_fall_damage(pack, backend):
+    # 4.5 blocks: Entity.checkFallDamage adds a move to the fall distance only in the air, so the
+    # landing takes the distance before its last move (4.06 here): ceil(4.06 - 3) = 2 damage and
+    # fall_one_cm = round(distance x 100), under the 450 of the whole drop
+    result = run(pack, SKY + STATS + (
+        "fill ~-1 ~ ~-1 ~1 ~ ~1 stone\n"
+        "execute positioned ~0.5 ~5.5 ~0.5 run dummy Alex spawn\n"
+        "await delay 3\n"
+        "assert data entity Alex {OnGround:0b}\n"
+        "execute store result score Alex fell run data get entity Alex FallDistance 1000\n"
+        "assert score Alex fell matches 1..4499\n"            # still falling: part of the way
+        "scoreboard players reset Alex fell\n"
+        "await entity @a[name=Alex,nbt={OnGround:1b}]\n"
+        "execute positioned ~0.5 ~1 ~0.5 unless entity @a[name=Alex,distance=..0.0000001] run fail \"not on top\"\n"
+        "assert data entity Alex {Health:18.0f,FallDistance:0.0f}\n"
+        "assert score Alex fell matches 400..449\n"
+        "await delay 2\n"                                      # standing: the game's resting motion
+        "assert data entity Alex {OnGround:1b,Motion:[0.0d,-0.0784000015258789d,0.0d]}\n"
+        "assert data entity Alex {Health:18.0f}\n"), backend)
+    assert result.status == "passed", result.report()
+
+
+def test_the_landing_puts_the_feet_on_the_top_of_the_block(pack):
+    result = run(pack, SKY + (
+        "setblock ~ ~ ~ stone\n"
+        "execute positioned ~0.5 ~3.25 ~0.5 run dummy Alex spawn\n"
+        "await entity @a[name=Alex,nbt={OnGround:1b}]\n"
+        "execute positioned ~0.5 ~1 ~0.5 unless entity @a[name=Alex,distance=..0.0000001] run fail \"not at ~0.5 ~1 ~0.5\"\n"
+        "assert data entity Alex {Health:20.0f}\n"), )
+    assert result.status == "passed", result.report()
+
+
+def test_a_hay_block_takes_a_fifth_of_the_fall(pack):
+    # 10.5 blocks onto hay: ceil((10.5 - 3) x 0.2) = 2; onto stone it would be 8
+    result = run(pack, SKY + (
+        "setblock ~ ~ ~ hay_block\n"
+        "execute positioned ~0.5 ~11.5 ~0.5 run dummy Alex spawn\n"
+        "await entity @a[name=Alex,nbt={OnGround:1b}]\n"
+        "assert data entity Alex {Health:18.0f}\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_a_creative_dummy_takes_no_fall_damage_and_no_fall_statistic(pack):
+    result = run(pack, SKY + STATS + (
+        "setblock ~ ~ ~ stone\n"
+        "execute positioned ~0.5 ~8.5 ~0.5 run dummy Alex spawn\n"
+        "gamemode creative Alex\n"
+        "await entity @a[name=Alex,nbt={OnGround:1b}]\n"
+        "assert data entity Alex {Health:20.0f}\n"
+        "assert not score Alex fell matches 0..\n"))
+    assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_jump_rises_and_lands_again_without_damage(pack, backend):
+    # LivingEntity.jumpFromGround: motion y 0.42F; the game's jump tops out at 1.2522 blocks after 6
+    # ticks and lands 12 ticks after the jump
+    result = run(pack, SKY + STATS + (
+        "setblock ~ ~ ~ stone\n"
+        "execute positioned ~0.5 ~1 ~0.5 run dummy Alex spawn\n"
+        "await delay 3\n"
+        "assert data entity Alex {OnGround:1b}\n"
+        "dummy Alex jump\n"
+        "assert score Alex jumps matches 1\n"
+        "await delay 1\n"
+        "assert data entity Alex {OnGround:0b}\n"
+        "execute positioned ~0.5 ~1.42 ~0.5 unless entity @a[name=Alex,distance=..0.0001] run fail \"not at ~0.5 ~1.42 ~0.5\"\n"  # 0.42F
+        "dummy Alex jump\n"                                    # refused in the air
+        "assert score Alex jumps matches 1\n"
+        "await delay 5\n"
+        "execute positioned ~0.5 ~2.2522 ~0.5 unless entity @a[name=Alex,distance=..0.0001] run fail \"not at the top\"\n"  # the jump height
+        "await delay 5\n"
+        "assert data entity Alex {OnGround:0b}\n"
+        "await delay 1\n"
+        "assert data entity Alex {OnGround:1b,Health:20.0f}\n"
+        "execute positioned ~0.5 ~1 ~0.5 unless entity @a[name=Alex,distance=..0.0000001] run fail \"not at ~0.5 ~1 ~0.5\"\n"), backend)
+    assert result.status == "passed", result.report()
+
+
+def test_falling_into_water_is_reported_not_modelled(pack):
+    result = run(pack, SKY + (
+        "fill ~ ~ ~ ~ ~1 ~ water\n"
+        "execute positioned ~0.5 ~4.5 ~0.5 run dummy Alex spawn\n"
+        "await delay 20\n"
+        "assert entity Alex\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "a player's fall: moving through minecraft:water" in result.report()
