@@ -29,7 +29,8 @@ Modelled:
   time}`` and ``player_hurt_entity`` (Interaction.skipAttackInteraction); ``use entity``:
   emulator.world.entity_use.
 - ``attack`` on a living entity: Player.attack (emulator.world.combat.attack):
-  the damage grows with the ticks since the dummy joined or last attacked, the target's
+  the damage grows with the ticks since the dummy joined or last attacked (x 1.5 for a
+  critical hit while falling), the target's
   ``Health`` and ``HurtTime``, ``damage_dealt``, a death (emulator.world.combat). A target that
   is not living is not attackable: nothing happens, as in the game. Knockback is not modelled.
 - The block actions act in the dummy's level (its blocks and block ticks: WorldState.level).

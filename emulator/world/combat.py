@@ -6,7 +6,7 @@ observes of each.
 - ``hurt(state, entity, amount, source, bypasses=False) -> bool``: LivingEntity.hurtServer: the
   health taken (emulator.world.living.hurt), the kill credit, death at 0 health, the triggers.
 - ``attack(state, player, target) -> bool``: Player.attack with an empty hand or an item that is
-  no weapon (no knockback, no critical hits: a player standing on the ground).
+  no weapon: the swing's strength, a critical hit (x 1.5) while falling; no knockback.
 - ``remember_attacker(state, entity, source)``: the kill credit (the last player, else mob, to hurt
   it, for 100 ticks); ``hurt_triggers(state, entity, source, amount)``: LivingEntity.hurtServer's
   end: ``entity_hurt_player`` and ``player_hurt_entity``.
@@ -178,7 +178,9 @@ def attack(state, player, target) -> bool:
             "minecraft:max_damage", "minecraft:attribute_modifiers", "minecraft:enchantments", "minecraft:tool",
             "minecraft:weapon")):
         raise Unmodelled(f"attacking with {held.id} (its damage, enchantments and durability)")
-    damage = living.swing_damage(state, player)
+    damage, strength = living.swing_damage(state, player)
+    if _critical(state, player, strength):
+        damage = damage * F32(1.5)
     before = F32(living.health(target))
     if not hurt(state, target, float(damage), DamageSource("minecraft:player_attack", player, player)):
         return False
@@ -186,6 +188,24 @@ def attack(state, player, target) -> bool:
     statistics.award(state, player, statistics.stat_name("custom", "damage_dealt"),
                      math.floor(dealt * F32(10.0) + F32(0.5)))
     return True
+
+
+# BlockTags.CLIMBABLE (LivingEntity.onClimbable: the block at the feet)
+CLIMBABLE = frozenset("minecraft:" + n for n in (
+    "ladder vine scaffolding weeping_vines weeping_vines_plant twisting_vines twisting_vines_plant cave_vines "
+    "cave_vines_plant").split())
+
+
+def _critical(state, player, strength) -> bool:
+    """Player.attack's critical hit (x 1.5): a full swing (strength > 0.9) while falling (fall
+    distance > 0, not on the ground), not climbing, not in water, not blind, not riding, not
+    sprinting (the target is living here)."""
+    if not (strength > F32(0.9) and float(player.data.get("FallDistance", 0.0)) > 0.0
+            and not int(player.data.get("OnGround", 0)) and not player.sprinting):
+        return False
+    feet = state.blocks_in(player.dimension).get(tuple(math.floor(c) for c in player.pos)).id
+    return (feet not in CLIMBABLE and feet not in ("minecraft:water", "minecraft:bubble_column")
+            and living.effect_amplifier(player, "minecraft:blindness") is None and player.vehicle is None)
 
 
 def remember_attacker(state, entity, source: DamageSource) -> None:

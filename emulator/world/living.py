@@ -585,12 +585,12 @@ def reset_attack_strength(state, player) -> None:
     state.swung[player] = state.gametime
 
 
-def swing_damage(state, player) -> np.float32:
-    """Player.attack's base damage: the attack damage attribute times 0.2 + 0.8 x strength², the
-    strength (getAttackStrengthScale(0.5)) growing with the ticks since the last swing or join over
-    20 / attack_speed; the swing resets it."""
+def swing_damage(state, player) -> tuple[np.float32, np.float32]:
+    """Player.attack's base damage and the swing's strength: the attack damage attribute times
+    0.2 + 0.8 x strength², the strength (getAttackStrengthScale(0.5)) growing with the ticks since
+    the last swing or join over 20 / attack_speed; the swing resets it."""
     ticker = state.gametime - state.swung.get(player, state.gametime)
     delay = F32(1.0 / attribute_value(player, "attack_speed") * 20.0)
     strength = min(max(F32((F32(ticker) + F32(0.5)) / delay), F32(0.0)), F32(1.0))
     reset_attack_strength(state, player)
-    return F32(attribute_value(player, "attack_damage")) * (F32(0.2) + strength * strength * F32(0.8))
+    return F32(attribute_value(player, "attack_damage")) * (F32(0.2) + strength * strength * F32(0.8)), strength

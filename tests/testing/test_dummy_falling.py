@@ -106,3 +106,37 @@ def test_falling_into_water_is_reported_not_modelled(pack):
         "assert entity Alex\n"))
     assert result.status == "inconclusive", result.report()
     assert "a player's fall: moving through minecraft:water" in result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_full_swing_while_falling_is_a_critical_hit(pack, backend):
+    # Player.attack: strength > 0.9, fall distance > 0, not on the ground, not sprinting: damage x 1.5
+    # (an empty hand's 1 becomes 1.5); the same swing on the ground stays 1
+    result = run(pack, SKY + (
+        "setblock ~ ~ ~ stone\n"
+        "execute positioned ~0.5 ~1 ~0.5 run dummy Alex spawn\n"
+        "summon pig ~2.5 ~1 ~0.5 {NoAI:1b,NoGravity:1b,Tags:[\"ground\"]}\n"
+        "summon pig ~2.5 ~2 ~0.5 {NoAI:1b,NoGravity:1b,Tags:[\"air\"]}\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=ground,limit=1]\n"
+        "assert data entity @e[tag=ground,limit=1] {Health:9.0f}\n"
+        "await delay 20\n"
+        "dummy Alex jump\n"
+        "await delay 8\n"                                     # past the top: falling
+        "assert data entity Alex {OnGround:0b}\n"
+        "dummy Alex attack @e[tag=air,limit=1]\n"
+        "assert data entity @e[tag=air,limit=1] {Health:8.5f}\n"), backend)
+    assert result.status == "passed", result.report()
+
+
+def test_a_swing_while_rising_is_no_critical_hit(pack):
+    result = run(pack, SKY + (
+        "setblock ~ ~ ~ stone\n"
+        "execute positioned ~0.5 ~1 ~0.5 run dummy Alex spawn\n"
+        "summon pig ~2.5 ~2 ~0.5 {NoAI:1b,NoGravity:1b,Tags:[\"air\"]}\n"
+        "await delay 20\n"
+        "dummy Alex jump\n"
+        "await delay 2\n"                                     # rising: no fall distance yet
+        "dummy Alex attack @e[tag=air,limit=1]\n"
+        "assert data entity @e[tag=air,limit=1] {Health:9.0f}\n"))
+    assert result.status == "passed", result.report()
