@@ -46,7 +46,7 @@ def test_the_packs_load_clean():
     assert gated.errors == [] and rewards.errors == []
     assert set(gated.predicates) == {"gated:marked_undead", "gated:in_water", "gated:night", "gated:healthy",
                                      "gated:on_soft_ground", "gated:seasoned", "gated:in_smoke",
-                                     "gated:in_village", "gated:outdoors", "gated:moonlit"}
+                                     "gated:in_village", "gated:outdoors", "gated:moonlit", "gated:lamplit"}
     undead = gated.registry_tags["entity_type"]["gated:undead"]
     # the built-in #minecraft:zombies nested, the optional missing tag skipped (TagLoader)
     assert {"minecraft:husk", "minecraft:zombie", "minecraft:skeleton"} <= undead.members

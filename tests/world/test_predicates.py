@@ -473,12 +473,62 @@ def test_light_is_the_sky_less_its_darkening_where_nothing_gives_light(state):
     assert level(4) and not level({"min": 5})  # midnight under the open sky: 15 - 11
     assert level(0, dimension="minecraft:the_nether")  # no sky light, nothing lit
     state.blocks.place((3, 64, 0), with_defaults(parse_block("minecraft:torch"), state.version))
-    with pytest.raises(Unmodelled, match="block light from minecraft:torch"):
-        level(4)
-    assert level(4, pos=(20.5, 64.0, 0.5))  # 20 steps away: no light reaches
-    state.blocks.place((20, 70, 0), with_defaults(parse_block("minecraft:stone"), state.version))
-    with pytest.raises(Unmodelled, match="sky light that does not come straight down"):
-        level(4, pos=(20.5, 64.0, 0.5))
+    assert level(11) and level(4, pos=(20.5, 64.0, 0.5))  # the torch's 14 less 3 steps; 20 steps away: none
+
+
+def _light(state, pos, **kw) -> int:
+    """The light a location predicate reads at ``pos``: the one level its ``light`` range takes."""
+    found = [n for n in range(16) if holds({"condition": "location_check", "predicate": {"light": {"light": n}}},
+                                          ctx(state, origin=pos, **kw))]
+    assert len(found) == 1
+    return found[0]
+
+
+def test_block_light_is_each_states_emission_spread_one_less_a_step(state):
+    # BlockLightEngine.propagateIncrease: a neighbour gets the level less LightEngine.getOpacity
+    # (max(1, getLightBlock)); the emission is BlockStateBase.getLightEmission (Blocks.java lightLevel:
+    # litBlockEmission, CandleBlock.LIGHT_EMISSION, LightBlock.LIGHT_EMISSION, RespawnAnchorBlock)
+    state.sky_darken = 15  # no sky light left: the block light alone
+    place = lambda pos, block: state.blocks.place(pos, with_defaults(parse_block(block), state.version))  # noqa: E731
+    for block, level in (("minecraft:torch", 14), ("minecraft:glowstone", 15), ("minecraft:furnace[lit=true]", 13),
+                         ("minecraft:furnace", 0), ("minecraft:candle[candles=3,lit=true]", 9),
+                         ("minecraft:candle[candles=3]", 0), ("minecraft:light[level=6]", 6),
+                         ("minecraft:respawn_anchor[charges=2]", 7), ("minecraft:soul_torch", 10)):
+        place((0, 64, 0), block)
+        assert _light(state, (0.5, 64.0, 0.5)) == level and _light(state, (2.5, 64.0, 1.5)) == max(0, level - 3)
+        place((0, 64, 0), "minecraft:air")
+    place((0, 64, 0), "minecraft:torch")
+    place((1, 64, 0), "minecraft:glass")  # getLightBlock 0 (propagatesSkylightDown): one a step still
+    assert _light(state, (2.5, 64.0, 0.5)) == 12
+    place((1, 64, 0), "minecraft:oak_leaves")  # not solid render, not propagatesSkylightDown: 1
+    assert _light(state, (2.5, 64.0, 0.5)) == 12 and _light(state, (1.5, 64.0, 0.5)) == 13
+    place((1, 64, 0), "minecraft:stone")  # 15: none passes, the light goes round it
+    assert _light(state, (1.5, 64.0, 0.5)) == 0 and _light(state, (2.5, 64.0, 0.5)) == 10
+    place((1, 64, 0), "minecraft:water")  # a fluid dampens by 1
+    assert _light(state, (2.5, 64.0, 0.5)) == 12
+    place((1, 64, 0), "minecraft:stone_slab[type=bottom]")  # its faces occlude light one way only
+    with pytest.raises(Unmodelled, match="stone_slab"):
+        _light(state, (2.5, 64.0, 0.5))
+
+
+def test_sky_light_reaches_under_a_roof_sideways_and_changes_with_the_blocks(state):
+    # SkyLightEngine: 15 straight down where the sky is seen, then one less a step down and sideways;
+    # the predicate reads max(block light, sky light - skyDarken) (LevelReader.getMaxLocalRawBrightness)
+    fill = lambda block, y, r: [state.blocks.place((x, y, z), with_defaults(parse_block(block), state.version))  # noqa: E731
+                                for x in range(-r, r + 1) for z in range(-r, r + 1)]
+    assert _light(state, (0.5, 64.0, 0.5)) == 15
+    fill("minecraft:stone", 65, 0)  # one block over: the columns beside it see the sky
+    assert _light(state, (0.5, 64.0, 0.5)) == 14 and _light(state, (0.5, 60.0, 0.5)) == 14
+    fill("minecraft:stone", 65, 3)  # a 7 x 7 roof: 4 steps to the nearest open column
+    assert _light(state, (0.5, 64.0, 0.5)) == 11 and _light(state, (0.5, 63.0, 0.5)) == 11
+    state.sky_darken = 11
+    assert _light(state, (0.5, 64.0, 0.5)) == 0 and _light(state, (3.5, 64.0, 0.5)) == 3
+    state.blocks.place((0, 66, 0), with_defaults(parse_block("minecraft:glowstone"), state.version))  # on the roof
+    assert _light(state, (0.5, 67.0, 0.5)) == 14  # under the roof only round its edge: 10 steps
+    assert _light(state, (0.5, 64.0, 0.5)) == 5
+    fill("minecraft:air", 65, 3)  # the roof gone: the light follows the blocks as they are now
+    assert _light(state, (0.5, 64.0, 0.5)) == 13  # glowstone 2 steps above (15 - 2) beats 15 - 11
+    assert _light(state, (0.5, 64.0, 0.5), dimension="minecraft:the_nether") == 0
 
 
 def test_the_player_predicate_reads_the_recipe_book(state):
