@@ -8,10 +8,14 @@ light level (``light``), in the emulator's world, empty where nothing was placed
   block above it pass it. Levels without sky light (the nether, the end) never see it. A block in
   the way whose light properties the emulator does not know is not modelled.
 - ``brightness(state, dimension, pos)``: Level.getMaxLocalRawBrightness, the larger of the block
-  light and the sky light less the sky's darkening. Known where the block sees the sky (sky light
-  15) or in a level without sky light, and no block within 14 steps could give light (a light
-  source, or a block the emulator does not know): then the block light is 0. Anything else is
-  not modelled.
+  light and the sky light less the sky's darkening. Block light (BlockLightEngine) starts at each
+  block's emission in its state (``emission``); sky light (SkyLightEngine) at 15 where a block sees
+  the sky; both lose max(1, getLightBlock) of the block they enter at each step (``light_block``),
+  so they spread down and sideways under roofs and round opaque blocks. Only the blocks within 15
+  steps of the position are read, when a pack asks and from the world as it is then (nothing is
+  kept between reads, so a block changed by any command shows at once). A block within reach
+  whose emission, or on the way whose light dampening, is not known here (a slab, stairs or fence
+  occluding light with a face: LightEngine.shapeOccludes) is not modelled.
 - ``sky_darken(daytime)``: Level.updateSkyBrightness in clear weather, from the day time (ServerLevel
   keeps it from its start and updates it each tick before the time advances: ``state.sky_darken``).
 
@@ -27,7 +31,9 @@ DimensionType.timeOfDay, LevelReader.getMaxLocalRawBrightness, lighting/LevelLig
 getRawBrightness, ServerLevel (its constructor and tick), block/state/BlockBehaviour
 (getLightBlock: solid render 15, else 0 when propagatesSkylightDown, else 1; propagatesSkylightDown:
 a shape that is not a full block and no fluid), TransparentBlock, TintedGlassBlock, BarrierBlock,
-LightBlock, LeavesBlock, world/level/lighting/LightEngine.shapeOccludes, SkyLightEngine,
+LightBlock, LeavesBlock, world/level/lighting/LightEngine (getOpacity, shapeOccludes), BlockLightEngine
+(propagateIncrease), SkyLightEngine, Blocks (lightLevel: litBlockEmission, CandleBlock, SeaPickleBlock,
+RespawnAnchorBlock.getScaledChargeLevel, CaveVines.emission),
 dimension types' has_skylight.
 """
 from __future__ import annotations

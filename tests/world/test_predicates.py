@@ -514,8 +514,10 @@ def test_block_light_is_each_states_emission_spread_one_less_a_step(state):
 def test_sky_light_reaches_under_a_roof_sideways_and_changes_with_the_blocks(state):
     # SkyLightEngine: 15 straight down where the sky is seen, then one less a step down and sideways;
     # the predicate reads max(block light, sky light - skyDarken) (LevelReader.getMaxLocalRawBrightness)
-    fill = lambda block, y, r: [state.blocks.place((x, y, z), with_defaults(parse_block(block), state.version))  # noqa: E731
-                                for x in range(-r, r + 1) for z in range(-r, r + 1)]
+    def fill(block, y, r):
+        for x in range(-r, r + 1):
+            for z in range(-r, r + 1):
+                state.blocks.place((x, y, z), with_defaults(parse_block(block), state.version))
     assert _light(state, (0.5, 64.0, 0.5)) == 15
     fill("minecraft:stone", 65, 0)  # one block over: the columns beside it see the sky
     assert _light(state, (0.5, 64.0, 0.5)) == 14 and _light(state, (0.5, 60.0, 0.5)) == 14
