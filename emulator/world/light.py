@@ -38,6 +38,7 @@ dimension types' has_skylight.
 """
 from __future__ import annotations
 
+import functools
 import math
 
 from emulator.world import block_shapes, mth
@@ -52,6 +53,7 @@ _DAMPENING_FULL = frozenset({"minecraft:tinted_glass", "minecraft:water", "minec
                              "minecraft:kelp_plant", "minecraft:bubble_column"})
 
 
+@functools.lru_cache(maxsize=4096)  # per block state: read for every step through it
 def _passes(block, at_block: bool) -> bool:
     """Whether sky light 15 is still 15 in ``block`` (``at_block``) or below it: nothing dampens it
     (:func:`light_block` 0) and no face of the block's shape is in the way."""
@@ -117,6 +119,7 @@ _SMALL = frozenset("minecraft:" + n for n in (  # shapes that are not a full blo
 LIGHT_REACH = 14  # a light of 15 loses at least 1 a step
 
 
+@functools.lru_cache(maxsize=4096)  # per block state: read for every step through it
 def emission(block) -> int:
     """BlockStateBase.getLightEmission: the block's light level in its state (Blocks.java lightLevel)."""
     properties = dict(block.properties)
@@ -142,6 +145,7 @@ def emission(block) -> int:
     return 0
 
 
+@functools.lru_cache(maxsize=4096)  # per block state: read for every step through it
 def light_block(block) -> int:
     """BlockStateBase.getLightBlock: how much light the block takes away (at least 1 a step:
     LightEngine.getOpacity). Blocks that occlude light by a face of their shape (slabs, stairs,
