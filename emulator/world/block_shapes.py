@@ -55,7 +55,8 @@ _EMPTY_NAMES = frozenset((
     "soul_fire seagrass tall_seagrass light structure_void torch lever redstone_wire tripwire dandelion poppy "
     "blue_orchid allium azure_bluet oxeye_daisy cornflower lily_of_the_valley wither_rose sunflower lilac "
     "rose_bush peony brown_mushroom red_mushroom crimson_roots warped_roots nether_sprouts hanging_roots "
-    "glow_lichen cobweb sugar_cane wheat carrots potatoes beetroots").split())
+    "glow_lichen cobweb sugar_cane wheat carrots potatoes beetroots pumpkin_stem melon_stem "
+    "attached_pumpkin_stem attached_melon_stem big_dripleaf_stem").split())  # plant stems: not "_stem" logs
 
 
 def _kind(block) -> bool:

@@ -102,7 +102,13 @@ _EMISSION = {"minecraft:" + n: int(v) for n, v in (e.split("=") for e in (
     "soul_torch=10 soul_wall_torch=10 fire=15 soul_fire=10 lava=15 magma_block=3 crying_obsidian=10 "
     "sculk_catalyst=6 glow_lichen=7 end_portal=15 end_gateway=15 nether_portal=11 enchanting_table=7 "
     "ender_chest=7 brewing_stand=1 dragon_egg=1 brown_mushroom=1 amethyst_cluster=5 large_amethyst_bud=4 "
-    "medium_amethyst_bud=2 small_amethyst_bud=1 end_portal_frame=1 sculk_sensor=1 calibrated_sculk_sensor=1").split())}
+    "medium_amethyst_bud=2 small_amethyst_bud=1 end_portal_frame=1 sculk_sensor=1 calibrated_sculk_sensor=1 "
+    "lava_cauldron=15").split())}
+# lightLevel read from a ``state`` property (VaultState.LightLevel, TrialSpawnerState's lightLevel)
+_BY_STATE = {"minecraft:vault": ("vault_state", {"inactive": 6, "active": 12, "unlocking": 12, "ejecting": 12}),
+             "minecraft:trial_spawner": ("trial_spawner_state", {
+                 "inactive": 0, "waiting_for_players": 4, "active": 8, "waiting_for_reward_ejection": 8,
+                 "ejecting_reward": 8, "cooldown": 0})}
 _LIT = {"minecraft:" + n: int(v) for n, v in (e.split("=") for e in (  # litBlockEmission(v): v when lit=true
     "furnace=13 smoker=13 blast_furnace=13 redstone_lamp=15 redstone_torch=7 redstone_wall_torch=7 redstone_ore=9 "
     "deepslate_redstone_ore=9 campfire=15 soul_campfire=10 copper_bulb=15 exposed_copper_bulb=12 "
@@ -127,6 +133,9 @@ def emission(block) -> int:
         return _EMISSION[block.id]
     if block.id in _LIT:
         return _LIT[block.id] if properties.get("lit") == "true" else 0
+    if block.id in _BY_STATE:
+        key, levels = _BY_STATE[block.id]
+        return levels.get(properties.get(key), levels["inactive"])  # inactive: the default state
     if block.id == "minecraft:light":
         return int(properties.get("level", "15"))  # LightBlock.LIGHT_EMISSION
     if block.id.endswith("candle"):  # CandleBlock.LIGHT_EMISSION: 3 per candle when lit

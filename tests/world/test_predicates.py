@@ -8,6 +8,7 @@ import pytest
 from emulator.world import inventories, loot, predicates, recipes
 from emulator.world.blocks import BlockSpec, parse_block, with_defaults
 from emulator.world.entities import entity_nbt
+from emulator.world.light import emission, light_block
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.loot_context import DamageSource, LootContext, in_ints, in_range
@@ -497,6 +498,14 @@ def test_block_light_is_each_states_emission_spread_one_less_a_step(state):
         place((0, 64, 0), block)
         assert _light(state, (0.5, 64.0, 0.5)) == level and _light(state, (2.5, 64.0, 1.5)) == max(0, level - 3)
         place((0, 64, 0), "minecraft:air")
+    # emissions read from a state property (VaultState.LightLevel, TrialSpawnerState) and a constant one;
+    # these blocks' shapes are not known here, so only what they give is checked
+    for block, level in (("minecraft:lava_cauldron", 15), ("minecraft:vault", 6),
+                         ("minecraft:vault[vault_state=active]", 12), ("minecraft:trial_spawner", 0),
+                         ("minecraft:trial_spawner[trial_spawner_state=active]", 8)):
+        assert emission(with_defaults(parse_block(block), state.version).state) == level, block
+    for stem in ("pumpkin_stem", "attached_melon_stem", "big_dripleaf_stem"):  # plants without collision, not logs
+        assert light_block(with_defaults(parse_block("minecraft:" + stem), state.version).state) == 0, stem
     place((0, 64, 0), "minecraft:torch")
     place((1, 64, 0), "minecraft:glass")  # getLightBlock 0 (propagatesSkylightDown): one a step still
     assert _light(state, (2.5, 64.0, 0.5)) == 12
