@@ -153,8 +153,10 @@ PLAIN_HOLDER = r"(@[a-z]|[^ @]+)"
 PLAIN_OBJECTIVE = r"([0-9A-Za-z_\-.+]+)"
 
 
-def plain_holder(r: Reader, word: str, start: int):
-    """The holder matched by PLAIN_HOLDER at offset ``start``."""
+def plain_holder(r: Reader, m, group: int):
+    """The holder a PLAIN_HOLDER group of the match ``m`` matched."""
+    word = m.group(group)
+    start = m.start(group)
     if word[0] == "@":
         return selectors.bare_selector(r, word[1], start)
     return holder_from_word(word, r.loc_at(start))

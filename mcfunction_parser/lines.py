@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from .features import FEATURES
 
-_TRIM = "".join(chr(c) for c in range(0x21))
+TRIM = "".join(chr(c) for c in range(0x21))
 MAX_COMMAND_LENGTH = 2_000_000  # CommandFunction.checkCommandLineLength
 _MACRO_VAR = re.compile(r"\$\(([^)]*)\)?")
 _MACRO_KEY = re.compile(r"[A-Za-z0-9_]+\Z")
@@ -30,7 +30,8 @@ def logical_lines(physical: list[str], version: tuple[int, int, int]):
     """Yield ``(text, line, col, segments)`` for each command or ``$`` line, and :class:`LineError`.
 
     ``segments`` is empty for a one-line command; for a joined one it maps offsets back to
-    ``(offset, line, col)`` of each physical piece.
+    ``(offset, line, col)`` of each physical piece. (:func:`.parse.parse_lines` runs the same loop
+    inline, the generator's frame switch per line being a tenth of a trivial line's parse.)
     """
     continuation = version >= FEATURES["line continuation"][0]
     count = len(physical)
@@ -38,33 +39,44 @@ def logical_lines(physical: list[str], version: tuple[int, int, int]):
     while i < count:
         raw = physical[i]
         i += 1
-        text = raw.strip(_TRIM)
+        text = raw.strip(TRIM)
         if not text:
             continue
-        if continuation and text[-1] == "\\":
-            joined = _join(physical, i - 1, text)
-            if type(joined) is LineError:
-                yield joined
-                return
-            text, segments, i = joined
-            if len(text) > MAX_COMMAND_LENGTH:
-                yield LineError(f"command too long: {len(text)} characters (at most {MAX_COMMAND_LENGTH})",
-                                segments[0][1], segments[0][2])
-            elif text and text[0] != "#":
-                yield text, segments[0][1], segments[0][2], segments
-            continue
-        if len(text) > MAX_COMMAND_LENGTH:  # checked before comments are skipped, as the game does
-            yield LineError(f"command too long: {len(text)} characters (at most {MAX_COMMAND_LENGTH})", i, 1)
+        if (continuation and text[-1] == "\\") or len(text) > MAX_COMMAND_LENGTH:
+            item, i = unusual_line(physical, i - 1, text, continuation)
+            if item is not None:
+                yield item
             continue
         if text[0] == "#":
             continue
-        yield text, i, (1 if raw[0] > " " else len(raw) - len(raw.lstrip(_TRIM)) + 1), ()
+        yield text, i, (1 if raw[0] > " " else len(raw) - len(raw.lstrip(TRIM)) + 1), ()
+
+
+def unusual_line(physical: list[str], first: int, text: str, continuation: bool):
+    """``(item, next index)`` for the trimmed line ``text`` at index ``first`` that ends in ``\\`` (with
+    ``continuation``) or is too long: the item a :class:`LineError`, a joined command's
+    ``(text, line, col, segments)``, or None for a joined comment."""
+    if continuation and text[-1] == "\\":
+        joined = _join(physical, first, text)
+        if type(joined) is LineError:
+            return joined, len(physical)
+        text, segments, i = joined
+        if len(text) > MAX_COMMAND_LENGTH:
+            return _too_long(text, segments[0][1], segments[0][2]), i
+        if text and text[0] != "#":
+            return (text, segments[0][1], segments[0][2], segments), i
+        return None, i
+    return _too_long(text, first + 1, 1), first + 1  # checked before comments are skipped, as the game does
+
+
+def _too_long(text: str, line: int, col: int) -> LineError:
+    return LineError(f"command too long: {len(text)} characters (at most {MAX_COMMAND_LENGTH})", line, col)
 
 
 def _join(physical: list[str], first: int, text: str):
     """Join the continuation lines from ``first``: (text, segments, next index) or a LineError."""
     raw = physical[first]
-    col = len(raw) - len(raw.lstrip(_TRIM)) + 1
+    col = len(raw) - len(raw.lstrip(TRIM)) + 1
     pieces = [text[:-1]]
     segments = [(0, first + 1, col)]
     offset = len(text) - 1
@@ -73,8 +85,8 @@ def _join(physical: list[str], first: int, text: str):
         if i == len(physical):
             return LineError("line continuation '\\' at the end of the file", first + 1, col + len(text) - 1)
         nxt = physical[i]
-        piece = nxt.strip(_TRIM)
-        segments.append((offset, i + 1, len(nxt) - len(nxt.lstrip(_TRIM)) + 1))
+        piece = nxt.strip(TRIM)
+        segments.append((offset, i + 1, len(nxt) - len(nxt.lstrip(TRIM)) + 1))
         i += 1
         if not piece.endswith("\\"):
             pieces.append(piece)

@@ -9,8 +9,8 @@ from .ast import Command, Function, MacroLine, UnreadCommand
 from .commands import command
 from .commands.tree import newer_than_every_tree, stand_in_note
 from .diagnostics import ERROR, WARNING, Diagnostic, Loc, new_loc
-from .features import feature_problem
-from .lines import LineError, logical_lines, macro_keys
+from .features import FEATURES, feature_problem
+from .lines import MAX_COMMAND_LENGTH, TRIM, LineError, macro_keys, unusual_line
 from .reader import JoinedReader, ParseError, Reader
 from .relocate import NotRelocatable, lines_read, relocate
 from .relocate import forget_read_lines  # noqa: F401  (the parser's public entry points are here)
@@ -82,11 +82,28 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
     is_macro = False
     macros_ok = feature_problem("macro lines", version) is None
     read = lines_read(version)
-    for item in logical_lines(physical, version):
-        if type(item) is LineError:
-            diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col, physical[item.line - 1]))
+    continuation = version >= FEATURES["line continuation"][0]
+    count = len(physical)
+    i = 0
+    while i < count:  # lines.logical_lines, inline
+        raw = physical[i]
+        i += 1
+        text = raw.strip(TRIM)
+        if not text:
             continue
-        text, line, col, segments = item
+        if (continuation and text[-1] == "\\") or len(text) > MAX_COMMAND_LENGTH:
+            item, i = unusual_line(physical, i - 1, text, continuation)
+            if item is None:
+                continue
+            if type(item) is LineError:
+                diagnostics.append(Diagnostic(ERROR, item.message, path, item.line, item.col,
+                                              physical[item.line - 1]))
+                continue
+            text, line, col, segments = item
+        elif text[0] == "#":
+            continue
+        else:
+            line, col, segments = i, (1 if raw[0] > " " else len(raw) - len(raw.lstrip(TRIM)) + 1), ()
         if not segments:  # a joined line spans lines: read each time
             known = read.get(text)
             if known:  # the same text read cleanly before: the same command, moved here

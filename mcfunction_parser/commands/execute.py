@@ -253,7 +253,7 @@ def _fast_score_matches(r: Reader, m, sub_loc):
     holder_text = m.group(2)
     if holder_text in ("@a", "@e") or objective_too_long(m.group(3), r.version):
         return None
-    holder = plain_holder(r, holder_text, m.start(2))
+    holder = plain_holder(r, m, 2)
     r.pos = m.end()
     return ast.IfScoreMatches.new(sub_loc, m.group(1) == "unless", holder, m.group(3), int_range(r))
 

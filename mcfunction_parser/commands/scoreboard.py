@@ -114,10 +114,6 @@ _FAST_OPERATION = re.compile(rf" {PLAIN_HOLDER} {PLAIN_OBJECTIVE} ([^ ]+) {PLAIN
 _FAST_SET = re.compile(rf" {PLAIN_HOLDER} {PLAIN_OBJECTIVE} (-?[0-9]{{1,10}})\Z")
 
 
-def _fast_holder(r: Reader, m, group: int):
-    return plain_holder(r, m.group(group), m.start(group))
-
-
 def _fast_operation(r: Reader, loc):
     m = _FAST_OPERATION.match(r.text, r.pos)
     if m is None or m.group(3) not in OPERATIONS:
@@ -126,7 +122,7 @@ def _fast_operation(r: Reader, loc):
     if objective_too_long(name, r.version) or objective_too_long(source_name, r.version):
         return None
     r.pos = r.end
-    return ast.ScoreOperation.new(loc, _fast_holder(r, m, 1), name, m.group(3), _fast_holder(r, m, 4), source_name)
+    return ast.ScoreOperation.new(loc, plain_holder(r, m, 1), name, m.group(3), plain_holder(r, m, 4), source_name)
 
 
 def _fast_set(r: Reader, loc, action: str):
@@ -137,7 +133,7 @@ def _fast_set(r: Reader, loc, action: str):
     if not (INT_MIN if action == "set" else 0) <= value <= INT_MAX:
         return None
     r.pos = r.end
-    return ast.ScoreSet.new(loc, action, _fast_holder(r, m, 1), m.group(2), value)
+    return ast.ScoreSet.new(loc, action, plain_holder(r, m, 1), m.group(2), value)
 
 
 def _pl_set(r, loc, action):
