@@ -132,7 +132,7 @@ def _parse_lines(physical: list[str], path: str, function_id: str,
         else:
             found = len(diagnostics)
             cmd = _parse(Reader(text, loc, version), diagnostics, physical, keep_unread=True)
-            if len(diagnostics) == found and cmd is not None and text not in read:
+            if known is None and len(diagnostics) == found and cmd is not None:  # False: kept
                 read[text] = (cmd, col)
         if cmd is not None:
             commands.append(cmd)

@@ -264,22 +264,22 @@ def _fast_score_matches(r: Reader, m, sub_loc):
 _BOUNDARY = re.compile(r" (?:as|at|positioned|rotated|facing|anchored|align|in|on|summon|if|unless|store|run) (?=.)")
 
 
-def _recall(r: Reader, read: dict, pos: int, boundary):
-    """The subcommand at ``pos`` (its space) when the text up to ``boundary`` (the next boundary)
-    was read cleanly as one subcommand before, moved here (the cursor put at the boundary); else None.
+def _recall(r: Reader, read: dict, pos: int, key: str):
+    """The subcommand at ``pos`` (its space) when its text ``key``, up to the next boundary, was
+    read cleanly as one subcommand before, moved here (the cursor put at the boundary); else None.
 
     A subcommand's reader reads a fixed number of arguments and never looks past the space that ends
     the last one, so the same text followed by any boundary reads the same. The first boundary may be
     an argument (``positioned as @s``): such a subcommand is not found, and read as usual."""
-    known = read.get(r.text[pos:boundary.start()])
+    known = read.get(key)
     if not known:
         return None
     try:
         found = relocate(known[0], r.path, r.line, r.col + pos + 1 - known[1])
     except NotRelocatable:
-        read[r.text[pos:boundary.start()]] = False
+        read[key] = False
         return None
-    r.pos = boundary.start()
+    r.pos = pos + len(key)
     return found
 
 
@@ -297,7 +297,8 @@ def execute(r: Reader, loc) -> ast.Command:
             return ast.Execute.new(loc, tuple(subcommands), rest_command(r))
         boundary = _BOUNDARY.search(text, pos + 1) if read is not None else None
         if boundary is not None:
-            recalled = _recall(r, read, pos, boundary)
+            key = text[pos:boundary.start()]
+            recalled = _recall(r, read, pos, key)
             if recalled is not None:
                 subcommands.append(recalled)
                 condition_last = isinstance(recalled, ast.Condition)
@@ -316,9 +317,9 @@ def execute(r: Reader, loc) -> ast.Command:
             condition_last = name in _CONDITION_SUBCOMMANDS
             if r.pos == r.end and not condition_last:
                 r.fail(f"incomplete execute: expected another subcommand or 'run' after '{name}'")
-        if (boundary is not None and boundary.start() == r.pos and len(r.warnings) == warned
+        if (boundary is not None and pos + len(key) == r.pos and len(r.warnings) == warned
                 and len(read) < READ_MAX):
-            read.setdefault(text[pos:r.pos], (subcommands[-1], r.col + pos + 1))  # False stays
+            read.setdefault(key, (subcommands[-1], r.col + pos + 1))  # False stays
 
 
 PARSERS = {"execute": execute}
