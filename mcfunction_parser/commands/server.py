@@ -113,12 +113,21 @@ def _time_with_clocks(r: Reader, loc) -> ast.Command:
     for word in text[start + 1:r.end].split(" "):
         words.append((word, at))
         at += len(word) + 1
+
+    def need(count: int, what: str) -> None:  # the tree refused short lines, but a stand-in tree only warns
+        if len(words) < count or not words[count - 1][0]:
+            r.pos = r.end
+            r.fail(f"incomplete command: expected {what}")
+    need(1, "a time action")
     clock = clock_loc = None
     if words[0][0] == "of":
+        need(3, "<clock> and a time action")
         clock, clock_loc = _id_at(r, words[1][1]), r.loc_at(words[1][1])
         words = words[2:]
     action = words[0][0]
     fields = {"clock": clock, "clock_loc": clock_loc}
+    if action in ("set", "add", "rate", "query"):
+        need(2, f"the {action} argument")
     if action in ("set", "add"):
         ticks = _ticks_at(r, words[1][1], len(words[1][0]), 0 if action == "set" else -2**31)
         if ticks is None:  # Brigadier tries <time> first: what it refuses is a time marker's id

@@ -186,6 +186,11 @@ def test_a_line_a_release_after_every_tree_may_accept_is_kept_unread():
                                            "dpemu has none for 26.2)")
     function, diags = parse_function(text, "f", "a:f", (26, 1, 0))
     assert [d.severity for d in diags] == ["error", "error"] and len(function.commands) == 1
+    # a short time line the stand-in tree only warns about is unread too, never a traceback
+    short = "time add\ntime of\ntime of a:clock\ntime\ntime query\n"
+    function, diags = parse_function(short, "f", "a:f", (26, 2, 0))
+    assert [type(c).__name__ for c in function.commands] == ["UnreadCommand"] * 5
+    assert all(d.severity == "warning" for d in diags)
 
 
 def test_26_1_time_has_world_clocks():
