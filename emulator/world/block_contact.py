@@ -1,7 +1,8 @@
 """Blocks that act on a mob standing in or on them, which the emulator does not model: reported as
 not modelled, once per block, while a living mob (a mob, a player, an armor stand) is where the
-block would act on it. Entities do not move here, so the game's outcome (a tilted leaf, a pressed
-plate, a burn) never comes, and a test waiting for it must not fail as if the pack were wrong.
+block would act on it; likewise a minecart that would ride its rails (with motion, or on a powered
+rail). Entities do not move here, so the game's outcome (a tilted leaf, a pressed plate, a burn, a
+cart up the track) never comes, and a test waiting for it must not fail as if the pack were wrong.
 
 - ``tick_report(state)``: the report, each tick after the entities' other steps;
   ``tick_is_idle(state)``: nothing left to report.
@@ -18,6 +19,7 @@ from __future__ import annotations
 import math
 
 MESSAGE = "a mob standing in or on {} (what the block does to it is not modelled here)"
+CART = "a minecart {} (a minecart riding its rails is not modelled here)"
 _INSIDE_SUFFIXES = ("_pressure_plate",)
 _INSIDE = frozenset({"minecraft:big_dripleaf", "minecraft:tripwire", "minecraft:powder_snow"})
 _STEP_ON = frozenset({"minecraft:magma_block"})
@@ -41,13 +43,26 @@ def _touched(state, entity):
             yield block_id
 
 
+def _moving_carts(state):
+    """Why each minecart would move: its motion, or a powered rail under it (AbstractMinecart.tick:
+    moveAlongTrack pushes a cart on a powered one, from standstill when a solid block is at one end)."""
+    for cart in state.entities.minecarts():
+        if any(float(m) != 0.0 for m in cart.motion):
+            yield CART.format("with motion")
+            continue
+        x, y, z = cart.pos
+        rail = state.level(cart.dimension).blocks.get((math.floor(x), math.floor(y), math.floor(z)))
+        if rail.id == "minecraft:powered_rail" and ("powered", "true") in rail.properties:
+            yield CART.format("on a powered rail")
+
+
 def _unreported(state):
-    touched = [block_id for entity in state.entities.living_mobs() for block_id in _touched(state, entity)]
+    touched = [MESSAGE.format(block_id) for entity in state.entities.living_mobs()
+               for block_id in _touched(state, entity)] + list(_moving_carts(state))
     if not touched:  # the common tick: no look at the diagnostics
         return
     reported = {d.message for d in state.diagnostics if d.unmodelled}
-    for block_id in touched:
-        message = MESSAGE.format(block_id)
+    for message in touched:
         if message not in reported:
             yield message
 

@@ -562,6 +562,7 @@ class EntityStore:
         self.changes = 0  # entities that came into ``entities`` or left it so far
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
         self._players: tuple[int, list[Entity]] = (0, [])  # (changes then, ``players()``)
+        self._carts: tuple[int, list[Entity]] = (0, [])  # (changes then, ``minecarts()``)
 
     def bind_scoreboard(self, scoreboard) -> None:
         """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
@@ -681,6 +682,12 @@ class EntityStore:
     def living(self) -> list[Entity]:
         alive = self.table.ints[:, EI_ALIVE].tolist()  # one read of the column: this runs every tick
         return [e for e in self.entities if alive[e.order]]
+
+    def minecarts(self) -> list[Entity]:
+        """The minecarts in the store's order, found again only when entities came or left."""
+        if self._carts[0] != self.changes:
+            self._carts = (self.changes, [e for e in self.entities if e.type.endswith("minecart")])
+        return self._carts[1]
 
     def living_mobs(self) -> list[Entity]:
         """The living LivingEntities (mobs, players, armor stands: :func:`living.is_living`), in the

@@ -7,7 +7,7 @@ import json
 import pytest
 
 from emulator.testing import discover, run_suite
-from emulator.world.block_contact import MESSAGE
+from emulator.world.block_contact import CART, MESSAGE
 from tests.conftest import write_pack
 from tests.world.world_emulator import emulator
 
@@ -55,3 +55,20 @@ def test_magma_beside_the_feet_acts_only_from_below(tmp_path):
     emu.add_player("Alex", (0.5, 5.0, 0.5))
     emu.tick(2)
     assert _reported(emu) == []
+
+
+def test_a_minecart_that_would_ride_its_rails_is_reported(tmp_path):
+    # AbstractMinecart.tick / moveAlongTrack: a cart with motion moves, one on a powered powered_rail
+    # is pushed; one at rest on a plain or unpowered rail stays, as here
+    emu = emulator(tmp_path, "python", {"t:s": "\n".join([
+        "setblock 0 0 0 rail", "setblock 2 0 0 powered_rail[powered=false]", "setblock 4 0 0 powered_rail[powered=true]",
+        "summon minecart 0.5 0 0.5", "summon minecart 2.5 0 0.5"]),
+        "t:push": "summon minecart 4.5 0 0.5",
+        "t:go": "summon chest_minecart 8.5 0 0.5 {Motion:[0.2d,0.0d,0.0d]}"})
+    emu.call("t:s")
+    emu.tick(2)
+    assert _reported(emu) == []
+    emu.call("t:push")
+    emu.call("t:go")
+    emu.tick(2)
+    assert _reported(emu) == [CART.format("on a powered rail"), CART.format("with motion")]
