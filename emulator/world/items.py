@@ -146,10 +146,14 @@ class ItemStack:
 
 
 def enchantment_levels(stack: ItemStack, key: str = "minecraft:enchantments") -> Compound:
-    """The ``levels`` of the stack's enchantments component (a copy; from 1.21.5 the component is the bare map)."""
+    """The ``levels`` of the stack's enchantments component (a copy; from 1.21.5 the component is the
+    bare map), by the enchantments' full ids: the codec reads ``binding_curse`` as the holder
+    ``minecraft:binding_curse`` (ItemEnchantments.CODEC's keys are Enchantment holders)."""
     found = stack.component(key)
     levels = found.get("levels", found) if isinstance(found, Compound) else Compound()
-    return Compound((k, v) for k, v in levels.items()) if isinstance(levels, Compound) else Compound()
+    if not isinstance(levels, Compound):
+        return Compound()
+    return Compound((k if ":" in k else "minecraft:" + k, v) for k, v in levels.items())
 
 
 def enchantment_level(stack: ItemStack | None, enchantment: str) -> int:

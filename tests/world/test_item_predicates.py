@@ -67,6 +67,12 @@ def test_enchantment_sub_predicates(text, expected):
     assert matches(predicate(text), stack, resources, V121) is expected
     plain = items.create(argument("diamond_sword"), 1)
     assert not matches(predicate("*[enchantments~[{}]]"), plain, resources, V121)
+    # the short form of the component, ids without their namespace: the codec reads them as the
+    # enchantments' holders (ItemEnchantments.CODEC), so the predicate finds them by full id
+    short = items.create(argument("iron_chestplate[enchantments={binding_curse:1}]"), 1)
+    for wanted, found in (("'minecraft:binding_curse',levels:1", True), ("'binding_curse'", True),
+                          ("'minecraft:sharpness'", False)):
+        assert matches(predicate(f"*[enchantments~[{{enchantments:{wanted}}}]]"), short, resources, V121) is found
 
 
 
