@@ -47,7 +47,7 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, falling, light,
+from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, falling,
                            living, nbt_ops, player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
@@ -261,7 +261,7 @@ class Runtime:
             elif daylight:
                 state.daytime = start[2] + t
                 if t > 0:  # the last tick's updateSkyBrightness saw the day time before it advanced
-                    state.sky_darken = light.sky_darken(state.daytime - 1)
+                    state.sky_time = state.daytime - 1
 
         self.rewards_cost = 0
         with nbt_ops.list_rules(self.packs.version):
@@ -299,7 +299,7 @@ class Runtime:
         # ServerLevel.tick: advanceWeatherCycle, updateSkyBrightness, then tickTime
         state.weather.advance(state.gamerules.weather_cycle)
         if state.clocks is None:
-            state.sky_darken = light.sky_darken(state.daytime)
+            state.sky_time = state.daytime
         state.gametime += 1
         while (entry := state.schedule.pop_due(state.gametime)) is not None:
             if entry.is_tag:

@@ -57,8 +57,11 @@ def _moving_carts(state):
 
 
 def _unreported(state):
-    touched = [MESSAGE.format(block_id) for entity in state.entities.living_mobs()
-               for block_id in _touched(state, entity)] + list(_moving_carts(state))
+    mobs, carts = state.entities.living_mobs(), state.entities.minecarts()
+    if not (mobs or carts):  # the commonest tick of all: nothing to look at
+        return
+    touched = [MESSAGE.format(block_id) for entity in mobs for block_id in _touched(state, entity)]
+    touched += _moving_carts(state) if carts else ()
     if not touched:  # the common tick: no look at the diagnostics
         return
     reported = {d.message for d in state.diagnostics if d.unmodelled}

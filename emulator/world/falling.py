@@ -70,6 +70,8 @@ def tick_is_idle(state) -> bool:
 
 
 def tick_falling(state) -> None:
+    if not state.falling:
+        return
     state.falling[:] = [p for p in state.falling if p.alive]
     for player in state.falling:
         try:

@@ -9,7 +9,7 @@ buffer, a 15 s / 5 block warning).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -29,9 +29,12 @@ class LevelSettings:
     border_damage_buffer: float = 5.0
     border_warning_time: int = 15
     border_warning_blocks: int = 5
+    _position: tuple = field(default=(None, None), repr=False, compare=False)  # (spawn, its position)
 
     def server_position(self) -> tuple[float, float, float]:
         """Where the server's command source stands (MinecraftServer.createCommandSourceStack:
         Vec3.atLowerCornerOf(the world spawn), rotation 0 0): the ``#load``/``#tick`` and scheduled
-        functions' position."""
-        return tuple(float(v) for v in self.spawn)
+        functions' position (asked for at every root: worked out again only when the spawn moved)."""
+        if self._position[0] is not self.spawn:
+            self._position = (self.spawn, tuple(float(v) for v in self.spawn))
+        return self._position[1]

@@ -17,7 +17,8 @@ light level (``light``), in the emulator's world, empty where nothing was placed
   whose emission, or on the way whose light dampening, is not known here (a slab, stairs or fence
   occluding light with a face: LightEngine.shapeOccludes) is not modelled.
 - ``sky_darken(daytime)``: Level.updateSkyBrightness in clear weather, from the day time (ServerLevel
-  keeps it from its start and updates it each tick before the time advances: ``state.sky_darken``).
+  keeps it from its start and updates it each tick before the time advances: ``state.sky_darken``,
+  worked out from ``state.sky_time`` when read).
 
 What passes: air, glass and stained glass (TransparentBlock.propagatesSkylightDown), barriers and
 light blocks when not waterlogged, torches and signs when not waterlogged (small shapes, no

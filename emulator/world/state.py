@@ -43,6 +43,7 @@ from emulator.world.advancement_progress import Progress
 from emulator.world.bossbars import BossBars
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
+from emulator.world import light
 from emulator.world.level_settings import LevelSettings
 from emulator.world.block_ticks import BlockTicks
 from emulator.world.random_sequences import RandomSequences
@@ -538,7 +539,22 @@ class WorldState:
     structures_generated: bool | None = None
     weather: Weather = field(default_factory=Weather)  # the overworld's level data (emulator.world.weather)
     level_settings: LevelSettings = field(default_factory=LevelSettings)  # spawn, border, difficulty (level_settings)
-    sky_darken: int = 0  # Level.skyDarken: set from the day time as the overworld starts and each tick (light)
+    # the day time Level.updateSkyBrightness last read (as the overworld starts and each tick, before
+    # the time advances): Level.skyDarken is worked out from it when a light level is read
+    sky_time: int = 0
+    _sky: tuple = field(default=(0, 0), repr=False, compare=False)  # (sky_time, its skyDarken)
+
+    @property
+    def sky_darken(self) -> int:
+        """Level.skyDarken (:func:`emulator.world.light.sky_darken` of ``sky_time``)."""
+        if self._sky[0] != self.sky_time:
+            self._sky = (self.sky_time, light.sky_darken(self.sky_time))
+        return self._sky[1]
+
+    @sky_darken.setter
+    def sky_darken(self, value: int) -> None:
+        """Set as it is until the sky is next updated (tests darken the sky at will)."""
+        self._sky = (self.sky_time, value)
 
     def __post_init__(self) -> None:
         self.entities.bind_scoreboard(self.scoreboard)

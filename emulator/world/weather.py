@@ -41,10 +41,14 @@ class Weather:
     rain_level: np.float32 = np.float32(0.0)
     thunder_level: np.float32 = np.float32(0.0)
     random: random.Random = field(default_factory=lambda: random.Random(0))  # stands for the level's random
+    # ticks known to only count the timers down (with the rule as it was then): 0, look again
+    _quiet: int = field(default=0, repr=False, compare=False)
+    _quiet_cycle: bool = field(default=True, repr=False, compare=False)
 
     def set(self, clear: int, duration: int, raining: bool, thundering: bool) -> None:
         self.clear_time, self.rain_time, self.thunder_time = clear, duration, duration
         self.raining, self.thundering = raining, thundering
+        self._quiet = 0
 
     def sample(self, bounds: tuple[int, int]) -> int:
         return self.random.randint(*bounds)
@@ -54,13 +58,16 @@ class Weather:
 
     def advance_ticks(self, n: int, cycle: bool) -> None:
         while n > 0:
-            quiet = min(n, self._quiet_ticks(cycle))
+            if self._quiet <= 0 or self._quiet_cycle != cycle:
+                self._quiet, self._quiet_cycle = self._quiet_ticks(cycle), cycle
+            quiet = min(n, self._quiet)
             if quiet > 0:  # the common tick: whole numbers counted down, no float32 level moved
                 if cycle and self.clear_time > 0:
                     self.clear_time -= quiet
                 elif cycle:
                     self.rain_time -= quiet
                     self.thunder_time -= quiet
+                self._quiet -= quiet
                 n -= quiet
             else:
                 self._step(cycle)
