@@ -30,17 +30,18 @@ def _acts_inside(block_id: str) -> bool:
     return block_id in _INSIDE or block_id.endswith(_INSIDE_SUFFIXES)
 
 
-def _touched(state, entity):
+def _touched(state, entity) -> list[str]:
     """The acting block ids at the mob's feet and under them (both checks: with no gravity a mob
     set above a leaf or plate stays at whole y, where the game would have it resting on it)."""
     blocks = state.level(entity.dimension).blocks
     x, y, z = entity.pos
-    feet = (math.floor(x), math.floor(y), math.floor(z))
-    under = (feet[0], math.floor(y - _ON_POS_OFFSET), feet[2])
-    for pos in {feet, under}:
-        block_id = blocks.get(pos).id
-        if _acts_inside(block_id) or (pos == under and block_id in _STEP_ON):
-            yield block_id
+    column, feet_y, under_y = (math.floor(x), math.floor(z)), math.floor(y), math.floor(y - _ON_POS_OFFSET)
+    feet = blocks.get((column[0], feet_y, column[1])).id
+    under = feet if under_y == feet_y else blocks.get((column[0], under_y, column[1])).id
+    found = [feet] if _acts_inside(feet) and under_y != feet_y else []
+    if _acts_inside(under) or under in _STEP_ON:
+        found.append(under)
+    return found
 
 
 def _moving_carts(state):
