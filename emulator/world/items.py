@@ -146,14 +146,11 @@ class ItemStack:
 
 
 def enchantment_levels(stack: ItemStack, key: str = "minecraft:enchantments") -> Compound:
-    """The ``levels`` of the stack's enchantments component (a copy; from 1.21.5 the component is the
-    bare map), by the enchantments' full ids: the codec reads ``binding_curse`` as the holder
-    ``minecraft:binding_curse`` (ItemEnchantments.CODEC's keys are Enchantment holders)."""
+    """The ``levels`` of the stack's enchantments component by full ids (a copy; from 1.21.5 the
+    component is the bare map; :func:`set_component` keeps the ids full)."""
     found = stack.component(key)
     levels = found.get("levels", found) if isinstance(found, Compound) else Compound()
-    if not isinstance(levels, Compound):
-        return Compound()
-    return Compound((k if ":" in k else "minecraft:" + k, v) for k, v in levels.items())
+    return Compound((k, v) for k, v in levels.items()) if isinstance(levels, Compound) else Compound()
 
 
 def enchantment_level(stack: ItemStack | None, enchantment: str) -> int:
@@ -175,8 +172,28 @@ def decoded(name: str, value):
     return value
 
 
+_ENCHANTMENT_MAPS = ("minecraft:enchantments", "minecraft:stored_enchantments")
+
+
+def _full_ids(name: str, value):
+    """The enchantment maps by their full ids, as the codec saves the holders it read
+    (ItemEnchantments.CODEC: ``binding_curse`` is ``minecraft:binding_curse``), in the layout given."""
+    if name not in _ENCHANTMENT_MAPS or not isinstance(value, Compound):
+        return value
+    levels = value.get("levels") if isinstance(value.get("levels"), Compound) else value
+    if all(":" in key for key in levels):
+        return value
+    named = Compound((k if ":" in k else "minecraft:" + k, v) for k, v in levels.items())
+    if levels is value:
+        return named
+    whole = Compound(value)
+    whole["levels"] = named
+    return whole
+
+
 def set_component(stack: ItemStack, name: str, value) -> None:
     """PatchedDataComponentMap.set: a value equal to the default leaves the patch."""
+    value = _full_ids(name, value)
     stack.patch.pop("!" + name, None)
     default = defaults(stack.id).get(name)
     if default is not None and tags_equal(decoded(name, default), decoded(name, value)):

@@ -70,6 +70,9 @@ def test_enchantment_sub_predicates(text, expected):
     # the short form of the component, ids without their namespace: the codec reads them as the
     # enchantments' holders (ItemEnchantments.CODEC), so the predicate finds them by full id
     short = items.create(argument("iron_chestplate[enchantments={binding_curse:1}]"), 1)
+    assert short.patch["minecraft:enchantments"] == {"minecraft:binding_curse": 1}  # saved by full id
+    book = items.create(argument("enchanted_book[stored_enchantments={levels:{mending:1}}]"), 1)
+    assert book.patch["minecraft:stored_enchantments"] == {"levels": {"minecraft:mending": 1}}
     for wanted, found in (("'minecraft:binding_curse',levels:1", True), ("'binding_curse'", True),
                           ("'minecraft:sharpness'", False)):
         assert matches(predicate(f"*[enchantments~[{{enchantments:{wanted}}}]]"), short, resources, V121) is found
