@@ -94,8 +94,11 @@ class GameJar(click.ParamType):
     name = "jar"
 
     def convert(self, value, param, ctx):
+        from mcfunction_parser.gamedata.game_jars import AUTO
         from mcfunction_parser.gamedata.vanilla_tags import GameJarError, open_game_jar
 
+        if value == AUTO:  # found or downloaded once the packs' release is known
+            return value
         try:
             open_game_jar(value)
         except GameJarError as error:
@@ -105,5 +108,6 @@ class GameJar(click.ParamType):
 
 # One definition of --game-jar for every subcommand that loads packs (run, profile, test, check).
 game_jar_option = click.option(
-    "--game-jar", type=GameJar(), metavar="JAR",
-    help="The game's client or server jar: its vanilla tags (#minecraft:...) and loot tables load under the packs'.")
+    "--game-jar", type=GameJar(), metavar="JAR|auto", envvar="DPEMU_GAME_JAR",
+    help="The game's client or server jar: its vanilla tags (#minecraft:...), loot tables and recipes load under "
+         "the packs'. 'auto': the launcher's jar of the packs' release, else downloaded from Mojang once and cached.")

@@ -3,7 +3,10 @@ PackTest-format mcfunction test files collected as pytest items.
 
 Fixtures: ``dpemu_pack(*paths, backend=None, load=True)`` returns a fresh :class:`Emulator` with
 the packs loaded (and ``#minecraft:load`` run); ``emulator`` is a fresh emulator with no pack.
-``--dpemu-backend numba|python`` picks the default backend.
+``--dpemu-backend numba|python`` picks the default backend; an mcfunction test that meets what the
+emulator does not model is skipped as inconclusive, with the reason (``--dpemu-allow-unmodelled``
+judges it by its assertions, as ``dpemu test --allow-unmodelled``); ``--dpemu-game-jar JAR|auto`` loads
+the game's vanilla data under the packs (as ``--game-jar``).
 
 mcfunction tests are opt-in: ``--mcfunction-tests PATH`` (repeatable) or the ini option
 ``mcfunction_tests`` (paths relative to the rootdir) name packs, folders or test files.
@@ -24,6 +27,12 @@ def pytest_addoption(parser) -> None:
                     help="collect PackTest-format test files (data/<ns>/test/**.mcfunction) under PATH")
     group.addoption("--dpemu-backend", choices=["numba", "python"], default="numba",
                     help="emulator backend for the dpemu fixtures and mcfunction tests (default numba)")
+    group.addoption("--dpemu-game-jar", metavar="JAR|auto", default=None,
+                    help="the game's jar whose vanilla tags, loot tables and recipes load under the packs "
+                         "('auto': the launcher's jar of the packs' release, else downloaded and cached)")
+    group.addoption("--dpemu-allow-unmodelled", action="store_true",
+                    help="judge a test that meets behaviour the emulator does not model by its assertions "
+                         "(by default it is skipped as inconclusive, with the reason)")
     parser.addini("mcfunction_tests", type="paths", default=[],
                   help="packs or folders whose PackTest-format test files are collected")
 
@@ -43,7 +52,7 @@ def dpemu_pack(request):
 
     def load(*paths, backend: str | None = None, load: bool = True) -> Emulator:
         emu = Emulator(backend=backend or request.config.getoption("dpemu_backend"))
-        emu.load(list(paths))
+        emu.load(list(paths), game_jar=request.config.getoption("dpemu_game_jar"))
         errors = [d.format() for d in emu.load_diagnostics if d.severity == "error"]
         if errors:
             pytest.fail("the pack has errors:\n" + "\n".join(errors), pytrace=False)
@@ -88,15 +97,17 @@ class McfunctionTestFailure(Exception):
 
 
 class McfunctionItem(pytest.Item):
-    def __init__(self, *, case, packs, backend: str, **kwargs) -> None:
+    def __init__(self, *, case, packs, backend: str, allow_unmodelled: bool = False, **kwargs) -> None:
         super().__init__(**kwargs)
-        self.case, self.packs, self.backend = case, packs, backend
+        self.case, self.packs, self.backend, self.allow_unmodelled = case, packs, backend, allow_unmodelled
 
     def runtest(self) -> None:
-        from emulator.testing.results import FAILED, SKIPPED
+        from emulator.testing.results import FAILED, INCONCLUSIVE, SKIPPED
         from emulator.testing.runner import run_case
 
-        result = run_case(self.case, self.packs, self.backend)
+        result = run_case(self.case, self.packs, self.backend, allow_unmodelled=self.allow_unmodelled)
+        if result.status == INCONCLUSIVE:  # it met what is not modelled: neither passed nor failed
+            pytest.skip(f"inconclusive: {result.where}: {result.message}")
         if result.status == SKIPPED or (result.status == FAILED and result.optional):
             pytest.skip(f"{result.where}: {result.message}" + (" (optional test)" if result.optional else ""))
         if result.status == FAILED:
@@ -123,13 +134,13 @@ def pytest_collection_modifyitems(session, config, items) -> None:
         files = discover([Path(p) for p in paths])
     except DiscoveryError as error:
         raise pytest.UsageError(f"--mcfunction-tests: {error}") from None
-    backend = config.getoption("dpemu_backend")
-    for packs, cases in load_suite(files):
+    backend, allow = config.getoption("dpemu_backend"), config.getoption("dpemu_allow_unmodelled")
+    for packs, cases in load_suite(files, game_jar=config.getoption("dpemu_game_jar")):
         for case in cases:
             path = Path(case.path).resolve()
             nodeid = f"{_relative(path, config.rootpath)}::{case.id}"
             items.append(McfunctionItem.from_parent(session, name=case.id, nodeid=nodeid, path=path,
-                                                    case=case, packs=packs, backend=backend))
+                                                    case=case, packs=packs, backend=backend, allow_unmodelled=allow))
 
 
 def _relative(path: Path, root: Path) -> str:

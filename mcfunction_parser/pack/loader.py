@@ -15,6 +15,7 @@ file never stops the others.
 from __future__ import annotations
 
 import re
+import sys
 import zipfile
 from collections.abc import Sequence
 from dataclasses import dataclass, field
@@ -31,7 +32,8 @@ from mcfunction_parser.pack import enchantments as enchantment_files
 from mcfunction_parser.pack import recipes as recipe_files
 from mcfunction_parser.pack.text import JsonDocument, PackPath, load_json, read_text, split_lines
 from mcfunction_parser import gamedata
-from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS, open_game_jar
+from mcfunction_parser.gamedata import game_jars
+from mcfunction_parser.gamedata.vanilla_tags import BUILTIN_TAGS, GameJarError, open_game_jar
 from mcfunction_parser.pack import advancements, clocks, conditions, registry_tags, test_environments
 from mcfunction_parser.pack.registry_tags import RegistryTag
 from mcfunction_parser.pack.tags import FailedTag, merge_tag, normalise_id, read_tag_file, resolve_tag, validate_tags
@@ -170,7 +172,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     result.packs = [p.info for p in packs]
     if target >= FILTER_FORMAT:
         _apply_filters(packs, metas)
-    jar = None if game_jar is None else (open_game_jar(game_jar), str(game_jar))
+    jar = _open_jar(game_jar, version, diagnostics)
     result.vanilla_data = jar is not None
     _load_functions(packs, result, workers, on_function)
     _load_tags(packs, result)
@@ -184,6 +186,28 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
     _load_enchantments(packs, result)
     _load_clocks(packs, result)
     return result
+
+
+def _open_jar(game_jar: str | Path | None, version, diagnostics: list[Diagnostic]):
+    """The game jar's data root and name; ``auto`` finds or downloads the release's jar
+    (:mod:`mcfunction_parser.gamedata.game_jars`), an error when it cannot, the packs loading
+    without it. A jar named by path that cannot be read raises GameJarError."""
+    if game_jar is None:
+        return None
+    try:
+        path = game_jars.resolve(game_jar, version, lambda note: _note(note, diagnostics))
+        return open_game_jar(path), str(path)
+    except GameJarError as error:
+        if str(game_jar) != game_jars.AUTO:
+            raise
+        diagnostics.append(Diagnostic(ERROR, f"{error}; the packs load without the game's data", "--game-jar"))
+    return None
+
+
+def _note(note: str, diagnostics: list[Diagnostic]) -> None:
+    """A step worth seeing as it happens (a download): on stderr, and kept as an info diagnostic."""
+    print(note, file=sys.stderr, flush=True)
+    diagnostics.append(Diagnostic(INFO, note, "--game-jar"))
 
 
 def _open_pack(path: Path, shown: str, diagnostics: list[Diagnostic]) -> PackPath | None:

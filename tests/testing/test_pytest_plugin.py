@@ -88,3 +88,25 @@ def test_mcfunction_items_run_under_xdist(pack, tmp_path):
     assert "created: 2/2 workers" in run.stdout
     assert "1 failed, 2 passed" in run.stdout, run.stdout
     assert "FAILED pack/data/demo/test/bad.mcfunction::demo:bad" in run.stdout
+
+
+def test_mcfunction_items_read_the_game_jar_when_given(pack, tmp_path):
+    """``--dpemu-game-jar`` (as ``dpemu test --game-jar``): the vanilla tags load under the packs."""
+    import zipfile
+
+    from tests.parser.pack.packbuild import tag
+
+    jar = tmp_path / "client.jar"
+    with zipfile.ZipFile(jar, "w") as archive:
+        archive.writestr("data/minecraft/tags/block/logs.json", tag("minecraft:oak_log"))
+    root = pack({"demo/test/log.mcfunction": "setblock ~ ~ ~ oak_log\nassert block ~ ~ ~ #minecraft:logs\n"})
+    (tmp_path / "test_nothing.py").write_text("def test_py():\n    pass\n")
+    command = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-o", "addopts=", "--rootdir", str(tmp_path),
+               str(tmp_path / "test_nothing.py"), "--mcfunction-tests", str(root), "--dpemu-backend", "python", "-rA"]
+    without = subprocess.run(command, capture_output=True, text=True, cwd=tmp_path)
+    assert "1 passed, 1 skipped" in without.stdout, without.stdout  # inconclusive, never passed
+    assert "inconclusive: " in without.stdout and "#minecraft:logs is not known without the game's data" in without.stdout
+    judged = subprocess.run(command + ["--dpemu-allow-unmodelled"], capture_output=True, text=True, cwd=tmp_path)
+    assert "1 failed, 1 passed" in judged.stdout, judged.stdout  # the tag matches nothing without the jar
+    run = subprocess.run(command + ["--dpemu-game-jar", str(jar)], capture_output=True, text=True, cwd=tmp_path)
+    assert run.returncode == 0 and "2 passed" in run.stdout, run.stdout + run.stderr
