@@ -327,7 +327,7 @@ class _World:
 
     def _end_environments(self) -> None:
         for activation in reversed(self.environments):  # GameTestRunner.endCurrentEnvironment
-            tear_down_environment(self.emu, activation)
+            environments.tear_down(self.emu, activation)
         self.environments = []
 
     def _steps(self, run: _Running):
@@ -386,41 +386,15 @@ class _World:
         return result
 
 
-def set_up_environment(emu: Emulator, packs, environment_id: str):
-    """The test environment's rules and day time, then its setup functions (as the server, as
-    TestEnvironmentDefinition.Functions runs them); returns what :func:`tear_down_environment`
-    needs. One that cannot be set up fails the tests using it; one the emulator does not model
-    makes them inconclusive. From 1.21.5 the game sets up a batch's environment when the batch
-    starts and tears it down when the next one starts (GameTestRunner.runBatch,
-    endCurrentEnvironment); the emulator does the same before 1.21.5."""
+def set_up_environment(emu: Emulator, packs, environment_id: str) -> environments.Activation:
+    """The test environment set up (:mod:`emulator.testing.environments`); one that does not exist
+    fails the tests using it, one of a type not modelled makes them inconclusive. From 1.21.5 the
+    game sets up a batch's environment when the batch starts and tears it down when the next one
+    starts (GameTestRunner.runBatch, endCurrentEnvironment); the emulator does the same before 1.21.5."""
     try:
-        environment = environments.resolve(packs, environment_id)
+        return environments.set_up(emu, environments.resolve(packs, environment_id))
     except environments.EnvironmentError as error:
         raise _Verdict(INCONCLUSIVE if error.unmodelled else FAILED, error.message) from None
-    state = emu.state
-    saved = ([(rule, state.gamerules.get(rule)) for rule, _ in environment.rules], state.daytime)
-    for rule, value in environment.rules:
-        state.gamerules.set(rule, value)
-    if environment.day_time is not None:
-        state.daytime = environment.day_time
-    for function in environment.setup:
-        if function not in packs.functions:
-            raise _Verdict(FAILED, f"test environment {environment_id}: unknown setup function {function}")
-        emu.call(function)
-    return environment, saved
-
-
-def tear_down_environment(emu: Emulator, activation) -> None:
-    """TestEnvironmentDefinition.teardown: the teardown functions, and the rules and day time the
-    environment set back to what they were before its setup (SetGameRules, ClockTime)."""
-    environment, (rules, day_time) = activation
-    for function in environment.teardown:
-        emu.call(function)
-    for rule, value in reversed(rules):
-        if value is not None:
-            emu.state.gamerules.set(rule, value)
-    if environment.day_time is not None:
-        emu.state.daytime = day_time
 
 
 _BARRIER = BlockSpec("minecraft:barrier", False, (), None)

@@ -3,7 +3,8 @@
 - ``Weather``: the saved timers and flags (ServerLevelData clearWeatherTime, rainTime,
   thunderTime, raining, thundering) and the levels the predicates read (Level.rainLevel,
   thunderLevel, float32).
-- ``Weather.set(clear, duration, raining, thundering)``: ServerLevel.setWeatherParameters.
+- ``Weather.set(clear, duration, raining, thundering)``: ServerLevel.setWeatherParameters;
+  ``reset_cycle()``: ServerLevel.resetWeatherCycle.
 - ``Weather.advance(cycle)``: ServerLevel.advanceWeatherCycle, once per tick: with the
   ``doWeatherCycle`` rule the timers count down (a timer at 0 draws a new one; its draw is not the
   game's random), then the rain and thunder levels move 0.01 towards the flags.
@@ -48,6 +49,12 @@ class Weather:
     def set(self, clear: int, duration: int, raining: bool, thundering: bool) -> None:
         self.clear_time, self.rain_time, self.thunder_time = clear, duration, duration
         self.raining, self.thundering = raining, thundering
+        self._quiet = 0
+
+    def reset_cycle(self) -> None:
+        """ServerLevel.resetWeatherCycle: no rain or thunder, their timers 0 (the clear timer kept)."""
+        self.rain_time = self.thunder_time = 0
+        self.raining = self.thundering = False
         self._quiet = 0
 
     def sample(self, bounds: tuple[int, int]) -> int:

@@ -2,11 +2,13 @@
 TestEnvironmentDefinition.DIRECT_CODEC dispatches on ``type``; a file whose type is unknown or
 whose fields do not decode is refused ("Couldn't parse element ...") and does not exist.
 
-Types (decompiled 26.1, gametest/framework/TestEnvironmentDefinition; minecraft.wiki "Test
-environment definition"): ``all_of`` {definitions: list of ids or definitions}, ``function``
-{setup?, teardown?: function ids}, ``game_rules`` ({bool_rules, int_rules}: lists of {rule, value}
-before 1.21.11, {rules}: a map from it), ``time_of_day`` {time: int >= 0}, ``weather`` {weather:
-clear, rain or thunder}. A type a release after the newest known may add is a warning.
+Types (decompiled 1.21.5 - 1.21.11 and 26.1, gametest/framework/TestEnvironmentDefinition.bootstrap;
+minecraft.wiki "Test environment definition"): ``all_of`` {definitions: list of ids or
+definitions}, ``function`` {setup?, teardown?: function ids}, ``game_rules`` ({bool_rules,
+int_rules}: lists of {rule, value} before 1.21.11, {rules}: a map from it), ``weather`` {weather:
+clear, rain or thunder}; ``time_of_day`` {time: int >= 0} until 26.1, which replaced it with
+``clock_time`` {clock: a world clock id, time: int >= 0}. A type a release after the newest known
+may add is a warning.
 """
 from __future__ import annotations
 
@@ -18,7 +20,12 @@ from mcfunction_parser.pack.text import JsonDocument
 Version = tuple[int, int, int]
 SINCE: Version = (1, 21, 5)  # 25w02a: the test_environment registry
 NEWEST_KNOWN: Version = (26, 1, 0)
-_TYPES = ("all_of", "function", "game_rules", "time_of_day", "weather")
+CLOCKS: Version = (26, 1, 0)  # clock_time replaced time_of_day (the world clocks)
+
+
+def types(version: Version) -> tuple[str, ...]:
+    """The definition types the release registers."""
+    return ("all_of", "function", "game_rules", "clock_time" if version >= CLOCKS else "time_of_day", "weather")
 
 
 def problem(value: Any, version: Version) -> tuple[str, str, str] | None:
@@ -31,7 +38,7 @@ def problem(value: Any, version: Version) -> tuple[str, str, str] | None:
     kind = raw.removeprefix("minecraft:") if isinstance(raw, str) else None
     if kind is None:
         return ERROR, 'a test environment needs "type"', ""
-    if kind not in _TYPES:
+    if kind not in types(version):
         severity = WARNING if version > NEWEST_KNOWN else ERROR
         return severity, f"unknown test environment type '{raw}'", raw
     if kind == "all_of":
@@ -43,6 +50,9 @@ def problem(value: Any, version: Version) -> tuple[str, str, str] | None:
         return ERROR, '"setup" and "teardown" are function ids', raw
     if kind == "time_of_day" and not (isinstance(value.get("time"), int) and value["time"] >= 0):
         return ERROR, 'time_of_day needs "time": an int of at least 0', raw
+    if kind == "clock_time" and not (isinstance(value.get("clock"), str)
+                                     and isinstance(value.get("time"), int) and value["time"] >= 0):
+        return ERROR, 'clock_time needs "clock": a world clock id and "time": an int of at least 0', raw
     if kind == "weather" and value.get("weather") not in ("clear", "rain", "thunder"):
         return ERROR, 'weather needs "weather": clear, rain or thunder', raw
     if kind == "game_rules":

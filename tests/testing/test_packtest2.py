@@ -50,18 +50,107 @@ def test_environment_functions_rules_and_time_apply_before_the_test(tmp_path, ba
         [r.report() for r in results.values()]
 
 
-def test_an_unmodelled_environment_makes_the_test_inconclusive_and_an_unknown_one_fails(tmp_path):
-    files = {**ENVIRONMENTS,
-             "demo/test/wet.mcfunction": "# @environment demo:rainy\nsucceed\n",
+def test_a_weather_environment_sets_the_weather_and_an_unknown_one_fails(tmp_path):
+    """TestEnvironmentDefinition.Weather: setWeatherParameters(0, 100000, true, false) for rain; the
+    rain level then rises 0.01 a tick (ServerLevel.advanceWeatherCycle), so weather_check sees rain
+    once it passes 0.2 (Level.isRaining)."""
+    raining = json.dumps({"condition": "minecraft:weather_check", "raining": True})
+    files = {**ENVIRONMENTS, "demo/predicate/raining.json": raining,
+             "demo/test/wet.mcfunction": "# @environment demo:rainy\nexecute if predicate demo:raining run fail dry\n"
+                                         "await predicate demo:raining\n",
              "demo/test/nowhere.mcfunction": "# @environment demo:missing\nsucceed\n"}
     summary, results = suite(tmp_path, files)
-    assert results["demo:wet"].status == "inconclusive"
-    assert "weather is not emulated" in results["demo:wet"].message
+    assert results["demo:wet"].status == "passed", results["demo:wet"].report()
     assert results["demo:nowhere"].status == "failed"
     assert "Unknown test environment demo:missing" in results["demo:nowhere"].message
-    assert summary.line() == "0 passed, 1 failed, 1 inconclusive"
-    skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='wet']/skipped")
-    assert skipped is not None and skipped.get("type") == "inconclusive"
+    assert summary.line() == "1 passed, 1 failed"
+
+
+def test_a_type_newer_than_the_known_releases_is_inconclusive():
+    """A type a later release adds (the validator's warning lets it load) is not modelled: said so."""
+    from emulator.testing import environments
+
+    class Packs:
+        test_environments = {"demo:hard": {"type": "minecraft:difficulty", "difficulty": "hard"}}
+
+    with pytest.raises(environments.EnvironmentError) as raised:
+        environments.resolve(Packs(), "demo:hard")
+    assert raised.value.unmodelled and "'minecraft:difficulty' is not emulated" in raised.value.message
+
+
+def teardown_files(rules: dict, rule: str) -> dict:
+    return {
+        "demo/test_environment/ordered.json": json.dumps({"type": "all_of", "definitions": [
+            {"type": "function", "teardown": "demo:one"}, {"type": "function", "teardown": "demo:two"},
+            {"type": "game_rules", **rules}, {"type": "weather", "weather": "clear"}]}),
+        "demo/function/one.mcfunction": "scoreboard players operation #log o *= #ten o\nscoreboard players add #log o 1",
+        "demo/function/two.mcfunction": "scoreboard players operation #log o *= #ten o\nscoreboard players add #log o 2",
+        "demo/function/prep.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set #ten o 10\n"
+                                         f"gamerule {rule} 5\nweather thunder",
+    }
+
+
+@pytest.mark.parametrize("release, rules, rule, order, after, thundering", [
+    # in order; the rule's default; the weather cycle reset
+    ("1.21.5", {"int_rules": [{"rule": "randomTickSpeed", "value": 0}]}, "randomTickSpeed", 12, "3", False),
+    # reversed; the rule as it was; the weather it found applied again
+    ("26.1", {"rules": {"minecraft:random_tick_speed": 0}}, "random_tick_speed", 21, "5", True),
+])
+def test_teardown_follows_the_release(tmp_path, release, rules, rule, order, after, thundering):
+    """AllOf.teardown (1.21.5 - 1.21.11: forEach; 26.1: activations.reversed()), SetGameRules.teardown
+    (createRule(): the default; 26.1: the saved GameRuleMap), Weather.teardown (resetWeatherCycle;
+    26.1: then the type saved from isThundering/isRaining applied)."""
+    from emulator import Emulator
+    from emulator.testing import environments
+
+    emu = Emulator(backend="python")
+    emu.load([write_pack(tmp_path / "p", teardown_files(rules, rule))], release)
+    emu.call("demo:prep")
+    emu.tick(100)  # the rain and thunder levels reach 1
+    assert emu.state.weather.is_thundering("minecraft:overworld")
+    activation = environments.set_up(emu, environments.resolve(emu.packs, "demo:ordered"))
+    assert emu.state.gamerules.get(rule) == "0" and not emu.state.weather.thundering
+    environments.tear_down(emu, activation)
+    assert emu.score("#log", "o") == order
+    assert emu.state.gamerules.get(rule) == after
+    assert emu.state.weather.thundering is thundering and emu.state.weather.raining is thundering
+
+
+def test_time_of_day_stays_and_a_clock_time_is_set_back(tmp_path):
+    """TimeOfDay (until 26.1) has no teardown; ClockTime (26.1) sets the clock back to its saved ticks."""
+    from emulator import Emulator
+    from emulator.testing import environments
+
+    old = {"demo/test_environment/noon.json": json.dumps({"type": "time_of_day", "time": 6000})}
+    emu = Emulator(backend="python")
+    emu.load([write_pack(tmp_path / "old", old)], "1.21.5")
+    environments.tear_down(emu, environments.set_up(emu, environments.resolve(emu.packs, "demo:noon")))
+    assert emu.state.daytime == 6000
+    new = {"demo/test_environment/noon.json": json.dumps({"type": "clock_time", "clock": "minecraft:overworld",
+                                                          "time": 6000})}
+    emu = Emulator(backend="python")
+    new["demo/function/prep.mcfunction"] = "time set 100"
+    emu.load([write_pack(tmp_path / "new", new)], "26.1")
+    emu.call("demo:prep")
+    activation = environments.set_up(emu, environments.resolve(emu.packs, "demo:noon"))
+    assert emu.state.daytime == 6000
+    environments.tear_down(emu, activation)
+    assert emu.state.daytime == 100
+
+
+def test_each_release_knows_its_own_time_type(tmp_path):
+    """26.1 registers clock_time in place of time_of_day (TestEnvironmentDefinition.bootstrap)."""
+    from emulator import Emulator
+
+    files = {"demo/test_environment/a.json": json.dumps({"type": "time_of_day", "time": 1}),
+             "demo/test_environment/b.json": json.dumps({"type": "clock_time", "clock": "minecraft:overworld",
+                                                         "time": 1})}
+    for release, refused in (("1.21.5", "b"), ("26.1", "a")):
+        emu = Emulator(backend="python")
+        emu.load([write_pack(tmp_path / release, files)], release)
+        errors = [d.message for d in emu.load_diagnostics if d.severity == "error"]
+        assert len(errors) == 1 and f"test environment demo:{refused} fails to load" in errors[0], errors
+        assert set(emu.packs.test_environments) == {"demo:a", "demo:b"} - {f"demo:{refused}"}
 
 
 def test_a_test_is_encased_in_barriers_with_a_ceiling_unless_it_has_sky_access(tmp_path):
