@@ -1,6 +1,6 @@
 """The commands on the world's level data: ``list``, ``weather``, ``difficulty``, ``seed``,
-``defaultgamemode``, ``worldborder``, ``setworldspawn`` and ``spawnpoint`` (the parser keeps them as
-text, checked against the command tree; each is read again here).
+``defaultgamemode``, ``worldborder``, ``setworldspawn``, ``spawnpoint`` and ``spreadplayers`` (the
+parser keeps them as text, checked against the command tree; each is read again here).
 
 Sources (decompiled 1.21): server/commands/ListPlayersCommand.java (format: the players online),
 WeatherCommand.java (setClear/setRain/setThunder -> ServerLevel.setWeatherParameters; the result is
@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from emulator.world import mth
+from emulator.world import mth, spreading
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import in_spawnable_bounds
 from emulator.world.errors import CommandFailure
@@ -228,7 +228,27 @@ def set_respawn(state, player, dimension: str, pos, angle: np.float32) -> None:
     data["SpawnForced"] = Byte(1)
 
 
+def spreadplayers(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``spreadplayers CENTER SPREAD MAXRANGE [under MAXHEIGHT] RESPECTTEAMS TARGETS``
+    (:mod:`emulator.world.spreading`); the centre is a Vec2Argument (an absolute integer centred),
+    MAXHEIGHT the level's top without ``under``."""
+    words = _Words(env, cmd)
+    center = (_coordinate(words.word(), ctx.pos[0]), _coordinate(words.word(), ctx.pos[2]))
+    distance, max_range = float(words.word()), float(words.word())
+    state = env.state
+    start = words.reader.pos
+    if words.word() == "under":
+        max_height = int(words.word())
+    else:
+        words.reader.pos = start
+        max_height = state.entities.table.levels.build_height(ctx.dimension, state.version)[1]
+    respect_teams = words.word() == "true"
+    targets = entities.found(state, words.read(selectors.target), ctx)
+    return spreading.spread(state, targets, center, distance, max_range, max_height, respect_teams, ctx.dimension)
+
+
 GENERIC_HANDLERS = {
+    "spreadplayers": spreadplayers,
     "list": list_players,
     "weather": weather,
     "difficulty": difficulty,

@@ -24,6 +24,11 @@ MESSAGES = {
     "commands.data.entity.invalid": "Unable to modify player data",
     "argument.dimension.invalid": "Unknown dimension '{0}'",
     "commands.teleport.invalidPosition": "Invalid position for teleport",
+    "commands.spreadplayers.failed.entities": "Could not spread {0} entity/entities around {1}, {2} (too many entities "
+                                              "for space - try using spread of at most {3})",
+    "commands.spreadplayers.failed.teams": "Could not spread {0} team(s) around {1}, {2} (too many entities for space "
+                                           "- try using spread of at most {3})",
+    "commands.spreadplayers.failed.invalid.height": "Invalid maxHeight {0}; expected higher than world minimum {1}",
     "commands.summon.invalidPosition": "Invalid position for summon",
     "commands.tag.add.failed": "Target either already has the tag or has too many tags",
     "commands.tag.remove.failed": "Target does not have this tag",
