@@ -21,10 +21,11 @@ from __future__ import annotations
 import numpy as np
 
 from emulator.world import inventories, living, loot, statistics, tools
+from emulator.world.combat import award_orbs
 from emulator.world.blocks import BlockState, parse_block, with_defaults
 from emulator.world.id_families import COLOURS, WOODS
 from emulator.world.errors import CommandFailure, Unmodelled
-from emulator.world.items import EMPTY
+from emulator.world.items import EMPTY, enchantment_levels
 from emulator.world.loot_context import LootContext
 from mcfunction_parser.nbt import Compound, Double, List, Short
 
@@ -39,7 +40,8 @@ HAND_HARVESTABLE = frozenset("minecraft:" + n for n in (
     "dirt coarse_dirt rooted_dirt grass_block podzol mycelium sand red_sand gravel clay soul_sand soul_soil "
     "crafting_table chest trapped_chest barrel note_block jukebox bookshelf pumpkin carved_pumpkin jack_o_lantern "
     "melon hay_block glass tinted_glass glowstone sponge wet_sponge torch lever ladder scaffolding "
-    "dried_kelp_block target honey_block slime_block").split()) | frozenset(
+    "dried_kelp_block target honey_block slime_block sculk sculk_vein sculk_catalyst sculk_sensor "
+    "calibrated_sculk_sensor sculk_shrieker").split()) | frozenset(
     f"minecraft:{w}_{k}" for w in WOODS for k in (
         "planks", "log", "wood", "stripped_log", "stripped_wood", "slab", "stairs", "fence", "fence_gate", "door",
         "trapdoor", "button", "pressure_plate", "sign", "leaves", "sapling")) | frozenset(
@@ -51,8 +53,23 @@ NEEDS_TOOL = frozenset("minecraft:" + n for n in (
     "sandstone red_sandstone terracotta iron_block gold_block diamond_block emerald_block lapis_block "
     "redstone_block coal_block netherite_block copper_block furnace smoker blast_furnace dispenser dropper "
     "observer hopper anvil cauldron iron_bars iron_door iron_trapdoor chain lantern bell brewing_stand "
-    "enchanting_table ender_chest spawner stonecutter grindstone lodestone respawn_anchor").split()) | frozenset(
+    "enchanting_table ender_chest spawner stonecutter grindstone lodestone respawn_anchor nether_gold_ore "
+    "nether_quartz_ore ancient_debris").split()) | frozenset(
+    f"minecraft:{d}{o}_ore" for d in ("", "deepslate_")
+    for o in ("coal", "iron", "copper", "gold", "redstone", "lapis", "diamond", "emerald")) | frozenset(
     f"minecraft:{c}_{k}" for c in COLOURS for k in ("concrete", "terracotta", "glazed_terracotta"))
+
+
+# the experience blocks drop (Blocks: DropExperienceBlock's IntProvider; RedStoneOreBlock.spawnAfterBreak
+# UniformInt.of(1, 5); SculkBlock 1; SculkCatalystBlock, SculkSensorBlock, SculkShriekerBlock 5): inclusive
+BLOCK_EXPERIENCE = {
+    **{f"minecraft:{d}{ore}": bounds for d in ("", "deepslate_") for ore, bounds in (
+        ("coal_ore", (0, 2)), ("lapis_ore", (2, 5)), ("diamond_ore", (3, 7)), ("emerald_ore", (3, 7)),
+        ("redstone_ore", (1, 5)), ("iron_ore", (0, 0)), ("gold_ore", (0, 0)), ("copper_ore", (0, 0)))},
+    "minecraft:nether_gold_ore": (0, 1), "minecraft:nether_quartz_ore": (2, 5), "minecraft:sculk": (1, 1),
+    "minecraft:sculk_catalyst": (5, 5), "minecraft:sculk_sensor": (5, 5), "minecraft:calibrated_sculk_sensor": (5, 5),
+    "minecraft:sculk_shrieker": (5, 5),
+}
 
 
 def destroy_block(state, player, pos) -> bool:
@@ -81,6 +98,7 @@ def destroy_block(state, player, pos) -> bool:
         statistics.award(state, player, statistics.stat_name("mined", block.id))
         living.exhaust(player, MINING_EXHAUSTION)
         _pop_all(state, pos, drops, player.dimension)
+        _pop_experience(state, pos, block, held, player.dimension)
     return True
 
 
@@ -95,6 +113,7 @@ def destroy(state, pos, dimension: str) -> bool:
     _one_block(block)
     drops = _drops(state, pos, block, dimension, None, EMPTY.copy())
     _pop_all(state, pos, drops, dimension)
+    _pop_experience(state, pos, block, EMPTY, dimension)
     _remove(state, pos, block, dimension)
     return True
 
@@ -118,8 +137,6 @@ def _can_harvest(state, block: BlockState, held) -> bool:
 def _drops(state, pos, block: BlockState, dimension: str, entity, tool) -> list:
     """Block.dropResources: the block's loot table with the tool, the block, its entity and the
     entity breaking it (none for a command's destroy)."""
-    if block.id.endswith("_ore") or "sculk" in block.id or block.id == "minecraft:spawner":
-        raise Unmodelled(f"the experience {block.id} drops when mined")
     blocks = state.blocks_in(dimension)
     held_items = inventories.container(blocks, pos, state.version)
     if held_items is not None and any(not held_items.slot(i).get().is_empty for i in range(held_items.size)):
@@ -146,6 +163,26 @@ def _pop_all(state, pos, drops, dimension: str) -> None:
     if state.gamerules.get("doTileDrops") != "false":
         for stack in drops:
             _pop(state, pos, stack, dimension)
+
+
+def _pop_experience(state, pos, block: BlockState, tool, dimension: str) -> None:
+    """BlockState.spawnAfterBreak with dropExperience (Block.dropResources): a block's experience
+    (Block.tryDropExperience: its IntProvider sampled, here from the emulator's seeded random; a spawner's 15 +
+    nextInt(15) + nextInt(15), not through the enchantments) as orbs at its centre, unless the
+    doTileDrops rule is off (Block.popExperience)."""
+    if block.id == "minecraft:spawner":
+        rng = state.resources.random
+        amount = 15 + rng.randrange(15) + rng.randrange(15)
+    else:
+        bounds = BLOCK_EXPERIENCE.get(block.id)
+        if bounds is None or bounds == (0, 0):
+            return
+        if enchantment_levels(tool):  # EnchantmentHelper.processBlockExperience: silk touch's block_experience
+            raise Unmodelled(f"the experience {block.id} drops when mined with an enchanted tool "
+                             "(its enchantments' block_experience effects)")
+        amount = state.resources.random.randint(*bounds)  # Mth.randomBetweenInclusive
+    if amount > 0 and state.gamerules.get("doTileDrops") != "false":
+        award_orbs(state, (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5), amount, dimension)
 
 
 def _pop(state, pos, stack, dimension: str) -> None:

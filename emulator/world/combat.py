@@ -290,9 +290,9 @@ def _mob_drops(state, mob, killer, source: DamageSource) -> None:
     if killer is not None and killer.is_player:
         name = mob.type.split(":", 1)[-1]
         if name in ANIMALS:
-            _award_orbs(state, mob.pos, 1 + state.resources.random.randrange(3), mob.dimension)
+            award_orbs(state, mob.pos, 1 + state.resources.random.randrange(3), mob.dimension)
         elif name in MONSTERS:
-            _award_orbs(state, mob.pos, 5, mob.dimension)
+            award_orbs(state, mob.pos, 5, mob.dimension)
         else:
             state.error(f"the experience a {mob.type} killed by a player drops", severity="warning", unmodelled=True)
 
@@ -385,11 +385,12 @@ def _drop_experience(state, player) -> None:
     by ExperienceOrb.getExperienceValue (the game merges an orb into an equal one nearby one time in
     40, depending on entity ids: not here)."""
     level = int(player.data.get("XpLevel", Int(0)))
-    _award_orbs(state, player.pos, min(level * 7, 100), player.dimension)
+    award_orbs(state, player.pos, min(level * 7, 100), player.dimension)
 
 
-def _award_orbs(state, pos, amount: int, dimension: str) -> None:
-    """ExperienceOrb.award: orbs of getExperienceValue's sizes (no merging) at ``pos``."""
+def award_orbs(state, pos, amount: int, dimension: str) -> None:
+    """ExperienceOrb.award: orbs of getExperienceValue's sizes (no merging) at ``pos``, each with the
+    constructor's random motion."""
     rng = state.resources.random
     while amount > 0:
         value = next(v for v in ORB_VALUES if amount >= v)

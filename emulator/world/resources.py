@@ -35,6 +35,16 @@ from mcfunction_parser.pack.registry_tags import RegistryTag
 _READ_ENCHANTMENTS = ("unbreaking",)  # the enchantments whose effects the emulator carries out
 
 
+# the game's block loot tables that drop nothing, known without its data: VanillaBlockLoot's noDrop()
+# (spawners, fire, portals ...) and the blocks whose properties say noLootTable() (decompiled 1.21,
+# data/loot/packs/VanillaBlockLoot.generate, world/level/block/Blocks)
+EMPTY_BLOCK_TABLES = frozenset("minecraft:blocks/" + name for name in (
+    "cake frosted_ice spawner trial_spawner vault fire soul_fire nether_portal budding_amethyst powder_snow frogspawn "
+    "reinforced_deepslate suspicious_sand suspicious_gravel "
+    "air cave_air void_air water lava bubble_column barrier bedrock light structure_void structure_block jigsaw "
+    "command_block chain_command_block repeating_command_block end_gateway end_portal end_portal_frame moving_piston "
+    "piston_head").split())
+
 @dataclass
 class Resources:
     loot_tables: dict = field(default_factory=dict)  # id -> JSON value
@@ -81,8 +91,11 @@ class Resources:
         return False
 
     def loot_table(self, table_id: str) -> dict | None:
-        """A loot table by id; a vanilla one unknown without the game's data is not modelled."""
+        """A loot table by id; a vanilla one unknown without the game's data is not modelled, but for
+        the blocks known to drop nothing (:data:`EMPTY_BLOCK_TABLES`)."""
         table = self.loot_tables.get(table_id)
+        if table is None and not self.vanilla_data and table_id in EMPTY_BLOCK_TABLES:
+            return {}
         if table is None and table_id.startswith("minecraft:") and not self.vanilla_data:
             raise Unmodelled(f"the game's own loot table {table_id} is not known without the game's data "
                              "(pass --game-jar)")

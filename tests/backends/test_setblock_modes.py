@@ -24,12 +24,14 @@ CHEST = 'chest{Items:[{Slot:0b,id:"minecraft:diamond",count:3}]}'
 STONE_TABLE = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "minecraft:cobblestone"}]}]}
 
 
-def _run(tmp_path, lines: list[tuple[str, str]], setup: str = "", pack_format: int = 48):
+def _run(tmp_path, lines: list[tuple[str, str]], setup: str = "", pack_format: int = 48,
+         tables: tuple[str, ...] = ("stone",)):
     main = setup + "".join(f"execute store result score {holder} v run {command}\n" for holder, command in lines)
     root = write_pack(tmp_path / "pack", {"t:main": SETUP + main}, pack_format=pack_format)
-    table = root / "data/minecraft/loot_table/blocks/stone.json"  # the game's own table, as a pack may give it
-    table.parent.mkdir(parents=True)
-    table.write_text(json.dumps(STONE_TABLE))
+    for block in tables:  # the game's own tables, as a pack may give them
+        table = root / f"data/minecraft/loot_table/blocks/{block}.json"
+        table.parent.mkdir(parents=True, exist_ok=True)
+        table.write_text(json.dumps(STONE_TABLE))
     return run_both(root)
 
 
@@ -93,3 +95,34 @@ def test_strict_places_without_the_blocks_own_reaction(tmp_path):
     assert [score(emu, h) for h in ("#plain", "#strict")] == [1, 1]
     shape = lambda pos: dict(emu.state.blocks.get(pos).properties)["shape"]  # noqa: E731
     assert shape((1, 0, 0)) == "east_west" and shape((1, 0, 5)) == "north_south"
+
+
+def _orbs(emu) -> list[int]:
+    return sorted(int(e.data["Value"]) for e in emu.state.entities.entities if e.type == "minecraft:experience_orb")
+
+
+def test_destroyed_ores_spawners_and_sculk_drop_their_experience(tmp_path):
+    """BlockState.spawnAfterBreak with dropExperience (Level.destroyBlock -> Block.dropResources):
+    DropExperienceBlock's IntProvider (Blocks: diamond ore UniformInt.of(3, 7), iron ore
+    ConstantInt.of(0)), SculkCatalystBlock's ConstantInt.of(5), SpawnerBlock's 15 + nextInt(15) +
+    nextInt(15); ExperienceOrb.award splits the points by getExperienceValue (3 -> 3, 5 -> 3 + 1 + 1,
+    7 -> 7)."""
+    emu = _run(tmp_path, [("#ore", "setblock 0 0 0 air destroy"), ("#iron", "setblock 1 0 0 air destroy"),
+                          ("#catalyst", "setblock 2 0 0 air destroy")],
+               "setblock 0 0 0 diamond_ore\nsetblock 1 0 0 iron_ore\nsetblock 2 0 0 sculk_catalyst\n",
+               tables=("diamond_ore", "iron_ore", "sculk_catalyst"))
+    assert [score(emu, h) for h in ("#ore", "#iron", "#catalyst")] == [1, 1, 1]
+    orbs = _orbs(emu)
+    assert sum(orbs) - 5 in range(3, 8)  # the ore's 3 - 7, the catalyst's 5, the iron ore's none
+    assert all(value in (1, 3, 7) for value in orbs)
+    # the spawner's table is the game's noDrop() (VanillaBlockLoot), known without its data
+    spawner = _run(tmp_path / "spawner", [("#spawner", "setblock 0 0 0 air destroy")], "setblock 0 0 0 spawner\n")
+    assert sum(_orbs(spawner)) in range(15, 44) and not spawner.entities("@e[type=item]") and not spawner.diagnostics
+    positions = {tuple(e["pos"]) for e in spawner.entities("@e[type=experience_orb]")}
+    assert positions == {(0.5, 0.5, 0.5)}  # Vec3.atCenterOf(pos)
+
+
+def test_no_experience_when_the_rule_says_so(tmp_path):
+    emu = _run(tmp_path, [("#spawner", "setblock 0 0 0 air destroy")],
+               "setblock 0 0 0 spawner\ngamerule doTileDrops false\n")  # Block.popExperience reads it
+    assert score(emu, "#spawner") == 1 and _orbs(emu) == []
