@@ -43,6 +43,7 @@ from emulator.world import advancements, inventories, living, loot, predicates, 
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
+from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.loot_context import DamageSource, LootContext
 from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String
 
@@ -272,7 +273,7 @@ def _mob_drops(state, mob, killer, source: DamageSource) -> None:
     ``entities/<type>``: a pack's, or the game's from ``--game-jar``) rolled with its killer and
     dropped where it died;
     experience when a player hurt it within 100 ticks (Mob.getBaseExperienceReward: animals 1-3,
-    monsters 5); its equipment's drop chances are not modelled."""
+    monsters 5); its equipment by its drop chances (:func:`_equipment_drops`)."""
     table_id = str(mob.data.get("DeathLootTable") or "minecraft:entities/" + mob.type.split(":", 1)[-1])
     try:  # a table that does not exist drops nothing (LootTable.EMPTY)
         table = {} if table_id == EMPTY_TABLE else state.resources.loot_table(table_id) or {}
@@ -284,9 +285,7 @@ def _mob_drops(state, mob, killer, source: DamageSource) -> None:
         for stack in loot.roll_table(table, ctx):
             inventories.drop_item(state.entities, mob.pos, stack, state.version, state.resources.random,
                                   dimension=mob.dimension)
-    if any(not inventories.entity_slot(mob, slot, state.version).get().is_empty
-           for slot in (inventories.MAINHAND, inventories.OFFHAND, *inventories.ARMOR)):
-        state.error(f"the equipment a dying {mob.type} may drop", severity="warning", unmodelled=True)
+    _equipment_drops(state, mob, killer, killer is not None and killer.is_player)
     if killer is not None and killer.is_player:
         name = mob.type.split(":", 1)[-1]
         if name in ANIMALS:
@@ -295,6 +294,66 @@ def _mob_drops(state, mob, killer, source: DamageSource) -> None:
             award_orbs(state, mob.pos, 5, mob.dimension)
         else:
             state.error(f"the experience a {mob.type} killed by a player drops", severity="warning", unmodelled=True)
+
+
+# EquipmentSlot.values(): the order a dying mob's equipment drops in; the drop chance lists' indices
+_EQUIPMENT = ((inventories.MAINHAND, "mainhand", "HandDropChances", 0), (inventories.OFFHAND, "offhand", "HandDropChances", 1),
+              *((slot, name, "ArmorDropChances", i) for i, (slot, name) in enumerate(inventories.ARMOR.items())),
+              (inventories.BODY, "body", None, 0))
+DEFAULT_DROP_CHANCE = np.float32(0.085)  # Mob.DEFAULT_EQUIPMENT_DROP_CHANCE
+DROP_CHANCES_VERSION = (1, 21, 5)  # one ``drop_chances`` map of the slots whose chance is not the default
+# mobs that drop more than their equipment on death (Mob subclasses' dropCustomDeathLoot, dropEquipment,
+# dropAllDeathLoot: saddles, inventories, a carried block, a nether star, heads ...): not modelled
+_OWN_DEATH_DROPS = frozenset("minecraft:" + n for n in (
+    "fox pig strider allay horse donkey mule llama trader_llama skeleton_horse zombie_horse camel wither "
+    "creeper enderman skeleton wither_skeleton zombie husk drowned zombie_villager piglin").split())
+
+
+def _equipment_drops(state, mob, killer, recently_hit: bool) -> None:
+    """Mob.dropCustomDeathLoot: each slot whose drop chance is not 0 and holds an item not cursed
+    with vanishing drops when a player hurt the mob lately or the chance is over 1 (an item it
+    picked up: 2), and a draw under the chance (nextFloat, here from the emulator's seeded random);
+    one dropped by chance alone is worn to a random damage (max - nextInt(1 + nextInt(max(max - 3,
+    1)))). The killer's Looting (EnchantmentHelper.processEquipmentDropChance) is not modelled."""
+    version = tuple(state.version)
+    held = [(slot, inventories.entity_slot(mob, slot, version)) for slot, *_ in _EQUIPMENT]
+    if not any(access is not None and not access.get().is_empty for _, access in held):
+        return
+    if mob.type in _OWN_DEATH_DROPS:
+        state.error(f"the equipment a dying {mob.type} may drop", severity="warning", unmodelled=True)
+        return
+    if killer is not None and enchantment_level(
+            inventories.entity_slot(killer, inventories.MAINHAND, version).get(), "minecraft:looting") > 0:
+        state.error("the equipment drop chance Looting adds", severity="warning", unmodelled=True)
+        return
+    rng = state.resources.random
+    for (slot, name, legacy, index), (_, access) in zip(_EQUIPMENT, held):
+        chance = _drop_chance(mob.data, name, legacy, index, version)
+        if access is None or chance == 0:
+            continue
+        stack = access.get()
+        guaranteed = chance > 1
+        if (stack.is_empty or enchantment_level(stack, "minecraft:vanishing_curse") > 0
+                or not (recently_hit or guaranteed) or not rng.random() < chance):
+            continue
+        if not guaranteed:
+            tools.wear_at_random(stack, rng, version)
+        inventories.drop_item(state.entities, mob.pos, stack, version, rng, dimension=mob.dimension)
+        access.set(EMPTY.copy())
+
+
+def _drop_chance(data, name: str, legacy: str | None, index: int, version) -> float:
+    """The slot's saved drop chance: ``drop_chances`` from 1.21.5, ``HandDropChances`` /
+    ``ArmorDropChances`` / ``body_armor_drop_chance`` before; 0.085 when not saved."""
+    if version >= DROP_CHANCES_VERSION:
+        found = data.get("drop_chances")
+        found = found.get(name) if isinstance(found, Compound) else None
+    elif legacy is None:
+        found = data.get("body_armor_drop_chance")
+    else:
+        listed = data.get(legacy)
+        found = listed[index] if isinstance(listed, List) and index < len(listed) else None
+    return float(np.float32(numeric_value(found))) if is_numeric(found) else float(DEFAULT_DROP_CHANCE)
 
 
 def _award_kill(state, killer, victim, source: DamageSource) -> None:

@@ -134,6 +134,26 @@ def mine_block(state, player, access, block_id: str) -> None:
         hurt_and_break(state, player, access, found.damage_per_block)
 
 
+def wear_at_random(stack: ItemStack, rng, version) -> None:
+    """A dying mob's equipment dropped by chance (Mob.dropCustomDeathLoot): a damageable item
+    (ItemStack.isDamageableItem: max_damage, not unbreakable) gets damage max - nextInt(1 +
+    nextInt(max(max - 3, 1))), clamped to [0, max] (setDamageValue)."""
+    max_damage = stack.component("minecraft:max_damage")
+    if not is_numeric(max_damage) or stack.component("minecraft:unbreakable") is not None or (stack.tag or {}).get("Unbreakable"):
+        return
+    top = int(numeric_value(max_damage))
+    _set_damage(stack, min(max(top - rng.randrange(1 + rng.randrange(max(top - 3, 1))), 0), top), version)
+
+
+def _set_damage(stack: ItemStack, damage: int, version) -> None:
+    """The ``damage`` component, or the ``Damage`` tag before components."""
+    if tuple(version) >= COMPONENTS_VERSION:
+        set_component(stack, "minecraft:damage", Int(damage))
+    else:
+        stack.tag = stack.tag if stack.tag is not None else Compound()
+        stack.tag["Damage"] = Int(damage)
+
+
 def hurt_and_break(state, player, access, amount: int) -> None:
     """ItemStack.hurtAndBreak: nothing for an item that takes no damage or a player with infinite
     materials; the damage less what Unbreaking spares (processDurabilityChange), then
@@ -154,11 +174,7 @@ def hurt_and_break(state, player, access, amount: int) -> None:
     new_damage = old_damage + amount
     advancements.trigger(state, player, "item_durability_changed",
                          _durability_test(stack, int(numeric_value(max_damage)), old_damage, new_damage))
-    if components:
-        set_component(stack, "minecraft:damage", Int(new_damage))
-    else:
-        stack.tag = stack.tag if stack.tag is not None else Compound()
-        stack.tag["Damage"] = Int(new_damage)
+    _set_damage(stack, new_damage, state.version)
     if new_damage >= int(numeric_value(max_damage)):
         stack.count -= 1
         statistics.award(state, player, statistics.stat_name("broken", stack.id))
