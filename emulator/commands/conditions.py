@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from emulator.world import predicates
+from emulator.world import predicates, stopwatches
 from emulator.world.loot_context import LootContext
 from mcfunction_parser.pack import conditions as pack_conditions
 
@@ -55,6 +55,8 @@ def count(env, cond: ast.Condition, ctx) -> int:
         return blocks.if_biome(env, cond, ctx)
     if isinstance(cond, ast.IfLoaded):
         return blocks.if_loaded(env, cond, ctx)
+    if isinstance(cond, ast.IfStopwatch):  # ExecuteCommand.checkStopwatch: MinMaxBounds.Doubles.matches
+        return int(cond.range.contains(stopwatches.elapsed_seconds(env.state, cond.stopwatch)))
     raise Unmodelled(f"the condition '{type(cond).__name__}'")
 
 

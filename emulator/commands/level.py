@@ -1,5 +1,5 @@
 """The commands on the world's level data: ``list``, ``weather``, ``difficulty``, ``seed``,
-``defaultgamemode``, ``worldborder``, ``setworldspawn``, ``spawnpoint`` and ``spreadplayers`` (the
+``defaultgamemode``, ``worldborder``, ``setworldspawn``, ``spawnpoint``, ``spreadplayers`` and ``stopwatch`` (the
 parser keeps them as text, checked against the command tree; each is read again here).
 
 Sources (decompiled 1.21): server/commands/ListPlayersCommand.java (format: the players online),
@@ -18,7 +18,7 @@ import math
 
 import numpy as np
 
-from emulator.world import mth, spreading
+from emulator.world import mth, spreading, stopwatches
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import in_spawnable_bounds
 from emulator.world.errors import CommandFailure
@@ -247,7 +247,18 @@ def spreadplayers(env, cmd: ast.GenericCommand, ctx) -> int:
     return spreading.spread(state, targets, center, distance, max_range, max_height, respect_teams, ctx.dimension)
 
 
+def stopwatch(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``stopwatch create|query|restart|remove ID [SCALE]`` (:mod:`emulator.world.stopwatches`)."""
+    words = _Words(env, cmd)
+    action, stopwatch_id = words.word(), words.word()
+    if action == "query":
+        return stopwatches.query(env.state, stopwatch_id, float(words.word()) if words.more() else 1.0)
+    return {"create": stopwatches.create, "restart": stopwatches.restart, "remove": stopwatches.remove}[action](
+        env.state, stopwatch_id)
+
+
 GENERIC_HANDLERS = {
+    "stopwatch": stopwatch,
     "spreadplayers": spreadplayers,
     "list": list_players,
     "weather": weather,

@@ -24,6 +24,9 @@ MESSAGES = {
     "commands.data.entity.invalid": "Unable to modify player data",
     "argument.dimension.invalid": "Unknown dimension '{0}'",
     "commands.teleport.invalidPosition": "Invalid position for teleport",
+    # the en_us text of the stopwatch keys was not read from the game's language file
+    "commands.stopwatch.already_exists": "Stopwatch {0} already exists",
+    "commands.stopwatch.does_not_exist": "Stopwatch {0} does not exist",
     "commands.spreadplayers.failed.entities": "Could not spread {0} entity/entities around {1}, {2} (too many entities "
                                               "for space - try using spread of at most {3})",
     "commands.spreadplayers.failed.teams": "Could not spread {0} team(s) around {1}, {2} (too many entities for space "

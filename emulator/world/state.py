@@ -538,6 +538,7 @@ class WorldState:
     # None where the world's structures are not known (the emulator generates no terrain)
     structures_generated: bool | None = None
     weather: Weather = field(default_factory=Weather)  # the overworld's level data (emulator.world.weather)
+    stopwatches: dict = field(default_factory=dict)  # id -> its start on the emulator's clock (emulator.world.stopwatches)
     level_settings: LevelSettings = field(default_factory=LevelSettings)  # spawn, border, difficulty (level_settings)
     # the day time Level.updateSkyBrightness last read (as the overworld starts and each tick, before
     # the time advances): Level.skyDarken is worked out from it when a light level is read
