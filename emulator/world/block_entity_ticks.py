@@ -19,17 +19,12 @@ JukeboxBlockEntity.tick.
 """
 from __future__ import annotations
 
-from emulator.world import block_entities, inventories
-from emulator.world.id_families import WOODS
+from emulator.world import block_entities, furnaces, hoppers, inventories
+from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from mcfunction_parser.nbt import Byte, Int, Long, Short
 
-_FURNACES = ("minecraft:furnace", "minecraft:smoker", "minecraft:blast_furnace")
-# what a hopper pulls items from besides the container block above it (HopperBlockEntity.suckInItems)
-_CONTAINER_ENTITIES = frozenset("minecraft:" + n for n in (
-    "item chest_minecart hopper_minecart chest_boat bamboo_chest_raft").split()) | frozenset(
-    f"minecraft:{w}_chest_boat" for w in WOODS)
 MESSAGE = "{} working (what a block entity does each tick beyond its counters is not modelled here)"
 
 
@@ -38,8 +33,7 @@ def _int(nbt, key: str, default: int = 0) -> int:
     return int(numeric_value(value)) if is_numeric(value) else default
 
 
-def _report(state, what: str) -> None:
-    message = MESSAGE.format(what)
+def _report(state, message: str) -> None:
     if not any(d.message == message for d in state.diagnostics):
         state.error(message, severity="warning", unmodelled=True)
 
@@ -49,19 +43,36 @@ def _levels(state):
     yield from state.other_levels_blocks.items()
 
 
+# the hoppers that ticked so far this tick (HopperBlockEntity.tickedGameTime is this game time)
+_TICKED: set = set()
+
+
 def tick_block_entities(state) -> None:
     for dimension, blocks in _levels(state):
+        _TICKED.clear()
         for pos, nbt in list(blocks.entities.items()):
+            if blocks.entity(pos) is not nbt:  # removed or replaced by an earlier one's work
+                continue
             tick = _TICKS.get(block_entities.type_id(blocks.get(pos).id))
-            if tick is not None:
+            if tick is None:
+                continue
+            try:
                 tick(state, dimension, blocks, pos, nbt)
+            except Unmodelled as reason:
+                _report(state, reason.reason)
+            if blocks.get(pos).id == "minecraft:hopper":
+                _TICKED.add(pos)
+    _TICKED.clear()
 
 
 def tick_is_idle(state) -> bool:
     for dimension, blocks in _levels(state):
         for pos, nbt in blocks.entities.items():
             idle = _IDLE.get(block_entities.type_id(blocks.get(pos).id))
-            if idle is not None and not idle(state, dimension, blocks, pos, nbt):
+            try:
+                if idle is not None and not idle(state, dimension, blocks, pos, nbt):
+                    return False
+            except Unmodelled:
                 return False
     return True
 
@@ -72,68 +83,27 @@ def _gateway(state, dimension, blocks, pos, nbt) -> None:
     nbt["Age"] = Long(_int(nbt, "Age") + 1)
 
 
-def _hopper_still(state, dimension, blocks, pos, nbt) -> bool:
-    """Whether tryMoveItems would move nothing: the hopper locked (``enabled=false``), or empty with
-    no container holding items above it and no item or container entity in the two blocks above."""
-    if dict(blocks.get(pos).properties).get("enabled") == "false":
-        return True
-    if nbt.get("Items"):
-        return False
-    x, y, z = pos
-    above = inventories.container(blocks, (x, y + 1, z), state.version)
-    if above is not None and any(not above.slot(i).get().is_empty for i in range(above.size)):
-        return False
-    if blocks.get((x, y + 1, z)).id == "minecraft:composter":
-        return False
-    return not any(e.alive and e.dimension == dimension and e.type in _CONTAINER_ENTITIES
-                   and x - 1 <= e.pos[0] <= x + 2 and y <= e.pos[1] <= y + 2 and z - 1 <= e.pos[2] <= z + 2
-                   for e in state.entities.entities)
-
-
 def _hopper(state, dimension, blocks, pos, nbt) -> None:
     """HopperBlockEntity.pushItemsTick: the cooldown counts down; at 0 or below it is set to 0 and
-    the hopper tries to move items."""
+    the hopper moves items (:func:`emulator.world.hoppers.transfer`)."""
     cooldown = _int(nbt, "TransferCooldown") - 1
     if cooldown > 0:
         nbt["TransferCooldown"] = Int(cooldown)
         return
     nbt["TransferCooldown"] = Int(0)
-    if not _hopper_still(state, dimension, blocks, pos, nbt):
-        _report(state, "a hopper")
+    hoppers.transfer(state, dimension, blocks, pos, nbt, _TICKED)
 
 
 def _hopper_idle(state, dimension, blocks, pos, nbt) -> bool:
-    return _int(nbt, "TransferCooldown") == 0 and _hopper_still(state, dimension, blocks, pos, nbt)
-
-
-def _furnace_keys(version) -> tuple[str, str, str]:
-    if tuple(version) >= block_entities.FURNACE_KEYS_VERSION:
-        return "lit_time_remaining", "cooking_time_spent", "cooking_total_time"
-    return "BurnTime", "CookTime", "CookTimeTotal"
-
-
-def _slot(nbt, index: int, size: int, version) -> ItemStack:
-    return inventories.Container(nbt, size, version).slot(index).get()
-
-
-def _furnace_burns(state, nbt) -> bool:
-    lit, _, _ = _furnace_keys(state.version)
-    return _int(nbt, lit) > 0 or not (_slot(nbt, 0, 3, state.version).is_empty or _slot(nbt, 1, 3, state.version).is_empty)
+    return _int(nbt, "TransferCooldown") == 0 and hoppers.still(state, dimension, blocks, pos, nbt)
 
 
 def _furnace(state, dimension, blocks, pos, nbt) -> None:
-    """AbstractFurnaceBlockEntity.serverTick: while nothing burns and nothing could, the cooking
-    progress falls back by 2 (clamped to the total)."""
-    if _furnace_burns(state, nbt):
-        _report(state, "a furnace")
-        return
-    _, spent, total = _furnace_keys(state.version)
-    if _int(nbt, spent) > 0:
-        nbt[spent] = Short(min(max(_int(nbt, spent) - 2, 0), _int(nbt, total)))
+    furnaces.tick(state, blocks, pos, nbt)
 
 
 def _furnace_idle(state, dimension, blocks, pos, nbt) -> bool:
-    return not _furnace_burns(state, nbt) and _int(nbt, _furnace_keys(state.version)[1]) <= 0
+    return furnaces.idle(state, nbt)
 
 
 def _campfire(state, dimension, blocks, pos, nbt) -> None:
@@ -143,7 +113,7 @@ def _campfire(state, dimension, blocks, pos, nbt) -> None:
     times, totals = list(nbt.get("CookingTimes") or []), list(nbt.get("CookingTotalTimes") or [])
     if lit:
         if nbt.get("Items"):
-            _report(state, "a lit campfire cooking")
+            _report(state, MESSAGE.format("a lit campfire cooking"))
         return
     if any(int(t) > 0 for t in times):
         totals += [0] * (len(times) - len(totals))
@@ -166,7 +136,7 @@ def _brewing(state, dimension, blocks, pos, nbt) -> None:
         powder.count -= 1
         slots.slot(4).set(powder if powder.count > 0 else ItemStack("minecraft:air", 0))
     if _int(nbt, "BrewTime") > 0 or (_int(nbt, "Fuel") > 0 and not slots.slot(3).get().is_empty):
-        _report(state, "a brewing stand")
+        _report(state, MESSAGE.format("a brewing stand"))
     block = blocks.get(pos)
     bottles = {f"has_bottle_{i}": "true" if not slots.slot(i).get().is_empty else "false" for i in range(3)}
     if any(dict(block.properties).get(k) not in (None, v) for k, v in bottles.items()):
@@ -203,7 +173,7 @@ def _spawner(state, dimension, blocks, pos, nbt) -> None:
     if delay > 0:
         nbt["Delay"] = Short(delay - 1)
     else:
-        _report(state, "a spawner spawning")
+        _report(state, MESSAGE.format("a spawner spawning"))
 
 
 def _spawner_idle(state, dimension, blocks, pos, nbt) -> bool:
@@ -214,7 +184,7 @@ def _beacon(state, dimension, blocks, pos, nbt) -> None:
     """BeaconBlockEntity.tick: every 80 game ticks its levels are counted from the pyramid under
     it; with no level and nothing under it that stays 0, anything else is not modelled."""
     if state.gametime % 80 == 0 and not _beacon_idle(state, dimension, blocks, pos, nbt):
-        _report(state, "a beacon")
+        _report(state, MESSAGE.format("a beacon"))
 
 
 def _beacon_idle(state, dimension, blocks, pos, nbt) -> bool:
@@ -227,7 +197,7 @@ def _busy_when(key: str, what: str):
     """A block entity that works only while ``key`` holds something (a hive's bees, a jukebox's record)."""
     def tick(state, dimension, blocks, pos, nbt) -> None:
         if nbt.get(key):
-            _report(state, what)
+            _report(state, MESSAGE.format(what))
 
     def idle(state, dimension, blocks, pos, nbt) -> bool:
         return not nbt.get(key)
@@ -241,11 +211,11 @@ _TICKS = {
     "minecraft:end_gateway": _gateway, "minecraft:hopper": _hopper, "minecraft:campfire": _campfire,
     "minecraft:brewing_stand": _brewing, "minecraft:mob_spawner": _spawner, "minecraft:beacon": _beacon,
     "minecraft:beehive": lambda *a: (_HIVE[0](*a), _OLD_HIVE[0](*a)), "minecraft:jukebox": _JUKEBOX[0],
-    **{f: _furnace for f in _FURNACES},
+    **{f: _furnace for f in furnaces.FURNACES},
 }
 _IDLE = {
     "minecraft:end_gateway": lambda *a: False, "minecraft:hopper": _hopper_idle, "minecraft:campfire": _campfire_idle,
     "minecraft:brewing_stand": _brewing_idle, "minecraft:mob_spawner": _spawner_idle, "minecraft:beacon": _beacon_idle,
     "minecraft:beehive": lambda *a: _HIVE[1](*a) and _OLD_HIVE[1](*a), "minecraft:jukebox": _JUKEBOX[1],
-    **{f: _furnace_idle for f in _FURNACES},
+    **{f: _furnace_idle for f in furnaces.FURNACES},
 }

@@ -190,6 +190,7 @@ class BlockMap:
         self.states: dict[tuple[int, int, int], BlockState] = {}
         self.entities: dict[tuple[int, int, int], Compound] = {}
         self.version_of = version_of  # the release the world runs as (what a new block entity saves)
+        self.resources_of: Callable[[], object] = lambda: None  # the world's recipes and tags (a furnace's input)
 
     def get(self, pos) -> BlockState:
         return self.states.get(tuple(pos), BlockState(AIR))

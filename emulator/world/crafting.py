@@ -65,7 +65,7 @@ def trimmed(grid: list[ItemStack], width: int = 3) -> tuple[int, int, list[ItemS
             [grid[x + y * width] for y in range(top, bottom + 1) for x in range(left, right + 1)])
 
 
-def _ingredient_test(ingredient, stack: ItemStack, resources) -> bool:
+def ingredient_test(ingredient, stack: ItemStack, resources) -> bool:
     """Ingredient.test: ``None`` is the empty ingredient; a value is an id, ``#tag``, ``{"item"}``,
     ``{"tag"}`` or a list of them (the release's form was checked when the recipe loaded)."""
     if ingredient is None:
@@ -103,7 +103,7 @@ def _shaped_matches(recipe: dict, width: int, height: int, stacks: list[ItemStac
         return False
 
     def fits(mirrored: bool) -> bool:
-        return all(_ingredient_test(cells[(width - x - 1 if mirrored else x) + y * width], stacks[x + y * width],
+        return all(ingredient_test(cells[(width - x - 1 if mirrored else x) + y * width], stacks[x + y * width],
                                     resources) for y in range(height) for x in range(width))
     return fits(True) or fits(False)
 
@@ -114,7 +114,7 @@ def _shapeless_matches(recipe: dict, stacks: list[ItemStack], resources) -> bool
     ingredients = recipe["ingredients"]
     if len(present) != len(ingredients):
         return False
-    fits = [[i for i, ing in enumerate(ingredients) if _ingredient_test(ing, s, resources)] for s in present]
+    fits = [[i for i, ing in enumerate(ingredients) if ingredient_test(ing, s, resources)] for s in present]
     taken: dict[int, int] = {}
 
     def place(stack: int, seen: set[int]) -> bool:
@@ -202,12 +202,12 @@ def _transmuted_since_1_21_5(recipe: dict, stacks: list[ItemStack], resources) -
         return None
     source, material = None, False
     for stack in present:
-        if source is None and _ingredient_test(recipe.get("input"), stack, resources):
+        if source is None and ingredient_test(recipe.get("input"), stack, resources):
             made = _transmute_applied(recipe, stack)
             if made.count == 1 and made.same_item_same_components(stack):
                 return None
             source = stack
-        elif material or not _ingredient_test(recipe.get("material"), stack, resources):
+        elif material or not ingredient_test(recipe.get("material"), stack, resources):
             return None
         else:
             material = True
@@ -224,9 +224,9 @@ def _transmuted(recipe: dict, stacks: list[ItemStack], resources) -> ItemStack |
         return None
     source, material = None, False
     for stack in present:
-        if source is None and _ingredient_test(recipe.get("input"), stack, resources) and stack.id != result:
+        if source is None and ingredient_test(recipe.get("input"), stack, resources) and stack.id != result:
             source = stack
-        elif material or not _ingredient_test(recipe.get("material"), stack, resources):
+        elif material or not ingredient_test(recipe.get("material"), stack, resources):
             return None
         else:
             material = True
@@ -261,7 +261,7 @@ def _may_match(kind: str, recipe: dict | None, stacks: list[ItemStack], resource
     ids = [s.id for s in stacks if not s.is_empty]
     if kind == TRANSMUTE:
         return recipe is None or len(ids) >= 2 and all(
-            _ingredient_test(recipe.get("input"), s, resources) or _ingredient_test(recipe.get("material"), s, resources)
+            ingredient_test(recipe.get("input"), s, resources) or ingredient_test(recipe.get("material"), s, resources)
             for s in stacks if not s.is_empty)
     need = _SPECIAL_NEEDS.get(kind)
     return need is None or need(ids)

@@ -321,6 +321,30 @@ class CrafterContainer(Container):
         return SlotAccess(access.get, put)
 
 
+class FurnaceContainer(Container):
+    """A furnace's, smoker's or blast furnace's three slots: setting the input to another item
+    restarts its cooking (AbstractFurnaceBlockEntity.setItem: :func:`emulator.world.furnaces.input_set`)."""
+
+    def __init__(self, nbt: Compound, version, block_id: str, resources) -> None:
+        super().__init__(nbt, 3, version)
+        self.block_id, self.resources = block_id, resources
+
+    def slot(self, index: int) -> SlotAccess | None:
+        access = super().slot(index)
+        if access is None or index != 0 or self.resources is None:
+            return access
+
+        def put(stack: ItemStack) -> None:
+            from emulator.world import furnaces  # furnaces reads recipes, which read these containers
+            before = access.get()
+            access.set(stack)
+            furnaces.input_set(self.resources, self.block_id, self.nbt, before, stack, self.version)
+        return SlotAccess(access.get, put)
+
+
+FURNACES = frozenset({"minecraft:furnace", "minecraft:smoker", "minecraft:blast_furnace"})
+
+
 def container(blocks, pos, version) -> Container | None:
     """The container at ``pos`` (ItemCommands.getContainer), None when the block is none."""
     block_id = blocks.get(pos).id
@@ -333,6 +357,8 @@ def container(blocks, pos, version) -> Container | None:
         return CrafterContainer(nbt, 9, version)
     if block_id in SHULKER_BOXES:
         return ShulkerBoxContainer(nbt, 27, version)
+    if block_id in FURNACES:
+        return FurnaceContainer(nbt, version, block_id, blocks.resources_of())
     size = CONTAINER_SIZES.get(block_id)
     return None if size is None else Container(nbt, size, version)
 

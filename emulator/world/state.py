@@ -564,6 +564,7 @@ class WorldState:
         self.entities.join_team = self._join_team
         self.teams.on_change = self._team_changed
         self.blocks.version_of = self._release
+        self.blocks.resources_of = self._resources
 
     def _join_team(self, holder: str, team: str) -> None:
         """A mob loaded with ``Team``: it joins that team when there is one (else the game logs a warning)."""
@@ -579,11 +580,18 @@ class WorldState:
     def _release(self) -> tuple:
         return self.version
 
+    def _resources(self):
+        return self.resources
+
     def blocks_in(self, dimension: str) -> BlockMap:
         """The blocks of level ``dimension`` (each level has its own)."""
         if dimension == "minecraft:overworld":
             return self.blocks
-        return self.other_levels_blocks.setdefault(dimension, BlockMap(self._release))
+        blocks = self.other_levels_blocks.get(dimension)
+        if blocks is None:
+            blocks = self.other_levels_blocks[dimension] = BlockMap(self._release)
+            blocks.resources_of = self._resources
+        return blocks
 
     def level(self, dimension: str) -> "LevelView":
         """The world as seen from level ``dimension`` (what the game's ServerLevel gives a block's
