@@ -2,13 +2,14 @@
 as far as the emulator models it; what it does not is reported as not modelled, once per kind.
 
 - ``tick_block_entities(state)``: every level's ticking block entities, in each level's order:
-  an end gateway's ``Age`` grows; a hopper's ``TransferCooldown`` counts down to 0 (an idle one:
-  locked, or empty with nothing to pull in above it); a furnace's and an unlit campfire's cooking
-  progress falls back by 2 while nothing burns; a brewing stand takes a blaze powder when out of
-  fuel and shows its bottles in its ``has_bottle_N`` states; a spawner counts its ``Delay`` down
-  while a living player who is no spectator is within ``RequiredPlayerRange``. Moving items,
-  burning, cooking, brewing, spawning, bees leaving a hive, a beacon over blocks and a jukebox
-  playing are not modelled. ``tick_is_idle(state)``: nothing would change.
+  an end gateway's ``Age`` grows; a hopper's ``TransferCooldown`` counts down and at 0 it moves
+  items (:mod:`emulator.world.hoppers`); furnaces, smokers and blast furnaces burn and cook
+  (:mod:`emulator.world.furnaces`); a jukebox plays its song (:mod:`emulator.world.jukeboxes`);
+  an unlit campfire's cooking progress falls back by 2; a brewing stand takes a blaze powder
+  when out of fuel and shows its bottles in its ``has_bottle_N`` states; a spawner counts its
+  ``Delay`` down while a living player who is no spectator is within ``RequiredPlayerRange``.
+  Brewing, a lit campfire cooking, spawning, bees leaving a hive and a beacon over blocks are not
+  modelled, nor is what those modules name. ``tick_is_idle(state)``: nothing would change.
 
 Sources (decompiled 1.21): world/level/block/entity/TheEndGatewayBlockEntity.portalTick,
 HopperBlockEntity.pushItemsTick / tryMoveItems / suckInItems, AbstractFurnaceBlockEntity.serverTick,
@@ -19,7 +20,7 @@ JukeboxBlockEntity.tick.
 """
 from __future__ import annotations
 
-from emulator.world import block_entities, furnaces, hoppers, inventories
+from emulator.world import block_entities, furnaces, hoppers, inventories, jukeboxes
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -193,8 +194,16 @@ def _beacon_idle(state, dimension, blocks, pos, nbt) -> bool:
                                             for dx in (-1, 0, 1) for dz in (-1, 0, 1))
 
 
+def _jukebox(state, dimension, blocks, pos, nbt) -> None:
+    jukeboxes.tick(state, blocks, pos, nbt)
+
+
+def _jukebox_idle(state, dimension, blocks, pos, nbt) -> bool:
+    return jukeboxes.idle(state, nbt)
+
+
 def _busy_when(key: str, what: str):
-    """A block entity that works only while ``key`` holds something (a hive's bees, a jukebox's record)."""
+    """A block entity that works only while ``key`` holds something (a hive's bees)."""
     def tick(state, dimension, blocks, pos, nbt) -> None:
         if nbt.get(key):
             _report(state, MESSAGE.format(what))
@@ -206,16 +215,15 @@ def _busy_when(key: str, what: str):
 
 _HIVE = _busy_when("bees", "a beehive with bees")
 _OLD_HIVE = _busy_when("Bees", "a beehive with bees")
-_JUKEBOX = _busy_when("RecordItem", "a jukebox playing")
 _TICKS = {
     "minecraft:end_gateway": _gateway, "minecraft:hopper": _hopper, "minecraft:campfire": _campfire,
     "minecraft:brewing_stand": _brewing, "minecraft:mob_spawner": _spawner, "minecraft:beacon": _beacon,
-    "minecraft:beehive": lambda *a: (_HIVE[0](*a), _OLD_HIVE[0](*a)), "minecraft:jukebox": _JUKEBOX[0],
+    "minecraft:beehive": lambda *a: (_HIVE[0](*a), _OLD_HIVE[0](*a)), "minecraft:jukebox": _jukebox,
     **{f: _furnace for f in furnaces.FURNACES},
 }
 _IDLE = {
     "minecraft:end_gateway": lambda *a: False, "minecraft:hopper": _hopper_idle, "minecraft:campfire": _campfire_idle,
     "minecraft:brewing_stand": _brewing_idle, "minecraft:mob_spawner": _spawner_idle, "minecraft:beacon": _beacon_idle,
-    "minecraft:beehive": lambda *a: _HIVE[1](*a) and _OLD_HIVE[1](*a), "minecraft:jukebox": _JUKEBOX[1],
+    "minecraft:beehive": lambda *a: _HIVE[1](*a) and _OLD_HIVE[1](*a), "minecraft:jukebox": _jukebox_idle,
     **{f: _furnace_idle for f in furnaces.FURNACES},
 }

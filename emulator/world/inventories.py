@@ -342,6 +342,22 @@ class FurnaceContainer(Container):
         return SlotAccess(access.get, put)
 
 
+class JukeboxContainer(Container):
+    """A jukebox's record: setting it starts or stops its song (JukeboxBlockEntity.setTheItem:
+    :func:`emulator.world.jukeboxes.item_set`)."""
+
+    def slot(self, index: int) -> SlotAccess | None:
+        access = super().slot(index)
+        if access is None:
+            return None
+
+        def put(stack: ItemStack) -> None:
+            from emulator.world import jukeboxes  # jukeboxes reads items, as this module does
+            access.set(stack)
+            jukeboxes.item_set(self.nbt, stack, self.version)
+        return SlotAccess(access.get, put)
+
+
 FURNACES = frozenset({"minecraft:furnace", "minecraft:smoker", "minecraft:blast_furnace"})
 
 
@@ -351,6 +367,8 @@ def container(blocks, pos, version) -> Container | None:
     nbt = blocks.entity(pos)
     if nbt is None:
         return None
+    if block_id == "minecraft:jukebox":
+        return JukeboxContainer(nbt, 1, version, SINGLE_ITEM_BLOCKS[block_id])
     if block_id in SINGLE_ITEM_BLOCKS:
         return Container(nbt, 1, version, SINGLE_ITEM_BLOCKS[block_id])
     if block_id == CRAFTER:
