@@ -13,15 +13,15 @@ into the world, the slots each one item lighter, the ``triggered`` and ``craftin
   none, or an empty result: nothing. Else ``crafting`` for 6 ticks (CrafterBlockEntity.serverTick
   counts ``crafting_ticks_remaining`` down: :func:`tick_crafting`, after the entities' steps), the
   result then each remainder dispensed (dispenseItem), then every stack of the slots shrinks by one.
-- dispenseItem: into the container in front (HopperBlockEntity.addItem, slot by slot: a free slot
-  takes the stack, a matching one fills up to the item's maximum; one at a time when the stack is
-  bigger than the container takes, 99), what does not fit thrown from 0.7 past the crafter's
+- dispenseItem: into the container in front (:func:`emulator.world.hoppers.add_item`, through the
+  face the crafter meets: a free slot takes the stack, a matching one fills up to the item's
+  maximum; one at a time when the stack is bigger than the container takes, 99), what does not fit thrown from 0.7 past the crafter's
   centre, 0.15625 lower (0.125 facing up or down), with DefaultDispenseItemBehavior.spawnItem's
   motion (speed 6) and no pickup delay; then every player whose box meets the 17-block cube around
-  the crafter fires ``crafter_recipe_crafted`` with the recipe and the nine slots' stacks. A chest,
-  trapped chest (single), barrel, hopper, dispenser, dropper and shulker box (no shulker boxes in
-  it) are containers in front; another container block (a double chest, furnaces, a crafter ...)
-  or a container entity there is not modelled (Unmodelled).
+  the crafter fires ``crafter_recipe_crafted`` with the recipe and the nine slots' stacks. The
+  containers in front are those a hopper sees (:func:`emulator.world.hoppers.container_at`: chests
+  single or double, barrels, hoppers, dispensers, droppers, shulker boxes, furnaces by face);
+  another one (a crafter, a brewing stand ...) or a container entity there is not modelled (Unmodelled).
 
 Sources (decompiled 1.21): world/level/block/CrafterBlock.java (neighborChanged, tick,
 dispenseFrom, dispenseItem), block/entity/CrafterBlockEntity.java (serverTick, saveAdditional:
@@ -31,7 +31,7 @@ world/Container.getMaxStackSize (99), advancements/critereon/RecipeCraftedTrigge
 """
 from __future__ import annotations
 
-from emulator.world import advancements, command_blocks, crafting, inventories, predicates
+from emulator.world import advancements, command_blocks, crafting, hoppers, inventories, predicates
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
@@ -41,9 +41,6 @@ from mcfunction_parser.nbt import Double, Int, List, Short
 CRAFTER = "minecraft:crafter"
 CRAFT_DELAY, CRAFTING_TICKS = 4, 6
 CONTAINER_MAX = 99  # Container.getMaxStackSize
-_STEPS = {"down": (0, -1, 0), "up": (0, 1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
-          "east": (1, 0, 0)}
-_PLAIN_CONTAINERS = frozenset(f"minecraft:{n}" for n in "chest trapped_chest barrel hopper dispenser dropper".split())
 
 
 def _properties(block) -> dict[str, str]:
@@ -114,19 +111,20 @@ def _front(block) -> str:
 def _dispense(level, pos, stack: ItemStack, recipe_id: str, grid: list[ItemStack]) -> None:
     """CrafterBlock.dispenseItem."""
     direction = _front(level.blocks.get(pos))
-    step = _STEPS[direction]
+    step = hoppers.OFFSETS[direction]
     target = (pos[0] + step[0], pos[1] + step[1], pos[2] + step[2])
     rest = stack.copy()
-    found = _container_in_front(level, target)
-    if found is not None:
-        container, refuses_boxes = found
+    container = hoppers.container_at(_world(level), _dimension(level), level.blocks, target,
+                                     "a crafter putting its result into")
+    if container is not None:
         one_at_a_time = stack.count > min(CONTAINER_MAX, stack.max_stack_size)
+        face = hoppers.OPPOSITE[direction]
         while not rest.is_empty:
             before = rest.count
             moving = rest.copy()
             if one_at_a_time:
                 moving.count = 1
-            left = _add(container, refuses_boxes, moving)
+            left = hoppers.add_item(None, container, moving, face, set())
             if one_at_a_time:
                 if not left.is_empty:
                     break
@@ -143,45 +141,6 @@ def _dispense(level, pos, stack: ItemStack, recipe_id: str, grid: list[ItemStack
         if player.alive and player.dimension == _dimension(level) and _meets_cube(player, centre):
             advancements.trigger(_world(level), player, "crafter_recipe_crafted", lambda c, ctx: (
                 _recipe_crafted_matches(c, ctx, recipe_id, grid)))
-
-
-def _container_in_front(level, target):
-    """HopperBlockEntity.getContainerAt, for the containers modelled (see the module's notes):
-    (the container, whether it refuses shulker boxes), or None."""
-    block = level.blocks.get(target)
-    found = inventories.container(level.blocks, target, level.version)
-    if found is not None:
-        single = _properties(block).get("type", "single") == "single"
-        if (block.id in _PLAIN_CONTAINERS and single) or block.id.endswith("shulker_box"):
-            return found, block.id.endswith("shulker_box")
-        raise Unmodelled(f"a crafter putting its result into {block.id}{'' if single else ' (a double chest)'}")
-    for entity in level.entities.entities:
-        if entity.alive and entity.type in inventories.ENTITY_CONTAINERS and entity.dimension == _dimension(level) \
-                and all(t <= v < t + 1 for t, v in zip(target, entity.pos)):
-            raise Unmodelled(f"a crafter putting its result into a {entity.type}")
-    return None
-
-
-def _add(container, refuses_shulker_boxes: bool, stack: ItemStack) -> ItemStack:
-    """HopperBlockEntity.addItem: each slot in turn (tryMoveInItem); what is left."""
-    if refuses_shulker_boxes and stack.id.endswith("shulker_box"):
-        return stack  # ShulkerBoxBlockEntity.canPlaceItemThroughFace
-    for i in range(container.size):
-        slot = container.slot(i)
-        current = slot.get()
-        if current.is_empty:
-            slot.set(stack)
-            return EMPTY.copy()
-        if current.count <= current.max_stack_size and current.same_item_same_components(stack):
-            moved = min(stack.count, stack.max_stack_size - current.count)
-            if moved > 0:
-                current.count += moved
-                slot.set(current)
-                stack = stack.copy()
-                stack.count -= moved
-        if stack.is_empty:
-            break
-    return stack
 
 
 def _spawn(level, pos, stack: ItemStack, direction: str, step) -> None:

@@ -10,8 +10,9 @@
 - ``idle(state, nbt) -> bool``: nothing would change (unlit, no progress, fuel or input missing).
 - ``input_set(resources, block_id, nbt, before, after, version)``: AbstractFurnaceBlockEntity.
   setItem of the input slot (item commands, hoppers): another item restarts the progress and
-  reads the total cooking time of the new input's recipe (200 without one). Data commands do not
-  (the game loads the NBT as written).
+  reads the total cooking time of the new input's recipe (200 without one; kept as it was when
+  the recipe is not known, as the tick then reports). Data commands do not (the game loads the
+  NBT as written).
 - ``is_fuel(stack, resources)`` / ``burn_time(block_id, stack, resources)``: the fuel map
   (AbstractFurnaceBlockEntity.getFuel: items and item tags; smokers and blast furnaces burn it
   twice as fast).
@@ -151,9 +152,12 @@ def input_set(resources, block_id: str, nbt: Compound, before: ItemStack, after:
     if not after.is_empty and before.same_item_same_components(after):
         return
     _, progress, total, _ = keys(version)
-    found = recipe_for(block_id, after, resources, version) if not after.is_empty else None
-    nbt[total] = Short(cook_time(block_id, found[1] if found else None))
     nbt[progress] = Short(0)
+    try:
+        found = recipe_for(block_id, after, resources, version)
+    except Unmodelled:
+        return  # the total only matters once it cooks, where the tick reports the recipe unknown
+    nbt[total] = Short(cook_time(block_id, found[1] if found else None))
 
 
 # ---------------------------------------------------------------------- the tick

@@ -8,6 +8,9 @@
   tick (the game's ``tickedGameTime``, which is not saved).
 - ``still(state, dimension, blocks, pos, nbt) -> bool``: whether a transfer could move nothing
   (cheap: the idle test of a tick).
+- ``container_at(state, dimension, blocks, pos, what) -> Target | None`` (getContainerAt) and
+  ``add_item(source, target, stack, face, ticked) -> ItemStack`` (addItem: what is left), which a
+  crafter uses too.
 
 Containers modelled: chests and trapped chests (a double chest is one 54-slot container, its
 ``type=right`` half first: ChestBlock.getBlockType, DoubleBlockCombiner), barrels, dispensers,
@@ -147,15 +150,15 @@ def _container_entity_in(state, dimension, pos, what: str) -> None:
     for entity in state.entities.entities:
         if entity.alive and entity.dimension == dimension and entity.type in inventories.ENTITY_CONTAINERS \
                 and _box_holds(entity, box):
-            raise Unmodelled(f"a hopper {what} a {entity.type}")
+            raise Unmodelled(f"{what} a {entity.type}")
 
 
 def container_at(state, dimension, blocks, pos, what: str) -> Target | None:
     """HopperBlockEntity.getContainerAt: the block's container, else a container entity in the
-    block (not modelled); None when there is neither."""
+    block (not modelled: ``what`` names who uses it); None when there is neither."""
     block = blocks.get(pos)
     if block.id in _UNMODELLED:
-        raise Unmodelled(f"a hopper {what} {block.id}")
+        raise Unmodelled(f"{what} {block.id}")
     slots = None
     if block.id in _CHESTS:
         slots = _chest_slots(blocks, pos, block, state.version)
@@ -168,8 +171,9 @@ def container_at(state, dimension, blocks, pos, what: str) -> Target | None:
 
 
 # ---------------------------------------------------------------------- moving one item
-def _add(source: Target | None, target: Target, stack: ItemStack, face: str | None, ticked: set) -> ItemStack:
-    """HopperBlockEntity.addItem: into each slot the face reaches, in turn; what is left."""
+def add_item(source: Target | None, target: Target, stack: ItemStack, face: str | None, ticked: set) -> ItemStack:
+    """HopperBlockEntity.addItem: into each slot the face reaches, in turn; what is left. ``source``
+    is the hopper it comes from (None for anything else), ``ticked`` the hoppers that ticked this tick."""
     for index in target.slots_for(face):
         if stack.is_empty:
             break
@@ -211,7 +215,7 @@ def _one_out(source: Target, index: int, target: Target, face: str | None, ticke
     stack = source.get(index)
     one = stack.copy()
     one.count = 1
-    if not _add(source, target, one, face, ticked).is_empty:
+    if not add_item(source, target, one, face, ticked).is_empty:
         return False
     stack.count -= 1
     source.put(index, stack if stack.count > 0 else EMPTY.copy())
@@ -237,7 +241,7 @@ def _inventory_full(hopper: Target) -> bool:
 def _eject(state, dimension, blocks, pos, hopper: Target, ticked: set) -> bool:
     facing = _properties(blocks.get(pos)).get("facing", "down")
     there = tuple(p + d for p, d in zip(pos, OFFSETS[facing]))
-    target = container_at(state, dimension, blocks, there, "pushing items into")
+    target = container_at(state, dimension, blocks, there, "a hopper pushing items into")
     if target is None:
         return False
     face = OPPOSITE[facing]
@@ -265,7 +269,7 @@ def _take_entity(state, hopper: Target, entity, ticked: set) -> bool:
     """HopperBlockEntity.addItem(Container, ItemEntity): all of it in (the entity goes) or what is left."""
     slot = inventories.entity_slot(entity, 0, state.version)
     stack = slot.get()
-    left = _add(None, hopper, stack, None, ticked)
+    left = add_item(None, hopper, stack, None, ticked)
     if left.is_empty:
         slot.set(EMPTY.copy())
         state.entities.kill(entity)
@@ -277,13 +281,14 @@ def _take_entity(state, hopper: Target, entity, ticked: set) -> bool:
 
 def _suck(state, dimension, blocks, pos, hopper: Target, ticked: set) -> bool:
     above = (pos[0], pos[1] + 1, pos[2])
-    source = container_at(state, dimension, blocks, above, "pulling items from")
+    source = container_at(state, dimension, blocks, above, "a hopper pulling items from")
     if source is not None:
         return any(not source.get(i).is_empty and source.can_take(i, source.get(i), "down")
                    and _one_out(source, i, hopper, None, ticked) for i in source.slots_for("down"))
-    if _blocks_hoppers(state, blocks.get(above)):
+    over = _items_over(state, dimension, pos)  # first: the shape above is asked only when it matters
+    if not over or _blocks_hoppers(state, blocks.get(above)):
         return False
-    return any(_take_entity(state, hopper, entity, ticked) for entity in _items_over(state, dimension, pos))
+    return any(_take_entity(state, hopper, entity, ticked) for entity in over)
 
 
 def transfer(state, dimension, blocks, pos, nbt, ticked: set) -> bool:

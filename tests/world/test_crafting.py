@@ -99,21 +99,36 @@ def test_without_the_games_recipes_a_grid_no_pack_recipe_makes_is_not_modelled()
     assert crafting.craft(res, _grid({}), V121) is None  # an empty grid crafts nothing
 
 
-@pytest.mark.parametrize("backend", ["python", "numba"])
-def test_a_crafter_facing_a_furnace_is_not_modelled(tmp_path, backend):
-    # a furnace takes items by face and slot rules (WorldlyContainer) the emulator does not model;
-    # the craft stops there, said so
-    pack = make_pack(tmp_path / "p", {"t:main": "setblock 0 0 0 crafter[orientation=east_up]\nsetblock 1 0 0 furnace\n"
-                                      "item replace block 0 0 0 container.0 with dirt\nsetblock 0 1 0 redstone_block"})
+def _crafter_pack(tmp_path, setup: str):
+    pack = make_pack(tmp_path / "p", {"t:main": setup + "\nitem replace block 0 0 0 container.0 with dirt\n"
+                                      "setblock 0 1 0 redstone_block"})
     (pack / "data/t/recipe").mkdir(parents=True)
     (pack / "data/t/recipe/d.json").write_text(json.dumps({"type": "crafting_shapeless", "ingredients": [
         {"item": "dirt"}], "result": {"id": "minecraft:coarse_dirt"}}))
+    return pack
+
+
+@pytest.mark.parametrize("backend", ["python", "numba"])
+def test_a_crafter_fills_a_furnace_through_the_face_it_meets(tmp_path, backend):
+    # CrafterBlock.dispenseItem: HopperBlockEntity.addItem(..., direction.getOpposite()): a crafter facing
+    # down meets the furnace's top, whose slot is the input (AbstractFurnaceBlockEntity.getSlotsForFace)
     emu = Emulator(backend=backend)
-    emu.load(pack)
+    emu.load(_crafter_pack(tmp_path, "setblock 0 0 0 crafter[orientation=down_north]\nsetblock 0 -1 0 furnace"))
+    emu.call("t:main")
+    emu.tick(5)
+    items = emu.state.blocks.entity((0, -1, 0))["Items"]
+    assert [(int(i["Slot"]), str(i["id"])) for i in items] == [(0, "minecraft:coarse_dirt")]
+    assert not any(d.unmodelled for d in emu.diagnostics)
+
+
+def test_a_crafter_facing_a_brewing_stand_is_not_modelled(tmp_path):
+    # a brewing stand's slot rules are not modelled: the craft stops there, said so
+    emu = Emulator(backend="python")
+    emu.load(_crafter_pack(tmp_path, "setblock 0 0 0 crafter[orientation=east_up]\nsetblock 1 0 0 brewing_stand"))
     emu.call("t:main")
     assert not any(d.unmodelled for d in emu.diagnostics)
     emu.tick(5)
-    assert any(d.unmodelled and "into minecraft:furnace" in d.message for d in emu.diagnostics)
+    assert any(d.unmodelled and "into minecraft:brewing_stand" in d.message for d in emu.diagnostics)
 
 
 def test_the_recipes_are_tried_in_the_games_order():
