@@ -12,9 +12,7 @@
   trial spawners, vaults, a spawner before 1.18, a jukebox of 1.19.3 - 1.20.6 whose ``TickCount``
   counts every tick ...) is not modelled when a command reads it.
 
-What ticking block entities do is not modelled: a hopper moving items and counting its
-``TransferCooldown`` down, furnaces and brewing stands working, a spawner counting its ``Delay``
-down near a player, a beacon computing its ``Levels``.
+What ticking block entities do each tick is :mod:`emulator.world.block_entity_ticks`'.
 
 Sources (decompiled 1.21, and the mapped releases 1.14.4 - 1.21.3 for the renames):
 world/level/block/entity/BlockEntityType.java (the types and their blocks), BlockEntity.java
