@@ -104,7 +104,7 @@ def _furnace(state, dimension, blocks, pos, nbt) -> None:
 
 
 def _furnace_idle(state, dimension, blocks, pos, nbt) -> bool:
-    return furnaces.idle(state, nbt)
+    return furnaces.idle(state, blocks.get(pos).id, nbt)
 
 
 def _campfire(state, dimension, blocks, pos, nbt) -> None:

@@ -7,7 +7,8 @@
   the recipe's result, the recipe is counted in ``RecipesUsed`` (the experience a player gets when
   taking the output is worked out from it then) and the total is read again. Unlit, the progress
   falls back by 2. The block's ``lit`` state follows.
-- ``idle(state, nbt) -> bool``: nothing would change (unlit, no progress, fuel or input missing).
+- ``idle(state, block_id, nbt) -> bool``: nothing would change (unlit, no progress, and no fuel
+  taken: fuel or input missing, or no room for what the input cooks into).
 - ``input_set(resources, block_id, nbt, before, after, version)``: AbstractFurnaceBlockEntity.
   setItem of the input slot (item commands, hoppers): another item restarts the progress and
   reads the total cooking time of the new input's recipe (200 without one; kept as it was when
@@ -186,12 +187,17 @@ def _can_burn(result: ItemStack | None, slots: _Slots) -> bool:
     return (out.count < 64 and out.count < out.max_stack_size) or out.count < result.max_stack_size
 
 
-def idle(state, nbt) -> bool:
+def idle(state, block_id: str, nbt) -> bool:
+    """Unlit with no progress, and no fuel to take: one slot empty, or nothing the input cooks into
+    that fits the output."""
     lit, progress, _, _ = keys(state.version)
     if _int(nbt, lit) > 0 or _int(nbt, progress) > 0:
         return False
-    slots = _Slots(nbt, state.version).stacks
-    return slots[0].is_empty or slots[1].is_empty
+    slots = _Slots(nbt, state.version)
+    if slots.stacks[0].is_empty or slots.stacks[1].is_empty:
+        return True
+    found = recipe_for(block_id, slots.stacks[0], state.resources, state.version)
+    return not _can_burn(_result(found[1], state.version) if found else None, slots)
 
 
 def _set_lit(blocks, pos, lit: bool) -> None:

@@ -94,3 +94,15 @@ def test_the_keys_are_renamed_from_1_21_4(tmp_path):
     nbt = emu.state.blocks.entity((0, 0, 0))
     assert _slots(emu, (0, 0, 0)) == {2: ("brick", 1)}
     assert int(nbt["lit_time_remaining"]) == 1596 and int(nbt["lit_total_time"]) == 1600
+
+
+def test_a_furnace_that_cannot_cook_is_idle(tmp_path):
+    # serverTick changes nothing while unlit with no room in the output: the ticks can be batched
+    from emulator.world import block_entity_ticks
+    emu = _emulator(tmp_path, "python", "setblock 0 0 0 furnace{Items:[{Slot:2b,id:'minecraft:stone',count:1}]}\n"
+                                        "item replace block 0 0 0 container.0 with clay_ball\n"
+                                        "item replace block 0 0 0 container.1 with coal")
+    assert block_entity_ticks.tick_is_idle(emu.state)
+    items = emu.state.blocks.entity((0, 0, 0))["Items"]
+    items[:] = [i for i in items if int(i["Slot"]) != 2]  # the output emptied: now it can cook
+    assert not block_entity_ticks.tick_is_idle(emu.state)
