@@ -17,7 +17,8 @@ Containers modelled: chests and trapped chests (a double chest is one 54-slot co
 droppers, hoppers, shulker boxes (which refuse shulker boxes: ShulkerBoxBlockEntity.
 canPlaceItemThroughFace) and the furnace family by face (AbstractFurnaceBlockEntity.getSlotsForFace:
 from above the input, from the sides the fuel, which takes only fuels and a bucket, from below the
-output and an empty or water bucket out of the fuel slot). Stacking (tryMoveInItem/canMergeItems):
+output and an empty or water bucket out of the fuel slot), composters (:mod:`emulator.world.composters`:
+from above one compostable at a time below level 7, from below the bone meal of a ready one). Stacking (tryMoveInItem/canMergeItems):
 the same item and components, up to the moving stack's max stack size. An item entity over the
 hopper (the box from 11/16 above its floor to the top of the block above) is taken in whole or in
 part, unless the block above is a full cube that does not let hoppers through
@@ -25,18 +26,19 @@ part, unless the block above is a full cube that does not let hoppers through
 tick gives it a cooldown of 8, one that has ticked 7.
 
 Not modelled, reported when a hopper would use them: brewing stands, crafters, chiseled bookshelves,
-decorated pots, jukeboxes and composters as containers, container entities (minecarts, chest boats)
+decorated pots and jukeboxes as containers, container entities (minecarts, chest boats)
 in the block faced or above; hopper minecarts do not pull items. Comparators do not see changes.
 
 Sources (decompiled 1.21): world/level/block/entity/HopperBlockEntity.java (pushItemsTick,
 tryMoveItems, inventoryFull, ejectItems, isFullContainer, suckInItems, tryTakeInItemFromSlot,
 addItem, tryMoveInItem, canMergeItems, getItemsAtAndAbove, getBlockContainer, getEntityContainer),
 Hopper.SUCK_AABB, ChestBlock.getContainer, AbstractFurnaceBlockEntity (getSlotsForFace, canPlaceItem,
-canTakeItemThroughFace), ShulkerBoxBlockEntity, world/phys/AABB.intersects (strict).
+canTakeItemThroughFace), ShulkerBoxBlockEntity, ComposterBlock.getContainer (InputContainer,
+OutputContainer, EmptyContainer), world/phys/AABB.intersects (strict).
 """
 from __future__ import annotations
 
-from emulator.world import block_shapes, furnaces, inventories
+from emulator.world import block_shapes, composters, furnaces, inventories
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -52,7 +54,7 @@ _CHESTS = frozenset({"minecraft:chest", "minecraft:trapped_chest"})
 _PLAIN = frozenset({"minecraft:barrel", "minecraft:dispenser", "minecraft:dropper", "minecraft:hopper"}) | _CHESTS
 # Containers whose rules for hoppers are not modelled here
 _UNMODELLED = frozenset({"minecraft:brewing_stand", "minecraft:crafter", "minecraft:chiseled_bookshelf",
-                         "minecraft:decorated_pot", "minecraft:jukebox", "minecraft:composter"})
+                         "minecraft:decorated_pot", "minecraft:jukebox"})
 _SUCK_FLOOR = 11 / 16  # Hopper.SUCK_AABB: Block.box(0, 11, 0, 16, 32, 16)
 
 
@@ -115,6 +117,45 @@ class Target:
         return True
 
 
+class _Composter(Target):
+    """ComposterBlock.getContainer: at level 8 an output of one bone meal, taken from below (which
+    empties it: OutputContainer.setChanged); below 7 an input that takes one compostable from above
+    into the composter (InputContainer.setChanged: ComposterBlock.addItem); at 7 no slot."""
+
+    def __init__(self, state, dimension, blocks, pos) -> None:
+        super().__init__(composters.COMPOSTER, None, pos, state.resources)
+        self.state, self.dimension, self.blocks = state, dimension, blocks
+        self.level = composters.level(blocks.get(pos))
+
+    @property
+    def size(self) -> int:
+        return 0 if self.level == composters.FULL else 1
+
+    def get(self, index: int) -> ItemStack:
+        return ItemStack("minecraft:bone_meal", 1) if self.level == composters.READY else EMPTY.copy()
+
+    def put(self, index: int, stack: ItemStack) -> None:
+        if self.level == composters.READY:
+            composters.empty(self.blocks, self.pos)
+        elif not stack.is_empty:
+            composters.add_item(self.state, self.dimension, self.blocks, self.pos, stack.id)
+
+    def is_empty(self) -> bool:
+        return self.level != composters.READY
+
+    def slots_for(self, face: str | None) -> tuple[int, ...]:
+        if self.level == composters.READY:
+            return (0,) if face == "down" else ()
+        return (0,) if face == "up" and self.level < composters.FULL else ()
+
+    def can_place(self, index: int, stack: ItemStack, face: str | None) -> bool:
+        return (face == "up" and self.level < composters.FULL
+                and composters.chance(stack.id, self.state.version) is not None)
+
+    def can_take(self, index: int, stack: ItemStack, face: str) -> bool:
+        return self.level == composters.READY and face == "down" and stack.id == "minecraft:bone_meal"
+
+
 def _int(nbt, key: str) -> int:
     value = nbt.get(key)
     return int(numeric_value(value)) if is_numeric(value) else 0
@@ -159,6 +200,8 @@ def container_at(state, dimension, blocks, pos, what: str) -> Target | None:
     block = blocks.get(pos)
     if block.id in _UNMODELLED:
         raise Unmodelled(f"{what} {block.id}")
+    if block.id == composters.COMPOSTER:
+        return _Composter(state, dimension, blocks, pos)
     slots = None
     if block.id in _CHESTS:
         slots = _chest_slots(blocks, pos, block, state.version)
@@ -317,6 +360,8 @@ def still(state, dimension, blocks, pos, nbt) -> bool:
     above = blocks.get((x, y + 1, z))
     if above.id in _UNMODELLED:
         return False
+    if above.id == composters.COMPOSTER:
+        return composters.level(above) != composters.READY
     slots = inventories.container(blocks, (x, y + 1, z), state.version)
     if slots is not None and any(not slots.slot(i).get().is_empty for i in range(slots.size)):
         return False

@@ -151,3 +151,37 @@ def test_containers_whose_rules_are_not_modelled_are_reported(tmp_path):
     emu.tick(1)
     assert any("a hopper pushing items into minecraft:brewing_stand" in d.message for d in emu.diagnostics
                if d.unmodelled)
+
+
+def _level(emu, pos):
+    return dict(emu.state.blocks.get(pos).properties)["level"]
+
+
+def test_a_hopper_fills_a_composter_from_above(tmp_path):
+    # ComposterBlock.InputContainer: from above, one compostable a move; an empty composter always rises
+    # (addItem: level 0 with a chance over 0); a cake's chance is 1; a stone does not compost
+    emu = emulator(tmp_path, "python", {"t:p": "\n".join([
+        "setblock 0 0 0 composter",
+        "setblock 0 1 0 hopper{Items:[{Slot:0b,id:'minecraft:stone',count:1},{Slot:1b,id:'minecraft:cake',count:8}]}"])})
+    emu.call("t:p")
+    emu.tick(1)
+    assert _level(emu, (0, 0, 0)) == "1" and _items(emu, (0, 1, 0)) == {0: ("stone", 1), 1: ("cake", 7)}
+    emu.tick(8 * 5)
+    assert _level(emu, (0, 0, 0)) == "6"
+    emu.tick(8)
+    assert _level(emu, (0, 0, 0)) == "7"  # full: no slot takes the next cake (EmptyContainer)
+    emu.tick(19)
+    assert _level(emu, (0, 0, 0)) == "7" and _items(emu, (0, 1, 0))[1] == ("cake", 1)
+    emu.tick(1)
+    assert _level(emu, (0, 0, 0)) == "8"  # ComposterBlock.tick, 20 ticks after reaching 7
+    assert not [d for d in emu.diagnostics if d.unmodelled]
+
+
+def test_a_hopper_takes_the_bone_meal_of_a_ready_composter(tmp_path):
+    # ComposterBlock.OutputContainer: from below, one bone meal, and the composter is empty again
+    emu = emulator(tmp_path, "python", {"t:p": "setblock 0 1 0 composter[level=8]\nsetblock 0 0 0 hopper{Items:[]}\n"
+                                               "setblock 5 1 0 composter[level=5]\nsetblock 5 0 0 hopper{Items:[]}"})
+    emu.call("t:p")
+    emu.tick(1)
+    assert _items(emu, (0, 0, 0)) == {0: ("bone_meal", 1)} and _level(emu, (0, 1, 0)) == "0"
+    assert _items(emu, (5, 0, 0)) == {} and _level(emu, (5, 1, 0)) == "5"
