@@ -5,11 +5,11 @@ as far as the emulator models it; what it does not is reported as not modelled, 
   an end gateway's ``Age`` grows; a hopper's ``TransferCooldown`` counts down and at 0 it moves
   items (:mod:`emulator.world.hoppers`); furnaces, smokers and blast furnaces burn and cook
   (:mod:`emulator.world.furnaces`); a jukebox plays its song (:mod:`emulator.world.jukeboxes`);
-  an unlit campfire's cooking progress falls back by 2; a brewing stand takes a blaze powder
-  when out of fuel and shows its bottles in its ``has_bottle_N`` states; a spawner counts its
-  ``Delay`` down while a living player who is no spectator is within ``RequiredPlayerRange``.
-  Brewing, a lit campfire cooking, spawning, bees leaving a hive and a beacon over blocks are not
-  modelled, nor is what those modules name. ``tick_is_idle(state)``: nothing would change.
+  a brewing stand brews (:mod:`emulator.world.brewing`); an unlit campfire's cooking progress
+  falls back by 2; a spawner counts its ``Delay`` down while a living player who is no spectator
+  is within ``RequiredPlayerRange``. A lit campfire cooking, spawning, bees leaving a hive and a
+  beacon over blocks are not modelled, nor is what those modules name.
+  ``tick_is_idle(state)``: nothing would change.
 
 Sources (decompiled 1.21): world/level/block/entity/TheEndGatewayBlockEntity.portalTick,
 HopperBlockEntity.pushItemsTick / tryMoveItems / suckInItems, AbstractFurnaceBlockEntity.serverTick,
@@ -20,11 +20,10 @@ JukeboxBlockEntity.tick.
 """
 from __future__ import annotations
 
-from emulator.world import block_entities, furnaces, hoppers, inventories, jukeboxes
+from emulator.world import block_entities, brewing, furnaces, hoppers, jukeboxes
 from emulator.world.errors import Unmodelled
-from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import is_numeric, numeric_value
-from mcfunction_parser.nbt import Byte, Int, Long, Short
+from mcfunction_parser.nbt import Int, Long, Short
 
 MESSAGE = "{} working (what a block entity does each tick beyond its counters is not modelled here)"
 
@@ -127,32 +126,6 @@ def _campfire_idle(state, dimension, blocks, pos, nbt) -> bool:
     return not (lit and nbt.get("Items")) and not any(int(t) > 0 for t in nbt.get("CookingTimes") or [])
 
 
-def _brewing(state, dimension, blocks, pos, nbt) -> None:
-    """BrewingStandBlockEntity.serverTick: out of fuel with a blaze powder in its fuel slot, it
-    takes one (20 brews); brewing is not modelled; the ``has_bottle_0..2`` states follow slots 0 - 2."""
-    slots = inventories.Container(nbt, 5, state.version)
-    powder = slots.slot(4).get()
-    if _int(nbt, "Fuel") <= 0 and powder.id == "minecraft:blaze_powder":
-        nbt["Fuel"] = Byte(20)
-        powder.count -= 1
-        slots.slot(4).set(powder if powder.count > 0 else ItemStack("minecraft:air", 0))
-    if _int(nbt, "BrewTime") > 0 or (_int(nbt, "Fuel") > 0 and not slots.slot(3).get().is_empty):
-        _report(state, MESSAGE.format("a brewing stand"))
-    block = blocks.get(pos)
-    bottles = {f"has_bottle_{i}": "true" if not slots.slot(i).get().is_empty else "false" for i in range(3)}
-    if any(dict(block.properties).get(k) not in (None, v) for k, v in bottles.items()):
-        blocks.set_state(pos, type(block)(block.id, tuple(sorted({**dict(block.properties), **bottles}.items()))))
-
-
-def _brewing_idle(state, dimension, blocks, pos, nbt) -> bool:
-    slots = inventories.Container(nbt, 5, state.version)
-    properties = dict(blocks.get(pos).properties)
-    return (_int(nbt, "BrewTime") <= 0 and not (_int(nbt, "Fuel") <= 0 and slots.slot(4).get().id == "minecraft:blaze_powder")
-            and not (_int(nbt, "Fuel") > 0 and not slots.slot(3).get().is_empty)
-            and all(properties.get(f"has_bottle_{i}") in (None, "false" if slots.slot(i).get().is_empty else "true")
-                    for i in range(3)))
-
-
 def _player_near(state, dimension, pos, nbt) -> bool:
     """BaseSpawner.isNearPlayer: a living player who is no spectator within the range of the
     block's centre (any distance when the range is negative)."""
@@ -217,13 +190,13 @@ _HIVE = _busy_when("bees", "a beehive with bees")
 _OLD_HIVE = _busy_when("Bees", "a beehive with bees")
 _TICKS = {
     "minecraft:end_gateway": _gateway, "minecraft:hopper": _hopper, "minecraft:campfire": _campfire,
-    "minecraft:brewing_stand": _brewing, "minecraft:mob_spawner": _spawner, "minecraft:beacon": _beacon,
+    "minecraft:brewing_stand": brewing.tick, "minecraft:mob_spawner": _spawner, "minecraft:beacon": _beacon,
     "minecraft:beehive": lambda *a: (_HIVE[0](*a), _OLD_HIVE[0](*a)), "minecraft:jukebox": _jukebox,
     **{f: _furnace for f in furnaces.FURNACES},
 }
 _IDLE = {
     "minecraft:end_gateway": lambda *a: False, "minecraft:hopper": _hopper_idle, "minecraft:campfire": _campfire_idle,
-    "minecraft:brewing_stand": _brewing_idle, "minecraft:mob_spawner": _spawner_idle, "minecraft:beacon": _beacon_idle,
+    "minecraft:brewing_stand": brewing.idle, "minecraft:mob_spawner": _spawner_idle, "minecraft:beacon": _beacon_idle,
     "minecraft:beehive": lambda *a: _HIVE[1](*a) and _OLD_HIVE[1](*a), "minecraft:jukebox": _jukebox_idle,
     **{f: _furnace_idle for f in furnaces.FURNACES},
 }

@@ -18,27 +18,30 @@ droppers, hoppers, shulker boxes (which refuse shulker boxes: ShulkerBoxBlockEnt
 canPlaceItemThroughFace) and the furnace family by face (AbstractFurnaceBlockEntity.getSlotsForFace:
 from above the input, from the sides the fuel, which takes only fuels and a bucket, from below the
 output and an empty or water bucket out of the fuel slot), composters (:mod:`emulator.world.composters`:
-from above one compostable at a time below level 7, from below the bone meal of a ready one). Stacking (tryMoveInItem/canMergeItems):
+from above one compostable at a time below level 7, from below the bone meal of a ready one) and
+brewing stands (:mod:`emulator.world.brewing`: from above the ingredient, from a side the bottles
+and blaze powder, from below the bottles and a glass bottle left in the ingredient slot). Stacking (tryMoveInItem/canMergeItems):
 the same item and components, up to the moving stack's max stack size. An item entity over the
 hopper (the box from 11/16 above its floor to the top of the block above) is taken in whole or in
 part, unless the block above is a full cube that does not let hoppers through
 (``#does_not_block_hoppers``). A hopper that filled an empty hopper which has not ticked yet this
 tick gives it a cooldown of 8, one that has ticked 7.
 
-Not modelled, reported when a hopper would use them: brewing stands, crafters, chiseled bookshelves,
-decorated pots and jukeboxes as containers, container entities (minecarts, chest boats)
+Not modelled, reported when a hopper would use them: crafters, chiseled bookshelves, decorated pots
+and jukeboxes as containers, container entities (minecarts, chest boats)
 in the block faced or above; hopper minecarts do not pull items. Comparators do not see changes.
 
 Sources (decompiled 1.21): world/level/block/entity/HopperBlockEntity.java (pushItemsTick,
 tryMoveItems, inventoryFull, ejectItems, isFullContainer, suckInItems, tryTakeInItemFromSlot,
 addItem, tryMoveInItem, canMergeItems, getItemsAtAndAbove, getBlockContainer, getEntityContainer),
-Hopper.SUCK_AABB, ChestBlock.getContainer, AbstractFurnaceBlockEntity (getSlotsForFace, canPlaceItem,
+Hopper.SUCK_AABB, ChestBlock.getContainer, BrewingStandBlockEntity (getSlotsForFace, canPlaceItem,
+canTakeItemThroughFace), AbstractFurnaceBlockEntity (getSlotsForFace, canPlaceItem,
 canTakeItemThroughFace), ShulkerBoxBlockEntity, ComposterBlock.getContainer (InputContainer,
 OutputContainer, EmptyContainer), world/phys/AABB.intersects (strict).
 """
 from __future__ import annotations
 
-from emulator.world import block_shapes, composters, furnaces, inventories
+from emulator.world import block_shapes, brewing, composters, furnaces, inventories
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -53,8 +56,9 @@ _COUNTER_CLOCKWISE = {v: k for k, v in _CLOCKWISE.items()}
 _CHESTS = frozenset({"minecraft:chest", "minecraft:trapped_chest"})
 _PLAIN = frozenset({"minecraft:barrel", "minecraft:dispenser", "minecraft:dropper", "minecraft:hopper"}) | _CHESTS
 # Containers whose rules for hoppers are not modelled here
-_UNMODELLED = frozenset({"minecraft:brewing_stand", "minecraft:crafter", "minecraft:chiseled_bookshelf",
-                         "minecraft:decorated_pot", "minecraft:jukebox"})
+_UNMODELLED = frozenset({"minecraft:crafter", "minecraft:chiseled_bookshelf", "minecraft:decorated_pot",
+                         "minecraft:jukebox"})
+BREWING_STAND = "minecraft:brewing_stand"
 _SUCK_FLOOR = 11 / 16  # Hopper.SUCK_AABB: Block.box(0, 11, 0, 16, 32, 16)
 
 
@@ -75,8 +79,8 @@ class _Joined:
 class Target:
     """A container as a hopper sees it: its slots, and which of them each face reaches."""
 
-    def __init__(self, block_id: str, slots, pos, resources=None) -> None:
-        self.block_id, self.slots, self.pos, self.resources = block_id, slots, pos, resources
+    def __init__(self, block_id: str, slots, pos, resources=None, version=None) -> None:
+        self.block_id, self.slots, self.pos, self.resources, self.version = block_id, slots, pos, resources, version
 
     @property
     def size(self) -> int:
@@ -95,6 +99,8 @@ class Target:
         """WorldlyContainer.getSlotsForFace (every slot of another container, or with no face)."""
         if face is not None and self.block_id in furnaces.FURNACES:
             return (2, 1) if face == "down" else (0,) if face == "up" else (1,)
+        if face is not None and self.block_id == BREWING_STAND:
+            return brewing.slots_for(face)
         return range(self.size)
 
     def can_place(self, index: int, stack: ItemStack, face: str | None) -> bool:
@@ -106,6 +112,8 @@ class Target:
                 return (stack.id == "minecraft:bucket" and self.get(1).id != "minecraft:bucket") or \
                     furnaces.is_fuel(stack, self.resources)
             return True
+        if self.block_id == BREWING_STAND:
+            return brewing.can_place([self.get(i) for i in range(3)], index, stack, self.version)
         if face is not None and self.block_id in inventories.SHULKER_BOXES:
             return stack.id not in inventories.SHULKER_BOXES
         return True
@@ -114,6 +122,8 @@ class Target:
         """canTakeItemThroughFace."""
         if self.block_id in furnaces.FURNACES and face == "down" and index == 1:
             return stack.id in ("minecraft:water_bucket", "minecraft:bucket")
+        if self.block_id == BREWING_STAND:
+            return brewing.can_take(index, stack)
         return True
 
 
@@ -205,10 +215,11 @@ def container_at(state, dimension, blocks, pos, what: str) -> Target | None:
     slots = None
     if block.id in _CHESTS:
         slots = _chest_slots(blocks, pos, block, state.version)
-    elif block.id in _PLAIN or block.id in inventories.SHULKER_BOXES or block.id in furnaces.FURNACES:
+    elif block.id in _PLAIN or block.id in inventories.SHULKER_BOXES or block.id in furnaces.FURNACES \
+            or block.id == BREWING_STAND:
         slots = inventories.container(blocks, pos, state.version)
     if slots is not None:
-        return Target(block.id, slots, pos, state.resources)
+        return Target(block.id, slots, pos, state.resources, state.version)
     _container_entity_in(state, dimension, pos, what)
     return None
 
@@ -267,7 +278,7 @@ def _one_out(source: Target, index: int, target: Target, face: str | None, ticke
 
 # ---------------------------------------------------------------------- the hopper's transfer
 def _hopper(state, blocks, pos, nbt) -> Target:
-    return Target("minecraft:hopper", inventories.Container(nbt, 5, state.version), pos, state.resources)
+    return Target("minecraft:hopper", inventories.Container(nbt, 5, state.version), pos, state.resources, state.version)
 
 
 def _full(target: Target, face: str) -> bool:

@@ -523,6 +523,7 @@ class WorldState:
     last_attacker: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (living attacker, game time) (combat)
     dead_players: weakref.WeakSet = field(default_factory=WeakMembers)  # players that died, until they respawn (combat)
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
+    brewing: dict = field(default_factory=dict)  # (level, pos) -> (block entity, the item it brews): not saved (brewing)
     falling: list = field(default_factory=list)  # players whose physics the server ticks (world.falling)
     flying: list = field(default_factory=list)  # projectiles made in flight, checked at the next tick (world.projectiles)
     command_runner: object = None  # runs a command block's text: (text, Context) -> successes (set by the runtime)

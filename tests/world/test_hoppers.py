@@ -145,11 +145,11 @@ def test_shulker_boxes_refuse_shulker_boxes(tmp_path):
 
 
 def test_containers_whose_rules_are_not_modelled_are_reported(tmp_path):
-    emu = emulator(tmp_path, "python", {"t:p": "setblock 0 0 0 brewing_stand\n"
+    emu = emulator(tmp_path, "python", {"t:p": "setblock 0 0 0 decorated_pot\n"
                                                "setblock 0 1 0 hopper{Items:[{Slot:0b,id:'minecraft:stone',count:1}]}"})
     emu.call("t:p")
     emu.tick(1)
-    assert any("a hopper pushing items into minecraft:brewing_stand" in d.message for d in emu.diagnostics
+    assert any("a hopper pushing items into minecraft:decorated_pot" in d.message for d in emu.diagnostics
                if d.unmodelled)
 
 
