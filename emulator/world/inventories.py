@@ -276,7 +276,8 @@ def entity_slot(entity, slot: int, version) -> SlotAccess | None:
 # ---------------------------------------------------------------------- containers
 class Container:
     """A container block entity's slots: ``Items`` with ``Slot`` (``size`` slots), or for a
-    single-item container (``key``: the decorated pot's ``item``, the jukebox's ``RecordItem``) one."""
+    single-item container (``key``: the decorated pot's ``item``, the jukebox's ``RecordItem``) one.
+    A block entity whose setItem does more than store the stack overrides :meth:`_put`."""
 
     def __init__(self, nbt: Compound, size: int, version, key: str | None = None) -> None:
         self.nbt, self.size, self.version, self.key = nbt, size, version, key
@@ -285,40 +286,35 @@ class Container:
         if not 0 <= index < self.size:
             return None
         if self.key is not None:
-            return _key_slot(lambda create: self.nbt, self.key, self.version)
-        return _list_slot(self.nbt, "Items", index, self.version)
+            access = _key_slot(lambda create: self.nbt, self.key, self.version)
+        else:
+            access = _list_slot(self.nbt, "Items", index, self.version)
+        if type(self)._put is Container._put:
+            return access
+        return SlotAccess(access.get, lambda stack: self._put(access, index, stack))
+
+    def _put(self, access: SlotAccess, index: int, stack: ItemStack) -> None:
+        access.set(stack)
 
 
 class ShulkerBoxContainer(Container):
     """A shulker box's 27 slots: ShulkerBoxBlockEntity saves ``Items`` only when one holds an item
     (ContainerHelper.saveAllItems with alwaysPutTag false)."""
 
-    def slot(self, index: int) -> SlotAccess | None:
-        access = super().slot(index)
-        if access is None:
-            return None
-
-        def put(stack: ItemStack) -> None:
-            access.set(stack)
-            if not self.nbt.get("Items"):
-                self.nbt.pop("Items", None)
-        return SlotAccess(access.get, put)
+    def _put(self, access: SlotAccess, index: int, stack: ItemStack) -> None:
+        access.set(stack)
+        if not self.nbt.get("Items"):
+            self.nbt.pop("Items", None)
 
 
 class CrafterContainer(Container):
     """A crafter's nine slots: CrafterBlockEntity.setItem enables a disabled slot it fills."""
 
-    def slot(self, index: int) -> SlotAccess | None:
-        access = super().slot(index)
-        if access is None:
-            return None
-
-        def put(stack: ItemStack) -> None:
-            disabled = self.nbt.get("disabled_slots")
-            if isinstance(disabled, IntArray) and index in [int(v) for v in disabled]:
-                self.nbt["disabled_slots"] = IntArray(Int(v) for v in disabled if int(v) != index)
-            access.set(stack)
-        return SlotAccess(access.get, put)
+    def _put(self, access: SlotAccess, index: int, stack: ItemStack) -> None:
+        disabled = self.nbt.get("disabled_slots")
+        if isinstance(disabled, IntArray) and index in [int(v) for v in disabled]:
+            self.nbt["disabled_slots"] = IntArray(Int(v) for v in disabled if int(v) != index)
+        access.set(stack)
 
 
 class FurnaceContainer(Container):
@@ -329,33 +325,24 @@ class FurnaceContainer(Container):
         super().__init__(nbt, 3, version)
         self.block_id, self.resources = block_id, resources
 
-    def slot(self, index: int) -> SlotAccess | None:
-        access = super().slot(index)
-        if access is None or index != 0 or self.resources is None:
-            return access
-
-        def put(stack: ItemStack) -> None:
-            from emulator.world import furnaces  # furnaces reads recipes, which read these containers
-            before = access.get()
+    def _put(self, access: SlotAccess, index: int, stack: ItemStack) -> None:
+        if index != 0 or self.resources is None:
             access.set(stack)
-            furnaces.input_set(self.resources, self.block_id, self.nbt, before, stack, self.version)
-        return SlotAccess(access.get, put)
+            return
+        from emulator.world import furnaces  # furnaces reads recipes, which read these containers
+        before = access.get()
+        access.set(stack)
+        furnaces.input_set(self.resources, self.block_id, self.nbt, before, stack, self.version)
 
 
 class JukeboxContainer(Container):
     """A jukebox's record: setting it starts or stops its song (JukeboxBlockEntity.setTheItem:
     :func:`emulator.world.jukeboxes.item_set`)."""
 
-    def slot(self, index: int) -> SlotAccess | None:
-        access = super().slot(index)
-        if access is None:
-            return None
-
-        def put(stack: ItemStack) -> None:
-            from emulator.world import jukeboxes  # jukeboxes reads items, as this module does
-            access.set(stack)
-            jukeboxes.item_set(self.nbt, stack, self.version)
-        return SlotAccess(access.get, put)
+    def _put(self, access: SlotAccess, index: int, stack: ItemStack) -> None:
+        from emulator.world import jukeboxes  # jukeboxes reads items, as this module does
+        access.set(stack)
+        jukeboxes.item_set(self.nbt, stack, self.version)
 
 
 FURNACES = frozenset({"minecraft:furnace", "minecraft:smoker", "minecraft:blast_furnace"})
