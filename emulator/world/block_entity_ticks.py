@@ -33,8 +33,12 @@ def _int(nbt, key: str, default: int = 0) -> int:
     return int(numeric_value(value)) if is_numeric(value) else default
 
 
+def _reported(state, message: str) -> bool:
+    return any(d.message == message for d in state.diagnostics)
+
+
 def _report(state, message: str) -> None:
-    if not any(d.message == message for d in state.diagnostics):
+    if not _reported(state, message):
         state.error(message, severity="warning", unmodelled=True)
 
 
@@ -48,6 +52,9 @@ _TICKED: set = set()
 
 
 def tick_block_entities(state) -> None:
+    cart = hoppers.minecart_would_pull(state)  # an entity's work, reported with the hoppers'
+    if cart is not None:
+        _report(state, cart)
     for dimension, blocks in _levels(state):
         _TICKED.clear()
         for pos, nbt in list(blocks.entities.items()):
@@ -66,6 +73,9 @@ def tick_block_entities(state) -> None:
 
 
 def tick_is_idle(state) -> bool:
+    cart = hoppers.minecart_would_pull(state)
+    if cart is not None and not _reported(state, cart):
+        return False
     for dimension, blocks in _levels(state):
         for pos, nbt in blocks.entities.items():
             idle = _IDLE.get(block_entities.type_id(blocks.get(pos).id))

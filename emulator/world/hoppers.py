@@ -41,6 +41,8 @@ OutputContainer, EmptyContainer), world/phys/AABB.intersects (strict).
 """
 from __future__ import annotations
 
+import math
+
 from emulator.world import block_shapes, brewing, composters, furnaces, inventories
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
@@ -358,6 +360,22 @@ def transfer(state, dimension, blocks, pos, nbt, ticked: set) -> bool:
     if moved:
         nbt["TransferCooldown"] = Int(COOLDOWN)
     return moved
+
+
+def minecart_would_pull(state) -> str | None:
+    """What a hopper minecart would do that is not modelled (HopperMinecart.suckInItems: the
+    container above it or the item entities around it), or None."""
+    for cart in state.entities.entities:
+        if not cart.alive or cart.type != "minecraft:hopper_minecart":
+            continue
+        x, y, z = cart.pos
+        box = (x - 1.5, y - 0.5, z - 1.5, x + 1.5, y + 2, z + 1.5)
+        above = (math.floor(x), math.floor(y) + 1, math.floor(z))
+        if inventories.container(state.blocks_in(cart.dimension), above, state.version) is not None or any(
+                e.alive and e.type == "minecraft:item" and e.dimension == cart.dimension and _box_holds(e, box)
+                for e in state.entities.entities):
+            return "a hopper minecart pulling items (what a hopper minecart does is not modelled)"
+    return None
 
 
 def still(state, dimension, blocks, pos, nbt) -> bool:

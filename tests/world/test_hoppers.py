@@ -185,3 +185,11 @@ def test_a_hopper_takes_the_bone_meal_of_a_ready_composter(tmp_path):
     emu.tick(1)
     assert _items(emu, (0, 0, 0)) == {0: ("bone_meal", 1)} and _level(emu, (0, 1, 0)) == "0"
     assert _items(emu, (5, 0, 0)) == {} and _level(emu, (5, 1, 0)) == "5"
+
+
+def test_a_hopper_minecart_that_would_pull_items_is_reported(tmp_path):
+    emu = emulator(tmp_path, "python", {"t:p": "summon hopper_minecart 0.5 0 0.5 {NoGravity:1b}\n"
+                                               "summon item 0.5 0.2 0.5 {NoGravity:1b,Item:{id:'minecraft:stone',count:1}}"})
+    emu.call("t:p")
+    emu.tick(1)
+    assert any("a hopper minecart pulling items" in d.message for d in emu.diagnostics if d.unmodelled)
