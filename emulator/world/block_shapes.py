@@ -86,7 +86,11 @@ def is_face_sturdy(block) -> bool:
     return _kind(block)
 
 
+# blocks 15/16 high (FarmBlock.SHAPE, DirtPathBlock.SHAPE): their collision shape is no full block
+_LOWER_THAN_FULL = frozenset(("minecraft:farmland", "minecraft:dirt_path"))
+
+
 def is_collision_full(block) -> bool:
-    if block.id.endswith("_door"):  # a door's box is 3/16 thick
+    if block.id.endswith("_door") or block.id in _LOWER_THAN_FULL:  # a door's box is 3/16 thick
         return False
     return _kind(block)

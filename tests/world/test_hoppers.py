@@ -193,3 +193,13 @@ def test_a_hopper_minecart_that_would_pull_items_is_reported(tmp_path):
     emu.call("t:p")
     emu.tick(1)
     assert any("a hopper minecart pulling items" in d.message for d in emu.diagnostics if d.unmodelled)
+
+
+def test_farmland_above_lets_item_entities_through(tmp_path):
+    # suckInItems: farmland's collision shape is 15/16 high (FarmBlock.SHAPE), no full block: an item
+    # resting on it is over the hopper's suck box and is taken in
+    emu = emulator(tmp_path, "python", {"t:p": "setblock 0 0 0 hopper\nsetblock 0 1 0 farmland\n"
+                                               "summon item 0.5 1.9375 0.5 {NoGravity:1b,Item:{id:'minecraft:dirt',count:1}}"})
+    emu.call("t:p")
+    emu.tick(1)
+    assert _items(emu, (0, 0, 0)) == {0: ("dirt", 1)}
