@@ -28,7 +28,9 @@ fuel that only a vanilla item tag would make one (logs, planks, wool ...) withou
 Saved keys: ``BurnTime``, ``CookTime``, ``CookTimeTotal`` (shorts), and from 1.21.4
 ``lit_time_remaining``, ``cooking_time_spent``, ``cooking_total_time``, ``lit_total_time``.
 The fuel map is the one of 1.21.1; from 1.21.2 the game reads it from FuelValues.vanillaBurnTimes,
-whose entries are taken to be the same here.
+whose entries are taken to be the same here. The game tries the recipe a furnace used last before
+the others (RecipeManager.CachedCheck, not saved); here the first in order always wins, which
+differs only when two recipes of the type take the same input.
 
 Sources (decompiled 1.21): world/level/block/entity/AbstractFurnaceBlockEntity.java (getFuel,
 serverTick, canBurn, burn, getBurnDuration, getTotalCookTime, isFuel, setItem, setRecipeUsed,
@@ -120,6 +122,21 @@ def _result(recipe: dict, version) -> ItemStack:
     return crafting.result_stack(result or {}, version)
 
 
+# the recipes of each cooking type in the game's order, for the world's resources last asked
+_ORDERS: list = [None, {}]
+
+
+def _ordered(resources, kind: str, version: tuple) -> list[str]:
+    if _ORDERS[0] is not resources:
+        _ORDERS[:] = [resources, {}]
+    found = _ORDERS[1].get((kind, version))
+    if found is None:
+        ids = [rid for rid, body in resources.recipe_bodies.items() if isinstance(body, dict)
+               and _id(str(body.get("type", ""))) == kind]
+        found = _ORDERS[1][(kind, version)] = crafting.recipe_order(ids, version)
+    return found
+
+
 def recipe_for(block_id: str, stack: ItemStack, resources, version) -> tuple[str, dict] | None:
     """RecipeManager.getRecipeFor(the furnace's type, the input): (id, JSON) of the first recipe
     whose ingredient takes the item; None when none does. The game's own are not modelled without
@@ -127,9 +144,7 @@ def recipe_for(block_id: str, stack: ItemStack, resources, version) -> tuple[str
     if stack.is_empty:
         return None
     kind = RECIPE_TYPES[block_id]
-    ids = [rid for rid, body in resources.recipe_bodies.items() if isinstance(body, dict)
-           and _id(str(body.get("type", ""))) == kind]
-    for rid in crafting.recipe_order(ids, version):
+    for rid in _ordered(resources, kind, tuple(version)):
         body = resources.recipe_bodies[rid]
         if crafting.ingredient_test(body.get("ingredient"), stack, resources):
             return rid, body
