@@ -12,7 +12,8 @@ their PackTest suites run on both backends:
 - crafting: custom recipes tested with a crafter (shaped with a mirrored pattern and an item tag,
   shapeless with a remainder, into a chest in front, crafter_recipe_crafted);
 - machines: block entities set up and read as machine and spawner packs do (a spawner placed then
-  merged, a bee nest's bees, a furnace's times, the block entity type's id);
+  merged, a bee nest's bees, a furnace's times, the block entity type's id), a smelting line of
+  hoppers around a blast furnace cooking the pack's recipe, an item collector filling a double chest;
 - lists, typed: a collection library flattening lists that mix types (1.21.5+), and the one-type
   rule of the lists before it;
 - ticker: a library ticking its modules' function tag from a repeating command block, as forceload
