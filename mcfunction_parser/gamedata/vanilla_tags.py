@@ -10,7 +10,8 @@ faithful source; nothing is bundled beyond :data:`BUILTIN_TAGS`.
 
 Without a jar, :data:`BUILTIN_TAGS` holds a few vanilla entity type tags (copied from the 1.21
 jar's ``data/minecraft/tags/entity_type``), the damage type tags the hurt rules read (1.21's
-DamageTypeTagsProvider) and the block tag a campfire's smoke reads (VanillaBlockTagsProvider); any other ``#minecraft:`` tag is unknown to the
+DamageTypeTagsProvider) and the block tags a campfire's smoke and a hopper's reach through a
+block read (VanillaBlockTagsProvider); any other ``#minecraft:`` tag is unknown to the
 emulator, and a command reading one says it is not modelled instead of matching nothing.
 """
 from __future__ import annotations
@@ -39,6 +40,8 @@ BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
     },
     "block": {
         "minecraft:campfires": frozenset({"minecraft:campfire", "minecraft:soul_campfire"}),
+        # VanillaBlockTagsProvider: #beehives (a hopper takes items in through them)
+        "minecraft:does_not_block_hoppers": frozenset({"minecraft:bee_nest", "minecraft:beehive"}),
     },
     "damage_type": {
         "minecraft:bypasses_armor": frozenset("minecraft:" + t for t in (

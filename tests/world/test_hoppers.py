@@ -203,3 +203,17 @@ def test_farmland_above_lets_item_entities_through(tmp_path):
     emu.call("t:p")
     emu.tick(1)
     assert _items(emu, (0, 0, 0)) == {0: ("dirt", 1)}
+
+
+def test_a_beehive_above_does_not_block_item_entities(tmp_path):
+    # suckInItems: a full cube above blocks item entities (here ones inside it) unless it is in
+    # #does_not_block_hoppers (#beehives)
+    emu = emulator(tmp_path, "python", {"t:p": "\n".join([
+        "setblock 0 0 0 hopper", "setblock 0 1 0 beehive",
+        "summon item 0.5 1.5 0.5 {NoGravity:1b,Item:{id:'minecraft:dirt',count:1}}",
+        "setblock 4 0 0 hopper", "setblock 4 1 0 stone",
+        "summon item 4.5 1.5 0.5 {NoGravity:1b,Item:{id:'minecraft:dirt',count:1}}"])})
+    emu.call("t:p")
+    emu.tick(1)
+    assert _items(emu, (0, 0, 0)) == {0: ("dirt", 1)} and _items(emu, (4, 0, 0)) == {}
+    assert not [d for d in emu.diagnostics if d.unmodelled]
