@@ -190,7 +190,9 @@ class BlockMap:
         self.states: dict[tuple[int, int, int], BlockState] = {}
         self.entities: dict[tuple[int, int, int], Compound] = {}
         self.version_of = version_of  # the release the world runs as (what a new block entity saves)
-        self.resources_of: Callable[[], object] = lambda: None  # the world's recipes and tags (a furnace's input)
+        # AbstractFurnaceBlockEntity.setItem of an input: (block id, NBT, before, after, version),
+        # set by the world (its recipes decide: emulator.world.furnaces.input_set)
+        self.furnace_input_set: Callable | None = None
 
     def get(self, pos) -> BlockState:
         return self.states.get(tuple(pos), BlockState(AIR))

@@ -319,20 +319,20 @@ class CrafterContainer(Container):
 
 class FurnaceContainer(Container):
     """A furnace's, smoker's or blast furnace's three slots: setting the input to another item
-    restarts its cooking (AbstractFurnaceBlockEntity.setItem: :func:`emulator.world.furnaces.input_set`)."""
+    restarts its cooking (AbstractFurnaceBlockEntity.setItem: :func:`emulator.world.furnaces.input_set`,
+    which the world hands its blocks as ``furnace_input_set``)."""
 
-    def __init__(self, nbt: Compound, version, block_id: str, resources) -> None:
+    def __init__(self, nbt: Compound, version, block_id: str, input_set) -> None:
         super().__init__(nbt, 3, version)
-        self.block_id, self.resources = block_id, resources
+        self.block_id, self.input_set = block_id, input_set
 
     def _put(self, access: SlotAccess, index: int, stack: ItemStack) -> None:
-        if index != 0 or self.resources is None:
+        if index != 0 or self.input_set is None:
             access.set(stack)
             return
-        from emulator.world import furnaces  # furnaces reads recipes, which read these containers
         before = access.get()
         access.set(stack)
-        furnaces.input_set(self.resources, self.block_id, self.nbt, before, stack, self.version)
+        self.input_set(self.block_id, self.nbt, before, stack, self.version)
 
 
 class JukeboxContainer(Container):
@@ -363,7 +363,7 @@ def container(blocks, pos, version) -> Container | None:
     if block_id in SHULKER_BOXES:
         return ShulkerBoxContainer(nbt, 27, version)
     if block_id in FURNACES:
-        return FurnaceContainer(nbt, version, block_id, blocks.resources_of())
+        return FurnaceContainer(nbt, version, block_id, blocks.furnace_input_set)
     size = CONTAINER_SIZES.get(block_id)
     return None if size is None else Container(nbt, size, version)
 

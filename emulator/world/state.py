@@ -43,7 +43,7 @@ from emulator.world.advancement_progress import Progress
 from emulator.world.bossbars import BossBars
 from emulator.world.entities import EntityStore
 from emulator.world.hash_order import OpenHashKeys
-from emulator.world import light
+from emulator.world import furnaces, light
 from emulator.world.level_settings import LevelSettings
 from emulator.world.block_ticks import BlockTicks
 from emulator.world.random_sequences import RandomSequences
@@ -565,7 +565,7 @@ class WorldState:
         self.entities.join_team = self._join_team
         self.teams.on_change = self._team_changed
         self.blocks.version_of = self._release
-        self.blocks.resources_of = self._resources
+        self.blocks.furnace_input_set = self._furnace_input_set
 
     def _join_team(self, holder: str, team: str) -> None:
         """A mob loaded with ``Team``: it joins that team when there is one (else the game logs a warning)."""
@@ -581,8 +581,8 @@ class WorldState:
     def _release(self) -> tuple:
         return self.version
 
-    def _resources(self):
-        return self.resources
+    def _furnace_input_set(self, block_id: str, nbt, before, after, version) -> None:
+        furnaces.input_set(self.resources, block_id, nbt, before, after, version)
 
     def blocks_in(self, dimension: str) -> BlockMap:
         """The blocks of level ``dimension`` (each level has its own)."""
@@ -591,7 +591,7 @@ class WorldState:
         blocks = self.other_levels_blocks.get(dimension)
         if blocks is None:
             blocks = self.other_levels_blocks[dimension] = BlockMap(self._release)
-            blocks.resources_of = self._resources
+            blocks.furnace_input_set = self._furnace_input_set
         return blocks
 
     def level(self, dimension: str) -> "LevelView":
