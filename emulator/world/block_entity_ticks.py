@@ -22,15 +22,11 @@ from __future__ import annotations
 
 from emulator.world import block_entities, brewing, furnaces, hoppers, jukeboxes
 from emulator.world.errors import Unmodelled
-from emulator.world.nbt_ops import is_numeric, numeric_value
+from emulator.world.nbt_ops import int_at
 from mcfunction_parser.nbt import Int, Long, Short
 
 MESSAGE = "{} working (what a block entity does each tick beyond its counters is not modelled here)"
 
-
-def _int(nbt, key: str, default: int = 0) -> int:
-    value = nbt.get(key)
-    return int(numeric_value(value)) if is_numeric(value) else default
 
 
 def _reported(state, message: str) -> bool:
@@ -90,13 +86,13 @@ def tick_is_idle(state) -> bool:
 # ---------------------------------------------------------------------- each kind
 def _gateway(state, dimension, blocks, pos, nbt) -> None:
     """TheEndGatewayBlockEntity.portalTick: the age grows every tick (its cooldown is not saved)."""
-    nbt["Age"] = Long(_int(nbt, "Age") + 1)
+    nbt["Age"] = Long(int_at(nbt, "Age") + 1)
 
 
 def _hopper(state, dimension, blocks, pos, nbt) -> None:
     """HopperBlockEntity.pushItemsTick: the cooldown counts down; at 0 or below it is set to 0 and
     the hopper moves items (:func:`emulator.world.hoppers.transfer`)."""
-    cooldown = _int(nbt, "TransferCooldown") - 1
+    cooldown = int_at(nbt, "TransferCooldown") - 1
     if cooldown > 0:
         nbt["TransferCooldown"] = Int(cooldown)
         return
@@ -105,7 +101,7 @@ def _hopper(state, dimension, blocks, pos, nbt) -> None:
 
 
 def _hopper_idle(state, dimension, blocks, pos, nbt) -> bool:
-    return _int(nbt, "TransferCooldown") == 0 and hoppers.still(state, dimension, blocks, pos, nbt)
+    return int_at(nbt, "TransferCooldown") == 0 and hoppers.still(state, dimension, blocks, pos, nbt)
 
 
 def _furnace(state, dimension, blocks, pos, nbt) -> None:
@@ -139,7 +135,7 @@ def _campfire_idle(state, dimension, blocks, pos, nbt) -> bool:
 def _player_near(state, dimension, pos, nbt) -> bool:
     """BaseSpawner.isNearPlayer: a living player who is no spectator within the range of the
     block's centre (any distance when the range is negative)."""
-    reach = _int(nbt, "RequiredPlayerRange", 16)
+    reach = int_at(nbt, "RequiredPlayerRange", 16)
     centre = tuple(c + 0.5 for c in pos)
     for player in state.entities.players():
         if player.dimension != dimension or player.gamemode == "spectator" or player in state.dead_players:
@@ -153,7 +149,7 @@ def _spawner(state, dimension, blocks, pos, nbt) -> None:
     """BaseSpawner.serverTick near a player: the delay counts down; at 0 it spawns (not modelled)."""
     if not _player_near(state, dimension, pos, nbt):
         return
-    delay = _int(nbt, "Delay", 20)
+    delay = int_at(nbt, "Delay", 20)
     if delay > 0:
         nbt["Delay"] = Short(delay - 1)
     else:
@@ -173,7 +169,7 @@ def _beacon(state, dimension, blocks, pos, nbt) -> None:
 
 def _beacon_idle(state, dimension, blocks, pos, nbt) -> bool:
     x, y, z = pos
-    return _int(nbt, "Levels") == 0 and all(blocks.get((x + dx, y - 1, z + dz)).is_air
+    return int_at(nbt, "Levels") == 0 and all(blocks.get((x + dx, y - 1, z + dz)).is_air
                                             for dx in (-1, 0, 1) for dz in (-1, 0, 1))
 
 

@@ -34,7 +34,7 @@ from __future__ import annotations
 from emulator.world import inventories
 from emulator.world.errors import Unmodelled
 from emulator.world.items import COMPONENTS_VERSION, EMPTY, ItemStack
-from emulator.world.nbt_ops import is_numeric, numeric_value
+from emulator.world.nbt_ops import int_at
 from mcfunction_parser.nbt import Byte, Compound, Short, String
 
 BREW_TIME, FUEL_USES = 400, 20
@@ -168,10 +168,6 @@ def can_take(index: int, stack: ItemStack) -> bool:
 
 
 # ---------------------------------------------------------------------- the tick
-def _int(nbt, key: str) -> int:
-    value = nbt.get(key)
-    return int(numeric_value(value)) if is_numeric(value) else 0
-
 
 def _write(box, slots: list[ItemStack], index: int, stack: ItemStack) -> None:
     slots[index] = stack
@@ -206,7 +202,7 @@ def tick(state, dimension, blocks, pos, nbt) -> None:
     version = state.version
     box = inventories.Container(nbt, 5, version)
     slots = [box.slot(i).get() for i in range(5)]
-    fuel, brew_time = _int(nbt, "Fuel"), _int(nbt, "BrewTime")
+    fuel, brew_time = int_at(nbt, "Fuel"), int_at(nbt, "BrewTime")
     if fuel <= 0 and slots[4].id == BLAZE_POWDER:
         fuel = FUEL_USES
         powder = slots[4].copy()
@@ -234,8 +230,8 @@ def tick(state, dimension, blocks, pos, nbt) -> None:
 def idle(state, dimension, blocks, pos, nbt) -> bool:
     box = inventories.Container(nbt, 5, state.version)
     slots = [box.slot(i).get() for i in range(5)]
-    fuel = _int(nbt, "Fuel")
-    if _int(nbt, "BrewTime") > 0 or (fuel <= 0 and slots[4].id == BLAZE_POWDER):
+    fuel = int_at(nbt, "Fuel")
+    if int_at(nbt, "BrewTime") > 0 or (fuel <= 0 and slots[4].id == BLAZE_POWDER):
         return False
     if fuel > 0 and _brewable(slots, state.version):
         return False

@@ -44,7 +44,7 @@ from emulator.world.inventories import FURNACES, Container
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
 from emulator.world.loot_context import namespaced as _id
-from emulator.world.nbt_ops import is_numeric, numeric_value
+from emulator.world.nbt_ops import int_at
 from mcfunction_parser.nbt import Compound, Int, Short
 
 RECIPE_TYPES = {"minecraft:furnace": "minecraft:smelting", "minecraft:smoker": "minecraft:smoking",
@@ -75,10 +75,6 @@ _FUEL_TAGS = tuple((f"minecraft:{name[1:]}", time) for name, time in _FUEL if na
 # Item.getCraftingRemainingItem of the fuels: the last fuel burnt leaves it in the fuel slot
 _REMAINDERS = {"minecraft:lava_bucket": "minecraft:bucket"}
 
-
-def _int(nbt, key: str) -> int:
-    value = nbt.get(key)
-    return int(numeric_value(value)) if is_numeric(value) else 0
 
 
 def keys(version) -> tuple[str, str, str, str | None]:
@@ -206,7 +202,7 @@ def idle(state, block_id: str, nbt) -> bool:
     """Unlit with no progress, and no fuel to take: one slot empty, or nothing the input cooks into
     that fits the output."""
     lit, progress, _, _ = keys(state.version)
-    if _int(nbt, lit) > 0 or _int(nbt, progress) > 0:
+    if int_at(nbt, lit) > 0 or int_at(nbt, progress) > 0:
         return False
     slots = _Slots(nbt, state.version)
     if slots.stacks[0].is_empty or slots.stacks[1].is_empty:
@@ -228,7 +224,7 @@ def tick(state, blocks, pos, nbt) -> None:
     version, resources = state.version, state.resources
     block_id = blocks.get(pos).id
     lit_key, progress_key, total_key, lit_total_key = keys(version)
-    lit, progress, total = _int(nbt, lit_key), _int(nbt, progress_key), _int(nbt, total_key)
+    lit, progress, total = int_at(nbt, lit_key), int_at(nbt, progress_key), int_at(nbt, total_key)
     was_lit = lit > 0
     if was_lit:
         lit -= 1
@@ -279,5 +275,5 @@ def _burn(found: tuple[str, dict], result: ItemStack, slots: _Slots, nbt: Compou
     used = nbt.get("RecipesUsed")
     if not isinstance(used, Compound):
         used = nbt["RecipesUsed"] = Compound()
-    used[found[0]] = Int(_int(used, found[0]) + 1)
+    used[found[0]] = Int(int_at(used, found[0]) + 1)
 

@@ -46,7 +46,7 @@ import math
 from emulator.world import block_shapes, brewing, composters, furnaces, inventories
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
-from emulator.world.nbt_ops import is_numeric, numeric_value
+from emulator.world.nbt_ops import int_at
 from mcfunction_parser.nbt import Int
 
 COOLDOWN = 8  # HopperBlockEntity.MOVE_ITEM_SPEED
@@ -168,10 +168,6 @@ class _Composter(Target):
         return self.level == composters.READY and face == "down" and stack.id == "minecraft:bone_meal"
 
 
-def _int(nbt, key: str) -> int:
-    value = nbt.get(key)
-    return int(numeric_value(value)) if is_numeric(value) else 0
-
 
 def _chest_slots(blocks, pos, block, version):
     """ChestBlock.getContainer(ignoring what blocks it): a chest joined with the chest it pairs with."""
@@ -260,7 +256,7 @@ def _move_in(source: Target | None, target: Target, stack: ItemStack, index: int
             moved = True
     if moved and was_empty and target.block_id == "minecraft:hopper":
         nbt = target.slots.nbt
-        if _int(nbt, "TransferCooldown") <= COOLDOWN:
+        if int_at(nbt, "TransferCooldown") <= COOLDOWN:
             already = source is not None and source.block_id == "minecraft:hopper" and target.pos in ticked
             nbt["TransferCooldown"] = Int(COOLDOWN - (1 if already else 0))
     return stack

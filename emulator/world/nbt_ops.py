@@ -82,6 +82,12 @@ def numeric_value(tag) -> float:
 # game's limit of 512 levels stays within Python's default recursion limit.
 
 
+def int_at(compound, key: str, default: int = 0) -> int:
+    """The number under ``key`` as an int (CompoundTag.getInt and kin), ``default`` when no number is there."""
+    value = compound.get(key)
+    return int(numeric_value(value)) if is_numeric(value) else default
+
+
 def tags_equal(a, b) -> bool:
     """``Tag.equals``: same tag type and equal content (floats compare with ``==``, so NaN != NaN)."""
     if type(a) is not type(b):
