@@ -58,6 +58,10 @@ FALL_MULTIPLIERS = {"minecraft:hay_block": 0.2}  # Block.fallOn's damage multipl
 BOUNCY = frozenset({"minecraft:slime_block"})  # SlimeBlock.updateEntityAfterFallOn
 FLUIDS = frozenset({"minecraft:water", "minecraft:lava", "minecraft:bubble_column"})
 JUMP_EXHAUSTION = (0.05, 0.2)  # Player.jumpFromGround: walking, sprinting
+HORIZONTAL_EQUAL = float(F32(1.0E-5))  # Mth.equal(double, double): |a - b| < 1.0E-5F
+# maxUpStep 0 (Entity.maxUpStep): what walks into a wall without stepping up it
+NO_FALL_DAMAGE = frozenset(("minecraft:armor_stand",))
+NO_STEP = frozenset("minecraft:" + n for n in ("item", "experience_orb", "falling_block", "tnt"))
 
 
 def fall(state, player) -> None:
@@ -110,71 +114,110 @@ def _tick(state, player) -> None:
         raise Unmodelled("horizontal motion (friction, walls, stepping up)")
     if living.effect_amplifier(player, "minecraft:levitation") is not None:
         raise Unmodelled("levitation")
-    blocks = state.blocks_in(player.dimension)
-    moved, below = _collide(blocks, player.bounding_box, y)
-    px, py, pz = player.pos
-    if moved * moved > EPSILON:  # Entity.move: lengthSqr > 1.0E-7
-        player.pos = (px, py + moved, pz)
-    stopped = moved != y
-    on_ground = stopped and y < 0.0
-    player.data["OnGround"] = Byte(int(on_ground))
-    _check_fall_damage(state, player, moved, on_ground, below)
-    if stopped:
-        if below is not None and below.id in BOUNCY:
-            raise Unmodelled(f"landing on {below.id} (it bounces)")
-        y = 0.0
+    _, y, _ = move(state, player, (x, y, z))
     gravity = living.attribute_value(player, "gravity")
     if y <= 0.0 and living.effect_amplifier(player, "minecraft:slow_falling") is not None:
         gravity = min(gravity, SLOW_FALLING_GRAVITY)
     player.motion = (x, (y - gravity) * DRAG, z)
 
 
-def _collide(blocks, box, dy: float):
-    """Shapes.collide along y for the full cubes around ``box``: the move allowed, and the block the
-    move stopped on (going down), else None."""
-    if abs(dy) < EPSILON:
-        return 0.0, None
-    x0, y0, z0, x1, y1, z1 = box
-    low, high = (y0 + dy, y1) if dy < 0 else (y0, y1 + dy)
+def move(state, entity, motion) -> tuple[float, float, float]:
+    """Entity.move for the full cubes known here: ``entity`` moves by ``motion`` as far as the blocks
+    let it (Entity.collide), ``OnGround`` is whether a move down was stopped, the fall distance
+    lands or grows (checkFallDamage), a stopped axis's motion becomes 0 (a horizontal one:
+    Entity.move; the vertical one: Block.updateEntityAfterFallOn). Returns the motion after it
+    (the entity's ``motion`` is left to the caller)."""
+    dx, dy, dz = motion
+    blocks = state.blocks_in(entity.dimension)
+    (mx, my, mz), below = _collide(blocks, entity.bounding_box, motion)
+    if mx * mx + my * my + mz * mz > EPSILON:  # Entity.move: lengthSqr > 1.0E-7
+        px, py, pz = entity.pos
+        entity.pos = (px + mx, py + my, pz + mz)
+    stopped_x, stopped_z = abs(mx - dx) >= HORIZONTAL_EQUAL, abs(mz - dz) >= HORIZONTAL_EQUAL  # !Mth.equal
+    stopped_y = my != dy
+    on_ground = stopped_y and dy < 0.0
+    if (stopped_x or stopped_z) and entity.type not in NO_STEP and (on_ground or int(entity.data.get("OnGround", 0))):
+        raise Unmodelled("a mob walking into a wall (stepping up)")
+    entity.data["OnGround"] = Byte(int(on_ground))
+    _check_fall_damage(state, entity, my, on_ground, below)
+    if on_ground and below is not None and below.id in BOUNCY:
+        raise Unmodelled(f"landing on {below.id} (it bounces)")
+    return (0.0 if stopped_x else dx), (0.0 if stopped_y else dy), (0.0 if stopped_z else dz)
+
+
+def _collide(blocks, box, motion):
+    """Entity.collideBoundingBox for the full cubes around ``box`` (Shapes.collide, axis by axis:
+    y, then the larger of x and z last, Direction.axisStepOrder): the move allowed, and the block
+    a move down stopped on (else None)."""
+    dx, dy, dz = motion
+    box = list(box)
     stop = None
-    for cx in range(math.floor(x0), math.ceil(x1)):
-        for cz in range(math.floor(z0), math.ceil(z1)):
-            for cy in range(math.floor(low), math.ceil(high)):
-                if not (cy < high and cy + 1 > low):  # AABB.intersects: strict
+    order = (1, 2, 0) if abs(dx) < abs(dz) else (1, 0, 2)
+    moved = [dx, dy, dz]
+    for axis in order:
+        d, block = _collide_axis(blocks, box, axis, moved[axis])
+        moved[axis] = d
+        box[axis] += d
+        box[axis + 3] += d
+        if axis == 1:
+            stop = block
+    return tuple(moved), stop
+
+
+def _collide_axis(blocks, box, axis: int, d: float):
+    """VoxelShape.collide along one axis: the distance ``box`` may go before a full cube (the 1.0E-7
+    tolerance), and the block that stopped it."""
+    if abs(d) < EPSILON:
+        return 0.0, None
+    lo, hi = box[axis], box[axis + 3]
+    span = [(math.floor(box[a]), math.ceil(box[a + 3])) for a in range(3)]
+    span[axis] = (math.floor(lo + d), math.ceil(hi)) if d < 0 else (math.floor(lo), math.ceil(hi + d))
+    low, high = (lo + d, hi) if d < 0 else (lo, hi + d)
+    stop = None
+    for cx in range(*span[0]):
+        for cy in range(*span[1]):
+            for cz in range(*span[2]):
+                c = (cx, cy, cz)[axis]
+                if not (c < high and c + 1 > low):  # AABB.intersects: strict
                     continue
                 block = blocks.get((cx, cy, cz))
                 if block.id in FLUIDS:
                     raise Unmodelled(f"moving through {block.id}")
                 if block.is_air or not block_shapes.collides(block):
                     continue
-                if dy < 0 and cy + 1 - y0 <= EPSILON and cy + 1 - y0 > dy:
-                    dy, stop = cy + 1 - y0, block
-                elif dy > 0 and cy - y1 >= -EPSILON and cy - y1 < dy:
-                    dy = cy - y1
-    return (0.0 if abs(dy) < EPSILON else dy), stop
+                if d < 0 and c + 1 - lo <= EPSILON and c + 1 - lo > d:
+                    d, stop = c + 1 - lo, block
+                elif d > 0 and c - hi >= -EPSILON and c - hi < d:
+                    d, stop = c - hi, block
+    return (0.0 if abs(d) < EPSILON else d), stop
 
 
-def _check_fall_damage(state, player, moved: float, on_ground: bool, below) -> None:
+def _check_fall_damage(state, entity, moved: float, on_ground: bool, below) -> None:
     """Entity.checkFallDamage: landing takes the fall (Block.fallOn), else a drop adds to it."""
-    distance = F32(float(player.data.get("FallDistance", Float(0.0))))
+    distance = F32(float(entity.data.get("FallDistance", Float(0.0))))
     if on_ground:
         if distance > 0:
             multiplier = FALL_MULTIPLIERS.get(below.id if below is not None else "", 1.0)
-            _cause_fall_damage(state, player, distance, F32(multiplier))
+            _cause_fall_damage(state, entity, distance, F32(multiplier))
         distance = F32(0.0)
     elif moved < 0.0:
         distance = distance - F32(moved)
-    player.data["FallDistance"] = Float(float(distance))
+    entity.data["FallDistance"] = Float(float(distance))
 
 
-def _cause_fall_damage(state, player, distance, multiplier) -> None:
-    """Player.causeFallDamage then LivingEntity.causeFallDamage / calculateFallDamage."""
-    if player.gamemode == "creative":  # abilities.mayfly
+def _cause_fall_damage(state, entity, distance, multiplier) -> None:
+    """Player.causeFallDamage then LivingEntity.causeFallDamage / calculateFallDamage. What is not
+    living takes none (Entity.causeFallDamage), nor an armor stand (ArmorStand.hurt refuses a fall:
+    it is not in ``#can_break_armor_stand``)."""
+    if entity.type in NO_FALL_DAMAGE or not living.is_living(entity.type):
         return
-    if distance >= F32(2.0):
-        statistics.award(state, player, statistics.stat_name("custom", "fall_one_cm"),
-                         math.floor(float(distance) * 100.0 + 0.5))  # Math.round
-    safe = F32(living.attribute_value(player, "safe_fall_distance"))
-    damage = math.ceil(float((distance - safe) * multiplier) * living.attribute_value(player, "fall_damage_multiplier"))
+    if entity.is_player:
+        if entity.gamemode == "creative":  # abilities.mayfly
+            return
+        if distance >= F32(2.0):
+            statistics.award(state, entity, statistics.stat_name("custom", "fall_one_cm"),
+                             math.floor(float(distance) * 100.0 + 0.5))  # Math.round
+    safe = F32(living.attribute_value(entity, "safe_fall_distance"))
+    damage = math.ceil(float((distance - safe) * multiplier) * living.attribute_value(entity, "fall_damage_multiplier"))
     if damage > 0:
-        combat.hurt(state, player, float(damage), combat.DamageSource("minecraft:fall"))
+        combat.hurt(state, entity, float(damage), combat.DamageSource("minecraft:fall"))
