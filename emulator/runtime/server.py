@@ -14,6 +14,7 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    one when ``doDaylightCycle`` is on (ServerLevel.tickTime); the weather advances before all of
    step 4 (ServerLevel.advanceWeatherCycle: :mod:`emulator.world.weather`);
 5. a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
+   items, experience orbs, primed TNT, mobs and armor stands move (:func:`emulator.world.motion.tick_moving`),
    every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
    (:func:`emulator.world.combat.tick_dead`), a player using an item goes on using it
@@ -48,7 +49,7 @@ from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
 from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, falling,
-                           living, nbt_ops, player_actions, projectiles, statistics)
+                           living, motion, nbt_ops, player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -72,6 +73,7 @@ def _effects_step(state) -> None:
 
 
 ENTITY_STEPS = ((falling.tick_falling, falling.tick_is_idle),
+                (motion.tick_moving, motion.tick_is_idle),
                 (_effects_step, living.tick_is_idle),
                 (combat.tick_dead, combat.tick_is_idle),
                 (player_actions.tick_using, player_actions.tick_is_idle),

@@ -1,0 +1,294 @@
+"""Entities other than players that the server moves each tick: item entities, experience orbs,
+primed TNT, mobs and armor stands, as their ``tick`` moves them (decompiled 1.21), through the one
+Entity.move there is (:func:`emulator.world.falling.move`: full cubes, ``OnGround``, the fall
+distance and fall damage). Players are :mod:`emulator.world.falling`'s (a PackTest dummy falls
+there; a client's player moves by its client); projectiles are :mod:`emulator.world.projectiles`'.
+
+- ``tick_moving(state)``: each such entity's tick, in the store's order; ``tick_is_idle(state)``:
+  none would change (none exists, or each is a mob without AI or an armor stand without physics,
+  with no motion: it cannot move).
+
+Each tick (the game's order within an entity's tick):
+- the void (Entity.baseTick -> checkBelowWorld): below the level's bottom - 64 an item or orb is
+  gone (onBelowWorld: discard), a living entity takes 4 ``minecraft:out_of_world`` damage each tick
+  (LivingEntity.onBelowWorld; an armor stand is killed by it: ArmorStand.hurt). Primed TNT does not
+  run baseTick (PrimedTnt.tick): it falls on;
+- an item (ItemEntity.tick): ``PickupDelay`` counts down (not 32767), the gravity 0.04 (none with
+  ``NoGravity``); it moves when in the air, with horizontal motion (> 1.0E-5F squared), or every
+  fourth tick of its life at rest; its motion is then scaled by 0.98F (x, z: by the friction of
+  the block under it x 0.98F on the ground: 0.6 default, 0.98 ice, 0.989 blue ice, 0.8 slime)
+  and 0.98 (y), and a downward y on the ground is halved and turned up (x -0.5). ``Age`` counts up
+  (not -32768) and at 6000 the item is gone;
+- an experience orb (ExperienceOrb.tick): gravity 0.03, moves, the same friction, on the ground
+  the y is scaled by -0.9; ``Age`` counts up to 6000;
+- primed TNT (PrimedTnt.tick): gravity 0.04, moves, motion x 0.98, on the ground x (0.7, -0.5,
+  0.7); ``fuse`` counts down;
+- a living entity other than a player (LivingEntity.aiStep, travel): a mob with ``NoAI`` or an
+  armor stand with ``NoGravity`` or ``Marker`` (isEffectiveAi false) does not travel: its motion is
+  only scaled by 0.98 each tick (it hangs where it is). Otherwise a motion component under 0.003
+  becomes 0, the mob moves by its motion with no input of its own (its AI is not modelled), then
+  its horizontal motion is scaled by the friction of the block under it x 0.91F (0.91F in the air;
+  the ground as it was before the move), its vertical motion loses the gravity (the ``gravity``
+  attribute; at most 0.01 falling with slow falling) and is scaled by 0.98F; fall damage as for
+  players (none for an armor stand).
+
+An entity riding another does not move by itself (Entity.rideTick: its vehicle places it).
+
+Not modelled (reported once as not modelled, and that entity no longer moves here): what a mob's
+AI does (wandering, pathfinding, targeting, jumping: a mob with AI moves only by its motion and
+gravity here, which a pack observes as the game's result only while the AI stays idle — not
+reported), water and lava (and bubble columns), blocks that are not full cubes or empty (slabs,
+stairs, fences ...), stepping up, slime blocks' bounce, honey and soul sand, climbing, levitation,
+flying mobs with AI (their travel differs), items merging with their neighbours, an item or orb
+stuck in a block (pushed out), an orb following a player, TNT exploding, falling blocks, a
+vehicle carrying its passengers, and boats and minecarts. The fourth-tick rule of a resting item
+counts the item's own ticks (the game adds its network id, which no pack sees).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from emulator.world import combat, falling, living
+from emulator.world.errors import Unmodelled
+from mcfunction_parser.nbt import Byte, Short
+
+F32 = np.float32
+ITEM, ORB, TNT = "minecraft:item", "minecraft:experience_orb", "minecraft:tnt"
+ARMOR_STAND = "minecraft:armor_stand"
+FALLING_BLOCK = "minecraft:falling_block"
+GRAVITY = {ITEM: 0.04, ORB: 0.03, TNT: 0.04}  # getDefaultGravity
+DESPAWN_AGE = 6000  # ItemEntity.tick, ExperienceOrb.tick
+NO_PICKUP = 32767  # ItemEntity: a pickup delay that never counts down
+NO_AGE = -32768  # ItemEntity: an age that never counts up
+MIN_MOVEMENT = 0.003  # LivingEntity.aiStep
+DRAG_F = float(F32(0.98))  # 0.98F widened
+AIR_FRICTION = F32(0.91)  # LivingEntity.travel
+RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 1.0E-5F
+VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
+VOID_DAMAGE = 4.0  # LivingEntity.onBelowWorld
+# BlockBehaviour.Properties.friction (Blocks): 0.6 for any other block
+FRICTION = {"minecraft:ice": 0.98, "minecraft:packed_ice": 0.98, "minecraft:frosted_ice": 0.98,
+            "minecraft:blue_ice": 0.989, "minecraft:slime_block": 0.8}
+DEFAULT_FRICTION = 0.6
+BELOW_AFFECTING = 0.500001  # Entity.getBlockPosBelowThatAffectsMyMovement: getOnPos(0.500001F)
+# FlyingAnimal or a travel of their own: with AI they do not move as LivingEntity.travel moves them
+FLYING = frozenset("minecraft:" + n for n in (
+    "bat bee parrot allay phantom ghast vex blaze ender_dragon wither breeze").split())
+_NOT_MOVED_HERE = frozenset(("minecraft:player",))
+
+
+def _moves(type_id: str) -> bool:
+    """Whether the server moves an entity of this type here."""
+    if type_id in _NOT_MOVED_HERE:
+        return False
+    return type_id in GRAVITY or type_id == FALLING_BLOCK or living.is_living(type_id)
+
+
+def movers(state) -> list:
+    """The entities moved here, in the store's order (found again only when entities came or left)."""
+    store = state.entities
+    cached = state.movers
+    if cached[0] != store.changes or cached[1] is not store.entities:
+        state.movers = cached = (store.changes, store.entities, [e for e in store.entities if _moves(e.type)])
+    return cached[2]
+
+
+def _held(entity) -> bool:
+    """A living entity that does not travel (isEffectiveAi false): a mob with NoAI, an armor stand
+    with NoGravity or Marker (ArmorStand.hasPhysics)."""
+    data = entity.data
+    if entity.type == ARMOR_STAND:
+        return bool(int(data.get("NoGravity", 0)) or int(data.get("Marker", 0)))
+    return bool(int(data.get("NoAI", 0)))
+
+
+def _still(entity) -> bool:
+    return entity.type not in GRAVITY and entity.type != FALLING_BLOCK and _held(entity) and not any(entity.motion)
+
+
+def tick_is_idle(state) -> bool:
+    return all(_still(e) for e in movers(state))
+
+
+def tick_moving(state) -> None:
+    entities = movers(state)
+    if not entities:
+        return
+    stopped = state.not_moving
+    for entity in list(entities):
+        if not entity.alive or entity in stopped or entity.vehicle is not None:
+            continue
+        try:
+            _tick(state, entity)
+        except Unmodelled as reason:
+            stopped.add(entity)
+            message = f"{entity.type} moving: {reason.message.removeprefix('not modelled: ')}"
+            if not any(d.message == message for d in state.diagnostics):
+                state.error(message, severity="warning", unmodelled=True)
+
+
+def _tick(state, entity) -> None:
+    kind = entity.type
+    if entity.passengers and not _still(entity):
+        raise Unmodelled("a vehicle carrying its passengers")
+    if kind == TNT:
+        _tick_tnt(state, entity)
+        return
+    if kind == FALLING_BLOCK:
+        raise Unmodelled("a falling block's fall and landing")
+    if _below_world(state, entity):
+        return
+    if kind == ITEM:
+        _tick_item(state, entity)
+    elif kind == ORB:
+        _tick_orb(state, entity)
+    else:
+        _tick_living(state, entity)
+
+
+def _below_world(state, entity) -> bool:
+    """Entity.checkBelowWorld / onBelowWorld; True when the entity is gone."""
+    bottom, _ = state.entities.table.levels.build_height(entity.dimension, state.version)
+    if entity.pos[1] >= bottom - VOID_DEPTH:
+        return False
+    if not living.is_living(entity.type) or entity.type == ARMOR_STAND:  # discard; ArmorStand.hurt: kill
+        state.entities.kill(entity)
+        return True
+    combat.hurt(state, entity, VOID_DAMAGE, combat.DamageSource("minecraft:out_of_world"))
+    return not entity.alive
+
+
+def _no_gravity(entity) -> bool:
+    return bool(int(entity.data.get("NoGravity", 0)))
+
+
+def _on_ground(entity) -> bool:
+    return bool(int(entity.data.get("OnGround", 0)))
+
+
+def _friction(state, entity) -> F32:
+    """Block.getFriction of the block under the entity that affects its movement (the block
+    0.500001 below its feet; the game's supporting block where the entity straddles two is not
+    looked for)."""
+    x, y, z = entity.pos
+    block = state.blocks_in(entity.dimension).get((int(np.floor(x)), int(np.floor(y - BELOW_AFFECTING)),
+                                                  int(np.floor(z))))
+    return F32(FRICTION.get(block.id, DEFAULT_FRICTION))
+
+
+def _ticks_lived(state, entity) -> int:
+    """Entity.tickCount after this tick's increment (ServerLevel.tickNonPassenger)."""
+    count = state.ticks_lived.get(entity, 0) + 1
+    state.ticks_lived[entity] = count
+    return count
+
+
+def _age(entity, key: str) -> bool:
+    """Count ``key`` (Age) up; True when it reached the despawn age (the entity is then gone)."""
+    age = int(entity.data.get(key, 0))
+    if age != NO_AGE:
+        age += 1
+    entity.data[key] = Short(age)
+    return age >= DESPAWN_AGE
+
+
+def _ground_scaled(state, entity, motion):
+    """The items' and orbs' friction after their move: x, z by the friction under them (on the
+    ground) x 0.98F, else 0.98F; y by 0.98. Also whether the entity is on the ground."""
+    f = F32(0.98)
+    on_ground = _on_ground(entity)
+    if on_ground:
+        f = _friction(state, entity) * F32(0.98)
+    x, y, z = motion[0] * float(f), motion[1] * 0.98, motion[2] * float(f)
+    return x, y, z, on_ground
+
+
+def _tick_item(state, entity) -> None:
+    """ItemEntity.tick."""
+    _inside_fluid(state, entity)
+    data = entity.data
+    delay = int(data.get("PickupDelay", 0))
+    if 0 < delay != NO_PICKUP:
+        data["PickupDelay"] = Short(delay - 1)
+    x, y, z = entity.motion
+    if not _no_gravity(entity):
+        y -= GRAVITY[ITEM]
+    lived = _ticks_lived(state, entity)
+    if not _on_ground(entity) or x * x + z * z > RESTING_MOVE or lived % 4 == 0:
+        moved = falling.move(state, entity, (x, y, z))
+        x, y, z, on_ground = _ground_scaled(state, entity, moved)
+        if on_ground and y < 0.0:
+            y *= -0.5
+    entity.motion = (x, y, z)
+    if _age(entity, "Age"):
+        state.entities.kill(entity)
+
+
+def _tick_orb(state, entity) -> None:
+    """ExperienceOrb.tick."""
+    _inside_fluid(state, entity)
+    if any(p.gamemode != "spectator" and _within(p, entity, 8.0) for p in state.entities.players()):
+        raise Unmodelled("an experience orb following a player")
+    x, y, z = entity.motion
+    if not _no_gravity(entity):
+        y -= GRAVITY[ORB]
+    moved = falling.move(state, entity, (x, y, z))
+    x, y, z, on_ground = _ground_scaled(state, entity, moved)
+    if on_ground:
+        y *= -0.9
+    entity.motion = (x, y, z)
+    if _age(entity, "Age"):
+        state.entities.kill(entity)
+
+
+def _within(player, entity, distance: float) -> bool:
+    if player.dimension != entity.dimension:
+        return False
+    return sum((a - b) ** 2 for a, b in zip(player.pos, entity.pos)) < distance * distance
+
+
+def _tick_tnt(state, entity) -> None:
+    """PrimedTnt.tick: gravity 0.04, the move, x 0.98, on the ground x (0.7, -0.5, 0.7), the fuse."""
+    x, y, z = entity.motion
+    if not _no_gravity(entity):
+        y -= GRAVITY[TNT]
+    x, y, z = falling.move(state, entity, (x, y, z))
+    x, y, z = x * 0.98, y * 0.98, z * 0.98
+    if _on_ground(entity):
+        x, y, z = x * 0.7, y * -0.5, z * 0.7
+    entity.motion = (x, y, z)
+    fuse = int(entity.data.get("fuse", 80)) - 1
+    entity.data["fuse"] = Short(fuse)
+    if fuse <= 0:
+        state.entities.kill(entity)
+        raise Unmodelled("TNT exploding")
+
+
+def _tick_living(state, entity) -> None:
+    """LivingEntity.aiStep then travel, with no input (no AI)."""
+    x, y, z = entity.motion
+    held = _held(entity)
+    if held:  # aiStep: not isEffectiveAi
+        x, y, z = x * 0.98, y * 0.98, z * 0.98
+    x, y, z = (0.0 if abs(m) < MIN_MOVEMENT else m for m in (x, y, z))
+    if held:
+        entity.motion = (x, y, z)
+        return
+    if entity.type in FLYING and entity.type != ARMOR_STAND:
+        raise Unmodelled(f"{entity.type}'s flight (its AI)")
+    if living.effect_amplifier(entity, "minecraft:levitation") is not None:
+        raise Unmodelled("levitation")
+    _inside_fluid(state, entity)
+    gravity = 0.0 if _no_gravity(entity) else living.attribute_value(entity, "gravity")
+    if y <= 0.0 and living.effect_amplifier(entity, "minecraft:slow_falling") is not None:
+        gravity = min(gravity, falling.SLOW_FALLING_GRAVITY)
+    scale = _friction(state, entity) * AIR_FRICTION if _on_ground(entity) else AIR_FRICTION
+    x, y, z = falling.move(state, entity, (x, y, z))
+    entity.motion = (x * float(scale), (y - gravity) * DRAG_F, z * float(scale))
+
+
+def _inside_fluid(state, entity) -> None:
+    x, y, z = entity.pos
+    block = state.blocks_in(entity.dimension).get((int(np.floor(x)), int(np.floor(y)), int(np.floor(z))))
+    if block.id in falling.FLUIDS or ("waterlogged", "true") in block.properties:
+        raise Unmodelled(f"an entity in {block.id}")
