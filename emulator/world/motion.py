@@ -64,6 +64,7 @@ MIN_MOVEMENT = 0.003  # LivingEntity.aiStep
 DRAG_F = float(F32(0.98))  # 0.98F widened
 AIR_FRICTION = F32(0.91)  # LivingEntity.travel
 RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 1.0E-5F
+FOLLOW_RANGE = 8.0  # ExperienceOrb.scanForEntities
 VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
 VOID_DAMAGE = 4.0  # LivingEntity.onBelowWorld
 # BlockBehaviour.Properties.friction (Blocks): 0.6 for any other block
@@ -227,7 +228,8 @@ def _tick_item(state, entity) -> None:
 def _tick_orb(state, entity) -> None:
     """ExperienceOrb.tick."""
     _inside_fluid(state, entity)
-    if any(p.gamemode != "spectator" and _within(p, entity, 8.0) for p in state.entities.players()):
+    if any(p.gamemode != "spectator" and living.health(p) > 0 and _within(p, entity, FOLLOW_RANGE)
+           for p in state.entities.players()):  # scanForEntities: getNearestPlayer(this, 8.0), not dying
         raise Unmodelled("an experience orb following a player")
     x, y, z = entity.motion
     if not _no_gravity(entity):
