@@ -1,0 +1,175 @@
+"""One tick of the entities the server moves (emulator.world.motion), read exactly through the API on
+both backends. Each test names the decompiled 1.21 source it pins."""
+import numpy as np
+import pytest
+
+from emulator.world import motion
+from tests.world.world_emulator import emulator
+
+F32 = np.float32
+BACKENDS = ["numba", "python"]
+STONE_FLOOR = "fill -2 0 -2 2 0 2 stone\n"
+
+
+def world(tmp_path, backend, setup):
+    emu = emulator(tmp_path, backend, {"t:go": STONE_FLOOR + setup})
+    emu.call("t:go")
+    return emu
+
+
+def one(emu, type_id):
+    [entity] = [e for e in emu.state.entities.entities if e.type == type_id]
+    return entity
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_item_on_the_ground_slides_by_its_motion_and_loses_it_to_the_blocks_friction(tmp_path, backend):
+    # ItemEntity.tick: on the ground (and moving) it moves, then x and z are scaled by the friction of
+    # the block under it (Block.getFriction: 0.6 stone, 0.98 ice) x 0.98F, both floats
+    emu = world(tmp_path, backend, (
+        "setblock 0 0 2 ice\n"
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b,Motion:[0.1d,0.0d,0.0d]}\n"
+        "summon item 0.5 1 2.5 {Item:{id:\"minecraft:dirt\",count:1},OnGround:1b,Motion:[0.1d,0.0d,0.0d]}"))
+    emu.tick()
+    stone, ice = sorted((e for e in emu.state.entities.entities if e.type == "minecraft:item"), key=lambda e: e.pos[2])
+    assert stone.pos == (0.6, 1.0, 0.5) and ice.pos == (0.6, 1.0, 2.5)
+    assert stone.motion == (0.1 * float(F32(0.6) * F32(0.98)), 0.0, 0.0)
+    assert ice.motion == (0.1 * float(F32(0.98) * F32(0.98)), 0.0, 0.0)
+    assert int(stone.data["OnGround"]) == 1
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_item_at_rest_moves_only_every_fourth_tick_of_its_life(tmp_path, backend):
+    # ItemEntity.tick: on the ground with no horizontal motion it moves only when (tickCount + id) % 4
+    # == 0; between, the gravity piles up in its motion, and the move's landing zeroes it
+    # (Block.updateEntityAfterFallOn)
+    emu = world(tmp_path, backend, "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b}")
+    item = one(emu, "minecraft:item")
+    seen = []
+    for _ in range(5):
+        emu.tick()
+        seen.append(item.motion[1])
+    assert seen == [-0.04, -0.08, -0.12, 0.0, -0.04]
+    assert item.pos == (0.5, 1.0, 0.5)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_items_age_and_pickup_delay_count_and_it_despawns_at_6000(tmp_path, backend):
+    # ItemEntity.tick: pickupDelay counts down unless 32767, age counts up unless -32768, gone at 6000
+    emu = world(tmp_path, backend, (
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b,Age:5998s,PickupDelay:3s,Tags:[\"old\"]}\n"
+        "summon item 1.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b,Age:-32768s,PickupDelay:32767s,Tags:[\"kept\"]}"))
+    old, kept = (next(e for e in emu.state.entities.entities if tag in e.tags) for tag in ("old", "kept"))
+    emu.tick()
+    assert (int(old.data["Age"]), int(old.data["PickupDelay"])) == (5999, 2)
+    emu.tick()
+    assert not old.alive
+    assert (int(kept.data["Age"]), int(kept.data["PickupDelay"])) == (-32768, 32767) and kept.alive
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_item_sliding_into_a_wall_stops_there(tmp_path, backend):
+    # Entity.move: a horizontal axis the blocks stop (Shapes.collide) ends at the wall and its motion is 0
+    emu = world(tmp_path, backend, (
+        "setblock 1 1 0 stone\n"
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b,Motion:[0.5d,0.0d,0.0d]}"))
+    item = one(emu, "minecraft:item")
+    emu.tick()
+    assert item.pos == (1.0 - 0.125, 1.0, 0.5)  # an item is 0.25 wide
+    assert item.motion[0] == 0.0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_mob_falls_lands_and_takes_fall_damage_and_rests_with_the_games_motion(tmp_path, backend):
+    # LivingEntity.travel with no input: gravity 0.08, x 0.98F; LivingEntity.causeFallDamage: from
+    # 10.5 blocks the fall distance at the landing is 9.667 (Entity.checkFallDamage adds a move only
+    # in the air: the last move is not in it), so ceil(9.667 - 3) = 7 damage, as for players
+    emu = world(tmp_path, backend, "summon zombie 0.5 11.5 0.5")
+    zombie = one(emu, "minecraft:zombie")
+    emu.tick(40)
+    assert zombie.pos == (0.5, 1.0, 0.5)
+    assert float(zombie.data["Health"]) == 13.0
+    assert zombie.motion == (0.0, -0.0784000015258789, 0.0) and int(zombie.data["OnGround"]) == 1
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_mob_on_the_ground_loses_its_motion_to_friction_times_0_91(tmp_path, backend):
+    # LivingEntity.travel: on the ground (before the move) x and z are scaled by friction x 0.91F
+    emu = world(tmp_path, backend, "summon pig 0.5 1 0.5 {OnGround:1b,Motion:[0.2d,0.0d,0.0d]}")
+    pig = one(emu, "minecraft:pig")
+    emu.tick()
+    assert pig.pos == (0.7, 1.0, 0.5)
+    assert pig.motion[0] == 0.2 * float(F32(0.6) * F32(0.91))
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_mobs_without_ai_and_armor_stands_without_physics_hang_losing_motion(tmp_path, backend):
+    # Mob.isEffectiveAi is false with NoAI, ArmorStand's with NoGravity or Marker (hasPhysics): no
+    # travel, LivingEntity.aiStep only scales the motion by 0.98; an armor stand with physics falls
+    emu = world(tmp_path, backend, (
+        "summon pig 0.5 5 0.5 {NoAI:1b,Motion:[0.5d,0.0d,0.0d]}\n"
+        "summon armor_stand 1.5 5 0.5 {NoGravity:1b,Tags:[\"ng\"]}\n"
+        "summon armor_stand 1.5 5 1.5 {Marker:1b,Tags:[\"marker\"]}\n"
+        "summon armor_stand -1.5 5 0.5 {Tags:[\"falls\"]}"))
+    pig = one(emu, "minecraft:pig")
+    stands = {next(iter(e.tags)): e for e in emu.state.entities.entities if e.type == "minecraft:armor_stand"}
+    emu.tick()
+    assert pig.pos == (0.5, 5.0, 0.5) and pig.motion == (0.5 * 0.98, 0.0, 0.0)
+    assert stands["ng"].pos == (1.5, 5.0, 0.5) and stands["marker"].pos == (1.5, 5.0, 1.5)
+    emu.tick(40)
+    assert stands["falls"].pos == (-1.5, 1.0, 0.5) and float(stands["falls"].data["Health"]) == 20.0  # no fall damage
+    assert pig.pos == (0.5, 5.0, 0.5)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_the_void_removes_items_and_hurts_mobs(tmp_path, backend):
+    # Entity.checkBelowWorld: below the bottom (-64) - 64 an item is discarded (onBelowWorld), a living
+    # entity takes 4 out_of_world damage a tick (LivingEntity.onBelowWorld)
+    emu = world(tmp_path, backend, (
+        "summon item 0.5 -129 0.5 {Item:{id:\"minecraft:stone\",count:1},NoGravity:1b}\n"
+        "summon zombie 0.5 -129 0.5 {NoGravity:1b}"))
+    item, zombie = one(emu, "minecraft:item"), one(emu, "minecraft:zombie")
+    emu.tick()
+    assert not item.alive
+    assert float(zombie.data["Health"]) == 16.0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_primed_tnt_falls_and_counts_its_fuse_and_its_explosion_is_reported(tmp_path, backend):
+    # PrimedTnt.tick: gravity 0.04, the move, x 0.98, the fuse; the explosion is not modelled
+    emu = world(tmp_path, backend, "summon tnt 0.5 3 0.5 {fuse:2s}")
+    tnt = one(emu, "minecraft:tnt")
+    emu.tick()
+    assert tnt.pos == (0.5, 3.0 - 0.04, 0.5) and int(tnt.data["fuse"]) == 1
+    emu.tick()
+    assert not tnt.alive
+    assert any("TNT exploding" in d.message and d.unmodelled for d in emu.state.diagnostics)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_item_in_water_is_reported_and_left_where_it_is(tmp_path, backend):
+    emu = world(tmp_path, backend, (
+        "setblock 0 1 0 water\n"
+        "summon item 0.5 1.5 0.5 {Item:{id:\"minecraft:stone\",count:1}}"))
+    item = one(emu, "minecraft:item")
+    emu.tick(3)
+    assert item.pos == (0.5, 1.5, 0.5)
+    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == ["minecraft:item moving: an entity in minecraft:water"]
+
+
+def test_still_entities_leave_the_ticks_idle_and_moving_ones_do_not(tmp_path):
+    # Runtime.run_ticks batches only ticks whose steps are idle: a mob without AI, an armor stand
+    # without gravity, a marker, a display with no motion change nothing; a mob given motion or a
+    # falling item does
+    emu = emulator(tmp_path, "numba", {
+        "t:go": ("summon pig 0.5 5 0.5 {NoAI:1b}\nsummon armor_stand 0.5 5 0.5 {NoGravity:1b}\n"
+                 "summon marker 0.5 5 0.5\nsummon item_display 0.5 5 0.5"),
+        "t:drop": "summon item 0.5 5 0.5 {Item:{id:\"minecraft:stone\",count:1}}"})
+    emu.call("t:go")
+    assert motion.tick_is_idle(emu.state)
+    pig = one(emu, "minecraft:pig")
+    pig.motion = (0.1, 0.0, 0.0)
+    assert not motion.tick_is_idle(emu.state)
+    pig.motion = (0.0, 0.0, 0.0)
+    emu.call("t:drop")
+    assert not motion.tick_is_idle(emu.state)
