@@ -1,6 +1,6 @@
 """Entities other than players that the server moves each tick: item entities, experience orbs,
-primed TNT, mobs and armor stands, as their ``tick`` moves them (decompiled 1.21), through the one
-Entity.move there is (:func:`emulator.world.falling.move`: full cubes, ``OnGround``, the fall
+primed TNT, falling blocks, mobs and armor stands, as their ``tick`` moves them (decompiled 1.21),
+through the one Entity.move there is (:func:`emulator.world.falling.move`: full cubes, ``OnGround``, the fall
 distance and fall damage). Players are :mod:`emulator.world.falling`'s (a PackTest dummy falls
 there; a client's player moves by its client); projectiles are :mod:`emulator.world.projectiles`'.
 
@@ -11,8 +11,7 @@ there; a client's player moves by its client); projectiles are :mod:`emulator.wo
 Each tick (the game's order within an entity's tick):
 - the void (Entity.baseTick -> checkBelowWorld): below the level's bottom - 64 an item or orb is
   gone (onBelowWorld: discard), a living entity takes 4 ``minecraft:out_of_world`` damage each tick
-  (LivingEntity.onBelowWorld; an armor stand is killed by it: ArmorStand.hurt). Primed TNT does not
-  run baseTick (PrimedTnt.tick): it falls on;
+  (LivingEntity.onBelowWorld; an armor stand is killed by it: ArmorStand.hurt);
 - an item (ItemEntity.tick): ``PickupDelay`` counts down (not 32767), the gravity 0.04 (none with
   ``NoGravity``); it moves when in the air, with horizontal motion (> 1.0E-5F squared), or every
   fourth tick of its life at rest; its motion is then scaled by 0.98F (x, z: by the friction of
@@ -21,8 +20,15 @@ Each tick (the game's order within an entity's tick):
   (not -32768) and at 6000 the item is gone;
 - an experience orb (ExperienceOrb.tick): gravity 0.03, moves, the same friction, on the ground
   the y is scaled by -0.9; ``Age`` counts up to 6000;
+- a falling block (FallingBlockEntity.tick; ``BlockState``, sand when missing): ``Time`` counts,
+  gravity 0.04, the move; on the ground the motion is scaled by (0.7, -0.5, 0.7) and the block is
+  set where the entity is (the entity is gone) when what is there is replaceable and the block
+  under it is not free (air, fire, a fluid, replaceable: FallingBlock.isFree); otherwise it
+  breaks: gone, or (``DropItem``, ``doEntityDrops``) into its item, not modelled. In the air it is
+  gone after 600 ticks, or 100 below the bottom or above the top; the motion is then x 0.98. Like
+  TNT it does not run baseTick (no void);
 - primed TNT (PrimedTnt.tick): gravity 0.04, moves, motion x 0.98, on the ground x (0.7, -0.5,
-  0.7); ``fuse`` counts down;
+  0.7); ``fuse`` counts down (no baseTick: the void does not remove it);
 - a living entity other than a player (LivingEntity.aiStep, travel): a mob with ``NoAI`` or an
   armor stand with ``NoGravity`` or ``Marker`` (isEffectiveAi false) does not travel: its motion is
   only scaled by 0.98 each tick (it hangs where it is). Otherwise a motion component under 0.003
@@ -40,23 +46,30 @@ gravity here, which a pack observes as the game's result only while the AI stays
 reported), water and lava (and bubble columns), blocks that are not full cubes or empty (slabs,
 stairs, fences ...), stepping up, slime blocks' bounce, honey and soul sand, climbing, levitation,
 flying mobs with AI (their travel differs), items merging with their neighbours, an item or orb
-stuck in a block (pushed out), an orb following a player, TNT exploding, falling blocks, a
-vehicle carrying its passengers, and boats and minecarts. The fourth-tick rule of a resting item
-counts the item's own ticks (the game adds its network id, which no pack sees).
+stuck in a block (pushed out), an orb following a player, TNT exploding, a falling block
+breaking into its item, falling anvils and dripstone (they hurt what they land on), a falling
+block with block entity data, concrete powder meeting water, a vehicle carrying its passengers,
+and boats and minecarts. The fourth-tick rule of a resting item counts the item's own ticks (the
+game adds its network id, which no pack sees).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import combat, falling, living
+from emulator.world import block_shapes, combat, falling, living
+from emulator.world.blocks import BlockSpec, BlockState
 from emulator.world.errors import Unmodelled
-from mcfunction_parser.nbt import Byte, Short
+from mcfunction_parser.nbt import Compound, Int, Short, String
 
 F32 = np.float32
 ITEM, ORB, TNT = "minecraft:item", "minecraft:experience_orb", "minecraft:tnt"
 ARMOR_STAND = "minecraft:armor_stand"
 FALLING_BLOCK = "minecraft:falling_block"
-GRAVITY = {ITEM: 0.04, ORB: 0.03, TNT: 0.04}  # getDefaultGravity
+GRAVITY = {ITEM: 0.04, ORB: 0.03, TNT: 0.04, FALLING_BLOCK: 0.04}  # getDefaultGravity
+DEFAULT_FALLING = "minecraft:sand"  # FallingBlockEntity.blockState's default
+# FallingBlockEntity.hurtEntities: set for these (FallingBlockEntity.fall, AnvilBlock, PointedDripstoneBlock)
+HURTS_ENTITIES = frozenset("minecraft:" + n for n in (
+    "anvil chipped_anvil damaged_anvil pointed_dripstone").split())
 DESPAWN_AGE = 6000  # ItemEntity.tick, ExperienceOrb.tick
 NO_PICKUP = 32767  # ItemEntity: a pickup delay that never counts down
 NO_AGE = -32768  # ItemEntity: an age that never counts up
@@ -82,7 +95,7 @@ def _moves(type_id: str) -> bool:
     """Whether the server moves an entity of this type here."""
     if type_id in _NOT_MOVED_HERE:
         return False
-    return type_id in GRAVITY or type_id == FALLING_BLOCK or living.is_living(type_id)
+    return type_id in GRAVITY or living.is_living(type_id)
 
 
 def movers(state) -> list:
@@ -104,7 +117,7 @@ def _held(entity) -> bool:
 
 
 def _still(entity) -> bool:
-    return entity.type not in GRAVITY and entity.type != FALLING_BLOCK and _held(entity) and not any(entity.motion)
+    return entity.type not in GRAVITY and _held(entity) and not any(entity.motion)
 
 
 def tick_is_idle(state) -> bool:
@@ -136,7 +149,8 @@ def _tick(state, entity) -> None:
         _tick_tnt(state, entity)
         return
     if kind == FALLING_BLOCK:
-        raise Unmodelled("a falling block's fall and landing")
+        _tick_falling_block(state, entity)
+        return
     if _below_world(state, entity):
         return
     if kind == ITEM:
@@ -264,6 +278,68 @@ def _tick_tnt(state, entity) -> None:
     if fuse <= 0:
         state.entities.kill(entity)
         raise Unmodelled("TNT exploding")
+
+
+def _carried(entity) -> BlockState:
+    """FallingBlockEntity.readAdditionalSaveData: ``BlockState`` (NbtUtils.readBlockState; sand
+    when missing)."""
+    tag = entity.data.get("BlockState")
+    if not isinstance(tag, Compound) or not isinstance(tag.get("Name"), String):
+        return BlockState(DEFAULT_FALLING)
+    properties = tag.get("Properties")
+    props = tuple((str(k), str(v)) for k, v in properties.items()) if isinstance(properties, Compound) else ()
+    name = str(tag["Name"])
+    return BlockState(name if ":" in name else "minecraft:" + name, props)
+
+
+def _tick_falling_block(state, entity) -> None:
+    """FallingBlockEntity.tick: ``Time`` counts, gravity 0.04, the move; on the ground the motion is
+    scaled by (0.7, -0.5, 0.7) and the block lands where the entity is when that block can be
+    replaced and the one under it is not free (FallingBlock.isFree: air, fire, a fluid, a
+    replaceable block), else it breaks (an item when ``DropItem``); in the air 600 ticks (100 out of
+    the build height) end it; then the motion x 0.98."""
+    carried = _carried(entity)
+    if carried.is_air:
+        state.entities.kill(entity)
+        return
+    if carried.id in HURTS_ENTITIES or "TileEntityData" in entity.data:
+        raise Unmodelled(f"a falling {carried.id} (what it hurts, its block entity)")
+    data = entity.data
+    time = int(data.get("Time", 0)) + 1
+    data["Time"] = Int(time)
+    x, y, z = entity.motion
+    if not _no_gravity(entity):
+        y -= GRAVITY[FALLING_BLOCK]
+    x, y, z = falling.move(state, entity, (x, y, z))
+    blocks = state.blocks_in(entity.dimension)
+    pos = tuple(int(np.floor(c)) for c in entity.pos)
+    drops = int(data.get("DropItem", 1)) and state.gamerules.get("doEntityDrops") != "false"  # the default: true
+    if _on_ground(entity):
+        x, y, z = x * 0.7, y * -0.5, z * 0.7
+        there = blocks.get(pos)
+        if there.id != "minecraft:moving_piston":
+            below = blocks.get((pos[0], pos[1] - 1, pos[2]))
+            if there.id in block_shapes.REPLACEABLE and not _free(below):
+                blocks.place(pos, BlockSpec(carried.id, False, carried.properties, None))
+                state.entities.kill(entity)
+                return
+            if drops:
+                raise Unmodelled(f"a falling {carried.id} breaking into its item")
+            state.entities.kill(entity)
+            return
+    else:
+        bottom, height = state.entities.table.levels.build_height(entity.dimension, state.version)
+        if (time > 100 and not bottom < pos[1] <= bottom + height) or time > 600:
+            if drops:
+                raise Unmodelled(f"a falling {carried.id} breaking into its item")
+            state.entities.kill(entity)
+            return
+    entity.motion = (x * 0.98, y * 0.98, z * 0.98)
+
+
+def _free(block) -> bool:
+    """FallingBlock.isFree: air, fire, a fluid or a replaceable block."""
+    return block.is_air or block.id in block_shapes.REPLACEABLE or block.id in falling.FLUIDS
 
 
 def _tick_living(state, entity) -> None:

@@ -173,3 +173,32 @@ def test_still_entities_leave_the_ticks_idle_and_moving_ones_do_not(tmp_path):
     pig.motion = (0.0, 0.0, 0.0)
     emu.call("t:drop")
     assert not motion.tick_is_idle(emu.state)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_falling_block_lands_as_its_block(tmp_path, backend):
+    # FallingBlockEntity.tick: on the ground, where it is can be replaced (air) and the block under
+    # it is not free: the block is set there and the entity is gone; Time counted its ticks
+    emu = world(tmp_path, backend, "summon falling_block 0.5 4 0.5 {BlockState:{Name:\"minecraft:gravel\"}}")
+    block = one(emu, "minecraft:falling_block")
+    emu.tick()
+    assert int(block.data["Time"]) == 1 and block.pos == (0.5, 4.0 - 0.04, 0.5)
+    emu.tick(30)
+    assert not block.alive
+    assert emu.state.blocks.get((0, 1, 0)).id == "minecraft:gravel"
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_falling_block_that_cannot_land_breaks(tmp_path, backend):
+    # FallingBlockEntity.tick: a torch where it lands is not replaceable: it breaks; with DropItem
+    # false it is just gone, with it (the default) its item would drop: not modelled, reported
+    emu = world(tmp_path, backend, (
+        "setblock 0 1 0 torch\nsetblock 1 1 0 torch\n"
+        "summon falling_block 0.5 3 0.5 {BlockState:{Name:\"minecraft:sand\"},DropItem:0b}\n"
+        "summon falling_block 1.5 3 0.5 {BlockState:{Name:\"minecraft:sand\"}}"))
+    quiet, dropping = sorted((e for e in emu.state.entities.entities if e.type == "minecraft:falling_block"),
+                             key=lambda e: e.pos[0])
+    emu.tick(30)
+    assert not quiet.alive and emu.state.blocks.get((0, 1, 0)).id == "minecraft:torch"
+    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
+        "minecraft:falling_block moving: a falling minecraft:sand breaking into its item"]
