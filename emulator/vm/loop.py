@@ -1844,6 +1844,9 @@ def run(address, machine_type):
                     continue
                 if _teleport(code[pc - 2], ctx, other, n, selbuf, floats, cints, cfloats, efloats):
                     ok = 1
+                for i in range(n):  # a mob moved: a batch of ticks ends with this root (its rest is over)
+                    if eints[selbuf[i], EI_LIVING] != 0:
+                        regs[R_BSTOP] = regs[R_BATCH]
                     val = n
             elif op == OP_GETFIELD:
                 e = cints[ctx, CI_ENTITY]
@@ -2007,6 +2010,8 @@ def run(address, machine_type):
                     break
                 stored = (val if ok else 0) if code[pc, 2] == 0 else ok
                 _store_field(efloats, e, column, np.float64(stored) * floats[code[pc, 3]])
+                if column <= EF_MZ and eints[e, EI_LIVING] != 0:  # a mob's position or motion: as TP's
+                    regs[R_BSTOP] = regs[R_BATCH]
             pc += 1
         elif op == OP_STORELEAF:
             if alive and has:

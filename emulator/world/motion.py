@@ -5,8 +5,8 @@ distance and fall damage). Players are :mod:`emulator.world.falling`'s (a PackTe
 there; a client's player moves by its client); projectiles are :mod:`emulator.world.projectiles`'.
 
 - ``tick_moving(state)``: each such entity's tick, in the store's order; ``tick_is_idle(state)``:
-  none would change (none exists, or each is a mob without AI or an armor stand without physics,
-  with no motion: it cannot move).
+  none would change (none exists, or each is a mob without AI or an armor stand without physics
+  with no motion, or a mob resting on a block; an item or orb always ages).
 
 Each tick (the game's order within an entity's tick):
 - the void (Entity.baseTick -> checkBelowWorld): below the level's bottom - 64 an item or orb is
@@ -116,12 +116,37 @@ def _held(entity) -> bool:
     return bool(int(data.get("NoAI", 0)))
 
 
-def _still(entity) -> bool:
-    return entity.type not in GRAVITY and _held(entity) and not any(entity.motion)
+def _idle(state, entity) -> bool:
+    """Whether the entity's tick would change nothing: a living entity that does not travel and has
+    no motion, one without gravity or motion off the ground, or one resting on a full cube (on the
+    ground, no fall distance, the motion its last landing left: (0, -gravity x 0.98F, 0)); one that
+    is not moved here. An item, orb, TNT or falling
+    block always changes (its age, its fuse). The VM ends a batch of ticks after a root that moved
+    a living entity (``tp``, ``execute store`` into its Pos or Motion), so a rest seen before a
+    batch holds through it; a block changes only by a host command, which ends the batch too."""
+    if entity.type in GRAVITY:
+        return not entity.alive or entity in state.not_moving
+    if not entity.alive or entity in state.not_moving or entity.vehicle is not None:
+        return True
+    if _held(entity):
+        return not any(entity.motion)
+    gravity = _gravity(entity, 0.0)
+    if not gravity and not any(entity.motion):  # floating: its zero move leaves it off the ground
+        return not _on_ground(entity)
+    if not _on_ground(entity) or float(entity.data.get("FallDistance", 0.0)):
+        return False
+    rest = (0.0 - gravity) * DRAG_F
+    if entity.motion != (0.0, rest, 0.0):
+        return False
+    try:
+        moved, _ = falling._collide(state.blocks_in(entity.dimension), entity.bounding_box, (0.0, rest, 0.0))
+    except Unmodelled:
+        return False
+    return moved[1] == 0.0
 
 
 def tick_is_idle(state) -> bool:
-    return all(_still(e) for e in movers(state))
+    return all(_idle(state, e) for e in movers(state))
 
 
 def tick_moving(state) -> None:
@@ -143,7 +168,7 @@ def tick_moving(state) -> None:
 
 def _tick(state, entity) -> None:
     kind = entity.type
-    if entity.passengers and not _still(entity):
+    if entity.passengers and not _idle(state, entity):
         raise Unmodelled("a vehicle carrying its passengers")
     if kind == TNT:
         _tick_tnt(state, entity)
@@ -357,12 +382,19 @@ def _tick_living(state, entity) -> None:
     if living.effect_amplifier(entity, "minecraft:levitation") is not None:
         raise Unmodelled("levitation")
     _inside_fluid(state, entity)
-    gravity = 0.0 if _no_gravity(entity) else living.attribute_value(entity, "gravity")
-    if y <= 0.0 and living.effect_amplifier(entity, "minecraft:slow_falling") is not None:
-        gravity = min(gravity, falling.SLOW_FALLING_GRAVITY)
+    gravity = _gravity(entity, y)
     scale = _friction(state, entity) * AIR_FRICTION if _on_ground(entity) else AIR_FRICTION
     x, y, z = falling.move(state, entity, (x, y, z))
     entity.motion = (x * float(scale), (y - gravity) * DRAG_F, z * float(scale))
+
+
+def _gravity(entity, y: float) -> float:
+    """LivingEntity.travel's gravity: the ``gravity`` attribute (none with NoGravity), at most 0.01
+    falling (``y`` <= 0) with slow falling."""
+    gravity = 0.0 if _no_gravity(entity) else living.attribute_value(entity, "gravity")
+    if y <= 0.0 and living.effect_amplifier(entity, "minecraft:slow_falling") is not None:
+        gravity = min(gravity, falling.SLOW_FALLING_GRAVITY)
+    return gravity
 
 
 def _inside_fluid(state, entity) -> None:

@@ -202,3 +202,35 @@ def test_a_falling_block_that_cannot_land_breaks(tmp_path, backend):
     assert not quiet.alive and emu.state.blocks.get((0, 1, 0)).id == "minecraft:torch"
     assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
         "minecraft:falling_block moving: a falling minecraft:sand breaking into its item"]
+
+
+def test_a_mob_resting_on_a_block_leaves_the_ticks_idle_until_it_is_moved(tmp_path):
+    # at rest LivingEntity.travel changes nothing (the landing zeroes the motion, gravity and drag
+    # give it back): batches of ticks stay possible; a teleport into the air ends the batch (the VM
+    # stops after that root) and the mob falls from the next tick, as tick by tick
+    emu = emulator(tmp_path, "numba", {
+        "t:go": "fill -2 0 -2 2 0 2 stone\nsummon zombie 0.5 1 0.5",
+        "t:up": "tp @e[type=zombie] 0.5 5 0.5"}, tags={"minecraft:tick": []})
+    emu.call("t:go")
+    zombie = one(emu, "minecraft:zombie")
+    emu.tick(3)
+    assert zombie.motion == (0.0, -0.0784000015258789, 0.0)
+    assert motion.tick_is_idle(emu.state)
+    emu.call("t:up")
+    assert not motion.tick_is_idle(emu.state)
+    emu.tick(40)
+    assert zombie.pos == (0.5, 1.0, 0.5) and float(zombie.data["Health"]) == 19.0  # 4 blocks: ceil(3.x - 3)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_teleport_inside_a_batch_of_ticks_makes_the_mob_fall_on_both_backends(tmp_path, backend):
+    # the tick function lifts the mob at tick 10: batched (numba) and tick by tick (python) agree
+    emu = emulator(tmp_path, backend, {
+        "t:go": "fill -2 0 -2 2 0 2 stone\nsummon zombie 0.5 1 0.5\nscoreboard players set #t o 0",
+        "t:tick": ("scoreboard players add #t o 1\n"
+                   "execute if score #t o matches 10 run tp @e[type=zombie] 0.5 3 0.5")},
+        tags={"minecraft:tick": ["t:tick"]})
+    emu.call("t:go")
+    emu.tick(12)
+    zombie = one(emu, "minecraft:zombie")
+    assert zombie.pos[1] == 3.0 - 0.0784000015258789 - (0.0784000015258789 + 0.08) * float(F32(0.98))
