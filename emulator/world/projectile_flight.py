@@ -7,7 +7,7 @@ gravity became the entity's own double): motion, gravity, drag and rotation, hit
 
 A snowball that meets a living entity hurts it by 0 (3 a blaze) as ``thrown`` damage its owner is
 responsible for (HurtTime, ``player_hurt_entity`` with the snowball as direct entity) and breaks;
-the hit's knockback is not modelled (mobs do not move here).
+the hit's knockback is not modelled.
 
 Each tick (AbstractArrow.tick; ThrowableProjectile.tick) the projectile clips the segment from its
 position along its motion against the blocks' collision shapes (:mod:`emulator.world.ray`). An
