@@ -3,6 +3,7 @@ both backends. Each test names the decompiled 1.21 source it pins."""
 import numpy as np
 import pytest
 
+from emulator.testing import discover, run_suite
 from emulator.world import motion
 from tests.world.world_emulator import emulator
 
@@ -234,3 +235,17 @@ def test_a_teleport_inside_a_batch_of_ticks_makes_the_mob_fall_on_both_backends(
     emu.tick(12)
     zombie = one(emu, "minecraft:zombie")
     assert zombie.pos[1] == 3.0 - 0.0784000015258789 - (0.0784000015258789 + 0.08) * float(F32(0.98))
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_packtest_sees_an_item_summoned_in_the_air_land_on_the_block(pack, backend):
+    # ItemEntity.tick: from 3 blocks up the item lands on the stone's top (Entity.move: OnGround) and
+    # rests there (a test that waits for an item to fall, as Gamemode 4's everstone test does)
+    at_top = "execute positioned ~0.5 ~1 ~0.5 unless entity @e[type=item,distance=..0.0000001] run fail \"not on top\"\n"
+    [result] = run_suite(discover([pack({"demo/test/t.mcfunction": (
+        "# @skyaccess\n"
+        "setblock ~ ~ ~ stone\n"
+        "summon item ~0.5 ~3 ~0.5 {Item:{id:\"minecraft:stone\",count:1}}\n"
+        "await entity @e[type=item,nbt={OnGround:1b}]\n"
+        + at_top + "await delay 5\n" + at_top)})]), backend).results
+    assert result.status == "passed", result.report()
