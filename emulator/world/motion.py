@@ -43,9 +43,10 @@ An entity riding another does not move by itself (Entity.rideTick: its vehicle p
 Not modelled (reported once as not modelled, and that entity no longer moves here): what a mob's
 AI does (wandering, pathfinding, targeting, jumping: a mob with AI moves only by its motion and
 gravity here, which a pack observes as the game's result only while the AI stays idle — not
-reported), water and lava (and bubble columns), blocks that are not full cubes or empty (slabs,
+reported; a flying mob with AI, whose flight is all AI, stays where it is, and is reported only
+when given motion), water and lava (and bubble columns), blocks that are not full cubes or empty (slabs,
 stairs, fences ...), stepping up, slime blocks' bounce, honey and soul sand, climbing, levitation,
-flying mobs with AI (their travel differs), items merging with their neighbours, an item or orb
+items merging with their neighbours, an item or orb
 stuck in a block (pushed out), an orb following a player, TNT exploding, a falling block
 breaking into its item, falling anvils and dripstone (they hurt what they land on), a falling
 block with block entity data, concrete powder meeting water, a vehicle carrying its passengers,
@@ -128,7 +129,7 @@ def _idle(state, entity) -> bool:
         return not entity.alive or entity in state.not_moving
     if not entity.alive or entity in state.not_moving or entity.vehicle is not None:
         return True
-    if _held(entity):
+    if _held(entity) or entity.type in FLYING:
         return not any(entity.motion)
     gravity = _gravity(entity, 0.0)
     if not gravity and not any(entity.motion):  # floating: its zero move leaves it off the ground
@@ -377,8 +378,11 @@ def _tick_living(state, entity) -> None:
     if held:
         entity.motion = (x, y, z)
         return
-    if entity.type in FLYING and entity.type != ARMOR_STAND:
-        raise Unmodelled(f"{entity.type}'s flight (its AI)")
+    if entity.type in FLYING:  # its flight is its AI: it stays, unless a motion would move it
+        if x or y or z:
+            raise Unmodelled(f"{entity.type}'s flight (a flying mob with AI given motion)")
+        entity.motion = (x, y, z)
+        return
     if living.effect_amplifier(entity, "minecraft:levitation") is not None:
         raise Unmodelled("levitation")
     _inside_fluid(state, entity)

@@ -249,3 +249,16 @@ def test_a_packtest_sees_an_item_summoned_in_the_air_land_on_the_block(pack, bac
         "await entity @e[type=item,nbt={OnGround:1b}]\n"
         + at_top + "await delay 5\n" + at_top)})]), backend).results
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_flying_mob_with_ai_stays_where_it_is_unless_given_motion(tmp_path, backend):
+    # a bat's flight is all AI (Bat.customServerAiStep): not modelled and, while nothing would move
+    # it, not reported; given motion it would fly off by it (reported); with NoAI it hangs
+    emu = world(tmp_path, backend, "summon bat 0.5 5 0.5\nsummon parrot 1.5 5 0.5 {Motion:[0.3d,0.0d,0.0d]}")
+    bat, parrot = one(emu, "minecraft:bat"), one(emu, "minecraft:parrot")
+    emu.tick(5)
+    assert bat.pos == (0.5, 5.0, 0.5) and parrot.pos == (1.5, 5.0, 0.5)
+    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
+        "minecraft:parrot moving: minecraft:parrot's flight (a flying mob with AI given motion)"]
+    assert motion.tick_is_idle(emu.state)
