@@ -17,7 +17,9 @@ Each tick (the game's order within an entity's tick):
   fourth tick of its life at rest; its motion is then scaled by 0.98F (x, z: by the friction of
   the block under it x 0.98F on the ground: 0.6 default, 0.98 ice, 0.989 blue ice, 0.8 slime)
   and 0.98 (y), and a downward y on the ground is halved and turned up (x -0.5). ``Age`` counts up
-  (not -32768) and at 6000 the item is gone;
+  (not -32768) and at 6000 the item is gone. Every 40th tick of its life (2nd while it moves
+  from block to block) an item that could merge with a neighbour is reported (merging is not
+  modelled);
 - an experience orb (ExperienceOrb.tick): gravity 0.03, moves, the same friction, on the ground
   the y is scaled by -0.9; ``Age`` counts up to 6000;
 - a falling block (FallingBlockEntity.tick; ``BlockState``, sand when missing): ``Time`` counts,
@@ -57,7 +59,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import block_shapes, combat, falling, living
+from emulator.world import block_shapes, combat, falling, items, living
 from emulator.world.blocks import BlockSpec, BlockState
 from emulator.world.errors import Unmodelled
 from mcfunction_parser.nbt import Compound, Int, Short, String
@@ -78,6 +80,7 @@ MIN_MOVEMENT = 0.003  # LivingEntity.aiStep
 DRAG_F = float(F32(0.98))  # 0.98F widened
 AIR_FRICTION = F32(0.91)  # LivingEntity.travel
 RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 1.0E-5F
+MERGE_REACH = 0.5  # ItemEntity.mergeWithNeighbours: getBoundingBox().inflate(0.5, 0.0, 0.5)
 FOLLOW_RANGE = 8.0  # ExperienceOrb.scanForEntities
 VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
 VOID_DAMAGE = 4.0  # LivingEntity.onBelowWorld
@@ -252,6 +255,7 @@ def _tick_item(state, entity) -> None:
     if 0 < delay != NO_PICKUP:
         data["PickupDelay"] = Short(delay - 1)
     x, y, z = entity.motion
+    start = entity.pos
     if not _no_gravity(entity):
         y -= GRAVITY[ITEM]
     lived = _ticks_lived(state, entity)
@@ -261,8 +265,38 @@ def _tick_item(state, entity) -> None:
         if on_ground and y < 0.0:
             y *= -0.5
     entity.motion = (x, y, z)
+    moved_block = any(int(np.floor(a)) != int(np.floor(b)) for a, b in zip(start, entity.pos))
+    if lived % (2 if moved_block else 40) == 0 and _mergeable(entity):
+        _check_merging(state, entity)
     if _age(entity, "Age"):
         state.entities.kill(entity)
+
+
+def _mergeable(item) -> bool:
+    """ItemEntity.isMergable."""
+    stack = items.from_nbt(item.data.get("Item"))
+    age = int(item.data.get("Age", 0))
+    return (item.alive and int(item.data.get("PickupDelay", 0)) != NO_PICKUP and age != NO_AGE
+            and age < DESPAWN_AGE and stack.count < stack.max_stack_size)
+
+
+def _check_merging(state, item) -> None:
+    """ItemEntity.mergeWithNeighbours: an item its box inflated by 0.5 sideways meets, of the same
+    owner, item and components, the two counts within a stack (areMergable), would merge into one:
+    not modelled."""
+    stack = items.from_nbt(item.data.get("Item"))
+    x0, y0, z0, x1, y1, z1 = item.bounding_box
+    for other in movers(state):
+        if other is item or other.type != ITEM or other.dimension != item.dimension or not _mergeable(other):
+            continue
+        a0, b0, c0, a1, b1, c1 = other.bounding_box
+        if not (a0 < x1 + MERGE_REACH and a1 > x0 - MERGE_REACH and b0 < y1 and b1 > y0
+                and c0 < z1 + MERGE_REACH and c1 > z0 - MERGE_REACH):
+            continue
+        theirs = items.from_nbt(other.data.get("Item"))
+        if (other.data.get("Owner") == item.data.get("Owner") and theirs.same_item_same_components(stack)
+                and theirs.count + stack.count <= stack.max_stack_size):
+            raise Unmodelled("items merging with their neighbours")
 
 
 def _tick_orb(state, entity) -> None:

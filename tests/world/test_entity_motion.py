@@ -262,3 +262,30 @@ def test_a_flying_mob_with_ai_stays_where_it_is_unless_given_motion(tmp_path, ba
     assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
         "minecraft:parrot moving: minecraft:parrot's flight (a flying mob with AI given motion)"]
     assert motion.tick_is_idle(emu.state)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_items_that_cannot_merge_are_not_reported(tmp_path, backend):
+    # ItemEntity.areMergable: stone beside dirt, or two stacks of 40 (80 is over the stack's 64), do
+    # not merge
+    emu = world(tmp_path, backend, (
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:40},OnGround:1b}\n"
+        "summon item 0.7 1 0.5 {Item:{id:\"minecraft:stone\",count:40},OnGround:1b}\n"
+        "summon item 0.9 1 0.5 {Item:{id:\"minecraft:dirt\",count:1},OnGround:1b}"))
+    emu.tick(40)
+    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+    emu.tick(40)
+    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_two_like_items_side_by_side_are_reported_as_merging(tmp_path, backend):
+    # ItemEntity.tick: every 40th tick of its life at rest, mergeWithNeighbours would merge them
+    emu = world(tmp_path, backend, (
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b}\n"
+        "summon item 0.7 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b}"))
+    emu.tick(39)
+    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+    emu.tick(1)
+    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
+        "minecraft:item moving: items merging with their neighbours"]
