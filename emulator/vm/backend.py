@@ -176,7 +176,9 @@ class NumbaBackend:
         """:class:`emulator.runtime.backend.TickBatches`: the VM runs the roots one after the other
         itself (``run``'s batch registers); it comes back at the end of the batch, or at the end of
         a root when Python is needed before the next one: a cut to report, overflows or log lines
-        to write with their tick, a host op that ran (it may have changed what the tick's end does)."""
+        to write with their tick, a host op that ran (it may have changed what the tick's end does),
+        a living entity teleported or stored into its Pos or Motion (a mob at rest may now move:
+        :func:`emulator.world.motion.tick_is_idle`)."""
         ids = []
         for function_id in functions:
             function = self.packs.functions.get(function_id)

@@ -42,17 +42,22 @@ Each tick (the game's order within an entity's tick):
 
 An entity riding another does not move by itself (Entity.rideTick: its vehicle places it).
 
-Not modelled (reported once as not modelled, and that entity no longer moves here): what a mob's
-AI does (wandering, pathfinding, targeting, jumping: a mob with AI moves only by its motion and
-gravity here, which a pack observes as the game's result only while the AI stays idle — not
-reported; a flying mob with AI, whose flight is all AI, stays where it is, and is reported only
-when given motion), water and lava (and bubble columns), blocks that are not full cubes or empty (slabs,
-stairs, fences ...), stepping up, slime blocks' bounce, honey and soul sand, climbing, levitation,
-items merging with their neighbours, an item or orb
-stuck in a block (pushed out), an orb following a player, TNT exploding, a falling block
-breaking into its item, falling anvils and dripstone (they hurt what they land on), a falling
-block with block entity data, concrete powder meeting water, a vehicle carrying its passengers,
-and boats and minecarts. The fourth-tick rule of a resting item counts the item's own ticks (the
+Not modelled (reported once as not modelled, and that entity no longer moves here): water, lava
+and bubble columns, blocks that are not full cubes or empty (slabs, stairs, fences ...), an item
+or orb inside a block (pushed out of it), stepping up, slime blocks' bounce, honey and soul sand,
+climbing, levitation, items merging with their neighbours, an item a player would pick up
+(Player.aiStep touching it: PickupDelay 0, no other owner), an orb following a player, TNT
+exploding, a falling block breaking into its item, falling anvils and dripstone (they hurt what
+they land on), a falling block with block entity data, concrete powder meeting water, a vehicle
+carrying its passengers, and a flying mob with AI given motion.
+
+Not modelled and not reported: what a mob's AI does (wandering, pathfinding, targeting, jumping:
+a mob with AI moves only by its motion and gravity here, which is the game's result while its AI
+stays idle; a flying mob with AI, whose flight is all AI, stays where it is), a mob's suffocation
+with its eyes in a block (LivingEntity.baseTick: isInWall; it is no movement), boats and
+minecarts (:mod:`emulator.world.block_contact` reports a cart that would ride), and the void
+under entities not moved here (interactions, area effect clouds, hanging entities; markers and
+displays do not look). The fourth-tick rule of a resting item counts the item's own ticks (the
 game adds its network id, which no pack sees).
 """
 from __future__ import annotations
@@ -82,6 +87,7 @@ AIR_FRICTION = F32(0.91)  # LivingEntity.travel
 RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 1.0E-5F
 MERGE_REACH = 0.5  # ItemEntity.mergeWithNeighbours: getBoundingBox().inflate(0.5, 0.0, 0.5)
 FOLLOW_RANGE = 8.0  # ExperienceOrb.scanForEntities
+PUSHED_OUT = frozenset((ITEM, ORB))  # moveTowardsClosestSpace when inside a block (ItemEntity/ExperienceOrb.tick)
 VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
 VOID_DAMAGE = 4.0  # LivingEntity.onBelowWorld
 # BlockBehaviour.Properties.friction (Blocks): 0.6 for any other block
@@ -174,6 +180,8 @@ def _tick(state, entity) -> None:
     kind = entity.type
     if entity.passengers and not _idle(state, entity):
         raise Unmodelled("a vehicle carrying its passengers")
+    if kind in PUSHED_OUT and _in_block(state, entity):
+        raise Unmodelled(f"{kind} inside a block (pushed out of it)")
     if kind == TNT:
         _tick_tnt(state, entity)
         return
@@ -265,11 +273,31 @@ def _tick_item(state, entity) -> None:
         if on_ground and y < 0.0:
             y *= -0.5
     entity.motion = (x, y, z)
+    _check_pickup(state, entity)
     moved_block = any(int(np.floor(a)) != int(np.floor(b)) for a, b in zip(start, entity.pos))
     if lived % (2 if moved_block else 40) == 0 and _mergeable(entity):
         _check_merging(state, entity)
     if _age(entity, "Age"):
         state.entities.kill(entity)
+
+
+def _check_pickup(state, item) -> None:
+    """Player.aiStep: a living player that is not a spectator touches what its box inflated by (1,
+    0.5, 1) meets; ItemEntity.playerTouch takes an item with no pickup delay whose ``Owner`` is
+    none or that player into its inventory: not modelled."""
+    if int(item.data.get("PickupDelay", 0)) != 0:
+        return
+    x0, y0, z0, x1, y1, z1 = item.bounding_box
+    owner = item.data.get("Owner")
+    for player in state.entities.players():
+        if player.gamemode == "spectator" or living.health(player) <= 0 or player.dimension != item.dimension:
+            continue
+        if owner is not None and tuple(owner) != tuple(player.uuid):
+            continue
+        a0, b0, c0, a1, b1, c1 = player.bounding_box
+        if (a0 - 1.0 < x1 and a1 + 1.0 > x0 and b0 - 0.5 < y1 and b1 + 0.5 > y0
+                and c0 - 1.0 < z1 and c1 + 1.0 > z0):
+            raise Unmodelled("a player picking an item up")
 
 
 def _mergeable(item) -> bool:
@@ -433,6 +461,21 @@ def _gravity(entity, y: float) -> float:
     if y <= 0.0 and living.effect_amplifier(entity, "minecraft:slow_falling") is not None:
         gravity = min(gravity, falling.SLOW_FALLING_GRAVITY)
     return gravity
+
+
+def _in_block(state, entity) -> bool:
+    """Whether the entity's box, less 1.0E-7 all round, meets a full cube (Level.noCollision of the
+    deflated box: ItemEntity.tick's noPhysics, ExperienceOrb.tick)."""
+    x0, y0, z0, x1, y1, z1 = entity.bounding_box
+    e = falling.EPSILON
+    blocks = state.blocks_in(entity.dimension)
+    for cx in range(int(np.floor(x0 + e)), int(np.ceil(x1 - e))):
+        for cy in range(int(np.floor(y0 + e)), int(np.ceil(y1 - e))):
+            for cz in range(int(np.floor(z0 + e)), int(np.ceil(z1 - e))):
+                block = blocks.get((cx, cy, cz))
+                if not block.is_air and block.id not in falling.FLUIDS and block_shapes.collides(block):
+                    return True
+    return False
 
 
 def _inside_fluid(state, entity) -> None:

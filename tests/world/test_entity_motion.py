@@ -289,3 +289,29 @@ def test_two_like_items_side_by_side_are_reported_as_merging(tmp_path, backend):
     emu.tick(1)
     assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
         "minecraft:item moving: items merging with their neighbours"]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_item_inside_a_block_is_reported_not_dropped_through_it(tmp_path, backend):
+    # ItemEntity.tick: an item whose box meets a block (noCollision of the box less 1.0E-7) is pushed
+    # out of it (moveTowardsClosestSpace), not modelled; it must not fall through the stone
+    emu = world(tmp_path, backend, "summon item 0.5 0.5 0.5 {Item:{id:\"minecraft:stone\",count:1}}")
+    item = one(emu, "minecraft:item")
+    emu.tick(3)
+    assert item.pos == (0.5, 0.5, 0.5)
+    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
+        "minecraft:item moving: minecraft:item inside a block (pushed out of it)"]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_item_a_player_touches_with_no_pickup_delay_is_reported(tmp_path, backend):
+    # Player.aiStep touches what its box inflated by (1, 0.5, 1) meets; ItemEntity.playerTouch takes
+    # an item whose pickup delay is 0: not modelled. With a delay left it stays where it lies
+    emu = world(tmp_path, backend, (
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b,PickupDelay:3s}"))
+    emu.add_player("Alex", (1.5, 1.0, 0.5))
+    emu.tick(2)
+    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+    emu.tick(1)
+    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
+        "minecraft:item moving: a player picking an item up"]
