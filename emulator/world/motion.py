@@ -57,7 +57,8 @@ stays idle; a flying mob with AI, whose flight is all AI, stays where it is), a 
 with its eyes in a block (LivingEntity.baseTick: isInWall; it is no movement), boats and
 minecarts (:mod:`emulator.world.block_contact` reports a cart that would ride), and the void
 under entities not moved here (interactions, area effect clouds, hanging entities; markers and
-displays do not look). The fourth-tick rule of a resting item counts the item's own ticks (the
+displays do not look), and orbs merging (ExperienceOrb.scanForEntities: it goes by the orbs'
+network ids, which no pack sees). The fourth-tick rule of a resting item counts the item's own ticks (the
 game adds its network id, which no pack sees).
 """
 from __future__ import annotations
