@@ -26,9 +26,10 @@ Each tick (the game's order within an entity's tick):
   gravity 0.04, the move; on the ground the motion is scaled by (0.7, -0.5, 0.7) and the block is
   set where the entity is (the entity is gone) when what is there is replaceable and the block
   under it is not free (air, fire, a fluid, replaceable: FallingBlock.isFree); otherwise it
-  breaks: gone, or (``DropItem``, ``doEntityDrops``) into its item, not modelled. In the air it is
-  gone after 600 ticks, or 100 below the bottom or above the top; the motion is then x 0.98. Like
-  TNT it does not run baseTick (no void);
+  breaks: gone, and (``DropItem``, ``doEntityDrops``) its block's item drops where it was
+  (Entity.spawnAtLocation: pickup delay 10, the item's random motion drawn from the emulator's
+  random). In the air it breaks so after 600 ticks, or 100 below the bottom or above the top;
+  the motion is then x 0.98. Like TNT it does not run baseTick (no void);
 - primed TNT (PrimedTnt.tick): gravity 0.04, moves, motion x 0.98, on the ground x (0.7, -0.5,
   0.7); ``fuse`` counts down (no baseTick: the void does not remove it);
 - a living entity other than a player (LivingEntity.aiStep, travel): a mob with ``NoAI`` or an
@@ -47,7 +48,7 @@ and bubble columns, blocks that are not full cubes or empty (slabs, stairs, fenc
 or orb inside a block (pushed out of it), stepping up, slime blocks' bounce, honey and soul sand,
 climbing, levitation, items merging with their neighbours, an item a player would pick up
 (Player.aiStep touching it: PickupDelay 0, no other owner), an orb following a player, TNT
-exploding, a falling block breaking into its item, falling anvils and dripstone (they hurt what
+exploding, a falling block breaking whose block has no item of its id, falling anvils and dripstone (they hurt what
 they land on), a falling block with block entity data, concrete powder meeting water, a vehicle
 carrying its passengers, and a flying mob with AI given motion.
 
@@ -65,7 +66,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import block_shapes, combat, falling, items, living
+from emulator.world import block_shapes, combat, falling, inventories, items, living
 from emulator.world.blocks import BlockSpec, BlockState
 from emulator.world.errors import Unmodelled
 from mcfunction_parser.nbt import Compound, Int, Short, String
@@ -76,6 +77,10 @@ ARMOR_STAND = "minecraft:armor_stand"
 FALLING_BLOCK = "minecraft:falling_block"
 GRAVITY = {ITEM: 0.04, ORB: 0.03, TNT: 0.04, FALLING_BLOCK: 0.04}  # getDefaultGravity
 DEFAULT_FALLING = "minecraft:sand"  # FallingBlockEntity.blockState's default
+# blocks whose item is not their id (Block.asItem): a falling one's drop is not modelled
+NO_ITEM = frozenset("minecraft:" + n for n in (
+    "water lava fire soul_fire bubble_column powder_snow redstone_wire tripwire moving_piston "
+    "piston_head end_portal nether_portal end_gateway frosted_ice").split())
 # FallingBlockEntity.hurtEntities: set for these (FallingBlockEntity.fall, AnvilBlock, PointedDripstoneBlock)
 HURTS_ENTITIES = frozenset("minecraft:" + n for n in (
     "anvil chipped_anvil damaged_anvil pointed_dripstone").split())
@@ -412,18 +417,26 @@ def _tick_falling_block(state, entity) -> None:
                 blocks.place(pos, BlockSpec(carried.id, False, carried.properties, None))
                 state.entities.kill(entity)
                 return
-            if drops:
-                raise Unmodelled(f"a falling {carried.id} breaking into its item")
-            state.entities.kill(entity)
+            _break(state, entity, carried, drops)
             return
     else:
         bottom, height = state.entities.table.levels.build_height(entity.dimension, state.version)
         if (time > 100 and not bottom < pos[1] <= bottom + height) or time > 600:
-            if drops:
-                raise Unmodelled(f"a falling {carried.id} breaking into its item")
-            state.entities.kill(entity)
+            _break(state, entity, carried, drops)
             return
     entity.motion = (x * 0.98, y * 0.98, z * 0.98)
+
+
+def _break(state, entity, carried: BlockState, drops: bool) -> None:
+    """The falling block is gone; with ``drops`` its block's item drops where it was
+    (Entity.spawnAtLocation: an item entity with the default pickup delay, 10, and ItemEntity's
+    random motion)."""
+    if drops and carried.id in NO_ITEM:
+        raise Unmodelled(f"a falling {carried.id} breaking (its block has no item of the same id)")
+    state.entities.kill(entity)
+    if drops:
+        inventories.drop_item(state.entities, entity.pos, items.ItemStack(carried.id), state.version,
+                              state.resources.random, dimension=entity.dimension)
 
 
 def _free(block) -> bool:
