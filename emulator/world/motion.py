@@ -91,7 +91,8 @@ MIN_MOVEMENT = 0.003  # LivingEntity.aiStep
 DRAG_F = float(F32(0.98))  # 0.98F widened
 AIR_FRICTION = F32(0.91)  # LivingEntity.travel
 RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 1.0E-5F
-MERGE_REACH = 0.5  # ItemEntity.mergeWithNeighbours: getBoundingBox().inflate(0.5, 0.0, 0.5)
+MERGE_REACH = (0.5, 0.0, 0.5)  # ItemEntity.mergeWithNeighbours: getBoundingBox().inflate(0.5, 0.0, 0.5)
+TOUCH_REACH = (1.0, 0.5, 1.0)  # Player.aiStep: getBoundingBox().inflate(1.0, 0.5, 1.0)
 FOLLOW_RANGE = 8.0  # ExperienceOrb.scanForEntities
 PUSHED_OUT = frozenset((ITEM, ORB))  # moveTowardsClosestSpace when inside a block (ItemEntity/ExperienceOrb.tick)
 VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
@@ -293,17 +294,19 @@ def _check_pickup(state, item) -> None:
     none or that player into its inventory: not modelled."""
     if int(item.data.get("PickupDelay", 0)) != 0:
         return
-    x0, y0, z0, x1, y1, z1 = item.bounding_box
     owner = item.data.get("Owner")
     for player in state.entities.players():
         if player.gamemode == "spectator" or living.health(player) <= 0 or player.dimension != item.dimension:
             continue
         if owner is not None and tuple(owner) != tuple(player.uuid):
             continue
-        a0, b0, c0, a1, b1, c1 = player.bounding_box
-        if (a0 - 1.0 < x1 and a1 + 1.0 > x0 and b0 - 0.5 < y1 and b1 + 0.5 > y0
-                and c0 - 1.0 < z1 and c1 + 1.0 > z0):
+        if _meets(player.bounding_box, item.bounding_box, TOUCH_REACH):
             raise Unmodelled("a player picking an item up")
+
+
+def _meets(box, other, reach) -> bool:
+    """AABB.intersects of ``box`` inflated by ``reach`` (x, y, z) and ``other``."""
+    return all(box[a] - reach[a] < other[a + 3] and box[a + 3] + reach[a] > other[a] for a in range(3))
 
 
 def _mergeable(item) -> bool:
@@ -319,13 +322,10 @@ def _check_merging(state, item) -> None:
     owner, item and components, the two counts within a stack (areMergable), would merge into one:
     not modelled."""
     stack = items.from_nbt(item.data.get("Item"))
-    x0, y0, z0, x1, y1, z1 = item.bounding_box
     for other in movers(state):
         if other is item or other.type != ITEM or other.dimension != item.dimension or not _mergeable(other):
             continue
-        a0, b0, c0, a1, b1, c1 = other.bounding_box
-        if not (a0 < x1 + MERGE_REACH and a1 > x0 - MERGE_REACH and b0 < y1 and b1 > y0
-                and c0 < z1 + MERGE_REACH and c1 > z0 - MERGE_REACH):
+        if not _meets(item.bounding_box, other.bounding_box, MERGE_REACH):
             continue
         theirs = items.from_nbt(other.data.get("Item"))
         if (other.data.get("Owner") == item.data.get("Owner") and theirs.same_item_same_components(stack)
