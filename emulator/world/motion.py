@@ -16,7 +16,8 @@ Each tick (the game's order within an entity's tick):
   ``NoGravity``); it moves when in the air, with horizontal motion (> 1.0E-5F squared), or every
   fourth tick of its life at rest; its motion is then scaled by 0.98F (x, z: by the friction of
   the block under it x 0.98F on the ground: 0.6 default, 0.98 ice, 0.989 blue ice, 0.8 slime)
-  and 0.98 (y), and a downward y on the ground is halved and turned up (x -0.5). ``Age`` counts up
+  and 0.98 (y), and a downward y on the ground is halved and turned up (x -0.5). Whether it is in
+  a fluid or inside a block (not modelled) is looked at on the ticks it moves (at rest: one in four). ``Age`` counts up
   (not -32768) and at 6000 the item is gone. Every 40th tick of its life (2nd while it moves
   from block to block) an item that could merge with a neighbour is reported (merging is not
   modelled);
@@ -64,6 +65,8 @@ game adds its network id, which no pack sees).
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from emulator.world import block_shapes, combat, falling, inventories, items, living
@@ -94,7 +97,6 @@ RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 
 MERGE_REACH = (0.5, 0.0, 0.5)  # ItemEntity.mergeWithNeighbours: getBoundingBox().inflate(0.5, 0.0, 0.5)
 TOUCH_REACH = (1.0, 0.5, 1.0)  # Player.aiStep: getBoundingBox().inflate(1.0, 0.5, 1.0)
 FOLLOW_RANGE = 8.0  # ExperienceOrb.scanForEntities
-PUSHED_OUT = frozenset((ITEM, ORB))  # moveTowardsClosestSpace when inside a block (ItemEntity/ExperienceOrb.tick)
 VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
 VOID_DAMAGE = 4.0  # LivingEntity.onBelowWorld
 # BlockBehaviour.Properties.friction (Blocks): 0.6 for any other block
@@ -106,6 +108,7 @@ BELOW_AFFECTING = 0.500001  # Entity.getBlockPosBelowThatAffectsMyMovement: getO
 FLYING = frozenset("minecraft:" + n for n in (
     "bat bee parrot allay phantom ghast vex blaze ender_dragon wither breeze").split())
 _NOT_MOVED_HERE = frozenset(("minecraft:player",))
+_BOTTOMS: dict = {}  # (level, release) -> (the Levels it was read from, its bottom)
 
 
 def _moves(type_id: str) -> bool:
@@ -187,8 +190,6 @@ def _tick(state, entity) -> None:
     kind = entity.type
     if entity.passengers and not _idle(state, entity):
         raise Unmodelled("a vehicle carrying its passengers")
-    if kind in PUSHED_OUT and _in_block(state, entity):
-        raise Unmodelled(f"{kind} inside a block (pushed out of it)")
     if kind == TNT:
         _tick_tnt(state, entity)
         return
@@ -205,10 +206,19 @@ def _tick(state, entity) -> None:
         _tick_living(state, entity)
 
 
+def _bottom(state, dimension: str) -> int:
+    """The level's bottom (its dimension type's min_y), kept per world and level."""
+    levels = state.entities.table.levels
+    key = (dimension, tuple(state.version))
+    cached = _BOTTOMS.get(key)
+    if cached is None or cached[0] is not levels:
+        cached = _BOTTOMS[key] = (levels, levels.build_height(dimension, state.version)[0])
+    return cached[1]
+
+
 def _below_world(state, entity) -> bool:
     """Entity.checkBelowWorld / onBelowWorld; True when the entity is gone."""
-    bottom, _ = state.entities.table.levels.build_height(entity.dimension, state.version)
-    if entity.pos[1] >= bottom - VOID_DEPTH:
+    if entity.pos[1] >= _bottom(state, entity.dimension) - VOID_DEPTH:
         return False
     if not living.is_living(entity.type) or entity.type == ARMOR_STAND:  # discard; ArmorStand.hurt: kill
         state.entities.kill(entity)
@@ -230,8 +240,7 @@ def _friction(state, entity) -> F32:
     0.500001 below its feet; the game's supporting block where the entity straddles two is not
     looked for)."""
     x, y, z = entity.pos
-    block = state.blocks_in(entity.dimension).get((int(np.floor(x)), int(np.floor(y - BELOW_AFFECTING)),
-                                                  int(np.floor(z))))
+    block = state.blocks_in(entity.dimension).get((math.floor(x), math.floor(y - BELOW_AFFECTING), math.floor(z)))
     return F32(FRICTION.get(block.id, DEFAULT_FRICTION))
 
 
@@ -263,25 +272,27 @@ def _ground_scaled(state, entity, motion):
 
 
 def _tick_item(state, entity) -> None:
-    """ItemEntity.tick."""
-    _inside_fluid(state, entity)
+    """ItemEntity.tick (its water and lava: :func:`_check_cells`)."""
     data = entity.data
     delay = int(data.get("PickupDelay", 0))
     if 0 < delay != NO_PICKUP:
         data["PickupDelay"] = Short(delay - 1)
     x, y, z = entity.motion
-    start = entity.pos
     if not _no_gravity(entity):
         y -= GRAVITY[ITEM]
     lived = _ticks_lived(state, entity)
+    moved_block = False
     if not _on_ground(entity) or x * x + z * z > RESTING_MOVE or lived % 4 == 0:
+        _check_cells(state, entity)  # a resting item is looked at on its moving ticks only
+        start = entity.pos
         moved = falling.move(state, entity, (x, y, z))
         x, y, z, on_ground = _ground_scaled(state, entity, moved)
         if on_ground and y < 0.0:
             y *= -0.5
+        moved_block = any(math.floor(a) != math.floor(b) for a, b in zip(start, entity.pos))
     entity.motion = (x, y, z)
-    _check_pickup(state, entity)
-    moved_block = any(int(np.floor(a)) != int(np.floor(b)) for a, b in zip(start, entity.pos))
+    if int(data.get("PickupDelay", 0)) == 0:
+        _check_pickup(state, entity)
     if lived % (2 if moved_block else 40) == 0 and _mergeable(entity):
         _check_merging(state, entity)
     if _age(entity, "Age"):
@@ -334,8 +345,8 @@ def _check_merging(state, item) -> None:
 
 
 def _tick_orb(state, entity) -> None:
-    """ExperienceOrb.tick."""
-    _inside_fluid(state, entity)
+    """ExperienceOrb.tick (its water and lava: :func:`_check_cells`)."""
+    _check_cells(state, entity)
     if any(p.gamemode != "spectator" and living.health(p) > 0 and _within(p, entity, FOLLOW_RANGE)
            for p in state.entities.players()):  # scanForEntities: getNearestPlayer(this, 8.0), not dying
         raise Unmodelled("an experience orb following a player")
@@ -406,7 +417,7 @@ def _tick_falling_block(state, entity) -> None:
         y -= GRAVITY[FALLING_BLOCK]
     x, y, z = falling.move(state, entity, (x, y, z))
     blocks = state.blocks_in(entity.dimension)
-    pos = tuple(int(np.floor(c)) for c in entity.pos)
+    pos = tuple(math.floor(c) for c in entity.pos)
     drops = int(data.get("DropItem", 1)) and state.gamerules.get("doEntityDrops") != "false"  # the default: true
     if _on_ground(entity):
         x, y, z = x * 0.7, y * -0.5, z * 0.7
@@ -477,23 +488,29 @@ def _gravity(entity, y: float) -> float:
     return gravity
 
 
-def _in_block(state, entity) -> bool:
-    """Whether the entity's box, less 1.0E-7 all round, meets a full cube (Level.noCollision of the
-    deflated box: ItemEntity.tick's noPhysics, ExperienceOrb.tick)."""
+def _check_cells(state, entity) -> None:
+    """An item's or orb's box in a fluid (ItemEntity/ExperienceOrb.tick's water and lava) or, less
+    1.0E-7 all round, meeting a full cube (Level.noCollision of the deflated box: noPhysics, pushed
+    out by moveTowardsClosestSpace): not modelled."""
     x0, y0, z0, x1, y1, z1 = entity.bounding_box
     e = falling.EPSILON
     blocks = state.blocks_in(entity.dimension)
-    for cx in range(int(np.floor(x0 + e)), int(np.ceil(x1 - e))):
-        for cy in range(int(np.floor(y0 + e)), int(np.ceil(y1 - e))):
-            for cz in range(int(np.floor(z0 + e)), int(np.ceil(z1 - e))):
+    for cx in range(math.floor(x0 + e), math.ceil(x1 - e)):
+        for cy in range(math.floor(y0 + e), math.ceil(y1 - e)):
+            for cz in range(math.floor(z0 + e), math.ceil(z1 - e)):
                 block = blocks.get((cx, cy, cz))
-                if not block.is_air and block.id not in falling.FLUIDS and block_shapes.collides(block):
-                    return True
-    return False
+                if block.is_air:
+                    continue
+                _not_fluid(block)
+                if block_shapes.collides(block):
+                    raise Unmodelled(f"{entity.type} inside a block (pushed out of it)")
 
 
 def _inside_fluid(state, entity) -> None:
     x, y, z = entity.pos
-    block = state.blocks_in(entity.dimension).get((int(np.floor(x)), int(np.floor(y)), int(np.floor(z))))
+    _not_fluid(state.blocks_in(entity.dimension).get((math.floor(x), math.floor(y), math.floor(z))))
+
+
+def _not_fluid(block) -> None:
     if block.id in falling.FLUIDS or ("waterlogged", "true") in block.properties:
         raise Unmodelled(f"an entity in {block.id}")
