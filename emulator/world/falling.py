@@ -10,6 +10,12 @@ fall here.
 - ``fall(state, player)``: register a player whose physics the server ticks.
 - ``tick_falling(state)``: each such player's tick; ``tick_is_idle(state)``.
 - ``jump(state, player)``: LivingEntity.jumpFromGround (Player's: the ``jump`` statistic, exhaustion).
+- ``move(state, entity, motion)``: Entity.move for any entity (the one there is: the other entities'
+  ticks in :mod:`emulator.world.motion` move through it); ``collide(blocks, box, motion)``:
+  Entity.collideBoundingBox against the full cubes, y first, then x and z (Direction.axisStepOrder).
+  A stopped horizontal axis zeroes its motion; a living entity that walks into a wall on the ground
+  would step up (maxUpStep 0.6): not modelled. Fall damage is a living entity's (not an armor
+  stand's: ArmorStand.hurt refuses a fall).
 
 One tick (LivingEntity.aiStep, travel; Entity.move, checkFallDamage):
 1. a motion component under 0.003 in size becomes 0;
@@ -29,7 +35,7 @@ player just placed on a block with no motion is not on the ground for its first 
 is zero, so not stopped going down). The fall distance is the float of 1.21-1.21.4 (1.21.5 made
 it a double: a fall distance there can differ in its last bits).
 
-Not modelled (Unmodelled, reported once): horizontal motion (friction, walls, stepping up), a
+Not modelled (Unmodelled, reported once): a dummy's horizontal motion (friction, stepping up), a
 block whose shape is not a full cube or empty, water and lava (they reset and slow the fall),
 slime blocks and beds (they bounce), levitation, spectators (no collision).
 
@@ -129,7 +135,7 @@ def move(state, entity, motion) -> tuple[float, float, float]:
     (the entity's ``motion`` is left to the caller)."""
     dx, dy, dz = motion
     blocks = state.blocks_in(entity.dimension)
-    (mx, my, mz), below = _collide(blocks, entity.bounding_box, motion)
+    (mx, my, mz), below = collide(blocks, entity.bounding_box, motion)
     if mx * mx + my * my + mz * mz > EPSILON:  # Entity.move: lengthSqr > 1.0E-7
         px, py, pz = entity.pos
         entity.pos = (px + mx, py + my, pz + mz)
@@ -145,7 +151,7 @@ def move(state, entity, motion) -> tuple[float, float, float]:
     return (0.0 if stopped_x else dx), (0.0 if stopped_y else dy), (0.0 if stopped_z else dz)
 
 
-def _collide(blocks, box, motion):
+def collide(blocks, box, motion):
     """Entity.collideBoundingBox for the full cubes around ``box`` (Shapes.collide, axis by axis:
     y, then the larger of x and z last, Direction.axisStepOrder): the move allowed, and the block
     a move down stopped on (else None)."""

@@ -139,11 +139,11 @@ def _held(entity) -> bool:
 def _idle(state, entity) -> bool:
     """Whether the entity's tick would change nothing: a living entity that does not travel and has
     no motion, one without gravity or motion off the ground, or one resting on a full cube (on the
-    ground, no fall distance, the motion its last landing left: (0, -gravity x 0.98F, 0)); one that
-    is not moved here. An item, orb, TNT or falling
-    block always changes (its age, its fuse). The VM ends a batch of ticks after a root that moved
-    a living entity (``tp``, ``execute store`` into its Pos or Motion), so a rest seen before a
-    batch holds through it; a block changes only by a host command, which ends the batch too."""
+    ground, no fall distance, the motion its last landing left: (0, -gravity x 0.98F, 0), nothing
+    its tick would report); one that is not moved here. An item, orb, TNT or falling block always
+    changes (its age, its fuse). The VM ends a batch of ticks after a root that moved a living
+    entity (``tp``, ``execute store`` into its Pos or Motion), so a rest seen before a batch holds
+    through it; a block changes only by a host command, which ends the batch too."""
     if entity.type in GRAVITY:
         return not entity.alive or entity in state.not_moving
     if not entity.alive or entity in state.not_moving or entity.vehicle is not None:
@@ -158,11 +158,14 @@ def _idle(state, entity) -> bool:
     rest = (0.0 - gravity) * DRAG_F
     if entity.motion != (0.0, rest, 0.0):
         return False
+    if living.effect_amplifier(entity, "minecraft:levitation") is not None:
+        return False
     try:
-        moved, _ = falling._collide(state.blocks_in(entity.dimension), entity.bounding_box, (0.0, rest, 0.0))
+        _inside_fluid(state, entity)
+        moved, below = falling.collide(state.blocks_in(entity.dimension), entity.bounding_box, (0.0, rest, 0.0))
     except Unmodelled:
         return False
-    return moved[1] == 0.0
+    return moved[1] == 0.0 and below is not None and below.id not in falling.BOUNCY
 
 
 def tick_is_idle(state) -> bool:
