@@ -216,4 +216,6 @@ def test_a_beehive_above_does_not_block_item_entities(tmp_path):
     emu.call("t:p")
     emu.tick(1)
     assert _items(emu, (0, 0, 0)) == {0: ("dirt", 1)} and _items(emu, (4, 0, 0)) == {}
-    assert not [d for d in emu.diagnostics if d.unmodelled]
+    # the only thing not modelled: the game pushes an item out of the block it is in (ItemEntity.tick)
+    assert {d.message for d in emu.diagnostics if d.unmodelled} == {
+        "minecraft:item moving: minecraft:item inside a block (pushed out of it)"}
