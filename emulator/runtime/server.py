@@ -22,7 +22,7 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    (:func:`emulator.world.block_use.tick_menus`), a crafter that crafted counts its 6 ticks of
    ``crafting`` down (:func:`emulator.world.crafters.tick_crafting`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`); arrows,
-   tridents and snowballs fly, and another projectile made in flight since the last tick is
+   tridents, snowballs and thrown items fly, and another projectile made in flight since the last tick is
    reported as not modelled (it would have moved: :func:`emulator.world.projectiles.tick_flying`);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`); the block entities tick (:mod:`emulator.world.block_entity_ticks`); a mob in or

@@ -251,12 +251,7 @@ def _listeners(stack: ItemStack, name: str | None, version) -> list:
     effects), a suspicious stew's effects, an ominous bottle's bad omen."""
     gives = []
     if version >= FOOD_VERSION:
-        contents = stack.component("minecraft:potion_contents")
-        if isinstance(contents, String):
-            contents = Compound(potion=contents)
-        if isinstance(contents, Compound):
-            gives += _potion(str(contents.get("potion", "")))
-            gives += [_instance(e) for e in contents.get("custom_effects", List())]
+        gives += potion_effects(stack, version)
         stew = stack.component("minecraft:suspicious_stew_effects")
         if isinstance(stew, List):
             gives += [(str(e.get("id", "")), _stew_ticks(e), 0) for e in stew]
@@ -271,6 +266,19 @@ def _listeners(stack: ItemStack, name: str | None, version) -> list:
     elif name == "suspicious_stew":
         raise Unmodelled("a suspicious stew's effects in the NBT form before 1.20.5")
     return gives
+
+
+def potion_effects(stack: ItemStack, version) -> list:
+    """PotionContents.getAllEffects (1.20.5+): the (effect, duration, amplifier) of the stack's
+    potion, then its custom effects."""
+    if tuple(version) < FOOD_VERSION:
+        raise Unmodelled("a potion's effects in the NBT form before 1.20.5")
+    contents = stack.component("minecraft:potion_contents")
+    if isinstance(contents, String):
+        contents = Compound(potion=contents)
+    if not isinstance(contents, Compound):
+        return []
+    return _potion(str(contents.get("potion", ""))) + [_instance(e) for e in contents.get("custom_effects", List())]
 
 
 def _stew_ticks(entry) -> int:

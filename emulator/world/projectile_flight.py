@@ -1,7 +1,8 @@
-"""Arrows, tridents and snowballs moved tick by tick as the game moves them (from 1.20.5, when
-gravity became the entity's own double): motion, gravity, drag and rotation, hitting blocks
-(arrows stick: ``inGround``; snowballs break), lying in the ground (``life``, despawning after
-1200 ticks, falling when the block under them goes).
+"""Arrows, tridents, snowballs and thrown items (eggs, ender pearls, experience bottles, potions)
+moved tick by tick as the game moves them (from 1.20.5, when gravity became the entity's own
+double): motion, gravity, drag and rotation, hitting blocks and entities (arrows stick:
+``inGround``; a thrown one's hit ends it: :mod:`emulator.world.thrown_hits`), lying in the ground
+(``life``, despawning after 1200 ticks, falling when the block under them goes).
 
 - ``MODELLED``: the types moved here; ``step(state, entity)``: one tick of one of them.
 
@@ -9,12 +10,19 @@ A snowball that meets a living entity hurts it by 0 (3 a blaze) as ``thrown`` da
 responsible for (HurtTime, ``player_hurt_entity`` with the snowball as direct entity) and breaks;
 the hit's knockback is not modelled.
 
+Gravity (getDefaultGravity): 0.05 an arrow or a potion, 0.07 an experience bottle, 0.03 a
+snowball, egg or ender pearl. Until it has left its owner (Projectile.checkLeftOwner: neither the
+owner nor what rides with it in its box stretched along its motion and inflated by 1, then
+``LeftOwner``) a projectile does not hit them (Projectile.canHitEntity); the check comes first in
+an arrow's tick and a 1.21 thrown one's, after the move in a 1.21.2+ thrown one's.
+
 Each tick (AbstractArrow.tick; ThrowableProjectile.tick) the projectile clips the segment from its
 position along its motion against the blocks' collision shapes (:mod:`emulator.world.ray`). An
 arrow in flight moves along its motion (to the hit when it hits: AbstractArrow.onHitBlock), its
-motion scaled by 0.99F and gravity 0.05 taken from it (not when it stuck, from 1.21.2); a snowball's
-gravity 0.03 and drag come before its move from 1.21.2, after it before, and a hit removes it
-(Snowball.onHit: discard). The rotation turns a fifth of the way to the motion's (lerpRotation);
+motion scaled by 0.99F and gravity 0.05 taken from it (not when it stuck, from 1.21.2); a thrown
+one's gravity and drag come before its move from 1.21.2, after it before. A thrown one's hit
+(ThrowableProjectile.tick: hitTargetOrDeflectSelf) acts in 1.21 from where it stood at the start of
+the tick, from 1.21.2 from the hit (an entity's: its position, EntityHitResult(entity)). The rotation turns a fifth of the way to the motion's (lerpRotation);
 before 1.21.2 an arrow whose previous rotation is 0, 0 takes the motion's at once.
 
 A block hit (1.21 / 1.21.2+): the arrow's motion becomes the way to the hit, it steps back 0.05
@@ -29,11 +37,11 @@ target glows for the arrow's ``Duration`` (SpectralArrow.doPostHurtEffects).
 
 Not modelled (raises Unmodelled, the test is inconclusive): a critical, piercing or tipped arrow's
 hit, a trident's, a spectral arrow hitting a player, an arrow bouncing off (a hurt that fails), a player's arrow
-hitting a player, ``killed_by_arrow``, a snowball hitting what is not living or its owner before it
-left it, a projectile in water or passing blocks that act on what is inside them
+hitting a player, ``killed_by_arrow``, what :mod:`emulator.world.thrown_hits` does not model of a
+thrown one's hit, a projectile in water or passing blocks that act on what is inside them
 (pressure plates, buttons, tripwires, cobwebs, fire, portals ...), hitting a target block or TNT,
 an arrow falling with motion (random), a player picking an arrow up, a burning projectile, a
-trident with Loyalty, other projectiles (eggs, pearls, potions, fireballs ...) and releases
+trident with Loyalty, other projectiles (fireballs, wind charges, llama spit ...) and releases
 before 1.20.5 (gravity was a float then).
 
 Sources (decompiled 1.21, and 1.21.2+ from the decompiled classes the wiki's search reaches):
@@ -41,7 +49,7 @@ world/entity/projectile/AbstractArrow.java (tick, stepMoveAndHit, onHitBlock, sh
 startFalling, tickDespawn, getWaterInertia), ThrowableProjectile.java (tick, applyInertia,
 getDefaultGravity), Projectile.java (updateRotation, lerpRotation, canHitEntity, checkLeftOwner),
 ProjectileUtil.java (getEntityHitResult: the nearest box, inflated by 0.3, the segment enters),
-Snowball.java (onHit, onHitEntity), ThrownTrident.java, damagesource/DamageSources.java (thrown), world/entity/Entity.java (applyGravity, getGravity).
+ThrownPotion.java, ThrownExperienceBottle.java (getDefaultGravity), ThrownTrident.java, damagesource/DamageSources.java (thrown), world/entity/Entity.java (applyGravity, getGravity).
 """
 from __future__ import annotations
 
@@ -49,7 +57,7 @@ import math
 
 import numpy as np
 
-from emulator.world import block_shapes, combat, living, mth, ray
+from emulator.world import block_shapes, combat, living, mth, ray, thrown_hits
 from emulator.world.errors import Unmodelled
 from emulator.world.items import enchantment_level, enchantment_levels, from_nbt
 from emulator.world.loot_context import DamageSource
@@ -58,11 +66,14 @@ from mcfunction_parser.nbt import Byte, Compound, Short, String
 
 F32 = np.float32
 ARROWS = frozenset(("minecraft:arrow", "minecraft:spectral_arrow", "minecraft:trident"))
-THROWN = frozenset(("minecraft:snowball",))
+# ThrowableProjectile.getDefaultGravity 0.03; ThrownPotion 0.05 (1.21.5+ AbstractThrownPotion); ThrownExperienceBottle 0.07
+THROWN_GRAVITY = {**dict.fromkeys(("minecraft:snowball", "minecraft:egg", "minecraft:ender_pearl"), 0.03),
+                  **dict.fromkeys(thrown_hits.POTIONS, 0.05), "minecraft:experience_bottle": 0.07}
+THROWN = frozenset(THROWN_GRAVITY)
 MODELLED = ARROWS | THROWN
 FIRST_RELEASE = (1, 20, 5)  # Entity.getDefaultGravity (a double) from here
 STEP_AND_HIT = (1, 21, 2)  # AbstractArrow.stepMoveAndHit; throwables' gravity and drag before the move
-ARROW_GRAVITY, THROWN_GRAVITY = 0.05, 0.03
+ARROW_GRAVITY = 0.05
 DRAG = float(F32(0.99))  # 0.99F widened
 HIT_STEP = float(F32(0.05))  # 0.05F widened
 DESPAWN = 1200
@@ -88,7 +99,7 @@ SOUND_HIT = "minecraft:entity.arrow.hit"
 
 
 def step(state, entity) -> None:
-    """One tick of an arrow, trident or snowball (:data:`MODELLED`)."""
+    """One tick of an arrow, trident, snowball or thrown item (:data:`MODELLED`)."""
     if tuple(state.version) < FIRST_RELEASE:
         raise Unmodelled(f"{entity.type} in flight before 1.20.5")
     if _int(entity.data, "Fire", -1) > 0:
@@ -104,6 +115,7 @@ def _arrow(state, entity) -> None:
     data, new = entity.data, tuple(state.version) >= STEP_AND_HIT
     if entity.type == "minecraft:trident" and _loyal(entity):
         raise Unmodelled("a trident with Loyalty (it returns to its owner)")
+    _check_left_owner(state, entity)  # Projectile.tick, first in AbstractArrow.tick
     yaw0, pitch0 = entity.yaw, entity.pitch
     motion = tuple(entity.motion)
     if not new and yaw0 == 0.0 and pitch0 == 0.0:  # 1.21: the first rotation is the motion's
@@ -202,7 +214,7 @@ def _nothing_near(state, entity) -> bool:
     x, y, z = entity.pos
     box = (x - 0.06, y - 0.06, z - 0.06, x + 0.06, y + 0.06, z + 0.06)
     blocks = state.blocks_in(entity.dimension)
-    return not any(not blocks.get(c).is_air and block_shapes.collides(blocks.get(c)) for c in _box_cells(box))
+    return not any(not blocks.get(c).is_air and block_shapes.collides(blocks.get(c)) for c in ray.box_cells(box))
 
 
 def _no_player_picks_up(state, entity) -> None:
@@ -220,67 +232,55 @@ def _no_player_picks_up(state, entity) -> None:
 
 # ---------------------------------------------------------------------- thrown
 def _thrown(state, entity) -> None:
-    """ThrowableProjectile.tick for a snowball: a hit removes it (Snowball.onHit)."""
+    """ThrowableProjectile.tick: 1.21 checks whether it left its owner (Projectile.tick), finds
+    the hit along its motion from where it stands, then moves, drags and falls; 1.21.2+ falls and
+    drags first, moves to the hit (an entity's: to the entity's position, EntityHitResult(entity)),
+    then checks its owner. A hit ends it (:func:`emulator.world.thrown_hits.hit`)."""
     blocks = state.blocks_in(entity.dimension)
     motion = tuple(entity.motion)
     _not_in_water(blocks, entity, motion)
     new = tuple(state.version) >= STEP_AND_HIT
     if new:  # gravity, then drag, then the move by the new motion
-        motion = _scaled(_fallen(entity, motion, THROWN_GRAVITY), DRAG)
+        motion = _scaled(_fallen(entity, motion, THROWN_GRAVITY[entity.type]), DRAG)
+        entity.motion = motion
+    else:
+        _check_left_owner(state, entity)
     start = entity.pos
     hit = ray.clip_blocks(blocks, start, _add(start, motion))
     target = _entity_hit(state, entity, start, hit[0] if hit else _add(start, motion))
-    if target is not None:
-        _snowball_hits(state, entity, target)
-        return
-    if new:
-        entity.motion = motion
     yaw, pitch = _angles(motion)
-    entity.pitch, entity.yaw = _lerp_rotation(entity.pitch, pitch), _lerp_rotation(entity.yaw, yaw)
     if new:
-        entity.pos = hit[0] if hit else _add(start, motion)
-    else:
-        entity.pos = _add(start, motion)
-        entity.motion = _scaled(motion, DRAG)
-        _fall(entity, THROWN_GRAVITY)
-    if hit:
+        entity.pos = target.pos if target is not None else hit[0] if hit else _add(start, motion)
+        entity.pitch, entity.yaw = _lerp_rotation(entity.pitch, pitch), _lerp_rotation(entity.yaw, yaw)
+        _check_left_owner(state, entity)
+    if target is None and hit:
         block = blocks.get(hit[1])
         if block.id in _HIT_REACTIONS:
             raise Unmodelled(f"{entity.type} hitting {block.id} (its reaction to projectiles)")
-        state.entities.kill(entity)
+    if target is not None or hit:
+        thrown_hits.hit(state, entity, target, None if target is not None else hit[1])  # 1.21: from where it stood
+        return
+    if not new:
+        entity.pitch, entity.yaw = _lerp_rotation(entity.pitch, pitch), _lerp_rotation(entity.yaw, yaw)
+        entity.pos = _add(start, motion)
+        entity.motion = _scaled(motion, DRAG)
+        _fall(entity, THROWN_GRAVITY[entity.type])
 
 
-def _snowball_hits(state, snowball, target) -> None:
-    """Snowball.onHitEntity: ``thrown`` damage from the snowball, its owner responsible: 3 to a
-    blaze, else 0 (a hurt all the same: HurtTime, ``player_hurt_entity`` for a player's snowball);
-    then the snowball breaks (onHit: discard). An interaction entity is pickable but not hurt
-    (Entity.hurt): the snowball just breaks on it. Its owner before the snowball left it, and what
-    else is not living (boats, frames, crystals ...), are not modelled."""
-    owner = _owner(state, snowball)
-    if owner is not None and not _int(snowball.data, "LeftOwner", 0) and _root(target) is _root(owner):
-        raise Unmodelled(f"{snowball.type} meeting its owner before it left it (Projectile.checkLeftOwner)")
-    if target.type == "minecraft:interaction":
-        pass  # Entity.hurt: an interaction is not hurt (its attack record is a player's only)
-    elif not living.is_living(target.type):
-        raise Unmodelled(f"{snowball.type} hitting {target.type} (its hurt)")
-    else:
-        damage = 3.0 if target.type == "minecraft:blaze" else 0.0
-        combat.hurt(state, target, damage, DamageSource("minecraft:thrown", owner, snowball))
-    if snowball.alive:
-        state.entities.kill(snowball)
-
-
-def _owner(state, entity):
-    owner = entity.data.get("Owner")
-    if owner is None or len(owner) != 4:
-        return None
-    return state.entities.by_uuid(tuple(int(v) for v in owner))
-
-
-def _root(entity):
-    while entity.vehicle is not None:
-        entity = entity.vehicle
-    return entity
+def _check_left_owner(state, entity) -> None:
+    """Projectile.checkLeftOwner, until it did (``LeftOwner``): no pickable entity riding with its
+    owner (the owner itself too) in its box stretched along its motion and inflated by 1."""
+    data = entity.data
+    if _int(data, "LeftOwner", 0):
+        return
+    owner = thrown_hits.owner(state, entity)
+    if owner is not None:
+        near = _inflate(_swept(entity.bounding_box, entity.motion), 1.0, 1.0, 1.0)
+        riding = thrown_hits.root(owner)
+        if any(_intersects(near, other.bounding_box) and thrown_hits.root(other) is riding
+               for other in _pickable(state, entity)):
+            return
+    data["LeftOwner"] = Byte(1)
 
 
 # ---------------------------------------------------------------------- shared
@@ -314,7 +314,7 @@ def _arrow_hits(state, arrow, target, motion) -> None:
         reason = "an arrow piercing what it hits"
     elif _tipped(data) or _enchanted(data.get("weapon")):
         reason = "a tipped arrow's effects or its weapon's enchantments on a hit"
-    owner = _owner(state, arrow)
+    owner = thrown_hits.owner(state, arrow)
     if reason is None and target.is_player and owner is not None and owner.is_player:
         reason = "an arrow of a player hitting a player (Player.canHarmPlayer: teams)"
     if reason is not None:
@@ -363,8 +363,17 @@ def _entity_hit(state, entity, start, end):
 
 
 def _targets(state, entity):
-    """What the projectile could hit (Projectile.canHitEntity: pickable, alive, not a spectator);
-    its owner as well, which it cannot hit until it left it (the emulator does not follow that)."""
+    """What the projectile could hit (Projectile.canHitEntity): what is pickable, but what rides
+    with its owner (the owner too) until it left it (``LeftOwner``)."""
+    owner = None if _int(entity.data, "LeftOwner", 0) else thrown_hits.owner(state, entity)
+    riding = None if owner is None else thrown_hits.root(owner)
+    for other in _pickable(state, entity):
+        if riding is None or thrown_hits.root(other) is not riding:
+            yield other
+
+
+def _pickable(state, entity):
+    """Entity.canBeHitByProjectile: alive, pickable, not a spectator."""
     for other in state.entities.entities:
         if (other is entity or not other.alive or other.type in _NOT_PICKABLE or other.dimension != entity.dimension
                 or (other.is_player and other.gamemode == "spectator")
@@ -376,24 +385,13 @@ def _targets(state, entity):
 def _not_in_water(blocks, entity, motion) -> None:
     """Water slows a projectile (inertia 0.6, 0.8 or 0.99) and blocks such as pressure plates act on
     it: neither is modelled, so a box meeting one on its way raises Unmodelled."""
-    box = entity.bounding_box
-    swept = tuple(min(b, b + m) for b, m in zip(box[:3], motion)) + tuple(max(b, b + m) for b, m in zip(box[3:], motion))
-    for cell in _box_cells(swept):
+    for cell in ray.box_cells(_swept(entity.bounding_box, motion)):
         block = blocks.get(cell)
         if block.is_air:
             continue
         name = block.id.removeprefix("minecraft:")
         if any(part in name for part in _ACTS_INSIDE) or dict(block.properties).get("waterlogged") == "true":
             raise Unmodelled(f"{entity.type} in or through {block.id}")
-
-
-def _box_cells(box):
-    lo = [math.floor(c) for c in box[:3]]
-    hi = [math.floor(c) for c in box[3:]]
-    for x in range(lo[0], hi[0] + 1):
-        for y in range(lo[1], hi[1] + 1):
-            for z in range(lo[2], hi[2] + 1):
-                yield (x, y, z)
 
 
 def _loyal(entity) -> bool:
@@ -441,6 +439,11 @@ def _add(a, b):
 
 def _sign(x: float) -> float:
     return 0.0 if x == 0.0 else math.copysign(1.0, x)
+
+
+def _swept(box, motion):
+    """AABB.expandTowards: the box stretched along the motion."""
+    return tuple(min(b, b + m) for b, m in zip(box[:3], motion)) + tuple(max(b, b + m) for b, m in zip(box[3:], motion))
 
 
 def _inflate(box, dx, dy, dz):

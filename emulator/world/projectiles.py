@@ -1,8 +1,9 @@
-"""Projectiles: arrows, tridents and snowballs move each tick as the game moves them
-(:mod:`emulator.world.projectile_flight`); the others are not moved here.
+"""Projectiles: arrows, tridents, snowballs and thrown items (eggs, ender pearls, experience
+bottles, potions) move each tick as the game moves them (:mod:`emulator.world.projectile_flight`);
+the others (fireballs, wind charges, llama spit, rockets, eyes of ender) are not moved here.
 
-- ``launched(state, entity)``: an entity just made (``summon``, a crossbow's shot). An arrow,
-  trident or snowball is followed while it exists; another projectile that flies is watched until
+- ``launched(state, entity)``: an entity just made (``summon``, a crossbow's shot). One of those
+  moved here is followed while it exists; another projectile that flies is watched until
   the next tick.
 - ``tick_flying(state)``: each followed projectile takes its tick; one whose tick meets what is not
   modelled (:mod:`emulator.world.projectile_flight`) is reported, once for the run, and left where

@@ -8,6 +8,7 @@
   fluids (ClipContext.Block.COLLIDER, Fluid.NONE): ``(location, cell)`` of the first block hit, or
   None. The shapes known are full cubes and empty ones (:mod:`emulator.world.block_shapes`);
   another shape on the way raises Unmodelled.
+- ``box_cells(box)``: the block cells a box touches.
 
 Sources (decompiled 1.21): world/level/BlockGetter.java (clip, traverseBlocks), world/phys/AABB.java
 (clip, getDirection, clipPoint), world/phys/shapes/VoxelShape.java (clip: a start just inside the
@@ -103,3 +104,13 @@ def _clip_cube(cell, start, end):
     if all(0.0 <= p - c < 1.0 for p, c in zip(inside, cell)):
         return inside
     return clip((*cell, *(c + 1 for c in cell)), start, end)
+
+
+def box_cells(box):
+    """The block cells a box ``(x0, y0, z0, x1, y1, z1)`` touches, its faces included."""
+    lo = [math.floor(c) for c in box[:3]]
+    hi = [math.floor(c) for c in box[3:]]
+    for x in range(lo[0], hi[0] + 1):
+        for y in range(lo[1], hi[1] + 1):
+            for z in range(lo[2], hi[2] + 1):
+                yield (x, y, z)

@@ -96,17 +96,17 @@ def test_kill_and_tag_commands():
 
 
 @pytest.mark.parametrize("nbt,reported", [
-    ("", True),  # an egg falls with gravity from rest
+    ("", True),  # llama spit falls with gravity from rest
     ("{NoGravity:1b}", False),  # no gravity, no motion: it stays
     ("{NoGravity:1b,Motion:[0.0,0.0,0.5]}", True),
 ])
 def test_a_summoned_projectile_the_emulator_does_not_move_is_reported_in_flight(tmp_path, nbt, reported):
-    # ThrowableProjectile.tick moves an egg every tick (motion, gravity, drag, hits), and a hit
-    # may hatch chickens: eggs are not moved here (arrows and snowballs are: test_projectile_flight)
+    # LlamaSpit.tick moves the spit every tick (motion, gravity, drag, hits): it is not moved here
+    # (arrows, snowballs and thrown items are: test_projectile_flight, test_thrown_hits)
     from emulator import Emulator
     from tests.conftest import write_pack
     emu = Emulator(backend="python")
-    emu.load([write_pack(tmp_path / "p", {"demo/function/f.mcfunction": f"summon egg 0 0 0 {nbt}\n"})])
+    emu.load([write_pack(tmp_path / "p", {"demo/function/f.mcfunction": f"summon llama_spit 0 0 0 {nbt}\n"})])
     emu.call("demo:f")
     assert not any(d.unmodelled for d in emu.diagnostics)  # not yet: it has not moved in the game either
     emu.tick()
