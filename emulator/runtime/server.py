@@ -13,7 +13,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    (:class:`emulator.world.block_ticks.BlockTicks`); before 26.1 the day time then advances by
    one when ``doDaylightCycle`` is on (ServerLevel.tickTime); the weather advances before all of
    step 4 (ServerLevel.advanceWeatherCycle: :mod:`emulator.world.weather`);
-5. a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
+5. every burning entity's ``Fire`` counts down, hurting it each 20 ticks, water putting it out
+   (Entity.baseTick: :func:`emulator.world.burning.tick_burning`), a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
    items, experience orbs, primed TNT, mobs and armor stands move (:func:`emulator.world.motion.tick_moving`),
    every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
@@ -48,8 +49,8 @@ from collections.abc import Callable
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, combat, crafters, falling,
-                           living, motion, nbt_ops, player_actions, projectiles, statistics)
+from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, burning, combat, crafters,
+                           falling, living, motion, nbt_ops, player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -72,7 +73,13 @@ def _effects_step(state) -> None:
         advancements.effects_changed(state, entity, None)
 
 
-ENTITY_STEPS = ((falling.tick_falling, falling.tick_is_idle),
+def _burning_step(state) -> None:
+    """Burning entities' fire ticks (:func:`emulator.world.burning.tick_burning`), its hurt combat's."""
+    burning.tick_burning(state, combat.hurt)
+
+
+ENTITY_STEPS = ((_burning_step, burning.tick_is_idle),
+                (falling.tick_falling, falling.tick_is_idle),
                 (motion.tick_moving, motion.tick_is_idle),
                 (_effects_step, living.tick_is_idle),
                 (combat.tick_dead, combat.tick_is_idle),

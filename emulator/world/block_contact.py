@@ -9,7 +9,8 @@ cart up the track) never comes, and a test waiting for it must not fail as if th
 
 The blocks (decompiled 1.21, world/level/block/): BigDripleafBlock.entityInside (an entity on the
 leaf tilts it: onGround and above y + 0.6875), BasePressurePlateBlock.entityInside (pressed),
-TripWireBlock.entityInside (triggered), MagmaBlock.stepOn (hurts), FarmBlock.fallOn (trampled
+TripWireBlock.entityInside (triggered), MagmaBlock.stepOn (hurts), BaseFireBlock.entityInside and
+lava (Entity.lavaHurt: set on fire, hurt), FarmBlock.fallOn (trampled
 only by a fall, which needs movement: not listed), PowderSnowBlock.entityInside (freezes).
 Where the game looks: the block at the feet (Entity.checkInsideBlocks covers the bounding box; the
 feet are where these blocks sit) and the block under them (Entity.getOnPos: 0.2 below the feet).
@@ -21,7 +22,8 @@ import math
 MESSAGE = "a mob standing in or on {} (what the block does to it is not modelled here)"
 CART = "a minecart {} (a minecart riding its rails is not modelled here)"
 _INSIDE_SUFFIXES = ("_pressure_plate",)
-_INSIDE = frozenset({"minecraft:big_dripleaf", "minecraft:tripwire", "minecraft:powder_snow"})
+_INSIDE = frozenset({"minecraft:big_dripleaf", "minecraft:tripwire", "minecraft:powder_snow", "minecraft:fire",
+                    "minecraft:soul_fire", "minecraft:lava"})
 _STEP_ON = frozenset({"minecraft:magma_block"})
 _ON_POS_OFFSET = 0.2  # Entity.getOnPos(): getOnPos(0.2F)
 

@@ -46,8 +46,8 @@ from typing import Callable
 
 import numpy as np
 
-from emulator.world import (advancement_progress, biomes, campfires, entity_components, entity_predicate_format,
-                            inventories, light, living, recipes, sight)
+from emulator.world import (advancement_progress, biomes, burning, campfires, entity_components,
+                            entity_predicate_format, inventories, light, living, recipes, sight)
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -427,7 +427,7 @@ def _number_field(entity: Entity, key: str) -> float:
 
 
 _FLAGS = {
-    "is_on_fire": lambda e: _number_field(e, "Fire") > 0 or bool(_number_field(e, "HasVisualFire")),
+    "is_on_fire": lambda e: burning.is_on_fire(e),  # Entity.isOnFire on the server: not HasVisualFire
     "is_sneaking": lambda e: e.sneaking,
     "is_sprinting": lambda e: e.sprinting,
     "is_on_ground": lambda e: bool(_number_field(e, "OnGround")),

@@ -33,14 +33,16 @@ sits in changed and nothing is within 0.06 of it (AbstractArrow.shouldFall: it f
 
 An arrow that meets a living entity first hurts it by ceil(speed x ``damage``) as ``arrow``
 damage its owner is responsible for and is gone (AbstractArrow.onHitEntity); a spectral arrow's
-target glows for the arrow's ``Duration`` (SpectralArrow.doPostHurtEffects).
+target glows for the arrow's ``Duration`` (SpectralArrow.doPostHurtEffects). A burning arrow
+(:func:`emulator.world.burning.is_on_fire`) first sets what it hits on fire for 100 ticks
+(igniteForSeconds(5.0F)); its own ``Fire`` counts down as any entity's (:mod:`emulator.world.burning`).
 
 Not modelled (raises Unmodelled, the test is inconclusive): a critical, piercing or tipped arrow's
 hit, a trident's, a spectral arrow hitting a player, an arrow bouncing off (a hurt that fails), a player's arrow
 hitting a player, ``killed_by_arrow``, what :mod:`emulator.world.thrown_hits` does not model of a
 thrown one's hit, a projectile in water or passing blocks that act on what is inside them
 (pressure plates, buttons, tripwires, cobwebs, fire, portals ...), hitting a target block or TNT,
-an arrow falling with motion (random), a player picking an arrow up, a burning projectile, a
+an arrow falling with motion (random), a player picking an arrow up, catching fire on the way, a
 trident with Loyalty, other projectiles (fireballs, wind charges, llama spit ...) and releases
 before 1.20.5 (gravity was a float then).
 
@@ -57,7 +59,7 @@ import math
 
 import numpy as np
 
-from emulator.world import block_shapes, combat, living, mth, ray, thrown_hits
+from emulator.world import block_shapes, burning, combat, living, mth, ray, thrown_hits
 from emulator.world.errors import Unmodelled
 from emulator.world.items import enchantment_level, enchantment_levels, from_nbt
 from emulator.world.loot_context import DamageSource
@@ -80,6 +82,7 @@ DESPAWN = 1200
 SHAKE = 7
 BASE_DAMAGE = 2.0  # AbstractArrow.baseDamage
 SPECTRAL_GLOWING = 200  # SpectralArrow.duration
+ARROW_IGNITES = 100  # AbstractArrow.onHitEntity: igniteForSeconds(5.0F)
 _PLAIN_ARROWS = frozenset(("minecraft:arrow", "minecraft:spectral_arrow"))
 ENTITY_MARGIN = 0.3  # ProjectileUtil: the target's box inflated by 0.3
 _RAD_TO_DEG = float(mth.RAD_TO_DEG)
@@ -102,8 +105,6 @@ def step(state, entity) -> None:
     """One tick of an arrow, trident, snowball or thrown item (:data:`MODELLED`)."""
     if tuple(state.version) < FIRST_RELEASE:
         raise Unmodelled(f"{entity.type} in flight before 1.20.5")
-    if _int(entity.data, "Fire", -1) > 0:
-        raise Unmodelled(f"a burning {entity.type}")
     if entity.type in ARROWS:
         _arrow(state, entity)
     else:
@@ -322,7 +323,12 @@ def _arrow_hits(state, arrow, target, motion) -> None:
     speed = float(F32(math.sqrt(sum(m * m for m in motion))))
     base = float(numeric_value(data["damage"])) if is_numeric(data.get("damage")) else BASE_DAMAGE
     damage = _ceil(min(max(speed * base, 0.0), 2.147483647E9))
+    fire_before = target.data.get("Fire")
+    if burning.is_on_fire(arrow):  # a burning arrow sets what it hits on fire for 5 seconds
+        burning.ignite_for_ticks(target, ARROW_IGNITES)
     if not combat.hurt(state, target, float(damage), DamageSource("minecraft:arrow", owner or arrow, arrow)):
+        if fire_before is not None:
+            target.data["Fire"] = fire_before  # its fire as it was (setRemainingFireTicks)
         raise Unmodelled(f"an arrow bouncing off {target.type} (its hurt failed: ProjectileDeflection.REVERSE)")
     if spectral:  # SpectralArrow.doPostHurtEffects: glowing for its Duration
         living.give_effect(state, target, "minecraft:glowing", _int(data, "Duration", SPECTRAL_GLOWING), 0, True)

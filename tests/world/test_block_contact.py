@@ -72,3 +72,12 @@ def test_a_minecart_that_would_ride_its_rails_is_reported(tmp_path):
     emu.call("t:go")
     emu.tick(2)
     assert _reported(emu) == [CART.format("on a powered rail"), CART.format("with motion")]
+
+
+@pytest.mark.parametrize("block", ["fire", "lava"])
+def test_a_mob_in_fire_or_lava_is_reported(tmp_path, block):
+    # BaseFireBlock.entityInside / Entity.lavaHurt set what is inside on fire: not modelled
+    emu = emulator(tmp_path, "python", {"t:s": f"setblock 0 5 0 {block}\nsummon pig 0.5 5 0.5 {{NoAI:1b}}"})
+    emu.call("t:s")
+    emu.tick()
+    assert _reported(emu) == [MESSAGE.format("minecraft:" + block)]
