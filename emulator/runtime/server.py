@@ -24,7 +24,9 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    ``crafting`` down (:func:`emulator.world.crafters.tick_crafting`) and every
    player earns the per-tick statistics (:func:`emulator.world.statistics.tick_players`); arrows,
    tridents, snowballs and thrown items fly, and another projectile made in flight since the last tick is
-   reported as not modelled (it would have moved: :func:`emulator.world.projectiles.tick_flying`);
+   reported as not modelled (it would have moved: :func:`emulator.world.projectiles.tick_flying`),
+   after area effect clouds age, shrink and affect who is in them (:func:`emulator.world.effect_clouds.
+   tick_clouds`: one a potion makes this tick first ticks on the next, as the game's entity list);
 6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`); the block entities tick (:mod:`emulator.world.block_entity_ticks`); a mob in or
    on a block that would act on it is reported as not modelled (:mod:`emulator.world.block_contact`).
@@ -50,7 +52,7 @@ from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
 from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, burning, combat, crafters,
-                           falling, living, motion, nbt_ops, player_actions, projectiles, statistics)
+                           effect_clouds, falling, living, motion, nbt_ops, player_actions, projectiles, statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -87,6 +89,7 @@ ENTITY_STEPS = ((_burning_step, burning.tick_is_idle),
                 (block_use.tick_menus, block_use.tick_is_idle),
                 (crafters.tick_crafting, crafters.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),
+                (effect_clouds.tick_clouds, effect_clouds.tick_is_idle),  # before a potion makes one (not ticked then)
                 (projectiles.tick_flying, projectiles.tick_is_idle),
                 (advancements.tick_players, advancements.tick_is_idle),
                 (block_entity_ticks.tick_block_entities, block_entity_ticks.tick_is_idle),

@@ -227,7 +227,7 @@ def _no_player_picks_up(state, entity) -> None:
     for player in state.entities.players():
         if player.alive and player.gamemode != "spectator" and player.dimension == entity.dimension:
             near = _inflate(player.bounding_box, 1.0, 0.5, 1.0)
-            if _intersects(near, box):
+            if ray.boxes_meet(near, box):
                 raise Unmodelled(f"{player.display_name} touching a stuck {entity.type} (picking it up)")
 
 
@@ -278,7 +278,7 @@ def _check_left_owner(state, entity) -> None:
     if owner is not None:
         near = _inflate(_swept(entity.bounding_box, entity.motion), 1.0, 1.0, 1.0)
         riding = thrown_hits.root(owner)
-        if any(_intersects(near, other.bounding_box) and thrown_hits.root(other) is riding
+        if any(ray.boxes_meet(near, other.bounding_box) and thrown_hits.root(other) is riding
                for other in _pickable(state, entity)):
             return
     data["LeftOwner"] = Byte(1)
@@ -454,10 +454,6 @@ def _swept(box, motion):
 
 def _inflate(box, dx, dy, dz):
     return (box[0] - dx, box[1] - dy, box[2] - dz, box[3] + dx, box[4] + dy, box[5] + dz)
-
-
-def _intersects(a, b) -> bool:
-    return all(a[i] < b[i + 3] and a[i + 3] > b[i] for i in range(3))
 
 
 def _int(data: Compound, key: str, default: int) -> int:

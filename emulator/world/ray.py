@@ -8,7 +8,7 @@
   fluids (ClipContext.Block.COLLIDER, Fluid.NONE): ``(location, cell)`` of the first block hit, or
   None. The shapes known are full cubes and empty ones (:mod:`emulator.world.block_shapes`);
   another shape on the way raises Unmodelled.
-- ``box_cells(box)``: the block cells a box touches.
+- ``box_cells(box)``: the block cells a box touches; ``boxes_meet(a, b)``: AABB.intersects.
 
 Sources (decompiled 1.21): world/level/BlockGetter.java (clip, traverseBlocks), world/phys/AABB.java
 (clip, getDirection, clipPoint), world/phys/shapes/VoxelShape.java (clip: a start just inside the
@@ -114,3 +114,8 @@ def box_cells(box):
         for y in range(lo[1], hi[1] + 1):
             for z in range(lo[2], hi[2] + 1):
                 yield (x, y, z)
+
+
+def boxes_meet(a, b) -> bool:
+    """AABB.intersects: the boxes overlap (touching faces do not)."""
+    return all(a[i] < b[i + 3] and a[i + 3] > b[i] for i in range(3))

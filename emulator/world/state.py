@@ -518,6 +518,7 @@ class WorldState:
     # what the game keeps on its entities without saving it, held weakly (a removed entity drops out)
     open_menus: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (level, pos) (block_use)
     hurt_timers: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> [invulnerableTime, lastHurt] (living)
+    cloud_victims: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # area effect cloud -> {entity: until}
     swung: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> game time of its last swing (living)
     last_hurt_by: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (attacker, game time) (combat)
     last_attacker: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (living attacker, game time) (combat)

@@ -30,16 +30,16 @@ Per type (decompiled 1.21; the 1.21.5 split of ``potion`` into ``splash_potion``
   living entity in that range by 1 (``indirect_magic``) and puts out each burning one
   (ThrownPotion.applyWater);
 - a lingering potion leaves an ``area_effect_cloud`` at the potion (Radius 3, RadiusOnUse -0.5,
-  WaitTime 10, RadiusPerTick -3/600, its potion contents, its living owner:
-  ThrownPotion.makeAreaOfEffectCloud).
+  WaitTime 10, RadiusPerTick -3/600, Duration 600, ReapplicationDelay 20, its potion contents, its
+  living owner: ThrownPotion.makeAreaOfEffectCloud), which then ticks
+  (:mod:`emulator.world.effect_clouds`).
 
 Not modelled (raise Unmodelled, the test is inconclusive): hitting an entity that is not living
 (boats, frames, crystals: its own hurt), an egg's chick that would be inside a block
 (fudgePositionAfterSizeChange), an ender pearl owner in another dimension or sleeping, a water
 bottle's block hit that would put out fire, candles or campfires (dowseFire) or its axolotls'
 rehydration, a potion's ``potion_duration_scale`` (1.21.5+), the mobs immune to an effect
-(LivingEntity.canBeAffected), an experience orb merging into one nearby (entity ids), and the area
-effect cloud's own tick (it stays as made: :mod:`emulator.world.projectiles` says so).
+(LivingEntity.canBeAffected) and an experience orb merging into one nearby (entity ids).
 """
 from __future__ import annotations
 
@@ -62,7 +62,8 @@ PEARL_FALL_DAMAGE = 5.0
 ENDERMITE_CHANCE = 0.05
 # LivingEntity.isSensitiveToWater: hurt by a water bottle
 WATER_SENSITIVE = frozenset("minecraft:" + n for n in ("enderman", "blaze", "snow_golem", "strider"))
-_CLOUD = dict(Radius=3.0, RadiusOnUse=-0.5, WaitTime=10, Duration=600)  # makeAreaOfEffectCloud
+# makeAreaOfEffectCloud over a new cloud's fields (duration 600, reapplicationDelay 20)
+_CLOUD = dict(Radius=3.0, RadiusOnUse=-0.5, WaitTime=10, Duration=600, ReapplicationDelay=20)
 
 
 def hit(state, projectile, target, cell=None) -> None:
@@ -181,7 +182,7 @@ def _in_range(state, potion):
         if not other.alive or other.dimension != potion.dimension or not living.is_living(other.type):
             continue
         box = other.bounding_box
-        if not all(area[i] < box[i + 3] and area[i + 3] > box[i] for i in range(3)):
+        if not ray.boxes_meet(area, box):
             continue
         distance = sum((a - b) ** 2 for a, b in zip(other.pos, potion.pos))
         if distance < SPLASH_RANGE * SPLASH_RANGE:
@@ -193,13 +194,13 @@ def _splash(state, potion, target, effects) -> None:
     source = owner(state, potion)
     given_by = source or potion  # Projectile.getEffectSource
     for entity, distance in list(_in_range(state, potion)):
-        if entity.type == "minecraft:armor_stand" or living.health(entity) <= 0:  # isAffectedByPotions
+        if not affected_by_potions(entity):
             continue
         scale = 1.0 if entity is target else 1.0 - math.sqrt(distance) / SPLASH_RANGE
         changed = False
         for effect_id, duration, amplifier in effects:
             if effect_id in living.INSTANT:
-                _instant(state, potion, source, entity, effect_id, amplifier, scale)
+                instant_effect(state, potion, source, entity, effect_id, amplifier, scale)
                 continue
             scaled = duration if duration == living.INFINITE else int(scale * duration + 0.5)
             if scaled != living.INFINITE and scaled <= 20:  # MobEffectInstance.endsWithin(20)
@@ -209,16 +210,22 @@ def _splash(state, potion, target, effects) -> None:
             advancements.effects_changed(state, entity, given_by)
 
 
-def _instant(state, potion, source, entity, effect_id: str, amplifier: int, scale: float) -> None:
-    """HealOrHarmMobEffect.applyInstantenousEffect with the splash's scale."""
+def affected_by_potions(entity) -> bool:
+    """LivingEntity.isAffectedByPotions: not dying; never an armor stand."""
+    return entity.type != "minecraft:armor_stand" and living.health(entity) > 0
+
+
+def instant_effect(state, direct, source, entity, effect_id: str, amplifier: int, scale: float) -> None:
+    """HealOrHarmMobEffect.applyInstantenousEffect at ``scale`` from ``direct`` (a potion, a cloud)
+    of ``source`` (its owner)."""
     if effect_id == "minecraft:saturation":
-        raise Unmodelled("a splash potion's saturation (players' hunger)")
+        raise Unmodelled("saturation from a potion or cloud (players' hunger)")
     heals = (effect_id == "minecraft:instant_health") != (entity.type in living.UNDEAD)
     amount = int(scale * float(_shifted(4 if heals else 6, amplifier)) + 0.5)
     if heals:
         living.heal(entity, float(amount))
     else:
-        combat.hurt(state, entity, float(amount), DamageSource("minecraft:indirect_magic", source, potion))
+        combat.hurt(state, entity, float(amount), DamageSource("minecraft:indirect_magic", source, direct))
 
 
 def _shifted(base: int, amplifier: int) -> int:
@@ -256,6 +263,7 @@ def _cloud(state, potion, contents) -> None:
     """ThrownPotion.makeAreaOfEffectCloud."""
     data = Compound(Radius=Float(_CLOUD["Radius"]), RadiusOnUse=Float(_CLOUD["RadiusOnUse"]),
                     WaitTime=Int(_CLOUD["WaitTime"]), Duration=Int(_CLOUD["Duration"]),
+                    ReapplicationDelay=Int(_CLOUD["ReapplicationDelay"]),
                     RadiusPerTick=Float(float(-F32(_CLOUD["Radius"]) / F32(_CLOUD["Duration"]))))
     data["potion_contents"] = contents if isinstance(contents, Compound) else Compound(potion=String(str(contents)))
     thrower = owner(state, potion)

@@ -173,3 +173,15 @@ def test_an_experience_bottle_drops_3_to_11_points_of_orbs(tmp_path):
     emu.tick()
     points = 3 + rng.randrange(5) + rng.randrange(5)
     assert sum(int(o.data["Value"]) for o in of_type(emu, "minecraft:experience_orb")) == points
+
+
+def test_a_lingering_potions_cloud_poisons_after_its_wait(tmp_path):
+    # the cloud waits 10 ticks, then on Age 10 (a multiple of 5) gives a quarter of poison's 900
+    emu = world(tmp_path, "fill -2 9 -2 2 9 2 stone\nsummon pig 1.5 10 0.5 {NoAI:1b}\n"
+                          'summon potion 0.5 10.2 0.5 {Motion:[0.0d,-0.5d,0.0d],Item:{id:"lingering_potion",'
+                          'components:{"minecraft:potion_contents":"minecraft:poison"}}}\n')
+    emu.tick(10)  # the cloud is made on the first tick and first ticks on the next: Age 9
+    [pig] = of_type(emu, "minecraft:pig")
+    assert effects(pig) == {}
+    emu.tick()
+    assert effects(pig) == {"minecraft:poison": 225}
