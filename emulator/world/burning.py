@@ -8,9 +8,8 @@ counts them.
   (``HasVisualFire`` only shows on clients).
 - ``ignite_for_ticks(entity, ticks)``: Entity.igniteForTicks: ``Fire`` raised to ``ticks``.
 
-Each tick (Entity.baseTick) an entity touching water is put out first (updateInWaterState...:
-clearFire, ``Fire`` 0: its box, less 0.001, meets a water cell, or a waterlogged block, whose
-fluid top - 8/9 of the cell, or all of it under more water - is at or above its feet); then one
+Each tick (Entity.baseTick) an entity in water (:func:`emulator.world.fluids.in_water`) is put out
+first (updateInWaterStateAndDoWaterCurrentPushing: clearFire, ``Fire`` 0); then one
 with ``Fire`` > 0 burns: a fire-immune type (EntityType.fireImmune: blaze, ghast, magma cube,
 strider, wither ...) loses 4 ticks and is cleared to 0 below it; any other is hurt by 1 as
 ``on_fire`` damage when ``Fire`` is a multiple of 20 (a living one: HurtTime, death, the hurt's
@@ -26,14 +25,11 @@ no fire hurt there), and catching fire from fire blocks or lava (reported by
 
 Sources (decompiled 1.21): world/entity/Entity.java (baseTick, igniteForTicks, igniteForSeconds,
 clearFire, isOnFire, updateInWaterStateAndDoWaterCurrentPushing, updateFluidHeightAndDoFluidPushing),
-world/entity/EntityType.java (fireImmune), world/level/material/FlowingFluid.java (getHeight,
-getOwnHeight), world/entity/LivingEntity.java (hurt: fire resistance).
+world/entity/EntityType.java (fireImmune), world/entity/LivingEntity.java (hurt: fire resistance).
 """
 from __future__ import annotations
 
-import math
-
-from emulator.world import living
+from emulator.world import fluids, living, ray
 from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import DamageSource
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -52,7 +48,6 @@ _OWN_HURT = ("minecraft:item", "minecraft:experience_orb", "minecraft:armor_stan
 _OWN_HURT_SUFFIXES = ("boat", "_raft", "minecart")
 HURT_EVERY = 20
 IMMUNE_STEP = 4
-_WATER_HEIGHT = 8.0 / 9.0  # FlowingFluid.getOwnHeight of a source: amount 8 / 9
 
 
 def fire(entity) -> int:
@@ -85,7 +80,7 @@ def tick_burning(state, hurt) -> None:
     for entity in _burning(state):
         if not entity.alive or (entity.is_player and entity.gamemode == "spectator"):
             continue
-        if _in_water(state, entity):
+        if fluids.in_water(state.blocks_in(entity.dimension), entity.bounding_box):
             entity.data["Fire"] = Short(0)  # clearFire
             continue
         ticks = fire(entity)
@@ -120,42 +115,4 @@ def _in(state, entity, fluid: str) -> bool:
     """Whether the box (less 0.001) meets a block of ``fluid`` (its whole cell: lava is only
     reported)."""
     blocks = state.blocks_in(entity.dimension)
-    box = _cells_of(entity)
-    return any(blocks.get(c).id == "minecraft:" + fluid for c in _cells(box))
-
-
-def _in_water(state, entity) -> bool:
-    """Entity.updateFluidHeightAndDoFluidPushing(WATER): a water cell whose fluid top is at or
-    above the box's bottom (the box less 0.001)."""
-    blocks = state.blocks_in(entity.dimension)
-    box = _cells_of(entity)
-    for cell in _cells(box):
-        height = _water_height(blocks, cell)
-        if height is not None and cell[1] + height >= box[1]:
-            return True
-    return False
-
-
-def _water_height(blocks, cell):
-    """FlowingFluid.getHeight of the water in the cell, None without water: 1 under more water,
-    else amount / 9 (a source or a falling flow 8, a flow of level n 8 - n)."""
-    block = blocks.get(cell)
-    if not _is_water(block):
-        return None
-    x, y, z = cell
-    if _is_water(blocks.get((x, y + 1, z))):
-        return 1.0
-    level = int(dict(block.properties).get("level", "0")) if block.id == "minecraft:water" else 0
-    return _WATER_HEIGHT if level == 0 or level >= 8 else (8 - level) / 9.0
-
-
-def _is_water(block) -> bool:
-    return block.id in ("minecraft:water", "minecraft:bubble_column") or dict(block.properties).get(
-        "waterlogged") == "true"
-
-
-def _cells(box):
-    """BlockPos.betweenClosed(floor(min), ceil(max) - 1) as the fluid checks walk it."""
-    lo = [math.floor(c) for c in box[:3]]
-    hi = [math.ceil(c) - 1 for c in box[3:]]
-    return [(x, y, z) for x in range(lo[0], hi[0] + 1) for y in range(lo[1], hi[1] + 1) for z in range(lo[2], hi[2] + 1)]
+    return any(blocks.get(c).id == "minecraft:" + fluid for c in ray.box_cells(_cells_of(entity)))

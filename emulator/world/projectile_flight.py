@@ -10,6 +10,9 @@ A snowball that meets a living entity hurts it by 0 (3 a blaze) as ``thrown`` da
 responsible for (HurtTime, ``player_hurt_entity`` with the snowball as direct entity) and breaks;
 the hit's knockback is not modelled.
 
+In water at the start of its tick (:func:`emulator.world.fluids.in_water`) its motion is scaled
+by 0.6F (an arrow), 0.99F (a trident) or 0.8F (a thrown one) instead of 0.99F.
+
 Gravity (getDefaultGravity): 0.05 an arrow or a potion, 0.07 an experience bottle, 0.03 a
 snowball, egg or ender pearl. Until it has left its owner (Projectile.checkLeftOwner: neither the
 owner nor what rides with it in its box stretched along its motion and inflated by 1, then
@@ -40,7 +43,7 @@ target glows for the arrow's ``Duration`` (SpectralArrow.doPostHurtEffects). A b
 Not modelled (raises Unmodelled, the test is inconclusive): a critical, piercing or tipped arrow's
 hit, a trident's, a spectral arrow hitting a player, an arrow bouncing off (a hurt that fails), a player's arrow
 hitting a player, ``killed_by_arrow``, what :mod:`emulator.world.thrown_hits` does not model of a
-thrown one's hit, a projectile in water or passing blocks that act on what is inside them
+thrown one's hit, a projectile in flowing water (its current) or passing blocks that act on what is inside them
 (pressure plates, buttons, tripwires, cobwebs, fire, portals ...), hitting a target block or TNT,
 an arrow falling with motion (random), a player picking an arrow up, catching fire on the way, a
 trident with Loyalty, other projectiles (fireballs, wind charges, llama spit ...) and releases
@@ -59,7 +62,7 @@ import math
 
 import numpy as np
 
-from emulator.world import block_shapes, burning, combat, living, mth, ray, thrown_hits
+from emulator.world import block_shapes, burning, combat, fluids, living, mth, ray, thrown_hits
 from emulator.world.errors import Unmodelled
 from emulator.world.items import enchantment_level, enchantment_levels, from_nbt
 from emulator.world.loot_context import DamageSource
@@ -77,6 +80,9 @@ FIRST_RELEASE = (1, 20, 5)  # Entity.getDefaultGravity (a double) from here
 STEP_AND_HIT = (1, 21, 2)  # AbstractArrow.stepMoveAndHit; throwables' gravity and drag before the move
 ARROW_GRAVITY = 0.05
 DRAG = float(F32(0.99))  # 0.99F widened
+THROWN_WATER_INERTIA = float(F32(0.8))
+_WATER_INERTIA = {"minecraft:arrow": float(F32(0.6)), "minecraft:spectral_arrow": float(F32(0.6)),
+                  "minecraft:trident": DRAG}  # AbstractArrow.getWaterInertia; ThrownTrident 0.99F
 HIT_STEP = float(F32(0.05))  # 0.05F widened
 DESPAWN = 1200
 SHAKE = 7
@@ -132,14 +138,14 @@ def _arrow(state, entity) -> None:
     if _int(data, "inGround", 0):
         _in_ground(state, entity, here)
         return
-    _not_in_water(blocks, entity, motion)
+    inertia = _inertia(blocks, entity, motion)
     if new:
-        _arrow_moves(state, entity, motion, yaw0, pitch0)
+        _arrow_moves(state, entity, motion, yaw0, pitch0, inertia)
     else:
-        _arrow_moves_1_21(state, entity, motion, yaw0, pitch0)
+        _arrow_moves_1_21(state, entity, motion, yaw0, pitch0, inertia)
 
 
-def _arrow_moves(state, entity, motion, yaw0, pitch0) -> None:
+def _arrow_moves(state, entity, motion, yaw0, pitch0, inertia: float) -> None:
     """1.21.2+: turn toward the motion, move to the first hit (or along the motion), then drag and
     gravity unless it stuck."""
     start = entity.pos
@@ -153,12 +159,12 @@ def _arrow_moves(state, entity, motion, yaw0, pitch0) -> None:
     if hit:
         _stick(state, entity, hit, tuple(-HIT_STEP * _sign(m) for m in motion))
         entity.motion = (0.0, 0.0, 0.0)
-    entity.motion = _scaled(entity.motion, DRAG)
+    entity.motion = _scaled(entity.motion, inertia)
     if not _int(entity.data, "inGround", 0):
         _fall(entity, ARROW_GRAVITY)
 
 
-def _arrow_moves_1_21(state, entity, motion, yaw0, pitch0) -> None:
+def _arrow_moves_1_21(state, entity, motion, yaw0, pitch0, inertia: float) -> None:
     """1.21: a hit turns the motion toward it (onHitBlock) and the arrow moves by it from 0.05 back;
     then it turns, drags and falls."""
     start = entity.pos
@@ -174,7 +180,7 @@ def _arrow_moves_1_21(state, entity, motion, yaw0, pitch0) -> None:
     yaw, pitch = _angles(motion)
     entity.pitch, entity.yaw = _lerp_rotation(pitch0, pitch), _lerp_rotation(yaw0, yaw)
     entity.pos = _add(entity.pos, motion)
-    entity.motion = _scaled(motion, DRAG)
+    entity.motion = _scaled(motion, inertia)
     _fall(entity, ARROW_GRAVITY)
 
 
@@ -239,10 +245,10 @@ def _thrown(state, entity) -> None:
     then checks its owner. A hit ends it (:func:`emulator.world.thrown_hits.hit`)."""
     blocks = state.blocks_in(entity.dimension)
     motion = tuple(entity.motion)
-    _not_in_water(blocks, entity, motion)
+    inertia = _inertia(blocks, entity, motion)
     new = tuple(state.version) >= STEP_AND_HIT
     if new:  # gravity, then drag, then the move by the new motion
-        motion = _scaled(_fallen(entity, motion, THROWN_GRAVITY[entity.type]), DRAG)
+        motion = _scaled(_fallen(entity, motion, THROWN_GRAVITY[entity.type]), inertia)
         entity.motion = motion
     else:
         _check_left_owner(state, entity)
@@ -264,7 +270,7 @@ def _thrown(state, entity) -> None:
     if not new:
         entity.pitch, entity.yaw = _lerp_rotation(entity.pitch, pitch), _lerp_rotation(entity.yaw, yaw)
         entity.pos = _add(start, motion)
-        entity.motion = _scaled(motion, DRAG)
+        entity.motion = _scaled(motion, inertia)
         _fall(entity, THROWN_GRAVITY[entity.type])
 
 
@@ -388,16 +394,26 @@ def _pickable(state, entity):
         yield other
 
 
-def _not_in_water(blocks, entity, motion) -> None:
-    """Water slows a projectile (inertia 0.6, 0.8 or 0.99) and blocks such as pressure plates act on
-    it: neither is modelled, so a box meeting one on its way raises Unmodelled."""
+def _inertia(blocks, entity, motion) -> float:
+    """The factor its motion is scaled by this tick: 0.99F, in water (Entity.isInWater, from where
+    it stands at the start of the tick) 0.6F an arrow's, 0.99F a trident's, 0.8F a thrown one's
+    (AbstractArrow.getWaterInertia, ThrowableProjectile). Water that pushes (a flow: its current)
+    and blocks that act on what passes through them (pressure plates, cobwebs, fire ...) on its way
+    are not modelled: they raise Unmodelled."""
     for cell in ray.box_cells(_swept(entity.bounding_box, motion)):
         block = blocks.get(cell)
-        if block.is_air:
+        if block.is_air or block.id == "minecraft:water":
             continue
         name = block.id.removeprefix("minecraft:")
-        if any(part in name for part in _ACTS_INSIDE) or dict(block.properties).get("waterlogged") == "true":
+        if any(part in name for part in _ACTS_INSIDE):
             raise Unmodelled(f"{entity.type} in or through {block.id}")
+    box = entity.bounding_box
+    flowing = fluids.pushing(blocks, box)
+    if flowing is not None:
+        raise Unmodelled(f"{entity.type} in flowing water at {flowing} (its current)")
+    if not fluids.in_water(blocks, box):
+        return DRAG
+    return _WATER_INERTIA.get(entity.type, THROWN_WATER_INERTIA)
 
 
 def _loyal(entity) -> bool:

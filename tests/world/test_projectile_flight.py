@@ -163,10 +163,31 @@ def test_a_spectral_arrow_makes_its_target_glow(tmp_path):
     ("summon pig 3.5 10 0.5 {NoAI:1b}\nsummon arrow 0.5 10 0.5 {Motion:[1.0,0.0,0.0],crit:1b}\n",
      "a critical arrow's bonus damage"),
     ("summon armor_stand 3.5 10 0.5\n", "hitting minecraft:armor_stand"),
-    ("setblock 1 10 0 water\n", "in or through minecraft:water"),
+    ("setblock 1 10 0 cobweb\n", "in or through minecraft:cobweb"),
     ("setblock 1 10 0 oak_slab\n", "the shape of minecraft:oak_slab"),
 ])
 def test_what_is_not_modelled_makes_the_arrow_stay_and_is_reported(tmp_path, setup, reason):
     emu = world(tmp_path, setup + "summon arrow 0.5 10 0.5 {Motion:[1.0,0.0,0.0]}\n")
     emu.tick(4)
     assert any(d.unmodelled and reason in d.message for d in emu.diagnostics), [d.message for d in emu.diagnostics]
+
+
+@pytest.mark.parametrize("summon,inertia,gravity", [
+    ("arrow", 0.6, 0.05),  # AbstractArrow.getWaterInertia
+    ("potion", 0.8, 0.05),  # ThrowableProjectile.tick: 0.8F in water
+])
+def test_still_water_slows_a_projectile_by_its_water_inertia(tmp_path, summon, inertia, gravity):
+    # isInWater from where it stands at the start of the tick: a pool of sources (no current)
+    emu = world(tmp_path, "fill -2 8 -2 6 12 2 water\n"
+                          f"summon {summon} 0.5 10 0.5 {{Motion:[1.0d,0.0d,0.0d]}}\n")
+    emu.tick()
+    [flying] = [e for e in emu.state.entities.entities if e.type == "minecraft:" + summon]
+    assert flying.pos == (1.5, 10.0, 0.5)
+    assert flying.motion == (float(F32(inertia)), -gravity, 0.0)
+    assert not [d for d in emu.diagnostics if d.unmodelled]
+
+
+def test_flowing_water_is_reported(tmp_path):
+    emu = world(tmp_path, "setblock 0 10 0 water[level=3]\nsummon arrow 0.5 10 0.5 {Motion:[1.0d,0.0d,0.0d]}\n")
+    emu.tick()
+    assert any(d.unmodelled and "flowing water" in d.message for d in emu.diagnostics)
