@@ -67,8 +67,8 @@ def ignite_for_ticks(entity, ticks: int) -> None:
 
 
 def _burning(state):
-    return [e for e in state.entities.entities
-            if e.alive and e.type not in _NO_BASE_TICK and fire(e) > 0]
+    ticking = state.entities.picked("base_tick", lambda t: t not in _NO_BASE_TICK)
+    return [e for e in ticking if e.alive and fire(e) > 0]
 
 
 def tick_is_idle(state) -> bool:

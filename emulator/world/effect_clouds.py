@@ -41,7 +41,7 @@ HEIGHT = 0.5
 
 
 def _clouds(state):
-    return [e for e in state.entities.entities if e.alive and e.type == CLOUD]
+    return [e for e in state.entities.picked(CLOUD, lambda t: t == CLOUD) if e.alive]
 
 
 def tick_is_idle(state) -> bool:

@@ -563,6 +563,7 @@ class EntityStore:
         self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
         self._players: tuple[int, list[Entity]] = (0, [])  # (changes then, ``players()``)
         self._carts: tuple[int, list[Entity]] = (0, [])  # (changes then, ``minecarts()``)
+        self._picked: dict[str, tuple[int, list[Entity]]] = {}  # ``picked()``'s lists by key
 
     def bind_scoreboard(self, scoreboard) -> None:
         """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
@@ -688,6 +689,15 @@ class EntityStore:
         if self._carts[0] != self.changes:
             self._carts = (self.changes, [e for e in self.entities if e.type.endswith("minecart")])
         return self._carts[1]
+
+    def picked(self, key: str, test) -> list[Entity]:
+        """The entities whose type ``test(type)`` accepts, in the store's order (the dead too),
+        found again only when entities came or left; ``key`` names the test."""
+        found = self._picked.get(key)
+        if found is None or found[0] != self.changes:
+            found = (self.changes, [e for e in self.entities if test(e.type)])
+            self._picked[key] = found
+        return found[1]
 
     def living_mobs(self) -> list[Entity]:
         """The living LivingEntities (mobs, players, armor stands: :func:`living.is_living`), in the
