@@ -156,12 +156,16 @@ def _crossbow(state, player, hand, stack: ItemStack) -> str:
     return "consume"
 
 
-def _snowball(state, player, hand, stack: ItemStack) -> str:
-    """SnowballItem.use: the snowball is thrown, ``minecraft.used:snowball``, one consumed (not in
-    creative); the use succeeds."""
-    projectile_weapons.throw_snowball(state, player, stack)
+def _throwable(state, player, hand, stack: ItemStack) -> str:
+    """SnowballItem, EggItem, EnderpearlItem, ThrowablePotionItem, ExperienceBottleItem.use: the item
+    is thrown (:func:`emulator.world.projectile_weapons.throw`), ``minecraft.used:<item>``, one
+    consumed (not in creative), an ender pearl's cooldown (20 ticks; from 1.21.2 its use_cooldown
+    component after the use: ItemStack.applyAfterUseComponentSideEffects); the use succeeds."""
+    before = stack.copy()
+    projectile_weapons.throw(state, player, stack)
     statistics.award(state, player, statistics.stat_name("used", stack.id))
     _consume_one(state, player, hand)
+    item_cooldowns.apply_use_cooldown(state, player, before)
     return "consume"
 
 
@@ -183,7 +187,7 @@ def _trident(state, player, hand, stack: ItemStack) -> str:
 
 USES = {"minecraft:carrot_on_a_stick": _food_on_a_stick, "minecraft:warped_fungus_on_a_stick": _food_on_a_stick,
         "minecraft:knowledge_book": _knowledge_book, "minecraft:bow": _bow, "minecraft:crossbow": _crossbow,
-        "minecraft:snowball": _snowball, "minecraft:trident": _trident}
+        "minecraft:trident": _trident, **dict.fromkeys(projectile_weapons.THROWS, _throwable)}
 
 
 def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: consumables.Consumable) -> str:

@@ -16,9 +16,10 @@
   their rotation from their motion; the crossbow wears by one per arrow and three per rocket
   (emulator.world.tools), ``minecraft.used:crossbow`` and ``shot_crossbow``.
 
-- ``throw_snowball(state, player, stack)``: SnowballItem.use: a snowball at the eyes less 0.1, owned
-  by the player, thrown along its view at 1.5 blocks per tick with inaccuracy 1 (the spread drawn
-  from the emulator's random, as above).
+- ``throw(state, player, stack)``: SnowballItem/EggItem/EnderpearlItem.use (1.5 blocks per tick along
+  the view), ThrowablePotionItem.use (0.5, 20 degrees up) and ExperienceBottleItem.use (0.7, 20 up):
+  the item's projectile at the eyes less 0.1, owned by the player, with inaccuracy 1 (the spread
+  drawn from the emulator's random, as above).
 
 A bow is drawn by ``use item`` and only shoots when released, which PackTest has no action for: a
 dummy never shoots one, as in the game. Arrows and snowballs fly (emulator.world.projectile_flight);
@@ -30,7 +31,8 @@ Sources (decompiled 1.21.x and 26.1): world/item/BowItem.java and CrossbowItem.j
 performShooting, getShootingPower, shootProjectile), ProjectileWeaponItem.java (shoot,
 createProjectile, ARROW_ONLY / ARROW_OR_FIREWORK), world/entity/player/Player.java (getProjectile),
 world/entity/projectile/Projectile.java (shoot, shootFromRotation, getMovementToShoot),
-world/item/SnowballItem.java, ThrowableItemProjectile.java (eyes - 0.1F), arrow/AbstractArrow.java
+world/item/SnowballItem.java, EggItem.java, EnderpearlItem.java, ThrowablePotionItem.java,
+ExperienceBottleItem.java, ThrowableItemProjectile.java (eyes - 0.1F), arrow/AbstractArrow.java
 (constructor: eyes - 0.1; setOwner; addAdditionalSaveData), FireworkRocketEntity.java (constructor,
 addAdditionalSaveData), Entity.calculateViewVector and calculateUpVector, Enchantments.java
 (MULTISHOT, PIERCING).
@@ -57,7 +59,11 @@ MULTISHOT_SPREAD = 10.0  # Enchantments.MULTISHOT: projectile_spread + 10 per le
 _SHOT_ENCHANTMENTS = frozenset(("minecraft:unbreaking", "minecraft:mending", "minecraft:quick_charge",
                                 "minecraft:multishot", "minecraft:piercing", "minecraft:vanishing_curse"))
 INACCURACY = 1.0  # CrossbowItem.use: performShooting(..., 1.0F); SnowballItem.use: shootFromRotation(..., 1.0F)
-SNOWBALL_POWER = 1.5  # SnowballItem.use
+# the items thrown on use: (power, pitch offset) of their shootFromRotation
+THROWS = {"minecraft:snowball": (1.5, 0.0), "minecraft:egg": (1.5, 0.0), "minecraft:ender_pearl": (1.5, 0.0),
+          "minecraft:splash_potion": (0.5, -20.0), "minecraft:lingering_potion": (0.5, -20.0),
+          "minecraft:experience_bottle": (0.7, -20.0)}
+POTION_TYPES = (1, 21, 5)  # the splash_potion and lingering_potion entity types
 SPREAD = 0.0172275  # Projectile.getMovementToShoot
 ARROW_ENTITIES = {"minecraft:arrow": "minecraft:arrow", "minecraft:tipped_arrow": "minecraft:arrow",
                   "minecraft:spectral_arrow": "minecraft:spectral_arrow"}
@@ -167,21 +173,40 @@ def _spawn_firework(state, player, projectile: ItemStack, direction, power: floa
         pitch=pitch, dimension=player.dimension))
 
 
-def throw_snowball(state, player, stack: ItemStack) -> None:
-    """SnowballItem.use: a Snowball (ThrowableItemProjectile at the eyes less 0.1F, the player its
-    ``Owner``, one of the stack as its ``Item``) shot from the player's rotation
-    (Projectile.shootFromRotation: the view vector, 1.5, inaccuracy 1; a standing player adds no
-    movement of its own)."""
+def throw(state, player, stack: ItemStack) -> None:
+    """The throw of SnowballItem, EggItem, EnderpearlItem, ThrowablePotionItem or ExperienceBottleItem
+    (:data:`THROWS`): a ThrowableItemProjectile at the eyes less 0.1F, the player its ``Owner``, one
+    of the stack as its ``Item``, shot from the player's rotation (Projectile.shootFromRotation:
+    its pitch offset on the vertical only, the item's power, inaccuracy 1; a standing player adds
+    no movement of its own)."""
+    power, pitch_offset = THROWS[stack.id]
     item = stack.copy()
     item.count = 1
-    motion, yaw, pitch = _shot(_view_vector(player), SNOWBALL_POWER, state.resources.random)
+    motion, yaw, pitch = _shot(_rotation_vector(player, pitch_offset), power, state.resources.random)
     x, y, z = player.pos
     data = Compound(Owner=IntArray(Int(v) for v in player.uuid), Item=to_nbt(item, state.version),
                     Motion=List(Double(v) for v in motion))
     data["Rotation"] = List([Float(yaw), Float(pitch)])
     projectiles.launched(state, state.entities.summon(
-        "minecraft:snowball", (x, y + float(player.eye_height) - float(F32(0.1)), z), data, yaw=yaw, pitch=pitch,
-        dimension=player.dimension))
+        _thrown_type(stack.id, state.version), (x, y + float(player.eye_height) - float(F32(0.1)), z), data, yaw=yaw,
+        pitch=pitch, dimension=player.dimension))
+
+
+def _thrown_type(item_id: str, version) -> str:
+    """A potion flies as ``potion`` before 1.21.5, as ``splash_potion``/``lingering_potion`` after."""
+    if item_id in ("minecraft:splash_potion", "minecraft:lingering_potion") and tuple(version) < POTION_TYPES:
+        return "minecraft:potion"
+    return item_id
+
+
+def _rotation_vector(player, pitch_offset: float) -> tuple[float, float, float]:
+    """Projectile.shootFromRotation's direction in float math: the offset turns only its y (not the
+    view vector's floats: Mth.cos is not even in its table)."""
+    rad = F32(math.pi / 180)
+    yaw, pitch = F32(player.yaw) * rad, F32(player.pitch) * rad
+    cos_pitch = mth.cos(pitch)
+    return (float(-mth.sin(yaw) * cos_pitch), float(-mth.sin((F32(player.pitch) + F32(pitch_offset)) * rad)),
+            float(mth.cos(yaw) * cos_pitch))
 
 
 def _flight(item: ItemStack) -> int:
