@@ -295,6 +295,7 @@ def ride(env, cmd: ast.Ride, ctx: Context) -> int:
         raise CommandFailure("commands.ride.mount.failure.loop")
     if not relations.start_riding(rider, vehicle):
         raise CommandFailure("commands.ride.mount.failure.generic", rider.display_name, vehicle.display_name)
+    relations.started_riding(env.state, vehicle)
     return 1
 
 

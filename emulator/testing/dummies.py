@@ -255,9 +255,14 @@ class Dummies:
         entity_use.attack(self.state, dummy, self._entity(command.entity, ctx))
 
     def _use_entity(self, dummy: Entity, command, ctx) -> None:
-        """DummyCommand.useEntity: each hand in turn, until one consumes the action."""
+        """DummyCommand.useEntity: each hand in turn, Entity.interactAt at the position given (the
+        entity's own when none is) then Player.interactOn, until one consumes the action."""
         target = self._entity(command.entity, ctx)
+        at = target.pos if command.pos is None else world_entities.world_source(self.state, ctx).position_of(
+            command.pos, centre=False)
         for hand in (player_actions.MAIN, player_actions.OFF):
+            if entity_use.interact_at(self.state, dummy, hand, target, at) == "consume":
+                return
             if entity_use.interact_on(self.state, dummy, hand, target) == "consume":
                 return
         raise DummyFailure(f"Dummy {dummy.player_name} cannot interact with that entity")

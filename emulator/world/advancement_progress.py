@@ -25,7 +25,8 @@ from mcfunction_parser.pack.advancements import criteria, requirements
 OBSERVED = frozenset({"impossible", "tick", "location", "inventory_changed", "using_item", "consume_item",
                       "default_block_use", "item_used_on_block", "player_hurt_entity", "entity_hurt_player",
                       "player_killed_entity", "entity_killed_player", "placed_block", "changed_dimension",
-                      "effects_changed", "recipe_unlocked", "item_durability_changed", "crafter_recipe_crafted"})
+                      "effects_changed", "recipe_unlocked", "item_durability_changed", "crafter_recipe_crafted",
+                      "started_riding"})
 
 
 def full_id(text) -> str | None:

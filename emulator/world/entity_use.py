@@ -22,13 +22,14 @@ before 1.21.2 and passes from it), world/entity/Entity.java (interact: passes).
 """
 from __future__ import annotations
 
-from emulator.world import combat, inventories
+from emulator.world import armor_stands, combat, inventories, living, mob_use
 from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import DamageSource
 from emulator.world.player_actions import hand_slot
 from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
 
 ITEM_FRAMES = ("minecraft:item_frame", "minecraft:glow_item_frame")
+ARMOR_STAND = "minecraft:armor_stand"
 RESULTS_VERSION = (1, 21, 2)  # InteractionResult's rework: an empty frame used with an empty hand passes
 # entities whose interact is Entity's own (no leash, no ride, no menu): using them passes
 PASSIVE = frozenset("minecraft:" + n for n in (
@@ -51,8 +52,18 @@ def attack(state, player, target) -> bool:
     return combat.attack(state, player, target)
 
 
+def interact_at(state, player, hand: str, entity, at) -> str:
+    """Entity.interactAt, which PackTest's useEntity calls before Player.interactOn with ``at`` the
+    position given (the entity's own position when none is): only an armor stand has one."""
+    if entity.type != ARMOR_STAND:
+        return "pass"
+    return armor_stands.interact_at(state, player, hand, entity, at)
+
+
 def interact_on(state, player, hand: str, entity) -> str:
-    """Player.interactOn: a spectator only opens menus; else the entity's own interact."""
+    """Player.interactOn: a spectator only opens menus; else the entity's own interact, and when
+    that passes, the held item's use on a living entity (ItemStack.interactLivingEntity); a creative
+    player keeps what the use took from its hand."""
     if player.gamemode == "spectator":
         return "pass"
     if entity.type == "minecraft:interaction":
@@ -62,8 +73,18 @@ def interact_on(state, player, hand: str, entity) -> str:
         return _item_frame(state, player, hand, entity)
     if entity.type in PASSIVE:
         return "pass"
-    raise Unmodelled(f"using {entity.type} (its interaction is not modelled: only interaction entities, item "
-                     "frames and entities without an interaction of their own)")
+    access = inventories.entity_slot(player, hand_slot(hand), state.version)
+    held = access.get()
+    if entity.type == ARMOR_STAND:  # no interact of its own (Entity.interact: not Leashable)
+        result = "pass"
+    elif living.is_living(entity.type) and not entity.is_player:
+        result = mob_use.interact(state, player, hand, entity)
+    else:
+        raise Unmodelled(f"using {entity.type} (its interaction is not modelled: only interaction entities, item "
+                         "frames, armor stands, some mobs and entities without an interaction of their own)")
+    if result != "consume" and not held.is_empty and living.is_living(entity.type):
+        result = mob_use.item_on_living(state, player, hand, entity)
+    return result
 
 
 def _item_frame(state, player, hand: str, frame) -> str:

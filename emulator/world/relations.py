@@ -24,7 +24,7 @@ one without ``leash`` data has no holder; a leash that is there is not modelled 
 """
 from __future__ import annotations
 
-from emulator.world import combat, living
+from emulator.world import advancements, combat, living
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import Entity, EntityStore
 from emulator.world.entity_types import BOATS
@@ -67,6 +67,14 @@ def start_riding(rider: Entity, vehicle: Entity) -> bool:
     rider.vehicle = vehicle
     vehicle.passengers.append(rider)
     return True
+
+
+def started_riding(state, vehicle: Entity) -> None:
+    """Entity.startRiding: each player among the vehicle's passengers, at any depth, hears
+    ``started_riding`` (getIndirectPassengersStream)."""
+    for rider in self_and_passengers(vehicle)[1:]:
+        if rider.is_player:
+            advancements.trigger(state, rider, "started_riding")
 
 
 def stop_riding(rider: Entity) -> None:

@@ -33,3 +33,132 @@ def test_using_an_entity_without_an_interaction_is_refused(tmp_path):
     result = run(tmp_path, "# @dummy\nsummon marker ~1 ~ ~\ndummy @s use entity @e[type=marker,limit=1]\n"
                            "fail \"end\"\n")
     assert "cannot interact with that entity" in "\n".join(result.details)
+
+
+# ---------------------------------------------------------------------- armor stands
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_an_armor_stand_with_arms_takes_the_held_item_in_its_hand(tmp_path, backend):
+    """ArmorStand.interactAt -> swapItem: paper goes to the main hand (getEquipmentSlotForItem), the
+    player's hand of one item trades whole; a carved pumpkin goes to the head from a stack one at a time."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon armor_stand ~1 ~ ~ {ShowArms:1b,Tags:[\"s\"]}\n"
+        "item replace entity @s weapon.mainhand with paper\n"
+        "dummy @s use entity @e[tag=s,limit=1]\n"
+        "assert items entity @e[tag=s] weapon.mainhand paper\n"
+        "assert not items entity @s weapon.mainhand *\n"
+        "item replace entity @s weapon.mainhand with carved_pumpkin 2\n"
+        "dummy @s use entity @e[tag=s,limit=1]\n"
+        "assert items entity @e[tag=s] armor.head carved_pumpkin[count=1]\n"
+        "assert items entity @s weapon.mainhand carved_pumpkin[count=1]\n"), backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_an_armor_stand_without_arms_refuses_a_hand_item(tmp_path):
+    """ArmorStand.interactAt: a hand slot on a stand without arms is disabled: FAIL, nothing moves."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon armor_stand ~1 ~ ~ {Tags:[\"s\"]}\n"
+        "give @s paper\n"
+        "dummy @s use entity @e[tag=s,limit=1]\n"
+        "assert items entity @s weapon.mainhand paper\n"
+        "fail \"end\"\n"))
+    assert (result.status, result.message) == ("failed", "end")
+    assert "cannot interact with that entity" in "\n".join(result.details)
+
+
+def test_an_empty_hand_takes_the_slot_clicked_at_the_height_given(tmp_path):
+    """ArmorStand.getClickedSlot: the click's y over the scale (PackTest passes the position as
+    written, a world position) picks the head at 1.6 and above, the main hand below the armour's
+    bands; an empty slot passes."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon armor_stand ~1 ~ ~ {Tags:[\"s\"],ArmorItems:[{},{},{},{id:\"minecraft:stone\",count:1}]}\n"
+        "dummy @s use entity @e[tag=s,limit=1] 0 0.05 0\n"
+        "assert not items entity @s weapon.mainhand *\n"
+        "dummy @s use entity @e[tag=s,limit=1] 0 1.7 0\n"
+        "assert items entity @s weapon.mainhand stone\n"
+        "assert not items entity @e[tag=s] armor.head *\n"))
+    assert result.status == "passed", result.report()
+    assert "cannot interact with that entity" in "\n".join(result.details)
+
+
+def test_a_name_tag_names_an_armor_stand(tmp_path):
+    """ArmorStand.interactAt passes a name tag; NameTagItem.interactLivingEntity names it and is spent."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon armor_stand ~1 ~ ~ {Tags:[\"s\"]}\n"
+        "item replace entity @s weapon.mainhand with name_tag[custom_name='\"Bob\"'] 2\n"
+        "dummy @s use entity @e[tag=s,limit=1]\n"
+        "assert entity @e[tag=s,name=Bob]\n"
+        "assert items entity @s weapon.mainhand name_tag[count=1]\n"))
+    assert result.status == "passed", result.report()
+
+
+# ---------------------------------------------------------------------- mobs
+PIG_FOOD = {"minecraft/tags/item/pig_food.json": '{"replace": true, "values": ["carrot", "potato", "beetroot"]}',
+            "minecraft/tags/item/cow_food.json": '{"replace": true, "values": ["wheat"]}'}
+
+
+def _files(extra=None):
+    return {**PIG_FOOD, **(extra or {})}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_saddle_saddles_a_pig_and_the_next_use_rides_it(tmp_path, backend):
+    """Pig.mobInteract: no saddle -> SaddleItem.interactLivingEntity (Saddle:1b, one spent); saddled,
+    no rider, not food -> Player.startRiding: the vehicle relation, the rider on the attachment
+    (0.86875 - 0.6 above the pig), started_riding."""
+    adv = ('{"criteria": {"r": {"trigger": "minecraft:started_riding"}}, '
+           '"rewards": {"function": "demo:rode"}}')
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"
+        "give @s saddle\n"
+        "dummy @s use entity @e[tag=p,limit=1]\n"
+        "assert entity @e[tag=p,nbt={Saddle:1b}]\n"
+        "assert not items entity @s weapon.mainhand *\n"
+        "dummy @s use entity @e[tag=p,limit=1]\n"
+        "execute on vehicle run assert entity @s[tag=p]\n"
+        "assert entity @s[tag=rode]\n"
+        "execute at @e[tag=p] positioned ~ ~0.26875 ~ run assert entity @p[distance=..0.0001]\n"),
+        files=_files({"demo/advancement/ride.json": adv, "demo/function/rode.mcfunction": "tag @s add rode\n"}),
+        backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_food_puts_an_adult_pig_in_love_instead_of_mounting(tmp_path):
+    """Pig.mobInteract: food skips the ride; Animal.mobInteract: InLove 600, LoveCause, one spent."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b,Saddle:1b}\n"
+        "give @s carrot 3\n"
+        "dummy @s use entity @e[tag=p,limit=1]\n"
+        "assert entity @e[tag=p,nbt={InLove:600}]\n"
+        "assert items entity @s weapon.mainhand carrot[count=2]\n"
+        "execute on vehicle run fail \"rode\"\n"), files=_files())
+    assert result.status == "passed", result.report()
+
+
+def test_a_bucket_milks_a_cow(tmp_path):
+    """Cow.mobInteract -> ItemUtils.createFilledResult: one bucket of two spent, the milk added."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon cow ~1 ~ ~ {Tags:[\"c\"],NoAI:1b}\n"
+        "give @s bucket 2\n"
+        "dummy @s use entity @e[tag=c,limit=1]\n"
+        "assert items entity @s weapon.mainhand bucket[count=1]\n"
+        "assert items entity @s container.* milk_bucket\n"
+        "dummy @s use entity @e[tag=c,limit=1]\n"
+        "assert items entity @s weapon.mainhand milk_bucket\n"), files=_files())
+    assert result.status == "passed", result.report()
+
+
+def test_a_name_tag_names_a_mob_and_keeps_it(tmp_path):
+    """Mob.checkAndHandleImportantInteractions -> NameTagItem: the name, PersistenceRequired."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon zombie ~1 ~ ~ {Tags:[\"z\"],NoAI:1b}\n"
+        "item replace entity @s weapon.mainhand with name_tag[custom_name='\"Zed\"']\n"
+        "dummy @s use entity @e[tag=z,limit=1]\n"
+        "assert entity @e[tag=z,name=Zed,nbt={PersistenceRequired:1b}]\n"
+        "assert not items entity @s weapon.mainhand *\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_a_villager_stays_unmodelled(tmp_path):
+    result = run(tmp_path, "# @dummy\nsummon villager ~1 ~ ~ {NoAI:1b}\ndummy @s use entity @e[type=villager,limit=1]\n")
+    assert result.status == "inconclusive"
+    assert "minecraft:villager" in result.report()

@@ -1,0 +1,222 @@
+"""A player using a mob (Mob.interact) or using its held item on a living entity
+(ItemStack.interactLivingEntity), with what a datapack observes: the mob's name, saddle, love and
+rider, the milk bucket, the item spent, the ``started_riding`` criterion.
+
+- ``interact(state, player, hand, mob) -> str``: Mob.interact: ``"consume"`` or ``"pass"``.
+- ``item_on_living(state, player, hand, entity) -> str``: Item.interactLivingEntity, the held
+  item's own use when the entity's passed (Player.interactOn).
+- ``mount(state, rider, vehicle) -> bool``: Player.startRiding (emulator.world.relations), the
+  rider set on the vehicle's passenger attachment (ServerPlayer.startRiding -> positionRider) and
+  ``started_riding`` fired for the players riding it.
+
+Mob.interact, in order: a name tag with a name names the mob (NameTagItem: ``CustomName``,
+``PersistenceRequired``, one tag spent); a spawn egg spawns a baby (not modelled); a leash (a leashed
+mob, a lead in hand: not modelled); then the mob's own mobInteract:
+- pig (Pig.mobInteract): not holding its food (``#minecraft:pig_food``), saddled (``Saddle``), with
+  no rider and not sneaking, the player mounts it; else the breeding of Animal.mobInteract, then a
+  saddle saddles it (SaddleItem: an adult without one; ``Saddle:1b``, one saddle spent);
+- cow (Cow.mobInteract): a bucket on an adult fills with milk (ItemUtils.createFilledResult: one
+  bucket spent, the milk bucket in its place, or added to the inventory (dropped when full) when
+  more buckets are left; a creative player keeps the bucket and gets a milk bucket if it has none);
+  else breeding with ``#minecraft:cow_food``;
+- breeding (Animal.mobInteract): food given to an adult at age 0 not in love spends one item and
+  sets ``InLove`` 600 and ``LoveCause`` (the player); a baby fed grows (not modelled);
+- mobs whose mobInteract is Mob's own (zombies, skeletons, spiders ...): pass.
+Any other mob's mobInteract (villagers' trading, horses, sheep shearing, wolves ...) raises
+Unmodelled. A creative player keeps what a use took from its hand (Player.interactOn restores the
+count; the item's own use works on a copy).
+
+The ``player_interacted_with_entity`` criterion fires in the network handler, not for a PackTest
+dummy (emulator.world.entity_use). The game events and sounds are not observable by a pack.
+
+Sources (decompiled 1.21): world/entity/Mob.java (interact, checkAndHandleImportantInteractions),
+Entity.java (interact: Leashable; startRiding: START_RIDING_TRIGGER; positionRider),
+world/entity/player/Player.java (interactOn), server/level/ServerPlayer.java (startRiding),
+world/entity/animal/Pig.java, Cow.java, Animal.java (mobInteract, setInLove),
+world/item/NameTagItem.java, SaddleItem.java, ItemUtils.java (createFilledResult),
+world/entity/EntityType.java (pig: passengerAttachments 0.86875; player: vehicle attachment 0.6).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from emulator.world import inventories, items, living, relations
+from emulator.world.entities import TextTag
+from emulator.world.errors import Unmodelled
+from emulator.world.items import ItemStack
+from emulator.world.player_actions import drop_from, hand_slot
+from mcfunction_parser.nbt import Byte, Int, IntArray, String
+
+F32 = np.float32
+SADDLE_EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a: a saddle is worn in the ``saddle`` equipment slot
+LOVE_TICKS = 600  # Animal.setInLove
+# EntityType passengerAttachments (the first passenger's) and the player's vehicle attachment
+PASSENGER_ATTACHMENT = {"minecraft:pig": float(F32(0.86875))}
+PLAYER_VEHICLE_ATTACHMENT = 0.6  # Player.DEFAULT_VEHICLE_ATTACHMENT
+# mobs without a mobInteract of their own (Mob.mobInteract passes)
+PLAIN_MOBS = frozenset("minecraft:" + n for n in (
+    "zombie husk drowned zombified_piglin skeleton stray wither_skeleton spider cave_spider silverfish endermite "
+    "blaze enderman ghast witch vindicator pillager evoker illusioner ravager vex phantom guardian elder_guardian "
+    "slime magma_cube shulker warden breeze wither ender_dragon bat squid glow_squid").split())
+
+
+def _held(state, player, hand: str):
+    access = inventories.entity_slot(player, hand_slot(hand), state.version)
+    return access, access.get()
+
+
+def _spend(state, player, hand: str, count: int = 1) -> None:
+    """The use takes ``count`` items from the hand; a creative player keeps them (Player.interactOn)."""
+    if player.gamemode == "creative":
+        return
+    access, stack = _held(state, player, hand)
+    stack.count -= count
+    access.set(stack)
+
+
+def interact(state, player, hand: str, mob) -> str:
+    """Mob.interact (see the module's doc)."""
+    if not mob.alive:
+        return "pass"
+    _, held = _held(state, player, hand)
+    if held.id == "minecraft:name_tag" and _name_tag(state, player, hand, mob) == "consume":
+        return "consume"
+    if held.id.endswith("_spawn_egg"):
+        raise Unmodelled(f"using {held.id} on {mob.type} (SpawnEggItem.spawnOffspringFromSpawnEgg)")
+    if mob.data.get("leash") is not None or mob.data.get("Leash") is not None:
+        raise Unmodelled(f"using a leashed {mob.type} (Leashable.dropLeash)")
+    if held.id == "minecraft:lead":
+        raise Unmodelled(f"leashing {mob.type} (Leashable.setLeashedTo)")
+    own = MOB_INTERACTS.get(mob.type)
+    if own is not None:
+        return own(state, player, hand, mob)
+    if mob.type in PLAIN_MOBS:
+        return "pass"
+    raise Unmodelled(f"using {mob.type} (its mobInteract is not modelled: only pigs, cows and mobs without one)")
+
+
+def item_on_living(state, player, hand: str, entity) -> str:
+    """Item.interactLivingEntity of the held item (NameTagItem, SaddleItem; DyeItem on a sheep is
+    not modelled); any other item passes."""
+    _, held = _held(state, player, hand)
+    if held.id == "minecraft:name_tag":
+        return _name_tag(state, player, hand, entity)
+    if held.id == "minecraft:saddle":
+        return _saddle(state, player, hand, entity)
+    if held.id.endswith("_dye") and entity.type == "minecraft:sheep":
+        raise Unmodelled("dyeing a sheep (DyeItem.interactLivingEntity)")
+    return "pass"
+
+
+def _name_tag(state, player, hand: str, entity) -> str:
+    """NameTagItem.interactLivingEntity: a tag with a ``custom_name`` names any living entity but a
+    player (a mob is then kept: ``PersistenceRequired``) and is spent; without one it passes."""
+    _, held = _held(state, player, hand)
+    name = held.component("minecraft:custom_name")
+    if name is None and tuple(state.version) < items.COMPONENTS_VERSION:
+        display = (held.tag or {}).get("display")
+        name = display.get("Name") if display is not None else None
+    if name is None or entity.is_player:
+        return "pass"
+    if entity.alive:
+        entity.custom_name = str(name) if isinstance(name, String) else TextTag(name)
+        if entity.type != "minecraft:armor_stand":
+            entity.data["PersistenceRequired"] = Byte(1)
+        _spend(state, player, hand)
+    return "consume"
+
+
+def _saddled(state, mob) -> bool:
+    if tuple(state.version) >= SADDLE_EQUIPMENT_VERSION:
+        raise Unmodelled(f"a saddle on {mob.type} worn in the saddle slot (1.21.5+)")
+    return bool(mob.data.get("Saddle"))
+
+
+def _saddle(state, player, hand: str, mob) -> str:
+    """SaddleItem.interactLivingEntity: an alive, saddleable (adult pig or strider) mob without a
+    saddle takes one; horses are not modelled."""
+    if mob.type not in ("minecraft:pig", "minecraft:strider"):
+        if mob.type.endswith(("horse", "donkey", "mule", "camel")):
+            raise Unmodelled(f"saddling {mob.type} (AbstractHorse)")
+        return "pass"
+    if not mob.alive or _saddled(state, mob) or living.is_baby(mob):
+        return "pass"
+    mob.data["Saddle"] = Byte(1)
+    _spend(state, player, hand)
+    return "consume"
+
+
+def _in_tag(state, tag: str, stack) -> bool:
+    return not stack.is_empty and state.resources.in_tag("item", tag, stack.id)
+
+
+def _breed(state, player, hand: str, mob, food_tag: str) -> str:
+    """Animal.mobInteract: food for an adult at age 0 and not in love: one spent (not by a creative
+    player: ItemStack.consume), ``InLove`` 600 and ``LoveCause``; a baby fed is not modelled."""
+    _, held = _held(state, player, hand)
+    if not _in_tag(state, food_tag, held):
+        return "pass"
+    age = int(mob.data.get("Age", 0))
+    if age == 0 and int(mob.data.get("InLove", 0)) <= 0:
+        _spend(state, player, hand)
+        mob.data["InLove"] = Int(LOVE_TICKS)
+        mob.data["LoveCause"] = IntArray(Int(v) for v in player.uuid)
+        return "consume"
+    if age < 0:
+        raise Unmodelled(f"feeding a baby {mob.type} (AgeableMob.ageUp)")
+    return "pass"
+
+
+def _pig(state, player, hand: str, pig) -> str:
+    """Pig.mobInteract (see the module's doc)."""
+    _, held = _held(state, player, hand)
+    food = _in_tag(state, "minecraft:pig_food", held)
+    if not food and _saddled(state, pig) and not relations.passengers_of(pig) and not player.sneaking:
+        mount(state, player, pig)
+        return "consume"
+    result = _breed(state, player, hand, pig, "minecraft:pig_food")
+    if result == "consume":
+        return result
+    return _saddle(state, player, hand, pig) if held.id == "minecraft:saddle" else "pass"
+
+
+def _cow(state, player, hand: str, cow) -> str:
+    """Cow.mobInteract: a bucket milks an adult cow; else Animal's breeding."""
+    access, held = _held(state, player, hand)
+    if held.id == "minecraft:bucket" and not living.is_baby(cow):
+        access.set(filled_result(state, player, held, ItemStack("minecraft:milk_bucket", 1)))
+        return "consume"
+    return _breed(state, player, hand, cow, "minecraft:cow_food")
+
+
+def filled_result(state, player, empty: ItemStack, filled: ItemStack) -> ItemStack:
+    """ItemUtils.createFilledResult(empty, player, filled, true): what the hand holds after filling."""
+    inventory = inventories.player_inventory(player, state.version)
+    if player.gamemode == "creative":
+        if not inventory.clear_or_count(lambda s: s.same_item_same_components(filled), 0):  # Inventory.contains
+            inventory.add(filled)
+        return empty
+    empty.count -= 1
+    if empty.is_empty:
+        return filled
+    if not inventory.add(filled) or not filled.is_empty:
+        drop_from(state, player, filled)
+    return empty
+
+
+MOB_INTERACTS = {"minecraft:pig": _pig, "minecraft:cow": _cow}
+
+
+def mount(state, rider, vehicle) -> bool:
+    """Player.startRiding(vehicle) (not forced): refused when the vehicle already carries someone
+    (Entity.canAddPassenger); the rider goes onto the vehicle's attachment at once
+    (ServerPlayer.startRiding -> positionRider) and every player riding it hears ``started_riding``."""
+    attachment = PASSENGER_ATTACHMENT.get(vehicle.type)
+    if attachment is None or living.attribute_value(vehicle, "scale") != 1.0:
+        raise Unmodelled(f"where a rider sits on {vehicle.type} (its passenger attachment at its scale)")
+    if relations.passengers_of(vehicle) or not relations.start_riding(rider, vehicle):
+        return False
+    x, y, z = vehicle.pos
+    rider.pos = (x, y + attachment - PLAYER_VEHICLE_ATTACHMENT, z)
+    relations.started_riding(state, vehicle)
+    return True
