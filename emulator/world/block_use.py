@@ -31,8 +31,10 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from emulator.world import (advancements, block_placing, block_shapes, command_blocks, crafters, inventories,
-                            item_cooldowns, items, signs, statistics)
+                            item_cooldowns, items, items_on_blocks, placed_states, signs, statistics)
 from emulator.world.blocks import BlockState
 from emulator.world.context import Context
 from emulator.world.living import attribute_value
@@ -42,6 +44,7 @@ from emulator.world.errors import Unmodelled
 from mcfunction_parser.nbt import Compound, Int
 
 DEFAULT_BLOCK_USE_VERSION = (1, 20, 5)  # useWithoutItem and its own trigger (24w13a)
+F32 = np.float32
 MENU_REACH = 4.0  # Container.stillValidBlockEntity's buffer over the block interaction range
 
 # the statistic a container or workstation awards when its menu opens (None: it has none)
@@ -75,6 +78,7 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
     """ServerPlayerGameMode.useItemOn with the stack in ``hand`` on the block at ``pos``, clicked at
     ``hit`` (the block's corner when not given)."""
     pos = tuple(pos)
+    hit = tuple(hit) if hit is not None else pos
     block = state.blocks.get(pos)
     stack = inventories.entity_slot(player, hand_slot(hand), state.version).get()
     if player.gamemode == "spectator":
@@ -90,7 +94,7 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
             advancements.trigger(state, player, "item_used_on_block", advancements.location_test(state, player, pos, before))
             return on_block
         if on_block == "try_empty_hand" and hand == MAIN:
-            result = _use_without_item(state, player, pos, block)
+            result = _use_without_item(state, player, pos, block, face, hit)
             if result == "consume":
                 if tuple(state.version) >= DEFAULT_BLOCK_USE_VERSION:
                     trigger, used = "default_block_use", None
@@ -102,8 +106,7 @@ def use_item_on(state, player, hand: str, pos, face: str, hit=None) -> str:
         return "pass"
     placed = block_placing.place(state, player, hand_slot(hand), pos, face, hit)
     if placed is None:
-        raise Unmodelled(f"using {stack.id} on {block.id} (items used on blocks other than placing a block: "
-                         "spawn eggs, buckets, tools ...)")
+        placed = items_on_blocks.use_on(state, player, hand, pos, face, hit)
     if placed == "consume":  # ItemStack.useOn consumed the action: the criterion, with the stack as it was
         advancements.trigger(state, player, "item_used_on_block", advancements.location_test(state, player, pos, stack))
     return placed
@@ -168,7 +171,7 @@ def _lectern(state, player, pos, block: BlockState, award: bool = True) -> str:
     return "consume"
 
 
-def _use_without_item(state, player, pos, block: BlockState) -> str:
+def _use_without_item(state, player, pos, block: BlockState, face: str, hit) -> str:
     """BlockBehaviour.useWithoutItem of the modelled blocks (BlockState.use before 1.20.5)."""
     name = block.id.removeprefix("minecraft:")
     if block.is_air or block.id in PLAIN or block.id.endswith(_PLAIN_KINDS) or block.id in block_shapes.REPLACEABLE:
@@ -185,6 +188,8 @@ def _use_without_item(state, player, pos, block: BlockState) -> str:
         return "consume"
     if block.id in BUTTONS:
         return _press(state, pos, block)
+    if block.id == "minecraft:bell":
+        return _bell(state, player, pos, block, face, hit)
     if block.id == "minecraft:note_block":
         note = int(_property(block, "note", "0"))
         _set(state, pos, block, note=str((note + 1) % 25))
@@ -198,6 +203,32 @@ def _use_without_item(state, player, pos, block: BlockState) -> str:
     if kind in _HAND_OPENED:
         return "pass"  # iron doors and trapdoors open by redstone only
     raise Unmodelled(f"using the block {block.id} (its interaction is not modelled)")
+
+
+BELL_PROPER_HIT_HEIGHT = float(F32(0.8124))  # BellBlock.isProperHit: a side clicked no higher in the block
+# raiders a ringing bell shows (BellBlockEntity: #raiders; made to glow when it stops shaking)
+_RAIDERS = frozenset("minecraft:" + n for n in "pillager vindicator evoker illusioner ravager witch".split())
+
+
+def _bell(state, player, pos, block: BlockState, face: str, hit) -> str:
+    """BellBlock.useWithoutItem -> onHit: a side clicked at most 0.8124 up the block, across a
+    floor bell's facing axis' sides (its facing axis for a floor bell; the others for a wall bell;
+    any side of a ceiling bell), rings it: ``minecraft.custom:minecraft.bell_ring``; any other
+    click passes (on to the held item). A ringing bell near raiders (48 blocks) makes them glow
+    after it shakes: not modelled."""
+    facing, attachment = _property(block, "facing", "north"), _property(block, "attachment", "floor")
+    if face in ("up", "down") or hit[1] - pos[1] > BELL_PROPER_HIT_HEIGHT:
+        return "pass"
+    across = placed_states.AXIS[facing] == placed_states.AXIS[face]
+    if not {"floor": across, "ceiling": True}.get(attachment, not across):
+        return "pass"
+    centre = (pos[0] + 0.5, pos[1] + 0.5, pos[2] + 0.5)
+    for entity in state.entities.living_mobs():
+        if entity.type in _RAIDERS and entity.dimension == player.dimension and \
+                all(abs(c - p) <= 48.5 for c, p in zip(entity.pos, centre)):
+            raise Unmodelled("a ringing bell showing raiders nearby (BellBlockEntity.makeRaidersGlow)")
+    statistics.award(state, player, statistics.stat_name("custom", "bell_ring"))
+    return "consume"
 
 
 def _run_click_command(state, command: str, player, pos) -> None:

@@ -1,0 +1,133 @@
+"""A player using a held item that places no block on a block (ItemStack.useOn -> Item.useOn),
+with what a datapack observes: the entity or block it makes, the item spent, ``minecraft.used:<item>``.
+
+- ``use_on(state, player, hand, pos, face, hit) -> str``: ``"consume"``, ``"pass"`` or ``"fail"``;
+  an item whose useOn is its own but not modelled here raises Unmodelled. Block items are
+  emulator.world.block_placing's; the caller fires ``item_used_on_block`` when the use consumes.
+
+Modelled:
+- item frames and glow item frames (HangingEntityItem.useOn; ItemFrameItem.mayPlace: any face
+  within the build height): the frame hangs in the block in front of the clicked face, facing out
+  of it (``Facing``: the face's 3D data value; ``Rotation``: the face's yaw, or a pitch of -90/90 on
+  the top/bottom), centred 0.46875 back from the block's centre toward the clicked block. It stays
+  only when that block has no collision, the clicked block is solid (BlockStateBase.isSolid; a
+  repeater or comparator under a wall frame is not modelled) and no other frame's box meets its
+  own (HangingEntity.survives); else the use consumes and nothing is placed. An item with
+  ``entity_data`` is not modelled;
+- items whose useOn is Item's own (emeralds, buckets, food ...: a bucket acts through ``use item``'s
+  ray, not here): the use passes.
+A creative player keeps the item (ServerPlayerGameMode.useItemOn restores the count); an adventure
+player's use passes (ItemStack.useOn: without ``can_place_on``, which is not modelled).
+
+Not modelled (Unmodelled): paintings (their variant), the useOn of the other items that have one
+(tools, bone meal, spawn eggs, flint and steel where emulator.world.fire does not take it, armor
+stands, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
+potions, shears, end crystals, maps, debug sticks) and the block items that place a block of another
+name (seeds, carrots, redstone dust, string ...).
+
+Sources (decompiled 1.21): world/item/ItemStack.java (useOn: mayBuild, ITEM_USED when the result
+indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java,
+world/entity/decoration/HangingEntity.java (setDirection, recalculateBoundingBox), ItemFrame.java
+(calculateBoundingBox, survives), server/level/ServerPlayerGameMode.java (useItemOn: a creative
+player's count restored), core/Direction.java (get3DDataValue, toYRot).
+"""
+from __future__ import annotations
+
+from emulator.world import block_shapes, inventories, statistics
+from emulator.world.errors import Unmodelled
+from emulator.world.player_actions import hand_slot
+from mcfunction_parser.nbt import Byte, Compound, Float, Int, List
+
+FRAMES = {"minecraft:item_frame": "minecraft:item_frame", "minecraft:glow_item_frame": "minecraft:glow_item_frame"}
+FACE_DATA = {"down": 0, "up": 1, "north": 2, "south": 3, "west": 4, "east": 5}  # Direction.get3DDataValue
+_OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
+            "east": (1, 0, 0)}
+_YAW = {"south": 0.0, "west": 90.0, "north": 180.0, "east": 270.0}  # Direction.toYRot (2D data value x 90)
+FRAME_DEPTH = 0.46875  # ItemFrame.calculateBoundingBox: the centre's offset back from the block's centre
+# items whose useOn is their own (Item.useOn overrides) and is not modelled here
+_OWN_USE_ON = frozenset("minecraft:" + n for n in (
+    "painting armor_stand bone_meal brush compass debug_stick end_crystal ender_eye fire_charge "
+    "firework_rocket honeycomb lead filled_map minecart chest_minecart furnace_minecart tnt_minecart "
+    "hopper_minecart command_block_minecart potion shears flint_and_steel").split())
+_OWN_USE_ON_SUFFIXES = ("_axe", "_hoe", "_shovel", "_spawn_egg")
+# block items named otherwise than their block (ItemNameBlockItem, Items: redstone -> redstone_wire ...)
+_PLACES_ANOTHER_BLOCK = frozenset("minecraft:" + n for n in (
+    "redstone string wheat_seeds beetroot_seeds carrot potato melon_seeds pumpkin_seeds torchflower_seeds "
+    "pitcher_pod sweet_berries glow_berries cocoa_beans bamboo powder_snow_bucket lily_pad frogspawn").split())
+
+
+def use_on(state, player, hand: str, pos, face: str, hit) -> str:
+    """ItemStack.useOn for an item that is no block the emulator places (see the module's doc)."""
+    access = inventories.entity_slot(player, hand_slot(hand), state.version)
+    stack = access.get()
+    use = USE_ON.get(stack.id)
+    if use is None:
+        if stack.id in _OWN_USE_ON or stack.id.endswith(_OWN_USE_ON_SUFFIXES) or stack.id in _PLACES_ANOTHER_BLOCK:
+            raise Unmodelled(f"using {stack.id} on {state.blocks.get(pos).id} (its useOn is not modelled)")
+        return "pass"
+    if player.gamemode == "adventure":
+        if stack.component("minecraft:can_place_on") is not None:
+            raise Unmodelled(f"using {stack.id} in adventure mode with can_place_on")
+        return "pass"
+    count = stack.count
+    result = use(state, player, access, stack, tuple(pos), face)
+    if player.gamemode == "creative":  # ServerPlayerGameMode.useItemOn: the count is put back
+        stack.count = count
+        access.set(stack)
+    if result == "consume":
+        statistics.award(state, player, statistics.stat_name("used", stack.id))
+    return result
+
+
+def _item_frame(state, player, access, stack, pos, face: str) -> str:
+    """HangingEntityItem.useOn for an item frame (see the module's doc)."""
+    if stack.component("minecraft:entity_data") is not None:
+        raise Unmodelled(f"placing {stack.id} with its entity_data component")
+    dx, dy, dz = _OFFSETS[face]
+    front = (pos[0] + dx, pos[1] + dy, pos[2] + dz)
+    low, high = state.entities.table.levels.build_height(player.dimension, state.version)
+    if not low <= front[1] < high:
+        return "fail"
+    centre = tuple(c + 0.5 - FRAME_DEPTH * d for c, d in zip(front, (dx, dy, dz)))
+    box = _frame_box(centre, face)
+    if block_shapes.collides(state.blocks.get(front)) or not block_shapes.is_solid(state.blocks.get(pos)) or \
+            _meets_a_hanging_entity(state, player.dimension, box):
+        return "consume"  # it would not survive: nothing placed, the use still consumed
+    yaw, pitch = (0.0, -90.0 * dy) if dy else (_YAW[face], 0.0)
+    state.entities.summon(FRAMES[stack.id], centre, _frame_nbt(front, face, yaw, pitch), yaw=yaw, pitch=pitch,
+                          dimension=player.dimension)
+    stack.count -= 1
+    access.set(stack)
+    return "consume"
+
+
+def _frame_nbt(front, face: str, yaw: float, pitch: float) -> Compound:
+    return Compound(Facing=Byte(FACE_DATA[face]), TileX=Int(front[0]), TileY=Int(front[1]), TileZ=Int(front[2]),
+                    Rotation=List([Float(yaw), Float(pitch)]))
+
+
+def _frame_box(centre, face: str):
+    """ItemFrame.calculateBoundingBox: 0.75 square, 0.0625 thick along the face's axis."""
+    axis = [abs(d) for d in _OFFSETS[face]].index(1)
+    size = [0.75, 0.75, 0.75]
+    size[axis] = 0.0625
+    return tuple(c - s / 2 for c, s in zip(centre, size)) + tuple(c + s / 2 for c, s in zip(centre, size))
+
+
+def _meets_a_hanging_entity(state, dimension: str, box) -> bool:
+    """Level.getEntities(frame, box, HANGING_ENTITY): another frame whose box meets this one (a
+    painting near it is not modelled)."""
+    for entity in state.entities.entities:
+        if not entity.alive or entity.dimension != dimension:
+            continue
+        if entity.type == "minecraft:painting" and all(abs(a - b) < 4 for a, b in zip(entity.pos, box[:3])):
+            raise Unmodelled("placing an item frame beside a painting (whether their boxes meet)")
+        if entity.type in FRAMES:
+            face = {v: k for k, v in FACE_DATA.items()}.get(int(entity.data.get("Facing", Byte(3))), "south")
+            other = _frame_box(entity.pos, face)
+            if all(box[i] < other[i + 3] and box[i + 3] > other[i] for i in range(3)):
+                return True
+    return False
+
+
+USE_ON = {"minecraft:item_frame": _item_frame, "minecraft:glow_item_frame": _item_frame}

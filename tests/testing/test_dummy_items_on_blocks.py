@@ -1,0 +1,80 @@
+"""PackTest's ``dummy use block`` with an item that places no block, and the bell (emulator.world.
+items_on_blocks, block_use). Sources: the game's ItemStack.useOn, Item.useOn (PASS),
+HangingEntityItem.useOn, ItemFrame.calculateBoundingBox/survives, HangingEntity.setDirection,
+BellBlock.useWithoutItem/onHit/isProperHit (Stats.BELL_RING), ItemUsedOnLocationTrigger."""
+import json
+
+import pytest
+
+from tests.testing.test_dummy_hands import run
+
+FRAME_ADVANCEMENT = {"demo/advancement/framed.json": json.dumps({"criteria": {"c": {
+    "trigger": "minecraft:item_used_on_block",
+    "conditions": {"location": [{"condition": "minecraft:match_tool", "predicate": {"items": "minecraft:item_frame"}},
+                                {"condition": "minecraft:block_state_property", "block": "minecraft:stone"}]}}}})}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_an_item_frame_hangs_on_the_clicked_face(tmp_path, backend):
+    """HangingEntityItem.useOn: the frame in the block in front of the north face, Facing 2 (north),
+    yaw 180, its centre 0.46875 back toward the stone; one frame spent, used:item_frame, and
+    item_used_on_block with the frame as the tool."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "scoreboard objectives add used minecraft.used:minecraft.item_frame\n"
+        "setblock ~1 ~1 ~2 stone\n"
+        "give @s item_frame 2\n"
+        "dummy @s use block ~1 ~1 ~2 north\n"
+        "assert entity @e[type=item_frame,nbt={Facing:2b,Rotation:[180.0f,0.0f]}]\n"
+        "execute positioned ~1.5 ~1.5 ~1.96875 run assert entity @e[type=item_frame,distance=..0.0001]\n"
+        "assert items entity @s weapon.mainhand item_frame[count=1]\n"
+        "assert score @s used matches 1\n"
+        "assert entity @s[advancements={demo:framed=true}]\n"
+        # the same face again: the new frame's box meets the first one: consumed, nothing placed
+        "dummy @s use block ~1 ~1 ~2 north\n"
+        "execute store result score #frames used if entity @e[type=item_frame]\n"
+        "assert score #frames used matches 1\n"
+        "assert items entity @s weapon.mainhand item_frame[count=1]\n"
+        # on top: pitch -90, Facing 1
+        "dummy @s use block ~1 ~1 ~2 up\n"
+        "assert entity @e[type=item_frame,nbt={Facing:1b,Rotation:[0.0f,-90.0f]}]\n"
+        "assert not items entity @s weapon.mainhand *\n"), files=FRAME_ADVANCEMENT, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_an_item_frame_does_not_hang_on_air_or_into_a_block(tmp_path):
+    """ItemFrame.survives: the block behind must be solid and its own block free of collision."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "setblock ~1 ~1 ~2 stone\n"
+        "setblock ~1 ~1 ~1 stone\n"
+        "give @s item_frame\n"
+        "dummy @s use block ~1 ~1 ~2 north\n"
+        "assert not entity @e[type=item_frame]\n"
+        "assert items entity @s weapon.mainhand item_frame\n"))
+    assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("item", ["emerald", "bucket"])
+def test_an_item_without_a_use_on_blocks_passes(tmp_path, item):
+    """Item.useOn: PASS (an emerald; a bucket, which acts through Item.use's own ray), so the dummy
+    cannot interact."""
+    result = run(tmp_path, f"# @dummy\nsetblock ~1 ~ ~ stone\ngive @s {item}\ndummy @s use block ~1 ~ ~\n"
+                           "fail \"end\"\n")
+    assert (result.status, result.message) == ("failed", "end")
+    assert "cannot interact with that block" in "\n".join(result.details)
+
+
+@pytest.mark.parametrize("face, y, rung", [("north", 0.25, True), ("north", 0.9, False), ("east", 0.25, False),
+                                           ("up", 0.5, False)])
+def test_a_floor_bell_rings_when_struck_on_a_side_across_its_facing(tmp_path, face, y, rung):
+    """BellBlock.isProperHit: a side (not up/down) no higher than 0.8124 in the block; a floor bell
+    facing north rings from its north and south sides; onHit awards bell_ring. A miss passes on to
+    the held emerald, whose use passes: the dummy cannot interact."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "scoreboard objectives add rung minecraft.custom:minecraft.bell_ring\n"
+        "setblock ~1 ~1 ~1 bell\n"
+        "give @s emerald\n"
+        f"dummy @s use block ~1.4 ~{1 + y} ~1.5 {face}\n"
+        f"assert {'' if rung else 'not '}score @s rung matches 1\n"
+        "fail \"end\"\n"))
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert ("cannot interact with that block" in "\n".join(result.details)) == (not rung)
