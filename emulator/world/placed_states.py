@@ -18,7 +18,8 @@ and the click height, the shape from the stairs in front and behind), pistons, d
 droppers and barrels (opposite the nearest looking direction), observers (the nearest looking
 direction), hoppers (opposite the clicked face, down when vertical), shulker boxes (the clicked
 face), end rods (the clicked face, flipped against an end rod facing it), and pillars (logs, wood,
-stems, hyphae, basalt, bone, hay, purpur and quartz pillars, chains ...: the clicked face's axis).
+stems, hyphae, basalt, bone, hay, purpur and quartz pillars, chains ...: the clicked face's axis),
+campfires (the player's direction, lit unless placed in water, a signal fire over a hay block).
 
 Sources (decompiled 1.21.x and 26.1): world/item/context/BlockPlaceContext.java
 (getNearestLookingDirection, getClickedPos), UseOnContext.getHorizontalDirection, core/Direction.java
@@ -26,7 +27,7 @@ Sources (decompiled 1.21.x and 26.1): world/item/context/BlockPlaceContext.java
 CarvedPumpkinBlock, LoomBlock, StonecutterBlock, GlazedTerracottaBlock, BeehiveBlock,
 EnderChestBlock, AnvilBlock, StairBlock (getStateForPlacement, getStairsShape, canTakeShape),
 piston/PistonBaseBlock, DispenserBlock, BarrelBlock, ObserverBlock, HopperBlock, ShulkerBoxBlock,
-EndRodBlock, RotatedPillarBlock, ChainBlock.
+EndRodBlock, RotatedPillarBlock, ChainBlock, CampfireBlock (getStateForPlacement, isSmokeSource).
 """
 from __future__ import annotations
 
@@ -50,6 +51,7 @@ _FACING_PLAYER = frozenset("minecraft:" + n for n in (
     "lectern furnace smoker blast_furnace carved_pumpkin jack_o_lantern loom stonecutter beehive bee_nest "
     "ender_chest").split())
 _ANVILS = frozenset(("minecraft:anvil", "minecraft:chipped_anvil", "minecraft:damaged_anvil"))
+_CAMPFIRES = frozenset(("minecraft:campfire", "minecraft:soul_campfire"))
 _LOOKING_AWAY = frozenset("minecraft:" + n for n in "piston sticky_piston dispenser dropper barrel".split())
 # the defaults of the properties placement leaves as they are (Block.registerDefaultState)
 _DEFAULTS = {"has_book": "false", "powered": "false", "lit": "false", "extended": "false", "triggered": "false",
@@ -108,6 +110,10 @@ def state_for_placement(state, player, block_id: str, properties: dict, target, 
         placed = {"facing": _end_rod(state, target, face)}
     elif block_id.endswith("_stairs"):
         placed = _stairs(state, player, target, face, hit)
+    elif block_id in _CAMPFIRES:
+        below = state.blocks.get((target[0], target[1] - 1, target[2]))
+        placed = {"facing": horizontal_direction(player), "lit": "false" if water else "true",
+                  "signal_fire": "true" if below.id == "minecraft:hay_block" else "false"}
     elif _is_pillar(properties):
         placed = {"axis": AXIS[face]}
     else:

@@ -85,3 +85,20 @@ def test_pistons_observers_and_hoppers_follow_the_look_and_the_face(tmp_path):
         "dummy @s use block ~2 ~ ~ east\n"
         "assert block ~3 ~ ~ hopper[facing=west,enabled=true]\n"))
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_campfire_faces_the_player_lit_and_signals_over_hay(tmp_path, backend):
+    """CampfireBlock.getStateForPlacement: facing = the player's horizontal direction (not its
+    opposite), lit unless placed in water (then waterlogged), signal_fire over a hay block."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "setblock ~2 ~ ~ stone\nsetblock ~2 ~ ~2 hay_block\nsetblock ~-2 ~ ~ stone\nsetblock ~-2 ~1 ~ water\n"
+        "give @s campfire 3\n"
+        "dummy @s use block ~2 ~ ~ up\n"
+        "assert block ~2 ~1 ~ campfire[facing=south,lit=true,signal_fire=false,waterlogged=false]\n"
+        "tp @s ~ ~ ~ 90 0\n"
+        "dummy @s use block ~2 ~ ~2 up\n"
+        "assert block ~2 ~1 ~2 campfire[facing=west,lit=true,signal_fire=true]\n"
+        "dummy @s use block ~-2 ~ ~ up\n"
+        "assert block ~-2 ~1 ~ campfire[lit=false,waterlogged=true]\n"), backend=backend)
+    assert result.status == "passed", result.report()
