@@ -117,16 +117,31 @@ def _use_item_on_block(state, player, hand: str, pos, block: BlockState, stack, 
     blocks modelled here, except a note block clicked on top with a head (NoteBlock.useItemOn:
     ``"skip"``, the head is placed instead) and a lectern (LecternBlock.useItemOn: a lectern book
     goes onto one without a book, ``"consume"``; an empty main hand skips to the item); a dye, ink
-    sac or honeycomb applied to an unwaxed sign (SignBlock.useItemOn) is not modelled."""
+    sac or honeycomb applied to an unwaxed sign (SignBlock.useItemOn) and food put on a campfire
+    (CampfireBlock.useItemOn) are not modelled."""
     if block.id == "minecraft:note_block" and face == "up" and stack.id.endswith(("_head", "_skull")):
         return "skip"
     if block.id == "minecraft:lectern":
         return _lectern_item(state, player, hand, pos, block, stack)
+    if block.id in CAMPFIRES and not stack.is_empty and _cookable(state, stack):
+        raise Unmodelled(f"cooking {stack.id} on a campfire (CampfireBlock.useItemOn: placeFood)")
     if signs.is_sign(block.id) and stack.id in signs.APPLICATORS and player.gamemode != "adventure":
         sign = state.blocks.entity(pos)
         if sign is not None and not int(sign.get("is_waxed", 0)):
             raise Unmodelled(f"applying {stack.id} to a sign (SignApplicator.tryApplyToSign)")
     return "try_empty_hand"
+
+
+CAMPFIRES = ("minecraft:campfire", "minecraft:soul_campfire")
+# the inputs of the game's campfire_cooking recipes (1.21)
+CAMPFIRE_FOODS = frozenset("minecraft:" + n for n in "beef chicken cod salmon mutton porkchop rabbit potato kelp".split())
+
+
+def _cookable(state, stack) -> bool:
+    """CampfireBlockEntity.getCookableRecipe: the game's foods, or any item when a pack adds a
+    campfire recipe (its ingredients are not matched here)."""
+    return stack.id in CAMPFIRE_FOODS or any(kind == "minecraft:campfire_cooking" and not rid.startswith("minecraft:")
+                                             for rid, kind in state.resources.recipes.items())
 
 
 LECTERN_BOOKS = ("minecraft:writable_book", "minecraft:written_book")  # #minecraft:lectern_books
@@ -388,7 +403,7 @@ PLAIN = frozenset("minecraft:" + n for n in (
     "obsidian smooth_stone stone_bricks deepslate netherrack end_stone bricks sandstone barrier iron_block "
     "gold_block diamond_block emerald_block lapis_block coal_block netherite_block piston sticky_piston observer "
     "hay_block bone_block basalt polished_basalt quartz_pillar purpur_pillar carved_pumpkin jack_o_lantern "
-    "end_rod").split()) | frozenset(
+    "end_rod campfire soul_campfire").split()) | frozenset(
     f"minecraft:{c}_{k}" for c in COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
     f"minecraft:{w}_planks" for w in WOODS)
 _PLAIN_KINDS = ("_stairs", "_slab", "_torch", "_log", "_wood", "_stem", "_hyphae", "_glazed_terracotta")

@@ -14,14 +14,14 @@ Modelled:
   repeater or comparator under a wall frame is not modelled) and no other frame's box meets its
   own (HangingEntity.survives); else the use consumes and nothing is placed. An item with
   ``entity_data`` is not modelled;
+- flint and steel: emulator.world.fire (a campfire or candle lit, a fire, a nether portal);
 - items whose useOn is Item's own (emeralds, buckets, food ...: a bucket acts through ``use item``'s
   ray, not here): the use passes.
 A creative player keeps the item (ServerPlayerGameMode.useItemOn restores the count); an adventure
 player's use passes (ItemStack.useOn: without ``can_place_on``, which is not modelled).
 
 Not modelled (Unmodelled): paintings (their variant), the useOn of the other items that have one
-(tools, bone meal, spawn eggs, flint and steel where emulator.world.fire does not take it, armor
-stands, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
+(tools, bone meal, spawn eggs, armor stands, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
 potions, shears, end crystals, maps, debug sticks) and the block items that place a block of another
 name (seeds, carrots, redstone dust, string ...).
 
@@ -33,7 +33,7 @@ player's count restored), core/Direction.java (get3DDataValue, toYRot).
 """
 from __future__ import annotations
 
-from emulator.world import block_shapes, inventories, statistics
+from emulator.world import block_shapes, fire, inventories, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.player_actions import hand_slot
 from mcfunction_parser.nbt import Byte, Compound, Float, Int, List
@@ -48,7 +48,7 @@ FRAME_DEPTH = 0.46875  # ItemFrame.calculateBoundingBox: the centre's offset bac
 _OWN_USE_ON = frozenset("minecraft:" + n for n in (
     "painting armor_stand bone_meal brush compass debug_stick end_crystal ender_eye fire_charge "
     "firework_rocket honeycomb lead filled_map minecart chest_minecart furnace_minecart tnt_minecart "
-    "hopper_minecart command_block_minecart potion shears flint_and_steel").split())
+    "hopper_minecart command_block_minecart potion shears").split())
 _OWN_USE_ON_SUFFIXES = ("_axe", "_hoe", "_shovel", "_spawn_egg")
 # block items named otherwise than their block (ItemNameBlockItem, Items: redstone -> redstone_wire ...)
 _PLACES_ANOTHER_BLOCK = frozenset("minecraft:" + n for n in (
@@ -130,4 +130,5 @@ def _meets_a_hanging_entity(state, dimension: str, box) -> bool:
     return False
 
 
-USE_ON = {"minecraft:item_frame": _item_frame, "minecraft:glow_item_frame": _item_frame}
+USE_ON = {"minecraft:item_frame": _item_frame, "minecraft:glow_item_frame": _item_frame,
+          "minecraft:flint_and_steel": fire.flint_and_steel}

@@ -78,3 +78,56 @@ def test_a_floor_bell_rings_when_struck_on_a_side_across_its_facing(tmp_path, fa
         "fail \"end\"\n"))
     assert (result.status, result.message) == ("failed", "end"), result.report()
     assert ("cannot interact with that block" in "\n".join(result.details)) == (not rung)
+
+
+PLACED_FIRE = {"demo/advancement/fire.json": json.dumps({"criteria": {"c": {
+    "trigger": "minecraft:placed_block",
+    "conditions": {"location": [{"condition": "minecraft:match_tool", "predicate": {"items": "minecraft:flint_and_steel"}},
+                                {"condition": "minecraft:block_state_property", "block": "minecraft:nether_portal"}]}}}})}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_flint_and_steel_fills_an_obsidian_frame_with_a_portal(tmp_path, backend):
+    """FlintAndSteelItem.useOn -> BaseFireBlock.onPlace -> PortalShape.findEmptyPortalShape (x first):
+    a 2 x 3 frame along x fills with nether_portal[axis=x]; placed_block at the fire's block, the
+    flint and steel worn by one, used:flint_and_steel."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~4 ~5 ~3 air\n" + (
+        "scoreboard objectives add used minecraft.used:minecraft.flint_and_steel\n"
+        "fill ~ ~ ~2 ~3 ~4 ~2 obsidian\n"
+        "fill ~1 ~1 ~2 ~2 ~3 ~2 air\n"
+        "item replace entity @s weapon.mainhand with flint_and_steel\n"
+        "dummy @s use block ~1 ~ ~2 up\n"
+        "assert block ~1 ~1 ~2 nether_portal[axis=x]\n"
+        "assert block ~2 ~3 ~2 nether_portal[axis=x]\n"
+        "assert block ~ ~1 ~2 obsidian\n"
+        "assert items entity @s weapon.mainhand flint_and_steel[damage=1]\n"
+        "assert score @s used matches 1\n"
+        "assert entity @s[advancements={demo:fire=true}]\n"), files=PLACED_FIRE, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_flint_and_steel_on_a_frame_too_small_lights_a_fire_whose_ticks_are_not_modelled(tmp_path):
+    """PortalShape: a 1-wide frame is no portal; the fire stands on the obsidian's sturdy top
+    (FireBlock.getStateForPlacement: age 0, no sides). FireBlock.tick comes 30 to 39 ticks later:
+    reported as not modelled."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~4 ~5 ~3 air\n" + (
+        "fill ~ ~ ~1 ~2 ~3 ~1 obsidian\n"
+        "fill ~1 ~1 ~1 ~1 ~2 ~1 air\n"
+        "item replace entity @s weapon.mainhand with flint_and_steel\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~1 ~1 fire[age=0,up=false,north=false]\n"
+        "assert block ~1 ~2 ~1 air\n"
+        "await delay 40t\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "FireBlock.tick" in result.report()
+
+
+def test_flint_and_steel_lights_a_campfire(tmp_path):
+    """CampfireBlock.canLight: unlit, not waterlogged: lit=true, the item worn."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "setblock ~1 ~ ~1 campfire[lit=false]\n"
+        "item replace entity @s weapon.mainhand with flint_and_steel\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 campfire[lit=true]\n"
+        "assert items entity @s weapon.mainhand flint_and_steel[damage=1]\n"))
+    assert result.status == "passed", result.report()
