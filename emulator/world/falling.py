@@ -51,7 +51,7 @@ import math
 
 import numpy as np
 
-from emulator.world import block_shapes, combat, living, statistics
+from emulator.world import block_shapes, combat, living, relations, statistics
 from emulator.world.errors import Unmodelled
 from mcfunction_parser.nbt import Byte, Float
 
@@ -112,6 +112,9 @@ def jump(state, player) -> None:
 
 def _tick(state, player) -> None:
     if living.health(player) <= 0:
+        return
+    if relations.vehicle_of(player) is not None:  # Entity.rideTick instead of travel
+        relations.ride_tick(player)
         return
     if player.gamemode == "spectator":
         raise Unmodelled("a spectator's movement (no collision)")

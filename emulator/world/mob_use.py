@@ -34,11 +34,9 @@ Entity.java (interact: Leashable; startRiding: START_RIDING_TRIGGER; positionRid
 world/entity/player/Player.java (interactOn), server/level/ServerPlayer.java (startRiding),
 world/entity/animal/Pig.java, Cow.java, Animal.java (mobInteract, setInLove),
 world/item/NameTagItem.java, SaddleItem.java, ItemUtils.java (createFilledResult),
-world/entity/EntityType.java (pig: passengerAttachments 0.86875; player: vehicle attachment 0.6).
+world/entity/EntityType.java (pig: passengerAttachments; emulator.world.relations.position_rider).
 """
 from __future__ import annotations
-
-import numpy as np
 
 from emulator.world import inventories, items, living, relations
 from emulator.world.entities import TextTag
@@ -47,12 +45,8 @@ from emulator.world.items import ItemStack
 from emulator.world.player_actions import drop_from, hand_slot
 from mcfunction_parser.nbt import Byte, Int, IntArray, String
 
-F32 = np.float32
 SADDLE_EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a: a saddle is worn in the ``saddle`` equipment slot
 LOVE_TICKS = 600  # Animal.setInLove
-# EntityType passengerAttachments (the first passenger's) and the player's vehicle attachment
-PASSENGER_ATTACHMENT = {"minecraft:pig": float(F32(0.86875))}
-PLAYER_VEHICLE_ATTACHMENT = 0.6  # Player.DEFAULT_VEHICLE_ATTACHMENT
 # mobs without a mobInteract of their own (Mob.mobInteract passes)
 PLAIN_MOBS = frozenset("minecraft:" + n for n in (
     "zombie husk drowned zombified_piglin skeleton stray wither_skeleton spider cave_spider silverfish endermite "
@@ -211,12 +205,8 @@ def mount(state, rider, vehicle) -> bool:
     """Player.startRiding(vehicle) (not forced): refused when the vehicle already carries someone
     (Entity.canAddPassenger); the rider goes onto the vehicle's attachment at once
     (ServerPlayer.startRiding -> positionRider) and every player riding it hears ``started_riding``."""
-    attachment = PASSENGER_ATTACHMENT.get(vehicle.type)
-    if attachment is None or living.attribute_value(vehicle, "scale") != 1.0:
-        raise Unmodelled(f"where a rider sits on {vehicle.type} (its passenger attachment at its scale)")
     if relations.passengers_of(vehicle) or not relations.start_riding(rider, vehicle):
         return False
-    x, y, z = vehicle.pos
-    rider.pos = (x, y + attachment - PLAYER_VEHICLE_ATTACHMENT, z)
+    relations.position_rider(rider)
     relations.started_riding(state, vehicle)
     return True

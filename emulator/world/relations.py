@@ -24,6 +24,8 @@ one without ``leash`` data has no holder; a leash that is there is not modelled 
 """
 from __future__ import annotations
 
+import numpy as np
+
 from emulator.world import advancements, combat, living
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import Entity, EntityStore
@@ -33,6 +35,7 @@ from mcfunction_parser.nbt import Compound, IntArray, List, String
 from mcfunction_parser.pack.tags import normalise_id
 
 INTERACTION = "minecraft:interaction"
+F32 = np.float32
 _NO_PASSENGERS = frozenset({"minecraft:marker"})
 _OWNABLE = frozenset(f"minecraft:{t}" for t in (
     "wolf", "cat", "parrot", "horse", "donkey", "mule", "llama", "trader_llama", "skeleton_horse",
@@ -75,6 +78,34 @@ def started_riding(state, vehicle: Entity) -> None:
     for rider in self_and_passengers(vehicle)[1:]:
         if rider.is_player:
             advancements.trigger(state, rider, "started_riding")
+
+
+# EntityType passengerAttachments (the first passenger's height on the vehicle) and the player's
+# vehicle attachment (Player.DEFAULT_VEHICLE_ATTACHMENT): where a player rides
+PASSENGER_ATTACHMENT = {"minecraft:pig": float(F32(0.86875))}
+PLAYER_VEHICLE_ATTACHMENT = 0.6
+
+
+def position_rider(rider: Entity) -> None:
+    """Entity.positionRider for a player riding alone at the vehicle's scale 1: at the vehicle's
+    x and z, its passenger attachment less the player's vehicle attachment above its feet."""
+    vehicle = rider.vehicle
+    attachment = PASSENGER_ATTACHMENT.get(vehicle.type)
+    if attachment is None or not rider.is_player or living.attribute_value(vehicle, "scale") != 1.0 or \
+            len(passengers_of(vehicle)) > 1:
+        raise Unmodelled(f"where {rider.type} rides on {vehicle.type} (its passenger attachment)")
+    x, y, z = vehicle.pos
+    rider.pos = (x, y + attachment - PLAYER_VEHICLE_ATTACHMENT, z)
+
+
+def ride_tick(rider: Entity) -> None:
+    """Player.rideTick on the server: a sneaking player gets off (wantsToStopRiding: where it is put
+    down, Entity.dismountTo, is not modelled); else Entity.rideTick: no motion, and the vehicle
+    places it (positionRider)."""
+    if rider.sneaking:
+        raise Unmodelled(f"a player getting off {rider.vehicle.type} (where the vehicle puts it down)")
+    rider.motion = (0.0, 0.0, 0.0)
+    position_rider(rider)
 
 
 def stop_riding(rider: Entity) -> None:

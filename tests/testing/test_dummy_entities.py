@@ -116,10 +116,24 @@ def test_a_saddle_saddles_a_pig_and_the_next_use_rides_it(tmp_path, backend):
         "dummy @s use entity @e[tag=p,limit=1]\n"
         "execute on vehicle run assert entity @s[tag=p]\n"
         "assert entity @s[tag=rode]\n"
+        "execute at @e[tag=p] positioned ~ ~0.26875 ~ run assert entity @p[distance=..0.0001]\n"
+        # Entity.rideTick: the rider neither falls nor moves while the pig stands
+        "await delay 5t\n"
         "execute at @e[tag=p] positioned ~ ~0.26875 ~ run assert entity @p[distance=..0.0001]\n"),
         files=_files({"demo/advancement/ride.json": adv, "demo/function/rode.mcfunction": "tag @s add rode\n"}),
         backend=backend)
     assert result.status == "passed", result.report()
+
+
+def test_a_sneaking_rider_getting_off_is_not_modelled(tmp_path):
+    """Player.rideTick: wantsToStopRiding (sneaking) dismounts; where it is put down is not modelled."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b,Saddle:1b}\n"
+        "dummy @s use entity @e[tag=p,limit=1]\n"
+        "dummy @s sneak true\n"
+        "await delay 1t\n"), files=_files())
+    assert result.status == "inconclusive", result.report()
+    assert "getting off minecraft:pig" in result.report()
 
 
 def test_food_puts_an_adult_pig_in_love_instead_of_mounting(tmp_path):
