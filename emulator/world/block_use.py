@@ -123,7 +123,7 @@ def _use_item_on_block(state, player, hand: str, pos, block: BlockState, stack, 
         return "skip"
     if block.id == "minecraft:lectern":
         return _lectern_item(state, player, hand, pos, block, stack)
-    if block.id in CAMPFIRES and not stack.is_empty and _cookable(state, stack):
+    if block.id in inventories.CAMPFIRES and not stack.is_empty and _cookable(state, stack):
         raise Unmodelled(f"cooking {stack.id} on a campfire (CampfireBlock.useItemOn: placeFood)")
     if signs.is_sign(block.id) and stack.id in signs.APPLICATORS and player.gamemode != "adventure":
         sign = state.blocks.entity(pos)
@@ -132,7 +132,6 @@ def _use_item_on_block(state, player, hand: str, pos, block: BlockState, stack, 
     return "try_empty_hand"
 
 
-CAMPFIRES = ("minecraft:campfire", "minecraft:soul_campfire")
 # the inputs of the game's campfire_cooking recipes (1.21)
 CAMPFIRE_FOODS = frozenset("minecraft:" + n for n in "beef chicken cod salmon mutton porkchop rabbit potato kelp".split())
 
@@ -406,4 +405,5 @@ PLAIN = frozenset("minecraft:" + n for n in (
     "end_rod campfire soul_campfire").split()) | frozenset(
     f"minecraft:{c}_{k}" for c in COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
     f"minecraft:{w}_planks" for w in WOODS)
-_PLAIN_KINDS = ("_stairs", "_slab", "_torch", "_log", "_wood", "_stem", "_hyphae", "_glazed_terracotta")
+_PLAIN_KINDS = ("_stairs", "_slab", "_torch", "_log", "_wood", "_stem", "_hyphae", "_glazed_terracotta",
+                "copper", "copper_block", "copper_grate", "copper_bulb")  # copper's blocks (WeatheringCopper*)

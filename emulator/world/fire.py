@@ -2,7 +2,7 @@
 observes: the lit campfire or candle, the fire block, a nether portal filling an obsidian frame,
 the ``placed_block`` criterion and the item's wear.
 
-- ``flint_and_steel(state, player, access, stack, pos, face) -> str``: the use on the block at
+- ``flint_and_steel(state, player, hand, access, stack, pos, face) -> str``: the use on the block at
   ``pos`` clicked on ``face``: ``"consume"`` or ``"fail"``.
 - ``find_empty_portal(blocks, pos, axis, low)``: PortalShape.findEmptyPortalShape: the portal's
   cells (bottom left first) and axis, or None.
@@ -36,6 +36,7 @@ from __future__ import annotations
 from emulator.world import advancements, block_shapes, tools
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
+from emulator.world.inventories import CAMPFIRES
 
 FIRE_TICK_DELAY = 30  # FireBlock.getFireTickDelay: 30 + nextInt(10); the earliest its first tick comes
 MIN_WIDTH, MAX_WIDTH, MIN_HEIGHT, MAX_HEIGHT = 2, 21, 3, 21  # PortalShape
@@ -57,7 +58,7 @@ def _property(block, name: str, default: str = "") -> str:
 def _can_light(block) -> bool:
     """CampfireBlock / CandleBlock / CandleCakeBlock.canLight: unlit and not waterlogged."""
     name = block.id.removeprefix("minecraft:")
-    lightable = name in ("campfire", "soul_campfire") or name.endswith("candle") or name.endswith("candle_cake")
+    lightable = block.id in CAMPFIRES or name.endswith("candle") or name.endswith("candle_cake")
     return lightable and _property(block, "lit") == "false" and _property(block, "waterlogged", "false") == "false"
 
 
@@ -65,7 +66,7 @@ def _set(state, pos, block_id: str, properties: dict) -> None:
     state.blocks.set_state(pos, BlockState(block_id, tuple(sorted(properties.items()))))
 
 
-def flint_and_steel(state, player, access, stack, pos, face: str) -> str:
+def flint_and_steel(state, player, hand: str, access, stack, pos, face: str) -> str:
     """FlintAndSteelItem.useOn (see the module's doc)."""
     blocks = state.blocks
     clicked = blocks.get(pos)

@@ -15,27 +15,39 @@ Modelled:
   own (HangingEntity.survives); else the use consumes and nothing is placed. An item with
   ``entity_data`` is not modelled;
 - flint and steel: emulator.world.fire (a campfire or candle lit, a fire, a nether portal);
+- hoes (HoeItem.useOn: grass, paths and dirt till to ``farmland[moisture=0]``, coarse dirt to
+  dirt, with air above and not from below), shovels (ShovelItem.useOn: grass, dirt, podzol,
+  coarse or rooted dirt and mycelium with air above flatten to ``dirt_path``, else a lit campfire
+  is put out; not from below) and axes (AxeItem.useOn: logs, wood, stems, hyphae and bamboo blocks
+  stripped keeping their axis, else copper scraped back a stage, else waxed copper unwaxed, its
+  properties kept; ``item_used_on_block`` fires first with the block as it was; with a shield in
+  the offhand a main-hand axe passes unless the player sneaks): each worn by one. Rooted dirt
+  tilled (its dropped roots) and copper doors (their other half) are not modelled;
 - items whose useOn is Item's own (emeralds, buckets, food ...: a bucket acts through ``use item``'s
   ray, not here): the use passes.
 A creative player keeps the item (ServerPlayerGameMode.useItemOn restores the count); an adventure
 player's use passes (ItemStack.useOn: without ``can_place_on``, which is not modelled).
 
 Not modelled (Unmodelled): paintings (their variant), the useOn of the other items that have one
-(tools, bone meal, spawn eggs, armor stands, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
+(bone meal, spawn eggs, armor stands, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
 potions, shears, end crystals, maps, debug sticks) and the block items that place a block of another
 name (seeds, carrots, redstone dust, string ...).
 
 Sources (decompiled 1.21): world/item/ItemStack.java (useOn: mayBuild, ITEM_USED when the result
 indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java,
 world/entity/decoration/HangingEntity.java (setDirection, recalculateBoundingBox), ItemFrame.java
-(calculateBoundingBox, survives), server/level/ServerPlayerGameMode.java (useItemOn: a creative
+(calculateBoundingBox, survives), HoeItem.java (TILLABLES, onlyIfAirAbove), ShovelItem.java
+(FLATTENABLES), AxeItem.java (STRIPPABLES, evaluateNewBlockState, playerHasShieldUseIntent),
+WeatheringCopper.getPrevious, HoneycombItem.WAX_OFF_BY_BLOCK, server/level/ServerPlayerGameMode.java (useItemOn: a creative
 player's count restored), core/Direction.java (get3DDataValue, toYRot).
 """
 from __future__ import annotations
 
-from emulator.world import block_shapes, fire, inventories, statistics
+from emulator.world import advancements, block_shapes, fire, inventories, statistics, tools
+from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
-from emulator.world.player_actions import hand_slot
+from emulator.world.player_actions import MAIN, hand_slot
+from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Float, Int, List
 
 FRAMES = {"minecraft:item_frame": "minecraft:item_frame", "minecraft:glow_item_frame": "minecraft:glow_item_frame"}
@@ -70,7 +82,7 @@ def use_on(state, player, hand: str, pos, face: str, hit) -> str:
             raise Unmodelled(f"using {stack.id} in adventure mode with can_place_on")
         return "pass"
     count = stack.count
-    result = use(state, player, access, stack, tuple(pos), face)
+    result = use(state, player, hand, access, stack, tuple(pos), face)
     if player.gamemode == "creative":  # ServerPlayerGameMode.useItemOn: the count is put back
         stack.count = count
         access.set(stack)
@@ -79,7 +91,7 @@ def use_on(state, player, hand: str, pos, face: str, hit) -> str:
     return result
 
 
-def _item_frame(state, player, access, stack, pos, face: str) -> str:
+def _item_frame(state, player, hand: str, access, stack, pos, face: str) -> str:
     """HangingEntityItem.useOn for an item frame (see the module's doc)."""
     if stack.component("minecraft:entity_data") is not None:
         raise Unmodelled(f"placing {stack.id} with its entity_data component")
@@ -130,5 +142,102 @@ def _meets_a_hanging_entity(state, dimension: str, box) -> bool:
     return False
 
 
+# ---------------------------------------------------------------------- tools
+TILLED = {"minecraft:grass_block": "minecraft:farmland", "minecraft:dirt_path": "minecraft:farmland",
+          "minecraft:dirt": "minecraft:farmland", "minecraft:coarse_dirt": "minecraft:dirt"}  # HoeItem.TILLABLES
+FLATTENED = frozenset("minecraft:" + n for n in "grass_block dirt podzol coarse_dirt mycelium rooted_dirt".split())
+_STRIPPABLE = ("_log", "_wood", "_stem", "_hyphae", "bamboo_block")
+_OXIDISED = ("exposed_", "weathered_", "oxidized_")  # WeatheringCopper's stages after the first
+
+
+def _set_block(state, pos, block_id: str, properties: dict) -> None:
+    state.blocks.set_state(pos, BlockState(block_id, tuple(sorted(properties.items()))))
+
+
+def _air_above(state, pos) -> bool:
+    return state.blocks.get((pos[0], pos[1] + 1, pos[2])).is_air
+
+
+def _hoe(state, player, hand: str, access, stack, pos, face: str) -> str:
+    """HoeItem.useOn: grass, a path or dirt tills to farmland, coarse dirt to dirt, clicked on any
+    face but the bottom with air above (onlyIfAirAbove); the hoe is worn by one. Rooted dirt (its
+    hanging roots dropped from the face) is not modelled."""
+    block = state.blocks.get(pos)
+    if block.id == "minecraft:rooted_dirt":
+        raise Unmodelled("tilling rooted dirt (the hanging roots it drops)")
+    tilled = TILLED.get(block.id)
+    if tilled is None or face == "down" or not _air_above(state, pos):
+        return "pass"
+    _set_block(state, pos, tilled, {"moisture": "0"} if tilled == "minecraft:farmland" else {})
+    tools.hurt_and_break(state, player, access, 1)
+    return "consume"
+
+
+def _shovel(state, player, hand: str, access, stack, pos, face: str) -> str:
+    """ShovelItem.useOn (not on the bottom face): grass, dirt, podzol, coarse or rooted dirt and
+    mycelium with air above flatten to a path; else a lit campfire is put out (lit=false); the
+    shovel is worn by one."""
+    block = state.blocks.get(pos)
+    if face == "down":
+        return "pass"
+    if block.id in FLATTENED and _air_above(state, pos):
+        _set_block(state, pos, "minecraft:dirt_path", {})
+    elif block.id in inventories.CAMPFIRES and dict(block.properties).get("lit") == "true":
+        _set_block(state, pos, block.id, {**dict(block.properties), "lit": "false"})
+    else:
+        return "pass"
+    tools.hurt_and_break(state, player, access, 1)
+    return "consume"
+
+
+def _axed(state, block):
+    """AxeItem.evaluateNewBlockState: a log, wood, stem, hyphae or bamboo block stripped (its
+    axis kept), else copper scraped back one stage (WeatheringCopper.getPrevious), else its wax
+    taken off (HoneycombItem.WAX_OFF_BY_BLOCK), the other properties kept; None for any other."""
+    name = block.id.removeprefix("minecraft:")
+    properties = dict(block.properties)
+    if name.endswith(_STRIPPABLE) and not name.startswith("stripped_") and \
+            gamedata.block_states(f"minecraft:stripped_{name}", state.version) is not None:
+        return f"minecraft:stripped_{name}", {"axis": properties.get("axis", "y")}
+    if "copper" in name:
+        if name.startswith("waxed_"):
+            previous = name.removeprefix("waxed_")
+        elif name.startswith(_OXIDISED):
+            stage = next(p for p in _OXIDISED if name.startswith(p))
+            rest = name.removeprefix(stage)
+            earlier = _OXIDISED.index(stage)
+            previous = _OXIDISED[earlier - 1] + rest if earlier else ("copper_block" if rest == "copper" else rest)
+        else:
+            return None
+        if name.endswith("_door"):
+            raise Unmodelled(f"scraping {block.id} (the door's other half)")
+        return f"minecraft:{previous}", properties
+    return None
+
+
+def _axe(state, player, hand: str, access, stack, pos, face: str) -> str:
+    """AxeItem.useOn: with a shield in the offhand a main-hand axe passes unless the player sneaks
+    (playerHasShieldUseIntent); else the block changes (see _axed), ``item_used_on_block`` fires
+    with the block as it was (the axe's own trigger, before the one of every use), and the axe is
+    worn by one."""
+    offhand = inventories.entity_slot(player, inventories.OFFHAND, state.version).get()
+    if hand == MAIN and offhand.id == "minecraft:shield" and not player.sneaking:
+        return "pass"
+    block = state.blocks.get(pos)
+    changed = _axed(state, block)
+    if changed is None:
+        return "pass"
+    advancements.trigger(state, player, "item_used_on_block", advancements.location_test(state, player, pos, stack))
+    _set_block(state, pos, *changed)
+    tools.hurt_and_break(state, player, access, 1)
+    return "consume"
+
+
+def _tool(use, suffix: str):
+    return {f"minecraft:{tier}{suffix}": use for tier in TOOL_TIERS}
+
+
+TOOL_TIERS = ("wooden", "stone", "iron", "golden", "diamond", "netherite")
 USE_ON = {"minecraft:item_frame": _item_frame, "minecraft:glow_item_frame": _item_frame,
-          "minecraft:flint_and_steel": fire.flint_and_steel}
+          "minecraft:flint_and_steel": fire.flint_and_steel,
+          **_tool(_hoe, "_hoe"), **_tool(_shovel, "_shovel"), **_tool(_axe, "_axe")}

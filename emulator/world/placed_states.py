@@ -38,6 +38,7 @@ import numpy as np
 from emulator.world import mth
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
+from emulator.world.inventories import CAMPFIRES
 
 F32 = np.float32
 HORIZONTAL = ("south", "west", "north", "east")  # Direction's 2D data values 0-3
@@ -51,7 +52,6 @@ _FACING_PLAYER = frozenset("minecraft:" + n for n in (
     "lectern furnace smoker blast_furnace carved_pumpkin jack_o_lantern loom stonecutter beehive bee_nest "
     "ender_chest").split())
 _ANVILS = frozenset(("minecraft:anvil", "minecraft:chipped_anvil", "minecraft:damaged_anvil"))
-_CAMPFIRES = frozenset(("minecraft:campfire", "minecraft:soul_campfire"))
 _LOOKING_AWAY = frozenset("minecraft:" + n for n in "piston sticky_piston dispenser dropper barrel".split())
 # the defaults of the properties placement leaves as they are (Block.registerDefaultState)
 _DEFAULTS = {"has_book": "false", "powered": "false", "lit": "false", "extended": "false", "triggered": "false",
@@ -110,7 +110,7 @@ def state_for_placement(state, player, block_id: str, properties: dict, target, 
         placed = {"facing": _end_rod(state, target, face)}
     elif block_id.endswith("_stairs"):
         placed = _stairs(state, player, target, face, hit)
-    elif block_id in _CAMPFIRES:
+    elif block_id in CAMPFIRES:
         below = state.blocks.get((target[0], target[1] - 1, target[2]))
         placed = {"facing": horizontal_direction(player), "lit": "false" if water else "true",
                   "signal_fire": "true" if below.id == "minecraft:hay_block" else "false"}

@@ -131,3 +131,58 @@ def test_flint_and_steel_lights_a_campfire(tmp_path):
         "assert block ~1 ~ ~1 campfire[lit=true]\n"
         "assert items entity @s weapon.mainhand flint_and_steel[damage=1]\n"))
     assert result.status == "passed", result.report()
+
+
+AXE_ADVANCEMENT = {"demo/advancement/stripped.json": json.dumps({"criteria": {"c": {
+    "trigger": "minecraft:item_used_on_block",
+    "conditions": {"location": [{"condition": "minecraft:block_state_property", "block": "minecraft:oak_log"}]}}}})}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_hoe_tills_a_shovel_flattens_an_axe_strips_and_scrapes(tmp_path, backend):
+    """HoeItem.useOn (grass -> farmland, coarse dirt -> dirt, air above), ShovelItem.useOn (dirt ->
+    dirt_path; a lit campfire put out), AxeItem.useOn (oak_log keeps its axis; copper scraped one
+    stage; wax off); each wears the tool by one. The axe fires item_used_on_block before the change
+    (the log as it was)."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "setblock ~1 ~ ~ grass_block\nsetblock ~2 ~ ~ coarse_dirt\nsetblock ~1 ~ ~1 dirt\n"
+        "setblock ~2 ~ ~1 campfire[lit=true]\nsetblock ~1 ~ ~2 oak_log[axis=x]\n"
+        "setblock ~2 ~ ~2 weathered_cut_copper\nsetblock ~ ~ ~2 waxed_copper_block\n"
+        "item replace entity @s weapon.mainhand with iron_hoe\n"
+        "dummy @s use block ~1 ~ ~ up\n"
+        "dummy @s use block ~2 ~ ~ north\n"
+        "assert block ~1 ~ ~ farmland[moisture=0]\n"
+        "assert block ~2 ~ ~ dirt\n"
+        "assert items entity @s weapon.mainhand iron_hoe[damage=2]\n"
+        "item replace entity @s weapon.mainhand with iron_shovel\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "dummy @s use block ~2 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 dirt_path\n"
+        "assert block ~2 ~ ~1 campfire[lit=false]\n"
+        "item replace entity @s weapon.mainhand with iron_axe\n"
+        "dummy @s use block ~1 ~ ~2 up\n"
+        "assert block ~1 ~ ~2 stripped_oak_log[axis=x]\n"
+        "assert entity @s[advancements={demo:stripped=true}]\n"
+        "dummy @s use block ~2 ~ ~2 up\n"
+        "assert block ~2 ~ ~2 exposed_cut_copper\n"
+        "dummy @s use block ~ ~ ~2 up\n"
+        "assert block ~ ~ ~2 copper_block\n"
+        "assert items entity @s weapon.mainhand iron_axe[damage=3]\n"), files=AXE_ADVANCEMENT, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_a_hoe_needs_air_above_and_an_axe_yields_to_a_shield(tmp_path):
+    """HoeItem.onlyIfAirAbove; AxeItem.playerHasShieldUseIntent: a main-hand axe with a shield in
+    the offhand passes (then the offhand's shield has no use on blocks): nothing changes."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "setblock ~1 ~ ~ dirt\nsetblock ~1 ~1 ~ stone\nsetblock ~2 ~ ~ oak_log\n"
+        "item replace entity @s weapon.mainhand with iron_hoe\n"
+        "dummy @s use block ~1 ~ ~ north\n"
+        "assert block ~1 ~ ~ dirt\n"
+        "item replace entity @s weapon.mainhand with iron_axe\n"
+        "item replace entity @s weapon.offhand with shield\n"
+        "dummy @s use block ~2 ~ ~ up\n"
+        "assert block ~2 ~ ~ oak_log\n"
+        "fail \"end\"\n"))
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert "cannot interact with that block" in "\n".join(result.details)
