@@ -19,10 +19,14 @@ mob, a lead in hand: not modelled); then the mob's own mobInteract:
   bucket spent, the milk bucket in its place, or added to the inventory (dropped when full) when
   more buckets are left; a creative player keeps the bucket and gets a milk bucket if it has none);
   else breeding with ``#minecraft:cow_food``;
+- villagers and wandering traders (Villager / WanderingTrader.mobInteract): with no offers (a
+  villager of no profession or a nitwit without saved ``Offers``, or empty ``Offers``) the use
+  counts ``minecraft.custom:minecraft.talked_to_villager`` (main hand) and is consumed; a baby
+  villager just refuses; opening the trades and the first trades drawn at random are not modelled;
 - breeding (Animal.mobInteract): food given to an adult at age 0 not in love spends one item and
   sets ``InLove`` 600 and ``LoveCause`` (the player); a baby fed grows (not modelled);
 - mobs whose mobInteract is Mob's own (zombies, skeletons, spiders ...): pass.
-Any other mob's mobInteract (villagers' trading, horses, sheep shearing, wolves ...) raises
+Any other mob's mobInteract (horses, sheep shearing, wolves ...) raises
 Unmodelled. A creative player keeps what a use took from its hand (Player.interactOn restores the
 count; the item's own use works on a copy).
 
@@ -32,17 +36,18 @@ dummy (emulator.world.entity_use). The game events and sounds are not observable
 Sources (decompiled 1.21): world/entity/Mob.java (interact, checkAndHandleImportantInteractions),
 Entity.java (interact: Leashable; startRiding: START_RIDING_TRIGGER; positionRider),
 world/entity/player/Player.java (interactOn), server/level/ServerPlayer.java (startRiding),
-world/entity/animal/Pig.java, Cow.java, Animal.java (mobInteract, setInLove),
+world/entity/animal/Pig.java, Cow.java, Animal.java (mobInteract, setInLove), world/entity/npc/
+Villager.java, WanderingTrader.java (mobInteract), AbstractVillager.java (getOffers),
 world/item/NameTagItem.java, SaddleItem.java, ItemUtils.java (createFilledResult),
 world/entity/EntityType.java (pig: passengerAttachments; emulator.world.relations.position_rider).
 """
 from __future__ import annotations
 
-from emulator.world import inventories, items, living, relations
+from emulator.world import inventories, items, living, relations, statistics
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
-from emulator.world.player_actions import drop_from, hand_slot
+from emulator.world.player_actions import MAIN, drop_from, hand_slot
 from mcfunction_parser.nbt import Byte, Int, IntArray, String
 
 SADDLE_EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a: a saddle is worn in the ``saddle`` equipment slot
@@ -198,7 +203,43 @@ def filled_result(state, player, empty: ItemStack, filled: ItemStack) -> ItemSta
     return empty
 
 
-MOB_INTERACTS = {"minecraft:pig": _pig, "minecraft:cow": _cow}
+# professions with no trades (VillagerTrades.TRADES has none for them)
+_NO_TRADES = ("minecraft:none", "minecraft:nitwit")
+
+
+def _offers_empty(mob) -> bool:
+    """AbstractVillager.getOffers().isEmpty(): the saved ``Offers``' recipes; without any, a
+    villager of a trading profession (and any wandering trader) draws its first trades at random
+    (updateTrades), which is not modelled."""
+    offers = mob.data.get("Offers")
+    if offers is not None:
+        return not offers.get("Recipes")
+    data = mob.data.get("VillagerData")
+    profession = str(data.get("profession", "minecraft:none")) if data is not None else "minecraft:none"
+    if mob.type == "minecraft:villager" and (profession if ":" in profession else "minecraft:" + profession) in _NO_TRADES:
+        return True
+    raise Unmodelled(f"the first trades of {mob.type} (updateTrades: drawn at random)")
+
+
+def _merchant(state, player, hand: str, mob) -> str:
+    """Villager / WanderingTrader.mobInteract: a baby villager refuses (consumed; a baby trader
+    passes); else ``minecraft.custom:minecraft.talked_to_villager`` for the main hand, and with no
+    offers the use is consumed; opening the trades is not modelled."""
+    _, held = _held(state, player, hand)
+    if held.id == "minecraft:villager_spawn_egg":
+        raise Unmodelled(f"using a villager spawn egg on {mob.type}")
+    if living.is_baby(mob):
+        return "consume" if mob.type == "minecraft:villager" else "pass"
+    empty = _offers_empty(mob)
+    if not empty:
+        raise Unmodelled(f"trading with {mob.type} (its trading menu and special prices)")
+    if hand == MAIN:
+        statistics.award(state, player, statistics.stat_name("custom", "talked_to_villager"))
+    return "consume"
+
+
+MOB_INTERACTS = {"minecraft:pig": _pig, "minecraft:cow": _cow, "minecraft:villager": _merchant,
+                 "minecraft:wandering_trader": _merchant}
 
 
 def mount(state, rider, vehicle) -> bool:

@@ -87,10 +87,10 @@ def test_spawn_refuses_a_name_in_use_or_no_name(pack):
 
 
 @pytest.mark.parametrize("action, reason", [
-    ("use entity @e[type=villager,limit=1]", "using minecraft:villager (its mobInteract is not modelled"),
+    ("use entity @e[type=horse,limit=1]", "using minecraft:horse (its mobInteract is not modelled"),
 ])
 def test_actions_the_emulator_cannot_model_make_the_test_inconclusive(pack, action, reason):
-    result = run(pack, f"# @dummy\nsummon villager ~3 ~ ~\nsetblock ~ ~-1 ~ stone\ndummy @s {action}\nsucceed\n")
+    result = run(pack, f"# @dummy\nsummon horse ~3 ~ ~\nsetblock ~ ~-1 ~ stone\ndummy @s {action}\nsucceed\n")
     assert (result.status, result.line) == ("inconclusive", 4)
     assert f"dummy @s {action}: not modelled: {reason}" in result.message
 

@@ -172,7 +172,18 @@ def test_a_name_tag_names_a_mob_and_keeps_it(tmp_path):
     assert result.status == "passed", result.report()
 
 
-def test_a_villager_stays_unmodelled(tmp_path):
-    result = run(tmp_path, "# @dummy\nsummon villager ~1 ~ ~ {NoAI:1b}\ndummy @s use entity @e[type=villager,limit=1]\n")
+def test_talking_to_a_villager_without_trades_counts(tmp_path):
+    """Villager.mobInteract: no offers (no profession): talked_to_villager for the main hand, CONSUME."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add talked minecraft.custom:minecraft.talked_to_villager\n"
+        "summon villager ~1 ~ ~ {NoAI:1b,VillagerData:{profession:\"minecraft:none\",level:1,type:\"minecraft:plains\"}}\n"
+        "dummy @s use entity @e[type=villager,limit=1]\n"
+        "assert score @s talked matches 1\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_a_trading_villager_stays_unmodelled(tmp_path):
+    result = run(tmp_path, "# @dummy\nsummon villager ~1 ~ ~ {NoAI:1b,VillagerData:{profession:\"minecraft:farmer\","
+                           "level:1,type:\"minecraft:plains\"}}\ndummy @s use entity @e[type=villager,limit=1]\n")
     assert result.status == "inconclusive"
-    assert "minecraft:villager" in result.report()
+    assert "first trades of minecraft:villager" in result.report()
