@@ -33,7 +33,7 @@ import math
 
 import numpy as np
 
-from emulator.world import (advancements, block_placing, block_shapes, command_blocks, crafters, inventories,
+from emulator.world import (advancements, block_placing, block_shapes, cauldrons, command_blocks, crafters, inventories,
                             item_cooldowns, items, items_on_blocks, placed_states, signs, statistics)
 from emulator.world.blocks import BlockState
 from emulator.world.context import Context
@@ -118,11 +118,13 @@ def _use_item_on_block(state, player, hand: str, pos, block: BlockState, stack, 
     ``"skip"``, the head is placed instead) and a lectern (LecternBlock.useItemOn: a lectern book
     goes onto one without a book, ``"consume"``; an empty main hand skips to the item); a dye, ink
     sac or honeycomb applied to an unwaxed sign (SignBlock.useItemOn) and food put on a campfire
-    (CampfireBlock.useItemOn) are not modelled."""
+    (CampfireBlock.useItemOn) are not modelled; a cauldron's is emulator.world.cauldrons."""
     if block.id == "minecraft:note_block" and face == "up" and stack.id.endswith(("_head", "_skull")):
         return "skip"
     if block.id == "minecraft:lectern":
         return _lectern_item(state, player, hand, pos, block, stack)
+    if block.id in cauldrons.CAULDRONS:
+        return cauldrons.use_item_on(state, player, hand, pos, block, stack)
     if block.id in inventories.CAMPFIRES and not stack.is_empty and _cookable(state, stack):
         raise Unmodelled(f"cooking {stack.id} on a campfire (CampfireBlock.useItemOn: placeFood)")
     if signs.is_sign(block.id) and stack.id in signs.APPLICATORS and player.gamemode != "adventure":
@@ -406,4 +408,4 @@ PLAIN = frozenset("minecraft:" + n for n in (
     f"minecraft:{c}_{k}" for c in COLOURS for k in ("wool", "concrete", "terracotta", "stained_glass")) | frozenset(
     f"minecraft:{w}_planks" for w in WOODS)
 _PLAIN_KINDS = ("_stairs", "_slab", "_torch", "_log", "_wood", "_stem", "_hyphae", "_glazed_terracotta",
-                "copper", "copper_block", "copper_grate", "copper_bulb")  # copper's blocks (WeatheringCopper*)
+                "copper", "copper_block", "copper_grate", "copper_bulb", "cauldron")  # copper's blocks (WeatheringCopper*)

@@ -47,7 +47,8 @@ from emulator.world import inventories, items, living, relations, statistics
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
-from emulator.world.player_actions import MAIN, drop_from, hand_slot
+from emulator.world import player_actions
+from emulator.world.player_actions import MAIN, hand_slot
 from mcfunction_parser.nbt import Byte, Int, IntArray, String
 
 SADDLE_EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a: a saddle is worn in the ``saddle`` equipment slot
@@ -183,24 +184,9 @@ def _cow(state, player, hand: str, cow) -> str:
     """Cow.mobInteract: a bucket milks an adult cow; else Animal's breeding."""
     access, held = _held(state, player, hand)
     if held.id == "minecraft:bucket" and not living.is_baby(cow):
-        access.set(filled_result(state, player, held, ItemStack("minecraft:milk_bucket", 1)))
+        access.set(player_actions.filled_result(state, player, held, ItemStack("minecraft:milk_bucket", 1)))
         return "consume"
     return _breed(state, player, hand, cow, "minecraft:cow_food")
-
-
-def filled_result(state, player, empty: ItemStack, filled: ItemStack) -> ItemStack:
-    """ItemUtils.createFilledResult(empty, player, filled, true): what the hand holds after filling."""
-    inventory = inventories.player_inventory(player, state.version)
-    if player.gamemode == "creative":
-        if not inventory.clear_or_count(lambda s: s.same_item_same_components(filled), 0):  # Inventory.contains
-            inventory.add(filled)
-        return empty
-    empty.count -= 1
-    if empty.is_empty:
-        return filled
-    if not inventory.add(filled) or not filled.is_empty:
-        drop_from(state, player, filled)
-    return empty
 
 
 # professions with no trades (VillagerTrades.TRADES has none for them)

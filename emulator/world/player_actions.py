@@ -6,6 +6,8 @@ each (the item entity, the inventory NBT, statistics, the ``using_item``/``consu
   stack) out of the selected hotbar slot as an item entity thrown by the player; None when the hand
   is empty.
 - ``swap_hands(state, player)``: the main hand and offhand stacks trade places.
+- ``filled_result(state, player, empty, filled)``: ItemUtils.createFilledResult: what the hand
+  holds after filling one of its containers (a bucket milked, filled at a cauldron ...).
 - ``use_item(state, player, hand)``: ServerPlayerGameMode.useItem (an item whose cooldown group
   cools down passes: emulator.world.item_cooldowns) -> Item.use for the items whose use is modelled (:data:`USES`, and what emulator.world.consumables says is eaten or drunk: its
   food, effects and use remainder); returns ``"consume"``, ``"pass"`` or ``"fail"`` (InteractionResult:
@@ -71,6 +73,21 @@ def _throw(state, player, stack: ItemStack, thrown_from_hand: bool):
     player as ``Thrower`` when thrown from the hand."""
     extra = Compound(Thrower=IntArray(Int(v) for v in player.uuid)) if thrown_from_hand else None
     return inventories.throw_from(state.entities, player, stack, state.version, state.resources.random, extra)
+
+
+def filled_result(state, player, empty: ItemStack, filled: ItemStack) -> ItemStack:
+    """ItemUtils.createFilledResult(empty, player, filled, true): what the hand holds after filling."""
+    inventory = inventories.player_inventory(player, state.version)
+    if player.gamemode == "creative":
+        if not inventory.clear_or_count(lambda s: s.same_item_same_components(filled), 0):  # Inventory.contains
+            inventory.add(filled)
+        return empty
+    empty.count -= 1
+    if empty.is_empty:
+        return filled
+    if not inventory.add(filled):  # Inventory.add moved nothing
+        drop_from(state, player, filled)
+    return empty
 
 
 def swap_hands(state, player) -> None:

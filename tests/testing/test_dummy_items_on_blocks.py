@@ -186,3 +186,37 @@ def test_a_hoe_needs_air_above_and_an_axe_yields_to_a_shield(tmp_path):
         "fail \"end\"\n"))
     assert (result.status, result.message) == ("failed", "end"), result.report()
     assert "cannot interact with that block" in "\n".join(result.details)
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_buckets_and_bottles_fill_and_empty_a_cauldron(tmp_path, backend):
+    """CauldronInteraction: a water bucket fills any cauldron to level 3 (fill_cauldron, an empty
+    bucket back); a glass bottle takes a level (a water bottle, use_cauldron); a water bottle puts
+    one back; an empty bucket takes only a full one (fillBucket), leaving a cauldron."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "scoreboard objectives add filled minecraft.custom:minecraft.fill_cauldron\n"
+        "scoreboard objectives add used minecraft.custom:minecraft.use_cauldron\n"
+        "setblock ~1 ~ ~1 cauldron\n"
+        "item replace entity @s weapon.mainhand with water_bucket\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 water_cauldron[level=3]\n"
+        "assert items entity @s weapon.mainhand bucket\n"
+        "assert score @s filled matches 1\n"
+        "item replace entity @s weapon.mainhand with glass_bottle 2\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 water_cauldron[level=2]\n"
+        "assert items entity @s weapon.mainhand glass_bottle[count=1]\n"
+        "assert items entity @s container.* potion[potion_contents={potion:\"minecraft:water\"}]\n"
+        "item replace entity @s weapon.mainhand with bucket\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 water_cauldron[level=2]\n"
+        "item replace entity @s weapon.mainhand with potion[potion_contents={potion:\"minecraft:water\"}]\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 water_cauldron[level=3]\n"
+        "assert items entity @s weapon.mainhand glass_bottle\n"
+        "item replace entity @s weapon.mainhand with bucket\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 cauldron\n"
+        "assert items entity @s weapon.mainhand water_bucket\n"
+        "assert score @s used matches 3\n"), pack_format=48, backend=backend)
+    assert result.status == "passed", result.report()
