@@ -19,6 +19,9 @@ mob, a lead in hand: not modelled); then the mob's own mobInteract:
   bucket spent, the milk bucket in its place, or added to the inventory (dropped when full) when
   more buckets are left; a creative player keeps the bucket and gets a milk bucket if it has none);
   else breeding with ``#minecraft:cow_food``;
+- sheep (Sheep.mobInteract): shears shear one ready for it (``Sheared:1b``, 1 to 3 wool of its
+  colour dropped, the count drawn from the emulator's random; the shears worn by one), or
+  consume the use on one that is not; from 1.21.2 the wool's loot table is not modelled;
 - villagers and wandering traders (Villager / WanderingTrader.mobInteract): with no offers (a
   villager of no profession or a nitwit without saved ``Offers``, or empty ``Offers``) the use
   counts ``minecraft.custom:minecraft.talked_to_villager`` (main hand) and is consumed; a baby
@@ -26,7 +29,7 @@ mob, a lead in hand: not modelled); then the mob's own mobInteract:
 - breeding (Animal.mobInteract): food given to an adult at age 0 not in love spends one item and
   sets ``InLove`` 600 and ``LoveCause`` (the player); a baby fed grows (not modelled);
 - mobs whose mobInteract is Mob's own (zombies, skeletons, spiders ...): pass.
-Any other mob's mobInteract (horses, sheep shearing, wolves ...) raises
+Any other mob's mobInteract (horses, wolves, cats ...) raises
 Unmodelled. A creative player keeps what a use took from its hand (Player.interactOn restores the
 count; the item's own use works on a copy).
 
@@ -36,16 +39,17 @@ dummy (emulator.world.entity_use). The game events and sounds are not observable
 Sources (decompiled 1.21): world/entity/Mob.java (interact, checkAndHandleImportantInteractions),
 Entity.java (interact: Leashable; startRiding: START_RIDING_TRIGGER; positionRider),
 world/entity/player/Player.java (interactOn), server/level/ServerPlayer.java (startRiding),
-world/entity/animal/Pig.java, Cow.java, Animal.java (mobInteract, setInLove), world/entity/npc/
+world/entity/animal/Pig.java, Cow.java, Sheep.java (mobInteract, shear), Animal.java (mobInteract, setInLove), world/entity/npc/
 Villager.java, WanderingTrader.java (mobInteract), AbstractVillager.java (getOffers),
 world/item/NameTagItem.java, SaddleItem.java, ItemUtils.java (createFilledResult),
 world/entity/EntityType.java (pig: passengerAttachments; emulator.world.relations.position_rider).
 """
 from __future__ import annotations
 
-from emulator.world import inventories, items, living, relations, statistics
+from emulator.world import inventories, items, living, relations, statistics, tools
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
+from emulator.world.id_families import COLOURS
 from emulator.world.items import ItemStack
 from emulator.world import player_actions
 from emulator.world.player_actions import MAIN, hand_slot
@@ -189,6 +193,37 @@ def _cow(state, player, hand: str, cow) -> str:
     return _breed(state, player, hand, cow, "minecraft:cow_food")
 
 
+SHEARING_LOOT_VERSION = (1, 21, 2)  # 24w33a: a sheep's wool comes from its shearing loot table
+
+
+def _sheep(state, player, hand: str, sheep) -> str:
+    """Sheep.mobInteract: shears on a sheep ready for shearing (alive, not ``Sheared``, adult)
+    shear it (Sheep.shear: ``Sheared:1b``, 1 to 3 wool of its ``Color`` dropped one above its feet,
+    each with the item's own motion plus a little random push, the count and pushes drawn from the
+    emulator's random, not the sheep's) and wear by one; on a sheep not ready they consume the use.
+    From 1.21.2 the wool comes from the game's shearing loot tables (not modelled). Else breeding
+    (``#minecraft:sheep_food``)."""
+    access, held = _held(state, player, hand)
+    if held.id != "minecraft:shears":
+        return _breed(state, player, hand, sheep, "minecraft:sheep_food")
+    if not sheep.alive or sheep.data.get("Sheared") or living.is_baby(sheep):
+        return "consume"
+    if tuple(state.version) >= SHEARING_LOOT_VERSION:
+        raise Unmodelled("shearing a sheep (its shearing loot table, 1.21.2+)")
+    sheep.data["Sheared"] = Byte(1)
+    rng = state.resources.random
+    wool = ItemStack(f"minecraft:{COLOURS[int(sheep.data.get('Color', 0)) & 15]}_wool", 1)
+    x, y, z = sheep.pos
+    for _ in range(1 + rng.randrange(3)):
+        item = inventories.drop_item(state.entities, (x, y + 1.0, z), wool.copy(), state.version, rng,
+                                     dimension=sheep.dimension)
+        mx, my, mz = item.motion
+        item.motion = (mx + (rng.random() - rng.random()) * 0.1, my + rng.random() * 0.05,
+                       mz + (rng.random() - rng.random()) * 0.1)
+    tools.hurt_and_break(state, player, access, 1)
+    return "consume"
+
+
 # professions with no trades (VillagerTrades.TRADES has none for them)
 _NO_TRADES = ("minecraft:none", "minecraft:nitwit")
 
@@ -225,7 +260,7 @@ def _merchant(state, player, hand: str, mob) -> str:
 
 
 MOB_INTERACTS = {"minecraft:pig": _pig, "minecraft:cow": _cow, "minecraft:villager": _merchant,
-                 "minecraft:wandering_trader": _merchant}
+                 "minecraft:wandering_trader": _merchant, "minecraft:sheep": _sheep}
 
 
 def mount(state, rider, vehicle) -> bool:

@@ -187,3 +187,23 @@ def test_a_trading_villager_stays_unmodelled(tmp_path):
                            "level:1,type:\"minecraft:plains\"}}\ndummy @s use entity @e[type=villager,limit=1]\n")
     assert result.status == "inconclusive"
     assert "first trades of minecraft:villager" in result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_shears_shear_a_sheep_once(tmp_path, backend):
+    """Sheep.mobInteract -> shear (1.21.1): Sheared:1b, 1 to 3 wool of its Color one block above
+    it, the shears worn by one; a sheared sheep still consumes the use (nothing more dropped)."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add t dummy\n"
+        "summon sheep ~1 ~ ~ {Tags:[\"s\"],NoAI:1b,Color:14b}\n"
+        "item replace entity @s weapon.mainhand with shears\n"
+        "dummy @s use entity @e[tag=s,limit=1]\n"
+        "assert entity @e[tag=s,nbt={Sheared:1b}]\n"
+        "execute store result score #wool t if entity @e[type=item,nbt={Item:{id:\"minecraft:red_wool\"}}]\n"
+        "assert score #wool t matches 1..3\n"
+        "assert items entity @s weapon.mainhand shears[damage=1]\n"
+        "dummy @s use entity @e[tag=s,limit=1]\n"
+        "execute store result score #again t if entity @e[type=item]\n"
+        "assert score #again t = #wool t\n"
+        "assert items entity @s weapon.mainhand shears[damage=1]\n"), backend=backend)
+    assert result.status == "passed", result.report()
