@@ -1,9 +1,14 @@
 """A player using (right-clicking) an entity, as Player.interactOn carries it out, with what a datapack
 observes: an ``interaction`` entity's ``interaction`` record, an item frame taking the held item or
-turning its own, and the entities that have no use of their own.
+turning its own, an armor stand trading items, a mob's own interaction, the held item's use on a
+living entity, and the entities that have no use of their own.
 
-- ``interact_on(state, player, hand, entity) -> str``: ``"consume"`` or ``"pass"``; an entity whose
-  interaction is not modelled (mobs, villagers, armor stands, vehicles ...) raises Unmodelled.
+- ``interact_at(state, player, hand, entity, at) -> str``: Entity.interactAt, which PackTest's
+  ``use entity`` calls first: an armor stand's (emulator.world.armor_stands), any other passes.
+- ``interact_on(state, player, hand, entity) -> str``: ``"consume"`` or ``"pass"``: the entity's
+  interact (a mob's: emulator.world.mob_use), then, when that passes, the held item's use on a
+  living entity (name tags, saddles); an entity whose interaction is not modelled (boats,
+  minecarts, the mobs mob_use does not know ...) raises Unmodelled.
 - ``record(state, player, entity, key)``: an interaction entity's ``attack`` / ``interaction``
   ``{player: UUID, timestamp: game time}`` (Interaction.skipAttackInteraction / interact).
 - ``attack(state, player, target) -> bool``: Player.attack: an interaction entity records the
