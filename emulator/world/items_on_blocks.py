@@ -23,6 +23,11 @@ Modelled:
   properties kept; ``item_used_on_block`` fires first with the block as it was; with a shield in
   the offhand a main-hand axe passes unless the player sneaks): each worn by one. Rooted dirt
   tilled (its dropped roots) and copper doors (their other half) are not modelled;
+- the items whose useOn acts on some blocks only (a water bottle on dirt, an ender eye on an end
+  portal frame, a compass on a lodestone, a lead on a fence, a map on a banner, honeycomb on unwaxed
+  copper, shears on a growing plant's tip; an end crystal on obsidian or bedrock, a minecart on a
+  rail, which fail elsewhere): elsewhere they pass (or fail), and where they act they are not
+  modelled;
 - items whose useOn is Item's own (emeralds, buckets, food ...: a bucket acts through ``use item``'s
   ray, not here): the use passes.
 A creative player keeps the item (ServerPlayerGameMode.useItemOn restores the count); an adventure
@@ -62,6 +67,21 @@ _OWN_USE_ON = frozenset("minecraft:" + n for n in (
     "firework_rocket honeycomb lead filled_map minecart chest_minecart furnace_minecart tnt_minecart "
     "hopper_minecart command_block_minecart potion shears").split())
 _OWN_USE_ON_SUFFIXES = ("_axe", "_hoe", "_shovel", "_spawn_egg")
+# the blocks some of those items act on, and their result on any other (their useOn's first test)
+_ACTS_ONLY_ON = {
+    "minecraft:potion": (lambda b: b in ("minecraft:dirt", "minecraft:coarse_dirt", "minecraft:rooted_dirt"),
+                         "pass"),  # PotionItem: #convertable_to_mud
+    "minecraft:ender_eye": (lambda b: b == "minecraft:end_portal_frame", "pass"),  # EnderEyeItem
+    "minecraft:compass": (lambda b: b == "minecraft:lodestone", "pass"),  # CompassItem
+    "minecraft:lead": (lambda b: b.endswith("_fence"), "pass"),  # LeadItem: #fences
+    "minecraft:filled_map": (lambda b: b.endswith("banner"), "pass"),  # MapItem: #banners
+    "minecraft:end_crystal": (lambda b: b in ("minecraft:obsidian", "minecraft:bedrock"), "fail"),  # EndCrystalItem
+    "minecraft:honeycomb": (lambda b: "copper" in b and "waxed" not in b, "pass"),  # HoneycombItem.getWaxed
+    "minecraft:shears": (lambda b: b.removeprefix("minecraft:") in _GROWING_PLANT_HEADS, "pass"),  # ShearsItem
+    **{f"minecraft:{cart}": (lambda b: b.endswith("rail"), "fail") for cart in (  # MinecartItem: #rails
+        "minecart chest_minecart furnace_minecart tnt_minecart hopper_minecart command_block_minecart").split()},
+}
+_GROWING_PLANT_HEADS = ("kelp", "weeping_vines", "twisting_vines", "cave_vines")  # GrowingPlantHeadBlock
 # block items named otherwise than their block (ItemNameBlockItem, Items: redstone -> redstone_wire ...)
 _PLACES_ANOTHER_BLOCK = frozenset("minecraft:" + n for n in (
     "redstone string wheat_seeds beetroot_seeds carrot potato melon_seeds pumpkin_seeds torchflower_seeds "
@@ -74,8 +94,12 @@ def use_on(state, player, hand: str, pos, face: str, hit) -> str:
     stack = access.get()
     use = USE_ON.get(stack.id)
     if use is None:
+        clicked = state.blocks.get(pos).id
+        acts_on = _ACTS_ONLY_ON.get(stack.id)
+        if acts_on is not None and not acts_on[0](clicked):
+            return acts_on[1]  # the item's useOn does nothing to this block
         if stack.id in _OWN_USE_ON or stack.id.endswith(_OWN_USE_ON_SUFFIXES) or stack.id in _PLACES_ANOTHER_BLOCK:
-            raise Unmodelled(f"using {stack.id} on {state.blocks.get(pos).id} (its useOn is not modelled)")
+            raise Unmodelled(f"using {stack.id} on {clicked} (its useOn is not modelled)")
         return "pass"
     if player.gamemode == "adventure":
         if stack.component("minecraft:can_place_on") is not None:
