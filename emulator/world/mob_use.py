@@ -1,5 +1,5 @@
 """A player using a mob (Mob.interact) or using its held item on a living entity
-(ItemStack.interactLivingEntity), with what a datapack observes: the mob's name, saddle, love and
+(ItemStack.interactLivingEntity), with what a datapack observes: the mob's name, saddle and
 rider, the milk bucket, the item spent, the ``started_riding`` criterion.
 
 - ``interact(state, player, hand, mob) -> str``: Mob.interact: ``"consume"`` or ``"pass"``.
@@ -26,8 +26,9 @@ mob, a lead in hand: not modelled); then the mob's own mobInteract:
   villager of no profession or a nitwit without saved ``Offers``, or empty ``Offers``) the use
   counts ``minecraft.custom:minecraft.talked_to_villager`` (main hand) and is consumed; a baby
   villager just refuses; opening the trades and the first trades drawn at random are not modelled;
-- breeding (Animal.mobInteract): food given to an adult at age 0 not in love spends one item and
-  sets ``InLove`` 600 and ``LoveCause`` (the player); a baby fed grows (not modelled);
+- breeding (Animal.mobInteract): food given to an adult at age 0 not in love, or to a baby, is not
+  modelled (what follows over the next ticks: love counting down, the breed goal, the baby's age);
+  to an adult that cannot fall in love it passes;
 - mobs whose mobInteract is Mob's own (zombies, skeletons, spiders ...): pass.
 Any other mob's mobInteract (horses, wolves, cats ...) raises
 Unmodelled. A creative player keeps what a use took from its hand (Player.interactOn restores the
@@ -53,10 +54,9 @@ from emulator.world.id_families import COLOURS
 from emulator.world.items import ItemStack
 from emulator.world import player_actions
 from emulator.world.player_actions import MAIN, hand_slot
-from mcfunction_parser.nbt import Byte, Int, IntArray, String
+from mcfunction_parser.nbt import Byte, String
 
 SADDLE_EQUIPMENT_VERSION = (1, 21, 5)  # 25w02a: a saddle is worn in the ``saddle`` equipment slot
-LOVE_TICKS = 600  # Animal.setInLove
 # mobs without a mobInteract of their own (Mob.mobInteract passes)
 PLAIN_MOBS = frozenset("minecraft:" + n for n in (
     "zombie husk drowned zombified_piglin skeleton stray wither_skeleton spider cave_spider silverfish endermite "
@@ -155,19 +155,18 @@ def _in_tag(state, tag: str, stack) -> bool:
 
 
 def _breed(state, player, hand: str, mob, food_tag: str) -> str:
-    """Animal.mobInteract: food for an adult at age 0 and not in love: one spent (not by a creative
-    player: ItemStack.consume), ``InLove`` 600 and ``LoveCause``; a baby fed is not modelled."""
+    """Animal.mobInteract: food given to an adult at age 0 not in love (``InLove`` 600, one item
+    spent) or to a baby (AgeableMob.ageUp) starts what the following ticks carry on (love counting
+    down, the breed goal finding a partner, the baby's age): not modelled. Food to an adult that
+    cannot fall in love passes, as does anything else."""
     _, held = _held(state, player, hand)
     if not _in_tag(state, food_tag, held):
         return "pass"
     age = int(mob.data.get("Age", 0))
     if age == 0 and int(mob.data.get("InLove", 0)) <= 0:
-        _spend(state, player, hand)
-        mob.data["InLove"] = Int(LOVE_TICKS)
-        mob.data["LoveCause"] = IntArray(Int(v) for v in player.uuid)
-        return "consume"
+        raise Unmodelled(f"breeding {mob.type} (InLove counting down and the breed goal: Animal.aiStep, BreedGoal)")
     if age < 0:
-        raise Unmodelled(f"feeding a baby {mob.type} (AgeableMob.ageUp)")
+        raise Unmodelled(f"feeding a baby {mob.type} (AgeableMob.ageUp and its age counting up)")
     return "pass"
 
 

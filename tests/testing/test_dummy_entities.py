@@ -136,16 +136,15 @@ def test_a_sneaking_rider_getting_off_is_not_modelled(tmp_path):
     assert "getting off minecraft:pig" in result.report()
 
 
-def test_food_puts_an_adult_pig_in_love_instead_of_mounting(tmp_path):
-    """Pig.mobInteract: food skips the ride; Animal.mobInteract: InLove 600, LoveCause, one spent."""
+def test_food_for_a_pig_skips_the_ride_and_breeding_is_not_modelled(tmp_path):
+    """Pig.mobInteract: food skips the ride; Animal.mobInteract would put it in love (InLove 600,
+    counting down over the ticks, the breed goal): not modelled."""
     result = run(tmp_path, "# @dummy\n" + (
         "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b,Saddle:1b}\n"
         "give @s carrot 3\n"
-        "dummy @s use entity @e[tag=p,limit=1]\n"
-        "assert entity @e[tag=p,nbt={InLove:600}]\n"
-        "assert items entity @s weapon.mainhand carrot[count=2]\n"
-        "execute on vehicle run fail \"rode\"\n"), files=_files())
-    assert result.status == "passed", result.report()
+        "dummy @s use entity @e[tag=p,limit=1]\n"), files=_files())
+    assert result.status == "inconclusive", result.report()
+    assert "breeding minecraft:pig" in result.report()
 
 
 def test_a_bucket_milks_a_cow(tmp_path):
