@@ -14,6 +14,12 @@ Modelled:
   repeater or comparator under a wall frame is not modelled) and no other frame's box meets its
   own (HangingEntity.survives); else the use consumes and nothing is placed. An item with
   ``entity_data`` is not modelled;
+- armor stands (ArmorStandItem.useOn; not on a bottom face: FAIL): one stands at the bottom centre
+  of the clicked block when that is replaceable, else of the block in front of the clicked face,
+  turned to the player's yaw less 180 rounded to 45 degrees, named by the item's ``custom_name``;
+  its two blocks must have no collision and no entity's box meet its own (else FAIL). Over a block
+  whose collision is not a full cube (it would stand lower and fall) and with ``entity_data`` it is
+  not modelled;
 - flint and steel: emulator.world.fire (a campfire or candle lit, a fire, a nether portal);
 - hoes (HoeItem.useOn: grass, paths and dirt till to ``farmland[moisture=0]``, coarse dirt to
   dirt, with air above and not from below), shovels (ShovelItem.useOn: grass, dirt, podzol,
@@ -34,12 +40,13 @@ A creative player keeps the item (ServerPlayerGameMode.useItemOn restores the co
 player's use passes (ItemStack.useOn: without ``can_place_on``, which is not modelled).
 
 Not modelled (Unmodelled): paintings (their variant), the useOn of the other items that have one
-(bone meal, spawn eggs, armor stands, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
+(bone meal, spawn eggs, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
 potions, shears, end crystals, maps, debug sticks) and the block items that place a block of another
 name (seeds, carrots, redstone dust, string ...).
 
 Sources (decompiled 1.21): world/item/ItemStack.java (useOn: mayBuild, ITEM_USED when the result
-indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java,
+indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java, ArmorStandItem.java, EntityType.java (create, getYOffset,
+appendCustomNameConfig),
 world/entity/decoration/HangingEntity.java (setDirection, recalculateBoundingBox), ItemFrame.java
 (calculateBoundingBox, survives), HoeItem.java (TILLABLES, onlyIfAirAbove), ShovelItem.java
 (FLATTENABLES), AxeItem.java (STRIPPABLES, evaluateNewBlockState, playerHasShieldUseIntent),
@@ -48,12 +55,17 @@ player's count restored), core/Direction.java (get3DDataValue, toYRot).
 """
 from __future__ import annotations
 
-from emulator.world import advancements, block_shapes, fire, inventories, statistics, tools
+import numpy as np
+
+from emulator.world import advancements, block_shapes, fire, inventories, mth, statistics, tools
 from emulator.world.blocks import BlockState
+from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
 from emulator.world.player_actions import MAIN, hand_slot
 from mcfunction_parser import gamedata
-from mcfunction_parser.nbt import Byte, Compound, Float, Int, List
+from mcfunction_parser.nbt import Byte, Compound, Float, Int, List, String
+
+F32 = np.float32
 
 FRAMES = {"minecraft:item_frame": "minecraft:item_frame", "minecraft:glow_item_frame": "minecraft:glow_item_frame"}
 FACE_DATA = {"down": 0, "up": 1, "north": 2, "south": 3, "west": 4, "east": 5}  # Direction.get3DDataValue
@@ -63,7 +75,7 @@ _YAW = {"south": 0.0, "west": 90.0, "north": 180.0, "east": 270.0}  # Direction.
 FRAME_DEPTH = 0.46875  # ItemFrame.calculateBoundingBox: the centre's offset back from the block's centre
 # items whose useOn is their own (Item.useOn overrides) and is not modelled here
 _OWN_USE_ON = frozenset("minecraft:" + n for n in (
-    "painting armor_stand bone_meal brush compass debug_stick end_crystal ender_eye fire_charge "
+    "painting bone_meal brush compass debug_stick end_crystal ender_eye fire_charge "
     "firework_rocket honeycomb lead filled_map minecart chest_minecart furnace_minecart tnt_minecart "
     "hopper_minecart command_block_minecart potion shears").split())
 _OWN_USE_ON_SUFFIXES = ("_axe", "_hoe", "_shovel", "_spawn_egg")
@@ -166,6 +178,52 @@ def _meets_a_hanging_entity(state, dimension: str, box) -> bool:
     return False
 
 
+# ---------------------------------------------------------------------- armor stands
+ARMOR_STAND_SIZE = (0.5, 1.975)  # EntityType.ARMOR_STAND: sized(0.5F, 1.975F)
+
+
+def _armor_stand(state, player, hand: str, access, stack, pos, face: str) -> str:
+    """ArmorStandItem.useOn (see the module's doc)."""
+    if face == "down":
+        return "fail"
+    if stack.component("minecraft:entity_data") is not None:
+        raise Unmodelled(f"placing {stack.id} with its entity_data component")
+    blocks = state.blocks
+    if blocks.get(pos).id not in block_shapes.REPLACEABLE:  # BlockPlaceContext.getClickedPos
+        dx, dy, dz = _OFFSETS[face]
+        pos = (pos[0] + dx, pos[1] + dy, pos[2] + dz)
+    width, height = (float(F32(v)) for v in ARMOR_STAND_SIZE)
+    box = (pos[0] + 0.5 - width / 2, pos[1], pos[2] + 0.5 - width / 2,
+           pos[0] + 0.5 + width / 2, pos[1] + height, pos[2] + 0.5 + width / 2)
+    if any(block_shapes.collides(blocks.get((pos[0], pos[1] + up, pos[2]))) for up in (0, 1)) or \
+            _any_entity_in(state, player.dimension, box):
+        return "fail"
+    below = blocks.get((pos[0], pos[1] - 1, pos[2]))
+    if not block_shapes.is_collision_full(below):  # EntityType.getYOffset: it would stand lower, then fall
+        raise Unmodelled(f"placing an armor stand over {below.id} (where it lands)")
+    turned = mth.wrap_degrees_f(F32(player.yaw) - F32(180.0))
+    yaw = float(F32(mth.floor_f((turned + F32(22.5)) / F32(45.0))) * F32(45.0))
+    stand = state.entities.summon("minecraft:armor_stand", (pos[0] + 0.5, float(pos[1]), pos[2] + 0.5), None,
+                                  yaw=yaw, pitch=0.0, dimension=player.dimension)
+    name = stack.component("minecraft:custom_name")  # EntityType.appendCustomNameConfig
+    if name is not None:
+        stand.custom_name = str(name) if isinstance(name, String) else TextTag(name)
+    stack.count -= 1
+    access.set(stack)
+    return "consume"
+
+
+def _any_entity_in(state, dimension: str, box) -> bool:
+    """Level.getEntities(null, box): any entity but a spectator whose box meets it."""
+    for entity in state.entities.entities:
+        if not entity.alive or entity.dimension != dimension or (entity.is_player and entity.gamemode == "spectator"):
+            continue
+        other = entity.bounding_box
+        if all(box[i] < other[i + 3] and box[i + 3] > other[i] for i in range(3)):
+            return True
+    return False
+
+
 # ---------------------------------------------------------------------- tools
 TILLED = {"minecraft:grass_block": "minecraft:farmland", "minecraft:dirt_path": "minecraft:farmland",
           "minecraft:dirt": "minecraft:farmland", "minecraft:coarse_dirt": "minecraft:dirt"}  # HoeItem.TILLABLES
@@ -263,5 +321,6 @@ def _tool(use, suffix: str):
 
 TOOL_TIERS = ("wooden", "stone", "iron", "golden", "diamond", "netherite")
 USE_ON = {"minecraft:item_frame": _item_frame, "minecraft:glow_item_frame": _item_frame,
+          "minecraft:armor_stand": _armor_stand,
           "minecraft:flint_and_steel": fire.flint_and_steel,
           **_tool(_hoe, "_hoe"), **_tool(_shovel, "_shovel"), **_tool(_axe, "_axe")}

@@ -125,8 +125,8 @@ def test_a_plain_block_with_empty_hands_refuses_and_an_unknown_direction_is_refu
 
 
 @pytest.mark.parametrize("setup, reason", [
-    ("give @s armor_stand\nsetblock ~2 ~ ~ stone", "using minecraft:armor_stand on minecraft:stone"),
-    ("give @s armor_stand\ndummy @s sneak true\nsetblock ~2 ~ ~ lever", "using minecraft:armor_stand on minecraft:lever"),
+    ("give @s firework_rocket\nsetblock ~2 ~ ~ stone", "using minecraft:firework_rocket on minecraft:stone"),
+    ("give @s firework_rocket\ndummy @s sneak true\nsetblock ~2 ~ ~ lever", "using minecraft:firework_rocket on minecraft:lever"),
     ("setblock ~2 ~ ~ chest\nsetblock ~2 ~1 ~ stone", "opening minecraft:chest under minecraft:stone"),
     ("setblock ~2 ~ ~ chest{LootTable:\"demo:x\"}", "unpacking its loot table"),
     ("setblock ~2 ~ ~ cake", "using the block minecraft:cake"),

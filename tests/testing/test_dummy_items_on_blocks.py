@@ -221,3 +221,25 @@ def test_buckets_and_bottles_fill_and_empty_a_cauldron(tmp_path, backend):
         "assert items entity @s weapon.mainhand water_bucket\n"
         "assert score @s used matches 3\n"), pack_format=48, backend=backend)
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_an_armor_stand_stands_on_the_clicked_block_turned_to_the_player(tmp_path, backend):
+    """ArmorStandItem.useOn: at the bottom centre of the block above the clicked top, yaw =
+    floor((wrapDegrees(yaw - 180) + 22.5) / 45) x 45 (the dummy at yaw 100: -80 -> -90), its
+    custom_name; one spent, used:armor_stand; again in the same place an entity is in the way: FAIL."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "scoreboard objectives add used minecraft.used:minecraft.armor_stand\n"
+        "setblock ~1 ~ ~1 stone\n"
+        "tp @s ~ ~ ~ 100 0\n"
+        "item replace entity @s weapon.mainhand with armor_stand[custom_name='\"Stan\"'] 2\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "execute positioned ~1.5 ~1 ~1.5 run assert entity @e[type=armor_stand,name=Stan,distance=..0.0001,"
+        "y_rotation=-90]\n"
+        "assert items entity @s weapon.mainhand armor_stand[count=1]\n"
+        "assert score @s used matches 1\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert items entity @s weapon.mainhand armor_stand[count=1]\n"
+        "fail \"end\"\n"), backend=backend)
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert "cannot interact with that block" in "\n".join(result.details)
