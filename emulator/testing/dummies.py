@@ -27,7 +27,8 @@ Modelled:
 - ``selectslot N``: ``SelectedItemSlot`` (N - 1) in the player's NBT.
 - ``attack`` on an ``interaction`` entity: its ``attack`` NBT ``{player: UUID, timestamp: game
   time}`` and ``player_hurt_entity`` (Interaction.skipAttackInteraction); ``use entity``:
-  emulator.world.entity_use.
+  emulator.world.entity_use (Entity.interactAt at the position given, else the entity's own, then
+  Player.interactOn, as PackTest's useEntity calls them).
 - ``attack`` on a living entity: Player.attack (emulator.world.combat.attack):
   the damage grows with the ticks since the dummy joined or last attacked (x 1.5 for a
   critical hit while falling), the target's

@@ -2,7 +2,9 @@
 it out, with what a datapack observes: the block's new state (levers, buttons that spring back, the
 command blocks and crafters beside them hearing the change,
 note blocks, doors, trapdoors, fence gates, a barrel's ``open``), the statistics of opening
-containers and workstations, and the ``default_block_use`` / ``item_used_on_block`` criteria.
+containers and workstations and of ringing bells, and the ``default_block_use`` /
+``item_used_on_block`` criteria. Cauldrons: emulator.world.cauldrons; items that place no block:
+emulator.world.items_on_blocks.
 
 - ``use_item_on(state, player, hand, pos, face)``: returns ``"consume"``, ``"pass"`` or ``"fail"``;
   a block or held item whose use is not modelled raises Unmodelled.
@@ -227,11 +229,11 @@ _RAIDERS = frozenset("minecraft:" + n for n in "pillager vindicator evoker illus
 
 
 def _bell(state, player, pos, block: BlockState, face: str, hit) -> str:
-    """BellBlock.useWithoutItem -> onHit: a side clicked at most 0.8124 up the block, across a
-    floor bell's facing axis' sides (its facing axis for a floor bell; the others for a wall bell;
-    any side of a ceiling bell), rings it: ``minecraft.custom:minecraft.bell_ring``; any other
-    click passes (on to the held item). A ringing bell near raiders (48 blocks) makes them glow
-    after it shakes: not modelled."""
+    """BellBlock.useWithoutItem -> onHit -> isProperHit: a side (not the top or bottom) clicked at
+    most 0.8124 up the block rings it when the side lies on the bell's facing axis for a floor
+    bell, off it for a wall bell, any side for a ceiling bell: ``minecraft.custom:minecraft.
+    bell_ring``; any other click passes (on to the held item). A ringing bell near raiders (48
+    blocks) makes them glow after it shakes: not modelled."""
     facing, attachment = _property(block, "facing", "north"), _property(block, "attachment", "floor")
     if face in ("up", "down") or hit[1] - pos[1] > BELL_PROPER_HIT_HEIGHT:
         return "pass"
