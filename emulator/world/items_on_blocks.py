@@ -29,7 +29,10 @@ Modelled:
   properties kept; ``item_used_on_block`` fires first with the block as it was; with a shield in
   the offhand a main-hand axe passes unless the player sneaks): each worn by one. Rooted dirt
   tilled (its dropped roots) and copper doors (their other half) are not modelled;
-- the items whose useOn acts on some blocks only (a water bottle on dirt, an ender eye on an end
+- a water bottle on dirt, coarse or rooted dirt (PotionItem.useOn, not from below) makes mud and
+  leaves a glass bottle, counting ``minecraft.used:potion`` twice (PotionItem and ItemStack.useOn
+  each award it);
+- the items whose useOn acts on some blocks only (an ender eye on an end
   portal frame, a compass on a lodestone, a lead on a fence, a map on a banner, honeycomb on unwaxed
   copper, shears on a growing plant's tip; an end crystal on obsidian or bedrock, a minecart on a
   rail, which fail elsewhere): elsewhere they pass (or fail), and where they act they are not
@@ -45,7 +48,7 @@ potions, shears, end crystals, maps, debug sticks) and the block items that plac
 name (seeds, carrots, redstone dust, string ...).
 
 Sources (decompiled 1.21): world/item/ItemStack.java (useOn: mayBuild, ITEM_USED when the result
-indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java, ArmorStandItem.java, EntityType.java (create, getYOffset,
+indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java, ArmorStandItem.java, PotionItem.java, EntityType.java (create, getYOffset,
 appendCustomNameConfig),
 world/entity/decoration/HangingEntity.java (setDirection, recalculateBoundingBox), ItemFrame.java
 (calculateBoundingBox, survives), HoeItem.java (TILLABLES, onlyIfAirAbove), ShovelItem.java
@@ -57,10 +60,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import advancements, block_shapes, fire, inventories, mth, statistics, tools
+from emulator.world import advancements, block_shapes, fire, inventories, mth, player_actions, statistics, tools
 from emulator.world.blocks import BlockState
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
+from emulator.world.items import ItemStack
 from emulator.world.player_actions import MAIN, hand_slot
 from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Float, Int, List, String
@@ -77,12 +81,10 @@ FRAME_DEPTH = 0.46875  # ItemFrame.calculateBoundingBox: the centre's offset bac
 _OWN_USE_ON = frozenset("minecraft:" + n for n in (
     "painting bone_meal brush compass debug_stick end_crystal ender_eye fire_charge "
     "firework_rocket honeycomb lead filled_map minecart chest_minecart furnace_minecart tnt_minecart "
-    "hopper_minecart command_block_minecart potion shears").split())
+    "hopper_minecart command_block_minecart shears").split())
 _OWN_USE_ON_SUFFIXES = ("_axe", "_hoe", "_shovel", "_spawn_egg")
 # the blocks some of those items act on, and their result on any other (their useOn's first test)
 _ACTS_ONLY_ON = {
-    "minecraft:potion": (lambda b: b in ("minecraft:dirt", "minecraft:coarse_dirt", "minecraft:rooted_dirt"),
-                         "pass"),  # PotionItem: #convertable_to_mud
     "minecraft:ender_eye": (lambda b: b == "minecraft:end_portal_frame", "pass"),  # EnderEyeItem
     "minecraft:compass": (lambda b: b == "minecraft:lodestone", "pass"),  # CompassItem
     "minecraft:lead": (lambda b: b.endswith("_fence"), "pass"),  # LeadItem: #fences
@@ -224,6 +226,25 @@ def _any_entity_in(state, dimension: str, box) -> bool:
     return False
 
 
+# ---------------------------------------------------------------------- water bottles
+TO_MUD = frozenset(("minecraft:dirt", "minecraft:coarse_dirt", "minecraft:rooted_dirt"))  # #convertable_to_mud
+
+
+def _potion(state, player, hand: str, access, stack, pos, face: str) -> str:
+    """PotionItem.useOn: a water bottle on dirt, coarse or rooted dirt (not from below) makes it
+    mud and leaves a glass bottle (ItemUtils.createFilledResult), counting used:potion itself
+    (and ItemStack.useOn once more); any other use passes."""
+    contents = stack.component("minecraft:potion_contents")
+    potion = contents.get("potion") if isinstance(contents, Compound) else contents
+    if face == "down" or state.blocks.get(pos).id not in TO_MUD or potion is None or \
+            str(potion).removeprefix("minecraft:") != "water":
+        return "pass"
+    access.set(player_actions.filled_result(state, player, stack, ItemStack("minecraft:glass_bottle", 1)))
+    statistics.award(state, player, statistics.stat_name("used", stack.id))
+    state.blocks.set_state(pos, BlockState("minecraft:mud", ()))
+    return "consume"
+
+
 # ---------------------------------------------------------------------- tools
 TILLED = {"minecraft:grass_block": "minecraft:farmland", "minecraft:dirt_path": "minecraft:farmland",
           "minecraft:dirt": "minecraft:farmland", "minecraft:coarse_dirt": "minecraft:dirt"}  # HoeItem.TILLABLES
@@ -321,6 +342,6 @@ def _tool(use, suffix: str):
 
 TOOL_TIERS = ("wooden", "stone", "iron", "golden", "diamond", "netherite")
 USE_ON = {"minecraft:item_frame": _item_frame, "minecraft:glow_item_frame": _item_frame,
-          "minecraft:armor_stand": _armor_stand,
+          "minecraft:armor_stand": _armor_stand, "minecraft:potion": _potion,
           "minecraft:flint_and_steel": fire.flint_and_steel,
           **_tool(_hoe, "_hoe"), **_tool(_shovel, "_shovel"), **_tool(_axe, "_axe")}

@@ -243,3 +243,17 @@ def test_an_armor_stand_stands_on_the_clicked_block_turned_to_the_player(tmp_pat
         "fail \"end\"\n"), backend=backend)
     assert (result.status, result.message) == ("failed", "end"), result.report()
     assert "cannot interact with that block" in "\n".join(result.details)
+
+
+def test_a_water_bottle_turns_dirt_to_mud(tmp_path):
+    """PotionItem.useOn: water on dirt (not from below) -> mud, a glass bottle back; used:potion is
+    awarded by PotionItem and again by ItemStack.useOn."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "scoreboard objectives add used minecraft.used:minecraft.potion\n"
+        "setblock ~1 ~ ~1 dirt\n"
+        "item replace entity @s weapon.mainhand with potion[potion_contents={potion:\"minecraft:water\"}]\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "assert block ~1 ~ ~1 mud\n"
+        "assert items entity @s weapon.mainhand glass_bottle\n"
+        "assert score @s used matches 2\n"))
+    assert result.status == "passed", result.report()
