@@ -137,7 +137,8 @@ def _use_item_on_block(state, player, hand: str, pos, block: BlockState, stack, 
 
 
 # the inputs of the game's campfire_cooking recipes (1.21)
-CAMPFIRE_FOODS = frozenset("minecraft:" + n for n in "beef chicken cod salmon mutton porkchop rabbit potato kelp".split())
+CAMPFIRE_FOODS = frozenset("minecraft:" + n for n in
+                           "beef chicken cod salmon mutton porkchop rabbit potato kelp".split())
 
 
 def _cookable(state, stack) -> bool:

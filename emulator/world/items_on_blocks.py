@@ -43,18 +43,19 @@ A creative player keeps the item (ServerPlayerGameMode.useItemOn restores the co
 player's use passes (ItemStack.useOn: without ``can_place_on``, which is not modelled).
 
 Not modelled (Unmodelled): paintings (their variant), the useOn of the other items that have one
-(bone meal, spawn eggs, minecarts, ender eyes, leads, brushes, compasses, honeycomb, fire charges, firework rockets,
-potions, shears, end crystals, maps, debug sticks) and the block items that place a block of another
-name (seeds, carrots, redstone dust, string ...).
+(bone meal, spawn eggs, brushes, fire charges, firework rockets, debug sticks; minecarts on rails,
+ender eyes in end portal frames, leads on fences, compasses on lodestones, honeycomb on copper,
+shears on growing plants, end crystals on obsidian or bedrock, maps on banners) and the block items
+that place a block of another name (seeds, carrots, redstone dust, string ...).
 
 Sources (decompiled 1.21): world/item/ItemStack.java (useOn: mayBuild, ITEM_USED when the result
-indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java, ArmorStandItem.java, PotionItem.java, EntityType.java (create, getYOffset,
-appendCustomNameConfig),
+indicates an item use), Item.java (useOn: PASS), HangingEntityItem.java, ItemFrameItem.java,
+ArmorStandItem.java, PotionItem.java, EntityType.java (create, getYOffset, appendCustomNameConfig),
 world/entity/decoration/HangingEntity.java (setDirection, recalculateBoundingBox), ItemFrame.java
 (calculateBoundingBox, survives), HoeItem.java (TILLABLES, onlyIfAirAbove), ShovelItem.java
 (FLATTENABLES), AxeItem.java (STRIPPABLES, evaluateNewBlockState, playerHasShieldUseIntent),
-WeatheringCopper.getPrevious, HoneycombItem.WAX_OFF_BY_BLOCK, server/level/ServerPlayerGameMode.java (useItemOn: a creative
-player's count restored), core/Direction.java (get3DDataValue, toYRot).
+WeatheringCopper.getPrevious, HoneycombItem.WAX_OFF_BY_BLOCK, server/level/ServerPlayerGameMode.java
+(useItemOn: a creative player's count restored), core/Direction.java (get3DDataValue, toYRot).
 """
 from __future__ import annotations
 
@@ -106,6 +107,10 @@ def use_on(state, player, hand: str, pos, face: str, hit) -> str:
     """ItemStack.useOn for an item that is no block the emulator places (see the module's doc)."""
     access = inventories.entity_slot(player, hand_slot(hand), state.version)
     stack = access.get()
+    if player.gamemode == "adventure":  # ItemStack.useOn: without mayBuild only where can_place_on allows
+        if stack.component("minecraft:can_place_on") is not None:
+            raise Unmodelled(f"using {stack.id} in adventure mode with can_place_on")
+        return "pass"
     use = USE_ON.get(stack.id)
     if use is None:
         clicked = state.blocks.get(pos).id
@@ -114,10 +119,6 @@ def use_on(state, player, hand: str, pos, face: str, hit) -> str:
             return acts_on[1]  # the item's useOn does nothing to this block
         if stack.id in _OWN_USE_ON or stack.id.endswith(_OWN_USE_ON_SUFFIXES) or stack.id in _PLACES_ANOTHER_BLOCK:
             raise Unmodelled(f"using {stack.id} on {clicked} (its useOn is not modelled)")
-        return "pass"
-    if player.gamemode == "adventure":
-        if stack.component("minecraft:can_place_on") is not None:
-            raise Unmodelled(f"using {stack.id} in adventure mode with can_place_on")
         return "pass"
     count = stack.count
     result = use(state, player, hand, access, stack, tuple(pos), face)

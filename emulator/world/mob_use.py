@@ -40,8 +40,8 @@ dummy (emulator.world.entity_use). The game events and sounds are not observable
 Sources (decompiled 1.21): world/entity/Mob.java (interact, checkAndHandleImportantInteractions),
 Entity.java (interact: Leashable; startRiding: START_RIDING_TRIGGER; positionRider),
 world/entity/player/Player.java (interactOn), server/level/ServerPlayer.java (startRiding),
-world/entity/animal/Pig.java, Cow.java, Sheep.java (mobInteract, shear), Animal.java (mobInteract, setInLove), world/entity/npc/
-Villager.java, WanderingTrader.java (mobInteract), AbstractVillager.java (getOffers),
+world/entity/animal/Pig.java, Cow.java, Sheep.java (mobInteract, shear), Animal.java (mobInteract,
+setInLove), world/entity/npc/Villager.java, WanderingTrader.java (mobInteract), AbstractVillager.java (getOffers),
 world/item/NameTagItem.java, SaddleItem.java, ItemUtils.java (createFilledResult),
 world/entity/EntityType.java (pig: passengerAttachments; emulator.world.relations.position_rider).
 """
@@ -96,7 +96,8 @@ def interact(state, player, hand: str, mob) -> str:
         return own(state, player, hand, mob)
     if mob.type in PLAIN_MOBS:
         return "pass"
-    raise Unmodelled(f"using {mob.type} (its mobInteract is not modelled: only pigs, cows and mobs without one)")
+    raise Unmodelled(f"using {mob.type} (its mobInteract is not modelled: only pigs, cows, sheep, villagers, "
+                     "wandering traders and mobs without one)")
 
 
 def item_on_living(state, player, hand: str, entity) -> str:
@@ -236,7 +237,8 @@ def _offers_empty(mob) -> bool:
         return not offers.get("Recipes")
     data = mob.data.get("VillagerData")
     profession = str(data.get("profession", "minecraft:none")) if data is not None else "minecraft:none"
-    if mob.type == "minecraft:villager" and (profession if ":" in profession else "minecraft:" + profession) in _NO_TRADES:
+    profession = profession if ":" in profession else "minecraft:" + profession
+    if mob.type == "minecraft:villager" and profession in _NO_TRADES:
         return True
     raise Unmodelled(f"the first trades of {mob.type} (updateTrades: drawn at random)")
 
