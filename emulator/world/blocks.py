@@ -72,6 +72,11 @@ class BlockState:
         props = ",".join(f"{k}={v}" for k, v in self.properties)
         return f"{self.id}[{props}]" if props else self.id
 
+    @classmethod
+    def of(cls, block_id: str, properties: dict) -> "BlockState":
+        """The state with ``properties`` (in the sorted order states keep them)."""
+        return cls(block_id, tuple(sorted(properties.items())))
+
 
 @dataclass(frozen=True)
 class BlockSpec:

@@ -91,7 +91,7 @@ def use_item_on(state, player, hand: str, pos, block, stack) -> str:
         raise Unmodelled(f"washing {used} in a water cauldron (CauldronInteraction: its components)")
     else:
         return "try_empty_hand"
-    state.blocks.set_state(pos, BlockState(new_block, tuple(sorted(properties.items()))))
+    state.blocks.set_state(pos, BlockState.of(new_block, properties))
     statistics.award(state, player, statistics.stat_name("custom", stat))
     statistics.award(state, player, statistics.stat_name("used", used))
     return "consume"

@@ -37,13 +37,12 @@ from emulator.world import advancements, block_shapes, tools
 from emulator.world.blocks import BlockState
 from emulator.world.errors import Unmodelled
 from emulator.world.inventories import CAMPFIRES
+from emulator.world.placed_states import OFFSETS
 
 FIRE_TICK_DELAY = 30  # FireBlock.getFireTickDelay: 30 + nextInt(10); the earliest its first tick comes
 MIN_WIDTH, MAX_WIDTH, MIN_HEIGHT, MAX_HEIGHT = 2, 21, 3, 21  # PortalShape
 PORTAL_DIMENSIONS = ("minecraft:overworld", "minecraft:the_nether")  # BaseFireBlock.inPortalDimension
 SOUL_FIRE_BASE = ("minecraft:soul_sand", "minecraft:soul_soil")  # #minecraft:soul_fire_base_blocks
-_OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
-            "east": (1, 0, 0)}
 _RIGHT = {"x": (-1, 0, 0), "z": (0, 0, 1)}  # PortalShape.rightDir: WEST along x, SOUTH along z
 _EMPTY = ("minecraft:air", "minecraft:cave_air", "minecraft:void_air", "minecraft:fire", "minecraft:soul_fire",
           "minecraft:nether_portal")  # PortalShape.isEmpty: air, #fire, a portal
@@ -63,7 +62,7 @@ def _can_light(block) -> bool:
 
 
 def _set(state, pos, block_id: str, properties: dict) -> None:
-    state.blocks.set_state(pos, BlockState(block_id, tuple(sorted(properties.items()))))
+    state.blocks.set_state(pos, BlockState.of(block_id, properties))
 
 
 def flint_and_steel(state, player, hand: str, access, stack, pos, face: str) -> str:
@@ -74,7 +73,7 @@ def flint_and_steel(state, player, hand: str, access, stack, pos, face: str) -> 
         _set(state, pos, clicked.id, {**dict(clicked.properties), "lit": "true"})
         tools.hurt_and_break(state, player, access, 1)
         return "consume"
-    dx, dy, dz = _OFFSETS[face]
+    dx, dy, dz = OFFSETS[face]
     target = (pos[0] + dx, pos[1] + dy, pos[2] + dz)
     if not blocks.get(target).is_air:
         return "fail"
@@ -105,7 +104,7 @@ def _unmodelled_fire_tick(state, pos) -> None:
 
 
 def _touches_obsidian(blocks, pos) -> bool:
-    return any(blocks.get((pos[0] + dx, pos[1] + dy, pos[2] + dz)).id == _OBSIDIAN for dx, dy, dz in _OFFSETS.values())
+    return any(blocks.get((pos[0] + dx, pos[1] + dy, pos[2] + dz)).id == _OBSIDIAN for dx, dy, dz in OFFSETS.values())
 
 
 def find_empty_portal(blocks, pos, axis: str, low: int):

@@ -66,6 +66,7 @@ from emulator.world.blocks import BlockState
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
+from emulator.world.placed_states import OFFSETS
 from emulator.world.player_actions import MAIN, hand_slot
 from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Float, Int, List, String
@@ -74,8 +75,6 @@ F32 = np.float32
 
 FRAMES = {"minecraft:item_frame": "minecraft:item_frame", "minecraft:glow_item_frame": "minecraft:glow_item_frame"}
 FACE_DATA = {"down": 0, "up": 1, "north": 2, "south": 3, "west": 4, "east": 5}  # Direction.get3DDataValue
-_OFFSETS = {"up": (0, 1, 0), "down": (0, -1, 0), "north": (0, 0, -1), "south": (0, 0, 1), "west": (-1, 0, 0),
-            "east": (1, 0, 0)}
 _YAW = {"south": 0.0, "west": 90.0, "north": 180.0, "east": 270.0}  # Direction.toYRot (2D data value x 90)
 FRAME_DEPTH = 0.46875  # ItemFrame.calculateBoundingBox: the centre's offset back from the block's centre
 # items whose useOn is their own (Item.useOn overrides) and is not modelled here
@@ -134,7 +133,7 @@ def _item_frame(state, player, hand: str, access, stack, pos, face: str) -> str:
     """HangingEntityItem.useOn for an item frame (see the module's doc)."""
     if stack.component("minecraft:entity_data") is not None:
         raise Unmodelled(f"placing {stack.id} with its entity_data component")
-    dx, dy, dz = _OFFSETS[face]
+    dx, dy, dz = OFFSETS[face]
     front = (pos[0] + dx, pos[1] + dy, pos[2] + dz)
     low, high = state.entities.table.levels.build_height(player.dimension, state.version)
     if not low <= front[1] < high:
@@ -159,7 +158,7 @@ def _frame_nbt(front, face: str, yaw: float, pitch: float) -> Compound:
 
 def _frame_box(centre, face: str):
     """ItemFrame.calculateBoundingBox: 0.75 square, 0.0625 thick along the face's axis."""
-    axis = [abs(d) for d in _OFFSETS[face]].index(1)
+    axis = [abs(d) for d in OFFSETS[face]].index(1)
     size = [0.75, 0.75, 0.75]
     size[axis] = 0.0625
     return tuple(c - s / 2 for c, s in zip(centre, size)) + tuple(c + s / 2 for c, s in zip(centre, size))
@@ -193,7 +192,7 @@ def _armor_stand(state, player, hand: str, access, stack, pos, face: str) -> str
         raise Unmodelled(f"placing {stack.id} with its entity_data component")
     blocks = state.blocks
     if blocks.get(pos).id not in block_shapes.REPLACEABLE:  # BlockPlaceContext.getClickedPos
-        dx, dy, dz = _OFFSETS[face]
+        dx, dy, dz = OFFSETS[face]
         pos = (pos[0] + dx, pos[1] + dy, pos[2] + dz)
     width, height = (float(F32(v)) for v in ARMOR_STAND_SIZE)
     box = (pos[0] + 0.5 - width / 2, pos[1], pos[2] + 0.5 - width / 2,
@@ -242,7 +241,7 @@ def _potion(state, player, hand: str, access, stack, pos, face: str) -> str:
         return "pass"
     access.set(player_actions.filled_result(state, player, stack, ItemStack("minecraft:glass_bottle", 1)))
     statistics.award(state, player, statistics.stat_name("used", stack.id))
-    state.blocks.set_state(pos, BlockState("minecraft:mud", ()))
+    _set_block(state, pos, "minecraft:mud", {})
     return "consume"
 
 
@@ -255,7 +254,7 @@ _OXIDISED = ("exposed_", "weathered_", "oxidized_")  # WeatheringCopper's stages
 
 
 def _set_block(state, pos, block_id: str, properties: dict) -> None:
-    state.blocks.set_state(pos, BlockState(block_id, tuple(sorted(properties.items()))))
+    state.blocks.set_state(pos, BlockState.of(block_id, properties))
 
 
 def _air_above(state, pos) -> bool:
