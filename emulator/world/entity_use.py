@@ -7,8 +7,10 @@ living entity, and the entities that have no use of their own.
   ``use entity`` calls first: an armor stand's (emulator.world.armor_stands), any other passes.
 - ``interact_on(state, player, hand, entity) -> str``: ``"consume"`` or ``"pass"``: the entity's
   interact (a mob's: emulator.world.mob_use), then, when that passes, the held item's use on a
-  living entity (name tags, saddles); an entity whose interaction is not modelled (boats,
-  minecarts, the mobs mob_use does not know ...) raises Unmodelled.
+  living entity (name tags, saddles); a boat or a minecart takes the player as its rider
+  (Boat.interact, Minecart.interact: emulator.world.relations.mount); an entity whose
+  interaction is not modelled (chest boats, the other minecarts, the mobs mob_use does not know
+  ...) raises Unmodelled.
 - ``record(state, player, entity, key)``: an interaction entity's ``attack`` / ``interaction``
   ``{player: UUID, timestamp: game time}`` (Interaction.skipAttackInteraction / interact).
 - ``attack(state, player, target) -> bool``: Player.attack: an interaction entity records the
@@ -23,11 +25,16 @@ Sources (decompiled 1.21.x): world/entity/player/Player.java (interactOn), world
 Interaction.java (interact, skipAttackInteraction), world/entity/decoration/ItemFrame.java
 (interact: a fixed frame passes; an empty one takes one of the held items; a full one turns its
 item by one of 8 steps, ``ItemRotation``; an empty frame used with an empty hand consumes the use
-before 1.21.2 and passes from it), world/entity/Entity.java (interact: passes).
+before 1.21.2 and passes from it), world/entity/Entity.java (interact: passes),
+world/entity/vehicle/Boat.java (interact, canAddPassenger, getPassengerAttachmentPoint),
+Minecart.java (interact).
 """
 from __future__ import annotations
 
-from emulator.world import armor_stands, combat, inventories, living, mob_use
+import math
+
+from emulator.world import armor_stands, combat, inventories, living, mob_use, relations
+from emulator.world.entity_types import BOATS
 from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import DamageSource
 from emulator.world.player_actions import hand_slot
@@ -35,6 +42,7 @@ from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
 
 ITEM_FRAMES = ("minecraft:item_frame", "minecraft:glow_item_frame")
 ARMOR_STAND = "minecraft:armor_stand"
+MINECART = "minecraft:minecart"
 RESULTS_VERSION = (1, 21, 2)  # InteractionResult's rework: an empty frame used with an empty hand passes
 # entities whose interact is Entity's own (no leash, no ride, no menu): using them passes
 PASSIVE = frozenset("minecraft:" + n for n in (
@@ -82,6 +90,8 @@ def interact_on(state, player, hand: str, entity) -> str:
     held = access.get()
     if entity.type == ARMOR_STAND:  # no interact of its own (Entity.interact: not Leashable)
         result = "pass"
+    elif entity.type in BOATS or entity.type == MINECART:
+        return _ride_vehicle(state, player, hand, entity)
     elif living.is_living(entity.type) and not entity.is_player:
         result = mob_use.interact(state, player, hand, entity)
     else:
@@ -90,6 +100,29 @@ def interact_on(state, player, hand: str, entity) -> str:
     if result != "consume" and not held.is_empty and living.is_living(entity.type):
         result = mob_use.item_on_living(state, player, hand, entity)
     return result
+
+
+def _ride_vehicle(state, player, hand: str, vehicle) -> str:
+    """Boat.interact / Minecart.interact: a sneaking player passes; else the player gets in
+    (Player.startRiding: one rider here; a boat whose eyes are under water refuses) and the use is
+    consumed, or passes when refused. A boat's leash (Entity.interact: Leashable), chest boats and
+    the other minecarts (their containers and blocks) are not modelled."""
+    held = inventories.entity_slot(player, hand_slot(hand), state.version).get()
+    if vehicle.type in BOATS:
+        if "chest" in vehicle.type:
+            raise Unmodelled(f"using {vehicle.type} (its chest)")
+        if held.id == "minecraft:lead" or vehicle.data.get("leash") is not None:
+            raise Unmodelled(f"leashing {vehicle.type} (Leashable)")
+    if player.sneaking:
+        return "pass"
+    if vehicle.type in BOATS:
+        eyes = tuple(math.floor(c) for c in vehicle.anchor("eyes"))
+        if state.blocks_in(vehicle.dimension).get(eyes).id == "minecraft:water":  # isEyeInFluid(WATER)
+            return "pass"
+        riders = relations.passengers_of(vehicle)
+        if len(riders) == 1 and player not in riders:  # a boat seats two
+            raise Unmodelled(f"a second passenger in {vehicle.type} (where each sits)")
+    return "consume" if relations.mount(state, player, vehicle) else "pass"
 
 
 def _item_frame(state, player, hand: str, frame) -> str:

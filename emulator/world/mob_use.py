@@ -5,9 +5,6 @@ rider, the milk bucket, the item spent, the ``started_riding`` criterion.
 - ``interact(state, player, hand, mob) -> str``: Mob.interact: ``"consume"`` or ``"pass"``.
 - ``item_on_living(state, player, hand, entity) -> str``: Item.interactLivingEntity, the held
   item's own use when the entity's passed (Player.interactOn).
-- ``mount(state, rider, vehicle) -> bool``: Player.startRiding (emulator.world.relations), the
-  rider set on the vehicle's passenger attachment (ServerPlayer.startRiding -> positionRider) and
-  ``started_riding`` fired for the players riding it.
 
 Mob.interact, in order: a name tag with a name names the mob (NameTagItem: ``CustomName``,
 ``PersistenceRequired``, one tag spent); a spawn egg spawns a baby (not modelled); a leash (a leashed
@@ -176,7 +173,7 @@ def _pig(state, player, hand: str, pig) -> str:
     _, held = _held(state, player, hand)
     food = _in_tag(state, "minecraft:pig_food", held)
     if not food and _saddled(state, pig) and not relations.passengers_of(pig) and not player.sneaking:
-        mount(state, player, pig)
+        relations.mount(state, player, pig)
         return "consume"
     result = _breed(state, player, hand, pig, "minecraft:pig_food")
     if result == "consume":
@@ -262,14 +259,3 @@ def _merchant(state, player, hand: str, mob) -> str:
 
 MOB_INTERACTS = {"minecraft:pig": _pig, "minecraft:cow": _cow, "minecraft:villager": _merchant,
                  "minecraft:wandering_trader": _merchant, "minecraft:sheep": _sheep}
-
-
-def mount(state, rider, vehicle) -> bool:
-    """Player.startRiding(vehicle) (not forced): refused when the vehicle already carries someone
-    (Entity.canAddPassenger); the rider goes onto the vehicle's attachment at once
-    (ServerPlayer.startRiding -> positionRider) and every player riding it hears ``started_riding``."""
-    if relations.passengers_of(vehicle) or not relations.start_riding(rider, vehicle):
-        return False
-    relations.position_rider(rider)
-    relations.started_riding(state, vehicle)
-    return True

@@ -82,20 +82,42 @@ def started_riding(state, vehicle: Entity) -> None:
 
 # EntityType passengerAttachments (the first passenger's height on the vehicle) and the player's
 # vehicle attachment (Player.DEFAULT_VEHICLE_ATTACHMENT): where a player rides
-PASSENGER_ATTACHMENT = {"minecraft:pig": float(F32(0.86875))}
+PASSENGER_ATTACHMENT = {"minecraft:pig": float(F32(0.86875)), "minecraft:minecart": float(F32(0.1875))}
 PLAYER_VEHICLE_ATTACHMENT = 0.6
+BOAT_HEIGHT = F32(0.5625)  # EntityType.BOAT: sized(1.375F, 0.5625F)
+
+
+def _passenger_attachment(vehicle: Entity) -> float | None:
+    """The first passenger's height on ``vehicle``: the type's passengerAttachments, a boat's a third
+    of its height, a raft's 0.8888889 of it (Boat.getPassengerAttachmentPoint); None when not known."""
+    if vehicle.type in BOATS and "chest" not in vehicle.type:
+        raft = vehicle.type == "minecraft:bamboo_raft" or str(vehicle.data.get("Type", "")) == "bamboo"
+        return float(BOAT_HEIGHT * F32(0.8888889) if raft else BOAT_HEIGHT / F32(3.0))
+    return PASSENGER_ATTACHMENT.get(vehicle.type)
 
 
 def position_rider(rider: Entity) -> None:
     """Entity.positionRider for a player riding alone at the vehicle's scale 1: at the vehicle's
     x and z, its passenger attachment less the player's vehicle attachment above its feet."""
     vehicle = rider.vehicle
-    attachment = PASSENGER_ATTACHMENT.get(vehicle.type)
-    if attachment is None or not rider.is_player or living.attribute_value(vehicle, "scale") != 1.0 or \
-            len(passengers_of(vehicle)) > 1:
+    attachment = _passenger_attachment(vehicle)
+    if attachment is None or not rider.is_player or len(passengers_of(vehicle)) > 1 or \
+            (living.is_living(vehicle.type) and living.attribute_value(vehicle, "scale") != 1.0):
         raise Unmodelled(f"where {rider.type} rides on {vehicle.type} (its passenger attachment)")
     x, y, z = vehicle.pos
     rider.pos = (x, y + attachment - PLAYER_VEHICLE_ATTACHMENT, z)
+
+
+def mount(state, rider: Entity, vehicle: Entity) -> bool:
+    """Player.startRiding(vehicle) (not forced): refused when the vehicle already carries someone
+    (Entity.canAddPassenger: one rider for the vehicles modelled here); the rider goes onto the
+    vehicle's attachment at once (ServerPlayer.startRiding -> positionRider) and every player riding
+    it hears ``started_riding``."""
+    if passengers_of(vehicle) or not start_riding(rider, vehicle):
+        return False
+    position_rider(rider)
+    started_riding(state, vehicle)
+    return True
 
 
 def ride_tick(rider: Entity) -> None:

@@ -206,3 +206,20 @@ def test_shears_shear_a_sheep_once(tmp_path, backend):
         "assert score #again t = #wool t\n"
         "assert items entity @s weapon.mainhand shears[damage=1]\n"), backend=backend)
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("vehicle, rise", [("oak_boat", "-0.4125"), ("minecart", "-0.4125")])
+def test_a_boat_or_minecart_takes_the_dummy_aboard(tmp_path, vehicle, rise):
+    """Boat.interact / Minecart.interact -> Player.startRiding: the dummy rides it, a boat's
+    attachment a third of its 0.5625 height, a minecart's 0.1875, less the player's 0.6; a second
+    use passes (the seat is taken by itself: startRiding refuses the vehicle it rides), a sneaking
+    dummy passes."""
+    result = run(tmp_path, "# @dummy\n" + (
+        f"summon {vehicle} ~1 ~ ~ {{Tags:[\"v\"]}}\n"
+        "dummy @s use entity @e[tag=v,limit=1]\n"
+        "execute on vehicle run assert entity @s[tag=v]\n"
+        f"execute at @e[tag=v] positioned ~ ~{rise} ~ run assert entity @p[distance=..0.0001]\n"
+        "dummy @s use entity @e[tag=v,limit=1]\n"
+        "fail \"end\"\n"), pack_format=61)
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert "cannot interact with that entity" in "\n".join(result.details)
