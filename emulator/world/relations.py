@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import advancements, combat, living
+from emulator.world import advancements, combat, living, mth
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entities import Entity, EntityStore
 from emulator.world.entity_types import BOATS
@@ -106,6 +106,9 @@ def position_rider(rider: Entity) -> None:
         raise Unmodelled(f"where {rider.type} rides on {vehicle.type} (its passenger attachment)")
     x, y, z = vehicle.pos
     rider.pos = (x, y + attachment - PLAYER_VEHICLE_ATTACHMENT, z)
+    if vehicle.type in BOATS:  # Boat.clampRotation: the rider looks within 105 degrees of the bow
+        turn = mth.wrap_degrees_f(F32(rider.yaw) - F32(vehicle.yaw))
+        rider.yaw = F32(rider.yaw) + mth.clamp_f(turn, F32(-105.0), F32(105.0)) - turn
 
 
 def mount(state, rider: Entity, vehicle: Entity) -> bool:

@@ -223,3 +223,14 @@ def test_a_boat_or_minecart_takes_the_dummy_aboard(tmp_path, vehicle, rise):
         "fail \"end\"\n"), pack_format=61)
     assert (result.status, result.message) == ("failed", "end"), result.report()
     assert "cannot interact with that entity" in "\n".join(result.details)
+
+
+def test_a_boat_turns_its_rider_within_105_degrees_of_its_bow(tmp_path):
+    """Boat.positionRider -> clampRotation: the dummy looking 180 degrees from the boat's yaw turns
+    to 105 degrees from it."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "summon oak_boat ~1 ~ ~ {Tags:[\"v\"],Rotation:[0.0f,0.0f]}\n"
+        "tp @s ~ ~ ~ 180 0\n"
+        "dummy @s use entity @e[tag=v,limit=1]\n"
+        "assert entity @s[y_rotation=-105]\n"), pack_format=61)
+    assert result.status == "passed", result.report()
