@@ -19,10 +19,12 @@ mob, a lead in hand: not modelled); then the mob's own mobInteract:
 - sheep (Sheep.mobInteract): shears shear one ready for it (``Sheared:1b``, 1 to 3 wool of its
   colour dropped, the count drawn from the emulator's random; the shears worn by one), or
   consume the use on one that is not; from 1.21.2 the wool's loot table is not modelled;
-- villagers and wandering traders (Villager / WanderingTrader.mobInteract): with no offers (a
-  villager of no profession or a nitwit without saved ``Offers``, or empty ``Offers``) the use
-  counts ``minecraft.custom:minecraft.talked_to_villager`` (main hand) and is consumed; a baby
-  villager just refuses; opening the trades and the first trades drawn at random are not modelled;
+- villagers and wandering traders (Villager / WanderingTrader.mobInteract): the use counts
+  ``minecraft.custom:minecraft.talked_to_villager`` (main hand) and is consumed; with offers (saved
+  ``Offers``) the trading menu opens, closing the player's open container; a baby villager just
+  refuses. The first trades drawn at random (a trading profession or a wandering trader without
+  saved ``Offers``), special prices (gossip, Hero of the Village) and using a merchant again after
+  its menu opened (whether it still trades) are not modelled;
 - breeding (Animal.mobInteract): food given to an adult at age 0 not in love, or to a baby, is not
   modelled (what follows over the next ticks: love counting down, the breed goal, the baby's age);
   to an adult that cannot fall in love it passes;
@@ -44,7 +46,9 @@ world/entity/EntityType.java (pig: passengerAttachments; emulator.world.relation
 """
 from __future__ import annotations
 
-from emulator.world import inventories, items, living, relations, statistics, tools
+import weakref
+
+from emulator.world import block_use, inventories, items, living, relations, statistics, tools
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
 from emulator.world.id_families import COLOURS
@@ -240,20 +244,33 @@ def _offers_empty(mob) -> bool:
     raise Unmodelled(f"the first trades of {mob.type} (updateTrades: drawn at random)")
 
 
+# the merchants whose trading menu a use opened (AbstractVillager.tradingPlayer, not saved)
+_TRADING: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
 def _merchant(state, player, hand: str, mob) -> str:
     """Villager / WanderingTrader.mobInteract: a baby villager refuses (consumed; a baby trader
-    passes); else ``minecraft.custom:minecraft.talked_to_villager`` for the main hand, and with no
-    offers the use is consumed; opening the trades is not modelled."""
+    passes); else ``minecraft.custom:minecraft.talked_to_villager`` for the main hand; with no
+    offers the use is consumed, with offers the trading menu opens (startTrading: the player's
+    open container closes first; special prices from gossip or Hero of the Village are not
+    modelled). A merchant whose menu a use opened is trading until the menu closes, which is not
+    followed here: using it again is not modelled."""
     _, held = _held(state, player, hand)
     if held.id == "minecraft:villager_spawn_egg":
         raise Unmodelled(f"using a villager spawn egg on {mob.type}")
+    if _TRADING.get(mob) is not None:
+        raise Unmodelled(f"using {mob.type} after its trading menu opened (whether it is still trading)")
     if living.is_baby(mob):
         return "consume" if mob.type == "minecraft:villager" else "pass"
     empty = _offers_empty(mob)
-    if not empty:
-        raise Unmodelled(f"trading with {mob.type} (its trading menu and special prices)")
+    if not empty and mob.type == "minecraft:villager" and (
+            mob.data.get("Gossips") or living.effect_amplifier(player, "minecraft:hero_of_the_village") is not None):
+        raise Unmodelled("a villager's special prices (Villager.updateSpecialPrices: gossip, Hero of the Village)")
     if hand == MAIN:
         statistics.award(state, player, statistics.stat_name("custom", "talked_to_villager"))
+    if not empty:
+        block_use.close_menu(state, player)  # Player.openMenu closes the open container
+        _TRADING[mob] = player
     return "consume"
 
 

@@ -234,3 +234,32 @@ def test_a_boat_turns_its_rider_within_105_degrees_of_its_bow(tmp_path):
         "dummy @s use entity @e[tag=v,limit=1]\n"
         "assert entity @s[y_rotation=-105]\n"), pack_format=61)
     assert result.status == "passed", result.report()
+
+
+OFFERS = ('Offers:{Recipes:[{buy:{id:"minecraft:emerald",count:1},sell:{id:"minecraft:bread",count:1},'
+          'maxUses:12}]}')
+
+
+def test_a_merchant_with_offers_opens_its_trades_and_closes_an_open_container(tmp_path):
+    """Villager.mobInteract -> startTrading: talked_to_villager; Player.openMenu closes the barrel
+    the dummy had open (BarrelBlockEntity.stopOpen: open=false)."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "scoreboard objectives add talked minecraft.custom:minecraft.talked_to_villager\n"
+        "setblock ~2 ~ ~ barrel\n"
+        "dummy @s use block ~2 ~ ~\n"
+        "assert block ~2 ~ ~ barrel[open=true]\n"
+        f"summon villager ~1 ~ ~1 {{NoAI:1b,VillagerData:{{profession:\"minecraft:farmer\",level:1,"
+        f"type:\"minecraft:plains\"}},{OFFERS}}}\n"
+        "dummy @s use entity @e[type=villager,limit=1]\n"
+        "assert score @s talked matches 1\n"
+        "assert block ~2 ~ ~ barrel[open=false]\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_using_a_merchant_again_while_it_may_trade_is_not_modelled(tmp_path):
+    result = run(tmp_path, "# @dummy\n" + (
+        f"summon wandering_trader ~1 ~ ~1 {{NoAI:1b,{OFFERS}}}\n"
+        "dummy @s use entity @e[type=wandering_trader,limit=1]\n"
+        "dummy @s use entity @e[type=wandering_trader,limit=1]\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "after its trading menu opened" in result.report()
