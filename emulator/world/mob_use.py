@@ -46,8 +46,6 @@ world/entity/EntityType.java (pig: passengerAttachments; emulator.world.relation
 """
 from __future__ import annotations
 
-import weakref
-
 from emulator.world import block_use, inventories, items, living, relations, statistics, tools
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
@@ -244,10 +242,6 @@ def _offers_empty(mob) -> bool:
     raise Unmodelled(f"the first trades of {mob.type} (updateTrades: drawn at random)")
 
 
-# the merchants whose trading menu a use opened (AbstractVillager.tradingPlayer, not saved)
-_TRADING: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-
-
 def _merchant(state, player, hand: str, mob) -> str:
     """Villager / WanderingTrader.mobInteract: a baby villager refuses (consumed; a baby trader
     passes); else ``minecraft.custom:minecraft.talked_to_villager`` for the main hand; with no
@@ -258,7 +252,7 @@ def _merchant(state, player, hand: str, mob) -> str:
     _, held = _held(state, player, hand)
     if held.id == "minecraft:villager_spawn_egg":
         raise Unmodelled(f"using a villager spawn egg on {mob.type}")
-    if _TRADING.get(mob) is not None:
+    if state.trading.get(mob) is not None:  # AbstractVillager.tradingPlayer (not saved)
         raise Unmodelled(f"using {mob.type} after its trading menu opened (whether it is still trading)")
     if living.is_baby(mob):
         return "consume" if mob.type == "minecraft:villager" else "pass"
@@ -270,7 +264,7 @@ def _merchant(state, player, hand: str, mob) -> str:
         statistics.award(state, player, statistics.stat_name("custom", "talked_to_villager"))
     if not empty:
         block_use.close_menu(state, player)  # Player.openMenu closes the open container
-        _TRADING[mob] = player
+        state.trading[mob] = player
     return "consume"
 
 
