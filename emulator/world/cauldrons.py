@@ -48,10 +48,11 @@ def _level(block) -> int:
     return int(dict(block.properties).get("level", "3"))
 
 
-def _is_water_bottle(stack) -> bool:
+def is_water_bottle(stack) -> bool:
+    """PotionContents.is(Potions.WATER): a potion whose ``potion_contents`` names water."""
     contents = stack.component("minecraft:potion_contents")
     potion = contents.get("potion") if isinstance(contents, Compound) else contents
-    return potion is not None and str(potion) in ("minecraft:water", "water")
+    return potion is not None and str(potion).removeprefix("minecraft:") == "water"
 
 
 def _hand_becomes(state, player, hand: str, stack, new_id: str, filled: ItemStack | None = None) -> None:
@@ -77,7 +78,7 @@ def use_item_on(state, player, hand: str, pos, block, stack) -> str:
     elif used == "minecraft:bucket" and kind in BUCKETS and (kind == LAVA or _level(block) == 3):
         _hand_becomes(state, player, hand, stack, BUCKETS[kind])
         new_block, properties, stat = CAULDRON, {}, "use_cauldron"
-    elif used == "minecraft:potion" and kind in (CAULDRON, WATER) and _is_water_bottle(stack) and \
+    elif used == "minecraft:potion" and kind in (CAULDRON, WATER) and is_water_bottle(stack) and \
             (kind == CAULDRON or _level(block) < 3):
         _hand_becomes(state, player, hand, stack, "minecraft:glass_bottle")
         new_block, properties = WATER, {"level": str(_level(block) + 1 if kind == WATER else 1)}

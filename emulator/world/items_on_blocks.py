@@ -61,7 +61,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import advancements, block_shapes, fire, inventories, mth, player_actions, statistics, tools
+from emulator.world import (advancements, block_shapes, cauldrons, fire, inventories, mth, player_actions,
+                            statistics, tools)
 from emulator.world.blocks import BlockState
 from emulator.world.entities import TextTag
 from emulator.world.errors import Unmodelled
@@ -234,10 +235,7 @@ def _potion(state, player, hand: str, access, stack, pos, face: str) -> str:
     """PotionItem.useOn: a water bottle on dirt, coarse or rooted dirt (not from below) makes it
     mud and leaves a glass bottle (ItemUtils.createFilledResult), counting used:potion itself
     (and ItemStack.useOn once more); any other use passes."""
-    contents = stack.component("minecraft:potion_contents")
-    potion = contents.get("potion") if isinstance(contents, Compound) else contents
-    if face == "down" or state.blocks.get(pos).id not in TO_MUD or potion is None or \
-            str(potion).removeprefix("minecraft:") != "water":
+    if face == "down" or state.blocks.get(pos).id not in TO_MUD or not cauldrons.is_water_bottle(stack):
         return "pass"
     access.set(player_actions.filled_result(state, player, stack, ItemStack("minecraft:glass_bottle", 1)))
     statistics.award(state, player, statistics.stat_name("used", stack.id))
