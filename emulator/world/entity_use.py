@@ -88,7 +88,7 @@ def interact_on(state, player, hand: str, entity) -> str:
         return "pass"
     access = inventories.entity_slot(player, hand_slot(hand), state.version)
     held = access.get()
-    if entity.type == ARMOR_STAND:  # no interact of its own (Entity.interact: not Leashable)
+    if entity.type == ARMOR_STAND or entity.is_player:  # no interact of their own (Entity.interact: not Leashable)
         result = "pass"
     elif entity.type in BOATS or entity.type == MINECART:
         return _ride_vehicle(state, player, hand, entity)

@@ -263,3 +263,16 @@ def test_using_a_merchant_again_while_it_may_trade_is_not_modelled(tmp_path):
         "dummy @s use entity @e[type=wandering_trader,limit=1]\n"))
     assert result.status == "inconclusive", result.report()
     assert "after its trading menu opened" in result.report()
+
+
+def test_using_another_player_passes(tmp_path):
+    """Entity.interact (a player is not Leashable) passes, and a name tag does not name a player
+    (NameTagItem): the dummy cannot interact."""
+    result = run(tmp_path, "# @dummy\n" + (
+        "dummy Alex spawn\n"
+        "item replace entity @s weapon.mainhand with name_tag[custom_name='\"Bob\"']\n"
+        "dummy @s use entity Alex\n"
+        "assert items entity @s weapon.mainhand name_tag\n"
+        "fail \"end\"\n"))
+    assert (result.status, result.message) == ("failed", "end"), result.report()
+    assert "cannot interact with that entity" in "\n".join(result.details)
