@@ -52,7 +52,8 @@ from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
 from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, burning, combat, crafters,
-                           effect_clouds, falling, living, motion, nbt_ops, player_actions, projectiles, statistics)
+                           effect_clouds, equipment, falling, living, motion, nbt_ops, player_actions, projectiles,
+                           statistics)
 from emulator.world.context import Context
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
@@ -84,6 +85,7 @@ ENTITY_STEPS = ((_burning_step, burning.tick_is_idle),
                 (falling.tick_falling, falling.tick_is_idle),
                 (motion.tick_moving, motion.tick_is_idle),
                 (_effects_step, living.tick_is_idle),
+                (equipment.tick, equipment.tick_is_idle),
                 (combat.tick_dead, combat.tick_is_idle),
                 (player_actions.tick_using, player_actions.tick_is_idle),
                 (block_use.tick_menus, block_use.tick_is_idle),

@@ -5,8 +5,15 @@ observes of each.
 - ``DamageSource`` (:class:`emulator.world.loot_context.DamageSource`, loot tables read it too).
 - ``hurt(state, entity, amount, source, bypasses=False) -> bool``: LivingEntity.hurtServer: the
   health taken (emulator.world.living.hurt), the kill credit, death at 0 health, the triggers.
-- ``attack(state, player, target) -> bool``: Player.attack with an empty hand or an item that is
-  no weapon: the swing's strength, a critical hit (x 1.5) while falling; no knockback.
+- ``attack(state, player, target) -> bool``: Player.attack (1.21+ for weapons): the attack damage
+  attribute with the equipment's modifiers (emulator.world.equipment), the swing's strength, the
+  sharpness/smite bonus, a critical hit (x 1.5) while falling, the weapon counted as used and
+  damaged (1 for swords, tridents and maces, 2 for axes, pickaxes, shovels and hoes), the damage
+  dealt, 0.1 exhaustion. Not modelled (Unmodelled): knockback of any kind (the sprinting full
+  swing's, the knockback enchantment; LivingEntity.hurtServer's own 0.4 is not applied either), a
+  sweep that would hit another entity, other enchantments' attack effects (fire aspect, bane of
+  arthropods' slowness, knockback, sweeping edge, a pack's own), the mace's smash, the weapon
+  component, weapons before 1.21.
 - ``remember_attacker(state, entity, source)``: the kill credit (the last player, else mob, to hurt
   it, for 100 ticks); ``hurt_triggers(state, entity, source, amount)``: LivingEntity.hurtServer's
   end: ``entity_hurt_player`` and ``player_hurt_entity``.
@@ -39,7 +46,7 @@ import math
 
 import numpy as np
 
-from emulator.world import advancements, inventories, living, loot, predicates, statistics, teams, tools
+from emulator.world import advancements, equipment, inventories, living, loot, predicates, statistics, teams, tools
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
@@ -168,27 +175,136 @@ def magic_harm(state, entity, amount: float) -> bool:
 
 
 def attack(state, player, target) -> bool:
-    """Player.attack: the swing's damage (living.swing_damage) as ``player_attack`` by the player;
-    ``minecraft.custom:minecraft.damage_dealt`` counts the health taken x 10 (rounded). A target
-    that is not living is not attackable: nothing happens. A weapon, tool or enchanted item raises
-    Unmodelled. Returns whether the target was hurt."""
+    """Player.attack: the attack damage attribute (with the equipment's modifiers the player's last
+    tick collected, emulator.world.equipment) scaled by the swing's strength (living.swing_damage),
+    the weapon's enchantment bonus (scaled by the strength), a critical hit (x 1.5) while falling,
+    hurt as ``player_attack`` by the player; then the weapon's hurtEnemy/postHurtEnemy
+    (:func:`_weapon_used`), ``minecraft.custom:minecraft.damage_dealt`` (the health taken x 10,
+    rounded) and 0.1 exhaustion. A target that is not living is not attackable: nothing happens.
+    What is not modelled raises Unmodelled (:func:`_unmodelled_weapon`, a sweep that would hit
+    another entity, a sprinting full swing's knockback). Returns whether the target was hurt."""
     if not living.is_living(target.type) or target is player:
         return False
-    held = inventories.entity_slot(player, inventories.MAINHAND, state.version).get()
-    if not held.is_empty and any(held.component(c) is not None for c in (
-            "minecraft:max_damage", "minecraft:attribute_modifiers", "minecraft:enchantments", "minecraft:tool",
-            "minecraft:weapon")):
-        raise Unmodelled(f"attacking with {held.id} (its damage, enchantments and durability)")
+    access = inventories.entity_slot(player, inventories.MAINHAND, state.version)
+    held = access.get()
+    _unmodelled_weapon(state, player, held)
+    bonus = _enchanted_damage(state, held, target)
     damage, strength = living.swing_damage(state, player)
-    if _critical(state, player, strength):
-        damage = damage * F32(1.5)
-    before = F32(living.health(target))
-    if not hurt(state, target, float(damage), DamageSource("minecraft:player_attack", player, player)):
+    bonus = bonus * strength
+    full = strength > F32(0.9)
+    if player.sprinting and full:
+        raise Unmodelled("a sprinting full swing's knockback (Player.attack)")
+    if not (damage > 0 or bonus > 0):
         return False
+    critical = _critical(state, player, strength)
+    if critical:
+        damage = damage * F32(1.5)
+    if full and not critical and int(player.data.get("OnGround", 0)) and _sweeps(held):
+        _sweep_targets(state, player, target)
+    before = F32(living.health(target))
+    if not hurt(state, target, float(damage + bonus), DamageSource("minecraft:player_attack", player, player)):
+        return False
+    _weapon_used(state, player, access)
     dealt = before - F32(living.health(target))
     statistics.award(state, player, statistics.stat_name("custom", "damage_dealt"),
                      math.floor(dealt * F32(10.0) + F32(0.5)))
+    living.exhaust(player, F32(0.1))
     return True
+
+
+# Item.hurtEnemy returns true (the item counts as used) and postHurtEnemy's damage to it:
+# SwordItem 1, DiggerItem (axes, pickaxes, shovels, hoes) 2, TridentItem 1, MaceItem 1
+_DIGGERS = ("_axe", "_pickaxe", "_shovel", "_hoe")
+# enchantments with no effect on an attack (durability only, or none)
+_INERT_ON_ATTACK = frozenset("minecraft:" + e for e in ("unbreaking", "mending", "vanishing_curse"))
+# Enchantments (1.21 data): damage add linear(base, per level above the first) against a target
+_DAMAGE_ENCHANTMENTS = {"minecraft:sharpness": (F32(1.0), F32(0.5), None),
+                        "minecraft:smite": (F32(2.5), F32(2.5), "minecraft:sensitive_to_smite")}
+
+
+def _enemy_damage(item_id: str) -> int:
+    """The damage postHurtEnemy does to the weapon; 0 for an item whose hurtEnemy returns false."""
+    name = item_id.removeprefix("minecraft:")
+    if name.endswith("_sword") or name in ("trident", "mace"):
+        return 1
+    return 2 if name.endswith(_DIGGERS) else 0
+
+
+def _sweeps(held) -> bool:
+    """Player.attack's sweep: a SwordItem in the main hand."""
+    return not held.is_empty and held.id.endswith("_sword")
+
+
+def _unmodelled_weapon(state, player, held) -> None:
+    """What the emulator does not model of the held item's attack: before 1.21 any weapon or item
+    with components; the mace's smash (fall distance > 1.5, MaceItem.canSmashAttack); a pack's own
+    or redefined enchantments; vanilla enchantments acting on attack other than sharpness and smite."""
+    if held.is_empty:
+        return
+    version = tuple(state.version)
+    if version < equipment.MODIFIERS_VERSION:
+        if _enemy_damage(held.id) or any(held.component(c) is not None for c in (
+                "minecraft:max_damage", "minecraft:attribute_modifiers", "minecraft:enchantments")):
+            raise Unmodelled(f"attacking with {held.id} before 1.21 (its damage, enchantments and durability)")
+        return
+    if held.component("minecraft:weapon") is not None:
+        raise Unmodelled(f"the weapon component of {held.id}")
+    if held.id == "minecraft:mace" and float(player.data.get("FallDistance", 0.0)) > 1.5:
+        raise Unmodelled("the mace's smash attack (MaceItem.getAttackDamageBonus, hurtEnemy)")
+    for enchantment in _enchantments(held, version):
+        if enchantment in _INERT_ON_ATTACK:
+            continue
+        if enchantment not in _DAMAGE_ENCHANTMENTS or enchantment in state.resources.redefined_enchantments:
+            raise Unmodelled(f"the effects of {enchantment} on an attack (enchantment files are not read)")
+
+
+def _enchanted_damage(state, held, target):
+    """ServerPlayer.getEnchantedDamage -> EnchantmentHelper.modifyDamage: each damage enchantment
+    adds its level-based amount (sharpness 1 + 0.5 per level above the first, smite 2.5 a level
+    against #sensitive_to_smite)."""
+    bonus = F32(0.0)
+    if held.is_empty:
+        return bonus
+    for enchantment, level in enchantment_levels(held).items():
+        found = _DAMAGE_ENCHANTMENTS.get(str(enchantment))
+        level = int(numeric_value(level)) if is_numeric(level) else 0
+        if found is None or level <= 0:
+            continue
+        first, per_level, tag = found
+        if tag is None or state.resources.in_tag("entity_type", tag, target.type):
+            bonus = bonus + first + per_level * F32(level - 1)
+    return bonus
+
+
+def _sweep_targets(state, player, target) -> None:
+    """Player.attack's sweep hits the living entities in the target's box grown by 1, 0.25, 1 within
+    3 blocks of the player (not it, not the target, not an ally, not a marker armour stand): not
+    modelled here, so a sweep that would hit one raises Unmodelled."""
+    x0, y0, z0, x1, y1, z1 = target.bounding_box
+    px, py, pz = player.pos
+    for other in state.entities.living_mobs():
+        if other is player or other is target or other.dimension != target.dimension:
+            continue
+        if player.team is not None and other.team == player.team:
+            continue
+        if other.type == "minecraft:armor_stand" and int(other.data.get("Marker", 0)):
+            continue
+        a0, b0, c0, a1, b1, c1 = other.bounding_box
+        inside = a0 < x1 + 1 and a1 > x0 - 1 and b0 < y1 + 0.25 and b1 > y0 - 0.25 and c0 < z1 + 1 and c1 > z0 - 1
+        ox, oy, oz = other.pos
+        if inside and (ox - px) ** 2 + (oy - py) ** 2 + (oz - pz) ** 2 < 9.0:
+            raise Unmodelled(f"a sweep attack hitting {other.display_name} (Player.attack)")
+
+
+def _weapon_used(state, player, access) -> None:
+    """ItemStack.hurtEnemy: an item whose hurtEnemy returns true counts ``minecraft.used:<item>``;
+    postHurtEnemy: its damage through ItemStack.hurtAndBreak (Unbreakable, Unbreaking, breaking)."""
+    held = access.get()
+    points = 0 if held.is_empty else _enemy_damage(held.id)
+    if not points:
+        return
+    statistics.award(state, player, statistics.stat_name("used", held.id))
+    tools.hurt_and_break(state, player, access, points)
 
 
 # BlockTags.CLIMBABLE (LivingEntity.onClimbable: the block at the feet)

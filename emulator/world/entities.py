@@ -154,7 +154,8 @@ class Entity:
     own). Until the store adds it, the entity keeps those values itself."""
 
     __slots__ = ("_uuid", "type", "_custom_name", "data", "order", "player_name", "_gamemode", "_level", "_team",
-                 "_sneaking", "sprinting", "_vehicle", "passengers", "_table", "_own", "born", "__weakref__")
+                 "_sneaking", "sprinting", "_vehicle", "passengers", "_table", "_own", "born", "equipment_modifiers",
+                 "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
                  yaw=F32(0.0), pitch=F32(0.0), motion=(0.0, 0.0, 0.0), tags: set[str] | None = None,
@@ -177,6 +178,9 @@ class Entity:
         # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
         self._vehicle: Entity | None = None
         self.passengers: list = []
+        # the transient attribute modifiers its equipment gives: {attribute: {id: (amount, operation)}}
+        # (LivingEntity.collectEquipmentChanges; AttributeInstance.save leaves them out of the NBT)
+        self.equipment_modifiers: dict | None = None
         self.born = 0  # the server tick it came into the world (EntityStore._add; tickCount counts from it)
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]

@@ -192,9 +192,30 @@ def _find_modifier(entity, name: str, modifier_id: str) -> Compound | None:
     return next((m for m in _modifiers(entity, name) if str(m.get("id", "")) == modifier_id), None)
 
 
+def _transient(entity, name: str) -> dict:
+    """The equipment's (transient) modifiers on the attribute: {id: (amount, operation)}."""
+    found = entity.equipment_modifiers
+    return found.get(name, {}) if found else {}
+
+
+def set_transient(entity, name: str, modifier_id: str, amount_operation: tuple[float, str] | None) -> None:
+    """AttributeInstance.addTransientModifier (after removeModifier of the id) or, with None, the
+    removal: the equipment's modifiers are not saved with the entity."""
+    found = entity.equipment_modifiers if entity.equipment_modifiers is not None else {}
+    entity.equipment_modifiers = found
+    permanent = _find_modifier(entity, name, modifier_id)
+    if permanent is not None:  # removeModifier(id) removes any modifier of the id first
+        _modifiers(entity, name).remove(permanent)
+    if amount_operation is None:
+        found.get(name, {}).pop(modifier_id, None)
+    else:
+        found.setdefault(name, {})[modifier_id] = amount_operation
+    _changed(entity)
+
+
 def add_modifier(entity, name: str, modifier_id: str, amount: float, operation: str) -> bool:
-    """False when a modifier of that id is already on the attribute."""
-    if _find_modifier(entity, name, modifier_id) is not None:
+    """False when a modifier of that id is already on the attribute (the equipment's too)."""
+    if _find_modifier(entity, name, modifier_id) is not None or modifier_id in _transient(entity, name):
         return False
     _modifiers(entity, name).append(Compound(id=String(modifier_id), amount=Double(amount),
                                              operation=String(operation)))
@@ -206,6 +227,9 @@ def remove_modifier(entity, name: str, modifier_id: str) -> bool:
     modifiers = _modifiers(entity, name)
     found = _find_modifier(entity, name, modifier_id)
     if found is None:
+        if modifier_id in _transient(entity, name):
+            set_transient(entity, name, modifier_id, None)
+            return True
         return False
     modifiers.remove(found)
     _changed(entity)
@@ -220,7 +244,10 @@ def _changed(entity) -> None:
 
 def modifier_value(entity, name: str, modifier_id: str) -> float | None:
     found = _find_modifier(entity, name, modifier_id)
-    return None if found is None else _number(found.get("amount"))
+    if found is None:
+        transient = _transient(entity, name).get(modifier_id)
+        return None if transient is None else transient[0]
+    return _number(found.get("amount"))
 
 
 def attribute_value(entity, name: str) -> float:
@@ -229,6 +256,7 @@ def attribute_value(entity, name: str) -> float:
     clamped to the attribute's range (RangedAttribute.sanitizeValue: NaN reads the minimum)."""
     base = base_value(entity, name)
     modifiers = [(str(m.get("operation", "")), _number(m.get("amount"))) for m in _modifiers(entity, name)]
+    modifiers += [(op, amount) for amount, op in _transient(entity, name).values()]
     base += sum(a for op, a in modifiers if op == "add_value")
     value = base + sum(base * a for op, a in modifiers if op == "add_multiplied_base")
     for op, a in modifiers:

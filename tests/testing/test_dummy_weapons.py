@@ -1,0 +1,115 @@
+"""Equipment's attribute modifiers and attacking with a weapon (emulator.world.equipment,
+emulator.world.combat.attack). Sources (decompiled 1.21): LivingEntity.collectEquipmentChanges,
+AttributeInstance.addTransientModifier/save, SwordItem/DiggerItem.createAttributes, Tiers,
+ArmorItem/ArmorMaterials, Player.attack, ItemStack.hurtEnemy/postHurtEnemy/hurtAndBreak,
+CombatRules.getDamageAfterAbsorb, the sharpness enchantment's data."""
+import json
+
+import pytest
+
+from tests.testing.test_dummy_hands import run
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_held_weapons_modifiers_count_from_the_next_tick_and_are_not_saved(tmp_path, backend):
+    """LivingEntity.tick -> collectEquipmentChanges adds the iron sword's base_attack_damage (6 - 1:
+    SwordItem.createAttributes(IRON, 3, -2.4F), Tiers.IRON bonus 2) and base_attack_speed (-2.4F as
+    a double) as transient modifiers; removed when the hand empties; AttributeInstance.save leaves
+    them out of the NBT."""
+    result = run(tmp_path, (
+        "scoreboard objectives add v dummy\n"
+        "dummy Alex spawn\n"
+        "item replace entity Alex weapon.mainhand with iron_sword\n"
+        "execute store result score #now v run attribute Alex generic.attack_damage get 10\n"
+        "assert score #now v matches 10\n"
+        "await delay 1\n"
+        "execute store result score #held v run attribute Alex generic.attack_damage get 10\n"
+        "assert score #held v matches 60\n"
+        "execute store result score #mod v run attribute Alex generic.attack_damage modifier value get "
+        "minecraft:base_attack_damage 10\n"
+        "assert score #mod v matches 50\n"
+        "execute store result score #speed v run attribute Alex generic.attack_speed get 1000000\n"
+        "assert score #speed v matches 1599999\n"                # 4 + (double) -2.4F, truncated
+        "assert not data entity Alex attributes[{id:\"minecraft:generic.attack_damage\"}].modifiers[0]\n"
+        "item replace entity Alex weapon.mainhand with air\n"
+        "await delay 1\n"
+        "execute store result score #empty v run attribute Alex generic.attack_damage get 10\n"
+        "assert score #empty v matches 10\n"), backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_worn_armour_counts_its_defense_and_toughness(tmp_path):
+    """ArmorItem's defaults (ArmorMaterials.DIAMOND chestplate: 8 armor, 2 toughness) reduce a
+    mob attack: CombatRules.getDamageAfterAbsorb: 10 x (1 - min(max(8 - 10 / 2.5, 1.6), 20) / 25)
+    = 8.400001 in float math, so 11.599999 health is left."""
+    result = run(tmp_path, (
+        "scoreboard objectives add v dummy\n"
+        "dummy Alex spawn\n"
+        "item replace entity Alex armor.chest with diamond_chestplate\n"
+        "await delay 1\n"
+        "execute store result score #armor v run attribute Alex generic.armor get\n"
+        "assert score #armor v matches 8\n"
+        "damage Alex 10 minecraft:mob_attack\n"
+        "execute store result score #health v run data get entity Alex Health 1000\n"
+        "assert score #health v matches 11599\n"))
+    assert result.status == "passed", result.report()
+
+
+USED = {"demo/advancement/worn.json": json.dumps({"criteria": {"c": {
+    "trigger": "minecraft:item_durability_changed",
+    "conditions": {"item": {"items": "minecraft:iron_sword"}, "delta": -1}}}})}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_full_swing_with_a_sharp_sword_deals_its_damage_and_wears_it(tmp_path, backend):
+    """Player.attack: attack_damage 6 (iron sword) at full strength plus sharpness II (1 + 0.5);
+    the pig (10 health) keeps 2.5; damage_dealt 75; ItemStack.hurtEnemy counts used:iron_sword and
+    postHurtEnemy wears it by 1 (item_durability_changed)."""
+    result = run(tmp_path, (
+        "scoreboard objectives add dealt minecraft.custom:minecraft.damage_dealt\n"
+        "scoreboard objectives add used minecraft.used:minecraft.iron_sword\n"
+        "dummy Alex spawn\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"]}\n"
+        "item replace entity Alex weapon.mainhand with iron_sword[enchantments={sharpness:2}]\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert entity @e[tag=p,nbt={Health:2.5f}]\n"
+        "assert score Alex dealt matches 75\n"
+        "assert score Alex used matches 1\n"
+        "assert items entity Alex weapon.mainhand iron_sword[damage=1]\n"
+        "assert entity @a[name=Alex,advancements={demo:worn=true}]\n"), files=USED, backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_a_weapon_breaks_at_its_maximum_damage_unless_unbreakable(tmp_path):
+    """ItemStack.hurtAndBreak: a golden sword (max 32) at 31 breaks (broken:golden_sword); an
+    unbreakable axe takes no damage but still counts as used (DiggerItem.hurtEnemy)."""
+    result = run(tmp_path, (
+        "scoreboard objectives add broken minecraft.broken:minecraft.golden_sword\n"
+        "scoreboard objectives add axe minecraft.used:minecraft.iron_axe\n"
+        "dummy Alex spawn\n"
+        "summon cow ~1 ~ ~ {Tags:[\"p\"],DeathLootTable:\"minecraft:empty\"}\n"
+        "item replace entity Alex weapon.mainhand with golden_sword[damage=31]\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert score Alex broken matches 1\n"
+        "assert not items entity Alex weapon.mainhand *\n"
+        "item replace entity Alex weapon.mainhand with iron_axe[unbreakable={}]\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert score Alex axe matches 1\n"
+        "assert items entity Alex weapon.mainhand iron_axe[damage=0]\n"))
+    assert result.status == "passed", result.report()
+
+
+def test_a_sweep_that_would_hit_a_second_mob_is_inconclusive(tmp_path):
+    """Player.attack: a full swing on the ground with a sword sweeps the mobs around the target;
+    not modelled."""
+    result = run(tmp_path, (
+        "dummy Alex spawn\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"]}\nsummon pig ~1.5 ~ ~0.5\n"
+        "item replace entity Alex weapon.mainhand with iron_sword\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=p,limit=1]\nsucceed\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "a sweep attack hitting" in result.message
