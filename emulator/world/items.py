@@ -165,7 +165,9 @@ EMPTY = ItemStack(AIR, 0)
 def decoded(name: str, value):
     """A component's value as its codec reads it, where two written forms decode alike:
     ``jukebox_playable`` is ``{song}`` before 1.21.5 (show_in_tooltip true unless said) and the
-    song alone from 1.21.5 (JukeboxPlayable.CODEC), compared by its song."""
+    song alone from 1.21.5 (JukeboxPlayable.CODEC), compared by its song; ``potion_contents`` as a
+    bare potion id is ``{potion}`` (:func:`_potion_full_form`)."""
+    value = _potion_full_form(name, value)
     if name == "minecraft:jukebox_playable" and isinstance(value, Compound) and "song" in value \
             and all(k == "song" or (k == "show_in_tooltip" and value[k] != 0) for k in value):
         return value["song"]
@@ -191,9 +193,18 @@ def _full_ids(name: str, value):
     return whole
 
 
+def _potion_full_form(name: str, value):
+    """``potion_contents`` given as a bare potion id is kept as the codec saves it: ``{potion}``
+    with the full id (PotionContents.CODEC encodes with FULL_CODEC), so NBT tests see that form."""
+    if name != "minecraft:potion_contents" or not isinstance(value, String):
+        return value
+    text = str(value)
+    return Compound(potion=String(text if ":" in text else "minecraft:" + text))
+
+
 def set_component(stack: ItemStack, name: str, value) -> None:
     """PatchedDataComponentMap.set: a value equal to the default leaves the patch."""
-    value = _full_ids(name, value)
+    value = _potion_full_form(name, _full_ids(name, value))
     stack.patch.pop("!" + name, None)
     default = defaults(stack.id).get(name)
     if default is not None and tags_equal(decoded(name, default), decoded(name, value)):

@@ -194,3 +194,15 @@ def test_an_item_whose_use_is_not_modelled_makes_the_test_inconclusive(tmp_path)
     result = run(tmp_path, "# @dummy\ngive @s water_bucket\ndummy @s use item\nsucceed\n")
     assert (result.status, result.line) == ("inconclusive", 3), result.report()
     assert "using minecraft:water_bucket" in result.message
+
+
+def test_a_potion_given_by_its_bare_id_saves_its_full_contents(tmp_path):
+    """PotionContents.CODEC reads a bare potion id (Potion.CODEC) but encodes FULL_CODEC: the saved
+    NBT has ``{potion: "minecraft:..."}``, which NBT tests match (gm4_potion_swords' assign_potion)."""
+    result = run(tmp_path, (
+        "dummy Alex spawn\n"
+        "item replace entity Alex weapon.offhand with potion[potion_contents=\"long_slowness\"]\n"
+        "assert entity @a[name=Alex,nbt={Inventory:[{id:\"minecraft:potion\",components:{\"minecraft:potion_contents\":"
+        "{potion:\"minecraft:long_slowness\"}}}]}]\n"
+        "assert items entity Alex weapon.offhand potion[potion_contents=\"minecraft:long_slowness\"]\n"))
+    assert result.status == "passed", result.report()
