@@ -113,3 +113,13 @@ def test_a_sweep_that_would_hit_a_second_mob_is_inconclusive(tmp_path):
         "dummy Alex attack @e[tag=p,limit=1]\nsucceed\n"))
     assert result.status == "inconclusive", result.report()
     assert "a sweep attack hitting" in result.message
+
+
+def test_body_armour_on_a_mob_is_inconclusive(tmp_path):
+    """Wolf armour's default modifiers (ArmorItem.Type.BODY) are not modelled: the wolf's tick says so."""
+    result = run(tmp_path, (
+        "summon wolf ~1 ~ ~ {Tags:[\"w\"]}\n"
+        "item replace entity @e[tag=w,limit=1] armor.body with wolf_armor\n"
+        "await delay 2\nsucceed\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "minecraft:wolf_armor" in result.message
