@@ -215,8 +215,9 @@ def attack(state, player, target) -> bool:
 # Item.hurtEnemy returns true (the item counts as used) and postHurtEnemy's damage to it:
 # SwordItem 1, DiggerItem (axes, pickaxes, shovels, hoes) 2, TridentItem 1, MaceItem 1
 _DIGGERS = ("_axe", "_pickaxe", "_shovel", "_hoe")
-# enchantments with no effect on an attack (durability only, or none)
-_INERT_ON_ATTACK = frozenset("minecraft:" + e for e in ("unbreaking", "mending", "vanishing_curse"))
+# enchantments with no effect on the attack itself (durability, mining, the loot: read where it drops)
+_INERT_ON_ATTACK = frozenset("minecraft:" + e for e in (
+    "unbreaking", "mending", "vanishing_curse", "looting", "efficiency", "silk_touch", "fortune"))
 # Enchantments (1.21 data): damage add linear(base, per level above the first) against a target
 _DAMAGE_ENCHANTMENTS = {"minecraft:sharpness": (F32(1.0), F32(0.5), None),
                         "minecraft:smite": (F32(2.5), F32(2.5), "minecraft:sensitive_to_smite")}

@@ -4,9 +4,13 @@ AttributeInstance.addTransientModifier/save, SwordItem/DiggerItem.createAttribut
 ArmorItem/ArmorMaterials, Player.attack, ItemStack.hurtEnemy/postHurtEnemy/hurtAndBreak,
 CombatRules.getDamageAfterAbsorb, the sharpness enchantment's data."""
 import json
+import zipfile
 
 import pytest
 
+from emulator.testing import discover, run_suite
+from tests.conftest import write_pack
+from tests.parser.pack.packbuild import tag
 from tests.testing.test_dummy_hands import run
 
 
@@ -123,3 +127,44 @@ def test_body_armour_on_a_mob_is_inconclusive(tmp_path):
         "await delay 2\nsucceed\n"))
     assert result.status == "inconclusive", result.report()
     assert "minecraft:wolf_armor" in result.message
+
+
+def _with_jar(tmp_path, text, backend):
+    """The test run with a game jar holding #minecraft:sensitive_to_smite (the zombie)."""
+    jar = tmp_path / "client.jar"
+    with zipfile.ZipFile(jar, "w") as archive:
+        archive.writestr("data/minecraft/tags/entity_type/sensitive_to_smite.json", tag("minecraft:zombie"))
+    root = write_pack(tmp_path / "pack", {"demo/test/t.mcfunction": text})
+    [result] = run_suite(discover([root]), backend, game_jar=str(jar)).results
+    return result
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_smite_adds_its_bonus_against_the_undead_only(tmp_path, backend):
+    """Enchantments.SMITE (1.21 data): damage + 2.5 a level against #sensitive_to_smite. A full swing
+    with a smite II stone sword (5) hits a zombie for 10 (its 2 armor: CombatRules leaves
+    10 x (1 - max(2 - 10 / 2, 0.4) / 25) = 9.84, float math) and a pig for 5."""
+    result = _with_jar(tmp_path, (
+        "scoreboard objectives add v dummy\n"
+        "dummy Alex spawn\n"
+        "summon zombie ~1 ~ ~ {Tags:[\"z\"],NoAI:1b}\n"
+        "item replace entity Alex weapon.mainhand with stone_sword[enchantments={smite:2}]\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=z,limit=1]\n"
+        "execute store result score #zombie v run data get entity @e[tag=z,limit=1] Health 1000\n"
+        "assert score #zombie v matches 10159\n"                # 10.16f is 10.1599998...; data get floors
+        "kill @e[tag=z]\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"]}\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert entity @e[tag=p,nbt={Health:5.0f}]\n"), backend)
+    assert result.status == "passed", result.report()
+
+
+def test_smite_without_the_games_tags_is_inconclusive(tmp_path):
+    result = run(tmp_path, (
+        "dummy Alex spawn\nsummon pig ~1 ~ ~\n"
+        "item replace entity Alex weapon.mainhand with stone_sword[enchantments={smite:1}]\n"
+        "dummy Alex attack @e[type=pig,limit=1]\nsucceed\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "#minecraft:sensitive_to_smite" in result.message
