@@ -192,8 +192,9 @@ def attack(state, player, target) -> bool:
     damage, strength = living.swing_damage(state, player)
     bonus = bonus * strength
     full = strength > F32(0.9)
-    if player.sprinting and full:
-        raise Unmodelled("a sprinting full swing's knockback (Player.attack)")
+    if (player.sprinting and full) or living.attribute_value(player, "attack_knockback") > 0:
+        raise Unmodelled("the knockback of a sprinting full swing or of the attack_knockback attribute "
+                         "(Player.attack -> LivingEntity.knockback)")
     if not (damage > 0 or bonus > 0):
         return False
     critical = _critical(state, player, strength)

@@ -168,3 +168,33 @@ def test_smite_without_the_games_tags_is_inconclusive(tmp_path):
         "dummy Alex attack @e[type=pig,limit=1]\nsucceed\n"))
     assert result.status == "inconclusive", result.report()
     assert "#minecraft:sensitive_to_smite" in result.message
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_the_weapons_attack_speed_sets_the_swings_recharge(tmp_path, backend):
+    """Player.getAttackStrengthScale(0.5): (ticks + 0.5) / (20 / attack_speed); the iron sword's
+    1.6 speed (4 - 2.4F) recharges in 12.5 ticks, so 5 ticks after the last swing the strength is
+    0.44 and the hit deals 6 x (0.2 + 0.8 x 0.44²) = 2.129 (float math): the pig keeps 7.871."""
+    result = run(tmp_path, (
+        "scoreboard objectives add v dummy\n"
+        "dummy Alex spawn\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"
+        "summon pig ~-3 ~ ~ {Tags:[\"q\"],NoAI:1b}\n"
+        "item replace entity Alex weapon.mainhand with iron_sword\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=q,limit=1]\n"
+        "await delay 5\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "execute store result score #health v run data get entity @e[tag=p,limit=1] Health 1000\n"
+        "assert score #health v matches 7870\n"), backend=backend)
+    assert result.status == "passed", result.report()
+
+
+def test_a_swing_with_attack_knockback_is_inconclusive(tmp_path):
+    """Player.attack -> LivingEntity.knockback for getKnockback > 0: the Motion it sets is not modelled."""
+    result = run(tmp_path, (
+        "dummy Alex spawn\nsummon pig ~1 ~ ~\n"
+        "attribute Alex generic.attack_knockback base set 1\n"
+        "dummy Alex attack @e[type=pig,limit=1]\nsucceed\n"))
+    assert result.status == "inconclusive", result.report()
+    assert "attack_knockback" in result.message
