@@ -12,6 +12,8 @@ modifiers, held while the item stays in its slot.
   does the damage a swing deals, but the entity's ``attributes`` NBT does not (AttributeInstance.
   save keeps only permanent modifiers). An item put in a slot counts from the entity's next tick,
   as in the game (a swing in the same tick as ``item replace`` hits without the weapon's damage).
+  A player's tick that finds another item in its main hand (not ItemStack.isSameItem) restarts
+  the swing's recharge (Player.tick -> resetAttackStrengthTicker).
 
 The vanilla armour pieces (ArmorItem: ArmorMaterials' defense, toughness and knockback resistance,
 named ``armor.<piece>``) count too, so a worn piece reduces damage (CombatRules.getDamageAfterAbsorb).
@@ -165,6 +167,9 @@ def collect_changes(state, entity, last: dict) -> None:
     """LivingEntity.collectEquipmentChanges against ``last`` ({slot: the stack last seen}): the
     changed slots' old modifiers off, then the new ones on."""
     changed = _changed_slots(state, entity, last)
+    held = changed.get(inventories.MAINHAND)
+    if entity.is_player and held is not None and held.id != last.get(inventories.MAINHAND, EMPTY).id:
+        living.reset_attack_strength(state, entity)  # Player.tick: another item in the main hand
     for slot in changed:
         for modifier in _for_slot(state, last.get(slot, EMPTY), SLOTS[slot]):
             living.set_transient(entity, modifier.attribute, modifier.id, None)

@@ -198,3 +198,29 @@ def test_a_swing_with_attack_knockback_is_inconclusive(tmp_path):
         "dummy Alex attack @e[type=pig,limit=1]\nsucceed\n"))
     assert result.status == "inconclusive", result.report()
     assert "attack_knockback" in result.message
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_another_item_in_hand_restarts_the_swings_recharge(tmp_path, backend):
+    """Player.tick: a main hand item that is not the same item as last tick's resets the attack
+    strength ticker in the player's first tick after the sword is taken (after its ++), so of the 5
+    player ticks before the swing 4 count: strength (4 + 0.5) / 12.5 = 0.36, the hit deals
+    6 x (0.2 + 0.8 x 0.36²) = 1.82208 and the pig keeps 8.17792; a changed damage on the same item
+    does not reset it (a full swing: 6 of the new pig's 10)."""
+    result = run(tmp_path, (
+        "scoreboard objectives add v dummy\n"
+        "dummy Alex spawn\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b,DeathLootTable:\"minecraft:empty\"}\n"
+        "await delay 20\n"
+        "item replace entity Alex weapon.mainhand with iron_sword\n"
+        "await delay 5\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "execute store result score #health v run data get entity @e[tag=p,limit=1] Health 1000\n"
+        "assert score #health v matches 8177\n"
+        "await delay 20\n"
+        "item replace entity Alex weapon.mainhand with iron_sword[damage=5]\n"
+        "await delay 5\n"
+        "kill @e[tag=p]\nsummon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert entity @e[tag=p,nbt={Health:4.0f}]\n"), backend=backend)
+    assert result.status == "passed", result.report()
