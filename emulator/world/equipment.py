@@ -3,9 +3,11 @@ modifiers, held while the item stays in its slot.
 
 - ``item_modifiers(stack, version) -> list[Modifier]``: the stack's ``attribute_modifiers``
   component as a pack patched it, else the vanilla item's default (Item.Properties.attributes:
-  swords, axes, pickaxes, shovels and hoes from SwordItem/DiggerItem.createAttributes with the tier's damage bonus, the trident
-  and the mace from TridentItem/MaceItem.createAttributes; Tiers.getAttackDamageBonus).
-- ``collect_changes(state, entity)``: LivingEntity.collectEquipmentChanges, once per entity tick:
+  swords, axes, pickaxes, shovels and hoes from SwordItem/DiggerItem.createAttributes with the
+  tier's damage bonus, Tiers.getAttackDamageBonus; the trident and the mace from
+  TridentItem/MaceItem.createAttributes).
+- ``collect_changes(state, entity, last)``: LivingEntity.collectEquipmentChanges, once per entity
+  tick (``tick(state)``, with ``tick_is_idle(state)`` for a batch of ticks):
   for each slot whose stack changed (ItemStack.matches) the old stack's modifiers for that slot are
   removed, then the new stack's are added as transient modifiers (AttributeInstance.
   addTransientModifier): ``attribute … get`` and ``attribute … modifier value get`` see them and so
@@ -18,12 +20,13 @@ modifiers, held while the item stays in its slot.
 The vanilla armour pieces (ArmorItem: ArmorMaterials' defense, toughness and knockback resistance,
 named ``armor.<piece>``) count too, so a worn piece reduces damage (CombatRules.getDamageAfterAbsorb).
 
-Not modelled (Unmodelled): body armour (wolf and horse armour), every equipment modifier below 1.21
-(the UUID form), and enchantments' location-based attribute effects (EnchantmentHelper.
-runLocationChangedEffects).
+Not modelled (Unmodelled): body armour (wolf and horse armour), copper tools and armour and spears
+(later releases' materials), every equipment modifier below 1.21 (the UUID form), and
+enchantments' location-based attribute effects (EnchantmentHelper.runLocationChangedEffects).
 
 Sources (decompiled 1.21): world/entity/LivingEntity.java (detectEquipmentUpdates,
-collectEquipmentChanges), world/item/{SwordItem,DiggerItem,TridentItem,MaceItem,Tiers,Items,ArmorItem,ArmorMaterials}.java,
+collectEquipmentChanges), world/entity/player/Player.java (tick), world/item/{SwordItem,
+DiggerItem,TridentItem,MaceItem,Tiers,Items,ArmorItem,ArmorMaterials}.java,
 world/entity/EquipmentSlotGroup.java, world/item/component/ItemAttributeModifiers.java.
 """
 from __future__ import annotations
@@ -95,6 +98,9 @@ def _vanilla(item_id: str) -> list[Modifier]:
     else:
         if name == "wolf_armor" or name.endswith("_horse_armor"):
             raise Unmodelled(f"the default attribute modifiers of {item_id} (body armour)")
+        if name.endswith("_spear") or (material == "copper" and (kind in PIECES or kind in DIGGERS
+                                                                 or kind == "sword")):
+            raise Unmodelled(f"the default attribute modifiers of {item_id}")
         return []
     return [Modifier("attack_damage", BASE_ATTACK_DAMAGE, damage, "add_value", "mainhand"),
             Modifier("attack_speed", BASE_ATTACK_SPEED, speed, "add_value", "mainhand")]
