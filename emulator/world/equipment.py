@@ -31,14 +31,14 @@ world/entity/EquipmentSlotGroup.java, world/item/component/ItemAttributeModifier
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
 from emulator.world import inventories, living
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, ItemStack
-from emulator.world.nbt_ops import is_numeric, numeric_value
+from emulator.world.nbt_ops import copy_tag, is_numeric, numeric_value, tags_equal
 from mcfunction_parser.nbt import Compound, List
 
 F32 = np.float32
@@ -155,6 +155,19 @@ def _for_slot(state, stack: ItemStack, slot_name: str) -> list[Modifier]:
         return []
 
 
+@dataclass
+class _Seen:
+    """What an entity's last equipment check saw: its slots' stacks and, as a copy, the NBT they were
+    read from (while that NBT is the same, Tag.equals, no slot can have changed: the check skips
+    reading them, the common tick)."""
+    slots: dict = field(default_factory=dict)
+    nbt: Compound | None = None
+
+
+def _nbt_changed(entity, seen: _Seen) -> bool:
+    return seen.nbt is None or not tags_equal(inventories.equipment_nbt(entity), seen.nbt)
+
+
 def _changed_slots(state, entity, last: dict) -> dict:
     """The slots whose stack is no longer the one last seen (LivingEntity.equipmentHasChanged:
     not ItemStack.matches), with their new stacks."""
@@ -194,12 +207,19 @@ def tick(state) -> None:
     for entity in state.entities.living_mobs():
         last = seen.get(entity)
         if last is None:
-            last = seen[entity] = {}
-        collect_changes(state, entity, last)
+            last = seen[entity] = _Seen()
+        if not _nbt_changed(entity, last):
+            continue
+        collect_changes(state, entity, last.slots)
+        last.nbt = copy_tag(inventories.equipment_nbt(entity))
 
 
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick` would change nothing now."""
     if tuple(state.version) < MODIFIERS_VERSION:
         return True
-    return not any(_changed_slots(state, e, state.equipment_seen.get(e, {})) for e in state.entities.living_mobs())
+    for entity in state.entities.living_mobs():
+        last = state.equipment_seen.get(entity) or _Seen()
+        if _nbt_changed(entity, last) and _changed_slots(state, entity, last.slots):
+            return False
+    return True

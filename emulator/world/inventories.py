@@ -232,6 +232,16 @@ def selected_item(data: Compound) -> Compound | None:
     return Compound((k, copy_tag(v)) for k, v in entry.items() if k != "Slot")
 
 
+# every key of an entity's NBT an equipment slot is read from (either layout, players and mobs)
+EQUIPMENT_KEYS = ("equipment", "Inventory", "SelectedItemSlot", "HandItems", "ArmorItems", "body_armor_item")
+
+
+def equipment_nbt(entity) -> Compound:
+    """The part of the entity's NBT its equipment slots are read from (the tags themselves, not copies)."""
+    data = entity.data
+    return Compound((key, data[key]) for key in EQUIPMENT_KEYS if key in data)
+
+
 def _equipment_slot(data: Compound, slot: int, version, player: bool) -> SlotAccess | None:
     names = {MAINHAND: "mainhand", OFFHAND: "offhand", BODY: "body", **ARMOR}
     if slot not in names:

@@ -225,3 +225,34 @@ def test_another_item_in_hand_restarts_the_swings_recharge(tmp_path, backend):
         "dummy Alex attack @e[tag=p,limit=1]\n"
         "assert entity @e[tag=p,nbt={Health:4.0f}]\n"), backend=backend)
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("pack_format, hand, attribute", [(48, "HandItems[0]", "generic.attack_damage"),
+                                                          (71, "equipment.mainhand", "attack_damage")])
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_mobs_weapon_changed_in_place_in_its_nbt_changes_its_modifiers(tmp_path, backend, pack_format, hand,
+                                                                          attribute):
+    """LivingEntity.collectEquipmentChanges compares each slot's stack with the one its last tick
+    kept (ItemStack.matches), however the stack came to change: here ``data modify`` edits the held
+    sword's id and then its count in place (1.21: ``HandItems``; 1.21.5: ``equipment``, and the
+    attribute's name without ``generic.`` from 1.21.2). The iron
+    sword's base_attack_damage is 5 (SwordItem.createAttributes(IRON, 3, -2.4F), Tiers.IRON bonus
+    2), the diamond sword's 6 (Tiers.DIAMOND bonus 3); an emptied hand has none."""
+    zombie = "@e[tag=z,limit=1]"
+    modifier = (f"execute store result score #mod v run attribute {zombie} {attribute} modifier value "
+                "get minecraft:base_attack_damage 1\n")
+    result = run(tmp_path, (
+        "scoreboard objectives add v dummy\n"
+        "summon zombie ~ ~ ~ {Tags:[\"z\"],NoAI:1b,PersistenceRequired:1b}\n"
+        f"item replace entity {zombie} weapon.mainhand with iron_sword\n"
+        "await delay 1\n" + modifier +
+        "assert score #mod v matches 5\n"
+        f"data modify entity {zombie} {hand}.id set value \"minecraft:diamond_sword\"\n"
+        "await delay 1\n" + modifier +
+        "assert score #mod v matches 6\n"
+        f"data modify entity {zombie} {hand}.count set value 0\n"
+        "await delay 1\n"
+        f"execute store success score #has v run attribute {zombie} {attribute} modifier value get "
+        "minecraft:base_attack_damage 1\n"
+        "assert score #has v matches 0\n"), pack_format=pack_format, backend=backend)
+    assert result.status == "passed", result.report()
