@@ -18,6 +18,7 @@ feet are where these blocks sit) and the block under them (Entity.getOnPos: 0.2 
 from __future__ import annotations
 
 import math
+import weakref
 
 MESSAGE = "a mob standing in or on {} (what the block does to it is not modelled here)"
 CART = "a minecart {} (a minecart riding its rails is not modelled here)"
@@ -30,6 +31,23 @@ _ON_POS_OFFSET = 0.2  # Entity.getOnPos(): getOnPos(0.2F)
 
 def _acts_inside(block_id: str) -> bool:
     return block_id in _INSIDE or block_id.endswith(_INSIDE_SUFFIXES)
+
+
+def _acts(block_id: str) -> bool:
+    return _acts_inside(block_id) or block_id in _STEP_ON
+
+
+# BlockMap -> (its edits then, whether it holds an acting block): looked at again only after a block changed
+_HOLDS_ACTING: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _holds_acting(blocks) -> bool:
+    """Whether any block of the level would act on a mob (the common world has none: no mob's
+    position need be read)."""
+    known = _HOLDS_ACTING.get(blocks)
+    if known is None or known[0] != blocks.edits:
+        known = _HOLDS_ACTING[blocks] = (blocks.edits, any(_acts(s.id) for s in blocks.states.values()))
+    return known[1]
 
 
 def _touched(state, entity) -> list[str]:
@@ -60,7 +78,9 @@ def _moving_carts(state):
 
 
 def _unreported(state):
-    mobs, carts = state.entities.living_mobs(), state.entities.minecarts()
+    carts = state.entities.minecarts()
+    acting = any(_holds_acting(blocks) for blocks in state.all_blocks())
+    mobs = state.entities.living_mobs() if acting else ()
     if not (mobs or carts):  # the commonest tick of all: nothing to look at
         return
     touched = [MESSAGE.format(block_id) for entity in mobs for block_id in _touched(state, entity)]

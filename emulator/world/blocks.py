@@ -198,6 +198,7 @@ class BlockMap:
         # AbstractFurnaceBlockEntity.setItem of an input: (block id, NBT, before, after, version),
         # set by the world (its recipes decide: emulator.world.furnaces.input_set)
         self.furnace_input_set: Callable | None = None
+        self.edits = 0  # block states set so far: what is derived from the whole map is kept until it grows
 
     def get(self, pos) -> BlockState:
         return self.states.get(tuple(pos), BlockState(AIR))
@@ -217,6 +218,7 @@ class BlockMap:
             self.states.pop(pos, None)
         else:
             self.states[pos] = state
+        self.edits += 1
         self.entities.pop(pos, None)
         triggered = dict(state.properties).get("triggered") == "true"
         nbt = block_entities.new_entity(state.id, self.version_of(), triggered)
@@ -236,6 +238,7 @@ class BlockMap:
         """Level.setBlock of another state of the same block: its block entity stays (a lever pulled,
         a barrel opened)."""
         self.states[tuple(pos)] = state
+        self.edits += 1
 
     def setblock(self, pos, spec: BlockSpec, mode: str = "replace") -> int:
         """``setblock POS BLOCK [replace|keep|destroy]``: 1, or fails "Could not set the block"."""

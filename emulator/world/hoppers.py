@@ -361,7 +361,7 @@ def transfer(state, dimension, blocks, pos, nbt, ticked: set) -> bool:
 def minecart_would_pull(state) -> str | None:
     """What a hopper minecart would do that is not modelled (HopperMinecart.suckInItems: the
     container above it or the item entities around it), or None."""
-    for cart in state.entities.entities:
+    for cart in state.entities.minecarts():  # kept between entity changes: the common tick has none
         if not cart.alive or cart.type != "minecraft:hopper_minecart":
             continue
         x, y, z = cart.pos

@@ -601,6 +601,10 @@ class WorldState:
             blocks.furnace_input_set = self._furnace_input_set
         return blocks
 
+    def all_blocks(self) -> list[BlockMap]:
+        """Every level's blocks, the overworld's first."""
+        return [self.blocks, *self.other_levels_blocks.values()]
+
     def level(self, dimension: str) -> "LevelView":
         """The world as seen from level ``dimension`` (what the game's ServerLevel gives a block's
         code): its blocks and its block ticks; everything else is the world's."""

@@ -48,6 +48,21 @@ def test_a_mob_on_a_plate_or_magma_is_reported_once_and_a_marker_is_not(tmp_path
                               MESSAGE.format("minecraft:stone_pressure_plate")]
 
 
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_plate_placed_under_a_standing_mob_is_reported_from_the_next_tick(tmp_path, backend):
+    # the world held no acting block while the player stood there (nothing to report, nothing to
+    # look at); the plate set later is found at the tick's end, as the game's entity would press it
+    emu = emulator(tmp_path, backend, {"t:plate": "setblock 0 5 0 stone_pressure_plate",
+                                       "t:floor": "setblock 0 4 0 stone"})
+    emu.call("t:floor")
+    emu.add_player("Alex", (0.5, 5.0, 0.5))
+    emu.tick(2)
+    assert _reported(emu) == []
+    emu.call("t:plate")
+    emu.tick()
+    assert _reported(emu) == [MESSAGE.format("minecraft:stone_pressure_plate")]
+
+
 def test_magma_beside_the_feet_acts_only_from_below(tmp_path):
     # stepOn is the block under the feet: magma in the feet's own cell is a block the mob is inside
     emu = emulator(tmp_path, "python", {"t:s": "setblock 0 5 0 magma_block"})
