@@ -68,7 +68,7 @@ def ignite_for_ticks(entity, ticks: int) -> None:
 
 def _burning(state):
     ticking = state.entities.picked("base_tick", lambda t: t not in _NO_BASE_TICK)
-    return [e for e in ticking if e.alive and fire(e) > 0]
+    return [e for e in ticking if fire(e) > 0 and e.alive]  # Fire first: a dict look-up, alive an array's
 
 
 def tick_is_idle(state) -> bool:

@@ -244,6 +244,7 @@ class Entity:
             self._own[5] = bool(value)
         else:
             self._table.ints[self.order, EI_ALIVE] = int(value)
+            self._table.alive_writes += 1
 
     # what the selector arguments name, team, gamemode and level compare (a player's ``level`` is its
     # experience level): kept in the table's EI_NAME, EI_TEAM, EI_GAMEMODE and EI_XP too (the VM's
@@ -564,7 +565,7 @@ class EntityStore:
         self.join_team: Callable[[str, str], None] = lambda holder, team: None  # (WorldState.teams)
         self.clock: Callable[[], int] = lambda: 0  # the server ticks run so far (WorldState.tick)
         self.changes = 0  # entities that came into ``entities`` or left it so far
-        self._mobs: tuple[int, list[Entity]] = (0, [])  # (changes then, the LivingEntities in ``entities``)
+        self._mobs: tuple[tuple, list[Entity]] = ((0, 0), [])  # ((changes, alive writes) then, ``living_mobs()``)
         self._players: tuple[int, list[Entity]] = (0, [])  # (changes then, ``players()``)
         self._carts: tuple[int, list[Entity]] = (0, [])  # (changes then, ``minecarts()``)
         self._picked: dict[str, tuple[int, list[Entity]]] = {}  # ``picked()``'s lists by key
@@ -705,8 +706,9 @@ class EntityStore:
 
     def living_mobs(self) -> list[Entity]:
         """The living LivingEntities (mobs, players, armor stands: :func:`living.is_living`), in the
-        store's order; the few that tick effects, found again only when entities came or left."""
-        if self._mobs[0] != self.changes:
-            self._mobs = (self.changes, [e for e in self.entities if living.is_living(e.type)])
-        mobs = self._mobs[1]
-        return [e for e in mobs if e.alive] if mobs else []
+        store's order; the few that tick effects, found again only when entities came or left or
+        one's alive flag was written (the list is the store's: not to be changed)."""
+        stamp = (self.changes, self.table.alive_writes)
+        if self._mobs[0] != stamp:
+            self._mobs = (stamp, [e for e in self.entities if living.is_living(e.type) and e.alive])
+        return self._mobs[1]

@@ -76,6 +76,7 @@ class EntityTable:
         self.seats = 0  # the times an entity got on or off a vehicle (EI_SEAT)
         self.count = 0  # living entities, order[:count]
         self.live = np.zeros(1, dtype=np.int64)  # count, as the VM reads it
+        self.alive_writes = 0  # EI_ALIVE written after the entity came (what is derived from it is kept until this grows)
         self.handles: list = []  # slot -> Entity
         self.tag_ids: dict[str, int] = {}
         self.tag_names: list[str] = []

@@ -165,7 +165,14 @@ class _Seen:
 
 
 def _nbt_changed(entity, seen: _Seen) -> bool:
-    return seen.nbt is None or not tags_equal(inventories.equipment_nbt(entity), seen.nbt)
+    if seen.nbt is None:
+        return True
+    data = entity.data
+    for key in inventories.EQUIPMENT_KEYS:  # key by key: most are in neither (no Compound built)
+        now, then = data.get(key), seen.nbt.get(key)
+        if (now is not None or then is not None) and (now is None or then is None or not tags_equal(now, then)):
+            return True
+    return False
 
 
 def _changed_slots(state, entity, last: dict) -> dict:

@@ -75,6 +75,21 @@ def test_hitboxes_and_eye_heights():
     assert display.eye_height == 0.0 and display.anchor("eyes") == display.pos
 
 
+def test_living_mobs_follow_entities_coming_and_dying():
+    # the list the entity steps walk is kept between calls: an entity summoned, or one whose alive
+    # flag is written (killed, or brought back by a test), is seen by the next call
+    store = EntityStore()
+    pig = store.summon("minecraft:pig", (0.0, 0.0, 0.0))
+    store.summon("minecraft:marker", (0.0, 0.0, 0.0))
+    assert store.living_mobs() == [pig]
+    cow = store.summon("minecraft:cow", (0.0, 0.0, 0.0))
+    assert store.living_mobs() == [pig, cow]
+    pig.alive = False
+    assert store.living_mobs() == [cow]
+    pig.alive = True
+    assert store.living_mobs() == [pig, cow]
+
+
 def test_entity_nbt_view_and_load_back():
     store = EntityStore()
     e = store.summon("minecraft:marker", (1.5, 2.0, 3.0), Compound(Tags=List([String("a")]), data=Compound(k=Int(1))))
