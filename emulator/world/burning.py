@@ -66,9 +66,19 @@ def ignite_for_ticks(entity, ticks: int) -> None:
         entity.data["Fire"] = Short(ticks)
 
 
+def _base_ticks(type_id: str) -> bool:
+    return type_id not in _NO_BASE_TICK
+
+
 def _burning(state):
-    ticking = state.entities.picked("base_tick", lambda t: t not in _NO_BASE_TICK)
-    return [e for e in ticking if fire(e) > 0 and e.alive]  # Fire first: a dict look-up, alive an array's
+    ticking = state.entities.picked("base_tick", _base_ticks)
+    return [e for e in ticking if _may_burn(e) and fire(e) > 0 and e.alive]
+
+
+def _may_burn(entity) -> bool:
+    """A cheap first look (most entities have no Fire above 0): False only where :func:`fire` is 0."""
+    value = entity.data.get("Fire")
+    return is_numeric(value) and value > 0
 
 
 def tick_is_idle(state) -> bool:
