@@ -19,8 +19,13 @@ Each tick (the game's order within an entity's tick):
   and 0.98 (y), and a downward y on the ground is halved and turned up (x -0.5). Whether it is in
   a fluid or inside a block (not modelled) is looked at on the ticks it moves (at rest: one in four). ``Age`` counts up
   (not -32768) and at 6000 the item is gone. Every 40th tick of its life (2nd while it moves
-  from block to block) an item that could merge with a neighbour is reported (merging is not
-  modelled);
+  from block to block) a mergeable item (ItemEntity.isMergable: alive, a pickup delay other than
+  32767, an age other than -32768 and under 6000, a count under its max stack size) merges with
+  the mergeable items its box inflated by 0.5 sideways meets, in the entities' order
+  (mergeWithNeighbours, tryToMerge): same ``Owner``, same item and components, the two counts
+  within a stack; the fewer go into the more (into the neighbour on a tie), at most 64 in a
+  stack; the one left keeps the longer ``PickupDelay`` and the younger ``Age``; an emptied item is
+  gone;
 - an experience orb (ExperienceOrb.tick): gravity 0.03, moves, the same friction, on the ground
   the y is scaled by -0.9; ``Age`` counts up to 6000;
 - a falling block (FallingBlockEntity.tick; ``BlockState``, sand when missing): ``Time`` counts,
@@ -47,7 +52,7 @@ An entity riding another does not move by itself (Entity.rideTick: its vehicle p
 Not modelled (reported once as not modelled, and that entity no longer moves here): water, lava
 and bubble columns, blocks that are not full cubes or empty (slabs, stairs, fences ...), an item
 or orb inside a block (pushed out of it), stepping up, slime blocks' bounce, honey and soul sand,
-climbing, levitation, items merging with their neighbours, an item a player would pick up
+climbing, levitation, an item a player would pick up
 (Player.aiStep touching it: PickupDelay 0, no other owner), an orb following a player, TNT
 exploding, a falling block breaking whose block has no item of its id, falling anvils and dripstone (they hurt what
 they land on), a falling block with block entity data, concrete powder meeting water, a vehicle
@@ -95,6 +100,7 @@ DRAG_F = float(F32(0.98))  # 0.98F widened
 AIR_FRICTION = F32(0.91)  # LivingEntity.travel
 RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 1.0E-5F
 MERGE_REACH = (0.5, 0.0, 0.5)  # ItemEntity.mergeWithNeighbours: getBoundingBox().inflate(0.5, 0.0, 0.5)
+MERGE_MAX = 64  # ItemEntity.merge(ItemEntity, ItemStack, ItemStack): merge(dest, src, 64)
 TOUCH_REACH = (1.0, 0.5, 1.0)  # Player.aiStep: getBoundingBox().inflate(1.0, 0.5, 1.0)
 FOLLOW_RANGE = 8.0  # ExperienceOrb.scanForEntities
 VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
@@ -332,19 +338,44 @@ def _mergeable(item) -> bool:
 
 
 def _check_merging(state, item) -> None:
-    """ItemEntity.mergeWithNeighbours: an item its box inflated by 0.5 sideways meets, of the same
-    owner, item and components, the two counts within a stack (areMergable), would merge into one:
-    not modelled."""
-    stack = items.from_nbt(item.data.get("Item"))
+    """ItemEntity.mergeWithNeighbours: each mergeable item (in the entities' order) that the item's
+    box inflated by 0.5 sideways meets is tried (tryToMerge) until the item itself is gone."""
     for other in movers(state):
         if other is item or other.type != ITEM or other.dimension != item.dimension or not _mergeable(other):
             continue
-        if not _meets(item.bounding_box, other.bounding_box, MERGE_REACH):
-            continue
-        theirs = items.from_nbt(other.data.get("Item"))
-        if (other.data.get("Owner") == item.data.get("Owner") and theirs.same_item_same_components(stack)
-                and theirs.count + stack.count <= stack.max_stack_size):
-            raise Unmodelled("items merging with their neighbours")
+        if _meets(item.bounding_box, other.bounding_box, MERGE_REACH):
+            _try_to_merge(state, item, other)
+            if not item.alive:
+                return
+
+
+def _try_to_merge(state, item, other) -> None:
+    """ItemEntity.tryToMerge: the same ``Owner`` (the target) and areMergable (the two counts within
+    the other's max stack size, ItemStack.isSameItemSameComponents); the fewer merge into the more,
+    into ``other`` on a tie."""
+    mine, theirs = items.from_nbt(item.data.get("Item")), items.from_nbt(other.data.get("Item"))
+    if other.data.get("Owner") != item.data.get("Owner") or not (
+            theirs.count + mine.count <= theirs.max_stack_size and theirs.same_item_same_components(mine)):
+        return
+    if theirs.count < mine.count:
+        _merge(state, item, mine, other, theirs)
+    else:
+        _merge(state, other, theirs, item, mine)
+
+
+def _merge(state, dest, dest_stack, src, src_stack) -> None:
+    """ItemEntity.merge: as many as fit (ItemEntity.merge(ItemStack, ItemStack, 64)) move to ``dest``,
+    which keeps the longer pickup delay and the younger age; an emptied ``src`` is discarded."""
+    moved = min(min(dest_stack.max_stack_size, MERGE_MAX) - dest_stack.count, src_stack.count)
+    dest_stack.count += moved
+    src_stack.count -= moved
+    dest.data["Item"] = items.to_nbt(dest_stack, state.version)
+    dest.data["PickupDelay"] = Short(max(int(dest.data.get("PickupDelay", 0)), int(src.data.get("PickupDelay", 0))))
+    dest.data["Age"] = Short(min(int(dest.data.get("Age", 0)), int(src.data.get("Age", 0))))
+    if src_stack.is_empty:
+        state.entities.kill(src)
+    else:
+        src.data["Item"] = items.to_nbt(src_stack, state.version)
 
 
 def _tick_orb(state, entity) -> None:

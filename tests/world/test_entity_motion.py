@@ -284,17 +284,46 @@ def test_items_that_cannot_merge_are_not_reported(tmp_path, backend):
     assert not [d for d in emu.state.diagnostics if d.unmodelled]
 
 
+def _items(emu):
+    return [e for e in emu.state.entities.entities if e.type == "minecraft:item"]
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
-def test_two_like_items_side_by_side_are_reported_as_merging(tmp_path, backend):
-    # ItemEntity.tick: every 40th tick of its life at rest, mergeWithNeighbours would merge them
+def test_two_like_items_side_by_side_merge_into_the_neighbour_on_the_40th_tick(tmp_path, backend):
+    # ItemEntity.tick: every 40th tick of its life at rest, mergeWithNeighbours -> tryToMerge: equal
+    # counts go into the neighbour (merge(other, ..., this, ...)), which keeps the longer pickup delay
+    # and the younger age; the emptied first item is discarded
     emu = world(tmp_path, backend, (
-        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b}\n"
-        "summon item 0.7 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b}"))
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:2},OnGround:1b,Age:100s,PickupDelay:500s}\n"
+        "summon item 0.7 1 0.5 {Item:{id:\"minecraft:stone\",count:2},OnGround:1b,Age:10s}\n"
+        "summon item 0.9 1 0.5 {Item:{id:\"minecraft:dirt\",count:1},OnGround:1b}"))
+    first, second, dirt = _items(emu)
     emu.tick(39)
-    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+    assert first.alive and int(second.data["Item"]["count"]) == 2
     emu.tick(1)
-    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
-        "minecraft:item moving: items merging with their neighbours"]
+    assert not first.alive and dirt.alive
+    assert int(second.data["Item"]["count"]) == 4 and int(dirt.data["Item"]["count"]) == 1
+    # merged in the first's tick (its delay 500 - 40, the second's age 10 + 39: ItemEntity.tick
+    # counts the age after merging), then the second's own tick counts both on
+    assert int(second.data["PickupDelay"]) == 460 - 1 and int(second.data["Age"]) == 49 + 1
+    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_items_merge_only_within_a_stack_of_the_same_owner_into_the_larger(tmp_path, backend):
+    # ItemEntity.areMergable: the counts' sum within the max stack size (60 + 5 > 64 stays apart);
+    # tryToMerge: the same target (Owner); the fewer go into the more (ItemEntity.merge)
+    emu = world(tmp_path, backend, (
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:5},OnGround:1b}\n"
+        "summon item 0.6 1 0.5 {Item:{id:\"minecraft:stone\",count:60},OnGround:1b}\n"
+        "summon item 1.5 1 1.5 {Item:{id:\"minecraft:stone\",count:3},OnGround:1b,Owner:[I;1,2,3,4]}\n"
+        "summon item 1.6 1 1.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b}\n"
+        "summon item 1.7 1 1.5 {Item:{id:\"minecraft:stone\",count:2},OnGround:1b}"))
+    five, sixty, owned, one_, two = _items(emu)
+    emu.tick(40)
+    assert five.alive and sixty.alive and int(five.data["Item"]["count"]) == 5
+    assert owned.alive and int(owned.data["Item"]["count"]) == 3
+    assert not one_.alive and int(two.data["Item"]["count"]) == 3  # 1 -> the 2 (the fewer into the more)
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
