@@ -26,7 +26,7 @@ OBSERVED = frozenset({"impossible", "tick", "location", "inventory_changed", "us
                       "default_block_use", "item_used_on_block", "player_hurt_entity", "entity_hurt_player",
                       "player_killed_entity", "entity_killed_player", "placed_block", "changed_dimension",
                       "effects_changed", "recipe_unlocked", "item_durability_changed", "crafter_recipe_crafted",
-                      "started_riding"})
+                      "started_riding", "thrown_item_picked_up_by_player", "thrown_item_picked_up_by_entity"})
 
 
 def full_id(text) -> str | None:

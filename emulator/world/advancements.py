@@ -15,6 +15,8 @@ observes, and the rewards a completed advancement earns.
 - ``broadcast_changes(state, player)``: the inventory menu's changed slots fire
   ``inventory_changed`` (``inventory_changed(state, player, stack)``); the item commands call it
   where the game's do.
+- ``item_picked_up(state, player, trigger, stack, entity)``: the thrown-item pickup triggers
+  (:mod:`emulator.world.pickup`).
 - ``entity_condition(state, condition, player, entity)``: a trigger's predicate about an entity.
 - ``location_test(state, player, pos, stack)``: the location triggers' test (``item_used_on_block``,
   ``default_block_use``, ``placed_block``).
@@ -286,6 +288,17 @@ def inventory_changed(state, player: Entity, stack: ItemStack) -> None:
                 return True
         return False
     trigger(state, player, "inventory_changed", matches)
+
+
+# ---------------------------------------------------------------------- thrown items picked up
+def item_picked_up(state, player: Entity, trigger_name: str, stack: ItemStack, entity: Entity) -> None:
+    """PickedUpItemTrigger.trigger (``thrown_item_picked_up_by_player`` / ``_by_entity``): ``item``
+    matches the stack, ``entity`` the other entity (EntityPredicate.createContext)."""
+    def test(conditions: dict, ctx) -> bool:
+        wanted = conditions.get("item")
+        return ((wanted is None or predicates.item_matches(wanted, ctx, stack))
+                and entity_condition(state, conditions.get("entity"), player, entity))
+    trigger(state, player, trigger_name, test)
 
 
 # ---------------------------------------------------------------------- effects_changed

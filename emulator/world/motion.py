@@ -25,7 +25,10 @@ Each tick (the game's order within an entity's tick):
   (mergeWithNeighbours, tryToMerge): same ``Owner``, same item and components, the two counts
   within a stack; the fewer go into the more (into the neighbour on a tie), at most 64 in a
   stack; the one left keeps the longer ``PickupDelay`` and the younger ``Age``; an emptied item is
-  gone;
+  gone. With no pickup delay left, each living player that is not a spectator (no other
+  ``Owner``) whose box inflated by (1, 0.5, 1) meets it (riding: the box spanning it and its
+  vehicle, by (1, 0, 1)) picks it up (Player.aiStep -> ItemEntity.playerTouch:
+  :mod:`emulator.world.pickup`), at the item's tick;
 - an experience orb (ExperienceOrb.tick): gravity 0.03, moves, the same friction, on the ground
   the y is scaled by -0.9; ``Age`` counts up to 6000;
 - a falling block (FallingBlockEntity.tick; ``BlockState``, sand when missing): ``Time`` counts,
@@ -52,8 +55,7 @@ An entity riding another does not move by itself (Entity.rideTick: its vehicle p
 Not modelled (reported once as not modelled, and that entity no longer moves here): water, lava
 and bubble columns, blocks that are not full cubes or empty (slabs, stairs, fences ...), an item
 or orb inside a block (pushed out of it), stepping up, slime blocks' bounce, honey and soul sand,
-climbing, levitation, an item a player would pick up
-(Player.aiStep touching it: PickupDelay 0, no other owner), an orb following a player, TNT
+climbing, levitation, an orb following a player, TNT
 exploding, a falling block breaking whose block has no item of its id, falling anvils and dripstone (they hurt what
 they land on), a falling block with block entity data, concrete powder meeting water, a vehicle
 carrying its passengers, and a flying mob with AI given motion.
@@ -74,7 +76,7 @@ import math
 
 import numpy as np
 
-from emulator.world import block_shapes, combat, falling, inventories, items, living
+from emulator.world import block_shapes, combat, falling, inventories, items, living, pickup
 from emulator.world.blocks import BlockSpec, BlockState
 from emulator.world.errors import Unmodelled
 from mcfunction_parser.nbt import Compound, Int, Short, String
@@ -102,6 +104,7 @@ RESTING_MOVE = float(F32(1.0E-5))  # ItemEntity.tick: horizontalDistanceSqr() > 
 MERGE_REACH = (0.5, 0.0, 0.5)  # ItemEntity.mergeWithNeighbours: getBoundingBox().inflate(0.5, 0.0, 0.5)
 MERGE_MAX = 64  # ItemEntity.merge(ItemEntity, ItemStack, ItemStack): merge(dest, src, 64)
 TOUCH_REACH = (1.0, 0.5, 1.0)  # Player.aiStep: getBoundingBox().inflate(1.0, 0.5, 1.0)
+RIDING_REACH = (1.0, 0.0, 1.0)  # Player.aiStep riding: the box with the vehicle's, inflate(1.0, 0.0, 1.0)
 FOLLOW_RANGE = 8.0  # ExperienceOrb.scanForEntities
 VOID_DEPTH = 64  # Entity.checkBelowWorld: below the level's bottom - 64
 VOID_DAMAGE = 4.0  # LivingEntity.onBelowWorld
@@ -311,7 +314,8 @@ def _tick_item(state, entity) -> None:
 def _check_pickup(state, item) -> None:
     """Player.aiStep: a living player that is not a spectator touches what its box inflated by (1,
     0.5, 1) meets; ItemEntity.playerTouch takes an item with no pickup delay whose ``Owner`` is
-    none or that player into its inventory: not modelled."""
+    none or that player into its inventory (:func:`emulator.world.pickup.player_touch`), the
+    players in their order until the item is gone."""
     if int(item.data.get("PickupDelay", 0)) != 0:
         return
     owner = item.data.get("Owner")
@@ -320,11 +324,23 @@ def _check_pickup(state, item) -> None:
             continue
         if owner is not None and tuple(owner) != tuple(player.uuid):
             continue
-        if _meets(player.bounding_box, item.bounding_box, TOUCH_REACH):
-            raise Unmodelled("a player picking an item up")
+        if _meets(*_touching_box(player), item.bounding_box):
+            pickup.player_touch(state, player, item)
+            if not item.alive:
+                return
 
 
-def _meets(box, other, reach) -> bool:
+def _touching_box(player) -> tuple:
+    """Player.aiStep's box and reach: riding a vehicle that is there, the box spanning both
+    (AABB.minmax) inflated by (1, 0, 1); else its own by (1, 0.5, 1)."""
+    vehicle = player.vehicle
+    if vehicle is None or not vehicle.alive:
+        return player.bounding_box, TOUCH_REACH
+    mine, its = player.bounding_box, vehicle.bounding_box
+    return tuple(min(mine[a], its[a]) for a in range(3)) + tuple(max(mine[a], its[a]) for a in range(3, 6)), RIDING_REACH
+
+
+def _meets(box, reach, other) -> bool:
     """AABB.intersects of ``box`` inflated by ``reach`` (x, y, z) and ``other``."""
     return all(box[a] - reach[a] < other[a + 3] and box[a + 3] + reach[a] > other[a] for a in range(3))
 
@@ -343,7 +359,7 @@ def _check_merging(state, item) -> None:
     for other in movers(state):
         if other is item or other.type != ITEM or other.dimension != item.dimension or not _mergeable(other):
             continue
-        if _meets(item.bounding_box, other.bounding_box, MERGE_REACH):
+        if _meets(item.bounding_box, MERGE_REACH, other.bounding_box):
             _try_to_merge(state, item, other)
             if not item.alive:
                 return

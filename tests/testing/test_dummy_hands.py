@@ -206,3 +206,36 @@ def test_a_potion_given_by_its_bare_id_saves_its_full_contents(tmp_path):
         "{potion:\"minecraft:long_slowness\"}}}]}]\n"
         "assert items entity Alex weapon.offhand potion[potion_contents=\"minecraft:long_slowness\"]\n"))
     assert result.status == "passed", result.report()
+
+
+def _picked_up(trigger: str, conditions: dict) -> str:
+    return json.dumps({"criteria": {"c": {"trigger": f"minecraft:{trigger}", "conditions": conditions}}})
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_picking_up_a_thrown_item_fires_both_thrown_item_triggers(tmp_path, backend):
+    """ItemEntity.playerTouch -> ServerPlayer.onItemPickup: the picker fires
+    thrown_item_picked_up_by_player with the thrower (``Thrower``) as ``entity``, and
+    LivingEntity.onItemPickup has the thrower, a player, fire thrown_item_picked_up_by_entity with
+    the picker as ``entity`` (PickedUpItemTrigger: ``item`` tests the stack); an item with no
+    thrower fires neither. The dummy picks up what it threw, so both land on it."""
+    files = {
+        "demo/advancement/by_player.json": _picked_up("thrown_item_picked_up_by_player",
+                                                      {"item": {"items": "minecraft:stone"}}),
+        "demo/advancement/by_player_dirt.json": _picked_up("thrown_item_picked_up_by_player",
+                                                           {"item": {"items": "minecraft:dirt"}}),
+        "demo/advancement/by_entity.json": _picked_up("thrown_item_picked_up_by_entity",
+                                                      {"entity": {"type": "minecraft:player"}}),
+    }
+    result = run(tmp_path, "# @dummy\n" + (
+        "execute at @s run summon item ~ ~ ~ {Item:{id:\"minecraft:dirt\",count:1},PickupDelay:1s}\n"
+        "await delay 3\n"
+        "assert items entity @s container.* dirt\n"
+        "assert entity @s[advancements={demo:by_player=false,demo:by_player_dirt=false,demo:by_entity=false}]\n"
+        "execute at @s run summon item ~ ~ ~ {Item:{id:\"minecraft:stone\",count:2},PickupDelay:1s,Tags:[\"thrown\"]}\n"
+        "data modify entity @e[tag=thrown,limit=1] Thrower set from entity @s UUID\n"
+        "await delay 3\n"
+        "assert items entity @s container.* stone[count=2]\n"
+        "assert entity @s[advancements={demo:by_player=true,demo:by_player_dirt=false,demo:by_entity=true}]\n"),
+        files=files, backend=backend)
+    assert result.status == "passed", result.report()

@@ -338,15 +338,46 @@ def test_an_item_inside_a_block_is_reported_not_dropped_through_it(tmp_path, bac
         "minecraft:item moving: minecraft:item inside a block (pushed out of it)"]
 
 
+def _inventory(emu, name):
+    player = emu.state.entities.by_holder(name)
+    return [(str(e["id"]), int(e["count"]), int(e["Slot"])) for e in player.data["Inventory"]]
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
-def test_an_item_a_player_touches_with_no_pickup_delay_is_reported(tmp_path, backend):
+def test_a_player_picks_up_an_item_it_touches_once_its_pickup_delay_is_over(tmp_path, backend):
     # Player.aiStep touches what its box inflated by (1, 0.5, 1) meets; ItemEntity.playerTouch takes
-    # an item whose pickup delay is 0: not modelled. With a delay left it stays where it lies
+    # an item whose pickup delay is 0 into the inventory (Inventory.add), the item is gone and
+    # picked_up counts its 5
     emu = world(tmp_path, backend, (
-        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:1},OnGround:1b,PickupDelay:3s}"))
+        "scoreboard objectives add got minecraft.picked_up:minecraft.stone\n"
+        "summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:5},OnGround:1b,PickupDelay:3s}"))
     emu.add_player("Alex", (1.5, 1.0, 0.5))
+    item = one(emu, "minecraft:item")
     emu.tick(2)
-    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+    assert item.alive and _inventory(emu, "Alex") == []
     emu.tick(1)
-    assert [d.message for d in emu.state.diagnostics if d.unmodelled] == [
-        "minecraft:item moving: a player picking an item up"]
+    assert not item.alive and _inventory(emu, "Alex") == [("minecraft:stone", 5, 0)]
+    assert emu.score("Alex", "got") == 5
+    assert not [d for d in emu.state.diagnostics if d.unmodelled]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_partial_pickup_leaves_the_rest_and_counts_nothing(tmp_path, backend):
+    # Inventory.add moves what fits (every slot full but 4 free in the first stack) out of the item
+    # entity's own stack, then answers false: its last pass moved nothing and it compares with that
+    # pass's count. So 6 stay on the ground and ItemEntity.playerTouch awards no picked_up; an item
+    # owned by another player (Owner) stays whole
+    fill = "".join(f"item replace entity Alex container.{n} with stone {60 if n == 0 else 64}\n" for n in range(36))
+    emu = emulator(tmp_path, backend, {
+        "t:fill": STONE_FLOOR + "scoreboard objectives add got minecraft.picked_up:minecraft.stone\n" + fill,
+        "t:drop": ("summon item 0.5 1 0.5 {Item:{id:\"minecraft:stone\",count:10},OnGround:1b}\n"
+                   "summon item 0.5 1 0.6 {Item:{id:\"minecraft:dirt\",count:1},OnGround:1b,Owner:[I;1,2,3,4]}")})
+    emu.add_player("Alex", (1.5, 1.0, 0.5))
+    emu.call("t:fill")
+    emu.call("t:drop")
+    stone, dirt = sorted((e for e in emu.state.entities.entities if e.type == "minecraft:item"), key=lambda e: e.pos[2])
+    emu.tick(1)
+    assert stone.alive and int(stone.data["Item"]["count"]) == 6
+    assert _inventory(emu, "Alex")[0] == ("minecraft:stone", 64, 0)
+    assert emu.score("Alex", "got") is None
+    assert dirt.alive and int(dirt.data["Item"]["count"]) == 1
