@@ -463,14 +463,19 @@ def _drop_if_empty(entity) -> None:
         del entity.data["active_effects"]
 
 
+def _not_hurt(hurt_time) -> bool:
+    """No ``HurtTime`` to count down: none, or a number not above 0 (a cheap first look)."""
+    return hurt_time is None or (is_numeric(hurt_time) and hurt_time <= 0)
+
+
 def tick_is_idle(state) -> bool:
     """Whether :func:`tick_living` would change nothing now: no effect counting down, no hurt
     time or hurt timer running."""
     hurting = bool(state.hurt_timers)
     for entity in state.entities.living_mobs():
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
-        if found is None and hurt_time is None and not hurting:
-            continue  # the common case, every tick: neither field, no hurt timer anywhere
+        if found is None and not hurting and _not_hurt(hurt_time):
+            continue  # the common case, every tick: no effect, no hurt time, no hurt timer anywhere
         if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE for e in found):
             return False
         if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or (hurting and entity in state.hurt_timers):
@@ -492,7 +497,7 @@ def tick_living(state, harm=None) -> list:
     hurting = bool(state.hurt_timers)  # only the entity ticking adds itself (an instant effect's harm)
     for entity in mobs:
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
-        if found is None and hurt_time is None and not hurting:
+        if found is None and not hurting and _not_hurt(hurt_time):
             continue  # the common case, every tick: nothing to count down
         if isinstance(found, List) and found:
             if _tick_effects(state, entity, found, harm or _magic):
