@@ -35,7 +35,7 @@ from emulator.world.hash_order import java_hash_map_order, resource_location_has
 from emulator.world.id_families import COLOURS
 from emulator.world.inventories import SHULKER_BOXES
 from emulator.world.items import ItemStack
-from emulator.world.loot_context import namespaced as _id, to_tag
+from emulator.world.loot_context import component_tag, namespaced as _id
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from mcfunction_parser.nbt import Byte, Compound, Int, List
 
@@ -137,7 +137,7 @@ def result_stack(result: dict, version) -> ItemStack:
         if name.startswith("!"):
             items.remove_component(stack, _id(name[1:]))
         else:
-            items.set_component(stack, _id(name), to_tag(value))
+            items.set_component(stack, _id(name), component_tag(_id(name), value))
     return stack
 
 
@@ -188,7 +188,7 @@ def _transmute_applied(recipe: dict, source: ItemStack) -> ItemStack:
         if name.startswith("!"):
             items.remove_component(made, _id(name[1:]))
         else:
-            items.set_component(made, _id(name), to_tag(value))
+            items.set_component(made, _id(name), component_tag(_id(name), value))
     return made
 
 

@@ -37,6 +37,7 @@ from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.items import COMMON_COMPONENTS, ItemStack, decoded, enchantment_levels, from_nbt
+from emulator.world.loot_context import component_tag, snbt_or_tag, to_tag
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
 from emulator.world.semantics import double_to_int, wrap32
 from emulator.world.text import plain_value, read_component
@@ -82,6 +83,20 @@ def value_equal(name: str, wanted, found) -> bool:
 
 
 # ---------------------------------------------------------------------- the codec form
+def predicate_tag(predicate: dict) -> Compound:
+    """An item predicate's JSON as NBT, each part as its codec reads it: the compound components
+    and the ``custom_data`` sub-predicate as CompoundTag.CODEC converts JSON (whole numbers
+    narrowed: :func:`emulator.world.loot_context.json_nbt`), the rest by ``to_tag``."""
+    tag = to_tag({k: v for k, v in predicate.items() if k not in ("components", "predicates")})
+    for key, convert in (("components", component_tag),
+                         ("predicates", lambda name, v: snbt_or_tag(v) if name == "minecraft:custom_data" else to_tag(v))):
+        part = predicate.get(key)
+        if part is not None:
+            tag[key] = (Compound((k, convert(_id(k), v)) for k, v in part.items()) if isinstance(part, dict)
+                        else to_tag(part))
+    return tag
+
+
 def codec_matches(predicate: Compound, stack: ItemStack, resources, version: Version) -> bool:
     """ItemPredicate.test: ``items`` (a HolderSet of items), ``count`` (MinMaxBounds.Ints),
     ``components`` (each equal to the stack's value, DataComponentPredicate), then each of

@@ -41,7 +41,8 @@ from emulator.world.items import (
     ItemStack, enchantment_level, enchantment_levels, from_nbt, remove_component, set_component, to_nbt,
 )
 from emulator.world.loot_context import (
-    LootContext, integer, int_range, namespaced as _id, not_modelled, number, path_of as _path, snbt_or_tag, to_tag,
+    LootContext, component_tag, integer, int_range, namespaced as _id, not_modelled, number, path_of as _path,
+    snbt_or_tag, to_tag,
 )
 from emulator.world.predicates import item_matches, test as all_hold
 from emulator.world.nbt_ops import copy_tag, merge_compounds
@@ -232,7 +233,7 @@ def _set_components(f, stack, ctx):
         if name.startswith("!"):
             remove_component(stack, _id(name[1:]))
         else:
-            set_component(stack, _id(name), to_tag(value))
+            set_component(stack, _id(name), component_tag(_id(name), value))
     return stack
 
 

@@ -8,7 +8,9 @@ compute: the one :class:`LootContext`, number providers, ranges, and JSON values
   number or ``{min, max}`` (``min_max(bounds, ints)``: the bounds as the codec reads them).
   ``in_int_range(bounds, value, ctx)`` / ``int_range(bounds, ctx)``: IntRange, whose bounds are
   number providers read with getInt (a bound written 1.2 is Math.round(1.2F) = 1).
-- ``to_tag(json)`` / ``snbt_or_tag(value)``: JSON values and SNBT strings as NBT.
+- ``to_tag(json)`` / ``snbt_or_tag(value)`` / ``json_nbt(json)`` / ``component_tag(name, json)``:
+  JSON values and SNBT strings as NBT (``json_nbt``: as the codecs taking any NBT convert JSON,
+  DataFixerUpper's JsonOps.convertTo).
 - ``not_modelled(kind, name)``: the :class:`~emulator.world.errors.Unmodelled` failure naming what
   the emulator does not model (reported; a test meeting it is inconclusive).
 - ``DamageSource(type, attacker=None, direct=None)``: the damage type and the entity responsible
@@ -28,11 +30,12 @@ from dataclasses import dataclass, field
 from typing import Any, Callable
 
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Byte, Compound, Double, Int, List, String
+from mcfunction_parser.nbt import (Byte, ByteArray, Compound, Double, Float, Int, IntArray, List, Long, LongArray, Short,
+                                  String)
 from mcfunction_parser.nbt_path import nbt_path
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import compound as parse_compound
-from emulator.world import nbt_ops
+from emulator.world import mth, nbt_ops
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.nbt_ops import copy_tag
@@ -279,10 +282,66 @@ def to_tag(value):
     raise not_modelled("value", repr(value))
 
 
-def snbt_or_tag(value) -> Compound:
-    """A compound given as an SNBT string (or, from 1.21.5, as an object)."""
+def json_nbt(value):
+    """JsonOps.convertTo(NbtOps): JSON as the codecs that take any NBT read it (CompoundTag.CODEC:
+    custom data, NBT predicates). A whole number is the narrowest of byte, short, int and long
+    that holds it (1 is 1b, 1.0 too: BigDecimal.longValueExact), another number a float when
+    the float is exact, else a double; a boolean a byte. A list of bytes, ints or longs is that
+    array (NbtOps.createList); a list of other tags of one type a list; a mixed one is not
+    modelled."""
+    if isinstance(value, bool):
+        return Byte(value)
+    if isinstance(value, float) and value.is_integer() and -2**63 <= value < 2**63:
+        value = int(value)
+    if isinstance(value, int):
+        return _narrowest(value)
+    if isinstance(value, float):
+        return Float(value) if float(mth.f32(value)) == value else Double(value)
+    if isinstance(value, str):
+        return String(value)
     if isinstance(value, dict):
-        return to_tag(value)
+        return Compound((k, json_nbt(v)) for k, v in value.items())
+    if isinstance(value, list):
+        return _json_list([json_nbt(v) for v in value])
+    raise not_modelled("value", repr(value))
+
+
+_NARROW = ((Byte, 2**7), (Short, 2**15), (Int, 2**31), (Long, 2**63))
+_ARRAYS = {Byte: ByteArray, Int: IntArray, Long: LongArray}
+
+
+def _narrowest(value: int):
+    for tag_type, bound in _NARROW:
+        if -bound <= value < bound:
+            return tag_type(value)
+    return Double(value)  # longValueExact fails: BigDecimal.doubleValue
+
+
+def _json_list(tags: list):
+    kinds = {type(t) for t in tags}
+    if len(kinds) > 1:
+        raise not_modelled("value", "a JSON list of several NBT types (NbtOps' heterogeneous list)")
+    kind = next(iter(kinds), None)
+    return _ARRAYS[kind](tags) if kind in _ARRAYS else List(tags)
+
+
+# the components whose codec reads any compound, or its SNBT text (CustomData.CODEC)
+COMPOUND_COMPONENTS = frozenset("minecraft:" + n for n in (
+    "custom_data", "entity_data", "bucket_entity_data", "block_entity_data"))
+
+
+def component_tag(name: str, value):
+    """A component's JSON value (``set_components``, a recipe's result, an item predicate) as
+    NBT: a compound component as its codec reads it (:func:`snbt_or_tag`), another by
+    :func:`to_tag`."""
+    return snbt_or_tag(value) if name in COMPOUND_COMPONENTS else to_tag(value)
+
+
+def snbt_or_tag(value) -> Compound:
+    """A compound given as an SNBT string, or as an object (:func:`json_nbt`: CompoundTag.CODEC
+    converts the JSON)."""
+    if isinstance(value, dict):
+        return json_nbt(value)
     try:
         return parse_compound(Reader(str(value), Loc("<loot>", 1, 1), (1, 21, 4)))
     except ParseError as error:

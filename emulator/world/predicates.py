@@ -51,11 +51,11 @@ from emulator.world import (advancement_progress, biomes, burning, campfires, en
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
-from emulator.world.item_predicates import codec_matches
+from emulator.world.item_predicates import codec_matches, predicate_tag
 from emulator.world.items import COMPONENTS_VERSION, ItemStack, enchantment_level
 from emulator.world.living import is_living
 from emulator.world.loot_context import (LootContext, in_int_range, in_ints, in_range, integer, min_max, number,
-                                         snbt_or_tag, to_tag)
+                                         snbt_or_tag)
 from emulator.world.nbt_ops import compare_nbt, is_numeric, numeric_value, tags_equal
 from mcfunction_parser.items import SLOTS, sub_predicate_registered
 from mcfunction_parser.nbt import Byte, Compound, Int, List
@@ -304,7 +304,7 @@ def item_matches(predicate: dict, ctx: LootContext, stack: ItemStack) -> bool:
     (``item``/``tag`` before 1.17), ``count``, ``nbt`` (a partial match of the stack's tag) and
     :func:`_old_item_fields`."""
     if tuple(ctx.version) >= COMPONENTS_VERSION:
-        return codec_matches(to_tag(predicate), stack, ctx.resources, ctx.version)
+        return codec_matches(predicate_tag(predicate), stack, ctx.resources, ctx.version)
     wanted = predicate.get("items", predicate.get("item"))
     if "tag" in predicate:
         wanted = "#" + predicate["tag"]

@@ -228,6 +228,33 @@ def test_unmodelled_function_is_reported_by_name():
                          "entries": [{"type": "item", "name": "a"}]}]})
 
 
+def test_set_components_reads_custom_data_json_as_compound_tag_codec_does():
+    # CustomData.CODEC: CompoundTag.CODEC converts the JSON object (DataFixerUpper JsonOps.convertTo
+    # -> NbtOps: whole numbers the narrowest type, 1.0 too; an exact float a float; a byte list a
+    # byte array) or TagParser reads SNBT text; another component keeps its codec's type (an int)
+    table = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "stone", "functions": [
+        {"function": "set_components", "components": {
+            "minecraft:custom_data": {"a": 1, "b": 1.0, "c": 300, "d": 70000, "e": 0.5, "f": 0.1, "g": True,
+                                      "h": [1, 2], "i": "x"},
+            "minecraft:max_stack_size": 16}}]}]}]}
+    [stack] = loot.roll_table(table, context())
+    assert to_snbt(stack.component("minecraft:custom_data")) == (
+        '{a:1b,b:1b,c:300s,d:70000,e:0.5f,f:0.1d,g:1b,h:[B;1b,2b],i:"x"}')
+    assert type(stack.component("minecraft:max_stack_size")) is Int
+    text = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "stone", "functions": [
+        {"function": "set_components", "components": {"minecraft:custom_data": "{a:1}"}}]}]}]}
+    [stack] = loot.roll_table(text, context())
+    assert to_snbt(stack.component("minecraft:custom_data")) == "{a:1}"
+
+
+def test_a_json_list_of_several_nbt_types_is_not_modelled():
+    # NbtOps.createList of a byte then a short: a heterogeneous list (its form differs by release)
+    table = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "stone", "functions": [
+        {"function": "set_components", "components": {"minecraft:custom_data": {"h": [1, 300]}}}]}]}]}
+    with pytest.raises(Unmodelled, match="several NBT types"):
+        loot.roll_table(table, context())
+
+
 def test_the_same_seed_gives_the_same_loot():
     table = {"pools": [{"rolls": {"min": 1, "max": 5}, "entries": [{"type": "item", "name": "a"},
                                                                   {"type": "item", "name": "b"}]}]}

@@ -671,13 +671,18 @@ def test_periodic_tick_counts_the_ticks_since_the_entity_came(tmp_path):
 def test_an_entitys_custom_data_component_is_its_data_from_26_1():
     # 26.1 Entity.get(CUSTOM_DATA): the entity's ``data`` (CustomData.EMPTY when none); the exact
     # components field compares it whole, the custom_data sub-predicate (NbtPredicate.matches over
-    # getOrDefault(CUSTOM_DATA, EMPTY)) partly; before 26.1 it is not modelled (release unconfirmed)
+    # getOrDefault(CUSTOM_DATA, EMPTY)) partly; before 26.1 it is not modelled (release unconfirmed).
+    # A JSON object is read by CompoundTag.CODEC (JsonOps.convertTo: 1 is the byte 1b), so it does
+    # not match an int 1 that SNBT ``{a:1}`` does
     state = WorldState(version=(26, 1, 0))
     field = lambda key, value: {"condition": "entity_properties", "entity": "this", "predicate": {  # noqa: E731
         key: {"minecraft:custom_data": value}}}
-    tagged = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0), Compound(data=Compound(a=Int(1), b=String("x"))))
+    tagged = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0), Compound(data=Compound(a=Byte(1), b=String("x"))))
+    wide = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0), Compound(data=Compound(a=Int(1))))
     plain = state.entities.summon("minecraft:pig", (0.0, 0.0, 0.0))
     assert holds(field("predicates", {"a": 1}), ctx(state, this=tagged))
+    assert not holds(field("predicates", {"a": 1}), ctx(state, this=wide))
+    assert holds(field("predicates", "{a:1}"), ctx(state, this=wide))
     assert holds(field("predicates", "{b:'x'}"), ctx(state, this=tagged))
     assert not holds(field("predicates", {"a": 2}), ctx(state, this=tagged))
     assert holds(field("predicates", {}), ctx(state, this=plain))
@@ -687,3 +692,19 @@ def test_an_entitys_custom_data_component_is_its_data_from_26_1():
     state.version = (1, 21, 11)
     with pytest.raises(Unmodelled, match="custom_data"):
         holds(field("components", {}), ctx(state, this=plain))
+
+
+def test_a_json_item_predicate_reads_custom_data_as_compound_tag_codec_does(state):
+    # ItemPredicate's ``components`` (DataComponentPredicate: CustomData.CODEC) and ``predicates``
+    # custom_data (NbtPredicate: TagParser.LENIENT_CODEC) read a JSON object through
+    # CompoundTag.CODEC (JsonOps.convertTo: 1 is 1b), SNBT text through TagParser
+    byte_one = ItemStack("minecraft:stone", 1, Compound({"minecraft:custom_data": Compound(a=Byte(1))}))
+    int_one = ItemStack("minecraft:stone", 1, Compound({"minecraft:custom_data": Compound(a=Int(1))}))
+    exact = {"items": "minecraft:stone", "components": {"minecraft:custom_data": {"a": 1}}}
+    partial = {"predicates": {"minecraft:custom_data": {"a": 1}}}
+    text = {"predicates": {"minecraft:custom_data": "{a:1}"}}
+    state.version = (1, 21, 4)
+    matches = lambda predicate, stack: predicates.item_matches(predicate, ctx(state), stack)  # noqa: E731
+    assert matches(exact, byte_one) and not matches(exact, int_one)
+    assert matches(partial, byte_one) and not matches(partial, int_one)
+    assert matches(text, int_one) and not matches(text, byte_one)
