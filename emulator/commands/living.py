@@ -16,9 +16,11 @@ from emulator.world import advancements, combat, living
 from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast
+from mcfunction_parser.arguments import vec3
+from mcfunction_parser.reader import ParseError, Reader
 
 from .entities import (_executor_required, arguments, executor, found, parse_target, players_found, single,
-                       single_player, target_word)
+                       single_player, target_word, world_source)
 
 
 def _number(cmd, words: list, index: int, kind=float, default=None):
@@ -165,20 +167,33 @@ BYPASSES_INVULNERABILITY = {"minecraft:out_of_world", "minecraft:generic_kill"}
 
 def damage(env, cmd: ast.GenericCommand, ctx) -> int:
     """``damage TARGET AMOUNT [TYPE] [at POS | by ENTITY [from CAUSE]]``: the target is hurt (no
-    knockback, no AI) by a source of that type whose entity is CAUSE, else ENTITY (DamageCommand:
-    the responsible entity earns the kill credit and fires the hurt triggers); the source position
-    is not modelled (a pack cannot observe it without AI)."""
+    AI) by a source of that type whose entity is CAUSE, else ENTITY (DamageCommand: the responsible
+    entity earns the kill credit and fires the hurt triggers), from POS or ENTITY's position (where
+    its knockback comes from: :func:`emulator.world.combat.hurt`)."""
     words, target = arguments(cmd)
     entity = single(env.state, target_word(cmd, words, 0, target), ctx)
     amount = _number(cmd, words, 1)
     damage_type = _resource(words[2]) if len(words) > 2 and words[2] not in ("at", "by") else "minecraft:generic"
     direct = _source_entity(env, words, target, "by", ctx)
     cause = _source_entity(env, words, target, "from", ctx) or direct
-    source = combat.DamageSource(damage_type, cause, direct)
+    source = combat.DamageSource(damage_type, cause, direct, _source_position(env, cmd, words, ctx))
     if not living.is_living(entity.type) or not combat.hurt(env.state, entity, amount, source,
                                                             damage_type in BYPASSES_INVULNERABILITY):
         raise CommandFailure("commands.damage.invulnerable")
     return 1
+
+
+def _source_position(env, cmd, words: list, ctx) -> tuple[float, float, float] | None:
+    """The position after ``at`` (Vec3Argument: centred x and z), None without it."""
+    if "at" not in words:
+        return None
+    start = words.index("at") + 1
+    reader = Reader(" ".join(w for w in words[start:start + 3] if w is not None), cmd.loc, tuple(env.state.version))
+    try:
+        vec = vec3(reader)
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error.message, report=True) from None
+    return world_source(env.state, ctx).position_of(vec)
 
 
 def _source_entity(env, words: list, target, keyword: str, ctx):

@@ -9,8 +9,9 @@ observes of each.
   attribute with the equipment's modifiers (emulator.world.equipment), the swing's strength, the
   sharpness/smite bonus, a critical hit (x 1.5) while falling, the weapon counted as used and
   damaged (1 for swords, tridents and maces, 2 for axes, pickaxes, shovels and hoes), the damage
-  dealt, 0.1 exhaustion. Not modelled (Unmodelled): knockback of any kind (the sprinting full
-  swing's, the knockback enchantment; LivingEntity.hurtServer's own 0.4 is not applied either), a
+  dealt, 0.1 exhaustion. A full hurt knocks the entity back from the source's position
+  (LivingEntity.hurtServer -> knockback 0.4, not for #no_knockback types). Not modelled
+  (Unmodelled): the sprinting full swing's and the knockback enchantment's knockback, a
   sweep that would hit another entity, other enchantments' attack effects (fire aspect, bane of
   arthropods' slowness, knockback, sweeping edge, a pack's own), the mace's smash, the weapon
   component, weapons before 1.21.
@@ -46,7 +47,8 @@ import math
 
 import numpy as np
 
-from emulator.world import advancements, equipment, inventories, living, loot, predicates, statistics, teams, tools
+from emulator.world import (advancements, equipment, inventories, living, loot, predicates, projectiles, statistics, teams,
+                            tools)
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
@@ -105,13 +107,49 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
     if entity.is_player and attacker is not None and attacker.is_player and not teams.can_harm(
             state.teams, entity, attacker):
         return False
+    full = living.takes_full_hurt(state, entity, bypasses)
     if not living.hurt(state, entity, amount, bypasses, source.type, _armour_wear):
         return False
     remember_attacker(state, entity, source)
+    if full:
+        _hurt_knockback(state, entity, source)
     if living.health(entity) <= 0:
         die(state, entity, source)
     hurt_triggers(state, entity, source, amount)
     return True
+
+
+KNOCKBACK_VERSION = (1, 21, 0)  # the hurt's knockback read from the source position (the 1.21 rule)
+HURT_KNOCKBACK = float(F32(0.4))  # LivingEntity.hurtServer: knockback(0.4F, ...)
+
+
+def _hurt_knockback(state, entity, source: DamageSource) -> None:
+    """LivingEntity.hurtServer after a full hurt, unless the type is in #no_knockback: knockback
+    0.4 away from the source position, or along a projectile's flight
+    (:func:`emulator.world.living.knockback`); a player's motion is set as the server sets it
+    (what moves it is its client's, or a dummy's tick). An armor stand's own hurt has none.
+    Reported as not modelled: one with no source position or from the entity's own place (the
+    game draws a random direction), and the rule before 1.21."""
+    if entity.type == "minecraft:armor_stand" or state.resources.in_tag(
+            "damage_type", "minecraft:no_knockback", source.type):
+        return
+    if tuple(state.version) < KNOCKBACK_VERSION:
+        state.error(f"the knockback of {entity.display_name}'s hurt before 1.21", severity="warning", unmodelled=True)
+        return
+    if not living.knockback(entity, HURT_KNOCKBACK, *_knockback_direction(entity, source)):
+        state.error(f"the knockback of {entity.display_name}'s hurt in a random direction (no source position)",
+                    severity="warning", unmodelled=True)
+
+
+def _knockback_direction(entity, source: DamageSource) -> tuple[float, float]:
+    """LivingEntity.hurtServer's (x, z) for knockback: a projectile's own motion reversed
+    (Projectile.calculateHorizontalHurtKnockbackDirection, negated), else the source position
+    less the entity's, else (0, 0)."""
+    if source.direct is not None and source.direct.type in projectiles.PROJECTILES:
+        motion = source.direct.motion
+        return -motion[0], -motion[2]
+    where = source.source_position
+    return (0.0, 0.0) if where is None else (where[0] - entity.pos[0], where[2] - entity.pos[2])
 
 
 def _armour_wear(state, entity, amount: float, damage_type: str) -> None:

@@ -313,7 +313,7 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
     if _effect(entity, "minecraft:resistance") is not None and not bypasses_invulnerability:
         raise Unmodelled("the resistance effect's damage reduction")
     timers = state.hurt_timers.setdefault(entity, [0, 0.0])  # LivingEntity.invulnerableTime, lastHurt
-    if timers[0] > 10 and not bypasses_invulnerability:
+    if not takes_full_hurt(state, entity, bypasses_invulnerability):
         if amount <= timers[1]:
             return False
         dealt, timers[1] = amount - timers[1], amount
@@ -324,6 +324,34 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
     if armoured and wear is not None:  # LivingEntity.getDamageAfterArmorAbsorb: hurtArmor, then the reduction
         wear(state, entity, dealt, damage_type)
     _actually_hurt(state, entity, _after_armour(entity, dealt, not armoured), damage_type)
+    return True
+
+
+def takes_full_hurt(state, entity, bypasses_invulnerability: bool = False) -> bool:
+    """LivingEntity.hurtServer's tookFullDamage: not within the first 10 of the 20 ticks after the
+    last full hurt (then only the excess counts, and there is no knockback)."""
+    timers = state.hurt_timers.get(entity)
+    return timers is None or timers[0] <= 10 or bypasses_invulnerability
+
+
+KNOCKBACK_MIN_SQUARED = F32(1.0e-5)  # LivingEntity.knockback: below it the direction is random
+
+
+def knockback(entity, strength: float, x: float, z: float) -> bool:
+    """LivingEntity.knockback: the strength less the knockback_resistance share; the motion halved
+    less the (x, z) direction normalised and scaled by it (Vec3.normalize), and on the ground
+    min(0.4, y / 2 + strength) up. False (nothing done) when the direction is too short: the game
+    then draws one from Math.random, which no pack can reproduce."""
+    strength *= 1.0 - attribute_value(entity, "knockback_resistance")
+    if strength <= 0.0:
+        return True
+    if x * x + z * z < KNOCKBACK_MIN_SQUARED:
+        return False
+    length = math.sqrt(x * x + z * z)
+    push_x, push_z = x / length * strength, z / length * strength
+    mx, my, mz = entity.motion
+    on_ground = bool(int(_number(entity.data.get("OnGround"))))
+    entity.motion = (mx / 2.0 - push_x, min(0.4, my / 2.0 + strength) if on_ground else my, mz / 2.0 - push_z)
     return True
 
 

@@ -59,6 +59,14 @@ class DamageSource:
     type: str = "minecraft:generic"
     attacker: Any = None  # DamageSource.getEntity: the responsible entity
     direct: Any = None  # getDirectEntity
+    position: tuple[float, float, float] | None = None  # damageSourcePosition (``damage ... at POS``)
+
+    @property
+    def source_position(self) -> tuple[float, float, float] | None:
+        """DamageSource.getSourcePosition: the position given, else the direct entity's."""
+        if self.position is not None:
+            return self.position
+        return self.direct.pos if self.direct is not None else None
 
     @property
     def is_direct(self) -> bool:

@@ -49,6 +49,10 @@ BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
             "stalagmite magic indirect_magic out_of_world generic_kill sonic_boom outside_border").split()),
         "minecraft:is_fire": frozenset("minecraft:" + t for t in (
             "in_fire campfire on_fire lava hot_floor unattributed_fireball fireball").split()),
+        "minecraft:no_knockback": frozenset("minecraft:" + t for t in (
+            "explosion player_explosion bad_respawn_point in_fire lightning_bolt on_fire lava hot_floor in_wall "
+            "cramming drown starve cactus fall fly_into_wall out_of_world generic magic wither dragon_breath "
+            "dry_out sweet_berry_bush freeze stalagmite outside_border generic_kill campfire").split()),
     },
 }
 

@@ -119,6 +119,7 @@ def test_a_player_killed_by_a_player_credits_the_killer(tmp_path):
         "scoreboard objectives add by minecraft.killed_by:minecraft.player\n"
         "scoreboard objectives add pk minecraft.custom:minecraft.player_kills\n"
         "dummy Alex spawn\ndummy Bob spawn\n"
+        "tp Bob ~2 ~ ~\n"  # not where Alex stands: from there the hurt's knockback would be random
         "damage Bob 50 minecraft:player_attack by Alex\n"
         "assert chat \"^Bob was slain by Alex$\"\n"
         "assert score Alex kills matches 1\nassert score Alex pk matches 1\nassert score Bob by matches 1\n"
@@ -163,9 +164,12 @@ ARMOUR_WORN = {"demo/advancement/worn.json": json.dumps({"criteria": {"c": {
 def test_a_hurt_players_armour_wears_unless_the_damage_bypasses_armour(tmp_path, backend):
     """LivingEntity.getDamageAfterArmorAbsorb -> Player.hurtArmor -> doHurtEquipment: each armour
     piece takes max(1, damage / 4) (int) through ItemStack.hurtAndBreak (item_durability_changed);
-    generic damage is in #bypasses_armor; netherite resists fire damage (canBeHurtBy)."""
+    generic damage is in #bypasses_armor; netherite resists fire damage (canBeHurtBy). A knockback
+    resistance of 1 keeps off the hurt's knockback, whose direction with no source position is
+    random (LivingEntity.knockback: Math.random)."""
     result = run(tmp_path, (
         "dummy Alex spawn\n"
+        "attribute Alex generic.knockback_resistance base set 1\n"
         "item replace entity Alex armor.chest with iron_chestplate\n"
         "item replace entity Alex armor.feet with netherite_boots\n"
         "item replace entity Alex armor.head with carved_pumpkin\n"

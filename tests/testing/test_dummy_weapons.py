@@ -45,10 +45,12 @@ def test_a_held_weapons_modifiers_count_from_the_next_tick_and_are_not_saved(tmp
 def test_worn_armour_counts_its_defense_and_toughness(tmp_path):
     """ArmorItem's defaults (ArmorMaterials.DIAMOND chestplate: 8 armor, 2 toughness) reduce a
     mob attack: CombatRules.getDamageAfterAbsorb: 10 x (1 - min(max(8 - 10 / 2.5, 1.6), 20) / 25)
-    = 8.400001 in float math, so 11.599999 health is left."""
+    = 8.400001 in float math, so 11.599999 health is left (a knockback resistance of 1 keeps off the
+    hurt's knockback, random with no source position)."""
     result = run(tmp_path, (
         "scoreboard objectives add v dummy\n"
         "dummy Alex spawn\n"
+        "attribute Alex generic.knockback_resistance base set 1\n"
         "item replace entity Alex armor.chest with diamond_chestplate\n"
         "await delay 1\n"
         "execute store result score #armor v run attribute Alex generic.armor get\n"
@@ -130,10 +132,12 @@ def test_body_armour_on_a_mob_is_inconclusive(tmp_path):
 
 
 def _with_jar(tmp_path, text, backend):
-    """The test run with a game jar holding #minecraft:sensitive_to_smite (the zombie)."""
+    """The test run with a game jar holding #minecraft:sensitive_to_smite (the zombie) and, as the
+    game's does, #minecraft:no_knockback with generic_kill (``kill``)."""
     jar = tmp_path / "client.jar"
     with zipfile.ZipFile(jar, "w") as archive:
         archive.writestr("data/minecraft/tags/entity_type/sensitive_to_smite.json", tag("minecraft:zombie"))
+        archive.writestr("data/minecraft/tags/damage_type/no_knockback.json", tag("minecraft:generic_kill"))
     root = write_pack(tmp_path / "pack", {"demo/test/t.mcfunction": text})
     [result] = run_suite(discover([root]), backend, game_jar=str(jar)).results
     return result
