@@ -240,9 +240,11 @@ def attack(state, player, target) -> bool:
         damage = damage * F32(1.5)
     if full and not critical and int(player.data.get("OnGround", 0)) and _sweeps(held):
         _sweep_targets(state, player, target)
-    before = F32(living.health(target))
+    before, motion = F32(living.health(target)), target.motion
     if not hurt(state, target, float(damage + bonus), DamageSource("minecraft:player_attack", player, player)):
         return False
+    if target.is_player:  # Player.attack: the knockback goes to the target's client, the server keeps its motion
+        target.motion = motion
     _weapon_used(state, player, access)
     dealt = before - F32(living.health(target))
     statistics.award(state, player, statistics.stat_name("custom", "damage_dealt"),

@@ -260,3 +260,25 @@ def test_a_mobs_weapon_changed_in_place_in_its_nbt_changes_its_modifiers(tmp_pat
         "minecraft:base_attack_damage 1\n"
         "assert score #has v matches 0\n"), pack_format=pack_format, backend=backend)
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_an_attack_knocks_a_mob_back_but_leaves_a_players_motion_on_the_server(tmp_path, backend):
+    """LivingEntity.hurtServer knocks the hurt entity away from the attacker (knockback 0.4F from
+    the source position, the attacker's); Player.attack then sets a player target's motion back
+    (its client gets the knockback: ServerPlayer.hurtMarked), so the server's Motion of Bob stays."""
+    result = run(tmp_path, (
+        "scoreboard objectives add v dummy\n"
+        "dummy Alex spawn\ndummy Bob spawn\n"
+        "tp Bob ~1 ~ ~\n"
+        "summon pig ~-1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"
+        "await delay 20\n"
+        "dummy Alex attack Bob\n"
+        "execute store result score #bob v run data get entity Bob Motion[0] 1000\n"
+        "assert score #bob v matches 0\n"
+        "assert entity @a[name=Bob,nbt={HurtTime:10s}]\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "execute store result score #pig v run data get entity @e[tag=p,limit=1] Motion[0] 1000\n"
+        "assert score #pig v matches -401\n"), backend=backend)  # -0.4F as a double x 1000, floored
+    assert result.status == "passed", result.report()
