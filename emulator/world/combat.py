@@ -47,9 +47,9 @@ import math
 
 import numpy as np
 
-from emulator.world import (advancements, equipment, inventories, living, loot, predicates, projectiles, statistics, teams,
-                            tools)
+from emulator.world import advancements, equipment, inventories, living, loot, predicates, statistics, teams, tools
 from emulator.world.entities import Entity
+from emulator.world.entity_types import PROJECTILES
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -145,7 +145,7 @@ def _knockback_direction(entity, source: DamageSource) -> tuple[float, float]:
     """LivingEntity.hurtServer's (x, z) for knockback: a projectile's own motion reversed
     (Projectile.calculateHorizontalHurtKnockbackDirection, negated), else the source position
     less the entity's, else (0, 0)."""
-    if source.direct is not None and source.direct.type in projectiles.PROJECTILES:
+    if source.direct is not None and source.direct.type in PROJECTILES:
         motion = source.direct.motion
         return -motion[0], -motion[2]
     where = source.source_position

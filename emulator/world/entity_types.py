@@ -49,6 +49,11 @@ _BOATS = " ".join(f"{wood}_boat {wood}_chest_boat" for wood in (
 BOATS = frozenset("minecraft:" + name for name in _BOATS.split())
 _MINECARTS = "minecart chest_minecart command_block_minecart furnace_minecart hopper_minecart spawner_minecart " \
              "tnt_minecart"
+# the types whose entities are projectiles (the classes extending Projectile, and the eye of ender)
+PROJECTILES = frozenset("minecraft:" + name for name in (
+    "arrow spectral_arrow trident snowball egg ender_pearl experience_bottle potion splash_potion lingering_potion "
+    "fireball small_fireball dragon_fireball wither_skull wind_charge breeze_wind_charge llama_spit "
+    "shulker_bullet firework_rocket eye_of_ender").split())
 _SMALL_PROJECTILES = "egg ender_pearl experience_bottle eye_of_ender firework_rocket llama_spit ominous_item_spawner " \
                      "snowball splash_potion lingering_potion potion fishing_bobber"
 # name width height [eye height]; a line of names shares the numbers of the line's end

@@ -156,8 +156,8 @@ def _instances(entity) -> List:
 def _instance(entity, name: str) -> Compound:
     """The entity's instance of the attribute (created at its default base on first use)."""
     full = f"minecraft:{name}"
-    for inst in _instances(entity):
-        if isinstance(inst, Compound) and str(inst.get("id", "")) in (full, name):
+    for inst in _instances(entity):  # saved under either name (``generic.`` before 1.21.2)
+        if isinstance(inst, Compound) and attribute_id(str(inst.get("id", ""))) == name:
             return inst
     inst = Compound(id=String(full), base=Double(default_base(entity.type, name)))
     _instances(entity).append(inst)

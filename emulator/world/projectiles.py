@@ -15,12 +15,9 @@ the others (fireballs, wind charges, llama spit, rockets, eyes of ender) are not
 from __future__ import annotations
 
 from emulator.world import projectile_flight
+from emulator.world.entity_types import PROJECTILES
 from emulator.world.errors import Unmodelled
 
-PROJECTILES = frozenset("minecraft:" + name for name in (
-    "arrow spectral_arrow trident snowball egg ender_pearl experience_bottle potion splash_potion lingering_potion "
-    "fireball small_fireball dragon_fireball wither_skull wind_charge breeze_wind_charge llama_spit "
-    "shulker_bullet firework_rocket eye_of_ender").split())
 _POWERED = frozenset("minecraft:" + name for name in (
     "fireball small_fireball dragon_fireball wither_skull wind_charge breeze_wind_charge").split())
 MESSAGE = "{} in flight: projectiles do not move here (motion, gravity, drag, hits)"

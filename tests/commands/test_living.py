@@ -17,7 +17,7 @@ from emulator.world import living
 from emulator.world.context import Context
 from emulator.world.errors import CommandFailure
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Byte, Compound, Float
+from mcfunction_parser.nbt import Byte, Compound, Double, Float, List, String
 from mcfunction_parser.parse import parse_command
 
 
@@ -143,6 +143,14 @@ def test_attribute_a_mob_does_not_have(env):
     env.state.entities.summon("minecraft:pig", (0, 0, 0))
     with pytest.raises(CommandFailure, match="has no attribute"):
         run(env, "attribute @e[type=pig,limit=1] luck get")  # players have luck, mobs do not
+
+
+def test_an_attribute_saved_under_its_older_name_is_read(env):
+    # before 1.21.2 the game saves ``minecraft:generic.max_health`` (Attributes' older ids); the
+    # instance is the same attribute whichever name it was given by
+    env.state.entities.summon("minecraft:pig", (0, 0, 0), Compound(attributes=List([Compound(
+        id=String("minecraft:generic.max_health"), base=Double(30.0))])))
+    assert run(env, "attribute @e[type=pig,limit=1] max_health base get") == 30
 
 
 # ---------------------------------------------------------------------- damage
