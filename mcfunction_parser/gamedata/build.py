@@ -1,10 +1,12 @@
 """Regenerate ``data/`` from two packages (a development step, never run by dpemu):
 
     pip install mecha && npm pack minecraft-data && tar xzf minecraft-data-*.tgz
-    python -m mcfunction_parser.gamedata.build --minecraft-data package
+    for v in 0.95.2 0.96.0 0.98.1 0.99.0 0.100.0; do pip download --no-deps mecha==$v -d wheels; done
+    python -m mcfunction_parser.gamedata.build --minecraft-data package --mecha-wheels wheels
 
 - command trees: mecha's ``resources/1_XX.json`` (MIT; the game's own ``commands`` report, one per
-  minor release: its last patch) and minecraft-data's ``pc/<release>/commands.json`` for 1.20.2,
+  minor release: its last patch), older mecha releases' ``1_21.json`` for the earlier 1.21
+  patches (:data:`OLDER_MECHA_1_21`), and minecraft-data's ``pc/<release>/commands.json`` for 1.20.2,
   1.20.3 and 26.1, converted to the report's shape;
 - registries (blocks with their states and each block's default state, items, entity types,
   particles, enchantments, effects, biomes, attributes, and from 1.20.5 the data component types,
@@ -26,6 +28,7 @@ import hashlib
 import importlib.util
 import json
 import re
+import zipfile
 from pathlib import Path
 
 from ..pack.versions import RELEASE_FORMATS, parse_mc_version, version_label
@@ -34,6 +37,13 @@ OUT = Path(__file__).with_name("data")
 # mecha's resource file -> the release its tree is (the last patch of that minor release)
 MECHA_TREES = {"1_16": "1.16.5", "1_17": "1.17.1", "1_18": "1.18.2", "1_19": "1.19.4",
                "1_20": "1.20.6", "1_21": "1.21.11"}
+# older mecha releases -> the 1.21 patch their resources/1_21.json is the tree of, the last of the
+# patches that share it (each is told by the commands its release added: rotate in 1.21.2, test in
+# 1.21.5, waypoint, version and dialog in 1.21.6, fetchprofile and setworldspawn's rotation in
+# 1.21.9, stopwatch in 1.21.11, the installed mecha's): 1.21 – 1.21.1, 1.21.2 – 1.21.4, 1.21.5,
+# 1.21.6 – 1.21.8, 1.21.9 – 1.21.10
+OLDER_MECHA_1_21 = {"0.95.2": "1.21.1", "0.96.0": "1.21.4", "0.98.1": "1.21.5", "0.99.0": "1.21.8",
+                    "0.100.0": "1.21.10"}
 # minecraft-data's trees used: its files for 1.13 – 1.16.2 are all one copy of a 1.16 tree (they
 # hold ``attribute`` and ``locatebiome``), so only these two, which differ as the releases do
 MCDATA_TREES = ("1.20.2", "1.20.3", "26.1")
@@ -147,9 +157,11 @@ def _registries(root: Path, paths: dict) -> dict:
     return out
 
 
-def build(minecraft_data: Path | None = None) -> None:
+def build(minecraft_data: Path | None = None, mecha_wheels: Path | None = None) -> None:
     """Write ``data/``; ``minecraft_data``: the unpacked npm package (its ``minecraft-data/data``
-    is read), else the PyPI package ``minecraft_data``."""
+    is read), else the PyPI package ``minecraft_data``; ``mecha_wheels``: a folder holding the
+    wheels of :data:`OLDER_MECHA_1_21` (``pip download --no-deps mecha==V``) for the 1.21 patches'
+    trees."""
     OUT.mkdir(exist_ok=True)
     for old in OUT.glob("*.json.gz"):
         old.unlink()
@@ -157,6 +169,9 @@ def build(minecraft_data: Path | None = None) -> None:
     mecha = _package_dir("mecha") / "resources"
     for stem, release in MECHA_TREES.items():
         trees[release] = _write(f"commands-{release}.json.gz", json.loads((mecha / f"{stem}.json").read_text()))
+    for version, release in OLDER_MECHA_1_21.items() if mecha_wheels else ():
+        with zipfile.ZipFile(next(mecha_wheels.glob(f"mecha-{version}-*.whl"))) as wheel:
+            trees[release] = _write(f"commands-{release}.json.gz", json.loads(wheel.read("mecha/resources/1_21.json")))
     mcdata = (minecraft_data / "minecraft-data" / "data") if minecraft_data else _package_dir("minecraft_data") / "data"
     data_paths = json.loads((mcdata / "dataPaths.json").read_text())["pc"]
     for release in MCDATA_TREES:
@@ -195,4 +210,6 @@ def _notice(minecraft_data: Path | None) -> list[str]:
 if __name__ == "__main__":
     parser = argparse.ArgumentParser(description="Regenerate mcfunction_parser/gamedata/data/.")
     parser.add_argument("--minecraft-data", type=Path, help="the unpacked npm package minecraft-data")
-    build(parser.parse_args().minecraft_data)
+    parser.add_argument("--mecha-wheels", type=Path, help="a folder with the older mecha wheels (OLDER_MECHA_1_21)")
+    arguments = parser.parse_args()
+    build(arguments.minecraft_data, arguments.mecha_wheels)

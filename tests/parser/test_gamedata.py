@@ -28,7 +28,10 @@ def test_every_known_release_has_a_command_tree_or_a_stand_in(tmp_path, monkeypa
 def test_a_release_uses_its_own_tree_or_the_oldest_after_it():
     assert gamedata.tree_release((1, 20, 3)) == (1, 20, 3)
     assert gamedata.tree_release((1, 20, 4)) == (1, 20, 6)
-    assert gamedata.tree_release((1, 21, 0)) == (1, 21, 11)
+    assert gamedata.tree_release((1, 21, 0)) == (1, 21, 1)
+    assert [gamedata.tree_release((1, 21, patch)) for patch in range(1, 12)] == [
+        (1, 21, 1), (1, 21, 4), (1, 21, 4), (1, 21, 4), (1, 21, 5), (1, 21, 8), (1, 21, 8), (1, 21, 8),
+        (1, 21, 10), (1, 21, 10), (1, 21, 11)]
     assert gamedata.tree_release((1, 13, 0)) == (1, 16, 5)
 
 
@@ -37,6 +40,17 @@ def test_trees_follow_the_releases():
     assert set(gamedata.command_tree((1, 20, 2))["children"]["return"]["children"]) == {"value"}
     assert "run" in gamedata.command_tree((1, 20, 3))["children"]["return"]["children"]
     assert "transfer" in gamedata.command_tree((1, 20, 5))["children"]
+    # each 1.21 patch's own commands: rotate (1.21.2), test (1.21.5), waypoint and dialog (1.21.6),
+    # fetchprofile (1.21.9), stopwatch (1.21.11)
+    added = {(1, 21, 2): "rotate", (1, 21, 5): "test", (1, 21, 6): "dialog", (1, 21, 9): "fetchprofile",
+             (1, 21, 11): "stopwatch"}
+    for version, command in added.items():
+        before = (version[0], version[1], version[2] - 1)
+        assert command in gamedata.command_tree(version)["children"]
+        assert command not in gamedata.command_tree(before)["children"], (before, command)
+    # setworldspawn's angle became a rotation in 1.21.9
+    spawn = lambda v: set(gamedata.command_tree(v)["children"]["setworldspawn"]["children"]["pos"]["children"])  # noqa: E731
+    assert spawn((1, 21, 1)) == {"angle"} and spawn((1, 21, 9)) == {"rotation"}
 
 
 def test_a_release_after_every_tree_says_how_to_get_its_own(tmp_path, monkeypatch):
@@ -189,3 +203,11 @@ def test_a_patch_release_reads_its_minor_releases_registries_when_its_format_is_
                      (26, 2, 0): ((26, 1, 0), False)}
     _, diagnostics = parse_function("give @s no_such_item\n", "f.mcfunction", "t:f", (1, 21, 7))
     assert [d.severity for d in diagnostics] == ["warning"]
+
+
+@pytest.mark.parametrize("version, ok", [((1, 21, 1), True), ((1, 21, 8), True), ((1, 21, 9), False)])
+def test_setworldspawn_takes_an_angle_until_1_21_9(version, ok):
+    # SetWorldSpawnCommand: ``<pos> [<angle>]`` until 1.21.8, ``<pos> [<rotation>]`` from 1.21.9; a
+    # 1.21.1 pack is checked against 1.21.1's own tree, not a later one's
+    _, diagnostics = parse_function("setworldspawn ~ ~ ~ 90\n", "f.mcfunction", "t:f", version)
+    assert (not [d for d in diagnostics if d.severity == "error"]) is ok, diagnostics
