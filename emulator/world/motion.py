@@ -337,7 +337,8 @@ def _touching_box(player) -> tuple:
     if vehicle is None or not vehicle.alive:
         return player.bounding_box, TOUCH_REACH
     mine, its = player.bounding_box, vehicle.bounding_box
-    return tuple(min(mine[a], its[a]) for a in range(3)) + tuple(max(mine[a], its[a]) for a in range(3, 6)), RIDING_REACH
+    spanning = tuple(min(mine[a], its[a]) for a in range(3)) + tuple(max(mine[a], its[a]) for a in range(3, 6))
+    return spanning, RIDING_REACH
 
 
 def _meets(box, reach, other) -> bool:

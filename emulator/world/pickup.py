@@ -20,7 +20,7 @@ server/level/ServerPlayer.java (onItemPickup), advancements/critereon/PickedUpIt
 """
 from __future__ import annotations
 
-from emulator.world import advancements, inventories, items, statistics
+from emulator.world import advancements, inventories, items, relations, statistics
 
 
 def player_touch(state, player, item) -> None:
@@ -40,19 +40,11 @@ def player_touch(state, player, item) -> None:
 
 
 def _on_item_pickup(state, player, item, stack) -> None:
-    """LivingEntity/ServerPlayer.onItemPickup: the thrown-item triggers, when the thrower is there."""
-    thrower = _thrower(state, item)
-    if thrower is None:
-        return
-    if thrower.is_player:
-        advancements.item_picked_up(state, thrower, "thrown_item_picked_up_by_entity", stack, player)
-    advancements.item_picked_up(state, player, "thrown_item_picked_up_by_player", stack, thrower)
-
-
-def _thrower(state, item):
-    """ItemEntity.getOwner: the entity of the item's level whose UUID is ``Thrower``, or None."""
-    uuid = item.data.get("Thrower")
-    if uuid is None or len(uuid) != 4:
-        return None
-    found = state.entities.by_uuid(tuple(int(part) for part in uuid))
-    return found if found is not None and found.dimension == item.dimension else None
+    """LivingEntity/ServerPlayer.onItemPickup: the thrown-item triggers, when the thrower is there
+    (ItemEntity.getOwner, as ``execute on origin`` reads it, in the item's level)."""
+    for thrower in relations.related(state, item, "origin"):
+        if thrower.dimension != item.dimension:
+            continue
+        if thrower.is_player:
+            advancements.item_picked_up(state, thrower, "thrown_item_picked_up_by_entity", stack, player)
+        advancements.item_picked_up(state, player, "thrown_item_picked_up_by_player", stack, thrower)
