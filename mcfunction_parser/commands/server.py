@@ -5,11 +5,12 @@ import re
 
 from .. import ast
 from ..arguments import duration, objective
-from ..features import FEATURES, gamerule_type, version_text
+from ..features import FEATURES
 from ..primitives import int_range, resource_location
 from ..reader import ParseError, Reader, show
 from ..snbt import to_float32
-from .tree import root_for, tree_command
+from .gamerules import int_bounds, rule_type, unknown_warning
+from .tree import tree_command
 
 _RULE = re.compile(r"[A-Za-z_][A-Za-z0-9_:.]*\Z")
 TIME_NAMES = {"day": 1000, "noon": 6000, "night": 13000, "midnight": 18000}
@@ -21,15 +22,15 @@ def gamerule(r: Reader, loc) -> ast.Command:
     rule = r.word()
     if not _RULE.match(rule):
         r.fail(f"expected a game rule name, got {show(rule)}", start)
-    kind, problem = gamerule_type(rule, r.version)
+    kind, problem = rule_type(rule, r.version)
     if problem:
         r.fail(problem, start)
     if kind is None:
-        r.warnings.append((f"unknown game rule '{rule}' (not in the rule table for {version_text(r.version)})", start))
+        r.warnings.append((unknown_warning(rule, r.version), start))
     value = None
     if r.optional_space():
         if kind == "int":
-            value = str(r.integer(**_int_bounds(rule, r.version), what="game rule value"))
+            value = str(r.integer(**int_bounds(rule, r.version), what="game rule value"))
         elif kind == "bool":
             value = "true" if r.boolean() else "false"
         elif r.rest_word() in ("true", "false"):
@@ -38,15 +39,6 @@ def gamerule(r: Reader, loc) -> ast.Command:
             value = str(r.integer(what="game rule value (true, false or an integer)"))
     r.finish()
     return ast.Gamerule.new(loc, rule, value)
-
-
-def _int_bounds(rule: str, version) -> dict:
-    """The bounds the release's command tree gives an integer rule's value (1.21.11: min and max)."""
-    root = root_for(version)
-    node = root["children"]["gamerule"].get("children", {}).get(rule) if root is not None else None
-    value = (node or {}).get("children", {}).get("value", {})
-    props = value.get("properties") or {} if value.get("parser") == "brigadier:integer" else {}
-    return {name: props[key] for name, key in (("lo", "min"), ("hi", "max")) if key in props}
 
 
 def _sequence(r: Reader) -> str | None:

@@ -141,6 +141,11 @@ def tree_release(version: Version) -> Version:
     return min(later) if later else max(shipped)
 
 
+def shipped_trees() -> list[Version]:
+    """The releases whose command trees are shipped, oldest first."""
+    return sorted(_index()["commands"])
+
+
 def stand_in(version: Version) -> str | None:
     """For a release checked against another minor release's tree (1.13 – 1.15 against 1.16.5's,
     26.x against the newest) and without its own reports: which tree, why, and how to get the

@@ -197,13 +197,13 @@ WIDE_TAGS = "\n".join(f"tag @s add w{i}" for i in range(70))
 
 
 # Server commands whose results and effects (schedules, gamerules, objectives, the log) are compared; `0t`
-# fails (ScheduleCommand), `gamerule nope` is reported
+# fails (ScheduleCommand)
 SERVER_COMMANDS = ("say hi", 'tellraw @a "x"', "schedule function t:leaf0 1t", "schedule function t:leaf0 0t",
                    "schedule function t:leaf1 3t append", "schedule function t:leaf1 3t append",
                    "schedule function #t:leaves 2t replace", "schedule function t:leaf0 5t replace",
                    "schedule clear t:leaf0", "schedule clear #t:leaves", "schedule clear t:nothing",
                    "gamerule randomTickSpeed 7", "gamerule randomTickSpeed", "gamerule doDaylightCycle false",
-                   "gamerule doDaylightCycle", "gamerule nope", "scoreboard objectives add q dummy",
+                   "gamerule doDaylightCycle", "scoreboard objectives add q dummy",
                    "scoreboard players add #q q 4", "scoreboard objectives remove q", "scoreboard objectives add o dummy",
                    "execute store result score #q o run scoreboard objectives add q dummy",
                    "execute store result score #q p run scoreboard objectives remove q", "scoreboard players add * q 1")

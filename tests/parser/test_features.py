@@ -1,41 +1,27 @@
-"""The version table checked against the game's command trees that mecha ships (one per minor
-version, dumped from its last patch release)."""
+"""The version table checked against the game's command trees shipped in gamedata (one per minor
+release from 1.16 and the 1.21 patches)."""
 from __future__ import annotations
-
-import json
-from importlib import resources
 
 import pytest
 
-from mcfunction_parser import features
+from mcfunction_parser import features, gamedata
 from tests.parser.parser_helpers import parse_err, parse_ok
 
-pytest.importorskip("mecha")
 
-# mecha resource -> the release its command tree was dumped from
-TREES = {"1_16": (1, 16, 5), "1_17": (1, 17, 1), "1_18": (1, 18, 2), "1_19": (1, 19, 4), "1_20": (1, 20, 6),
-         "1_21": (1, 21, 11)}
-# commands a dedicated server registers that the trees (dumped from an integrated server) may lack, and
-# the other way round: none expected
-TREE_ONLY: set[str] = set()
-
-
-def tree(name: str) -> dict:
-    return json.loads(resources.files("mecha.resources").joinpath(f"{name}.json").read_text())
-
-
-@pytest.mark.parametrize("name,version", TREES.items())
-def test_command_set_matches_the_game(name, version):
-    expected = set(tree(name)["children"]) - TREE_ONLY
+@pytest.mark.parametrize("version", gamedata.shipped_trees())
+def test_command_set_matches_the_game(version):
+    # the table dates commands for the releases between and before the trees; on each tree it
+    # must say what the tree says
+    expected = set(gamedata.command_tree(version)["children"])
     ours = {cmd for cmd in features.COMMANDS if features.command_problem(cmd, version) is None}
     assert ours == expected
 
 
-@pytest.mark.parametrize("name,version", TREES.items())
-def test_execute_conditions_match_the_game(name, version):
+@pytest.mark.parametrize("version", gamedata.shipped_trees())
+def test_execute_conditions_match_the_game(version):
     from mcfunction_parser.commands.execute import _CONDITIONS
 
-    expected = set(tree(name)["children"]["execute"]["children"]["if"]["children"])
+    expected = set(gamedata.command_tree(version)["children"]["execute"]["children"]["if"]["children"])
     ours = {kind for kind, (_, feature) in _CONDITIONS.items()
             if feature is None or features.feature_problem(feature, version) is None}
     assert ours == expected
@@ -61,3 +47,35 @@ def test_stopwatch_condition():
     cond = parse_ok("execute if stopwatch ns:lap 1.5..", (1, 21, 11)).subcommands[0]
     assert cond.stopwatch == "ns:lap" and cond.range.lo == 1.5
     assert "1.21.11" in parse_err("execute if stopwatch ns:lap 1..", (1, 21, 10)).message
+
+
+# the syntax features a command tree shows, and where: each must agree with every shipped tree
+TREE_PATHS = {
+    "execute on": ("execute", "on"),
+    "execute summon": ("execute", "summon"),
+    "execute positioned over": ("execute", "positioned", "over"),
+    "return run": ("return", "run"),
+    "return fail": ("return", "fail"),
+    "function arguments": ("function", "name", "arguments"),
+    "data modify string": ("data", "modify", "block", "targetPos", "targetPath", "set", "string"),
+    "scoreboard players display": ("scoreboard", "players", "display"),
+    "objectives modify numberformat": ("scoreboard", "objectives", "modify", "objective", "numberformat"),
+    "objectives modify displayautoupdate": ("scoreboard", "objectives", "modify", "objective", "displayautoupdate"),
+    "random reset": ("random", "reset"),
+}
+
+
+def _in_tree(root: dict, path: tuple[str, ...]) -> bool:
+    node = root
+    for name in path:
+        node = node.get("children", {}).get(name)
+        if node is None:
+            return False
+    return True
+
+
+@pytest.mark.parametrize("version", gamedata.shipped_trees())
+def test_syntax_features_match_the_game(version):
+    root = gamedata.command_tree(version)
+    ours = {feature for feature in TREE_PATHS if features.feature_problem(feature, version) is None}
+    assert ours == {feature for feature, path in TREE_PATHS.items() if _in_tree(root, path)}

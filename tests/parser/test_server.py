@@ -22,12 +22,34 @@ def test_gamerule_names_by_version():
     parse_ok("gamerule freezeDamage false", (1, 17, 1))
 
 
-def test_gamerule_unknown_to_the_1_21_table_only_warns():
+@pytest.mark.parametrize("text,version,message", [
+    # GameRuleCommand registers one literal per rule: the release's own command tree decides
+    ("gamerule tntExplodes false", (1, 21, 5), None),
+    ("gamerule tntExplodes false", (1, 21, 4), "the command tree of 1.21.5 has it"),
+    ("gamerule maxCommandForkCount 3", (1, 20, 1), "is not in Minecraft 1.20.1"),
+    ("gamerule maxCommandForkCount 3", (1, 20, 3), None),
+    ("gamerule locatorBar false", (1, 21, 6), None),
+    ("gamerule spawnChunkRadius 2", (1, 21, 8), None),
+    ("gamerule spawnChunkRadius 2", (1, 21, 9), "gone from Minecraft 1.21.9: last in the command tree of 1.21.8"),
+    ("gamerule bogusRule 1", (1, 21, 6), "unknown game rule 'bogusRule'"),
+])
+def test_gamerules_come_from_the_releases_command_tree(text, version, message):
+    if message is None:
+        parse_ok(text, version)
+    else:
+        assert message in parse_err(text, version).message
+
+
+def test_gamerules_of_a_stand_in_tree_only_warn():
+    # 1.13 - 1.15 are checked against 1.16.5's tree (no maintained package has theirs): a rule of
+    # all of them is accepted and one that tree lacks is a warning, not an error
     from mcfunction_parser.diagnostics import Loc
     from mcfunction_parser.parse import parse_command
 
-    cmd, diags = parse_command("gamerule tntExplodes false", Loc("t", 1, 1), (1, 21, 5))
-    assert cmd.value == "false" and [d.severity for d in diags] == ["warning"]
+    assert parse_command("gamerule keepInventory true", Loc("t", 1, 1), (1, 14, 4))[1] == []
+    cmd, diags = parse_command("gamerule maxCommandForkCount 3", Loc("t", 1, 1), (1, 15, 2))
+    assert cmd.value == "3" and [d.severity for d in diags] == ["warning"]
+    assert "stands in for 1.15.2" in diags[0].message
 
 
 def test_random():
