@@ -132,11 +132,17 @@ def unreadable_reports(version: Version) -> list[tuple[str, str]]:
 # ----------------------------------------------------------------------------- command trees
 
 def tree_release(version: Version) -> Version:
-    """The release whose command tree checks ``version``: its own, the oldest one after it, or for a
-    release newer than every shipped tree the newest one (a stand-in: see :func:`stand_in`)."""
+    """The release whose command tree checks ``version``: its own; a hotfix's release before it of
+    the same minor release and data pack format (1.20.4 is 1.20.3's hotfix: 1.20.5 changed the
+    syntax its successor's tree has); the oldest one after it; or for a release newer than every
+    shipped tree the newest one (a stand-in: see :func:`stand_in`)."""
     if _user_report(version, "commands.json") is not None:
         return version
     shipped = _index()["commands"]
+    hotfixed = [release for release in shipped
+                if release <= version and release[:2] == version[:2] and _same_format(release, version)]
+    if hotfixed:
+        return max(hotfixed)
     later = [release for release in shipped if release >= version]
     return min(later) if later else max(shipped)
 

@@ -54,6 +54,38 @@ _REGISTRY_FILES = {"blocks": "block", "items": "item", "entities": "entity_type"
                    "attributes": "attribute"}
 
 
+# minecraft-data's attribute lists for 1.16 – 1.20.6 are all one copy of 1.16's thirteen. The game's
+# own registry (Attributes.java) changed in 1.20.2, which added generic.max_absorption (the
+# absorption rework), and in 1.20.5, which renamed horse.jump_strength to generic.jump_strength and
+# added the attributes below: 1.21's list, which minecraft-data has, less the nine 1.21 added
+# (burning_time, explosion_knockback_resistance, movement_efficiency, oxygen_bonus,
+# water_movement_efficiency and the player's mining_efficiency, sneaking_speed,
+# submerged_mining_speed, sweeping_damage_ratio). The changes apply from their release on, and only
+# to the stale list (a later minecraft-data that has them right is left alone).
+_STALE_ATTRIBUTES = frozenset(("generic.armor generic.armor_toughness generic.attack_damage generic.attack_knockback "
+                               "generic.attack_speed generic.flying_speed generic.follow_range "
+                               "generic.knockback_resistance generic.luck generic.max_health generic.movement_speed "
+                               "horse.jump_strength zombie.spawn_reinforcements").split())
+_ATTRIBUTE_CHANGES = (
+    ((1, 20, 2), {"generic.max_absorption"}, set()),
+    ((1, 20, 5), {"generic.jump_strength", "generic.scale", "generic.step_height", "generic.gravity",
+                  "generic.safe_fall_distance", "generic.fall_damage_multiplier", "player.block_interaction_range",
+                  "player.entity_interaction_range", "player.block_break_speed"}, {"horse.jump_strength"}),
+)
+_ATTRIBUTES_RIGHT_FROM = (1, 21, 0)
+
+
+def _attributes(release: tuple[int, int, int], listed: list[str]) -> list[str]:
+    """The release's attributes: minecraft-data's, with the changes it lacks before 1.21."""
+    if release >= _ATTRIBUTES_RIGHT_FROM or set(listed) != _STALE_ATTRIBUTES:
+        return listed
+    found = set(listed)
+    for since, added, removed in _ATTRIBUTE_CHANGES:
+        if release >= since:
+            found = (found | added) - removed
+    return sorted(found)
+
+
 def _package_dir(name: str) -> Path:
     spec = importlib.util.find_spec(name)
     if spec is None or not spec.submodule_search_locations:
@@ -139,7 +171,7 @@ def _component_types(protocol: dict) -> list[str] | None:
     return None
 
 
-def _registries(root: Path, paths: dict) -> dict:
+def _registries(root: Path, paths: dict, release: tuple[int, int, int]) -> dict:
     out: dict = {}
     if "protocol" in paths:
         components = _component_types(json.loads((root / paths["protocol"] / "protocol.json").read_text()))
@@ -154,6 +186,8 @@ def _registries(root: Path, paths: dict) -> dict:
             out["block_default"] = {e["name"]: _default_state(e) for e in entries if e.get("states")}
         else:
             out[registry] = sorted({_entry_id(kind, e) for e in entries})
+    if "attribute" in out:
+        out["attribute"] = _attributes(release, out["attribute"])
     return out
 
 
@@ -182,7 +216,7 @@ def build(minecraft_data: Path | None = None, mecha_wheels: Path | None = None) 
     for name, paths in data_paths.items():
         if not _RELEASE_NAME.fullmatch(name) or parse_mc_version(name) not in RELEASE_FORMATS:
             continue
-        data = _registries(mcdata, paths)
+        data = _registries(mcdata, paths, parse_mc_version(name))
         digest = hashlib.sha1(json.dumps(data, sort_keys=True).encode()).hexdigest()
         if digest not in written:
             written[digest] = _write(f"registries-{name}.json.gz", data)

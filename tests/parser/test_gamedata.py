@@ -27,7 +27,10 @@ def test_every_known_release_has_a_command_tree_or_a_stand_in(tmp_path, monkeypa
 
 def test_a_release_uses_its_own_tree_or_the_oldest_after_it():
     assert gamedata.tree_release((1, 20, 3)) == (1, 20, 3)
-    assert gamedata.tree_release((1, 20, 4)) == (1, 20, 6)
+    # 1.20.4 is 1.20.3's hotfix (both data pack format 26): its tree, not 1.20.6's, where 1.20.5's
+    # new syntax is (attribute modifiers by id and add_value, item components)
+    assert gamedata.tree_release((1, 20, 4)) == (1, 20, 3)
+    assert gamedata.tree_release((1, 20, 5)) == (1, 20, 6)
     assert gamedata.tree_release((1, 21, 0)) == (1, 21, 1)
     assert [gamedata.tree_release((1, 21, patch)) for patch in range(1, 12)] == [
         (1, 21, 1), (1, 21, 4), (1, 21, 4), (1, 21, 4), (1, 21, 5), (1, 21, 8), (1, 21, 8), (1, 21, 8),
@@ -211,3 +214,21 @@ def test_setworldspawn_takes_an_angle_until_1_21_9(version, ok):
     # 1.21.1 pack is checked against 1.21.1's own tree, not a later one's
     _, diagnostics = parse_function("setworldspawn ~ ~ ~ 90\n", "f.mcfunction", "t:f", version)
     assert (not [d for d in diagnostics if d.severity == "error"]) is ok, diagnostics
+
+
+def test_attribute_registries_follow_the_game_where_minecraft_data_lags():
+    # minecraft-data's attribute lists of 1.16 - 1.20.6 are one copy of 1.16's (build.py's
+    # _ATTRIBUTE_CHANGES): Attributes.java has generic.max_absorption from 1.20.2, and from 1.20.5
+    # scale, step_height, the player's interaction ranges and generic.jump_strength for
+    # horse.jump_strength
+    def attributes(version):
+        return gamedata.registry("attribute", version)
+
+    assert "generic.max_absorption" not in attributes((1, 20, 1))
+    assert "generic.max_absorption" in attributes((1, 20, 2)) and "generic.scale" not in attributes((1, 20, 4))
+    assert {"generic.scale", "generic.step_height", "player.block_interaction_range",
+            "generic.jump_strength"} <= attributes((1, 20, 5)) == attributes((1, 20, 6))
+    assert "horse.jump_strength" in attributes((1, 20, 4)) and "horse.jump_strength" not in attributes((1, 20, 5))
+    # a 1.20.6 pack's scale is no false error
+    _, diagnostics = parse_function("attribute @s generic.scale base set 2\n", "f.mcfunction", "t:f", (1, 20, 6))
+    assert not diagnostics
