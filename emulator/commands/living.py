@@ -13,7 +13,7 @@ from __future__ import annotations
 
 
 from emulator.world import advancements, combat, living
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
@@ -140,6 +140,8 @@ def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
     if action == ("base", "reset"):
         living.reset_base(entity, name)
         return 1
+    if action[:1] == ("modifier",) and entity.release < living.MODIFIER_IDS:
+        raise Unmodelled("attribute modifiers before 1.21 (named by a UUID and a name)")
     modifier_id = _resource(words[4]) if len(words) > 4 else ""
     if action == ("modifier", "add"):
         if not living.add_modifier(entity, name, modifier_id, _number(cmd, words, 5), words[6] if len(words) > 6 else ""):

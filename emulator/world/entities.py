@@ -51,7 +51,8 @@ from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
 from emulator.world.entity_table import (
     EF_EYE, EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_TRANSFORM, EF_WIDTH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM,
-    EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_SEAT, EI_TEAM, EI_VEHICLE, EI_XP, GAMEMODES, EntityTable, TagSet,
+    EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_SEAT, EI_TEAM, EI_VEHICLE, EI_XP, GAMEMODES, LATEST_RELEASE, EntityTable,
+    TagSet,
 )
 from emulator.world.errors import CommandFailure
 from emulator.world.inventories import equipment_defaults, normalise_items, player_defaults, selected_item
@@ -196,9 +197,9 @@ class Entity:
         table.floats[slot, EF_YAW] = yaw
         table.floats[slot, EF_PITCH] = pitch
         table.ints[slot, EI_ALIVE] = int(alive)
-        table.floats[slot, EF_HALF:EF_EYE + 1] = self.sizes()
         table.ints[slot, EI_LIVING] = int(living.is_living(self.type))
         self._table = table
+        table.floats[slot, EF_HALF:EF_EYE + 1] = self.sizes()  # with the table's release (its attributes' ids)
         self._write_selected()
         if self.type in display.DISPLAY_TYPES:
             table.floats[slot, EF_TRANSFORM:EF_WIDTH] = display.transformation_columns(self.data["transformation"])
@@ -340,7 +341,7 @@ class Entity:
         elif living.is_baby(self):
             age = baby_scale(self.type)
             width, height, eyes = width * age, height * age, BABY_EYE_HEIGHT.get(self.type, eyes * age)
-        if living.has_attribute(self.type, "scale"):
+        if living.has_attribute(self.type, "scale", self.release):  # scale: 1.20.5+
             scale = F32(living.attribute_value(self, "scale"))
             width, height, eyes = width * scale, height * scale, eyes * scale
         return width, height, eyes
@@ -350,6 +351,11 @@ class Entity:
         are floats, widened to double): the table's copy, which both backends read."""
         width, height, eyes = self.dimensions()
         return float(width / F32(2.0)), float(height), float(eyes)
+
+    @property
+    def release(self) -> tuple[int, int, int]:
+        """The release the entity's world runs as (the layout its NBT is written in)."""
+        return self._table.release if self._table is not None else LATEST_RELEASE
 
     def refresh_sizes(self) -> None:
         """Keep the table's sizes: after anything that changes them (NBT, pose, attributes)."""
@@ -560,7 +566,6 @@ class EntityStore:
         # (RandomSupport.mixStafford13 of the seed's upgrade to 128 bits), as Random() mixes the time
         java_random.set_seed(self.table.random, random_sequences.mix_stafford13(seed + random_sequences.GOLDEN_RATIO_64))
         self.joined = 0  # players that joined so far (EI_JOIN)
-        self.version = (1, 21, 11)  # the release the packs run as (what new entities save)
         self.team_of: Callable[[str], str | None] = lambda holder: None  # a score holder's team (WorldState.teams)
         self.join_team: Callable[[str, str], None] = lambda holder, team: None  # (WorldState.teams)
         self.clock: Callable[[], int] = lambda: 0  # the server ticks run so far (WorldState.tick)
@@ -570,6 +575,16 @@ class EntityStore:
         self._carts: tuple[int, list[Entity]] = (0, [])  # (changes then, ``minecarts()``)
         self._picked: dict[str, tuple[int, list[Entity]]] = {}  # ``picked()``'s lists by key
 
+
+    @property
+    def version(self) -> tuple[int, int, int]:
+        """The release the packs run as: what new entities save (kept on the table, which the
+        entities' NBT writers read through :attr:`Entity.release`)."""
+        return self.table.release
+
+    @version.setter
+    def version(self, release) -> None:
+        self.table.release = tuple(release)
     def bind_scoreboard(self, scoreboard) -> None:
         """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
         self.table.intern_holder = scoreboard.holder_id

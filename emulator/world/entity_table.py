@@ -63,6 +63,9 @@ def _bit(tag: int) -> np.int64:
     return np.int64(1) << np.int64(tag & 63)
 
 
+LATEST_RELEASE = (1, 21, 11)  # what a table or store runs as until the runtime says
+
+
 class EntityTable:
     """The arrays, the interned tag and type names, and the slot -> entity handles."""
 
@@ -86,6 +89,7 @@ class EntityTable:
         self.uuids: dict[tuple, list] = {}  # UUID -> the living entities that have it
         self.intern_holder: Callable[[str], int] | None = None  # the scoreboard's holder_id
         self.levels = Levels()  # the numbers of EI_DIM (the packs' dimensions are added at load)
+        self.release = LATEST_RELEASE  # the release the packs run as (what its entities save: EntityStore.version)
 
     # ------------------------------------------------------------------ names
     def tag_id(self, name: str) -> int:

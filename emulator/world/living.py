@@ -28,9 +28,11 @@ ExperienceCommand.java, EffectCommands.java, DamageCommand.java.
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 
 import numpy as np
 
+from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, Short, String
 from emulator.world import recipes, statistics
 from emulator.world.errors import Unmodelled
@@ -123,8 +125,25 @@ def is_baby(entity) -> bool:
     return _number(data.get("Age")) < 0 or _number(data.get("IsBaby")) != 0
 
 
-def has_attribute(type_id: str, name: str) -> bool:
-    return is_living(type_id) and (name in _LIVING or name in TYPE_BASES.get(type_id, _MOB))
+def has_attribute(type_id: str, name: str, release=None) -> bool:
+    """Whether entities of the type have the attribute (in ``release``, when given: one its registry
+    lacks, such as ``scale`` before 1.20.5, none has)."""
+    return (is_living(type_id) and (name in _LIVING or name in TYPE_BASES.get(type_id, _MOB))
+            and (release is None or registered(name, release)))
+
+
+def registered(name: str, release) -> bool:
+    """Whether ``release`` registers the attribute (its registry; every one of :data:`DEFAULTS`
+    when dpemu has no registry data of it)."""
+    return name in _registered(tuple(release))
+
+
+@lru_cache(maxsize=None)
+def _registered(release) -> frozenset[str]:
+    try:
+        return frozenset(attribute_id(entry) for entry in gamedata.registry("attribute", release))
+    except gamedata.GameDataMissing:
+        return frozenset(DEFAULTS)
 
 
 def default_base(type_id: str, name: str) -> float:
@@ -146,20 +165,57 @@ def base_fields(type_id: str) -> Compound:
 
 
 # ---------------------------------------------------------------------- attributes
+CODEC_ATTRIBUTES = (1, 20, 5)  # the codec layout: ``attributes`` [{id, base, modifiers}]
+MODIFIER_IDS = (1, 21, 0)  # modifiers named by an id (before: a UUID and a name)
+# (list, id, base, modifiers) keys: LivingEntity.addAdditionalSaveData and AttributeInstance.save,
+# before 1.20.5 ``Attributes`` [{Name, Base, Modifiers}]
+_CODEC_KEYS = ("attributes", "id", "base", "modifiers")
+_OLD_KEYS = ("Attributes", "Name", "Base", "Modifiers")
+# AttributeModifier.Operation by its saved number before 1.20.5
+_OPERATIONS = ("add_value", "add_multiplied_base", "add_multiplied_total")
+
+
+def _keys(entity) -> tuple[str, str, str, str]:
+    return _CODEC_KEYS if entity.release >= CODEC_ATTRIBUTES else _OLD_KEYS
+
+
 def _instances(entity) -> List:
-    found = entity.data.get("attributes")
+    key = _keys(entity)[0]
+    found = entity.data.get(key)
     if not isinstance(found, List):
-        found = entity.data["attributes"] = List()
+        found = entity.data[key] = List()
     return found
+
+
+UNPREFIXED_ATTRIBUTES = (1, 21, 2)  # 24w36a: the ids lost their generic., player. and zombie. prefixes
+
+
+def saved_attribute_id(name: str, release) -> str:
+    """The id an attribute instance is saved under in ``release`` (AttributeInstance.save writes its
+    registry key): ``minecraft:max_health`` from 1.21.2, the release's registry name before it
+    (``minecraft:generic.max_health``, ``minecraft:player.block_interaction_range``)."""
+    if tuple(release) < UNPREFIXED_ATTRIBUTES:
+        return f"minecraft:{_prefixed(tuple(release)).get(name, 'generic.' + name)}"
+    return f"minecraft:{name}"
+
+
+@lru_cache(maxsize=None)
+def _prefixed(release) -> dict[str, str]:
+    """The release's registry names by short id (``max_health`` -> ``generic.max_health``)."""
+    try:
+        return {attribute_id(entry): entry for entry in gamedata.registry("attribute", release)}
+    except gamedata.GameDataMissing:
+        return {}
 
 
 def _instance(entity, name: str) -> Compound:
     """The entity's instance of the attribute (created at its default base on first use)."""
-    full = f"minecraft:{name}"
-    for inst in _instances(entity):  # saved under either name (``generic.`` before 1.21.2)
-        if isinstance(inst, Compound) and attribute_id(str(inst.get("id", ""))) == name:
+    _, id_key, base_key, _ = _keys(entity)
+    for inst in _instances(entity):  # read under either name (a pack may write the other)
+        if isinstance(inst, Compound) and attribute_id(str(inst.get(id_key, ""))) == name:
             return inst
-    inst = Compound(id=String(full), base=Double(default_base(entity.type, name)))
+    inst = Compound(**{id_key: String(saved_attribute_id(name, entity.release)),
+                       base_key: Double(default_base(entity.type, name))})
     _instances(entity).append(inst)
     return inst
 
@@ -169,11 +225,11 @@ def _number(tag, default: float = 0.0) -> float:
 
 
 def base_value(entity, name: str) -> float:
-    return _number(_instance(entity, name).get("base"), default_base(entity.type, name))
+    return _number(_instance(entity, name).get(_keys(entity)[2]), default_base(entity.type, name))
 
 
 def set_base(entity, name: str, value: float) -> None:
-    _instance(entity, name)["base"] = Double(value)
+    _instance(entity, name)[_keys(entity)[2]] = Double(value)
     _changed(entity)
 
 
@@ -183,9 +239,25 @@ def reset_base(entity, name: str) -> None:
 
 def _modifiers(entity, name: str) -> List:
     inst = _instance(entity, name)
-    if not isinstance(inst.get("modifiers"), List):
-        inst["modifiers"] = List()
-    return inst["modifiers"]
+    key = _keys(entity)[3]
+    if not isinstance(inst.get(key), List):
+        inst[key] = List()
+    return inst[key]
+
+
+def _saved_modifiers(entity, name: str) -> list[tuple[str, float]]:
+    """(operation, amount) of the modifiers saved on the attribute, in any release's layout
+    (before 1.20.5 ``Amount`` and ``Operation`` 0, 1 or 2)."""
+    found = []
+    saved = _instance(entity, name).get(_keys(entity)[3])
+    for m in saved if isinstance(saved, List) else ():
+        if not isinstance(m, Compound):
+            continue
+        operation = m.get("operation")
+        if operation is None and is_numeric(m.get("Operation")) and 0 <= int(numeric_value(m["Operation"])) < 3:
+            operation = _OPERATIONS[int(numeric_value(m["Operation"]))]
+        found.append((str(operation or ""), _number(m.get("amount", m.get("Amount")))))
+    return found
 
 
 def _find_modifier(entity, name: str, modifier_id: str) -> Compound | None:
@@ -255,7 +327,7 @@ def attribute_value(entity, name: str) -> float:
     add_multiplied_base adds base x amount, each add_multiplied_total multiplies by 1 + amount;
     clamped to the attribute's range (RangedAttribute.sanitizeValue: NaN reads the minimum)."""
     base = base_value(entity, name)
-    modifiers = [(str(m.get("operation", "")), _number(m.get("amount"))) for m in _modifiers(entity, name)]
+    modifiers = _saved_modifiers(entity, name)
     modifiers += [(op, amount) for amount, op in _transient(entity, name).values()]
     base += sum(a for op, a in modifiers if op == "add_value")
     value = base + sum(base * a for op, a in modifiers if op == "add_multiplied_base")
