@@ -249,8 +249,7 @@ def _saved_modifiers(entity, name: str) -> list[tuple[str, float]]:
     """(operation, amount) of the modifiers saved on the attribute, in any release's layout
     (before 1.20.5 ``Amount`` and ``Operation`` 0, 1 or 2)."""
     found = []
-    saved = _instance(entity, name).get(_keys(entity)[3])
-    for m in saved if isinstance(saved, List) else ():
+    for m in _saved(entity, name):
         if not isinstance(m, Compound):
             continue
         operation = m.get("operation")
@@ -260,8 +259,15 @@ def _saved_modifiers(entity, name: str) -> list[tuple[str, float]]:
     return found
 
 
+def _saved(entity, name: str) -> list:
+    """The modifiers saved on the attribute (read only: no empty list is written)."""
+    saved = _instance(entity, name).get(_keys(entity)[3])
+    return saved if isinstance(saved, List) else []
+
+
 def _find_modifier(entity, name: str, modifier_id: str) -> Compound | None:
-    return next((m for m in _modifiers(entity, name) if str(m.get("id", "")) == modifier_id), None)
+    return next((m for m in _saved(entity, name) if isinstance(m, Compound) and str(m.get("id", "")) == modifier_id),
+                None)
 
 
 def _transient(entity, name: str) -> dict:
@@ -296,14 +302,13 @@ def add_modifier(entity, name: str, modifier_id: str, amount: float, operation: 
 
 
 def remove_modifier(entity, name: str, modifier_id: str) -> bool:
-    modifiers = _modifiers(entity, name)
     found = _find_modifier(entity, name, modifier_id)
     if found is None:
         if modifier_id in _transient(entity, name):
             set_transient(entity, name, modifier_id, None)
             return True
         return False
-    modifiers.remove(found)
+    _modifiers(entity, name).remove(found)
     _changed(entity)
     return True
 

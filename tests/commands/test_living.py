@@ -197,6 +197,15 @@ def test_modifiers_saved_before_1_20_5_count(env):
     assert run(env, "attribute @e[type=pig,limit=1] generic.max_health get", version=(1, 20, 4)) == 18
 
 
+def test_reading_an_attribute_writes_no_empty_modifiers(env):
+    # AttributeInstance.save writes ``modifiers`` only when there is one
+    steve, ctx = player(env)
+    run(env, "attribute @s luck get", ctx)
+    with pytest.raises(CommandFailure, match="has no modifier"):
+        run(env, "attribute @s luck modifier value get t:x", ctx)
+    assert [sorted(i) for i in steve.data["attributes"] if str(i["id"]) == "minecraft:luck"] == [["base", "id"]]
+
+
 def test_attribute_modifiers_before_1_21_are_not_modelled(env):
     # before 1.21 a modifier is named by a UUID and a name (AttributeCommand): reported, never guessed
     _, ctx = player(_at(env, (1, 20, 4)))
