@@ -162,15 +162,24 @@ class _Seen:
     reading them, the common tick)."""
     slots: dict = field(default_factory=dict)
     nbt: Compound | None = None
+    absent: tuple = ()  # the keys of EQUIPMENT_KEYS not in that NBT
+
+    def saw(self, entity) -> None:
+        """Keep a copy of the NBT the entity's slots are read from now."""
+        self.nbt = copy_tag(inventories.equipment_nbt(entity))
+        self.absent = tuple(key for key in inventories.EQUIPMENT_KEYS if key not in self.nbt)
 
 
 def _nbt_changed(entity, seen: _Seen) -> bool:
     if seen.nbt is None:
         return True
     data = entity.data
-    for key in inventories.EQUIPMENT_KEYS:  # key by key: most are in neither (no Compound built)
-        now, then = data.get(key), seen.nbt.get(key)
-        if (now is not None or then is not None) and (now is None or then is None or not tags_equal(now, then)):
+    for key, then in seen.nbt.items():  # the keys there last time (a player's two), then the others
+        now = data.get(key)
+        if now is None or not tags_equal(now, then):
+            return True
+    for key in seen.absent:
+        if key in data:
             return True
     return False
 
@@ -218,7 +227,7 @@ def tick(state) -> None:
         if not _nbt_changed(entity, last):
             continue
         collect_changes(state, entity, last.slots)
-        last.nbt = copy_tag(inventories.equipment_nbt(entity))
+        last.saw(entity)
 
 
 def tick_is_idle(state) -> bool:
