@@ -248,6 +248,8 @@ class NumbaBackend:
         a root); True when the quota (or the depth cap) cut that root."""
         r, rv = self.regs, self.rv
         cut = False
+        # a host request's round trip is Python's part of every host op: what it reads is local here
+        host_ops_at, run_final, runs, state = self.host_ops_at, self.host.run_final, self.host_runs, self.state
         while True:
             address = self._machine()
             if self.leaves_used:
@@ -259,14 +261,23 @@ class NumbaBackend:
             if status == ST_DONE and not rv[R_BATCH] and not rv[R_NLOG] and (cut or rv[R_QUOTA] > 0):
                 self.returned = True  # the root function came back: the common end, first
                 return cut
-            if status == ST_HOST and not rv[R_BATCH] and not rv[R_NLOG]:  # the common request, first
+            if status == ST_HOST:  # the common request, next
+                if rv[R_BATCH] or rv[R_NLOG]:
+                    self._before_host()
                 pc = rv[R_PC]
-                op = self.host_ops_at.get(pc) or self._host_op(pc)
+                op = host_ops_at.get(pc) or self._host_op(pc)
                 try:
-                    if op[0] in _FINAL_OPS:
-                        self._final(pc, op[1])
+                    if op[0] in _FINAL_OPS:  # a final command, run once for the current context
+                        self._current_pc = pc
+                        runs[pc] += 1
+                        ctx = rv[R_CTX]
+                        rv[R_PC] = pc + 1
+                        result = run_final(op[1], self.contexts.get(ctx) or self.context(ctx))  # its value is wrapped
+                        rv[R_HAS], rv[R_OK], rv[R_VAL] = result.has, result.ok, result.value
+                        if state.pending_rewards:
+                            self._earned_rewards()
                     else:
-                        self._host(pc)
+                        self._host(pc, op)
                 except Exception as error:  # noqa: BLE001 - the pack's run must go on
                     self._host_failed(pc, error)
                 continue
@@ -289,10 +300,7 @@ class NumbaBackend:
                 if not batching:
                     return True
                 cut = self._abandon_root()
-            if status == vm.ST_HOST:
-                pc = int(r[vm.R_PC])
-                self._host_guarded(pc)
-            elif status == vm.ST_GROWCTX:
+            if status == vm.ST_GROWCTX:
                 self._grow_contexts(2 * self.cints.shape[0])
                 self.fstack = _grown(self.fstack)
                 self.stale = True
@@ -405,11 +413,15 @@ class NumbaBackend:
                 self.totals[fn] += int(self.frames[i, vm.F_QUOTA]) - quota
 
     # ------------------------------------------------------------------ requests
-    def _host_guarded(self, pc: int) -> None:
-        try:
-            self._host(pc)
-        except Exception as error:  # noqa: BLE001 - the pack's run must go on
-            self._host_failed(pc, error)
+    def _before_host(self) -> None:
+        """A host request in a batch of ticks or with log lines queued: the batch's bookkeeping and
+        the lines first, as before any request; a batch ends with this root (the runtime looks again)."""
+        rv = self.rv
+        if rv[R_BATCH]:
+            self._batch_root(False)
+        if rv[R_NLOG]:
+            self._write_log()
+        rv[R_BSTOP] = rv[R_BATCH]
 
     def _host_failed(self, pc: int, error: Exception) -> None:
         """A bug in a host handler fails that one command with a diagnostic, never the run."""
@@ -425,28 +437,16 @@ class NumbaBackend:
         op = self.host_ops_at[pc] = (row[0], self.program.host_ops[row[_HOST_OPERAND[row[0]]]].node)
         return op
 
-    def _final(self, pc: int, node) -> None:
-        """The host op at ``pc``, a final command (:data:`_FINAL_OPS`), run once for the current
-        context: the common request, served first."""
-        rv = self.rv
-        self._current_pc = pc
-        self.host_runs[pc] += 1
-        ctx = rv[R_CTX]
-        rv[R_PC] = pc + 1
-        result = self.host.run_final(node, self.contexts.get(ctx) or self.context(ctx))  # its value is wrapped
-        rv[R_HAS], rv[R_OK], rv[R_VAL] = result.has, result.ok, result.value
-        if self.state.pending_rewards:  # rewards the command earned run next
-            self.rewards.append((self.regs[_COMMAND_REGISTERS].copy(), earned_rewards(self.state, self.packs.functions)))
-            self._next_reward()
+    def _earned_rewards(self) -> None:
+        """Rewards the host command just run earned run next."""
+        self.rewards.append((self.regs[_COMMAND_REGISTERS].copy(), earned_rewards(self.state, self.packs.functions)))
+        self._next_reward()
 
-    def _host(self, pc: int) -> None:
-        """Serve the host op at ``pc`` (a final command, an execute stage or a store)."""
-        opcode, node = self.host_ops_at.get(pc) or self._host_op(pc)
+    def _host(self, pc: int, op: tuple) -> None:
+        """Serve the host op ``op`` (opcode, node) at ``pc``: an execute stage or a store."""
+        opcode, node = op
         r, rv = self.regs, self.rv
         rv[R_BSTOP] = rv[R_BATCH]  # a batch of ticks ends with this root: the runtime looks again
-        if opcode in _FINAL_OPS:
-            self._final(pc, node)
-            return
         self._current_pc = pc
         self.host_runs[pc] += 1
         ctx = self.contexts.get(rv[R_CTX]) or self.context(rv[R_CTX])
