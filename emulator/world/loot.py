@@ -14,7 +14,9 @@ copy_custom_data, copy_components (block_entity), set_contents, set_enchantments
 enchant_randomly, enchanted_count_increase/looting_enchant, apply_bonus, explosion_decay,
 set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered, sequence,
 reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
-before 1.21.4), set_stew_effect, copy_state. Anything else (an entry, function, condition or
+before 1.21.4), set_stew_effect, copy_state, and the whole-component writers of
+:mod:`emulator.world.loot_components` (set_book_cover, set_writable_book_pages, set_fireworks,
+set_firework_explosion, set_banner_pattern, discard). Anything else (an entry, function, condition or
 number provider type) raises :class:`~emulator.world.errors.Unmodelled` naming it: the command
 fails with a diagnostic, never an empty drop in silence. A table, modifier or predicate reached
 again through itself is skipped with a warning (LootContext.pushVisitedElement: the game logs
@@ -44,6 +46,7 @@ from emulator.world.loot_context import (
     LootContext, component_tag, integer, int_range, namespaced as _id, not_modelled, number, path_of as _path,
     snbt_or_tag, to_tag,
 )
+from emulator.world.loot_components import FUNCTIONS as COMPONENT_FUNCTIONS, list_operation
 from emulator.world.predicates import item_matches, test as all_hold
 from emulator.world.nbt_ops import copy_tag, merge_compounds
 
@@ -57,6 +60,9 @@ MAX_LEVELS = {f"minecraft:{k}": v for k, v in {
     "loyalty": 3, "impaling": 5, "riptide": 3, "channeling": 1, "multishot": 1, "quick_charge": 3, "piercing": 4,
     "density": 5, "breach": 4, "wind_burst": 3, "mending": 1, "vanishing_curse": 1}.items()}
 
+
+
+MAX_LORE_LINES = 256  # ItemLore.MAX_LINES
 
 
 # ---------------------------------------------------------------------- tables
@@ -269,25 +275,10 @@ def _set_name(f, stack, ctx):
 
 
 def _set_lore(f, stack, ctx):
+    """SetLoreFunction: the lines by the list operation (at most ItemLore.MAX_LINES, 256)."""
     lines = [_text(v, ctx) for v in f.get("lore", [])]
     old = list(stack.component("minecraft:lore") or [])
-    mode = f.get("mode", "replace_all")
-    if isinstance(mode, dict):
-        mode = mode.get("type", "replace_all")
-    mode = mode.split(":")[-1]
-    offset = f.get("offset", 0)
-    if mode == "replace_all":
-        new = lines
-    elif mode == "append":
-        new = old + lines
-    elif mode == "insert":
-        new = old[:offset] + lines + old[offset:]
-    elif mode == "replace_section":
-        size = f.get("size", len(lines))
-        new = old[:offset] + lines + old[offset + size:]
-    else:
-        raise not_modelled("set_lore mode", mode)
-    set_component(stack, "minecraft:lore", List(new))
+    set_component(stack, "minecraft:lore", List(list_operation(f, old, lines, MAX_LORE_LINES)))
     return stack
 
 
@@ -563,4 +554,4 @@ FUNCTIONS: dict[str, Callable] = {f"minecraft:{k}": v for k, v in {
     "set_item": _set_item, "set_potion": _set_potion, "set_loot_table": _set_loot_table, "set_nbt": _set_nbt,
     "filtered": _filtered, "sequence": _sequence, "reference": _reference, "fill_player_head": _fill_player_head,
     "set_ominous_bottle_amplifier": _set_ominous_bottle_amplifier, "set_custom_model_data": _set_custom_model_data,
-    "set_stew_effect": _set_stew_effect, "copy_state": _copy_state}.items()}
+    "set_stew_effect": _set_stew_effect, "copy_state": _copy_state}.items()} | COMPONENT_FUNCTIONS

@@ -1,0 +1,172 @@
+"""Item functions that write one component whole, in the form its codec saves (defaults left out):
+a written book's cover, a writable book's pages, fireworks, a firework star's explosion and a
+banner's patterns; and ``discard``. Lists change by a list operation (ListOperation: replace_all,
+replace_section, insert, append), which :func:`list_operation` runs for these and ``set_lore``.
+
+Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java,
+SetWritableBookPagesFunction.java, SetFireworksFunction.java, SetFireworkExplosionFunction.java,
+SetBannerPatternFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
+WrittenBookContent.java (EMPTY, CODEC), WritableBookContent.java, Fireworks.java,
+FireworkExplosion.java; world/level/block/entity/BannerPatternLayers.java; server/network/
+Filterable.java (saved as ``{raw, filtered?}``).
+"""
+from __future__ import annotations
+
+from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, List, String
+from emulator.world.items import EMPTY, ItemStack, set_component
+from emulator.world.loot_context import LootContext, namespaced as _id, not_modelled, to_tag
+
+MAX_PAGES = 100  # WritableBookContent / WrittenBookContent.MAX_PAGES
+MAX_EXPLOSIONS = 256  # Fireworks.MAX_EXPLOSIONS
+_SMALL_BALL = "small_ball"  # FireworkExplosion.DEFAULT's shape
+
+
+def list_operation(f: dict, current: list, values: list, max_size: int) -> list:
+    """ListOperation.apply, the operation read from ``f``'s ``mode`` (with ``offset`` and
+    ``size``): an offset past the end, or a result over ``max_size``, leaves the list as it was (the
+    game logs an error)."""
+    mode = f.get("mode", "replace_all")
+    if isinstance(mode, dict):
+        mode = mode.get("type", "replace_all")
+    mode = str(mode).split(":")[-1]
+    offset = int(f.get("offset", 0))
+    if mode == "replace_all":
+        return list(values)
+    if mode == "append":
+        return current + list(values) if len(current) + len(values) <= max_size else current
+    if offset > len(current):
+        return current
+    if mode == "insert":
+        result = current[:offset] + list(values) + current[offset:]
+    elif mode == "replace_section":
+        result = current[:offset] + list(values) + current[offset + int(f.get("size", len(values))):]
+    else:
+        raise not_modelled("list operation", mode)
+    return result if len(result) <= max_size else current
+
+
+def _filterable(value) -> Compound:
+    """Filterable.codec's saved form: ``{raw}`` (and ``filtered`` when there is one)."""
+    if isinstance(value, dict) and "raw" in value:
+        return Compound((key, to_tag(value[key])) for key in ("raw", "filtered") if key in value)
+    return Compound(raw=to_tag(value))
+
+
+def _book(stack: ItemStack, name: str) -> Compound:
+    current = stack.component(name)
+    return Compound(current) if isinstance(current, dict) else Compound()
+
+
+def _set_book_cover(f, stack, ctx):
+    """SetBookCoverFunction: ``title``, ``author`` and ``generation`` over the written book content,
+    WrittenBookContent.EMPTY (title "", author "", generation 0, no pages, resolved) when there is none."""
+    book = _book(stack, "minecraft:written_book_content")
+    if not book:
+        book = Compound(title=_filterable(""), author=String(""), resolved=Byte(1))
+    if "title" in f:
+        book["title"] = _filterable(f["title"])
+    if "author" in f:
+        book["author"] = String(f["author"])
+    if "generation" in f:
+        book["generation"] = Int(f["generation"])
+    if "title" in book and not isinstance(book["title"], dict):
+        book["title"] = _filterable(str(book["title"]))
+    if int(book.get("generation", 0)) == 0:  # optionalFieldOf("generation", 0): the default is not saved
+        book.pop("generation", None)
+    set_component(stack, "minecraft:written_book_content", book)
+    return stack
+
+
+def _set_writable_book_pages(f, stack, ctx):
+    """SetWritableBookPagesFunction: ``pages`` (texts, or ``{raw, filtered}``) by the list operation,
+    at most 100."""
+    book = _book(stack, "minecraft:writable_book_content")
+    current = [p if isinstance(p, dict) else _filterable(p) for p in book.get("pages", [])]
+    pages = list_operation(f, current, [_filterable(p) for p in f.get("pages", [])], MAX_PAGES)
+    set_component(stack, "minecraft:writable_book_content", Compound(pages=List(pages)) if pages else Compound())
+    return stack
+
+
+# the flags' names: an explosion's own (FireworkExplosion.CODEC), SetFireworkExplosionFunction's
+_EXPLOSION_FLAGS = {"has_trail": "has_trail", "has_twinkle": "has_twinkle"}
+_FUNCTION_FLAGS = {"has_trail": "trail", "has_twinkle": "twinkle"}
+
+
+def _explosion(spec: dict, base: Compound | None = None, flags: dict = _EXPLOSION_FLAGS) -> Compound:
+    """A FireworkExplosion in its saved form: ``shape``, then ``colors`` and ``fade_colors`` (int
+    arrays, NbtOps' list of ints) and ``has_trail``/``has_twinkle`` when not the defaults; ``spec``'s
+    fields over ``base`` (its flags named as ``flags`` says)."""
+    out = Compound(base or {})
+    out.setdefault("shape", String(_SMALL_BALL))
+    if "shape" in spec:
+        out["shape"] = String(str(spec["shape"]))
+    for key in ("colors", "fade_colors"):
+        if key in spec:
+            out[key] = IntArray(int(c) for c in spec[key])
+    for key, name in flags.items():
+        if name in spec:
+            out[key] = Byte(bool(spec[name]))
+    for key in ("colors", "fade_colors"):
+        if key in out and not out[key]:
+            del out[key]
+    for key in ("has_trail", "has_twinkle"):
+        if key in out and not out[key]:
+            del out[key]
+    return out
+
+
+def _set_firework_explosion(f, stack, ctx):
+    """SetFireworkExplosionFunction: each of ``shape``, ``colors``, ``fade_colors``, ``trail`` and
+    ``twinkle`` given over the star's explosion, FireworkExplosion.DEFAULT (a small ball) when none."""
+    current = stack.component("minecraft:firework_explosion")
+    set_component(stack, "minecraft:firework_explosion",
+                  _explosion(f, current if isinstance(current, dict) else None, _FUNCTION_FLAGS))
+    return stack
+
+
+def _set_fireworks(f, stack, ctx):
+    """SetFireworksFunction: ``explosions`` (``{values, mode}``: a list operation, at most 256) and
+    ``flight_duration`` over the fireworks, Fireworks(0, []) when there are none."""
+    current = stack.component("minecraft:fireworks")
+    fireworks = Compound(current) if isinstance(current, dict) else Compound()
+    if "explosions" in f:
+        spec = f["explosions"]
+        old = list(fireworks.get("explosions", []))
+        new = list_operation(spec, old, [_explosion(e) for e in spec.get("values", [])], MAX_EXPLOSIONS)
+        fireworks["explosions"] = List(new)
+    if "flight_duration" in f:
+        fireworks["flight_duration"] = Byte(int(f["flight_duration"]))
+    if not fireworks.get("explosions", True):
+        del fireworks["explosions"]
+    if int(fireworks.get("flight_duration", 0)) == 0:
+        fireworks.pop("flight_duration", None)
+    set_component(stack, "minecraft:fireworks", fireworks)
+    return stack
+
+
+def _layer(layer: dict) -> Compound:
+    pattern = layer.get("pattern")
+    if not isinstance(pattern, str):
+        raise not_modelled("set_banner_pattern pattern", "an inline banner pattern")
+    return Compound(pattern=String(_id(pattern)), color=String(str(layer.get("color", "white"))))
+
+
+def _set_banner_pattern(f, stack, ctx):
+    """SetBannerPatternFunction: the ``patterns`` after the banner's own (``append``) or instead of them."""
+    layers = [_layer(layer) for layer in f.get("patterns", [])]
+    current = stack.component("minecraft:banner_patterns")
+    if f.get("append", False) and isinstance(current, list):
+        layers = list(current) + layers
+    set_component(stack, "minecraft:banner_patterns", List(layers))
+    return stack
+
+
+def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
+    """DiscardItem: the stack is gone."""
+    return EMPTY.copy()
+
+
+FUNCTIONS = {f"minecraft:{k}": v for k, v in {
+    "set_book_cover": _set_book_cover, "set_writable_book_pages": _set_writable_book_pages,
+    "set_firework_explosion": _set_firework_explosion, "set_fireworks": _set_fireworks,
+    "set_banner_pattern": _set_banner_pattern, "discard": _discard}.items()}
