@@ -82,7 +82,8 @@ def _f(value: float) -> float:
     return float(F32(value))
 
 
-def _vanilla(item_id: str) -> list[Modifier]:
+def default_modifiers(item_id: str) -> list[Modifier]:
+    """The item's default attribute modifiers (its attribute_modifiers component as the item registers it)."""
     name = item_id.removeprefix("minecraft:")
     material, _, kind = name.rpartition("_")
     if kind == "sword" and material in TIER_BONUS:  # SwordItem.createAttributes(tier, 3, -2.4F)
@@ -142,7 +143,7 @@ def item_modifiers(stack: ItemStack, version) -> list[Modifier]:
         return []
     if "minecraft:attribute_modifiers" in stack.patch:
         return _from_component(stack.patch["minecraft:attribute_modifiers"])
-    return _vanilla(stack.id)
+    return default_modifiers(stack.id)
 
 
 def _for_slot(state, stack: ItemStack, slot_name: str) -> list[Modifier]:

@@ -1,22 +1,26 @@
 """Item functions that write one component whole, in the form its codec saves (defaults left out):
-a written book's cover, a writable book's pages, fireworks, a firework star's explosion and a
-banner's patterns; and ``discard``. Lists change by a list operation (ListOperation: replace_all,
+a written book's cover, a writable book's pages, fireworks, a firework star's explosion, a
+banner's patterns and an item's attribute modifiers; and ``discard``. Lists change by a list operation (ListOperation: replace_all,
 replace_section, insert, append), which :func:`list_operation` runs for these and ``set_lore``.
 
 Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java,
 SetWritableBookPagesFunction.java, SetFireworksFunction.java, SetFireworkExplosionFunction.java,
-SetBannerPatternFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
+SetBannerPatternFunction.java, SetAttributesFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
 WrittenBookContent.java (EMPTY, CODEC), WritableBookContent.java, Fireworks.java,
-FireworkExplosion.java; world/level/block/entity/BannerPatternLayers.java; server/network/
+FireworkExplosion.java, ItemAttributeModifiers.java; world/level/block/entity/BannerPatternLayers.java; server/network/
 Filterable.java (saved as ``{raw, filtered?}``).
 """
 from __future__ import annotations
 
-from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, List, String
+from mcfunction_parser.nbt import Byte, Compound, Double, Int, IntArray, List, String
+from emulator.world import equipment, living
 from emulator.world.items import EMPTY, ItemStack, set_component
-from emulator.world.loot_context import LootContext, namespaced as _id, not_modelled, to_tag
+from emulator.world.loot_context import LootContext, namespaced as _id, not_modelled, number, to_tag
+from emulator.world.mth import F32
 
 MAX_PAGES = 100  # WritableBookContent / WrittenBookContent.MAX_PAGES
+MODIFIER_IDS = (1, 21, 0)  # attribute modifiers named by an id
+BARE_MODIFIER_LIST = (1, 21, 5)  # ItemAttributeModifiers saved as its list (show_in_tooltip gone to tooltip_display)
 MAX_EXPLOSIONS = 256  # Fireworks.MAX_EXPLOSIONS
 _SMALL_BALL = "small_ball"  # FireworkExplosion.DEFAULT's shape
 
@@ -161,6 +165,51 @@ def _set_banner_pattern(f, stack, ctx):
     return stack
 
 
+def _set_attributes(f, stack, ctx):
+    """SetAttributesFunction (1.21+): each modifier added to the item's (withModifierAdded: one of
+    the same attribute and id is replaced), its slot group drawn from its ``slot`` list
+    (Util.getRandom) before its ``amount`` (getFloat, a float saved as a double); ``replace``
+    (default true) starts from none, else from the item's modifiers (its defaults when it has none)."""
+    version = tuple(ctx.version)
+    if version < MODIFIER_IDS:
+        raise not_modelled("set_attributes", "before 1.21 (modifiers named by a UUID and a name)")
+    current = stack.component("minecraft:attribute_modifiers")
+    entries = [] if f.get("replace", True) else _entries(current) or [
+        _entry(m.attribute, m.id, m.amount, m.operation, m.slot, version) for m in equipment.default_modifiers(stack.id)]
+    for modifier in f.get("modifiers", []):
+        slots = modifier.get("slot", "any")
+        slots = slots if isinstance(slots, list) else [slots]
+        slot = slots[ctx.random.randrange(len(slots))]
+        amount = float(F32(number(modifier.get("amount", 0.0), ctx)))
+        attribute, modifier_id = living.attribute_id(modifier.get("attribute", "")), _id(modifier.get("id", ""))
+        entries = [e for e in entries if not (living.attribute_id(str(e.get("type", ""))) == attribute
+                                              and str(e.get("id", "")) == modifier_id)]
+        entries.append(_entry(attribute, modifier_id, amount, str(modifier.get("operation", "add_value")), slot, version))
+    if version >= BARE_MODIFIER_LIST:
+        set_component(stack, "minecraft:attribute_modifiers", List(entries))
+        return stack
+    wrapped = Compound(modifiers=List(entries))
+    if isinstance(current, dict) and "show_in_tooltip" in current and not f.get("replace", True):
+        wrapped["show_in_tooltip"] = current["show_in_tooltip"]
+    set_component(stack, "minecraft:attribute_modifiers", wrapped)
+    return stack
+
+
+def _entries(component) -> list:
+    found = component.get("modifiers", []) if isinstance(component, dict) else component or []
+    return [Compound(e) for e in found if isinstance(e, dict)]
+
+
+def _entry(attribute: str, modifier_id: str, amount: float, operation: str, slot: str, version) -> Compound:
+    """ItemAttributeModifiers.Entry as saved: ``type`` (the release's attribute id), the modifier's
+    ``id``, ``amount``, ``operation``, and ``slot`` unless it is ``any``."""
+    entry = Compound(type=String(living.saved_attribute_id(attribute, version)), id=String(modifier_id),
+                     amount=Double(amount), operation=String(operation))
+    if slot != "any":
+        entry["slot"] = String(slot)
+    return entry
+
+
 def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
     """DiscardItem: the stack is gone."""
     return EMPTY.copy()
@@ -169,4 +218,4 @@ def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
 FUNCTIONS = {f"minecraft:{k}": v for k, v in {
     "set_book_cover": _set_book_cover, "set_writable_book_pages": _set_writable_book_pages,
     "set_firework_explosion": _set_firework_explosion, "set_fireworks": _set_fireworks,
-    "set_banner_pattern": _set_banner_pattern, "discard": _discard}.items()}
+    "set_banner_pattern": _set_banner_pattern, "set_attributes": _set_attributes, "discard": _discard}.items()}

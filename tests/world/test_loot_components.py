@@ -6,7 +6,11 @@ from __future__ import annotations
 
 import random
 
+import numpy as np
+import pytest
+
 from emulator.world import items, loot
+from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import LootContext
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
@@ -88,3 +92,38 @@ def test_lore_beyond_its_end_is_left_as_it_was():
     stack = modified([{"function": "set_lore", "lore": ["a"]},
                       {"function": "set_lore", "lore": ["b"], "mode": "replace_section", "offset": 3}], "minecraft:stone")
     assert [str(line) for line in stack.component("minecraft:lore")] == ['"a"']
+
+
+DAMAGE = {"attribute": "minecraft:attack_damage", "id": "t:d", "amount": 0.1, "operation": "add_value",
+          "slot": "mainhand"}
+
+
+def test_set_attributes_saves_the_releases_form():
+    # SetAttributesFunction: the amount is getFloat (0.1F saved as a double); the entry's type is
+    # the attribute's id in the release (prefixed before 1.21.2); ItemAttributeModifiers is
+    # {modifiers: [...]} until 1.21.5, its list from then; slot ``any`` is not saved
+    entry = '{amount:0.10000000149011612d,id:"t:d",operation:"add_value",slot:"mainhand",type:"%s"}'
+    stack = modified({"function": "set_attributes", "modifiers": [DAMAGE]}, "minecraft:stone")
+    assert component(stack, "attribute_modifiers") == "{modifiers:[%s]}" % (entry % "minecraft:attack_damage")
+    stack = modified({"function": "set_attributes", "modifiers": [DAMAGE]}, "minecraft:stone", (1, 21, 1))
+    assert component(stack, "attribute_modifiers") == "{modifiers:[%s]}" % (entry % "minecraft:generic.attack_damage")
+    stack = modified({"function": "set_attributes", "modifiers": [{**DAMAGE, "slot": "any"}]}, "minecraft:stone",
+                     (1, 21, 5))
+    assert component(stack, "attribute_modifiers") == \
+        '[{amount:0.10000000149011612d,id:"t:d",operation:"add_value",type:"minecraft:attack_damage"}]'
+
+
+def test_set_attributes_without_replace_adds_to_the_items_defaults():
+    # replace false: the sword's own base_attack_damage and base_attack_speed stay; a modifier of
+    # the same attribute and id replaces the one there (withModifierAdded)
+    steps = [{"function": "set_attributes", "replace": False, "modifiers": [DAMAGE]},
+             {"function": "set_attributes", "replace": False, "modifiers": [{**DAMAGE, "amount": 2}]}]
+    sword = modified(steps, "minecraft:diamond_sword")
+    entries = sword.component("minecraft:attribute_modifiers")["modifiers"]
+    assert [(str(e["id"]), float(e["amount"])) for e in entries] == [
+        ("minecraft:base_attack_damage", 6.0), ("minecraft:base_attack_speed", float(np.float32(-2.4))), ("t:d", 2.0)]
+
+
+def test_set_attributes_before_1_21_is_not_modelled():
+    with pytest.raises(Unmodelled, match="set_attributes"):
+        modified({"function": "set_attributes", "modifiers": [DAMAGE]}, "minecraft:stone", (1, 20, 6))
