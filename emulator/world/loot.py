@@ -16,7 +16,7 @@ set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered
 reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
 before 1.21.4), set_stew_effect, copy_state, and the whole-component writers of
 :mod:`emulator.world.loot_components` (set_book_cover, set_writable_book_pages, set_fireworks,
-set_firework_explosion, set_banner_pattern, discard). Anything else (an entry, function, condition or
+set_firework_explosion, set_banner_pattern, set_attributes, discard), modify_contents. Anything else (an entry, function, condition or
 number provider type) raises :class:`~emulator.world.errors.Unmodelled` naming it: the command
 fails with a diagnostic, never an empty drop in silence. A table, modifier or predicate reached
 again through itself is skipped with a warning (LootContext.pushVisitedElement: the game logs
@@ -366,6 +366,28 @@ def _set_contents(f, stack, ctx):
     return stack
 
 
+def _modify_contents(f, stack, ctx):
+    """ModifyContainerContents (1.21.2+): the ``modifier`` applied to each item of the container,
+    bundle or charged projectiles (ContainerComponentManipulator.modifyItems: empty slots skipped,
+    a container's items kept at their slots, an item the modifier empties gone)."""
+    component = _id(f.get("component", ""))
+    contents = stack.component(component)
+    if stack.is_empty or not isinstance(contents, list):
+        return stack
+    modifier = f.get("modifier", [])
+    if component == "minecraft:container":
+        slots = [(int(e.get("slot", 0)), apply_modifier(modifier, from_nbt(e.get("item", Compound())), ctx))
+                 for e in contents if isinstance(e, dict)]
+        value = List(Compound(slot=Int(i), item=to_nbt(s, ctx.version)) for i, s in slots if not s.is_empty)
+    elif component in ("minecraft:bundle_contents", "minecraft:charged_projectiles"):
+        made = [apply_modifier(modifier, from_nbt(e), ctx) for e in contents if isinstance(e, dict)]
+        value = List(to_nbt(s, ctx.version) for s in made if not s.is_empty)
+    else:
+        raise not_modelled("modify_contents component", component)
+    set_component(stack, component, value)
+    return stack
+
+
 def _put_enchantments(stack, levels: Compound, version) -> None:
     key = "minecraft:stored_enchantments" if stack.id == "minecraft:book" or stack.id == "minecraft:enchanted_book" \
         else "minecraft:enchantments"
@@ -554,4 +576,5 @@ FUNCTIONS: dict[str, Callable] = {f"minecraft:{k}": v for k, v in {
     "set_item": _set_item, "set_potion": _set_potion, "set_loot_table": _set_loot_table, "set_nbt": _set_nbt,
     "filtered": _filtered, "sequence": _sequence, "reference": _reference, "fill_player_head": _fill_player_head,
     "set_ominous_bottle_amplifier": _set_ominous_bottle_amplifier, "set_custom_model_data": _set_custom_model_data,
-    "set_stew_effect": _set_stew_effect, "copy_state": _copy_state}.items()} | COMPONENT_FUNCTIONS
+    "set_stew_effect": _set_stew_effect, "copy_state": _copy_state, "modify_contents": _modify_contents}.items()} \
+    | COMPONENT_FUNCTIONS

@@ -1,7 +1,7 @@
 """The item functions that write one component whole (:mod:`emulator.world.loot_components`), as
 the game saves the component: SetBookCoverFunction, SetWritableBookPagesFunction,
-SetFireworksFunction, SetFireworkExplosionFunction, SetBannerPatternFunction, DiscardItem, and
-ListOperation's bounds (decompiled 1.21)."""
+SetFireworksFunction, SetFireworkExplosionFunction, SetBannerPatternFunction, SetAttributesFunction,
+DiscardItem, ModifyContainerContents, and ListOperation's bounds (decompiled 1.21)."""
 from __future__ import annotations
 
 import random
@@ -14,7 +14,7 @@ from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import LootContext
 from emulator.world.resources import Resources
 from emulator.world.state import WorldState
-from mcfunction_parser.nbt import List, to_snbt
+from mcfunction_parser.nbt import Compound, Int, List, String, to_snbt
 
 V121 = (1, 21, 4)
 
@@ -127,3 +127,18 @@ def test_set_attributes_without_replace_adds_to_the_items_defaults():
 def test_set_attributes_before_1_21_is_not_modelled():
     with pytest.raises(Unmodelled, match="set_attributes"):
         modified({"function": "set_attributes", "modifiers": [DAMAGE]}, "minecraft:stone", (1, 20, 6))
+
+
+def test_modify_contents_applies_the_modifier_to_each_item():
+    # ModifyContainerContents: a container's items keep their slots; one the modifier empties is gone
+    chest = items.ItemStack("minecraft:chest")
+    items.set_component(chest, "minecraft:container", List([
+        Compound(slot=Int(0), item=Compound(id=String("minecraft:stone"), count=Int(2))),
+        Compound(slot=Int(4), item=Compound(id=String("minecraft:dirt"), count=Int(1)))]))
+    ctx = LootContext(WorldState(version=(1, 21, 5), resources=Resources()), random=random.Random(0))
+    modifier = {"function": "modify_contents", "component": "container", "modifier": [
+        {"function": "set_count", "count": 5},
+        {"function": "filtered", "item_filter": {"items": "minecraft:dirt"}, "modifier": {"function": "discard"}}]}
+    chest = loot.apply_modifier(modifier, chest, ctx)
+    assert [(int(e["slot"]), str(e["item"]["id"]), int(e["item"]["count"]))
+            for e in chest.component("minecraft:container")] == [(0, "minecraft:stone", 5)]
