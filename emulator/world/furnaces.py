@@ -111,7 +111,8 @@ def burn_time(block_id: str, stack: ItemStack, resources) -> int:
 
 
 # ---------------------------------------------------------------------- recipes
-def _result(recipe: dict, version) -> ItemStack:
+def recipe_result(recipe: dict, version) -> ItemStack:
+    """A cooking recipe's result stack (an id before 1.20.5, a stack from then)."""
     result = recipe.get("result")
     if isinstance(result, str):
         return ItemStack(_id(result), 1)
@@ -208,7 +209,7 @@ def idle(state, block_id: str, nbt) -> bool:
     if slots.stacks[0].is_empty or slots.stacks[1].is_empty:
         return True
     found = recipe_for(block_id, slots.stacks[0], state.resources, state.version)
-    return not _can_burn(_result(found[1], state.version) if found else None, slots)
+    return not _can_burn(recipe_result(found[1], state.version) if found else None, slots)
 
 
 def _set_lit(blocks, pos, lit: bool) -> None:
@@ -232,7 +233,7 @@ def tick(state, blocks, pos, nbt) -> None:
     fuel, cooking = slots.stacks[1], slots.stacks[0]
     if lit > 0 or (not fuel.is_empty and not cooking.is_empty):
         found = recipe_for(block_id, cooking, resources, version) if not cooking.is_empty else None
-        result = _result(found[1], version) if found else None
+        result = recipe_result(found[1], version) if found else None
         if lit <= 0 and _can_burn(result, slots):
             lit = burn_time(block_id, fuel, resources)
             if lit_total_key is not None:

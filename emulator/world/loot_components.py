@@ -1,11 +1,12 @@
 """Item functions that write one component whole, in the form its codec saves (defaults left out):
 a written book's cover, a writable book's pages, fireworks, a firework star's explosion, a
-banner's patterns and an item's attribute modifiers; and ``discard``. Lists change by a list operation (ListOperation: replace_all,
+banner's patterns and an item's attribute modifiers; and ``furnace_smelt`` and ``discard``, which
+give another stack. Lists change by a list operation (ListOperation: replace_all,
 replace_section, insert, append), which :func:`list_operation` runs for these and ``set_lore``.
 
 Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java,
 SetWritableBookPagesFunction.java, SetFireworksFunction.java, SetFireworkExplosionFunction.java,
-SetBannerPatternFunction.java, SetAttributesFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
+SetBannerPatternFunction.java, SetAttributesFunction.java, SmeltItemFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
 WrittenBookContent.java (EMPTY, CODEC), WritableBookContent.java, Fireworks.java,
 FireworkExplosion.java, ItemAttributeModifiers.java; world/level/block/entity/BannerPatternLayers.java; server/network/
 Filterable.java (saved as ``{raw, filtered?}``).
@@ -13,7 +14,7 @@ Filterable.java (saved as ``{raw, filtered?}``).
 from __future__ import annotations
 
 from mcfunction_parser.nbt import Byte, Compound, Double, Int, IntArray, List, String
-from emulator.world import equipment, living
+from emulator.world import equipment, furnaces, living
 from emulator.world.items import EMPTY, ItemStack, set_component
 from emulator.world.loot_context import LootContext, namespaced as _id, not_modelled, number, to_tag
 from emulator.world.mth import F32
@@ -210,6 +211,21 @@ def _entry(attribute: str, modifier_id: str, amount: float, operation: str, slot
     return entry
 
 
+def _furnace_smelt(f, stack, ctx):
+    """SmeltItemFunction: the first smelting recipe that takes the item gives its result, with the
+    stack's count; with none the stack stays (the game logs a warning). Without the game's data
+    its own recipes are not known: an item no pack recipe takes is not modelled."""
+    if stack.is_empty:
+        return stack
+    found = furnaces.recipe_for("minecraft:furnace", stack, ctx.resources, ctx.version)
+    result = furnaces.recipe_result(found[1], ctx.version) if found is not None else EMPTY
+    if result.is_empty:
+        return stack
+    result = result.copy()
+    result.count = stack.count  # copyWithCount
+    return result
+
+
 def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
     """DiscardItem: the stack is gone."""
     return EMPTY.copy()
@@ -218,4 +234,5 @@ def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
 FUNCTIONS = {f"minecraft:{k}": v for k, v in {
     "set_book_cover": _set_book_cover, "set_writable_book_pages": _set_writable_book_pages,
     "set_firework_explosion": _set_firework_explosion, "set_fireworks": _set_fireworks,
-    "set_banner_pattern": _set_banner_pattern, "set_attributes": _set_attributes, "discard": _discard}.items()}
+    "set_banner_pattern": _set_banner_pattern, "set_attributes": _set_attributes, "furnace_smelt": _furnace_smelt,
+    "discard": _discard}.items()}

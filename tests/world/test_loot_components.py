@@ -142,3 +142,17 @@ def test_modify_contents_applies_the_modifier_to_each_item():
     chest = loot.apply_modifier(modifier, chest, ctx)
     assert [(int(e["slot"]), str(e["item"]["id"]), int(e["item"]["count"]))
             for e in chest.component("minecraft:container")] == [(0, "minecraft:stone", 5)]
+
+
+def test_furnace_smelt_takes_the_packs_smelting_recipe():
+    # SmeltItemFunction: the recipe's result with the stack's count; an item no recipe takes while
+    # the game's own recipes are unknown (no --game-jar) is not modelled, never left in silence
+    recipe = {"type": "minecraft:smelting", "ingredient": "minecraft:cobblestone",
+              "result": {"id": "minecraft:stone"}, "experience": 0.1}
+    state = WorldState(version=V121, resources=Resources(recipes={"t:stone": "minecraft:smelting"},
+                                                         recipe_bodies={"t:stone": recipe}))
+    ctx = LootContext(state, random=random.Random(0))
+    smelted = loot.apply_modifier({"function": "furnace_smelt"}, items.ItemStack("minecraft:cobblestone", 5), ctx)
+    assert (smelted.id, smelted.count) == ("minecraft:stone", 5)
+    with pytest.raises(Unmodelled, match="smelting"):
+        loot.apply_modifier({"function": "furnace_smelt"}, items.ItemStack("minecraft:sand"), ctx)
