@@ -221,8 +221,9 @@ def test_limit_count_filtered_and_custom_data():
 def test_unmodelled_function_is_reported_by_name():
     # not modelled: the test meeting it is inconclusive (Unmodelled), the command fails reported
     with pytest.raises(Unmodelled) as failure:
-        loot.apply_modifier({"function": "furnace_smelt"}, items.ItemStack("minecraft:beef"), context())
-    assert failure.value.report and "minecraft:furnace_smelt" in failure.value.message
+        loot.apply_modifier({"function": "enchant_with_levels", "levels": 30}, items.ItemStack("minecraft:book"),
+                            context())
+    assert failure.value.report and "minecraft:enchant_with_levels" in failure.value.message
     with pytest.raises(Unmodelled, match="enchantment_active_check"):
         roll({"pools": [{"rolls": 1, "conditions": [{"condition": "enchantment_active_check", "active": True}],
                          "entries": [{"type": "item", "name": "a"}]}]})
