@@ -16,7 +16,8 @@ set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered
 reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
 before 1.21.4), set_stew_effect, copy_state, and the whole-component writers of
 :mod:`emulator.world.loot_components` (set_book_cover, set_writable_book_pages, set_fireworks,
-set_firework_explosion, set_banner_pattern, set_attributes, furnace_smelt, discard), modify_contents.
+set_firework_explosion, set_banner_pattern, set_attributes, toggle_tooltips, furnace_smelt, discard),
+modify_contents.
 Anything else (an entry, function, condition or
 number provider type) raises :class:`~emulator.world.errors.Unmodelled` naming it: the command
 fails with a diagnostic, never an empty drop in silence. A table, modifier or predicate reached

@@ -1,12 +1,12 @@
 """Item functions that write one component whole, in the form its codec saves (defaults left out):
 a written book's cover, a writable book's pages, fireworks, a firework star's explosion, a
-banner's patterns and an item's attribute modifiers; and ``furnace_smelt`` and ``discard``, which
+banner's patterns, an item's attribute modifiers and its tooltip display; and ``furnace_smelt`` and ``discard``, which
 give another stack. Lists change by a list operation (ListOperation: replace_all,
 replace_section, insert, append), which :func:`list_operation` runs for these and ``set_lore``.
 
 Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java,
 SetWritableBookPagesFunction.java, SetFireworksFunction.java, SetFireworkExplosionFunction.java,
-SetBannerPatternFunction.java, SetAttributesFunction.java, SmeltItemFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
+SetBannerPatternFunction.java, SetAttributesFunction.java, ToggleTooltips.java (1.21.5), SmeltItemFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
 WrittenBookContent.java (EMPTY, CODEC), WritableBookContent.java, Fireworks.java,
 FireworkExplosion.java, ItemAttributeModifiers.java; world/level/block/entity/BannerPatternLayers.java; server/network/
 Filterable.java (saved as ``{raw, filtered?}``).
@@ -21,6 +21,7 @@ from emulator.world.mth import F32
 
 MAX_PAGES = 100  # WritableBookContent / WrittenBookContent.MAX_PAGES
 MODIFIER_IDS = (1, 21, 0)  # attribute modifiers named by an id
+TOOLTIP_DISPLAY = (1, 21, 5)  # the tooltip_display component (hidden components)
 BARE_MODIFIER_LIST = (1, 21, 5)  # ItemAttributeModifiers saved as its list (show_in_tooltip gone to tooltip_display)
 MAX_EXPLOSIONS = 256  # Fireworks.MAX_EXPLOSIONS
 _SMALL_BALL = "small_ball"  # FireworkExplosion.DEFAULT's shape
@@ -226,6 +227,32 @@ def _furnace_smelt(f, stack, ctx):
     return result
 
 
+def _toggle_tooltips(f, stack, ctx):
+    """ToggleTooltips from 1.21.5: each of ``toggles`` (component -> shown) in order, over the
+    item's tooltip display (TooltipDisplay.withHidden: a hidden component appended to
+    ``hidden_components``, a shown one taken out). Before 1.21.5 each component kept its own
+    ``show_in_tooltip``: not modelled."""
+    if tuple(ctx.version) < TOOLTIP_DISPLAY:
+        raise not_modelled("toggle_tooltips", "before 1.21.5 (each component's show_in_tooltip)")
+    current = stack.component("minecraft:tooltip_display")
+    display = Compound(current) if isinstance(current, dict) else Compound()
+    hidden = [str(c) for c in display.get("hidden_components", [])]
+    for name, shown in f.get("toggles", {}).items():
+        name = _id(name)
+        if shown and name in hidden:
+            hidden.remove(name)
+        elif not shown and name not in hidden:
+            hidden.append(name)
+    display.pop("hidden_components", None)
+    if hidden:
+        display["hidden_components"] = List(String(c) for c in hidden)
+    if display:
+        set_component(stack, "minecraft:tooltip_display", display)
+    else:  # TooltipDisplay.DEFAULT: the item's own, no patch
+        stack.patch.pop("minecraft:tooltip_display", None)
+    return stack
+
+
 def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
     """DiscardItem: the stack is gone."""
     return EMPTY.copy()
@@ -234,5 +261,5 @@ def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
 FUNCTIONS = {f"minecraft:{k}": v for k, v in {
     "set_book_cover": _set_book_cover, "set_writable_book_pages": _set_writable_book_pages,
     "set_firework_explosion": _set_firework_explosion, "set_fireworks": _set_fireworks,
-    "set_banner_pattern": _set_banner_pattern, "set_attributes": _set_attributes, "furnace_smelt": _furnace_smelt,
-    "discard": _discard}.items()}
+    "set_banner_pattern": _set_banner_pattern, "set_attributes": _set_attributes, "toggle_tooltips": _toggle_tooltips,
+    "furnace_smelt": _furnace_smelt, "discard": _discard}.items()}

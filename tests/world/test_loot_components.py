@@ -156,3 +156,16 @@ def test_furnace_smelt_takes_the_packs_smelting_recipe():
     assert (smelted.id, smelted.count) == ("minecraft:stone", 5)
     with pytest.raises(Unmodelled, match="smelting"):
         loot.apply_modifier({"function": "furnace_smelt"}, items.ItemStack("minecraft:sand"), ctx)
+
+
+def test_toggle_tooltips_hides_and_shows_components_in_order():
+    # ToggleTooltips (1.21.5+): TooltipDisplay.withHidden per toggle, in the toggles' order; all
+    # shown again is TooltipDisplay.DEFAULT, no patch. Before 1.21.5: not modelled
+    hide = {"function": "toggle_tooltips", "toggles": {"minecraft:enchantments": False, "dyed_color": False}}
+    stack = modified(hide, "minecraft:stone", (1, 21, 5))
+    assert component(stack, "tooltip_display") == '{hidden_components:["minecraft:enchantments","minecraft:dyed_color"]}'
+    stack = loot.apply_modifier({"function": "toggle_tooltips", "toggles": {"enchantments": True, "dyed_color": True}},
+                                stack, LootContext(WorldState(version=(1, 21, 5), resources=Resources())))
+    assert "minecraft:tooltip_display" not in stack.patch
+    with pytest.raises(Unmodelled, match="toggle_tooltips"):
+        modified(hide, "minecraft:stone")
