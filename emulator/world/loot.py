@@ -15,7 +15,7 @@ enchant_randomly, enchanted_count_increase/looting_enchant, apply_bonus, explosi
 set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered, sequence,
 reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
 before 1.21.4), set_stew_effect, copy_state, and the whole-component writers of
-:mod:`emulator.world.loot_components` (set_book_cover, set_writable_book_pages, set_fireworks,
+:mod:`emulator.world.loot_components` (set_book_cover, set_written_book_pages, set_writable_book_pages, set_fireworks,
 set_firework_explosion, set_banner_pattern, set_attributes, toggle_tooltips, furnace_smelt, discard),
 modify_contents.
 Anything else (an entry, function, condition or
@@ -32,7 +32,6 @@ providers/number/*.java.
 """
 from __future__ import annotations
 
-import json
 import math
 from typing import Any, Callable
 
@@ -46,7 +45,7 @@ from emulator.world.items import (
 )
 from emulator.world.loot_context import (
     LootContext, component_tag, integer, int_range, namespaced as _id, not_modelled, number, path_of as _path,
-    snbt_or_tag, to_tag,
+    snbt_or_tag, stored_text, to_tag,
 )
 from emulator.world.loot_components import FUNCTIONS as COMPONENT_FUNCTIONS, list_operation
 from emulator.world.predicates import item_matches, test as all_hold
@@ -255,13 +254,6 @@ def _set_custom_data(f, stack, ctx):
     return stack
 
 
-def _text(value, ctx: LootContext):
-    """A text component as an item stores it: JSON text before 1.21.5, an NBT value from then."""
-    if tuple(ctx.version) >= (1, 21, 5):
-        return to_tag(value)
-    return String(json.dumps(value, separators=(",", ":"), ensure_ascii=False))
-
-
 def _set_name(f, stack, ctx):
     """SetNameFunction: with ``entity``, the name is resolved as that entity (its scores, NBT and
     selectors from its position); without it, kept as written."""
@@ -272,13 +264,13 @@ def _set_name(f, stack, ctx):
     entity = ctx.entity(f["entity"]) if "entity" in f else None
     if entity is not None and ctx.resolve_text is not None:
         name = ctx.resolve_text(name, entity)
-    set_component(stack, target, _text(name, ctx))
+    set_component(stack, target, stored_text(name, ctx.version))
     return stack
 
 
 def _set_lore(f, stack, ctx):
     """SetLoreFunction: the lines by the list operation (at most ItemLore.MAX_LINES, 256)."""
-    lines = [_text(v, ctx) for v in f.get("lore", [])]
+    lines = [stored_text(v, ctx.version) for v in f.get("lore", [])]
     old = list(stack.component("minecraft:lore") or [])
     set_component(stack, "minecraft:lore", List(list_operation(f, old, lines, MAX_LORE_LINES)))
     return stack

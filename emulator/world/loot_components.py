@@ -1,10 +1,10 @@
 """Item functions that write one component whole, in the form its codec saves (defaults left out):
-a written book's cover, a writable book's pages, fireworks, a firework star's explosion, a
+a written book's cover and pages, a writable book's pages, fireworks, a firework star's explosion, a
 banner's patterns, an item's attribute modifiers and its tooltip display; and ``furnace_smelt`` and ``discard``, which
 give another stack. Lists change by a list operation (ListOperation: replace_all,
 replace_section, insert, append), which :func:`list_operation` runs for these and ``set_lore``.
 
-Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java,
+Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java, SetWrittenBookPagesFunction.java,
 SetWritableBookPagesFunction.java, SetFireworksFunction.java, SetFireworkExplosionFunction.java,
 SetBannerPatternFunction.java, SetAttributesFunction.java, ToggleTooltips.java (1.21.5), SmeltItemFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
 WrittenBookContent.java (EMPTY, CODEC), WritableBookContent.java, Fireworks.java,
@@ -16,7 +16,7 @@ from __future__ import annotations
 from mcfunction_parser.nbt import Byte, Compound, Double, Int, IntArray, List, String
 from emulator.world import equipment, furnaces, living
 from emulator.world.items import EMPTY, ItemStack, set_component
-from emulator.world.loot_context import LootContext, namespaced as _id, not_modelled, number, to_tag
+from emulator.world.loot_context import LootContext, namespaced as _id, not_modelled, number, stored_text, to_tag
 from emulator.world.mth import F32
 
 MAX_PAGES = 100  # WritableBookContent / WrittenBookContent.MAX_PAGES
@@ -81,6 +81,29 @@ def _set_book_cover(f, stack, ctx):
         book.pop("generation", None)
     set_component(stack, "minecraft:written_book_content", book)
     return stack
+
+
+def _set_written_book_pages(f, stack, ctx):
+    """SetWrittenBookPagesFunction: ``pages`` (text components, or ``{raw, filtered}``) by the list
+    operation, at most 100, over the written book content (WrittenBookContent.EMPTY when none);
+    withReplacedPages leaves the book not resolved. A page is stored as the release stores text."""
+    book = _book(stack, "minecraft:written_book_content")
+    if not book:
+        book = Compound(title=_filterable(""), author=String(""))
+    current = [p if isinstance(p, dict) and "raw" in p else Compound(raw=p) for p in book.get("pages", [])]
+    pages = list_operation(f, current, [_page(p, ctx.version) for p in f.get("pages", [])], MAX_PAGES)
+    book.pop("pages", None)
+    book.pop("resolved", None)  # withReplacedPages: resolved false, the default, not saved
+    if pages:
+        book["pages"] = List(pages)
+    set_component(stack, "minecraft:written_book_content", book)
+    return stack
+
+
+def _page(page, version) -> Compound:
+    if isinstance(page, dict) and "raw" in page:
+        return Compound((key, stored_text(page[key], version)) for key in ("raw", "filtered") if key in page)
+    return Compound(raw=stored_text(page, version))
 
 
 def _set_writable_book_pages(f, stack, ctx):
@@ -259,7 +282,8 @@ def _discard(f, stack: ItemStack, ctx: LootContext) -> ItemStack:
 
 
 FUNCTIONS = {f"minecraft:{k}": v for k, v in {
-    "set_book_cover": _set_book_cover, "set_writable_book_pages": _set_writable_book_pages,
+    "set_book_cover": _set_book_cover, "set_written_book_pages": _set_written_book_pages,
+    "set_writable_book_pages": _set_writable_book_pages,
     "set_firework_explosion": _set_firework_explosion, "set_fireworks": _set_fireworks,
     "set_banner_pattern": _set_banner_pattern, "set_attributes": _set_attributes, "toggle_tooltips": _toggle_tooltips,
     "furnace_smelt": _furnace_smelt, "discard": _discard}.items()}

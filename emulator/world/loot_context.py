@@ -24,6 +24,7 @@ advancements/critereon/MinMaxBounds.java, server/commands/LootCommand.java (drop
 """
 from __future__ import annotations
 
+import json
 import math
 import random as _random
 from dataclasses import dataclass, field
@@ -288,6 +289,14 @@ def to_tag(value):
     if isinstance(value, (Compound, List)):
         return copy_tag(value)
     raise not_modelled("value", repr(value))
+
+
+def stored_text(value, version):
+    """A text component as an item's component stores it: JSON text before 1.21.5, an NBT value
+    from then."""
+    if tuple(version) >= (1, 21, 5):
+        return to_tag(value)
+    return String(json.dumps(value, separators=(",", ":"), ensure_ascii=False))
 
 
 def json_nbt(value):

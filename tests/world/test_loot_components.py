@@ -169,3 +169,15 @@ def test_toggle_tooltips_hides_and_shows_components_in_order():
     assert "minecraft:tooltip_display" not in stack.patch
     with pytest.raises(Unmodelled, match="toggle_tooltips"):
         modified(hide, "minecraft:stone")
+
+
+def test_written_pages_leave_the_book_unresolved():
+    # SetWrittenBookPagesFunction: the pages by ListOperation; withReplacedPages sets resolved
+    # false (left out); a page is JSON text before 1.21.5 and an NBT text component from then
+    steps = [{"function": "set_book_cover", "title": "T"},
+             {"function": "set_written_book_pages", "pages": [{"text": "a"}, "b"], "mode": "replace_all"}]
+    book = modified(steps, "minecraft:written_book")
+    assert component(book, "written_book_content") == \
+        """{author:"",pages:[{raw:'{"text":"a"}'},{raw:'"b"'}],title:{raw:"T"}}"""
+    book = modified(steps, "minecraft:written_book", (1, 21, 5))
+    assert component(book, "written_book_content") == '{author:"",pages:[{raw:{text:"a"}},{raw:"b"}],title:{raw:"T"}}'
