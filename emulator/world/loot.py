@@ -14,11 +14,10 @@ copy_custom_data, copy_components (block_entity), set_contents, set_enchantments
 enchant_randomly, enchanted_count_increase/looting_enchant, apply_bonus, explosion_decay,
 set_item, set_potion, set_loot_table, set_nbt/copy_nbt (before 1.20.5), filtered, sequence,
 reference, fill_player_head, set_ominous_bottle_amplifier, set_custom_model_data (its int form,
-before 1.21.4), set_stew_effect, copy_state, and the whole-component writers of
-:mod:`emulator.world.loot_components` (set_book_cover, set_written_book_pages, set_writable_book_pages, set_fireworks,
-set_firework_explosion, set_banner_pattern, set_attributes, toggle_tooltips, furnace_smelt, discard),
-modify_contents.
-Anything else (an entry, function, condition or
+before 1.21.4), set_stew_effect, copy_state, modify_contents, and the whole-component writers of
+:mod:`emulator.world.loot_components` (set_book_cover, set_written_book_pages,
+set_writable_book_pages, set_fireworks, set_firework_explosion, set_banner_pattern,
+set_attributes, toggle_tooltips, furnace_smelt, discard). Anything else (an entry, function, condition or
 number provider type) raises :class:`~emulator.world.errors.Unmodelled` naming it: the command
 fails with a diagnostic, never an empty drop in silence. A table, modifier or predicate reached
 again through itself is skipped with a warning (LootContext.pushVisitedElement: the game logs

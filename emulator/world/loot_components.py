@@ -1,14 +1,17 @@
 """Item functions that write one component whole, in the form its codec saves (defaults left out):
-a written book's cover and pages, a writable book's pages, fireworks, a firework star's explosion, a
-banner's patterns, an item's attribute modifiers and its tooltip display; and ``furnace_smelt`` and ``discard``, which
-give another stack. Lists change by a list operation (ListOperation: replace_all,
-replace_section, insert, append), which :func:`list_operation` runs for these and ``set_lore``.
+a written book's cover and pages, a writable book's pages, fireworks, a firework star's explosion,
+a banner's patterns, an item's attribute modifiers and its tooltip display; and ``furnace_smelt``
+and ``discard``, which give another stack. Lists change by a list operation (ListOperation:
+replace_all, replace_section, insert, append), which :func:`list_operation` runs for these and
+``set_lore``.
 
-Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java, SetWrittenBookPagesFunction.java,
-SetWritableBookPagesFunction.java, SetFireworksFunction.java, SetFireworkExplosionFunction.java,
-SetBannerPatternFunction.java, SetAttributesFunction.java, ToggleTooltips.java (1.21.5), SmeltItemFunction.java, DiscardItem.java; util/ListOperation.java; world/item/component/
-WrittenBookContent.java (EMPTY, CODEC), WritableBookContent.java, Fireworks.java,
-FireworkExplosion.java, ItemAttributeModifiers.java; world/level/block/entity/BannerPatternLayers.java; server/network/
+Sources (decompiled 1.21): world/level/storage/loot/functions/SetBookCoverFunction.java,
+SetWrittenBookPagesFunction.java, SetWritableBookPagesFunction.java, SetFireworksFunction.java,
+SetFireworkExplosionFunction.java, SetBannerPatternFunction.java, SetAttributesFunction.java,
+ToggleTooltips.java (1.21.5), SmeltItemFunction.java, DiscardItem.java; util/ListOperation.java;
+world/item/component/WrittenBookContent.java (EMPTY, CODEC, withReplacedPages),
+WritableBookContent.java, Fireworks.java, FireworkExplosion.java, ItemAttributeModifiers.java,
+TooltipDisplay.java; world/level/block/entity/BannerPatternLayers.java; server/network/
 Filterable.java (saved as ``{raw, filtered?}``).
 """
 from __future__ import annotations
@@ -200,7 +203,8 @@ def _set_attributes(f, stack, ctx):
         raise not_modelled("set_attributes", "before 1.21 (modifiers named by a UUID and a name)")
     current = stack.component("minecraft:attribute_modifiers")
     entries = [] if f.get("replace", True) else _entries(current) or [
-        _entry(m.attribute, m.id, m.amount, m.operation, m.slot, version) for m in equipment.default_modifiers(stack.id)]
+        _entry(m.attribute, m.id, m.amount, m.operation, m.slot, version)
+        for m in equipment.default_modifiers(stack.id)]
     for modifier in f.get("modifiers", []):
         slots = modifier.get("slot", "any")
         slots = slots if isinstance(slots, list) else [slots]
@@ -209,7 +213,8 @@ def _set_attributes(f, stack, ctx):
         attribute, modifier_id = living.attribute_id(modifier.get("attribute", "")), _id(modifier.get("id", ""))
         entries = [e for e in entries if not (living.attribute_id(str(e.get("type", ""))) == attribute
                                               and str(e.get("id", "")) == modifier_id)]
-        entries.append(_entry(attribute, modifier_id, amount, str(modifier.get("operation", "add_value")), slot, version))
+        operation = str(modifier.get("operation", "add_value"))
+        entries.append(_entry(attribute, modifier_id, amount, operation, slot, version))
     if version >= BARE_MODIFIER_LIST:
         set_component(stack, "minecraft:attribute_modifiers", List(entries))
         return stack
