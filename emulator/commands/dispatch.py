@@ -4,8 +4,7 @@ result or raises :class:`~emulator.world.errors.CommandFailure`.
 ``function`` and ``return`` are control flow (each backend queues their work itself). A command
 the emulator does not model succeeds with result 1 and no effect, with a warning once per command
 in the source. Commands whose effect no pack can read back (:data:`NO_OBSERVABLE_EFFECT`: sounds,
-particles, titles, chat to players) and ``forceload add|remove`` (every chunk is always loaded
-here) stop there; any other is *unmodelled*: a test that runs one is
+particles, titles, chat to players) stop there; any other is *unmodelled*: a test that runs one is
 inconclusive, since its pass or failure may hang on the missing effect.
 """
 from __future__ import annotations
@@ -49,10 +48,7 @@ def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:
 
 def _not_modelled(env, cmd: ast.Command) -> int:
     name = getattr(cmd, "name", type(cmd).__name__)
-    if name == "forceload" and cmd.text.split()[1:2] != ["query"]:
-        # every chunk is loaded here, which is what forceload add/remove keep so
-        env.warn(cmd, "'forceload' is not emulated: every chunk is always loaded here")
-    elif name in NO_OBSERVABLE_EFFECT:
+    if name in NO_OBSERVABLE_EFFECT:
         env.warn(cmd, f"'{name}' is not emulated: it succeeds without effect (none a pack can read back)")
     else:
         env.unmodelled(cmd, f"'{name}' is not emulated: it succeeds without effect")

@@ -1,5 +1,5 @@
 """The commands on the world's level data: ``list``, ``weather``, ``difficulty``, ``seed``,
-``defaultgamemode``, ``worldborder``, ``setworldspawn``, ``spawnpoint``, ``spreadplayers`` and ``stopwatch`` (the
+``defaultgamemode``, ``worldborder``, ``setworldspawn``, ``spawnpoint``, ``spreadplayers``, ``forceload`` and ``stopwatch`` (the
 parser keeps them as text, checked against the command tree; each is read again here).
 
 Sources (decompiled 1.21): server/commands/ListPlayersCommand.java (format: the players online),
@@ -10,7 +10,8 @@ DefaultGameModeCommands.java (setMode: the players whose mode the forced game mo
 no game mode is forced here), WorldBorderCommand.java, SetWorldSpawnCommand.java (setSpawn: outside
 the overworld a failure message and result 0), SetSpawnCommand.java (ServerPlayer.setRespawnPosition
 with forced true; the result is the number of players), AngleArgument (wrapDegrees, ``~`` from the
-execution yaw), BlockPosArgument.getSpawnablePos.
+execution yaw), BlockPosArgument.getSpawnablePos, ForceLoadCommand.java (changeForceLoad, queryForceLoad,
+listForceLoad, removeAll; ServerLevel.setChunkForced answers whether the mark changed).
 """
 from __future__ import annotations
 
@@ -26,7 +27,7 @@ from emulator.world.level_settings import DIFFICULTIES, MAX_BORDER_SIZE
 from emulator.world.semantics import wrap32
 from emulator.world.weather import RAIN_DELAY, RAIN_DURATION, THUNDER_DURATION
 from mcfunction_parser import ast, selectors
-from mcfunction_parser.arguments import duration, vec3
+from mcfunction_parser.arguments import duration, vec2, vec3
 from mcfunction_parser.nbt import Byte, Compound, Float, Int, IntArray, String
 from mcfunction_parser.reader import ParseError, Reader
 
@@ -257,7 +258,56 @@ def stopwatch(env, cmd: ast.GenericCommand, ctx) -> int:
         env.state, stopwatch_id)
 
 
+# ---------------------------------------------------------------------- forceload
+MAX_FORCED = 256  # ForceLoadCommand.MAX_CHUNK_LIMIT
+_COLUMN_LIMIT = 30_000_000
+
+
+def forceload(env, cmd: ast.GenericCommand, ctx) -> int:
+    """ForceLoadCommand on the context's level: ``add``/``remove FROM [TO]`` mark or unmark the
+    chunks of the columns' rectangle (at most 256; the result is how many changed, failing when
+    none did), ``remove all`` (0), ``query`` (how many are marked: 0 is a failure message, not a
+    failure) and ``query POS`` (1, or a failure). Every chunk is loaded here whether marked or not:
+    the marks are what a pack reads back."""
+    words = _Words(env, cmd)
+    action = words.word()
+    forced = env.state.forced_chunks.setdefault(ctx.dimension, set())
+    if action == "query":
+        if not words.more():
+            return len(forced)
+        chunk = tuple(c >> 4 for c in _column(words, ctx))
+        if chunk not in forced:
+            raise CommandFailure("commands.forceload.query.failure", f"[{chunk[0]}, {chunk[1]}]", ctx.dimension)
+        return 1
+    if action == "remove" and words.reader.rest_word() == "all":
+        forced.clear()
+        return 0
+    first = _column(words, ctx)
+    second = _column(words, ctx) if words.more() else first
+    (x0, x1), (z0, z1) = sorted((first[0], second[0])), sorted((first[1], second[1]))
+    if x0 < -_COLUMN_LIMIT or z0 < -_COLUMN_LIMIT or x1 >= _COLUMN_LIMIT or z1 >= _COLUMN_LIMIT:
+        raise CommandFailure("argument.pos.outofworld")
+    chunks = [(cx, cz) for cx in range((x0 >> 4), (x1 >> 4) + 1) for cz in range((z0 >> 4), (z1 >> 4) + 1)]
+    if len(chunks) > MAX_FORCED:
+        raise CommandFailure("commands.forceload.toobig", MAX_FORCED, len(chunks))
+    add = action == "add"
+    changed = [c for c in chunks if (c not in forced) == add]
+    forced.update(changed) if add else forced.difference_update(changed)
+    if not changed:
+        raise CommandFailure("commands.forceload.added.failure" if add else "commands.forceload.removed.failure")
+    return len(changed)
+
+
+def _column(words: _Words, ctx) -> tuple[int, int]:
+    """A ColumnPosArgument: its block column (BlockPos.containing of the source's x and z plus a
+    relative offset)."""
+    column = words.read(lambda r: vec2(r, integers=True))
+    return tuple(math.floor(ctx.pos[axis] + c.value) if c.kind == "rel" else int(c.value)
+                 for axis, c in ((0, column.x), (2, column.y)))
+
+
 GENERIC_HANDLERS = {
+    "forceload": forceload,
     "stopwatch": stopwatch,
     "spreadplayers": spreadplayers,
     "list": list_players,

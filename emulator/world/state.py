@@ -521,6 +521,7 @@ class WorldState:
     # entity -> what its last tick saw of its equipment (LivingEntity's lastHandItemStacks, lastArmorItemStacks)
     equipment_seen: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)
     hurt_timers: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> [invulnerableTime, lastHurt] (living)
+    forced_chunks: dict = field(default_factory=dict)  # dimension -> the chunks (x, z) forceload marked
     cloud_victims: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # area effect cloud -> {entity: until}
     swung: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> game time of its last swing (living)
     last_hurt_by: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (attacker, game time) (combat)

@@ -149,10 +149,10 @@ def test_bad_loot_input(tmp_path):
                                           "execute store success score #s v run loot give Steve loot t:smelt\n"
                                           "item modify entity Steve weapon t:nothing\n"})
     _json(pack, "data/t/loot_table/smelt.json", {"pools": [{"rolls": 1, "entries": [
-        {"type": "item", "name": "beef", "functions": [{"function": "furnace_smelt"}]}]}]})
+        {"type": "item", "name": "book", "functions": [{"function": "enchant_with_levels", "levels": 30}]}]}]})
     for emu in _on_both(pack):
         messages = [d.message for d in emu.diagnostics]
-        assert messages == ["Unknown loot table t:missing", "not modelled: item function 'minecraft:furnace_smelt'",
+        assert messages == ["Unknown loot table t:missing", "not modelled: item function 'minecraft:enchant_with_levels'",
                             "Unknown item modifier t:nothing"]
         assert _scores(emu) == {"#s": 0}
 

@@ -8,7 +8,8 @@ SeedCommand ((int) seed), DefaultGameModeCommands.setMode (0: no forced game mod
 WorldBorderCommand (getSize: floor(size + 0.5); setSize: (int)(new - old) and its failures;
 setCenter 0; damage and warning: the value), SetWorldSpawnCommand.setSpawn (1; 0 outside the
 overworld), SetSpawnCommand.setSpawn (the number of players; ServerPlayer.setRespawnPosition as
-saved: SpawnX/Y/Z, SpawnAngle, SpawnDimension, SpawnForced; from 1.21.5 ``respawn``)."""
+saved: SpawnX/Y/Z, SpawnAngle, SpawnDimension, SpawnForced; from 1.21.5 ``respawn``),
+ForceLoadCommand (changeForceLoad, queryForceLoad, listForceLoad, removeAll)."""
 import json
 
 import pytest
@@ -182,3 +183,49 @@ def test_spawnpoint_from_1_21_5_saves_one_respawn_compound(tmp_path):
     emu.call("t:go")
     assert emu.state.version >= (1, 21, 5)
     assert scores(emu, "#y", "#old", "#dim") == [70, 0, 1]
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_forceload_keeps_its_marks_per_level(tmp_path, backend):
+    # ForceLoadCommand.changeForceLoad: the chunks whose mark changed (setChunkForced), failing when
+    # none did; at most 256 (MAX_CHUNK_LIMIT); query counts the level's marks, query POS fails for
+    # an unmarked chunk; remove all returns 0
+    emu = emulator(tmp_path, backend, {
+        "t:add": "execute store result score #a o run forceload add 0 0 31 15",
+        "t:again": "execute store success score #again o run forceload add 5 5",
+        "t:count": "execute store result score #n o run forceload query\n"
+                   "execute store success score #q o run forceload query 17 3\n"
+                   "execute store success score #q2 o run forceload query 40 3\n"
+                   "execute in the_nether store result score #nether o run forceload query",
+        "t:big": "execute store success score #big o run forceload add 0 0 300 0",
+        "t:clear": "execute store result score #r o run forceload remove all\n"
+                   "execute store result score #left o run forceload query"})
+    emu.call("t:add")
+    emu.call("t:again")
+    emu.call("t:count")
+    assert scores(emu, "#a", "#again", "#n", "#q", "#q2", "#nether") == [2, 0, 2, 1, 0, 0]
+    emu.call("t:big")  # 19 chunks in a row: fine; the marks are what changed
+    assert scores(emu, "#big") == [1]
+    emu.call("t:clear")
+    assert scores(emu, "#r", "#left") == [0, 0]
+
+
+@pytest.mark.parametrize("text,message", [
+    ("forceload add 0 0 256 256", "Too many chunks in the specified area (maximum 256, but specified 289)"),
+    ("forceload query 40 3", "Chunk at [2, 0] in minecraft:overworld is not marked for force loading"),
+    ("forceload remove 0 0", "No chunks were removed from force loading"),
+    ("forceload add 30000000 0", "That position is out of this world!"),
+])
+def test_forceload_failures_read_as_the_games(text, message):
+    from emulator.commands.dispatch import run_command
+    from emulator.commands.entities import new_state
+    from emulator.commands.env import Env
+    from emulator.world.context import Context
+    from emulator.world.errors import CommandFailure
+    from mcfunction_parser.diagnostics import Loc
+    from mcfunction_parser.parse import parse_command
+
+    cmd, _ = parse_command(text, Loc("t.mcfunction", 1, 1), (1, 21, 4))
+    with pytest.raises(CommandFailure) as failure:
+        run_command(Env(new_state(), {}, set()), cmd, Context())
+    assert failure.value.message == message

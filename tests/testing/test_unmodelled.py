@@ -16,7 +16,7 @@ FILES = {
     "demo/test/frozen_fails.mcfunction": "tick freeze\nfail \"boom\"\n",
     "demo/test/sounds.mcfunction": "particle flame ~ ~ ~\nplaysound minecraft:block.note_block.harp master @a\n"
                                    "forceload add 0 0\nsucceed\n",
-    "demo/test/forceload_query.mcfunction": "forceload query 0 0\nsucceed\n",
+    "demo/test/locate.mcfunction": "locate structure minecraft:village_plains\nsucceed\n",
     "demo/test/vanilla_tag.mcfunction": "summon pig ~ ~ ~\nassert entity @e[type=#minecraft:logs]\n",
     # light from a block whose shape (and so its light) is not kept here: a fence beside the dummy
     "demo/test/condition.mcfunction": "# @dummy ~ ~ ~\nsetblock ~1 ~ ~ minecraft:oak_fence\n"
@@ -39,7 +39,7 @@ def test_unmodelled_effects_make_tests_inconclusive_with_the_reason(tmp_path, ba
     status = {k: r.status for k, r in results.items()}
     assert status == {"demo:frozen": "inconclusive", "demo:frozen_fails": "inconclusive",
                       "demo:sounds": "passed", "demo:vanilla_tag": "inconclusive", "demo:condition": "inconclusive",
-                      "demo:forceload_query": "inconclusive"}
+                      "demo:locate": "inconclusive"}
     assert "'tick' is not emulated" in results["demo:frozen"].message
     assert results["demo:frozen"].message.endswith("the test passed")
     assert "failed (boom)" in results["demo:frozen_fails"].message
