@@ -37,9 +37,11 @@ BATCH_TICKS = 1000  # ticks run in one call when nothing is watched (Ctrl-C and 
               help="Add a simulated player before anything runs, on the ground (,air: in the air), in the "
                    "overworld (,in=DIM: in that dimension).")
 @click.option("--shuffle", type=int, metavar="SEED", help="Visit unsorted @e in a seeded random order.")
+@click.option("--log", "show_log", is_flag=True,
+              help="Print the run's output lines by tick (say, tellraw and the other messages of --json's log).")
 @fail_option
 def run(packs, ticks, call, set_, until, game_jar, watch, backend, sanitize, json_out, csv_out, mc_version, players,
-        shuffle, no_fail) -> None:
+        shuffle, show_log, no_fail) -> None:
     """Emulate PACKS tick by tick.
 
     Runs #minecraft:load, applies --set and --call in order, then runs --ticks ticks."""
@@ -66,6 +68,8 @@ def run(packs, ticks, call, set_, until, game_jar, watch, backend, sanitize, jso
     wall = time.perf_counter() - started
 
     report = _report(emu, watches, stop, wall, load_commands)
+    if show_log:
+        _print_log(emu, to_stderr="-" in (json_out, csv_out))
     _print_summary(report, emu, to_stderr="-" in (json_out, csv_out))
     outputs = ((json_out, lambda: json.dumps(report, indent=1) + "\n"), (csv_out, lambda: _csv(watches, rows)))
     written = all([write_output(path, text()) for path, text in outputs if path])
@@ -128,6 +132,13 @@ def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float
         "diagnostics": [d.to_json() for d in emu.diagnostics],
         "load_diagnostics": [d.to_json() | {"severity": d.severity} for d in emu.load_diagnostics],
     }
+
+
+def _print_log(emu: Emulator, to_stderr: bool) -> None:
+    """``--log``: each output line with its tick, its kind and where the command stands."""
+    for entry in emu.log:
+        where = f"  ({entry.loc})" if entry.loc else ""
+        click.echo(f"tick {entry.tick} {entry.kind}: {entry.text}{where}", err=to_stderr)
 
 
 def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:

@@ -141,3 +141,12 @@ def test_call_with_macro_arguments(tmp_path):
     assert json.loads(out.read_text())["scores"]["o"]["#m"] == 12
     result = invoke(pack, "--call", "t:m {v: }")
     assert result.exit_code == 2 and "--call" in result.output
+
+
+def test_log_prints_the_output_lines_by_tick(pack):
+    # --log: what the run printed (here `say thirty` in the tick the sum reaches 30), with its tick
+    # and the command's place; without --log the summary alone
+    result = invoke(pack, "--ticks", "4", "--log")
+    lines = [line for line in result.output.splitlines() if line.startswith("tick ")]
+    assert len(lines) == 1 and lines[0].startswith("tick 2 say: [Server] thirty  (")
+    assert not [line for line in invoke(pack, "--ticks", "4").output.splitlines() if line.startswith("tick ")]
