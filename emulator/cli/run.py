@@ -135,10 +135,11 @@ def _report(emu: Emulator, watches: list[Watch], stop: Until | None, wall: float
 
 
 def _print_log(emu: Emulator, to_stderr: bool) -> None:
-    """``--log``: each output line with its tick, its kind and where the command stands."""
+    """``--log``: each output line with its tick, its kind and where the command stands (a tellraw's
+    component as the player reads it)."""
     for entry in emu.log:
         where = f"  ({entry.loc})" if entry.loc else ""
-        click.echo(f"tick {entry.tick} {entry.kind}: {entry.text}{where}", err=to_stderr)
+        click.echo(f"tick {entry.tick} {entry.kind}: {entry.read_text()}{where}", err=to_stderr)
 
 
 def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:

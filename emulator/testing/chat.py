@@ -15,7 +15,6 @@ from emulator.commands import entities as world_entities
 from emulator.world.errors import CommandFailure
 from emulator.world.context import Context
 from emulator.testing.testfile import ChatCheck
-from emulator.world.text import plain_text
 
 SYSTEM_MESSAGES = ("tellraw", "chat")  # log kinds sent with sendSystemMessage
 
@@ -31,11 +30,11 @@ def received(emu, check: ChatCheck, chat_start: int, ctx: Context) -> list[str]:
     each receiver in turn (ChatRecorder.since with a recipient, flat-mapped over the players)."""
     entries = [e for e in emu.log[chat_start:] if e.kind in SYSTEM_MESSAGES]
     if check.receivers is None:
-        return [_text(e) for e in entries for _ in e.receivers]
+        return [e.read_text() for e in entries for _ in e.receivers]
     players = [p for p in _select(emu, check.receivers, ctx) if p.is_player]
     if not players:
         raise NoPlayer()
-    return [_text(e) for p in players for e in entries if p.uuid_string in e.receivers]
+    return [e.read_text() for p in players for e in entries if p.uuid_string in e.receivers]
 
 
 def matches(emu, check: ChatCheck, chat_start: int, ctx: Context) -> list[str]:
@@ -67,5 +66,3 @@ def _select(emu, target, ctx: Context) -> list:
         return []
 
 
-def _text(entry) -> str:
-    return plain_text(entry.text) if entry.kind == "tellraw" else entry.text

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from mcfunction_parser.diagnostics import Loc
+from emulator.world.text import plain_text
 
 
 @dataclass(frozen=True, slots=True)
@@ -21,6 +22,10 @@ class LogEntry:
 
     def to_json(self) -> dict:
         return {"tick": self.tick, "kind": self.kind, "text": self.text, "where": str(self.loc) if self.loc else None}
+
+    def read_text(self) -> str:
+        """What a player reads of the line: a tellraw's component as plain text, others as logged."""
+        return plain_text(self.text) if self.kind == "tellraw" else self.text
 
 
 @dataclass(frozen=True, slots=True)

@@ -150,3 +150,10 @@ def test_log_prints_the_output_lines_by_tick(pack):
     lines = [line for line in result.output.splitlines() if line.startswith("tick ")]
     assert len(lines) == 1 and lines[0].startswith("tick 2 say: [Server] thirty  (")
     assert not [line for line in invoke(pack, "--ticks", "4").output.splitlines() if line.startswith("tick ")]
+
+
+def test_log_shows_a_tellraw_as_the_player_reads_it(tmp_path):
+    # a tellraw's component as plain text (what PackTest's chat assertion reads too)
+    pack = write_pack(tmp_path / "pack", {"t:go": 'tellraw @a [{"text":"a"},{"text":"b","color":"red"}]'}, {})
+    lines = invoke(str(pack), "--player", "Steve@0,64,0", "--call", "t:go", "--log").output.splitlines()
+    assert [line.split("  (")[0] for line in lines if line.startswith("tick ")] == ["tick 0 tellraw: ab"]
