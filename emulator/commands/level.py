@@ -292,7 +292,10 @@ def forceload(env, cmd: ast.GenericCommand, ctx) -> int:
         raise CommandFailure("commands.forceload.toobig", MAX_FORCED, len(chunks))
     add = action == "add"
     changed = [c for c in chunks if (c not in forced) == add]
-    forced.update(changed) if add else forced.difference_update(changed)
+    if add:
+        forced.update(changed)
+    else:
+        forced.difference_update(changed)
     if not changed:
         raise CommandFailure("commands.forceload.added.failure" if add else "commands.forceload.removed.failure")
     return len(changed)

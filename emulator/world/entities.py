@@ -575,7 +575,6 @@ class EntityStore:
         self._carts: tuple[int, list[Entity]] = (0, [])  # (changes then, ``minecarts()``)
         self._picked: dict[str, tuple[int, list[Entity]]] = {}  # ``picked()``'s lists by key
 
-
     @property
     def version(self) -> tuple[int, int, int]:
         """The release the packs run as: what new entities save (kept on the table, which the
@@ -585,6 +584,7 @@ class EntityStore:
     @version.setter
     def version(self, release) -> None:
         self.table.release = tuple(release)
+
     def bind_scoreboard(self, scoreboard) -> None:
         """Intern each new entity's score holder in ``scoreboard`` (the VM reads its scores by holder id)."""
         self.table.intern_holder = scoreboard.holder_id

@@ -135,15 +135,18 @@ def has_attribute(type_id: str, name: str, release=None) -> bool:
 def registered(name: str, release) -> bool:
     """Whether ``release`` registers the attribute (its registry; every one of :data:`DEFAULTS`
     when dpemu has no registry data of it)."""
-    return name in _registered(tuple(release))
+    names = _registry_names(tuple(release))
+    return name in (DEFAULTS if names is None else names)
 
 
 @lru_cache(maxsize=None)
-def _registered(release) -> frozenset[str]:
+def _registry_names(release) -> dict[str, str] | None:
+    """The release's attribute registry names by short id (``max_health`` -> ``generic.max_health``
+    before 1.21.2); None without its registry data."""
     try:
-        return frozenset(attribute_id(entry) for entry in gamedata.registry("attribute", release))
+        return {attribute_id(entry): entry for entry in gamedata.registry("attribute", release)}
     except gamedata.GameDataMissing:
-        return frozenset(DEFAULTS)
+        return None
 
 
 def default_base(type_id: str, name: str) -> float:
@@ -195,17 +198,8 @@ def saved_attribute_id(name: str, release) -> str:
     registry key): ``minecraft:max_health`` from 1.21.2, the release's registry name before it
     (``minecraft:generic.max_health``, ``minecraft:player.block_interaction_range``)."""
     if tuple(release) < UNPREFIXED_ATTRIBUTES:
-        return f"minecraft:{_prefixed(tuple(release)).get(name, 'generic.' + name)}"
+        return f"minecraft:{(_registry_names(tuple(release)) or {}).get(name, 'generic.' + name)}"
     return f"minecraft:{name}"
-
-
-@lru_cache(maxsize=None)
-def _prefixed(release) -> dict[str, str]:
-    """The release's registry names by short id (``max_health`` -> ``generic.max_health``)."""
-    try:
-        return {attribute_id(entry): entry for entry in gamedata.registry("attribute", release)}
-    except gamedata.GameDataMissing:
-        return {}
 
 
 def _instance(entity, name: str) -> Compound:
