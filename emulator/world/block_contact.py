@@ -18,7 +18,6 @@ feet are where these blocks sit) and the block under them (Entity.getOnPos: 0.2 
 from __future__ import annotations
 
 import math
-import weakref
 
 MESSAGE = "a mob standing in or on {} (what the block does to it is not modelled here)"
 CART = "a minecart {} (a minecart riding its rails is not modelled here)"
@@ -37,17 +36,14 @@ def _acts(block_id: str) -> bool:
     return _acts_inside(block_id) or block_id in _STEP_ON
 
 
-# BlockMap -> (its edits then, whether it holds an acting block): looked at again only after a block changed
-_HOLDS_ACTING: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-
-
 def _holds_acting(blocks) -> bool:
     """Whether any block of the level would act on a mob (the common world has none: no mob's
     position need be read)."""
-    known = _HOLDS_ACTING.get(blocks)
-    if known is None or known[0] != blocks.edits:
-        known = _HOLDS_ACTING[blocks] = (blocks.edits, any(_acts(s.id) for s in blocks.states.values()))
-    return known[1]
+    return blocks.derived("acting on mobs", _find_acting)
+
+
+def _find_acting(blocks) -> bool:
+    return any(_acts(s.id) for s in blocks.states.values())
 
 
 def _touched(state, entity) -> list[str]:
@@ -77,11 +73,19 @@ def _moving_carts(state):
             yield CART.format("on a powered rail")
 
 
+def _any_acting(state) -> bool:
+    return _holds_acting(state.blocks) or any(_holds_acting(blocks) for blocks in state.other_levels_blocks.values())
+
+
+def _may_act(state) -> bool:
+    """Whether there is anything to look at: a minecart, or a block that acts on a mob."""
+    return bool(state.entities.minecarts()) or _any_acting(state)
+
+
 def _unreported(state):
     carts = state.entities.minecarts()
-    acting = any(_holds_acting(blocks) for blocks in state.all_blocks())
-    mobs = state.entities.living_mobs() if acting else ()
-    if not (mobs or carts):  # the commonest tick of all: nothing to look at
+    mobs = state.entities.living_mobs() if _any_acting(state) else ()
+    if not (mobs or carts):
         return
     touched = [MESSAGE.format(block_id) for entity in mobs for block_id in _touched(state, entity)]
     touched += _moving_carts(state) if carts else ()
@@ -94,9 +98,11 @@ def _unreported(state):
 
 
 def tick_report(state) -> None:
+    if not _may_act(state):  # the commonest tick of all
+        return
     for message in dict.fromkeys(_unreported(state)):  # in the mobs' order, each once
         state.error(message, severity="warning", unmodelled=True)
 
 
 def tick_is_idle(state) -> bool:
-    return next(_unreported(state), None) is None
+    return not _may_act(state) or next(_unreported(state), None) is None

@@ -47,7 +47,16 @@ def _levels(state):
 _TICKED: set = set()
 
 
+def _nothing_to_tick(state) -> bool:
+    """No block entity in any level and no minecart (a hopper minecart's work is reported here): the
+    common world, every tick."""
+    return (not state.blocks.entities and not state.entities.minecarts()
+            and not any(blocks.entities for blocks in state.other_levels_blocks.values()))
+
+
 def tick_block_entities(state) -> None:
+    if _nothing_to_tick(state):
+        return
     cart = hoppers.minecart_would_pull(state)  # an entity's work, reported with the hoppers'
     if cart is not None:
         _report(state, cart)
@@ -69,6 +78,8 @@ def tick_block_entities(state) -> None:
 
 
 def tick_is_idle(state) -> bool:
+    if _nothing_to_tick(state):
+        return True
     cart = hoppers.minecart_would_pull(state)
     if cart is not None and not _reported(state, cart):
         return False

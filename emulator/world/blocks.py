@@ -199,6 +199,14 @@ class BlockMap:
         # set by the world (its recipes decide: emulator.world.furnaces.input_set)
         self.furnace_input_set: Callable | None = None
         self.edits = 0  # block states set so far: what is derived from the whole map is kept until it grows
+        self._derived: dict[str, tuple[int, object]] = {}  # derived(): key -> (edits then, the value)
+
+    def derived(self, key: str, make: Callable[["BlockMap"], object]):
+        """``make(self)``, made again only after a block state was set (``key`` names it)."""
+        known = self._derived.get(key)
+        if known is None or known[0] != self.edits:
+            known = self._derived[key] = (self.edits, make(self))
+        return known[1]
 
     def get(self, pos) -> BlockState:
         return self.states.get(tuple(pos), BlockState(AIR))

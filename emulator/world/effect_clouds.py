@@ -40,8 +40,13 @@ EVERY = 5
 HEIGHT = 0.5
 
 
+def _is_cloud(entity_type: str) -> bool:
+    return entity_type == CLOUD
+
+
 def _clouds(state):
-    return [e for e in state.entities.picked(CLOUD, lambda t: t == CLOUD) if e.alive]
+    clouds = state.entities.picked(CLOUD, _is_cloud)
+    return [e for e in clouds if e.alive] if clouds else clouds
 
 
 def tick_is_idle(state) -> bool:

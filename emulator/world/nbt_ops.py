@@ -41,12 +41,15 @@ from contextvars import ContextVar
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import (
     ARRAY_TYPES,
+    Byte,
     Compound,
     Double,
     Float,
     INT_RANGES as INT_BITS,
+    Int,
     List,
     Long,
+    Short,
     NUMERIC_TYPES,
     String,
     to_snbt,
@@ -90,8 +93,11 @@ def int_at(compound, key: str, default: int = 0) -> int:
 
 def tags_equal(a, b) -> bool:
     """``Tag.equals``: same tag type and equal content (floats compare with ``==``, so NaN != NaN)."""
-    if type(a) is not type(b):
+    kind = type(a)
+    if kind is not type(b):
         return False
+    if kind in _LEAF_TAGS:  # the common case first: a number or a string
+        return a == b
     if isinstance(a, dict):
         if a.keys() != b.keys():
             return False
@@ -99,14 +105,19 @@ def tags_equal(a, b) -> bool:
             if not tags_equal(value, b[key]):
                 return False
         return True
-    if isinstance(a, list) and not isinstance(a, ARRAY_TYPES):
+    if isinstance(a, list) and kind not in ARRAY_TYPES:
         if len(a) != len(b):
             return False
+        if not a:  # an empty inventory: no zip to make
+            return True
         for x, y in zip(a, b):
             if not tags_equal(x, y):
                 return False
         return True
     return a == b
+
+
+_LEAF_TAGS = frozenset({Byte, Short, Int, Long, Float, Double, String})
 
 
 def copy_tag(tag):
