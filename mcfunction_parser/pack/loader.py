@@ -250,7 +250,8 @@ def _collect(path: Path, root: PackPath, shown: str, meta: PackMeta | None, targ
              version: Version, diagnostics: list[Diagnostic]) -> _PackFiles:
     """The pack's data files with the matching overlays laid over the base."""
     label = f"{version_label(version)} (format {format_label(target)})"
-    if meta is not None and meta.supported is not None and newer_than_known(meta.supported.min):
+    if (meta is not None and meta.supported is not None and newer_than_known(meta.supported.min)
+            and version == LATEST_RELEASE):  # (else --mc chose an older release: incompatible, below)
         diagnostics.append(Diagnostic(
             WARNING, f"pack format {format_label(meta.supported.min)} is newer than every release dpemu knows: "
             f"it runs as the newest, {label}", f"{shown.rstrip('/')}/pack.mcmeta"))

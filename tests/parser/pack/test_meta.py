@@ -109,6 +109,16 @@ def test_format_newer_than_every_known_release_warns_once_and_runs_as_the_newest
     assert loaded.version == (26, 2, 0) and not loaded.errors
 
 
+def test_format_newer_than_every_known_release_checked_for_an_older_mc_is_incompatible(make_pack):
+    # --mc chose the release: the pack does not run as the newest one, it is one the chosen release
+    # lists as incompatible (PackCompatibility.forVersion: TOO_NEW)
+    root = make_pack(meta_json={"pack": {"description": "", "min_format": [120, 0], "max_format": 130}})
+    loaded = load_packs([root], mc_version="1.21.4")
+    [warning] = loaded.warnings
+    assert warning.message == "pack supports formats 120-130, not 1.21.4 (format 61): the game lists it as incompatible"
+    assert loaded.version == (1, 21, 4)
+
+
 def test_26_1_pack_runs_as_26_1_2(make_pack):
     loaded = load_packs([make_pack(meta_json={"pack": {"description": "", "min_format": [101, 1], "max_format": [101, 1]}})])
     assert loaded.version == (26, 1, 2) and not loaded.warnings
