@@ -8,10 +8,15 @@ string it is about (its line and column in the file).
 - ``ENTRY_TYPES``, ``FUNCTION_TYPES``, ``NUMBER_TYPES``: type name -> (first release, first
   release without it). Conditions are checked as predicate files are
   (:func:`mcfunction_parser.pack.conditions.problem`: types per release, required fields).
+- ``REQUIRED_FIELDS``: the fields an item function's codec requires, per release (from 1.14.4).
 
 Sources: decompiled 1.21 world/level/storage/loot/entries/LootPoolEntries.java,
 functions/LootItemFunctions.java, providers/number/NumberProviders.java; renames and additions from the minecraft.wiki "Loot table",
-"Item modifier" and "Predicate" pages (history sections).
+"Item modifier" and "Predicate" pages (history sections); required fields from each function's
+class decompiled (Mojang mappings) in every release 1.14.4 - 1.21.3, 1.21.7, 1.21.11 (FilteredFunction)
+and 26.1.2 (Serializer.deserialize before 1.20.2, the CODEC from it), the releases between dated by
+SpyglassMC vanilla-mcdoc's loot/function.mcdoc (filtered's ``modifier`` gone in 25w43a, 1.21.11;
+set_custom_model_data's ``value`` in 24w45a, 1.21.4).
 """
 from __future__ import annotations
 
@@ -64,6 +69,51 @@ _NUMBER_FIELDS = {f"minecraft:{k}": v for k, v in {
     "enchanted_count_increase": ("count",), "looting_enchant": ("count",),
     "set_ominous_bottle_amplifier": ("amplifier",)}.items()}
 _MODIFIER_FIELDS = {"minecraft:filtered": ("modifier", "on_pass", "on_fail")}
+_CHECKED_FROM = (1, 14, 4)  # the oldest release whose source confirms the fields below
+
+
+def _fields(spec: str) -> tuple[tuple[str, str, Version, Version | None], ...]:
+    """``"lore[] mode@1.20.5"`` -> (field, "[]" a list / "{}" an object / "" any, first release,
+    first release without it) each; ``@FROM-UNTIL`` (either may be left out) bounds the releases."""
+    def release(text: str, default):
+        return tuple((list(map(int, text.split("."))) + [0, 0])[:3]) if text else default
+    found = []
+    for word in spec.split():
+        word, _, span = word.partition("@")
+        first, _, until = span.partition("-")
+        shape = word[-2:] if word[-2:] in ("[]", "{}") else ""
+        found.append((word.removesuffix(shape), shape, release(first, _CHECKED_FROM), release(until, None)))
+    return tuple(found)
+
+
+# The fields an item function's codec requires, a missing one refusing the file: from 1.20.2 the
+# function's CODEC (RecordCodecBuilder ``fieldOf``, not ``optionalFieldOf`` / ``strictOptionalField``
+# / ``fieldOf(..).orElse``; ``mode`` is ListOperation.codec's ``dispatchMap("mode")``); 1.14.4 -
+# 1.20.1 its Serializer.deserialize (``GsonHelper.getAsX(json, "name")`` with no default; set_count's
+# and enchant_with_levels' ``json.get(..)`` throw without it before 1.17). Not listed, as no release
+# requires a field of them: set_name (``name`` is optional), set_enchantments, enchant_randomly,
+# exploration_map, set_stew_effect, set_fireworks, set_firework_explosion, set_book_cover,
+# set_random_potion, furnace_smelt, explosion_decay, discard.
+REQUIRED_FIELDS = {f"minecraft:{k}": _fields(v) for k, v in {
+    "apply_bonus": "enchantment formula", "copy_name": "source", "copy_components": "source",
+    "copy_nbt": "source ops[]", "copy_custom_data": "source ops[]", "copy_state": "block properties[]@1.20.2",
+    "enchant_with_levels": "levels", "enchanted_count_increase": "enchantment count", "looting_enchant": "count",
+    "fill_player_head": "entity", "filtered": "item_filter modifier@1.20.5-1.21.11", "limit_count": "limit",
+    "modify_contents": "component modifier", "reference": "name", "sequence": "functions",
+    "set_attributes": "modifiers[]", "set_banner_pattern": "patterns[] append", "set_components": "components{}",
+    "set_contents": "entries[] type@1.18-1.20.5 component@1.20.5", "set_count": "count", "set_damage": "damage",
+    "set_custom_data": "tag", "set_nbt": "tag", "set_custom_model_data": "value@-1.21.4", "set_instrument": "options",
+    "set_item": "item", "set_loot_table": "name type@1.18", "set_lore": "lore[] mode@1.20.5",
+    "set_ominous_bottle_amplifier": "amplifier", "set_potion": "id", "set_random_dyes": "number_of_dyes",
+    "set_writable_book_pages": "pages[] mode", "set_written_book_pages": "pages[] mode", "toggle_tooltips": "toggles{}",
+}.items()}
+# the same for each object of a list field: SetAttributesFunction.Modifier (``name`` until 1.21, a
+# ``id`` from it), SetStewEffectFunction.EffectEntry, CopyNbtFunction/CopyCustomDataFunction.CopyOperation
+_ELEMENT_FIELDS = {(f"minecraft:{k}", key): _fields(v) for (k, key), v in {
+    ("set_attributes", "modifiers"): "attribute operation amount slot name@-1.21 id@1.21",
+    ("set_stew_effect", "effects"): "type duration",
+    ("copy_nbt", "ops"): "source target op", ("copy_custom_data", "ops"): "source target op",
+}.items()}
 
 
 def known(table: dict, name: str, version: Version) -> bool:
@@ -178,6 +228,8 @@ class _Checker:
             self.report(ERROR, "an item function must be a JSON object", "function")
             return
         kind = self.type_of(function, "function", FUNCTION_TYPES, "item function")
+        if kind is not None:
+            self.fields(kind, function)
         self.conditions(function.get("conditions", []))
         if kind == "minecraft:set_components" and isinstance(function.get("components"), dict):
             for name in function["components"]:
@@ -192,6 +244,24 @@ class _Checker:
         for key in _MODIFIER_FIELDS.get(kind, ()):
             if key in function:
                 self.function(function[key])
+
+    def fields(self, kind: str, function: dict) -> None:
+        """The fields the function's codec requires in this release (REQUIRED_FIELDS, and those of
+        each object of a list field), each problem at the function's type string."""
+        what = f"item function '{function['function']}'"
+        checks = [(function, REQUIRED_FIELDS.get(kind, ()), what)]
+        for (name, key), spec in _ELEMENT_FIELDS.items():
+            if name == kind and isinstance(function.get(key), list):
+                checks += [(e, spec, f'{what}: an entry of "{key}"') for e in function[key] if isinstance(e, dict)]
+        for node, spec, where in checks:
+            for field, shape, first, until in spec:
+                if not (first <= self.version and (until is None or self.version < until)):
+                    continue
+                if field not in node:
+                    self.report(ERROR, f'{where} needs "{field}"', None)
+                elif shape and not isinstance(node[field], list if shape == "[]" else dict):
+                    kind_of = "list" if shape == "[]" else "JSON object"
+                    self.report(ERROR, f'{where}: "{field}" must be a {kind_of}', None)
 
     def item(self, name: str) -> None:
         """An item id in the release's item registry (an error against that release's own data,
