@@ -25,29 +25,33 @@ from mcfunction_parser.pack.text import JsonDocument
 Version = tuple[int, int, int]
 OLDEST = (1, 13, 0)
 
-# type -> (first release, first release without it)
+# type -> (first release, first release without it): the types LootItemConditions registers
+# (LootConditionManager in 1.13.2: random_chance, random_chance_with_looting, entity_properties,
+# killed_by_player, entity_scores; 18w43a, 1.14, the rest of 1.14.4's), per snapshot 1.14.4 - 1.21.3
+# and in 1.21.7, 1.21.11 and 26.1.2 (environment_attribute_check: 26.1-pre1 in SpyglassMC vanilla-mcdoc)
 CONDITION_TYPES: dict[str, tuple[Version, Version | None]] = {
-    "inverted": (OLDEST, None),
-    "alternative": (OLDEST, (1, 20, 0)),
-    "any_of": ((1, 20, 0), None),
+    "inverted": ((1, 14, 0), None),
+    "alternative": ((1, 14, 0), (1, 20, 0)),
+    "any_of": ((1, 20, 0), None),  # 23w18a, in alternative's place
     "all_of": ((1, 20, 0), None),
     "random_chance": (OLDEST, None),
     "random_chance_with_looting": (OLDEST, (1, 21, 0)),
-    "random_chance_with_enchanted_bonus": ((1, 21, 0), None),
+    "random_chance_with_enchanted_bonus": ((1, 21, 0), None),  # 24w18a
     "entity_properties": (OLDEST, None),
     "killed_by_player": (OLDEST, None),
     "entity_scores": (OLDEST, None),
     "block_state_property": ((1, 14, 0), None),
     "match_tool": ((1, 14, 0), None),
     "table_bonus": ((1, 14, 0), None),
-    "survives_explosion": (OLDEST, None),
-    "damage_source_properties": (OLDEST, None),
+    "survives_explosion": ((1, 14, 0), None),
+    "damage_source_properties": ((1, 14, 0), None),
     "location_check": ((1, 14, 0), None),
     "weather_check": ((1, 14, 0), None),
-    "reference": ((1, 15, 0), None),
-    "time_check": ((1, 16, 0), None),
-    "value_check": ((1, 17, 0), None),
-    "enchantment_active_check": ((1, 21, 0), None),
+    "reference": ((1, 15, 0), None),  # 19w38a
+    "time_check": ((1, 15, 0), None),  # 19w38a
+    "value_check": ((1, 17, 0), None),  # 20w46a
+    "enchantment_active_check": ((1, 21, 0), None),  # 24w18a
+    "environment_attribute_check": ((26, 1, 0), None),
 }
 
 # fields the codec requires, per type (a missing one refuses the file)
@@ -58,6 +62,7 @@ _REQUIRED = {
     "value_check": ("value", "range"), "table_bonus": ("enchantment", "chances"),
     "random_chance_with_enchanted_bonus": ("enchantment", "enchanted_chance"),
     "random_chance_with_looting": ("chance", "looting_multiplier"), "enchantment_active_check": ("active",),
+    "environment_attribute_check": ("attribute", "value"),
 }
 ENTITY_TARGETS = {"this", "attacker", "direct_attacker", "attacking_player",  # 1.21 names
                   "killer", "direct_killer", "killer_player"}  # before 1.21

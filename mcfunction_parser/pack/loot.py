@@ -10,9 +10,8 @@ string it is about (its line and column in the file).
   (:func:`mcfunction_parser.pack.conditions.problem`: types per release, required fields).
 - ``REQUIRED_FIELDS``: the fields an item function's codec requires, per release (from 1.14.4).
 
-Sources: decompiled 1.21 world/level/storage/loot/entries/LootPoolEntries.java,
-functions/LootItemFunctions.java, providers/number/NumberProviders.java; renames and additions from the minecraft.wiki "Loot table",
-"Item modifier" and "Predicate" pages (history sections); required fields from each function's
+Sources: the types each release registers (see the tables: the registration classes decompiled
+per snapshot and release, 1.13.2 - 26.1.2); required fields from each function's
 class decompiled (Mojang mappings) in every release 1.14.4 - 1.21.3, 1.21.7, 1.21.11 (FilteredFunction)
 and 26.1.2 (Serializer.deserialize before 1.20.2, the CODEC from it), the releases between dated by
 SpyglassMC vanilla-mcdoc's loot/function.mcdoc (filtered's ``modifier`` gone in 25w43a, 1.21.11;
@@ -38,31 +37,62 @@ def _table(names: str, span=_ALWAYS) -> dict[str, tuple[Version, Version | None]
     return {f"minecraft:{name}": span for name in names.split()}
 
 
-ENTRY_TYPES = _table("item tag loot_table dynamic empty alternatives group sequence")
+def _since(release: Version) -> tuple[Version, None]:
+    return release, None
+
+
+# Each span from the release's registration class, decompiled: 1.13.2 LootEntry.Serializer /
+# LootFunctionManager / LootConditionManager (MCP names); 1.14.4 - 1.21.3 LootPoolEntries,
+# LootItemFunctions, LootItemConditions, RandomIntGenerators (until 1.17) and NumberProviders, snapshot
+# by snapshot (MinecraftDeobfuscated-Mojang) and again per release (extracted_minecraft_data, to
+# 1.21.4); then 1.21.7, 25w45a, 1.21.11 and 26.1.2. The snapshot named is the first registering the
+# type: from the per-snapshot code up to 1.21.3, and as SpyglassMC vanilla-mcdoc dates it after (the
+# code of 1.21.7, 1.21.11 and 26.1.2 bounding the release). 1.14's types are in the first 1.14
+# snapshot, 18w43a, or soon after (misode's 18w43a notes), none in 1.13.2.
+ENTRY_TYPES = {
+    **_table("item loot_table empty"),  # 1.13: LootEntry.Serializer's three names
+    # 1.14 (the 18w43a loot rework): LootPoolEntries, the tag and composite entries
+    **_table("tag dynamic alternatives group sequence", _since((1, 14, 0))),
+    **_table("slots", _since((1, 21, 11))),  # 25w44a: LootPoolEntries.SLOTS (SlotLoot)
+}
 FUNCTION_TYPES = {
-    **_table("set_count enchant_with_levels enchant_randomly set_damage set_attributes set_name "
-             "exploration_map set_stew_effect copy_name set_contents limit_count apply_bonus set_loot_table "
-             "explosion_decay set_lore fill_player_head copy_state set_banner_pattern set_potion "
-             "furnace_smelt set_enchantments set_instrument reference sequence filtered"),
-    **_table("set_nbt copy_nbt", ((1, 13, 0), (1, 20, 5))),
-    **_table("looting_enchant", ((1, 13, 0), (1, 21, 0))),
+    # 1.13: LootFunctionManager
+    **_table("set_count enchant_with_levels enchant_randomly furnace_smelt set_damage set_attributes set_name "
+             "exploration_map"),
+    **_table("set_nbt", ((1, 13, 0), (1, 20, 5))),  # 24w09a: set_custom_data/set_components in its place
+    **_table("looting_enchant", ((1, 13, 0), (1, 21, 0))),  # 24w18a: enchanted_count_increase in its place
+    # 1.14 snapshots: LootItemFunctions
+    **_table("set_stew_effect copy_name set_contents limit_count apply_bonus set_loot_table explosion_decay "
+             "set_lore fill_player_head", _since((1, 14, 0))),
+    **_table("copy_nbt", ((1, 14, 0), (1, 20, 5))),  # 24w09a: copy_custom_data/copy_components in its place
+    **_table("copy_state", _since((1, 15, 0))),  # 19w36a
+    **_table("set_banner_pattern set_enchantments", _since((1, 17, 0))),  # 20w45a, 20w46a
+    **_table("set_potion", _since((1, 18, 0))),  # 21w39a
+    **_table("set_instrument", _since((1, 19, 0))),  # 22w18a (22w17a's set_goat_horn_sound renamed)
+    **_table("reference", _since((1, 20, 0))),  # 23w14a: FunctionReference
+    **_table("sequence", _since((1, 20, 2))),  # 23w32a: SequenceFunction
+    # 24w09a - 24w13a; filtered, set_item, modify_contents and set_custom_model_data in 1.20.5-pre1
     **_table("set_custom_data set_components copy_components copy_custom_data toggle_tooltips "
              "set_fireworks set_firework_explosion set_book_cover set_written_book_pages "
-             "set_writable_book_pages set_custom_model_data set_ominous_bottle_amplifier", _COMPONENTS),
-    **_table("enchanted_count_increase", _V121),
-    **_table("set_item modify_contents", ((1, 21, 2), None)),
-    **_table("discard set_random_dyes set_random_potion", ((1, 21, 5), None)),
+             "set_writable_book_pages set_custom_model_data set_ominous_bottle_amplifier "
+             "filtered set_item modify_contents", _COMPONENTS),
+    **_table("enchanted_count_increase", _V121),  # 24w18a
+    **_table("discard", _since((1, 21, 11))),  # 25w43a: DiscardItem
+    **_table("set_random_dyes set_random_potion", _since((26, 1, 0))),  # 26.1 snapshot 1
 }
-CONDITION_TYPES = {
-    **_table("inverted random_chance entity_properties killed_by_player entity_scores "
-             "block_state_property match_tool table_bonus survives_explosion damage_source_properties "
-             "location_check weather_check reference time_check value_check"),
-    **_table("alternative", ((1, 13, 0), (1, 20, 0))),
-    **_table("any_of all_of", ((1, 20, 0), None)),
-    **_table("random_chance_with_looting", ((1, 13, 0), (1, 21, 0))),
-    **_table("random_chance_with_enchanted_bonus enchantment_active_check", _V121),
+# the condition types as predicate files have them (one table: conditions.CONDITION_TYPES)
+CONDITION_TYPES = {f"minecraft:{name}": span for name, span in predicate_files.CONDITION_TYPES.items()}
+# 1.13's RandomValueRange reads only "min"/"max" (a "type" is ignored, so a uniform form loads);
+# 18w43a (1.14) RandomIntGenerators: uniform, binomial, constant; NumberProviders from 20w46a (1.17)
+NUMBER_TYPES = {
+    **_table("uniform"),
+    **_table("constant binomial", _since((1, 14, 0))),
+    **_table("score", _since((1, 17, 0))),  # 20w46a
+    **_table("storage", _COMPONENTS),  # 24w12a: StorageValue
+    **_table("enchantment_level", _V121),  # 24w18a
+    **_table("sum", _since((26, 1, 0))),  # 26.1 snapshot 1
+    **_table("environment_attribute", _since((26, 1, 0))),  # 26.1-pre1
 }
-NUMBER_TYPES = _table("constant uniform binomial score storage enchantment_level")
 # the fields of a function that hold a number provider, or another item modifier
 _NUMBER_FIELDS = {f"minecraft:{k}": v for k, v in {
     "set_count": ("count",), "set_damage": ("damage",), "enchant_with_levels": ("levels",),

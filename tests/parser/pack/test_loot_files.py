@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import json
 
+import pytest
+
 from mcfunction_parser import load_packs
 from tests.conftest import write_pack
 
@@ -54,12 +56,12 @@ def test_types_are_checked_for_the_version(tmp_path):
 
 def test_conditions_are_checked_as_predicate_files_are(tmp_path):
     # LootItemConditions' codec, the same in a loot table as in a predicate file: the release's
-    # types (alternative until 1.20, any_of from then) and the required fields
+    # types (alternative 1.14 - 1.19.4, any_of from 1.20) and the required fields
     pool = {"rolls": 1, "entries": [{"type": "item", "name": "stone"}],
             "conditions": [{"condition": "alternative", "terms": []}, {"condition": "entity_scores", "entity": "this"}]}
     root = write_pack(tmp_path / "p", {"a/loot_table/x.json": json.dumps({"pools": [pool]})})
     found = [(e.line, e.message) for e in load_packs([root], mc_version="1.21").errors]
-    assert found == [(1, "unknown predicate condition type 'alternative' in this release (it exists from 1.13.0 until "
+    assert found == [(1, "unknown predicate condition type 'alternative' in this release (it exists from 1.14.0 until "
                          "1.20.0)"), (1, "condition 'entity_scores' needs the field \"scores\"")]
     pool["conditions"] = [{"condition": "alternative", "terms": []}]
     old = write_pack(tmp_path / "old", {"a/loot_tables/x.json": json.dumps({"pools": [pool]})})
@@ -145,9 +147,8 @@ _CODEC_ERA = {  # 1.21.4 (as 1.21.3 and 1.21.7); the class's CODEC unless named 
 _MINIMAL = {
     (1, 21, 4): _CODEC_ERA,
     # 1.20.5: SetCustomModelDataFunction.CODEC value fieldOf, LootingEnchantFunction.CODEC count
-    # fieldOf, no enchanted_count_increase (set_item and modify_contents left out: dpemu has them from 1.21.2)
-    (1, 20, 5): {**{k: v for k, v in _CODEC_ERA.items()
-                    if k not in ("enchanted_count_increase", "set_item", "modify_contents", "set_custom_model_data")},
+    # fieldOf, no enchanted_count_increase (set_item and modify_contents registered from 1.20.5-pre1)
+    (1, 20, 5): {**{k: v for k, v in _CODEC_ERA.items() if k not in ("enchanted_count_increase", "set_custom_model_data")},
                  "set_custom_model_data": {"value": 1}, "looting_enchant": {"count": 1}},
     # 1.20.4 (codecs since 1.20.2): SetLoreFunction.CODEC replace fieldOf(..).orElse, no mode;
     # SetContainerContents.CODEC type fieldOf; SetNbtFunction/CopyNbtFunction.CODEC; no component functions
@@ -279,3 +280,108 @@ def test_a_function_missing_a_field_leaves_its_file_out(tmp_path):
         ("m.json", 1, 15, "item function 'set_count' needs \"count\""),
         ("x.json", 3, 32, "item function 'minecraft:set_lore' needs \"mode\"")]
     assert set(packs.loot_tables) == {"a:good"} and packs.item_modifiers == {}
+
+
+# ---------------------------------------------------------------- the release each type appears in
+# Each type from the release whose registration class first has it (decompiled: 1.13.2
+# LootEntry.Serializer / LootFunctionManager / LootConditionManager; LootPoolEntries,
+# LootItemFunctions, LootItemConditions, RandomIntGenerators and NumberProviders per snapshot 1.14.4 -
+# 1.21.3, and in 1.21.7, 1.21.11 and 26.1.2), the first snapshot with it named; the smallest form of
+# each that decodes (the fields REQUIRED_FIELDS and conditions' _REQUIRED ask for).
+_TAG = {"type": "minecraft:tag", "name": "minecraft:music_discs", "expand": True}
+_BOUNDARIES = [
+    # LootPoolEntries (1.13.2's LootEntry.Serializer knows only item, loot_table and empty)
+    ("entry", _TAG, (1, 14, 0)),  # 18w43a: TagEntry
+    ("entry", {"type": "minecraft:dynamic", "name": "minecraft:contents"}, (1, 14, 0)),  # 18w43a: DynamicLoot
+    ("entry", {"type": "minecraft:alternatives", "children": []}, (1, 14, 0)),  # 18w43a: AlternativesEntry
+    ("entry", {"type": "minecraft:group", "children": []}, (1, 14, 0)),  # 18w43a: EntryGroup
+    ("entry", {"type": "minecraft:sequence", "children": []}, (1, 14, 0)),  # 18w43a: SequentialEntry
+    ("entry", {"type": "minecraft:slots", "slot_source": {"type": "minecraft:empty"}}, (1, 21, 11)),  # 25w44a: SlotLoot
+    # LootItemFunctions (1.13.2's LootFunctionManager has none of these)
+    ("function", {"function": "minecraft:set_stew_effect"}, (1, 14, 0)),  # 1.14 snapshots
+    ("function", {"function": "minecraft:copy_name", "source": "block_entity"}, (1, 14, 0)),
+    ("function", {"function": "minecraft:set_contents", "entries": []}, (1, 14, 0)),
+    ("function", {"function": "minecraft:limit_count", "limit": 3}, (1, 14, 0)),
+    ("function", {"function": "minecraft:apply_bonus", "enchantment": "minecraft:fortune",
+                  "formula": "minecraft:ore_drops"}, (1, 14, 0)),
+    ("function", {"function": "minecraft:set_loot_table", "name": "a:t"}, (1, 14, 0)),
+    ("function", {"function": "minecraft:explosion_decay"}, (1, 14, 0)),
+    ("function", {"function": "minecraft:set_lore", "lore": []}, (1, 14, 0)),
+    ("function", {"function": "minecraft:fill_player_head", "entity": "this"}, (1, 14, 0)),
+    ("function", {"function": "minecraft:copy_nbt", "source": "block_entity", "ops": []}, (1, 14, 0)),
+    ("function", {"function": "minecraft:copy_state", "block": "minecraft:beehive"}, (1, 15, 0)),  # 19w36a: CopyBlockState
+    ("function", {"function": "minecraft:set_banner_pattern", "patterns": [], "append": True},
+     (1, 17, 0)),  # 20w45a: SetBannerPatternFunction
+    ("function", {"function": "minecraft:set_enchantments"}, (1, 17, 0)),  # 20w46a: SetEnchantmentsFunction
+    ("function", {"function": "minecraft:set_potion", "id": "minecraft:water"}, (1, 18, 0)),  # 21w39a: SetPotionFunction
+    ("function", {"function": "minecraft:set_instrument", "options": "#minecraft:goat_horns"},
+     (1, 19, 0)),  # 22w18a: SetInstrumentFunction
+    ("function", {"function": "minecraft:reference", "name": "a:m"}, (1, 20, 0)),  # 23w14a: FunctionReference
+    ("function", {"function": "minecraft:sequence", "functions": []}, (1, 20, 2)),  # 23w32a: SequenceFunction
+    ("function", {"function": "minecraft:set_item", "item": "minecraft:stone"}, (1, 20, 5)),  # 1.20.5-pre1: SetItemFunction
+    ("function", {"function": "minecraft:modify_contents", "component": "container",  # 1.20.5-pre1: ModifyContainerContents
+                  "modifier": [{"function": "minecraft:explosion_decay"}]}, (1, 20, 5)),
+    ("function", {"function": "minecraft:filtered", "item_filter": {},  # 1.20.5-pre1: FilteredFunction
+                  "modifier": {"function": "minecraft:furnace_smelt"}}, (1, 20, 5)),
+    ("function", {"function": "minecraft:discard"}, (1, 21, 11)),  # 25w43a: DiscardItem
+    ("function", {"function": "minecraft:set_random_dyes", "number_of_dyes": 2}, (26, 1, 0)),  # 26.1 snapshot 1
+    ("function", {"function": "minecraft:set_random_potion"}, (26, 1, 0)),  # 26.1 snapshot 1: SetRandomPotionFunction
+    # LootItemConditions (1.13.2's LootConditionManager: random_chance, random_chance_with_looting,
+    # entity_properties, killed_by_player, entity_scores)
+    ("condition", {"condition": "minecraft:inverted", "term": {"condition": "minecraft:killed_by_player"}},
+     (1, 14, 0)),  # 1.14 snapshots: InvertedLootItemCondition
+    ("condition", {"condition": "minecraft:alternative", "terms": []}, (1, 14, 0)),  # AlternativeLootItemCondition
+    ("condition", {"condition": "minecraft:survives_explosion"}, (1, 14, 0)),  # ExplosionCondition
+    ("condition", {"condition": "minecraft:damage_source_properties"}, (1, 14, 0)),  # DamageSourceCondition
+    ("condition", {"condition": "minecraft:time_check", "value": {"min": 0, "max": 12000}}, (1, 15, 0)),  # 19w38a: TimeCheck
+    ("condition", {"condition": "minecraft:environment_attribute_check", "attribute": "minecraft:gameplay/can_start_raid",
+                   "value": True}, (26, 1, 0)),  # 26.1-pre1: EnvironmentAttributeCheck
+    # RandomIntGenerators (18w43a; 1.13.2's RandomValueRange reads only min/max), NumberProviders (20w46a)
+    ("number", {"type": "minecraft:constant", "value": 2}, (1, 14, 0)),  # ConstantIntValue
+    ("number", {"type": "minecraft:binomial", "n": 3, "p": 0.5}, (1, 14, 0)),  # BinomialDistributionGenerator
+    ("number", {"type": "minecraft:score", "target": "this", "score": "s"}, (1, 17, 0)),  # 20w46a: ScoreboardValue
+    ("number", {"type": "minecraft:storage", "storage": "a:s", "path": "n"}, (1, 20, 5)),  # 24w12a: StorageValue
+    ("number", {"type": "minecraft:enchantment_level", "amount": 1}, (1, 21, 0)),  # 24w18a: EnchantmentLevelProvider
+    ("number", {"type": "minecraft:sum", "summands": [1, 2]}, (26, 1, 0)),  # 26.1 snapshot 1: Sum
+    ("number", {"type": "minecraft:environment_attribute", "attribute": "minecraft:visual/cloud_height"},
+     (26, 1, 0)),  # 26.1-pre1: EnvironmentAttributeValue
+]
+
+
+def _release_before(version):
+    from mcfunction_parser.pack.versions import RELEASE_FORMATS
+    return max(v for v in RELEASE_FORMATS if v < version)
+
+
+def _errors_of(kind: str, value: dict, version) -> list[tuple[str, str]]:
+    """The value in the smallest file holding it (an item modifier for a function or a number, as
+    set_count's count; a loot table's entry or pool condition otherwise): (severity, message) each."""
+    from mcfunction_parser.pack import loot
+    from mcfunction_parser.pack.text import json_document
+    if kind in ("function", "number"):
+        doc, check = (value if kind == "function" else {"function": "minecraft:set_count", "count": value}), \
+            loot.check_modifier
+    else:
+        pool = {"rolls": 1, "entries": [value if kind == "entry" else {"type": "minecraft:empty"}]}
+        if kind == "condition":
+            pool["conditions"] = [value]
+        doc, check = {"pools": [pool]}, loot.check_loot_table
+    text = json.dumps(doc, indent=1)
+    problems = []
+    check(json_document(json.loads(text), "x.json", text), version, problems)
+    return [(p.severity, p.message) for p in problems]
+
+
+@pytest.mark.parametrize("kind,value,first", _BOUNDARIES,
+                         ids=[f"{v.get('function', v.get('condition', v.get('type')))}" for _, v, _ in _BOUNDARIES])
+def test_each_type_loads_from_the_release_that_registers_it(kind, value, first):
+    from mcfunction_parser.diagnostics import ERROR
+    assert _errors_of(kind, value, first) == []
+    name = value.get("function", value.get("condition", value.get("type")))
+    before = _errors_of(kind, value, _release_before(first))
+    if kind == "condition":  # checked as predicate files are (conditions.problem)
+        expected = f"unknown predicate condition type '{name}' in this release (it exists from {'.'.join(map(str, first))}"
+    else:
+        what = {"entry": "loot entry", "function": "item function", "number": "number provider"}[kind]
+        expected = f"{what} type '{name}' does not exist in this version"
+    assert len(before) == 1 and before[0][0] == ERROR and before[0][1].startswith(expected), before
