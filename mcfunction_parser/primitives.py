@@ -126,11 +126,20 @@ def rotation_range(r: Reader) -> FloatRange:
 # ----------------------------------------------------------------------------- UUIDs
 
 # java.util.UUID.fromString: five hyphen-separated hex groups
-_UUID = re.compile(r"[0-9a-fA-F]{1,8}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,12}\Z")
+UUID_TEXT = re.compile(r"[0-9a-fA-F]{1,8}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,12}")
 
 
 def is_uuid(text: str) -> bool:
-    return _UUID.match(text) is not None
+    return UUID_TEXT.fullmatch(text) is not None
+
+
+def uuid_ints(text: str) -> tuple[int, int, int, int]:
+    """The UUID ``text`` (:func:`is_uuid`) as the game saves it: UUIDUtil.uuidToIntArray, four
+    signed ints, the most significant first (UUID.fromString reads each group as hex)."""
+    parts = [int(part, 16) for part in text.split("-")]
+    bits = (parts[0] << 96) | (parts[1] << 80) | (parts[2] << 64) | (parts[3] << 48) | parts[4]
+    words = [(bits >> shift) & 0xFFFFFFFF for shift in (96, 64, 32, 0)]
+    return tuple(w - (1 << 32) if w >= 1 << 31 else w for w in words)
 
 
 # ----------------------------------------------------------------------------- JSON spans

@@ -19,6 +19,7 @@ import unicodedata
 
 from .nbt import (Byte, ByteArray, Compound, Double, Float, Int, IntArray, List, Long, LongArray, Short,
                   String)
+from .primitives import UUID_TEXT, uuid_ints
 from .reader import UNQUOTED, Reader, integer_value, show
 
 _INTEGER = re.compile(r"[-+]?(?:0|[1-9][0-9]*)([bBsSlL]?)\Z")
@@ -226,21 +227,16 @@ def _uuid(r: Reader, start: int, depth: int) -> IntArray:
     """``uuid(x)``: the UUID text as the game's four-int array."""
     r.pos += 1  # '('
     _skip_ws(r)
-    m = _UUID_TEXT.match(r.text, r.pos)
+    m = UUID_TEXT.match(r.text, r.pos)
     if m is None:
         r.fail("uuid(..) expects a UUID like 0-0-0-0-1", r.pos)
     r.pos = m.end()
     _skip_ws(r)
     r.expect(")")
-    parts = [int(part, 16) for part in m.group().split("-")]
-    bits = (parts[0] << 96) | (parts[1] << 80) | (parts[2] << 64) | (parts[3] << 48) | parts[4]
-    words = [(bits >> shift) & 0xFFFFFFFF for shift in (96, 64, 32, 0)]
-    return IntArray(w - (1 << 32) if w >= 1 << 31 else w for w in words)
+    return IntArray(uuid_ints(m.group()))
 
 
 _OPERATIONS = {"bool": _bool, "uuid": _uuid}
-# java.util.UUID.fromString: five hyphen-separated hex groups
-_UUID_TEXT = re.compile(r"[0-9a-fA-F]{1,8}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,4}-[0-9a-fA-F]{1,12}")
 
 
 def _check_depth(r: Reader, depth: int) -> None:

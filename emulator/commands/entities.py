@@ -361,12 +361,20 @@ def new_state(shuffle: int | None = None) -> WorldState:
 def arguments(cmd: ast.GenericCommand) -> tuple[list, object]:
     """The command's words after its name, with an entity argument read as a selector (brackets may
     hold spaces): ``(words, target)``; the target's place in ``words`` holds None."""
+    words, target, _ = argument_spans(cmd)
+    return words, target
+
+
+def argument_spans(cmd: ast.GenericCommand) -> tuple[list, object, list[int]]:
+    """:func:`arguments`, and where each word starts in ``cmd.text`` (for an argument that may hold
+    spaces, such as a quoted string, to be read again from there)."""
     reader = Reader(cmd.text, cmd.loc, (26, 2, 0))
     reader.pos = len(cmd.name)
-    words, target = [], None
+    words, target, starts = [], None, []
     try:
         reader.skip_ws()
         while reader.more():
+            starts.append(reader.pos)
             if reader.peek() == "@" and target is None:
                 target = selectors.selector(reader)
                 words.append(None)
@@ -378,7 +386,7 @@ def arguments(cmd: ast.GenericCommand) -> tuple[list, object]:
             reader.skip_ws()
     except ParseError as error:
         raise CommandFailure("dpemu.command.unreadable", cmd.name, error.message, report=True) from None
-    return words, target
+    return words, target, starts
 
 
 def target_word(cmd, words: list, index: int, target):

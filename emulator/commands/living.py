@@ -13,14 +13,16 @@ from __future__ import annotations
 
 
 from emulator.world import advancements, combat, living
-from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.entities import uuid_string
+from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
+from mcfunction_parser.primitives import is_uuid, uuid_ints
 from mcfunction_parser.reader import ParseError, Reader
 
-from .entities import (_executor_required, arguments, executor, found, parse_target, players_found, single,
-                       single_player, target_word, world_source)
+from .entities import (_executor_required, argument_spans, arguments, executor, found, parse_target, players_found,
+                       single, single_player, target_word, world_source)
 
 
 def _number(cmd, words: list, index: int, kind=float, default=None):
@@ -140,27 +142,67 @@ def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
     if action == ("base", "reset"):
         living.reset_base(entity, name)
         return 1
-    if action[:1] == ("modifier",) and entity.release < living.MODIFIER_IDS:
-        raise Unmodelled("attribute modifiers before 1.21 (named by a UUID and a name)")
-    modifier_id = _resource(words[4]) if len(words) > 4 else ""
-    if action == ("modifier", "add"):
-        if not living.add_modifier(entity, name, modifier_id, _number(cmd, words, 5), words[6] if len(words) > 6 else ""):
-            raise CommandFailure("commands.attribute.failed.modifier_already_present", modifier_id,
+    if action[:1] == ("modifier",):
+        return _modifier(cmd, entity, name, action[1:])
+    raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected get, base or modifier", report=True)
+
+
+# AttributeCommand's operation literals before 1.20.5, by AttributeModifier.Operation's later names
+_OLD_OPERATIONS = {"add": "add_value", "multiply_base": "add_multiplied_base", "multiply": "add_multiplied_total"}
+
+
+def _modifier(cmd, entity, name: str, action: tuple) -> int:
+    """``modifier add KEY [NAME] VALUE OPERATION | remove KEY | value get KEY [SCALE]``: KEY an id
+    from 1.21; before it a UUID, and ``add`` takes the modifier's name (a string) after it
+    (AttributeCommand of 1.16 - 1.20.6); the failures name the key as written back (UUID.toString)."""
+    words, _, starts = argument_spans(cmd)
+    at = 5 if action == ("value",) else 4  # the key's word: after `value get`
+    key, shown = _modifier_key(cmd, entity, words[at] if len(words) > at else "")
+    if action == ("add",):
+        if entity.release >= living.MODIFIER_IDS:
+            label, rest = "", words[at + 1:]
+        else:
+            label, rest = _string_then_words(cmd, starts[at + 1] if len(starts) > at + 1 else len(cmd.text))
+        operation = rest[1] if len(rest) > 1 else ""
+        if not living.add_modifier(entity, name, key, _number(cmd, rest, 0), _OLD_OPERATIONS.get(operation, operation),
+                                   label):
+            raise CommandFailure("commands.attribute.failed.modifier_already_present", shown,
                                  _attribute_name(name), entity.display_name)
         return 1
-    if action == ("modifier", "remove"):
-        if not living.remove_modifier(entity, name, modifier_id):
+    if action == ("remove",):
+        if not living.remove_modifier(entity, name, key):
             raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name),
-                                 entity.display_name, modifier_id)
+                                 entity.display_name, shown)
         return 1
-    if action == ("modifier", "value") and len(words) > 4 and words[4] == "get":
-        modifier_id = _resource(words[5]) if len(words) > 5 else ""
-        value = living.modifier_value(entity, name, modifier_id)
+    if action == ("value",) and words[4:5] == ["get"]:
+        value = living.modifier_value(entity, name, key)
         if value is None:
             raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name),
-                                 entity.display_name, modifier_id)
+                                 entity.display_name, shown)
         return double_to_int(value * _number(cmd, words, 6, float, 1.0))
-    raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected get, base or modifier", report=True)
+    raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected modifier add, remove or value get", report=True)
+
+
+def _modifier_key(cmd, entity, word: str) -> tuple:
+    """(the modifier's key, as messages show it): an id from 1.21, else a UUID (UuidArgument) as four ints."""
+    if entity.release >= living.MODIFIER_IDS:
+        return _resource(word), _resource(word)
+    if not is_uuid(word):
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, f"expected a UUID, got '{word}'", report=True)
+    key = uuid_ints(word)
+    return key, uuid_string(key)
+
+
+def _string_then_words(cmd, start: int) -> tuple[str, list[str]]:
+    """The string argument at ``start`` (StringArgumentType.string: quoted, or one word) and the
+    words after it."""
+    reader = Reader(cmd.text, cmd.loc, (26, 2, 0))
+    reader.pos = start
+    try:
+        label = reader.string()
+    except ParseError as error:
+        raise CommandFailure("dpemu.command.unreadable", cmd.name, error.message, report=True) from None
+    return label, cmd.text[reader.pos:].split()
 
 
 # ---------------------------------------------------------------------- damage

@@ -33,7 +33,7 @@ from functools import lru_cache
 import numpy as np
 
 from mcfunction_parser import gamedata
-from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, List, Short, String
+from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import recipes, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -259,9 +259,35 @@ def _saved(entity, name: str) -> list:
     return saved if isinstance(saved, List) else []
 
 
-def _find_modifier(entity, name: str, modifier_id: str) -> Compound | None:
-    return next((m for m in _saved(entity, name) if isinstance(m, Compound) and str(m.get("id", "")) == modifier_id),
-                None)
+def _key_field(entity) -> str:
+    """The field a saved modifier is known by: its id from 1.21, its UUID before (``uuid`` in the
+    1.20.5 codec, ``UUID`` before it)."""
+    if entity.release >= MODIFIER_IDS:
+        return "id"
+    return "uuid" if entity.release >= CODEC_ATTRIBUTES else "UUID"
+
+
+def _find_modifier(entity, name: str, key) -> Compound | None:
+    """The saved modifier of ``key``: an id from 1.21, before it a UUID as four ints
+    (AttributeInstance.getModifier)."""
+    field = _key_field(entity)
+    if isinstance(key, str):
+        return next((m for m in _saved(entity, name) if isinstance(m, Compound) and str(m.get(field, "")) == key),
+                    None)
+    return next((m for m in _saved(entity, name) if isinstance(m, Compound) and isinstance(m.get(field), IntArray)
+                 and tuple(m[field]) == tuple(key)), None)
+
+
+def _saved_modifier(entity, key, label: str, amount: float, operation: str) -> Compound:
+    """AttributeModifier as the entity's release saves it: {id, amount, operation} from 1.21; {uuid,
+    name, amount, operation} in 1.20.5 - 1.20.6 (AttributeModifier.CODEC); before, AttributeModifier.save:
+    {Name, Amount, Operation (0 - 2), UUID}."""
+    if entity.release >= MODIFIER_IDS:
+        return Compound(id=String(key), amount=Double(amount), operation=String(operation))
+    if entity.release >= CODEC_ATTRIBUTES:
+        return Compound(uuid=IntArray(key), name=String(label), amount=Double(amount), operation=String(operation))
+    return Compound(Name=String(label), Amount=Double(amount), Operation=Int(_OPERATIONS.index(operation)),
+                    UUID=IntArray(key))
 
 
 def _transient(entity, name: str) -> dict:
@@ -285,17 +311,18 @@ def set_transient(entity, name: str, modifier_id: str, amount_operation: tuple[f
     _changed(entity)
 
 
-def add_modifier(entity, name: str, modifier_id: str, amount: float, operation: str) -> bool:
-    """False when a modifier of that id is already on the attribute (the equipment's too)."""
-    if _find_modifier(entity, name, modifier_id) is not None or modifier_id in _transient(entity, name):
+def add_modifier(entity, name: str, key, amount: float, operation: str, label: str = "") -> bool:
+    """A permanent modifier (AttributeInstance.addPermanentModifier): ``key`` its id, before 1.21 its
+    UUID as four ints, ``label`` its name then. False when one of that key is already on the
+    attribute (the equipment's too)."""
+    if _find_modifier(entity, name, key) is not None or key in _transient(entity, name):
         return False
-    _modifiers(entity, name).append(Compound(id=String(modifier_id), amount=Double(amount),
-                                             operation=String(operation)))
+    _modifiers(entity, name).append(_saved_modifier(entity, key, label, amount, operation))
     _changed(entity)
     return True
 
 
-def remove_modifier(entity, name: str, modifier_id: str) -> bool:
+def remove_modifier(entity, name: str, modifier_id) -> bool:
     found = _find_modifier(entity, name, modifier_id)
     if found is None:
         if modifier_id in _transient(entity, name):
@@ -313,12 +340,12 @@ def _changed(entity) -> None:
     entity.refresh_sizes()
 
 
-def modifier_value(entity, name: str, modifier_id: str) -> float | None:
+def modifier_value(entity, name: str, modifier_id) -> float | None:
     found = _find_modifier(entity, name, modifier_id)
     if found is None:
         transient = _transient(entity, name).get(modifier_id)
         return None if transient is None else transient[0]
-    return _number(found.get("amount"))
+    return _number(found.get("amount", found.get("Amount")))
 
 
 def attribute_value(entity, name: str) -> float:

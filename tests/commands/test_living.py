@@ -206,11 +206,42 @@ def test_reading_an_attribute_writes_no_empty_modifiers(env):
     assert [sorted(i) for i in steve.data["attributes"] if str(i["id"]) == "minecraft:luck"] == [["base", "id"]]
 
 
-def test_attribute_modifiers_before_1_21_are_not_modelled(env):
-    # before 1.21 a modifier is named by a UUID and a name (AttributeCommand): reported, never guessed
-    _, ctx = player(_at(env, (1, 20, 4)))
-    with pytest.raises(Unmodelled, match="before 1.21"):
-        run(env, "attribute @s generic.max_health modifier add 1-2-3-4-5 n 3 add", ctx, (1, 20, 4))
+def test_attribute_modifiers_before_1_21_are_known_by_a_uuid(env):
+    # AttributeCommand of 1.16 - 1.20.4: `modifier add UUID NAME VALUE add|multiply_base|multiply`,
+    # `remove UUID`, `value get UUID [SCALE]` (UuidArgument, StringArgumentType.string());
+    # AttributeModifier.save writes {Name, Amount, Operation 0 - 2, UUID (UUIDUtil: four ints)};
+    # AttributeInstance.addPermanentModifier refuses a second modifier of a UUID
+    release = (1, 20, 4)
+    steve, ctx = player(_at(env, release))
+    assert run(env, 'attribute @s generic.max_health modifier add 1-2-3-4-5 "my  boost" 4 add', ctx, release) == 1
+    assert run(env, "attribute @s generic.max_health modifier add 0-0-0-0-6 half 0.5 multiply", ctx, release) == 1
+    assert run(env, "attribute @s generic.max_health get", ctx, release) == 36  # (20 + 4) x 1.5
+    assert run(env, "attribute @s generic.max_health modifier value get 1-2-3-4-5 10", ctx, release) == 40
+    [instance] = [i for i in steve.data["Attributes"] if str(i["Name"]) == "minecraft:generic.max_health"]
+    assert [dict(m) for m in instance["Modifiers"]] == [
+        {"Name": "my  boost", "Amount": 4.0, "Operation": 0, "UUID": [1, 2 << 16 | 3, 4 << 16, 5]},
+        {"Name": "half", "Amount": 0.5, "Operation": 2, "UUID": [0, 0, 0, 6]}]
+    assert type(instance["Modifiers"][0]["UUID"]).__name__ == "IntArray"
+    with pytest.raises(CommandFailure, match="Modifier 00000001-0002-0003-0004-000000000005 is already present"):
+        run(env, "attribute @s generic.max_health modifier add 1-2-3-4-5 other 1 add", ctx, release)
+    assert run(env, "attribute @s generic.max_health modifier remove 00000001-0002-0003-0004-000000000005", ctx,
+               release) == 1
+    with pytest.raises(CommandFailure, match="has no modifier 00000001-0002-0003-0004-000000000005"):
+        run(env, "attribute @s generic.max_health modifier remove 1-2-3-4-5", ctx, release)
+    assert run(env, "attribute @s generic.max_health get", ctx, release) == 30
+
+
+def test_attribute_modifiers_of_1_20_5_are_saved_by_the_codec(env):
+    # 1.20.5 - 1.20.6: the operations are named add_value, add_multiplied_base, add_multiplied_total
+    # (AttributeModifier.Operation), and AttributeModifier.CODEC saves {uuid, name, amount, operation}
+    release = (1, 20, 6)
+    steve, ctx = player(_at(env, release))
+    run(env, "attribute @s generic.armor modifier add 0-0-0-0-1 plates 2 add_multiplied_base", ctx, release)
+    run(env, "attribute @s generic.armor base set 4", ctx, release)
+    assert run(env, "attribute @s generic.armor get", ctx, release) == 12  # 4 + 4 x 2
+    [instance] = [i for i in steve.data["attributes"] if str(i["id"]) == "minecraft:generic.armor"]
+    assert [dict(m) for m in instance["modifiers"]] == [
+        {"uuid": [0, 0, 0, 1], "name": "plates", "amount": 2.0, "operation": "add_multiplied_base"}]
 
 
 # ---------------------------------------------------------------------- damage
