@@ -6,6 +6,8 @@ Compounds are ``dict`` subclasses (key order kept), lists are ``list`` subclasse
 """
 from __future__ import annotations
 
+import re
+
 
 class Byte(int):
     tag_id = 1
@@ -69,35 +71,48 @@ ARRAY_TYPES = (ByteArray, IntArray, LongArray)
 INT_RANGES = {Byte: 8, Short: 16, Int: 32, Long: 64}
 
 
-def to_snbt(value) -> str:
-    """Serialise a value to SNBT as the game prints it (``data get`` output)."""
+def to_snbt(value, new_keys: bool = False, decimal=None) -> str:
+    """Serialise a value to SNBT as the game prints it (StringTagVisitor: ``data get`` output, a text
+    component's ``nbt``, a macro argument): a compound's keys in order (Collections.sort before
+    1.21.5, Entry.comparingByKey from it: String.compareTo, by UTF-16 unit), each written bare when
+    simple: SIMPLE_VALUE ``[A-Za-z0-9._+-]+`` before 1.21.5, from it (``new_keys``)
+    UNQUOTED_KEY_MATCH ``[A-Za-z._]+[A-Za-z0-9._+-]*`` and not true or false (handleKeyEscape).
+    ``decimal(x)`` writes a Float's or a Double's digits (the game: Float.toString and
+    Double.toString; by default Python's repr, without a trailing ``.0``)."""
     if isinstance(value, bool):
         return "1b" if value else "0b"
     if isinstance(value, (Byte, Short, Int, Long)):
         return f"{int(value)}{value.suffix}"
     if isinstance(value, (Float, Double)):
-        return f"{_float_text(float(value))}{value.suffix}"
+        return f"{(decimal or _float_text)(value)}{value.suffix}"
     if isinstance(value, int):
         return str(value)
     if isinstance(value, float):
-        return f"{_float_text(value)}d"
+        return f"{(decimal or _float_text)(Double(value))}d"
     if isinstance(value, str):
         return _quote(value)
     if isinstance(value, ARRAY_TYPES):
         return f"[{value.prefix};" + ",".join(to_snbt(type_of_array_item(value)(v)) for v in value) + "]"
     if isinstance(value, dict):
-        return "{" + ",".join(f"{_key(k)}:{to_snbt(v)}" for k, v in value.items()) + "}"
+        key = _new_key if new_keys else _key
+        return "{" + ",".join(f"{key(k)}:{to_snbt(value[k], new_keys, decimal)}" for k in sorted(value, key=_java_order)) + "}"
     if isinstance(value, list):
-        return "[" + ",".join(to_snbt(v) for v in value) + "]"
+        return "[" + ",".join(to_snbt(v, new_keys, decimal) for v in value) + "]"
     raise TypeError(f"not an NBT value: {value!r}")
+
+
+def _java_order(key: str) -> bytes:
+    """String.compareTo's order: by UTF-16 code unit (a code point above U+FFFF sorts as its
+    surrogates, below U+E000)."""
+    return key.encode("utf-16-be", "surrogatepass")
 
 
 def type_of_array_item(array) -> type:
     return {ByteArray: Byte, IntArray: Int, LongArray: Long}[type(array)]
 
 
-def _float_text(x: float) -> str:
-    text = repr(x)
+def _float_text(x) -> str:
+    text = repr(float(x))
     return text[:-2] if text.endswith(".0") and "e" not in text else text
 
 
@@ -106,6 +121,13 @@ _BARE = set("0123456789abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ_-.+"
 
 def _key(key: str) -> str:
     return key if key and all(c in _BARE for c in key) else _quote(key)
+
+
+_UNQUOTED_KEY = re.compile(r"[A-Za-z._]+[A-Za-z0-9._+-]*")
+
+
+def _new_key(key: str) -> str:
+    return key if _UNQUOTED_KEY.fullmatch(key) and key.lower() not in ("true", "false") else _quote(key)
 
 
 def _quote(text: str) -> str:

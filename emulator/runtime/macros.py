@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from decimal import ROUND_HALF_EVEN, Context, Decimal
 
+from emulator.world.nbt_ops import snbt
 from emulator.world.semantics import double_to_float
 from mcfunction_parser import ast, nbt
 from mcfunction_parser.parse import parse_command
@@ -34,7 +35,7 @@ def stringify(value) -> str:
         return str(int(value))
     if isinstance(value, str):
         return str(value)
-    return nbt.to_snbt(value)
+    return snbt(value)
 
 
 def parameters(function: ast.Function) -> list[str]:

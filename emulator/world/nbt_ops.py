@@ -58,7 +58,7 @@ from mcfunction_parser.nbt import (
 from emulator.world.semantics import double_to_long, mth_floor
 from emulator.world import mth
 from emulator.world.errors import CommandFailure
-from emulator.world.text import tag_as_string
+from emulator.world.text import java_double_string, java_float_string
 
 MAX_DEPTH = 512
 
@@ -248,6 +248,25 @@ class list_rules:
 # whether the list rule in force lets a list mix tag types (:class:`list_rules`); the context
 # variable's own method: the runtime asks each tick
 lists_mixed = _MIXED_LISTS.get
+
+
+def snbt(tag) -> str:
+    """The tag as the game prints it (Tag.toString, StringTagVisitor) under the release in force:
+    floats and doubles as Java writes them, and the 1.21.5 SNBT that lets lists mix types also quotes
+    keys its own way (:func:`to_snbt`)."""
+    return to_snbt(tag, _MIXED_LISTS.get(), _java_decimal)
+
+
+def _java_decimal(tag) -> str:
+    """StringTagVisitor.visitFloat / visitDouble: Float.toString, Double.toString."""
+    return java_float_string(float(tag)) if isinstance(tag, Float) else java_double_string(float(tag))
+
+
+def tag_as_string(tag) -> str:
+    """``Tag.getAsString()``: a string's own text, anything else as SNBT (a number with its suffix:
+    ``1b``, ``2.5f``, ``0.1d``, ``3L``). It is what ``data modify ... string`` copies, what ``data
+    get`` shows for a single value and what a text component's ``nbt`` shows."""
+    return str(tag) if isinstance(tag, str) else snbt(tag)
 
 
 def _list_accepts(lst: List, tag) -> bool:
@@ -655,7 +674,7 @@ def insert(root, path: ast.NbtPath, index: int, values: list) -> int:
     changed = 0
     for target in _get_or_create(root, path, nodes, List):
         if not is_collection(target):
-            raise CommandFailure("commands.data.modify.expected_list", to_snbt(target))
+            raise CommandFailure("commands.data.modify.expected_list", snbt(target))
         position = len(target) + index + 1 if index < 0 else index
         added = False
         for value in copies:
@@ -676,12 +695,12 @@ def merge_into(root, path: ast.NbtPath, values: list) -> int:
         if is_too_deep(value, 0):
             raise CommandFailure("arguments.nbtpath.too_deep")
         if not isinstance(value, Compound):
-            raise CommandFailure("commands.data.modify.expected_object", to_snbt(value))
+            raise CommandFailure("commands.data.modify.expected_object", snbt(value))
         merge_compounds(patch, value)
     changed = 0
     for target in _get_or_create(root, path, _compile(path), Compound):
         if not isinstance(target, Compound):
-            raise CommandFailure("commands.data.modify.expected_object", to_snbt(target))
+            raise CommandFailure("commands.data.modify.expected_object", snbt(target))
         before = copy_tag(target)
         merge_compounds(target, patch)
         changed += not tags_equal(before, target)
@@ -733,7 +752,7 @@ def _as_text(tag) -> str:
     """``Tag.getAsString`` for value tags (strings and numbers); compounds and lists fail."""
     if isinstance(tag, str) or is_numeric(tag):
         return tag_as_string(tag)
-    raise CommandFailure("commands.data.modify.expected_value", to_snbt(tag))
+    raise CommandFailure("commands.data.modify.expected_value", snbt(tag))
 
 
 def string_source(values: list, start: int | None = None, end: int | None = None) -> list:

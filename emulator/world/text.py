@@ -4,9 +4,6 @@
   (Java 19+, which 1.20.5+ requires): the shortest digits that read back to the same value; plain
   decimal (at least one fractional digit) for 1e-3 <= |x| < 1e7, else ``d.dddE±n``;
   ``NaN``, ``Infinity``, ``-0.0``.
-- ``tag_as_string(tag)``: ``Tag.getAsString()``: a string's own text, a number with its SNBT
-  suffix (``1b``, ``2.5f``, ``0.1d``, ``3L``), anything else as SNBT. It is what ``data modify ...
-  string`` copies and what ``data get`` shows for a single value.
 
 Source: decompiled 1.21 nbt/StringTagVisitor.java (visitFloat/visitDouble append the Java number
 and the suffix), java.lang.Double/Float.toString.
@@ -20,7 +17,7 @@ from decimal import ROUND_HALF_EVEN, Decimal
 import numpy as np
 
 from mcfunction_parser.diagnostics import Loc
-from mcfunction_parser.nbt import Compound, Double, Float, List, to_snbt
+from mcfunction_parser.nbt import Compound, List
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import value as snbt_value
 
@@ -63,16 +60,6 @@ def java_float_string(x) -> str:
     value = np.float32(x)
     return _java_text(float(value), np.format_float_positional(value, unique=True, trim="-"),
                       lambda d: np.float32(float(d)) == value)
-
-
-def tag_as_string(tag) -> str:
-    if isinstance(tag, str):
-        return str(tag)
-    if isinstance(tag, Float):
-        return java_float_string(float(tag)) + "f"
-    if isinstance(tag, Double):
-        return java_double_string(float(tag)) + "d"
-    return to_snbt(tag)
 
 
 def read_component(text: str):

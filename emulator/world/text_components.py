@@ -27,7 +27,8 @@ from emulator.world import nbt_ops
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import CommandFailure
 from emulator.world.teams import formatted_name
-from emulator.world.text import RESOLVED, needs_resolving, plain_value, read_component, tag_as_string
+from emulator.world.nbt_ops import tag_as_string
+from emulator.world.text import RESOLVED, needs_resolving, plain_value, read_component
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound

@@ -167,7 +167,7 @@ def test_equipment_layout_of_1_21_5(tmp_path):
     emu.add_player("Steve", (0.0, 64.0, 0.0))
     emu.call("t:main")
     zombie = next(e for e in emu.state.entities.entities if e.type == "minecraft:zombie")
-    assert to_snbt(entity_nbt(zombie)["equipment"]) == '{head:{id:"minecraft:iron_helmet",count:1}}'
+    assert to_snbt(entity_nbt(zombie)["equipment"]) == '{head:{count:1,id:"minecraft:iron_helmet"}}'
     assert entity_nbt(_player(emu))["equipment"]["offhand"]["id"] == "minecraft:shield"
 
 

@@ -148,3 +148,26 @@ def test_a_selector_part_is_each_entitys_display_name(tmp_path, backend):
     assert alex["insertion"] == "Alex" and alex["clickEvent"] == {"action": "suggest_command", "value": "/tell Alex "}
     assert both["text"] == "" and [plain(json.dumps(p)) for p in both["extra"]] == ["Babe", ", ", "Pig"]
     assert both["extra"][1] == {"text": ", ", "color": "gray"}
+
+
+
+@pytest.mark.parametrize("pack_format, printed", [
+    # StringTagVisitor.visitCompound sorts the keys (Collections.sort before 1.21.5,
+    # Entry.comparingByKey from it: String.compareTo); handleEscape writes a key bare when it matches
+    # SIMPLE_VALUE [A-Za-z0-9._+-]+ before 1.21.5, from 1.21.5 when it matches UNQUOTED_KEY_MATCH
+    # [A-Za-z._]+[A-Za-z0-9._+-]* and is not true or false; visitFloat/visitDouble append
+    # Float.toString/Double.toString (decompiled 1.21.1 and 1.21.11 nbt/StringTagVisitor)
+    (48, '{1x:1b,C:3,a:2,"a b":{x:64.0d,y:1.0E-5f},b:[0.1f,1.5E-4f],true:0b}'),
+    (71, '{"1x":1b,C:3,a:2,"a b":{x:64.0d,y:1.0E-5f},b:[0.1f,1.5E-4f],"true":0b}'),
+])
+def test_compounds_print_as_the_game_prints_them(tmp_path, pack_format, printed):
+    # a text component's nbt (NbtContents: Tag.getAsString) and a macro argument (MacroFunction:
+    # Tag.toString) print the same
+    emu = emulator(tmp_path, "python", {
+        "t:main": "data modify storage t:s v set value {b:[0.1f,1.5e-4f],a:2,C:3,'a b':{y:1e-5f,x:64d},1x:1b,true:0b}\n"
+                  'tellraw @a {"nbt":"v","storage":"t:s"}\n'
+                  "function t:say with storage t:s",
+        "t:say": "$say $(v)"}, pack_format=pack_format)
+    emu.add_player("Alex")
+    emu.call("t:main")
+    assert [plain(emu.log[0].text), emu.log[1].text] == [printed, "[Server] " + printed]
