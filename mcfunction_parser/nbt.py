@@ -71,12 +71,13 @@ ARRAY_TYPES = (ByteArray, IntArray, LongArray)
 INT_RANGES = {Byte: 8, Short: 16, Int: 32, Long: 64}
 
 
-def to_snbt(value, new_keys: bool = False, decimal=None) -> str:
+def to_snbt(value, from_1_21_5: bool = False, decimal=None) -> str:
     """Serialise a value to SNBT as the game prints it (StringTagVisitor: ``data get`` output, a text
     component's ``nbt``, a macro argument): a compound's keys in order (Collections.sort before
     1.21.5, Entry.comparingByKey from it: String.compareTo, by UTF-16 unit), each written bare when
-    simple: SIMPLE_VALUE ``[A-Za-z0-9._+-]+`` before 1.21.5, from it (``new_keys``)
-    UNQUOTED_KEY_MATCH ``[A-Za-z._]+[A-Za-z0-9._+-]*`` and not true or false (handleKeyEscape).
+    simple: SIMPLE_VALUE ``[A-Za-z0-9._+-]+`` before 1.21.5, from it (``from_1_21_5``)
+    UNQUOTED_KEY_MATCH ``[A-Za-z._]+[A-Za-z0-9._+-]*`` and not true or false (handleKeyEscape);
+    strings as :func:`_quote` writes them.
     ``decimal(x)`` writes a Float's or a Double's digits (the game: Float.toString and
     Double.toString; by default Python's repr, without a trailing ``.0``)."""
     if isinstance(value, bool):
@@ -90,14 +91,14 @@ def to_snbt(value, new_keys: bool = False, decimal=None) -> str:
     if isinstance(value, float):
         return f"{(decimal or _float_text)(Double(value))}d"
     if isinstance(value, str):
-        return _quote(value)
+        return _quote(value, from_1_21_5)
     if isinstance(value, ARRAY_TYPES):
         return f"[{value.prefix};" + ",".join(to_snbt(type_of_array_item(value)(v)) for v in value) + "]"
     if isinstance(value, dict):
-        key = _new_key if new_keys else _key
-        return "{" + ",".join(f"{key(k)}:{to_snbt(value[k], new_keys, decimal)}" for k in sorted(value, key=_java_order)) + "}"
+        key = _new_key if from_1_21_5 else _key
+        return "{" + ",".join(f"{key(k)}:{to_snbt(value[k], from_1_21_5, decimal)}" for k in sorted(value, key=_java_order)) + "}"
     if isinstance(value, list):
-        return "[" + ",".join(to_snbt(v, new_keys, decimal) for v in value) + "]"
+        return "[" + ",".join(to_snbt(v, from_1_21_5, decimal) for v in value) + "]"
     raise TypeError(f"not an NBT value: {value!r}")
 
 
@@ -127,10 +128,20 @@ _UNQUOTED_KEY = re.compile(r"[A-Za-z._]+[A-Za-z0-9._+-]*")
 
 
 def _new_key(key: str) -> str:
-    return key if _UNQUOTED_KEY.fullmatch(key) and key.lower() not in ("true", "false") else _quote(key)
+    return key if _UNQUOTED_KEY.fullmatch(key) and key.lower() not in ("true", "false") else _quote(key, True)
 
 
-def _quote(text: str) -> str:
-    quote = "'" if '"' in text and "'" not in text else '"'
+def _quote(text: str, new: bool = False) -> str:
+    r"""StringTag.quoteAndEscape: in the quote that the first quote character of the text is not
+    (double when there is none), that quote and backslashes escaped; from 1.21.5 (``new``) control
+    characters too (SnbtGrammar.escapeControlCharacters: \b \t \n \f \r, any other below a space
+    as \xHH)."""
+    first = next((c for c in text if c in "\"'"), None)
+    quote = "'" if first == '"' else '"'
     escaped = text.replace("\\", "\\\\").replace(quote, "\\" + quote)
+    if new and any(c < " " for c in escaped):
+        escaped = "".join((_CONTROL.get(c) or f"\\x{ord(c):02X}") if c < " " else c for c in escaped)
     return f"{quote}{escaped}{quote}"
+
+
+_CONTROL = {"\b": "\\b", "\t": "\\t", "\n": "\\n", "\f": "\\f", "\r": "\\r"}

@@ -171,3 +171,16 @@ def test_a_command_with_512_levels_parses():
     cmd, diagnostics = parse_command("execute as @s run data merge storage a:b " + "{a:" * 512 + "1" + "}" * 512,
                                      Loc("f", 1, 1))
     assert cmd is not None and diagnostics == []
+
+
+@pytest.mark.parametrize("text, old, new", [
+    # StringTag.quoteAndEscape: the quote is the one the first quote character of the text is not,
+    # only that quote (and backslashes) escaped; 1.21.5 adds SnbtGrammar.escapeControlCharacters
+    # (decompiled 1.21.1 and 1.21.11 nbt/StringTag)
+    ('a"b\'c', "'a\"b\\'c'", "'a\"b\\'c'"),
+    ("a'b\"c", '"a\'b\\"c"', '"a\'b\\"c"'),
+    ("x\\y", '"x\\\\y"', '"x\\\\y"'),
+    ("l1\nl2\t\x01\x7f", '"l1\nl2\t\x01\x7f"', '"l1\\nl2\\t\\x01\x7f"'),
+])
+def test_strings_are_quoted_as_the_game_quotes_them(text, old, new):
+    assert (to_snbt(String(text)), to_snbt(String(text), from_1_21_5=True)) == (old, new)
