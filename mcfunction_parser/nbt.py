@@ -93,13 +93,17 @@ def to_snbt(value, from_1_21_5: bool = False, decimal=None) -> str:
     if isinstance(value, str):
         return _quote(value, from_1_21_5)
     if isinstance(value, ARRAY_TYPES):
-        return f"[{value.prefix};" + ",".join(to_snbt(type_of_array_item(value)(v)) for v in value) + "]"
+        suffix = _ARRAY_SUFFIX[type(value)]  # visitByteArray writes 1B, visitLongArray 1L
+        return f"[{value.prefix};" + ",".join(f"{int(v)}{suffix}" for v in value) + "]"
     if isinstance(value, dict):
         key = _new_key if from_1_21_5 else _key
         return "{" + ",".join(f"{key(k)}:{to_snbt(value[k], from_1_21_5, decimal)}" for k in sorted(value, key=_java_order)) + "}"
     if isinstance(value, list):
         return "[" + ",".join(to_snbt(v, from_1_21_5, decimal) for v in value) + "]"
     raise TypeError(f"not an NBT value: {value!r}")
+
+
+_ARRAY_SUFFIX = {ByteArray: "B", IntArray: "", LongArray: "L"}
 
 
 def _java_order(key: str) -> bytes:

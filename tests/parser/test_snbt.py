@@ -184,3 +184,10 @@ def test_a_command_with_512_levels_parses():
 ])
 def test_strings_are_quoted_as_the_game_quotes_them(text, old, new):
     assert (to_snbt(String(text)), to_snbt(String(text), from_1_21_5=True)) == (old, new)
+
+
+def test_arrays_print_with_the_games_suffixes():
+    # StringTagVisitor.visitByteArray appends 'B' (upper case), visitLongArray 'L', visitIntArray none
+    # (decompiled 1.21.11 nbt/StringTagVisitor)
+    assert [to_snbt(ByteArray([1, -2])), to_snbt(IntArray([1])), to_snbt(LongArray([3]))] == [
+        "[B;1B,-2B]", "[I;1]", "[L;3L]"]

@@ -240,7 +240,7 @@ def test_set_components_reads_custom_data_json_as_compound_tag_codec_does():
             "minecraft:max_stack_size": 16}}]}]}]}
     [stack] = loot.roll_table(table, context())
     assert to_snbt(stack.component("minecraft:custom_data")) == (
-        '{a:1b,b:1b,c:300s,d:70000,e:0.5f,f:0.1d,g:1b,h:[B;1b,2b],i:"x"}')
+        '{a:1b,b:1b,c:300s,d:70000,e:0.5f,f:0.1d,g:1b,h:[B;1B,2B],i:"x"}')
     assert type(stack.component("minecraft:max_stack_size")) is Int
     text = {"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "stone", "functions": [
         {"function": "set_components", "components": {"minecraft:custom_data": "{a:1}"}}]}]}]}
