@@ -8,6 +8,8 @@
   minor release: its last patch), older mecha releases' ``1_21.json`` for the earlier 1.21
   patches (:data:`OLDER_MECHA_1_21`), and minecraft-data's ``pc/<release>/commands.json`` for 1.20.2,
   1.20.3 and 26.1, converted to the report's shape;
+- the en_us strings of each release (what a translated text reads on a server): minecraft-data's
+  ``language.json``, as changes from release to release (:func:`_languages`);
 - registries (blocks with their states and each block's default state, items, entity types,
   particles, enchantments, effects, biomes, attributes, and from 1.20.5 the data component types,
   read from the protocol's SlotComponentType): minecraft-data, per release it maps in
@@ -222,9 +224,36 @@ def build(minecraft_data: Path | None = None, mecha_wheels: Path | None = None) 
             written[digest] = _write(f"registries-{name}.json.gz", data)
         registries[version_label(parse_mc_version(name))] = written[digest]
     index = {"commands": dict(sorted(trees.items(), key=lambda kv: parse_mc_version(kv[0]))),
-             "registries": dict(sorted(registries.items(), key=lambda kv: parse_mc_version(kv[0])))}
+             "registries": dict(sorted(registries.items(), key=lambda kv: parse_mc_version(kv[0]))),
+             "languages": _languages(mcdata, data_paths)}
     (OUT / "index.json").write_text(json.dumps(index, indent=1) + "\n")
     (OUT / "NOTICE").write_text("\n".join(_notice(minecraft_data)))
+
+
+def _languages(mcdata: Path, data_paths: dict) -> dict[str, str]:
+    """The en_us strings of each release (minecraft-data's ``language.json``: the game's
+    ``assets/minecraft/lang/en_us.json``), newest whole and each older one as its changes from the
+    next newer one ({"base": file, "set": {key: text}, "unset": [key]}): about 160 kB for all,
+    where whole files would take 2.4 MB. Returns {release: file}."""
+    sources: dict[tuple[int, int, int], str] = {}
+    for name, paths in data_paths.items():
+        if _RELEASE_NAME.fullmatch(name) and parse_mc_version(name) in RELEASE_FORMATS and "language" in paths:
+            sources[parse_mc_version(name)] = paths["language"]
+    files: dict[str, str] = {}  # minecraft-data folder -> the file written for it
+    newer = None  # (its file, its strings)
+    for release in sorted(sources, reverse=True):
+        folder = sources[release]
+        if folder not in files:
+            strings = json.loads((mcdata / folder / "language.json").read_text())
+            name = f"language-{folder.removeprefix('pc/')}.json.gz"
+            if newer is None:
+                files[folder] = _write(name, {"base": None, "set": strings, "unset": []})
+            else:
+                base, later = newer
+                files[folder] = _write(name, {"base": base, "unset": sorted(set(later) - set(strings)),
+                                              "set": {k: v for k, v in strings.items() if later.get(k) != v}})
+            newer = (files[folder], strings)
+    return {version_label(r): files[sources[r]] for r in sorted(sources)}
 
 
 def _notice(minecraft_data: Path | None) -> list[str]:

@@ -232,3 +232,14 @@ def test_attribute_registries_follow_the_game_where_minecraft_data_lags():
     # a 1.20.6 pack's scale is no false error
     _, diagnostics = parse_function("attribute @s generic.scale base set 2\n", "f.mcfunction", "t:f", (1, 20, 6))
     assert not diagnostics
+
+
+def test_language_is_the_releases_own_or_the_newest_before():
+    # minecraft-data's language.json per release (the game's en_us.json), shipped as changes from
+    # release to release: netherite's strings come with 1.16, 1.21.2 (no file of its own) reads
+    # 1.21.1's, nothing before 1.13
+    assert "item.minecraft.netherite_ingot" not in gamedata.language((1, 15, 2))
+    assert gamedata.language((1, 16, 0))["item.minecraft.netherite_ingot"] == "Netherite Ingot"
+    assert gamedata.language((1, 21, 2)) == gamedata.language((1, 21, 1))
+    assert gamedata.language((1, 12, 2)) == {}
+    assert gamedata.language((26, 1, 0))["chat.type.text"] == "<%s> %s"
