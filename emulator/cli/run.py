@@ -139,7 +139,7 @@ def _print_log(emu: Emulator, to_stderr: bool) -> None:
     component as the player reads it)."""
     for entry in emu.log:
         where = f"  ({entry.loc})" if entry.loc else ""
-        click.echo(f"tick {entry.tick} {entry.kind}: {entry.read_text()}{where}", err=to_stderr)
+        click.echo(f"tick {entry.tick} {entry.kind}: {entry.read_text(emu.state.version)}{where}", err=to_stderr)
 
 
 def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:

@@ -30,11 +30,11 @@ def received(emu, check: ChatCheck, chat_start: int, ctx: Context) -> list[str]:
     each receiver in turn (ChatRecorder.since with a recipient, flat-mapped over the players)."""
     entries = [e for e in emu.log[chat_start:] if e.kind in SYSTEM_MESSAGES]
     if check.receivers is None:
-        return [e.read_text() for e in entries for _ in e.receivers]
+        return [e.read_text(emu.state.version) for e in entries for _ in e.receivers]
     players = [p for p in _select(emu, check.receivers, ctx) if p.is_player]
     if not players:
         raise NoPlayer()
-    return [e.read_text() for p in players for e in entries if p.uuid_string in e.receivers]
+    return [e.read_text(emu.state.version) for p in players for e in entries if p.uuid_string in e.receivers]
 
 
 def matches(emu, check: ChatCheck, chat_start: int, ctx: Context) -> list[str]:

@@ -38,6 +38,7 @@ server/commands/data/EntityDataAccessor.java.
 """
 from __future__ import annotations
 
+
 import math
 import random
 from collections.abc import MutableSet
@@ -45,6 +46,7 @@ from typing import Callable
 
 import numpy as np
 
+from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String, to_snbt
 from emulator.world import display, java_random, living, random_sequences, rotation
 from emulator.world.dimensions import OVERWORLD
@@ -307,12 +309,14 @@ class Entity:
 
     @property
     def display_name(self) -> str:
-        """``getName().getString()``: the custom name's text, a player's name, else the type's name."""
+        """``getName().getString()``: the custom name's text, a player's name, else the type's name
+        (EntityType.getDescription: ``entity.minecraft.zombie_villager``'s en_us text)."""
         if self.is_player:
             return self.player_name or ""
         if self.custom_name is not None:
-            return plain_text(self.custom_name)
-        return self.type.split(":", 1)[-1].replace("_", " ").title()
+            return plain_text(self.custom_name, self.release)
+        namespace, path = self.type.split(":", 1)
+        return gamedata.language(self.release).get(f"entity.{namespace}.{path}") or path.replace("_", " ").title()
 
     @property
     def sneaking(self) -> bool:

@@ -23,9 +23,10 @@ class LogEntry:
     def to_json(self) -> dict:
         return {"tick": self.tick, "kind": self.kind, "text": self.text, "where": str(self.loc) if self.loc else None}
 
-    def read_text(self) -> str:
-        """What a player reads of the line: a tellraw's component as plain text, others as logged."""
-        return plain_text(self.text) if self.kind == "tellraw" else self.text
+    def read_text(self, release=None) -> str:
+        """What a player reads of the line: a tellraw's component as plain text (translated as in
+        ``release``: :func:`emulator.world.text.plain_text`), others as logged."""
+        return plain_text(self.text, release) if self.kind == "tellraw" else self.text
 
 
 @dataclass(frozen=True, slots=True)

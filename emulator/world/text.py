@@ -21,6 +21,8 @@ from mcfunction_parser.nbt import Compound, List
 from mcfunction_parser.reader import ParseError, Reader
 from mcfunction_parser.snbt import value as snbt_value
 
+from emulator.world import translations
+
 
 def _java_text(value: float, shortest: str, reads_back) -> str:
     if math.isnan(value):
@@ -81,11 +83,13 @@ RESOLVED = ("score", "selector", "nbt")  # the contents ComponentUtils.updateFor
 
 
 def needs_resolving(component) -> bool:
-    """Whether a component (plain values) holds a score, selector or nbt part, itself or in its extras."""
+    """Whether a component (plain values) holds a score, selector or nbt part, itself, in its extras
+    or in its translation's arguments."""
     if isinstance(component, list):
         return any(needs_resolving(c) for c in component)
     if isinstance(component, dict):
-        return any(k in component for k in RESOLVED) or needs_resolving(component.get("extra", []))
+        return (any(k in component for k in RESOLVED) or needs_resolving(component.get("extra", []))
+                or needs_resolving(component.get("with", [])))
     return False
 
 
@@ -126,19 +130,29 @@ def component_value(value):
     return {**out, "extra": siblings} if siblings else out
 
 
-def plain_text(text: str) -> str:
-    """The plain text of a text component as written (a string, list or ``{"text": ...}`` with its
-    extras, in JSON or SNBT; a ``translate`` key stands for its translation), else the text as
-    written."""
+def plain_text(text: str, release=None) -> str:
+    """The plain text of a text component as written (a string, list or object with its extras, in
+    JSON or SNBT; a ``translate`` reads as :func:`emulator.world.translations.translated` does in
+    ``release``, None: without the game's strings), else the text as written."""
     value = read_component(text)
-    return text if value is None else _plain(value)
+    return text if value is None else _plain(value, release)
 
 
-def _plain(value) -> str:
+def _plain(value, release) -> str:
     if isinstance(value, str):
         return value
+    if isinstance(value, bool):  # a primitive translation argument: its Java toString
+        return "true" if value else "false"
+    if isinstance(value, float):
+        return java_double_string(value)
     if isinstance(value, list):
-        return "".join(_plain(v) for v in value)
+        return "".join(_plain(v, release) for v in value)
     if isinstance(value, dict):
-        return str(value.get("text", value.get("translate", ""))) + "".join(_plain(v) for v in value.get("extra", []))
+        if "translate" in value:
+            own = translations.translated(value, release, lambda argument: _plain(argument, release))
+        elif "keybind" in value and "text" not in value:
+            own = translations.keybind(value, release)
+        else:
+            own = str(value.get("text", ""))
+        return own + "".join(_plain(v, release) for v in value.get("extra", []))
     return str(value)

@@ -112,6 +112,8 @@ def _resolve(component, resolver: "_Resolver"):
         out["text"], interpreted = "", resolver.interpreted(component)  # the values come first
     elif "nbt" in component:
         out["text"] = resolver.nbt(component)
+    if isinstance(component.get("with"), list):  # TranslatableContents.resolve: each argument
+        out["with"] = [_resolve(argument, resolver) for argument in component["with"]]
     if "extra" in component or interpreted:
         out["extra"] = out.get("extra", []) + interpreted + _resolve(component.get("extra", []), resolver)
     return out

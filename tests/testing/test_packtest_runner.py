@@ -186,6 +186,21 @@ def test_chat_conditions_see_messages_since_the_test_started(pack):
     assert results["demo:nobody"].status == "passed", results["demo:nobody"].message  # nobody received it
 
 
+def test_chat_reads_translated_messages_as_the_server_does(pack):
+    # ChatAssertion matches Component.getString(): a translate component reads as the release's en_us
+    # string with its arguments (TranslatableContents.decompose), a pack's own key as its fallback,
+    # a selector as the entity type's en_us name (EntityType.getDescription)
+    root = pack({
+        "demo/test/translated.mcfunction":
+            '# @dummy\nsummon tnt_minecart ~ ~ ~\n'
+            'tellraw @a {"translate":"chat.type.text","with":["Alex",{"selector":"@e[type=tnt_minecart]"}]}\n'
+            'tellraw @a {"translate":"demo.hello","fallback":"Hello, %s!","with":[{"translate":"item.minecraft.diamond"}]}\n'
+            'assert chat "^<Alex> Minecart with TNT$"\nassert chat "^Hello, Diamond!$"\n',
+    })
+    result = by_id(run(root))["demo:translated"]
+    assert result.status == "passed", result.message
+
+
 def test_chat_receivers_see_their_own_messages(pack):
     # ChatAssertion with players: each receiver's messages (ChatRecorder.since with a recipient),
     # flat-mapped over the players; no player found is an error, failing `assert not` too

@@ -1,0 +1,53 @@
+"""Translated text as a server reads it (Component.getString of TranslatableContents)."""
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from emulator.world.text import plain_text
+
+
+def read(component, release=(1, 21, 4)) -> str:
+    return plain_text(json.dumps(component), release)
+
+
+@pytest.mark.parametrize("component, text", [
+    # TranslatableContents.decompose: the key's en_us string, its %s taking the arguments in turn
+    ({"translate": "chat.type.text", "with": ["Alex", "hi"]}, "<Alex> hi"),
+    # decomposeTemplate: %N$s names an argument, %% is a percent sign; a key the language lacks is
+    # its own template (Language.getOrDefault)
+    ({"translate": "%2$s, %1$s and %%", "with": ["a", {"text": "b"}]}, "b, a and %"),
+    # ... and anything it cannot decompose is shown as written: another conversion, a stray %, an
+    # argument index past the end (TranslatableFormatException)
+    ({"translate": "%d items", "with": [1]}, "%d items"),
+    ({"translate": "100%"}, "100%"),
+    ({"translate": "%s and %s", "with": ["one"]}, "%s and %s"),
+    # getArgument: a primitive argument reads as its toString; extra arguments are left over
+    ({"translate": "%s %s %s", "with": [3, 2.5, True, "unused"]}, "3 2.5 true"),
+    # a component argument is read whole, with its own extras and translations
+    ({"translate": "[%s]", "with": [{"translate": "item.minecraft.diamond", "extra": ["!"]}]}, "[Diamond!]"),
+    # the fallback stands in for a key the language lacks (23w03a, 1.19.4)
+    ({"translate": "mypack.greeting", "fallback": "Hello %s", "with": ["Alex"]}, "Hello Alex"),
+    ({"translate": "item.minecraft.diamond", "fallback": "x"}, "Diamond"),
+    # KeybindContents on a server: the key's translation (KeybindResolver's default)
+    ({"keybind": "key.jump"}, "Jump"),
+])
+def test_translations_read_as_on_a_server(component, text):
+    assert read(component) == text
+
+
+def test_the_strings_are_the_releases_own():
+    # netherite came with 1.16: 1.15's en_us has no key for it, so the key reads as itself
+    ingot = {"translate": "item.minecraft.netherite_ingot"}
+    assert (read(ingot, (1, 15, 2)), read(ingot, (1, 16, 5))) == ("item.minecraft.netherite_ingot", "Netherite Ingot")
+
+
+def test_fallback_is_ignored_before_1_19_4():
+    component = {"translate": "mypack.greeting", "fallback": "Hello"}
+    assert (read(component, (1, 19, 3)), read(component, (1, 19, 4))) == ("mypack.greeting", "Hello")
+
+
+def test_without_a_release_only_fallbacks_and_keys():
+    assert plain_text('{"translate":"item.minecraft.diamond"}') == "item.minecraft.diamond"
+    assert plain_text('{"translate":"x","fallback":"y"}') == "y"
