@@ -1,6 +1,6 @@
 """Recipe JSON as the game decodes it (``data/<ns>/recipe/<path>.json``, ``recipes/`` before 1.21):
-the recipe types per release and the fields of the crafting recipes the emulator runs (shaped and
-shapeless). A recipe that does not decode is skipped by the game ("Parsing error loading recipe"),
+the recipe types per release and the fields of the recipes the emulator runs (shaped, shapeless
+and the cooking recipes). A recipe that does not decode is skipped by the game ("Parsing error loading recipe"),
 so the loader keeps only the recipes that pass; each problem is a diagnostic at its JSON string.
 
 - ``check_recipe(doc, version, diagnostics) -> bool``: True when the recipe would load.
@@ -15,7 +15,7 @@ not empty; ``pattern``: 1 to 3 rows of the same width, 1 to 3 columns; every sym
 pattern in the key and every key symbol used), ShapelessRecipe (1 to 9 ingredients), Ingredient
 (CODEC: a value or a non-empty list of values, each ``{"item"}`` xor ``{"tag"}``),
 ItemStack.STRICT_CODEC (the ``result``: ``id``, ``count`` 1 - 99, ``components``; ``item`` and
-``count`` before 1.20.5); the 1.21.2 ingredient and crafting_transmute changes from the
+``count`` before 1.20.5), AbstractCookingRecipe.Serializer (1.20.2 and 1.20.5); the 1.21.2 ingredient and crafting_transmute changes from the
 minecraft.wiki "Recipe" page (history).
 """
 from __future__ import annotations
@@ -50,6 +50,9 @@ RECIPE_TYPES = {
 }
 
 
+COOKING_TYPES = frozenset(f"minecraft:{n}" for n in "smelting blasting smoking campfire_cooking".split())
+
+
 def ingredient_strings(version: Version) -> bool:
     return tuple(version) >= INGREDIENT_STRINGS
 
@@ -74,9 +77,35 @@ class _RecipeChecker(_Checker):
             self.shaped(root)
         elif kind == "minecraft:crafting_shapeless":
             self.shapeless(root)
+        elif kind in COOKING_TYPES:
+            self.cooking(root)
+            return
         else:
             return
         self.result(root.get("result"))
+
+    def cooking(self, root: dict) -> None:
+        """AbstractCookingRecipe's serializer: an ``ingredient`` and a ``result``: an item id before
+        1.20.5 (GsonHelper.getAsString, then the item registry's codec from 1.20.2), from 1.20.5
+        ItemStack.STRICT_SINGLE_ITEM_CODEC (``id`` and ``components``; a ``count`` is not read);
+        ``experience`` and ``cookingtime`` have defaults."""
+        if "ingredient" not in root:
+            self.report(ERROR, 'a cooking recipe needs "ingredient"', "type")
+        else:
+            self.advance("ingredient")
+            self.ingredient(root["ingredient"])
+        result = root.get("result")
+        if self.version < COMPONENTS_VERSION:
+            if not isinstance(result, str):
+                self.report(ERROR, 'a cooking recipe needs "result": an item id (before 1.20.5)', "result")
+            else:
+                self.item(result)
+        elif not isinstance(result, dict) or not isinstance(result.get("id"), str):
+            self.report(ERROR, 'a cooking recipe needs "result": an object with the item\'s "id"', "result")
+        else:
+            self.item(result["id"])
+            for name in result.get("components", {}) if isinstance(result.get("components"), dict) else ():
+                self.component(name)
 
     def shaped(self, root: dict) -> None:
         """The key, then the pattern, each searched from the recipe's start (either comes first)."""

@@ -24,6 +24,8 @@ def _emulator(tmp_path, backend, text, version_format=48):
         ns, path = rid.split(":")
         file = root / "data" / ns / "recipe" / f"{path}.json"
         file.parent.mkdir(parents=True, exist_ok=True)
+        if version_format >= 57:  # 1.21.2 writes an ingredient as the item's id (Ingredient.CODEC)
+            body = {**body, "ingredient": body["ingredient"]["item"]}
         file.write_text(json.dumps(body))
     emu = Emulator(backend=backend)
     emu.load(root)

@@ -10,6 +10,7 @@ import json
 from mcfunction_parser import load_packs
 from tests.conftest import write_pack
 
+SMELT = {"type": "smelting", "ingredient": {"item": "minecraft:cobblestone"}, "result": {"id": "minecraft:stone"}}
 SHAPED = {"type": "minecraft:crafting_shaped", "pattern": ["##", "##"], "key": {"#": {"item": "minecraft:stick"}},
           "result": {"id": "minecraft:oak_planks", "count": 4}}
 
@@ -23,7 +24,7 @@ def test_a_recipe_that_decodes_keeps_its_body(tmp_path):
                  "result": {"id": "minecraft:stone", "components": {"minecraft:custom_data": {"a": 1}}}}
     root = write_pack(tmp_path / "p", {"a/recipe/shaped.json": json.dumps(SHAPED),
                                        "a/recipe/shapeless.json": json.dumps(shapeless),
-                                       "a/recipe/smelt.json": json.dumps({"type": "smelting", "ingredient": "x"})})
+                                       "a/recipe/smelt.json": json.dumps(SMELT)})
     packs = load_packs([root], mc_version="1.21")
     assert packs.errors == []
     assert set(packs.recipe_bodies) == {"a:shaped", "a:shapeless", "a:smelt"}
@@ -77,3 +78,26 @@ def test_unknown_and_retired_types(tmp_path):
     assert [e.message for e in load_packs([root], mc_version="1.21").errors] == [
         "recipe type 'crafting_transmute' is not a recipe type in this version",
         "recipe type 'minecraft:crafting_fancy' is not a recipe type known to dpemu"]
+
+
+def test_cooking_recipes_by_release(tmp_path):
+    # AbstractCookingRecipe.Serializer: an ingredient and a result, an item id before 1.20.5
+    # (GsonHelper.getAsString; the item registry's codec from 1.20.2), then
+    # ItemStack.STRICT_SINGLE_ITEM_CODEC: {id, components}, a count not read; experience and
+    # cookingtime default (decompiled 1.20.2 and 1.21 AbstractCookingRecipe.Serializer)
+    root = write_pack(tmp_path / "p", {
+        "a/recipe/good.json": json.dumps({**SMELT, "type": "minecraft:blasting", "result": {"id": "stone", "count": 300}}),
+        "a/recipe/no_result.json": json.dumps({"type": "minecraft:smoking", "ingredient": {"item": "minecraft:beef"}}),
+        "a/recipe/old_result.json": json.dumps({**SMELT, "result": "minecraft:stone"}),
+        "a/recipe/no_ingredient.json": json.dumps({"type": "campfire_cooking", "result": {"id": "minecraft:cooked_beef"}})})
+    packs = load_packs([root], mc_version="1.21")
+    assert [(e.path.rsplit("/", 1)[-1], e.message) for e in packs.errors] == [
+        ("no_ingredient.json", 'a cooking recipe needs "ingredient"'),
+        ("no_result.json", 'a cooking recipe needs "result": an object with the item\'s "id"'),
+        ("old_result.json", 'a cooking recipe needs "result": an object with the item\'s "id"')]
+    assert set(packs.recipe_bodies) == {"a:good"}
+    old = write_pack(tmp_path / "q", {"a/recipes/old.json": json.dumps({**SMELT, "result": "minecraft:stone"}),
+                                      "a/recipes/new.json": json.dumps(SMELT)})
+    (old / "pack.mcmeta").write_text(json.dumps({"pack": {"pack_format": 26, "description": ""}}))
+    assert [e.message for e in load_packs([old]).errors] == [
+        'a cooking recipe needs "result": an item id (before 1.20.5)']
