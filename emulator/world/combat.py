@@ -47,14 +47,16 @@ import math
 
 import numpy as np
 
-from emulator.world import advancements, equipment, inventories, living, loot, predicates, statistics, teams, tools
+from emulator.world import (advancements, equipment, inventories, living, loot, predicates, statistics, teams, tools,
+                            translations)
+from emulator.world.text import plain_text
 from emulator.world.entities import Entity
 from emulator.world.entity_types import PROJECTILES
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.loot_context import DamageSource, LootContext
-from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String
+from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String, to_snbt
 
 F32 = np.float32
 CREDIT_TICKS = 100  # LivingEntity.setLastHurtByPlayer / setLastHurtByMob
@@ -67,16 +69,22 @@ ANIMALS = frozenset("pig cow sheep chicken rabbit mooshroom goat llama horse don
 MONSTERS = frozenset("zombie husk drowned skeleton stray bogged creeper spider cave_spider witch enderman "
                      "silverfish endermite vindicator pillager evoker ravager zombified_piglin piglin_brute "
                      "wither_skeleton blaze guardian".split())
-# en_us death messages by damage type: death.attack.<message id> (with the responsible entity as {1}
-# when the source has one) and its ``.player`` form (a source without an entity, a killer credited)
-DEATH_MESSAGES = {
-    "minecraft:generic": ("{0} died", "{0} died because of {1}"),
-    "minecraft:generic_kill": ("{0} was killed", "{0} was killed while fighting {1}"),
-    "minecraft:out_of_world": ("{0} fell out of the world", "{0} didn't want to live in the same world as {1}"),
-    "minecraft:magic": ("{0} was killed by magic", "{0} was killed by magic while trying to escape {1}"),
-    "minecraft:player_attack": ("{0} was slain by {1}", None),
-    "minecraft:mob_attack": ("{0} was slain by {1}", None),
-}
+# the vanilla damage types' message ids (DamageTypes.bootstrap, decompiled 1.21.x: DamageType.msgId);
+# the death message is the en_us text of death.attack.<id> (CombatTracker.getDeathMessage)
+MESSAGE_IDS = {f"minecraft:{pair.split('=')[0]}": pair.split("=")[1] for pair in (
+    "in_fire=inFire campfire=inFire lightning_bolt=lightningBolt on_fire=onFire lava=lava hot_floor=hotFloor "
+    "in_wall=inWall cramming=cramming drown=drown starve=starve cactus=cactus fall=fall ender_pearl=fall "
+    "fly_into_wall=flyIntoWall out_of_world=outOfWorld generic=generic magic=magic wither=wither "
+    "dragon_breath=dragonBreath dry_out=dryout sweet_berry_bush=sweetBerryBush freeze=freeze "
+    "stalagmite=stalagmite falling_block=fallingBlock falling_anvil=anvil falling_stalactite=fallingStalactite "
+    "sting=sting mob_attack=mob mob_attack_no_aggro=mob player_attack=player arrow=arrow trident=trident "
+    "mob_projectile=mob spit=mob fireworks=fireworks unattributed_fireball=onFire fireball=fireball "
+    "wither_skull=witherSkull thrown=thrown indirect_magic=indirectMagic thorns=thorns explosion=explosion "
+    "player_explosion=explosion.player sonic_boom=sonic_boom bad_respawn_point=badRespawnPoint "
+    "outside_border=outsideBorder generic_kill=genericKill wind_charge=mob mace_smash=mace_smash"
+).split()}
+FALL_VARIANTS = frozenset({"minecraft:fall", "minecraft:ender_pearl"})  # DeathMessageType.FALL_VARIANTS
+INTENTIONAL_GAME_DESIGN = "minecraft:bad_respawn_point"  # DeathMessageType.INTENTIONAL_GAME_DESIGN
 
 
 NO_ANGER = frozenset({"minecraft:mob_attack_no_aggro"})  # the game's #minecraft:no_anger damage types
@@ -552,28 +560,49 @@ def _player_dies(state, player, source: DamageSource, killer) -> None:
 
 
 def _death_message(state, player, source: DamageSource, killer) -> None:
-    """CombatTracker.getDeathMessage for a death with no fall in its history, broadcast when
-    ``showDeathMessages`` is on."""
+    """CombatTracker.getDeathMessage, broadcast when ``showDeathMessages`` is on: the killing blow's
+    DamageSource.getLocalizedDeathMessage (death.attack.<message id> with the victim and the
+    responsible entity, ``.item`` when that entity's main hand holds a named item; without an entity,
+    ``.player`` naming the killer credited), or the bed and anchor's "[Intentional Game Design]"."""
     if state.gamerules.get("showDeathMessages") == "false":
         return
-    texts = DEATH_MESSAGES.get(source.type)
-    responsible = source.attacker or source.direct
-    if responsible is not None:
-        text, other = (texts[0] if texts else None), responsible
-        weapon = inventories.entity_slot(responsible, inventories.MAINHAND, state.version)
-        if weapon is not None and weapon.get().component("minecraft:custom_name") is not None:
-            text = None  # the ".item" form names the weapon
-    else:
-        text, other = (None, None) if texts is None else (texts[1], killer) if killer is not None else (texts[0], None)
-    if text is None:
+    message = _death_text(state, player, source, killer)
+    if message is None:
+        return
+    state.broadcast("chat", message)
+
+
+def _death_text(state, player, source: DamageSource, killer) -> str | None:
+    message_id = MESSAGE_IDS.get(source.type)
+    if message_id is None or source.type in FALL_VARIANTS:  # a pack's type; a fall's variant needs the fall
         state.error(f"the death message of damage type {source.type} is not modelled: none was sent",
                     severity="warning", unmodelled=True)
-        return
-    if player.team is not None or (other is not None and other.team is not None):
+        return None
+    responsible = source.attacker or source.direct
+    others = [e for e in (responsible, killer) if e is not None]
+    if player.team is not None or any(e.team is not None for e in others):
         state.error("the death message naming an entity in a team (the team's prefix, suffix and colour, its "
                     "deathMessageVisibility) is not modelled: none was sent", severity="warning", unmodelled=True)
-        return
-    state.broadcast("chat", text.format(player.display_name, other.display_name if other is not None else ""))
+        return None
+    key = f"death.attack.{message_id}"
+    if source.type == INTENTIONAL_GAME_DESIGN:
+        link = "[" + _translated(state, f"{key}.link", []) + "]"  # ComponentUtils.wrapInSquareBrackets
+        return _translated(state, f"{key}.message", [player.display_name, link])
+    if responsible is not None:
+        weapon = inventories.entity_slot(responsible, inventories.MAINHAND, state.version)
+        held = weapon.get() if weapon is not None else None
+        name = held.component("minecraft:custom_name") if held is not None and not held.is_empty else None
+        if name is not None:  # ItemStack.getDisplayName: the hover name in square brackets
+            shown = "[" + plain_text(str(name) if isinstance(name, str) else to_snbt(name), state.version) + "]"
+            return _translated(state, f"{key}.item", [player.display_name, responsible.display_name, shown])
+        return _translated(state, key, [player.display_name, responsible.display_name])
+    if killer is not None:
+        return _translated(state, f"{key}.player", [player.display_name, killer.display_name])
+    return _translated(state, key, [player.display_name])
+
+
+def _translated(state, key: str, arguments: list[str]) -> str:
+    return translations.translated({"translate": key, "with": arguments}, state.version, str)
 
 
 def _drop_inventory(state, player) -> None:

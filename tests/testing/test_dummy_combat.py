@@ -198,3 +198,26 @@ def test_protection_on_a_hurt_players_armour_is_inconclusive(tmp_path):
         "damage Alex 3 minecraft:mob_attack\nsucceed\n"))
     assert result.status == "inconclusive", result.report()
     assert "minecraft:protection" in result.message
+
+
+def test_death_messages_read_the_damage_types_message(tmp_path):
+    """CombatTracker.getDeathMessage -> DamageSource.getLocalizedDeathMessage: death.attack.<msgId>
+    of the damage type (DamageTypes.bootstrap: drown -> "drown", arrow -> "arrow", bad_respawn_point
+    -> "badRespawnPoint" with its "[Intentional Game Design]" link), the ``.player`` form naming the
+    killer credited when the source has no entity, the ``.item`` form when the responsible entity's
+    main hand holds a named item; en_us texts of the release."""
+    result = run(tmp_path, (
+        "dummy Ann spawn\ndummy Bob spawn\ndummy Cid spawn\ndummy Dee spawn\n"
+        "tp Bob ~2 ~ ~\ntp Cid ~4 ~ ~\ntp Dee ~6 ~ ~\n"
+        "summon skeleton ~ ~ ~3 {NoAI:1b,Tags:[\"s\"],HandItems:[{id:\"minecraft:bow\",count:1,"
+        "components:{\"minecraft:custom_name\":'\"Bolt\"'}},{}]}\n"
+        "damage Ann 100 minecraft:drown\n"
+        "assert chat \"^Ann drowned$\"\n"
+        "damage Bob 1 minecraft:player_attack by Ann\n"
+        "damage Bob 100 minecraft:drown\n"
+        "assert chat \"^Bob drowned while trying to escape Ann$\"\n"
+        "damage Cid 100 minecraft:arrow by @e[tag=s,limit=1]\n"
+        "assert chat \"^Cid was shot by Skeleton using \\\\[Bolt\\\\]$\"\n"
+        "damage Dee 100 minecraft:bad_respawn_point\n"
+        "assert chat \"^Dee was killed by \\\\[Intentional Game Design\\\\]$\"\n"))
+    assert result.status == "passed", result.report()
