@@ -1,7 +1,8 @@
 """The message texts of command failures, by key (one source of truth).
 
 ``MESSAGES`` holds the game's en_us texts for the translation keys the emulator raises (the game's
-``CommandSyntaxException`` messages); ``EMULATOR_MESSAGES`` the emulator's own, keyed ``dpemu.*``,
+``CommandSyntaxException`` messages), as 1.21.4 words them (a key 1.21.4 lacks: as the first release
+that has it words it; tested against the shipped language files); ``EMULATOR_MESSAGES`` the emulator's own, keyed ``dpemu.*``,
 for what the game has no message for (a limit of the emulator, a command it cannot read).
 :class:`CommandFailure`, the one failure of a command on both backends (the game's
 ``CommandSyntaxException``), is built from a key of either table.
@@ -24,9 +25,8 @@ MESSAGES = {
     "commands.data.entity.invalid": "Unable to modify player data",
     "argument.dimension.invalid": "Unknown dimension '{0}'",
     "commands.teleport.invalidPosition": "Invalid position for teleport",
-    # the en_us text of the stopwatch keys was not read from the game's language file
-    "commands.stopwatch.already_exists": "Stopwatch {0} already exists",
-    "commands.stopwatch.does_not_exist": "Stopwatch {0} does not exist",
+    "commands.stopwatch.already_exists": "Stopwatch '{0}' already exists",  # 1.21.11+
+    "commands.stopwatch.does_not_exist": "Stopwatch '{0}' does not exist",
     "commands.spreadplayers.failed.entities": "Could not spread {0} entity/entities around {1}, {2} (too many entities "
                                               "for space - try using spread of at most {3})",
     "commands.spreadplayers.failed.teams": "Could not spread {0} team(s) around {1}, {2} (too many entities for space "
@@ -164,7 +164,7 @@ MESSAGES = {
     "commands.forceload.added.failure": "No chunks were marked for force loading",
     "commands.forceload.removed.failure": "No chunks were removed from force loading",
     "commands.forceload.query.failure": "Chunk at {0} in {1} is not marked for force loading",
-    "commands.forceload.toobig": "Too many chunks in the specified area (maximum {0}, but specified {1})",
+    "commands.forceload.toobig": "Too many chunks in the specified area (maximum {0}, specified {1})",
     "commands.worldborder.set.failed.nochange": "Nothing changed. The world border is already that size",
     "commands.worldborder.set.failed.small": "World border cannot be smaller than 1 block wide",
     "commands.worldborder.set.failed.big": "World border cannot be bigger than {0} blocks wide",

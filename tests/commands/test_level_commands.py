@@ -211,7 +211,7 @@ def test_forceload_keeps_its_marks_per_level(tmp_path, backend):
 
 
 @pytest.mark.parametrize("text,message", [
-    ("forceload add 0 0 256 256", "Too many chunks in the specified area (maximum 256, but specified 289)"),
+    ("forceload add 0 0 256 256", "Too many chunks in the specified area (maximum 256, specified 289)"),
     ("forceload query 40 3", "Chunk at [2, 0] in minecraft:overworld is not marked for force loading"),
     ("forceload remove 0 0", "No chunks were removed from force loading"),
     ("forceload add 30000000 0", "That position is out of this world!"),
