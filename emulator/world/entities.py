@@ -315,8 +315,23 @@ class Entity:
             return self.player_name or ""
         if self.custom_name is not None:
             return plain_text(self.custom_name, self.release)
+        if self.type == "minecraft:item":
+            return self._item_name()
         namespace, path = self.type.split(":", 1)
         return gamedata.language(self.release).get(f"entity.{namespace}.{path}") or path.replace("_", " ").title()
+
+    def _item_name(self) -> str:
+        """ItemEntity.getName: the stack's item name (ItemStack.getItemName: its ``item_name``
+        component, else the item's en_us name: a block item's is its block's), not its custom name."""
+        item = self.data.get("Item")
+        components = item.get("components") if isinstance(item, Compound) else None
+        named = components.get("minecraft:item_name") if isinstance(components, Compound) else None
+        if named is not None:
+            return plain_text(str(named) if isinstance(named, str) else to_snbt(named), self.release)
+        namespace, _, path = str(item.get("id", "minecraft:air") if isinstance(item, Compound) else "minecraft:air").rpartition(":")
+        strings = gamedata.language(self.release)
+        return (strings.get(f"item.{namespace or 'minecraft'}.{path}") or strings.get(f"block.{namespace or 'minecraft'}.{path}")
+                or path.replace("_", " ").title())
 
     @property
     def sneaking(self) -> bool:

@@ -51,3 +51,19 @@ def test_fallback_is_ignored_before_1_19_4():
 def test_without_a_release_only_fallbacks_and_keys():
     assert plain_text('{"translate":"item.minecraft.diamond"}') == "item.minecraft.diamond"
     assert plain_text('{"translate":"x","fallback":"y"}') == "y"
+
+
+def test_entities_are_named_by_their_types_and_items_by_theirs(tmp_path):
+    # Entity.getName: EntityType.getDescription (en_us "entity.minecraft.tnt_minecart"); an item
+    # entity's ItemEntity.getName: the stack's item name (ItemStack.getItemName: item_name, else the
+    # item's en_us name, a block item's its block's), never the stack's custom name
+    from tests.world.world_emulator import emulator
+    emu = emulator(tmp_path, "python", {"t:main": "\n".join([
+        "summon tnt_minecart 0 0 0",
+        'summon item 0 0 0 {Item:{id:"minecraft:stone",count:1}}',
+        'summon item 0 0 0 {Item:{id:"minecraft:redstone",count:1,components:{"minecraft:custom_name":\'"X"\'}}}',
+        'summon item 0 0 0 {Item:{id:"minecraft:diamond",count:1,components:{"minecraft:item_name":\'"Gem"\'}}}',
+        'tellraw @a {"selector":"@e[type=!player]"}'])})
+    emu.add_player("Alex")
+    emu.call("t:main")
+    assert emu.log[0].read_text(emu.state.version) == "Minecart with TNT, Stone, Redstone Dust, Gem"
