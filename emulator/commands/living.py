@@ -16,7 +16,7 @@ from emulator.world import advancements, combat, living
 from emulator.world.entities import uuid_string
 from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
-from mcfunction_parser import ast
+from mcfunction_parser import ast, gamedata
 from mcfunction_parser.arguments import vec3
 from mcfunction_parser.primitives import is_uuid, uuid_ints
 from mcfunction_parser.reader import ParseError, Reader
@@ -117,8 +117,11 @@ def _clear(env, cmd, words, target, ctx) -> int:
 
 
 # ---------------------------------------------------------------------- attribute
-def _attribute_name(name: str) -> str:
-    return name.replace("_", " ").title()
+def _attribute_name(name: str, release) -> str:
+    """The attribute's name in messages: the en_us text of its description id (Attribute.getDescriptionId:
+    ``attribute.name.`` and its registry path in the release: movement_speed reads Speed)."""
+    key = "attribute.name." + living.saved_attribute_id(name, release).split(":", 1)[1]
+    return gamedata.language(tuple(release)).get(key) or name.replace("_", " ").title()
 
 
 def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
@@ -130,7 +133,8 @@ def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
     if not living.is_living(entity.type):
         raise CommandFailure("commands.attribute.failed.entity", entity.display_name)
     if name not in living.DEFAULTS or not living.has_attribute(entity.type, name):
-        raise CommandFailure("commands.attribute.failed.no_attribute", entity.display_name, _attribute_name(name))
+        raise CommandFailure("commands.attribute.failed.no_attribute", entity.display_name,
+                             _attribute_name(name, entity.release))
     action = tuple(words[2:4])
     if action[:1] == ("get",):
         return double_to_int(living.attribute_value(entity, name) * _number(cmd, words, 3, float, 1.0))
@@ -167,17 +171,17 @@ def _modifier(cmd, entity, name: str, action: tuple) -> int:
         if not living.add_modifier(entity, name, key, _number(cmd, rest, 0), _OLD_OPERATIONS.get(operation, operation),
                                    label):
             raise CommandFailure("commands.attribute.failed.modifier_already_present", shown,
-                                 _attribute_name(name), entity.display_name)
+                                 _attribute_name(name, entity.release), entity.display_name)
         return 1
     if action == ("remove",):
         if not living.remove_modifier(entity, name, key):
-            raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name),
+            raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name, entity.release),
                                  entity.display_name, shown)
         return 1
     if action == ("value",) and words[4:5] == ["get"]:
         value = living.modifier_value(entity, name, key)
         if value is None:
-            raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name),
+            raise CommandFailure("commands.attribute.failed.no_modifier", _attribute_name(name, entity.release),
                                  entity.display_name, shown)
         return double_to_int(value * _number(cmd, words, 6, float, 1.0))
     raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected modifier add, remove or value get", report=True)

@@ -356,3 +356,14 @@ def test_an_empty_target_fails_with_its_argument_types_message(env, command, mes
     with pytest.raises(CommandFailure) as failure:
         run(env, command.format(uuid=uuid))
     assert message in (failure.value.message, failure.value.key)
+
+
+def test_attribute_messages_name_the_attribute_as_en_us_does(env):
+    # Attribute.getDescriptionId: attribute.name.<its registry path>, whose en_us text names it in the
+    # failures (movement_speed reads Speed, follow_range Mob Follow Range; 1.21.1's keep generic.)
+    _, ctx = player(env)
+    with pytest.raises(CommandFailure, match="^Attribute Speed for entity Steve has no modifier minecraft:x$"):
+        run(env, "attribute @s movement_speed modifier remove x", ctx)
+    env.state.entities.summon("minecraft:pig", (0, 0, 0))
+    with pytest.raises(CommandFailure, match="^Entity Pig has no attribute Block Interaction Range$"):
+        run(env, "attribute @e[type=pig,limit=1] block_interaction_range get")
