@@ -12,7 +12,7 @@ from emulator.world import enchanting, inventories, loot, text_components
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure
 from emulator.world.item_predicates import matches
-from emulator.world.items import ItemStack, create
+from emulator.world.items import ItemStack, create, hover_name
 from emulator.world.living import is_living
 from emulator.world.loot_context import DamageSource, LootContext
 from mcfunction_parser import ast
@@ -35,8 +35,9 @@ def _test(env, predicate: ast.ItemPredicate | None):
     return lambda stack: matches(predicate, stack, resources, version)
 
 
-def _name(stack: ItemStack) -> str:
-    return f"[{stack.id.split(':', 1)[-1].replace('_', ' ').title()}]"
+def _name(env, stack: ItemStack) -> str:
+    """ItemStack.getDisplayName as text: the hover name in square brackets."""
+    return f"[{hover_name(stack, env.state.version)}]"
 
 
 def _players(env, target, ctx) -> list[Entity]:
@@ -60,7 +61,7 @@ def give(env, cmd: ast.Give, ctx) -> int:
     sample = create(cmd.item, 1)
     limit = sample.max_stack_size * 100
     if cmd.count > limit:
-        raise CommandFailure("commands.give.failed.toomanyitems", limit, _name(sample))
+        raise CommandFailure("commands.give.failed.toomanyitems", limit, _name(env, sample))
     for player in players:
         inventory = inventories.player_inventory(player, _version(env))
         remaining = cmd.count
@@ -158,7 +159,7 @@ def item_replace(env, cmd: ast.ItemReplace, ctx) -> int:
         accepted += access is not None and access.set(stack.copy())
         broadcast_changes(env, [entity])  # ItemCommands: a player's menu broadcasts
     if accepted == 0:
-        raise CommandFailure("commands.item.target.no_changed.known_item", _name(stack), slot)
+        raise CommandFailure("commands.item.target.no_changed.known_item", _name(env, stack), slot)
     return accepted
 
 
@@ -378,7 +379,7 @@ def enchant_command(env, cmd: ast.GenericCommand, ctx) -> int:
             access.set(stack)
             changed += 1
         elif alone:
-            raise CommandFailure("commands.enchant.failed.incompatible", _name(stack).strip("[]"))
+            raise CommandFailure("commands.enchant.failed.incompatible", hover_name(stack, env.state.version))
     if not changed:
         raise CommandFailure("commands.enchant.failed")
     if found.get("effects"):

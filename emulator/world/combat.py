@@ -47,16 +47,15 @@ import math
 
 import numpy as np
 
-from emulator.world import (advancements, equipment, inventories, living, loot, predicates, statistics, teams, tools,
-                            translations)
-from emulator.world.text import plain_text
+from emulator.world import (advancements, equipment, inventories, items, living, loot, predicates, statistics, teams,
+                            tools, translations)
 from emulator.world.entities import Entity
 from emulator.world.entity_types import PROJECTILES
 from emulator.world.errors import Unmodelled
 from emulator.world.items import EMPTY, enchantment_level, enchantment_levels
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.loot_context import DamageSource, LootContext
-from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String, to_snbt
+from mcfunction_parser.nbt import Compound, Double, Int, IntArray, List, Short, String
 
 F32 = np.float32
 CREDIT_TICKS = 100  # LivingEntity.setLastHurtByPlayer / setLastHurtByMob
@@ -591,9 +590,8 @@ def _death_text(state, player, source: DamageSource, killer) -> str | None:
     if responsible is not None:
         weapon = inventories.entity_slot(responsible, inventories.MAINHAND, state.version)
         held = weapon.get() if weapon is not None else None
-        name = held.component("minecraft:custom_name") if held is not None and not held.is_empty else None
-        if name is not None:  # ItemStack.getDisplayName: the hover name in square brackets
-            shown = "[" + plain_text(str(name) if isinstance(name, str) else to_snbt(name), state.version) + "]"
+        if held is not None and not held.is_empty and held.component("minecraft:custom_name") is not None:
+            shown = "[" + items.hover_name(held, state.version) + "]"  # ItemStack.getDisplayName
             return _translated(state, f"{key}.item", [player.display_name, responsible.display_name, shown])
         return _translated(state, key, [player.display_name, responsible.display_name])
     if killer is not None:

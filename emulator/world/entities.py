@@ -48,7 +48,7 @@ import numpy as np
 
 from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String, to_snbt
-from emulator.world import display, java_random, living, random_sequences, rotation
+from emulator.world import display, items, java_random, living, random_sequences, rotation
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
 from emulator.world.entity_table import (
@@ -321,17 +321,13 @@ class Entity:
         return gamedata.language(self.release).get(f"entity.{namespace}.{path}") or path.replace("_", " ").title()
 
     def _item_name(self) -> str:
-        """ItemEntity.getName: the stack's item name (ItemStack.getItemName: its ``item_name``
-        component, else the item's en_us name: a block item's is its block's), not its custom name."""
+        """ItemEntity.getName: the stack's item name (:func:`emulator.world.items.item_name`), not its
+        custom name."""
         item = self.data.get("Item")
         components = item.get("components") if isinstance(item, Compound) else None
         named = components.get("minecraft:item_name") if isinstance(components, Compound) else None
-        if named is not None:
-            return plain_text(str(named) if isinstance(named, str) else to_snbt(named), self.release)
-        namespace, _, path = str(item.get("id", "minecraft:air") if isinstance(item, Compound) else "minecraft:air").rpartition(":")
-        strings = gamedata.language(self.release)
-        return (strings.get(f"item.{namespace or 'minecraft'}.{path}") or strings.get(f"block.{namespace or 'minecraft'}.{path}")
-                or path.replace("_", " ").title())
+        item_id = str(item.get("id", "minecraft:air")) if isinstance(item, Compound) else "minecraft:air"
+        return items.item_name(item_id, named, self.release)
 
     @property
     def sneaking(self) -> bool:

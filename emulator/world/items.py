@@ -12,6 +12,9 @@ Public API
 - ``to_nbt(stack, version)`` / ``from_nbt(tag)``: ``{id, count, components}`` from 1.20.5,
   ``{id, Count:1b, tag}`` before (ItemStack.save / ItemStack.parse, both forms are read); read
   components are patched as ``create`` patches them.
+- ``hover_name(stack, release)`` / ``item_name(item_id, named, release)``: the stack's name as text
+  (ItemStack.getHoverName: its custom name, else getItemName: its ``item_name``, else the item's
+  en_us name, a block item's its block's).
 - ``DEFAULTS``: the defaults modelled: ``max_stack_size`` (1, 16 or 64), ``max_damage`` and
   ``damage`` of damageable items, the empty ``container`` of container blocks' items, the empty
   ``bundle_contents`` of bundles, an enchanted book's empty ``stored_enchantments``, ``writable_book_content`` of the book and quill, ``fireworks``
@@ -29,6 +32,9 @@ from dataclasses import dataclass, field
 from mcfunction_parser import ast
 from mcfunction_parser.nbt import Byte, Compound, Int, List, String
 from emulator.world.nbt_ops import copy_tag, is_numeric, tags_equal
+from emulator.world.text import plain_text
+from mcfunction_parser import gamedata
+from mcfunction_parser.nbt import to_snbt
 
 AIR = "minecraft:air"
 COMPONENTS_VERSION = (1, 20, 5)
@@ -266,3 +272,26 @@ def from_nbt(tag) -> ItemStack:
         else:
             set_component(stack, name, value)
     return EMPTY.copy() if stack.is_empty else stack
+
+
+# ---------------------------------------------------------------------- names
+def hover_name(stack: ItemStack, release) -> str:
+    """ItemStack.getHoverName as text: its custom name (``custom_name``; ``display.Name`` before
+    1.20.5), else :func:`item_name`."""
+    name = stack.component("minecraft:custom_name")
+    if name is None and isinstance(stack.tag, Compound) and isinstance(stack.tag.get("display"), Compound):
+        name = stack.tag["display"].get("Name")
+    if name is not None:
+        return plain_text(str(name) if isinstance(name, str) else to_snbt(name), release)
+    return item_name(stack.id, stack.component("minecraft:item_name"), release)
+
+
+def item_name(item_id: str, named, release) -> str:
+    """ItemStack.getItemName as text: the ``item_name`` component ``named`` (1.20.5+), else the
+    item's description id in the release's en_us: ``item.<id>``, or a block item's ``block.<id>``
+    (which of the two an item has is told by which key the language holds)."""
+    if named is not None:
+        return plain_text(str(named) if isinstance(named, str) else to_snbt(named), release)
+    namespace, _, path = item_id.rpartition(":")
+    key, strings = f"{namespace or 'minecraft'}.{path}", gamedata.language(tuple(release))
+    return strings.get(f"item.{key}") or strings.get(f"block.{key}") or path.replace("_", " ").title()

@@ -67,3 +67,22 @@ def test_entities_are_named_by_their_types_and_items_by_theirs(tmp_path):
     emu.add_player("Alex")
     emu.call("t:main")
     assert emu.log[0].read_text(emu.state.version) == "Minecart with TNT, Stone, Redstone Dust, Gem"
+
+
+
+def test_a_stack_is_named_by_its_custom_name_or_its_items():
+    # ItemStack.getHoverName: custom_name, else the item's name (a block item's is its block's
+    # en_us name); getDisplayName puts it in brackets, as GiveCommand's ERROR_TOO_MANY_ITEMS shows it
+    from types import SimpleNamespace
+
+    from emulator.commands.items import _name
+    from emulator.world import items
+    from emulator.world.errors import CommandFailure
+    from mcfunction_parser.nbt import Compound, String
+    release = (1, 21, 4)
+    assert items.hover_name(items.ItemStack("minecraft:oak_sign"), release) == "Oak Sign"
+    named = items.ItemStack("minecraft:stone", 1, Compound({"minecraft:custom_name": String('"Rock"')}))
+    assert items.hover_name(named, release) == "Rock"
+    env = SimpleNamespace(state=SimpleNamespace(version=release))
+    failure = CommandFailure("commands.give.failed.toomanyitems", 100, _name(env, items.ItemStack("minecraft:diamond_sword")))
+    assert failure.message == "Can't give more than 100 of [Diamond Sword]"
