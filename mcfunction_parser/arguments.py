@@ -171,7 +171,8 @@ def holder_from_word(word: str, loc: Loc):
 
 # ----------------------------------------------------------------------------- durations
 
-_TIME = re.compile(r"([0-9.\-]*)([tsd]?)")
+# TimeArgument.parse: StringReader.readFloat, then readUnquotedString for the unit
+_TIME = re.compile(r"([0-9.\-]*)([0-9A-Za-z_.+\-]*)")
 _TIME_UNITS = {"": 1, "t": 1, "s": 20, "d": 24000}
 
 
@@ -195,6 +196,8 @@ def duration(r: Reader, minimum: int = 0) -> int:
         r.fail(f"expected a time, got {r.found()}")
     if not FLOAT_TEXT.match(number):
         r.fail(f"invalid time '{number}'", start)
+    if unit not in _TIME_UNITS:  # ERROR_INVALID_UNIT
+        r.fail(f"invalid unit '{unit}' (expected t, s or d)", start + len(number))
     ticks = _java_round(snbt.to_float32(snbt.to_float32(float(number)) * _TIME_UNITS[unit]))
     if ticks < minimum:
         r.fail(f"time must be at least {minimum} ticks, got {m.group()}", start)

@@ -53,6 +53,14 @@ def test_schedule_time_units(time, ticks):
     assert cmd.ticks == ticks and cmd.mode == "replace"
 
 
+@pytest.mark.parametrize("time", ["1x", "1tx", "1e5"])
+def test_a_time_unit_is_the_rest_of_the_word(time):
+    # TimeArgument.parse: readFloat, then readUnquotedString for the unit, which must be t, s, d or
+    # nothing (ERROR_INVALID_UNIT "Invalid unit"): 1e5 is 1 with the unit e5
+    d = parse_err(f"schedule function ns:f {time}")
+    assert d.message.startswith("invalid unit") and d.col == len("schedule function ns:f 1") + 1
+
+
 def test_schedule_modes_and_clear():
     assert parse_ok("schedule function #ns:t 1t append").mode == "append"
     clear = parse_ok("schedule clear #ns:t")
