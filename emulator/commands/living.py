@@ -127,7 +127,7 @@ def _attribute_name(name: str, release) -> str:
 def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
     """``attribute TARGET ATTRIBUTE get [SCALE] | base get [SCALE] | base set VALUE | base reset |
     modifier add ID VALUE OPERATION | modifier remove ID | modifier value get ID [SCALE]``."""
-    words, target = arguments(cmd)
+    words, target, starts = argument_spans(cmd)
     entity = single(env.state, target_word(cmd, words, 0, target), ctx)
     name = living.attribute_id(words[1]) if len(words) > 1 else ""
     if not living.is_living(entity.type):
@@ -147,7 +147,7 @@ def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
         living.reset_base(entity, name)
         return 1
     if action[:1] == ("modifier",):
-        return _modifier(cmd, entity, name, action[1:])
+        return _modifier(cmd, entity, name, action[1:], words, starts)
     raise CommandFailure("dpemu.command.unreadable", cmd.name, "expected get, base or modifier", report=True)
 
 
@@ -155,11 +155,11 @@ def attribute(env, cmd: ast.GenericCommand, ctx) -> int:
 _OLD_OPERATIONS = {"add": "add_value", "multiply_base": "add_multiplied_base", "multiply": "add_multiplied_total"}
 
 
-def _modifier(cmd, entity, name: str, action: tuple) -> int:
+def _modifier(cmd, entity, name: str, action: tuple, words: list, starts: list[int]) -> int:
     """``modifier add KEY [NAME] VALUE OPERATION | remove KEY | value get KEY [SCALE]``: KEY an id
     from 1.21; before it a UUID, and ``add`` takes the modifier's name (a string) after it
-    (AttributeCommand of 1.16 - 1.20.6); the failures name the key as written back (UUID.toString)."""
-    words, _, starts = argument_spans(cmd)
+    (AttributeCommand of 1.16 - 1.20.6); the failures name the key as written back (UUID.toString).
+    ``words`` and ``starts``: :func:`argument_spans` of the command."""
     at = 5 if action == ("value",) else 4  # the key's word: after `value get`
     key, shown = _modifier_key(cmd, entity, words[at] if len(words) > at else "")
     if action == ("add",):

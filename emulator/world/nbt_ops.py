@@ -27,6 +27,8 @@ Public functions
   type per list before 1.21.5, mixed types allowed from 1.21.5 (default: the older rule).
 - ``numeric_value(tag)``: ``NumericTag.getAsDouble``; ``narrow(tag, Byte|Short|Int|Long)``:
   ``getAsByte/Short/Int/Long``; ``is_numeric(tag)``.
+- ``snbt(tag)`` / ``tag_as_string(tag)``: ``Tag.toString`` / ``Tag.getAsString`` as the game prints
+  them under the release in force (StringTagVisitor: sorted keys, Java floats, 1.21.5's quoting).
 
 A path is an :class:`mcfunction_parser.ast.NbtPath` (``nodes`` and ``text``).
 Source: decompiled 1.21 ``commands/arguments/NbtPathArgument.java``, ``nbt/NbtUtils.java``,
