@@ -148,11 +148,13 @@ def _plain(value, release) -> str:
     if isinstance(value, list):
         return "".join(_plain(v, release) for v in value)
     if isinstance(value, dict):
-        if "translate" in value:
-            own = translations.translated(value, release, lambda argument: _plain(argument, release))
-        elif "keybind" in value and "text" not in value:
-            own = translations.keybind(value, release)
-        else:
+        # ComponentSerialization: the first content type whose field is there, text before
+        # translate before keybind (an unresolved score, selector or nbt reads as nothing)
+        if "text" in value or "translate" not in value and "keybind" not in value:
             own = str(value.get("text", ""))
+        elif "translate" in value:
+            own = translations.translated(value, release, lambda argument: _plain(argument, release))
+        else:
+            own = translations.keybind(value, release)
         return own + "".join(_plain(v, release) for v in value.get("extra", []))
     return str(value)

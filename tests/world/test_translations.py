@@ -32,6 +32,9 @@ def read(component, release=(1, 21, 4)) -> str:
     ({"translate": "item.minecraft.diamond", "fallback": "x"}, "Diamond"),
     # KeybindContents on a server: the key's translation (KeybindResolver's default)
     ({"keybind": "key.jump"}, "Jump"),
+    # ComponentSerialization takes the first content type whose field is there: text, then translate
+    ({"text": "a", "translate": "item.minecraft.diamond"}, "a"),
+    ({"translate": "item.minecraft.diamond", "keybind": "key.jump"}, "Diamond"),
 ])
 def test_translations_read_as_on_a_server(component, text):
     assert read(component) == text
