@@ -587,8 +587,8 @@ def _death_text(state, player, source: DamageSource, killer) -> str | None:
     if source.type == INTENTIONAL_GAME_DESIGN:
         link = "[" + _translated(state, f"{key}.link", []) + "]"  # ComponentUtils.wrapInSquareBrackets
         return _translated(state, f"{key}.message", [player.display_name, link])
-    if responsible is not None:
-        weapon = inventories.entity_slot(responsible, inventories.MAINHAND, state.version)
+    if responsible is not None:  # the causing entity's main hand (an arrow with no owner holds none)
+        weapon = inventories.entity_slot(source.attacker, inventories.MAINHAND, state.version) if source.attacker else None
         held = weapon.get() if weapon is not None else None
         if held is not None and not held.is_empty and held.component("minecraft:custom_name") is not None:
             shown = "[" + items.hover_name(held, state.version) + "]"  # ItemStack.getDisplayName
