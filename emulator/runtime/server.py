@@ -68,12 +68,19 @@ TICK_TAG = "minecraft:tick"
 
 # steps 5 and 6 in order, each with its test that it would change nothing now
 # (a batch of ticks needs every one idle: a step added here comes with its test)
-def _effects_step(state) -> None:
-    """The entities' effects tick (:func:`emulator.world.living.tick_living`, an instant effect's
-    damage as combat's magic: it can kill); a player that lost one fires ``effects_changed``
-    (ServerPlayer.onEffectsRemoved)."""
+def _living_step(state) -> None:
+    """The living entities' tick as far as it is modelled here: their effects
+    (:func:`emulator.world.living.tick_living`, an instant effect's damage as combat's magic: it can
+    kill; a player that lost one fires ``effects_changed``: ServerPlayer.onEffectsRemoved), then
+    their combat trackers' recheck (LivingEntity.tick, every 20 ticks)."""
     for entity in living.tick_living(state, combat.magic_harm):
         advancements.effects_changed(state, entity, None)
+    if state.combat_trackers:
+        combat.tick_trackers(state)
+
+
+def _living_idle(state) -> bool:
+    return living.tick_is_idle(state) and combat.trackers_idle(state)
 
 
 def _burning_step(state) -> None:
@@ -84,7 +91,7 @@ def _burning_step(state) -> None:
 ENTITY_STEPS = ((_burning_step, burning.tick_is_idle),
                 (falling.tick_falling, falling.tick_is_idle),
                 (motion.tick_moving, motion.tick_is_idle),
-                (_effects_step, living.tick_is_idle),
+                (_living_step, _living_idle),
                 (equipment.tick, equipment.tick_is_idle),
                 (combat.tick_dead, combat.tick_is_idle),
                 (player_actions.tick_using, player_actions.tick_is_idle),

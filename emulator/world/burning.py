@@ -72,13 +72,9 @@ def _base_ticks(type_id: str) -> bool:
 
 def _burning(state):
     ticking = state.entities.picked("base_tick", _base_ticks)
-    return [e for e in ticking if _may_burn(e) and fire(e) > 0 and e.alive]
-
-
-def _may_burn(entity) -> bool:
-    """A cheap first look (most entities have no Fire above 0): False only where :func:`fire` is 0."""
-    value = entity.data.get("Fire")
-    return is_numeric(value) and value > 0
+    # a cheap first look (most entities have no Fire above 0), then fire() reads it as the game does
+    return [e for e in ticking if is_numeric(fire_tag := e.data.get("Fire")) and fire_tag > 0 and fire(e) > 0
+            and e.alive]
 
 
 def tick_is_idle(state) -> bool:

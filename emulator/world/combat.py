@@ -44,11 +44,12 @@ position as origin); the death messages' en_us texts.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass, field
 
 import numpy as np
 
-from emulator.world import (advancements, equipment, inventories, items, living, loot, predicates, statistics, teams,
-                            tools, translations)
+from emulator.world import (advancements, equipment, fluids, inventories, items, living, loot, predicates, statistics,
+                            teams, tools, translations)
 from emulator.world.entities import Entity
 from emulator.world.entity_types import PROJECTILES
 from emulator.world.errors import Unmodelled
@@ -115,7 +116,8 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
             state.teams, entity, attacker):
         return False
     full = living.takes_full_hurt(state, entity, bypasses)
-    if not living.hurt(state, entity, amount, bypasses, source.type, _armour_wear):
+    if not living.hurt(state, entity, amount, bypasses, source.type, _armour_wear,
+                       lambda damage: record_damage(state, entity, source, damage)):
         return False
     remember_attacker(state, entity, source)
     if full:
@@ -431,6 +433,9 @@ def die(state, entity, source: DamageSource) -> None:
             _mob_drops(state, entity, killer, source)
         state.entities.kill(entity)
         state.scoreboard.reset(entity.score_holder)  # Scoreboard.entityRemoved
+    tracker = state.combat_trackers.get(entity)
+    if tracker is not None:  # LivingEntity.die / ServerPlayer.die end by rechecking: the dead forget
+        recheck(state, entity, tracker)
 
 
 def _mob_drops(state, mob, killer, source: DamageSource) -> None:
@@ -558,6 +563,124 @@ def _player_dies(state, player, source: DamageSource, killer) -> None:
                     unmodelled=True)
 
 
+# ---------------------------------------------------------------------- the combat tracker
+RESET_DAMAGE_STATUS_TIME, RESET_COMBAT_STATUS_TIME = 100, 300  # CombatTracker
+CLIMBABLE = frozenset("minecraft:" + b for b in (  # the blocks FallLocation names, and the other climbables
+    "ladder vine weeping_vines weeping_vines_plant twisting_vines twisting_vines_plant scaffolding cave_vines "
+    "cave_vines_plant").split())
+
+
+@dataclass
+class CombatEntry:
+    source: DamageSource
+    damage: float
+    location: str | None  # FallLocation's id (water, ...), None where it had none
+    fall_distance: float
+
+
+@dataclass
+class CombatTracker:
+    """A living entity's record of its recent hurts, read for its death message."""
+    entries: list = field(default_factory=list)
+    last_damage: int = 0  # its tickCount at the last hurt
+    in_combat: bool = False
+    taking_damage: bool = False
+
+
+def _tick_count(state, entity) -> int:
+    return state.tick - entity.born
+
+
+def record_damage(state, entity, source: DamageSource, damage: float) -> None:
+    """CombatTracker.recordDamage (LivingEntity.actuallyHurt, when health is lost): the entry keeps
+    where the entity is (FallLocation.getCurrentFallLocation: water here; climbing is not modelled,
+    an entity in a climbable block records that it is) and its fall distance."""
+    tracker = state.combat_trackers.get(entity)
+    if tracker is None:
+        tracker = state.combat_trackers[entity] = CombatTracker()
+    recheck(state, entity, tracker)
+    blocks = state.blocks_in(entity.dimension)
+    x, y, z = entity.pos
+    if blocks.get((math.floor(x), math.floor(y), math.floor(z))).id in CLIMBABLE:
+        location = "climbable"
+    else:
+        location = "water" if fluids.in_water(blocks, entity.bounding_box) else None
+    fall = entity.data.get("FallDistance")
+    tracker.entries.append(CombatEntry(source, damage, location, float(fall) if is_numeric(fall) else 0.0))
+    tracker.last_damage, tracker.taking_damage = _tick_count(state, entity), True
+    if not tracker.in_combat and entity.alive and source.attacker is not None and living.is_living(source.attacker.type):
+        tracker.in_combat = True  # shouldEnterCombat: the source's entity is living
+
+
+def recheck(state, entity, tracker: CombatTracker) -> None:
+    """CombatTracker.recheckStatus: the record is cleared once the entity is dead, or 100 ticks after
+    its last hurt (300 in combat)."""
+    limit = RESET_COMBAT_STATUS_TIME if tracker.in_combat else RESET_DAMAGE_STATUS_TIME
+    if tracker.taking_damage and (not entity.alive or living.health(entity) <= 0
+                                  or _tick_count(state, entity) - tracker.last_damage > limit):
+        tracker.taking_damage = tracker.in_combat = False
+        tracker.entries.clear()
+
+
+def tick_trackers(state) -> None:
+    """LivingEntity.tick: each living entity rechecks its tracker when its tickCount is a multiple of 20."""
+    for entity, tracker in list(state.combat_trackers.items()):
+        if tracker.taking_damage and _tick_count(state, entity) % 20 == 0:
+            recheck(state, entity, tracker)
+
+
+def trackers_idle(state) -> bool:
+    return not state.combat_trackers or not any(t.taking_damage for t in state.combat_trackers.values())
+
+
+def _most_significant_fall(state, entries: list) -> CombatEntry | None:
+    """CombatTracker.getMostSignificantFall: the entry before the longest fall (the fall itself when
+    it is the first) when that fall is over 5 blocks, else the hardest hurt taken somewhere it had a
+    fall location when that hurt was over 5."""
+    fall_entry = placed = None
+    longest = hardest = 0.0
+    for i, entry in enumerate(entries):
+        always = state.resources.in_tag("damage_type", "minecraft:always_most_significant_fall", entry.source.type)
+        distance = float(np.float32(3.4028235e38)) if always else entry.fall_distance
+        if (always or state.resources.in_tag("damage_type", "minecraft:is_fall", entry.source.type)) \
+                and distance > 0 and (fall_entry is None or distance > longest):
+            fall_entry, longest = (entries[i - 1] if i > 0 else entry), distance
+        if entry.location is not None and (placed is None or entry.damage > hardest):
+            placed, hardest = entry, entry.damage
+    if longest > 5.0 and fall_entry is not None:
+        return fall_entry
+    return placed if hardest > 5.0 and placed is not None else None
+
+
+def _fall_text(state, player, entry: CombatEntry, killer) -> str | None:
+    """CombatTracker.getFallMessage: a fall's own place (death.fell.accident.<location>), else who
+    doomed it to fall (death.fell.assist, .finish, .killer)."""
+    source = entry.source
+    if state.resources.in_tag("damage_type", "minecraft:is_fall", source.type) or state.resources.in_tag(
+            "damage_type", "minecraft:always_most_significant_fall", source.type):
+        if entry.location == "climbable":
+            state.error("the death message of a fall from a climbable block (FallLocation) is not modelled: none "
+                        "was sent", severity="warning", unmodelled=True)
+            return None
+        return _translated(state, f"death.fell.accident.{entry.location or 'generic'}", [player.display_name])
+    doomer = source.attacker
+    if doomer is not None and doomer is not killer:
+        return _assisted(state, player, doomer, "death.fell.assist")
+    if killer is not None:
+        return _assisted(state, player, killer, "death.fell.finish")
+    return _translated(state, "death.fell.killer", [player.display_name])
+
+
+def _assisted(state, player, entity, key: str) -> str:
+    """getMessageForAssistedFall: ``.item`` when the entity's main hand holds a named item."""
+    weapon = inventories.entity_slot(entity, inventories.MAINHAND, state.version)
+    held = weapon.get() if weapon is not None else None
+    if held is not None and not held.is_empty and held.component("minecraft:custom_name") is not None:
+        return _translated(state, f"{key}.item", [player.display_name, entity.display_name,
+                                                   "[" + items.hover_name(held, state.version) + "]"])
+    return _translated(state, key, [player.display_name, entity.display_name])
+
+
 def _death_message(state, player, source: DamageSource, killer) -> None:
     """CombatTracker.getDeathMessage, broadcast when ``showDeathMessages`` is on: the killing blow's
     DamageSource.getLocalizedDeathMessage (death.attack.<message id> with the victim and the
@@ -573,10 +696,15 @@ def _death_message(state, player, source: DamageSource, killer) -> None:
 
 def _death_text(state, player, source: DamageSource, killer) -> str | None:
     message_id = MESSAGE_IDS.get(source.type)
-    if message_id is None or source.type in FALL_VARIANTS:  # a pack's type; a fall's variant needs the fall
+    if message_id is None:  # a pack's own damage type: its message id is not read
         state.error(f"the death message of damage type {source.type} is not modelled: none was sent",
                     severity="warning", unmodelled=True)
         return None
+    tracker = state.combat_trackers.get(player)
+    if source.type in FALL_VARIANTS and tracker is not None:
+        fall = _most_significant_fall(state, tracker.entries)
+        if fall is not None:
+            return _fall_text(state, player, fall, source.attacker)
     responsible = source.attacker or source.direct
     others = [e for e in (responsible, killer) if e is not None]
     if player.team is not None or any(e.team is not None for e in others):

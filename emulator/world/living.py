@@ -397,14 +397,15 @@ EXHAUSTION = {**{"minecraft:" + t: 0.0 for t in (
 
 
 def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
-         damage_type: str = "minecraft:generic", wear=None) -> bool:
+         damage_type: str = "minecraft:generic", wear=None, record=None) -> bool:
     """LivingEntity.hurtServer without AI: refused for invulnerable entities, creative and
     spectator players (unless the type bypasses invulnerability) and the dead; within the 10 ticks
     after a hurt only the excess over the last hurt applies. Returns whether it hurt. Unless the
     type is in #bypasses_armor, ``wear(state, entity, damage, type)`` wears the armour
     (hurtArmor) and armour points reduce the damage as CombatRules.getDamageAfterAbsorb does, then absorption
     (LivingEntity.actuallyHurt); a player counts ``damage_absorbed``/``damage_taken`` and the
-    type's food exhaustion. The resistance effect raises Unmodelled."""
+    type's food exhaustion; ``record(damage)`` hears the damage to health when there is some
+    (CombatTracker.recordDamage). The resistance effect raises Unmodelled."""
     invulnerable = entity.data.get("Invulnerable") or (entity.is_player and entity.gamemode in ("creative", "spectator"))
     if (invulnerable and not bypasses_invulnerability) or health(entity) <= 0:
         return False
@@ -421,7 +422,7 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
     armoured = not state.resources.in_tag("damage_type", "minecraft:bypasses_armor", damage_type)
     if armoured and wear is not None:  # LivingEntity.getDamageAfterArmorAbsorb: hurtArmor, then the reduction
         wear(state, entity, dealt, damage_type)
-    _actually_hurt(state, entity, _after_armour(entity, dealt, not armoured), damage_type)
+    _actually_hurt(state, entity, _after_armour(entity, dealt, not armoured), damage_type, record)
     return True
 
 
@@ -453,8 +454,9 @@ def knockback(entity, strength: float, x: float, z: float) -> bool:
     return True
 
 
-def _actually_hurt(state, entity, amount: float, damage_type: str) -> None:
-    """LivingEntity/Player.actuallyHurt after armour: absorption first, then health."""
+def _actually_hurt(state, entity, amount: float, damage_type: str, record=None) -> None:
+    """LivingEntity/Player.actuallyHurt after armour: absorption first, then health, the damage to
+    health told to ``record`` first (CombatTracker.recordDamage comes before setHealth)."""
     amount = F32(amount)
     absorption = F32(_number(entity.data.get("AbsorptionAmount")))
     left = max(amount - absorption, F32(0.0))
@@ -474,6 +476,8 @@ def _actually_hurt(state, entity, amount: float, damage_type: str) -> None:
         if left < F32(3.4028235e37):
             statistics.award(state, entity, statistics.stat_name("custom", "damage_taken"),
                              math.floor(left * F32(10.0) + F32(0.5)))
+    if record is not None:
+        record(float(left))
     _set_health(entity, health(entity) - float(left))
 
 

@@ -526,6 +526,7 @@ class WorldState:
     swung: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> game time of its last swing (living)
     last_hurt_by: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (attacker, game time) (combat)
     last_attacker: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> (living attacker, game time) (combat)
+    combat_trackers: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # living entity -> its CombatTracker (combat)
     dead_players: weakref.WeakSet = field(default_factory=WeakMembers)  # players that died, until they respawn (combat)
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
     brewing: dict = field(default_factory=dict)  # (level, pos) -> (block entity, the item it brews): not saved (brewing)

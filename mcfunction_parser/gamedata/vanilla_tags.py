@@ -53,6 +53,9 @@ BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
             "explosion player_explosion bad_respawn_point in_fire lightning_bolt on_fire lava hot_floor in_wall "
             "cramming drown starve cactus fall fly_into_wall out_of_world generic magic wither dragon_breath "
             "dry_out sweet_berry_bush freeze stalagmite outside_border generic_kill campfire").split()),
+        # the falls CombatTracker.getMostSignificantFall weighs
+        "minecraft:is_fall": frozenset({"minecraft:fall", "minecraft:ender_pearl", "minecraft:stalagmite"}),
+        "minecraft:always_most_significant_fall": frozenset({"minecraft:out_of_world"}),
     },
 }
 

@@ -147,7 +147,8 @@ def test_the_last_player_to_hurt_a_mob_gets_the_kill(tmp_path):
      "the effects of minecraft:fire_aspect on an attack"),
     ("effect give Alex resistance 10\ndamage Alex 1", "the resistance effect"),
     ("item replace entity Alex weapon.offhand with totem_of_undying\ndamage Alex 100", "a totem of undying"),
-    ("damage Alex 100 minecraft:fall", "the death message of damage type minecraft:fall"),
+    # where the fall was from a ladder (FallLocation, from the last climbable position): not modelled
+    ("setblock ~ ~ ~ ladder\ndamage Alex 100 minecraft:fall", "a fall from a climbable block"),
 ])
 def test_what_combat_does_not_model_makes_the_test_inconclusive(tmp_path, setup, reason):
     result = run(tmp_path, f"dummy Alex spawn\nsummon pig ~1 ~ ~\n{setup}\nsucceed\n")
@@ -220,4 +221,22 @@ def test_death_messages_read_the_damage_types_message(tmp_path):
         "assert chat \"^Cid was shot by Skeleton using \\\\[Bolt\\\\]$\"\n"
         "damage Dee 100 minecraft:bad_respawn_point\n"
         "assert chat \"^Dee was killed by \\\\[Intentional Game Design\\\\]$\"\n"))
+    assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_fall_deaths_read_the_combat_trackers_most_significant_fall(tmp_path, backend):
+    """CombatTracker.getDeathMessage for the fall types: the most significant fall (getMostSignificantFall:
+    a fall over 5 blocks, the entry before it when there is one) gives death.fell.accident.generic, or
+    when a mob's hurt (here without knockback: magic) came before the fall death.fell.assist naming it; a fall of no distance is the
+    plain death.attack.fall (decompiled 1.21 CombatTracker, Entity.checkFallDamage)."""
+    result = run(tmp_path, "# @skyaccess\n" + (
+        "dummy Ann spawn\ndummy Bob spawn\ndummy Cid spawn\n"
+        "tp Ann ~ ~ ~\ntp Bob ~2 ~30 ~\ntp Cid ~4 ~30 ~\n"
+        "summon zombie ~6 ~ ~ {NoAI:1b,Tags:[\"z\"]}\n"
+        "damage Ann 100 minecraft:fall\n"
+        "assert chat \"^Ann hit the ground too hard$\"\n"
+        "damage Cid 1 minecraft:magic by @e[tag=z,limit=1]\n"
+        "await chat \"^Bob fell from a high place$\"\n"
+        "await chat \"^Cid was doomed to fall by Zombie$\"\n"), backend=backend)
     assert result.status == "passed", result.report()
