@@ -1,8 +1,8 @@
 """VM benchmark, figures side by side in one run:
 
 - VM throughput: commands per second on a loop-heavy function (1000 scoreboard operations per
-  call, called in a counted recursive loop) with the per-instruction counters on and off, and
-  with the overflow sanitizer on;
+  call, called in a counted recursive loop; the per-instruction counters are always on), and with
+  the overflow sanitizer on;
 - the same program on the reference backend (fewer iterations) and the speed ratio;
 - the first call in a new process with a warm numba cache (subprocess), minus a second call;
 - the host round trip: a function of host commands (``time query gametime``), per command;
@@ -14,7 +14,7 @@
 Usage: python bench/bench_vm.py [--quick] [--baseline DIR] [--markers N] [--only-store]
 
 ``--baseline DIR`` (an export of an older commit, e.g. ``git archive REV | tar -x -C DIR``) only
-compares the scoreboard loop (counters on): this tree and DIR's emulator, each in a fresh process,
+compares the scoreboard loop: this tree and DIR's emulator, each in a fresh process,
 alternately, reporting the medians (the machine is shared, so single runs are noisy).
 """
 from __future__ import annotations
@@ -70,7 +70,7 @@ def write_pack(root: Path) -> Path:
     return root
 
 
-def timed_loop(pack: Path, backend: str, iterations: int, sanitize: bool = False, counting: bool = True,
+def timed_loop(pack: Path, backend: str, iterations: int, sanitize: bool = False,
                repeats: int = 3, loop: str = "b:loop", setup: tuple[str, ...] = ("b:setup",)) -> tuple[float, int]:
     """(seconds, commands) of one root running the loop ``iterations`` times, after a warm-up;
     the best of ``repeats`` runs, since the machine is shared."""
@@ -78,8 +78,6 @@ def timed_loop(pack: Path, backend: str, iterations: int, sanitize: bool = False
 
     emu = Emulator(backend=backend, sanitize=sanitize)
     emu.load(pack)
-    if hasattr(emu.backend, "counting"):
-        emu.backend.counting = counting
     for function in setup:
         emu.call(function)
     emu.set_score("#i", "o", 1)
@@ -222,7 +220,7 @@ def first_call_overhead(pack: Path) -> tuple[float, float]:
 
 
 def loop_rate_in(tree: Path, iterations: int) -> float:
-    """Commands per second of the scoreboard loop (counters on), run by ``tree``'s emulator in a new
+    """Commands per second of the scoreboard loop, run by ``tree``'s emulator in a new
     process (this file's pack and timing; the tree comes first on the import path)."""
     script = textwrap.dedent(f"""
         import importlib.util, tempfile
@@ -247,7 +245,7 @@ def compare_with(baseline: Path, rounds: int, iterations: int) -> None:
         for tree in (baseline, here):
             rates[tree].append(loop_rate_in(tree, iterations))
     now, before = statistics.median(rates[here]), statistics.median(rates[baseline])
-    print(f"scoreboard loop, counters on (median of {rounds} runs each, best of 5 inside a run)")
+    print(f"scoreboard loop (median of {rounds} runs each, best of 5 inside a run)")
     for name, tree in (("this tree", here), (str(baseline), baseline)):
         print(f"  {name:<28}{statistics.median(rates[tree]):>16,.0f} commands/s   runs: "
               + ", ".join(f"{r / 1e6:.0f}M" for r in rates[tree]))
@@ -272,10 +270,7 @@ def main() -> None:
         rows = []
         t, n = timed_loop(pack, "numba", vm_iterations)
         vm_rate = n / t
-        rows.append(("VM, counters on", n, t, vm_rate))
-        t, n = timed_loop(pack, "numba", vm_iterations, counting=False)
-        off_rate = n / t
-        rows.append(("VM, counters off", n, t, off_rate))
+        rows.append(("VM", n, t, vm_rate))
         t, n = timed_loop(pack, "numba", vm_iterations, sanitize=True)
         rows.append(("VM, sanitizer on", n, t, n / t))
         t, n = timed_loop(pack, "python", ref_iterations, repeats=1)
@@ -297,7 +292,6 @@ def main() -> None:
     for name, n, t, rate in entity_rows:
         print(f"{name:<22}{n:>14,}{t:>10.3f}{rate:>16,.0f}")
     print(f"entities: VM / reference speed: {entity_rows[0][3] / entity_rows[1][3]:,.1f}x")
-    print(f"counters' overhead: {(off_rate / vm_rate - 1) * 100:+.1f} % time")
     print(f"host command round trip: {host_us:.2f} us per command (VM exit, Python handler, resume; the "
           f"command's work alone {work_us:.2f} us)")
     print(f"first call in a new process (warm cache): {first:.3f} s; second call {second * 1e3:.2f} ms; "

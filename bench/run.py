@@ -72,7 +72,7 @@ def vm_rows(quick: bool) -> list[Row]:
         hand_seconds, hand_scores = bench_vm.hand_loop(vm_iterations)
         same = bench_vm.loop_scores(pack, "numba", vm_iterations) == hand_scores
         vm_rate = vm_commands / vm_seconds
-        rows.append(Row("scoreboard loop, VM (1,000 operations per call, counters on)", _rate(vm_rate), "",
+        rows.append(Row("scoreboard loop, VM (1,000 operations per call, per-instruction counters)", _rate(vm_rate), "",
                         value=vm_rate))
         row = _ratio_row("VM / hand-written numba loop (the same array updates)", hand_seconds, vm_seconds, 0.3)
         if not same:

@@ -12,7 +12,7 @@ import numba
 import numpy as np
 
 from emulator.vm import jit_cache, loop as vm, variants
-from emulator.vm.loop import (R_ALIVE, R_BATCH, R_BSTOP, R_CALLFN, R_COUNTING, R_CTX, R_FORKLIMIT, R_HAS, R_NCTX,
+from emulator.vm.loop import (R_ALIVE, R_BATCH, R_BSTOP, R_CALLFN, R_CTX, R_FORKLIMIT, R_HAS, R_NCTX,
                               R_NLOG, R_NOVF, R_OK, R_PC, R_QUOTA, R_ROOT, R_SANITIZE, R_VAL, ST_DONE, ST_HOST)
 from emulator.commands import entities as world_entities
 from emulator.runtime.backend import HostRun, RootResult, TickBatch, report_quota_cut
@@ -66,7 +66,6 @@ class NumbaBackend:
 
     def __init__(self) -> None:
         self.program: Program | None = None
-        self.counting = True  # per-instruction counters; bench/bench_vm.py turns them off to time them
         self.max_depth = MAX_DEPTH
 
     # ------------------------------------------------------------------ loading
@@ -216,7 +215,6 @@ class NumbaBackend:
         rv[:] = self._fresh  # one copy: each register written alone costs about as much as the copy
         rv[R_ROOT] = root
         rv[R_QUOTA] = limit
-        rv[R_COUNTING] = self.counting
         rv[R_FORKLIMIT] = self.state.gamerules.max_command_fork_count
         if self.store_targets:
             self.store_targets = {}

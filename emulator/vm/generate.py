@@ -42,7 +42,7 @@ MACROS = {
     "SKIP_DEAD": "if alive == 0:\n    pc += 1\n    continue",
     # the root is cut before an entry when no quota is left
     "CUT": "if quota <= 0:\n    status = ST_CUT\n    break",
-    "CHARGE": "quota -= 1\nif counting:\n    counts[np.uint64(pc)] += 1",  # pc >= 0: an index numba need not wrap
+    "CHARGE": "quota -= 1\ncounts[np.uint64(pc)] += 1",  # pc >= 0: an index numba need not wrap
     # a stage is charged once: not again when a fork re-enters the chain after it
     "CHARGE_STAGE": "if loop != LOOP_REENTERED:\n    CHARGE()",
     # Python empties a full buffer, then the instruction runs again

@@ -46,6 +46,10 @@ A run of operations on names loops inside the operation branch, each reading the
 itself until one is something else (or the quota is spent): LLVM weighs a loop's blocks above the
 rest of ``run`` when it hands out registers, and fewer of the run's values are spilled to the stack
 (the scoreboard loop ran about 10 % faster, in-process ratio to the hand-written loop, CPU time).
+That loop serves runs without the overflow sanitizer (a sanitized run takes the general path, as
+for selectors), and the charge has no switch to turn the counters off: the scoreboard loop ran
+0.26x the hand-written one with both tests in it, 0.28-0.29x without them. Serving `scoreboard
+players set|add|remove` on names in it as well was slower (0.26-0.27x).
 The hot paths index with unsigned integers where the index cannot be negative (the instruction's
 row in the flat code ``cflat``, the holders and objectives of the scoreboard commands' one-holder
 paths, the counters): numba
@@ -236,13 +240,13 @@ SAN_ADD_CMD, SAN_REMOVE_CMD = 100, 101
 # ---------------------------------------------------------------- registers, frames, status
 R_PC, R_QUOTA, R_DEPTH, R_ALIVE, R_HAS, R_OK, R_VAL = range(7)
 R_ACC_ANY, R_ACC_SUM, R_ABORT, R_CALLFN, R_ERR, R_ERRARG, R_NOVF, R_CTX = range(7, 15)
-R_SANITIZE, R_ERRPC, R_COUNTING, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG = range(15, 23)
-R_NFORK, R_NCOLL, R_NSEL2, R_NCTX = range(23, 27)  # rows used in fstack and coll; SELHOLDERS' source count; contexts
+R_SANITIZE, R_ERRPC, R_FORKLIMIT, R_LOOP, R_NRET, R_NSEL, R_NLOG = range(15, 22)
+R_NFORK, R_NCOLL, R_NSEL2, R_NCTX = range(22, 26)  # rows used in fstack and coll; SELHOLDERS' source count; contexts
 # a batch of ticks (NumbaBackend.run_ticks; 0 in R_BATCH: one root): the ticks to run, the tick and the member
 # running, the members per tick, the roots done, Python's request to stop when this root ends, each root's quota
-R_BATCH, R_BTICKS, R_BTICK, R_BMEMBER, R_BMEMBERS, R_BROOTS, R_BSTOP, R_BLIMIT = range(27, 35)
-R_ROOT = 35  # the root's serial number, never reset: as_cache's rows made in another root do not hold
-N_REGS = 36
+R_BATCH, R_BTICKS, R_BTICK, R_BMEMBER, R_BMEMBERS, R_BROOTS, R_BSTOP, R_BLIMIT = range(26, 34)
+R_ROOT = 34  # the root's serial number, never reset: as_cache's rows made in another root do not hold
+N_REGS = 35
 
 F_RETPC, F_FN, F_ALIVE, F_ACC_ANY, F_ACC_SUM, F_ABORT, F_CTX, F_CALLPC, F_QUOTA, F_LOOP, F_CHEAD = range(11)
 F_WIDTH = 11
@@ -1207,7 +1211,6 @@ def run(address, machine_type):
     loop = regs[R_LOOP]
     nret = regs[R_NRET]
     sanitize = regs[R_SANITIZE] != 0
-    counting = regs[R_COUNTING] != 0  # off only to measure the counters' cost
     forklimit = regs[R_FORKLIMIT]
     novf = regs[R_NOVF]
     nlog = regs[R_NLOG]
@@ -1230,15 +1233,11 @@ def run(address, machine_type):
             o2 = cflat[row + np.uint64(4)]
             h = cflat[row + np.uint64(1)]
             h2 = cflat[row + np.uint64(3)]
-            if h >= 0 and h2 >= 0:  # one target, one source, both names: the common case, kept lean
+            if h >= 0 and h2 >= 0 and not sanitize:  # one target, one source, both names: the common case, kept lean
                 while True:  # and the operations on names after it, in a loop of their own: LLVM gives its values the registers
                     uh, uo, uh2, uo2 = np.uint64(h), np.uint64(o), np.uint64(h2), np.uint64(o2)
-                    if sanitize and novf >= ovf.shape[0]:
-                        status = ST_FLUSH
-                        break
                     quota -= 1
-                    if counting:
-                        counts[np.uint64(pc)] += 1
+                    counts[np.uint64(pc)] += 1
                     pc += 1
                     if writable[uo] == 0 or alive_obj[uo2] == 0:  # o unknown or read-only, or o2 unknown
                         has = 1
@@ -1280,11 +1279,6 @@ def run(address, machine_type):
                     has = 1
                     ok = 1
                     val = nv
-                    if sanitize and _overflowed(r):
-                        novf = _report(ovf, novf, ipc, k, a, b, r)
-                        if novf >= ovf.shape[0]:
-                            status = ST_FLUSH
-                            break
                     ipc = pc  # the next instruction: run here while it is an operation on names
                     row = np.uint64(pc) * np.uint64(WIDTH)
                     op = cflat[row]
@@ -1318,8 +1312,7 @@ def run(address, machine_type):
                 status = ST_FLUSH
                 break
             quota -= 1
-            if counting:
-                counts[np.uint64(pc)] += 1
+            counts[np.uint64(pc)] += 1
             has = 1
             ok = 0
             val = 0
@@ -1399,8 +1392,7 @@ def run(address, machine_type):
                     status = ST_FLUSH
                     break
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
                 pc += 1
                 if writable[uo] == 0:
                     has = 1
@@ -1440,8 +1432,7 @@ def run(address, machine_type):
                 status = ST_FLUSH
                 break
             quota -= 1
-            if counting:
-                counts[np.uint64(pc)] += 1
+            counts[np.uint64(pc)] += 1
             has = 1
             ok = 0
             val = 0
@@ -1475,8 +1466,7 @@ def run(address, machine_type):
                 status = ST_CUT
                 break
             quota -= 1  # the condition stage's
-            if counting:
-                counts[np.uint64(pc)] += 1
+            counts[np.uint64(pc)] += 1
             alive = 1
             has = 0
             skip = cflat[row + np.uint64(5)]
@@ -1521,8 +1511,7 @@ def run(address, machine_type):
             final = cflat[row + np.uint64(7)]
             if not final and loop != LOOP_REENTERED:  # a stage: charged once, contexts or not
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if alive == 0:
                 pc += 1
                 continue
@@ -1531,8 +1520,7 @@ def run(address, machine_type):
                     status = ST_CUT
                     break
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if op == OP_IFENT:  # `if|unless entity SEL`
                 n = _select(cflat[row + np.uint64(1)], cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,
                             efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64(0))
@@ -1662,8 +1650,7 @@ def run(address, machine_type):
                 status = ST_GROW
                 break
             quota -= 1
-            if counting:
-                counts[np.uint64(pc)] += 1
+            counts[np.uint64(pc)] += 1
             frames[depth, F_RETPC] = pc + 1
             frames[depth, F_FN] = fn
             frames[depth, F_ALIVE] = alive
@@ -1736,8 +1723,7 @@ def run(address, machine_type):
                 status = ST_FLUSH
                 break
             quota -= 1
-            if counting:
-                counts[np.uint64(pc)] += 1
+            counts[np.uint64(pc)] += 1
             if op == OP_GET or op == OP_RESET or op == OP_RESETALL or op == OP_ENABLE:
                 h = code[pc, 1]
                 if h == HOLDER_SELF:
@@ -1833,8 +1819,7 @@ def run(address, machine_type):
                         crossing = True
                 if crossing:  # to another level: the HOST that follows runs the command and charges it
                     quota += 1
-                    if counting:
-                        counts[pc - 1] -= 1
+                    counts[pc - 1] -= 1
                     continue
                 pc += 1
                 has = 1
@@ -1935,8 +1920,7 @@ def run(address, machine_type):
                     break
             if loop != LOOP_REENTERED:
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if alive == 0:
                 pc += 1
                 continue
@@ -1969,8 +1953,7 @@ def run(address, machine_type):
                 break
             if loop != LOOP_REENTERED:
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if alive == 0:
                 pc += 1
                 continue
@@ -1987,8 +1970,7 @@ def run(address, machine_type):
         elif op == OP_FIELDSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if alive and code[pc, 1] and cints[ctx, CI_ENTITY] < 0:  # "No entity was found": the command, or this context, fails
                 alive = 0
                 pc = pc + 1 if code[pc, 2] else abort
@@ -2046,8 +2028,7 @@ def run(address, machine_type):
         elif op == OP_CHKOBJ:  # the `store ... score` stage
             if loop != LOOP_REENTERED:
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if alive and code[pc, 3] == 2:  # `*`: the holders are read first; none fails (no report)
                 n = 0
                 for h in range(present.shape[0]):
@@ -2142,8 +2123,7 @@ def run(address, machine_type):
                 break
             if code[pc, 3]:
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             has = 1
             ok = 0
             val = 0
@@ -2175,8 +2155,7 @@ def run(address, machine_type):
                 status = ST_CUT
                 break
             quota -= 1
-            if counting:
-                counts[np.uint64(pc)] += 1
+            counts[np.uint64(pc)] += 1
             status = ST_HOST
             break
         elif op == OP_OBJECTIVE:  # `scoreboard objectives add|remove`
@@ -2187,8 +2166,7 @@ def run(address, machine_type):
                 status = ST_CUT
                 break
             quota -= 1
-            if counting:
-                counts[np.uint64(pc)] += 1
+            counts[np.uint64(pc)] += 1
             o = code[pc, 1]
             if code[pc, 2] and alive_obj[o] == 0:
                 status = ST_HOST  # a new objective: the host keeps its criterion and display name
@@ -2214,8 +2192,7 @@ def run(address, machine_type):
         elif op == OP_HOSTSTAGE:
             if loop != LOOP_REENTERED:
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if alive == 0:
                 pc += 1
                 continue
@@ -2231,8 +2208,7 @@ def run(address, machine_type):
                 continue
             if loop != LOOP_REENTERED:
                 quota -= 1
-                if counting:
-                    counts[np.uint64(pc)] += 1
+                counts[np.uint64(pc)] += 1
             if code[pc, 2] == 0:
                 alive = 0
             pc += 2
