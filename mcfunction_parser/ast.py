@@ -826,7 +826,9 @@ class ItemTarget:
 @node
 class ResourceOrInline:
     """ResourceOrIdArgument: a loot table / item modifier / predicate id, or (from 1.20.5) an
-    inline definition written as SNBT; ``inline`` holds it converted to JSON values."""
+    inline definition written as SNBT; ``inline`` holds its NBT, which the codecs read as JSON
+    (NbtOps: a compound is an object, a typed number a number) while the fields that take NBT
+    (custom data, components) keep its types."""
 
     id: str | None
     inline: Any = None

@@ -272,8 +272,14 @@ def _codec_number(value, ints: bool):
 
 
 # ---------------------------------------------------------------------- JSON to NBT
+_TAGS = (Byte, Short, Int, Long, Float, Double, String, List, Compound, ByteArray, IntArray, LongArray)
+
+
 def to_tag(value):
-    """A JSON value as NBT (ints Int, decimals Double, booleans Byte)."""
+    """A JSON value as NBT (ints Int, decimals Double, booleans Byte); NBT (an inline definition's,
+    read through NbtOps) as it is."""
+    if isinstance(value, _TAGS):
+        return copy_tag(value)
     if isinstance(value, bool):
         return Byte(value)
     if isinstance(value, int):
@@ -286,8 +292,6 @@ def to_tag(value):
         return List(to_tag(v) for v in value)
     if isinstance(value, dict):
         return Compound((k, to_tag(v)) for k, v in value.items())
-    if isinstance(value, (Compound, List)):
-        return copy_tag(value)
     raise not_modelled("value", repr(value))
 
 
@@ -305,7 +309,10 @@ def json_nbt(value):
     that holds it (1 is 1b, 1.0 too: BigDecimal.longValueExact), another number a float when
     the float is exact, else a double; a boolean a byte. A list of bytes, ints or longs is that
     array (NbtOps.createList); a list of other tags of one type a list; a mixed one is not
-    modelled."""
+    modelled. NBT (an inline definition's: the codec reads it through NbtOps, nothing converted)
+    keeps its types: ``{v:3}`` is an int there, ``{"v": 3}`` in a file a byte."""
+    if isinstance(value, _TAGS):
+        return copy_tag(value)
     if isinstance(value, bool):
         return Byte(value)
     if isinstance(value, float) and value.is_integer() and -2**63 <= value < 2**63:

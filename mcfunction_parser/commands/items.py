@@ -8,7 +8,6 @@ from __future__ import annotations
 from .. import ast
 from ..arguments import vec3
 from ..items import COMPONENTS_VERSION, item_argument, item_predicate, slot
-from ..nbt import ARRAY_TYPES, Byte, Compound, List
 from ..primitives import resource_location
 from ..reader import Reader
 from ..selectors import target
@@ -17,25 +16,11 @@ from ..snbt import value
 INT_MAX = 2**31 - 1
 
 
-def nbt_to_json(tag):
-    """An SNBT value as the JSON the game's codecs read it through NbtOps (bytes stay numbers)."""
-    if isinstance(tag, Compound):
-        return {str(k): nbt_to_json(v) for k, v in tag.items()}
-    if isinstance(tag, (List,) + ARRAY_TYPES):
-        return [nbt_to_json(v) for v in tag]
-    if isinstance(tag, Byte):
-        return int(tag)
-    if isinstance(tag, str):
-        return str(tag)
-    return tag if isinstance(tag, bool) else (int(tag) if isinstance(tag, int) else float(tag))
-
-
 def resource_or_inline(r: Reader, what: str) -> ast.ResourceOrInline:
     """ResourceOrIdArgument: an id, or from 1.20.5 an inline SNBT definition."""
     start = r.pos
     if r.peek() in ("{", "[") and r.version >= COMPONENTS_VERSION:
-        tag = value(r)
-        return ast.ResourceOrInline.new(None, nbt_to_json(tag), r.text[start:r.pos])
+        return ast.ResourceOrInline.new(None, value(r), r.text[start:r.pos])
     name = resource_location(r, what)
     return ast.ResourceOrInline.new(name, None, r.text[start:r.pos])
 

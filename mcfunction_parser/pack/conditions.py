@@ -68,27 +68,14 @@ ENTITY_TARGETS = {"this", "attacker", "direct_attacker", "attacking_player",  # 
                   "killer", "direct_killer", "killer_player"}  # before 1.21
 
 
-def nbt_to_json(value):
-    """An SNBT value as the JSON the codecs read: numbers, strings, lists and objects (a byte stays
-    a number: the codecs read 1b as true)."""
-    if isinstance(value, dict):
-        return {str(k): nbt_to_json(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [nbt_to_json(v) for v in value]
-    if isinstance(value, str):
-        return str(value)
-    return float(value) if isinstance(value, float) else int(value)
-
-
 def parse_inline(text: str):
-    """An inline predicate (``execute if predicate {...}``, 1.20.5+): SNBT read as JSON.
-    Raises ValueError when it does not parse."""
+    """An inline predicate (``execute if predicate {...}``, 1.20.5+): its NBT, read as JSON is read
+    (see :class:`~mcfunction_parser.ast.ResourceOrInline`). Raises ValueError when it does not parse."""
     reader = Reader(text, Loc("<predicate>", 1, 1), (1, 21, 0))
     try:
-        value = snbt.value(reader)
+        return snbt.value(reader)
     except ParseError as error:
         raise ValueError(error.message) from None
-    return nbt_to_json(value)
 
 
 def condition_type(condition: Any) -> str:
