@@ -243,7 +243,11 @@ def _target_version(mc_version: str | None, metas: list[PackMeta]) -> Version:
 
 
 def _written_for(meta: PackMeta) -> Format:
-    return (meta.pack_format, 0) if meta.pack_format is not None else meta.supported.max
+    """The format the pack is written for: its ``pack_format``, unless that lies outside the
+    formats it declares it supports (``pack_format: 107`` beside ``min_format: [107, 1]``), where
+    the newest of those decides."""
+    written = (meta.pack_format, 0) if meta.pack_format is not None else None
+    return written if written is not None and written in meta.supported else meta.supported.max
 
 
 def _collect(path: Path, root: PackPath, shown: str, meta: PackMeta | None, target: Format,

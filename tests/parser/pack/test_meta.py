@@ -152,3 +152,14 @@ def test_a_boolean_or_string_format_stays_an_error(make_pack):
     for bad in (True, "48", None):
         loaded = _load_meta(make_pack, {"pack": {"pack_format": bad, "description": ""}})
         assert len(loaded.errors) == 1, bad
+
+
+def test_a_pack_format_outside_the_declared_range_does_not_choose_the_release(make_pack):
+    # pack_format 107 (107.0) beside min_format [107, 1]: the pack runs as the release its range
+    # names (26.2), not as 26.1.2 only to be told that release lists it as incompatible
+    meta = {"pack": {"description": "", "pack_format": 107, "min_format": [107, 1], "max_format": [107, 1]}}
+    loaded = load_packs([make_pack(meta_json=meta)])
+    assert loaded.version == (26, 2, 0) and not loaded.warnings
+    # a pack_format inside the range still chooses (supported_formats [15, 48] written for 15: 1.20.1)
+    meta = {"pack": {"description": "", "pack_format": 15, "supported_formats": [15, 48]}}
+    assert load_packs([make_pack(meta_json=meta)]).version == (1, 20, 1)
