@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from emulator.world import advancements, combat, living
 from emulator.world.entities import uuid_string
+from emulator.world.entity_flags import flying_after
 from emulator.world.errors import CommandFailure
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast, gamedata
@@ -278,6 +279,7 @@ def gamemode(env, cmd: ast.GenericCommand, ctx) -> int:
     changed = [p for p in players if p.gamemode != mode]
     for player in changed:
         player.gamemode = mode
+        player.flying = flying_after(mode, player.flying)
     return len(changed)
 
 

@@ -157,7 +157,7 @@ class Entity:
     own). Until the store adds it, the entity keeps those values itself."""
 
     __slots__ = ("_uuid", "type", "_custom_name", "data", "order", "player_name", "_gamemode", "_level", "_team",
-                 "_sneaking", "sprinting", "_vehicle", "passengers", "_table", "_own", "born", "equipment_modifiers",
+                 "_sneaking", "sprinting", "flying", "_vehicle", "passengers", "_table", "_own", "born", "equipment_modifiers",
                  "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
@@ -178,6 +178,7 @@ class Entity:
         # a player's inputs (not saved in its NBT; predicates' flags and sneak_time read them)
         self._sneaking = False
         self.sprinting = False
+        self.flying = gamemode == "spectator"  # a player's abilities.flying (entity_flags.flying_after)
         # riding (Entity.vehicle / Entity.passengers), kept by emulator.world.relations
         self._vehicle: Entity | None = None
         self.passengers: list = []

@@ -46,8 +46,8 @@ from typing import Callable
 
 import numpy as np
 
-from emulator.world import (advancement_progress, biomes, burning, campfires, entity_components,
-                            entity_predicate_format, inventories, light, living, recipes, sight)
+from emulator.world import (advancement_progress, biomes, campfires, entity_components, entity_flags,
+                            entity_predicate_format, inventories, light, recipes, sight)
 from emulator.world.blocks import knows_states
 from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import Unmodelled
@@ -410,29 +410,9 @@ def _nbt(value, ctx: LootContext, entity: Entity) -> bool:
     return compare_nbt(snbt_or_tag(value), entity_nbt(entity))
 
 
-def _flags(value: dict, ctx: LootContext, entity: Entity) -> bool:
-    """EntityFlagsPredicate: each given flag must equal the entity's."""
-    for flag, wanted in value.items():
-        read = _FLAGS.get(flag)
-        if read is None:
-            raise Unmodelled(f"entity flag '{flag}'")
-        if read(entity) != bool(wanted):
-            return False
-    return True
-
-
 def _number_field(entity: Entity, key: str) -> float:
     tag = entity.data.get(key)
     return numeric_value(tag) if is_numeric(tag) else 0.0
-
-
-_FLAGS = {
-    "is_on_fire": lambda e: burning.is_on_fire(e),  # Entity.isOnFire on the server: not HasVisualFire
-    "is_sneaking": lambda e: e.sneaking,
-    "is_sprinting": lambda e: e.sprinting,
-    "is_on_ground": lambda e: bool(_number_field(e, "OnGround")),
-    "is_baby": living.is_baby,
-}
 
 
 def _effects(value: dict, ctx: LootContext, entity: Entity) -> bool:
@@ -607,7 +587,7 @@ _ENTITY_FIELDS = {
     "entity_tags": lambda value, ctx, entity: entity_predicate_format.tags_match(value, entity),
     "distance": _distance,
     "nbt": _nbt,
-    "flags": _flags,
+    "flags": lambda value, ctx, entity: entity_flags.flags_match(value, ctx.state, entity),
     "effects": _effects,
     "location": _location_field("location"),
     "stepping_on": _location_field("stepping_on"),

@@ -224,6 +224,35 @@ def test_flags_effects_and_unmodelled_fields(state):
         holds({"condition": "minecraft:nope"}, this)
 
 
+def test_entity_flags_swimming_flying_water(state):
+    # EntityFlagsPredicate.matches (decompiled 26.1.2): is_in_water reads Entity.isInWater, is_swimming
+    # the flag Entity.updateSwimming sets (never without sprinting in water), is_flying a player's
+    # abilities (GameType.updatePlayerAbilities: a spectator flies, creative keeps it), is_baby and
+    # is_fall_flying only test living entities; a flag the release's codec lacks is ignored
+    state.version = (1, 21, 11)
+    props = lambda p: {"condition": "entity_properties", "entity": "this", "predicate": {"flags": p}}  # noqa: E731
+    player = state.entities.add_player("Alex", (0.5, 0.0, 0.5))
+    this = ctx(state, this=player)
+    assert holds(props({"is_swimming": False, "is_flying": False, "is_in_water": False}), this)
+    state.blocks.place((0, 0, 0), with_defaults(parse_block("minecraft:water"), state.version))
+    assert holds(props({"is_in_water": True, "is_swimming": False}), this)
+    player.sprinting = True
+    with pytest.raises(Unmodelled, match="sprinting in water"):
+        holds(props({"is_swimming": True}), this)
+    player.gamemode, player.flying = "spectator", True
+    assert holds(props({"is_flying": True}), this)
+    marker = state.entities.summon("minecraft:marker", (9.0, 0.0, 9.0))
+    assert holds(props({"is_baby": True, "is_fall_flying": True}), ctx(state, this=marker))  # not living: skipped
+    state.version = (1, 21, 4)  # is_in_water is not a field before 1.21.11: ignored
+    assert holds(props({"is_in_water": False}), this)
+
+
+def test_gamemode_sets_the_abilities_flying_flag():
+    from emulator.world.entity_flags import flying_after
+    assert flying_after("spectator", False) and flying_after("creative", True)
+    assert not flying_after("creative", False) and not flying_after("survival", True)
+
+
 def test_inline_predicates_read_snbt():
     # 1.20.5+ inline predicates: SNBT read through the condition codec
     value = parse_inline('{condition:"minecraft:random_chance",chance:0.5f}')
