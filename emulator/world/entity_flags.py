@@ -1,6 +1,6 @@
 """The ``flags`` of an entity predicate (EntityFlagsPredicate.matches).
 
-- ``flags_match(value, entity, version)``: each flag the release's codec reads must equal the
+- ``flags_match(value, state, entity)``: each flag the release's codec reads must equal the
   entity's; a flag the release does not have is ignored, as its codec ignores an unknown field.
 
 What each flag reads: ``is_on_fire`` (Entity.isOnFire on the server), ``is_sneaking``,
