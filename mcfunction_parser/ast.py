@@ -733,6 +733,31 @@ class Tellraw(Command):
     text: str  # JSON/SNBT text component, as written
 
 
+# ----------------------------------------------------------------------------- PackTest's commands
+
+@node
+class PackTestAssert(Command):
+    """PackTest's ``assert [not] CONDITION`` run by a function (not a test file's step):
+    ``condition`` is an ``execute if`` test, None for PackTest's own ``chat`` and ``entity ... inside``
+    (``text`` keeps the condition as written)."""
+
+    negated: bool
+    condition: Condition | None
+    text: str
+
+
+@node
+class PackTestFail(Command):
+    """PackTest's ``fail MESSAGE`` run by a function."""
+
+    message: str  # text component, as written
+
+
+@node
+class PackTestSucceed(Command):
+    """PackTest's ``succeed`` run by a function."""
+
+
 # ----------------------------------------------------------------------------- files and packs
 
 

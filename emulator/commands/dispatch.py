@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import (advancements, blocks, bossbar, conditions, data, entities, items, level, living, recipes, scoreboard, server,
-               teams)
+from . import (advancements, blocks, bossbar, conditions, data, entities, items, level, living, packtest, recipes,
+               scoreboard, server, teams)
 
 # Commands that only show or play something to players: no world state a pack can test changes
 # (their result, the number of players reached, is the one thing left unmodelled).
@@ -28,7 +28,7 @@ def _unread(env, cmd: ast.UnreadCommand, ctx) -> int:
 
 
 HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **server.HANDLERS, **bossbar.HANDLERS,
-            **items.HANDLERS, ast.UnreadCommand: _unread}
+            **items.HANDLERS, **packtest.HANDLERS, ast.UnreadCommand: _unread}
 # the commands the parser keeps as text, by name
 GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **recipes.HANDLERS,
                     **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS, **teams.HANDLERS,

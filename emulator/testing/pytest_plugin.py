@@ -129,13 +129,16 @@ def pytest_collection_modifyitems(session, config, items) -> None:
         return
     from emulator.testing.discovery import DiscoveryError, discover
     from emulator.testing.runner import load_suite
+    from mcfunction_parser.dialect import packtest_commands
 
     try:
         files = discover([Path(p) for p in paths])
     except DiscoveryError as error:
         raise pytest.UsageError(f"--mcfunction-tests: {error}") from None
     backend, allow = config.getoption("dpemu_backend"), config.getoption("dpemu_allow_unmodelled")
-    for packs, cases in load_suite(files, game_jar=config.getoption("dpemu_game_jar")):
+    with packtest_commands():  # as run_suite loads them: on a server with PackTest
+        suite = list(load_suite(files, game_jar=config.getoption("dpemu_game_jar")))
+    for packs, cases in suite:
         for case in cases:
             path = Path(case.path).resolve()
             nodeid = f"{_relative(path, config.rootpath)}::{case.id}"

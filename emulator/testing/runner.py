@@ -9,7 +9,7 @@ import random
 import re
 import time
 from collections.abc import Callable, Iterator
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from emulator.commands import entities as world_entities
@@ -30,6 +30,7 @@ from emulator.world.blocks import BlockSpec, with_defaults
 from emulator.world.entities import Entity
 from mcfunction_parser.diagnostics import Diagnostic
 from mcfunction_parser.nbt import Compound, String, to_snbt
+from mcfunction_parser.dialect import packtest_commands
 from mcfunction_parser.pack.loader import load_packs
 
 _SCORE_MATCHES = re.compile(r"score (\S+) (\S+) matches (\S+)$")
@@ -117,13 +118,14 @@ def run_suite(files: list[TestFile], backend: str = "numba", pattern: str | None
     of its own (else as the game test server: see :func:`run_cases`). ``on_result`` sees each
     result as its test ends."""
     summary = Summary()
-    for packs, cases in load_suite(files, pattern, with_packs, together, game_jar):
-        if on_load is not None:
-            on_load(packs)
-        for result in run_cases(packs, cases, backend, strict, allow_unmodelled, isolate):
-            summary.results.append(result)
-            if on_result is not None:
-                on_result(result)
+    with packtest_commands():  # a test server has the PackTest mod: its commands are known everywhere
+        for packs, cases in load_suite(files, pattern, with_packs, together, game_jar):
+            if on_load is not None:
+                on_load(packs)
+            for result in run_cases(packs, cases, backend, strict, allow_unmodelled, isolate):
+                summary.results.append(result)
+                if on_result is not None:
+                    on_result(result)
     return summary
 
 
@@ -149,7 +151,8 @@ def run_cases(packs, cases: list[TestCase], backend: str = "numba", strict: bool
 def run_case(case: TestCase, packs, backend: str = "numba", strict: bool = False,
              allow_unmodelled: bool = False) -> TestResult:
     """One test alone in a fresh world."""
-    return next(run_cases(packs, [case], backend, strict, allow_unmodelled, isolate=True))
+    with packtest_commands():
+        return next(run_cases(packs, [case], backend, strict, allow_unmodelled, isolate=True))
 
 
 def _unreadable(case: TestCase) -> TestResult:
@@ -449,6 +452,7 @@ class TestSource:
         self.origin = self.ORIGIN
         self.size = size  # of the test structure, whose corner is origin
         self.dummy_entity: Entity | None = None
+        self.helper = TestHelper(self)  # what PackTest's commands run by its functions reach
         self.started = emu.ticks  # the world's tick when its first line ran
 
     @classmethod
@@ -474,7 +478,15 @@ class TestSource:
         return replace(world_entities.entity_context(self.emu.state, self.dummy_entity), pos=self.origin)
 
     def call(self, function: str, context: Context | None = None) -> int | None:
-        return self.emu.runtime.call(function, context or self.context()).result
+        """Run ``function`` as the test runs its commands: PackTest's commands in the functions it
+        calls reach this test's helper."""
+        state = self.emu.state
+        outer, state.test_helper = state.test_helper, self.helper
+        try:
+            return self.emu.runtime.call(function, context or self.context()).result
+        finally:
+            state.test_helper = outer
+
 
     def contexts(self, step: PerContext) -> list[Context]:
         """The contexts an execute prefix makes from the test source, each stage over all
@@ -498,6 +510,47 @@ class TestSource:
                                        stage.loc.line) from None
             contexts = made
         return contexts
+
+
+class TestHelper:
+    """The test as PackTest's commands run by a function reach it (GameTestHelper.fail, succeed):
+    the first failure stands."""
+
+    def __init__(self, source: TestSource) -> None:
+        self.source = source
+        self.failure: str | None = None
+        self.succeeded = False
+
+    def fail(self, message: str) -> None:
+        if self.failure is None:
+            self.failure = message
+
+    def succeed(self) -> None:
+        self.succeeded = True
+
+    def assert_failed(self, condition: str, negated: bool, ctx: Context) -> str:
+        """An ``assert [not] condition`` that did not hold in ``ctx``: the test fails with the
+        message a test file's line gets (:func:`describe_failure`), which is returned."""
+        message = describe_failure(self.source, _Condition(condition, negated), 0, ctx)
+        self.fail(message)
+        return message
+
+
+@dataclass(frozen=True)
+class _Condition:
+    """An assert's condition as :func:`describe_failure` reads a test file's check."""
+    condition: str
+    negated: bool
+    per_context: bool = False
+
+
+def _ended_by_commands(source: TestSource, step) -> bool:
+    """Whether PackTest's commands run by the test's functions ended it: a failure raises its
+    verdict, at the line of the step that ran them; True when one made it succeed."""
+    helper = source.helper
+    if helper.failure is not None:
+        raise _Verdict(FAILED, helper.failure, step.loc.line)
+    return helper.succeeded
 
 
 def spawn_dummy(source: TestSource, case: TestCase) -> Entity | None:
@@ -543,6 +596,8 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase):
     chat_start = len(emu.log)  # chat conditions see the messages since the test started
     for step in case.steps:
         if step.gate and source.call(step.gate) != 1:
+            if _ended_by_commands(source, step):
+                return
             continue
         if isinstance(step, Run):
             source.call(step.function)
@@ -563,6 +618,8 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase):
             _act(source, step, source.context())
         elif isinstance(step, PerContext):
             yield from _run_per_context(emu, source, step, timeout, chat_start)
+        if _ended_by_commands(source, step):
+            return
 
 
 def _run_per_context(emu: Emulator, source: TestSource, step: PerContext, timeout: int, chat_start: int):

@@ -189,6 +189,7 @@ EMULATOR_MESSAGES = {
     "dpemu.loot.unknown_table": "Unknown loot table {0}",
     "dpemu.loot.unknown_modifier": "Unknown item modifier {0}",
     "dpemu.loot.invalid": "{0} does not parse: {1}",
+    "dpemu.packtest.failed": "{0}",
 }
 
 

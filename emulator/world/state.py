@@ -553,6 +553,9 @@ class WorldState:
     # the day time Level.updateSkyBrightness last read (as the overworld starts and each tick, before
     # the time advances): Level.skyDarken is worked out from it when a light level is read
     sky_time: int = 0
+    # the test whose commands run now (a PackTest helper: fail(message), succeed()), None outside a test:
+    # what PackTest's commands run by a function reach (emulator.commands.packtest)
+    test_helper: object = None
     _sky: tuple = field(default=(0, 0), repr=False, compare=False)  # (sky_time, its skyDarken)
 
     @property

@@ -2,13 +2,16 @@
 from __future__ import annotations
 
 from ..ast import Command
+from ..dialect import packtest_enabled
 from ..features import COMMANDS, command_problem, permission_warning
 from ..reader import Reader
-from ..relocate import READ, READ_MAX, NotRelocatable, relocate
+from ..relocate import READ, READ_MAX, NotRelocatable, read_key, relocate
 from .tree import tree_command
 
 # name -> parser(reader positioned after the name, loc of the name) -> Command
 REGISTRY: dict = {}
+# PackTest's commands, read where it is loaded (mcfunction_parser.dialect; commands.packtest registers them)
+PACKTEST: dict = {}
 
 
 _TABLES: dict = {}  # version -> its table, built on first use (after every family has registered)
@@ -39,6 +42,9 @@ def command(r: Reader) -> Command:
     if entry is None:
         if not name:
             r.fail(f"expected a command, got {r.found()}")
+        if name in PACKTEST and packtest_enabled():
+            r.pos = start + len(name)
+            return PACKTEST[name](r, r.start_loc if start == 0 else r.loc_at(start))
         r.fail(command_problem(name, r.version), start)
     loc = r.start_loc if start == 0 else r.loc_at(start)
     r.pos = start + len(name)
@@ -54,7 +60,7 @@ def rest_command(r: Reader) -> Command:
     """The command that is the rest of the text (after ``execute ... run``, ``return run``): when
     that text was read cleanly before as a line or such a rest (see relocate.READ), the command
     read then, moved here; else read, and remembered when it read cleanly to the end."""
-    read = READ.get(r.version) if type(r) is Reader else None  # a joined line's offsets span lines
+    read = READ.get(read_key(r.version)) if type(r) is Reader else None  # a joined line's offsets span lines
     if read is None:
         return command(r)
     start = r.pos

@@ -18,7 +18,7 @@ from ..selectors import target
 from ..items import item_predicate, slot
 from .data_targets import data_target
 from .items import item_target
-from ..relocate import READ, READ_MAX, NotRelocatable, relocate
+from ..relocate import READ, READ_MAX, NotRelocatable, read_key, relocate
 from .dispatch import rest_command
 
 _ANCHORS = ("eyes", "feet")
@@ -188,7 +188,8 @@ _CONDITIONS = {
 }
 
 
-def _condition(r, loc, negated):
+def condition(r, loc, negated):
+    """An ``execute if|unless`` test (the text after the keyword)."""
     start = r.pos
     kind = r.word_then_space(_CONDITIONS, "condition", _what_follows)
     parser, feature = _CONDITIONS[kind]
@@ -198,11 +199,11 @@ def _condition(r, loc, negated):
 
 
 def _if(r, loc):
-    return _condition(r, loc, False)
+    return condition(r, loc, False)
 
 
 def _unless(r, loc):
-    return _condition(r, loc, True)
+    return condition(r, loc, True)
 
 
 # ----------------------------------------------------------------------------- store
@@ -286,7 +287,7 @@ def _recall(r: Reader, read: dict, pos: int, key: str):
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
     text = r.text
-    read = READ.get(r.version) if type(r) is Reader else None  # a joined line's offsets span lines
+    read = READ.get(read_key(r.version)) if type(r) is Reader else None  # a joined line's offsets span lines
     condition_last = False  # the chain may end after a condition
     while True:
         pos = r.pos

@@ -23,6 +23,7 @@ from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 from mcfunction_parser.ast import Function
+from mcfunction_parser.dialect import packtest_enabled
 from mcfunction_parser.diagnostics import ERROR, Diagnostic
 from mcfunction_parser.parse import parse_lines
 from mcfunction_parser.pack.versions import Version
@@ -45,6 +46,8 @@ def parse_files(files: Sequence[FunctionFile], version: Version, workers: int | 
     lines = sum(len(f[0]) for f in files)
     if workers is None:
         workers = _other_cores() if lines >= PARALLEL_MIN_LINES else 0
+    if packtest_enabled():  # a worker process would not read PackTest's commands (a context variable of this one)
+        workers = 0
     batches = _batches(files, max(MIN_BATCH_LINES, lines // BATCHES))
     if workers < 1 or len(batches) < 2:
         return parse_batch(files, version)

@@ -1,0 +1,59 @@
+"""PackTest's ``assert``, ``fail`` and ``succeed`` run by a function (a library running a test's
+callback), as the PackTest mod runs them (AssertCommand.AssertCustomExecutor, FailCommand,
+SucceedCommand): they reach the test whose commands run (its GameTestHelper, which PackTest keeps
+on every command source made from the test's: ``state.test_helper``).
+
+- ``assert [not] CONDITION``: held, the command succeeds with 1; failed, the test fails with
+  PackTest's message for the condition, as a test file's ``assert`` line (GameTestHelper.fail). The game's helper throws there and the rest of the
+  test's commands of that tick do not run; here the command fails and they run on (the verdict is
+  the same: the first failure stands). With no test running, PackTest's failed assert ends its
+  function (frame.returnFailure): not modelled, said so.
+- ``fail MESSAGE``: the test fails with the message's text; with no test, as a failed assert.
+- ``succeed``: the test succeeds (GameTestHelper.succeed); with no test, nothing.
+
+A test file's own lines are steps of :mod:`emulator.testing`, not these commands.
+"""
+from __future__ import annotations
+
+from mcfunction_parser import ast
+
+from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.text import plain_text
+
+from . import conditions
+
+_OUTSIDE = "PackTest's '{0}' failing outside a test, which ends its function (frame.returnFailure)"
+
+
+def _assert(env, cmd: ast.PackTestAssert, ctx) -> int:
+    if cmd.condition is None:
+        raise Unmodelled(f"PackTest's 'assert {cmd.text}' run by a function (read as a test file's line only)")
+    if isinstance(cmd.condition, ast.IfFunction):
+        raise Unmodelled("PackTest's 'assert function' run by a function")
+    if conditions.passes(env, cmd.condition, ctx) != cmd.negated:
+        return 1
+    helper = _helper(env, "assert")
+    raise CommandFailure("dpemu.packtest.failed", helper.assert_failed(cmd.text, cmd.negated, ctx))
+
+
+def _fail(env, cmd: ast.PackTestFail, ctx) -> int:
+    message = plain_text(cmd.message, env.state.version)
+    _helper(env, "fail").fail(message)
+    raise CommandFailure("dpemu.packtest.failed", message)
+
+
+def _succeed(env, cmd: ast.PackTestSucceed, ctx) -> int:
+    if env.state.test_helper is not None:
+        env.state.test_helper.succeed()
+    return 1
+
+
+def _helper(env, name: str):
+    """The running test's helper; failing with none is not modelled."""
+    helper = env.state.test_helper
+    if helper is None:
+        raise Unmodelled(_OUTSIDE.format(name))
+    return helper
+
+
+HANDLERS = {ast.PackTestAssert: _assert, ast.PackTestFail: _fail, ast.PackTestSucceed: _succeed}
