@@ -7,6 +7,8 @@ from __future__ import annotations
 import contextlib
 from contextvars import ContextVar
 
+from .relocate import forget_read_lines
+
 _PACKTEST: ContextVar[bool] = ContextVar("packtest_commands", default=False)
 
 
@@ -16,9 +18,13 @@ def packtest_enabled() -> bool:
 
 @contextlib.contextmanager
 def packtest_commands():
-    """Read PackTest's commands inside the block."""
+    """Read PackTest's commands inside the block. The parser's memory of texts read
+    (:mod:`mcfunction_parser.relocate`) is emptied when it ends: a text read there as one of them
+    is an unknown command outside (the texts read before read the same inside: the dialect only
+    adds commands)."""
     token = _PACKTEST.set(True)
     try:
         yield
     finally:
         _PACKTEST.reset(token)
+        forget_read_lines()

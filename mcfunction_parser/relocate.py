@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import dataclasses
 
-from .dialect import packtest_enabled
 from .diagnostics import Loc, new_loc
 from .frozen_init import ON_GUARD, build_lines, builder, is_frozen
 
@@ -31,18 +30,11 @@ READ_MAX = 1 << 15
 def lines_read(version: tuple[int, int, int]) -> dict:
     """The memory of texts read for ``version``: one release at a time, and a bound on the nodes it
     keeps alive (past it, it starts afresh)."""
-    key = read_key(version)
-    read = READ.get(key)
+    read = READ.get(version)
     if read is None or len(read) >= READ_MAX:
         READ.clear()
-        read = READ[key] = {}
+        read = READ[version] = {}
     return read
-
-
-def read_key(version: tuple[int, int, int]) -> tuple:
-    """The memory's key: the release, and whether PackTest's commands are read (a text that reads
-    as one of them there is an unknown command elsewhere)."""
-    return (*version, "packtest") if packtest_enabled() else version
 
 
 def forget_read_lines() -> None:

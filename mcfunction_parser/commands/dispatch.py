@@ -5,7 +5,7 @@ from ..ast import Command
 from ..dialect import packtest_enabled
 from ..features import COMMANDS, command_problem, permission_warning
 from ..reader import Reader
-from ..relocate import READ, READ_MAX, NotRelocatable, read_key, relocate
+from ..relocate import READ, READ_MAX, NotRelocatable, relocate
 from .tree import tree_command
 
 # name -> parser(reader positioned after the name, loc of the name) -> Command
@@ -60,7 +60,7 @@ def rest_command(r: Reader) -> Command:
     """The command that is the rest of the text (after ``execute ... run``, ``return run``): when
     that text was read cleanly before as a line or such a rest (see relocate.READ), the command
     read then, moved here; else read, and remembered when it read cleanly to the end."""
-    read = READ.get(read_key(r.version)) if type(r) is Reader else None  # a joined line's offsets span lines
+    read = READ.get(r.version) if type(r) is Reader else None  # a joined line's offsets span lines
     if read is None:
         return command(r)
     start = r.pos

@@ -18,7 +18,7 @@ from ..selectors import target
 from ..items import item_predicate, slot
 from .data_targets import data_target
 from .items import item_target
-from ..relocate import READ, READ_MAX, NotRelocatable, read_key, relocate
+from ..relocate import READ, READ_MAX, NotRelocatable, relocate
 from .dispatch import rest_command
 
 _ANCHORS = ("eyes", "feet")
@@ -287,7 +287,7 @@ def _recall(r: Reader, read: dict, pos: int, key: str):
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
     text = r.text
-    read = READ.get(read_key(r.version)) if type(r) is Reader else None  # a joined line's offsets span lines
+    read = READ.get(r.version) if type(r) is Reader else None  # a joined line's offsets span lines
     condition_last = False  # the chain may end after a condition
     while True:
         pos = r.pos

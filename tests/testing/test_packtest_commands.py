@@ -51,3 +51,16 @@ def test_outside_a_test_server_they_are_unknown_commands(pack):
     emu.load([pack(FILES)])
     errors = [d for d in emu.load_diagnostics if d.severity == "error"]
     assert any("unknown command 'assert'" in d.message and d.path.endswith("check.mcfunction") for d in errors)
+
+
+def test_the_parsers_memory_of_lines_does_not_carry_the_dialect_out():
+    # a line read as PackTest's command inside the dialect is an unknown command after it
+    from mcfunction_parser.dialect import packtest_commands
+    from mcfunction_parser.parse import parse_function
+
+    text = "execute if score a o matches 1 run assert score a o matches 1\nassert score a o matches 1\n"
+    with packtest_commands():
+        function, diagnostics = parse_function(text, "f.mcfunction", "demo:f", (1, 21, 4))
+    assert not diagnostics and len(function.commands) == 2
+    function, diagnostics = parse_function(text, "f.mcfunction", "demo:f", (1, 21, 4))
+    assert [d.message for d in diagnostics] == ["unknown command 'assert'"] * 2
