@@ -50,5 +50,10 @@ class Env:
     def overflow(self, op: str, a: int, b: int, exact: int) -> None:
         """An arithmetic result that wrapped (the sanitizer's report; nothing by default)."""
 
+    def frames(self, node) -> tuple:
+        """The call stack running ``node`` now, the root first (:class:`~emulator.world.records.Frame`
+        each; none by default)."""
+        return ()
+
     def warning(self, node, message: str, unmodelled: bool = False) -> None:
         """A warning's first occurrence (nothing by default)."""

@@ -33,12 +33,12 @@ def _assert(env, cmd: ast.PackTestAssert, ctx) -> int:
     if conditions.passes(env, cmd.condition, ctx) != cmd.negated:
         return 1
     helper = _helper(env, "assert")
-    raise CommandFailure("dpemu.packtest.failed", helper.assert_failed(cmd.text, cmd.negated, ctx))
+    raise CommandFailure("dpemu.packtest.failed", helper.assert_failed(cmd.text, cmd.negated, ctx, env.frames(cmd)))
 
 
 def _fail(env, cmd: ast.PackTestFail, ctx) -> int:
     message = plain_text(cmd.message, env.state.version)
-    _helper(env, "fail").fail(message)
+    _helper(env, "fail").fail(message, env.frames(cmd))
     raise CommandFailure("dpemu.packtest.failed", message)
 
 

@@ -39,9 +39,12 @@ class ReferenceEnv(Env):
             function = activation.function if activation else "<root>"
             self.state.overflows.append(Overflow(self.state.tick, function, self.where, op, a, b, exact, wrap32(exact)))
 
-    def warning(self, node, message: str, unmodelled: bool = False) -> None:
+    def frames(self, node) -> tuple:
         activation = self.source.activation if self.source else None
-        self.state.error(message, activation.frames(node.loc) if activation else (), "warning", unmodelled)
+        return activation.frames(node.loc) if activation else ()
+
+    def warning(self, node, message: str, unmodelled: bool = False) -> None:
+        self.state.error(message, self.frames(node), "warning", unmodelled)
 
 
 def run_command(env: ReferenceEnv, cmd: ast.Command | ast.Condition, source: Source, where) -> int:

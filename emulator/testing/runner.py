@@ -519,20 +519,23 @@ class TestHelper:
     def __init__(self, source: TestSource) -> None:
         self.source = source
         self.failure: str | None = None
+        self.line: int | None = None  # the test's line that was running then
         self.succeeded = False
 
-    def fail(self, message: str) -> None:
+    def fail(self, message: str, frames: tuple = ()) -> None:
+        """``frames``: the call stack of the failing command (its root, the test's function, first)."""
         if self.failure is None:
             self.failure = message
+            self.line = frames[0].loc.line if frames else None
 
     def succeed(self) -> None:
         self.succeeded = True
 
-    def assert_failed(self, condition: str, negated: bool, ctx: Context) -> str:
+    def assert_failed(self, condition: str, negated: bool, ctx: Context, frames: tuple = ()) -> str:
         """An ``assert [not] condition`` that did not hold in ``ctx``: the test fails with the
         message a test file's line gets (:func:`describe_failure`), which is returned."""
         message = describe_failure(self.source, _Condition(condition, negated), 0, ctx)
-        self.fail(message)
+        self.fail(message, frames)
         return message
 
 
@@ -546,10 +549,10 @@ class _Condition:
 
 def _ended_by_commands(source: TestSource, step) -> bool:
     """Whether PackTest's commands run by the test's functions ended it: a failure raises its
-    verdict, at the line of the step that ran them; True when one made it succeed."""
+    verdict, at the test's line running then (else the step's); True when one made it succeed."""
     helper = source.helper
     if helper.failure is not None:
-        raise _Verdict(FAILED, helper.failure, step.loc.line)
+        raise _Verdict(FAILED, helper.failure, helper.line or step.loc.line)
     return helper.succeeded
 
 

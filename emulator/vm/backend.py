@@ -83,7 +83,7 @@ class NumbaBackend:
         self.instances: dict[tuple, int] = {}  # (function, expanded commands) -> function index
         self.roots: dict[str, tuple[ast.Function, int]] = {}  # a root function that is no macro, its index
         self.host = Host(state, packs.functions, packs.tags, self._report_here,
-                         self._host_overflow if sanitize else None)
+                         self._host_overflow if sanitize else None, self._traceback_here)
         self.regs = vm.new_registers()
         self.rv = memoryview(self.regs)  # the registers as Python ints: faster to read and write than the array
         fresh = vm.new_registers()  # a root's first registers, but its serial, quota, limits and function
@@ -128,7 +128,7 @@ class NumbaBackend:
         self.selectors.resources = state.resources
         self.compiler.sb = state.scoreboard
         self.host = Host(state, self.packs.functions, self.packs.tags, self._report_here,
-                         self._host_overflow if self.sanitize else None)
+                         self._host_overflow if self.sanitize else None, self._traceback_here)
         for counter in (self.counts, self.totals, self.active):
             counter[:] = 0
         self.host_runs.clear()
@@ -664,7 +664,10 @@ class NumbaBackend:
                                              op, a, b, exact, wrap32(exact)))
 
     def _report_here(self, message: str, severity: str, unmodelled: bool = False) -> None:
-        self.state.error(message, self.traceback(self._current_pc), severity, unmodelled)
+        self.state.error(message, self._traceback_here(), severity, unmodelled)
+
+    def _traceback_here(self) -> tuple[Frame, ...]:
+        return self.traceback(self._current_pc)
 
     def host_ops_run(self) -> list[HostRun]:
         """Every host op Python ran since load (or since ``host_runs.clear()``), in code order:

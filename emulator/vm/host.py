@@ -56,10 +56,15 @@ class Host(Env):
     current instruction, ``overflow(op, a, b, exact)`` a wrapped result under the sanitizer."""
 
     def __init__(self, state: WorldState, functions: dict, tags, report: Callable[[str, str, bool], None],
-                 overflow: Callable[[str, int, int, int], None] | None = None) -> None:
+                 overflow: Callable[[str, int, int, int], None] | None = None,
+                 where: Callable[[], tuple] = tuple) -> None:
         super().__init__(state, functions, tags)
         self.report = report
         self._overflow = overflow
+        self._where = where  # the call stack at the current instruction
+
+    def frames(self, node) -> tuple:
+        return self._where()
 
     def overflow(self, op: str, a: int, b: int, exact: int) -> None:
         if self._overflow is not None:

@@ -34,9 +34,9 @@ def test_a_function_runs_packtests_commands_for_its_test(pack, backend):
     results = {r.id: r for r in run_suite(discover([pack(FILES)]), backend, isolate=True).results}
     assert results["demo:callback_holds"].status == "passed"
     failed = results["demo:callback_fails"]
-    # the message a test file's own line gets, in the test's file
+    # the message a test file's own line gets, at the test's line that called the function
     assert (failed.status, failed.message) == ("failed", "Expected score $x o to match 5, found 4")
-    assert "data/demo/test/callback_fails.mcfunction:" in failed.where
+    assert failed.where.endswith("data/demo/test/callback_fails.mcfunction:3")
     assert results["demo:not_held"].message == "Did not expect score $x o to match 4, found 4"
     assert results["demo:static"].status == "passed"
     assert (results["demo:fails"].status, results["demo:fails"].message) == ("failed", "the library gave up")
