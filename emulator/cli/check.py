@@ -1,10 +1,11 @@
-"""``dpemu check PACK... [--json] [--mc VERSION]``: lint data packs.
+"""``dpemu check PACK... [--json] [--mc VERSION] [--with PACK] [--packtest]``: lint data packs.
 
 Exit status: 0 when there is no error (warnings and infos allowed), 1 when there are errors,
 2 for usage errors (a path that is not a pack folder or .zip file, an unknown ``--mc`` version).
 """
 from __future__ import annotations
 
+import contextlib
 import json
 import sys
 from pathlib import Path
@@ -14,6 +15,7 @@ import click
 from emulator.cli.outcome import INTERRUPTED, Passes
 from emulator.cli.params import PackPath, game_jar_option
 from mcfunction_parser.check import check_releases
+from mcfunction_parser.dialect import packtest_commands
 from mcfunction_parser.diagnostics import ERROR
 from mcfunction_parser.pack.versions import parse_version_set
 
@@ -36,15 +38,18 @@ def _validate_versions(ctx: click.Context, param: click.Parameter, value: str | 
 @click.option("--with", "with_packs", multiple=True, type=PackPath(), metavar="PACK",
               help="A pack expected beside these at run time (a library, another module): loaded "
                    "first, its own findings not reported. Repeatable.")
+@click.option("--packtest", is_flag=True,
+              help="Check as on a test server with PackTest: its assert, fail and succeed are commands in every function.")
 @game_jar_option
 def check(packs: tuple[Path, ...], as_json: bool, releases: list | None, with_packs: tuple[Path, ...],
-          game_jar: str | None) -> None:
+          packtest: bool, game_jar: str | None) -> None:
     """Check data packs (folders or .zip files) and report problems.
 
     Packs load in the order given; later ones override earlier ones."""
     bar = Passes("parsing")
     try:
-        result = check_releases(packs, releases, with_packs, on_function=bar, game_jar=game_jar)
+        with packtest_commands() if packtest else contextlib.nullcontext():
+            result = check_releases(packs, releases, with_packs, on_function=bar, game_jar=game_jar)
     except KeyboardInterrupt:
         bar.close()
         click.echo("\ninterrupted: nothing was checked to the end", err=True)

@@ -42,9 +42,12 @@ def command(r: Reader) -> Command:
     if entry is None:
         if not name:
             r.fail(f"expected a command, got {r.found()}")
-        if name in PACKTEST and packtest_enabled():
-            r.pos = start + len(name)
-            return PACKTEST[name](r, r.start_loc if start == 0 else r.loc_at(start))
+        if name in PACKTEST:
+            if packtest_enabled():
+                r.pos = start + len(name)
+                return PACKTEST[name](r, r.start_loc if start == 0 else r.loc_at(start))
+            r.fail(f"unknown command '{name}' (PackTest's: known where the PackTest mod runs, as in "
+                   "`dpemu test` or `dpemu check --packtest`)", start)
         r.fail(command_problem(name, r.version), start)
     loc = r.start_loc if start == 0 else r.loc_at(start)
     r.pos = start + len(name)

@@ -50,7 +50,8 @@ def test_outside_a_test_server_they_are_unknown_commands(pack):
     emu = Emulator(backend="python")
     emu.load([pack(FILES)])
     errors = [d for d in emu.load_diagnostics if d.severity == "error"]
-    assert any("unknown command 'assert'" in d.message and d.path.endswith("check.mcfunction") for d in errors)
+    assert any(d.message.startswith("unknown command 'assert' (PackTest's") and d.path.endswith("check.mcfunction")
+               for d in errors)
 
 
 def test_the_parsers_memory_of_lines_does_not_carry_the_dialect_out():
@@ -63,4 +64,15 @@ def test_the_parsers_memory_of_lines_does_not_carry_the_dialect_out():
         function, diagnostics = parse_function(text, "f.mcfunction", "demo:f", (1, 21, 4))
     assert not diagnostics and len(function.commands) == 2
     function, diagnostics = parse_function(text, "f.mcfunction", "demo:f", (1, 21, 4))
-    assert [d.message for d in diagnostics] == ["unknown command 'assert'"] * 2
+    assert [d.message.split(" (")[0] for d in diagnostics] == ["unknown command 'assert'"] * 2
+
+
+def test_check_reads_them_with_packtest(pack):
+    from click.testing import CliRunner
+
+    from emulator.cli.check import check
+
+    root = pack(FILES)
+    assert CliRunner().invoke(check, [str(root)]).exit_code == 1
+    result = CliRunner().invoke(check, [str(root), "--packtest"])
+    assert result.exit_code == 0, result.output
