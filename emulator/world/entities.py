@@ -158,6 +158,7 @@ class Entity:
 
     __slots__ = ("_uuid", "type", "_custom_name", "data", "order", "player_name", "_gamemode", "_level", "_team",
                  "_sneaking", "sprinting", "flying", "_vehicle", "passengers", "_table", "_own", "born", "equipment_modifiers",
+                 "equipment_seen",
                  "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
@@ -185,6 +186,7 @@ class Entity:
         # the transient attribute modifiers its equipment gives: {attribute: {id: (amount, operation)}}
         # (LivingEntity.collectEquipmentChanges; AttributeInstance.save leaves them out of the NBT)
         self.equipment_modifiers: dict | None = None
+        self.equipment_seen = None  # what its last equipment check saw (emulator.world.equipment)
         self.born = 0  # the server tick it came into the world (EntityStore._add; tickCount counts from it)
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]

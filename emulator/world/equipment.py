@@ -220,11 +220,10 @@ def tick(state) -> None:
     """Each living entity's equipment check (LivingEntity.tick -> detectEquipmentUpdates)."""
     if tuple(state.version) < MODIFIERS_VERSION:
         return
-    seen = state.equipment_seen
     for entity in state.entities.living_mobs():
-        last = seen.get(entity)
+        last = entity.equipment_seen
         if last is None:
-            last = seen[entity] = _Seen()
+            last = entity.equipment_seen = _Seen()
         if not _nbt_changed(entity, last):
             continue
         collect_changes(state, entity, last.slots)
@@ -236,7 +235,7 @@ def tick_is_idle(state) -> bool:
     if tuple(state.version) < MODIFIERS_VERSION:
         return True
     for entity in state.entities.living_mobs():
-        last = state.equipment_seen.get(entity) or _Seen()
+        last = entity.equipment_seen or _Seen()
         if _nbt_changed(entity, last) and _changed_slots(state, entity, last.slots):
             return False
     return True

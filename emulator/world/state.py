@@ -519,7 +519,6 @@ class WorldState:
     open_menus: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (level, pos) (block_use)
     trading: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # merchant -> its trading player (mob_use)
     # entity -> what its last tick saw of its equipment (LivingEntity's lastHandItemStacks, lastArmorItemStacks)
-    equipment_seen: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)
     hurt_timers: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> [invulnerableTime, lastHurt] (living)
     forced_chunks: dict = field(default_factory=dict)  # dimension -> the chunks (x, z) forceload marked
     cloud_victims: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # area effect cloud -> {entity: until}
