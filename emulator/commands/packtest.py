@@ -4,10 +4,11 @@ SucceedCommand): they reach the test whose commands run (its GameTestHelper, whi
 on every command source made from the test's: ``state.test_helper``).
 
 - ``assert [not] CONDITION``: held, the command succeeds with 1; failed, the test fails with
-  PackTest's message for the condition, as a test file's ``assert`` line (GameTestHelper.fail). The game's helper throws there and the rest of the
-  test's commands of that tick do not run; here the command fails and they run on (the verdict is
-  the same: the first failure stands). With no test running, PackTest's failed assert ends its
-  function (frame.returnFailure): not modelled, said so.
+  PackTest's message for the condition, as a test file's ``assert`` line gets it
+  (GameTestHelper.fail), at the test's line running then. The game's helper throws there and the
+  rest of the test's commands of that tick do not run; here the command fails and they run on (the
+  verdict is the same: the first failure stands). With no test running, PackTest's failed assert
+  ends its function (frame.returnFailure): not modelled, said so.
 - ``fail MESSAGE``: the test fails with the message's text; with no test, as a failed assert.
 - ``succeed``: the test succeeds (GameTestHelper.succeed); with no test, nothing.
 

@@ -487,7 +487,6 @@ class TestSource:
         finally:
             state.test_helper = outer
 
-
     def contexts(self, step: PerContext) -> list[Context]:
         """The contexts an execute prefix makes from the test source, each stage over all
         contexts before the next (ContextChain.executeAll): a condition through its generated

@@ -21,7 +21,7 @@ from ..arguments import text_component
 from ..reader import Reader
 from .execute import condition
 
-_PACKTEST_ONLY = ("chat",)  # conditions of PackTest's own, not execute's
+_PACKTEST_ONLY = ("chat ",)  # conditions of PackTest's own, not execute's
 
 
 def _succeed(r: Reader, loc) -> ast.Command:
