@@ -74,7 +74,8 @@ def _moving_carts(state):
 
 
 def _any_acting(state) -> bool:
-    return _holds_acting(state.blocks) or any(_holds_acting(blocks) for blocks in state.other_levels_blocks.values())
+    others = state.other_levels_blocks  # (none, most ticks: no generator made for them)
+    return _holds_acting(state.blocks) or bool(others) and any(_holds_acting(blocks) for blocks in others.values())
 
 
 def _may_act(state) -> bool:

@@ -50,8 +50,9 @@ _TICKED: set = set()
 def _nothing_to_tick(state) -> bool:
     """No block entity in any level and no minecart (a hopper minecart's work is reported here): the
     common world, every tick."""
+    others = state.other_levels_blocks
     return (not state.blocks.entities and not state.entities.minecarts()
-            and not any(blocks.entities for blocks in state.other_levels_blocks.values()))
+            and not (others and any(blocks.entities for blocks in others.values())))
 
 
 def tick_block_entities(state) -> None:

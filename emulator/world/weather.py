@@ -61,24 +61,31 @@ class Weather:
         return self.random.randint(*bounds)
 
     def advance(self, cycle: bool) -> None:
-        self.advance_ticks(1, cycle)
+        if self._quiet > 0 and self._quiet_cycle == cycle:  # the common tick: straight to the count
+            self._count_quiet(1, cycle)
+        else:
+            self.advance_ticks(1, cycle)
 
     def advance_ticks(self, n: int, cycle: bool) -> None:
         while n > 0:
             if self._quiet <= 0 or self._quiet_cycle != cycle:
                 self._quiet, self._quiet_cycle = self._quiet_ticks(cycle), cycle
             quiet = min(n, self._quiet)
-            if quiet > 0:  # the common tick: whole numbers counted down, no float32 level moved
-                if cycle and self.clear_time > 0:
-                    self.clear_time -= quiet
-                elif cycle:
-                    self.rain_time -= quiet
-                    self.thunder_time -= quiet
-                self._quiet -= quiet
+            if quiet > 0:
+                self._count_quiet(quiet, cycle)
                 n -= quiet
             else:
                 self._step(cycle)
                 n -= 1
+
+    def _count_quiet(self, quiet: int, cycle: bool) -> None:
+        """``quiet`` quiet ticks (:meth:`_quiet_ticks`): whole numbers counted down, no float32 level moved."""
+        if cycle and self.clear_time > 0:
+            self.clear_time -= quiet
+        elif cycle:
+            self.rain_time -= quiet
+            self.thunder_time -= quiet
+        self._quiet -= quiet
 
     def _step(self, cycle: bool) -> None:
         if cycle:
