@@ -20,6 +20,7 @@ import argparse
 import json
 import os
 import platform
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -255,6 +256,7 @@ def tp_rows(quick: bool) -> list[Row]:
 
 # ------------------------------------------------------------------------------------ the pool pack
 BREAK_BEFORE = 2.9e6  # commands/s of the break when issue #13 was filed (21 % of its time in the VM)
+BREAK_SHARE_RUNS = 5  # breaks whose share of time in the VM is measured: one break's 20 ms moves with the machine
 
 
 class _VMTimer:
@@ -318,14 +320,14 @@ def pool_rows(quick: bool) -> list[Row]:
     result = play(emu, BREAK)
     host = _host_ops(emu) - host_before
     commands = sum(result.commands_per_tick)
-    ticking, inside = break_in_vm()
+    share = statistics.median(inside / ticking for ticking, inside in (break_in_vm() for _ in range(BREAK_SHARE_RUNS)))
     rows = [Row("pool break: ticks/s", f"{result.ticks / result.seconds:,.0f} ({result.ticks} ticks in "
                 f"{result.seconds:.2f} s)", "", value=result.ticks / result.seconds),
             Row("pool break: commands/s", _rate(commands / result.seconds), "", value=commands / result.seconds),
             _ratio_row(f"pool break: speed-up over the {BREAK_BEFORE / 1e6:.1f} M commands/s recorded when issue "
                        "#13 was filed", commands / result.seconds, BREAK_BEFORE, 5),
-            Row("pool break: share of its ticks' time inside the VM's loop", f"{inside / ticking * 100:.0f} %",
-                ">= 80 %", inside / ticking >= 0.8, inside / ticking),
+            Row(f"pool break: share of its ticks' time inside the VM's loop (median of {BREAK_SHARE_RUNS} breaks)",
+                f"{share * 100:.0f} %", ">= 80 %", share >= 0.8, share),
             Row("pool break: commands per tick, mean / max", f"{result.commands_mean:,.0f} / {result.commands_max:,}",
                 "max <= 5,000", result.commands_max <= bench_pool.BUDGET_MOVING, result.commands_max),
             Row("pool break: host ops", f"{host:,}", "0", host == 0, host)]
