@@ -17,6 +17,7 @@ made on first use; it is never a dependency of dpemu.
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import os
 import platform
@@ -569,6 +570,7 @@ def main() -> int:
     for name in args.only or SECTIONS:
         section = SECTIONS[name]
         print(f"measuring {name}...", file=sys.stderr, flush=True)
+        gc.collect()  # what the sections before left is garbage: not collected in this one's timings
         try:
             rows += section(args.quick)
         except Exception as error:  # one broken section still leaves the others' figures
