@@ -18,8 +18,9 @@ them. The format is misode/packtest's (README and PackTestFunction):
 - ``dummy <player> <action>``: simulated players (:mod:`emulator.testing.dummies` says what each
   action changes, and which actions fail the test as not modelled).
 
-Not modelled: test commands inside functions the test calls (only the test file's own lines are
-test commands) and chat receivers.
+``assert``, ``fail`` and ``succeed`` run by a function the test calls are PackTest's registered
+commands (:mod:`emulator.commands.packtest`; the packs load and run inside
+:func:`mcfunction_parser.dialect.packtest_commands`): they reach the test through its helper.
 """
 from emulator.testing.discovery import discover
 from emulator.testing.results import Summary, TestResult
