@@ -186,7 +186,9 @@ class Entity:
         # the transient attribute modifiers its equipment gives: {attribute: {id: (amount, operation)}}
         # (LivingEntity.collectEquipmentChanges; AttributeInstance.save leaves them out of the NBT)
         self.equipment_modifiers: dict | None = None
-        self.equipment_seen = None  # what its last equipment check saw (emulator.world.equipment)
+        # what its last equipment check saw (LivingEntity's lastHandItemStacks, lastArmorItemStacks:
+        # emulator.world.equipment)
+        self.equipment_seen = None
         self.born = 0  # the server tick it came into the world (EntityStore._add; tickCount counts from it)
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]

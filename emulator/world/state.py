@@ -518,7 +518,6 @@ class WorldState:
     # what the game keeps on its entities without saving it, held weakly (a removed entity drops out)
     open_menus: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (level, pos) (block_use)
     trading: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # merchant -> its trading player (mob_use)
-    # entity -> what its last tick saw of its equipment (LivingEntity's lastHandItemStacks, lastArmorItemStacks)
     hurt_timers: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> [invulnerableTime, lastHurt] (living)
     forced_chunks: dict = field(default_factory=dict)  # dimension -> the chunks (x, z) forceload marked
     cloud_victims: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # area effect cloud -> {entity: until}
