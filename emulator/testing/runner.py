@@ -374,19 +374,29 @@ class _World:
         diagnostics = self.shared + run.diagnostics
         errors = [d for d in diagnostics if d.severity == "error"]
         unmodelled = [d for d in diagnostics if d.unmodelled]
+        reason = None
         if result.status in (PASSED, FAILED) and unmodelled and not self.allow_unmodelled:
             # what the test saw may hang on the missing behaviour: neither a pass nor a failure
-            first = unmodelled[0]
-            where = f"{first.frames[-1].loc}: " if first.frames else ""
+            reason = unmodelled[0]
+            where = f"{reason.frames[-1].loc}: " if reason.frames else ""
             seen = f"the test {'passed' if result.status == PASSED else 'failed (' + result.message + ')'}"
-            result.status, result.message = INCONCLUSIVE, f"{where}{first.message}; {seen}"
-            result.line = first.frames[-1].loc.line if first.frames else result.line
+            result.status, result.message = INCONCLUSIVE, f"{where}{reason.message}; {seen}"
+            test_file = {shown_path(run.case.path), str(run.case.path)}
+            in_test = [f.loc.line for f in reason.frames if f.loc.path in test_file]  # the test's line running then
+            result.line = in_test[-1] if in_test else result.line
         elif result.status == PASSED and errors and self.strict:
             result.status, result.message = FAILED, f"{len(errors)} runtime error(s) during the test (--strict)"
-        # shown with the test: every diagnostic when it did not pass, the runtime errors when it did
+        # shown with the test: every diagnostic when it did not pass, the runtime errors when it did;
+        # the reason of an inconclusive one by its call stack alone (its message is the result's)
         shown = diagnostics if result.status != PASSED else errors
-        result.details = list(dict.fromkeys(d.format() for d in shown))
+        details = (d.format() if d.message != getattr(reason, "message", None) else _call_stack(d) for d in shown)
+        result.details = list(dict.fromkeys(text for text in details if text))
         return result
+
+
+def _call_stack(diagnostic) -> str:
+    """A diagnostic's call stack lines (``in FUNCTION at FILE:LINE:COL``), without its message."""
+    return "\n".join(diagnostic.format().splitlines()[1:]).strip("\n")
 
 
 def set_up_environment(emu: Emulator, packs, environment_id: str) -> environments.Activation:

@@ -43,6 +43,9 @@ def test_a_function_runs_packtests_commands_for_its_test(pack, backend):
     assert results["demo:succeeds"].status == "passed"  # GameTestHelper.succeed: the later line is not reached
     chat = results["demo:chat"]  # PackTest's own conditions are read as a test file's lines only
     assert chat.status == "inconclusive" and "assert chat" in chat.message
+    # the reason printed once (the message), its call stack under it; at the test's line running then
+    details = "\n".join(chat.details)
+    assert "not modelled" not in details and "in lib:each" in details and chat.line == 3
 
 
 def test_outside_a_test_server_they_are_unknown_commands(pack):
