@@ -194,6 +194,7 @@ class Compiler:
         ChainModifiers: a stage's error there fails only its context too)."""
         cmd_pc = self.emit(vm.OP_CMD, 0)
         stores = list(outer_stores)
+        barriers = []
         for i, st in enumerate(stages):
             last = final is None and i == len(stages) - 1
             forked = forked or isinstance(st, _FORKS)
@@ -253,6 +254,8 @@ class Compiler:
                 self.host(vm.OP_HOSTSTAGE, st, int(forked))  # resolves the store's target now, as the modifier does
                 stores.append(st)
             elif isinstance(st, IfFunction):  # the calls, then the rest of the chain as a new entry
+                if not returning and any(isinstance(before, _MULTIPLY) for before in stages[:i]):
+                    barriers.append(self.emit(vm.OP_STAGESDONE, 0, 1))  # every context before any call
                 self.if_function(st)
                 self.emit(vm.OP_CONT)
             else:  # a context modifier or a condition the VM does not evaluate
@@ -277,8 +280,8 @@ class Compiler:
             if isinstance(final, Return) and final.kind != "run":
                 self.emit(vm.OP_RETPEND)  # each context returned (or none did): now the function ends
         self.program.patch(cmd_pc, 1, end)
-        if collect_pc is not None:
-            self.program.patch(collect_pc, 1, end)
+        for pc in barriers + ([collect_pc] if collect_pc is not None else []):
+            self.program.patch(pc, 1, end)
 
     def stores(self, stores: list) -> None:
         """Apply the chain's stores to the result, in the order written (callbacks chain so)."""

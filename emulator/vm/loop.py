@@ -109,7 +109,9 @@ OP_HALT = 0  # [free] root finished: return ST_DONE
 OP_CMD = 1  # [check] a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself
 OP_ENDCMD = 2  # [free] alive = 1 (after a chain with conditions)
 OP_CONT = 3  # [check] a continuation entry (after `if function`): the entry check
-OP_STAGESDONE = 4  # [free] a: the chain's ENDCMD. After a fork, Python keeps this context for the final command
+OP_STAGESDONE = 4  # [free] a: the chain's ENDCMD, b: before an `if function`. After a fork, this context is kept until
+# every context has passed the stages before: for the final command, or for the `if function` (its calls run for each
+# context in turn, as ExecuteCommand.scheduleFunctionConditionsAndTest queues them)
 OP_SET = 5  # [entry] a: holders, b: objective, c: value
 OP_ADD = 6  # [entry] a holders, b o, c value
 OP_REMOVE = 7  # [entry] a holders, b o, c value
@@ -1630,6 +1632,9 @@ def run(address, machine_type):
                     ctx = coll[head, 1]
                     pc = coll[head, 2]
                     loop = LOOP_FINAL
+                    if code[pc - 1, 2]:  # kept before an `if function`: each later stage charges once, for the first
+                        same = head > 0 and coll[head - 1, 0] == depth and coll[head - 1, 2] == pc
+                        loop = LOOP_REENTERED if same else LOOP_FORKED
                     continue
                 while nc > 0 and coll[nc - 1, 0] >= depth:  # every context done: the command ends
                     nc -= 1

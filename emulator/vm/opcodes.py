@@ -62,8 +62,10 @@ _ROWS = [
     *_single("CMD", "p", CHECK, "a: abort pc. A chain's entry check; alive = 1, has = 0. Each stage op charges itself"),
     *_single("ENDCMD", "", FREE, "alive = 1 (after a chain with conditions)"),
     *_single("CONT", "", CHECK, "a continuation entry (after `if function`): the entry check"),
-    *_single("STAGESDONE", "p", FREE, "a: the chain's ENDCMD. After a fork, Python keeps this context for the final "
-                                      "command"),
+    *_single("STAGESDONE", "pb", FREE, "a: the chain's ENDCMD, b: before an `if function`. After a fork, this context "
+                                       "is kept until every context has passed the stages before: for the final "
+                                       "command, or for the `if function` (its calls run for each context in turn, "
+                                       "as ExecuteCommand.scheduleFunctionConditionsAndTest queues them)"),
     *_family("score", [
         ("SET", "hoi", ENTRY, "a: holders, b: objective, c: value"),
         ("ADD", "hoi", ENTRY, "a holders, b o, c value"),

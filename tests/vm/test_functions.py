@@ -170,3 +170,23 @@ def test_return_run_keeps_the_fork_of_its_chain(tmp_path, backend, prefix):
     emu.load(pack)
     emu.start()
     assert emu.runtime.call("t:main").result == 0
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+@pytest.mark.parametrize("stages, calls, runs", [
+    ("as @e if entity @e[tag=m,scores={o=..5}]", 2, 2),
+    ("as @e store result score @e[tag=m,scores={o=..5}] o", 2, 2),
+    ("as @e[tag=m] at @e[tag=m,scores={o=..5}]", 2, 2),
+    ("as @e[tag=m] if function t:mark as @e", 6, 4),  # two calls, then a call per context of the second `as`
+])
+def test_if_function_runs_after_every_context_passed_the_stages_before(tmp_path, backend, stages, calls, runs):
+    # ExecuteCommand.scheduleFunctionConditionsAndTest: the stages before `if function` are applied to
+    # every context first (BuildContexts), then the function is queued for each context in turn and
+    # the chain goes on with those that passed. t:mark sets every marker's score to 7, so a context
+    # whose stages were tested after an earlier context's call would fail them.
+    emu, _ = run_main(tmp_path, 'summon marker ~ ~ ~ {Tags:["m"]}\nsummon marker ~ ~ ~ {Tags:["m"]}\n'
+                                "scoreboard players set @e[tag=m,limit=1] o 0\n"
+                                f"execute {stages} if function t:mark run scoreboard players add #runs o 1",
+                      {"t:mark": "scoreboard players set @e[tag=m] o 7\nscoreboard players add #calls o 1\nreturn 1"},
+                      backend=backend)
+    assert (emu.score("#calls", "o"), emu.score("#runs", "o")) == (calls, runs)
