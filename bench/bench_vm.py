@@ -232,9 +232,9 @@ def loop_rate_in(tree: Path, iterations: int) -> float:
             seconds, commands = bench.timed_loop(bench.write_pack(Path(tmp) / "pack"), "numba", {iterations}, repeats=5)
         print(commands / seconds)
     """)
-    env = dict(os.environ, PYTHONPATH=str(tree))
+    env = dict(os.environ, PYTHONPATH=str(tree))  # run in the tree: `python -c` puts the working folder first
     return float(subprocess.run([sys.executable, "-c", script], check=True, capture_output=True, text=True,
-                                env=env).stdout)
+                                env=env, cwd=tree).stdout)
 
 
 def compare_with(baseline: Path, rounds: int, iterations: int) -> None:
