@@ -284,6 +284,13 @@ def _recall(r: Reader, read: dict, pos: int, key: str):
     return found
 
 
+def _may_end(subcommand: ast.Subcommand) -> bool:
+    """Whether the chain may end after ``subcommand``: a condition, except ``if|unless function``, whose
+    node only forks on (ExecuteCommand.addConditionals: no ``executes``; the command tree reports it
+    not executable)."""
+    return isinstance(subcommand, ast.Condition) and not isinstance(subcommand, ast.IfFunction)
+
+
 def execute(r: Reader, loc) -> ast.Command:
     subcommands = []
     text = r.text
@@ -302,7 +309,7 @@ def execute(r: Reader, loc) -> ast.Command:
             recalled = _recall(r, read, pos, key)
             if recalled is not None:
                 subcommands.append(recalled)
-                condition_last = isinstance(recalled, ast.Condition)
+                condition_last = _may_end(recalled)
                 continue
         warned = len(r.warnings)
         m = _FAST_SCORE_MATCHES.match(text, pos)
@@ -315,7 +322,7 @@ def execute(r: Reader, loc) -> ast.Command:
             if name == "run":
                 return ast.Execute.new(loc, tuple(subcommands), rest_command(r))
             subcommands.append(_SUBCOMMANDS[name](r, r.loc_at(pos + 1)))
-            condition_last = name in _CONDITION_SUBCOMMANDS
+            condition_last = name in _CONDITION_SUBCOMMANDS and _may_end(subcommands[-1])
             if r.pos == r.end and not condition_last:
                 r.fail(f"incomplete execute: expected another subcommand or 'run' after '{name}'")
         if (boundary is not None and pos + len(key) == r.pos and len(r.warnings) == warned

@@ -67,7 +67,7 @@ def test_literal_integers_out_of_range(tmp_path):
 def test_calls_to_missing_functions_and_tags(tmp_path):
     root = write(tmp_path / "p", {**LOAD, fn("load"): (
         "function a:nope\nschedule function a:gone 5t\nexecute if function a:missing run say x\n"
-        "function #a:no_tag\nexecute unless function #a:broken_tag\nfunction a:load\n"),
+        "function #a:no_tag\nexecute unless function #a:broken_tag run say x\nfunction a:load\n"),
         "data/a/tags/function/broken_tag.json": '{"values": ["a:absent"]}'})
     result = check_packs([root])
     linter = [(d.line, d.message) for d in result.of("error") if d.path.endswith("load.mcfunction")]

@@ -115,13 +115,22 @@ def test_nested_run_and_errors_inside_run():
     ("execute if dimension minecraft:overworld", (1, 19, 3)),
     ("execute if loaded ~ ~ ~", (1, 19, 3)),
     ("execute if biome ~ ~ ~ minecraft:plains", (1, 19, 2)),
-    ("execute if function a:b", (1, 20, 2)),
+    ("execute if function a:b run say x", (1, 20, 2)),
     ("execute if items entity @s weapon minecraft:stick", (1, 20, 4)),
 ])
 def test_version_gated_subcommands(text, version):
     d = parse_err(text, version)
     assert "requires Minecraft" in d.message
     parse_ok(text, (1, 21, 0))
+
+
+@pytest.mark.parametrize("text", ["execute if function a:b", "execute unless function #a:t",
+                                  "execute as @e if function a:b"])
+def test_if_function_cannot_end_the_chain(text):
+    # ExecuteCommand.addConditionals: `if|unless function <name>` only forks to `execute`, with no
+    # `executes` (the game's command tree: not executable), so the command is incomplete there
+    d = parse_err(text, (1, 21, 0))
+    assert "incomplete execute" in d.message and d.col == len(text) + 1
 
 
 def test_align_rejects_repeats():
