@@ -54,6 +54,22 @@ MACROS = {
     # literal 0 would make numba compile _select a second time, for Literal[int](0))
     "SELECT": "{0} = _select({1}, cints[ctx, CI_ENTITY], cfloats[ctx], cints[ctx, CI_DIM], sels, sfloats, tests, eints,\n"
               "            efloats, etags, eorder, values, present, alive_obj, erandom, selbuf, np.int64({2}))",
+    # _names_run from pc, and the registers it leaves: a condition's (ifrun) context lives, its command's
+    # abort target, no result; a command's result (has, ok, val) is its target's new value
+    # _names_run from pc; when it ran any, the registers it leaves, and on to the next instruction: a
+    # condition's (ifrun) context lives and sets its command's abort target, a command's result is its
+    # target's new value; the last run decides whether there is a result
+    "NAMES_RUN": "pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)\n"
+                 "if pc != ipc:\n"
+                 "    if last_condition >= 0:\n"
+                 "        alive = 1\n"
+                 "        abort = cflat[np.uint64(last_condition) * np.uint64(WIDTH) + np.uint64(5)]\n"
+                 "    if last_command >= 0:\n"
+                 "        at = np.uint64(last_command) * np.uint64(WIDTH)\n"
+                 "        ok = 1\n"
+                 "        val = np.int64(vflat[np.uint64(cflat[at + np.uint64(1)]) * ncols + np.uint64(cflat[at + np.uint64(2)])])\n"
+                 "    has = 1 if last_command > last_condition else 0\n"
+                 "    continue",
     # {0} = whether holder {1} is one `*` names (Scoreboard.getTrackedPlayers: a score, or kept)
     "TRACKED": "{0} = kept[{1}] != 0\nfor o_ in range(present.shape[1]):\n    {0} = {0} or present[{1}, o_] != 0",
     # the objective {0} cannot be written: read-only (ObjectiveArgument.getWritableObjective) or unknown

@@ -42,14 +42,13 @@ shared helpers in ``run`` take scalars or run straight-line code, while the sele
 at no cost to the writable case), and the dispatch chain (the template's ``case FAMILY:`` lines,
 one branch per family of the opcode table) tests the hottest opcodes first (operations,
 set/add/remove, a chain's CMD/IF*/ENDCMD, calls).
-A run of operations on names loops inside the operation branch, each reading the next instruction
-itself until one is something else (or the quota is spent): LLVM weighs a loop's blocks above the
-rest of ``run`` when it hands out registers, and fewer of the run's values are spilled to the stack
-(the scoreboard loop ran about 10 % faster, in-process ratio to the hand-written loop, CPU time).
-That loop serves runs without the overflow sanitizer (a sanitized run takes the general path, as
-for selectors), and the charge has no switch to turn the counters off: the scoreboard loop ran
-0.26x the hand-written one with both tests in it, 0.28-0.29x without them. Serving `scoreboard
-players set|add|remove` on names in it as well was slower (0.26-0.27x).
+A run of scoreboard commands on names (set/add/remove, operations, ``execute if|unless score ...
+matches ... run CMD``) runs in a function of its own, :func:`_names_run`, entered from those branches
+and leaving at the first instruction it does not run plainly (an error to report, ``@s``, a
+selector, the sanitizer, anything else): in ``run`` LLVM keeps the arrays' addresses on the stack
+and reloads them for every command, in the small function they stay in registers. The VM ran the
+scoreboard loop 7 % faster than with a loop of operations inside their branch (bench_vm.py
+--baseline), and 8 % slower again when the function also resolved ``@s``.
 The hot paths index with unsigned integers where the index cannot be negative (the instruction's
 row in the flat code ``cflat``, the holders and objectives of the scoreboard commands' one-holder
 paths, the counters): numba
@@ -1142,6 +1141,82 @@ def _machine_at(typingctx, address, machine_type):
 
 
 @njit(cache=True, error_model="numpy")
+def _names_run(address, machine_type, pc, quota, forklimit):
+    """Runs the scoreboard commands on names from ``pc`` on while each is plain: ``scoreboard
+    players set|add|remove`` and ``operation`` on a known writable target and a known source, no
+    division by zero; ``execute if|unless score H O matches ... run CMD`` on a known objective. Each
+    is charged and counted as ``run`` does. Returns (the pc of the first one not run, which ``run``
+    runs with every check; the quota left; the pc of the last set/add/remove/operation run and of
+    the last condition run, -1 for none: ``run`` derives its registers from them, see NAMES_RUN).
+    A function of its own, not a branch of ``run``: in the big loop LLVM keeps the arrays'
+    addresses on the stack and reloads them for every command."""
+    m = _machine_at(address, machine_type)
+    cflat = _flat(m.code)
+    vflat = _flat(m.values)
+    pflat = _flat(m.present)
+    counts = m.counts
+    writable = m.writable
+    alive_obj = m.alive_obj
+    ncols = np.uint64(m.values.shape[1])
+    last_command = -1
+    last_condition = -1
+    while quota > 0:
+        row = np.uint64(pc) * np.uint64(WIDTH)
+        op = cflat[row]
+        h = cflat[row + np.uint64(1)]
+        o = cflat[row + np.uint64(2)]
+        if h < 0:  # @s, or the holders a selector found: run's (resolving @s here made the loop 8 % slower)
+            break
+        i = np.uint64(h) * ncols + np.uint64(o)
+        if FIRST_OPERATION <= op <= LAST_OPERATION:
+            h2 = cflat[row + np.uint64(3)]
+            o2 = cflat[row + np.uint64(4)]
+            if h2 < 0 or writable[np.uint64(o)] == 0 or alive_obj[np.uint64(o2)] == 0:
+                break
+            i2 = np.uint64(h2) * ncols + np.uint64(o2)
+            if pflat[i] == 0:  # get-or-create, the target first (again when run stops here: the same)
+                vflat[i] = 0
+                pflat[i] = 1
+            if pflat[i2] == 0:
+                vflat[i2] = 0
+                pflat[i2] = 1
+            k = op - FIRST_OPERATION
+            a = np.int64(vflat[i])
+            b = np.int64(vflat[i2])
+            if b == 0 and (k == OPK_DIV or k == OPK_MOD):
+                break
+            if k == OPK_SWAP:
+                vflat[i2] = a
+            vflat[i] = _wrap(_operate(k, a, b))
+        elif FIRST_SCORE <= op <= LAST_SCORE:
+            if writable[np.uint64(o)] == 0:
+                break
+            d = np.int64(cflat[row + np.uint64(3)])
+            if op == OP_SET:
+                vflat[i] = _wrap(d)
+            else:
+                old = np.int64(vflat[i]) if pflat[i] else np.int64(0)
+                vflat[i] = _wrap(old + d if op == OP_ADD else old - d)
+            pflat[i] = 1
+        elif op == OP_IFRUN:
+            if alive_obj[np.uint64(o)] == 0 or forklimit <= 1:
+                break
+            counts[np.uint64(pc)] += 1
+            quota -= 1
+            last_condition = pc
+            passed = pflat[i] != 0 and cflat[row + np.uint64(3)] <= vflat[i] <= cflat[row + np.uint64(4)]
+            pc = cflat[row + np.uint64(5)] if passed == (cflat[row + np.uint64(6)] != 0) else pc + 1
+            continue
+        else:
+            break
+        counts[np.uint64(pc)] += 1
+        quota -= 1
+        last_command = pc
+        pc += 1
+    return pc, quota, last_command, last_condition
+
+
+@njit(cache=True, error_model="numpy")
 def run(address, machine_type):
     """Run the machine whose descriptor is at ``address`` (:func:`machine`; ``machine_type``: its
     type, known when ``run`` is compiled) from ``regs[R_PC]`` until
@@ -1235,66 +1310,18 @@ def run(address, machine_type):
             o2 = cflat[row + np.uint64(4)]
             h = cflat[row + np.uint64(1)]
             h2 = cflat[row + np.uint64(3)]
-            if h >= 0 and h2 >= 0 and not sanitize:  # one target, one source, both names: the common case, kept lean
-                while True:  # and the operations on names after it, in a loop of their own: LLVM gives its values the registers
-                    uh, uo, uh2, uo2 = np.uint64(h), np.uint64(o), np.uint64(h2), np.uint64(o2)
-                    quota -= 1
-                    counts[np.uint64(pc)] += 1
-                    pc += 1
-                    if writable[uo] == 0 or alive_obj[uo2] == 0:  # o unknown or read-only, or o2 unknown
-                        has = 1
-                        ok = 0
-                        val = 0
-                        if alive_obj[o] and writable[uo] == 0:  # ObjectiveArgument.getWritableObjective: read-only
-                            err = ERR_READ_ONLY
-                            errarg = o
-                            status = ST_ERROR
-                            break
-                        err = ERR_UNKNOWN_OBJECTIVE
-                        errarg = o if alive_obj[o] == 0 else o2
-                        status = ST_ERROR
-                        break
-                    i = uh * ncols + uo
-                    i2 = uh2 * ncols + uo2
-                    if pflat[i] == 0:  # get-or-create: the target first, then the source
-                        vflat[i] = 0
-                        pflat[i] = 1
-                    if pflat[i2] == 0:
-                        vflat[i2] = 0
-                        pflat[i2] = 1
-                    a = np.int64(vflat[i])
-                    b = np.int64(vflat[i2])
-                    k = op - FIRST_OPERATION
-                    if b == 0 and (k == OPK_DIV or k == OPK_MOD):
-                        has = 1
-                        ok = 0
-                        val = 0
-                        err = ERR_DIV_ZERO
-                        errarg = 0
-                        status = ST_ERROR
-                        break
-                    r = _operate(k, a, b)
-                    if k == OPK_SWAP:
-                        vflat[i2] = a
-                    nv = _wrap(r)
-                    vflat[i] = nv
-                    has = 1
-                    ok = 1
-                    val = nv
-                    ipc = pc  # the next instruction: run here while it is an operation on names
-                    row = np.uint64(pc) * np.uint64(WIDTH)
-                    op = cflat[row]
-                    if op < FIRST_OPERATION or op > LAST_OPERATION or quota <= 0:
-                        break
-                    o = cflat[row + np.uint64(2)]
-                    o2 = cflat[row + np.uint64(4)]
-                    h = cflat[row + np.uint64(1)]
-                    h2 = cflat[row + np.uint64(3)]
-                    if h < 0 or h2 < 0:
-                        break
-                if status != ST_DONE:  # an error or a full buffer
-                    break
-                continue
+            if h >= 0 and h2 >= 0 and not sanitize:  # names: the common case
+                pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)
+                if pc != ipc:
+                    if last_condition >= 0:
+                        alive = 1
+                        abort = cflat[np.uint64(last_condition) * np.uint64(WIDTH) + np.uint64(5)]
+                    if last_command >= 0:
+                        at = np.uint64(last_command) * np.uint64(WIDTH)
+                        ok = 1
+                        val = np.int64(vflat[np.uint64(cflat[at + np.uint64(1)]) * ncols + np.uint64(cflat[at + np.uint64(2)])])
+                    has = 1 if last_command > last_condition else 0
+                    continue
             if h == HOLDER_SELF:  # @s: through the selector path, as one holder
                 h = cints[ctx, CI_HOLDER]
             if h2 == HOLDER_SELF:
@@ -1385,10 +1412,22 @@ def run(address, machine_type):
                 break
             h = cflat[row + np.uint64(1)]
             o = cflat[row + np.uint64(2)]
+            if h >= 0 and not sanitize:  # a name: the common case
+                pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)
+                if pc != ipc:
+                    if last_condition >= 0:
+                        alive = 1
+                        abort = cflat[np.uint64(last_condition) * np.uint64(WIDTH) + np.uint64(5)]
+                    if last_command >= 0:
+                        at = np.uint64(last_command) * np.uint64(WIDTH)
+                        ok = 1
+                        val = np.int64(vflat[np.uint64(cflat[at + np.uint64(1)]) * ncols + np.uint64(cflat[at + np.uint64(2)])])
+                    has = 1 if last_command > last_condition else 0
+                    continue
             if h == HOLDER_SELF:
                 h = cints[ctx, CI_HOLDER]
             d = np.int64(cflat[row + np.uint64(3)])
-            if h >= 0:  # one holder (a name, or @s run by an entity): the common case, kept lean
+            if h >= 0:  # one holder (a name, or @s run by an entity)
                 uo = np.uint64(o)
                 if sanitize and novf >= ovf.shape[0]:
                     status = ST_FLUSH
@@ -1467,6 +1506,18 @@ def run(address, machine_type):
             if quota <= 0:
                 status = ST_CUT
                 break
+            if cflat[row + np.uint64(1)] >= 0 and not sanitize:  # a name: the common case
+                pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)
+                if pc != ipc:
+                    if last_condition >= 0:
+                        alive = 1
+                        abort = cflat[np.uint64(last_condition) * np.uint64(WIDTH) + np.uint64(5)]
+                    if last_command >= 0:
+                        at = np.uint64(last_command) * np.uint64(WIDTH)
+                        ok = 1
+                        val = np.int64(vflat[np.uint64(cflat[at + np.uint64(1)]) * ncols + np.uint64(cflat[at + np.uint64(2)])])
+                    has = 1 if last_command > last_condition else 0
+                    continue
             quota -= 1  # the condition stage's
             counts[np.uint64(pc)] += 1
             alive = 1
