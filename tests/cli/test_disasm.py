@@ -33,7 +33,7 @@ def test_disasm_host_ops(tmp_path):
     # after a stage that can fork, STAGESDONE collects each context before any runs the command;
     # HOSTGUARD's selector (@e: the arguments before nbt) skips the host's `as` when it finds nobody
     assert ops == [["CMD", "->11"], ["HOSTGUARD", "sel#0 0"], ["HOSTSTAGE", "[ExAs] 1"], ["HOSTSTAGE", "[StoreData] 1"],
-                   ["STAGESDONE", "->11"], ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
+                   ["STAGESDONE", "->11 0"], ["HOST", "[Say]"], ["HOSTSTORE", "[StoreData]"], ["ENDCMD"], ["FEND"]]
 
 
 def test_disasm_names_the_wildcard(tmp_path):
