@@ -17,7 +17,8 @@ The template is the module's source with four additions:
   docs);
 - ``# @needs FAMILY`` lines: the rest of the enclosing block (the lines after it indented at least as
   much) is code only a program using ``FAMILY`` reaches; a loop rendered for families without it
-  leaves that code out (:mod:`emulator.vm.variants`: less to compile).
+  leaves that code out (:mod:`emulator.vm.variants`: less to compile). At the end of a statement,
+  ``# @needs FAMILY`` leaves out that statement and its block.
 """
 from __future__ import annotations
 
@@ -80,6 +81,7 @@ MACROS = {
 _MACRO = re.compile(r"^(\s*)([A-Z_]+)\((.*)\)$")
 _CASE = re.compile(r"^(\s*)case (\w+):(\s*#.*)?$")
 _NEEDS = re.compile(r"^(\s*)# @needs (\w+)$")
+_NEEDS_AFTER = re.compile(r"^(\s*)\S.*  # @needs (\w+)$")
 
 
 def render(families: frozenset[str] | None = None) -> str:
@@ -136,7 +138,13 @@ def _unneeded_dropped(lines: list[str], families: frozenset[str] | None) -> list
             continue
         depth = None
         needs = _NEEDS.match(line)
-        if needs is None:
+        after = _NEEDS_AFTER.match(line)
+        if after is not None:
+            if families is not None and after.group(2) not in families:
+                depth = len(after.group(1)) + 1  # the statement's block
+            else:
+                out.append(line[:line.rindex("  # @needs")])
+        elif needs is None:
             out.append(line)
         elif families is not None and needs.group(2) not in families:
             depth = len(needs.group(1))

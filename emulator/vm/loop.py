@@ -1412,8 +1412,8 @@ def run(address, machine_type):
                 break
             h = cflat[row + np.uint64(1)]
             o = cflat[row + np.uint64(2)]
-            if h >= 0 and not sanitize:  # a name: the common case
-                pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)
+            if h >= 0 and not sanitize:
+                pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)  # a name: the common case (a loop without operations compiles no _names_run)
                 if pc != ipc:
                     if last_condition >= 0:
                         alive = 1
