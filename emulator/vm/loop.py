@@ -1413,7 +1413,7 @@ def run(address, machine_type):
             h = cflat[row + np.uint64(1)]
             o = cflat[row + np.uint64(2)]
             if h >= 0 and not sanitize:
-                pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)  # a name: the common case (a loop without operations compiles no _names_run)
+                pc, quota, last_command, last_condition = _names_run(address, machine_type, pc, quota, forklimit)  # a name, as usual (a loop without operations compiles no _names_run)
                 if pc != ipc:
                     if last_condition >= 0:
                         alive = 1
