@@ -32,7 +32,7 @@ message the command sent its source, after ``[HH:mm:ss] `` from the wall clock (
 from ``tellraw``, ``say`` and ``return N``); another command's message is
 not produced (the time alone, and a warning: the test is inconclusive). ``SuccessCount`` counts a
 success per context the command ran in, as the game's result callback (an ``execute`` whose stages
-change the world, ``store`` or ``summon``, or that ends in ``if function``, counts one). A command block in another level runs there (the
+change the world, ``store`` or ``summon``, or with an ``if function`` stage, counts one). A command block in another level runs there (the
 level's blocks, block ticks and the command's dimension). ``CustomName`` naming the source (``@`` by default) is not modelled.
 
 Sources (decompiled 1.21.x and 26.1): world/level/block/CommandBlock.java (neighborChanged, tick,
