@@ -73,7 +73,7 @@ def _living_step(state) -> None:
     (:func:`emulator.world.living.tick_living`, an instant effect's damage as combat's magic: it can
     kill; a player that lost one fires ``effects_changed``: ServerPlayer.onEffectsRemoved), then
     their combat trackers' recheck (LivingEntity.tick, every 20 ticks)."""
-    for entity in living.tick_living(state, combat.magic_harm):
+    for entity in living.tick_living(state, combat.effect_harm):
         advancements.effects_changed(state, entity, None)
     if state.combat_trackers:
         combat.tick_trackers(state)

@@ -216,9 +216,10 @@ def _enchantments(stack, version) -> list[str]:
     return [e if ":" in e else "minecraft:" + e for e in found]
 
 
-def magic_harm(state, entity, amount: float) -> bool:
-    """An instant damage effect's hurt: magic, with its death and triggers (HealOrHarmMobEffect)."""
-    return hurt(state, entity, amount, DamageSource("minecraft:magic"))
+def effect_harm(state, entity, amount: float, damage_type: str = "minecraft:magic") -> bool:
+    """An effect's or hunger's hurt, with its death and triggers (HealOrHarmMobEffect: magic;
+    PoisonMobEffect: magic; WitherMobEffect: wither; FoodData.tick: starve)."""
+    return hurt(state, entity, amount, DamageSource(damage_type))
 
 
 def attack(state, player, target) -> bool:
@@ -587,10 +588,6 @@ class CombatTracker:
     taking_damage: bool = False
 
 
-def _tick_count(state, entity) -> int:
-    return state.tick - entity.born
-
-
 def record_damage(state, entity, source: DamageSource, damage: float) -> None:
     """CombatTracker.recordDamage (LivingEntity.actuallyHurt, when health is lost): the entry keeps
     where the entity is (FallLocation.getCurrentFallLocation: water here; climbing is not modelled,
@@ -607,7 +604,7 @@ def record_damage(state, entity, source: DamageSource, damage: float) -> None:
         location = "water" if fluids.in_water(blocks, entity.bounding_box) else None
     fall = entity.data.get("FallDistance")
     tracker.entries.append(CombatEntry(source, damage, location, float(fall) if is_numeric(fall) else 0.0))
-    tracker.last_damage, tracker.taking_damage = _tick_count(state, entity), True
+    tracker.last_damage, tracker.taking_damage = entity.tick_count(state.tick), True
     if not tracker.in_combat and entity.alive and source.attacker is not None and living.is_living(source.attacker.type):
         tracker.in_combat = True  # shouldEnterCombat: the source's entity is living
 
@@ -617,7 +614,7 @@ def recheck(state, entity, tracker: CombatTracker) -> None:
     its last hurt (300 in combat)."""
     limit = RESET_COMBAT_STATUS_TIME if tracker.in_combat else RESET_DAMAGE_STATUS_TIME
     if tracker.taking_damage and (not entity.alive or living.health(entity) <= 0
-                                  or _tick_count(state, entity) - tracker.last_damage > limit):
+                                  or entity.tick_count(state.tick) - tracker.last_damage > limit):
         tracker.taking_damage = tracker.in_combat = False
         tracker.entries.clear()
 
@@ -625,7 +622,7 @@ def recheck(state, entity, tracker: CombatTracker) -> None:
 def tick_trackers(state) -> None:
     """LivingEntity.tick: each living entity rechecks its tracker when its tickCount is a multiple of 20."""
     for entity, tracker in list(state.combat_trackers.items()):
-        if tracker.taking_damage and _tick_count(state, entity) % 20 == 0:
+        if tracker.taking_damage and entity.tick_count(state.tick) % 20 == 0:
             recheck(state, entity, tracker)
 
 

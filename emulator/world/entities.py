@@ -193,6 +193,11 @@ class Entity:
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]
 
+    def tick_count(self, now: int) -> int:
+        """Entity.tickCount at server tick ``now``: the ticks finished since it came into the world
+        (every entity ticks every tick here, as where a player is near)."""
+        return now - self.born
+
     def attach(self, table: EntityTable) -> None:
         """Move the entity's fields into a new row of ``table`` (its slot becomes ``order``)."""
         pos, yaw, pitch, motion, tags, alive, dimension = self._own

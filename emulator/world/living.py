@@ -487,6 +487,76 @@ def exhaust(player, amount) -> None:
     player.data["foodExhaustionLevel"] = Float(float(min(current + amount, F32(40.0))))
 
 
+def cause_exhaustion(player, amount) -> None:
+    """Player.causeFoodExhaustion: none while the player's abilities make it invulnerable
+    (creative, spectator)."""
+    if player.gamemode not in ("creative", "spectator"):
+        exhaust(player, amount)
+
+
+def eat(player, nutrition: int, saturation) -> None:
+    """FoodData.add(nutrition, saturation): the food level clamped to 0..20, the saturation to 0..the
+    food level."""
+    level = min(max(nutrition + int(_number(player.data.get("foodLevel"), 20)), 0), 20)
+    current = F32(_number(player.data.get("foodSaturationLevel"), 5.0))
+    player.data["foodLevel"] = Int(level)
+    player.data["foodSaturationLevel"] = Float(float(min(max(F32(saturation) + current, F32(0.0)), F32(level))))
+
+
+def _food_busy(player) -> bool:
+    """Whether :func:`tick_food` would change something now."""
+    data = player.data
+    food = int(_number(data.get("foodLevel"), 20))
+    return (F32(_number(data.get("foodExhaustionLevel"))) > F32(4.0) or int(_number(data.get("foodTickTimer"))) != 0
+            or food <= 0 or (food >= 18 and 0.0 < health(player) < attribute_value(player, "max_health")))
+
+
+def tick_food(state, player, harm) -> None:
+    """FoodData.tick: exhaustion over 4 takes a point of saturation, else (not on peaceful) of food;
+    with the naturalRegeneration rule a hurt player heals from a full food bar with saturation
+    (every 10 ticks, min(saturation, 6) / 6, costing that much exhaustion) or from 18 food points
+    (every 80 ticks, 1, costing 6); with no food it starves every 80 ticks (magic-free ``starve``
+    damage, down to 10 health on easy and 1 on normal). ``harm(state, player, amount, type)``."""
+    data, peaceful = player.data, state.level_settings.difficulty == "peaceful"
+    exhaustion = F32(_number(data.get("foodExhaustionLevel")))
+    saturation = F32(_number(data.get("foodSaturationLevel"), 5.0))
+    food = int(_number(data.get("foodLevel"), 20))
+    if exhaustion > F32(4.0):
+        data["foodExhaustionLevel"] = Float(float(exhaustion - F32(4.0)))
+        if saturation > F32(0.0):
+            saturation = max(saturation - F32(1.0), F32(0.0))
+            data["foodSaturationLevel"] = Float(float(saturation))
+        elif not peaceful:
+            food = max(food - 1, 0)
+            data["foodLevel"] = Int(food)
+    regenerates = state.gamerules.get("naturalRegeneration") != "false"
+    hurt_now = 0.0 < health(player) < attribute_value(player, "max_health")  # Player.isHurt
+    timer = int(_number(data.get("foodTickTimer")))
+    if regenerates and saturation > F32(0.0) and hurt_now and food >= 20:
+        timer += 1
+        if timer >= 10:
+            amount = min(saturation, F32(6.0))
+            heal(player, float(amount / F32(6.0)))
+            exhaust(player, amount)
+            timer = 0
+    elif regenerates and food >= 18 and hurt_now:
+        timer += 1
+        if timer >= 80:
+            heal(player, 1.0)
+            exhaust(player, F32(6.0))
+            timer = 0
+    elif food <= 0:
+        timer += 1
+        if timer >= 80:
+            difficulty, now = state.level_settings.difficulty, health(player)
+            if now > 10.0 or difficulty == "hard" or (now > 1.0 and difficulty == "normal"):
+                harm(state, player, 1.0, "minecraft:starve")
+            timer = 0
+    else:
+        timer = 0
+    data["foodTickTimer"] = Int(timer)
+
+
 def _after_armour(entity, amount: float, bypass: bool) -> float:
     """CombatRules.getDamageAfterAbsorb (float math) with the entity's armour attributes, unless the
     damage type is in #bypasses_armor."""
@@ -561,8 +631,8 @@ UNDEAD = frozenset(f"minecraft:{n}" for n in (
     "stray", "wither_skeleton", "bogged", "skeleton_horse", "phantom", "wither"))
 
 
-def _magic(state, entity, amount: float) -> bool:
-    return hurt(state, entity, amount, damage_type="minecraft:magic")
+def _harm(state, entity, amount: float, damage_type: str = "minecraft:magic") -> bool:
+    return hurt(state, entity, amount, damage_type=damage_type)
 
 
 def apply_instant(state, entity, effect_id: str, amplifier: int, harm) -> None:
@@ -570,8 +640,11 @@ def apply_instant(state, entity, effect_id: str, amplifier: int, harm) -> None:
     ``6 << amplifier`` (Java int shifts: the distance is taken mod 32 and the result wraps, so
     amplifier 255 heals nothing); the undead take them the other way round."""
     heals = (effect_id == "minecraft:instant_health") != (entity.type in UNDEAD)
-    if effect_id == "minecraft:saturation":
-        return  # food only (players' hunger is not modelled)
+    if effect_id == "minecraft:saturation":  # SaturationMobEffect: FoodData.eat(amplifier + 1, 1.0F)
+        if entity.is_player:
+            nutrition = amplifier + 1
+            eat(entity, nutrition, F32(nutrition) * F32(1.0) * F32(2.0))  # FoodConstants.saturationByModifier
+        return
     if heals:
         heal(entity, float(max(wrap32(4 << (amplifier & 31)), 0)))
     elif wrap32(6 << (amplifier & 31)) > 0:
@@ -604,9 +677,12 @@ def tick_is_idle(state) -> bool:
     hurting = bool(state.hurt_timers)
     for entity in state.entities.living_mobs():
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
-        if found is None and not hurting and _not_hurt(hurt_time):
+        if found is None and not hurting and _not_hurt(hurt_time) and not entity.is_player:
             continue  # the common case, every tick: no effect, no hurt time, no hurt timer anywhere
-        if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE for e in found):
+        if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE or str(e.get("id", "")) in TICKING
+                                           for e in found):
+            return False
+        if entity.is_player and _food_busy(entity):
             return False
         if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or (hurting and entity in state.hurt_timers):
             return False
@@ -614,23 +690,27 @@ def tick_is_idle(state) -> bool:
 
 
 def tick_living(state, harm=None) -> list:
-    """Each living entity's tick, as far as a pack can see it (LivingEntity.tickEffects): every
-    effect ticks (MobEffectInstance.tickServer: an instant effect acts each tick it has left,
-    InstantenousMobEffect.shouldApplyEffectTickThisTick; then the duration counts down) and an
-    expired one is removed; hurt timers run out. ``harm(state, entity, amount)`` deals an instant
-    effect's damage (default: :func:`hurt` as magic, no death). Returns the entities that lost an
+    """Each living entity's tick, as far as a pack can see it: a player's food (:func:`tick_food`),
+    then every effect ticks (LivingEntity.tickEffects, MobEffectInstance.tickServer: an instant
+    effect acts each tick it has left, regeneration, poison, wither and hunger when due, see
+    TICKING; then the duration counts down) and an expired one is removed; hurt timers run out.
+    ``harm(state, entity, amount, damage_type)`` deals an effect's damage (default: :func:`hurt`,
+    no death). Returns the entities that lost an
     effect (the game tells their players' ``effects_changed`` trigger, ServerPlayer.onEffectsRemoved)."""
     mobs = state.entities.living_mobs()  # a display or a marker reads no active_effects (Entity.load)
     if not mobs:  # a pack of markers and displays: every tick
         return mobs
     lost = []
     hurting = bool(state.hurt_timers)  # only the entity ticking adds itself (an instant effect's harm)
+    harm = harm or _harm
     for entity in mobs:
+        if entity.is_player and entity.alive:
+            tick_food(state, entity, harm)
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
         if found is None and not hurting and _not_hurt(hurt_time):
             continue  # the common case, every tick: nothing to count down
         if isinstance(found, List) and found:
-            if _tick_effects(state, entity, found, harm or _magic):
+            if _tick_effects(state, entity, found, harm):
                 lost.append(entity)
             _drop_if_empty(entity)
             hurt_time = entity.data.get("HurtTime")  # an instant effect's harm may have set it
@@ -644,13 +724,48 @@ def tick_living(state, harm=None) -> list:
     return lost
 
 
+# the effects whose tick a pack can see besides the instant ones, and how often it comes: every
+# ``interval >> amplifier`` ticks of the count (MobEffect.shouldApplyEffectTickThisTick), 1 = every tick
+TICKING = {"minecraft:regeneration": 50, "minecraft:poison": 25, "minecraft:wither": 40, "minecraft:hunger": 1}
+
+
+def _due(effect_id: str, count: int, amplifier: int) -> bool:
+    """Whether the effect acts at this count (its duration, or the entity's age when infinite)."""
+    if effect_id in INSTANT:
+        return count >= 1  # InstantenousMobEffect
+    interval = TICKING.get(effect_id, 0) >> (amplifier & 31)  # a Java int shift
+    return interval <= 0 or count % interval == 0
+
+
+def _apply_tick(state, entity, effect_id: str, amplifier: int, harm) -> None:
+    """MobEffect.applyEffectTick of the effects in TICKING (Regeneration-, Poison-, Wither- and
+    HungerMobEffect)."""
+    if effect_id == "minecraft:regeneration":
+        if health(entity) < attribute_value(entity, "max_health"):
+            heal(entity, 1.0)
+    elif effect_id == "minecraft:poison":
+        if health(entity) > 1.0:
+            harm(state, entity, 1.0, "minecraft:magic")
+    elif effect_id == "minecraft:wither":
+        harm(state, entity, 1.0, "minecraft:wither")
+    elif entity.is_player:  # hunger
+        cause_exhaustion(entity, F32(0.005) * F32(amplifier + 1))
+
+
 def _tick_effects(state, entity, found: List, harm) -> bool:
-    """One tick of each effect; True when one expired."""
+    """One tick of each effect (MobEffectInstance.tickServer: it acts when due, then counts down);
+    True when one expired."""
     expired = False
     for effect in list(found):
         duration = int(_number(effect.get("duration")))
-        if str(effect.get("id", "")) in INSTANT and duration >= 1:
-            apply_instant(state, entity, str(effect.get("id")), _amplifier(effect), harm)
+        effect_id = str(effect.get("id", ""))
+        if effect_id in INSTANT or effect_id in TICKING:
+            count = entity.tick_count(state.tick) if duration == INFINITE else duration
+            if duration != 0 and _due(effect_id, count, _amplifier(effect)):
+                if effect_id in INSTANT:
+                    apply_instant(state, entity, effect_id, _amplifier(effect), harm)
+                else:
+                    _apply_tick(state, entity, effect_id, _amplifier(effect), harm)
         if duration == INFINITE:
             continue
         if duration <= 1:

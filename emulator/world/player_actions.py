@@ -35,7 +35,7 @@ from emulator.world import (advancements, combat, consumables, inventories, item
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack, enchantment_level
 from emulator.world.nbt_ops import is_numeric, numeric_value
-from mcfunction_parser.nbt import Compound, Float, Int, IntArray, String
+from mcfunction_parser.nbt import Compound, Int, IntArray, String
 
 F32 = np.float32
 MAIN, OFF = "main_hand", "off_hand"
@@ -268,7 +268,7 @@ def _finish(state, player, hand: str, consumable: consumables.Consumable) -> Non
     statistics.award(state, player, statistics.stat_name("used", stack.id))
     advancements.trigger(state, player, "consume_item", _item_test(state, stack))
     if consumable.food is not None:
-        _eat(player, consumable.food)
+        living.eat(player, consumable.food.nutrition, consumable.food.saturation)
     _give_effects(state, player, consumable.gives)
     _give_effects(state, player, consumable.effects_to_apply(state.resources.random))
     for effect in consumable.effects:
@@ -336,14 +336,6 @@ def _give_remainder(state, player, access, remainder: ItemStack) -> None:
         return
     if not inventories.player_inventory(player, state.version).add(remainder) or not remainder.is_empty:
         drop_from(state, player, remainder)
-
-
-def _eat(player, food: consumables.Food) -> None:
-    """FoodData.eat(nutrition, saturation): food level clamped to 0..20, saturation to 0..food level."""
-    level = min(max(food.nutrition + int(numeric_value(player.data.get("foodLevel", Int(20)))), 0), 20)
-    current = F32(numeric_value(player.data.get("foodSaturationLevel", Float(5.0))))
-    player.data["foodLevel"] = Int(level)
-    player.data["foodSaturationLevel"] = Float(float(min(max(food.saturation + current, F32(0.0)), F32(level))))
 
 
 def _consume_one(state, player, hand: str) -> None:

@@ -525,7 +525,7 @@ def _periodic_tick(value, ctx: LootContext, entity: Entity) -> bool:
     functions: here every entity ticks every tick, as where a player is near, so an entity's count
     is the ticks the server finished since it came into the world (a new entity, or a player that
     joined, starts at 0)."""
-    return (ctx.state.tick - entity.born) % int(value) == 0
+    return entity.tick_count(ctx.state.tick) % int(value) == 0
 
 
 def _team(value, ctx: LootContext, entity: Entity) -> bool:

@@ -91,6 +91,7 @@ def test_a_healing_potion_heals_at_once_and_milk_clears_effects(tmp_path):
     """PotionContents.applyToLivingEntity: instantaneous effects act at once (HealOrHarmMobEffect:
     4 << amplifier); Consumables.MILK_BUCKET: clear_all_effects, the bucket returned."""
     result = run(tmp_path, "# @dummy\n" + (
+        "gamerule naturalRegeneration false\n"  # FoodData.tick would heal the hurt dummy as well
         "damage @s 6\n"
         "give @s potion[potion_contents=\"minecraft:healing\"]\n"
         "dummy @s use item\n"

@@ -1,0 +1,117 @@
+"""What the ticking effects and a player's food do each tick, on both backends: regeneration,
+poison and wither act every ``interval >> amplifier`` ticks of their duration (RegenerationMobEffect
+50, PoisonMobEffect 25, WitherMobEffect 40: shouldApplyEffectTickThisTick, applyEffectTick; each
+tick MobEffectInstance.tickServer applies a due effect before counting it down), hunger adds
+0.005 x (amplifier + 1) exhaustion a tick (HungerMobEffect; Player.causeFoodExhaustion: none in
+creative), saturation feeds (SaturationMobEffect: FoodData.eat(amplifier + 1, 1.0F)), and
+FoodData.tick spends exhaustion, regenerates a hurt player and starves a hungry one."""
+from __future__ import annotations
+
+import pytest
+
+from tests.world.world_emulator import emulator
+
+BACKENDS = ["numba", "python"]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("effect, amplifier, seconds, health", [
+    ("poison", 1, 3, 5.0),  # every 12 ticks of 60: at 60, 48, 36, 24, 12 (a full hurt each: over 10 ticks apart)
+    ("wither", 0, 4, 8.0),  # every 40 ticks of 80: at 80 and 40
+    ("poison", 0, 30, 1.0),  # poison stops at 1 health
+])
+def test_damaging_effects_hurt_when_due(tmp_path, backend, effect, amplifier, seconds, health):
+    emu = emulator(tmp_path, backend, {"t:go": f"summon pig 0 0 0 {{Tags:[p],NoAI:1b}}\n"
+                                               f"effect give @e[tag=p] {effect} {seconds} {amplifier}"})
+    emu.call("t:go")
+    emu.tick(seconds * 20 + 5)
+    assert _pig_health(emu) == health
+
+
+def _pig_health(emu) -> float:
+    return float(next(e for e in emu.state.entities.entities if "p" in e.tags).data["Health"])
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_regeneration_heals_when_due(tmp_path, backend):
+    # every 25 ticks at amplifier 1: durations 100, 75, 50, 25 of 100 heal 1 each
+    emu = emulator(tmp_path, backend, {"t:go": "summon pig 0 0 0 {Tags:[p],NoAI:1b,Health:3f}\n"
+                                               "effect give @e[tag=p] regeneration 5 1"})
+    emu.call("t:go")
+    emu.tick(10)
+    assert _pig_health(emu) == 4.0  # the first heal comes in the tick it was given (duration 100)
+    emu.tick(100)
+    assert _pig_health(emu) == 7.0
+
+
+def _player(emu):
+    return next(e for e in emu.state.entities.entities if e.is_player)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("gamemode, exhaustion", [("survival", 0.1), ("creative", 0.0)])
+def test_hunger_exhausts_a_player_that_is_not_invulnerable(tmp_path, backend, gamemode, exhaustion):
+    emu = emulator(tmp_path, backend, {"t:go": "effect give @a hunger 1 1"})
+    emu.add_player("Steve", gamemode=gamemode)
+    emu.call("t:go")
+    emu.tick(25)
+    # 20 ticks of 0.01 each, summed in float (FoodData.addExhaustion)
+    assert float(_player(emu).data["foodExhaustionLevel"]) == pytest.approx(exhaustion * 2, abs=1e-5)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_exhaustion_spends_saturation_then_food(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "data modify storage t:s x set value 1"})
+    emu.add_player("Steve", gamemode="survival")
+    player = _player(emu)
+    from mcfunction_parser.nbt import Float, Int
+    player.data.update(foodExhaustionLevel=Float(4.5), foodSaturationLevel=Float(0.5), foodLevel=Int(20))
+    emu.tick(1)
+    assert (float(player.data["foodExhaustionLevel"]), float(player.data["foodSaturationLevel"]),
+            int(player.data["foodLevel"])) == (0.5, 0.0, 20)
+    player.data["foodExhaustionLevel"] = Float(4.25)
+    emu.tick(1)
+    assert (float(player.data["foodExhaustionLevel"]), int(player.data["foodLevel"])) == (0.25, 19)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_saturation_feeds_a_player(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "effect give @a saturation 4 2"})
+    emu.add_player("Steve", gamemode="survival")
+    player = _player(emu)
+    from mcfunction_parser.nbt import Float, Int
+    player.data.update(foodLevel=Int(10), foodSaturationLevel=Float(0.0))
+    emu.call("t:go")
+    emu.tick(1)
+    # an instant effect given for 4 "seconds" lasts 4 ticks (EffectCommand), each eating 3 food and 6
+    # saturation (capped at 20 and at the food level)
+    assert (int(player.data["foodLevel"]), float(player.data["foodSaturationLevel"])) == (13, 6.0)
+    emu.tick(3)
+    assert (int(player.data["foodLevel"]), float(player.data["foodSaturationLevel"])) == (20, 20.0)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_full_food_bar_heals_a_hurt_player_from_saturation(tmp_path, backend):
+    emu = emulator(tmp_path, backend, {"t:go": "data modify storage t:s x set value 1"})
+    emu.add_player("Steve", gamemode="survival")
+    player = _player(emu)
+    from mcfunction_parser.nbt import Float
+    player.data.update(Health=Float(10.0), foodSaturationLevel=Float(3.0))
+    emu.tick(10)
+    # the 10th tick heals min(3, 6) / 6 and costs 3 exhaustion
+    assert float(player.data["Health"]) == 10.5 and float(player.data["foodExhaustionLevel"]) == 3.0
+    assert int(player.data["foodTickTimer"]) == 0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("difficulty, health", [("normal", 4.0), ("easy", 5.0)])
+def test_an_empty_food_bar_starves(tmp_path, backend, difficulty, health):
+    emu = emulator(tmp_path, backend, {"t:go": f"difficulty {difficulty}"})
+    emu.add_player("Steve", gamemode="survival")
+    emu.call("t:go")
+    player = _player(emu)
+    from mcfunction_parser.nbt import Float, Int
+    player.data.update(Health=Float(5.0), foodLevel=Int(0), foodSaturationLevel=Float(0.0))
+    emu.tick(80)
+    # every 80 ticks, 1 starve damage while over 1 health on normal (10 on easy)
+    assert float(player.data["Health"]) == health
