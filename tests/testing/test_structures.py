@@ -153,3 +153,15 @@ def test_binary_nbt_values_and_modified_utf8():
 def test_a_list_longer_than_the_file_is_an_error_not_a_hang():
     with pytest.raises(NbtFormatError, match="runs past the end of the file"):
         read_nbt(b"\x0a\x00\x00\x09\x00\x01l\x03\x7f\xff\xff\xff\x00")
+
+
+@pytest.mark.parametrize("template", ["minecraft:empty", "packtest:empty"])
+def test_the_empty_template_needs_no_file(tmp_path, template):
+    # PackTestFunction: a test without @template gets minecraft:empty, "an empty 1x1x1 structure"
+    # (PackTest's README; packtest:empty, which its jar ships, before): naming it is the same, walls
+    # one block round that one block
+    root = write(tmp_path, {"demo/test/t.mcfunction": f"# @template {template}\n"
+                                                      "assert block ~1 ~ ~ minecraft:barrier\n"
+                                                      "assert block ~ ~ ~ minecraft:air\n"})
+    result = results(root)["demo:t"]
+    assert result.status == "passed", result.report()
