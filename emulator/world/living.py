@@ -503,21 +503,45 @@ def eat(player, nutrition: int, saturation) -> None:
     player.data["foodSaturationLevel"] = Float(float(min(max(F32(saturation) + current, F32(0.0)), F32(level))))
 
 
-def _food_busy(player) -> bool:
+def _food_busy(state, player) -> bool:
     """Whether :func:`tick_food` would change something now."""
     data = player.data
     food = int(_number(data.get("foodLevel"), 20))
+    hurt_now = 0.0 < health(player) < attribute_value(player, "max_health")
+    if (state.level_settings.difficulty == "peaceful" and state.gamerules.get("naturalRegeneration") != "false"
+            and (hurt_now or food < 20 or F32(_number(data.get("foodSaturationLevel"), 5.0)) < F32(20.0))):
+        return True
     return (F32(_number(data.get("foodExhaustionLevel"))) > F32(4.0) or int(_number(data.get("foodTickTimer"))) != 0
-            or food <= 0 or (food >= 18 and 0.0 < health(player) < attribute_value(player, "max_health")))
+            or food <= 0 or (food >= 18 and hurt_now))
+
+
+def _peaceful_regeneration(state, player) -> None:
+    """ServerPlayer.tickRegeneration (Player.aiStep, before the food's tick): on peaceful every 20
+    ticks of its age 1 health below the maximum and a point of saturation below 20, every 10 a point
+    of food below 20."""
+    age, data = player.tick_count(state.tick), player.data
+    if age % 20 == 0:
+        if health(player) < attribute_value(player, "max_health"):
+            heal(player, 1.0)
+        saturation = F32(_number(data.get("foodSaturationLevel"), 5.0))
+        if saturation < F32(20.0):
+            data["foodSaturationLevel"] = Float(float(saturation + F32(1.0)))
+    food = int(_number(data.get("foodLevel"), 20))
+    if age % 10 == 0 and food < 20:
+        data["foodLevel"] = Int(food + 1)
 
 
 def tick_food(state, player, harm) -> None:
-    """FoodData.tick: exhaustion over 4 takes a point of saturation, else (not on peaceful) of food;
+    """Peaceful's regeneration, then FoodData.tick: exhaustion over 4 takes a point of saturation,
+    else (not on peaceful) of food;
     with the naturalRegeneration rule a hurt player heals from a full food bar with saturation
     (every 10 ticks, min(saturation, 6) / 6, costing that much exhaustion) or from 18 food points
     (every 80 ticks, 1, costing 6); with no food it starves every 80 ticks (magic-free ``starve``
     damage, down to 10 health on easy and 1 on normal). ``harm(state, player, amount, type)``."""
     data, peaceful = player.data, state.level_settings.difficulty == "peaceful"
+    regenerates = state.gamerules.get("naturalRegeneration") != "false"
+    if peaceful and regenerates:
+        _peaceful_regeneration(state, player)
     exhaustion = F32(_number(data.get("foodExhaustionLevel")))
     saturation = F32(_number(data.get("foodSaturationLevel"), 5.0))
     food = int(_number(data.get("foodLevel"), 20))
@@ -529,7 +553,6 @@ def tick_food(state, player, harm) -> None:
         elif not peaceful:
             food = max(food - 1, 0)
             data["foodLevel"] = Int(food)
-    regenerates = state.gamerules.get("naturalRegeneration") != "false"
     hurt_now = 0.0 < health(player) < attribute_value(player, "max_health")  # Player.isHurt
     timer = int(_number(data.get("foodTickTimer")))
     if regenerates and saturation > F32(0.0) and hurt_now and food >= 20:
@@ -682,7 +705,7 @@ def tick_is_idle(state) -> bool:
         if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE or str(e.get("id", "")) in TICKING
                                            for e in found):
             return False
-        if entity.is_player and _food_busy(entity):
+        if entity.is_player and _food_busy(state, entity):
             return False
         if (is_numeric(hurt_time) and numeric_value(hurt_time) > 0) or (hurting and entity in state.hurt_timers):
             return False
@@ -704,24 +727,30 @@ def tick_living(state, harm=None) -> list:
     hurting = bool(state.hurt_timers)  # only the entity ticking adds itself (an instant effect's harm)
     harm = harm or _harm
     for entity in mobs:
-        if entity.is_player and entity.alive:
-            tick_food(state, entity, harm)
         found, hurt_time = entity.data.get("active_effects"), entity.data.get("HurtTime")
-        if found is None and not hurting and _not_hurt(hurt_time):
-            continue  # the common case, every tick: nothing to count down
-        if isinstance(found, List) and found:
-            if _tick_effects(state, entity, found, harm):
+        if found is not None or hurting or not _not_hurt(hurt_time):  # else, as usual, nothing to count down
+            if _tick_body(state, entity, found, hurt_time, harm):
                 lost.append(entity)
-            _drop_if_empty(entity)
-            hurt_time = entity.data.get("HurtTime")  # an instant effect's harm may have set it
-        if is_numeric(hurt_time) and numeric_value(hurt_time) > 0:
-            entity.data["HurtTime"] = Short(int(numeric_value(hurt_time)) - 1)
-        timers = state.hurt_timers.get(entity) if state.hurt_timers else None
-        if timers is not None:
-            timers[0] -= 1
-            if timers[0] <= 0:
-                del state.hurt_timers[entity]
+        if entity.is_player and entity.alive:  # after its living tick (ServerPlayer.doTick)
+            tick_food(state, entity, harm)
     return lost
+
+
+def _tick_body(state, entity, found, hurt_time, harm) -> bool:
+    """The entity's effects (True when one expired), hurt time and hurt timers."""
+    expired = False
+    if isinstance(found, List) and found:
+        expired = _tick_effects(state, entity, found, harm)
+        _drop_if_empty(entity)
+        hurt_time = entity.data.get("HurtTime")  # an instant effect's harm may have set it
+    if is_numeric(hurt_time) and numeric_value(hurt_time) > 0:
+        entity.data["HurtTime"] = Short(int(numeric_value(hurt_time)) - 1)
+    timers = state.hurt_timers.get(entity) if state.hurt_timers else None
+    if timers is not None:
+        timers[0] -= 1
+        if timers[0] <= 0:
+            del state.hurt_timers[entity]
+    return expired
 
 
 # the effects whose tick a pack can see besides the instant ones, and how often it comes: every

@@ -115,3 +115,18 @@ def test_an_empty_food_bar_starves(tmp_path, backend, difficulty, health):
     emu.tick(80)
     # every 80 ticks, 1 starve damage while over 1 health on normal (10 on easy)
     assert float(player.data["Health"]) == health
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_peaceful_feeds_and_heals_a_player(tmp_path, backend):
+    # ServerPlayer.tickRegeneration: every 20 ticks of its age 1 health and 1 saturation, every 10
+    # a point of food, before FoodData.tick
+    emu = emulator(tmp_path, backend, {"t:go": "difficulty peaceful"})
+    emu.call("t:go")
+    emu.add_player("Steve", gamemode="survival")
+    player = _player(emu)
+    from mcfunction_parser.nbt import Float, Int
+    player.data.update(Health=Float(10.0), foodLevel=Int(10), foodSaturationLevel=Float(0.0))
+    emu.tick(40)
+    assert (float(player.data["Health"]), int(player.data["foodLevel"]),
+            float(player.data["foodSaturationLevel"])) == (12.0, 14, 2.0)
