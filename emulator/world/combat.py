@@ -109,12 +109,17 @@ def last_attacker(state, entity) -> Entity | None:
 
 def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), bypasses: bool = False) -> bool:
     """LivingEntity.hurtServer: False when the hurt does not go through (a player its teammate hurts
-    without friendly fire: ServerPlayer.hurt -> canHarmPlayer); else the attacker gets the credit,
-    an entity at 0 health dies, then the hurt's triggers fire."""
+    without friendly fire: ServerPlayer.hurt -> canHarmPlayer; a player's damage scaled to nothing
+    on peaceful); else the attacker gets the credit, an entity at 0 health dies, then the hurt's
+    triggers fire."""
     attacker = source.attacker
     if entity.is_player and attacker is not None and attacker.is_player and not teams.can_harm(
             state.teams, entity, attacker):
         return False
+    if entity.is_player:
+        amount = _difficulty_scaled(state, source, amount)
+        if amount == 0.0:
+            return False
     full = living.takes_full_hurt(state, entity, bypasses)
     if not living.hurt(state, entity, amount, bypasses, source.type, _armour_wear,
                        lambda damage: record_damage(state, entity, source, damage)):
@@ -126,6 +131,36 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
         die(state, entity, source)
     hurt_triggers(state, entity, source, amount)
     return True
+
+
+# DamageTypes.bootstrap: the types whose damage to a player always scales with the difficulty; every
+# other vanilla type scales only when a living entity that is not a player causes it
+# (DamageScaling.WHEN_CAUSED_BY_LIVING_NON_PLAYER)
+ALWAYS_SCALED = frozenset("minecraft:" + t for t in ("explosion", "player_explosion", "sonic_boom", "bad_respawn_point"))
+
+
+def _difficulty_scaled(state, source: DamageSource, amount: float) -> float:
+    """Player.hurtServer: damage from a source that scales with the difficulty
+    (DamageSource.scalesWithDifficulty) is none on peaceful, min(d / 2 + 1, d) on easy, d * 3 / 2 on
+    hard (float math). A pack's own damage type scales as its ``scaling`` says, which is not read:
+    reported off normal, where nothing changes."""
+    difficulty = state.level_settings.difficulty
+    if difficulty == "normal":
+        return amount
+    if source.type not in living.EXHAUSTION:  # the vanilla types
+        state.error(f"the difficulty scaling of damage type {source.type} is not modelled", severity="warning",
+                    unmodelled=True)
+        return amount
+    attacker = source.attacker
+    if source.type not in ALWAYS_SCALED and not (attacker is not None and living.is_living(attacker.type)
+                                                 and not attacker.is_player):
+        return amount
+    damage = F32(amount)
+    if difficulty == "peaceful":
+        return 0.0
+    if difficulty == "easy":
+        return float(min(damage / F32(2.0) + F32(1.0), damage))
+    return float(damage * F32(3.0) / F32(2.0))
 
 
 KNOCKBACK_VERSION = (1, 21, 0)  # the hurt's knockback read from the source position (the 1.21 rule)

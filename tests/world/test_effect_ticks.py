@@ -130,3 +130,22 @@ def test_peaceful_feeds_and_heals_a_player(tmp_path, backend):
     emu.tick(40)
     assert (float(player.data["Health"]), int(player.data["foodLevel"]),
             float(player.data["foodSaturationLevel"])) == (12.0, 14, 2.0)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+@pytest.mark.parametrize("difficulty, by_zombie, explosion, fall", [
+    ("peaceful", 20.0, 20.0, 16.0), ("easy", 17.0, 17.0, 16.0), ("normal", 16.0, 16.0, 16.0),
+    ("hard", 14.0, 14.0, 16.0)])
+def test_a_players_damage_scales_with_the_difficulty(tmp_path, backend, difficulty, by_zombie, explosion, fall):
+    # Player.hurtServer: a source that scalesWithDifficulty (a living non-player causing it, or an
+    # ALWAYS type such as explosion: DamageTypes.bootstrap) deals 0 on peaceful, min(d/2+1, d) on
+    # easy, d*3/2 on hard; a fall (no causing entity) does not scale
+    emu = emulator(tmp_path, backend, {
+        "t:go": f"difficulty {difficulty}\nsummon zombie 5 0 5 {{Tags:[z],NoAI:1b}}\n"
+                "damage A 4 minecraft:mob_attack by @e[tag=z,limit=1]\n"
+                "damage B 4 minecraft:explosion\ndamage C 4 minecraft:fall"})
+    for name in "ABC":
+        emu.add_player(name, gamemode="survival")
+    emu.call("t:go")
+    healths = {e.player_name: float(e.data["Health"]) for e in emu.state.entities.entities if e.is_player}
+    assert (healths["A"], healths["B"], healths["C"]) == (by_zombie, explosion, fall)
