@@ -9,7 +9,8 @@ on every command source made from the test's: ``state.test_helper``).
   rest of the test's commands of that tick do not run; here the command fails and they run on (the
   verdict is the same: the first failure stands). With no test running, PackTest's failed assert
   ends its function (frame.returnFailure): not modelled, said so.
-- ``fail MESSAGE``: the test fails with the message's text; with no test, as a failed assert.
+- ``fail MESSAGE``: the test fails with the message's text, resolved for the source's entity
+  (ComponentUtils.getResolvedComponent: selectors, scores, NBT); with no test, as a failed assert.
 - ``succeed``: the test succeeds (GameTestHelper.succeed); with no test, nothing.
 
 A test file's own lines are steps of :mod:`emulator.testing`, not these commands.
@@ -18,10 +19,10 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
+from emulator.world import text_components
 from emulator.world.errors import CommandFailure, Unmodelled
-from emulator.world.text import plain_text
 
-from . import conditions
+from . import conditions, entities
 
 _OUTSIDE = "PackTest's '{0}' failing outside a test, which ends its function (frame.returnFailure)"
 
@@ -37,8 +38,19 @@ def _assert(env, cmd: ast.PackTestAssert, ctx) -> int:
     raise CommandFailure("dpemu.packtest.failed", helper.assert_failed(cmd.text, cmd.negated, ctx, env.frames(cmd)))
 
 
+def fail_message(state, text: str, ctx) -> str:
+    """PackTest's ``fail`` message: its text component resolved for the source's entity
+    (FailCommand: ComponentUtils.getResolvedComponent), as plain text. A selector in it that must
+    find one entity and does not fails the command (CommandFailure)."""
+    def select(target) -> list:
+        return entities.select(state, target, ctx)
+
+    finder = text_components.finder(entities.parse_target, select)
+    return text_components.resolved_plain(text, state, finder, entities.executor(state, ctx))
+
+
 def _fail(env, cmd: ast.PackTestFail, ctx) -> int:
-    message = plain_text(cmd.message, env.state.version)
+    message = fail_message(env.state, cmd.message, ctx)
     _helper(env, "fail").fail(message, env.frames(cmd))
     raise CommandFailure("dpemu.packtest.failed", message)
 

@@ -16,6 +16,7 @@ from emulator.commands import entities as world_entities
 from emulator.api import Emulator
 from emulator.commands import stages
 from emulator.commands.env import Env
+from emulator.commands.packtest import fail_message
 from emulator.world.errors import CommandFailure
 from emulator.world.context import Context
 from emulator.testing import batches, chat, environments
@@ -631,7 +632,11 @@ def _run_steps(emu: Emulator, source: TestSource, case: TestCase):
             for _ in range(step.ticks):
                 yield from _wait(source, timeout, step, f"still in 'await delay {step.ticks}'")
         elif isinstance(step, Fail):
-            raise _Verdict(FAILED, step.message, step.loc.line)
+            try:
+                message = fail_message(emu.state, step.message, source.context())
+            except CommandFailure:  # FailCommand ignores it: the line fails, the test goes on
+                continue
+            raise _Verdict(FAILED, message, step.loc.line)
         elif isinstance(step, Succeed):
             return
         elif isinstance(step, Dummy):

@@ -20,7 +20,6 @@ from pathlib import Path
 from emulator.commands import entities as world_entities
 from emulator.testing.directives import Directives, apply, directive_match
 from emulator.testing.dummies import DummyCommand, parse as parse_dummy
-from emulator.world.text import plain_text
 from mcfunction_parser.ast import Command, Condition, Function, MacroLine
 from mcfunction_parser.diagnostics import Diagnostic, Loc
 from mcfunction_parser.pack.text import split_lines
@@ -89,7 +88,7 @@ class Delay(Step):
 
 @dataclass(frozen=True)
 class Fail(Step):
-    message: str
+    message: str  # a text component as written (resolved when the step runs)
 
 
 @dataclass(frozen=True)
@@ -263,7 +262,7 @@ def _plain_step(b: _Builder, number: int, line: str, text: str, col: int, gate, 
     if word == "succeed":
         return Succeed(loc, gate) if not rest else _bad(b, "succeed takes no arguments", number, rest_col)
     if word == "fail":
-        return Fail(loc, gate, plain_text(rest)) if rest else _bad(b, "fail: expected a message", number, rest_col)
+        return Fail(loc, gate, rest) if rest else _bad(b, "fail: expected a message", number, rest_col)
     if word == "dummy":
         try:
             return Dummy(loc, gate, parse_dummy(text, loc, b.version))

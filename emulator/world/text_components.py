@@ -28,7 +28,7 @@ from emulator.world.entities import Entity, entity_nbt
 from emulator.world.errors import CommandFailure
 from emulator.world.teams import formatted_name
 from emulator.world.nbt_ops import tag_as_string
-from emulator.world.text import RESOLVED, needs_resolving, plain_value, read_component
+from emulator.world.text import RESOLVED, needs_resolving, plain_text, plain_value, read_component
 from mcfunction_parser import ast
 from mcfunction_parser.diagnostics import Loc
 from mcfunction_parser.nbt import Compound
@@ -89,7 +89,14 @@ def tellraw_command(state: WorldState, cmd: ast.Tellraw, receivers: list[Entity]
     return len(players)
 
 
-def resolved_text(text: str, state: WorldState, select: Select, receiver: Entity) -> str:
+def resolved_plain(text: str, state: WorldState, select: Select, receiver: Entity | None) -> str:
+    """The plain text of a text component resolved for ``receiver`` (ComponentUtils.updateForEntity:
+    a command's message argument read with getResolvedComponent, as PackTest's ``fail`` reads its
+    message; ``receiver`` is the source's entity, None for the server)."""
+    return plain_text(resolved_text(text, state, select, receiver), state.version)
+
+
+def resolved_text(text: str, state: WorldState, select: Select, receiver: Entity | None) -> str:
     component = read_component(text)
     if component is None or not needs_resolving(component):
         return text
@@ -177,6 +184,8 @@ class _Resolver:
         """ScoreContents.resolve: the holder (one entity for a selector, the receiver for ``*``)."""
         name = str(score.get("name", ""))
         if name == "*":
+            if self.receiver is None:  # resolved for no entity (the server): nothing
+                return ""
             holder = self.receiver.score_holder
         elif name.startswith("@"):
             found = self.select(name)

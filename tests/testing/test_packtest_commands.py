@@ -15,7 +15,7 @@ FILES = {
     # a library: runs the callback it is given for each element, as Bookshelf's for_each does
     "lib/function/each.mcfunction": "$$(run)\n",
     "lib/function/check.mcfunction": "assert score $x o matches 4\nscoreboard players set $checked o 1\n",
-    "lib/function/boom.mcfunction": 'fail "the library gave up"\n',
+    "lib/function/boom.mcfunction": 'fail ["the library gave up at ",{"score":{"name":"$x","objective":"o"}}]\n',
     "lib/function/done.mcfunction": "succeed\n",
     "demo/test/callback_holds.mcfunction": SETUP + 'function lib:each {run: "assert score $x o matches 4"}\n'
                                                    "assert score $x o matches 4\n",
@@ -39,7 +39,7 @@ def test_a_function_runs_packtests_commands_for_its_test(pack, backend):
     assert failed.where.endswith("data/demo/test/callback_fails.mcfunction:3")
     assert results["demo:not_held"].message == "Did not expect score $x o to match 4, found 4"
     assert results["demo:static"].status == "passed"
-    assert (results["demo:fails"].status, results["demo:fails"].message) == ("failed", "the library gave up")
+    assert (results["demo:fails"].status, results["demo:fails"].message) == ("failed", "the library gave up at 4")  # resolved (FailCommand)
     assert results["demo:succeeds"].status == "passed"  # GameTestHelper.succeed: the later line is not reached
     chat = results["demo:chat"]  # PackTest's own conditions are read as a test file's lines only
     assert chat.status == "inconclusive" and "assert chat" in chat.message

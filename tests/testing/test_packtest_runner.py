@@ -115,6 +115,21 @@ def test_fail_succeed_and_execute_prefixes(pack):
     assert results["demo:gated_assert"].message == "Expected score $x o to match 3, found 4"
 
 
+def test_fail_resolves_its_message_for_the_source(pack):
+    # FailCommand: ComponentUtils.getResolvedComponent (scores, selectors, NBT) for the source's
+    # entity (the dummy here); a selector that must find one entity and finds two fails the line,
+    # which FailCommand ignores, and the test goes on
+    root = pack({
+        "demo/test/resolved.mcfunction": "# @dummy\n" + SETUP + 'fail [{"score":{"name":"$x","objective":"o"}}," ",{"selector":"@s"}," ",'
+                                '{"nbt":"Health","entity":"@s"}]\n',
+        "demo/test/ambiguous.mcfunction": SETUP + "summon marker\nsummon marker\nscoreboard players set @e o 1\n"
+                                                  'fail {"score":{"name":"@e","objective":"o"}}\nsucceed\n',
+    })
+    results = by_id(run(root))
+    assert results["demo:resolved"].message.startswith("4 Dummy") and results["demo:resolved"].message.endswith(" 20.0f")
+    assert results["demo:ambiguous"].status == "passed"
+
+
 def test_isolated_each_test_runs_in_a_fresh_world_after_load(pack):
     root = pack({
         "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $loaded o 1\n",
