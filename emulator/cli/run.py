@@ -138,8 +138,7 @@ def _print_log(emu: Emulator, to_stderr: bool) -> None:
     """``--log``: each output line with its tick, its kind and where the command stands (a tellraw's
     component as the player reads it)."""
     for entry in emu.log:
-        where = f"  ({entry.loc})" if entry.loc else ""
-        click.echo(f"tick {entry.tick} {entry.kind}: {entry.read_text(emu.state.version)}{where}", err=to_stderr)
+        click.echo(entry.line(emu.state.version), err=to_stderr)
 
 
 def _print_summary(report: dict, emu: Emulator, to_stderr: bool) -> None:

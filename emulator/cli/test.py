@@ -27,9 +27,11 @@ from emulator.testing.junit import junit_xml
                    "as the game test server).")
 @click.option("--allow-unmodelled", is_flag=True,
               help="A test meeting something the emulator does not model passes or fails as it ran (default: inconclusive).")
+@click.option("--log", "show_log", is_flag=True,
+              help="Print under each test the output lines while it ran (say, tellraw ...: the chat it could see).")
 @game_jar_option
 def test(paths, pattern, junit_file, backend, strict, with_packs, together, isolate, allow_unmodelled,
-         game_jar) -> None:
+         show_log, game_jar) -> None:
     """Run PackTest-format test files.
 
     PATHS: packs as folders or .zip files, folders in a pack, or test files."""
@@ -53,7 +55,7 @@ def test(paths, pattern, junit_file, backend, strict, with_packs, together, isol
     with interruptible() as stopped:
         def reported(result) -> None:  # each test's line as it ends is the progress
             summary.results.append(result)
-            click.echo(result.report())
+            click.echo(result.report(log=show_log))
 
         run_suite(files, backend, pattern, on_result=reported, on_load=loaded, strict=strict,
                   with_packs=with_packs, together=together, allow_unmodelled=allow_unmodelled, game_jar=game_jar,

@@ -1,5 +1,5 @@
 """JUnit XML (the schema CI services read): one testsuite, a testcase per test with a failure
-(message and file:line) or skipped element."""
+(message and file:line) or skipped element, and the output lines while it ran as its system-out."""
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
@@ -30,6 +30,8 @@ def junit_xml(summary: Summary, suite_name: str = "dpemu") -> str:
             ET.SubElement(case, "skipped", {"message": f"inconclusive: {r.where}: {r.message}", "type": INCONCLUSIVE})
         elif r.status != PASSED:
             ET.SubElement(case, "skipped", {"message": f"{r.where}: {r.message}"})
+        if r.log:
+            ET.SubElement(case, "system-out").text = "\n".join(r.log)
     root = ET.Element("testsuites")
     root.append(suite)
     ET.indent(root)

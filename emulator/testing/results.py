@@ -19,6 +19,9 @@ class TestResult:
     seconds: float = 0.0
     optional: bool = False
     details: list[str] = field(default_factory=list)  # formatted diagnostics, runtime errors
+    # the world's output lines while it ran (say, tellraw ...: LogEntry.line), the chat its `assert
+    # chat` could see; a batch's tests run together, so each sees the others' lines too
+    log: list[str] = field(default_factory=list)
 
     @property
     def where(self) -> str:
@@ -29,8 +32,9 @@ class TestResult:
         """An optional test that failed does not fail the run: it counts as skipped."""
         return SKIPPED if self.status == FAILED and self.optional else self.status
 
-    def report(self) -> str:
-        """Lines for a terminal: the verdict, then where and why when it did not pass."""
+    def report(self, log: bool = False) -> str:
+        """Lines for a terminal: the verdict, then where and why when it did not pass (``log``: then
+        the output lines while it ran)."""
         label = {PASSED: "PASS", FAILED: "FAIL", SKIPPED: "SKIP", INCONCLUSIVE: "INCONCLUSIVE"}[self.status]
         if self.status == FAILED and self.optional:
             label = "FAIL (optional)"
@@ -38,6 +42,8 @@ class TestResult:
         if self.status != PASSED:
             lines.append(f"  {self.where}: {self.message}")
         lines.extend("  " + d.replace("\n", "\n  ") for d in self.details)  # a passed test's runtime errors too
+        if log:
+            lines.extend("  | " + line for line in self.log)
         return "\n".join(lines)
 
 

@@ -196,6 +196,7 @@ class _Running:
         self.steps = None  # the test's steps (a generator yielding whenever it waits a tick)
         self.verdict: _Verdict | None = None
         self.diagnostics: list = []  # the runtime diagnostics that may bear on it
+        self.log_start: int | None = None  # the world's log length when its first line ran
         self.clock = time.perf_counter()
 
 
@@ -252,6 +253,7 @@ class _World:
                 if not self.test_instances and run.template is not None:
                     structures.place(emu.state, run.template, run.source.block_corner)
                 run.source.started = emu.ticks
+                run.log_start = len(emu.log)
                 run.steps = self._steps(run)
         active = [run for run in runs if run.verdict is None]
         for run in runs:
@@ -371,6 +373,8 @@ class _World:
         result = TestResult(run.case.id, run.case.path, verdict.status, verdict.message, verdict.line,
                             optional=run.case.directives.optional)
         result.ticks = emu.ticks - run.source.started if run.steps is not None else 0
+        if run.log_start is not None:
+            result.log = [entry.line(emu.state.version) for entry in emu.log[run.log_start:]]
         result.seconds = time.perf_counter() - run.clock
         diagnostics = self.shared + run.diagnostics
         errors = [d for d in diagnostics if d.severity == "error"]

@@ -28,6 +28,11 @@ class LogEntry:
         ``release``: :func:`emulator.world.text.plain_text`), others as logged."""
         return plain_text(self.text, release) if self.kind == "tellraw" else self.text
 
+    def line(self, release=None) -> str:
+        """The line for a terminal: its tick, kind, text as read and where the command stands."""
+        where = f"  ({self.loc})" if self.loc else ""
+        return f"tick {self.tick} {self.kind}: {self.read_text(release)}{where}"
+
 
 @dataclass(frozen=True, slots=True)
 class Frame:

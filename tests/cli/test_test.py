@@ -43,6 +43,24 @@ def test_junit_xml_structure(pack, tmp_path):
     assert cases["skip"].find("skipped") is not None and cases["good"].find("failure") is None
 
 
+def test_log_shows_what_each_test_printed(pack, tmp_path):
+    # the output lines while each test ran (what its `assert chat` could see), under its verdict
+    # with --log, and as its JUnit system-out
+    root = pack({"demo/test/chatty.mcfunction": "# @dummy\n" + SETUP + "say hi\n"
+                                                "tellraw @a {\"score\":{\"name\":\"$x\",\"objective\":\"o\"}}\n"
+                                                "await delay 1\nsay later\n"})
+    out = tmp_path / "junit.xml"
+    lines = CliRunner().invoke(main, ["test", str(root), "--log", "--junit", str(out)]).output.splitlines()
+    assert lines[0] == "PASS demo:chatty" and lines[-1] == "1 passed, 0 failed"
+    shown = [line.split("  (")[0] for line in lines[1:-1]]
+    assert [line.split(": ", 1)[1].split("] ")[-1] for line in shown] == ["hi", "4", "later"], lines  # say: [name] text
+    assert all(line.startswith("  | tick ") for line in shown)
+    system_out = ET.parse(out).getroot().find("testsuite/testcase/system-out").text.splitlines()
+    assert [line.split("  (")[0] for line in system_out] == [line[4:] for line in shown]
+    plain = CliRunner().invoke(main, ["test", str(root)]).output.splitlines()
+    assert plain == ["PASS demo:chatty", "1 passed, 0 failed"]
+
+
 def test_a_missing_path_is_a_usage_error(tmp_path):
     result = CliRunner().invoke(main, ["test", str(tmp_path / "nope")])
     assert result.exit_code == 2 and "does not exist" in result.output
