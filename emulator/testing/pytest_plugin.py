@@ -106,6 +106,8 @@ class McfunctionItem(pytest.Item):
         from emulator.testing.runner import run_case
 
         result = run_case(self.case, self.packs, self.backend, allow_unmodelled=self.allow_unmodelled)
+        if result.log:  # shown with a failure, as pytest shows captured output
+            self.add_report_section("call", "chat", "\n".join(result.log))
         if result.status == INCONCLUSIVE:  # it met what is not modelled: neither passed nor failed
             pytest.skip(f"inconclusive: {result.where}: {result.message}")
         if result.status == SKIPPED or (result.status == FAILED and result.optional):

@@ -9,7 +9,7 @@ from emulator.testing.pytest_plugin import assert_entity_position, assert_positi
 TESTS = {
     "demo/function/init.mcfunction": "scoreboard objectives add o dummy\nscoreboard players set $x o 4\n",
     "demo/test/good.mcfunction": "assert score $x o matches 4\n",
-    "demo/test/bad.mcfunction": "scoreboard players add $x o 1\nassert score $x o matches 4\n",
+    "demo/test/bad.mcfunction": "say checking\nscoreboard players add $x o 1\nassert score $x o matches 4\n",
 }
 
 
@@ -65,8 +65,10 @@ def test_mcfunction_files_are_collected_only_when_asked(pack, tmp_path):
                          capture_output=True, text=True, cwd=tmp_path)
     assert run.returncode == 1, run.stdout + run.stderr
     assert "1 failed, 2 passed" in run.stdout
-    assert "pack/data/demo/test/bad.mcfunction:2: Expected score $x o to match 4, found 5" in run.stdout
+    assert "pack/data/demo/test/bad.mcfunction:3: Expected score $x o to match 4, found 5" in run.stdout
     assert "FAILED pack/data/demo/test/bad.mcfunction::demo:bad" in run.stdout
+    # what the test printed, as pytest shows captured output
+    assert "Captured chat call" in run.stdout and "say: [Server] checking" in run.stdout
     # the ini option names the packs instead (paths relative to the ini file)
     (tmp_path / "pytest.ini").write_text("[pytest]\nmcfunction_tests = pack/data/demo/test/good.mcfunction\n")
     ini = subprocess.run(base + ["-c", str(tmp_path / "pytest.ini"), str(tmp_path / "test_nothing.py")],
