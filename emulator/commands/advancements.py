@@ -8,7 +8,7 @@ remaining criterion, REVOKE revokes every obtained one), EntityArgument.getPlaye
 """
 from __future__ import annotations
 
-from emulator.world import advancements
+from emulator.world import advancement_progress, advancements
 from emulator.world.advancement_progress import is_done
 from mcfunction_parser.pack.advancements import criteria
 from emulator.world.errors import CommandFailure
@@ -30,7 +30,7 @@ def advancement(env, cmd: ast.GenericCommand, ctx) -> int:
     if not players:
         raise CommandFailure("argument.entity.notfound.player")
     known = state.resources.advancements
-    if advancement_id is not None and advancement_id not in known:
+    if advancement_id is not None and not advancement_progress.known(state, advancement_id):
         raise CommandFailure("advancement.advancementNotFound", advancement_id, report=True)
     change = advancements.award if action == "grant" else advancements.revoke
     if criterion is not None:

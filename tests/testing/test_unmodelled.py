@@ -18,6 +18,11 @@ FILES = {
                                    "forceload add 0 0\nsucceed\n",
     "demo/test/locate.mcfunction": "locate structure minecraft:village_plains\nsucceed\n",
     "demo/test/vanilla_tag.mcfunction": "summon pig ~ ~ ~\nassert entity @e[type=#minecraft:logs]\n",
+    # the game's own advancements are not loaded: granting or reading one is not modelled, and a
+    # pack's unknown one is the game's error
+    "demo/test/vanilla_advancement.mcfunction": "# @dummy\nadvancement grant @s only minecraft:story/root\n"
+                                                "assert entity @s[advancements={minecraft:story/root=true}]\n",
+    "demo/test/own_advancement.mcfunction": "# @dummy\nassert not entity @s[advancements={demo:nope=true}]\n",
     # light from a block whose shape (and so its light) is not kept here: a fence beside the dummy
     "demo/test/condition.mcfunction": "# @dummy ~ ~ ~\nsetblock ~1 ~ ~ minecraft:oak_fence\n"
                                       "assert predicate demo:equipped\n",
@@ -39,13 +44,15 @@ def test_unmodelled_effects_make_tests_inconclusive_with_the_reason(tmp_path, ba
     status = {k: r.status for k, r in results.items()}
     assert status == {"demo:frozen": "inconclusive", "demo:frozen_fails": "inconclusive",
                       "demo:sounds": "passed", "demo:vanilla_tag": "inconclusive", "demo:condition": "inconclusive",
-                      "demo:locate": "inconclusive"}
+                      "demo:locate": "inconclusive", "demo:vanilla_advancement": "inconclusive",
+                      "demo:own_advancement": "passed"}
+    assert "the game's own advancement minecraft:story/root" in results["demo:vanilla_advancement"].message
     assert "'tick' is not emulated" in results["demo:frozen"].message
     assert results["demo:frozen"].message.endswith("the test passed")
     assert "failed (boom)" in results["demo:frozen_fails"].message
     assert "#minecraft:logs is not known" in results["demo:vanilla_tag"].message
     assert "location predicate field 'light'" in results["demo:condition"].message
-    assert summary.line() == "1 passed, 0 failed, 5 inconclusive"
+    assert summary.line() == "2 passed, 0 failed, 6 inconclusive"
     skipped = ET.fromstring(junit_xml(summary)).find(".//testcase[@name='frozen']/skipped")
     assert skipped is not None and skipped.get("type") == "inconclusive"
 
