@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import pytest
 
+from mcfunction_parser.nbt import Float, Int
 from tests.world.world_emulator import emulator
 
 BACKENDS = ["numba", "python"]
@@ -48,6 +49,20 @@ def _player(emu):
     return next(e for e in emu.state.entities.entities if e.is_player)
 
 
+def _survivor(tmp_path, backend, command: str, before: bool = False, **fields):
+    """An emulator with a survival player whose NBT has ``fields`` (floats but ``foodLevel``), and
+    ``command`` run before it joins (``before``) or after."""
+    emu = emulator(tmp_path, backend, {"t:go": command})
+    if before:
+        emu.call("t:go")
+    emu.add_player("Steve", gamemode="survival")
+    player = _player(emu)
+    player.data.update({k: Int(v) if k == "foodLevel" else Float(v) for k, v in fields.items()})
+    if not before:
+        emu.call("t:go")
+    return emu, player
+
+
 @pytest.mark.parametrize("backend", BACKENDS)
 @pytest.mark.parametrize("gamemode, exhaustion", [("survival", 0.1), ("creative", 0.0)])
 def test_hunger_exhausts_a_player_that_is_not_invulnerable(tmp_path, backend, gamemode, exhaustion):
@@ -61,11 +76,8 @@ def test_hunger_exhausts_a_player_that_is_not_invulnerable(tmp_path, backend, ga
 
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_exhaustion_spends_saturation_then_food(tmp_path, backend):
-    emu = emulator(tmp_path, backend, {"t:go": "data modify storage t:s x set value 1"})
-    emu.add_player("Steve", gamemode="survival")
-    player = _player(emu)
-    from mcfunction_parser.nbt import Float, Int
-    player.data.update(foodExhaustionLevel=Float(4.5), foodSaturationLevel=Float(0.5), foodLevel=Int(20))
+    emu, player = _survivor(tmp_path, backend, "say go", foodExhaustionLevel=4.5, foodSaturationLevel=0.5,
+                            foodLevel=20)
     emu.tick(1)
     assert (float(player.data["foodExhaustionLevel"]), float(player.data["foodSaturationLevel"]),
             int(player.data["foodLevel"])) == (0.5, 0.0, 20)
@@ -76,12 +88,7 @@ def test_exhaustion_spends_saturation_then_food(tmp_path, backend):
 
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_saturation_feeds_a_player(tmp_path, backend):
-    emu = emulator(tmp_path, backend, {"t:go": "effect give @a saturation 4 2"})
-    emu.add_player("Steve", gamemode="survival")
-    player = _player(emu)
-    from mcfunction_parser.nbt import Float, Int
-    player.data.update(foodLevel=Int(10), foodSaturationLevel=Float(0.0))
-    emu.call("t:go")
+    emu, player = _survivor(tmp_path, backend, "effect give @a saturation 4 2", foodLevel=10, foodSaturationLevel=0.0)
     emu.tick(1)
     # an instant effect given for 4 "seconds" lasts 4 ticks (EffectCommand), each eating 3 food and 6
     # saturation (capped at 20 and at the food level)
@@ -92,11 +99,7 @@ def test_saturation_feeds_a_player(tmp_path, backend):
 
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_a_full_food_bar_heals_a_hurt_player_from_saturation(tmp_path, backend):
-    emu = emulator(tmp_path, backend, {"t:go": "data modify storage t:s x set value 1"})
-    emu.add_player("Steve", gamemode="survival")
-    player = _player(emu)
-    from mcfunction_parser.nbt import Float
-    player.data.update(Health=Float(10.0), foodSaturationLevel=Float(3.0))
+    emu, player = _survivor(tmp_path, backend, "say go", Health=10.0, foodSaturationLevel=3.0)
     emu.tick(10)
     # the 10th tick heals min(3, 6) / 6 and costs 3 exhaustion
     assert float(player.data["Health"]) == 10.5 and float(player.data["foodExhaustionLevel"]) == 3.0
@@ -106,12 +109,8 @@ def test_a_full_food_bar_heals_a_hurt_player_from_saturation(tmp_path, backend):
 @pytest.mark.parametrize("backend", BACKENDS)
 @pytest.mark.parametrize("difficulty, health", [("normal", 4.0), ("easy", 5.0)])
 def test_an_empty_food_bar_starves(tmp_path, backend, difficulty, health):
-    emu = emulator(tmp_path, backend, {"t:go": f"difficulty {difficulty}"})
-    emu.add_player("Steve", gamemode="survival")
-    emu.call("t:go")
-    player = _player(emu)
-    from mcfunction_parser.nbt import Float, Int
-    player.data.update(Health=Float(5.0), foodLevel=Int(0), foodSaturationLevel=Float(0.0))
+    emu, player = _survivor(tmp_path, backend, f"difficulty {difficulty}", Health=5.0, foodLevel=0,
+                            foodSaturationLevel=0.0)
     emu.tick(80)
     # every 80 ticks, 1 starve damage while over 1 health on normal (10 on easy)
     assert float(player.data["Health"]) == health
@@ -121,12 +120,8 @@ def test_an_empty_food_bar_starves(tmp_path, backend, difficulty, health):
 def test_peaceful_feeds_and_heals_a_player(tmp_path, backend):
     # ServerPlayer.tickRegeneration: every 20 ticks of its age 1 health and 1 saturation, every 10
     # a point of food, before FoodData.tick
-    emu = emulator(tmp_path, backend, {"t:go": "difficulty peaceful"})
-    emu.call("t:go")
-    emu.add_player("Steve", gamemode="survival")
-    player = _player(emu)
-    from mcfunction_parser.nbt import Float, Int
-    player.data.update(Health=Float(10.0), foodLevel=Int(10), foodSaturationLevel=Float(0.0))
+    emu, player = _survivor(tmp_path, backend, "difficulty peaceful", before=True, Health=10.0, foodLevel=10,
+                            foodSaturationLevel=0.0)
     emu.tick(40)
     assert (float(player.data["Health"]), int(player.data["foodLevel"]),
             float(player.data["foodSaturationLevel"])) == (12.0, 14, 2.0)
