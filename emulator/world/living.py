@@ -336,6 +336,7 @@ def remove_modifier(entity, name: str, modifier_id) -> bool:
 
 def _changed(entity) -> None:
     """After an attribute change: the health within the new maximum, the size at the new scale."""
+    entity.max_health_seen = None
     _sync_health(entity)
     entity.refresh_sizes()
 
@@ -365,6 +366,17 @@ def attribute_value(entity, name: str) -> float:
 
 
 # ---------------------------------------------------------------------- health and damage
+
+def max_health(entity) -> float:
+    """The max_health attribute's value. A player's is kept until an attribute of it changes
+    (:func:`_changed`): only the emulator's own paths change a player's NBT (the game refuses
+    ``data`` on players), and the food's tick asks each tick."""
+    if not entity.is_player:
+        return attribute_value(entity, "max_health")
+    if entity.max_health_seen is None:
+        entity.max_health_seen = attribute_value(entity, "max_health")
+    return entity.max_health_seen
+
 
 def health(entity) -> float:
     return _number(entity.data.get("Health"), default_base(entity.type, "max_health"))
@@ -507,7 +519,7 @@ def _food_busy(state, player) -> bool:
     """Whether :func:`tick_food` would change something now."""
     data = player.data
     food = int(_number(data.get("foodLevel"), 20))
-    hurt_now = 0.0 < health(player) < attribute_value(player, "max_health")
+    hurt_now = 0.0 < health(player) < max_health(player)
     if (state.level_settings.difficulty == "peaceful" and state.gamerules.get("naturalRegeneration") != "false"
             and (hurt_now or food < 20 or F32(_number(data.get("foodSaturationLevel"), 5.0)) < F32(20.0))):
         return True
@@ -521,7 +533,7 @@ def _peaceful_regeneration(state, player) -> None:
     of food below 20."""
     age, data = player.tick_count(state.tick), player.data
     if age % 20 == 0:
-        if health(player) < attribute_value(player, "max_health"):
+        if health(player) < max_health(player):
             heal(player, 1.0)
         saturation = F32(_number(data.get("foodSaturationLevel"), 5.0))
         if saturation < F32(20.0):
@@ -532,6 +544,23 @@ def _peaceful_regeneration(state, player) -> None:
 
 
 def tick_food(state, player, harm) -> None:
+    """:func:`food_tick`, unless it changed nothing last tick and reads the same now (a player's
+    food is read each tick: most ticks, nothing moves; the same tag objects, rule and difficulty)."""
+    data, seen = player.data, player.food_seen
+    food, saturation, exhaustion = data.get("foodLevel"), data.get("foodSaturationLevel"), data.get("foodExhaustionLevel")
+    timer, now = data.get("foodTickTimer"), data.get("Health")
+    rule, difficulty = state.gamerules.values.get("naturalRegeneration"), state.level_settings.difficulty
+    if (seen is not None and seen[0] is food and seen[1] is saturation and seen[2] is exhaustion and seen[3] is timer
+            and seen[4] is now and seen[5] == player.max_health_seen and seen[6] is rule and seen[7] == difficulty):
+        return
+    food_tick(state, player, harm)
+    quiet = (data.get("foodLevel") is food and data.get("foodSaturationLevel") is saturation
+             and data.get("foodExhaustionLevel") is exhaustion and data.get("foodTickTimer") is timer
+             and data.get("Health") is now and difficulty != "peaceful")  # peaceful's regeneration counts the age
+    player.food_seen = (food, saturation, exhaustion, timer, now, player.max_health_seen, rule, difficulty) if quiet else None
+
+
+def food_tick(state, player, harm) -> None:
     """Peaceful's regeneration, then FoodData.tick: exhaustion over 4 takes a point of saturation,
     else (not on peaceful) of food;
     with the naturalRegeneration rule a hurt player heals from a full food bar with saturation
@@ -553,8 +582,8 @@ def tick_food(state, player, harm) -> None:
         elif not peaceful:
             food = max(food - 1, 0)
             data["foodLevel"] = Int(food)
-    hurt_now = 0.0 < health(player) < attribute_value(player, "max_health")  # Player.isHurt
-    timer = int(_number(data.get("foodTickTimer")))
+    hurt_now = 0.0 < health(player) < max_health(player)  # Player.isHurt
+    timer = before = int(_number(data.get("foodTickTimer")))
     if regenerates and saturation > F32(0.0) and hurt_now and food >= 20:
         timer += 1
         if timer >= 10:
@@ -577,7 +606,8 @@ def tick_food(state, player, harm) -> None:
             timer = 0
     else:
         timer = 0
-    data["foodTickTimer"] = Int(timer)
+    if timer != before:
+        data["foodTickTimer"] = Int(timer)
 
 
 def _after_armour(entity, amount: float, bypass: bool) -> float:
@@ -731,7 +761,7 @@ def tick_living(state, harm=None) -> list:
         if found is not None or hurting or not _not_hurt(hurt_time):  # else, as usual, nothing to count down
             if _tick_body(state, entity, found, hurt_time, harm):
                 lost.append(entity)
-        if entity.is_player and entity.alive:  # after its living tick (ServerPlayer.doTick)
+        if entity.is_player:  # after its living tick, dead or alive (ServerPlayer.doTick)
             tick_food(state, entity, harm)
     return lost
 
@@ -770,7 +800,7 @@ def _apply_tick(state, entity, effect_id: str, amplifier: int, harm) -> None:
     """MobEffect.applyEffectTick of the effects in TICKING (Regeneration-, Poison-, Wither- and
     HungerMobEffect)."""
     if effect_id == "minecraft:regeneration":
-        if health(entity) < attribute_value(entity, "max_health"):
+        if health(entity) < max_health(entity):
             heal(entity, 1.0)
     elif effect_id == "minecraft:poison":
         if health(entity) > 1.0:

@@ -400,38 +400,96 @@ class ScheduleQueue:
 
 
 # ---------------------------------------------------------------------- gamerules
-# Canonical key -> default. Aliases map other spellings (1.21.11 snake_case names) to it.
+# Canonical key -> default, every rule of 1.20-1.21.10 (GameRules.register) and the 1.21.11+ rules
+# whose meaning is new (the movement checks and raids turned from "disable" to "enabled", the fire's
+# spread radius); aliases map the other 1.21.11+ snake_case names to the rule they renamed.
+_TRUE_BY_DEFAULT = """
+    doFireTick mobGriefing doMobSpawning doMobLoot projectilesCanBreakBlocks doTileDrops doEntityDrops
+    commandBlockOutput naturalRegeneration doDaylightCycle logAdminCommands showDeathMessages sendCommandFeedback
+    spectatorsGenerateChunks doWeatherCycle announceAdvancements doInsomnia drowningDamage fallDamage fireDamage
+    freezeDamage doPatrolSpawning doTraderSpawning doWardenSpawning forgiveDeadPlayers blockExplosionDropDecay
+    mobExplosionDropDecay waterSourceConversion globalSoundEvents doVinesSpread enderPearlsVanishOnDeath locatorBar
+    tntExplodes allowEnteringNetherUsingPortals commandBlocksEnabled pvp spawnMonsters spawnerBlocksEnabled
+    player_movement_check elytra_movement_check raids
+""".split()
+_FALSE_BY_DEFAULT = """
+    keepInventory reducedDebugInfo disablePlayerMovementCheck disableElytraMovementCheck doLimitedCrafting
+    disableRaids doImmediateRespawn universalAnger tntExplosionDropDecay lavaSourceConversion
+    allowFireTicksAwayFromPlayer
+""".split()
 GAMERULE_DEFAULTS: dict[str, str] = {
+    **dict.fromkeys(_TRUE_BY_DEFAULT, "true"), **dict.fromkeys(_FALSE_BY_DEFAULT, "false"),
+    "randomTickSpeed": "3",
+    "spawnRadius": "10",
+    "maxEntityCramming": "24",
     "maxCommandChainLength": "65536",
     "maxCommandForkCount": "65536",
     "commandModificationBlockLimit": "32768",
+    "playersNetherPortalDefaultDelay": "80",
+    "playersNetherPortalCreativeDelay": "0",
+    "playersSleepingPercentage": "100",
+    "snowAccumulationHeight": "1",
+    "minecartMaxSpeed": "8",
+    "spawnChunkRadius": "2",
     "functionCommandPermissionLevel": "2",
-    "sendCommandFeedback": "true",
-    "commandBlockOutput": "true",
-    "doDaylightCycle": "true",
-    "doWeatherCycle": "true",
-    "randomTickSpeed": "3",
-    "keepInventory": "false",
-    "showDeathMessages": "true",
-    "doImmediateRespawn": "false",
-    "doTileDrops": "true",
-    "doMobLoot": "true",
+    "fire_spread_radius_around_player": "128",
 }
-GAMERULE_ALIASES: dict[str, str] = {
-    "max_command_sequence_length": "maxCommandChainLength",
-    "max_command_forks": "maxCommandForkCount",
-    "max_block_modifications": "commandModificationBlockLimit",
-    "send_command_feedback": "sendCommandFeedback",
-    "command_block_output": "commandBlockOutput",
-    "advance_time": "doDaylightCycle",
-    "advance_weather": "doWeatherCycle",
-    "random_tick_speed": "randomTickSpeed",
-    "keep_inventory": "keepInventory",
-    "show_death_messages": "showDeathMessages",
-    "immediate_respawn": "doImmediateRespawn",
-    "block_drops": "doTileDrops",
-    "mob_drops": "doMobLoot",
-}
+GAMERULE_ALIASES: dict[str, str] = dict(line.split() for line in """
+max_command_sequence_length maxCommandChainLength
+max_command_forks maxCommandForkCount
+max_block_modifications commandModificationBlockLimit
+send_command_feedback sendCommandFeedback
+command_block_output commandBlockOutput
+advance_time doDaylightCycle
+advance_weather doWeatherCycle
+random_tick_speed randomTickSpeed
+keep_inventory keepInventory
+show_death_messages showDeathMessages
+immediate_respawn doImmediateRespawn
+block_drops doTileDrops
+mob_drops doMobLoot
+allow_entering_nether_using_portals allowEnteringNetherUsingPortals
+block_explosion_drop_decay blockExplosionDropDecay
+command_blocks_work commandBlocksEnabled
+drowning_damage drowningDamage
+ender_pearls_vanish_on_death enderPearlsVanishOnDeath
+entity_drops doEntityDrops
+fall_damage fallDamage
+fire_damage fireDamage
+forgive_dead_players forgiveDeadPlayers
+freeze_damage freezeDamage
+global_sound_events globalSoundEvents
+lava_source_conversion lavaSourceConversion
+limited_crafting doLimitedCrafting
+locator_bar locatorBar
+log_admin_commands logAdminCommands
+max_entity_cramming maxEntityCramming
+max_minecart_speed minecartMaxSpeed
+max_snow_accumulation_height snowAccumulationHeight
+mob_explosion_drop_decay mobExplosionDropDecay
+mob_griefing mobGriefing
+natural_health_regeneration naturalRegeneration
+players_nether_portal_creative_delay playersNetherPortalCreativeDelay
+players_nether_portal_default_delay playersNetherPortalDefaultDelay
+players_sleeping_percentage playersSleepingPercentage
+projectiles_can_break_blocks projectilesCanBreakBlocks
+reduced_debug_info reducedDebugInfo
+respawn_radius spawnRadius
+show_advancement_messages announceAdvancements
+spawn_mobs doMobSpawning
+spawn_monsters spawnMonsters
+spawn_patrols doPatrolSpawning
+spawn_phantoms doInsomnia
+spawn_wandering_traders doTraderSpawning
+spawn_wardens doWardenSpawning
+spawner_blocks_work spawnerBlocksEnabled
+spectators_generate_chunks spectatorsGenerateChunks
+spread_vines doVinesSpread
+tnt_explodes tntExplodes
+tnt_explosion_drop_decay tntExplosionDropDecay
+universal_anger universalAnger
+water_source_conversion waterSourceConversion
+""".strip().splitlines())
 
 
 class Gamerules:

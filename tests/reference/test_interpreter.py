@@ -173,6 +173,25 @@ def test_schedule_log_and_gamerule(tmp_path):
     assert scores(state)["#g"] == 77
 
 
+@pytest.mark.parametrize("rule, value", [("naturalRegeneration", 1), ("doMobSpawning", 1), ("disableRaids", 0),
+                                         ("spawnRadius", 10), ("playersSleepingPercentage", 100)])
+def test_every_game_rule_has_its_default(tmp_path, rule, value):
+    # GameRules.register (1.21.3, 1.21.7; 1.21.10's command tree for its rules): a query's result is
+    # the default, a boolean as 1 or 0
+    functions = {"t:main": SETUP + f"execute store result score #g o run gamerule {rule}"}
+    _, state, _ = run(tmp_path, functions)
+    assert scores(state)["#g"] == value and not state.diagnostics
+
+
+def test_a_1_21_11_name_reads_the_rule_it_renamed():
+    # natural_health_regeneration is naturalRegeneration renamed (GameRules of 26.1); raids, which
+    # replaced disableRaids with the opposite meaning, is a rule of its own
+    rules = WorldState().gamerules
+    rules.set("natural_health_regeneration", "false")
+    assert rules.get("naturalRegeneration") == "false"
+    assert (rules.get("raids"), rules.get("disableRaids")) == ("true", "false")
+
+
 def test_objectives_and_wildcard(tmp_path):
     body = ("scoreboard objectives add o dummy\nscoreboard objectives add p dummy\n"
             "execute store result score #n o run scoreboard objectives add q dummy\n"
