@@ -117,6 +117,8 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
             state.teams, entity, attacker):
         return False
     if entity.is_player:
+        if _ruled_out(state, source):
+            return False
         amount = _difficulty_scaled(state, source, amount)
         if amount == 0.0:
             return False
@@ -137,6 +139,19 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
 # other vanilla type scales only when a living entity that is not a player causes it
 # (DamageScaling.WHEN_CAUSED_BY_LIVING_NON_PLAYER)
 ALWAYS_SCALED = frozenset("minecraft:" + t for t in ("explosion", "player_explosion", "sonic_boom", "bad_respawn_point"))
+
+
+# Player.isInvulnerableTo: the damage type tags a game rule turns off for players
+_DAMAGE_RULES = (("minecraft:is_drowning", "drowningDamage"), ("minecraft:is_fall", "fallDamage"),
+                 ("minecraft:is_fire", "fireDamage"), ("minecraft:is_freezing", "freezeDamage"))
+
+
+def _ruled_out(state, source: DamageSource) -> bool:
+    """Whether a game rule spares players this damage (the first of the type's tags decides)."""
+    for tag, rule in _DAMAGE_RULES:
+        if state.resources.in_tag("damage_type", tag, source.type):
+            return state.gamerules.get(rule) == "false"
+    return False
 
 
 def _difficulty_scaled(state, source: DamageSource, amount: float) -> float:

@@ -144,3 +144,17 @@ def test_a_players_damage_scales_with_the_difficulty(tmp_path, backend, difficul
     emu.call("t:go")
     healths = {e.player_name: float(e.data["Health"]) for e in emu.state.entities.entities if e.is_player}
     assert (healths["A"], healths["B"], healths["C"]) == (by_zombie, explosion, fall)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_damage_game_rules_spare_players(tmp_path, backend):
+    # Player.isInvulnerableTo: #is_drowning, #is_fall, #is_fire and #is_freezing damage does nothing
+    # to a player while drowningDamage, fallDamage, fireDamage and freezeDamage are false; mobs take it
+    emu = emulator(tmp_path, backend, {
+        "t:go": "gamerule fallDamage false\ngamerule fireDamage false\nsummon pig 0 0 0 {Tags:[p],NoAI:1b}\n"
+                "damage A 4 minecraft:fall\ndamage A 4 minecraft:lava\ndamage A 3 minecraft:freeze\n"
+                "damage @e[tag=p,limit=1] 4 minecraft:fall"})
+    emu.add_player("A", gamemode="survival")
+    emu.call("t:go")
+    assert float(_player(emu).data["Health"]) == 17.0  # only the freeze
+    assert _pig_health(emu) == 6.0
