@@ -335,9 +335,14 @@ def remove_modifier(entity, name: str, modifier_id) -> bool:
 
 
 def _changed(entity) -> None:
-    """After an attribute change: the health within the new maximum, the size at the new scale."""
+    """After an attribute change: the health and the absorption within their new maximums
+    (LivingEntity.onAttributeUpdated), the size at the new scale."""
     entity.max_health_seen = None
     _sync_health(entity)
+    absorption = entity.data.get("AbsorptionAmount")
+    if (is_living(entity.type) and is_numeric(absorption) and numeric_value(absorption) > 0  # else read nothing
+            and numeric_value(absorption) > attribute_value(entity, "max_absorption")):
+        entity.data["AbsorptionAmount"] = Float(float(F32(attribute_value(entity, "max_absorption"))))
     entity.refresh_sizes()
 
 
@@ -646,6 +651,39 @@ def _longer(a: int, b: int) -> bool:
     return b != INFINITE and (a == INFINITE or a > b)
 
 
+# MobEffects.register: the attribute modifier an effect adds while it lasts, transient (not saved),
+# its amount x (amplifier + 1) (MobEffect.AttributeTemplate.create): (attribute, id, amount, operation)
+EFFECT_MODIFIERS = {
+    "minecraft:speed": ("movement_speed", "effect.speed", float(F32(0.2)), "add_multiplied_total"),
+    "minecraft:slowness": ("movement_speed", "effect.slowness", float(F32(-0.15)), "add_multiplied_total"),
+    "minecraft:haste": ("attack_speed", "effect.haste", float(F32(0.1)), "add_multiplied_total"),
+    "minecraft:mining_fatigue": ("attack_speed", "effect.mining_fatigue", float(F32(-0.1)), "add_multiplied_total"),
+    "minecraft:strength": ("attack_damage", "effect.strength", 3.0, "add_value"),
+    "minecraft:weakness": ("attack_damage", "effect.weakness", -4.0, "add_value"),
+    "minecraft:health_boost": ("max_health", "effect.health_boost", 4.0, "add_value"),
+    "minecraft:absorption": ("max_absorption", "effect.absorption", 4.0, "add_value"),
+    "minecraft:luck": ("luck", "effect.luck", 1.0, "add_value"),
+    "minecraft:unluck": ("luck", "effect.unluck", -1.0, "add_value"),
+    "minecraft:jump_boost": ("safe_fall_distance", "effect.jump_boost", 1.0, "add_value"),
+}
+
+
+def _effect_modifier(entity, effect_id: str, amplifier: int | None) -> None:
+    """MobEffect.addAttributeModifiers (removeAttributeModifiers with no amplifier) of the effect's
+    modifier, on an entity that has the attribute."""
+    found = EFFECT_MODIFIERS.get(effect_id)
+    if found is None or not has_attribute(entity.type, found[0], entity.release):
+        return
+    name, modifier_id, amount, operation = found
+    set_transient(entity, name, "minecraft:" + modifier_id,
+                  None if amplifier is None else (amount * (amplifier + 1), operation))
+
+
+def _absorb(entity, amount: float) -> None:
+    """LivingEntity.setAbsorptionAmount: clamped to 0..the max_absorption attribute."""
+    entity.data["AbsorptionAmount"] = Float(float(F32(min(max(amount, 0.0), attribute_value(entity, "max_absorption")))))
+
+
 def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, visible: bool) -> bool:
     """LivingEntity.addEffect: a new effect, or MobEffectInstance.update of the one there (a higher
     amplifier replaces it, the same amplifier with a longer duration extends it, a change of
@@ -656,15 +694,20 @@ def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, vi
     if current is None:
         effects(entity).append(Compound(id=String(effect_id), amplifier=Byte(amplifier), duration=Int(duration),
                                         ambient=Byte(0), show_particles=Byte(int(visible)), show_icon=Byte(1)))
-        return True
-    old_amp, old_duration = _amplifier(current), int(_number(current.get("duration")))
-    changed = False
-    if amplifier > old_amp or (amplifier == old_amp and _longer(duration, old_duration)):
-        current["amplifier"], current["duration"] = Byte(amplifier), Int(duration)
+        _effect_modifier(entity, effect_id, amplifier & 0xFF)  # onEffectAdded
         changed = True
-    if bool(_number(current.get("show_particles"), 1)) != visible:
-        current["show_particles"] = Byte(int(visible))
-        changed = True
+    else:
+        old_amp, old_duration = _amplifier(current), int(_number(current.get("duration")))
+        changed = False
+        if amplifier > old_amp or (amplifier == old_amp and _longer(duration, old_duration)):
+            current["amplifier"], current["duration"] = Byte(amplifier), Int(duration)
+            _effect_modifier(entity, effect_id, _amplifier(current))  # onEffectUpdated: removed, added again
+            changed = True
+        if bool(_number(current.get("show_particles"), 1)) != visible:
+            current["show_particles"] = Byte(int(visible))
+            changed = True
+    if effect_id == "minecraft:absorption":  # AbsorptionMobEffect.onEffectStarted, for every addEffect
+        _absorb(entity, max(_number(entity.data.get("AbsorptionAmount")), float(4 * (1 + (amplifier & 0xFF)))))
     return changed
 
 
@@ -708,6 +751,9 @@ def clear_effects(entity, effect_id: str | None = None) -> bool:
     """Remove every effect, or the one given; False when there was none to remove."""
     kept = List(e for e in effects(entity) if effect_id is not None and str(e.get("id", "")) != effect_id)
     removed = len(effects(entity)) != len(kept)
+    for effect in effects(entity):
+        if effect not in kept:  # onEffectsRemoved
+            _effect_modifier(entity, str(effect.get("id", "")), None)
     entity.data["active_effects"] = kept
     _drop_if_empty(entity)
     return removed
@@ -733,7 +779,7 @@ def tick_is_idle(state) -> bool:
         if found is None and not hurting and _not_hurt(hurt_time) and not entity.is_player:
             continue  # the common case, every tick: no effect, no hurt time, no hurt timer anywhere
         if isinstance(found, List) and any(int(_number(e.get("duration"))) != INFINITE or str(e.get("id", "")) in TICKING
-                                           for e in found):
+                                           or str(e.get("id", "")) == "minecraft:absorption" for e in found):
             return False
         if entity.is_player and _food_busy(state, entity):
             return False
@@ -825,10 +871,12 @@ def _tick_effects(state, entity, found: List, harm) -> bool:
                     apply_instant(state, entity, effect_id, _amplifier(effect), harm)
                 else:
                     _apply_tick(state, entity, effect_id, _amplifier(effect), harm)
-        if duration == INFINITE:
+        spent = effect_id == "minecraft:absorption" and duration != 0 and _number(entity.data.get("AbsorptionAmount")) <= 0
+        if duration == INFINITE and not spent:
             continue
-        if duration <= 1:
+        if duration <= 1 or spent:  # AbsorptionMobEffect.applyEffectTick: gone with the absorption
             found.remove(effect)
+            _effect_modifier(entity, effect_id, None)
             expired = True
         else:
             effect["duration"] = Int(duration - 1)

@@ -158,3 +158,38 @@ def test_damage_game_rules_spare_players(tmp_path, backend):
     emu.call("t:go")
     assert float(_player(emu).data["Health"]) == 17.0  # only the freeze
     assert _pig_health(emu) == 6.0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_effects_modify_attributes_while_they_last(tmp_path, backend):
+    # MobEffects.register: speed adds 0.2F x (amplifier + 1) to movement_speed, multiplied total;
+    # strength 3 x (amplifier + 1) attack damage; transient (AttributeMap.addTransientAttributeModifiers),
+    # removed with the effect (onEffectsRemoved)
+    emu = emulator(tmp_path, backend, {
+        "t:go": "summon zombie 0 0 0 {Tags:[z],NoAI:1b}\neffect give @e[tag=z] speed 1 1\n"
+                "effect give @e[tag=z] strength 1 0",
+        "t:read": "execute store result score #speed o run attribute @e[tag=z,limit=1] generic.movement_speed get 100000\n"
+                  "execute store result score #damage o run attribute @e[tag=z,limit=1] generic.attack_damage get 10"})
+    emu.call("t:go")
+    emu.call("t:read")
+    # a zombie's 0.23 x (1 + 2 x 0.2F), its 3 attack damage + 3
+    assert (emu.score("#speed", "o"), emu.score("#damage", "o")) == (32200, 60)
+    emu.tick(25)
+    emu.call("t:read")
+    assert (emu.score("#speed", "o"), emu.score("#damage", "o")) == (23000, 30)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_absorption_gives_its_hearts_and_goes_with_them(tmp_path, backend):
+    # AbsorptionMobEffect: max_absorption + 4 x (amplifier + 1); onEffectStarted sets the absorption
+    # to max(current, 4 x (amplifier + 1)); its tick removes it once the absorption is gone
+    emu = emulator(tmp_path, backend, {"t:go": "summon pig 0 0 0 {Tags:[p],NoAI:1b}\n"
+                                               "effect give @e[tag=p] absorption 30 1",
+                                       "t:hit": "damage @e[tag=p,limit=1] 9"})
+    emu.call("t:go")
+    pig = next(e for e in emu.state.entities.entities if "p" in e.tags)
+    assert float(pig.data["AbsorptionAmount"]) == 8.0
+    emu.call("t:hit")
+    assert (float(pig.data["AbsorptionAmount"]), float(pig.data["Health"])) == (0.0, 9.0)
+    emu.tick(2)
+    assert "active_effects" not in pig.data
