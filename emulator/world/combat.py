@@ -116,6 +116,9 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
     if entity.is_player and attacker is not None and attacker.is_player and not teams.can_harm(
             state.teams, entity, attacker):
         return False
+    if (living.effect_amplifier(entity, "minecraft:fire_resistance") is not None
+            and state.resources.in_tag("damage_type", "minecraft:is_fire", source.type)):
+        return False  # LivingEntity.hurtServer: fire resistance refuses #is_fire damage
     if entity.is_player:
         if _ruled_out(state, source):
             return False

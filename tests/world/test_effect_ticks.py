@@ -193,3 +193,14 @@ def test_absorption_gives_its_hearts_and_goes_with_them(tmp_path, backend):
     assert (float(pig.data["AbsorptionAmount"]), float(pig.data["Health"])) == (0.0, 9.0)
     emu.tick(2)
     assert "active_effects" not in pig.data
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_fire_resistance_refuses_fire_damage(tmp_path, backend):
+    # LivingEntity.hurtServer: #is_fire damage does nothing with fire resistance; other damage does
+    emu = emulator(tmp_path, backend, {"t:go": "summon pig 0 0 0 {Tags:[p],NoAI:1b}\n"
+                                               "effect give @e[tag=p] fire_resistance 10\n"
+                                               "damage @e[tag=p,limit=1] 4 minecraft:lava\n"
+                                               "damage @e[tag=p,limit=1] 3 minecraft:generic"})
+    emu.call("t:go")
+    assert _pig_health(emu) == 7.0
