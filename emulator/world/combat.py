@@ -127,7 +127,7 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
             return False
     full = living.takes_full_hurt(state, entity, bypasses)
     if not living.hurt(state, entity, amount, bypasses, source.type, _armour_wear,
-                       lambda damage: record_damage(state, entity, source, damage)):
+                       lambda damage: record_damage(state, entity, source, damage), source.attacker):
         return False
     remember_attacker(state, entity, source)
     if full:

@@ -35,7 +35,6 @@ import numpy as np
 from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
 from emulator.world import recipes, statistics
-from emulator.world.errors import Unmodelled
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.semantics import wrap32
 
@@ -414,7 +413,7 @@ EXHAUSTION = {**{"minecraft:" + t: 0.0 for t in (
 
 
 def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
-         damage_type: str = "minecraft:generic", wear=None, record=None) -> bool:
+         damage_type: str = "minecraft:generic", wear=None, record=None, attacker=None) -> bool:
     """LivingEntity.hurtServer without AI: refused for invulnerable entities, creative and
     spectator players (unless the type bypasses invulnerability) and the dead; within the 10 ticks
     after a hurt only the excess over the last hurt applies. Returns whether it hurt. Unless the
@@ -422,12 +421,11 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
     (hurtArmor) and armour points reduce the damage as CombatRules.getDamageAfterAbsorb does, then absorption
     (LivingEntity.actuallyHurt); a player counts ``damage_absorbed``/``damage_taken`` and the
     type's food exhaustion; ``record(damage)`` hears the damage to health when there is some
-    (CombatTracker.recordDamage). The resistance effect raises Unmodelled."""
+    (CombatTracker.recordDamage). The resistance effect reduces it after the armour
+    (:func:`_after_resistance`; ``attacker``: the responsible entity)."""
     invulnerable = entity.data.get("Invulnerable") or (entity.is_player and entity.gamemode in ("creative", "spectator"))
     if (invulnerable and not bypasses_invulnerability) or health(entity) <= 0:
         return False
-    if _effect(entity, "minecraft:resistance") is not None and not bypasses_invulnerability:
-        raise Unmodelled("the resistance effect's damage reduction")
     timers = state.hurt_timers.setdefault(entity, [0, 0.0])  # LivingEntity.invulnerableTime, lastHurt
     if not takes_full_hurt(state, entity, bypasses_invulnerability):
         if amount <= timers[1]:
@@ -439,8 +437,28 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
     armoured = not state.resources.in_tag("damage_type", "minecraft:bypasses_armor", damage_type)
     if armoured and wear is not None:  # LivingEntity.getDamageAfterArmorAbsorb: hurtArmor, then the reduction
         wear(state, entity, dealt, damage_type)
-    _actually_hurt(state, entity, _after_armour(entity, dealt, not armoured), damage_type, record)
+    after = _after_resistance(state, entity, _after_armour(entity, dealt, not armoured), damage_type, attacker)
+    _actually_hurt(state, entity, after, damage_type, record)
     return True
+
+
+def _after_resistance(state, entity, damage, damage_type: str, attacker):
+    """LivingEntity.getDamageAfterMagicAbsorb's resistance effect: (amplifier + 1) x 5 of 25 parts
+    less (float math; none for #bypasses_effects and #bypasses_resistance); the damage resisted x 10,
+    rounded, counts as a player's ``damage_resisted``, else as the attacking player's
+    ``damage_dealt_resisted``."""
+    effect = _effect(entity, "minecraft:resistance")
+    if effect is None or any(state.resources.in_tag("damage_type", tag, damage_type)
+                             for tag in ("minecraft:bypasses_effects", "minecraft:bypasses_resistance")):
+        return damage
+    old = F32(damage)
+    damage = max(F32(old * F32(25 - (_amplifier(effect) + 1) * 5)) / F32(25.0), F32(0.0))
+    resisted = F32(old - damage)
+    counted = entity if entity.is_player else attacker if attacker is not None and attacker.is_player else None
+    if counted is not None and F32(0.0) < resisted < F32(3.4028235e37):
+        stat = "damage_resisted" if counted is entity else "damage_dealt_resisted"
+        statistics.award(state, counted, statistics.stat_name("custom", stat), math.floor(resisted * F32(10.0) + F32(0.5)))
+    return damage
 
 
 def takes_full_hurt(state, entity, bypasses_invulnerability: bool = False) -> bool:

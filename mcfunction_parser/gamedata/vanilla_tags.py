@@ -55,6 +55,9 @@ BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
             "dry_out sweet_berry_bush freeze stalagmite outside_border generic_kill campfire").split()),
         # the falls CombatTracker.getMostSignificantFall weighs
         "minecraft:is_fall": frozenset({"minecraft:fall", "minecraft:ender_pearl", "minecraft:stalagmite"}),
+        # what the resistance effect does not reduce (LivingEntity.getDamageAfterMagicAbsorb)
+        "minecraft:bypasses_effects": frozenset({"minecraft:starve"}),
+        "minecraft:bypasses_resistance": frozenset({"minecraft:out_of_world", "minecraft:generic_kill"}),
         # the players' damage game rules (Player.isInvulnerableTo)
         "minecraft:is_drowning": frozenset({"minecraft:drown"}),
         "minecraft:is_freezing": frozenset({"minecraft:freeze"}),

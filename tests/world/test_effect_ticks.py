@@ -204,3 +204,23 @@ def test_fire_resistance_refuses_fire_damage(tmp_path, backend):
                                                "damage @e[tag=p,limit=1] 3 minecraft:generic"})
     emu.call("t:go")
     assert _pig_health(emu) == 7.0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_resistance_takes_a_fifth_per_level(tmp_path, backend):
+    # LivingEntity.getDamageAfterMagicAbsorb: (amplifier + 1) x 5 of 25 parts less, after armour; the
+    # resisted damage x 10 is the player's damage_resisted; #bypasses_resistance (generic_kill) is not
+    # reduced
+    emu = emulator(tmp_path, backend, {
+        "t:go": "scoreboard objectives add resisted minecraft.custom:minecraft.damage_resisted\n"
+                "effect give A resistance 10 1\ndamage A 10 minecraft:generic\n"
+                "summon pig 0 0 0 {Tags:[p],NoAI:1b}\neffect give @e[tag=p] resistance 10 4\ndamage @e[tag=p,limit=1] 5",
+        "t:kill": "damage @e[tag=p,limit=1] 3 minecraft:generic_kill"})
+    emu.add_player("A", gamemode="survival")
+    emu.call("t:go")
+    # 10 x 15 / 25 = 6 to the player (4 resisted), nothing to the pig at amplifier 4
+    assert float(_player(emu).data["Health"]) == 14.0 and emu.score("A", "resisted") == 40
+    assert _pig_health(emu) == 10.0
+    emu.tick(20)
+    emu.call("t:kill")
+    assert _pig_health(emu) == 7.0
