@@ -19,7 +19,8 @@ The rules (1.21): a campfire or candle (or candle cake) that is unlit and not wa
   Where it stands on no sturdy face it burns only beside flammable blocks, which the emulator does
   not know: not modelled. The fire's own ticks (ageing, spreading, going out: FireBlock.tick,
   first due 30 to 39 ticks after it was lit) are not modelled: a fire still there when its first
-  tick could come is reported as not modelled.
+  tick could come is reported as not modelled, unless doFireTick is false (from 1.21.11,
+  fire_spread_radius_around_player 0), when the tick does nothing but come again.
 The use then fires ``placed_block`` at the fire's block with the flint and steel, and wears it by
 one (ItemStack.hurtAndBreak: Unbreaking, breaking, not in creative); lighting a campfire or candle
 wears it without ``placed_block``. Game events and sounds are not observable by a pack.
@@ -98,7 +99,20 @@ def flint_and_steel(state, player, hand: str, access, stack, pos, face: str) -> 
     return "consume"
 
 
+SPREAD_RADIUS_RULE = (1, 21, 11)  # fire_spread_radius_around_player replaced doFireTick
+
+
 def _unmodelled_fire_tick(state, pos) -> None:
+    """FireBlock.tick: the next tick is scheduled, then with doFireTick (from 1.21.11, a
+    fire_spread_radius_around_player that is not 0: ServerLevel.canSpreadFireAround) the fire ages,
+    spreads and goes out, which is not modelled. Without it the fire stays: nothing to model."""
+    if tuple(state.version) >= SPREAD_RADIUS_RULE:
+        still = state.gamerules.get("fire_spread_radius_around_player") == "0"
+    else:
+        still = state.gamerules.get("doFireTick") == "false"
+    if still:  # the next tick's delay (30 + nextInt(10)) draws from the level's random: its earliest
+        state.block_ticks.schedule(pos, "minecraft:fire", FIRE_TICK_DELAY, state.gametime, _unmodelled_fire_tick)
+        return
     state.error(f"the fire at {pos[0]} {pos[1]} {pos[2]} burning on (FireBlock.tick: ageing, spreading, "
                 "going out)", severity="warning", unmodelled=True)
 

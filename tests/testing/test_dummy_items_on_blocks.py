@@ -123,6 +123,19 @@ def test_flint_and_steel_on_a_frame_too_small_lights_a_fire_whose_ticks_are_not_
     assert "FireBlock.tick" in result.report()
 
 
+def test_a_fire_without_fire_ticks_stays_and_is_no_gap(tmp_path):
+    """FireBlock.tick schedules its next tick, then does nothing more without doFireTick: the fire
+    stands, as modelled, and the test is conclusive."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~4 ~5 ~3 air\ngamerule doFireTick false\n" + (
+        "fill ~ ~ ~1 ~2 ~3 ~1 obsidian\n"
+        "fill ~1 ~1 ~1 ~1 ~2 ~1 air\n"
+        "item replace entity @s weapon.mainhand with flint_and_steel\n"
+        "dummy @s use block ~1 ~ ~1 up\n"
+        "await delay 80t\n"
+        "assert block ~1 ~1 ~1 fire[age=0]\n"))
+    assert result.status == "passed", result.report()
+
+
 def test_flint_and_steel_lights_a_campfire(tmp_path):
     """CampfireBlock.canLight: unlit, not waterlogged: lit=true, the item worn."""
     result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
