@@ -707,7 +707,10 @@ def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, vi
     amplifier replaces it, the same amplifier with a longer duration extends it, a change of
     particles shows); False when nothing changed. Instant effects are kept like the others: the
     entity's tick applies them (:func:`tick_living`), so a weaker one given while a stronger one
-    waits changes nothing."""
+    waits changes nothing. An effect the entity's type refuses (:data:`REFUSED_EFFECTS`) is not
+    added."""
+    if entity.type in REFUSED_EFFECTS.get(effect_id, ()):
+        return False
     current = _effect(entity, effect_id)
     if current is None:
         effects(entity).append(Compound(id=String(effect_id), amplifier=Byte(amplifier), duration=Int(duration),
@@ -743,6 +746,19 @@ def _amplifier(effect: Compound) -> int:
 UNDEAD = frozenset(f"minecraft:{n}" for n in (
     "zombie", "husk", "drowned", "zombie_villager", "zombified_piglin", "zoglin", "zombie_horse", "skeleton",
     "stray", "wither_skeleton", "bogged", "skeleton_horse", "phantom", "wither"))
+
+# LivingEntity.canBeAffected (#ignores_poison_and_regen: #undead; #immune_to_infested,
+# #immune_to_oozing) and its overrides (Spider, AbstractNautilus, WitherBoss, WitherSkeleton,
+# Parched): the effects an entity type refuses
+REFUSED_EFFECTS = {
+    "minecraft:regeneration": UNDEAD,
+    "minecraft:poison": UNDEAD | {"minecraft:spider", "minecraft:cave_spider", "minecraft:nautilus",
+                                  "minecraft:zombie_nautilus"},
+    "minecraft:wither": frozenset({"minecraft:wither", "minecraft:wither_skeleton"}),
+    "minecraft:infested": frozenset({"minecraft:silverfish"}),
+    "minecraft:oozing": frozenset({"minecraft:slime"}),
+    "minecraft:weakness": frozenset({"minecraft:parched"}),
+}
 
 
 def _harm(state, entity, amount: float, damage_type: str = "minecraft:magic") -> bool:

@@ -224,3 +224,19 @@ def test_resistance_takes_a_fifth_per_level(tmp_path, backend):
     emu.tick(20)
     emu.call("t:kill")
     assert _pig_health(emu) == 7.0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_an_entity_refuses_the_effects_its_type_ignores(tmp_path, backend):
+    # LivingEntity.canBeAffected: the undead (#ignores_poison_and_regen) take neither poison nor
+    # regeneration, spiders no poison (Spider.canBeAffected); `effect give` then fails
+    # (commands.effect.give.failed) and counts nothing
+    emu = emulator(tmp_path, backend, {
+        "t:go": "summon zombie 0 0 0 {Tags:[z],NoAI:1b}\nsummon spider 2 0 0 {Tags:[s],NoAI:1b}\n"
+                "execute store success score #zp o run effect give @e[tag=z] poison 5\n"
+                "execute store success score #zr o run effect give @e[tag=z] regeneration 5\n"
+                "execute store success score #zs o run effect give @e[tag=z] speed 5\n"
+                "execute store success score #sp o run effect give @e[tag=s] poison 5\n"
+                "execute store success score #sw o run effect give @e[tag=s] weakness 5"})
+    emu.call("t:go")
+    assert [emu.score(h, "o") for h in ("#zp", "#zr", "#zs", "#sp", "#sw")] == [0, 0, 1, 0, 1]
