@@ -74,7 +74,11 @@ class Emulator:
         compiling them again: many independent runs of one pack (a sweep's shots) share one
         compiled program. The new world interns the names the program was compiled with (score
         holders, objectives, entity tags and types) and nothing else of the old one."""
-        old = self._runtime().state
+        runtime = self._runtime()
+        if runtime.reloaded:  # the backend runs the packs a reload read: compile the loaded ones again
+            self._start_world(world_entities.new_state(self.shuffle), compiled=False)
+            return
+        old = runtime.state
         state = world_entities.new_state(self.shuffle)
         state.scoreboard.intern_names_of(old.scoreboard)
         state.entities.table.intern_names_of(old.entities.table)

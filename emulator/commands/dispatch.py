@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from mcfunction_parser import ast
 
-from . import (advancements, blocks, bossbar, conditions, data, entities, items, level, living, packtest, recipes,
-               scoreboard, server, teams)
+from . import (advancements, blocks, bossbar, conditions, data, entities, items, level, living, packs, packtest,
+               recipes, scoreboard, server, teams)
 
 # Commands that only show or play something to players: no world state a pack can test changes
 # (their result, the number of players reached, is the one thing left unmodelled).
@@ -32,7 +32,7 @@ HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **serve
 # the commands the parser keeps as text, by name
 GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **recipes.HANDLERS,
                     **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS, **teams.HANDLERS,
-                    **entities.GENERIC_HANDLERS, **level.GENERIC_HANDLERS}
+                    **entities.GENERIC_HANDLERS, **level.GENERIC_HANDLERS, **packs.GENERIC_HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

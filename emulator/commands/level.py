@@ -37,7 +37,7 @@ RESPAWN_COMPOUND_VERSION = (1, 21, 5)  # ServerPlayer saves ``respawn`` (Respawn
 MAX_BORDER_CENTER = 2.9999984e7
 
 
-class _Words:
+class Words:
     """A generic command's arguments read in order (the command tree already checked them)."""
 
     def __init__(self, env, cmd: ast.GenericCommand) -> None:
@@ -70,7 +70,7 @@ def weather(env, cmd: ast.GenericCommand, ctx) -> int:
     """``weather clear|rain|thunder [DURATION]``; without a duration one is drawn (clear:
     RAIN_DELAY, rain: RAIN_DURATION, thunder: THUNDER_DURATION) from a random that is not the
     level's (warned)."""
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     kind = words.word()
     given = words.read(lambda r: duration(r, 1)) if words.more() else -1
     state = env.state
@@ -87,7 +87,7 @@ def weather(env, cmd: ast.GenericCommand, ctx) -> int:
 
 def difficulty(env, cmd: ast.GenericCommand, ctx) -> int:
     settings = env.state.level_settings
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     if not words.more():
         return DIFFICULTIES.index(settings.difficulty)
     wanted = words.word()
@@ -103,14 +103,14 @@ def seed(env, cmd: ast.GenericCommand, ctx) -> int:
 
 def defaultgamemode(env, cmd: ast.GenericCommand, ctx) -> int:
     """The game mode players joining from now on start in; no mode is forced, so none changes."""
-    env.state.level_settings.default_gamemode = _Words(env, cmd).word()
+    env.state.level_settings.default_gamemode = Words(env, cmd).word()
     return 0
 
 
 # ---------------------------------------------------------------------- worldborder
 def worldborder(env, cmd: ast.GenericCommand, ctx) -> int:
     settings = env.state.level_settings
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     action = words.word()
     if action == "get":  # getSize: Mth.floor(size + 0.5)
         return math.floor(settings.border_size + 0.5)
@@ -167,7 +167,7 @@ def _coordinate(word: str, base: float) -> float:
 
 
 # ---------------------------------------------------------------------- spawn
-def _spawn_arguments(env, cmd, words: _Words, ctx) -> tuple[tuple[int, int, int], np.float32]:
+def _spawn_arguments(env, cmd, words: Words, ctx) -> tuple[tuple[int, int, int], np.float32]:
     """An optional spawnable block position (the execution position's block without one) and an
     optional angle (0 without one): AngleArgument (wrapDegrees, ``~`` from the execution yaw), or
     from 1.21.9 a rotation, whose yaw is kept (its pitch is not modelled: warned)."""
@@ -189,7 +189,7 @@ def _spawn_arguments(env, cmd, words: _Words, ctx) -> tuple[tuple[int, int, int]
 
 
 def setworldspawn(env, cmd: ast.GenericCommand, ctx) -> int:
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     pos, angle = _spawn_arguments(env, cmd, words, ctx)
     if ctx.dimension != OVERWORLD:  # sendFailure, not an exception: the command succeeds with 0
         return 0
@@ -199,7 +199,7 @@ def setworldspawn(env, cmd: ast.GenericCommand, ctx) -> int:
 
 
 def spawnpoint(env, cmd: ast.GenericCommand, ctx) -> int:
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     state = env.state
     if words.more():
         players = entities.players_found(state, words.read(selectors.target), ctx)
@@ -233,7 +233,7 @@ def spreadplayers(env, cmd: ast.GenericCommand, ctx) -> int:
     """``spreadplayers CENTER SPREAD MAXRANGE [under MAXHEIGHT] RESPECTTEAMS TARGETS``
     (:mod:`emulator.world.spreading`); the centre is a Vec2Argument (an absolute integer centred),
     MAXHEIGHT the level's top without ``under``."""
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     center = (_coordinate(words.word(), ctx.pos[0]), _coordinate(words.word(), ctx.pos[2]))
     distance, max_range = float(words.word()), float(words.word())
     state = env.state
@@ -250,7 +250,7 @@ def spreadplayers(env, cmd: ast.GenericCommand, ctx) -> int:
 
 def stopwatch(env, cmd: ast.GenericCommand, ctx) -> int:
     """``stopwatch create|query|restart|remove ID [SCALE]`` (:mod:`emulator.world.stopwatches`)."""
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     action, stopwatch_id = words.word(), words.word()
     if action == "query":
         return stopwatches.query(env.state, stopwatch_id, float(words.word()) if words.more() else 1.0)
@@ -269,7 +269,7 @@ def forceload(env, cmd: ast.GenericCommand, ctx) -> int:
     none did), ``remove all`` (0), ``query`` (how many are marked: 0 is a failure message, not a
     failure) and ``query POS`` (1, or a failure). Every chunk is loaded here whether marked or not:
     the marks are what a pack reads back."""
-    words = _Words(env, cmd)
+    words = Words(env, cmd)
     action = words.word()
     forced = env.state.forced_chunks.setdefault(ctx.dimension, set())
     if action == "query":
@@ -301,7 +301,7 @@ def forceload(env, cmd: ast.GenericCommand, ctx) -> int:
     return len(changed)
 
 
-def _column(words: _Words, ctx) -> tuple[int, int]:
+def _column(words: Words, ctx) -> tuple[int, int]:
     """A ColumnPosArgument: its block column (BlockPos.containing of the source's x and z plus a
     relative offset)."""
     column = words.read(lambda r: vec2(r, integers=True))

@@ -104,18 +104,24 @@ class Profiler:
         self.stacks = stacks
         self.roots = RootStats()
         runtime.root_listeners.append(self.roots)
+        self.earlier = _Counts()  # what the backend counted before a reload gave it new packs
+        runtime.reload_listeners.append(self._keep_counts)
+
+    def _keep_counts(self) -> None:
+        self.earlier = self.earlier.plus(_Counts.of(self.runtime.backend, self.runtime.packs))
 
     def profile(self) -> Profile:
         runtime, backend, roots = self.runtime, self.runtime.backend, self.roots
-        lines = backend.line_counts()
-        profile = Profile(lines, _self_costs(lines, runtime.packs), ticks=list(runtime.commands_per_tick),
+        counts = self.earlier.plus(_Counts.of(backend, runtime.packs))
+        profile = Profile(dict(counts.lines), _self_costs(counts.lines, counts.function_of),
+                          ticks=list(runtime.commands_per_tick),
                           backend=backend.name, limit=runtime.state.gamerules.max_command_chain_length,
                           outside_ticks=runtime.commands_outside_ticks, roots=dict(roots.by_function))
         if isinstance(backend, InstructionCounts):
-            profile.functions_total = _folded(backend.function_totals())
-            profile.calls = dict(_folded(backend.call_counts()) + roots.calls())
-            profile.instructions = backend.instruction_counts()
-            profile.host = _host_runs(backend)
+            profile.functions_total = counts.totals
+            profile.calls = dict(counts.calls + roots.calls())
+            profile.instructions = counts.instructions
+            profile.host = dict(counts.host)
         elif self.stacks is not None:
             profile.functions_total = self.stacks.totals(roots.calls())
             profile.calls = dict(self.stacks.calls + roots.calls())
@@ -123,8 +129,40 @@ class Profiler:
         return profile
 
 
-def _self_costs(lines: dict[tuple[str, int], int], packs) -> dict[str, int]:
-    function_of = {f.path: fid for fid, f in packs.functions.items()}
+@dataclass
+class _Counts:
+    """A backend's counters read at once, and the function of each source path then."""
+
+    lines: Counter = field(default_factory=Counter)
+    function_of: dict[str, str] = field(default_factory=dict)
+    totals: Counter = field(default_factory=Counter)
+    calls: Counter = field(default_factory=Counter)
+    instructions: dict = field(default_factory=dict)
+    host: Counter = field(default_factory=Counter)
+
+    @classmethod
+    def of(cls, backend, packs) -> "_Counts":
+        counts = cls(Counter(backend.line_counts()), {f.path: fid for fid, f in packs.functions.items()})
+        if isinstance(backend, InstructionCounts):
+            counts.totals = _folded(backend.function_totals())
+            counts.calls = _folded(backend.call_counts())
+            counts.instructions = backend.instruction_counts()
+            counts.host = Counter(_host_runs(backend))
+        return counts
+
+    def plus(self, later: "_Counts") -> "_Counts":
+        if not self.function_of:  # nothing counted before
+            return later
+        instructions = dict(self.instructions)
+        for line, ops in later.instructions.items():
+            before = instructions.get(line, [])
+            same = [op for op, _ in before] == [op for op, _ in ops]
+            instructions[line] = [(op, a + b) for (op, a), (_, b) in zip(before, ops)] if same else before + ops
+        return _Counts(self.lines + later.lines, {**self.function_of, **later.function_of}, self.totals + later.totals,
+                       self.calls + later.calls, instructions, self.host + later.host)
+
+
+def _self_costs(lines: dict[tuple[str, int], int], function_of: dict[str, str]) -> dict[str, int]:
     costs: Counter = Counter()
     for (path, _line), count in lines.items():
         costs[function_of.get(path, path)] += count

@@ -55,10 +55,13 @@ from emulator.world import (advancements, block_contact, block_entity_ticks, blo
                            effect_clouds, equipment, falling, living, motion, nbt_ops, player_actions, projectiles,
                            statistics)
 from emulator.world.context import Context
+from emulator.world.pack_repository import PackRepository
 from emulator.world.resources import Resources
 from emulator.world.dimensions import Levels
 from emulator.world.state import WorldState
 from mcfunction_parser.nbt import Compound, String
+from mcfunction_parser.pack.loader import load_packs
+from mcfunction_parser.pack.versions import version_label
 from mcfunction_parser.parse import parse_function
 
 COMMAND_BLOCK_FUNCTION = "dpemu:command_block"  # the macro function a command block's command runs in
@@ -121,6 +124,7 @@ class Runtime:
         state.resources = Resources.from_packs(packs)
         state.entities.version = tuple(packs.version)
         state.entities.table.levels = Levels.from_packs(packs.dimensions, packs.dimension_types)
+        state.pack_repository = PackRepository.from_roots(pack.root for pack in packs.packs)
         advancements.warn_unobserved(state)
         if compiled:
             backend.new_world(state)
@@ -129,11 +133,15 @@ class Runtime:
         self.backend = backend
         self.packs = packs
         self.state = state
+        self.sanitize = sanitize
         self.loaded = False
+        self.reloaded = False  # the packs were reloaded: the backend runs other packs than it was given
+        self._sweeping = False  # running the functions a tick started (a reload waits for their end)
         self.commands_per_tick: list[int] = []
         self.commands_outside_ticks = 0  # API calls made between ticks
         self.max_root_cost = 0  # the costliest root so far (quota headroom = limit - this)
         self.root_listeners: list[RootListener] = []
+        self.reload_listeners: list[Callable[[], None]] = []  # told before a reload gives the backend new packs
         self.rewards_cost = 0  # commands advancement rewards ran (counted in their tick)
         self._members: dict[tuple[str, int], tuple[str, ...]] = {}
         self._mixed_lists = nbt_ops.list_rules(packs.version).mixed
@@ -187,9 +195,32 @@ class Runtime:
             self.max_root_cost = result.cost
         for listener in self.root_listeners:
             listener(function_id, result)
+        if self.state.pack_repository.pending is not None and not self._sweeping:
+            self.apply_reload()
         if self.state.pending_rewards:
             self.run_rewards()
         return result
+
+    def apply_reload(self) -> None:
+        """The reload ``datapack``/``reload`` asked for (MinecraftServer.reloadResources): the packs
+        of the new selection are read again from their files, as the release the world runs, with
+        the game jar they were read with; the world stays. What the packs define is replaced
+        (functions, tags, loot, predicates, advancements, recipes); the dimensions stay (the game
+        reads them once, when the server starts). The next tick runs ``#minecraft:load`` first."""
+        repository = self.state.pack_repository
+        selection, repository.pending = repository.pending, None
+        packs = load_packs(repository.roots(selection), version_label(self.packs.version),
+                           game_jar=self.packs.game_jar)
+        packs.add_functions(self.packs.added_functions)
+        repository.selected = selection
+        self.state.resources = Resources.from_packs(packs)
+        advancements.warn_unobserved(self.state)
+        for listener in self.reload_listeners:
+            listener()
+        self.backend.load(packs, self.state, self.sanitize)
+        self.packs, self._members = packs, {}
+        self.loaded = False  # ServerFunctionManager.replaceLibrary: postReload
+        self.reloaded = True
 
     def run_rewards(self) -> int:
         """The advancement rewards earned outside any command, each run now as a root of its own
@@ -216,7 +247,17 @@ class Runtime:
         if self.loaded:
             return 0
         self.loaded = True
-        return sum(self.call(f).cost for f in self.members(LOAD_TAG))
+        self._sweeping = True
+        try:
+            cost = sum(self.call(f).cost for f in self.members(LOAD_TAG))
+        finally:
+            self._sweeping = False
+        self._reload_if_asked()
+        return cost
+
+    def _reload_if_asked(self) -> None:
+        if self.state.pack_repository.pending is not None:
+            self.apply_reload()
 
     def tick(self) -> int:
         """Run one server tick; returns its cost (commands executed)."""
@@ -231,12 +272,17 @@ class Runtime:
         """Steps 1 and 2 of a tick: the load functions on the first, then the tick functions (the
         caller entered the list rule: :meth:`run_root` without its check)."""
         cost = 0
-        if not self.loaded:
-            self.loaded = True
-            cost += self._run_all(self.members(LOAD_TAG))
-        run_root, ran = self.backend.run_root, self._root_ran
-        for function_id in self.members(TICK_TAG):
-            cost += ran(function_id, run_root(function_id)).cost
+        self._sweeping = True  # ServerFunctionManager.tick runs each list it began, whatever reloads
+        try:
+            if not self.loaded:
+                self.loaded = True
+                cost += self._run_all(self.members(LOAD_TAG))
+                self._reload_if_asked()  # the tick functions are then the new packs'
+            run_root, ran = self.backend.run_root, self._root_ran
+            for function_id in self.members(TICK_TAG):
+                cost += ran(function_id, run_root(function_id)).cost
+        finally:
+            self._sweeping = False
         return cost
 
     def run_ticks(self, n: int) -> int:
@@ -295,9 +341,14 @@ class Runtime:
         self.max_root_cost = max(self.max_root_cost, int(costs.max()))
         for j, function_id in enumerate(members):  # every root but the last: not cut, no reward earned
             self._roots_ran(function_id, costs[j:len(costs) - 1:m])
-        self._root_ran(members[(len(costs) - 1) % m], RootResult(int(costs[-1]), None, batch.cut))
         self.commands_per_tick += costs[:last * m].reshape(last, m).sum(axis=1).tolist()
-        cost = self._end_tick(int(costs[last * m:].sum()) + self._run_all(members[len(costs) - last * m:]))
+        self._sweeping = True  # the tick's functions go on (a reload waits for their end)
+        try:
+            self._root_ran(members[(len(costs) - 1) % m], RootResult(int(costs[-1]), None, batch.cut))
+            rest = self._run_all(members[len(costs) - last * m:])
+        finally:
+            self._sweeping = False
+        cost = self._end_tick(int(costs[last * m:].sum()) + rest)
         return last + 1, int(costs[:last * m].sum()) + cost
 
     def _roots_ran(self, function_id: str, costs) -> None:
@@ -315,6 +366,7 @@ class Runtime:
     def _end_tick(self, cost: int) -> int:
         """Steps 3-6 of a tick whose functions cost ``cost``; returns the tick's whole cost."""
         state = self.state
+        self._reload_if_asked()  # asked for by a function the tick ran
         if state.clocks is not None:
             state.clocks.tick()
         # ServerLevel.tick: advanceWeatherCycle, updateSkyBrightness, then tickTime
@@ -325,7 +377,7 @@ class Runtime:
         while (entry := state.schedule.pop_due(state.gametime)) is not None:
             if entry.is_tag:
                 cost += self._run_all(self.members(entry.function))
-            else:
+            elif entry.function in self.packs.functions:  # FunctionCallback: none after a reload took it
                 cost += self.run_root(entry.function).cost
         state.block_ticks.run_due(state)
         # ServerLevel.tickTime after the scheduled functions (1.21.11: the rule is advance_time)

@@ -114,7 +114,7 @@ def _run(emu, definition: dict, key: str) -> None:
     if name is None:
         return
     function = name if ":" in name else "minecraft:" + name
-    if function in emu.packs.functions:
+    if function in emu.runtime.packs.functions:  # as a reload left them
         emu.call(function)
     else:
         emu.state.error(f"Test Batch failed for non-existent function {function}")

@@ -79,7 +79,7 @@ def load_suite(files: list[TestFile], pattern: str | None = None, with_packs=(),
             cases.append(read_test(tf.id, tf.path, shown_path(tf.path), f"t{key}", packs.version))
             key += 1
         for case in cases:
-            packs.functions.update(case.functions)
+            packs.add_functions(case.functions)
         yield packs, _in_batches(cases)
 
 
@@ -516,7 +516,7 @@ class TestSource:
         function, the other stages through emulator.commands; a stage that fails drops its context. One
         the emulator cannot evaluate here fails the test saying so."""
         emu = self.emu
-        env = Env(emu.state, emu.packs.functions, emu.packs.tags)
+        env = Env(emu.state, emu.runtime.packs.functions, emu.runtime.packs.tags)
         contexts = [self.context()]
         for stage, condition in zip(step.stages, step.conditions):
             if condition is not None:

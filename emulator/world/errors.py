@@ -175,6 +175,9 @@ MESSAGES = {
     "commands.worldborder.warning.time.failed": "Nothing changed. The world border warning is already that amount of time",
     "commands.worldborder.warning.distance.failed": "Nothing changed. The world border warning is already that distance",
     "argument.pos.outofbounds": "That position is outside the allowed boundaries.",
+    "commands.datapack.unknown": "Unknown data pack '{0}'",
+    "commands.datapack.enable.failed": "Pack '{0}' is already enabled!",
+    "commands.datapack.disable.failed": "Pack '{0}' is not enabled!",
 }
 
 EMULATOR_MESSAGES = {

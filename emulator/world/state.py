@@ -37,6 +37,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from emulator.world.pack_repository import PackRepository
 from emulator.world.biomes import BiomeCells
 from emulator.world.blocks import WORLD_RELEASE, BlockMap
 from emulator.world.advancement_progress import Progress
@@ -598,6 +599,7 @@ class WorldState:
     random: random.Random = field(default_factory=lambda: random.Random(0))  # the level's random (predicates)
     version: tuple[int, int, int] = WORLD_RELEASE  # the game release the packs run as (LoadedPacks.version)
     resources: Resources = field(default_factory=Resources)  # loot, predicates, tags, advancements
+    pack_repository: PackRepository = field(default_factory=PackRepository)  # the packs available and selected
     clocks: object = None  # 26.1+: the world clocks (emulator.world.clocks.WorldClocks)
     biomes: BiomeCells = field(default_factory=BiomeCells)  # the cells fillbiome set, per level (biomes)
     # False in the test server's world (GameTestServer: WorldOptions without generated structures);

@@ -83,6 +83,7 @@ class LoadedPacks:
     # registry -> tag id -> flattened tag: the game's own (from a game jar) merged under the packs'
     registry_tags: dict[str, dict[str, RegistryTag]] = field(default_factory=dict)
     vanilla_data: bool = False  # the game's own tags and loot tables were read from its jar
+    game_jar: str | None = None  # the jar they were read from (a reload reads it again)
     loot_tables: dict[str, JsonDocument] = field(default_factory=dict)  # id -> its file (checked: pack.loot)
     clocks: clocks.Clocks | None = None  # 26.1+: the world clocks and timelines (the game's and the packs')
     item_modifiers: dict[str, JsonDocument] = field(default_factory=dict)
@@ -91,6 +92,12 @@ class LoadedPacks:
     # "Failed to load function" and leaves it out): parsed for ``dpemu check``, absent from
     # ``functions``, so calling one fails as an unknown function and a tag requiring one fails
     refused: dict[str, Function] = field(default_factory=dict)
+    # functions made beside the files (a test runner's test functions): a reload keeps them
+    added_functions: dict[str, Function] = field(default_factory=dict)
+
+    def add_functions(self, functions: dict[str, Function]) -> None:
+        self.functions.update(functions)
+        self.added_functions.update(functions)
 
     @property
     def format(self) -> Format:
@@ -174,6 +181,7 @@ def load_packs(paths: Sequence[str | Path], mc_version: str | None = None, worke
         _apply_filters(packs, metas)
     jar = _open_jar(game_jar, version, diagnostics)
     result.vanilla_data = jar is not None
+    result.game_jar = jar[1] if jar is not None else None
     _load_functions(packs, result, workers, on_function)
     _load_tags(packs, result)
     _load_registry_tags(packs, result, jar)

@@ -26,7 +26,9 @@ their PackTest suites run on both backends:
 - toolstand: an inventory library setting a hidden armor stand's ``HandItems[0]`` (saved empty
   before 1.21.5) and mining a probe block with it to read a loot table's answer;
 - squads: a team game's teams (membership by selector and by a name before its player joins,
-  friendly fire, a prefix in chat names, empty and remove)."""
+  friendly fire, a prefix in chat names, empty and remove);
+- uninstall, with uninstall_lib beneath it: a module that uninstalls itself with ``datapack disable``
+  and is enabled again (its tick stops and starts, every load function runs again)."""
 from pathlib import Path
 
 import pytest
@@ -59,4 +61,12 @@ def test_the_packs_load_clean():
 @pytest.mark.parametrize("name,case", CASES, ids=[case.id for _, case in CASES])
 def test_pack_test_passes(name, case, backend):
     result = run_case(case, SUITES[name][0], backend)
+    assert result.status == PASSED, result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_module_uninstalls_and_reinstalls(backend):
+    (packs, cases), = load_suite(discover([HERE / "uninstall"]), with_packs=[HERE / "uninstall_lib"])
+    assert [case.id for case in cases] == ["uninstall:reinstall"]
+    result = run_case(cases[0], packs, backend)
     assert result.status == PASSED, result.report()

@@ -1,0 +1,2 @@
+scoreboard objectives add probe dummy
+scoreboard players add #loads probe 1

@@ -1,0 +1,2 @@
+scoreboard objectives add lib.data dummy
+scoreboard players add #loads lib.data 1

@@ -1,0 +1,1 @@
+scoreboard players add #ticks lib.data 1
