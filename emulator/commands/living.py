@@ -12,7 +12,7 @@ AttributeCommand.java, DamageCommand.java.
 from __future__ import annotations
 
 
-from emulator.world import advancements, combat, living
+from emulator.world import advancements, combat, living, spectating
 from emulator.world.entities import uuid_string
 from emulator.world.entity_flags import flying_after
 from emulator.world.errors import CommandFailure
@@ -280,7 +280,27 @@ def gamemode(env, cmd: ast.GenericCommand, ctx) -> int:
     for player in changed:
         player.gamemode = mode
         player.flying = flying_after(mode, player.flying)
+        if mode != "spectator":  # ServerPlayer.setGameMode: setCamera(this)
+            spectating.stop(env.state, player)
     return len(changed)
 
 
-HANDLERS = {"gamemode": gamemode, "xp": experience, "experience": experience, "effect": effect, "attribute": attribute, "damage": damage}
+def spectate(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``spectate [TARGET [PLAYER]]`` (SpectateCommand): PLAYER (the executor by default) watches
+    through TARGET's eyes, or stops watching without one."""
+    words, target = arguments(cmd)
+    state = env.state
+    camera = single(state, target_word(cmd, words, 0, target), ctx) if words else None
+    if len(words) > 1:
+        try:
+            player = single_player(state, parse_target(words[1]), ctx)
+        except ValueError as error:
+            raise CommandFailure("dpemu.command.unreadable", cmd.name, str(error), report=True) from None
+    else:
+        player = _executor_required(state, ctx)
+        if not player.is_player:
+            raise CommandFailure("permissions.requires.player")
+    return spectating.spectate(state, camera, player)
+
+
+HANDLERS = {"gamemode": gamemode, "spectate": spectate, "xp": experience, "experience": experience, "effect": effect, "attribute": attribute, "damage": damage}

@@ -27,7 +27,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    reported as not modelled (it would have moved: :func:`emulator.world.projectiles.tick_flying`),
    after area effect clouds age, shrink and affect who is in them (:func:`emulator.world.effect_clouds.
    tick_clouds`: one a potion makes this tick first ticks on the next, as the game's entity list);
-6. every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
+6. a spectator behind a camera snaps to it (:func:`emulator.world.spectating.tick_cameras`), then
+   every player fires the advancement triggers of its tick (:func:`emulator.world.advancements.
    tick_players`); the block entities tick (:mod:`emulator.world.block_entity_ticks`); a mob in or
    on a block that would act on it is reported as not modelled (:mod:`emulator.world.block_contact`).
 An advancement reward function earned by a command (``advancement grant``, ``effect give`` ...)
@@ -53,7 +54,7 @@ from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
 from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, burning, combat, crafters,
                            effect_clouds, equipment, falling, living, motion, nbt_ops, player_actions, projectiles,
-                           statistics)
+                           spectating, statistics)
 from emulator.world.context import Context
 from emulator.world.pack_repository import PackRepository
 from emulator.world.resources import Resources
@@ -103,6 +104,7 @@ ENTITY_STEPS = ((_burning_step, burning.tick_is_idle),
                 (statistics.tick_players, statistics.tick_is_idle),
                 (effect_clouds.tick_clouds, effect_clouds.tick_is_idle),  # before a potion makes one (not ticked then)
                 (projectiles.tick_flying, projectiles.tick_is_idle),
+                (spectating.tick_cameras, spectating.tick_is_idle),  # ServerPlayer.tick: before its tick trigger
                 (advancements.tick_players, advancements.tick_is_idle),
                 (block_entity_ticks.tick_block_entities, block_entity_ticks.tick_is_idle),
                 (block_contact.tick_report, block_contact.tick_is_idle))

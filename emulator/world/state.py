@@ -576,6 +576,7 @@ class WorldState:
     item_cooldowns: dict = field(default_factory=dict)  # player -> cooldown group -> its end tick (item_cooldowns)
     # what the game keeps on its entities without saving it, held weakly (a removed entity drops out)
     open_menus: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (level, pos) (block_use)
+    cameras: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (camera, where it snapped) (spectating)
     trading: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # merchant -> its trading player (mob_use)
     hurt_timers: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> [invulnerableTime, lastHurt] (living)
     forced_chunks: dict = field(default_factory=dict)  # dimension -> the chunks (x, z) forceload marked
