@@ -12,13 +12,12 @@ from __future__ import annotations
 from mcfunction_parser import ast
 
 from . import (advancements, blocks, bossbar, conditions, data, entities, items, level, living, packs, packtest,
-               recipes, scoreboard, server, teams)
+               recipes, scoreboard, server, shown, teams)
 
 # Commands that only show or play something to players: no world state a pack can test changes
 # (their result, the number of players reached, is the one thing left unmodelled).
 NO_OBSERVABLE_EFFECT = frozenset({
-    "particle", "playsound", "stopsound", "title", "me", "msg", "tell", "w", "teammsg", "tm",
-    "debug", "perf", "jfr", "save-all", "save-off", "save-on", "swing",
+    "me", "teammsg", "tm", "debug", "perf", "jfr", "save-all", "save-off", "save-on",
 })
 
 
@@ -32,7 +31,8 @@ HANDLERS = {**scoreboard.HANDLERS, **data.HANDLERS, **entities.HANDLERS, **serve
 # the commands the parser keeps as text, by name
 GENERIC_HANDLERS = {**blocks.HANDLERS, **living.HANDLERS, **advancements.HANDLERS, **recipes.HANDLERS,
                     **server.GENERIC_HANDLERS, **items.GENERIC_HANDLERS, **teams.HANDLERS,
-                    **entities.GENERIC_HANDLERS, **level.GENERIC_HANDLERS, **packs.GENERIC_HANDLERS}
+                    **entities.GENERIC_HANDLERS, **level.GENERIC_HANDLERS, **packs.GENERIC_HANDLERS,
+                    **shown.GENERIC_HANDLERS}
 
 
 def run_command(env, cmd: ast.Command | ast.Condition, ctx) -> int:

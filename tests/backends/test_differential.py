@@ -100,7 +100,7 @@ FAILING_LINES = [
     "function t:missing", "function #t:missing", "function #t:empty", "function t:macro", "function t:macro {x:1}",
     "scoreboard players operation #a o /= #z o", "scoreboard players set #a nope 1",
     "execute if function t:missing run say x",
-    "schedule function t:missing 1t", "schedule function t:f 0t", "particle flame ~ ~ ~",
+    "schedule function t:missing 1t", "schedule function t:f 0t", "locate biome minecraft:plains",
     "execute if biome ~ ~ ~ minecraft:plains run say x",
     "function t:macro with storage t:none args",
 ]

@@ -214,7 +214,7 @@ def test_selector_holder_without_entities_fails(tmp_path):
 
 
 def test_unknown_function_and_unsupported_command_are_diagnostics(tmp_path):
-    body = SETUP + "function t:missing\nparticle minecraft:flame ~ ~ ~\nparticle minecraft:flame ~ ~ ~\nscoreboard players set #ok o 1"
+    body = SETUP + "function t:missing\nlocate biome minecraft:plains\nlocate biome minecraft:plains\nscoreboard players set #ok o 1"
     _, state, result = run(tmp_path, {"t:main": body})
     assert scores(state) == {"#ok": 1}
     messages = [d.message for d in state.diagnostics]
