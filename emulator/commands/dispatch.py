@@ -3,8 +3,8 @@ result or raises :class:`~emulator.world.errors.CommandFailure`.
 
 ``function`` and ``return`` are control flow (each backend queues their work itself). A command
 the emulator does not model succeeds with result 1 and no effect, with a warning once per command
-in the source. Commands whose effect no pack can read back (:data:`NO_OBSERVABLE_EFFECT`: sounds,
-particles, titles, chat to players) stop there; any other is *unmodelled*: a test that runs one is
+in the source. Commands whose effect no pack can read back (:data:`NO_OBSERVABLE_EFFECT`: the operator's
+``debug``, ``perf``, ``jfr`` and ``save-*``) stop there; any other is *unmodelled*: a test that runs one is
 inconclusive, since its pass or failure may hang on the missing effect.
 """
 from __future__ import annotations
@@ -14,10 +14,10 @@ from mcfunction_parser import ast
 from . import (advancements, blocks, bossbar, conditions, data, entities, items, level, living, packs, packtest,
                recipes, scoreboard, server, shown, teams)
 
-# Commands that only show or play something to players: no world state a pack can test changes
-# (their result, the number of players reached, is the one thing left unmodelled).
+# The server operator's commands (permission level 3 and 4: no function loads them, a server may
+# raise its function level): no world state a pack can test changes.
 NO_OBSERVABLE_EFFECT = frozenset({
-    "me", "teammsg", "tm", "debug", "perf", "jfr", "save-all", "save-off", "save-on",
+    "debug", "perf", "jfr", "save-all", "save-off", "save-on",
 })
 
 

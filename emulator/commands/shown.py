@@ -1,22 +1,25 @@
 """The commands that show or play something to players: ``title``, ``particle``, ``playsound``,
-``stopsound``, ``msg``/``tell``/``w``, ``dialog`` and ``swing``. What a pack can read back of them is their
-result (and, for ``msg``, the line in the log); what the players see or hear is not modelled and
-needs not be.
+``stopsound``, ``msg``/``tell``/``w``, ``me``, ``teammsg``, ``dialog`` and ``swing``. What a pack can
+read back of them is their result (and, for the chat commands, the line in the log); what the
+players see or hear is not modelled and needs not be.
 
 Sources (decompiled 26.1.2 and 1.21.3): TitleCommand (each form returns the number of targets),
 ParticleCommand.sendParticles with ServerLevel.sendParticles (a player in the source's level whose
 block's centre is closer than 32 blocks, 512 with ``force``: the result counts them, none fails),
 PlaySoundCommand.playSound (a player within the sound's range, 16 or 16 x volume, or any with a
 minimum volume; none fails), StopSoundCommand, MsgCommand.sendMessage (the targets; each reads
-"NAME whispers to you: MESSAGE"), DialogCommand, SwingCommand (the living targets; none fails).
+"NAME whispers to you: MESSAGE"), EmoteCommands (result 1), TeamMsgCommand (the team's players and the
+sender), DialogCommand, SwingCommand (the living targets; none fails).
 """
 from __future__ import annotations
 
+import json
 import math
 
 import numpy as np
 
 from emulator.world import living, text_components
+from emulator.world.text import plain_text
 from emulator.world.errors import CommandFailure, Unmodelled
 from mcfunction_parser import ast, selectors
 from mcfunction_parser.arguments import holder_from_word, vec3
@@ -140,6 +143,35 @@ def msg(env, cmd: ast.GenericCommand, ctx) -> int:
     return len(players)
 
 
+def me(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``me ACTION`` (EmoteCommands): every player reads "* NAME ACTION"; the result is 1."""
+    state = env.state
+    words = Words(env, cmd)
+    text = text_components.say_text(words.reader.rest(), lambda sel: entities.select(state, sel, ctx))
+    state.broadcast("me", f"* {sender_name(env, ctx)} {text}", cmd.loc)
+    return 1
+
+
+def teammsg(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``teammsg|tm MESSAGE`` (TeamMsgCommand): the executor's team mates online read
+    "[TEAM] <NAME> MESSAGE", a player sending it "-> [TEAM] <NAME> MESSAGE"; the result counts them."""
+    state = env.state
+    sender = entities._executor_required(state, ctx)
+    if sender.team is None:
+        raise CommandFailure("commands.teammsg.failed.noteam")
+    words = Words(env, cmd)
+    text = text_components.say_text(words.reader.rest(), lambda sel: entities.select(state, sel, ctx))
+    team = state.teams.team(sender.team)
+    line = f"[{plain_text(json.dumps(team.display_name), state.version)}] <{sender_name(env, ctx)}> {text}"
+    receivers = [p for p in state.entities.players() if p is sender or p.team == sender.team]
+    mates = tuple(p.uuid_string for p in receivers if p is not sender)
+    if mates:
+        state.emit("teammsg", line, cmd.loc, mates)
+    if sender in receivers:
+        state.emit("teammsg", f"-> {line}", cmd.loc, (sender.uuid_string,))
+    return len(receivers)
+
+
 def swing(env, cmd: ast.GenericCommand, ctx) -> int:
     """``swing [TARGETS [mainhand|offhand]]`` (26.1+): the living targets swing an arm; the executor
     by default."""
@@ -154,4 +186,5 @@ def swing(env, cmd: ast.GenericCommand, ctx) -> int:
 
 
 GENERIC_HANDLERS = {"title": title, "particle": particle, "playsound": playsound, "stopsound": stopsound,
-                    "msg": msg, "tell": msg, "w": msg, "dialog": dialog, "swing": swing}
+                    "msg": msg, "tell": msg, "w": msg, "dialog": dialog, "swing": swing,
+                    "me": me, "teammsg": teammsg, "tm": teammsg}

@@ -82,3 +82,20 @@ def test_swing_counts_the_living(tmp_path, backend):
         "#executor": "execute as Alex run swing"}, mc="26.1")
     # SwingCommand: the living entities among the targets; none fails
     assert found == {"#players": 2, "#marker": 0, "#executor": 1}
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_me_and_teammsg(tmp_path, backend):
+    found, emu = results(tmp_path, backend, {
+        "#setup": "team add red",
+        "#join": "team join red Alex",
+        "#me": "execute as Alex run me waves",
+        "#team": "execute as Alex run teammsg hi",
+        "#alone": "execute as Steve run teammsg hi"})
+    # EmoteCommands returns 1; TeamMsgCommand counts the sender's team online (itself included);
+    # without a team it fails
+    assert (found["#me"], found["#team"], found["#alone"]) == (1, 1, 0)
+    alex = emu.entities("@a[name=Alex]")[0]["uuid"]
+    lines = [(e.kind, e.text, len(e.receivers)) for e in emu.log]
+    assert lines == [("me", "* Alex waves", 2), ("teammsg", "-> [red] <Alex> hi", 1)]
+    assert emu.log[-1].receivers == (alex,)
