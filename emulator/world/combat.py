@@ -48,8 +48,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from emulator.world import (advancements, equipment, fluids, inventories, items, living, loot, predicates, statistics,
-                            teams, tools, translations)
+from emulator.world import (advancements, death_protection, equipment, fluids, inventories, items, living, loot,
+                            predicates, statistics, teams, tools, translations)
 from emulator.world.entities import Entity
 from emulator.world.entity_types import PROJECTILES
 from emulator.world.errors import Unmodelled
@@ -132,7 +132,7 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
     remember_attacker(state, entity, source)
     if full:
         _hurt_knockback(state, entity, source)
-    if living.health(entity) <= 0:
+    if living.health(entity) <= 0 and not death_protection.saves(state, entity, source.type):
         die(state, entity, source)
     hurt_triggers(state, entity, source, amount)
     return True
@@ -467,11 +467,6 @@ def die(state, entity, source: DamageSource) -> None:
     """LivingEntity.die: once; the killer's credit, then a mob leaves the world and a player dies."""
     if entity in state.dead_players or not entity.alive:
         return
-    for hand in (inventories.MAINHAND, inventories.OFFHAND):
-        held = inventories.entity_slot(entity, hand, state.version)
-        if held is not None and (held.get().id == "minecraft:totem_of_undying"
-                                 or held.get().component("minecraft:death_protection") is not None):
-            raise Unmodelled("a totem of undying saving its holder from death")
     killer = kill_credit(state, entity)
     if entity.is_player:
         _player_dies(state, entity, source, killer)

@@ -7,8 +7,9 @@ game keeps in code rather than data.
   the consume effects, the listeners that act on consuming (potion contents, a suspicious stew's
   effects, an ominous bottle's amplifier) and the use remainder; None when the item is not eaten
   or drunk. Before 1.20.5 only the vanilla items are (their NBT ``Potion`` read for potions).
-- ``Consumable.effects_to_apply(rng) -> list``: the (effect, duration, amplifier) it gives now,
-  with the probabilities drawn from ``rng`` (the emulator's random, not the player's own).
+- ``drawn(effect, rng, per_effect_draw) -> list``: the (effect, duration, amplifier) one
+  ``apply_effects`` consume effect gives now, with the probabilities drawn from ``rng`` (the
+  emulator's random, not the entity's own).
 
 Not modelled (raise Unmodelled where met): custom potion effects in the pre-1.20.5 NBT form;
 ``play_sound`` is nothing a pack observes (ignored).
@@ -118,20 +119,16 @@ class Consumable:
     remainder: ItemStack | None = None
     per_effect_draw: bool = False  # before 1.21.2 each food effect had its own chance
 
-    def effects_to_apply(self, rng) -> list:
-        """What ``apply_effects`` consume effects give now (ApplyStatusEffectsConsumeEffect.apply:
-        one draw ``nextFloat() < probability`` for the list; before 1.21.2 one per effect)."""
-        given = []
-        for effect in self.effects:
-            if str(effect.get("type", "")).removeprefix("minecraft:") != "apply_effects":
-                continue
-            chance = float(numeric_value(effect["probability"])) if is_numeric(effect.get("probability")) else 1.0
-            listed = [_instance(e) for e in effect.get("effects", List())]
-            if self.per_effect_draw:
-                given += [e for e in listed if F32(rng.random()) < F32(chance)]
-            elif F32(rng.random()) < F32(chance):
-                given += listed
-        return given
+
+
+def drawn(effect: Compound, rng, per_effect_draw: bool = False) -> list:
+    """What one ``apply_effects`` consume effect gives now (ApplyStatusEffectsConsumeEffect.apply:
+    one draw ``nextFloat() < probability`` for its list; before 1.21.2 one per effect)."""
+    chance = float(numeric_value(effect["probability"])) if is_numeric(effect.get("probability")) else 1.0
+    listed = [_instance(e) for e in effect.get("effects", List())]
+    if per_effect_draw:
+        return [e for e in listed if F32(rng.random()) < F32(chance)]
+    return listed if F32(rng.random()) < F32(chance) else []
 
 
 def _instance(tag) -> tuple[str, int, int]:

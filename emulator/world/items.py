@@ -94,6 +94,16 @@ def _content_defaults(name: str) -> Compound:
     return Compound()
 
 
+# DeathProtection.TOTEM_OF_UNDYING (1.21.2+; the same effects in code before)
+TOTEM_PROTECTION = Compound(death_effects=List([
+    Compound(type=String("minecraft:clear_all_effects")),
+    Compound(type=String("minecraft:apply_effects"), effects=List([
+        Compound(id=String("minecraft:regeneration"), duration=Int(900), amplifier=Int(1)),
+        Compound(id=String("minecraft:absorption"), duration=Int(100), amplifier=Int(1)),
+        Compound(id=String("minecraft:fire_resistance"), duration=Int(800), amplifier=Int(0))])),
+]))
+
+
 def defaults(item_id: str) -> Compound:
     """The item's default components that are modelled (its prototype, partly)."""
     name = item_id.split(":", 1)[-1]
@@ -109,6 +119,8 @@ def defaults(item_id: str) -> Compound:
         found["minecraft:max_stack_size"] = Int(16)
     else:
         found["minecraft:max_stack_size"] = Int(64)
+    if item_id == "minecraft:totem_of_undying":
+        found["minecraft:death_protection"] = TOTEM_PROTECTION
     return found
 
 

@@ -386,7 +386,7 @@ def health(entity) -> float:
     return _number(entity.data.get("Health"), default_base(entity.type, "max_health"))
 
 
-def _set_health(entity, value: float) -> None:
+def set_health(entity, value: float) -> None:
     """LivingEntity.setHealth: clamped to [0, max health], stored as a float."""
     entity.data["Health"] = Float(float(F32(min(max(value, 0.0), attribute_value(entity, "max_health")))))
 
@@ -394,12 +394,12 @@ def _set_health(entity, value: float) -> None:
 def _sync_health(entity) -> None:
     """A lower max health lowers the health with it (LivingEntity.getHealth stays <= getMaxHealth)."""
     if is_living(entity.type) and health(entity) > attribute_value(entity, "max_health"):
-        _set_health(entity, health(entity))
+        set_health(entity, health(entity))
 
 
 def heal(entity, amount: float) -> None:
     if health(entity) > 0:
-        _set_health(entity, health(entity) + amount)
+        set_health(entity, health(entity) + amount)
 
 
 # Player.actuallyHurt: the food exhaustion of the damage types modelled (DamageType.exhaustion)
@@ -513,7 +513,7 @@ def _actually_hurt(state, entity, amount: float, damage_type: str, record=None) 
                              math.floor(left * F32(10.0) + F32(0.5)))
     if record is not None:
         record(float(left))
-    _set_health(entity, health(entity) - float(left))
+    set_health(entity, health(entity) - float(left))
 
 
 def exhaust(player, amount) -> None:

@@ -212,9 +212,9 @@ def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: con
     item, none consumes it at once."""
     if consumable.food is not None and not _can_eat(player, consumable.food):
         return "fail"
-    unmodelled = [e for e in consumable.effects if _effect_type(e) not in _CONSUME_EFFECTS]
+    unmodelled = unmodelled_consume_effect(consumable.effects)
     if unmodelled:  # known when the use starts, so the dummy's command is what the test reports
-        raise Unmodelled(f"the {_effect_type(unmodelled[0])} consume effect of {stack.id}")
+        raise Unmodelled(f"the {unmodelled} consume effect of {stack.id}")
     if consumable.ticks > 0:
         state.using_items[player] = _Using(hand, stack.id, consumable.ticks)
         return "consume"
@@ -270,14 +270,29 @@ def _finish(state, player, hand: str, consumable: consumables.Consumable) -> Non
     if consumable.food is not None:
         living.eat(player, consumable.food.nutrition, consumable.food.saturation)
     _give_effects(state, player, consumable.gives)
-    _give_effects(state, player, consumable.effects_to_apply(state.resources.random))
-    for effect in consumable.effects:
-        _CONSUME_EFFECTS[_effect_type(effect)](state, player, effect)
+    apply_consume_effects(state, player, consumable.effects, consumable.per_effect_draw)
     if player.gamemode != "creative":  # hasInfiniteMaterials: nothing shrinks, no remainder
         _consume_one(state, player, hand)
         if consumable.remainder is not None and before.count > 0:
             _give_remainder(state, player, access, consumable.remainder.copy())
     item_cooldowns.apply_use_cooldown(state, player, before)  # applyAfterUseComponentSideEffects
+
+
+def apply_consume_effects(state, entity, effects, per_effect_draw: bool = False) -> None:
+    """Each consume effect in its order (Consumable.onConsume, DeathProtection.applyEffects), an
+    ``apply_effects`` drawing its chance from the emulator's random."""
+    for effect in effects:
+        kind = _effect_type(effect)
+        if kind == "apply_effects":
+            _give_effects(state, entity, consumables.drawn(effect, state.resources.random, per_effect_draw))
+        else:
+            _CONSUME_EFFECTS[kind](state, entity, effect)
+
+
+def unmodelled_consume_effect(effects) -> str | None:
+    """The type of the first consume effect :func:`apply_consume_effects` does not know."""
+    unknown = [e for e in effects if _effect_type(e) not in _CONSUME_EFFECTS]
+    return _effect_type(unknown[0]) if unknown else None
 
 
 def _effect_type(effect) -> str:
@@ -322,9 +337,9 @@ def _teleport_randomly(state, player, effect) -> None:
     random_teleport.teleport_randomly(state, player, float(numeric_value(diameter)) if diameter is not None else 16.0)
 
 
-# the consume effects carried out after the listeners (apply_effects: effects_to_apply; play_sound:
-# nothing a pack observes)
-_CONSUME_EFFECTS = {"apply_effects": lambda state, player, effect: None,
+# the consume effects carried out after the listeners (apply_effects: apply_consume_effects draws
+# them; play_sound: nothing a pack observes)
+_CONSUME_EFFECTS = {"apply_effects": None,
                     "remove_effects": _remove_effects, "clear_all_effects": _clear_all_effects,
                     "teleport_randomly": _teleport_randomly, "play_sound": lambda state, player, effect: None}
 

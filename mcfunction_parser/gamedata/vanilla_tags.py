@@ -58,6 +58,8 @@ BUILTIN_TAGS: dict[str, dict[str, frozenset[str]]] = {
         # what the resistance effect does not reduce (LivingEntity.getDamageAfterMagicAbsorb)
         "minecraft:bypasses_effects": frozenset({"minecraft:starve"}),
         "minecraft:bypasses_resistance": frozenset({"minecraft:out_of_world", "minecraft:generic_kill"}),
+        # what a totem of undying does not save from (LivingEntity.checkTotemDeathProtection)
+        "minecraft:bypasses_invulnerability": frozenset({"minecraft:out_of_world", "minecraft:generic_kill"}),
         # the players' damage game rules (Player.isInvulnerableTo)
         "minecraft:is_drowning": frozenset({"minecraft:drown"}),
         "minecraft:is_freezing": frozenset({"minecraft:freeze"}),

@@ -145,7 +145,6 @@ def test_the_last_player_to_hurt_a_mob_gets_the_kill(tmp_path):
 @pytest.mark.parametrize("setup, reason", [
     ("give Alex diamond_sword[enchantments={fire_aspect:1}]\ndummy Alex attack @e[type=pig,limit=1]",
      "the effects of minecraft:fire_aspect on an attack"),
-    ("item replace entity Alex weapon.offhand with totem_of_undying\ndamage Alex 100", "a totem of undying"),
     # where the fall was from a ladder (FallLocation, from the last climbable position): not modelled
     ("setblock ~ ~ ~ ladder\ndamage Alex 100 minecraft:fall", "a fall from a climbable block"),
 ])
