@@ -28,7 +28,9 @@ One tick (LivingEntity.aiStep, travel; Entity.move, checkFallDamage):
    HayBlock.fallOn); the distance is reset. In the air the distance grows by the drop;
 4. a stopped vertical move zeroes the vertical motion (Block.updateEntityAfterFallOn);
 5. the vertical motion loses the gravity (the ``gravity`` attribute, 0.08; at most 0.01 falling
-   with slow falling), then is scaled by 0.98F (travel: ``d2 * 0.98F``, the float widened).
+   with slow falling) or, levitating, moves a fifth of the way to 0.05 x (amplifier + 1), then is
+   scaled by 0.98F (travel: ``d2 * 0.98F``, the float widened); slow falling and levitation
+   reset the fall distance first (aiStep). A spectator with no motion stays where it is.
 
 So a player standing on a block keeps ``Motion[1]`` = -0.0784000015258789, as in the game, and a
 player just placed on a block with no motion is not on the ground for its first tick (its move
@@ -37,7 +39,7 @@ it a double: a fall distance there can differ in its last bits).
 
 Not modelled (Unmodelled, reported once): a dummy's horizontal motion (friction, stepping up), a
 block whose shape is not a full cube or empty, water and lava (they reset and slow the fall),
-slime blocks and beds (they bounce), levitation, spectators (no collision).
+slime blocks and beds (they bounce), a spectator's motion (no collision).
 
 Sources (decompiled 1.21): world/entity/LivingEntity.java (aiStep, travel, jumpFromGround,
 causeFallDamage, calculateFallDamage), world/entity/Entity.java (move, checkFallDamage,
@@ -116,18 +118,35 @@ def _tick(state, player) -> None:
     if relations.vehicle_of(player) is not None:  # Entity.rideTick instead of travel
         relations.ride_tick(player)
         return
-    if player.gamemode == "spectator":
-        raise Unmodelled("a spectator's movement (no collision)")
     x, y, z = (0.0 if abs(m) < MIN_MOVEMENT else m for m in player.motion)
+    if player.gamemode == "spectator":  # no physics, flying: with no motion it stays (Player.travel)
+        if x or y or z:
+            raise Unmodelled("a spectator's movement (no collision)")
+        return
     if x or z:
         raise Unmodelled("horizontal motion (friction, walls, stepping up)")
-    if living.effect_amplifier(player, "minecraft:levitation") is not None:
-        raise Unmodelled("levitation")
+    keep_falls_short(player)
     _, y, _ = move(state, player, (x, y, z))
-    gravity = living.attribute_value(player, "gravity")
-    if y <= 0.0 and living.effect_amplifier(player, "minecraft:slow_falling") is not None:
+    player.motion = (x, vertical_after(player, y, living.attribute_value(player, "gravity")) * DRAG, z)
+
+
+def keep_falls_short(entity) -> None:
+    """LivingEntity.aiStep: slow falling and levitation reset the fall distance before travel."""
+    if (living.effect_amplifier(entity, "minecraft:slow_falling") is not None
+            or living.effect_amplifier(entity, "minecraft:levitation") is not None):
+        entity.data["FallDistance"] = Float(0.0)
+
+
+def vertical_after(entity, y: float, gravity: float) -> float:
+    """LivingEntity.travelInAir's vertical motion after the move ``y``, before the drag: levitation
+    pulls it towards 0.05 x (amplifier + 1) by a fifth; else the gravity is taken (at most 0.01
+    falling with slow falling: getEffectiveGravity)."""
+    levitation = living.effect_amplifier(entity, "minecraft:levitation")
+    if levitation is not None:
+        return y + (0.05 * (levitation + 1) - y) * 0.2
+    if y <= 0.0 and living.effect_amplifier(entity, "minecraft:slow_falling") is not None:
         gravity = min(gravity, SLOW_FALLING_GRAVITY)
-    player.motion = (x, (y - gravity) * DRAG, z)
+    return y - gravity
 
 
 def move(state, entity, motion) -> tuple[float, float, float]:

@@ -55,7 +55,7 @@ An entity riding another does not move by itself (Entity.rideTick: its vehicle p
 Not modelled (reported once as not modelled, and that entity no longer moves here): water, lava
 and bubble columns, blocks that are not full cubes or empty (slabs, stairs, fences ...), an item
 or orb inside a block (pushed out of it), stepping up, slime blocks' bounce, honey and soul sand,
-climbing, levitation, an orb following a player, TNT
+climbing, an orb following a player, TNT
 exploding, a falling block breaking whose block has no item of its id, falling anvils and dripstone (they hurt what
 they land on), a falling block with block entity data, concrete powder meeting water, a vehicle
 carrying its passengers, and a flying mob with AI given motion.
@@ -521,13 +521,12 @@ def _tick_living(state, entity) -> None:
             raise Unmodelled(f"{entity.type}'s flight (a flying mob with AI given motion)")
         entity.motion = (x, y, z)
         return
-    if living.effect_amplifier(entity, "minecraft:levitation") is not None:
-        raise Unmodelled("levitation")
     _inside_fluid(state, entity)
-    gravity = _gravity(entity, y)
+    falling.keep_falls_short(entity)
     scale = _friction(state, entity) * AIR_FRICTION if _on_ground(entity) else AIR_FRICTION
     x, y, z = falling.move(state, entity, (x, y, z))
-    entity.motion = (x * float(scale), (y - gravity) * DRAG_F, z * float(scale))
+    gravity = 0.0 if _no_gravity(entity) else living.attribute_value(entity, "gravity")
+    entity.motion = (x * float(scale), falling.vertical_after(entity, y, gravity) * DRAG_F, z * float(scale))
 
 
 def _gravity(entity, y: float) -> float:

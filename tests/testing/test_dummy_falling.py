@@ -140,3 +140,30 @@ def test_a_swing_while_rising_is_no_critical_hit(pack):
         "dummy Alex attack @e[tag=air,limit=1]\n"
         "assert data entity @e[tag=air,limit=1] {Health:9.0f}\n"))
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_levitating_dummy_rises_and_lands_softly_with_slow_falling(pack, backend):
+    # LivingEntity.travelInAir: levitation lifts; LivingEntity.aiStep: slow falling and levitation reset
+    # the fall distance, so the drop after it lands with no damage
+    result = run(pack, SKY + (
+        "setblock ~ ~ ~ stone\n"
+        "execute positioned ~0.5 ~1 ~0.5 run dummy Alex spawn\n"
+        "effect give Alex levitation 1 4\n"
+        "effect give Alex slow_falling 60\n"
+        "await delay 15\n"
+        "execute positioned ~0.5 ~4 ~0.5 unless entity @a[name=Alex,dy=100] run fail \"not lifted\"\n"
+        "await entity @a[name=Alex,nbt={OnGround:1b}]\n"
+        "assert data entity Alex {Health:20.0f}\n"), backend)
+    assert result.status == "passed", result.report()
+
+
+def test_a_spectator_dummy_with_no_motion_stays(pack):
+    # Player.travel flying with no physics: no input, no motion, no move
+    result = run(pack, SKY + (
+        "execute positioned ~0.5 ~5 ~0.5 run dummy Alex spawn\n"
+        "gamemode spectator Alex\n"
+        "await delay 10\n"
+        "execute positioned ~0.5 ~5 ~0.5 unless entity @a[name=Alex,distance=..0.5] run fail \"moved\"\n"
+        "succeed\n"))
+    assert result.status == "passed", result.report()

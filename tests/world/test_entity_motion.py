@@ -381,3 +381,31 @@ def test_a_partial_pickup_leaves_the_rest_and_counts_nothing(tmp_path, backend):
     assert _inventory(emu, "Alex")[0] == ("minecraft:stone", 64, 0)
     assert emu.score("Alex", "got") is None
     assert dirt.alive and int(dirt.data["Item"]["count"]) == 1
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_levitation_lifts_a_mob_towards_its_speed(tmp_path, backend):
+    # LivingEntity.travelInAir: levitating, the vertical motion after the move moves a fifth of the way
+    # to 0.05 x (amplifier + 1) instead of losing the gravity, then x 0.98F
+    emu = world(tmp_path, backend, "summon zombie 0.5 1 0.5 {OnGround:1b,active_effects:[{id:\"minecraft:levitation\","
+                                   "amplifier:1b,duration:100}]}")
+    zombie = one(emu, "minecraft:zombie")
+    y, height = 0.0, 1.0
+    for _ in range(3):
+        emu.tick()
+        height += y
+        y = (y + (0.1 - y) * 0.2) * float(F32(0.98))
+        assert zombie.motion[1] == y and zombie.pos[1] == height
+    assert int(zombie.data["OnGround"]) == 0
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_slow_falling_keeps_the_fall_distance_short(tmp_path, backend):
+    # LivingEntity.aiStep: slow falling (and levitation) reset the fall distance before travel, so a
+    # slow fall from 10 blocks lands with no damage; gravity at most 0.01 while falling
+    emu = world(tmp_path, backend, "summon zombie 0.5 11 0.5 {active_effects:[{id:\"minecraft:slow_falling\","
+                                   "duration:10000}]}")
+    zombie = one(emu, "minecraft:zombie")
+    emu.tick(400)
+    assert zombie.pos == (0.5, 1.0, 0.5) and int(zombie.data["OnGround"]) == 1
+    assert float(zombie.data["Health"]) == 20.0 and float(zombie.data["FallDistance"]) == 0.0
