@@ -1,7 +1,7 @@
 """The commands that show or play something to players: ``title``, ``particle``, ``playsound``,
-``stopsound``, ``msg``/``tell``/``w``, ``me``, ``teammsg``, ``dialog`` and ``swing``. What a pack can
-read back of them is their result (and, for the chat commands, the line in the log); what the
-players see or hear is not modelled and needs not be.
+``stopsound``, ``msg``/``tell``/``w``, ``me``, ``teammsg``, ``dialog``, ``swing`` and ``version``.
+What a pack can read back of them is their result (and, for the chat commands, the line in the
+log); what the players see or hear is not modelled and needs not be.
 
 Sources (decompiled 26.1.2 and 1.21.3): TitleCommand (each form returns the number of targets),
 ParticleCommand.sendParticles with ServerLevel.sendParticles (a player in the source's level whose
@@ -185,6 +185,11 @@ def swing(env, cmd: ast.GenericCommand, ctx) -> int:
     return swung
 
 
+def version(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``version`` (1.21.6+, VersionCommand): the game's version told to the source; 1."""
+    return 1
+
+
 GENERIC_HANDLERS = {"title": title, "particle": particle, "playsound": playsound, "stopsound": stopsound,
                     "msg": msg, "tell": msg, "w": msg, "dialog": dialog, "swing": swing,
-                    "me": me, "teammsg": teammsg, "tm": teammsg}
+                    "me": me, "teammsg": teammsg, "tm": teammsg, "version": version}

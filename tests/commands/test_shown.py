@@ -71,8 +71,8 @@ def test_sounds_reach_the_players_in_range(tmp_path, backend):
 @pytest.mark.parametrize("backend", BACKENDS)
 def test_dialogs_count_their_players(tmp_path, backend):
     found, emu = results(tmp_path, backend, {"#show": "dialog show @a minecraft:server_links",
-                                             "#clear": "dialog clear Alex"}, mc="1.21.6")
-    assert found == {"#show": 2, "#clear": 1} and not emu.diagnostics
+                                             "#clear": "dialog clear Alex", "#version": "version"}, mc="1.21.6")
+    assert found == {"#show": 2, "#clear": 1, "#version": 1} and not emu.diagnostics  # VersionCommand: 1
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
