@@ -192,8 +192,26 @@ def tick_players(state) -> None:
         first = state.advancement_progress.first_tick.setdefault(player.uuid_string, state.tick)
         broadcast_changes(state, player)
         trigger(state, player, "tick")
+        _levitation(state, player)
         if (state.tick - first) % LOCATION_PERIOD == 0:
             trigger(state, player, "location")
+
+
+def _levitation(state, player: Entity) -> None:
+    """ServerPlayer.tick after ``tick``: a player levitating since its onEffectAdded fires
+    ``levitation`` with the distance from where it began and the ticks since (its tickCount has
+    counted this tick); onEffectRemoved forgets the start."""
+    start = player.levitation_start
+    if start is None:
+        return
+    if living.effect_amplifier(player, living.LEVITATION) is None:
+        player.levitation_start = None
+        return
+    origin, began = start
+    duration = player.tick_count(state.tick) + 1 - began
+    trigger(state, player, "levitation", lambda c, ctx: (
+        (c.get("distance") is None or predicates.distance_matches(c["distance"], origin, player.pos))
+        and (c.get("duration") is None or in_ints(c["duration"], duration))))
 
 
 def changed_dimension(state, player: Entity, origin: str) -> None:

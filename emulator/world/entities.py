@@ -158,7 +158,7 @@ class Entity:
 
     __slots__ = ("_uuid", "type", "_custom_name", "data", "order", "player_name", "_gamemode", "_level", "_team",
                  "_sneaking", "sprinting", "flying", "_vehicle", "passengers", "_table", "_own", "born", "equipment_modifiers",
-                 "equipment_seen", "max_health_seen", "food_seen",
+                 "equipment_seen", "max_health_seen", "food_seen", "levitation_start",
                  "__weakref__")
 
     def __init__(self, uuid: tuple[int, int, int, int], type: str, pos: tuple[float, float, float],
@@ -191,6 +191,7 @@ class Entity:
         self.equipment_seen = None
         self.max_health_seen = None  # a player's max_health attribute, until it changes (living.max_health)
         self.food_seen = None  # what a player's last food tick that changed nothing read (living.tick_food)
+        self.levitation_start = None  # a player's (position, tickCount) when levitation began (ServerPlayer)
         self.born = 0  # the server tick it came into the world (EntityStore._add; tickCount counts from it)
         # the table's fields until the store adds the entity: [pos, yaw, pitch, motion, tags, alive, dimension]
         self._own = [tuple(pos), F32(yaw), F32(pitch), tuple(motion), set(tags or ()), alive, dimension]

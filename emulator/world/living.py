@@ -648,6 +648,7 @@ def _after_armour(entity, amount: float, bypass: bool) -> float:
 
 
 # ---------------------------------------------------------------------- effects
+LEVITATION = "minecraft:levitation"  # its start is kept for the levitation trigger (ServerPlayer)
 INSTANT = {"minecraft:instant_health", "minecraft:instant_damage", "minecraft:saturation"}
 
 
@@ -716,6 +717,8 @@ def give_effect(state, entity, effect_id: str, duration: int, amplifier: int, vi
         effects(entity).append(Compound(id=String(effect_id), amplifier=Byte(amplifier), duration=Int(duration),
                                         ambient=Byte(0), show_particles=Byte(int(visible)), show_icon=Byte(1)))
         _effect_modifier(entity, effect_id, amplifier & 0xFF)  # onEffectAdded
+        if effect_id == LEVITATION and entity.is_player:  # ServerPlayer.onEffectAdded
+            entity.levitation_start = (entity.pos, entity.tick_count(state.tick))
         changed = True
     else:
         old_amp, old_duration = _amplifier(current), int(_number(current.get("duration")))

@@ -394,9 +394,12 @@ def _holder_set(value, registry: str, member: str, ctx: LootContext) -> bool:
 
 
 def _distance(value: dict, ctx: LootContext, entity: Entity) -> bool:
-    if ctx.origin is None:
-        return False
-    dx, dy, dz = (float(F32(a - b)) for a, b in zip(ctx.origin, entity.pos))
+    return ctx.origin is not None and distance_matches(value, ctx.origin, entity.pos)
+
+
+def distance_matches(value: dict, origin, pos) -> bool:
+    """DistancePredicate.matches: the float differences per axis, horizontal and absolute."""
+    dx, dy, dz = (float(F32(a - b)) for a, b in zip(origin, pos))
     for axis, d in (("x", dx), ("y", dy), ("z", dz)):
         if axis in value and not in_range(value[axis], abs(d)):
             return False

@@ -167,3 +167,22 @@ def test_a_spectator_dummy_with_no_motion_stays(pack):
         "execute positioned ~0.5 ~5 ~0.5 unless entity @a[name=Alex,distance=..0.5] run fail \"moved\"\n"
         "succeed\n"))
     assert result.status == "passed", result.report()
+
+
+LEVITATED = {"demo/advancement/up.json": (
+    '{"criteria": {"c": {"trigger": "minecraft:levitation", "conditions": '
+    '{"distance": {"y": {"min": 2}}, "duration": {"min": 10}}}}}')}
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_the_levitation_trigger_measures_from_where_it_began(pack, backend):
+    # ServerPlayer.onEffectAdded keeps the start; ServerPlayer.tick fires levitation with the
+    # distance from it and the ticks since (LevitationTrigger: both must match)
+    [result] = run_suite(discover([pack({"demo/test/t.mcfunction": SKY + (
+        "setblock ~ ~ ~ stone\n"
+        "execute positioned ~0.5 ~1 ~0.5 run dummy Alex spawn\n"
+        "effect give Alex levitation 3 4\n"
+        "await delay 5\n"
+        "assert not entity @a[name=Alex,advancements={demo:up=true}]\n"
+        "await entity @a[name=Alex,advancements={demo:up=true}]\n"), **LEVITATED})]), backend).results
+    assert result.status == "passed", result.report()
