@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import math
 
-from emulator.world import biomes, block_breaking, command_blocks, crafters, inventories, rails, structures
+from emulator.world import biomes, block_breaking, block_rotation, command_blocks, crafters, inventories, rails, structures
 from emulator.world.blocks import BlockSpec, block_pos, parse_block, with_defaults
 from mcfunction_parser import ast
 from mcfunction_parser.arguments import vec3
@@ -340,16 +340,15 @@ def _word(reader: Reader) -> str:
     return text[start:reader.pos]
 
 
-_ROTATIONS = ("none", "clockwise_90", "180", "counterclockwise_90")
-_MIRRORS = ("none", "left_right", "front_back")
 
 
 def place_command(env, cmd: ast.GenericCommand, ctx) -> int:
     """``place template TEMPLATE [POS [ROTATION [MIRROR [INTEGRITY [SEED]]]]]`` (PlaceCommand.
     placeTemplate): the pack's ``structure`` file with its corner at POS (the source's block by
-    default) in the context's level; "There is no template with id" when no pack has it, "Failed to
-    place template" when it holds nothing. A rotation, a mirror or an integrity below 1 (random
-    blocks left out) is not modelled, nor ``place feature|jigsaw|structure`` (world generation)."""
+    default) in the context's level, mirrored then turned about it; "There is no template with id"
+    when no pack has it, "Failed to place template" when it holds nothing. An integrity below 1
+    (random blocks left out) is not modelled, nor ``place feature|jigsaw|structure`` (world
+    generation)."""
     reader = Reader(cmd.text, cmd.loc, tuple(env.state.version))
     try:
         reader.pos = len(cmd.name) + 1
@@ -364,10 +363,8 @@ def place_command(env, cmd: ast.GenericCommand, ctx) -> int:
     except ParseError as error:
         raise CommandFailure("dpemu.command.unreadable", cmd.name, error, report=True) from None
     rotation, mirror, integrity = (options + ["none", "none", "1"][len(options):])[:3]
-    if rotation not in _ROTATIONS or mirror not in _MIRRORS:
+    if rotation not in block_rotation.ROTATIONS or mirror not in block_rotation.MIRRORS:
         raise CommandFailure("dpemu.command.unreadable", cmd.name, f"unknown rotation or mirror in {options}", report=True)
-    if rotation != "none" or mirror != "none":
-        raise Unmodelled(f"place template with rotation {rotation} and mirror {mirror} (rotated block states)")
     if float(integrity) < 1.0:
         raise Unmodelled("place template with an integrity below 1 (BlockRotProcessor's random)")
     source = world_source(env.state, ctx)  # the position is an argument: read before the template
@@ -380,7 +377,8 @@ def place_command(env, cmd: ast.GenericCommand, ctx) -> int:
         template = structures.read_template(data)
     except structures.StructureError as error:
         raise CommandFailure("dpemu.structure.invalid", template_id, error, report=True) from None
-    if not structures.place(env.state, template, origin, ctx.dimension):
+    if not structures.place(env.state, template, origin, ctx.dimension, block_rotation.MIRRORS.index(mirror),
+                            block_rotation.ROTATIONS.index(rotation)):
         raise CommandFailure("commands.place.template.failed")
     return 1
 

@@ -6,9 +6,11 @@ in the loaded packs, reading it, placing its blocks and entities in the world.
 - ``read_template(data)``: a :class:`Template` (size, blocks with their palette state and block
   entity NBT, entities with their relative position and NBT); :class:`StructureError` says what is
   wrong with a corrupt or malformed file.
-- ``place(state, template, origin, dimension)``: ``StructureTemplate.placeInWorld`` without rotation or mirror:
-  every block at origin + pos (its block entity NBT kept), every entity summoned at origin + pos
-  from its NBT with a new UUID (``placeEntities`` removes the saved one).
+- ``place(state, template, origin, dimension, mirror, rotation)``: ``StructureTemplate.placeInWorld``:
+  every block at origin + its position (its block entity NBT kept), every entity summoned at
+  origin + its position from its NBT with a new UUID (``placeEntities`` removes the saved one),
+  mirrored then turned about the origin (:mod:`emulator.world.block_rotation`); a turned item
+  frame or painting is not modelled.
 
 The file (decompiled 1.21 StructureTemplate.save/load): a gzipped NBT compound with ``size`` (3 ints),
 ``palette`` (block states ``{Name, Properties}``; or ``palettes``, a list of palettes, the first of
@@ -19,12 +21,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from emulator.world import inventories, projectiles
+from emulator.world import block_rotation, inventories, projectiles
 from emulator.world.blocks import BlockSpec, parse_block, with_defaults
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.nbt_binary import NbtFormatError, read_nbt
-from mcfunction_parser.nbt import Compound, Double, Int, List, Long, String
+from mcfunction_parser.nbt import Compound, Double, Float, Int, List, Long, String
 from mcfunction_parser.pack.versions import uses_singular_folders
+
+
+# HangingEntity: its own rotate and mirror turn its facing
+HANGING = frozenset({"minecraft:item_frame", "minecraft:glow_item_frame", "minecraft:painting", "minecraft:leash_knot"})
 
 
 class StructureError(ValueError):
@@ -131,27 +137,45 @@ def _with_loot_seed(state, spec: BlockSpec) -> BlockSpec:
     return replace(spec, nbt=nbt)
 
 
-def place(state, template: Template, origin: tuple[int, int, int], dimension: str = "minecraft:overworld") -> bool:
+def place(state, template: Template, origin: tuple[int, int, int], dimension: str = "minecraft:overworld",
+          mirror: int = 0, rotation: int = 0) -> bool:
     """Put ``template``'s blocks and entities into level ``dimension`` with its corner at
-    ``origin``; False, placing nothing, when it has neither blocks nor entities or a size of 0
+    ``origin``, mirrored then turned about it (:mod:`emulator.world.block_rotation`); False,
+    placing nothing, when it has neither blocks nor entities or a size of 0
     (StructureTemplate.placeInWorld)."""
     if not (template.blocks or template.entities) or min(template.size) < 1:
         return False
-    ox, oy, oz = origin
+    if (mirror or rotation) and any(str(nbt["id"]) in HANGING for _, nbt in template.entities):
+        raise Unmodelled("a turned or mirrored template's item frames and paintings (HangingEntity.rotate)")
     blocks = state.blocks_in(dimension)
     barrier = with_defaults(parse_block("minecraft:barrier"), state.version)
-    for (x, y, z), spec in template.blocks:
-        pos = (ox + x, oy + y, oz + z)
+    for relative, spec in template.blocks:
+        pos = _offset(origin, block_rotation.turned_pos(relative, mirror, rotation))
         if spec.nbt is not None:  # the old contents cleared and a barrier set first: the block and its data always load
             inventories.try_clear(blocks, pos, state.version)
             blocks.place(pos, barrier)
             spec = _with_loot_seed(state, spec)
-        blocks.place(pos, with_defaults(spec, state.version))  # else the same state already there stays as it is
-    for (x, y, z), nbt in template.entities:
+        spec = block_rotation.turned_state(with_defaults(spec, state.version), mirror, rotation)
+        blocks.place(pos, spec)  # else the same state already there stays as it is
+    for relative, nbt in template.entities:
         data = Compound((k, v) for k, v in nbt.items() if k not in ("id", "UUID", "Pos"))
+        if mirror or rotation:
+            _turn_entity(data, mirror, rotation)
+        pos = _offset(origin, block_rotation.turned_entity_pos(relative, mirror, rotation))
         try:
-            projectiles.launched(state, state.entities.summon(str(nbt["id"]), (ox + x, oy + y, oz + z), data,
-                                                              dimension=dimension))
+            projectiles.launched(state, state.entities.summon(str(nbt["id"]), pos, data, dimension=dimension))
         except CommandFailure:
             pass  # createEntityIgnoreException: an entity that cannot be created is left out
     return True
+
+
+def _offset(origin, relative):
+    return tuple(o + r for o, r in zip(origin, relative))
+
+
+def _turn_entity(data: Compound, mirror: int, rotation: int) -> None:
+    """placeEntities: the entity snapped to its turned yaw (its pitch kept)."""
+    angles = data.get("Rotation")
+    yaw = float(angles[0]) if isinstance(angles, List) and len(angles) == 2 else 0.0
+    pitch = angles[1] if isinstance(angles, List) and len(angles) == 2 else Float(0.0)
+    data["Rotation"] = List([Float(float(block_rotation.turned_yaw(yaw, mirror, rotation))), pitch])
