@@ -1,5 +1,6 @@
-"""The living-entity commands: ``xp``/``experience``, ``effect``, ``attribute``, ``damage``, on the
-state :mod:`emulator.world.living` keeps in the entities' NBT.
+"""The living-entity commands: ``xp``/``experience``, ``effect``, ``attribute``, ``damage``,
+``gamemode``, ``spectate`` and ``waypoint``, on the state :mod:`emulator.world.living` keeps in the
+entities' NBT.
 
 The parser keeps these commands as text; each is read once per source line (cached) into its
 arguments, then run per context. Results are the game's: ``xp add|set`` the players changed,
@@ -7,7 +8,7 @@ arguments, then run per context. Results are the game's: ``xp add|set`` the play
 times the scale cast to int, ``damage`` 1.
 
 Sources (decompiled 1.21): server/commands/ExperienceCommand.java, EffectCommands.java,
-AttributeCommand.java, DamageCommand.java.
+AttributeCommand.java, DamageCommand.java; 26.1.2 WaypointCommand.java, Waypoint.Icon.
 """
 from __future__ import annotations
 
@@ -15,10 +16,12 @@ from __future__ import annotations
 from emulator.world import advancements, combat, living, spectating
 from emulator.world.entities import uuid_string
 from emulator.world.entity_flags import flying_after
-from emulator.world.errors import CommandFailure
+from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.semantics import double_to_int
 from mcfunction_parser import ast, gamedata
 from mcfunction_parser.arguments import vec3
+from mcfunction_parser.nbt import Compound, Int, String
+from mcfunction_parser.pack.tags import normalise_id
 from mcfunction_parser.primitives import is_uuid, uuid_ints
 from mcfunction_parser.reader import ParseError, Reader
 
@@ -303,4 +306,42 @@ def spectate(env, cmd: ast.GenericCommand, ctx) -> int:
     return spectating.spectate(state, camera, player)
 
 
-HANDLERS = {"gamemode": gamemode, "spectate": spectate, "xp": experience, "experience": experience, "effect": effect, "attribute": attribute, "damage": damage}
+# ---------------------------------------------------------------------- waypoint
+# ChatFormatting's colours (ColorArgument)
+TEXT_COLORS = {"black": 0x000000, "dark_blue": 0x0000AA, "dark_green": 0x00AA00, "dark_aqua": 0x00AAAA,
+               "dark_red": 0xAA0000, "dark_purple": 0xAA00AA, "gold": 0xFFAA00, "gray": 0xAAAAAA,
+               "dark_gray": 0x555555, "blue": 0x5555FF, "green": 0x55FF55, "aqua": 0x55FFFF, "red": 0xFF5555,
+               "light_purple": 0xFF55FF, "yellow": 0xFFFF55, "white": 0xFFFFFF}
+DEFAULT_STYLE = "minecraft:default"
+
+
+def waypoint(env, cmd: ast.GenericCommand, ctx) -> int:
+    """``waypoint modify ENTITY color COLOR|hex RRGGBB|reset`` and ``style set STYLE|reset``
+    (WaypointCommand, 1.21.6+): the living entity's locator bar icon, saved as
+    ``locator_bar_icon {style, color}`` while either differs from the default (LivingEntity
+    .addAdditionalSaveData); the result is 0. ``waypoint list`` is not modelled."""
+    words, target = arguments(cmd)
+    if words[:1] != ["modify"]:
+        raise Unmodelled("waypoint list (which entities transmit a waypoint)")
+    entity = single(env.state, target_word(cmd, words, 1, target), ctx)
+    if not living.is_living(entity.type):  # WaypointArgument.getWaypoint
+        raise CommandFailure("argument.waypoint.invalid")
+    icon = entity.data.get("locator_bar_icon")
+    style = str(icon.get("style", DEFAULT_STYLE)) if isinstance(icon, Compound) else DEFAULT_STYLE
+    color = icon.get("color") if isinstance(icon, Compound) else None
+    kind, value = words[2], words[3:]
+    if kind == "color":
+        color = None if value == ["reset"] else Int(int(value[1], 16) if value[0] == "hex" else TEXT_COLORS[value[0]])
+    else:
+        style = DEFAULT_STYLE if value == ["reset"] else normalise_id(value[1])
+    entity.data.pop("locator_bar_icon", None)
+    if style != DEFAULT_STYLE or color is not None:  # Waypoint.Icon.hasData
+        icon = Compound(style=String(style))
+        if color is not None:
+            icon["color"] = color
+        entity.data["locator_bar_icon"] = icon
+    return 0
+
+
+HANDLERS = {"gamemode": gamemode, "spectate": spectate, "xp": experience, "experience": experience, "effect": effect,
+            "attribute": attribute, "damage": damage, "waypoint": waypoint}

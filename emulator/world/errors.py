@@ -176,6 +176,7 @@ MESSAGES = {
     "commands.worldborder.warning.distance.failed": "Nothing changed. The world border warning is already that distance",
     "argument.pos.outofbounds": "That position is outside the allowed boundaries.",
     "commands.particle.failed": "The particle was not visible for anybody",
+    "argument.waypoint.invalid": "Selected entity is not a waypoint",
     "commands.teammsg.failed.noteam": "You must be on a team to message your team",
     "commands.swing.failed.notliving": "No living entities were found to swing",
     "commands.playsound.failed": "The sound is too far away to be heard",

@@ -367,3 +367,24 @@ def test_attribute_messages_name_the_attribute_as_en_us_does(env):
     env.state.entities.summon("minecraft:pig", (0, 0, 0))
     with pytest.raises(CommandFailure, match="^Entity Pig has no attribute Block Interaction Range$"):
         run(env, "attribute @e[type=pig,limit=1] block_interaction_range get")
+
+
+# ---------------------------------------------------------------------- waypoint
+def test_waypoint_modify_saves_the_locator_bar_icon(env):
+    """WaypointCommand.mutateIcon (1.21.6+): the icon's colour and style, saved by LivingEntity as
+    locator_bar_icon while either differs from the default (Waypoint.Icon.hasData); the result is 0."""
+    steve, ctx = player(env)
+    version = (1, 21, 6)
+    assert run(env, "waypoint modify Steve color red", ctx, version) == 0
+    assert steve.data["locator_bar_icon"] == Compound(style=String("minecraft:default"), color=Int(0xFF5555))
+    run(env, "waypoint modify Steve style set ns:ring", ctx, version)
+    run(env, "waypoint modify Steve color hex 00FF00", ctx, version)
+    assert steve.data["locator_bar_icon"] == Compound(style=String("ns:ring"), color=Int(0x00FF00))
+    run(env, "waypoint modify Steve color reset", ctx, version)
+    run(env, "waypoint modify Steve style reset", ctx, version)
+    assert "locator_bar_icon" not in steve.data
+    env.state.entities.summon("minecraft:marker", (0.0, 0.0, 0.0), Compound(Tags=List([String("m")])))
+    with pytest.raises(CommandFailure, match="Selected entity is not a waypoint"):
+        run(env, "waypoint modify @e[tag=m,limit=1] color red", ctx, version)
+    with pytest.raises(Unmodelled):
+        run(env, "waypoint list", ctx, version)
