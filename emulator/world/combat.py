@@ -48,7 +48,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from emulator.world import (advancements, death_protection, equipment, fluids, inventories, items, living, loot,
+from emulator.world import (advancements, death_protection, equipment, fluids, inventories, items, living, loot, mth,
                             predicates, statistics, teams, tools, translations)
 from emulator.world.entities import Entity
 from emulator.world.entity_types import PROJECTILES
@@ -182,7 +182,9 @@ def _difficulty_scaled(state, source: DamageSource, amount: float) -> float:
 
 
 KNOCKBACK_VERSION = (1, 21, 0)  # the hurt's knockback read from the source position (the 1.21 rule)
-HURT_KNOCKBACK = float(F32(0.4))  # LivingEntity.hurtServer: knockback(0.4F, ...)
+HURT_KNOCKBACK = float(F32(0.4))  # LivingEntity.hurtServer: knockback(0.4F, ...); a sweep's too
+SWEEP_KNOCKBACK_FIRST = (1, 21, 3)  # up to it a swept entity is knocked back, then hurt (decompiled 1.21.3)
+SWEEP_HURT_FIRST = (1, 21, 7)  # from it hurt, then knocked back if the hurt went through (1.21.7, 26.1.2)
 
 
 def _hurt_knockback(state, entity, source: DamageSource) -> None:
@@ -301,13 +303,14 @@ def attack(state, player, target) -> bool:
     critical = _critical(state, player, strength)
     if critical:
         damage = damage * F32(1.5)
-    if full and not critical and int(player.data.get("OnGround", 0)) and _sweeps(held):
-        _sweep_targets(state, player, target)
+    sweep = full and not critical and int(player.data.get("OnGround", 0)) and _sweeps(held)
     before, motion = F32(living.health(target)), target.motion
     if not hurt(state, target, float(damage + bonus), DamageSource("minecraft:player_attack", player, player)):
         return False
     if target.is_player:  # Player.attack: the knockback goes to the target's client, the server keeps its motion
         target.motion = motion
+    if sweep:
+        _sweep(state, player, target, held, damage, strength)
     _weapon_used(state, player, access)
     dealt = before - F32(living.health(target))
     statistics.award(state, player, statistics.stat_name("custom", "damage_dealt"),
@@ -381,12 +384,38 @@ def _enchanted_damage(state, held, target):
     return bonus
 
 
-def _sweep_targets(state, player, target) -> None:
-    """Player.attack's sweep hits the living entities in the target's box grown by 1, 0.25, 1 within
-    3 blocks of the player (not it, not the target, not an ally, not a marker armour stand): not
-    modelled here, so a sweep that would hit one raises Unmodelled."""
+def _sweep(state, player, target, held, damage, strength) -> None:
+    """Player.attack's sweep (doSweepAttack in 26.1) after the target was hurt: each living entity
+    it reaches (:func:`_sweep_targets`) is hurt by 1 + sweeping_damage_ratio x the swing's damage
+    (its enchantment bonus against that entity added, the whole scaled by the swing's strength) as
+    ``player_attack`` and knocked back 0.4 along the player's facing (Mth.sin/cos of its yaw). Up
+    to 1.21.3 the knockback comes first and always; from 1.21.7 only after a hurt that went
+    through; in between which rule holds is not known here."""
+    version = tuple(state.version)
+    others = _sweep_targets(state, player, target)
+    if not others:
+        return
+    if SWEEP_KNOCKBACK_FIRST < version < SWEEP_HURT_FIRST:
+        raise Unmodelled(f"a sweep attack in {'.'.join(map(str, version))} (its knockback before or after the hurt)")
+    base = F32(1.0) + F32(living.attribute_value(player, "sweeping_damage_ratio")) * F32(damage)
+    yaw = F32(player.yaw) * F32(math.pi / 180.0)
+    x, z = float(mth.sin(yaw)), -float(mth.cos(yaw))
+    source = DamageSource("minecraft:player_attack", player, player)
+    for other in others:
+        amount = float((base + _enchanted_damage(state, held, other)) * strength)
+        if version <= SWEEP_KNOCKBACK_FIRST:
+            living.knockback(other, HURT_KNOCKBACK, x, z)
+            hurt(state, other, amount, source)
+        elif hurt(state, other, amount, source):
+            living.knockback(other, HURT_KNOCKBACK, x, z)
+
+
+def _sweep_targets(state, player, target) -> list:
+    """The living entities in the target's box grown by 1, 0.25, 1 within 3 blocks of the player
+    (not it, not the target, not an ally, not a marker armour stand)."""
     x0, y0, z0, x1, y1, z1 = target.bounding_box
     px, py, pz = player.pos
+    found = []
     for other in state.entities.living_mobs():
         if other is player or other is target or other.dimension != target.dimension:
             continue
@@ -398,7 +427,8 @@ def _sweep_targets(state, player, target) -> None:
         inside = a0 < x1 + 1 and a1 > x0 - 1 and b0 < y1 + 0.25 and b1 > y0 - 0.25 and c0 < z1 + 1 and c1 > z0 - 1
         ox, oy, oz = other.pos
         if inside and (ox - px) ** 2 + (oy - py) ** 2 + (oz - pz) ** 2 < 9.0:
-            raise Unmodelled(f"a sweep attack hitting {other.display_name} (Player.attack)")
+            found.append(other)
+    return found
 
 
 def _weapon_used(state, player, access) -> None:

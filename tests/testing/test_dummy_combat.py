@@ -238,3 +238,22 @@ def test_fall_deaths_read_the_combat_trackers_most_significant_fall(tmp_path, ba
         "await chat \"^Bob fell from a high place$\"\n"
         "await chat \"^Cid was doomed to fall by Zombie$\"\n"), backend=backend)
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+@pytest.mark.parametrize("pack_format", [48, 81])  # 1.21 (knockback, then hurt), 1.21.7 (hurt, then knockback)
+def test_a_full_sword_swing_on_the_ground_sweeps_the_mobs_beside_its_target(tmp_path, backend, pack_format):
+    # Player.attack / doSweepAttack: the living entities in the target's box grown by 1, 0.25, 1 and
+    # within 3 blocks take 1 + sweeping_damage_ratio (0) x the swing's damage as player_attack
+    result = run(tmp_path, (
+        "dummy Alex spawn\n"
+        "give Alex diamond_sword\n"
+        "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"
+        "summon pig ~1 ~ ~1 {Tags:[\"q\"],NoAI:1b}\n"
+        "summon pig ~1 ~ ~3 {Tags:[\"far\"],NoAI:1b}\n"
+        "await delay 20\n"
+        "dummy Alex attack @e[tag=p,limit=1]\n"
+        "assert entity @e[tag=p,nbt={Health:3.0f}]\n"
+        "assert entity @e[tag=q,nbt={Health:9.0f}]\n"
+        "assert entity @e[tag=far,nbt={Health:10.0f}]\n"), pack_format=pack_format, backend=backend)
+    assert result.status == "passed", result.report()
