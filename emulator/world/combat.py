@@ -132,7 +132,7 @@ def hurt(state, entity, amount: float, source: DamageSource = DamageSource(), by
     remember_attacker(state, entity, source)
     if full:
         _hurt_knockback(state, entity, source)
-    if living.health(entity) <= 0 and not death_protection.saves(state, entity, source.type):
+    if living.health(entity) <= 0 and not death_protection.saves(state, entity, source.type, effect_harm):
         die(state, entity, source)
     hurt_triggers(state, entity, source, amount)
     return True

@@ -14,7 +14,7 @@ DeathProtection.
 """
 from __future__ import annotations
 
-from emulator.world import advancements, inventories, living, predicates, statistics
+from emulator.world import advancements, consume_effects, inventories, living, predicates, statistics
 from emulator.world.errors import Unmodelled
 from emulator.world.items import TOTEM_PROTECTION
 from mcfunction_parser.nbt import Compound, List
@@ -24,9 +24,10 @@ COMPONENT = "minecraft:death_protection"
 COMPONENT_VERSION = (1, 21, 2)
 
 
-def saves(state, entity, source_type: str) -> bool:
+def saves(state, entity, source_type: str, harm) -> bool:
     """Whether a totem the entity holds keeps it alive after a hurt by ``source_type`` left it at
-    0 health (carrying out the save)."""
+    0 health (carrying out the save; ``harm(state, entity, amount)``: an instant damage effect's
+    hurt). A ``teleport_randomly`` death effect is not modelled."""
     if state.resources.in_tag("damage_type", "minecraft:bypasses_invulnerability", source_type):
         return False
     for hand in (inventories.MAINHAND, inventories.OFFHAND):
@@ -36,7 +37,7 @@ def saves(state, entity, source_type: str) -> bool:
         stack = access.get()
         effects = _death_effects(stack, state.version)
         if effects is not None:
-            _protect(state, entity, access, stack, effects)
+            _protect(state, entity, access, stack, effects, harm)
             return True
     return False
 
@@ -53,10 +54,8 @@ def _death_effects(stack, version):
     return protection.get("death_effects", List())
 
 
-def _protect(state, entity, access, stack, effects) -> None:
-    from emulator.world import player_actions  # it hurts through combat, as this module's caller does
-
-    unknown = player_actions.unmodelled_consume_effect(effects)
+def _protect(state, entity, access, stack, effects, harm) -> None:
+    unknown = consume_effects.unmodelled(effects, teleports=False)
     if unknown:
         raise Unmodelled(f"the {unknown} death effect of {stack.id}")
     used = stack.copy()
@@ -67,4 +66,4 @@ def _protect(state, entity, access, stack, effects) -> None:
         advancements.trigger(state, entity, "used_totem", lambda c, ctx: (
             c.get("item") is None or predicates.item_matches(c["item"], ctx, used)))
     living.set_health(entity, 1.0)
-    player_actions.apply_consume_effects(state, entity, effects)
+    consume_effects.apply(state, entity, effects, harm)

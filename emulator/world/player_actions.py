@@ -30,12 +30,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from emulator.world import (advancements, combat, consumables, inventories, item_cooldowns, living, predicates,
-                            projectile_weapons, random_teleport, recipes, statistics, tools)
+from emulator.world import (advancements, combat, consumables, consume_effects, inventories, item_cooldowns, living,
+                            predicates, projectile_weapons, random_teleport, recipes, statistics, tools)
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack, enchantment_level
 from emulator.world.nbt_ops import is_numeric, numeric_value
-from mcfunction_parser.nbt import Compound, Int, IntArray, String
+from mcfunction_parser.nbt import Compound, Int, IntArray
 
 F32 = np.float32
 MAIN, OFF = "main_hand", "off_hand"
@@ -212,7 +212,7 @@ def _start_consuming(state, player, hand: str, stack: ItemStack, consumable: con
     item, none consumes it at once."""
     if consumable.food is not None and not _can_eat(player, consumable.food):
         return "fail"
-    unmodelled = unmodelled_consume_effect(consumable.effects)
+    unmodelled = consume_effects.unmodelled(consumable.effects)
     if unmodelled:  # known when the use starts, so the dummy's command is what the test reports
         raise Unmodelled(f"the {unmodelled} consume effect of {stack.id}")
     if consumable.ticks > 0:
@@ -269,8 +269,10 @@ def _finish(state, player, hand: str, consumable: consumables.Consumable) -> Non
     advancements.trigger(state, player, "consume_item", _item_test(state, stack))
     if consumable.food is not None:
         living.eat(player, consumable.food.nutrition, consumable.food.saturation)
-    _give_effects(state, player, consumable.gives)
-    apply_consume_effects(state, player, consumable.effects, consumable.per_effect_draw)
+    harm = _self_harm(player)
+    consume_effects.give_effects(state, player, consumable.gives, harm)
+    consume_effects.apply(state, player, consumable.effects, harm, random_teleport.teleport_randomly,
+                          consumable.per_effect_draw)
     if player.gamemode != "creative":  # hasInfiniteMaterials: nothing shrinks, no remainder
         _consume_one(state, player, hand)
         if consumable.remainder is not None and before.count > 0:
@@ -278,70 +280,11 @@ def _finish(state, player, hand: str, consumable: consumables.Consumable) -> Non
     item_cooldowns.apply_use_cooldown(state, player, before)  # applyAfterUseComponentSideEffects
 
 
-def apply_consume_effects(state, entity, effects, per_effect_draw: bool = False) -> None:
-    """Each consume effect in its order (Consumable.onConsume, DeathProtection.applyEffects), an
-    ``apply_effects`` drawing its chance from the emulator's random."""
-    for effect in effects:
-        kind = _effect_type(effect)
-        if kind == "apply_effects":
-            _give_effects(state, entity, consumables.drawn(effect, state.resources.random, per_effect_draw))
-        else:
-            _CONSUME_EFFECTS[kind](state, entity, effect)
-
-
-def unmodelled_consume_effect(effects) -> str | None:
-    """The type of the first consume effect :func:`apply_consume_effects` does not know."""
-    unknown = [e for e in effects if _effect_type(e) not in _CONSUME_EFFECTS]
-    return _effect_type(unknown[0]) if unknown else None
-
-
-def _effect_type(effect) -> str:
-    return str(effect.get("type", "")).removeprefix("minecraft:") if isinstance(effect, Compound) else ""
-
-
-def _give_effects(state, player, effects) -> None:
-    """LivingEntity.addEffect for each (PotionContents.applyToLivingEntity: an instantaneous effect
-    acts at once instead, a harm as indirect magic from the player)."""
-    for effect_id, duration, amplifier in effects:
-        if effect_id in living.INSTANT:
-            living.apply_instant(state, player, effect_id, amplifier, _self_harm(player))
-        elif living.give_effect(state, player, effect_id, duration, amplifier, effect_id != "minecraft:bad_omen"):
-            advancements.effects_changed(state, player, None)
-
-
 def _self_harm(player):
+    """A potion's instant harm as indirect magic from the player who drank it."""
     def harm(state, entity, amount: float) -> bool:
         return combat.hurt(state, entity, amount, combat.DamageSource("minecraft:indirect_magic", player, player))
     return harm
-
-
-def _remove_effects(state, player, effect) -> None:
-    """RemoveStatusEffectsConsumeEffect: the listed effects (an id, a list or a #tag)."""
-    listed = effect.get("effects")
-    ids = [str(listed)] if isinstance(listed, String) else [str(e) for e in (listed or ())]
-    if any(i.startswith("#") for i in ids):
-        raise Unmodelled("a remove_effects consume effect naming an effect tag")
-    if any([living.clear_effects(player, i) for i in ids]):
-        advancements.effects_changed(state, player, None)
-
-
-def _clear_all_effects(state, player, effect) -> None:
-    """ClearAllStatusEffectsConsumeEffect: LivingEntity.removeAllEffects."""
-    if living.clear_effects(player):
-        advancements.effects_changed(state, player, None)
-
-
-def _teleport_randomly(state, player, effect) -> None:
-    """TeleportRandomlyConsumeEffect (a chorus fruit's; ChorusFruitItem before 1.21.2)."""
-    diameter = effect.get("diameter")
-    random_teleport.teleport_randomly(state, player, float(numeric_value(diameter)) if diameter is not None else 16.0)
-
-
-# the consume effects carried out after the listeners (apply_effects: apply_consume_effects draws
-# them; play_sound: nothing a pack observes)
-_CONSUME_EFFECTS = {"apply_effects": None,
-                    "remove_effects": _remove_effects, "clear_all_effects": _clear_all_effects,
-                    "teleport_randomly": _teleport_randomly, "play_sound": lambda state, player, effect: None}
 
 
 def _give_remainder(state, player, access, remainder: ItemStack) -> None:
