@@ -368,7 +368,8 @@ class Runtime:
     def _end_tick(self, cost: int) -> int:
         """Steps 3-6 of a tick whose functions cost ``cost``; returns the tick's whole cost."""
         state = self.state
-        self._reload_if_asked()  # asked for by a function the tick ran
+        if state.pack_repository.pending is not None:  # asked for by a function the tick ran
+            self.apply_reload()
         if state.clocks is not None:
             state.clocks.tick()
         # ServerLevel.tick: advanceWeatherCycle, updateSkyBrightness, then tickTime

@@ -55,6 +55,8 @@ def stop(state, player) -> None:
 
 def tick_cameras(state) -> None:
     """ServerPlayer.tick's camera step, for each player behind a camera."""
+    if not state.cameras:  # every tick: nobody spectating is the common case
+        return
     for player, (camera, snapped) in list(state.cameras.items()):
         if player.pos != snapped or player.gamemode != "spectator" or not player.alive:
             stop(state, player)  # teleported or no longer a spectator: the camera ended then
