@@ -1,8 +1,8 @@
 """The commands on the server's data packs: ``datapack enable|disable|list`` and ``reload``.
 
-Sources (decompiled 26.1.2, the same since 1.20.3): server/commands/DataPackCommand.java (getPack's
-checks; enablePack/disablePack return the size of the new selection, before the required vanilla
-pack is put back; listPacks adds the two lists' sizes), ReloadCommand.java (result 0; the packs
+Sources (decompiled 26.1.2; the same in 1.16.5, 1.20.4, 1.21.3): server/commands/DataPackCommand.java
+(getPack's checks; enablePack/disablePack return the size of the new selection, before the required
+vanilla pack is put back; listPacks adds the two lists' sizes), ReloadCommand.java (result 0; the packs
 selected now, and any new one not disabled). Both end in MinecraftServer.reloadResources, which
 the server thread waits for: the new packs are in place when the command returns. Here the runtime
 puts them in place when the root sequence running the command ends, or, for a tick or load function,

@@ -37,6 +37,10 @@ ServerFunctionManager.execute); one earned outside any command (a step of the ti
 dummy's action) runs at once as a root of its own, as the player (:meth:`Runtime.run_rewards`,
 after each step).
 
+A reload ``datapack`` or ``reload`` asks for (:mod:`emulator.world.pack_repository`) is carried out
+when the root that asked ends, or, asked by a load or tick function, once the functions that list
+began have run (:meth:`Runtime.apply_reload`); the next tick runs ``#minecraft:load`` first.
+
 Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs, with its result.
 
 :meth:`Runtime.run_ticks` hands a run of quiet ticks to a backend that batches them
