@@ -13,6 +13,7 @@ list it began): :meth:`emulator.runtime.server.Runtime.apply_reload`. The next t
 from __future__ import annotations
 
 from emulator.world.errors import CommandFailure, Unmodelled
+from emulator.world.pack_repository import FILE_PREFIX, VANILLA
 from mcfunction_parser import ast
 from mcfunction_parser.reader import Reader
 
@@ -35,14 +36,14 @@ def datapack(env, cmd: ast.GenericCommand, ctx) -> int:
         return enabled + available
     if action == "create":
         raise Unmodelled("datapack create (writing a new pack into the world's datapacks folder)")
-    name = _pack(repository, words.read(Reader.string), enabling=action == "enable")
+    name = _pack(env, cmd, repository, words.read(Reader.string), enabling=action == "enable")
     selection = list(repository.current)
     if action == "disable":
         selection.remove(name)
     else:
         where = words.word() if words.more() else "last"
         if where in ("before", "after"):
-            existing = _pack(repository, words.read(Reader.string), enabling=False)
+            existing = _pack(env, cmd, repository, words.read(Reader.string), enabling=False)
             selection.insert(selection.index(existing) + (where == "after"), name)
         else:  # a world pack's default position is the top
             selection.insert(0 if where == "first" else len(selection), name)
@@ -50,11 +51,16 @@ def datapack(env, cmd: ast.GenericCommand, ctx) -> int:
     return len(selection)
 
 
-def _pack(repository, name: str, enabling: bool) -> str:
-    """DataPackCommand.getPack: a known pack, not yet enabled when ``enabling``, else enabled."""
+def _pack(env, cmd, repository, name: str, enabling: bool) -> str:
+    """DataPackCommand.getPack: a known pack, not yet enabled when ``enabling``, else enabled. An
+    unknown ``file/`` id fails as in the game, with a warning naming the ids loaded (a pack's id is
+    its folder's or zip file's name, which a world may not share with the folder tested here)."""
     if name in FEATURE_PACKS:
         raise Unmodelled(f"the game's feature pack '{name}' (its feature flags)")
     if not repository.knows(name):
+        if name.startswith(FILE_PREFIX):
+            env.warn(cmd, f"no loaded pack is '{name}'; the packs loaded are "
+                          f"{', '.join(p for p in repository.ids() if p != VANILLA)}")
         raise CommandFailure("commands.datapack.unknown", name)
     enabled = name in repository.current
     if enabling and enabled:

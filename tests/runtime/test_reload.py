@@ -76,6 +76,9 @@ execute store success score #before o run datapack enable "file/b" before "file/
     # getPack: unknown, already enabled, not enabled (also for `before EXISTING`, which must be enabled)
     assert [emu.score(h, "o") for h in ("#unknown", "#on", "#off", "#before")] == [0, 0, 0, 0]
     assert emu.state.pack_repository.selected == ["vanilla", "file/a"]
+    # the game's failure, and a warning naming the ids loaded (a world's pack may be named otherwise)
+    assert [d.message for d in emu.diagnostics if "no loaded pack" in d.message] == [
+        "no loaded pack is 'file/nope'; the packs loaded are file/a, file/b"]
 
 
 @pytest.mark.parametrize("backend", BACKENDS)
