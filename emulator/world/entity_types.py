@@ -26,6 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from mcfunction_parser.nbt import Int, IntArray
+
 F32 = np.float32
 
 
@@ -47,6 +49,18 @@ _BOATS = " ".join(f"{wood}_boat {wood}_chest_boat" for wood in (
     "acacia", "birch", "cherry", "dark_oak", "jungle", "mangrove", "oak", "pale_oak", "spruce")) \
     + " bamboo_raft bamboo_chest_raft boat chest_boat"
 BOATS = frozenset("minecraft:" + name for name in _BOATS.split())
+# BlockAttachedEntity: the block it hangs on is its own position's (setPos: BlockPos.containing), saved
+# as TileX/TileY/TileZ before 1.21.5 and as block_pos from it (vanilla-mcdoc's BlockAttachedEntity)
+BLOCK_ATTACHED = frozenset({"minecraft:item_frame", "minecraft:glow_item_frame", "minecraft:painting",
+                            "minecraft:leash_knot"})
+BLOCK_POS_VERSION = (1, 21, 5)
+
+
+def attached_block_nbt(block, version) -> dict:
+    """The fields a block-attached entity saves its block in, for ``version``."""
+    if tuple(version) >= BLOCK_POS_VERSION:
+        return {"block_pos": IntArray([Int(c) for c in block])}
+    return {"TileX": Int(block[0]), "TileY": Int(block[1]), "TileZ": Int(block[2])}
 _MINECARTS = "minecart chest_minecart command_block_minecart furnace_minecart hopper_minecart spawner_minecart " \
              "tnt_minecart"
 # the types whose entities are projectiles (the classes extending Projectile, and the eye of ender)

@@ -65,12 +65,13 @@ from emulator.world import (advancements, block_shapes, cauldrons, fire, invento
                             statistics, tools)
 from emulator.world.blocks import BlockState
 from emulator.world.entities import TextTag
+from emulator.world.entity_types import attached_block_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.placed_states import OFFSETS
 from emulator.world.player_actions import MAIN, hand_slot
 from mcfunction_parser import gamedata
-from mcfunction_parser.nbt import Byte, Compound, Float, Int, List, String
+from mcfunction_parser.nbt import Byte, Compound, Float, List, String
 
 F32 = np.float32
 
@@ -145,15 +146,15 @@ def _item_frame(state, player, hand: str, access, stack, pos, face: str) -> str:
             _meets_a_hanging_entity(state, player.dimension, box):
         return "consume"  # it would not survive: nothing placed, the use still consumed
     yaw, pitch = (0.0, -90.0 * dy) if dy else (_YAW[face], 0.0)
-    state.entities.summon(FRAMES[stack.id], centre, _frame_nbt(front, face, yaw, pitch), yaw=yaw, pitch=pitch,
+    state.entities.summon(FRAMES[stack.id], centre, _frame_nbt(front, face, yaw, pitch, state.version), yaw=yaw, pitch=pitch,
                           dimension=player.dimension)
     stack.count -= 1
     access.set(stack)
     return "consume"
 
 
-def _frame_nbt(front, face: str, yaw: float, pitch: float) -> Compound:
-    return Compound(Facing=Byte(FACE_DATA[face]), TileX=Int(front[0]), TileY=Int(front[1]), TileZ=Int(front[2]),
+def _frame_nbt(front, face: str, yaw: float, pitch: float, version) -> Compound:
+    return Compound(Facing=Byte(FACE_DATA[face]), **attached_block_nbt(front, version),
                     Rotation=List([Float(yaw), Float(pitch)]))
 
 

@@ -19,18 +19,16 @@ which is used), ``blocks`` (``{pos: [x, y, z], state: palette index, nbt?}``) an
 """
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, replace
 
 from emulator.world import block_rotation, inventories, projectiles
 from emulator.world.blocks import BlockSpec, parse_block, with_defaults
+from emulator.world.entity_types import BLOCK_ATTACHED, attached_block_nbt
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.nbt_binary import NbtFormatError, read_nbt
 from mcfunction_parser.nbt import Compound, Double, Float, Int, List, Long, String
 from mcfunction_parser.pack.versions import uses_singular_folders
-
-
-# HangingEntity: its own rotate and mirror turn its facing
-HANGING = frozenset({"minecraft:item_frame", "minecraft:glow_item_frame", "minecraft:painting", "minecraft:leash_knot"})
 
 
 class StructureError(ValueError):
@@ -145,7 +143,7 @@ def place(state, template: Template, origin: tuple[int, int, int], dimension: st
     (StructureTemplate.placeInWorld)."""
     if not (template.blocks or template.entities) or min(template.size) < 1:
         return False
-    if (mirror or rotation) and any(str(nbt["id"]) in HANGING for _, nbt in template.entities):
+    if (mirror or rotation) and any(str(nbt["id"]) in BLOCK_ATTACHED for _, nbt in template.entities):
         raise Unmodelled("a turned or mirrored template's item frames and paintings (HangingEntity.rotate)")
     blocks = state.blocks_in(dimension)
     barrier = with_defaults(parse_block("minecraft:barrier"), state.version)
@@ -162,6 +160,10 @@ def place(state, template: Template, origin: tuple[int, int, int], dimension: st
         if mirror or rotation:
             _turn_entity(data, mirror, rotation)
         pos = _offset(origin, block_rotation.turned_entity_pos(relative, mirror, rotation))
+        if str(nbt["id"]) in BLOCK_ATTACHED:  # BlockAttachedEntity.setPos: its block is its new position's
+            for key in ("TileX", "TileY", "TileZ", "block_pos"):
+                data.pop(key, None)
+            data.update(attached_block_nbt(tuple(math.floor(c) for c in pos), state.version))
         try:
             projectiles.launched(state, state.entities.summon(str(nbt["id"]), pos, data, dimension=dimension))
         except CommandFailure:

@@ -86,3 +86,18 @@ def test_a_container_placed_with_a_loot_table_draws_its_seed(tmp_path):
                             "demo/test/loot.mcfunction": test + "\n"})
     result = results(root, "python")["demo:loot"]
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("backend", ["numba", "python"])
+def test_a_placed_frame_hangs_on_its_new_block(tmp_path, backend):
+    """BlockAttachedEntity.setPos (placeEntities' snapTo): the block it hangs on is its new
+    position's, whatever block the template saved."""
+    frame = {"pos": ("list", ("d", [0.5, 0.5, 0.96875])), "blockPos": ints(0, 0, 0),
+             "nbt": ("compound", {"id": ("str", "minecraft:item_frame"), "Facing": ("b", 2),
+                                  "TileX": ("i", 100), "TileY": ("i", 64), "TileZ": ("i", 100)})}
+    root = write(tmp_path, {"demo/structure/room.nbt": structure(BLOCKS, PALETTE, [frame]),
+                            "demo/test/framed.mcfunction":
+                                "place template demo:room ~3 ~ ~\n"
+                                "assert entity @e[type=item_frame,nbt={TileX:3,TileY:1,TileZ:0}]\n"})
+    result = results(root, backend)["demo:framed"]
+    assert result.status == "passed", result.report()

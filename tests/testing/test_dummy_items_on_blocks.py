@@ -270,3 +270,18 @@ def test_a_water_bottle_turns_dirt_to_mud(tmp_path):
         "assert items entity @s weapon.mainhand glass_bottle\n"
         "assert score @s used matches 2\n"))
     assert result.status == "passed", result.report()
+
+
+@pytest.mark.parametrize("pack_format, key", [(48, "TileX"), (71, "block_pos")])  # 1.21, 1.21.5
+def test_a_frame_saves_its_block_as_its_release_does(tmp_path, pack_format, key):
+    """BlockAttachedEntity.addAdditionalSaveData: TileX/TileY/TileZ before 1.21.5, block_pos from it
+    (vanilla-mcdoc's BlockAttachedEntity: TileX until 1.21.5, block_pos since)."""
+    result = run(tmp_path, "# @dummy\nfill ~-1 ~ ~-1 ~3 ~3 ~3 air\n" + (
+        "scoreboard objectives add t dummy\n"
+        "setblock ~1 ~1 ~2 stone\n"
+        "give @s item_frame\n"
+        "dummy @s use block ~1 ~1 ~2 north\n"
+        "data modify storage t:t frame set from entity @e[type=item_frame,limit=1]\n"
+        f"execute store success score #saved t run data get storage t:t frame.{key}\n"
+        "assert score #saved t matches 1\n"), pack_format=pack_format)
+    assert result.status == "passed", result.report()
