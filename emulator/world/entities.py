@@ -48,7 +48,7 @@ import numpy as np
 
 from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String, to_snbt
-from emulator.world import display, items, java_random, living, random_sequences, rotation
+from emulator.world import display, frames, items, java_random, living, random_sequences, rotation
 from emulator.world.dimensions import OVERWORLD
 from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
 from emulator.world.entity_table import (
@@ -654,6 +654,8 @@ class EntityStore:
             if self.by_uuid(entity.uuid) is not None:
                 raise CommandFailure("commands.summon.failed.uuid")
         entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
+        if type_id in frames.FRAMES:  # BlockAttachedEntity.setPos: hung on that position's block
+            frames.settle(entity, self.version)
         entity.team = self.team_of(entity.score_holder)  # a UUID a team already names
         return self._add(entity)
 

@@ -61,24 +61,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from emulator.world import (advancements, block_shapes, cauldrons, fire, inventories, mth, player_actions,
+from emulator.world import (advancements, block_shapes, cauldrons, fire, frames, inventories, mth, player_actions,
                             statistics, tools)
 from emulator.world.blocks import BlockState
 from emulator.world.entities import TextTag
-from emulator.world.entity_types import attached_block_nbt
 from emulator.world.errors import Unmodelled
 from emulator.world.items import ItemStack
 from emulator.world.placed_states import OFFSETS
 from emulator.world.player_actions import MAIN, hand_slot
 from mcfunction_parser import gamedata
-from mcfunction_parser.nbt import Byte, Compound, Float, List, String
+from mcfunction_parser.nbt import Byte, Compound, String
 
 F32 = np.float32
 
-FRAMES = {"minecraft:item_frame": "minecraft:item_frame", "minecraft:glow_item_frame": "minecraft:glow_item_frame"}
-FACE_DATA = {"down": 0, "up": 1, "north": 2, "south": 3, "west": 4, "east": 5}  # Direction.get3DDataValue
-_YAW = {"south": 0.0, "west": 90.0, "north": 180.0, "east": 270.0}  # Direction.toYRot (2D data value x 90)
-FRAME_DEPTH = 0.46875  # ItemFrame.calculateBoundingBox: the centre's offset back from the block's centre
 # items whose useOn is their own (Item.useOn overrides) and is not modelled here
 _OWN_USE_ON = frozenset("minecraft:" + n for n in (
     "painting bone_meal brush compass debug_stick end_crystal ender_eye fire_charge "
@@ -140,22 +135,17 @@ def _item_frame(state, player, hand: str, access, stack, pos, face: str) -> str:
     low, high = state.entities.table.levels.build_height(player.dimension, state.version)
     if not low <= front[1] < high:
         return "fail"
-    centre = tuple(c + 0.5 - FRAME_DEPTH * d for c, d in zip(front, (dx, dy, dz)))
+    centre = frames.centre(front, face)
     box = _frame_box(centre, face)
     if block_shapes.collides(state.blocks.get(front)) or not block_shapes.is_solid(state.blocks.get(pos)) or \
             _meets_a_hanging_entity(state, player.dimension, box):
         return "consume"  # it would not survive: nothing placed, the use still consumed
-    yaw, pitch = (0.0, -90.0 * dy) if dy else (_YAW[face], 0.0)
-    state.entities.summon(FRAMES[stack.id], centre, _frame_nbt(front, face, yaw, pitch, state.version), yaw=yaw, pitch=pitch,
+    yaw, pitch = frames.rotation(face)
+    state.entities.summon(stack.id, centre, Compound(Facing=Byte(frames.FACE_DATA[face])), yaw=yaw, pitch=pitch,
                           dimension=player.dimension)
     stack.count -= 1
     access.set(stack)
     return "consume"
-
-
-def _frame_nbt(front, face: str, yaw: float, pitch: float, version) -> Compound:
-    return Compound(Facing=Byte(FACE_DATA[face]), **attached_block_nbt(front, version),
-                    Rotation=List([Float(yaw), Float(pitch)]))
 
 
 def _frame_box(centre, face: str):
@@ -174,8 +164,8 @@ def _meets_a_hanging_entity(state, dimension: str, box) -> bool:
             continue
         if entity.type == "minecraft:painting" and all(abs(a - b) < 4 for a, b in zip(entity.pos, box[:3])):
             raise Unmodelled("placing an item frame beside a painting (whether their boxes meet)")
-        if entity.type in FRAMES:
-            face = {v: k for k, v in FACE_DATA.items()}.get(int(entity.data.get("Facing", Byte(3))), "south")
+        if entity.type in frames.FRAMES:
+            face = frames.face_of(entity)
             other = _frame_box(entity.pos, face)
             if all(box[i] < other[i + 3] and box[i + 3] > other[i] for i in range(3)):
                 return True

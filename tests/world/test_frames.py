@@ -1,0 +1,39 @@
+"""An item frame summoned hangs as the game hangs it (decompiled 26.1.2: SummonCommand.createEntity
+loads the NBT then snaps to the position; BlockAttachedEntity.setPos, HangingEntity.recalculateBoundingBox,
+ItemFrame.setDirection/createBoundingBox/readAdditionalSaveData/addAdditionalSaveData)."""
+import pytest
+
+from emulator.api import Emulator
+from tests.conftest import write_pack
+
+BACKENDS = ["numba", "python"]
+
+
+def frame(tmp_path, backend, nbt: str, mc: str):
+    pack = write_pack(tmp_path / "pack", {"t/function/go.mcfunction": f"summon item_frame 1.2 64.7 1.9 {nbt}"})
+    emu = Emulator(backend=backend)
+    emu.load(pack, mc_version=mc)
+    emu.start()
+    emu.call("t:go")
+    return emu._one_entity("@e[type=item_frame,limit=1]")
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_summoned_frame_hangs_on_its_positions_block(tmp_path, backend):
+    # facing north: the block's centre less 0.46875 north; yaw 180; the defaults saved
+    entity = frame(tmp_path, backend, "{Facing:2b,ItemRotation:3b}", "1.21.5")
+    assert entity.pos == (1.5, 64.5, 1.96875)
+    assert (float(entity.yaw), float(entity.pitch)) == (180.0, 0.0)
+    data = entity.data
+    assert list(data["block_pos"]) == [1, 64, 1] and "TileX" not in data
+    assert (int(data["ItemRotation"]), float(data["ItemDropChance"]), int(data["Fixed"]), int(data["Invisible"])) == \
+        (3, 1.0, 0, 0)
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_without_a_facing_it_faces_down(tmp_path, backend):
+    # ItemFrame.readAdditionalSaveData: Facing missing reads as down; pitch -90 x the step (down: 90)
+    entity = frame(tmp_path, backend, "{}", "1.21.4")
+    assert entity.pos == (1.5, 64.96875, 1.5)
+    assert (float(entity.yaw), float(entity.pitch)) == (0.0, 90.0)
+    assert (int(entity.data["Facing"]), int(entity.data["TileX"]), int(entity.data["TileY"])) == (0, 1, 64)
