@@ -33,14 +33,13 @@ from __future__ import annotations
 
 import math
 
-from emulator.world import armor_stands, combat, inventories, living, mob_use, relations
+from emulator.world import armor_stands, combat, frames, inventories, living, mob_use, relations
 from emulator.world.entity_types import BOATS
 from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import DamageSource
 from emulator.world.player_actions import hand_slot
 from mcfunction_parser.nbt import Byte, Compound, Int, IntArray, Long
 
-ITEM_FRAMES = ("minecraft:item_frame", "minecraft:glow_item_frame")
 ARMOR_STAND = "minecraft:armor_stand"
 MINECART = "minecraft:minecart"
 RESULTS_VERSION = (1, 21, 2)  # InteractionResult's rework: an empty frame used with an empty hand passes
@@ -82,7 +81,7 @@ def interact_on(state, player, hand: str, entity) -> str:
     if entity.type == "minecraft:interaction":
         record(state, player, entity, "interaction")
         return "consume"
-    if entity.type in ITEM_FRAMES:
+    if entity.type in frames.FRAMES:
         return _item_frame(state, player, hand, entity)
     if entity.type in PASSIVE:
         return "pass"
