@@ -56,11 +56,14 @@ BLOCK_ATTACHED = frozenset({"minecraft:item_frame", "minecraft:glow_item_frame",
 BLOCK_POS_VERSION = (1, 21, 5)
 
 
-def attached_block_nbt(block, version) -> dict:
-    """The fields a block-attached entity saves its block in, for ``version``."""
+def set_attached_block(data, block, version) -> None:
+    """Save ``block`` in a block-attached entity's NBT ``data`` in the fields of ``version``."""
+    for key in ("TileX", "TileY", "TileZ", "block_pos"):
+        data.pop(key, None)
     if tuple(version) >= BLOCK_POS_VERSION:
-        return {"block_pos": IntArray([Int(c) for c in block])}
-    return {"TileX": Int(block[0]), "TileY": Int(block[1]), "TileZ": Int(block[2])}
+        data["block_pos"] = IntArray([Int(c) for c in block])
+    else:
+        data.update(TileX=Int(block[0]), TileY=Int(block[1]), TileZ=Int(block[2]))
 _MINECARTS = "minecart chest_minecart command_block_minecart furnace_minecart hopper_minecart spawner_minecart " \
              "tnt_minecart"
 # the types whose entities are projectiles (the classes extending Projectile, and the eye of ender)

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from emulator.world.entity_types import attached_block_nbt
+from emulator.world.entity_types import set_attached_block
 from emulator.world.placed_states import OFFSETS
 from mcfunction_parser.nbt import Byte, Float
 
@@ -47,9 +47,7 @@ def settle(entity, version) -> None:
     yaw, pitch = rotation(face)
     entity.yaw, entity.pitch = np.float32(yaw), np.float32(pitch)
     data = entity.data
-    for key in ("TileX", "TileY", "TileZ", "block_pos"):
-        data.pop(key, None)
-    data.update(attached_block_nbt(block, version))
+    set_attached_block(data, block, version)
     data["Facing"] = Byte(FACE_DATA[face])
     data.setdefault("ItemRotation", Byte(0))
     data.setdefault("ItemDropChance", Float(1.0))

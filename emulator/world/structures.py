@@ -24,7 +24,7 @@ from dataclasses import dataclass, replace
 
 from emulator.world import block_rotation, inventories, projectiles
 from emulator.world.blocks import BlockSpec, parse_block, with_defaults
-from emulator.world.entity_types import BLOCK_ATTACHED, attached_block_nbt
+from emulator.world.entity_types import BLOCK_ATTACHED, set_attached_block
 from emulator.world.errors import CommandFailure, Unmodelled
 from emulator.world.nbt_binary import NbtFormatError, read_nbt
 from mcfunction_parser.nbt import Compound, Double, Float, Int, List, Long, String
@@ -161,9 +161,7 @@ def place(state, template: Template, origin: tuple[int, int, int], dimension: st
             _turn_entity(data, mirror, rotation)
         pos = _offset(origin, block_rotation.turned_entity_pos(relative, mirror, rotation))
         if str(nbt["id"]) in BLOCK_ATTACHED:  # BlockAttachedEntity.setPos: its block is its new position's
-            for key in ("TileX", "TileY", "TileZ", "block_pos"):
-                data.pop(key, None)
-            data.update(attached_block_nbt(tuple(math.floor(c) for c in pos), state.version))
+            set_attached_block(data, tuple(math.floor(c) for c in pos), state.version)
         try:
             projectiles.launched(state, state.entities.summon(str(nbt["id"]), pos, data, dimension=dimension))
         except CommandFailure:
