@@ -22,13 +22,14 @@ from mcfunction_parser.pack.advancements import criteria, requirements
 # the triggers that fire in the emulator (the player actions fire using_item .. placed_block:
 # emulator.world.player_actions, block_use, block_placing, combat; a teleport between levels
 # changed_dimension; a tool's wear item_durability_changed: emulator.world.tools; recipe_unlocked;
-# a totem used_totem: emulator.world.death_protection; levitation: advancements.tick_players)
+# a totem used_totem: emulator.world.death_protection; levitation and enter_block:
+# advancements.tick_players)
 OBSERVED = frozenset({"impossible", "tick", "location", "inventory_changed", "using_item", "consume_item",
                       "default_block_use", "item_used_on_block", "player_hurt_entity", "entity_hurt_player",
                       "player_killed_entity", "entity_killed_player", "placed_block", "changed_dimension",
                       "effects_changed", "recipe_unlocked", "item_durability_changed", "crafter_recipe_crafted",
                       "started_riding", "thrown_item_picked_up_by_player", "thrown_item_picked_up_by_entity",
-                      "used_totem", "levitation"})
+                      "used_totem", "levitation", "enter_block"})
 
 
 def full_id(text) -> str | None:

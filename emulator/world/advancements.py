@@ -38,7 +38,7 @@ from __future__ import annotations
 
 from typing import Callable
 
-from emulator.world import inventories, living, loot, predicates, recipes
+from emulator.world import inside_blocks, inventories, living, loot, predicates, recipes
 from emulator.world.advancement_progress import OBSERVED, full_id as _id, is_done, short_trigger
 from emulator.world.entities import Entity
 from emulator.world.errors import Unmodelled
@@ -185,7 +185,8 @@ def listened(state, trigger: str) -> bool:
 
 def tick_players(state) -> None:
     """ServerPlayer.tick: the inventory's changes are broadcast (inventory_changed), then ``tick``
-    fires; ``location`` every 20 ticks of the player (ServerPlayer.doTick)."""
+    fires; then, in ServerPlayer.doTick, ``enter_block`` (aiStep) and ``location`` every 20 ticks
+    of the player."""
     if not state.resources.advancements:
         return
     for player in state.entities.players():
@@ -193,6 +194,7 @@ def tick_players(state) -> None:
         broadcast_changes(state, player)
         trigger(state, player, "tick")
         _levitation(state, player)
+        _enter_block(state, player)
         if (state.tick - first) % LOCATION_PERIOD == 0:
             trigger(state, player, "location")
 
@@ -212,6 +214,23 @@ def _levitation(state, player: Entity) -> None:
     trigger(state, player, "levitation", lambda c, ctx: (
         (c.get("distance") is None or predicates.distance_matches(c["distance"], origin, player.pos))
         and (c.get("duration") is None or in_ints(c["duration"], duration))))
+
+
+def _enter_block(state, player: Entity) -> None:
+    """LivingEntity.aiStep (doTick, after ``tick``, before ``location``): ``enter_block`` for each
+    block the player is inside (:mod:`emulator.world.inside_blocks`); EnterBlockTrigger.
+    TriggerInstance.matches: the ``block`` (an id) and the ``state`` properties, each if given."""
+    if not listened(state, "enter_block"):
+        return
+    try:
+        for block in inside_blocks.entered(state, player, state.moves.get(player)):
+            trigger(state, player, "enter_block", lambda c, ctx, block=block: (
+                _id(c.get("block")) in (None, block.id)
+                and predicates.state_matches(c.get("state"), block, state.version)))
+    except Unmodelled as reason:
+        message = f"advancement trigger enter_block: {reason.message.removeprefix('not modelled: ')}"
+        if not any(d.message == message for d in state.diagnostics):
+            state.error(message, severity="warning", unmodelled=True)
 
 
 def changed_dimension(state, player: Entity, origin: str) -> None:

@@ -8,7 +8,8 @@ and ``OnGround`` are what the API sets (ServerPlayer.tick does not call travel),
 fall here.
 
 - ``fall(state, player)``: register a player whose physics the server ticks.
-- ``tick_falling(state)``: each such player's tick; ``tick_is_idle(state)``.
+- ``tick_falling(state)``: each such player's tick (its move kept in ``state.moves`` for the tick's
+  later steps: :mod:`emulator.world.inside_blocks`); ``tick_is_idle(state)``.
 - ``jump(state, player)``: LivingEntity.jumpFromGround (Player's: the ``jump`` statistic, exhaustion).
 - ``move(state, entity, motion)``: Entity.move for any entity (the one there is: the other entities'
   ticks in :mod:`emulator.world.motion` move through it); ``collide(blocks, box, motion)``:
@@ -82,6 +83,8 @@ def tick_is_idle(state) -> bool:
 
 
 def tick_falling(state) -> None:
+    if state.moves:
+        state.moves.clear()
     if not state.falling:
         return
     state.falling[:] = [p for p in state.falling if p.alive]
@@ -126,7 +129,9 @@ def _tick(state, player) -> None:
     if x or z:
         raise Unmodelled("horizontal motion (friction, walls, stepping up)")
     keep_falls_short(player)
+    before = player.pos
     _, y, _ = move(state, player, (x, y, z))
+    state.moves[player] = (before, player.pos)
     player.motion = (x, vertical_after(player, y, living.attribute_value(player, "gravity")) * DRAG, z)
 
 

@@ -159,7 +159,7 @@ def _block_state_property(c: dict, ctx: LootContext) -> bool:
     state = ctx.block_state
     if state is None or state.id != _id(c["block"]):
         return False
-    return _state_matches(c.get("properties"), dict(state.properties), state.id, knows_states(state.id, ctx.version))
+    return state_matches(c.get("properties"), state, ctx.version)
 
 
 def _match_tool(c: dict, ctx: LootContext) -> bool:
@@ -699,12 +699,16 @@ def block_matches(predicate: dict, ctx: LootContext, pos) -> bool:
         wanted = "#" + predicate["tag"]
     if wanted is not None and not _holder_set(wanted, "block", state.id, ctx):
         return False
-    if "state" in predicate and not _state_matches(predicate["state"], dict(state.properties), state.id,
-                                                   knows_states(state.id, ctx.version)):
+    if "state" in predicate and not state_matches(predicate["state"], state, ctx.version):
         return False
     if "nbt" in predicate:
         return compare_nbt(snbt_or_tag(predicate["nbt"]), blocks.block_nbt(pos, quiet=True))
     return True
+
+
+def state_matches(wanted: dict | None, state, version) -> bool:
+    """StatePropertiesPredicate.matches for a block state of ``version``."""
+    return _state_matches(wanted, dict(state.properties), state.id, knows_states(state.id, version))
 
 
 def _state_matches(wanted: dict | None, properties: dict[str, str], block_id: str, complete: bool) -> bool:
