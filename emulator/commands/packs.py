@@ -5,7 +5,9 @@ Sources (decompiled 26.1.2; the same in 1.16.5, 1.20.4, 1.21.3): server/commands
 vanilla pack is put back; listPacks adds the two lists' sizes), ReloadCommand.java (result 0; the packs
 selected now, and any new one not disabled). Both end in MinecraftServer.reloadResources, which
 the server thread waits for: the new packs are in place when the command returns. Here the runtime
-puts them in place when the root sequence running the command ends, or, for a tick or load function,
+puts them in place when the root sequence running the command ends (a function called after it in
+that root whose definition the reload changes is reported not modelled:
+:mod:`emulator.runtime.reloads`), or, for a tick or load function,
 after the rest of the functions that tick had started (as ServerFunctionManager.tick goes on with the
 list it began): :meth:`emulator.runtime.server.Runtime.apply_reload`. The next tick runs
 ``#minecraft:load`` first (ServerFunctionManager.replaceLibrary sets postReload).
@@ -47,7 +49,7 @@ def datapack(env, cmd: ast.GenericCommand, ctx) -> int:
             selection.insert(selection.index(existing) + (where == "after"), name)
         else:  # a world pack's default position is the top
             selection.insert(0 if where == "first" else len(selection), name)
-    repository.reload(selection)
+    repository.reload(selection, env.frames(cmd))
     return len(selection)
 
 
@@ -74,7 +76,7 @@ def reload(env, cmd: ast.GenericCommand, ctx) -> int:
     """ReloadCommand: the packs selected now reload (every other available pack was disabled, so
     discoverNewPacks adds none)."""
     repository = env.state.pack_repository
-    repository.reload(list(repository.current))
+    repository.reload(list(repository.current), env.frames(cmd))
     return 0
 
 

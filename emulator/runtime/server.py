@@ -39,7 +39,8 @@ after each step).
 
 A reload ``datapack`` or ``reload`` asks for (:mod:`emulator.world.pack_repository`) is carried out
 when the root that asked ends, or, asked by a load or tick function, once the functions that list
-began have run (:meth:`Runtime.apply_reload`); the next tick runs ``#minecraft:load`` first.
+began have run (:meth:`Runtime.apply_reload`; a call after it in that root that the reload changes
+is reported: :mod:`emulator.runtime.reloads`); the next tick runs ``#minecraft:load`` first.
 
 Root listeners (:attr:`Runtime.root_listeners`) hear every root the runtime runs, with its result.
 
@@ -53,6 +54,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from emulator.runtime import reloads
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
@@ -143,6 +145,7 @@ class Runtime:
         self.loaded = False
         self.reloaded = False  # the packs were reloaded: the backend runs other packs than it was given
         self._sweeping = False  # running the functions a tick started (a reload waits for their end)
+        self._waiting_roots: list[str] = []  # the roots run while a reload asked for waits (the asker first)
         self.commands_per_tick: list[int] = []
         self.commands_outside_ticks = 0  # API calls made between ticks
         self.max_root_cost = 0  # the costliest root so far (quota headroom = limit - this)
@@ -201,8 +204,10 @@ class Runtime:
             self.max_root_cost = result.cost
         for listener in self.root_listeners:
             listener(function_id, result)
-        if self.state.pack_repository.pending is not None and not self._sweeping:
-            self.apply_reload()
+        if self.state.pack_repository.pending is not None:
+            self._waiting_roots.append(function_id)
+            if not self._sweeping:
+                self.apply_reload()
         if self.state.pending_rewards:
             self.run_rewards()
         return result
@@ -218,6 +223,8 @@ class Runtime:
         packs = load_packs(repository.roots(selection), version_label(self.packs.version),
                            game_jar=self.packs.game_jar)
         packs.add_functions(self.packs.added_functions)
+        later, self._waiting_roots = self._waiting_roots[1:], []
+        self._report_stale_calls(packs, repository.asked_by, later)
         repository.selected = selection
         self.state.resources = Resources.from_packs(packs)
         advancements.warn_unobserved(self.state)
@@ -227,6 +234,17 @@ class Runtime:
         self.packs, self._members = packs, {}
         self.loaded = False  # ServerFunctionManager.replaceLibrary: postReload
         self.reloaded = True
+
+    def _report_stale_calls(self, packs, asked_by: tuple, later_roots: list[str]) -> None:
+        """The calls after the reload (in the root that asked, at ``asked_by``, and in the roots run
+        after it) that reach what it changed."""
+        stale = reloads.stale_calls(self.packs, packs, asked_by + tuple(map(reloads.whole, later_roots)))
+        if stale:
+            named = ", ".join("a macro line's" if ref == "$" else ref for ref in stale)
+            self.state.error(f"not modelled: {named} called after this reload ran as the packs were before it "
+                             "(the game reloads inside the command; here the packs change when the functions "
+                             "running then have ended)",
+                             asked_by, "warning", unmodelled=True)
 
     def run_rewards(self) -> int:
         """The advancement rewards earned outside any command, each run now as a root of its own

@@ -29,6 +29,7 @@ class PackRepository:
     available: dict[str, list[Path]] = field(default_factory=dict)  # id -> the pack roots of that name
     selected: list[str] = field(default_factory=lambda: [VANILLA])
     pending: list[str] | None = None  # the selection the next reload loads; None: no reload asked for
+    asked_by: tuple = ()  # the call stack (Frames, the root first) of the command that first asked for it
 
     @classmethod
     def from_roots(cls, roots) -> "PackRepository":
@@ -50,8 +51,11 @@ class PackRepository:
     def knows(self, pack: str) -> bool:
         return pack == VANILLA or pack in self.available
 
-    def reload(self, selection: list[str]) -> None:
-        """Ask for a reload of ``selection``; vanilla stays (required, at the bottom)."""
+    def reload(self, selection: list[str], frames: tuple = ()) -> None:
+        """Ask for a reload of ``selection`` (by the command running in ``frames``); vanilla stays
+        (required, at the bottom)."""
+        if self.pending is None:
+            self.asked_by = frames
         self.pending = selection if VANILLA in selection else [VANILLA, *selection]
 
     def roots(self, selection: list[str]) -> list[Path]:

@@ -195,3 +195,47 @@ def test_the_profile_keeps_what_ran_before_a_reload(tmp_path, backend):
     lines = emu.profile.lines
     assert lines[(str(paths[1] / "data/b/function/tick.mcfunction"), 1)] == 2  # b ticked twice, then left
     assert lines[(str(paths[0] / "data/a/function/tick.mcfunction"), 1)] == 4
+
+
+def _unmodelled(emu) -> list[str]:
+    return [d.message for d in emu.diagnostics if d.unmodelled]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_call_after_the_reload_to_what_it_changed_is_not_modelled(tmp_path, backend):
+    # MinecraftServer.reloadResources waits inside the command, so the game's `function b:hello`
+    # after it meets the new packs (no b:hello: the command fails); here the root runs on as it was
+    paths = two_packs(tmp_path, b_files={"b/function/hello.mcfunction": "scoreboard players add #hello o 1",
+                                         "b/function/off.mcfunction": 'datapack disable "file/b"\n'
+                                                                      "tellraw @a \"bye\"\nfunction b:hello"})
+    emu = started(paths, backend)
+    emu.call("b:off")
+    [message] = _unmodelled(emu)
+    assert "b:hello called after this reload" in message
+    [diagnostic] = [d for d in emu.diagnostics if d.unmodelled]
+    assert diagnostic.frames[-1].loc.line == 1  # the command that asked
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_what_runs_after_the_reload_as_the_game_runs_it_is_not_reported(tmp_path, backend):
+    # an uninstaller's message after `datapack disable`, and a call to a function the reload left as
+    # it was: the same in the game
+    paths = two_packs(tmp_path, a_files={"a/function/again.mcfunction": "reload\nfunction a:tick"},
+                      b_files={"b/function/off.mcfunction": 'datapack disable "file/b"\ntellraw @a "bye"'})
+    emu = started(paths, backend)
+    emu.call("a:again")
+    emu.call("b:off")
+    assert _unmodelled(emu) == []
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_later_tick_function_calling_what_the_reload_removed_is_not_modelled(tmp_path, backend):
+    # ServerFunctionManager.tick runs b's tick function (the list began), but what it calls comes
+    # from the new packs in the game
+    paths = two_packs(tmp_path, a_files={"a/function/tick.mcfunction": 'datapack disable "file/b"'},
+                      b_files={"b/function/tick.mcfunction": "function b:hello",
+                               "b/function/hello.mcfunction": "scoreboard players add #hello o 1"})
+    emu = started(paths, backend)
+    emu.tick(1)
+    assert emu.score("#hello", "o") == 1
+    assert ["b:hello called after this reload" in m for m in _unmodelled(emu)] == [True]
