@@ -223,10 +223,11 @@ class Runtime:
         packs = load_packs(repository.roots(selection), version_label(self.packs.version),
                            game_jar=self.packs.game_jar)
         packs.add_functions(self.packs.added_functions)
+        resources = Resources.from_packs(packs)
         later, self._waiting_roots = self._waiting_roots[1:], []
-        self._report_stale_calls(packs, repository.asked_by, later)
+        self._report_stale(packs, resources, repository.asked_by, later)
         repository.selected = selection
-        self.state.resources = Resources.from_packs(packs)
+        self.state.resources = resources
         advancements.warn_unobserved(self.state)
         for listener in self.reload_listeners:
             listener()
@@ -235,16 +236,17 @@ class Runtime:
         self.loaded = False  # ServerFunctionManager.replaceLibrary: postReload
         self.reloaded = True
 
-    def _report_stale_calls(self, packs, asked_by: tuple, later_roots: list[str]) -> None:
-        """The calls after the reload (in the root that asked, at ``asked_by``, and in the roots run
-        after it) that reach what it changed."""
-        stale = reloads.stale_calls(self.packs, packs, asked_by + tuple(map(reloads.whole, later_roots)))
+    def _report_stale(self, packs, resources, asked_by: tuple, later_roots: list[str]) -> None:
+        """What the commands after the reload (in the root that asked, at ``asked_by``, and in the
+        roots run after it) call or read of what it changed."""
+        frames = asked_by + tuple(map(reloads.whole, later_roots))
+        stale = reloads.stale_calls(self.packs, packs, frames)
+        stale += [r for r in reloads.stale_reads(self.packs, self.state.resources, resources, frames) if r not in stale]
         if stale:
             named = ", ".join("a macro line's" if ref == "$" else ref for ref in stale)
-            self.state.error(f"not modelled: {named} called after this reload ran as the packs were before it "
-                             "(the game reloads inside the command; here the packs change when the functions "
-                             "running then have ended)",
-                             asked_by, "warning", unmodelled=True)
+            self.state.error(f"not modelled: {named} called or read after this reload came from the packs before "
+                             "it (the game reloads inside the command; here the packs change when the functions "
+                             "running then have ended)", asked_by, "warning", unmodelled=True)
 
     def run_rewards(self) -> int:
         """The advancement rewards earned outside any command, each run now as a root of its own

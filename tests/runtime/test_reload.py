@@ -211,7 +211,7 @@ def test_a_call_after_the_reload_to_what_it_changed_is_not_modelled(tmp_path, ba
     emu = started(paths, backend)
     emu.call("b:off")
     [message] = _unmodelled(emu)
-    assert "b:hello called after this reload" in message
+    assert "b:hello called or read after this reload" in message
     [diagnostic] = [d for d in emu.diagnostics if d.unmodelled]
     assert diagnostic.frames[-1].loc.line == 1  # the command that asked
 
@@ -238,4 +238,26 @@ def test_a_later_tick_function_calling_what_the_reload_removed_is_not_modelled(t
     emu = started(paths, backend)
     emu.tick(1)
     assert emu.score("#hello", "o") == 1
-    assert ["b:hello called after this reload" in m for m in _unmodelled(emu)] == [True]
+    assert ["b:hello called or read after this reload" in m for m in _unmodelled(emu)] == [True]
+
+
+@pytest.mark.parametrize("backend", BACKENDS)
+def test_a_predicate_read_after_the_reload_removed_it_is_not_modelled(tmp_path, backend):
+    # the game's `execute if predicate b:always` after the disable meets no such predicate
+    paths = two_packs(tmp_path, b_files={"b/predicate/always.json": '{"condition": "minecraft:value_check", '
+                                         '"value": 1, "range": 1}',
+                                         "b/function/off.mcfunction": 'datapack disable "file/b"\n'
+                                                                      "execute if predicate b:always run say yes"})
+    emu = started(paths, backend)
+    emu.call("b:off")
+    assert ["b:always called or read after this reload" in m for m in _unmodelled(emu)] == [True]
+
+
+def test_a_line_names_an_id_whole():
+    from emulator.runtime.reloads import _names
+    assert _names("execute if predicate b:always run say", "b:always")
+    assert not _names("execute if predicate b:always_not run say", "b:always")
+    assert not _names("loot give @s loot a:b:always", "b:always")
+    assert _names("loot give @s loot chests/x", "minecraft:chests/x")
+    assert _names("execute if block ~ ~ ~ #logs run say", "#minecraft:logs")
+    assert not _names("execute if block ~ ~ ~ logs run say", "#minecraft:logs")
