@@ -14,7 +14,9 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    one when ``doDaylightCycle`` is on (ServerLevel.tickTime); the weather advances before all of
    step 4 (ServerLevel.advanceWeatherCycle: :mod:`emulator.world.weather`);
 5. every burning entity's ``Fire`` counts down, hurting it each 20 ticks, water putting it out
-   (Entity.baseTick: :func:`emulator.world.burning.tick_burning`), a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
+   (Entity.baseTick: :func:`emulator.world.burning.tick_burning`), a player's ``Air`` falls with its
+   eyes in water and rises out of it, drowning it at -20 (:func:`emulator.world.breathing.tick_air`),
+   a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
    items, experience orbs, primed TNT, mobs and armor stands move (:func:`emulator.world.motion.tick_moving`),
    every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
@@ -58,9 +60,9 @@ from emulator.runtime import reloads
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, burning, combat, crafters,
-                           effect_clouds, equipment, falling, living, motion, nbt_ops, player_actions, projectiles,
-                           spectating, statistics)
+from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, breathing, burning, combat,
+                           crafters, effect_clouds, equipment, falling, living, motion, nbt_ops, player_actions,
+                           projectiles, spectating, statistics)
 from emulator.world.context import Context
 from emulator.world.pack_repository import PackRepository
 from emulator.world.resources import Resources
@@ -98,7 +100,13 @@ def _burning_step(state) -> None:
     burning.tick_burning(state, combat.hurt)
 
 
+def _air_step(state) -> None:
+    """Players' air under water (:func:`emulator.world.breathing.tick_air`), its drowning combat's hurt."""
+    breathing.tick_air(state, combat.hurt)
+
+
 ENTITY_STEPS = ((_burning_step, burning.tick_is_idle),
+                (_air_step, breathing.tick_is_idle),  # LivingEntity.baseTick: after Entity.baseTick's fire
                 (falling.tick_falling, falling.tick_is_idle),
                 (motion.tick_moving, motion.tick_is_idle),
                 (_living_step, _living_idle),
