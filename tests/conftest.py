@@ -12,6 +12,13 @@ from mcfunction_parser.frozen_init import guard_nodes
 guard_nodes()
 
 
+# A PackTest test without a template is a 1x1x1 structure encased in barriers: walls one block out
+# and a ceiling one block up (StructureUtils.encaseStructure, TestInstanceBlockEntity). A mob or dummy
+# whose eyes are in one suffocates (Entity.isInWall: a barrier is a full, suffocating cube), so a test
+# standing them round its origin first clears the barriers there.
+OPEN_AREA = "fill ~-1 ~ ~-1 ~1 ~1 ~1 air\n"
+
+
 def write_pack(root: Path, files: dict[str, str], tick: list[str] | None = None, load: list[str] | None = None) -> Path:
     """A pack at ``root`` with ``files`` (path under data/ -> text) and optional tick/load tags."""
     root.mkdir(parents=True, exist_ok=True)

@@ -14,8 +14,9 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    one when ``doDaylightCycle`` is on (ServerLevel.tickTime); the weather advances before all of
    step 4 (ServerLevel.advanceWeatherCycle: :mod:`emulator.world.weather`);
 5. every burning entity's ``Fire`` counts down, hurting it each 20 ticks, water putting it out
-   (Entity.baseTick: :func:`emulator.world.burning.tick_burning`), a player's ``Air`` falls with its
-   eyes in water and rises out of it, drowning it at -20 (:func:`emulator.world.breathing.tick_air`),
+   (Entity.baseTick: :func:`emulator.world.burning.tick_burning`), a living entity with its eyes in a
+   block takes ``in_wall`` damage (:func:`emulator.world.suffocation.tick_in_wall`), a player's
+   ``Air`` falls with its eyes in water and rises out of it, drowning it at -20 (:func:`emulator.world.breathing.tick_air`),
    a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
    items, experience orbs, primed TNT, mobs and armor stands move (:func:`emulator.world.motion.tick_moving`),
    every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
@@ -60,9 +61,9 @@ from emulator.runtime import reloads
 from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
-from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, breathing, burning, combat,
-                           crafters, effect_clouds, equipment, falling, living, motion, nbt_ops, player_actions,
-                           projectiles, spectating, statistics)
+from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, breathing, burning,
+                           client_load, combat, crafters, effect_clouds, equipment, falling, living, motion, nbt_ops,
+                           player_actions, projectiles, spectating, statistics, suffocation)
 from emulator.world.context import Context
 from emulator.world.pack_repository import PackRepository
 from emulator.world.resources import Resources
@@ -100,13 +101,21 @@ def _burning_step(state) -> None:
     burning.tick_burning(state, combat.hurt)
 
 
-def _air_step(state) -> None:
-    """Players' air under water (:func:`emulator.world.breathing.tick_air`), its drowning combat's hurt."""
+def _eyes_step(state) -> None:
+    """LivingEntity.baseTick's blocks at the eyes: a wall (:func:`emulator.world.suffocation.
+    tick_in_wall`), then the air under water (:func:`emulator.world.breathing.tick_air`); their
+    hurt is combat's."""
+    suffocation.tick_in_wall(state, combat.hurt)
     breathing.tick_air(state, combat.hurt)
 
 
-ENTITY_STEPS = ((_burning_step, burning.tick_is_idle),
-                (_air_step, breathing.tick_is_idle),  # LivingEntity.baseTick: after Entity.baseTick's fire
+def _eyes_idle(state) -> bool:
+    return suffocation.tick_is_idle(state) and breathing.tick_is_idle(state)
+
+
+ENTITY_STEPS = ((client_load.tick, client_load.tick_is_idle),  # ServerPlayer.tick: first, tickClientLoadTimeout
+                (_burning_step, burning.tick_is_idle),
+                (_eyes_step, _eyes_idle),  # LivingEntity.baseTick: after Entity.baseTick's fire
                 (falling.tick_falling, falling.tick_is_idle),
                 (motion.tick_moving, motion.tick_is_idle),
                 (_living_step, _living_idle),

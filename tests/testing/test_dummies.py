@@ -5,6 +5,7 @@ PackTestExecutor.java, the game's Player.tick/jumpFromGround, Interaction and Pl
 import pytest
 
 from emulator.testing import discover, run_suite
+from tests.conftest import OPEN_AREA
 from emulator.world.players import offline_uuid
 from emulator.world.statistics import canonical_criterion
 from emulator.world.entities import uuid_string
@@ -104,6 +105,7 @@ def test_attack_hurts_a_mob_with_the_strength_of_the_swing(pack, backend):
         "scoreboard objectives add dealt minecraft.custom:minecraft.damage_dealt\n"
         "scoreboard objectives add pigs minecraft.killed:minecraft.pig\n"
         "scoreboard objectives add t dummy\n"
+        + OPEN_AREA +
         "dummy Alex spawn\n"
         "summon pig ~1 ~ ~ {Tags:[\"p\"],Health:1.2f,DeathLootTable:\"minecraft:empty\"}\n"
         "dummy Alex attack @e[tag=p,limit=1]\n"            # at once: 0.2 + 0.8 x 0.1² = 0.208

@@ -5,6 +5,7 @@ inaccuracy 1), Player.getProjectile, AbstractArrow (at the eyes less 0.1, Owner,
 Projectile.getMovementToShoot, ItemStack.hurtAndBreak (one durability per arrow)."""
 import pytest
 
+from tests.conftest import OPEN_AREA
 from tests.testing.test_dummy_hands import run
 
 USING = {"demo/advancement/drawing.json": '{"criteria":{"c":{"trigger":"minecraft:using_item",'
@@ -100,7 +101,7 @@ def test_a_thrown_snowball_hurts_the_pig_in_its_way(tmp_path, backend, pack_form
     ProjectileUtil.getEntityHitResult finds the pig's box (inflated by 0.3) before the barrier wall;
     Snowball.onHitEntity hurts it by 0 as thrown damage of the dummy (HurtTime 10,
     player_hurt_entity with the snowball as direct entity), then the snowball breaks."""
-    result = run(tmp_path, "# @dummy\n# @skyaccess\n" + (
+    result = run(tmp_path, "# @dummy\n# @skyaccess\n" + OPEN_AREA + (
         "scoreboard objectives add hits dummy\n"
         "scoreboard objectives add thrown minecraft.used:minecraft.snowball\n"
         "summon pig ~0.5 ~1 ~1.4 {NoAI:1b,NoGravity:1b,Tags:[\"target\"]}\n"

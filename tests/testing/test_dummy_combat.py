@@ -7,6 +7,7 @@ import json
 
 import pytest
 
+from tests.conftest import OPEN_AREA
 from tests.testing.test_dummy_hands import run
 
 
@@ -166,7 +167,7 @@ def test_a_hurt_players_armour_wears_unless_the_damage_bypasses_armour(tmp_path,
     generic damage is in #bypasses_armor; netherite resists fire damage (canBeHurtBy). A knockback
     resistance of 1 keeps off the hurt's knockback, whose direction with no source position is
     random (LivingEntity.knockback: Math.random)."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "dummy Alex spawn\n"
         "attribute Alex generic.knockback_resistance base set 1\n"
         "item replace entity Alex armor.chest with iron_chestplate\n"
@@ -245,7 +246,7 @@ def test_fall_deaths_read_the_combat_trackers_most_significant_fall(tmp_path, ba
 def test_a_full_sword_swing_on_the_ground_sweeps_the_mobs_beside_its_target(tmp_path, backend, pack_format):
     # Player.attack / doSweepAttack: the living entities in the target's box grown by 1, 0.25, 1 and
     # within 3 blocks take 1 + sweeping_damage_ratio (0) x the swing's damage as player_attack
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "dummy Alex spawn\n"
         "give Alex diamond_sword\n"
         "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"

@@ -6,6 +6,7 @@ modifier x 2), their use time (Consumables: 1.6 s, dried kelp 0.8 s, honey 2 s),
 (ItemStack.applyAfterUseComponentSideEffects -> UseRemainder.convertIntoRemainder)."""
 import pytest
 
+from tests.conftest import OPEN_AREA
 from tests.testing.test_dummy_hands import run
 
 @pytest.mark.parametrize("pack_format", [26, 48, 57, 61])
@@ -14,7 +15,7 @@ def test_a_golden_apple_feeds_a_full_player_and_gives_its_effects(tmp_path, pack
     Consumables.GOLDEN_APPLE: regeneration II 100 ticks, absorption 2400 ticks; eaten over 32 ticks
     (1.6 s), then used:golden_apple and one apple fewer. Before 1.20.5 (format 26) the same from
     FoodProperties and Item.getUseDuration."""
-    result = run(tmp_path, "# @dummy\n" + (
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + (
         "scoreboard objectives add ate minecraft.used:minecraft.golden_apple\n"
         "give @s golden_apple 3\n"
         "dummy @s use item\n"
@@ -35,7 +36,7 @@ def test_a_golden_apple_feeds_a_full_player_and_gives_its_effects(tmp_path, pack
 
 def test_a_full_player_cannot_eat_bread(tmp_path):
     """Player.canEat: bread is not always edible (Foods.BREAD): the use fails, the command fails."""
-    result = run(tmp_path, "# @dummy\ngive @s bread\ndummy @s use item\nawait delay 40\n"
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + "give @s bread\ndummy @s use item\nawait delay 40\n"
                            "assert items entity @s weapon.mainhand bread\n", pack_format=61)
     assert result.status == "passed", result.report()
     assert "cannot use that item" in "\n".join(result.details)
@@ -48,7 +49,7 @@ def test_dried_kelp_is_eaten_in_16_ticks(tmp_path):
     files = {"demo/advancement/using.json": '{"criteria":{"c":{"trigger":"minecraft:using_item"}},'
                                             '"rewards":{"function":"demo:using"}}',
              "demo/function/using.mcfunction": "scoreboard players add @s uses 1\nadvancement revoke @s only demo:using\n"}
-    result = run(tmp_path, "# @dummy\n" + (
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + (
         "scoreboard objectives add uses dummy\n"
         "gamemode creative @s\n"
         "give @s dried_kelp 2\n"
@@ -74,7 +75,7 @@ def test_drinking_a_potion_gives_its_effects_and_a_glass_bottle(tmp_path, pack_f
     if pack_format < 48:
         files["demo/advancements/drank.json"] = files.pop("demo/advancement/drank.json").replace(
             '"items":"minecraft:potion"', '"items":["minecraft:potion"]')
-    result = run(tmp_path, "# @dummy\n" + (
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + (
         "scoreboard objectives add t dummy\n"
         f"give @s {potion}\n"
         "dummy @s use item\n"
@@ -90,8 +91,9 @@ def test_drinking_a_potion_gives_its_effects_and_a_glass_bottle(tmp_path, pack_f
 def test_a_healing_potion_heals_at_once_and_milk_clears_effects(tmp_path):
     """PotionContents.applyToLivingEntity: instantaneous effects act at once (HealOrHarmMobEffect:
     4 << amplifier); Consumables.MILK_BUCKET: clear_all_effects, the bucket returned."""
-    result = run(tmp_path, "# @dummy\n" + (
+    result = run(tmp_path, "# @dummy\n# @timeout 200\n" + OPEN_AREA + (
         "gamerule naturalRegeneration false\n"  # FoodData.tick would heal the hurt dummy as well
+        "await delay 60\n"  # 1.21.4: no damage before its client would have loaded (ServerPlayer.isInvulnerableTo)
         "damage @s 6\n"
         "give @s potion[potion_contents=\"minecraft:healing\"]\n"
         "dummy @s use item\n"
@@ -112,7 +114,7 @@ def test_honey_cures_poison_and_a_stack_of_stew_gives_its_bowl_to_the_inventory(
     """Consumables.HONEY_BOTTLE: 2 s, remove_effects poison, always edible; a stack that is not
     emptied keeps the hand and the remainder goes to the inventory
     (ServerPlayer.handleExtraItemsCreatedOnUse)."""
-    result = run(tmp_path, "# @dummy\n" + (
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + (
         "effect give @s poison 100\n"
         "effect give @s speed 100\n"
         "give @s honey_bottle 2\n"
@@ -130,7 +132,7 @@ def test_honey_cures_poison_and_a_stack_of_stew_gives_its_bowl_to_the_inventory(
 def test_a_creative_dummy_keeps_the_potion(tmp_path):
     """ItemStack.consume and UseRemainder: a player with infinite materials keeps the stack and gets
     no remainder."""
-    result = run(tmp_path, "# @dummy\ngamemode creative @s\ngive @s potion[potion_contents=\"minecraft:luck\"]\n"
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + "gamemode creative @s\ngive @s potion[potion_contents=\"minecraft:luck\"]\n"
                            "dummy @s use item\nawait delay 32\nassert items entity @s weapon.mainhand potion\n"
                            "assert data entity @s active_effects[{id:\"minecraft:luck\"}]\n"
                            "assert not items entity @s hotbar.1 *\n", pack_format=61)
@@ -143,7 +145,7 @@ def test_chorus_fruit_teleports_the_eater_onto_ground_nearby_and_cools_down(tmp_
     finishUsingItem and addCooldown(item, 20)): LivingEntity.randomTeleport lands it on the first
     block below that blocks motion, within 8 blocks in x and z, in a free spot; a second fruit
     right after passes (cooling down). The spot comes from the seeded random."""
-    result = run(tmp_path, "# @dummy\n" + (
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + (
         "fill ~-8 ~-1 ~-8 ~8 ~-1 ~8 stone\n"
         "give @s chorus_fruit 2\n"
         "dummy @s use item\n"
@@ -165,7 +167,7 @@ def test_a_use_cooldown_makes_the_next_uses_of_its_group_pass_until_it_ends(tmp_
     cooldown_group, else the item) cools down Math.round(seconds * 20) ticks; meanwhile
     ServerPlayerGameMode.useItem passes (ItemCooldowns.isOnCooldown), also for another item of the
     group, and useItemOn uses the block without the item (no placement)."""
-    result = run(tmp_path, "# @dummy\n" + (
+    result = run(tmp_path, "# @dummy\n" + OPEN_AREA + (
         "scoreboard objectives add ate minecraft.used:minecraft.stick\n"
         "scoreboard objectives add placed minecraft.used:minecraft.stone\n"
         "give @s stick[consumable={consume_seconds:0},use_cooldown={seconds:1,cooldown_group:\"demo:g\"}] 4\n"

@@ -14,6 +14,7 @@ WALL = "fill ~-2 ~ ~3 ~3 ~4 ~3 stone\n"  # a wall 2.5 blocks south of the dummy:
 def test_a_thrown_ender_pearl_takes_the_dummy_along_and_cools_down(tmp_path, pack_format):
     result = run(tmp_path, "# @dummy\n# @skyaccess\n" + WALL + (
         "scoreboard objectives add pearls minecraft.used:minecraft.ender_pearl\n"
+        "await delay 60\n"  # 1.21.4: the landing's fall damage needs the client loaded (ServerPlayer.isInvulnerableTo)
         "give @s ender_pearl 2\n"
         "dummy @s use item\n"
         "dummy @s use item\n"  # the pearl cools down 20 ticks: the second use passes

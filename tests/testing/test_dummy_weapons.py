@@ -9,7 +9,7 @@ import zipfile
 import pytest
 
 from emulator.testing import discover, run_suite
-from tests.conftest import write_pack
+from tests.conftest import OPEN_AREA, write_pack
 from tests.parser.pack.packbuild import tag
 from tests.testing.test_dummy_hands import run
 
@@ -20,7 +20,7 @@ def test_a_held_weapons_modifiers_count_from_the_next_tick_and_are_not_saved(tmp
     SwordItem.createAttributes(IRON, 3, -2.4F), Tiers.IRON bonus 2) and base_attack_speed (-2.4F as
     a double) as transient modifiers; removed when the hand empties; AttributeInstance.save leaves
     them out of the NBT."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add v dummy\n"
         "dummy Alex spawn\n"
         "item replace entity Alex weapon.mainhand with iron_sword\n"
@@ -47,7 +47,7 @@ def test_worn_armour_counts_its_defense_and_toughness(tmp_path):
     mob attack: CombatRules.getDamageAfterAbsorb: 10 x (1 - min(max(8 - 10 / 2.5, 1.6), 20) / 25)
     = 8.400001 in float math, so 11.599999 health is left (a knockback resistance of 1 keeps off the
     hurt's knockback, random with no source position)."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add v dummy\n"
         "dummy Alex spawn\n"
         "attribute Alex generic.knockback_resistance base set 1\n"
@@ -71,7 +71,7 @@ def test_a_full_swing_with_a_sharp_sword_deals_its_damage_and_wears_it(tmp_path,
     """Player.attack: attack_damage 6 (iron sword) at full strength plus sharpness II (1 + 0.5);
     the pig (10 health) keeps 2.5; damage_dealt 75; ItemStack.hurtEnemy counts used:iron_sword and
     postHurtEnemy wears it by 1 (item_durability_changed)."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add dealt minecraft.custom:minecraft.damage_dealt\n"
         "scoreboard objectives add used minecraft.used:minecraft.iron_sword\n"
         "dummy Alex spawn\n"
@@ -90,7 +90,7 @@ def test_a_full_swing_with_a_sharp_sword_deals_its_damage_and_wears_it(tmp_path,
 def test_a_weapon_breaks_at_its_maximum_damage_unless_unbreakable(tmp_path):
     """ItemStack.hurtAndBreak: a golden sword (max 32) at 31 breaks (broken:golden_sword); an
     unbreakable axe takes no damage but still counts as used (DiggerItem.hurtEnemy)."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add broken minecraft.broken:minecraft.golden_sword\n"
         "scoreboard objectives add axe minecraft.used:minecraft.iron_axe\n"
         "dummy Alex spawn\n"
@@ -111,7 +111,7 @@ def test_a_weapon_breaks_at_its_maximum_damage_unless_unbreakable(tmp_path):
 def test_a_sweep_between_1_21_4_and_1_21_6_is_inconclusive(tmp_path):
     """Player.attack's sweep knocks back before the hurt in 1.21.3 and after a hurt that went
     through in 1.21.7: which holds in between is not known here."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "dummy Alex spawn\n"
         "summon pig ~1 ~ ~ {Tags:[\"p\"]}\nsummon pig ~1.5 ~ ~0.5\n"
         "item replace entity Alex weapon.mainhand with iron_sword\n"
@@ -123,7 +123,7 @@ def test_a_sweep_between_1_21_4_and_1_21_6_is_inconclusive(tmp_path):
 
 def test_body_armour_on_a_mob_is_inconclusive(tmp_path):
     """Wolf armour's default modifiers (ArmorItem.Type.BODY) are not modelled: the wolf's tick says so."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "summon wolf ~1 ~ ~ {Tags:[\"w\"]}\n"
         "item replace entity @e[tag=w,limit=1] armor.body with wolf_armor\n"
         "await delay 2\nsucceed\n"))
@@ -148,7 +148,7 @@ def test_smite_adds_its_bonus_against_the_undead_only(tmp_path, backend):
     """Enchantments.SMITE (1.21 data): damage + 2.5 a level against #sensitive_to_smite. A full swing
     with a smite II stone sword (5) hits a zombie for 10 (its 2 armor: CombatRules leaves
     10 x (1 - max(2 - 10 / 2, 0.4) / 25) = 9.84, float math) and a pig for 5."""
-    result = _with_jar(tmp_path, (
+    result = _with_jar(tmp_path, OPEN_AREA + (
         "scoreboard objectives add v dummy\n"
         "dummy Alex spawn\n"
         "summon zombie ~1 ~ ~ {Tags:[\"z\"],NoAI:1b}\n"
@@ -158,7 +158,7 @@ def test_smite_adds_its_bonus_against_the_undead_only(tmp_path, backend):
         "execute store result score #zombie v run data get entity @e[tag=z,limit=1] Health 1000\n"
         "assert score #zombie v matches 10159\n"                # 10.16f is 10.1599998...; data get floors
         "kill @e[tag=z]\n"
-        "kill @e[type=experience_orb]\n"  # the zombie's: dropped in the structure's wall, where orbs are pushed out
+        "kill @e[type=experience_orb]\n"  # the zombie's
         "summon pig ~1 ~ ~ {Tags:[\"p\"]}\n"
         "await delay 20\n"
         "dummy Alex attack @e[tag=p,limit=1]\n"
@@ -167,7 +167,7 @@ def test_smite_adds_its_bonus_against_the_undead_only(tmp_path, backend):
 
 
 def test_smite_without_the_games_tags_is_inconclusive(tmp_path):
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "dummy Alex spawn\nsummon pig ~1 ~ ~\n"
         "item replace entity Alex weapon.mainhand with stone_sword[enchantments={smite:1}]\n"
         "dummy Alex attack @e[type=pig,limit=1]\nsucceed\n"))
@@ -180,7 +180,7 @@ def test_the_weapons_attack_speed_sets_the_swings_recharge(tmp_path, backend):
     """Player.getAttackStrengthScale(0.5): (ticks + 0.5) / (20 / attack_speed); the iron sword's
     1.6 speed (4 - 2.4F) recharges in 12.5 ticks, so 5 ticks after the last swing the strength is
     0.44 and the hit deals 6 x (0.2 + 0.8 x 0.44²) = 2.129 (float math): the pig keeps 7.871."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add v dummy\n"
         "dummy Alex spawn\n"
         "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"
@@ -197,7 +197,7 @@ def test_the_weapons_attack_speed_sets_the_swings_recharge(tmp_path, backend):
 
 def test_a_swing_with_attack_knockback_is_inconclusive(tmp_path):
     """Player.attack -> LivingEntity.knockback for getKnockback > 0: the Motion it sets is not modelled."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "dummy Alex spawn\nsummon pig ~1 ~ ~\n"
         "attribute Alex generic.attack_knockback base set 1\n"
         "dummy Alex attack @e[type=pig,limit=1]\nsucceed\n"))
@@ -212,7 +212,7 @@ def test_another_item_in_hand_restarts_the_swings_recharge(tmp_path, backend):
     player ticks before the swing 4 count: strength (4 + 0.5) / 12.5 = 0.36, the hit deals
     6 x (0.2 + 0.8 x 0.36²) = 1.82208 and the pig keeps 8.17792; a changed damage on the same item
     does not reset it (a full swing: 6 of the new pig's 10)."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add v dummy\n"
         "dummy Alex spawn\n"
         "summon pig ~1 ~ ~ {Tags:[\"p\"],NoAI:1b,DeathLootTable:\"minecraft:empty\"}\n"
@@ -245,7 +245,7 @@ def test_a_mobs_weapon_changed_in_place_in_its_nbt_changes_its_modifiers(tmp_pat
     zombie = "@e[tag=z,limit=1]"
     modifier = (f"execute store result score #mod v run attribute {zombie} {attribute} modifier value "
                 "get minecraft:base_attack_damage 1\n")
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add v dummy\n"
         "summon zombie ~ ~ ~ {Tags:[\"z\"],NoAI:1b,PersistenceRequired:1b}\n"
         f"item replace entity {zombie} weapon.mainhand with iron_sword\n"
@@ -267,7 +267,7 @@ def test_an_attack_knocks_a_mob_back_but_leaves_a_players_motion_on_the_server(t
     """LivingEntity.hurtServer knocks the hurt entity away from the attacker (knockback 0.4F from
     the source position, the attacker's); Player.attack then sets a player target's motion back
     (its client gets the knockback: ServerPlayer.hurtMarked), so the server's Motion of Bob stays."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "scoreboard objectives add v dummy\n"
         "dummy Alex spawn\ndummy Bob spawn\n"
         "tp Bob ~1 ~ ~\n"

@@ -49,6 +49,7 @@ SUITE = {
     "demo/loot_table/cow.json": '{"pools": [{"rolls": 1, "entries": [{"type": "item", "name": "leather"}]}]}',
     "demo/test/dummy/attack.mcfunction": (
         "# @dummy\n"
+        "fill ~-1 ~ ~-1 ~2 ~2 ~1 air\n"  # no barrier round the zombie's eyes (it would suffocate: Entity.isInWall)
         "summon zombie ~2 ~ ~ {Tags:[\"mob\"],NoAI:1b}\n"
         "await delay 10\n"
         "dummy @s attack @e[tag=mob,limit=1]\n"
