@@ -212,8 +212,8 @@ MAX_FLOAT = 3.4028234663852886e38  # Float.MAX_VALUE
 def kill(env, cmd: ast.Kill, ctx: Context) -> int:
     """``kill [TARGETS]`` (the executor by default): a living entity is hurt by ``generic_kill`` past
     any protection and dies (emulator.world.combat: a mob leaves the store, a player dies to
-    respawn later); other entities and armor stands leave the store. A removed entity loses every
-    score (Scoreboard.entityRemoved -> resetAllPlayerScores)."""
+    respawn later); other entities and armor stands leave the store, losing their scores and team
+    (:meth:`WorldState.discard`)."""
     state = env.state
     targets = [_executor_required(state, ctx)] if cmd.targets is None else found(state, cmd.targets, ctx)
     for entity in targets:
@@ -224,8 +224,7 @@ def kill(env, cmd: ast.Kill, ctx: Context) -> int:
             if combat.hurt(state, entity, MAX_FLOAT, combat.DamageSource("minecraft:generic_kill"), True):
                 continue
         if not entity.is_player:
-            state.entities.kill(entity)
-            state.scoreboard.reset(entity.score_holder)
+            state.discard(entity)
     return len(targets)
 
 

@@ -19,6 +19,8 @@ root, before any tick. Each server tick (ServerFunctionManager.tick, then Server
    ``Air`` falls with its eyes in water and rises out of it, drowning it at -20 (:func:`emulator.world.breathing.tick_air`),
    a PackTest dummy moves (gravity, landing, fall damage: :func:`emulator.world.falling.tick_falling`),
    items, experience orbs, primed TNT, mobs and armor stands move (:func:`emulator.world.motion.tick_moving`),
+   an item frame checks every 101 ticks that it can stay, else breaks and drops
+   (:func:`emulator.world.hanging_checks.tick_hanging`),
    every living entity's effects count down (:func:`emulator.world.living.tick_living`; a player
    that lost one fires ``effects_changed``), a dead player's ``DeathTime`` runs
    (:func:`emulator.world.combat.tick_dead`), a player using an item goes on using it
@@ -62,8 +64,8 @@ from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
 from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, breathing, burning,
-                           client_load, combat, crafters, effect_clouds, equipment, falling, living, motion, nbt_ops,
-                           player_actions, projectiles, spectating, statistics, suffocation)
+                           client_load, combat, crafters, effect_clouds, equipment, falling, hanging_checks, living,
+                           motion, nbt_ops, player_actions, projectiles, spectating, statistics, suffocation)
 from emulator.world.context import Context
 from emulator.world.pack_repository import PackRepository
 from emulator.world.resources import Resources
@@ -118,6 +120,7 @@ ENTITY_STEPS = ((client_load.tick, client_load.tick_is_idle),  # ServerPlayer.ti
                 (_eyes_step, _eyes_idle),  # LivingEntity.baseTick: after Entity.baseTick's fire
                 (falling.tick_falling, falling.tick_is_idle),
                 (motion.tick_moving, motion.tick_is_idle),
+                (hanging_checks.tick_hanging, hanging_checks.tick_is_idle),
                 (_living_step, _living_idle),
                 (equipment.tick, equipment.tick_is_idle),
                 (combat.tick_dead, combat.tick_is_idle),

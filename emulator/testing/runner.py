@@ -329,7 +329,7 @@ class _World:
             if inside and entity.is_player and entity.uuid in self.dummies.spawns:
                 players.leave(state, entity)
             elif inside and not entity.is_player:
-                state.entities.kill(entity)
+                state.discard(entity)
 
     def _end_environments(self) -> None:
         for activation in reversed(self.environments):  # GameTestRunner.endCurrentEnvironment

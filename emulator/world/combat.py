@@ -510,8 +510,7 @@ def die(state, entity, source: DamageSource) -> None:
     if not entity.is_player:
         if state.gamerules.get("doMobLoot") != "false" and entity.type != "minecraft:armor_stand":
             _mob_drops(state, entity, killer, source)
-        state.entities.kill(entity)
-        state.scoreboard.reset(entity.score_holder)  # Scoreboard.entityRemoved
+        state.discard(entity)
     tracker = state.combat_trackers.get(entity)
     if tracker is not None:  # LivingEntity.die / ServerPlayer.die end by rechecking: the dead forget
         recheck(state, entity, tracker)

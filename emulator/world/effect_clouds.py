@@ -70,7 +70,7 @@ def _tick(state, cloud) -> None:
     data["Age"] = Int(age)
     wait, duration = int(_number(data, "WaitTime", 0)), int(_number(data, "Duration", 0))
     if age >= wait + duration:
-        state.entities.kill(cloud)
+        state.discard(cloud)
         return
     if age < wait:
         return
@@ -79,7 +79,7 @@ def _tick(state, cloud) -> None:
     if per_tick != 0:
         radius = F32(radius + per_tick)
         if radius < MIN_RADIUS:
-            state.entities.kill(cloud)
+            state.discard(cloud)
             return
         data["Radius"] = Float(float(radius))
     if age % EVERY == 0:
@@ -128,7 +128,7 @@ def _used(state, cloud) -> bool:
     if on_use != 0:
         radius = F32(F32(_number(data, "Radius", 3.0)) + on_use)
         if radius < MIN_RADIUS:
-            state.entities.kill(cloud)
+            state.discard(cloud)
             return False
         data["Radius"] = Float(float(radius))
     duration_on_use = int(_number(data, "DurationOnUse", 0))
@@ -136,7 +136,7 @@ def _used(state, cloud) -> bool:
         duration = int(_number(data, "Duration", 0)) + duration_on_use
         data["Duration"] = Int(duration)
         if duration <= 0:
-            state.entities.kill(cloud)
+            state.discard(cloud)
             return False
     return True
 

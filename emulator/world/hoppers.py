@@ -324,7 +324,7 @@ def _take_entity(state, hopper: Target, entity, ticked: set) -> bool:
     left = add_item(None, hopper, stack, None, ticked)
     if left.is_empty:
         slot.set(EMPTY.copy())
-        state.entities.kill(entity)
+        state.discard(entity)
         return True
     if left.count != stack.count:
         slot.set(left)

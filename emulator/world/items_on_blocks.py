@@ -135,41 +135,15 @@ def _item_frame(state, player, hand: str, access, stack, pos, face: str) -> str:
     low, high = state.entities.table.levels.build_height(player.dimension, state.version)
     if not low <= front[1] < high:
         return "fail"
-    centre = frames.centre(front, face)
-    box = _frame_box(centre, face)
-    if block_shapes.collides(state.blocks.get(front)) or not block_shapes.is_solid(state.blocks.get(pos)) or \
-            _meets_a_hanging_entity(state, player.dimension, box):
+    if not frames.survives(state, front, face, player.dimension):
         return "consume"  # it would not survive: nothing placed, the use still consumed
+    centre = frames.centre(front, face)
     yaw, pitch = frames.rotation(face)
     state.entities.summon(stack.id, centre, Compound(Facing=Byte(frames.FACE_DATA[face])), yaw=yaw, pitch=pitch,
                           dimension=player.dimension)
     stack.count -= 1
     access.set(stack)
     return "consume"
-
-
-def _frame_box(centre, face: str):
-    """ItemFrame.calculateBoundingBox: 0.75 square, 0.0625 thick along the face's axis."""
-    axis = [abs(d) for d in OFFSETS[face]].index(1)
-    size = [0.75, 0.75, 0.75]
-    size[axis] = 0.0625
-    return tuple(c - s / 2 for c, s in zip(centre, size)) + tuple(c + s / 2 for c, s in zip(centre, size))
-
-
-def _meets_a_hanging_entity(state, dimension: str, box) -> bool:
-    """Level.getEntities(frame, box, HANGING_ENTITY): another frame whose box meets this one (a
-    painting near it is not modelled)."""
-    for entity in state.entities.entities:
-        if not entity.alive or entity.dimension != dimension:
-            continue
-        if entity.type == "minecraft:painting" and all(abs(a - b) < 4 for a, b in zip(entity.pos, box[:3])):
-            raise Unmodelled("placing an item frame beside a painting (whether their boxes meet)")
-        if entity.type in frames.FRAMES:
-            face = frames.face_of(entity)
-            other = _frame_box(entity.pos, face)
-            if all(box[i] < other[i + 3] and box[i + 3] > other[i] for i in range(3)):
-                return True
-    return False
 
 
 # ---------------------------------------------------------------------- armor stands

@@ -233,7 +233,7 @@ def _below_world(state, entity) -> bool:
     if entity.pos[1] >= _bottom(state, entity.dimension) - VOID_DEPTH:
         return False
     if not living.is_living(entity.type) or entity.type == ARMOR_STAND:  # discard; ArmorStand.hurt: kill
-        state.entities.kill(entity)
+        state.discard(entity)
         return True
     combat.hurt(state, entity, VOID_DAMAGE, combat.DamageSource("minecraft:out_of_world"))
     return not entity.alive
@@ -308,7 +308,7 @@ def _tick_item(state, entity) -> None:
     if lived % (2 if moved_block else 40) == 0 and _mergeable(entity):
         _check_merging(state, entity)
     if _age(entity, "Age"):
-        state.entities.kill(entity)
+        state.discard(entity)
 
 
 def _check_pickup(state, item) -> None:
@@ -390,7 +390,7 @@ def _merge(state, dest, dest_stack, src, src_stack) -> None:
     dest.data["PickupDelay"] = Short(max(int(dest.data.get("PickupDelay", 0)), int(src.data.get("PickupDelay", 0))))
     dest.data["Age"] = Short(min(int(dest.data.get("Age", 0)), int(src.data.get("Age", 0))))
     if src_stack.is_empty:
-        state.entities.kill(src)
+        state.discard(src)
     else:
         src.data["Item"] = items.to_nbt(src_stack, state.version)
 
@@ -410,7 +410,7 @@ def _tick_orb(state, entity) -> None:
         y *= -0.9
     entity.motion = (x, y, z)
     if _age(entity, "Age"):
-        state.entities.kill(entity)
+        state.discard(entity)
 
 
 def _within(player, entity, distance: float) -> bool:
@@ -432,7 +432,7 @@ def _tick_tnt(state, entity) -> None:
     fuse = int(entity.data.get("fuse", 80)) - 1
     entity.data["fuse"] = Short(fuse)
     if fuse <= 0:
-        state.entities.kill(entity)
+        state.discard(entity)
         raise Unmodelled("TNT exploding")
 
 
@@ -456,7 +456,7 @@ def _tick_falling_block(state, entity) -> None:
     the build height) end it; then the motion x 0.98."""
     carried = _carried(entity)
     if carried.is_air:
-        state.entities.kill(entity)
+        state.discard(entity)
         return
     if carried.id in HURTS_ENTITIES or "TileEntityData" in entity.data:
         raise Unmodelled(f"a falling {carried.id} (what it hurts, its block entity)")
@@ -477,7 +477,7 @@ def _tick_falling_block(state, entity) -> None:
             below = blocks.get((pos[0], pos[1] - 1, pos[2]))
             if there.id in block_shapes.REPLACEABLE and not _free(below):
                 blocks.place(pos, BlockSpec(carried.id, False, carried.properties, None))
-                state.entities.kill(entity)
+                state.discard(entity)
                 return
             _break(state, entity, carried, drops)
             return
@@ -495,7 +495,7 @@ def _break(state, entity, carried: BlockState, drops: bool) -> None:
     random motion)."""
     if drops and carried.id in NO_ITEM:
         raise Unmodelled(f"a falling {carried.id} breaking (its block has no item of the same id)")
-    state.entities.kill(entity)
+    state.discard(entity)
     if drops:
         inventories.drop_item(state.entities, entity.pos, items.ItemStack(carried.id), state.version,
                               state.resources.random, dimension=entity.dimension)

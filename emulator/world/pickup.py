@@ -33,7 +33,7 @@ def player_touch(state, player, item) -> None:
     if not taken:
         return
     if stack.is_empty:
-        state.entities.kill(item)  # discard
+        state.discard(item)  # discard
         stack.count = count
     statistics.award(state, player, statistics.stat_name("picked_up", item_id), count)
     _on_item_pickup(state, player, item, stack)

@@ -213,7 +213,7 @@ def _in_ground(state, entity, here) -> None:
     life = _int(data, "life", 0) + 1
     data["life"] = Short(life)
     if life >= DESPAWN:
-        state.entities.kill(entity)
+        state.discard(entity)
 
 
 def _nothing_near(state, entity) -> bool:
@@ -339,7 +339,7 @@ def _arrow_hits(state, arrow, target, motion) -> None:
     if spectral:  # SpectralArrow.doPostHurtEffects: glowing for its Duration
         living.give_effect(state, target, "minecraft:glowing", _int(data, "Duration", SPECTRAL_GLOWING), 0, True)
     if arrow.alive:
-        state.entities.kill(arrow)
+        state.discard(arrow)
     if owner is not None and owner.is_player and not target.alive:
         raise Unmodelled("the killed_by_arrow criterion")
 

@@ -592,6 +592,8 @@ class WorldState:
     loading: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> ticks until its client counts as loaded (client_load)
     moves: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (from, to): its move this tick (falling)
     movers: tuple = (-1, None, [])  # (entity changes then, the store's list, the entities world.motion moves)
+    hanging: tuple = (-1, None, [])  # (entity changes then, the store's list, the hanging entities: hanging_checks)
+    hanging_counts: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> checkInterval (hanging_checks)
     not_moving: weakref.WeakSet = field(default_factory=WeakMembers)  # their moves met what is not modelled (motion)
     ticks_lived: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # entity -> Entity.tickCount (motion)
     flying: list = field(default_factory=list)  # projectiles made in flight, checked at the next tick (world.projectiles)
@@ -656,6 +658,15 @@ class WorldState:
 
     def _furnace_input_set(self, block_id: str, nbt, before, after, version) -> None:
         furnaces.input_set(self.resources, block_id, nbt, before, after, version)
+
+    def discard(self, entity) -> None:
+        """An entity removed for good (killed or discarded): out of the store, and, unless a player,
+        its scores and its team with it (ServerLevel.EntityCallbacks.onDestroyed ->
+        Scoreboard.entityRemoved: resetAllPlayerScores, removePlayerFromTeam)."""
+        self.entities.kill(entity)
+        if not entity.is_player:
+            self.scoreboard.reset(entity.score_holder)
+            self.teams.leave([entity.score_holder])
 
     def blocks_in(self, dimension: str) -> BlockMap:
         """The blocks of level ``dimension`` (each level has its own)."""

@@ -82,7 +82,7 @@ def hit(state, projectile, target, cell=None) -> None:
     elif kind in POTIONS:
         _potion(state, projectile, target, cell)
     if projectile.alive:
-        state.entities.kill(projectile)
+        state.discard(projectile)
 
 
 def owner(state, entity):
@@ -122,7 +122,7 @@ def _hatch(state, egg) -> None:
         chick = state.entities.summon("minecraft:chicken", egg.pos, Compound(Age=Int(-24000)), yaw=float(egg.yaw),
                                       dimension=egg.dimension)
         if any(block_shapes.collides(blocks.get(c)) for c in ray.box_cells(chick.bounding_box) if not blocks.get(c).is_air):
-            state.entities.kill(chick)
+            state.discard(chick)
             raise Unmodelled("an egg's chick inside a block (Entity.fudgePositionAfterSizeChange)")
 
 
