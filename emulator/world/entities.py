@@ -50,7 +50,7 @@ from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String, to_snbt
 from emulator.world import display, frames, items, java_random, living, random_sequences, rotation
 from emulator.world.dimensions import OVERWORLD
-from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type
+from emulator.world.entity_types import BABY_EYE_HEIGHT, PLAYER_CROUCHING, baby_scale, entity_type, settle_knot
 from emulator.world.entity_table import (
     EF_EYE, EF_HALF, EF_HEIGHT, EF_MX, EF_MZ, EF_PITCH, EF_TRANSFORM, EF_WIDTH, EF_X, EF_YAW, EF_Z, EI_ALIVE, EI_DIM,
     EI_GAMEMODE, EI_JOIN, EI_LIVING, EI_NAME, EI_SEAT, EI_TEAM, EI_VEHICLE, EI_XP, GAMEMODES, LATEST_RELEASE, EntityTable,
@@ -656,6 +656,8 @@ class EntityStore:
         entity.pos = tuple(float(v) for v in pos)  # SummonCommand: load the NBT, then moveTo(pos)
         if type_id in frames.FRAMES:  # BlockAttachedEntity.setPos: hung on that position's block
             frames.settle(entity, self.version)
+        elif type_id == "minecraft:leash_knot":
+            settle_knot(entity, self.version)
         entity.team = self.team_of(entity.score_holder)  # a UUID a team already names
         return self._add(entity)
 

@@ -22,6 +22,8 @@ kept with their sizes.
 """
 from __future__ import annotations
 
+import math
+
 from dataclasses import dataclass
 
 import numpy as np
@@ -54,6 +56,18 @@ BOATS = frozenset("minecraft:" + name for name in _BOATS.split())
 BLOCK_ATTACHED = frozenset({"minecraft:item_frame", "minecraft:glow_item_frame", "minecraft:painting",
                             "minecraft:leash_knot"})
 BLOCK_POS_VERSION = (1, 21, 5)
+
+
+KNOT_LIFT = ((1, 17, 0), 0.375, 0.5)  # LeashFenceKnotEntity.recalculateBoundingBox: y + 0.375 from 1.17, 0.5 before
+
+
+def settle_knot(entity, version) -> None:
+    """A leash knot as ``summon`` leaves it: on its position's block (BlockAttachedEntity.setPos),
+    at that block's centre x/z and 0.375 above its bottom (LeashFenceKnotEntity.recalculateBoundingBox)."""
+    block = tuple(math.floor(c) for c in entity.pos)
+    lift = KNOT_LIFT[1] if tuple(version) >= KNOT_LIFT[0] else KNOT_LIFT[2]
+    entity.pos = (block[0] + 0.5, block[1] + lift, block[2] + 0.5)
+    set_attached_block(entity.data, block, version)
 
 
 def set_attached_block(data, block, version) -> None:

@@ -4,6 +4,7 @@ ItemFrame.setDirection/createBoundingBox/readAdditionalSaveData/addAdditionalSav
 import pytest
 
 from emulator.api import Emulator
+from emulator.world.entities import EntityStore
 from tests.conftest import write_pack
 
 BACKENDS = ["numba", "python"]
@@ -37,3 +38,14 @@ def test_without_a_facing_it_faces_down(tmp_path, backend):
     assert entity.pos == (1.5, 64.96875, 1.5)
     assert (float(entity.yaw), float(entity.pitch)) == (0.0, 90.0)
     assert (int(entity.data["Facing"]), int(entity.data["TileX"]), int(entity.data["TileY"])) == (0, 1, 64)
+
+
+@pytest.mark.parametrize("version, y", [((1, 21, 4), 64.375), ((1, 16, 5), 64.5)])
+def test_a_summoned_leash_knot_sits_on_its_blocks_centre(version, y):
+    # BlockAttachedEntity.setPos -> LeashFenceKnotEntity.recalculateBoundingBox: the block's centre
+    # x/z, 0.375 up (1.16.5: 0.5); its block saved as TileX/Y/Z (block_pos from 1.21.5)
+    store = EntityStore()
+    store.version = version
+    knot = store.summon("minecraft:leash_knot", (3.9, 64.8, -2.2))
+    assert knot.pos == (3.5, y, -2.5)
+    assert (int(knot.data["TileX"]), int(knot.data["TileY"]), int(knot.data["TileZ"])) == (3, 64, -3)
