@@ -203,6 +203,9 @@ def summon(env, cmd: ast.Summon, ctx: Context) -> int:
     pos = source.pos if cmd.pos is None else source.position_of(cmd.pos)
     made = relations.summon_with_passengers(env.state.entities, cmd.entity_type, pos, cmd.nbt, ctx.dimension)
     projectiles.launched(env.state, made)
+    if made.type == "minecraft:painting":
+        env.unmodelled(cmd, "where a summoned painting hangs (the game centres it on its block by its variant's "
+                            "size): it keeps the position given")
     return 1
 
 
