@@ -670,7 +670,10 @@ class EntityStore:
         result = change(nbt)
         if entity.is_player:
             raise CommandFailure("commands.data.entity.invalid")
+        hung = frames.block_of(entity) if entity.type in frames.FRAMES else None
         self._load(entity, nbt, keep_uuid=True)
+        if hung is not None:
+            frames.rehang(entity, hung, self.version)
         return result
 
     def _load(self, entity: Entity, nbt: Compound, keep_uuid: bool = False) -> None:

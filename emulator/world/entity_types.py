@@ -70,6 +70,16 @@ def settle_knot(entity, version) -> None:
     set_attached_block(entity.data, block, version)
 
 
+def saved_attached_block(data, version) -> tuple[int, int, int] | None:
+    """The block a block-attached entity's NBT names in the fields of ``version`` (None: none)."""
+    if tuple(version) >= BLOCK_POS_VERSION:
+        found = data.get("block_pos")
+        return tuple(int(c) for c in found) if found is not None and len(found) == 3 else None
+    if all(k in data for k in ("TileX", "TileY", "TileZ")):
+        return tuple(int(data[k]) for k in ("TileX", "TileY", "TileZ"))
+    return None
+
+
 def set_attached_block(data, block, version) -> None:
     """Save ``block`` in a block-attached entity's NBT ``data`` in the fields of ``version``."""
     for key in ("TileX", "TileY", "TileZ", "block_pos"):

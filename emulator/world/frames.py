@@ -8,6 +8,11 @@ BlockAttachedEntity; decompiled 26.1.2).
   its rotation the facing's (ItemFrame.setDirection: yaw 90 x the 2D value, or pitch -90 x the step
   for up and down), and the fields it saves at their defaults (``ItemRotation`` 0, ``ItemDropChance``
   1, ``Invisible`` and ``Fixed`` false, the block as its release saves it).
+- ``rehang(entity, block, version)``: a frame after its NBT is loaded again (``data``): its block the
+  one its NBT names, if within 16 blocks of its ``Pos`` (else ``block``, the one it had:
+  BlockAttachedEntity.readAdditionalSaveData), its centre and rotation its ``Facing``'s
+  (ItemFrame.setDirection): so a changed ``Facing`` turns it, and a changed ``Pos`` alone moves
+  nothing.
 - ``box(centre, face)``: its bounding box; ``block_of(entity)``: the block it hangs in.
 - ``survives(state, block, face, dimension, fixed, itself)``: ItemFrame.survives: a fixed frame
   always; else no collision in its box (the blocks: an entity's hard collision, a boat's or a
@@ -22,7 +27,7 @@ import math
 import numpy as np
 
 from emulator.world import block_shapes
-from emulator.world.entity_types import set_attached_block
+from emulator.world.entity_types import saved_attached_block, set_attached_block
 from emulator.world.errors import Unmodelled
 from emulator.world.placed_states import OFFSETS
 from mcfunction_parser.nbt import Byte, Float
@@ -62,6 +67,15 @@ def settle(entity, version) -> None:
     data.setdefault("ItemDropChance", Float(1.0))
     data.setdefault("Invisible", Byte(0))
     data.setdefault("Fixed", Byte(0))
+
+
+def rehang(entity, block, version) -> None:
+    saved = saved_attached_block(entity.data, version)
+    here = tuple(math.floor(c) for c in entity.pos)
+    if saved is not None and sum((a - b) ** 2 for a, b in zip(saved, here)) < 16 ** 2:  # BlockPos.closerThan
+        block = saved
+    entity.pos = tuple(float(c) for c in block)  # settle hangs it on the block it is in
+    settle(entity, version)
 
 
 def block_of(entity) -> tuple[int, int, int]:

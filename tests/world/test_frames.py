@@ -5,6 +5,7 @@ import pytest
 
 from emulator.api import Emulator
 from emulator.world.entities import EntityStore
+from mcfunction_parser.nbt import Byte, Compound, Double, List
 from tests.conftest import write_pack
 
 BACKENDS = ["numba", "python"]
@@ -49,3 +50,18 @@ def test_a_summoned_leash_knot_sits_on_its_blocks_centre(version, y):
     knot = store.summon("minecraft:leash_knot", (3.9, 64.8, -2.2))
     assert knot.pos == (3.5, y, -2.5)
     assert (int(knot.data["TileX"]), int(knot.data["TileY"]), int(knot.data["TileZ"])) == (3, 64, -3)
+
+
+@pytest.mark.parametrize("version", [(1, 21, 4), (1, 21, 5)])
+def test_data_on_a_frame_hangs_it_from_its_saved_block_and_facing(version):
+    # Entity.load reads Pos, then BlockAttachedEntity.readAdditionalSaveData its block (within 16 of
+    # Pos) and ItemFrame.setDirection its Facing: a new Facing turns it on its block, a new Pos alone
+    # puts it back
+    store = EntityStore()
+    store.version = version
+    frame = store.summon("minecraft:item_frame", (2.5, 65.0, 2.5), Compound(Facing=Byte(1)))
+    assert frame.pos == (2.5, 65.03125, 2.5)
+    store.modify(frame, lambda nbt: nbt.update(Facing=Byte(2)))  # north: on the block's south face
+    assert frame.pos == (2.5, 65.5, 2.96875) and float(frame.yaw) == 180.0
+    store.modify(frame, lambda nbt: nbt.update(Pos=List([Double(9.0), Double(70.0), Double(9.0)])))
+    assert frame.pos == (2.5, 65.5, 2.96875)
