@@ -228,9 +228,7 @@ def _enter_block(state, player: Entity) -> None:
                 _id(c.get("block")) in (None, block.id)
                 and predicates.state_matches(c.get("state"), block, state.version)))
     except Unmodelled as reason:
-        message = f"advancement trigger enter_block: {reason.message.removeprefix('not modelled: ')}"
-        if not any(d.message == message for d in state.diagnostics):
-            state.error(message, severity="warning", unmodelled=True)
+        state.unmodelled_once("advancement trigger enter_block", reason)
 
 
 def changed_dimension(state, player: Entity, origin: str) -> None:

@@ -77,9 +77,7 @@ def tick_air(state, hurt) -> None:
                 raise Unmodelled(f"the air of {entity.type} (its type's own breathing)")
             _breathe(state, entity, hurt)
         except Unmodelled as reason:
-            message = f"air under water: {reason.message.removeprefix('not modelled: ')}"
-            if not any(d.message == message for d in state.diagnostics):
-                state.error(message, severity="warning", unmodelled=True)
+            state.unmodelled_once("air under water", reason)
 
 
 def _breathe(state, player, hurt) -> None:

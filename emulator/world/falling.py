@@ -92,9 +92,7 @@ def tick_falling(state) -> None:
         try:
             _tick(state, player)
         except Unmodelled as reason:
-            message = f"a player's fall: {reason.message.removeprefix('not modelled: ')}"
-            if not any(d.message == message for d in state.diagnostics):
-                state.error(message, severity="warning", unmodelled=True)
+            state.unmodelled_once("a player's fall", reason)
 
 
 def jump(state, player) -> None:

@@ -51,9 +51,7 @@ def tick_hanging(state) -> None:
         try:
             _check(state, entity)
         except Unmodelled as reason:
-            message = f"a hanging entity's check: {reason.message.removeprefix('not modelled: ')}"
-            if not any(d.message == message for d in state.diagnostics):
-                state.error(message, severity="warning", unmodelled=True)
+            state.unmodelled_once("a hanging entity's check", reason)
 
 
 def _check(state, entity) -> None:

@@ -193,9 +193,7 @@ def tick_moving(state) -> None:
             _tick(state, entity)
         except Unmodelled as reason:
             stopped.add(entity)
-            message = f"{entity.type} moving: {reason.message.removeprefix('not modelled: ')}"
-            if not any(d.message == message for d in state.diagnostics):
-                state.error(message, severity="warning", unmodelled=True)
+            state.unmodelled_once(f"{entity.type} moving", reason)
 
 
 def _tick(state, entity) -> None:

@@ -695,6 +695,13 @@ class WorldState:
         """A message every player online receives (PlayerList.broadcastSystemMessage / broadcastChatMessage)."""
         self.emit(kind, text, loc, tuple(p.uuid_string for p in self.entities.players()))
 
+    def unmodelled_once(self, what: str, reason) -> None:
+        """A world step met what is not modelled (``reason``, an Unmodelled): one warning per
+        message, ``what: <the reason>``, for the whole run."""
+        message = f"{what}: {reason.message.removeprefix('not modelled: ')}"
+        if not any(d.message == message for d in self.diagnostics):
+            self.error(message, severity="warning", unmodelled=True)
+
     def error(self, message: str, frames: tuple[Frame, ...] = (), severity: str = "error",
               unmodelled: bool = False) -> None:
         self.diagnostics.append(RuntimeDiagnostic(self.tick, message, frames, severity, unmodelled))

@@ -56,9 +56,7 @@ def tick_in_wall(state, hurt) -> None:
             if _walled(state, entity) and living.health(entity) > 0:
                 hurt(state, entity, DAMAGE, DamageSource("minecraft:in_wall"))
         except Unmodelled as reason:
-            message = f"a mob's eyes in a block: {reason.message.removeprefix('not modelled: ')}"
-            if not any(d.message == message for d in state.diagnostics):
-                state.error(message, severity="warning", unmodelled=True)
+            state.unmodelled_once("a mob's eyes in a block", reason)
 
 
 def _walled(state, entity) -> bool:
