@@ -107,8 +107,11 @@ def _eyes_step(state) -> None:
     """LivingEntity.baseTick's blocks at the eyes: a wall (:func:`emulator.world.suffocation.
     tick_in_wall`), then the air under water (:func:`emulator.world.breathing.tick_air`); their
     hurt is combat's."""
-    suffocation.tick_in_wall(state, combat.hurt)
-    breathing.tick_air(state, combat.hurt)
+    for entity in list(state.entities.living_mobs()):
+        if not entity.alive or (not state.blocks_in(entity.dimension).states and breathing.settled(entity)):
+            continue  # a level with no block: no wall, no water
+        suffocation.tick_entity(state, entity, combat.hurt)  # one pass: each entity's wall, then its air
+        breathing.tick_entity(state, entity, combat.hurt)
 
 
 def _eyes_idle(state) -> bool:

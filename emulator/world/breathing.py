@@ -1,7 +1,8 @@
 """A player's air under water: its ``Air`` as LivingEntity.baseTick counts it each tick.
 
 - ``tick_air(state, hurt)``: every living player's air, ``hurt(state, entity, amount, source)``
-  dealing its drowning (:func:`emulator.world.combat.hurt`); ``tick_is_idle(state)``.
+  dealing its drowning (:func:`emulator.world.combat.hurt`); ``tick_entity(state, entity, hurt)``
+  one entity's; ``tick_is_idle(state)``.
 - ``eyes_in_water(blocks, entity) -> bool``: Entity.updateFluidOnEyes (isEyeInFluid(WATER)).
 
 Each tick, for a player that is alive (LivingEntity.baseTick, after the fire of Entity.baseTick):
@@ -60,24 +61,42 @@ def tick_is_idle(state) -> bool:
     return not any(_needs_tick(state, e) for e in state.entities.living_mobs())
 
 
+def settled(entity) -> bool:
+    """Full air and no fish: with no block at all around, nothing changes it (a caller's fast path)."""
+    return entity.type not in AQUATIC and air(entity) >= MAX_AIR
+
+
 def _needs_tick(state, entity) -> bool:
     """Whether the entity's air may change: less than full, or eyes in water (a fish: out of it)."""
     blocks = state.blocks_in(entity.dimension)
     if entity.type in AQUATIC:
         return not fluids.in_water(blocks, entity.bounding_box)
-    return air(entity) < MAX_AIR or eyes_in_water(blocks, entity)
+    if air(entity) < MAX_AIR:
+        return True
+    return blocks.derived("water", _holds_water) and eyes_in_water(blocks, entity)
+
+
+def _holds_water(blocks) -> bool:
+    """Whether any block of the level holds water (remade only when a block changes)."""
+    return any(fluids.is_water(block) for block in blocks.states.values())
 
 
 def tick_air(state, hurt) -> None:
     for entity in list(state.entities.living_mobs()):
-        if not entity.alive or living.health(entity) <= 0 or not _needs_tick(state, entity):
-            continue
-        try:
-            if not entity.is_player:
-                raise Unmodelled(f"the air of {entity.type} (its type's own breathing)")
-            _breathe(state, entity, hurt)
-        except Unmodelled as reason:
-            state.unmodelled_once("air under water", reason)
+        if entity.alive:
+            tick_entity(state, entity, hurt)
+
+
+def tick_entity(state, entity, hurt) -> None:
+    """One living entity's air (the world step's body, for a caller looping over them already)."""
+    if not _needs_tick(state, entity) or living.health(entity) <= 0:
+        return
+    try:
+        if not entity.is_player:
+            raise Unmodelled(f"the air of {entity.type} (its type's own breathing)")
+        _breathe(state, entity, hurt)
+    except Unmodelled as reason:
+        state.unmodelled_once("air under water", reason)
 
 
 def _breathe(state, player, hurt) -> None:
@@ -148,6 +167,8 @@ def _eye_cell(entity) -> tuple[int, int, int]:
 
 def air(entity) -> int:
     value = entity.data.get("Air")
+    if type(value) is Short:  # as the game saves it
+        return int(value)
     return int(numeric_value(value)) if is_numeric(value) else MAX_AIR
 
 

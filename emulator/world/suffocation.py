@@ -2,7 +2,8 @@
 invulnerable time lets one in 10 through), as LivingEntity.baseTick deals it before the air.
 
 - ``tick_in_wall(state, hurt)``: every living entity in a wall hurt by ``hurt(state, entity, amount,
-  source)`` (:func:`emulator.world.combat.hurt`); ``tick_is_idle(state)``: none is.
+  source)`` (:func:`emulator.world.combat.hurt`); ``tick_entity(state, entity, hurt)``: one
+  entity's; ``tick_is_idle(state)``: none is.
 - ``in_wall(state, entity) -> bool``: Entity.isInWall.
 
 Entity.isInWall: not for a spectator (noPhysics); a box 0.8 x the entity's width wide and 1.0E-6
@@ -52,11 +53,16 @@ def _may_be_walled(state, entity) -> bool:
 
 def tick_in_wall(state, hurt) -> None:
     for entity in list(state.entities.living_mobs()):
-        try:
-            if _walled(state, entity) and living.health(entity) > 0:
-                hurt(state, entity, DAMAGE, DamageSource("minecraft:in_wall"))
-        except Unmodelled as reason:
-            state.unmodelled_once("a mob's eyes in a block", reason)
+        tick_entity(state, entity, hurt)
+
+
+def tick_entity(state, entity, hurt) -> None:
+    """One living entity's wall check (the world step's body, for a caller looping over them already)."""
+    try:
+        if _walled(state, entity) and living.health(entity) > 0:
+            hurt(state, entity, DAMAGE, DamageSource("minecraft:in_wall"))
+    except Unmodelled as reason:
+        state.unmodelled_once("a mob's eyes in a block", reason)
 
 
 def _walled(state, entity) -> bool:
@@ -66,17 +72,32 @@ def _walled(state, entity) -> bool:
 def in_wall(state, entity) -> bool:
     if entity.is_player and entity.gamemode == "spectator":
         return False
-    half = float(np.float32(entity.box_extent()[0] * 2) * WIDTH_PART) / 2.0
+    blocks = state.blocks_in(entity.dimension)
+    if not blocks.states:  # no block at all: nothing to be in
+        return False
+    half = _half_width(entity.box_extent()[0])
     x, y, z = entity.pos
     eye = y + float(entity.eye_height)
     box = (x - half, eye - EYE_BOX_HEIGHT / 2, z - half, x + half, eye + EYE_BOX_HEIGHT / 2, z + half)
-    blocks = state.blocks_in(entity.dimension)
+    states = blocks.states
     for cx in range(math.floor(box[0]), math.floor(box[3]) + 1):
         for cy in range(math.floor(box[1]), math.floor(box[4]) + 1):
             for cz in range(math.floor(box[2]), math.floor(box[5]) + 1):
-                if _suffocates(blocks.get((cx, cy, cz)), (cx, cy, cz), box):
+                block = states.get((cx, cy, cz))  # none: air
+                if block is not None and _suffocates(block, (cx, cy, cz), box):
                     return True
     return False
+
+
+_HALVES: dict[float, float] = {}
+
+
+def _half_width(half_extent: float) -> float:
+    """Half of width x 0.8F (Entity.isInWall: the float product, widened), for a half width."""
+    found = _HALVES.get(half_extent)
+    if found is None:
+        found = _HALVES[half_extent] = float(np.float32(half_extent * 2) * WIDTH_PART) / 2.0
+    return found
 
 
 def _suffocates(block, cell, box) -> bool:
