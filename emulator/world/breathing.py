@@ -13,18 +13,17 @@ Each tick, for a player that is alive (LivingEntity.baseTick, after the fire of 
   ``#minecraft:can_breathe_under_water``, no water breathing, conduit power or breath of the
   nautilus, not creative or spectator: Abilities.invulnerable) loses 1 air; at -20 (from 26.1: at
   or below) the air becomes 0 and it takes 2 ``minecraft:drown`` damage. One that cannot drown
-  keeps its air, or from 1.21.7 gets 4 back (from 26.1 not with breath of the nautilus alone);
+  keeps its air, or from 1.21.4 gets 4 back (from 26.1 not with breath of the nautilus alone);
 - else (bubble column included) the air rises by 4 up to 300 (increaseAirSupply).
 A player riding a vehicle that throws its riders off under water (dismountsUnderwater), an oxygen
 bonus (respiration) that keeps the air by chance, and the releases whose rule is not known from
-the sources here (refill under water in 1.21.4 - 1.21.6, air below -20 in 1.21.8 - 1.21.11) are
-reported as not modelled. Mobs' and armor stands' air (their types' own breathing: fish dry out,
+the sources here (air below -20 in 1.21.8 - 1.21.11) are reported as not modelled. Mobs' and armor stands' air (their types' own breathing: fish dry out,
 the undead breathe water) is not modelled: one with its eyes in water, or with less than full
 air, or a fish out of water, is reported. Only a pack's own ``#minecraft:can_breathe_under_water``
 is read (the game's has no player).
 
 Sources (decompiled): world/entity/LivingEntity.java (baseTick, decreaseAirSupply,
-increaseAirSupply, canBreatheUnderwater; 1.21.3, 1.21.7, 26.1.2: shouldTakeDrowningDamage),
+increaseAirSupply, canBreatheUnderwater; 1.21.3, 1.21.4, 1.21.7, 26.1.2: shouldTakeDrowningDamage),
 world/entity/Entity.java (updateFluidOnEyes), world/effect/MobEffectUtil.java (hasWaterBreathing,
 shouldEffectsRefillAirsupply), world/entity/player/Player.java (getMaxAirSupply 300 via Entity).
 """
@@ -46,8 +45,7 @@ DROWN_AT = -20
 DROWN_DAMAGE = 2.0
 WATER_BREATHING = ("minecraft:water_breathing", "minecraft:conduit_power", "minecraft:breath_of_the_nautilus")
 NAUTILUS = "minecraft:breath_of_the_nautilus"
-REFILL_IN_WATER = (1, 21, 7)  # a player that cannot drown gets air back under water (1.21.3: not)
-REFILL_UNKNOWN = ((1, 21, 4), (1, 21, 7))
+REFILL_IN_WATER = (1, 21, 4)  # a player that cannot drown gets air back under water (1.21.3: not)
 AT_OR_BELOW = (26, 1, 0)  # shouldTakeDrowningDamage: air <= -20 (1.21.7: == -20)
 BELOW_UNKNOWN = ((1, 21, 8), (26, 1, 0))
 BREATHERS_TAG = "minecraft:can_breathe_under_water"
@@ -126,8 +124,6 @@ def _can_drown(state, player) -> bool:
 
 def _refills_in_water(state, player) -> bool:
     version = state.version
-    if REFILL_UNKNOWN[0] <= version < REFILL_UNKNOWN[1]:
-        raise Unmodelled("a player that cannot drown under water in 1.21.4 - 1.21.6 (whether its air refills)")
     if version < REFILL_IN_WATER:
         return False
     if version >= AT_OR_BELOW and living.effect_amplifier(player, NAUTILUS) is not None:

@@ -12,8 +12,9 @@ Which players, and which blocks, by release:
   box deflated by 1.0E-5 (BlockGetter.boxTraverseBlocks / forEachBlockIntersectedBetween: a move
   under 0.99999 blocks looks only at the box where it ends), x fastest, then y, then z
   (BlockPos.betweenClosed). A block whose inside shape is not the full cube (tripwire and the end
-  portal; from 1.21.5 also cauldrons and powder snow, seen in 1.21.7: getEntityInsideCollisionShape) counts only when
-  the box meets that shape, and a longer move looks at the blocks on its way: neither is modelled.
+  portal; from 1.21.5 also cauldrons and powder snow, seen in 1.21.7: getEntityInsideCollisionShape)
+  counts only when the box meets that shape, and a longer move looks at the blocks on its way:
+  neither is modelled.
 - before 1.21.2, a player's blocks are checked when it moves (Entity.move ends in
   tryCheckInsideBlocks): a PackTest dummy moves each tick (its travel), air included (checkInsideBlocks
   has no air test then), the cells of its box shrunk by 1.0E-7 (0.001 before 1.19.3), x, then y,

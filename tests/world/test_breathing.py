@@ -70,9 +70,9 @@ def test_creative_players_and_water_breathing_keep_their_air():
     assert breathing.air(player) == 300
 
 
-@pytest.mark.parametrize("version, after", [((1, 21, 3), 100), ((1, 21, 7), 120)])
-def test_one_that_cannot_drown_gets_air_back_under_water_from_1_21_7(version, after):
-    # 1.21.3 baseTick: no change under water; 1.21.7: increaseAirSupply when it cannot drown
+@pytest.mark.parametrize("version, after", [((1, 21, 3), 100), ((1, 21, 4), 120), ((1, 21, 7), 120)])
+def test_one_that_cannot_drown_gets_air_back_under_water_from_1_21_4(version, after):
+    # 1.21.3 baseTick: no change under water; 1.21.4 and 1.21.7: increaseAirSupply when it cannot drown
     state, player, blocks = _world(version)
     blocks.set_state((0, 65, 0), WATER)
     _effect(player, "minecraft:water_breathing")
