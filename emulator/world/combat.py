@@ -183,7 +183,7 @@ def _difficulty_scaled(state, source: DamageSource, amount: float) -> float:
 
 KNOCKBACK_VERSION = (1, 21, 0)  # the hurt's knockback read from the source position (the 1.21 rule)
 HURT_KNOCKBACK = float(F32(0.4))  # LivingEntity.hurtServer: knockback(0.4F, ...); a sweep's too
-SWEEP_KNOCKBACK_FIRST = (1, 21, 3)  # up to it a swept entity is knocked back, then hurt (decompiled 1.21.3)
+SWEEP_KNOCKBACK_FIRST = (1, 21, 4)  # up to it a swept entity is knocked back, then hurt (decompiled 1.21.3, 1.21.4)
 SWEEP_HURT_FIRST = (1, 21, 7)  # from it hurt, then knocked back if the hurt went through (1.21.7, 26.1.2)
 
 

@@ -242,7 +242,7 @@ def test_fall_deaths_read_the_combat_trackers_most_significant_fall(tmp_path, ba
 
 
 @pytest.mark.parametrize("backend", ["numba", "python"])
-@pytest.mark.parametrize("pack_format", [48, 81])  # 1.21 (knockback, then hurt), 1.21.7 (hurt, then knockback)
+@pytest.mark.parametrize("pack_format", [48, 61, 81])  # 1.21, 1.21.4 (knockback, then hurt), 1.21.7 (hurt, then knockback)
 def test_a_full_sword_swing_on_the_ground_sweeps_the_mobs_beside_its_target(tmp_path, backend, pack_format):
     # Player.attack / doSweepAttack: the living entities in the target's box grown by 1, 0.25, 1 and
     # within 3 blocks take 1 + sweeping_damage_ratio (0) x the swing's damage as player_attack

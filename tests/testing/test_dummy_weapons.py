@@ -108,17 +108,17 @@ def test_a_weapon_breaks_at_its_maximum_damage_unless_unbreakable(tmp_path):
     assert result.status == "passed", result.report()
 
 
-def test_a_sweep_between_1_21_4_and_1_21_6_is_inconclusive(tmp_path):
-    """Player.attack's sweep knocks back before the hurt in 1.21.3 and after a hurt that went
+def test_a_sweep_between_1_21_5_and_1_21_6_is_inconclusive(tmp_path):
+    """Player.attack's sweep knocks back before the hurt in 1.21.4 and after a hurt that went
     through in 1.21.7: which holds in between is not known here."""
     result = run(tmp_path, OPEN_AREA + (
         "dummy Alex spawn\n"
         "summon pig ~1 ~ ~ {Tags:[\"p\"]}\nsummon pig ~1.5 ~ ~0.5\n"
         "item replace entity Alex weapon.mainhand with iron_sword\n"
         "await delay 20\n"
-        "dummy Alex attack @e[tag=p,limit=1]\nsucceed\n"), pack_format=61)
+        "dummy Alex attack @e[tag=p,limit=1]\nsucceed\n"), pack_format=71)
     assert result.status == "inconclusive", result.report()
-    assert "a sweep attack in 1.21.4" in result.message
+    assert "a sweep attack in 1.21.5" in result.message
 
 
 def test_body_armour_on_a_mob_is_inconclusive(tmp_path):
