@@ -32,9 +32,9 @@ from .server import sender_name
 
 PARTICLE_RANGE, FORCED_PARTICLE_RANGE = 32.0, 512.0
 SOUND_RANGE = np.float32(16.0)  # SoundEvent.createVariableRangeEvent: getRange
-# PlaySoundCommand skips a player in another level from a release between 1.21.3 (no check) and
-# 1.21.7 (the check): which one is not known here
-SOUND_SAME_LEVEL_KNOWN, SOUND_SAME_LEVEL = (1, 21, 3), (1, 21, 7)
+# PlaySoundCommand skips a player in another level from a release between 1.21.4 (no check, as in
+# 1.21.3) and 1.21.7 (the check): which one is not known here
+SOUND_SAME_LEVEL_KNOWN, SOUND_SAME_LEVEL = (1, 21, 4), (1, 21, 7)
 
 
 def _target(words: Words):

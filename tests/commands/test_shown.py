@@ -99,3 +99,16 @@ def test_me_and_teammsg(tmp_path, backend):
     lines = [(e.kind, e.text, len(e.receivers)) for e in emu.log]
     assert lines == [("me", "* Alex waves", 2), ("teammsg", "-> [red] <Alex> hi", 1)]
     assert emu.log[-1].receivers == (alex,)
+
+
+@pytest.mark.parametrize("mc, heard", [("1.21.4", 2), ("1.21.7", 0)])
+def test_playsound_reaches_a_player_in_another_level_until_1_21_7(tmp_path, mc, heard):
+    # PlaySoundCommand.playSound: 1.21.4 sends to every target within range whatever its level (as
+    # 1.21.3); 1.21.7 skips a target in another level than the command's (none heard: it fails)
+    found, _ = results(tmp_path, "python", {"#s": "playsound minecraft:block.note_block.harp master @a 0 64 0"},
+                       players=((0.0, 64.0, 0.0), (1.0, 64.0, 1.0)), mc=mc)
+    assert found == {"#s": 2}
+    found, emu = results(tmp_path / "2", "python", {
+        "#s": "execute in minecraft:the_nether run playsound minecraft:block.note_block.harp master @a 0 64 0"},
+        players=((0.0, 64.0, 0.0), (1.0, 64.0, 1.0)), mc=mc)
+    assert found == {"#s": heard}
