@@ -389,7 +389,7 @@ def _sweep(state, player, target, held, damage, strength) -> None:
     it reaches (:func:`_sweep_targets`) is hurt by 1 + sweeping_damage_ratio x the swing's damage
     (its enchantment bonus against that entity added, the whole scaled by the swing's strength) as
     ``player_attack`` and knocked back 0.4 along the player's facing (Mth.sin/cos of its yaw). Up
-    to 1.21.3 the knockback comes first and always; from 1.21.7 only after a hurt that went
+    to 1.21.4 the knockback comes first and always; from 1.21.7 only after a hurt that went
     through; in between which rule holds is not known here."""
     version = tuple(state.version)
     others = _sweep_targets(state, player, target)
