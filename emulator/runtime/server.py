@@ -64,8 +64,9 @@ from emulator.runtime.backend import Backend, RootResult, TickBatches
 from emulator.commands import command_contexts
 from emulator.commands.advancements import earned_rewards
 from emulator.world import (advancements, block_contact, block_entity_ticks, block_use, breathing, burning,
-                           client_load, combat, crafters, effect_clouds, equipment, falling, hanging_checks, living,
-                           motion, nbt_ops, player_actions, projectiles, spectating, statistics, suffocation)
+                           combat, crafters, effect_clouds, equipment, falling, hanging_checks, living,
+                           motion, nbt_ops, player_actions, projectiles, spawn_protection, spectating, statistics,
+                           suffocation)
 from emulator.world.context import Context
 from emulator.world.pack_repository import PackRepository
 from emulator.world.resources import Resources
@@ -118,7 +119,7 @@ def _eyes_idle(state) -> bool:
     return suffocation.tick_is_idle(state) and breathing.tick_is_idle(state)
 
 
-ENTITY_STEPS = ((client_load.tick, client_load.tick_is_idle),  # ServerPlayer.tick: first, tickClientLoadTimeout
+ENTITY_STEPS = ((spawn_protection.tick, spawn_protection.tick_is_idle),  # ServerPlayer.tick: first thing
                 (_burning_step, burning.tick_is_idle),
                 (_eyes_step, _eyes_idle),  # LivingEntity.baseTick: after Entity.baseTick's fire
                 (falling.tick_falling, falling.tick_is_idle),

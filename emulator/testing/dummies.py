@@ -53,7 +53,8 @@ from dataclasses import dataclass, replace
 
 from emulator.commands import entities as world_entities
 from emulator.world.context import Context
-from emulator.world import block_breaking, block_use, client_load, combat, entity_use, falling, player_actions, players
+from emulator.world import (block_breaking, block_use, combat, entity_use, falling, player_actions, players,
+                           spawn_protection)
 from emulator.world.blocks import block_pos
 from emulator.world.entities import Entity
 from emulator.world.errors import CommandFailure, Unmodelled
@@ -181,7 +182,7 @@ class Dummies:
         player = players.join(self.state, name, pos, on_ground=on_ground)
         player.data["SelectedItemSlot"] = Int(0)
         falling.fall(self.state, player)  # Dummy.tick runs doTick: the server ticks its physics
-        client_load.start(self.state, player)  # no client: 60 ticks until it counts as loaded
+        spawn_protection.joined(self.state, player, client=False)  # no client: 60 ticks until it counts as loaded
         self.spawns[player.uuid] = tuple(pos)
         return player
 

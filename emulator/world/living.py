@@ -34,7 +34,7 @@ import numpy as np
 
 from mcfunction_parser import gamedata
 from mcfunction_parser.nbt import Byte, Compound, Double, Float, Int, IntArray, List, Short, String
-from emulator.world import client_load, recipes, statistics
+from emulator.world import recipes, spawn_protection, statistics
 from emulator.world.nbt_ops import is_numeric, numeric_value
 from emulator.world.semantics import wrap32
 
@@ -415,8 +415,8 @@ EXHAUSTION = {**{"minecraft:" + t: 0.0 for t in (
 def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
          damage_type: str = "minecraft:generic", wear=None, record=None, attacker=None) -> bool:
     """LivingEntity.hurtServer without AI: refused for invulnerable entities, creative and
-    spectator players (unless the type bypasses invulnerability), a player whose client has not
-    loaded (:mod:`emulator.world.client_load`) and the dead; within the 10 ticks
+    spectator players (unless the type bypasses invulnerability), a player just joined
+    (:mod:`emulator.world.spawn_protection`) and the dead; within the 10 ticks
     after a hurt only the excess over the last hurt applies. Returns whether it hurt. Unless the
     type is in #bypasses_armor, ``wear(state, entity, damage, type)`` wears the armour
     (hurtArmor) and armour points reduce the damage as CombatRules.getDamageAfterAbsorb does, then absorption
@@ -427,8 +427,8 @@ def hurt(state, entity, amount: float, bypasses_invulnerability: bool = False,
     invulnerable = entity.data.get("Invulnerable") or (entity.is_player and entity.gamemode in ("creative", "spectator"))
     if (invulnerable and not bypasses_invulnerability) or health(entity) <= 0:
         return False
-    if entity.is_player and client_load.is_loading(state, entity):
-        return False  # ServerPlayer.isInvulnerableTo: !hasClientLoaded(), whatever the damage
+    if entity.is_player and spawn_protection.refuses(state, entity, bypasses_invulnerability):
+        return False  # just joined: ServerPlayer.hurt (spawnInvulnerableTime) / isInvulnerableTo (!hasClientLoaded())
     timers = state.hurt_timers.setdefault(entity, [0, 0.0])  # LivingEntity.invulnerableTime, lastHurt
     if not takes_full_hurt(state, entity, bypasses_invulnerability):
         if amount <= timers[1]:

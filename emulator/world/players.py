@@ -25,7 +25,7 @@ import uuid as uuid_lib
 
 import numpy as np
 
-from emulator.world import living, statistics
+from emulator.world import living, spawn_protection, statistics
 from mcfunction_parser.nbt import Byte, Int
 
 
@@ -54,6 +54,7 @@ def join(state, name: str, pos, rotation=(0.0, 0.0), gamemode: str | None = None
     player.data["OnGround"] = Byte(1 if on_ground else 0)
     player.data["XpLevel"] = Int(level)
     living.reset_attack_strength(state, player)
+    spawn_protection.joined(state, player, client=True)
     return player
 
 

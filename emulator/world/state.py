@@ -589,7 +589,7 @@ class WorldState:
     crafting: dict = field(default_factory=dict)  # (level, pos) -> crafting ticks left of a crafter that crafted (crafters)
     brewing: dict = field(default_factory=dict)  # (level, pos) -> (block entity, the item it brews): not saved (brewing)
     falling: list = field(default_factory=list)  # players whose physics the server ticks (world.falling)
-    loading: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> ticks until its client counts as loaded (client_load)
+    protected: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> ticks it takes no damage (spawn_protection)
     moves: weakref.WeakKeyDictionary = field(default_factory=WeakKeys)  # player -> (from, to): its move this tick (falling)
     movers: tuple = (-1, None, [])  # (entity changes then, the store's list, the entities world.motion moves)
     hanging: tuple = (-1, None, [])  # (entity changes then, the store's list, the hanging entities: hanging_checks)

@@ -32,6 +32,7 @@ def test_hurting_and_being_hurt_fire_their_criteria(tmp_path, backend):
     result = run(tmp_path, (
         "scoreboard objectives add taken minecraft.custom:minecraft.damage_taken\n"
         "dummy Alex spawn\n"
+        "await delay 60\n"  # spawn protection: no damage for the first 60 ticks (ServerPlayer.hurt)
         "summon pig ~1 ~ ~ {Tags:[\"p\"]}\n"
         "dummy Alex attack @e[tag=p,limit=1]\n"
         "assert entity @a[name=Alex,advancements={demo:hit_pig=true,demo:hit_cow=false,demo:hurt=false}]\n"
@@ -58,8 +59,8 @@ def test_a_dummy_dies_drops_its_inventory_and_experience_and_respawns(tmp_path, 
         "give Alex stone 5\n"
         "item replace entity Alex armor.head with leather_helmet\n"
         "xp set Alex 10 levels\n"
-        "await delay 3\n"
-        "assert score Alex alive matches 3\n"
+        "await delay 63\n"  # spawn protection: no damage for the first 60 ticks (ServerPlayer.hurt)
+        "assert score Alex alive matches 63\n"
         "damage Alex 100\n"
         "assert chat \"^Alex died$\"\n"
         "assert score Alex deaths matches 1\nassert score Alex died matches 1\n"
@@ -120,7 +121,9 @@ def test_a_player_killed_by_a_player_credits_the_killer(tmp_path):
         "scoreboard objectives add by minecraft.killed_by:minecraft.player\n"
         "scoreboard objectives add pk minecraft.custom:minecraft.player_kills\n"
         "dummy Alex spawn\ndummy Bob spawn\n"
-        "tp Bob ~2 ~ ~\n"  # not where Alex stands: from there the hurt's knockback would be random
+        "tp Bob ~2 ~ ~\n"
+        "await delay 60\n"  # spawn protection: no damage for the first 60 ticks (ServerPlayer.hurt)
+  # not where Alex stands: from there the hurt's knockback would be random
         "damage Bob 50 minecraft:player_attack by Alex\n"
         "assert chat \"^Bob was slain by Alex$\"\n"
         "assert score Alex kills matches 1\nassert score Alex pk matches 1\nassert score Bob by matches 1\n"
@@ -150,7 +153,7 @@ def test_the_last_player_to_hurt_a_mob_gets_the_kill(tmp_path):
     ("setblock ~ ~ ~ ladder\ndamage Alex 100 minecraft:fall", "a fall from a climbable block"),
 ])
 def test_what_combat_does_not_model_makes_the_test_inconclusive(tmp_path, setup, reason):
-    result = run(tmp_path, f"dummy Alex spawn\nsummon pig ~1 ~ ~\n{setup}\nsucceed\n")
+    result = run(tmp_path, f"dummy Alex spawn\nawait delay 60\nsummon pig ~1 ~ ~\n{setup}\nsucceed\n")
     assert result.status == "inconclusive", result.report()
     assert reason in result.message
 
@@ -169,6 +172,7 @@ def test_a_hurt_players_armour_wears_unless_the_damage_bypasses_armour(tmp_path,
     random (LivingEntity.knockback: Math.random)."""
     result = run(tmp_path, OPEN_AREA + (
         "dummy Alex spawn\n"
+        "await delay 60\n"  # spawn protection: no damage for the first 60 ticks (ServerPlayer.hurt)
         "attribute Alex generic.knockback_resistance base set 1\n"
         "item replace entity Alex armor.chest with iron_chestplate\n"
         "item replace entity Alex armor.feet with netherite_boots\n"
@@ -193,7 +197,7 @@ def test_a_hurt_players_armour_wears_unless_the_damage_bypasses_armour(tmp_path,
 
 def test_protection_on_a_hurt_players_armour_is_inconclusive(tmp_path):
     result = run(tmp_path, (
-        "dummy Alex spawn\n"
+        "dummy Alex spawn\nawait delay 60\n"
         "item replace entity Alex armor.chest with iron_chestplate[enchantments={protection:1}]\n"
         "damage Alex 3 minecraft:mob_attack\nsucceed\n"))
     assert result.status == "inconclusive", result.report()
@@ -206,8 +210,9 @@ def test_death_messages_read_the_damage_types_message(tmp_path):
     -> "badRespawnPoint" with its "[Intentional Game Design]" link), the ``.player`` form naming the
     killer credited when the source has no entity, the ``.item`` form when the responsible entity's
     main hand holds a named item; en_us texts of the release."""
-    result = run(tmp_path, (
+    result = run(tmp_path, OPEN_AREA + (
         "dummy Ann spawn\ndummy Bob spawn\ndummy Cid spawn\ndummy Dee spawn\n"
+        "await delay 60\n"  # spawn protection: no damage for the first 60 ticks (ServerPlayer.hurt)
         "tp Bob ~2 ~ ~\ntp Cid ~4 ~ ~\ntp Dee ~6 ~ ~\n"
         "summon skeleton ~ ~ ~3 {NoAI:1b,Tags:[\"s\"],HandItems:[{id:\"minecraft:bow\",count:1,"
         "components:{\"minecraft:custom_name\":'\"Bolt\"'}},{}]}\n"
@@ -229,8 +234,9 @@ def test_fall_deaths_read_the_combat_trackers_most_significant_fall(tmp_path, ba
     a fall over 5 blocks, the entry before it when there is one) gives death.fell.accident.generic, or
     when a mob's hurt (here without knockback: magic) came before the fall death.fell.assist naming it; a fall of no distance is the
     plain death.attack.fall (decompiled 1.21 CombatTracker, Entity.checkFallDamage)."""
-    result = run(tmp_path, "# @skyaccess\n" + (
+    result = run(tmp_path, "# @skyaccess\n# @timeout 200\n" + OPEN_AREA + (
         "dummy Ann spawn\ndummy Bob spawn\ndummy Cid spawn\n"
+        "await delay 60\n"  # spawn protection: no damage for the first 60 ticks (ServerPlayer.hurt)
         "tp Ann ~ ~ ~\ntp Bob ~2 ~30 ~\ntp Cid ~4 ~30 ~\n"
         "summon zombie ~6 ~ ~ {NoAI:1b,Tags:[\"z\"]}\n"
         "damage Ann 100 minecraft:fall\n"

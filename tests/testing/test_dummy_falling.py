@@ -8,7 +8,10 @@ import pytest
 
 from emulator.testing import discover, run_suite
 
-SKY = "# @skyaccess\n"  # no barrier ceiling over the 1-block test structure: the dummies start above it
+SKY = "# @skyaccess\n"
+# a player takes no damage for 60 ticks after it joins (ServerPlayer.spawnInvulnerableTime up to
+# 1.21.3; from 1.21.4 a dummy's client-load timeout): a test that hurts it waits them out first
+SPAWN_PROTECTED = "await delay 60\n"  # no barrier ceiling over the 1-block test structure: the dummies start above it
 STATS = ("scoreboard objectives add fell minecraft.custom:minecraft.fall_one_cm\n"
          "scoreboard objectives add jumps minecraft.custom:minecraft.jump\n")
 
@@ -23,9 +26,11 @@ def test_a_dummy_spawned_in_the_air_falls_lands_and_takes_fall_damage(pack, back
     # 4.5 blocks: Entity.checkFallDamage adds a move to the fall distance only in the air, so the
     # landing takes the distance before its last move (4.06 here): ceil(4.06 - 3) = 2 damage and
     # fall_one_cm = round(distance x 100), under the 450 of the whole drop
-    result = run(pack, SKY + STATS + (
+    result = run(pack, SKY + "# @timeout 200\n" + STATS + (
         "fill ~-1 ~ ~-1 ~1 ~ ~1 stone\n"
-        "execute positioned ~0.5 ~5.5 ~0.5 run dummy Alex spawn\n"
+        "execute positioned ~0.5 ~1 ~0.5 run dummy Alex spawn\n"
+        + SPAWN_PROTECTED +
+        "tp Alex ~0.5 ~5.5 ~0.5\n"
         "await delay 3\n"
         "assert data entity Alex {OnGround:0b}\n"
         "execute store result score Alex fell run data get entity Alex FallDistance 1000\n"
@@ -53,9 +58,12 @@ def test_the_landing_puts_the_feet_on_the_top_of_the_block(pack):
 
 def test_a_hay_block_takes_a_fifth_of_the_fall(pack):
     # 10.5 blocks onto hay: ceil((10.5 - 3) x 0.2) = 2; onto stone it would be 8
-    result = run(pack, SKY + (
+    result = run(pack, SKY + "# @timeout 200\n" + (
         "setblock ~ ~ ~ hay_block\n"
-        "execute positioned ~0.5 ~11.5 ~0.5 run dummy Alex spawn\n"
+        "execute positioned ~0.5 ~1 ~0.5 run dummy Alex spawn\n"
+        + SPAWN_PROTECTED +
+        "tp Alex ~0.5 ~11.5 ~0.5\n"
+        "await entity @a[name=Alex,nbt={OnGround:0b}]\n"
         "await entity @a[name=Alex,nbt={OnGround:1b}]\n"
         "assert data entity Alex {Health:18.0f}\n"))
     assert result.status == "passed", result.report()

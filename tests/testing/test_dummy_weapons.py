@@ -52,7 +52,7 @@ def test_worn_armour_counts_its_defense_and_toughness(tmp_path):
         "dummy Alex spawn\n"
         "attribute Alex generic.knockback_resistance base set 1\n"
         "item replace entity Alex armor.chest with diamond_chestplate\n"
-        "await delay 1\n"
+        "await delay 60\n"  # past its spawn protection (ServerPlayer.hurt: spawnInvulnerableTime)
         "execute store result score #armor v run attribute Alex generic.armor get\n"
         "assert score #armor v matches 8\n"
         "damage Alex 10 minecraft:mob_attack\n"
@@ -272,7 +272,7 @@ def test_an_attack_knocks_a_mob_back_but_leaves_a_players_motion_on_the_server(t
         "dummy Alex spawn\ndummy Bob spawn\n"
         "tp Bob ~1 ~ ~\n"
         "summon pig ~-1 ~ ~ {Tags:[\"p\"],NoAI:1b}\n"
-        "await delay 20\n"
+        "await delay 60\n"  # past Bob's spawn protection (ServerPlayer.hurt: spawnInvulnerableTime)
         "dummy Alex attack Bob\n"
         "execute store result score #bob v run data get entity Bob Motion[0] 1000\n"
         "assert score #bob v matches 0\n"

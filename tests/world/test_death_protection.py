@@ -26,6 +26,7 @@ def world(tmp_path, backend, body: str, mc: str = "1.21.4", files=None) -> Emula
     emu.load(pack, mc_version=mc)
     emu.start()
     emu.add_player("Alex", pos=(0.0, 64.0, 0.0))
+    emu.tick(60)  # past its spawn protection (ServerPlayer.spawnInvulnerableTime, up to 1.21.3)
     emu.call("t:go")
     return emu
 

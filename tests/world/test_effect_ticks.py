@@ -14,6 +14,10 @@ from tests.world.world_emulator import emulator
 
 BACKENDS = ["numba", "python"]
 
+# a player takes no damage in its first 60 ticks (ServerPlayer.spawnInvulnerableTime up to 1.21.3):
+# the players here join, then wait them out
+SPAWN_PROTECTION = 60
+
 
 @pytest.mark.parametrize("backend", BACKENDS)
 @pytest.mark.parametrize("effect, amplifier, seconds, health", [
@@ -56,6 +60,7 @@ def _survivor(tmp_path, backend, command: str, before: bool = False, **fields):
     if before:
         emu.call("t:go")
     emu.add_player("Steve", gamemode="survival")
+    emu.tick(SPAWN_PROTECTION)
     player = _player(emu)
     player.data.update({k: Int(v) if k == "foodLevel" else Float(v) for k, v in fields.items()})
     if not before:
@@ -141,6 +146,7 @@ def test_a_players_damage_scales_with_the_difficulty(tmp_path, backend, difficul
                 "damage B 4 minecraft:explosion\ndamage C 4 minecraft:fall"})
     for name in "ABC":
         emu.add_player(name, gamemode="survival")
+    emu.tick(SPAWN_PROTECTION)
     emu.call("t:go")
     healths = {e.player_name: float(e.data["Health"]) for e in emu.state.entities.entities if e.is_player}
     assert (healths["A"], healths["B"], healths["C"]) == (by_zombie, explosion, fall)
@@ -155,6 +161,7 @@ def test_damage_game_rules_spare_players(tmp_path, backend):
                 "damage A 4 minecraft:fall\ndamage A 4 minecraft:lava\ndamage A 3 minecraft:freeze\n"
                 "damage @e[tag=p,limit=1] 4 minecraft:fall"})
     emu.add_player("A", gamemode="survival")
+    emu.tick(SPAWN_PROTECTION)
     emu.call("t:go")
     assert float(_player(emu).data["Health"]) == 17.0  # only the freeze
     assert _pig_health(emu) == 6.0
@@ -217,6 +224,7 @@ def test_resistance_takes_a_fifth_per_level(tmp_path, backend):
                 "summon pig 0 0 0 {Tags:[p],NoAI:1b}\neffect give @e[tag=p] resistance 10 4\ndamage @e[tag=p,limit=1] 5",
         "t:kill": "damage @e[tag=p,limit=1] 3 minecraft:generic_kill"})
     emu.add_player("A", gamemode="survival")
+    emu.tick(SPAWN_PROTECTION)
     emu.call("t:go")
     # 10 x 15 / 25 = 6 to the player (4 resisted), nothing to the pig at amplifier 4
     assert float(_player(emu).data["Health"]) == 14.0 and emu.score("A", "resisted") == 40

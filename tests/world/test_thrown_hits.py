@@ -160,6 +160,7 @@ def test_an_ender_pearl_hurts_its_player_by_5(tmp_path):
         "fill 0 9 0 0 9 0 stone\nsummon ender_pearl 0.5 10.3 0.5 {Motion:[0.0d,-0.5d,0.0d]}\n"
         "data modify entity @e[type=ender_pearl,limit=1] Owner set from entity @p UUID\n")})], mc_version="1.21")
     emu.add_player("Alex", (8.5, 10.0, 0.5))
+    emu.tick(60)  # past its spawn protection (ServerPlayer.spawnInvulnerableTime, up to 1.21.3)
     emu.call("demo:f")
     emu.tick()
     [player] = emu.state.entities.players()

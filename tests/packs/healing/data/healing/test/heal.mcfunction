@@ -1,4 +1,8 @@
 # @dummy ~ ~ ~
+# @skyaccess
+# a new player takes no damage for 60 ticks (ServerPlayer.spawnInvulnerableTime); no barrier ceiling
+# over its eyes (it would suffocate in it)
+await delay 60
 damage @s 10
 assert entity @s[nbt={Health:10f}]
 function healing:heal

@@ -1,5 +1,10 @@
 # @dummy
-dummy Bob spawn
+# @skyaccess
+# inside the block, beside the dummy (at the block's corner Bob's eyes would be in the barrier wall;
+# where the dummy stands a hurt's knockback would have no direction)
+execute positioned ~0.25 ~ ~0.5 run dummy Bob spawn
+# a new player takes no damage for 60 ticks (ServerPlayer.spawnInvulnerableTime)
+await delay 60
 team join squads.red @s
 team join squads.red Bob
 assert entity @s[team=squads.red]
