@@ -33,7 +33,8 @@ import math
 
 import numpy as np
 
-from emulator.world import fluids, living
+from emulator.world import fluids, inventories, living
+from emulator.world.items import enchantment_level
 from emulator.world.errors import Unmodelled
 from emulator.world.loot_context import DamageSource
 from emulator.world.nbt_ops import is_numeric, numeric_value
@@ -49,6 +50,7 @@ REFILL_IN_WATER = (1, 21, 4)  # a player that cannot drown gets air back under w
 AT_OR_BELOW = (26, 1, 0)  # shouldTakeDrowningDamage: air <= -20 (1.21.7: == -20)
 BELOW_UNKNOWN = ((1, 21, 8), (26, 1, 0))
 BREATHERS_TAG = "minecraft:can_breathe_under_water"
+OXYGEN_BONUS_VERSION = (1, 21, 0)  # respiration gives the oxygen_bonus attribute (before: read off the helmet)
 TAG_VERSION = (1, 20, 5)  # LivingEntity.canBreatheUnderwater reads the tag (before: each class's own)
 # WaterAnimal.handleAirSupply and their like: out of water they lose air (not modelled)
 AQUATIC = frozenset("minecraft:" + n for n in (
@@ -131,9 +133,19 @@ def _refills_in_water(state, player) -> bool:
     return True
 
 
+def _keeps_air_by_chance(state, player) -> bool:
+    """decreaseAirSupply's chance: the helmet's respiration (EnchantmentHelper.getRespiration before
+    1.21; from 1.21 the oxygen_bonus attribute it gives, which the emulator does not add up from
+    enchantments: looked at directly), or an oxygen_bonus from modifiers."""
+    head = inventories.entity_slot(player, inventories.ARMOR_SLOTS["head"], state.version)
+    if head is not None and enchantment_level(head.get(), "minecraft:respiration") > 0:
+        return True
+    return state.version >= OXYGEN_BONUS_VERSION and living.attribute_value(player, "oxygen_bonus") > 0.0
+
+
 def _lose_air(state, player, supply: int, hurt) -> None:
     """decreaseAirSupply, then the drowning: 2 damage when the air reaches -20."""
-    if living.attribute_value(player, "oxygen_bonus") > 0.0:
+    if _keeps_air_by_chance(state, player):
         raise Unmodelled("air kept by chance (an oxygen bonus: respiration)")
     supply -= 1
     version = state.version

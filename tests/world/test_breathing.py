@@ -127,3 +127,20 @@ def test_a_player_in_a_pool_drowns_as_the_game_counts(tmp_path, backend):
     emu.call("t:read")
     assert emu.score("Alex", "air") == -15  # drowned at ticks 320 and 340 (air to 0), then 15 more breaths
     assert emu.score("Alex", "hurt") == 40  # 2 x 2 damage, in tenths (damage_taken)
+
+
+@pytest.mark.parametrize("version", [(1, 20, 6), (1, 21, 4)])
+def test_a_respiration_helmet_keeps_air_by_chance_not_modelled(version):
+    # decreaseAirSupply: a chance from the helmet's respiration (1.20.6: EnchantmentHelper.getRespiration)
+    # or the oxygen_bonus attribute it gives (1.21+): the player's random
+    from emulator.world import inventories
+    from emulator.world.items import ItemStack, set_component
+    state, player, blocks = _world(version)
+    blocks.set_state((0, 65, 0), WATER)
+    helmet = ItemStack("minecraft:iron_helmet")
+    set_component(helmet, "minecraft:enchantments", Compound(levels=Compound({"minecraft:respiration": Int(1)})))
+    inventories.entity_slot(player, inventories.ARMOR_SLOTS["head"], version).set(helmet)
+    _ticks(state, 1)
+    assert breathing.air(player) == 300  # left as it was
+    assert [d.message for d in state.diagnostics if d.unmodelled] == [
+        "air under water: air kept by chance (an oxygen bonus: respiration)"]
